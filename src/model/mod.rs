@@ -1,0 +1,10 @@
+//! Pure physics: parameter types with checked constructors, closed-form solutions, root finding.
+//! No terminal, file or network I/O here, so every function is a plain, testable computation.
+
+pub mod hyperbolic;
+pub mod plate;
+pub mod regime;
+pub mod solve;
+pub mod stiffness;
+pub mod twin_beams;
+pub mod validate;

@@ -1,0 +1,62 @@
+//! The friction regime of an interface: which zones exist, listed from x = 0 outward.
+
+use std::fmt;
+
+/// Zones present along the interface, from x = 0 (clamp or plate centre) outward.
+///
+/// The labels are part of the CLI's CSV contract (`stick+macroslip`, ...), so they live here, next to
+/// the enum, rather than in each output format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Regime {
+    /// Coulomb law, no relative displacement anywhere.
+    Stick,
+    /// Regularized law, the whole interface on the elastic branch (tau = K_T slip < mu P).
+    Microslip,
+    /// The whole interface slides at tau = mu P.
+    Macroslip,
+    /// Coulomb law: a sticking zone near x = 0, a sliding zone beyond.
+    StickMacroslip,
+    /// Regularized law: an elastic microslip zone near x = 0, a sliding zone beyond.
+    MicroslipMacroslip,
+}
+
+impl Regime {
+    /// The zone list joined by `+`, as written in reports and CSV files.
+    pub fn label(self) -> &'static str {
+        match self {
+            Regime::Stick => "stick",
+            Regime::Microslip => "microslip",
+            Regime::Macroslip => "macroslip",
+            Regime::StickMacroslip => "stick+macroslip",
+            Regime::MicroslipMacroslip => "microslip+macroslip",
+        }
+    }
+
+    /// True when some part of the interface slides at the Coulomb stress mu P.
+    pub fn has_macroslip(self) -> bool {
+        matches!(
+            self,
+            Regime::Macroslip | Regime::StickMacroslip | Regime::MicroslipMacroslip
+        )
+    }
+}
+
+impl fmt::Display for Regime {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.label())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn labels_name_zones_from_the_origin_outward() {
+        assert_eq!(Regime::StickMacroslip.to_string(), "stick+macroslip");
+        assert_eq!(Regime::MicroslipMacroslip.label(), "microslip+macroslip");
+        assert!(!Regime::Microslip.has_macroslip());
+        assert!(!Regime::Stick.has_macroslip());
+        assert!(Regime::Macroslip.has_macroslip());
+    }
+}

@@ -1,0 +1,127 @@
+//! Root finding for the transcendental equations of both models, on top of the `roots` crate.
+//!
+//! Why a wrapper: `roots`' convergence test is absolute (`|x1 - x2| < eps`), but the slip boundary X
+//! spans many decades (micrometres when F is a thousand times the threshold, hundreds of mm otherwise)
+//! and must be known to 1e-10 *relative*. The wrapper supplies a relative criterion, then certifies
+//! the answer: it checks that the function changes sign across `x (1 -+ tol)`. If Brent's answer
+//! cannot be certified (or Brent reports an error), plain bisection on the original bracket finishes
+//! the job; it cannot fail on a sign-changing bracket, so callers get an infallible `f64`.
+
+use roots::{Convergency, find_root_brent};
+
+/// Relative accuracy promised on every root (the issue asks for 1e-10 on X).
+pub const RELATIVE_TOLERANCE: f64 = 1e-12;
+
+/// Iteration cap for Brent; bisection needs at most ~1100 halvings to exhaust f64 anyway.
+const MAX_BRENT_ITERATIONS: usize = 200;
+
+/// `roots` convergence with a relative test on x and an exact test on y.
+struct RelativeConvergence {
+    tolerance: f64,
+}
+
+impl Convergency<f64> for RelativeConvergence {
+    fn is_root_found(&mut self, y: f64) -> bool {
+        y == 0.0
+    }
+
+    fn is_converged(&mut self, x1: f64, x2: f64) -> bool {
+        (x1 - x2).abs() <= self.tolerance * x1.abs().max(x2.abs())
+    }
+
+    fn is_iteration_limit_reached(&mut self, iter: usize) -> bool {
+        iter >= MAX_BRENT_ITERATIONS
+    }
+}
+
+/// Finds the root of `f` in `[lo, hi]` (with `0 < lo < hi`) to [`RELATIVE_TOLERANCE`].
+///
+/// Precondition, guaranteed by each caller's analysis: `f(lo)` and `f(hi)` have opposite signs (or
+/// one is zero) and the root is unique in the bracket.
+pub fn find_root_in_bracket(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
+    let (f_lo, f_hi) = (f(lo), f(hi));
+    if f_lo == 0.0 {
+        return lo;
+    }
+    if f_hi == 0.0 {
+        return hi;
+    }
+    let mut convergence = RelativeConvergence {
+        tolerance: RELATIVE_TOLERANCE / 4.0,
+    };
+    if let Ok(x) = find_root_brent(lo, hi, &f, &mut convergence)
+        && is_certified(&f, x, lo, hi, f_lo)
+    {
+        return x;
+    }
+    bisect(&f, lo, hi, f_lo)
+}
+
+/// True when the root provably lies within `x (1 -+ RELATIVE_TOLERANCE)`.
+fn is_certified(f: &impl Fn(f64) -> f64, x: f64, lo: f64, hi: f64, f_lo: f64) -> bool {
+    if !(lo..=hi).contains(&x) {
+        return false;
+    }
+    let below = (x * (1.0 - RELATIVE_TOLERANCE)).max(lo);
+    let above = (x * (1.0 + RELATIVE_TOLERANCE)).min(hi);
+    let (f_below, f_above) = (f(below), f(above));
+    f_below == 0.0
+        || f_above == 0.0
+        || (f_below.signum() == f_lo.signum()) != (f_above.signum() == f_lo.signum())
+}
+
+/// Bisection to relative tolerance; the fallback that always converges on a valid bracket.
+fn bisect(f: &impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, f_lo: f64) -> f64 {
+    while hi - lo > RELATIVE_TOLERANCE * hi.abs().max(lo.abs()) {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        let f_mid = f(mid);
+        if f_mid == 0.0 {
+            return mid;
+        }
+        if f_mid.signum() == f_lo.signum() {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_tiny_and_large_roots_to_relative_precision() {
+        for &root in &[1e-9_f64, 3e-4, 1.0, 2.5e3, 7e7] {
+            let x = find_root_in_bracket(|x| (x / root).ln(), root / 100.0, root * 10.0);
+            assert!(((x - root) / root).abs() < 1e-11, "root {root}: got {x}");
+        }
+    }
+
+    #[test]
+    fn works_for_decreasing_functions_and_bracket_ends() {
+        let x = find_root_in_bracket(|x| 2.0 - x * x, 0.5, 3.0);
+        assert!((x - 2f64.sqrt()).abs() < 1e-11);
+        assert_eq!(find_root_in_bracket(|x| x - 1.0, 1.0, 2.0), 1.0);
+        assert_eq!(find_root_in_bracket(|x| x - 2.0, 1.0, 2.0), 2.0);
+    }
+
+    #[test]
+    fn bisection_fallback_alone_meets_the_tolerance() {
+        let f = |x: f64| x.powi(3) - 5.0;
+        let x = bisect(&f, 0.1, 4.0, f(0.1));
+        assert!(((x - 5f64.cbrt()) / 5f64.cbrt()).abs() < 1e-11);
+    }
+
+    #[test]
+    fn certification_rejects_a_point_far_from_the_root() {
+        let f = |x: f64| x - 1.0;
+        assert!(is_certified(&f, 1.0, 0.5, 2.0, f(0.5)));
+        assert!(!is_certified(&f, 1.001, 0.5, 2.0, f(0.5)));
+        assert!(!is_certified(&f, 3.0, 0.5, 2.0, f(0.5)));
+    }
+}

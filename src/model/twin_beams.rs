@@ -1,0 +1,497 @@
+//! Twin cantilever beams pressed together and bent by equal tip forces (paper section 2.1).
+//!
+//! Two identical cantilevers (length L, width b, height 2h), clamped at x = 0, are pressed together by
+//! a uniform interface pressure P; each carries a transverse tip force F. Euler-Bernoulli kinematics
+//! with axial stretching, no shear strain. The derivations, and where the paper's print differs, are in
+//! `docs/theory.md` ("Twin beams"); every formula below names its equation there as (B1), (B2), ...
+//!
+//! Conventions (lower beam): x from the clamp, deflection w in the direction of F, interface slip s(x)
+//! of the upper beam relative to the lower one, interface shear tau(x) >= 0 acting on the lower beam.
+
+use super::hyperbolic::{
+    cosh_rem0, cosh_rem2, cosh_sinh_ratio, inv_sinh, one_minus_sech, sinh_ratio, sinh_rem1,
+    sinh_rem3, sinhc,
+};
+use super::regime::Regime;
+use super::solve::find_root_in_bracket;
+use super::validate::{ParamError, non_negative, positive};
+
+/// Raw inputs of the twin-beam problem (mm, MPa, MPa/mm); validated by [`TwinBeams::new`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TwinBeamsParams {
+    /// Beam length L (mm).
+    pub length: f64,
+    /// Beam width b (mm).
+    pub width: f64,
+    /// Half of the height of one beam, h (mm): each beam is 2h high.
+    pub half_height: f64,
+    /// Young's modulus E (MPa).
+    pub youngs_modulus: f64,
+    /// Interface pressure P (MPa).
+    pub pressure: f64,
+    /// Friction coefficient mu (-).
+    pub friction: f64,
+    /// Tangential contact stiffness K_T (MPa/mm).
+    pub tangential_stiffness: f64,
+}
+
+impl TwinBeamsParams {
+    /// The paper's data set (section 2.1.2): L=200, b=20, h=10 mm, E=210000 MPa, P=1 MPa, mu=0.3,
+    /// K_T = mu P / 5e-4 mm = 600 MPa/mm.
+    pub const PAPER: TwinBeamsParams = TwinBeamsParams {
+        length: 200.0,
+        width: 20.0,
+        half_height: 10.0,
+        youngs_modulus: 210_000.0,
+        pressure: 1.0,
+        friction: 0.3,
+        tangential_stiffness: 600.0,
+    };
+}
+
+/// A validated twin-beam system with its load-independent derived constants.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TwinBeams {
+    params: TwinBeamsParams,
+    /// k = 2 sqrt(K_T / (E h)) (1/mm): inverse length of the microslip boundary layer (B5).
+    k: f64,
+}
+
+/// A validated tip force F >= 0 (N), applied to each beam.
+#[derive(Debug, Clone, Copy, PartialEq, PartialOrd)]
+pub struct TipForce(f64);
+
+impl TipForce {
+    /// Accepts finite F >= 0 (N).
+    pub fn new(newtons: f64) -> Result<Self, ParamError> {
+        non_negative("F", newtons, "must be >= 0 and finite (N)").map(TipForce)
+    }
+
+    /// The force in N.
+    pub fn newtons(self) -> f64 {
+        self.0
+    }
+}
+
+impl TwinBeams {
+    /// Validates every input: all must be finite and strictly positive.
+    pub fn new(params: TwinBeamsParams) -> Result<Self, ParamError> {
+        positive("L", params.length, "must be > 0 and finite (mm)")?;
+        positive("b", params.width, "must be > 0 and finite (mm)")?;
+        positive("h", params.half_height, "must be > 0 and finite (mm)")?;
+        positive("E", params.youngs_modulus, "must be > 0 and finite (MPa)")?;
+        positive("P", params.pressure, "must be > 0 and finite (MPa)")?;
+        positive(
+            "mu",
+            params.friction,
+            "must be > 0 and finite (dimensionless)",
+        )?;
+        positive(
+            "KT",
+            params.tangential_stiffness,
+            "must be > 0 and finite (MPa/mm)",
+        )?;
+        let k = 2.0
+            * (params.tangential_stiffness / (params.youngs_modulus * params.half_height)).sqrt();
+        Ok(TwinBeams { params, k })
+    }
+
+    /// The inputs this system was built from.
+    pub fn params(&self) -> TwinBeamsParams {
+        self.params
+    }
+
+    /// The same system with another K_T (MPa/mm); validated like [`TwinBeams::new`].
+    pub fn with_tangential_stiffness(&self, kt: f64) -> Result<Self, ParamError> {
+        TwinBeams::new(TwinBeamsParams {
+            tangential_stiffness: kt,
+            ..self.params
+        })
+    }
+
+    /// Inverse boundary-layer length k = 2 sqrt(K_T / (E h)) (1/mm), eq. (B5).
+    pub fn decay_rate(&self) -> f64 {
+        self.k
+    }
+
+    /// Coulomb stress mu P (MPa): the interface shear at which sliding starts.
+    pub fn coulomb_stress(&self) -> f64 {
+        self.params.friction * self.params.pressure
+    }
+
+    /// Saturation slip mu P / K_T (mm): the elastic slip at which the regularized law saturates.
+    pub fn saturation_slip(&self) -> f64 {
+        self.coulomb_stress() / self.params.tangential_stiffness
+    }
+
+    /// Interface shear of the bonded pair, 3F / (4bh) (MPa), eq. (B2): what a rigid (stuck) interface
+    /// carries, uniform along x.
+    fn bonded_shear(&self, force: f64) -> f64 {
+        3.0 * force / (4.0 * self.params.width * self.params.half_height)
+    }
+
+    /// Coulomb threshold F_thre = 4 mu b h P / 3 (N), eq. (B3): below it the pair sticks.
+    pub fn threshold_force(&self) -> f64 {
+        let p = &self.params;
+        4.0 * p.friction * p.width * p.half_height * p.pressure / 3.0
+    }
+
+    /// Regularized law: the force F_1 = F_thre / (1 - sech kL) (N) at which macroslip first appears,
+    /// eq. (B7). It appears at the free end, x = L ([`TwinBeams::first_macroslip_position`]).
+    pub fn first_macroslip_force(&self) -> f64 {
+        self.threshold_force() / one_minus_sech(self.k * self.params.length)
+    }
+
+    /// Where macroslip first appears as F grows past F_1: the free end x = L (mm), because the
+    /// all-microslip shear stress (B6) increases monotonically from the clamp to the tip.
+    pub fn first_macroslip_position(&self) -> f64 {
+        self.params.length
+    }
+
+    /// Solution under the plain Coulomb law at tip force `force`.
+    pub fn coulomb(&self, force: TipForce) -> CoulombBeams {
+        CoulombBeams {
+            beams: *self,
+            force: force.0,
+            slides: force.0 > self.threshold_force(),
+        }
+    }
+
+    /// Solution under the regularized Coulomb law at tip force `force`.
+    pub fn regularized(&self, force: TipForce) -> RegularizedBeams {
+        let f = force.0;
+        let p = &self.params;
+        let bonded = self.bonded_shear(f);
+        let lambda = self.k * p.length;
+        let has_macroslip = f > self.first_macroslip_force();
+        let (micro_end, end_shear) = if has_macroslip {
+            (self.micro_zone_end(f), self.coulomb_stress())
+        } else {
+            // (B6): tau(L) = tau_b (1 - sech kL), the shear at the free end with no macroslip.
+            (p.length, bonded * one_minus_sech(lambda))
+        };
+        let kx = self.k * micro_end;
+        // C k = tau'(0), the shear gradient at the clamp, (B9); stable for any kX > 0.
+        let slope_at_clamp = if micro_end > 0.0 {
+            self.k * (end_shear * inv_sinh(kx) + bonded * (0.5 * kx).tanh())
+        } else {
+            0.0
+        };
+        let mut state = RegularizedBeams {
+            beams: *self,
+            force: f,
+            has_macroslip,
+            micro_end,
+            end_shear,
+            bonded_shear: bonded,
+            slope_at_clamp,
+            total_shear: 0.0,
+        };
+        let [m0, _, _] = state.micro_moments(micro_end);
+        state.total_shear = m0 + self.coulomb_stress() * (p.length - micro_end);
+        state
+    }
+
+    /// Solves (B8) for the end X of the microslip zone when F > F_1 (mm).
+    ///
+    /// With z = kX, lambda = kL and q = F_thre / (F - F_thre), the condition that the slip gradient is
+    /// continuous at X reads g(z) = q / sinh z - tanh(z/2) - (lambda - z) = 0. g decreases from +inf at
+    /// z -> 0 and is negative at z = lambda when F > F_1, and its root is unique (docs/theory.md).
+    fn micro_zone_end(&self, force: f64) -> f64 {
+        let lambda = self.k * self.params.length;
+        let q = self.threshold_force() / (force - self.threshold_force());
+        let g = |z: f64| q * inv_sinh(z) - (0.5 * z).tanh() - (lambda - z);
+        // For z <= 1, sinh z <= sinh(1) z < 1.1753 z, so g(z) >= q / (1.1753 z) - 1/2 - lambda, which is
+        // positive at this lower end: a guaranteed bracket without any search.
+        let lower = 0.5 * 1f64.min(lambda).min(q / (1.1753 * (lambda + 0.5)));
+        if lower <= f64::MIN_POSITIVE {
+            // F is so far above F_thre that X underflows: the whole interface is in macroslip.
+            return 0.0;
+        }
+        find_root_in_bracket(g, lower, lambda) / self.k
+    }
+}
+
+/// Twin beams under the plain Coulomb law at one tip force.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CoulombBeams {
+    beams: TwinBeams,
+    force: f64,
+    slides: bool,
+}
+
+impl CoulombBeams {
+    /// Stick below or at F_thre, macroslip (the whole interface at once) above.
+    pub fn regime(&self) -> Regime {
+        if self.slides {
+            Regime::Macroslip
+        } else {
+            Regime::Stick
+        }
+    }
+
+    /// Interface shear stress tau(x) (MPa): uniform 3F/(4bh) in stick, mu P in slip.
+    pub fn shear_stress(&self, _x: f64) -> f64 {
+        if self.slides {
+            self.beams.coulomb_stress()
+        } else {
+            self.beams.bonded_shear(self.force)
+        }
+    }
+
+    /// Interface slip s(x) (mm), eq. (B4): zero in stick, 2 (tau_b - mu P)(L^2 - (L - x)^2) / (E h)
+    /// in slip.
+    pub fn slip(&self, x: f64) -> f64 {
+        if !self.slides {
+            return 0.0;
+        }
+        let p = &self.beams.params;
+        let excess = self.beams.bonded_shear(self.force) - self.beams.coulomb_stress();
+        2.0 * excess * (p.length * p.length - (p.length - x).powi(2))
+            / (p.youngs_modulus * p.half_height)
+    }
+
+    /// Deflection w(x) (mm), eq. (B3)/(B4): the bonded 4h-high beam under 2F in stick; each 2h-high
+    /// beam under the reduced tip force F - mu P b h in slip.
+    pub fn deflection(&self, x: f64) -> f64 {
+        let p = &self.beams.params;
+        let shape = 3.0 * p.length * x * x - x * x * x;
+        let bh3 = p.width * p.half_height.powi(3);
+        if self.slides {
+            (self.force - self.beams.coulomb_stress() * p.width * p.half_height) * shape
+                / (4.0 * p.youngs_modulus * bh3)
+        } else {
+            self.force * shape / (16.0 * p.youngs_modulus * bh3)
+        }
+    }
+
+    /// Tip deflection w(L) (mm).
+    pub fn tip_deflection(&self) -> f64 {
+        self.deflection(self.beams.params.length)
+    }
+}
+
+/// Twin beams under the regularized Coulomb law at one tip force.
+///
+/// Holds the few numbers that fix the whole solution: the microslip zone [0, X], the shear at X, the
+/// shear gradient at the clamp and the total interface shear force per unit width.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RegularizedBeams {
+    beams: TwinBeams,
+    force: f64,
+    has_macroslip: bool,
+    /// X (mm): end of the microslip zone; L when there is no macroslip.
+    micro_end: f64,
+    /// tau(X) (MPa): mu P with macroslip, tau_b (1 - sech kL) without.
+    end_shear: f64,
+    /// tau_b = 3F/(4bh) (MPa), the particular solution of (B5).
+    bonded_shear: f64,
+    /// tau'(0) (MPa/mm).
+    slope_at_clamp: f64,
+    /// T(0) = integral of tau over [0, L] (N/mm^2 * mm).
+    total_shear: f64,
+}
+
+impl RegularizedBeams {
+    /// Microslip alone up to F_1; microslip near the clamp plus macroslip near the tip beyond.
+    pub fn regime(&self) -> Regime {
+        if self.has_macroslip {
+            Regime::MicroslipMacroslip
+        } else {
+            Regime::Microslip
+        }
+    }
+
+    /// End X of the microslip zone, measured from the clamp (mm); L when nothing slides.
+    pub fn micro_zone_end(&self) -> f64 {
+        self.micro_end
+    }
+
+    /// The tip force this solution is for (N).
+    pub fn force(&self) -> f64 {
+        self.force
+    }
+
+    /// Interface shear stress tau(x) (MPa), eqs. (B6) and (B9); mu P in the macroslip zone.
+    pub fn shear_stress(&self, x: f64) -> f64 {
+        if x >= self.micro_end {
+            return self.end_shear;
+        }
+        let k = self.beams.k;
+        let kx = k * x.max(0.0);
+        if kx < 1.0 {
+            // Natural basis tau = -tau_b (cosh kx - 1) + C sinh kx: every term is small when k is.
+            -self.bonded_shear * kx * kx * cosh_rem0(kx) + self.slope_at_clamp * x * sinhc(kx)
+        } else {
+            // Boundary-layer basis: ratios of sinh that cannot overflow.
+            let kend = k * self.micro_end;
+            self.bonded_shear * (1.0 - sinh_ratio(kend - kx, kend))
+                + (self.end_shear - self.bonded_shear) * sinh_ratio(kx, kend)
+        }
+    }
+
+    /// Shear gradient tau'(x) (MPa/mm) inside the microslip zone.
+    fn shear_gradient(&self, x: f64) -> f64 {
+        let k = self.beams.k;
+        let kx = k * x;
+        if kx < 1.0 {
+            -self.bonded_shear * k * kx.sinh() + self.slope_at_clamp * kx.cosh()
+        } else {
+            let kend = k * self.micro_end;
+            k * (self.bonded_shear * cosh_sinh_ratio(kend - kx, kend)
+                + (self.end_shear - self.bonded_shear) * cosh_sinh_ratio(kx, kend))
+        }
+    }
+
+    /// Interface slip s(x) (mm): tau / K_T in microslip; (B10) in macroslip.
+    pub fn slip(&self, x: f64) -> f64 {
+        let p = &self.beams.params;
+        if x <= self.micro_end {
+            return self.shear_stress(x) / p.tangential_stiffness;
+        }
+        let excess = self.bonded_shear - self.beams.coulomb_stress();
+        self.beams.saturation_slip()
+            + 2.0 * excess * ((p.length - self.micro_end).powi(2) - (p.length - x).powi(2))
+                / (p.youngs_modulus * p.half_height)
+    }
+
+    /// Moments m_n = integral over [0, y] of (y - xi)^n tau(xi) d xi, n = 0, 1, 2, for 0 <= y <= X
+    /// (MPa mm^(n+1)), eq. (B12). Two evaluations, each free of cancellation in its range.
+    fn micro_moments(&self, y: f64) -> [f64; 3] {
+        if y <= 0.0 {
+            return [0.0; 3];
+        }
+        let k = self.beams.k;
+        let z = k * y;
+        let tb = self.bonded_shear;
+        let ck = self.slope_at_clamp;
+        if z < 1.0 {
+            // Termwise integrals of -tau_b (cosh kxi - 1) + C sinh kxi, as Taylor-remainder functions.
+            let k2 = k * k;
+            [
+                -tb * k2 * y.powi(3) * sinh_rem1(z) + ck * y * y * cosh_rem0(z),
+                -tb * k2 * y.powi(4) * cosh_rem2(z) + ck * y.powi(3) * sinh_rem1(z),
+                -2.0 * tb * k2 * y.powi(5) * sinh_rem3(z) + 2.0 * ck * y.powi(4) * cosh_rem2(z),
+            ]
+        } else {
+            // Integration by parts with tau = tau_b + tau'' / k^2 leaves only boundary values.
+            let k2 = k * k;
+            let m0 = tb * y + (self.shear_gradient(y) - ck) / k2;
+            let m1 = tb * y * y / 2.0 + (self.shear_stress(y) - y * ck) / k2;
+            let m2 = tb * y.powi(3) / 3.0 + (2.0 * m0 - y * y * ck) / k2;
+            [m0, m1, m2]
+        }
+    }
+
+    /// Deflection w(x) (mm) for 0 <= x <= L, eq. (B11):
+    /// w = 3/(2Ebh^3) [F (L x^2/2 - x^3/6) - b h (T(0) x^2/2 - Q(x))], Q(x) = 1/2 int_0^x (x-xi)^2 tau.
+    pub fn deflection(&self, x: f64) -> f64 {
+        let p = &self.beams.params;
+        let x = x.clamp(0.0, p.length);
+        let y = x.min(self.micro_end);
+        let a = x - y;
+        let [m0, m1, m2] = self.micro_moments(y);
+        let mut q = 0.5 * (a * a * m0 + 2.0 * a * m1 + m2);
+        if a > 0.0 {
+            q += self.beams.coulomb_stress() * a.powi(3) / 6.0;
+        }
+        let bh = p.width * p.half_height;
+        let bending = self.force * (p.length * x * x / 2.0 - x.powi(3) / 6.0);
+        let interface = bh * (self.total_shear * x * x / 2.0 - q);
+        3.0 * (bending - interface) / (2.0 * p.youngs_modulus * bh * p.half_height * p.half_height)
+    }
+
+    /// Tip deflection w(L) (mm).
+    pub fn tip_deflection(&self) -> f64 {
+        self.deflection(self.beams.params.length)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn paper() -> TwinBeams {
+        TwinBeams::new(TwinBeamsParams::PAPER).unwrap()
+    }
+
+    fn force(f: f64) -> TipForce {
+        TipForce::new(f).unwrap()
+    }
+
+    #[test]
+    fn paper_thresholds_match_hand_computation() {
+        let beams = paper();
+        // F_thre = 4 * 0.3 * 20 * 10 * 1 / 3 = 80 N.
+        assert!((beams.threshold_force() - 80.0).abs() < 1e-12);
+        // k L = 2 sqrt(600 / 2.1e6) * 200 = 6.7612340...; F_1 = 80 / (1 - sech(kL)).
+        let kl = 2.0 * (600.0_f64 / 2.1e6).sqrt() * 200.0;
+        assert!((beams.first_macroslip_force() - 80.0 / (1.0 - 1.0 / kl.cosh())).abs() < 1e-10);
+    }
+
+    #[test]
+    fn coulomb_tip_deflection_matches_strength_of_materials() {
+        let beams = paper();
+        // Bonded pair: 2F on I = b (4h)^3 / 12, w(L) = 2F L^3 / (3 E I).
+        let i_bonded = 20.0 * 40.0_f64.powi(3) / 12.0;
+        let w = 2.0 * 50.0 * 200.0_f64.powi(3) / (3.0 * 210_000.0 * i_bonded);
+        assert!((beams.coulomb(force(50.0)).tip_deflection() - w).abs() < 1e-15);
+        // Sliding: one beam (I = b (2h)^3/12) under F minus the friction couple mu P b h per unit length
+        // of lever, i.e. the tip force F - mu P b h.
+        let i_single = 20.0 * 20.0_f64.powi(3) / 12.0;
+        let w = (150.0 - 0.3 * 20.0 * 10.0) * 200.0_f64.powi(3) / (3.0 * 210_000.0 * i_single);
+        assert!((beams.coulomb(force(150.0)).tip_deflection() - w).abs() < 1e-14);
+    }
+
+    #[test]
+    fn coulomb_is_continuous_at_the_threshold() {
+        let beams = paper();
+        let f = beams.threshold_force();
+        let below = beams.coulomb(force(f)).tip_deflection();
+        let above = beams.coulomb(force(f * (1.0 + 1e-12))).tip_deflection();
+        assert_eq!(beams.coulomb(force(f)).regime(), Regime::Stick);
+        assert_eq!(
+            beams.coulomb(force(f * (1.0 + 1e-12))).regime(),
+            Regime::Macroslip
+        );
+        assert!(((above - below) / below).abs() < 1e-10);
+    }
+
+    #[test]
+    fn zero_force_gives_a_zero_solution() {
+        let state = paper().regularized(force(0.0));
+        assert_eq!(state.regime(), Regime::Microslip);
+        assert_eq!(state.tip_deflection(), 0.0);
+        assert_eq!(state.shear_stress(100.0), 0.0);
+    }
+
+    #[test]
+    fn shear_vanishes_at_the_clamp_and_saturates_at_x() {
+        let beams = paper();
+        for f in [40.0, 80.0, 100.0, 300.0, 5000.0] {
+            let state = beams.regularized(force(f));
+            assert!(state.shear_stress(0.0).abs() < 1e-12);
+            let x = state.micro_zone_end();
+            if state.regime() == Regime::MicroslipMacroslip {
+                let at_x = state.shear_stress(x * (1.0 - 1e-12));
+                assert!((at_x - 0.3).abs() < 1e-9, "F={f}: tau(X-) = {at_x}");
+            }
+        }
+    }
+
+    #[test]
+    fn bad_inputs_name_their_field() {
+        let bad = TwinBeamsParams {
+            half_height: -1.0,
+            ..TwinBeamsParams::PAPER
+        };
+        assert_eq!(TwinBeams::new(bad).unwrap_err().field, "h");
+        let bad = TwinBeamsParams {
+            tangential_stiffness: f64::NAN,
+            ..TwinBeamsParams::PAPER
+        };
+        assert_eq!(TwinBeams::new(bad).unwrap_err().field, "KT");
+        assert_eq!(TipForce::new(-1.0).unwrap_err().field, "F");
+        assert!(TipForce::new(f64::INFINITY).is_err());
+    }
+}
