@@ -1,0 +1,71 @@
+//! Test-only numerics, deliberately independent of the closed forms: Gauss-Legendre quadrature,
+//! finite differences and CSV reading of the reference data.
+#![allow(dead_code)]
+
+/// 5-point Gauss-Legendre nodes and weights on [-1, 1].
+const GAUSS_NODES: [f64; 5] = [
+    0.0,
+    -0.538_469_310_105_683_1,
+    0.538_469_310_105_683_1,
+    -0.906_179_845_938_664,
+    0.906_179_845_938_664,
+];
+const GAUSS_WEIGHTS: [f64; 5] = [
+    0.568_888_888_888_888_9,
+    0.478_628_670_499_366_5,
+    0.478_628_670_499_366_5,
+    0.236_926_885_056_189_1,
+    0.236_926_885_056_189_1,
+];
+
+/// Composite 5-point Gauss-Legendre integral of `f` over [a, b] with `panels` equal panels
+/// (exact for degree-9 polynomials on each panel).
+pub fn integrate(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize) -> f64 {
+    if b <= a {
+        return 0.0;
+    }
+    let width = (b - a) / panels as f64;
+    (0..panels)
+        .map(|i| {
+            let mid = a + (i as f64 + 0.5) * width;
+            GAUSS_NODES
+                .iter()
+                .zip(GAUSS_WEIGHTS)
+                .map(|(node, weight)| weight * f(mid + 0.5 * width * node))
+                .sum::<f64>()
+                * 0.5
+                * width
+        })
+        .sum()
+}
+
+/// Fourth-order central first derivative.
+pub fn derivative(f: impl Fn(f64) -> f64, x: f64, step: f64) -> f64 {
+    (f(x - 2.0 * step) - 8.0 * f(x - step) + 8.0 * f(x + step) - f(x + 2.0 * step)) / (12.0 * step)
+}
+
+/// Fourth-order central second derivative.
+pub fn second_derivative(f: impl Fn(f64) -> f64, x: f64, step: f64) -> f64 {
+    (-f(x - 2.0 * step) + 16.0 * f(x - step) - 30.0 * f(x) + 16.0 * f(x + step) - f(x + 2.0 * step))
+        / (12.0 * step * step)
+}
+
+/// Rows of a reference CSV shipped in `tests/data/`, comment lines (`#`) and header skipped.
+pub fn reference_rows(name: &str) -> Vec<Vec<f64>> {
+    let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    text.lines()
+        .filter(|line| !line.starts_with('#'))
+        .skip(1)
+        .map(|line| {
+            line.split(',')
+                .map(|v| v.trim().parse().expect("number"))
+                .collect()
+        })
+        .collect()
+}
+
+/// |a - b| / |b|.
+pub fn relative_error(a: f64, b: f64) -> f64 {
+    ((a - b) / b).abs()
+}
