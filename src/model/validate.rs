@@ -17,9 +17,14 @@ pub struct ParamError {
     pub allowed: &'static str,
 }
 
-/// Accepts finite values strictly above zero (lengths, moduli, pressures, friction, stiffness).
-pub fn positive(field: &'static str, value: f64, allowed: &'static str) -> Result<f64, ParamError> {
-    if value.is_finite() && value > 0.0 {
+/// Passes `value` through when it is finite and `in_range`, otherwise builds the error.
+fn check(
+    field: &'static str,
+    value: f64,
+    allowed: &'static str,
+    in_range: bool,
+) -> Result<f64, ParamError> {
+    if value.is_finite() && in_range {
         Ok(value)
     } else {
         Err(ParamError {
@@ -28,6 +33,11 @@ pub fn positive(field: &'static str, value: f64, allowed: &'static str) -> Resul
             allowed,
         })
     }
+}
+
+/// Accepts finite values strictly above zero (lengths, moduli, pressures, friction, stiffness).
+pub fn positive(field: &'static str, value: f64, allowed: &'static str) -> Result<f64, ParamError> {
+    check(field, value, allowed, value > 0.0)
 }
 
 /// Accepts finite values at or above zero (loads).
@@ -36,29 +46,18 @@ pub fn non_negative(
     value: f64,
     allowed: &'static str,
 ) -> Result<f64, ParamError> {
-    if value.is_finite() && value >= 0.0 {
-        Ok(value)
-    } else {
-        Err(ParamError {
-            field,
-            value,
-            allowed,
-        })
-    }
+    check(field, value, allowed, value >= 0.0)
 }
 
 /// Accepts a Poisson ratio of a stable isotropic solid that does not expand under compression:
 /// 0 <= nu < 0.5 (0.5 is incompressible and makes the plane-strain compliance singular).
 pub fn poisson_ratio(field: &'static str, value: f64) -> Result<f64, ParamError> {
-    if value.is_finite() && (0.0..0.5).contains(&value) {
-        Ok(value)
-    } else {
-        Err(ParamError {
-            field,
-            value,
-            allowed: "must be in [0, 0.5) (dimensionless)",
-        })
-    }
+    check(
+        field,
+        value,
+        "must be in [0, 0.5) (dimensionless)",
+        (0.0..0.5).contains(&value),
+    )
 }
 
 #[cfg(test)]
