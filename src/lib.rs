@@ -11,7 +11,10 @@
 //! # Ok::<(), microslip::ParamError>(())
 //! ```
 
+pub mod cli;
+pub mod curves;
 pub mod model;
+pub mod preset;
 pub mod report;
 
 pub use model::plate::{

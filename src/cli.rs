@@ -1,0 +1,456 @@
+//! The headless command line: reports, sweeps and presets for scripts and FE benchmarking.
+//!
+//! A thin layer: presets and `--set` come from [`crate::preset`], numbers from [`crate::curves`],
+//! formats from [`crate::report`]. Errors are one line on stderr with exit code 2 (usage or input
+//! problems); `check` exits with 1 when a file has problems. Nothing goes to stdout before the inputs
+//! are known to be valid, so a failed run never leaves half a table behind.
+
+use std::io::{self, BufWriter, Write};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use thiserror::Error;
+
+use crate::curves::{self, RangeError, Spacing};
+use crate::model::validate::ParamError;
+use crate::preset::{self, Inputs, Model, ModelKind, Preset, PresetError, PresetSource};
+use crate::report::{self, csv, json, text};
+
+/// microslip: friction benchmarks under the regularized Coulomb law (Ligier & Bonhote, 2014).
+///
+/// Units: mm, N, MPa; K_T in MPa/mm. Without a subcommand, prints a report of the paper's two data
+/// sets.
+#[derive(Debug, Parser)]
+#[command(
+    name = "microslip",
+    version,
+    about,
+    long_about = None,
+    after_help = "Units: mm, N, MPa; K_T in MPa/mm (1 MPa/um = 1000 MPa/mm).\n\
+                  Keys for --set and preset files: beam L b h E P mu KT F; plate L tp E nu mu P KT.\n\
+                  Without a command, microslip prints a report of the paper's two data sets."
+)]
+pub struct Cli {
+    /// What to do (default: the report of the paper's data sets).
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// Subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Twin cantilever beams at one tip force: thresholds, X, w(L) for both laws, regimes.
+    Beam(PointArgs),
+    /// Squeezed plate: X_s, X_r, u(L) for both laws, regimes, contact-pressure check.
+    Plate(PointArgs),
+    /// Tables over a parameter range, as CSV or JSON.
+    #[command(subcommand)]
+    Sweep(SweepCommand),
+    /// List bundled and user presets with their descriptions.
+    Presets,
+    /// Validate preset files; report every problem; exit 1 if any.
+    Check {
+        /// Preset files (TOML).
+        #[arg(required = true, value_name = "FILE")]
+        files: Vec<PathBuf>,
+    },
+}
+
+/// Where the parameters come from.
+#[derive(Debug, Args)]
+pub struct InputArgs {
+    /// Bundled or user preset name, or a path to a TOML file.
+    #[arg(long, value_name = "P")]
+    pub preset: Option<String>,
+    /// Override one parameter, e.g. --set KT=120 (beam: L b h E P mu KT F; plate: L tp E nu mu P KT).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub assignments: Vec<String>,
+}
+
+/// Arguments of `beam` and `plate`.
+#[derive(Debug, Args)]
+pub struct PointArgs {
+    #[command(flatten)]
+    inputs: InputArgs,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    format: ReportFormat,
+}
+
+/// Sweep subcommands.
+#[derive(Debug, Subcommand)]
+pub enum SweepCommand {
+    /// Twin beams over a range of tip forces F (N), linearly spaced (replaces the preset's F).
+    Beam {
+        /// First force (N).
+        #[arg(long, value_name = "F0", allow_negative_numbers = true)]
+        from: f64,
+        /// Last force (N).
+        #[arg(long, value_name = "F1", allow_negative_numbers = true)]
+        to: f64,
+        /// Number of rows, both ends included (2 to 100000000).
+        #[arg(long, value_name = "N")]
+        points: u64,
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
+        format: TableFormat,
+    },
+    /// Squeezed plate over a range of K_T (MPa/mm), logarithmically spaced unless --linear.
+    Plate {
+        /// First K_T (MPa/mm).
+        #[arg(long, value_name = "A", allow_negative_numbers = true)]
+        kt_from: f64,
+        /// Last K_T (MPa/mm).
+        #[arg(long, value_name = "B", allow_negative_numbers = true)]
+        kt_to: f64,
+        /// Number of rows, both ends included (2 to 100000000).
+        #[arg(long, value_name = "N")]
+        points: u64,
+        /// Space K_T linearly instead of logarithmically.
+        #[arg(long)]
+        linear: bool,
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
+        format: TableFormat,
+    },
+}
+
+/// Formats of single-point reports.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ReportFormat {
+    /// Readable report.
+    Text,
+    /// JSON object with unit-suffixed names.
+    Json,
+}
+
+/// Formats of sweeps.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TableFormat {
+    /// CSV with a header line.
+    Csv,
+    /// JSON array of row objects.
+    Json,
+}
+
+/// Why a command failed.
+#[derive(Debug, Error)]
+pub enum CliError {
+    /// A preset or `--set` problem.
+    #[error(transparent)]
+    Preset(#[from] PresetError),
+    /// A parameter out of range.
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    /// A sweep range problem.
+    #[error(transparent)]
+    Range(#[from] RangeError),
+    /// A preset of the other model.
+    #[error("preset '{preset}' is a {found} preset; `microslip {wanted}` needs a {wanted} preset")]
+    WrongModel {
+        /// The preset.
+        preset: String,
+        /// Its model.
+        found: ModelKind,
+        /// The model the command needs.
+        wanted: ModelKind,
+    },
+    /// Files with problems (already reported on stdout).
+    #[error("{0} of the files checked have problems")]
+    CheckFailed(usize),
+    /// Writing the output failed.
+    #[error("cannot write output: {0}")]
+    Output(#[from] io::Error),
+}
+
+impl CliError {
+    fn exit_code(&self) -> u8 {
+        match self {
+            CliError::CheckFailed(_) | CliError::Output(_) => 1,
+            _ => 2,
+        }
+    }
+}
+
+/// Parses the process arguments and runs; the whole binary.
+pub fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(error) => return report_clap_error(&error),
+    };
+    let mut out = BufWriter::new(io::stdout().lock());
+    let result = run(&cli, &mut out).and_then(|()| out.flush().map_err(CliError::from));
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        // `microslip sweep ... | head`: the reader left; that is not an error.
+        Err(CliError::Output(e)) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("microslip: {error}");
+            ExitCode::from(error.exit_code())
+        }
+    }
+}
+
+/// Help and version go to stdout as clap writes them; every other parse error becomes one line.
+fn report_clap_error(error: &clap::Error) -> ExitCode {
+    use clap::error::ErrorKind;
+    if matches!(
+        error.kind(),
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
+    ) {
+        let _ = error.print();
+        return ExitCode::SUCCESS;
+    }
+    let rendered = error.render().to_string();
+    let first_block: Vec<&str> = rendered
+        .lines()
+        .take_while(|l| !l.trim().is_empty())
+        .map(str::trim)
+        .collect();
+    let line = first_block.join(" ");
+    let line = line.strip_prefix("error: ").unwrap_or(&line);
+    eprintln!("microslip: {line} (see --help)");
+    ExitCode::from(2)
+}
+
+/// Runs a parsed command, writing results to `out`.
+pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
+    match &cli.command {
+        None => out.write_all(report::paper_report().as_bytes())?,
+        Some(Command::Beam(args)) => {
+            let (name, model) = load(&args.inputs, ModelKind::Beam)?;
+            if let Model::Beam { beams, force } = model {
+                match args.format {
+                    ReportFormat::Text => {
+                        out.write_all(text::beam(&name, &beams, force).as_bytes())?
+                    }
+                    ReportFormat::Json => write_json(out, &json::beam(&name, &beams, force))?,
+                }
+            }
+        }
+        Some(Command::Plate(args)) => {
+            let (name, model) = load(&args.inputs, ModelKind::Plate)?;
+            if let Model::Plate(plate) = model {
+                match args.format {
+                    ReportFormat::Text => out.write_all(text::plate(&name, &plate).as_bytes())?,
+                    ReportFormat::Json => write_json(out, &json::plate(&name, &plate))?,
+                }
+            }
+        }
+        Some(Command::Sweep(SweepCommand::Beam {
+            from,
+            to,
+            points,
+            inputs,
+            format,
+        })) => {
+            let samples = curves::force_samples(*from, *to, *points)?;
+            let (_, model) = load(inputs, ModelKind::Beam)?;
+            if let Model::Beam { beams, .. } = model {
+                let rows = curves::beam_force_sweep(beams, samples);
+                match format {
+                    TableFormat::Csv => {
+                        write_csv(out, csv::BEAM_HEADER, rows, csv::write_beam_row)?
+                    }
+                    TableFormat::Json => {
+                        write_json_rows(out, rows.map(|r| json::BeamRow::from(&r)))?
+                    }
+                }
+            }
+        }
+        Some(Command::Sweep(SweepCommand::Plate {
+            kt_from,
+            kt_to,
+            points,
+            linear,
+            inputs,
+            format,
+        })) => {
+            let spacing = if *linear {
+                Spacing::Linear
+            } else {
+                Spacing::Logarithmic
+            };
+            let samples = curves::stiffness_samples(*kt_from, *kt_to, *points, spacing)?;
+            let (_, model) = load(inputs, ModelKind::Plate)?;
+            if let Model::Plate(plate) = model {
+                let rows = curves::plate_kt_sweep(plate, samples);
+                match format {
+                    TableFormat::Csv => {
+                        write_csv(out, csv::PLATE_HEADER, rows, csv::write_plate_row)?
+                    }
+                    TableFormat::Json => {
+                        write_json_rows(out, rows.map(|r| json::PlateRow::from(&r)))?
+                    }
+                }
+            }
+        }
+        Some(Command::Presets) => list_presets(out)?,
+        Some(Command::Check { files }) => check(out, files)?,
+    }
+    Ok(())
+}
+
+/// Resolves the preset (default: the paper's data set of `wanted`), applies `--set`, validates.
+fn load(args: &InputArgs, wanted: ModelKind) -> Result<(String, Model), CliError> {
+    let default = match wanted {
+        ModelKind::Beam => "paper-beams",
+        ModelKind::Plate => "paper-plate",
+    };
+    let spec = args.preset.as_deref().unwrap_or(default);
+    let preset = preset::resolve(spec)?;
+    if preset.inputs.kind() != wanted {
+        return Err(CliError::WrongModel {
+            preset: spec.to_string(),
+            found: preset.inputs.kind(),
+            wanted,
+        });
+    }
+    let mut inputs: Inputs = preset.inputs;
+    for assignment in &args.assignments {
+        inputs.apply_assignment(assignment)?;
+    }
+    let name = if args.assignments.is_empty() {
+        preset.name
+    } else {
+        format!("{} (modified by --set)", preset.name)
+    };
+    Ok((name, inputs.validate()?))
+}
+
+fn write_json(out: &mut impl Write, value: &serde_json::Value) -> Result<(), CliError> {
+    serde_json::to_writer_pretty(&mut *out, value).map_err(io::Error::from)?;
+    writeln!(out)?;
+    Ok(())
+}
+
+/// Streams rows: memory stays flat however many points are asked for.
+fn write_csv<W: Write, R>(
+    out: &mut W,
+    header: &str,
+    rows: impl Iterator<Item = R>,
+    write_row: impl Fn(&mut W, &R) -> io::Result<()>,
+) -> Result<(), CliError> {
+    writeln!(out, "{header}")?;
+    for row in rows {
+        write_row(out, &row)?;
+    }
+    Ok(())
+}
+
+/// Streams a JSON array, one object per line.
+fn write_json_rows<R: serde::Serialize>(
+    out: &mut impl Write,
+    rows: impl Iterator<Item = R>,
+) -> Result<(), CliError> {
+    out.write_all(b"[")?;
+    for (i, row) in rows.enumerate() {
+        out.write_all(if i == 0 { b"\n  " } else { b",\n  " })?;
+        serde_json::to_writer(&mut *out, &row).map_err(io::Error::from)?;
+    }
+    out.write_all(b"\n]\n")?;
+    Ok(())
+}
+
+fn list_presets(out: &mut impl Write) -> Result<(), CliError> {
+    writeln!(
+        out,
+        "{:<20} {:<6} {:<8} description",
+        "name", "model", "source"
+    )?;
+    for p in preset::bundled() {
+        writeln!(
+            out,
+            "{:<20} {:<6} {:<8} {}",
+            p.name,
+            p.inputs.kind(),
+            "bundled",
+            p.description
+        )?;
+    }
+    let dir = preset::user_preset_dir();
+    for (path, loaded) in preset::user_presets() {
+        let name = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        match loaded {
+            Ok(p) => writeln!(
+                out,
+                "{:<20} {:<6} {:<8} {}",
+                name,
+                p.inputs.kind(),
+                "user",
+                p.description
+            )?,
+            Err(problems) => writeln!(
+                out,
+                "{:<20} {:<6} {:<8} INVALID: {} (run `microslip check {}`)",
+                name,
+                "?",
+                "user",
+                problems[0],
+                path.display()
+            )?,
+        }
+    }
+    match dir {
+        Some(dir) => writeln!(out, "\nuser presets: {}", dir.display())?,
+        None => writeln!(
+            out,
+            "\nuser presets: none (neither XDG_CONFIG_HOME nor HOME is set)"
+        )?,
+    }
+    Ok(())
+}
+
+fn check(out: &mut impl Write, files: &[PathBuf]) -> Result<(), CliError> {
+    let mut failed = 0;
+    for path in files {
+        match Preset::load(path) {
+            Ok(p) => {
+                let PresetSource::File(path) = &p.source else {
+                    continue;
+                };
+                let description = if p.description.is_empty() {
+                    "no description"
+                } else {
+                    &p.description
+                };
+                writeln!(
+                    out,
+                    "{}: ok ({} preset: {description})",
+                    path.display(),
+                    p.inputs.kind()
+                )?;
+            }
+            Err(problems) => {
+                failed += 1;
+                for problem in problems {
+                    writeln!(out, "{}: {problem}", path.display())?;
+                }
+            }
+        }
+    }
+    if failed > 0 {
+        Err(CliError::CheckFailed(failed))
+    } else {
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn clap_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+}

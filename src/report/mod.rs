@@ -1,0 +1,199 @@
+//! Output formats over the physics: text reports for people, JSON and CSV for scripts.
+//!
+//! Pure string building (no printing), so every format is testable and the binary stays thin. All
+//! numbers come from [`crate::curves`], the same functions the sweeps and the TUI use.
+
+pub mod csv;
+pub mod json;
+pub mod text;
+
+use std::fmt::Write;
+
+use crate::curves::{beam_point, plate_point};
+use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
+
+/// A number for people: 6 significant digits, plain notation between 1e-3 and 1e6, exponent outside,
+/// trailing zeros dropped. Never prints NaN: a non-finite value (which the core does not produce)
+/// shows as "n/a".
+pub fn number(x: f64) -> String {
+    if !x.is_finite() {
+        return "n/a".to_string();
+    }
+    if x == 0.0 {
+        return "0".to_string();
+    }
+    let magnitude = x.abs();
+    if (1e-3..1e6).contains(&magnitude) {
+        let decimals = (5 - magnitude.log10().floor() as i32).max(0) as usize;
+        let text = format!("{x:.decimals$}");
+        if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            text
+        }
+    } else {
+        let text = format!("{x:.5e}");
+        match text.split_once('e') {
+            Some((mantissa, exponent)) if mantissa.contains('.') => {
+                format!(
+                    "{}e{exponent}",
+                    mantissa.trim_end_matches('0').trim_end_matches('.')
+                )
+            }
+            _ => text,
+        }
+    }
+}
+
+/// Tip forces of the paper report's beam table, as multiples of F_thre: stick, threshold, then slip.
+const BEAM_FORCE_FACTORS: [f64; 7] = [0.5, 1.0, 1.125, 1.25, 1.5, 2.5, 3.75];
+
+/// K_T values of the paper report's plate table (MPa/mm): the decades of the paper's Fig. 14.
+const PLATE_STIFFNESSES: [f64; 8] = [1.0, 10.0, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7];
+
+/// The report for the paper's twin-beam and plate data sets (what `microslip` prints for now).
+pub fn paper_report() -> String {
+    let mut out = String::new();
+    // The paper's parameters are valid constants: construction cannot fail.
+    if let (Ok(beams), Ok(plate)) = (
+        TwinBeams::new(TwinBeamsParams::PAPER),
+        SqueezedPlate::new(PlateParams::PAPER),
+    ) {
+        write_beam_table(&mut out, &beams);
+        out.push('\n');
+        write_plate_table(&mut out, &plate);
+    }
+    out
+}
+
+fn write_beam_table(out: &mut String, beams: &TwinBeams) {
+    let p = beams.params();
+    let _ = writeln!(
+        out,
+        "Twin cantilever beams (Ligier & Bonhote 2014, section 2.1)"
+    );
+    let _ = writeln!(
+        out,
+        "  L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
+        p.length,
+        p.width,
+        p.half_height,
+        p.youngs_modulus,
+        p.pressure,
+        p.friction,
+        p.tangential_stiffness
+    );
+    let _ = writeln!(
+        out,
+        "  F_thre = {} N (Coulomb slip), F_1 = {} N (first macroslip, at x = {} mm), mu P / K_T = {} um",
+        number(beams.threshold_force()),
+        number(beams.first_macroslip_force()),
+        number(beams.first_macroslip_position()),
+        number(beams.saturation_slip() * 1e3)
+    );
+    let _ = writeln!(
+        out,
+        "  {:>8}  {:>14}  {:>18}  {:>9}  {:<10}  regularized",
+        "F (N)", "w_Coulomb (mm)", "w_regularized (mm)", "X (mm)", "Coulomb"
+    );
+    for factor in BEAM_FORCE_FACTORS {
+        let Ok(force) = TipForce::new(factor * beams.threshold_force()) else {
+            continue;
+        };
+        let row = beam_point(beams, force);
+        let _ = writeln!(
+            out,
+            "  {:>8}  {:>14}  {:>18}  {:>9}  {:<10}  {}",
+            number(row.force),
+            number(row.w_coulomb),
+            number(row.w_regularized),
+            number(row.micro_end),
+            row.regime_coulomb,
+            row.regime_regularized
+        );
+    }
+}
+
+fn write_plate_table(out: &mut String, plate: &SqueezedPlate) {
+    let p = plate.params();
+    let pressure = plate.contact_pressure();
+    let first = plate_point(plate);
+    let _ = writeln!(
+        out,
+        "Squeezed plate on a rigid plane (Ligier & Bonhote 2014, section 2.2)"
+    );
+    let _ = writeln!(
+        out,
+        "  L = {} mm (half-length), t_p = {} mm, E = {} MPa, nu = {}, mu = {}, P = {} MPa",
+        p.half_length, p.thickness, p.youngs_modulus, p.poisson, p.friction, p.pressure
+    );
+    let _ = writeln!(
+        out,
+        "  Coulomb: X_s = {} mm, u(L) = {} mm, {}",
+        number(first.stick_end),
+        number(first.u_coulomb),
+        first.regime_coulomb
+    );
+    let _ = writeln!(
+        out,
+        "  contact pressure P_r/P: {} (centre) to {} (edge), mean deviation {} % -> constant-pressure assumption {}",
+        number(pressure.ratio(0.0)),
+        number(pressure.ratio(p.half_length)),
+        number(pressure.mean_deviation() * 100.0),
+        if pressure.constant_pressure_holds() {
+            "holds"
+        } else {
+            "does NOT hold"
+        }
+    );
+    let _ = writeln!(
+        out,
+        "  {:>14}  {:>18}  {:>10}  regularized",
+        "K_T (MPa/mm)", "u_regularized (mm)", "X_r (mm)"
+    );
+    for kt in PLATE_STIFFNESSES {
+        let Ok(plate) = plate.with_tangential_stiffness(kt) else {
+            continue;
+        };
+        let row = plate_point(&plate);
+        let _ = writeln!(
+            out,
+            "  {:>14}  {:>18}  {:>10}  {}",
+            number(row.kt),
+            number(row.u_regularized),
+            number(row.micro_end),
+            row.regime_regularized
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_short_and_readable() {
+        assert_eq!(number(80.0), "80");
+        assert_eq!(number(80.185_677_6), "80.1857");
+        assert_eq!(number(0.038_292_26), "0.0382923");
+        assert_eq!(number(5e-4), "5e-4");
+        assert_eq!(number(1e-3), "0.001");
+        assert_eq!(number(7.959_183_67e-6), "7.95918e-6");
+        assert_eq!(number(1e6), "1e6");
+        assert_eq!(number(210_000.0), "210000");
+        assert_eq!(number(-2.5), "-2.5");
+        assert_eq!(number(0.0), "0");
+        assert_eq!(number(f64::NAN), "n/a");
+    }
+
+    #[test]
+    fn paper_report_names_both_models_units_and_regimes() {
+        let text = paper_report();
+        assert!(text.contains("Twin cantilever beams"));
+        assert!(text.contains("Squeezed plate"));
+        assert!(text.contains("F_thre = 80 N"));
+        assert!(text.contains("microslip+macroslip"));
+        assert!(text.contains("stick+macroslip"));
+        assert!(!text.contains("NaN") && !text.contains("inf") && !text.contains("n/a"));
+    }
+}

@@ -1,0 +1,210 @@
+//! Readable single-point reports: inputs with units, thresholds, both laws side by side.
+
+use std::fmt::Write;
+
+use super::number;
+use crate::curves::{beam_point, plate_point};
+use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
+use crate::preset::Inputs;
+use crate::{SqueezedPlate, TipForce, TwinBeams};
+
+/// The inputs block: one line per key with value, unit and meaning.
+fn write_inputs(out: &mut String, inputs: &Inputs) {
+    let _ = writeln!(out, "Inputs");
+    for key in inputs.kind().keys() {
+        let value = inputs.get(key.name).unwrap_or(f64::NAN);
+        let unit = if key.unit == "-" {
+            String::new()
+        } else {
+            format!(" {}", key.unit)
+        };
+        let mut line = format!(
+            "  {:<3} = {:<18} {}",
+            key.name,
+            format!("{}{unit}", number(value)),
+            key.meaning
+        );
+        if key.name == "KT" {
+            line.push_str(&format!(
+                " ({} MPa/um)",
+                number(mpa_per_mm_to_mpa_per_um(value))
+            ));
+        }
+        let _ = writeln!(out, "{line}");
+    }
+}
+
+/// Twin-beam report at one force.
+pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
+    let mut out = String::new();
+    let p = beams.params();
+    let row = beam_point(beams, force);
+    let _ = writeln!(
+        out,
+        "Twin cantilever beams (Ligier & Bonhote 2014, section 2.1) - preset {preset}"
+    );
+    write_inputs(
+        &mut out,
+        &Inputs::Beam {
+            structure: p,
+            force: force.newtons(),
+        },
+    );
+    let _ = writeln!(out, "Thresholds");
+    let _ = writeln!(
+        out,
+        "  F_thre     = {:<14} Coulomb: the whole interface slides above it",
+        format!("{} N", number(beams.threshold_force()))
+    );
+    let _ = writeln!(
+        out,
+        "  F_1        = {:<14} regularized: macroslip starts above it, at x = {} mm (free end)",
+        format!("{} N", number(beams.first_macroslip_force())),
+        number(beams.first_macroslip_position())
+    );
+    let _ = writeln!(
+        out,
+        "  mu P / K_T = {:<14} saturation slip",
+        format!("{} um", number(mm_to_um(beams.saturation_slip())))
+    );
+    let stick_end = if row.regime_coulomb.has_macroslip() {
+        0.0
+    } else {
+        p.length
+    };
+    let _ = writeln!(
+        out,
+        "{:<24}{:<22}regularized",
+        format!("At F = {} N", number(row.force)),
+        "Coulomb"
+    );
+    let _ = writeln!(
+        out,
+        "  {:<22}{:<22}{}",
+        "regime", row.regime_coulomb, row.regime_regularized
+    );
+    let _ = writeln!(
+        out,
+        "  {:<22}{:<22}{}",
+        "w(L) (mm)",
+        number(row.w_coulomb),
+        number(row.w_regularized)
+    );
+    let (coulomb_end, regularized_end) = (number(stick_end), number(row.micro_end));
+    let _ = writeln!(
+        out,
+        "  {:<22}{:<22}{regularized_end} (microslip end X)",
+        "zone end (mm)",
+        format!("{coulomb_end} (stick end)")
+    );
+    if row.w_coulomb > 0.0 {
+        let _ = writeln!(
+            out,
+            "  {:<22}{}",
+            "w_reg / w_Coulomb",
+            number(row.w_regularized / row.w_coulomb)
+        );
+    }
+    out
+}
+
+/// Squeezed-plate report.
+pub fn plate(preset: &str, plate: &SqueezedPlate) -> String {
+    let mut out = String::new();
+    let p = plate.params();
+    let row = plate_point(plate);
+    let pressure = plate.contact_pressure();
+    let _ = writeln!(
+        out,
+        "Squeezed plate on a rigid plane (Ligier & Bonhote 2014, section 2.2) - preset {preset}"
+    );
+    write_inputs(&mut out, &Inputs::Plate(p));
+    let _ = writeln!(
+        out,
+        "  saturation slip mu P / K_T = {} um",
+        number(mm_to_um(plate.saturation_slip()))
+    );
+    let _ = writeln!(out, "{:<24}{:<22}regularized", "Solution", "Coulomb");
+    let _ = writeln!(
+        out,
+        "  {:<22}{:<22}{}",
+        "regime", row.regime_coulomb, row.regime_regularized
+    );
+    let _ = writeln!(
+        out,
+        "  {:<22}{:<22}{}",
+        "u(L) (mm)",
+        number(row.u_coulomb),
+        number(row.u_regularized)
+    );
+    let (coulomb_end, regularized_end) = (number(row.stick_end), number(row.micro_end));
+    let _ = writeln!(
+        out,
+        "  {:<22}{:<22}X_r = {regularized_end}",
+        "zone end (mm)",
+        format!("X_s = {coulomb_end}")
+    );
+    if row.u_coulomb > 0.0 {
+        let _ = writeln!(
+            out,
+            "  {:<22}{}",
+            "u_reg / u_Coulomb",
+            number(row.u_regularized / row.u_coulomb)
+        );
+    }
+    let _ = writeln!(
+        out,
+        "Contact pressure (flat Timoshenko plate, saturated friction)"
+    );
+    let _ = writeln!(
+        out,
+        "  P_r/P = {} at the centre, {} at the edge; mean |P_r/P - 1| = {} %",
+        number(pressure.ratio(0.0)),
+        number(pressure.ratio(p.half_length)),
+        number(100.0 * pressure.mean_deviation())
+    );
+    let verdict = if pressure.constant_pressure_holds() {
+        "holds (mean deviation <= 3 %)"
+    } else {
+        "does NOT hold (mean deviation > 3 %): treat the results with caution"
+    };
+    let _ = writeln!(out, "  constant-pressure assumption {verdict}");
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{PlateParams, TwinBeamsParams};
+
+    #[test]
+    fn beam_report_shows_units_thresholds_and_both_laws() {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let text = beam("paper-beams", &beams, TipForce::new(100.0).unwrap());
+        for needle in [
+            "KT  = 600 MPa/mm",
+            "(0.6 MPa/um)",
+            "F_thre     = 80 N",
+            "F_1        = 80.1857 N",
+            "0.5 um",
+            "17.3095 (microslip end X)",
+            "microslip+macroslip",
+        ] {
+            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+        }
+    }
+
+    #[test]
+    fn plate_report_shows_both_zone_ends_and_the_pressure_flag() {
+        let plate_model = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        let text = plate("paper-plate", &plate_model);
+        for needle in [
+            "nu  = 0.3",
+            "X_s = 9.71429",
+            "X_r = 9.83832",
+            "constant-pressure assumption holds",
+        ] {
+            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+        }
+    }
+}
