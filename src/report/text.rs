@@ -6,7 +6,7 @@ use super::number;
 use crate::curves::{beam_point, plate_point};
 use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::preset::Inputs;
-use crate::{SqueezedPlate, TipForce, TwinBeams};
+use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
 /// The inputs block: one line per key with value, unit and meaning.
 fn write_inputs(out: &mut String, inputs: &Inputs) {
@@ -31,6 +31,45 @@ fn write_inputs(out: &mut String, inputs: &Inputs) {
             ));
         }
         let _ = writeln!(out, "{line}");
+    }
+}
+
+/// The two laws side by side: regime, response, zone end and the response ratio.
+struct Comparison {
+    response: &'static str,
+    ratio: &'static str,
+    values: (f64, f64),
+    regimes: (Regime, Regime),
+    zone_ends: (String, String),
+}
+
+impl Comparison {
+    fn write(&self, out: &mut String) {
+        let _ = writeln!(
+            out,
+            "  {:<22}{:<22}{}",
+            "regime", self.regimes.0, self.regimes.1
+        );
+        let _ = writeln!(
+            out,
+            "  {:<22}{:<22}{}",
+            self.response,
+            number(self.values.0),
+            number(self.values.1)
+        );
+        let _ = writeln!(
+            out,
+            "  {:<22}{:<22}{}",
+            "zone end (mm)", self.zone_ends.0, self.zone_ends.1
+        );
+        if self.values.0 > 0.0 {
+            let _ = writeln!(
+                out,
+                "  {:<22}{}",
+                self.ratio,
+                number(self.values.1 / self.values.0)
+            );
+        }
     }
 }
 
@@ -78,33 +117,17 @@ pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
         format!("At F = {} N", number(row.force)),
         "Coulomb"
     );
-    let _ = writeln!(
-        out,
-        "  {:<22}{:<22}{}",
-        "regime", row.regime_coulomb, row.regime_regularized
-    );
-    let _ = writeln!(
-        out,
-        "  {:<22}{:<22}{}",
-        "w(L) (mm)",
-        number(row.w_coulomb),
-        number(row.w_regularized)
-    );
-    let (coulomb_end, regularized_end) = (number(stick_end), number(row.micro_end));
-    let _ = writeln!(
-        out,
-        "  {:<22}{:<22}{regularized_end} (microslip end X)",
-        "zone end (mm)",
-        format!("{coulomb_end} (stick end)")
-    );
-    if row.w_coulomb > 0.0 {
-        let _ = writeln!(
-            out,
-            "  {:<22}{}",
-            "w_reg / w_Coulomb",
-            number(row.w_regularized / row.w_coulomb)
-        );
-    }
+    let comparison = Comparison {
+        response: "w(L) (mm)",
+        ratio: "w_reg / w_Coulomb",
+        values: (row.w_coulomb, row.w_regularized),
+        regimes: (row.regime_coulomb, row.regime_regularized),
+        zone_ends: (
+            format!("{} (stick end)", number(stick_end)),
+            format!("{} (microslip end X)", number(row.micro_end)),
+        ),
+    };
+    comparison.write(&mut out);
     out
 }
 
@@ -125,33 +148,17 @@ pub fn plate(preset: &str, plate: &SqueezedPlate) -> String {
         number(mm_to_um(plate.saturation_slip()))
     );
     let _ = writeln!(out, "{:<24}{:<22}regularized", "Solution", "Coulomb");
-    let _ = writeln!(
-        out,
-        "  {:<22}{:<22}{}",
-        "regime", row.regime_coulomb, row.regime_regularized
-    );
-    let _ = writeln!(
-        out,
-        "  {:<22}{:<22}{}",
-        "u(L) (mm)",
-        number(row.u_coulomb),
-        number(row.u_regularized)
-    );
-    let (coulomb_end, regularized_end) = (number(row.stick_end), number(row.micro_end));
-    let _ = writeln!(
-        out,
-        "  {:<22}{:<22}X_r = {regularized_end}",
-        "zone end (mm)",
-        format!("X_s = {coulomb_end}")
-    );
-    if row.u_coulomb > 0.0 {
-        let _ = writeln!(
-            out,
-            "  {:<22}{}",
-            "u_reg / u_Coulomb",
-            number(row.u_regularized / row.u_coulomb)
-        );
-    }
+    let comparison = Comparison {
+        response: "u(L) (mm)",
+        ratio: "u_reg / u_Coulomb",
+        values: (row.u_coulomb, row.u_regularized),
+        regimes: (row.regime_coulomb, row.regime_regularized),
+        zone_ends: (
+            format!("X_s = {}", number(row.stick_end)),
+            format!("X_r = {}", number(row.micro_end)),
+        ),
+    };
+    comparison.write(&mut out);
     let _ = writeln!(
         out,
         "Contact pressure (flat Timoshenko plate, saturated friction)"
