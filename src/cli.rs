@@ -14,8 +14,10 @@ use thiserror::Error;
 
 use crate::curves::{self, RangeError, Spacing};
 use crate::model::validate::ParamError;
+use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Inputs, Model, ModelKind, Preset, PresetError, PresetSource};
-use crate::report::{self, csv, json, text};
+use crate::report::{self, csv, json, number, text};
+use crate::verify::{self, Grid};
 
 /// microslip: friction benchmarks under the regularized Coulomb law (Ligier & Bonhote, 2014).
 ///
@@ -49,6 +51,19 @@ pub enum Command {
     Sweep(SweepCommand),
     /// List bundled and user presets with their descriptions.
     Presets,
+    /// Compare the closed forms with the independent finite-element solvers; exit 1 if any error
+    /// exceeds the tolerance.
+    Verify {
+        /// Run one geometry per model only (a smoke test).
+        #[arg(long)]
+        quick: bool,
+        /// Elements per model (10 to 800; the smallest element shrinks in proportion).
+        #[arg(long, value_name = "N", default_value_t = MeshDensity::default().elements)]
+        elements: usize,
+        /// Largest relative error accepted on w(L), X, u(L) and X_r.
+        #[arg(long, value_name = "T", default_value_t = verify::DEFAULT_TOLERANCE)]
+        tolerance: f64,
+    },
     /// Validate preset files; report every problem; exit 1 if any.
     Check {
         /// Preset files (TOML).
@@ -160,6 +175,12 @@ pub enum CliError {
         /// The model the command needs.
         wanted: ModelKind,
     },
+    /// The cross-check found errors above tolerance (already reported on stdout).
+    #[error("{0} of the quantities checked exceed the tolerance")]
+    VerifyFailed(usize),
+    /// A numerical solve failed.
+    #[error("numerical solver: {0}")]
+    Numeric(#[from] NumericError),
     /// Files with problems (already reported on stdout).
     #[error("{0} of the files checked have problems")]
     CheckFailed(usize),
@@ -171,7 +192,10 @@ pub enum CliError {
 impl CliError {
     fn exit_code(&self) -> u8 {
         match self {
-            CliError::CheckFailed(_) | CliError::Output(_) => 1,
+            CliError::CheckFailed(_)
+            | CliError::VerifyFailed(_)
+            | CliError::Output(_)
+            | CliError::Numeric(_) => 1,
             _ => 2,
         }
     }
@@ -292,6 +316,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
         }
         Some(Command::Presets) => list_presets(out)?,
         Some(Command::Check { files }) => check(out, files)?,
+        Some(Command::Verify {
+            quick,
+            elements,
+            tolerance,
+        }) => {
+            let grid = if *quick { Grid::Quick } else { Grid::Full };
+            run_verify(out, grid, *elements, *tolerance)?
+        }
     }
     Ok(())
 }
@@ -407,6 +439,67 @@ fn list_presets(out: &mut impl Write) -> Result<(), CliError> {
         )?,
     }
     Ok(())
+}
+
+fn run_verify(
+    out: &mut impl Write,
+    grid: Grid,
+    elements: usize,
+    tolerance: f64,
+) -> Result<(), CliError> {
+    if !(MeshDensity::MIN_ELEMENTS..=MeshDensity::MAX_ELEMENTS).contains(&elements) {
+        return Err(CliError::Range(RangeError::Bound {
+            flag: "--elements",
+            value: elements as f64,
+            allowed: "must be an integer in [10, 800] (beyond 800, round-off of the bending matrix dominates)",
+        }));
+    }
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return Err(CliError::Range(RangeError::Bound {
+            flag: "--tolerance",
+            value: tolerance,
+            allowed: "must be > 0 and finite",
+        }));
+    }
+    let density = MeshDensity::with_elements(elements);
+    let started = std::time::Instant::now();
+    let results = verify::run(grid, density)?;
+    writeln!(
+        out,
+        "Closed forms vs finite elements ({} elements per model, regularized law)",
+        density.elements
+    )?;
+    writeln!(
+        out,
+        "{:<18} {:>5}  {:>16}  {:>9}  {:<4}  worst case",
+        "quantity", "cases", "worst rel. error", "tolerance", ""
+    )?;
+    let mut failed = 0;
+    for w in &results {
+        let pass = w.error <= tolerance;
+        failed += usize::from(!pass);
+        writeln!(
+            out,
+            "{:<18} {:>5}  {:>16}  {:>9}  {:<4}  {}",
+            w.quantity,
+            w.cases,
+            format!("{:.2e}", w.error),
+            number(tolerance),
+            if pass { "ok" } else { "FAIL" },
+            w.case
+        )?;
+    }
+    let cases: usize = results.iter().map(|w| w.cases).sum::<usize>() / 2;
+    writeln!(
+        out,
+        "{cases} cases in {:.2} s",
+        started.elapsed().as_secs_f64()
+    )?;
+    if failed > 0 {
+        Err(CliError::VerifyFailed(failed))
+    } else {
+        Ok(())
+    }
 }
 
 fn check(out: &mut impl Write, files: &[PathBuf]) -> Result<(), CliError> {

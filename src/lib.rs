@@ -14,8 +14,10 @@
 pub mod cli;
 pub mod curves;
 pub mod model;
+pub mod numeric;
 pub mod preset;
 pub mod report;
+pub mod verify;
 
 pub use model::plate::{
     ContactPressure, CoulombPlate, PlateParams, RegularizedPlate, SqueezedPlate,

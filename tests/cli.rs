@@ -345,3 +345,26 @@ fn help_texts_are_stable() {
     insta::assert_snapshot!("help_sweep_plate", stdout_of(&["sweep", "plate", "--help"]));
     insta::assert_snapshot!("help_beam", stdout_of(&["beam", "--help"]));
 }
+
+#[test]
+fn verify_prints_a_table_and_fails_above_tolerance() {
+    let text = stdout_of(&["verify", "--quick"]);
+    for needle in [
+        "beam w(L) (mm)",
+        "beam X (mm)",
+        "plate u(L) (mm)",
+        "plate X_r (mm)",
+        "ok",
+    ] {
+        assert!(text.contains(needle), "missing {needle} in\n{text}");
+    }
+    assert!(!text.contains("FAIL"));
+    let output = microslip()
+        .args(["verify", "--quick", "--tolerance", "1e-12"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    assert!(String::from_utf8(output.stdout).unwrap().contains("FAIL"));
+    let stderr = failure(&["verify", "--elements", "5"], 2);
+    assert!(stderr.contains("invalid --elements = 5"), "{stderr}");
+}

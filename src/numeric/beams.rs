@@ -1,0 +1,556 @@
+//! Finite elements for the twin beams, independent of the closed forms.
+//!
+//! Model: both beams are discretized. Unknowns per node: the common deflection w and rotation w'
+//! (the beams are pressed together, so they cannot separate: one transverse field serves both), and
+//! the axial displacement of each beam's centre line, u_a (lower) and u_b (upper). Each element is a
+//! Hermite cubic in bending (both beams: EI = 2 x E b (2h)^3 / 12) plus a quadratic bar per beam (a
+//! midside axial node), so that the interface slip
+//!
+//! ```text
+//! s = u_b - u_a + 2 h w'
+//! ```
+//!
+//! is a quadratic polynomial in both its parts. The interface carries the regularized Coulomb law at
+//! Gauss points, each with its own loading history ([`InterfacePoint`]); Newton iterations use the
+//! consistent tangent (K_T on elastic points, 0 on sliding ones). Nothing here assumes the upper beam
+//! mirrors the lower one: the antisymmetry u_b = -u_a comes out of the solution.
+
+use thiserror::Error;
+
+use super::banded::SymmetricBand;
+use super::elements::{GAUSS, lagrange, quadratic_bar};
+use super::interface::{InterfacePoint, Response};
+use super::mesh::{graded_from_start, ratio_for_smallest};
+use crate::TwinBeamsParams;
+
+/// Unknowns per node (w, w', u_a, u_b) and per element midside (u_a, u_b).
+const NODE_DOFS: usize = 4;
+const STRIDE: usize = 6;
+/// Newton iterations allowed per load step before the step is cut.
+const MAX_ITERATIONS: usize = 60;
+/// Residual tolerance, relative to the load scale.
+const RESIDUAL_TOLERANCE: f64 = 1e-10;
+/// Residual accepted once the set of sliding points has settled: the linear solve is then exact and
+/// what remains is round-off. Finely graded meshes of stiff interfaces (elements of 1e-5 L next to
+/// the clamp, bending terms 12 E I / l^3) put that floor near 1e-6 of the load scale; this bound
+/// only guards against a pathological solve.
+pub(crate) const ROUND_OFF_TOLERANCE: f64 = 1e-4;
+
+/// Why a numerical solve failed.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum NumericError {
+    /// Newton did not converge even with small load steps.
+    #[error("Newton iterations did not converge at load {load} after {cuts} step cuts")]
+    NoConvergence {
+        /// The load level that failed.
+        load: f64,
+        /// How many times the step was halved.
+        cuts: u32,
+    },
+    /// The stiffness matrix is singular (should not happen with a clamped model).
+    #[error("singular stiffness matrix at row {0}")]
+    Singular(usize),
+    /// A load that is not a finite number.
+    #[error("invalid load {0}: must be finite")]
+    BadLoad(f64),
+}
+
+/// Mesh density of the finite-element models.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshDensity {
+    /// Number of elements.
+    pub elements: usize,
+    /// Smallest element, as a fraction of the interface's shortest length scale.
+    pub smallest_fraction: f64,
+}
+
+impl Default for MeshDensity {
+    /// The default mesh: 400 elements, smallest element 1/50 of the shortest length scale.
+    fn default() -> Self {
+        MeshDensity {
+            elements: 400,
+            smallest_fraction: 0.02,
+        }
+    }
+}
+
+impl MeshDensity {
+    /// Fewest elements accepted by the command line.
+    pub const MIN_ELEMENTS: usize = 10;
+    /// Most elements accepted by the command line: the Hermite bending matrix has a condition number
+    /// growing like n^4, and beyond ~800 elements (L/h = 20) Newton's refinement can no longer push
+    /// the round-off below the discretization error (measured: 1e-13 at 400, 1e-4 at 1200).
+    pub const MAX_ELEMENTS: usize = 800;
+
+    /// `elements` elements with the default grading (the smallest element shrinks in proportion).
+    pub fn with_elements(elements: usize) -> Self {
+        let default = MeshDensity::default();
+        MeshDensity {
+            elements,
+            smallest_fraction: default.smallest_fraction * default.elements as f64
+                / elements.max(1) as f64,
+        }
+    }
+}
+
+/// One Gauss point of the interface after a solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InterfaceSample {
+    /// Position (mm).
+    pub x: f64,
+    /// Slip of the upper beam relative to the lower one (mm).
+    pub slip: f64,
+    /// Shear stress on the lower beam (MPa).
+    pub stress: f64,
+    /// True when the point slides (macroslip).
+    pub sliding: bool,
+}
+
+/// The twin beams discretized, with their current load and interface history.
+#[derive(Debug, Clone)]
+pub struct TwinBeamsFe {
+    params: TwinBeamsParams,
+    nodes: Vec<f64>,
+    displacement: Vec<f64>,
+    points: Vec<InterfacePoint>,
+    force: f64,
+    stiffness: SymmetricBand,
+    /// Interface responses of the last converged step (which points slide).
+    converged: Vec<Response>,
+}
+
+/// Shape-function values of one element at local coordinate r in [0, 1].
+struct Shape {
+    /// d/dx of the Hermite functions for (w1, w1', w2, w2').
+    hermite_slope: [f64; 4],
+    /// Quadratic Lagrange functions for (end 1, midside, end 2).
+    lagrange: [f64; 3],
+}
+
+fn shape(r: f64, length: f64) -> Shape {
+    Shape {
+        hermite_slope: [
+            (-6.0 * r + 6.0 * r * r) / length,
+            1.0 - 4.0 * r + 3.0 * r * r,
+            (6.0 * r - 6.0 * r * r) / length,
+            -2.0 * r + 3.0 * r * r,
+        ],
+        lagrange: lagrange(r),
+    }
+}
+
+impl TwinBeamsFe {
+    /// Builds the unloaded model. The mesh is graded towards the clamp, where both the microslip
+    /// boundary layer (length sqrt(E h / (4 K_T))) and, at high loads, the microslip zone itself
+    /// (length ~ E h / (4 K_T L)) sit.
+    pub fn new(params: TwinBeamsParams, density: MeshDensity) -> Self {
+        let p = params;
+        let layer = (p.youngs_modulus * p.half_height / (4.0 * p.tangential_stiffness)).sqrt();
+        let scale = layer.min(layer * layer / p.length).min(p.length);
+        let ratio = ratio_for_smallest(
+            p.length,
+            density.elements,
+            density.smallest_fraction * scale,
+        );
+        let nodes = graded_from_start(p.length, density.elements, ratio);
+        let elements = nodes.len() - 1;
+        let unknowns = STRIDE * elements + NODE_DOFS;
+        let mut model = TwinBeamsFe {
+            params,
+            displacement: vec![0.0; unknowns],
+            points: vec![InterfacePoint::default(); elements * GAUSS.len()],
+            force: 0.0,
+            stiffness: SymmetricBand::zeros(unknowns, 2 * NODE_DOFS + 1),
+            converged: Vec::new(),
+            nodes,
+        };
+        model.stiffness = model.structural_stiffness();
+        model
+    }
+
+    /// Global indices of an element's unknowns: w1, w1', w2, w2', u_a(1, m, 2), u_b(1, m, 2).
+    fn element_dofs(e: usize) -> [usize; 10] {
+        let (n1, m, n2) = (STRIDE * e, STRIDE * e + NODE_DOFS, STRIDE * (e + 1));
+        [
+            n1,
+            n1 + 1,
+            n2,
+            n2 + 1,
+            n1 + 2,
+            m,
+            n2 + 2,
+            n1 + 3,
+            m + 1,
+            n2 + 3,
+        ]
+    }
+
+    /// Bending of both beams and stretching of each, clamped at x = 0.
+    fn structural_stiffness(&self) -> SymmetricBand {
+        let p = &self.params;
+        let ei = 2.0 * p.youngs_modulus * p.width * (2.0 * p.half_height).powi(3) / 12.0;
+        let ea = p.youngs_modulus * p.width * 2.0 * p.half_height;
+        let mut k = SymmetricBand::zeros(self.displacement.len(), 2 * NODE_DOFS + 1);
+        for e in 0..self.nodes.len() - 1 {
+            let l = self.nodes[e + 1] - self.nodes[e];
+            let dofs = Self::element_dofs(e);
+            let c = ei / l.powi(3);
+            let bending = [
+                [12.0, 6.0 * l, -12.0, 6.0 * l],
+                [6.0 * l, 4.0 * l * l, -6.0 * l, 2.0 * l * l],
+                [-12.0, -6.0 * l, 12.0, -6.0 * l],
+                [6.0 * l, 2.0 * l * l, -6.0 * l, 4.0 * l * l],
+            ];
+            for i in 0..4 {
+                for j in 0..=i {
+                    k.add(dofs[i], dofs[j], c * bending[i][j]);
+                }
+            }
+            for offset in [4, 7] {
+                for (i, j, value) in quadratic_bar(ea, l) {
+                    k.add(dofs[offset + i], dofs[offset + j], value);
+                }
+            }
+        }
+        for clamped in 0..NODE_DOFS {
+            k.fix(clamped);
+        }
+        k
+    }
+
+    /// d slip / d (element unknowns) at local coordinate r.
+    fn slip_gradient(&self, e: usize, r: f64) -> [f64; 10] {
+        let l = self.nodes[e + 1] - self.nodes[e];
+        let s = shape(r, l);
+        let two_h = 2.0 * self.params.half_height;
+        let [h1, h2, h3, h4] = s.hermite_slope;
+        let [n1, nm, n2] = s.lagrange;
+        [
+            two_h * h1,
+            two_h * h2,
+            two_h * h3,
+            two_h * h4,
+            -n1,
+            -nm,
+            -n2,
+            n1,
+            nm,
+            n2,
+        ]
+    }
+
+    fn slip_in_element(&self, displacement: &[f64], e: usize, r: f64) -> f64 {
+        let g = self.slip_gradient(e, r);
+        Self::element_dofs(e)
+            .iter()
+            .zip(g)
+            .map(|(&d, gi)| displacement[d] * gi)
+            .sum()
+    }
+
+    /// Interface responses at every Gauss point for a trial displacement.
+    fn responses(&self, displacement: &[f64]) -> Vec<Response> {
+        let (kt, strength) = (
+            self.params.tangential_stiffness,
+            self.params.friction * self.params.pressure,
+        );
+        (0..self.nodes.len() - 1)
+            .flat_map(|e| GAUSS.iter().map(move |&(r, _)| (e, r)))
+            .zip(&self.points)
+            .map(|((e, r), point)| {
+                point.respond(self.slip_in_element(displacement, e, r), kt, strength)
+            })
+            .collect()
+    }
+
+    /// Residual (internal minus external forces, zero on clamped rows) and tangent matrix.
+    fn residual_and_tangent(
+        &self,
+        displacement: &[f64],
+        force: f64,
+        responses: &[Response],
+    ) -> (Vec<f64>, SymmetricBand) {
+        let mut residual = self.stiffness.mul_accurate(displacement);
+        let mut tangent = self.stiffness.clone();
+        let width = self.params.width;
+        for e in 0..self.nodes.len() - 1 {
+            let l = self.nodes[e + 1] - self.nodes[e];
+            let dofs = Self::element_dofs(e);
+            for (g, &(r, weight)) in GAUSS.iter().enumerate() {
+                let response = responses[e * GAUSS.len() + g];
+                let grad = self.slip_gradient(e, r);
+                let scale = width * weight * l;
+                for i in 0..10 {
+                    residual[dofs[i]] += scale * response.stress * grad[i];
+                    if response.tangent != 0.0 {
+                        for j in 0..=i {
+                            tangent.add(
+                                dofs[i],
+                                dofs[j],
+                                scale * response.tangent * grad[i] * grad[j],
+                            );
+                        }
+                    }
+                }
+            }
+        }
+        // Each beam carries F at its tip: 2F on the common deflection.
+        let tip = STRIDE * (self.nodes.len() - 1);
+        residual[tip] -= 2.0 * force;
+        residual[..NODE_DOFS].fill(0.0);
+        // The interface tangent must not reintroduce coupling on clamped rows.
+        for clamped in 0..NODE_DOFS {
+            tangent.fix(clamped);
+        }
+        (residual, tangent)
+    }
+
+    /// Newton iterations at one load level from the current state; commits the history on success.
+    fn solve_step(&mut self, force: f64) -> Result<(), NumericError> {
+        let p = &self.params;
+        let load_scale = 2.0 * force.abs() + p.width * p.friction * p.pressure * p.length;
+        let mut displacement = self.displacement.clone();
+        let mut previous_set: Option<Vec<bool>> = None;
+        let mut previous_norm = f64::INFINITY;
+        for _ in 0..MAX_ITERATIONS {
+            let responses = self.responses(&displacement);
+            let (residual, tangent) = self.residual_and_tangent(&displacement, force, &responses);
+            let norm = residual.iter().map(|r| r * r).sum::<f64>().sqrt();
+            let sliding: Vec<bool> = responses.iter().map(|r| r.sliding).collect();
+            // The system is linear for a fixed set of sliding points, so the Newton step taken with
+            // that set is exact: an unchanged set means convergence (up to round-off, which the loose
+            // residual check bounds).
+            let same_set = previous_set.as_ref() == Some(&sliding);
+            if norm <= RESIDUAL_TOLERANCE * load_scale
+                || (same_set
+                    && norm > 0.5 * previous_norm
+                    && norm <= ROUND_OFF_TOLERANCE * load_scale)
+            {
+                for (point, response) in self.points.iter_mut().zip(&responses) {
+                    point.plastic_slip = response.plastic_slip;
+                }
+                self.displacement = displacement;
+                self.force = force;
+                self.converged = responses;
+                return Ok(());
+            }
+            previous_set = Some(sliding);
+            previous_norm = norm;
+            let rhs: Vec<f64> = residual.iter().map(|r| -r).collect();
+            let step = tangent
+                .solve(&rhs)
+                .map_err(|e| NumericError::Singular(e.row))?;
+            for (d, s) in displacement.iter_mut().zip(step) {
+                *d += s;
+            }
+        }
+        Err(NumericError::NoConvergence {
+            load: force,
+            cuts: 0,
+        })
+    }
+
+    /// Moves the tip force from its current value to `force` (N, either sign) in `steps` equal
+    /// increments, halving an increment whose Newton iterations fail (up to 12 times).
+    pub fn load_to(&mut self, force: f64, steps: usize) -> Result<(), NumericError> {
+        if !force.is_finite() {
+            return Err(NumericError::BadLoad(force));
+        }
+        let start = self.force;
+        let steps = steps.max(1);
+        for i in 1..=steps {
+            let target = start + (force - start) * i as f64 / steps as f64;
+            self.step_with_cuts(target, 12)?;
+        }
+        Ok(())
+    }
+
+    fn step_with_cuts(&mut self, target: f64, cuts_left: u32) -> Result<(), NumericError> {
+        let saved = (self.displacement.clone(), self.points.clone(), self.force);
+        match self.solve_step(target) {
+            Ok(()) => Ok(()),
+            Err(NumericError::NoConvergence { .. }) if cuts_left > 0 => {
+                (self.displacement, self.points, self.force) = saved;
+                let middle = 0.5 * (self.force + target);
+                self.step_with_cuts(middle, cuts_left - 1)?;
+                self.step_with_cuts(target, cuts_left - 1)
+            }
+            Err(NumericError::NoConvergence { load, .. }) => {
+                Err(NumericError::NoConvergence { load, cuts: 12 })
+            }
+            Err(other) => Err(other),
+        }
+    }
+
+    /// The current tip force (N).
+    pub fn force(&self) -> f64 {
+        self.force
+    }
+
+    /// Number of elements.
+    pub fn elements(&self) -> usize {
+        self.nodes.len() - 1
+    }
+
+    /// Tip deflection w(L) (mm).
+    pub fn tip_deflection(&self) -> f64 {
+        self.displacement[STRIDE * (self.nodes.len() - 1)]
+    }
+
+    /// Deflection at node positions: (x, w) pairs (mm).
+    pub fn deflection_line(&self) -> Vec<(f64, f64)> {
+        self.nodes
+            .iter()
+            .enumerate()
+            .map(|(i, &x)| (x, self.displacement[STRIDE * i]))
+            .collect()
+    }
+
+    /// Axial displacements (u_a, u_b) of the two centre lines at node `i` (mm).
+    pub fn axial_displacements(&self, node: usize) -> (f64, f64) {
+        (
+            self.displacement[STRIDE * node + 2],
+            self.displacement[STRIDE * node + 3],
+        )
+    }
+
+    /// Slip at any x in [0, L] (mm), from the element interpolation.
+    pub fn slip_at(&self, x: f64) -> f64 {
+        let x = x.clamp(0.0, self.params.length);
+        let e = self
+            .nodes
+            .partition_point(|&n| n <= x)
+            .clamp(1, self.nodes.len() - 1)
+            - 1;
+        let r = (x - self.nodes[e]) / (self.nodes[e + 1] - self.nodes[e]);
+        self.slip_in_element(&self.displacement, e, r)
+    }
+
+    /// The interface at every Gauss point.
+    /// Before any load step, every point is at rest (zero stress, not sliding).
+    pub fn interface(&self) -> Vec<InterfaceSample> {
+        let rest = Response {
+            stress: 0.0,
+            tangent: 0.0,
+            sliding: false,
+            plastic_slip: 0.0,
+        };
+        (0..self.nodes.len() - 1)
+            .flat_map(|e| GAUSS.iter().map(move |&(r, _)| (e, r)))
+            .zip((0..).map(|i| self.converged.get(i).copied().unwrap_or(rest)))
+            .map(|((e, r), response)| InterfaceSample {
+                x: self.nodes[e] + r * (self.nodes[e + 1] - self.nodes[e]),
+                slip: self.slip_in_element(&self.displacement, e, r),
+                stress: response.stress,
+                sliding: response.sliding,
+            })
+            .collect()
+    }
+
+    /// End X of the microslip zone (mm): where the slip, rising from the clamp, reaches the saturation
+    /// slip mu P / K_T; L when no Gauss point slides. Meaningful on a monotonic loading path.
+    pub fn micro_zone_end(&self) -> f64 {
+        let samples = self.interface();
+        let Some(first) = samples.iter().position(|s| s.sliding) else {
+            return self.params.length;
+        };
+        // The slip of the last elastic point is below saturation, that of the first sliding one above.
+        let saturation =
+            self.params.friction * self.params.pressure / self.params.tangential_stiffness;
+        let mut lo = if first == 0 {
+            0.0
+        } else {
+            samples[first - 1].x
+        };
+        let mut hi = samples[first].x;
+        let excess = |x: f64| self.slip_at(x).abs() - saturation;
+        if excess(lo) > 0.0 {
+            return lo;
+        }
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if excess(mid) > 0.0 {
+                hi = mid
+            } else {
+                lo = mid
+            }
+        }
+        0.5 * (lo + hi)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn coarse() -> TwinBeamsFe {
+        TwinBeamsFe::new(
+            TwinBeamsParams::PAPER,
+            MeshDensity {
+                elements: 60,
+                smallest_fraction: 0.05,
+            },
+        )
+    }
+
+    #[test]
+    fn bonded_beams_match_beam_theory_when_the_interface_is_rigid() {
+        // K_T huge and mu huge: the pair acts as one 4h-high beam, w(L) = F L^3 / (8 E b h^3).
+        let params = TwinBeamsParams {
+            tangential_stiffness: 1e9,
+            friction: 1e6,
+            ..TwinBeamsParams::PAPER
+        };
+        let mut fe = TwinBeamsFe::new(
+            params,
+            MeshDensity {
+                elements: 200,
+                smallest_fraction: 0.05,
+            },
+        );
+        fe.load_to(50.0, 1).unwrap();
+        let bonded = 50.0 * 200.0_f64.powi(3) / (8.0 * 210_000.0 * 20.0 * 1000.0);
+        assert!(
+            (fe.tip_deflection() / bonded - 1.0).abs() < 1e-3,
+            "{}",
+            fe.tip_deflection() / bonded
+        );
+    }
+
+    #[test]
+    fn upper_beam_mirrors_the_lower_one() {
+        let mut fe = coarse();
+        fe.load_to(150.0, 4).unwrap();
+        for node in [5, 30, 60] {
+            let (ua, ub) = fe.axial_displacements(node);
+            assert!(
+                (ua + ub).abs() < 1e-10 * ua.abs().max(1e-12),
+                "node {node}: {ua} {ub}"
+            );
+        }
+    }
+
+    #[test]
+    fn cycle_below_first_macroslip_is_reversible() {
+        let mut fe = coarse();
+        fe.load_to(60.0, 3).unwrap();
+        let loaded = fe.tip_deflection();
+        assert!(fe.interface().iter().all(|s| !s.sliding));
+        fe.load_to(0.0, 3).unwrap();
+        // Back to zero up to the linear solver's round-off (residual tolerance 1e-10).
+        assert!(
+            fe.tip_deflection().abs() < 1e-9 * loaded,
+            "{} vs {loaded}",
+            fe.tip_deflection()
+        );
+        assert!(fe.points.iter().all(|p| p.plastic_slip == 0.0));
+    }
+
+    #[test]
+    fn rejects_non_finite_loads() {
+        assert!(matches!(
+            coarse().load_to(f64::NAN, 1),
+            Err(NumericError::BadLoad(_))
+        ));
+    }
+}

@@ -1,0 +1,94 @@
+//! One-dimensional meshes graded towards the end where the interface's boundary layer sits.
+//!
+//! The interface stress changes over a length 1/k (beams) or 1/alpha (plate) next to the clamp, the
+//! slip front or the free edge, while it is flat elsewhere: a geometric grading puts small elements
+//! where they matter without a huge mesh. The grading uses only the material length scale, never a
+//! closed-form result.
+
+/// Node positions on [0, length] with `elements` elements, geometrically graded so that the element
+/// next to x = 0 is about `ratio` times smaller than the last one (ratio 1: uniform).
+pub fn graded_from_start(length: f64, elements: usize, ratio: f64) -> Vec<f64> {
+    let elements = elements.max(1);
+    let ratio = ratio.max(1.0);
+    if ratio == 1.0 {
+        return (0..=elements)
+            .map(|i| length * i as f64 / elements as f64)
+            .collect();
+    }
+    // x(t) = L (exp(beta t) - 1) / (exp(beta) - 1), t in [0, 1]: element sizes grow by exp(beta / n).
+    let beta = ratio.ln();
+    let scale = beta.exp_m1();
+    let mut nodes: Vec<f64> = (0..=elements)
+        .map(|i| length * (beta * i as f64 / elements as f64).exp_m1() / scale)
+        .collect();
+    nodes[elements] = length;
+    nodes
+}
+
+/// The mirror image: small elements next to x = length.
+pub fn graded_towards_end(length: f64, elements: usize, ratio: f64) -> Vec<f64> {
+    graded_from_start(length, elements, ratio)
+        .iter()
+        .rev()
+        .map(|x| length - x)
+        .collect()
+}
+
+/// Grading ratio that makes the smallest of `elements` elements about `smallest` long (>= 1).
+pub fn ratio_for_smallest(length: f64, elements: usize, smallest: f64) -> f64 {
+    let uniform = length / elements.max(1) as f64;
+    if smallest >= uniform {
+        return 1.0;
+    }
+    // Smallest element ~ L beta / (n (exp(beta) - 1)); solve for beta by fixed-point bisection.
+    let n = elements.max(1) as f64;
+    let size = |beta: f64| length * beta / (n * beta.exp_m1());
+    let (mut lo, mut hi) = (1e-9_f64, 700.0_f64);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if size(mid) > smallest {
+            lo = mid
+        } else {
+            hi = mid
+        }
+    }
+    hi.exp()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn graded_meshes_cover_the_interval_monotonically() {
+        let nodes = graded_from_start(200.0, 100, 1000.0);
+        assert_eq!(nodes.len(), 101);
+        assert_eq!((nodes[0], nodes[100]), (0.0, 200.0));
+        assert!(nodes.windows(2).all(|w| w[1] > w[0]));
+        let (first, last) = (nodes[1] - nodes[0], nodes[100] - nodes[99]);
+        assert!(
+            (last / first / 1000.0 - 1.0).abs() < 0.1,
+            "{}",
+            last / first
+        );
+        let mirrored = graded_towards_end(10.0, 20, 50.0);
+        assert_eq!((mirrored[0], mirrored[20]), (0.0, 10.0));
+        assert!(mirrored[20] - mirrored[19] < mirrored[1] - mirrored[0]);
+        assert_eq!(
+            graded_from_start(1.0, 4, 1.0),
+            vec![0.0, 0.25, 0.5, 0.75, 1.0]
+        );
+    }
+
+    #[test]
+    fn ratio_gives_the_requested_smallest_element() {
+        let r = ratio_for_smallest(200.0, 400, 0.01);
+        let nodes = graded_from_start(200.0, 400, r);
+        assert!(
+            ((nodes[1] - nodes[0]) / 0.01 - 1.0).abs() < 0.05,
+            "{}",
+            nodes[1]
+        );
+        assert_eq!(ratio_for_smallest(200.0, 400, 1.0), 1.0);
+    }
+}

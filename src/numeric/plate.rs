@@ -1,0 +1,290 @@
+//! Finite elements for the squeezed plate, independent of the closed forms.
+//!
+//! A 1-D membrane on [0, L] (u(0) = 0 by symmetry, free end at L) with quadratic elements. Weak form
+//! of t_p sigma_x' = tau with plane-strain sigma_x = (E u' - nu (1 + nu) P) / (1 - nu^2):
+//!
+//! ```text
+//! int t_p E / (1 - nu^2) u' v' + int tau(u) v = t_p nu P / (1 - nu) v(L)
+//! ```
+//!
+//! (the Poisson term integrates to a force at the free end). tau follows the regularized law with a
+//! history per Gauss point, so the pressure can be raised, lowered and raised again. The mesh is graded
+//! towards the free edge, where the slip zone and the boundary layer sit.
+
+use super::banded::SymmetricBand;
+use super::beams::{MeshDensity, NumericError, ROUND_OFF_TOLERANCE};
+use super::elements::{GAUSS, lagrange, quadratic_bar};
+use super::interface::{InterfacePoint, Response};
+use super::mesh::{graded_towards_end, ratio_for_smallest};
+use crate::PlateParams;
+
+const MAX_ITERATIONS: usize = 60;
+const RESIDUAL_TOLERANCE: f64 = 1e-11;
+
+/// The squeezed plate discretized, with its current pressure and interface history.
+#[derive(Debug, Clone)]
+pub struct PlateFe {
+    params: PlateParams,
+    nodes: Vec<f64>,
+    displacement: Vec<f64>,
+    points: Vec<InterfacePoint>,
+    pressure: f64,
+    stiffness: SymmetricBand,
+    /// Which Gauss points slid in the last converged step.
+    sliding: Vec<bool>,
+}
+
+impl PlateFe {
+    /// Builds the unloaded plate (P = 0). The grading resolves the shorter of the elastic boundary
+    /// layer sqrt(E t_p / ((1 - nu^2) K_T)) and the plate thickness near the free edge.
+    pub fn new(params: PlateParams, density: MeshDensity) -> Self {
+        let p = params;
+        let layer = (p.youngs_modulus * p.thickness
+            / ((1.0 - p.poisson * p.poisson) * p.tangential_stiffness))
+            .sqrt();
+        let scale = layer.min(p.thickness).min(p.half_length);
+        let ratio = ratio_for_smallest(
+            p.half_length,
+            density.elements,
+            density.smallest_fraction * scale,
+        );
+        let nodes = graded_towards_end(p.half_length, density.elements, ratio);
+        let elements = nodes.len() - 1;
+        let mut model = PlateFe {
+            params,
+            displacement: vec![0.0; 2 * elements + 1],
+            points: vec![InterfacePoint::default(); elements * GAUSS.len()],
+            pressure: 0.0,
+            stiffness: SymmetricBand::zeros(2 * elements + 1, 2),
+            sliding: vec![false; elements * GAUSS.len()],
+            nodes,
+        };
+        let modulus = p.thickness * p.youngs_modulus / (1.0 - p.poisson * p.poisson);
+        for e in 0..elements {
+            let l = model.nodes[e + 1] - model.nodes[e];
+            for (i, j, value) in quadratic_bar(modulus, l) {
+                model.stiffness.add(2 * e + i, 2 * e + j, value);
+            }
+        }
+        model.stiffness.fix(0);
+        model
+    }
+
+    fn displacement_in_element(&self, displacement: &[f64], e: usize, r: f64) -> f64 {
+        lagrange(r)
+            .iter()
+            .enumerate()
+            .map(|(i, n)| n * displacement[2 * e + i])
+            .sum()
+    }
+
+    fn responses(&self, displacement: &[f64], pressure: f64) -> Vec<Response> {
+        let (kt, strength) = (
+            self.params.tangential_stiffness,
+            self.params.friction * pressure,
+        );
+        (0..self.nodes.len() - 1)
+            .flat_map(|e| GAUSS.iter().map(move |&(r, _)| (e, r)))
+            .zip(&self.points)
+            .map(|((e, r), point)| {
+                point.respond(
+                    self.displacement_in_element(displacement, e, r),
+                    kt,
+                    strength,
+                )
+            })
+            .collect()
+    }
+
+    fn solve_step(&mut self, pressure: f64) -> Result<(), NumericError> {
+        let p = &self.params;
+        let edge_force = p.thickness * p.poisson * pressure / (1.0 - p.poisson);
+        let load_scale =
+            edge_force.abs() + p.friction * pressure.abs() * p.half_length + f64::MIN_POSITIVE;
+        let last = self.displacement.len() - 1;
+        let mut displacement = self.displacement.clone();
+        let mut previous_set: Option<Vec<bool>> = None;
+        let mut previous_norm = f64::INFINITY;
+        for _ in 0..MAX_ITERATIONS {
+            let responses = self.responses(&displacement, pressure);
+            let sliding: Vec<bool> = responses.iter().map(|r| r.sliding).collect();
+            let same_set = previous_set.as_ref() == Some(&sliding);
+            let mut residual = self.stiffness.mul_accurate(&displacement);
+            let mut tangent = self.stiffness.clone();
+            for e in 0..self.nodes.len() - 1 {
+                let l = self.nodes[e + 1] - self.nodes[e];
+                for (g, &(r, weight)) in GAUSS.iter().enumerate() {
+                    let response = responses[e * GAUSS.len() + g];
+                    let n = lagrange(r);
+                    for i in 0..3 {
+                        residual[2 * e + i] += weight * l * response.stress * n[i];
+                        for j in 0..=i {
+                            tangent.add(
+                                2 * e + i,
+                                2 * e + j,
+                                weight * l * response.tangent * n[i] * n[j],
+                            );
+                        }
+                    }
+                }
+            }
+            residual[last] -= edge_force;
+            residual[0] = 0.0;
+            tangent.fix(0);
+            let norm = residual.iter().map(|r| r * r).sum::<f64>().sqrt();
+            // Linear for a fixed sliding set: an unchanged set means the last step was exact.
+            if norm <= RESIDUAL_TOLERANCE * load_scale
+                || (same_set
+                    && norm > 0.5 * previous_norm
+                    && norm <= ROUND_OFF_TOLERANCE * load_scale)
+            {
+                for (point, response) in self.points.iter_mut().zip(&responses) {
+                    point.plastic_slip = response.plastic_slip;
+                }
+                self.displacement = displacement;
+                self.pressure = pressure;
+                self.sliding = responses.iter().map(|r| r.sliding).collect();
+                return Ok(());
+            }
+            previous_set = Some(sliding);
+            previous_norm = norm;
+            let rhs: Vec<f64> = residual.iter().map(|r| -r).collect();
+            let step = tangent
+                .solve(&rhs)
+                .map_err(|e| NumericError::Singular(e.row))?;
+            for (d, s) in displacement.iter_mut().zip(step) {
+                *d += s;
+            }
+        }
+        Err(NumericError::NoConvergence {
+            load: pressure,
+            cuts: 0,
+        })
+    }
+
+    /// Moves the applied pressure from its current value to `pressure` (MPa) in `steps` increments,
+    /// halving an increment whose Newton iterations fail (up to 12 times). The friction strength
+    /// mu P follows the pressure.
+    pub fn load_to(&mut self, pressure: f64, steps: usize) -> Result<(), NumericError> {
+        if !pressure.is_finite() {
+            return Err(NumericError::BadLoad(pressure));
+        }
+        let start = self.pressure;
+        for i in 1..=steps.max(1) {
+            let target = start + (pressure - start) * i as f64 / steps.max(1) as f64;
+            self.step_with_cuts(target, 12)?;
+        }
+        Ok(())
+    }
+
+    fn step_with_cuts(&mut self, target: f64, cuts_left: u32) -> Result<(), NumericError> {
+        let saved = (
+            self.displacement.clone(),
+            self.points.clone(),
+            self.pressure,
+        );
+        match self.solve_step(target) {
+            Ok(()) => Ok(()),
+            Err(NumericError::NoConvergence { .. }) if cuts_left > 0 => {
+                (self.displacement, self.points, self.pressure) = saved;
+                let middle = 0.5 * (self.pressure + target);
+                self.step_with_cuts(middle, cuts_left - 1)?;
+                self.step_with_cuts(target, cuts_left - 1)
+            }
+            Err(NumericError::NoConvergence { load, .. }) => {
+                Err(NumericError::NoConvergence { load, cuts: 12 })
+            }
+            Err(other) => Err(other),
+        }
+    }
+
+    /// The current pressure (MPa).
+    pub fn pressure(&self) -> f64 {
+        self.pressure
+    }
+
+    /// End displacement u(L) (mm).
+    pub fn end_displacement(&self) -> f64 {
+        self.displacement[self.displacement.len() - 1]
+    }
+
+    /// Displacement at any x in [0, L] (mm).
+    pub fn displacement_at(&self, x: f64) -> f64 {
+        let x = x.clamp(0.0, self.params.half_length);
+        let e = self
+            .nodes
+            .partition_point(|&n| n <= x)
+            .clamp(1, self.nodes.len() - 1)
+            - 1;
+        let r = (x - self.nodes[e]) / (self.nodes[e + 1] - self.nodes[e]);
+        self.displacement_in_element(&self.displacement, e, r)
+    }
+
+    /// End X_r of the microslip zone (mm): where u reaches the saturation slip mu P / K_T; L when no
+    /// Gauss point slides. Meaningful on a monotonic loading path.
+    pub fn micro_zone_end(&self) -> f64 {
+        let Some(first) = self.sliding.iter().position(|&s| s) else {
+            return self.params.half_length;
+        };
+        let position = |g: usize| {
+            let e = g / GAUSS.len();
+            self.nodes[e] + GAUSS[g % GAUSS.len()].0 * (self.nodes[e + 1] - self.nodes[e])
+        };
+        let saturation = self.params.friction * self.pressure / self.params.tangential_stiffness;
+        let mut lo = if first == 0 { 0.0 } else { position(first - 1) };
+        let mut hi = position(first);
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if self.displacement_at(mid).abs() > saturation {
+                hi = mid
+            } else {
+                lo = mid
+            }
+        }
+        0.5 * (lo + hi)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frictionless_limit_is_free_plane_strain_expansion() {
+        // K_T tiny: u(L) = nu (1 + nu) P L / E, linear in x; quadratic elements are exact for it.
+        let params = PlateParams {
+            tangential_stiffness: 1e-9,
+            ..PlateParams::PAPER
+        };
+        let mut fe = PlateFe::new(
+            params,
+            MeshDensity {
+                elements: 20,
+                smallest_fraction: 0.02,
+            },
+        );
+        fe.load_to(10.0, 1).unwrap();
+        let free = 0.3 * 1.3 * 10.0 * 10.0 / 70_000.0;
+        assert!((fe.end_displacement() / free - 1.0).abs() < 1e-8);
+        assert!((fe.displacement_at(5.0) / (free / 2.0) - 1.0).abs() < 1e-8);
+    }
+
+    #[test]
+    fn pressure_cycle_without_macroslip_is_reversible() {
+        let params = PlateParams {
+            tangential_stiffness: 1e3,
+            ..PlateParams::PAPER
+        };
+        let mut fe = PlateFe::new(
+            params,
+            MeshDensity {
+                elements: 40,
+                smallest_fraction: 0.02,
+            },
+        );
+        fe.load_to(10.0, 2).unwrap();
+        assert_eq!(fe.micro_zone_end(), 10.0);
+        fe.load_to(0.0, 2).unwrap();
+        assert!(fe.end_displacement().abs() < 1e-15);
+    }
+}

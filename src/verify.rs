@@ -1,0 +1,208 @@
+//! Cross-check of the closed forms against the independent finite-element solvers, over a grid that
+//! spans every regime and the transitions between them. This is the only module that calls both; the
+//! solvers in [`crate::numeric`] never see a closed form.
+
+use crate::numeric::{MeshDensity, NumericError, PlateFe, TwinBeamsFe};
+use crate::report::number;
+use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
+
+/// Default tolerance on every relative error (the target of the numerical-solver issue).
+pub const DEFAULT_TOLERANCE: f64 = 1e-3;
+
+/// How much of the grid to run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Grid {
+    /// Every case (about 130).
+    Full,
+    /// One geometry per model: a smoke test for CI.
+    Quick,
+}
+
+/// The worst disagreement found for one quantity.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Worst {
+    /// What was compared, with its unit.
+    pub quantity: &'static str,
+    /// How many cases compared it.
+    pub cases: usize,
+    /// Largest relative error.
+    pub error: f64,
+    /// The parameters of that case.
+    pub case: String,
+}
+
+impl Worst {
+    fn new(quantity: &'static str) -> Self {
+        Worst {
+            quantity,
+            cases: 0,
+            error: 0.0,
+            case: String::new(),
+        }
+    }
+
+    fn record(&mut self, numeric: f64, exact: f64, case: impl FnOnce() -> String) {
+        self.cases += 1;
+        let error = relative_error(numeric, exact);
+        if error > self.error || self.case.is_empty() {
+            self.error = error;
+            self.case = case();
+        }
+    }
+}
+
+/// |a - b| / |b|, or |a| when b is 0.
+fn relative_error(a: f64, b: f64) -> f64 {
+    if b == 0.0 {
+        a.abs()
+    } else {
+        ((a - b) / b).abs()
+    }
+}
+
+/// Beam geometries of the grid: the paper's, a slender one and a stubby one, each with its own mu, P.
+fn beam_shapes(grid: Grid) -> Vec<TwinBeamsParams> {
+    let paper = TwinBeamsParams::PAPER;
+    let mut shapes = vec![paper];
+    if grid == Grid::Full {
+        shapes.push(TwinBeamsParams {
+            length: 500.0,
+            width: 10.0,
+            half_height: 2.0,
+            friction: 0.15,
+            pressure: 2.0,
+            ..paper
+        });
+        shapes.push(TwinBeamsParams {
+            length: 50.0,
+            width: 30.0,
+            half_height: 5.0,
+            youngs_modulus: 70_000.0,
+            friction: 0.8,
+            pressure: 0.5,
+            ..paper
+        });
+    }
+    shapes
+}
+
+/// Plate variants of the grid.
+fn plate_shapes(grid: Grid) -> Vec<PlateParams> {
+    let paper = PlateParams::PAPER;
+    let mut shapes = vec![paper];
+    if grid == Grid::Full {
+        shapes.push(PlateParams {
+            thickness: 1.0,
+            poisson: 0.45,
+            friction: 0.8,
+            ..paper
+        });
+        shapes.push(PlateParams {
+            half_length: 50.0,
+            thickness: 0.1,
+            poisson: 0.1,
+            friction: 0.1,
+            pressure: 1.0,
+            ..paper
+        });
+    }
+    shapes
+}
+
+/// K_T values (MPa/mm) of the grid: five decades around each data set.
+const BEAM_STIFFNESSES: [f64; 5] = [12.0, 120.0, 600.0, 6e3, 6e4];
+const PLATE_STIFFNESSES: [f64; 6] = [1.0, 1e3, 1e5, 1e6, 1e7, 1e8];
+
+/// Runs the comparison; returns the worst case of each quantity.
+pub fn run(grid: Grid, density: MeshDensity) -> Result<Vec<Worst>, NumericError> {
+    let mut w = Worst::new("beam w(L) (mm)");
+    let mut x = Worst::new("beam X (mm)");
+    for shape in beam_shapes(grid) {
+        for kt in BEAM_STIFFNESSES {
+            let params = TwinBeamsParams {
+                tangential_stiffness: kt,
+                ..shape
+            };
+            let Ok(beams) = TwinBeams::new(params) else {
+                continue;
+            };
+            let (f_thre, f_1) = (beams.threshold_force(), beams.first_macroslip_force());
+            // Stick-like, just below and just above F_1, and two depths of macroslip.
+            for f in [
+                0.5 * f_thre,
+                0.98 * f_1,
+                1.02 * f_1,
+                1.5 * f_thre,
+                3.0 * f_thre,
+            ] {
+                let Ok(force) = TipForce::new(f) else {
+                    continue;
+                };
+                let exact = beams.regularized(force);
+                let mut fe = TwinBeamsFe::new(params, density);
+                fe.load_to(f, 4)?;
+                let case = || beam_case(&params, f);
+                w.record(fe.tip_deflection(), exact.tip_deflection(), case);
+                x.record(fe.micro_zone_end(), exact.micro_zone_end(), case);
+            }
+        }
+    }
+    let mut u = Worst::new("plate u(L) (mm)");
+    let mut xr = Worst::new("plate X_r (mm)");
+    for shape in plate_shapes(grid) {
+        for kt in PLATE_STIFFNESSES {
+            let params = PlateParams {
+                tangential_stiffness: kt,
+                ..shape
+            };
+            let Ok(plate) = SqueezedPlate::new(params) else {
+                continue;
+            };
+            let exact = plate.regularized();
+            let mut fe = PlateFe::new(params, density);
+            fe.load_to(params.pressure, 2)?;
+            let case = || plate_case(&params);
+            u.record(fe.end_displacement(), exact.end_displacement(), case);
+            xr.record(fe.micro_zone_end(), exact.micro_zone_end(), case);
+        }
+    }
+    Ok(vec![w, x, u, xr])
+}
+
+fn beam_case(p: &TwinBeamsParams, force: f64) -> String {
+    format!(
+        "K_T={} MPa/mm F={} N L={} b={} h={} mm E={} MPa P={} MPa mu={}",
+        number(p.tangential_stiffness),
+        number(force),
+        number(p.length),
+        number(p.width),
+        number(p.half_height),
+        number(p.youngs_modulus),
+        number(p.pressure),
+        number(p.friction)
+    )
+}
+
+fn plate_case(p: &PlateParams) -> String {
+    format!(
+        "K_T={} MPa/mm L={} t_p={} mm E={} MPa nu={} mu={} P={} MPa",
+        number(p.tangential_stiffness),
+        number(p.half_length),
+        number(p.thickness),
+        number(p.youngs_modulus),
+        number(p.poisson),
+        number(p.friction),
+        number(p.pressure)
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn relative_error_handles_zero_references() {
+        assert_eq!(relative_error(1e-3, 0.0), 1e-3);
+        assert!((relative_error(1.01, 1.0) - 0.01).abs() < 1e-12);
+    }
+}
