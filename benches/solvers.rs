@@ -22,7 +22,11 @@ fn beam_closed_form(bencher: Bencher, force: f64) {
 /// Closed form, regularized plate: root find for X_r, then u(L).
 #[divan::bench(args = [1e3, 1e6])]
 fn plate_closed_form(bencher: Bencher, kt: f64) {
-    let plate = SqueezedPlate::new(PlateParams { tangential_stiffness: kt, ..PlateParams::PAPER }).unwrap();
+    let plate = SqueezedPlate::new(PlateParams {
+        tangential_stiffness: kt,
+        ..PlateParams::PAPER
+    })
+    .unwrap();
     bencher.bench_local(|| {
         let state = black_box(&plate).regularized();
         (state.micro_zone_end(), state.end_displacement())
