@@ -29,6 +29,8 @@ use crate::verify::{self, Grid};
     version,
     about,
     long_about = None,
+    // A fixed width: help text (and its snapshot) must not depend on the terminal running it.
+    term_width = 100,
     after_help = "Units: mm, N, MPa; K_T in MPa/mm (1 MPa/um = 1000 MPa/mm).\n\
                   Keys for --set and preset files: beam L b h E P mu KT F; plate L tp E nu mu P KT.\n\
                   Without a command, microslip prints a report of the paper's two data sets."
@@ -51,8 +53,7 @@ pub enum Command {
     Sweep(SweepCommand),
     /// List bundled and user presets with their descriptions.
     Presets,
-    /// Compare the closed forms with the independent finite-element solvers; exit 1 if any error
-    /// exceeds the tolerance.
+    /// Cross-check the closed forms against the finite-element solvers; exit 1 above tolerance.
     Verify {
         /// Run one geometry per model only (a smoke test).
         #[arg(long)]
@@ -78,7 +79,7 @@ pub struct InputArgs {
     /// Bundled or user preset name, or a path to a TOML file.
     #[arg(long, value_name = "P")]
     pub preset: Option<String>,
-    /// Override one parameter, e.g. --set KT=120 (beam: L b h E P mu KT F; plate: L tp E nu mu P KT).
+    /// Set a parameter, e.g. KT=120 (beam: L b h E P mu KT F; plate: L tp E nu mu P KT).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub assignments: Vec<String>,
 }
