@@ -17,12 +17,12 @@ use crate::model::validate::ParamError;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Inputs, Model, ModelKind, Preset, PresetError, PresetSource};
 use crate::report::{self, csv, json, number, text};
+use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
 
 /// microslip: friction benchmarks under the regularized Coulomb law (Ligier & Bonhote, 2014).
 ///
-/// Units: mm, N, MPa; K_T in MPa/mm. Without a subcommand, prints a report of the paper's two data
-/// sets.
+/// Units: mm, N, MPa; K_T in MPa/mm. Without a subcommand, opens the terminal UI.
 #[derive(Debug, Parser)]
 #[command(
     name = "microslip",
@@ -33,17 +33,25 @@ use crate::verify::{self, Grid};
     term_width = 100,
     after_help = "Units: mm, N, MPa; K_T in MPa/mm (1 MPa/um = 1000 MPa/mm).\n\
                   Keys for --set and preset files: beam L b h E P mu KT F; plate L tp E nu mu P KT.\n\
-                  Without a command, microslip prints a report of the paper's two data sets."
+                  Without a command, microslip opens the terminal UI (keys: press ? inside)."
 )]
 pub struct Cli {
-    /// What to do (default: the report of the paper's data sets).
+    /// What to do (default: the terminal UI).
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// Characters the terminal UI may use (ascii: 7-bit only, for any terminal).
+    #[arg(long, value_enum, default_value_t = Charset::Unicode)]
+    pub charset: Charset,
+    /// Preset to open in the terminal UI (bundled or user name, or a .toml path).
+    #[arg(long, value_name = "P")]
+    pub preset: Option<String>,
 }
 
 /// Subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
+    /// Report of the paper's two data sets (twin beams and plate), as text.
+    Report,
     /// Twin cantilever beams at one tip force: thresholds, X, w(L) for both laws, regimes.
     Beam(PointArgs),
     /// Squeezed plate: X_s, X_r, u(L) for both laws, regimes, contact-pressure check.
@@ -208,6 +216,15 @@ pub fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(error) => return report_clap_error(&error),
     };
+    if cli.command.is_none() {
+        return match crate::tui::run(cli.charset, cli.preset.as_deref()) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(error) => {
+                eprintln!("microslip: {error}");
+                ExitCode::from(2)
+            }
+        };
+    }
     let mut out = BufWriter::new(io::stdout().lock());
     let result = run(&cli, &mut out).and_then(|()| out.flush().map_err(CliError::from));
     match result {
@@ -246,7 +263,7 @@ fn report_clap_error(error: &clap::Error) -> ExitCode {
 /// Runs a parsed command, writing results to `out`.
 pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
     match &cli.command {
-        None => out.write_all(report::paper_report().as_bytes())?,
+        None | Some(Command::Report) => out.write_all(report::paper_report().as_bytes())?,
         Some(Command::Beam(args)) => {
             let (name, model) = load(&args.inputs, ModelKind::Beam)?;
             if let Model::Beam { beams, force } = model {

@@ -247,6 +247,72 @@ pub fn plate_kt_sweep(
         .map(|p| plate_point(&p))
 }
 
+/// A sampled curve: (x, y) points in order of x.
+pub type Series = Vec<(f64, f64)>;
+
+/// Tip deflection w(L) (mm) against F (N): (Coulomb, regularized).
+pub fn beam_deflection_vs_force(beams: &TwinBeams, forces: Samples) -> (Series, Series) {
+    beam_force_sweep(*beams, forces)
+        .map(|p| ((p.force, p.w_coulomb), (p.force, p.w_regularized)))
+        .unzip()
+}
+
+/// End of the microslip zone X (mm) against F (N), regularized law (X = L below F_1).
+pub fn beam_slip_boundary_vs_force(beams: &TwinBeams, forces: Samples) -> Series {
+    beam_force_sweep(*beams, forces)
+        .map(|p| (p.force, p.micro_end))
+        .collect()
+}
+
+/// Interface shear tau (MPa) along the beams at one force: (Coulomb, regularized).
+pub fn beam_shear_along(
+    beams: &TwinBeams,
+    force: TipForce,
+    positions: Samples,
+) -> (Series, Series) {
+    let (coulomb, regularized) = (beams.coulomb(force), beams.regularized(force));
+    positions
+        .values()
+        .map(|x| {
+            (
+                (x, coulomb.shear_stress(x)),
+                (x, regularized.shear_stress(x)),
+            )
+        })
+        .unzip()
+}
+
+/// End displacement u(L) (mm) against K_T (MPa/mm): (Coulomb, regularized).
+pub fn plate_end_displacement_vs_stiffness(
+    plate: &SqueezedPlate,
+    stiffnesses: Samples,
+) -> (Series, Series) {
+    plate_kt_sweep(*plate, stiffnesses)
+        .map(|p| ((p.kt, p.u_coulomb), (p.kt, p.u_regularized)))
+        .unzip()
+}
+
+/// End of the microslip zone X_r (mm) against mu, at the plate's K_T.
+pub fn plate_slip_boundary_vs_friction(plate: &SqueezedPlate, frictions: Samples) -> Series {
+    frictions
+        .values()
+        .filter_map(|mu| {
+            SqueezedPlate::new(crate::PlateParams {
+                friction: mu,
+                ..plate.params()
+            })
+            .ok()
+        })
+        .map(|p| (p.params().friction, p.regularized().micro_zone_end()))
+        .collect()
+}
+
+/// Contact pressure ratio P_r / P along the half-plate.
+pub fn plate_contact_pressure_along(plate: &SqueezedPlate, positions: Samples) -> Series {
+    let pressure = plate.contact_pressure();
+    positions.values().map(|x| (x, pressure.ratio(x))).collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -17,6 +17,7 @@ pub mod model;
 pub mod numeric;
 pub mod preset;
 pub mod report;
+pub mod tui;
 pub mod verify;
 
 pub use model::plate::{

@@ -234,7 +234,7 @@ impl Inputs {
 }
 
 /// Parses a number as users type it: `1e6`, `600`, `0.3`; rejects NaN and infinities spelled out.
-fn parse_number(text: &str) -> Option<f64> {
+pub fn parse_number(text: &str) -> Option<f64> {
     let value: f64 = text.parse().ok()?;
     // "nan" and "inf" parse in Rust; they are never what a user means. Range checks catch the rest.
     if value.is_nan() || text.to_ascii_lowercase().contains("inf") {
@@ -478,6 +478,92 @@ impl Preset {
     }
 }
 
+/// A preset file's text for `inputs` (what the TUI saves): every key, with units in comments.
+pub fn to_toml(inputs: &Inputs, description: &str) -> String {
+    let mut text = String::from("# microslip preset. Units: mm, N, MPa; KT in MPa/mm.\n");
+    text.push_str(&format!(
+        "description = {}\n",
+        toml::Value::from(description)
+    ));
+    text.push_str(&format!("model = \"{}\"\n", inputs.kind().name()));
+    for key in inputs.kind().keys() {
+        let value = inputs.get(key.name).unwrap_or(f64::NAN);
+        text.push_str(&format!(
+            "{} = {value:?}  # {} ({})\n",
+            key.name, key.meaning, key.unit
+        ));
+    }
+    text
+}
+
+/// Why a preset could not be saved.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SaveError {
+    /// The name would not make a safe file name.
+    #[error("invalid preset name '{0}': use 1 to 64 letters, digits, '-' or '_'")]
+    BadName(String),
+    /// The name belongs to a bundled preset.
+    #[error("'{0}' is a bundled preset; choose another name")]
+    Bundled(String),
+    /// A file of that name exists and overwriting was not confirmed.
+    #[error("preset '{0}' exists")]
+    Exists(String),
+    /// No user preset directory (neither XDG_CONFIG_HOME nor HOME is set).
+    #[error("no user preset directory: set XDG_CONFIG_HOME or HOME")]
+    NoDirectory,
+    /// The file system refused.
+    #[error("cannot save {path}: {reason}")]
+    Io {
+        /// The path.
+        path: String,
+        /// The OS's reason.
+        reason: String,
+    },
+}
+
+/// Saves `text` as `<dir>/<name>.toml` atomically: written to a temporary file in the same directory,
+/// flushed, then renamed over the target, so a crash never leaves a half-written or lost preset. An
+/// existing file is replaced only when `overwrite` is true.
+pub fn save_atomic(
+    dir: &Path,
+    name: &str,
+    text: &str,
+    overwrite: bool,
+) -> Result<PathBuf, SaveError> {
+    let valid = !name.is_empty()
+        && name.len() <= 64
+        && name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_');
+    if !valid {
+        return Err(SaveError::BadName(name.to_string()));
+    }
+    if BUNDLED.iter().any(|(bundled, _)| *bundled == name) {
+        return Err(SaveError::Bundled(name.to_string()));
+    }
+    let target = dir.join(format!("{name}.toml"));
+    if target.exists() && !overwrite {
+        return Err(SaveError::Exists(name.to_string()));
+    }
+    let io_error = |path: &Path, e: std::io::Error| SaveError::Io {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    };
+    std::fs::create_dir_all(dir).map_err(|e| io_error(dir, e))?;
+    let temporary = dir.join(format!(".{name}.toml.tmp-{}", std::process::id()));
+    let written = (|| {
+        use std::io::Write;
+        let mut file = std::fs::File::create(&temporary)?;
+        file.write_all(text.as_bytes())?;
+        file.sync_all()
+    })();
+    if let Err(e) = written.and_then(|()| std::fs::rename(&temporary, &target)) {
+        let _ = std::fs::remove_file(&temporary);
+        return Err(io_error(&target, e));
+    }
+    Ok(target)
+}
+
 /// Presets embedded in the binary: (name, TOML text).
 pub const BUNDLED: &[(&str, &str)] = &[
     ("paper-beams", include_str!("../presets/paper-beams.toml")),
@@ -632,6 +718,49 @@ mod tests {
         assert!(inputs.apply_assignment("E=NaN").is_err());
         assert!(inputs.apply_assignment("E=inf").is_err());
         assert!(inputs.apply_assignment("E").is_err());
+    }
+
+    #[test]
+    fn saved_presets_round_trip_and_are_never_clobbered_silently() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut inputs = Inputs::paper(ModelKind::Beam);
+        inputs.set("KT", 123.456).unwrap();
+        let text = to_toml(&inputs, "bench \"A\"");
+        let path = save_atomic(dir.path(), "bench-a", &text, false).unwrap();
+        let loaded = Preset::load(&path).unwrap();
+        assert_eq!(loaded.inputs, inputs);
+        assert_eq!(loaded.description, "bench \"A\"");
+        assert_eq!(
+            save_atomic(dir.path(), "bench-a", "x", false),
+            Err(SaveError::Exists("bench-a".into()))
+        );
+        assert_eq!(
+            std::fs::read_to_string(&path).unwrap(),
+            text,
+            "refused save must leave the file intact"
+        );
+        save_atomic(
+            dir.path(),
+            "bench-a",
+            &to_toml(&Inputs::paper(ModelKind::Beam), ""),
+            true,
+        )
+        .unwrap();
+        assert_eq!(Preset::load(&path).unwrap().inputs.get("KT"), Some(600.0));
+        assert!(matches!(
+            save_atomic(dir.path(), "../evil", "x", false),
+            Err(SaveError::BadName(_))
+        ));
+        assert!(matches!(
+            save_atomic(dir.path(), "paper-beams", "x", false),
+            Err(SaveError::Bundled(_))
+        ));
+        let leftovers: Vec<_> = std::fs::read_dir(dir.path())
+            .unwrap()
+            .filter_map(Result::ok)
+            .filter(|e| e.file_name().to_string_lossy().contains(".tmp-"))
+            .collect();
+        assert!(leftovers.is_empty());
     }
 
     #[test]

@@ -32,9 +32,18 @@ fn failure(args: &[&str], code: i32) -> String {
 }
 
 #[test]
-fn no_arguments_prints_the_paper_report() {
-    let text = stdout_of(&[]);
+fn report_prints_the_paper_data_sets() {
+    let text = stdout_of(&["report"]);
     assert!(text.contains("Twin cantilever beams") && text.contains("Squeezed plate"));
+}
+
+#[test]
+fn the_tui_refuses_to_start_without_a_terminal() {
+    // Under `cargo test` stdout is a pipe: one clear line, exit 2, nothing on stdout.
+    let stderr = failure(&[], 2);
+    assert!(stderr.contains("needs an interactive terminal"), "{stderr}");
+    let stderr = failure(&["--preset", "nope"], 2);
+    assert!(stderr.contains("no preset named 'nope'"), "{stderr}");
 }
 
 #[test]

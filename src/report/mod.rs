@@ -16,6 +16,12 @@ use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 /// trailing zeros dropped. Never prints NaN: a non-finite value (which the core does not produce)
 /// shows as "n/a".
 pub fn number(x: f64) -> String {
+    number_with(x, 6)
+}
+
+/// [`number`] with `digits` significant digits (at least 1); charts use 3 for tick labels.
+pub fn number_with(x: f64, digits: u32) -> String {
+    let digits = digits.max(1) as i32;
     if !x.is_finite() {
         return "n/a".to_string();
     }
@@ -24,7 +30,7 @@ pub fn number(x: f64) -> String {
     }
     let magnitude = x.abs();
     if (1e-3..1e6).contains(&magnitude) {
-        let decimals = (5 - magnitude.log10().floor() as i32).max(0) as usize;
+        let decimals = (digits - 1 - magnitude.log10().floor() as i32).max(0) as usize;
         let text = format!("{x:.decimals$}");
         if text.contains('.') {
             text.trim_end_matches('0').trim_end_matches('.').to_string()
@@ -32,7 +38,7 @@ pub fn number(x: f64) -> String {
             text
         }
     } else {
-        let text = format!("{x:.5e}");
+        let text = format!("{x:.*e}", (digits - 1) as usize);
         match text.split_once('e') {
             Some((mantissa, exponent)) if mantissa.contains('.') => {
                 format!(
@@ -184,6 +190,10 @@ mod tests {
         assert_eq!(number(-2.5), "-2.5");
         assert_eq!(number(0.0), "0");
         assert_eq!(number(f64::NAN), "n/a");
+        assert_eq!(number_with(0.090_045_6, 3), "0.09");
+        assert_eq!(number_with(4.843_42e-4, 3), "4.84e-4");
+        assert_eq!(number_with(1e10, 3), "1e10");
+        assert_eq!(number_with(240.0, 3), "240");
     }
 
     #[test]

@@ -1,0 +1,382 @@
+//! Keys as data: one table maps key presses to actions per context, and the help overlay is printed
+//! from the same table, so the two cannot drift apart.
+
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+use super::app::Action;
+
+/// Where the user is; the same key means different things in different places.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Context {
+    /// The main screen.
+    Main,
+    /// The preset picker.
+    Presets,
+    /// Typing text: a value, a preset name.
+    TextEntry,
+    /// A yes/no question.
+    Confirm,
+    /// The help overlay.
+    Help,
+}
+
+/// One line of the key map.
+#[derive(Debug, Clone, Copy)]
+pub struct Binding {
+    /// Where it applies.
+    pub context: Context,
+    /// The keys (code, required modifiers).
+    pub keys: &'static [(KeyCode, KeyModifiers)],
+    /// How the keys are written in the help (ASCII only, so the ASCII charset can show it).
+    pub label: &'static str,
+    /// What happens.
+    pub action: Action,
+    /// What the help says.
+    pub description: &'static str,
+}
+
+const NONE: KeyModifiers = KeyModifiers::NONE;
+const SHIFT: KeyModifiers = KeyModifiers::SHIFT;
+
+const fn bind(
+    context: Context,
+    keys: &'static [(KeyCode, KeyModifiers)],
+    label: &'static str,
+    action: Action,
+    description: &'static str,
+) -> Binding {
+    Binding {
+        context,
+        keys,
+        label,
+        action,
+        description,
+    }
+}
+
+/// The whole key map. Ctrl-C is not listed per context: it always quits.
+pub const BINDINGS: &[Binding] = &[
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('j'), NONE), (KeyCode::Down, NONE)],
+        "j / Down",
+        Action::Next,
+        "next parameter",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('k'), NONE), (KeyCode::Up, NONE)],
+        "k / Up",
+        Action::Previous,
+        "previous parameter",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('l'), NONE), (KeyCode::Right, NONE)],
+        "l / Right",
+        Action::Increase,
+        "increase, fine step",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('h'), NONE), (KeyCode::Left, NONE)],
+        "h / Left",
+        Action::Decrease,
+        "decrease, fine step",
+    ),
+    bind(
+        Context::Main,
+        &[
+            (KeyCode::Char('L'), SHIFT),
+            (KeyCode::Char('L'), NONE),
+            (KeyCode::Right, SHIFT),
+        ],
+        "L / S-Right",
+        Action::IncreaseCoarse,
+        "increase, coarse step",
+    ),
+    bind(
+        Context::Main,
+        &[
+            (KeyCode::Char('H'), SHIFT),
+            (KeyCode::Char('H'), NONE),
+            (KeyCode::Left, SHIFT),
+        ],
+        "H / S-Left",
+        Action::DecreaseCoarse,
+        "decrease, coarse step",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Enter, NONE), (KeyCode::Char('e'), NONE)],
+        "Enter / e",
+        Action::StartEdit,
+        "type an exact value",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('m'), NONE), (KeyCode::Tab, NONE)],
+        "m / Tab",
+        Action::SwitchModel,
+        "switch beams / plate",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('c'), NONE)],
+        "c",
+        Action::NextChart,
+        "next chart",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('C'), SHIFT), (KeyCode::Char('C'), NONE)],
+        "C",
+        Action::PreviousChart,
+        "previous chart",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('n'), NONE)],
+        "n",
+        Action::ToggleNumeric,
+        "toggle FE points",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('p'), NONE)],
+        "p",
+        Action::OpenPresets,
+        "load a preset",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('s'), NONE)],
+        "s",
+        Action::SavePreset,
+        "save as user preset",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('r'), NONE)],
+        "r",
+        Action::Reset,
+        "reset to the preset",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('?'), NONE), (KeyCode::Char('?'), SHIFT)],
+        "?",
+        Action::ToggleHelp,
+        "this help",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('q'), NONE), (KeyCode::Esc, NONE)],
+        "q / Esc",
+        Action::Quit,
+        "quit",
+    ),
+    bind(
+        Context::Presets,
+        &[(KeyCode::Char('j'), NONE), (KeyCode::Down, NONE)],
+        "j / Down",
+        Action::Next,
+        "next preset",
+    ),
+    bind(
+        Context::Presets,
+        &[(KeyCode::Char('k'), NONE), (KeyCode::Up, NONE)],
+        "k / Up",
+        Action::Previous,
+        "previous preset",
+    ),
+    bind(
+        Context::Presets,
+        &[(KeyCode::Enter, NONE)],
+        "Enter",
+        Action::Commit,
+        "load selected preset",
+    ),
+    bind(
+        Context::Presets,
+        &[(KeyCode::Char('s'), NONE)],
+        "s",
+        Action::SavePreset,
+        "save as user preset",
+    ),
+    bind(
+        Context::Presets,
+        &[
+            (KeyCode::Esc, NONE),
+            (KeyCode::Char('q'), NONE),
+            (KeyCode::Char('p'), NONE),
+        ],
+        "Esc / q",
+        Action::Cancel,
+        "close the picker",
+    ),
+    bind(
+        Context::TextEntry,
+        &[(KeyCode::Enter, NONE)],
+        "Enter",
+        Action::Commit,
+        "accept",
+    ),
+    bind(
+        Context::TextEntry,
+        &[(KeyCode::Esc, NONE)],
+        "Esc",
+        Action::Cancel,
+        "cancel, keep old value",
+    ),
+    bind(
+        Context::TextEntry,
+        &[(KeyCode::Backspace, NONE)],
+        "Backspace",
+        Action::Backspace,
+        "delete last character",
+    ),
+    bind(
+        Context::Confirm,
+        &[(KeyCode::Char('y'), NONE), (KeyCode::Char('Y'), SHIFT)],
+        "y",
+        Action::Yes,
+        "yes",
+    ),
+    bind(
+        Context::Confirm,
+        &[(KeyCode::Char('n'), NONE), (KeyCode::Esc, NONE)],
+        "n / Esc",
+        Action::Cancel,
+        "no",
+    ),
+    bind(
+        Context::Help,
+        &[
+            (KeyCode::Esc, NONE),
+            (KeyCode::Char('?'), NONE),
+            (KeyCode::Char('?'), SHIFT),
+            (KeyCode::Char('q'), NONE),
+        ],
+        "Esc / ? / q",
+        Action::ToggleHelp,
+        "close the help",
+    ),
+];
+
+/// The action for a key press in a context, if any. Ctrl-C quits everywhere; in text entry, any
+/// other printable character is typed.
+pub fn action_for(context: Context, key: KeyEvent) -> Option<Action> {
+    if key.modifiers.contains(KeyModifiers::CONTROL) && matches!(key.code, KeyCode::Char('c' | 'C'))
+    {
+        return Some(Action::Quit);
+    }
+    let found = BINDINGS
+        .iter()
+        .filter(|b| b.context == context)
+        .find(|b| {
+            b.keys
+                .iter()
+                .any(|&(code, modifiers)| code == key.code && key.modifiers == modifiers)
+        })
+        .map(|b| b.action);
+    match (found, context, key.code) {
+        (Some(action), _, _) => Some(action),
+        (None, Context::TextEntry, KeyCode::Char(c))
+            if !key.modifiers.contains(KeyModifiers::CONTROL) =>
+        {
+            Some(Action::Input(c))
+        }
+        _ => None,
+    }
+}
+
+/// Heading of each context in the help overlay.
+pub fn context_title(context: Context) -> &'static str {
+    match context {
+        Context::Main => "Main screen",
+        Context::Presets => "Preset picker",
+        Context::TextEntry => "Typing a value or a name",
+        Context::Confirm => "Yes/no questions",
+        Context::Help => "This help",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn key(code: KeyCode, modifiers: KeyModifiers) -> KeyEvent {
+        KeyEvent::new(code, modifiers)
+    }
+
+    #[test]
+    fn ctrl_c_quits_everywhere() {
+        for context in [
+            Context::Main,
+            Context::Presets,
+            Context::TextEntry,
+            Context::Confirm,
+            Context::Help,
+        ] {
+            assert_eq!(
+                action_for(context, key(KeyCode::Char('c'), KeyModifiers::CONTROL)),
+                Some(Action::Quit)
+            );
+        }
+    }
+
+    #[test]
+    fn keys_mean_what_the_table_says() {
+        assert_eq!(
+            action_for(Context::Main, key(KeyCode::Char('j'), NONE)),
+            Some(Action::Next)
+        );
+        assert_eq!(
+            action_for(Context::Main, key(KeyCode::Right, SHIFT)),
+            Some(Action::IncreaseCoarse)
+        );
+        assert_eq!(
+            action_for(Context::Main, key(KeyCode::Char('L'), SHIFT)),
+            Some(Action::IncreaseCoarse)
+        );
+        assert_eq!(
+            action_for(Context::TextEntry, key(KeyCode::Char('7'), NONE)),
+            Some(Action::Input('7'))
+        );
+        assert_eq!(
+            action_for(Context::TextEntry, key(KeyCode::Char('q'), NONE)),
+            Some(Action::Input('q'))
+        );
+        assert_eq!(
+            action_for(Context::Main, key(KeyCode::Char('z'), NONE)),
+            None
+        );
+    }
+
+    #[test]
+    fn help_fits_two_columns_of_an_80_column_screen() {
+        assert!(
+            BINDINGS
+                .iter()
+                .all(|b| b.label.len() <= 13 && b.description.len() <= 22)
+        );
+    }
+
+    #[test]
+    fn no_key_is_bound_twice_in_one_context_and_labels_are_ascii() {
+        for (i, a) in BINDINGS.iter().enumerate() {
+            assert!(a.label.is_ascii() && a.description.is_ascii());
+            for b in &BINDINGS[i + 1..] {
+                if a.context == b.context {
+                    assert!(
+                        a.keys.iter().all(|k| !b.keys.contains(k)),
+                        "{} / {}",
+                        a.label,
+                        b.label
+                    );
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,104 @@
+//! The terminal UI: terminal set-up and restore, and the event loop. Everything else lives in
+//! [`app`] (state), [`keymap`] (keys), [`plots`] (chart data) and [`ui`] (drawing).
+//!
+//! Over SSH: the screen is redrawn only after a key or a resize (no frame rate; the 250 ms poll only
+//! checks for SIGTERM/SIGHUP and draws nothing), queued keys are applied before a single redraw, the
+//! mouse is not captured, and the terminal is restored on quit, on error, on panic (ratatui's hook)
+//! and on SIGTERM or SIGHUP (a dropped SSH link).
+
+pub mod app;
+pub mod keymap;
+pub mod plots;
+pub mod theme;
+pub mod ui;
+
+use std::io::{self, IsTerminal};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Duration;
+
+use ratatui::DefaultTerminal;
+use ratatui::crossterm::event::{self, Event, KeyEventKind};
+
+use app::{App, AppOptions};
+use theme::{Charset, Theme};
+
+use crate::preset::{self, PresetError};
+
+/// How often the loop wakes up to look for a termination signal (no redraw happens then).
+const SIGNAL_POLL: Duration = Duration::from_millis(250);
+
+/// Why the TUI could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum TuiError {
+    /// Standard output is not a terminal.
+    #[error(
+        "the terminal UI needs an interactive terminal; for a text report run `microslip report`, for scripts see `microslip --help`"
+    )]
+    NotATerminal,
+    /// The start-up preset is unusable.
+    #[error(transparent)]
+    Preset(#[from] PresetError),
+    /// The terminal failed.
+    #[error("terminal error: {0}")]
+    Io(#[from] io::Error),
+}
+
+/// Opens the TUI on `preset` (default: the paper's twin beams).
+pub fn run(charset: Charset, preset: Option<&str>) -> Result<(), TuiError> {
+    let preset = preset::resolve(preset.unwrap_or("paper-beams"))?;
+    if !io::stdout().is_terminal() || !io::stdin().is_terminal() {
+        return Err(TuiError::NotATerminal);
+    }
+    let mut app = App::new(AppOptions {
+        theme: Theme::from_env(charset),
+        preset,
+        user_dir: preset::user_preset_dir(),
+    });
+    let terminate = Arc::new(AtomicBool::new(false));
+    for signal in [signal_hook::consts::SIGTERM, signal_hook::consts::SIGHUP] {
+        signal_hook::flag::register(signal, Arc::clone(&terminate))?;
+    }
+    let mut terminal = ratatui::try_init()?;
+    let result = event_loop(&mut terminal, &mut app, &terminate);
+    let _ = terminal.show_cursor();
+    ratatui::restore();
+    result.map_err(TuiError::from)
+}
+
+fn event_loop(
+    terminal: &mut DefaultTerminal,
+    app: &mut App,
+    terminate: &AtomicBool,
+) -> io::Result<()> {
+    terminal.draw(|frame| ui::draw(frame, app))?;
+    while !terminate.load(Ordering::Relaxed) {
+        if !event::poll(SIGNAL_POLL)? {
+            continue;
+        }
+        let mut redraw = false;
+        // Apply every queued event, then draw once.
+        loop {
+            match event::read()? {
+                Event::Key(key) if key.kind == KeyEventKind::Press => {
+                    if let Some(action) = keymap::action_for(app.mode().context(), key) {
+                        app.update(action);
+                        redraw = true;
+                    }
+                    if app.should_quit() {
+                        return Ok(());
+                    }
+                }
+                Event::Resize(..) => redraw = true,
+                _ => {}
+            }
+            if !event::poll(Duration::ZERO)? {
+                break;
+            }
+        }
+        if redraw {
+            terminal.draw(|frame| ui::draw(frame, app))?;
+        }
+    }
+    Ok(())
+}

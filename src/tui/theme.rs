@@ -1,0 +1,183 @@
+//! Colours, characters and the choices that keep the TUI readable over any terminal: a 16-colour
+//! palette, `NO_COLOR`, and an ASCII-only character set.
+
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::symbols::border;
+
+/// Which characters may be drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Charset {
+    /// Box drawing, Braille curves.
+    Unicode,
+    /// 7-bit ASCII only (old terminals, odd fonts, logs).
+    Ascii,
+}
+
+/// What an element of the screen is, so that styles are chosen in one place.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    /// Pane titles.
+    Title,
+    /// The selected row.
+    Selected,
+    /// Units and secondary text.
+    Muted,
+    /// Error messages.
+    Error,
+    /// Informational messages.
+    Info,
+    /// The cursor line on charts.
+    Cursor,
+    /// A regime name.
+    Regime,
+}
+
+/// Character set and colour choice.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Theme {
+    /// Character set.
+    pub charset: Charset,
+    /// False when `NO_COLOR` is set (or colour is off).
+    pub color: bool,
+}
+
+/// Series colours, from the 16-colour palette that every terminal has.
+const SERIES_COLORS: [Color; 6] = [
+    Color::Yellow,
+    Color::Cyan,
+    Color::Green,
+    Color::Magenta,
+    Color::LightRed,
+    Color::LightBlue,
+];
+const SERIES_ASCII: [&str; 6] = ["*", "o", "+", "x", "#", "%"];
+const SERIES_UNICODE: [&str; 6] = ["•", "o", "+", "×", "■", "◆"];
+
+impl Theme {
+    /// Reads `NO_COLOR` (any non-empty value turns colour off, see no-color.org).
+    pub fn from_env(charset: Charset) -> Self {
+        let no_color = std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
+        Theme {
+            charset,
+            color: !no_color,
+        }
+    }
+
+    /// Style of a role.
+    pub fn style(&self, role: Role) -> Style {
+        let base = Style::default();
+        if !self.color {
+            return match role {
+                Role::Title | Role::Selected | Role::Error => base.add_modifier(Modifier::BOLD),
+                _ => base,
+            };
+        }
+        match role {
+            Role::Title => base.fg(Color::Cyan).add_modifier(Modifier::BOLD),
+            Role::Selected => base.fg(Color::Black).bg(Color::Cyan),
+            Role::Muted => base.fg(Color::Gray),
+            Role::Error => base.fg(Color::LightRed).add_modifier(Modifier::BOLD),
+            Role::Info => base.fg(Color::Green),
+            Role::Cursor => base.fg(Color::Gray),
+            Role::Regime => base.fg(Color::Yellow),
+        }
+    }
+
+    /// Style of the i-th data series.
+    pub fn series_style(&self, index: usize) -> Style {
+        if self.color {
+            Style::default().fg(SERIES_COLORS[index % SERIES_COLORS.len()])
+        } else {
+            Style::default()
+        }
+    }
+
+    /// True when curves must be told apart by their symbols, not their colours.
+    pub fn symbol_mode(&self) -> bool {
+        self.charset == Charset::Ascii || !self.color
+    }
+
+    /// The plotting symbol of the i-th series in symbol mode.
+    pub fn series_symbol(&self, index: usize) -> &'static str {
+        match self.charset {
+            Charset::Ascii => SERIES_ASCII[index % SERIES_ASCII.len()],
+            Charset::Unicode => SERIES_UNICODE[index % SERIES_UNICODE.len()],
+        }
+    }
+
+    /// The cursor line's symbol.
+    pub fn cursor_symbol(&self) -> &'static str {
+        match self.charset {
+            Charset::Ascii => "|",
+            Charset::Unicode => "│",
+        }
+    }
+
+    /// Border characters.
+    pub fn border_set(&self) -> border::Set<'static> {
+        match self.charset {
+            Charset::Unicode => border::PLAIN,
+            Charset::Ascii => border::Set {
+                top_left: "+",
+                top_right: "+",
+                bottom_left: "+",
+                bottom_right: "+",
+                vertical_left: "|",
+                vertical_right: "|",
+                horizontal_top: "-",
+                horizontal_bottom: "-",
+            },
+        }
+    }
+}
+
+/// ASCII stand-in for a symbol that ratatui widgets draw on their own (chart axes, Braille):
+/// box-drawing lines become `|`, `-` or `+`; anything else non-ASCII becomes `*`.
+pub fn ascii_fallback(symbol: &str) -> &'static str {
+    match symbol {
+        "│" | "┃" | "║" | "╎" | "┆" => "|",
+        "─" | "━" | "═" | "╌" | "┄" => "-",
+        "└" | "┘" | "┌" | "┐" | "├" | "┤" | "┬" | "┴" | "┼" | "╭" | "╮" | "╰" | "╯" => {
+            "+"
+        }
+        _ => "*",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ascii_theme_draws_only_ascii() {
+        let theme = Theme {
+            charset: Charset::Ascii,
+            color: true,
+        };
+        let set = theme.border_set();
+        for s in [
+            set.top_left,
+            set.vertical_left,
+            set.horizontal_top,
+            theme.cursor_symbol(),
+        ] {
+            assert!(s.is_ascii());
+        }
+        assert!((0..12).all(|i| theme.series_symbol(i).is_ascii()));
+        assert_eq!(ascii_fallback("└"), "+");
+        assert_eq!(ascii_fallback("⣿"), "*");
+    }
+
+    #[test]
+    fn no_color_uses_no_colours() {
+        let theme = Theme {
+            charset: Charset::Unicode,
+            color: false,
+        };
+        for role in [Role::Title, Role::Selected, Role::Error, Role::Cursor] {
+            assert_eq!(theme.style(role).fg, None);
+            assert_eq!(theme.style(role).bg, None);
+        }
+        assert!(theme.symbol_mode());
+    }
+}

@@ -1,0 +1,156 @@
+//! Charts. In colour with Unicode, ratatui's Chart draws Braille curves told apart by colour. Without
+//! colour or with ASCII, curves must be told apart by their symbols: each series is then rendered
+//! alone into a scratch buffer with one dot per cell, and its dots are copied into the frame with the
+//! series' own symbol (`*`, `o`, `+`, ...). The legend line above the chart works in both modes.
+
+use ratatui::Frame;
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::symbols::{self, Marker};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Axis, Chart, Dataset, GraphType, Paragraph, Widget, Wrap};
+
+use super::panes::pane;
+use crate::tui::app::App;
+use crate::tui::plots::{self, Plot, PlotSeries, SeriesKind};
+use crate::tui::theme::{Role, Theme};
+
+/// The chart pane: title, legend, plot.
+pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
+    let theme = app.theme();
+    let plot = app.plot();
+    let names = plots::chart_names(app.kind());
+    let title = format!(
+        "{} [{}/{}, c: next chart]",
+        names[app.chart() % names.len()],
+        app.chart() + 1,
+        names.len()
+    );
+    let block = pane(app, &title);
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let legend = legend_line(plot, &theme);
+    let legend_rows = if legend.width() as u16 > inner.width {
+        2
+    } else {
+        1
+    };
+    let [heading, legend_area, body] = Layout::vertical([
+        Constraint::Length(1),
+        Constraint::Length(legend_rows),
+        Constraint::Min(0),
+    ])
+    .areas(inner);
+    frame.render_widget(
+        Paragraph::new(Line::from(format!(" {}", plot.title))),
+        heading,
+    );
+    frame.render_widget(
+        Paragraph::new(legend).wrap(Wrap { trim: false }),
+        legend_area,
+    );
+    if theme.symbol_mode() {
+        draw_with_symbols(frame.buffer_mut(), plot, &theme, body);
+    } else {
+        chart(
+            plot,
+            &theme,
+            plot.series.iter().enumerate().collect(),
+            Marker::Braille,
+        )
+        .render(body, frame.buffer_mut());
+    }
+}
+
+/// The legend: each curve's symbol (or a coloured bar) and name.
+fn legend_line<'a>(plot: &'a Plot, theme: &Theme) -> Line<'a> {
+    let mut spans = vec![Span::raw(" ")];
+    for (i, series) in plot
+        .series
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| s.kind != SeriesKind::Cursor)
+    {
+        let mark = if theme.symbol_mode() {
+            theme.series_symbol(i).to_string()
+        } else {
+            "--".to_string()
+        };
+        spans.push(Span::styled(mark, theme.series_style(i)));
+        spans.push(Span::raw(format!(" {}  ", series.name)));
+    }
+    if plot.series.iter().any(|s| s.kind == SeriesKind::Cursor) {
+        spans.push(Span::styled(
+            format!("{} current", theme.cursor_symbol()),
+            theme.style(Role::Cursor),
+        ));
+    }
+    Line::from(spans)
+}
+
+/// A ratatui Chart of the given (index, series) pairs, with the plot's axes.
+fn chart<'a>(
+    plot: &'a Plot,
+    theme: &Theme,
+    series: Vec<(usize, &'a PlotSeries)>,
+    marker: Marker,
+) -> Chart<'a> {
+    let datasets = series
+        .into_iter()
+        .map(|(i, s)| {
+            let (graph, style) = match s.kind {
+                SeriesKind::Line => (GraphType::Line, theme.series_style(i)),
+                SeriesKind::Points => (GraphType::Scatter, theme.series_style(i)),
+                SeriesKind::Cursor => (GraphType::Line, theme.style(Role::Cursor)),
+            };
+            let marker = if s.kind == SeriesKind::Points && marker == Marker::Braille {
+                Marker::Block
+            } else {
+                marker
+            };
+            Dataset::default()
+                .marker(marker)
+                .graph_type(graph)
+                .style(style)
+                .data(&s.points)
+        })
+        .collect();
+    let axis = |a: &'a plots::Axis| {
+        Axis::default()
+            .title(a.title.as_str())
+            .bounds(a.bounds)
+            .labels(
+                a.labels
+                    .iter()
+                    .map(|l| Line::from(l.as_str()))
+                    .collect::<Vec<_>>(),
+            )
+            .style(theme.style(Role::Muted))
+    };
+    Chart::new(datasets)
+        .x_axis(axis(&plot.x))
+        .y_axis(axis(&plot.y))
+        .legend_position(None)
+}
+
+/// Symbol mode: axes first, then each series with its own symbol, cursor underneath the curves.
+fn draw_with_symbols(buffer: &mut Buffer, plot: &Plot, theme: &Theme, area: Rect) {
+    chart(plot, theme, Vec::new(), Marker::Dot).render(area, buffer);
+    let mut order: Vec<(usize, &PlotSeries)> = plot.series.iter().enumerate().collect();
+    order.sort_by_key(|(_, s)| s.kind != SeriesKind::Cursor);
+    for (i, series) in order {
+        let mut scratch = Buffer::empty(area);
+        chart(plot, theme, vec![(i, series)], Marker::Dot).render(area, &mut scratch);
+        let (symbol, style) = match series.kind {
+            SeriesKind::Cursor => (theme.cursor_symbol(), theme.style(Role::Cursor)),
+            _ => (theme.series_symbol(i), theme.series_style(i)),
+        };
+        for y in area.top()..area.bottom() {
+            for x in area.left()..area.right() {
+                if scratch[(x, y)].symbol() == symbols::DOT {
+                    buffer[(x, y)].set_symbol(symbol).set_style(style);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,93 @@
+//! Pure drawing: `draw(frame, &App)` reads the state and writes cells, nothing else. That makes every
+//! screen a snapshot test over ratatui's `TestBackend`.
+
+mod chart;
+mod overlay;
+mod panes;
+
+use ratatui::Frame;
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Alignment, Constraint, Layout, Rect};
+use ratatui::widgets::{Paragraph, Wrap};
+
+use super::app::{App, Mode};
+use super::theme::{Charset, Role, ascii_fallback};
+
+/// Smallest terminal the layout is designed for.
+pub const MIN_WIDTH: u16 = 80;
+/// Smallest terminal height.
+pub const MIN_HEIGHT: u16 = 24;
+
+/// Draws the whole screen.
+pub fn draw(frame: &mut Frame, app: &App) {
+    let area = frame.area();
+    if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
+        draw_too_small(frame, app, area);
+    } else {
+        let [main, status] =
+            Layout::vertical([Constraint::Min(0), Constraint::Length(1)]).areas(area);
+        let left_width = if area.width >= 120 { 44 } else { 34 };
+        let [left, right] =
+            Layout::horizontal([Constraint::Length(left_width), Constraint::Min(0)]).areas(main);
+        let parameter_rows = app.kind().keys().len() as u16 + 2;
+        let [parameters, summary] =
+            Layout::vertical([Constraint::Length(parameter_rows), Constraint::Min(0)]).areas(left);
+        panes::draw_parameters(frame, app, parameters);
+        panes::draw_summary(frame, app, summary);
+        chart::draw(frame, app, right);
+        panes::draw_status(frame, app, status);
+        match app.mode() {
+            Mode::Help => overlay::draw_help(frame, app, area),
+            Mode::Presets { entries, selected } => {
+                overlay::draw_presets(frame, app, area, entries, *selected)
+            }
+            Mode::SaveName { buffer } => overlay::draw_prompt(
+                frame,
+                app,
+                area,
+                "Save preset",
+                &format!("Name: {buffer}_"),
+                "letters, digits, - and _; Enter save, Esc cancel",
+            ),
+            Mode::ConfirmOverwrite { name } => overlay::draw_prompt(
+                frame,
+                app,
+                area,
+                "Overwrite?",
+                &format!("Preset '{name}' exists. Overwrite it?"),
+                "y overwrite, n or Esc keep the existing file",
+            ),
+            Mode::Normal | Mode::Editing { .. } => {}
+        }
+    }
+    if app.theme().charset == Charset::Ascii {
+        enforce_ascii(frame.buffer_mut());
+    }
+}
+
+fn draw_too_small(frame: &mut Frame, app: &App, area: Rect) {
+    let text = format!(
+        "Terminal too small: {}x{}.\nmicroslip needs at least {MIN_WIDTH}x{MIN_HEIGHT}.\nEnlarge the window, or press q to quit.",
+        area.width, area.height
+    );
+    let paragraph = Paragraph::new(text)
+        .style(app.theme().style(Role::Error))
+        .alignment(Alignment::Center)
+        .wrap(Wrap { trim: true });
+    let [_, middle, _] = Layout::vertical([
+        Constraint::Fill(1),
+        Constraint::Length(4),
+        Constraint::Fill(1),
+    ])
+    .areas(area);
+    frame.render_widget(paragraph, middle);
+}
+
+/// The ASCII charset's guarantee: whatever a widget drew, only 7-bit characters reach the terminal.
+fn enforce_ascii(buffer: &mut Buffer) {
+    for cell in buffer.content.iter_mut() {
+        if !cell.symbol().is_ascii() {
+            cell.set_symbol(ascii_fallback(cell.symbol()));
+        }
+    }
+}

@@ -1,0 +1,164 @@
+//! Snapshot tests of rendered frames: each snapshot is a claim about what users see. Review changes
+//! with `cargo insta review` (or read the `.snap.new` files) before accepting them.
+
+use microslip::preset;
+use microslip::tui::app::{Action, App, AppOptions};
+use microslip::tui::theme::{Charset, Theme};
+use microslip::tui::ui;
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+
+fn app_with(preset_name: &str, charset: Charset, color: bool) -> App {
+    App::new(AppOptions {
+        theme: Theme { charset, color },
+        preset: preset::resolve(preset_name).unwrap(),
+        user_dir: None,
+    })
+}
+
+fn app() -> App {
+    app_with("paper-beams", Charset::Unicode, true)
+}
+
+fn render(app: &App, width: u16, height: u16) -> Terminal<TestBackend> {
+    let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
+    terminal.draw(|frame| ui::draw(frame, app)).unwrap();
+    terminal
+}
+
+fn screen(app: &App, width: u16, height: u16) -> String {
+    render(app, width, height).backend().to_string()
+}
+
+fn act(app: &mut App, actions: &[Action]) {
+    for &action in actions {
+        app.update(action);
+    }
+}
+
+#[test]
+fn beam_view_80x24() {
+    insta::assert_snapshot!(screen(&app(), 80, 24));
+}
+
+#[test]
+fn beam_view_120x40() {
+    insta::assert_snapshot!(screen(&app(), 120, 40));
+}
+
+#[test]
+fn beam_charts() {
+    let mut app = app();
+    app.update(Action::NextChart);
+    insta::assert_snapshot!("beam_slip_boundary_chart", screen(&app, 100, 30));
+    app.update(Action::NextChart);
+    insta::assert_snapshot!("beam_shear_chart", screen(&app, 100, 30));
+}
+
+#[test]
+fn plate_views() {
+    let mut app = app();
+    app.update(Action::SwitchModel);
+    insta::assert_snapshot!("plate_view_80x24", screen(&app, 80, 24));
+    app.update(Action::NextChart);
+    insta::assert_snapshot!("plate_slip_boundary_chart", screen(&app, 100, 30));
+    app.update(Action::NextChart);
+    insta::assert_snapshot!("plate_contact_pressure_chart", screen(&app, 100, 30));
+}
+
+#[test]
+fn help_overlay() {
+    let mut app = app();
+    app.update(Action::ToggleHelp);
+    insta::assert_snapshot!(screen(&app, 80, 24));
+}
+
+#[test]
+fn preset_picker() {
+    let mut app = app();
+    app.update(Action::OpenPresets);
+    app.update(Action::Next);
+    insta::assert_snapshot!(screen(&app, 80, 24));
+}
+
+#[test]
+fn input_error_keeps_the_old_value_and_says_why() {
+    let mut app = app();
+    act(
+        &mut app,
+        &[
+            Action::Previous,
+            Action::Previous,
+            Action::StartEdit,
+            Action::Input('-'),
+            Action::Input('3'),
+        ],
+    );
+    insta::assert_snapshot!("typing_a_value", screen(&app, 80, 24));
+    app.update(Action::Commit);
+    insta::assert_snapshot!("input_error", screen(&app, 80, 24));
+}
+
+#[test]
+fn ascii_charset_draws_only_ascii() {
+    let mut app = app_with("paper-beams", Charset::Ascii, true);
+    let text = screen(&app, 80, 24);
+    assert!(text.is_ascii(), "non-ASCII character in the ASCII screen");
+    insta::assert_snapshot!("ascii_beam_view", text);
+    for action in [
+        Action::NextChart,
+        Action::NextChart,
+        Action::SwitchModel,
+        Action::NextChart,
+        Action::NextChart,
+        Action::ToggleHelp,
+    ] {
+        app.update(action);
+        assert!(screen(&app, 80, 24).is_ascii(), "after {action:?}");
+    }
+}
+
+#[test]
+fn no_color_marks_selection_and_curves_with_characters() {
+    let app = app_with("paper-beams", Charset::Unicode, false);
+    let terminal = render(&app, 80, 24);
+    let buffer = terminal.backend().buffer();
+    assert!(
+        buffer
+            .content
+            .iter()
+            .all(|c| c.fg == ratatui::style::Color::Reset && c.bg == ratatui::style::Color::Reset)
+    );
+    insta::assert_snapshot!("no_color_beam_view", terminal.backend().to_string());
+}
+
+#[test]
+fn finite_element_points_over_the_curve() {
+    let mut app = app_with("paper-beams", Charset::Ascii, false);
+    app.update(Action::ToggleNumeric);
+    insta::assert_snapshot!(screen(&app, 100, 30));
+}
+
+#[test]
+fn terminal_too_small() {
+    insta::assert_snapshot!(screen(&app(), 60, 16));
+}
+
+#[test]
+fn every_size_and_state_renders_without_panic() {
+    let mut app = app();
+    for (w, h) in [
+        (1, 1),
+        (10, 3),
+        (79, 24),
+        (80, 23),
+        (80, 24),
+        (81, 25),
+        (200, 60),
+        (300, 100),
+    ] {
+        let _ = screen(&app, w, h);
+    }
+    act(&mut app, &[Action::ToggleHelp]);
+    let _ = screen(&app, 80, 24);
+}
