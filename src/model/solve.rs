@@ -7,7 +7,7 @@
 //! cannot be certified (or Brent reports an error), plain bisection on the original bracket finishes
 //! the job; it cannot fail on a sign-changing bracket, so callers get an infallible `f64`.
 
-use roots::{Convergency, find_root_brent};
+use roots::{Convergency, find_root_brent, find_root_newton_raphson};
 
 /// Relative accuracy promised on every root (the issue asks for 1e-10 on X).
 pub const RELATIVE_TOLERANCE: f64 = 1e-12;
@@ -55,6 +55,59 @@ pub fn find_root_in_bracket(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
         return x;
     }
     bisect(&f, lo, hi, f_lo)
+}
+
+/// Newton's method (the `roots` crate's) from `start`, with the derivative `df`, for speed where the
+/// caller can give a good start; the answer is certified like Brent's, and an iterate that leaves
+/// `[lo, hi]` (or fails to converge in 40 steps) hands over to [`find_root_in_bracket`]. Same
+/// precondition and same guarantee as that function.
+pub fn find_root_newton(
+    f: impl Fn(f64) -> f64,
+    df: impl Fn(f64) -> f64,
+    start: f64,
+    lo: f64,
+    hi: f64,
+) -> f64 {
+    let mut convergence = BracketedConvergence {
+        tolerance: RELATIVE_TOLERANCE / 4.0,
+        lo,
+        hi,
+        left: false,
+    };
+    if let Ok(x) = find_root_newton_raphson(start.clamp(lo, hi), &f, &df, &mut convergence)
+        && !convergence.left
+        && is_certified(&f, x, lo, hi, f(lo))
+    {
+        return x;
+    }
+    find_root_in_bracket(f, lo, hi)
+}
+
+/// Newton's stopping rule: a relative step below tolerance, or an iterate outside the bracket (which
+/// stops the iteration and is reported through `left`).
+struct BracketedConvergence {
+    tolerance: f64,
+    lo: f64,
+    hi: f64,
+    left: bool,
+}
+
+impl Convergency<f64> for BracketedConvergence {
+    fn is_root_found(&mut self, y: f64) -> bool {
+        y == 0.0
+    }
+
+    fn is_converged(&mut self, x1: f64, x2: f64) -> bool {
+        if !(self.lo..=self.hi).contains(&x2) {
+            self.left = true;
+            return true;
+        }
+        (x1 - x2).abs() <= self.tolerance * x1.abs().max(x2.abs())
+    }
+
+    fn is_iteration_limit_reached(&mut self, iter: usize) -> bool {
+        iter >= 40
+    }
 }
 
 /// True when the root provably lies within `x (1 -+ RELATIVE_TOLERANCE)`.
@@ -108,6 +161,21 @@ mod tests {
         assert!((x - 2f64.sqrt()).abs() < 1e-11);
         assert_eq!(find_root_in_bracket(|x| x - 1.0, 1.0, 2.0), 1.0);
         assert_eq!(find_root_in_bracket(|x| x - 2.0, 1.0, 2.0), 2.0);
+    }
+
+    #[test]
+    fn newton_is_certified_and_falls_back_when_it_leaves_the_bracket() {
+        let x = find_root_newton(|x| x * x - 2.0, |x| 2.0 * x, 1.0, 0.5, 3.0);
+        assert!((x - 2f64.sqrt()).abs() < 1e-14);
+        // atan from far away overshoots out of the bracket: Brent takes over.
+        let x = find_root_newton(
+            |x: f64| (x - 1.0).atan(),
+            |x: f64| 1.0 / (1.0 + (x - 1.0).powi(2)),
+            4.0,
+            -9.0,
+            10.0,
+        );
+        assert!((x - 1.0).abs() < 1e-11);
     }
 
     #[test]

@@ -13,7 +13,7 @@ use super::hyperbolic::{
     sinh_rem3, sinhc,
 };
 use super::regime::Regime;
-use super::solve::find_root_in_bracket;
+use super::solve::find_root_newton;
 use super::validate::{ParamError, non_negative, positive};
 
 /// Raw inputs of the twin-beam problem (mm, MPa, MPa/mm); validated by [`TwinBeams::new`].
@@ -186,9 +186,11 @@ impl TwinBeams {
             bonded_shear: bonded,
             slope_at_clamp,
             total_shear: 0.0,
+            moments_at_end: [0.0; 3],
         };
-        let [m0, _, _] = state.micro_moments(micro_end);
-        state.total_shear = m0 + self.coulomb_stress() * (p.length - micro_end);
+        state.moments_at_end = state.micro_moments(micro_end);
+        state.total_shear =
+            state.moments_at_end[0] + self.coulomb_stress() * (p.length - micro_end);
         state
     }
 
@@ -200,7 +202,19 @@ impl TwinBeams {
     fn micro_zone_end(&self, force: f64) -> f64 {
         let lambda = self.k * self.params.length;
         let q = self.threshold_force() / (force - self.threshold_force());
-        let g = |z: f64| q * inv_sinh(z) - (0.5 * z).tanh() - (lambda - z);
+        // With m = expm1(-z) (so e^-z = 1 + m): 1/sinh z = -2 (1 + m) / (m (2 + m)) and
+        // tanh(z/2) = -m / (2 + m). One expm1 per evaluation, exact for small and large z alike.
+        let g = |z: f64| {
+            let m = (-z).exp_m1();
+            (-2.0 * q * (1.0 + m) / m + m) / (2.0 + m) - (lambda - z)
+        };
+        // g'(z) = cosh z (cosh z - r) / sinh^2 z, r = 1 + q; with e = e^-z:
+        // (1 + e^2)((1 - e)^2 - 2 q e) / (1 - e^2)^2.
+        let dg = |z: f64| {
+            let m = (-z).exp_m1();
+            let e = 1.0 + m;
+            (1.0 + e * e) * (m * m - 2.0 * q * e) / (m * m * (2.0 + m) * (2.0 + m))
+        };
         // For z <= 1, sinh z <= sinh(1) z < 1.1753 z, so g(z) >= q / (1.1753 z) - 1/2 - lambda, which is
         // positive at this lower end: a guaranteed bracket without any search.
         let lower = 0.5 * 1f64.min(lambda).min(q / (1.1753 * (lambda + 0.5)));
@@ -208,7 +222,11 @@ impl TwinBeams {
             // F is so far above F_thre that X underflows: the whole interface is in macroslip.
             return 0.0;
         }
-        find_root_in_bracket(g, lower, lambda) / self.k
+        // Start from the small-z approximation q/z + z/2 = lambda (exact as z -> 0), which is also
+        // close where it is not exact: Newton then needs a handful of steps.
+        let discriminant = (lambda * lambda - 2.0 * q).max(0.0);
+        let start = 2.0 * q / (lambda + discriminant.sqrt());
+        find_root_newton(g, dg, start, lower, lambda) / self.k
     }
 }
 
@@ -290,6 +308,8 @@ pub struct RegularizedBeams {
     slope_at_clamp: f64,
     /// T(0) = integral of tau over [0, L] (N/mm^2 * mm).
     total_shear: f64,
+    /// micro_moments(X), kept because w(L) and every w(x) beyond X need them again.
+    moments_at_end: [f64; 3],
 }
 
 impl RegularizedBeams {
@@ -390,7 +410,11 @@ impl RegularizedBeams {
         let x = x.clamp(0.0, p.length);
         let y = x.min(self.micro_end);
         let a = x - y;
-        let [m0, m1, m2] = self.micro_moments(y);
+        let [m0, m1, m2] = if y == self.micro_end {
+            self.moments_at_end
+        } else {
+            self.micro_moments(y)
+        };
         let mut q = 0.5 * (a * a * m0 + 2.0 * a * m1 + m2);
         if a > 0.0 {
             q += self.beams.coulomb_stress() * a.powi(3) / 6.0;

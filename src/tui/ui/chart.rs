@@ -6,6 +6,7 @@
 use ratatui::Frame;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::{Color, Style};
 use ratatui::symbols::{self, Marker};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Chart, Dataset, GraphType, Paragraph, Widget, Wrap};
@@ -52,13 +53,7 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
     if theme.symbol_mode() {
         draw_with_symbols(frame.buffer_mut(), plot, &theme, body);
     } else {
-        chart(
-            plot,
-            &theme,
-            plot.series.iter().enumerate().collect(),
-            Marker::Braille,
-        )
-        .render(body, frame.buffer_mut());
+        chart(plot, &theme, colour_datasets(plot, &theme)).render(body, frame.buffer_mut());
     }
 }
 
@@ -88,25 +83,17 @@ fn legend_line<'a>(plot: &'a Plot, theme: &Theme) -> Line<'a> {
     Line::from(spans)
 }
 
-/// A ratatui Chart of the given (index, series) pairs, with the plot's axes.
-fn chart<'a>(
-    plot: &'a Plot,
-    theme: &Theme,
-    series: Vec<(usize, &'a PlotSeries)>,
-    marker: Marker,
-) -> Chart<'a> {
-    let datasets = series
-        .into_iter()
+/// Braille datasets told apart by colour (the cursor in the muted style, finite-element points as
+/// blocks).
+fn colour_datasets<'a>(plot: &'a Plot, theme: &Theme) -> Vec<Dataset<'a>> {
+    plot.series
+        .iter()
+        .enumerate()
         .map(|(i, s)| {
-            let (graph, style) = match s.kind {
-                SeriesKind::Line => (GraphType::Line, theme.series_style(i)),
-                SeriesKind::Points => (GraphType::Scatter, theme.series_style(i)),
-                SeriesKind::Cursor => (GraphType::Line, theme.style(Role::Cursor)),
-            };
-            let marker = if s.kind == SeriesKind::Points && marker == Marker::Braille {
-                Marker::Block
-            } else {
-                marker
+            let (graph, style, marker) = match s.kind {
+                SeriesKind::Line => (GraphType::Line, theme.series_style(i), Marker::Braille),
+                SeriesKind::Points => (GraphType::Scatter, theme.series_style(i), Marker::Block),
+                SeriesKind::Cursor => (GraphType::Line, theme.style(Role::Cursor), Marker::Braille),
             };
             Dataset::default()
                 .marker(marker)
@@ -114,7 +101,11 @@ fn chart<'a>(
                 .style(style)
                 .data(&s.points)
         })
-        .collect();
+        .collect()
+}
+
+/// A ratatui Chart of `datasets` with the plot's axes and no built-in legend.
+fn chart<'a>(plot: &'a Plot, theme: &Theme, datasets: Vec<Dataset<'a>>) -> Chart<'a> {
     let axis = |a: &'a plots::Axis| {
         Axis::default()
             .title(a.title.as_str())
@@ -133,24 +124,43 @@ fn chart<'a>(
         .legend_position(None)
 }
 
-/// Symbol mode: axes first, then each series with its own symbol, cursor underneath the curves.
+/// Symbol mode: one Chart render with one dot per cell, each series tagged by an indexed colour, then
+/// one pass that turns each tagged dot into its series' symbol and real style. The cursor is drawn
+/// first so that curves stay on top of it.
 fn draw_with_symbols(buffer: &mut Buffer, plot: &Plot, theme: &Theme, area: Rect) {
-    chart(plot, theme, Vec::new(), Marker::Dot).render(area, buffer);
     let mut order: Vec<(usize, &PlotSeries)> = plot.series.iter().enumerate().collect();
     order.sort_by_key(|(_, s)| s.kind != SeriesKind::Cursor);
-    for (i, series) in order {
-        let mut scratch = Buffer::empty(area);
-        chart(plot, theme, vec![(i, series)], Marker::Dot).render(area, &mut scratch);
-        let (symbol, style) = match series.kind {
-            SeriesKind::Cursor => (theme.cursor_symbol(), theme.style(Role::Cursor)),
-            _ => (theme.series_symbol(i), theme.series_style(i)),
-        };
-        for y in area.top()..area.bottom() {
-            for x in area.left()..area.right() {
-                if scratch[(x, y)].symbol() == symbols::DOT {
-                    buffer[(x, y)].set_symbol(symbol).set_style(style);
-                }
+    let tag = |i: usize| Style::default().fg(Color::Indexed(i as u8));
+    let datasets = order
+        .iter()
+        .map(|&(i, s)| {
+            let graph = if s.kind == SeriesKind::Points {
+                GraphType::Scatter
+            } else {
+                GraphType::Line
+            };
+            Dataset::default()
+                .marker(Marker::Dot)
+                .graph_type(graph)
+                .style(tag(i))
+                .data(&s.points)
+        })
+        .collect();
+    chart(plot, theme, datasets).render(area, buffer);
+    for y in area.top()..area.bottom() {
+        for x in area.left()..area.right() {
+            let cell = &mut buffer[(x, y)];
+            if cell.symbol() != symbols::DOT {
+                continue;
             }
+            let Color::Indexed(i) = cell.fg else { continue };
+            let i = usize::from(i);
+            let (symbol, style) = match plot.series.get(i).map(|s| s.kind) {
+                Some(SeriesKind::Cursor) => (theme.cursor_symbol(), theme.style(Role::Cursor)),
+                _ => (theme.series_symbol(i), theme.series_style(i)),
+            };
+            cell.set_symbol(symbol)
+                .set_style(style.fg(style.fg.unwrap_or(Color::Reset)));
         }
     }
 }

@@ -1,0 +1,128 @@
+//! Speed of the terminal UI: `cargo bench --bench tui`. Results and machine: BENCHMARKS.md.
+//!
+//! Besides timings, prints the bytes a real crossterm backend writes for one parameter change at
+//! 120x40 against a full repaint (the cost that matters over SSH).
+
+use std::io::{self, Write};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use divan::{Bencher, black_box};
+use microslip::preset;
+use microslip::tui::app::{Action, App, AppOptions};
+use microslip::tui::theme::{Charset, Theme};
+use microslip::tui::ui;
+use ratatui::backend::{CrosstermBackend, TestBackend};
+use ratatui::layout::Rect;
+use ratatui::{Terminal, TerminalOptions, Viewport};
+
+fn main() {
+    report_bytes_per_change();
+    divan::main();
+}
+
+fn app(preset_name: &str) -> App {
+    App::new(AppOptions {
+        theme: Theme {
+            charset: Charset::Unicode,
+            color: true,
+        },
+        preset: preset::resolve(preset_name).unwrap(),
+        user_dir: None,
+    })
+}
+
+static WRITTEN: AtomicUsize = AtomicUsize::new(0);
+
+/// A writer that only counts.
+struct Counter;
+
+impl Write for Counter {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        WRITTEN.fetch_add(buf.len(), Ordering::Relaxed);
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
+fn report_bytes_per_change() {
+    let options = TerminalOptions {
+        viewport: Viewport::Fixed(Rect::new(0, 0, 120, 40)),
+    };
+    let mut terminal = Terminal::with_options(CrosstermBackend::new(Counter), options).unwrap();
+    let mut app = app("paper-beams");
+    terminal.draw(|f| ui::draw(f, &app)).unwrap();
+    let full = WRITTEN.swap(0, Ordering::Relaxed);
+    app.update(Action::Previous); // select F
+    terminal.draw(|f| ui::draw(f, &app)).unwrap();
+    let select = WRITTEN.swap(0, Ordering::Relaxed);
+    app.update(Action::Increase); // F + 1 % of F_thre: summary, cursor and curves move
+    terminal.draw(|f| ui::draw(f, &app)).unwrap();
+    let change = WRITTEN.swap(0, Ordering::Relaxed);
+    eprintln!(
+        "bytes at 120x40: full repaint {full}, select a row {select}, one parameter change {change}"
+    );
+}
+
+/// Everything the view recomputes after a parameter change (chart data), per chart, at the view's
+/// sampling density (200 points per curve, whatever the terminal size).
+#[divan::bench(args = [0, 1, 2])]
+fn recompute_beam_view(bencher: Bencher, chart: usize) {
+    let mut app = app("paper-beams");
+    for _ in 0..chart {
+        app.update(Action::NextChart);
+    }
+    app.update(Action::Previous); // select F
+    let mut up = true;
+    bencher.bench_local(|| {
+        app.update(if up {
+            Action::Increase
+        } else {
+            Action::Decrease
+        });
+        up = !up;
+        black_box(app.plot().series.len())
+    });
+}
+
+#[divan::bench(args = [0, 1, 2])]
+fn recompute_plate_view(bencher: Bencher, chart: usize) {
+    let mut app = app("paper-plate");
+    for _ in 0..chart {
+        app.update(Action::NextChart);
+    }
+    app.update(Action::Previous); // select K_T
+    let mut up = true;
+    bencher.bench_local(|| {
+        app.update(if up {
+            Action::Increase
+        } else {
+            Action::Decrease
+        });
+        up = !up;
+        black_box(app.plot().series.len())
+    });
+}
+
+/// Drawing one frame (all panes, chart included) into a 200x60 TestBackend.
+#[divan::bench(args = ["unicode", "ascii"])]
+fn render_200x60(bencher: Bencher, charset: &str) {
+    let charset = if charset == "ascii" {
+        Charset::Ascii
+    } else {
+        Charset::Unicode
+    };
+    let app = App::new(AppOptions {
+        theme: Theme {
+            charset,
+            color: true,
+        },
+        preset: preset::resolve("paper-beams").unwrap(),
+        user_dir: None,
+    });
+    let mut terminal = Terminal::new(TestBackend::new(200, 60)).unwrap();
+    bencher.bench_local(|| {
+        terminal.draw(|f| ui::draw(f, &app)).unwrap();
+    });
+}
