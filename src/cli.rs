@@ -13,6 +13,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use thiserror::Error;
 
 use crate::curves::{self, RangeError, Spacing};
+use crate::fit::{self, FitError};
 use crate::model::validate::ParamError;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Inputs, Model, ModelKind, Preset, PresetError, PresetSource};
@@ -59,6 +60,9 @@ pub enum Command {
     /// Tables over a parameter range, as CSV or JSON.
     #[command(subcommand)]
     Sweep(SweepCommand),
+    /// Identify mu and K_T from a measured deflection curve.
+    #[command(subcommand)]
+    Fit(FitCommand),
     /// List bundled and user presets with their descriptions.
     Presets,
     /// Cross-check the closed forms against the finite-element solvers; exit 1 above tolerance.
@@ -144,6 +148,26 @@ pub enum SweepCommand {
     },
 }
 
+/// Fit subcommands.
+#[derive(Debug, Subcommand)]
+pub enum FitCommand {
+    /// Twin beams: fit mu and K_T to measured w(L) vs F (CSV with columns F_N,w_mm); geometry, E
+    /// and P come from the preset.
+    Beam {
+        /// Measurements: CSV with a header naming F_N and w_mm (other columns are ignored).
+        #[arg(value_name = "DATA.csv")]
+        data: PathBuf,
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Hold a parameter at a value instead of fitting it: mu=0.3 or KT=600 (repeatable).
+        #[arg(long = "fix", value_name = "KEY=VALUE")]
+        fixed: Vec<String>,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+        format: ReportFormat,
+    },
+}
+
 /// Formats of single-point reports.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ReportFormat {
@@ -187,6 +211,20 @@ pub enum CliError {
     /// The cross-check found errors above tolerance (already reported on stdout).
     #[error("{0} of the quantities checked exceed the tolerance")]
     VerifyFailed(usize),
+    /// Unreadable or malformed measurements.
+    #[error("{path}: {reason}")]
+    Data {
+        /// The file.
+        path: String,
+        /// What is wrong (with the line number when there is one).
+        reason: String,
+    },
+    /// A bad `--fix`.
+    #[error("invalid --fix '{0}': expected mu=VALUE or KT=VALUE with a finite number")]
+    Fix(String),
+    /// The fit could not run.
+    #[error(transparent)]
+    Fit(#[from] FitError),
     /// A numerical solve failed.
     #[error("numerical solver: {0}")]
     Numeric(#[from] NumericError),
@@ -332,6 +370,12 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 }
             }
         }
+        Some(Command::Fit(FitCommand::Beam {
+            data,
+            inputs,
+            fixed,
+            format,
+        })) => run_fit(out, data, inputs, fixed, *format)?,
         Some(Command::Presets) => list_presets(out)?,
         Some(Command::Check { files }) => check(out, files)?,
         Some(Command::Verify {
@@ -455,6 +499,54 @@ fn list_presets(out: &mut impl Write) -> Result<(), CliError> {
             out,
             "\nuser presets: none (neither XDG_CONFIG_HOME nor HOME is set)"
         )?,
+    }
+    Ok(())
+}
+
+/// `--fix` values: (mu, K_T).
+fn parse_fixed(fixed: &[String]) -> Result<(Option<f64>, Option<f64>), CliError> {
+    let (mut mu, mut kt) = (None, None);
+    for text in fixed {
+        let (key, value) = text
+            .split_once('=')
+            .ok_or_else(|| CliError::Fix(text.clone()))?;
+        let value =
+            preset::parse_number(value.trim()).ok_or_else(|| CliError::Fix(text.clone()))?;
+        match key.trim() {
+            "mu" => mu = Some(value),
+            "KT" => kt = Some(value),
+            _ => return Err(CliError::Fix(text.clone())),
+        }
+    }
+    Ok((mu, kt))
+}
+
+fn run_fit(
+    out: &mut impl Write,
+    path: &PathBuf,
+    inputs: &InputArgs,
+    fixed: &[String],
+    format: ReportFormat,
+) -> Result<(), CliError> {
+    let (fixed_mu, fixed_kt) = parse_fixed(fixed)?;
+    let (name, model) = load(inputs, ModelKind::Beam)?;
+    let Model::Beam { beams, .. } = model else {
+        return Ok(());
+    };
+    let data_error = |reason: String| CliError::Data {
+        path: path.display().to_string(),
+        reason,
+    };
+    let text = std::fs::read_to_string(path).map_err(|e| data_error(e.to_string()))?;
+    let data = fit::data::parse(&text).map_err(|e| data_error(e.to_string()))?;
+    let result = fit::fit_twin_beams(beams.params(), &data, fixed_mu, fixed_kt)?;
+    match format {
+        ReportFormat::Text => out.write_all(
+            text::fit(&path.display().to_string(), &name, &beams.params(), &result).as_bytes(),
+        )?,
+        ReportFormat::Json => {
+            write_json(out, &json::fit(&path.display().to_string(), &name, &result))?
+        }
     }
     Ok(())
 }

@@ -13,6 +13,7 @@
 
 pub mod cli;
 pub mod curves;
+pub mod fit;
 pub mod model;
 pub mod numeric;
 pub mod preset;

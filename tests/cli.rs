@@ -377,3 +377,51 @@ fn verify_prints_a_table_and_fails_above_tolerance() {
     let stderr = failure(&["verify", "--elements", "5"], 2);
     assert!(stderr.contains("invalid --elements = 5"), "{stderr}");
 }
+
+#[test]
+fn fit_recovers_mu_and_kt_from_a_measured_curve() {
+    // Measurements made by the tool itself with mu = 0.4, K_T = 200 MPa/mm (noise-free).
+    let sweep = stdout_of(&[
+        "sweep", "beam", "--from", "5", "--to", "300", "--points", "30", "--set", "mu=0.4",
+        "--set", "KT=200",
+    ]);
+    let mut csv = String::from("F_N,ignored,w_mm\n");
+    for line in sweep.lines().skip(1) {
+        let fields: Vec<&str> = line.split(',').collect();
+        csv.push_str(&format!("{},x,{}\n", fields[0], fields[2]));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("bench.csv");
+    std::fs::write(&path, csv).unwrap();
+    let path = path.to_str().unwrap();
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_of(&["fit", "beam", path, "--format", "json"])).unwrap();
+    assert!(
+        (json["mu"]["value"].as_f64().unwrap() / 0.4 - 1.0).abs() < 1e-6,
+        "{json}"
+    );
+    assert!(
+        (json["KT_MPa_per_mm"]["value"].as_f64().unwrap() / 200.0 - 1.0).abs() < 1e-6,
+        "{json}"
+    );
+    assert_eq!(json["mu"]["status"], "identified");
+    let text = stdout_of(&["fit", "beam", path, "--fix", "KT=200"]);
+    assert!(text.contains("K_T = 200 MPa/mm: fixed"), "{text}");
+    assert!(text.contains("mu  = 0.4"), "{text}");
+}
+
+#[test]
+fn fit_errors_name_the_file_and_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let bad = dir.path().join("bad.csv");
+    std::fs::write(&bad, "F_N,w_mm\n10,0.01\n20,oops\n").unwrap();
+    let bad = bad.to_str().unwrap();
+    assert!(
+        failure(&["fit", "beam", bad], 2)
+            .contains("bad.csv: line 3: 'oops' in column w_mm is not a finite number")
+    );
+    assert!(
+        failure(&["fit", "beam", "/nonexistent.csv"], 2).contains("/nonexistent.csv: No such file")
+    );
+    assert!(failure(&["fit", "beam", bad, "--fix", "nu=1"], 2).contains("invalid --fix 'nu=1'"));
+}

@@ -143,6 +143,30 @@ pub fn plate(preset: &str, plate: &SqueezedPlate) -> Value {
     })
 }
 
+fn estimate(e: &crate::fit::Estimate) -> Value {
+    serde_json::json!({
+        "value": e.value,
+        "std_error": e.std_error,
+        "status": e.status.label(),
+        "note": e.note,
+    })
+}
+
+/// Fit report.
+pub fn fit(data: &str, preset: &str, result: &crate::fit::FitResult) -> Value {
+    serde_json::json!({
+        "data": data,
+        "preset": preset,
+        "points": result.points,
+        "mu": estimate(&result.mu),
+        "KT_MPa_per_mm": estimate(&result.kt),
+        "rms_mm": result.rms,
+        "F_thre_N": result.threshold_force,
+        "F_1_N": result.first_macroslip_force,
+        "points_above_F_1": result.beyond_first_macroslip,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -179,6 +179,53 @@ pub fn plate(preset: &str, plate: &SqueezedPlate) -> String {
     out
 }
 
+/// Fit report: estimates with standard errors and a plain verdict on identifiability.
+pub fn fit(
+    data: &str,
+    preset: &str,
+    structure: &crate::TwinBeamsParams,
+    result: &crate::fit::FitResult,
+) -> String {
+    let mut out = String::new();
+    let p = structure;
+    let _ = writeln!(
+        out,
+        "Fit of mu and K_T to {data} ({} measurements), twin beams of preset {preset}",
+        result.points
+    );
+    let _ = writeln!(
+        out,
+        "  structure: L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa",
+        number(p.length),
+        number(p.width),
+        number(p.half_height),
+        number(p.youngs_modulus),
+        number(p.pressure)
+    );
+    for (name, unit, estimate) in [("mu ", "", &result.mu), ("K_T", " MPa/mm", &result.kt)] {
+        let error = estimate
+            .std_error
+            .map_or(String::new(), |e| format!(" +- {}", number(e)));
+        let _ = writeln!(
+            out,
+            "  {name} = {}{error}{unit}: {} ({})",
+            number(estimate.value),
+            estimate.status.label(),
+            estimate.note
+        );
+    }
+    let _ = writeln!(out, "  residual RMS = {} mm", number(result.rms));
+    let _ = writeln!(
+        out,
+        "  at the fitted values: F_thre = {} N, F_1 = {} N; {} of {} measurements above F_1",
+        number(result.threshold_force),
+        number(result.first_macroslip_force),
+        result.beyond_first_macroslip,
+        result.points
+    );
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
