@@ -28,6 +28,7 @@ fn app(preset_name: &str) -> App {
         },
         preset: preset::resolve(preset_name).unwrap(),
         user_dir: None,
+        data: None,
     })
 }
 
@@ -120,6 +121,7 @@ fn render_200x60(bencher: Bencher, charset: &str) {
         },
         preset: preset::resolve("paper-beams").unwrap(),
         user_dir: None,
+        data: None,
     });
     let mut terminal = Terminal::new(TestBackend::new(200, 60)).unwrap();
     bencher.bench_local(|| {

@@ -46,6 +46,9 @@ pub struct Cli {
     /// Preset to open in the terminal UI (bundled or user name, or a .toml path).
     #[arg(long, value_name = "P")]
     pub preset: Option<String>,
+    /// Measured twin-beam curve (CSV with columns F_N,w_mm) to show and fit in the terminal UI.
+    #[arg(long, value_name = "DATA.csv")]
+    pub data: Option<PathBuf>,
 }
 
 /// Subcommands.
@@ -255,7 +258,7 @@ pub fn main() -> ExitCode {
         Err(error) => return report_clap_error(&error),
     };
     if cli.command.is_none() {
-        return match crate::tui::run(cli.charset, cli.preset.as_deref()) {
+        return match crate::tui::run(cli.charset, cli.preset.as_deref(), cli.data.clone()) {
             Ok(()) => ExitCode::SUCCESS,
             Err(error) => {
                 eprintln!("microslip: {error}");

@@ -13,6 +13,7 @@ fn app_with(preset_name: &str, charset: Charset, color: bool) -> App {
         theme: Theme { charset, color },
         preset: preset::resolve(preset_name).unwrap(),
         user_dir: None,
+        data: None,
     })
 }
 
@@ -161,4 +162,30 @@ fn every_size_and_state_renders_without_panic() {
     }
     act(&mut app, &[Action::ToggleHelp]);
     let _ = screen(&app, 80, 24);
+}
+
+#[test]
+fn measured_points_on_the_deflection_chart() {
+    // Measurements from the closed form with K_T = 300 MPa/mm, shown over the K_T = 600 curves.
+    let beams = microslip::TwinBeams::new(microslip::TwinBeamsParams {
+        tangential_stiffness: 300.0,
+        ..microslip::TwinBeamsParams::PAPER
+    })
+    .unwrap();
+    let points = (1..=12)
+        .map(|i| {
+            let force = 20.0 * f64::from(i);
+            let deflection = beams.regularized(microslip::TipForce::new(force).unwrap()).tip_deflection();
+            microslip::fit::Measurement { force, deflection }
+        })
+        .collect();
+    let mut app = App::new(AppOptions {
+        theme: Theme { charset: Charset::Ascii, color: false },
+        preset: preset::resolve("paper-beams").unwrap(),
+        user_dir: None,
+        data: Some(microslip::tui::app::Measurements { path: "bench.csv".into(), points }),
+    });
+    insta::assert_snapshot!("measured_points", screen(&app, 100, 30));
+    app.update(Action::Fit);
+    insta::assert_snapshot!("after_fit", screen(&app, 100, 30));
 }

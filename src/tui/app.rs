@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use super::keymap::Context;
 use super::plots::{self, NumericPoints, Plot};
 use super::theme::Theme;
+use crate::fit::Measurement;
 use crate::preset::{self, Inputs, Model, ModelKind, ParamKey, Preset, PresetSource, SaveError};
 
 /// What a key press asks for (see the key map).
@@ -53,6 +54,10 @@ pub enum Action {
     SavePreset,
     /// Back to the loaded preset's values.
     Reset,
+    /// Ask for a measurement file (F_N, w_mm).
+    LoadData,
+    /// Fit mu and K_T to the measurements and adopt the identifiable ones.
+    Fit,
 }
 
 /// A status-line message.
@@ -99,6 +104,11 @@ pub enum Mode {
         /// Text typed so far.
         buffer: String,
     },
+    /// Typing the path of a measurement file.
+    DataPath {
+        /// Text typed so far.
+        buffer: String,
+    },
     /// Asking before overwriting a user preset.
     ConfirmOverwrite {
         /// The preset name.
@@ -111,7 +121,9 @@ impl Mode {
     pub fn context(&self) -> Context {
         match self {
             Mode::Normal => Context::Main,
-            Mode::Editing { .. } | Mode::SaveName { .. } => Context::TextEntry,
+            Mode::Editing { .. } | Mode::SaveName { .. } | Mode::DataPath { .. } => {
+                Context::TextEntry
+            }
             Mode::Help => Context::Help,
             Mode::Presets { .. } => Context::Presets,
             Mode::ConfirmOverwrite { .. } => Context::Confirm,
@@ -137,6 +149,17 @@ pub struct AppOptions {
     pub preset: Preset,
     /// Where user presets are listed and saved (`None`: saving is refused with a message).
     pub user_dir: Option<PathBuf>,
+    /// Measurements to show on the w(L) chart and fit (`--data`).
+    pub data: Option<Measurements>,
+}
+
+/// Measurements loaded from a file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measurements {
+    /// The file, as given.
+    pub path: String,
+    /// The points.
+    pub points: Vec<Measurement>,
 }
 
 /// The whole TUI state.
@@ -153,6 +176,7 @@ pub struct App {
     quit: bool,
     plot: Plot,
     numeric: Option<NumericPoints>,
+    measurements: Option<Measurements>,
 }
 
 /// Relative fine and coarse steps of multiplicative parameters.
@@ -204,6 +228,7 @@ impl App {
             quit: false,
             plot: Plot::default(),
             numeric: None,
+            measurements: options.data,
         };
         app.recompute();
         app
@@ -288,6 +313,11 @@ impl App {
         self.show_numeric
     }
 
+    /// Loaded measurements, if any.
+    pub fn measurements(&self) -> Option<&Measurements> {
+        self.measurements.as_ref()
+    }
+
     /// The chart to draw, computed when the state last changed.
     pub fn plot(&self) -> &Plot {
         &self.plot
@@ -322,7 +352,8 @@ impl App {
         } else {
             self.numeric = None;
         }
-        self.plot = plots::build(&model, chart, self.numeric.as_ref());
+        let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
+        self.plot = plots::build(&model, chart, self.numeric.as_ref(), measured);
     }
 
     /// Applies one action.
@@ -341,6 +372,24 @@ impl App {
             }
             Mode::Presets { entries, selected } => self.update_presets(entries, selected, action),
             Mode::SaveName { buffer } => self.update_save_name(buffer, action),
+            Mode::DataPath { buffer } => match action {
+                Action::Input(c) if buffer.len() < 4096 => {
+                    self.mode = Mode::DataPath {
+                        buffer: buffer + &c.to_string(),
+                    }
+                }
+                Action::Backspace => {
+                    let mut buffer = buffer;
+                    buffer.pop();
+                    self.mode = Mode::DataPath { buffer };
+                }
+                Action::Commit => {
+                    self.load_data(buffer.trim());
+                    self.recompute();
+                }
+                Action::Cancel => self.info("loading cancelled"),
+                _ => self.mode = Mode::DataPath { buffer },
+            },
             Mode::ConfirmOverwrite { name } => match action {
                 Action::Yes => self.save(&name, true),
                 _ => self.info("save cancelled; the existing preset is unchanged"),
@@ -397,6 +446,15 @@ impl App {
                     buffer: String::new(),
                 }
             }
+            Action::LoadData => {
+                let buffer = self
+                    .measurements
+                    .as_ref()
+                    .map(|m| m.path.clone())
+                    .unwrap_or_default();
+                self.mode = Mode::DataPath { buffer };
+            }
+            Action::Fit => self.fit(),
             Action::Reset => {
                 let preset = self.state().preset.inputs;
                 self.state_mut().inputs = preset;
@@ -404,6 +462,77 @@ impl App {
                 self.recompute();
             }
             _ => {}
+        }
+    }
+
+    /// Reads a measurement file; problems go to the status line and keep the previous data.
+    fn load_data(&mut self, path: &str) {
+        let points = std::fs::read_to_string(path)
+            .map_err(|e| e.to_string())
+            .and_then(|text| crate::fit::data::parse(&text).map_err(|e| e.to_string()));
+        match points {
+            Ok(points) => {
+                self.info(format!(
+                    "loaded {} measurements from {path}; f fits mu and K_T",
+                    points.len()
+                ));
+                self.measurements = Some(Measurements {
+                    path: path.to_string(),
+                    points,
+                });
+            }
+            Err(reason) => self.error(format!("{path}: {reason}")),
+        }
+    }
+
+    /// Fits mu and K_T of the twin beams to the measurements; adopts each estimate the data
+    /// determine (identified or weakly) and says what it did.
+    fn fit(&mut self) {
+        let (Some(measurements), Some(Model::Beam { beams, .. })) =
+            (self.measurements.clone(), self.model())
+        else {
+            self.error(if self.measurements.is_none() {
+                "no measurements: press d to load a CSV with columns F_N,w_mm"
+            } else {
+                "fitting needs the twin-beam model: press m"
+            });
+            return;
+        };
+        match crate::fit::fit_twin_beams(beams.params(), &measurements.points, None, None) {
+            Ok(result) => {
+                let mut adopted = Vec::new();
+                let mut text = Vec::new();
+                for (key, estimate) in [("mu", &result.mu), ("KT", &result.kt)] {
+                    let error = estimate.std_error.map_or(String::new(), |e| {
+                        format!(" +- {}", crate::report::number_with(e, 2))
+                    });
+                    text.push(format!(
+                        "{key} = {}{error} ({})",
+                        crate::report::number(estimate.value),
+                        estimate.status.label()
+                    ));
+                    if matches!(
+                        estimate.status,
+                        crate::fit::Status::Identified | crate::fit::Status::Weak
+                    ) {
+                        adopted.push((key, estimate.value));
+                    }
+                }
+                let mut inputs = self.state().inputs;
+                for (key, value) in &adopted {
+                    let _ = inputs.set(key, *value);
+                }
+                if inputs.validate().is_ok() {
+                    self.state_mut().inputs = inputs;
+                }
+                self.recompute();
+                self.info(format!(
+                    "fit: {}; RMS {} mm",
+                    text.join(", "),
+                    crate::report::number_with(result.rms, 3)
+                ));
+            }
+            Err(e) => self.error(format!("fit failed: {e}")),
         }
     }
 
@@ -622,6 +751,7 @@ mod tests {
             },
             preset: preset::resolve("paper-beams").unwrap(),
             user_dir: dir,
+            data: None,
         })
     }
 
@@ -793,6 +923,64 @@ mod tests {
                 .contains("L = 250.0")
         );
         assert!(app.message().unwrap().text.starts_with("saved "));
+    }
+
+    #[test]
+    fn measurements_load_fit_and_set_the_parameters() {
+        let dir = tempfile::tempdir().unwrap();
+        let beams = crate::TwinBeams::new(crate::TwinBeamsParams {
+            friction: 0.35,
+            tangential_stiffness: 250.0,
+            ..crate::TwinBeamsParams::PAPER
+        })
+        .unwrap();
+        let mut csv = String::from("F_N,w_mm\n");
+        for i in 1..=25 {
+            let f = 12.0 * f64::from(i);
+            csv.push_str(&format!(
+                "{f},{}\n",
+                beams
+                    .regularized(crate::TipForce::new(f).unwrap())
+                    .tip_deflection()
+            ));
+        }
+        let path = dir.path().join("m.csv");
+        std::fs::write(&path, csv).unwrap();
+        let mut app = app();
+        app.update(Action::Fit);
+        assert!(app.message().unwrap().text.starts_with("no measurements"));
+        app.update(Action::LoadData);
+        typed(&mut app, path.to_str().unwrap());
+        app.update(Action::Commit);
+        assert_eq!(app.measurements().unwrap().points.len(), 25);
+        assert!(app.plot().series.iter().any(|s| s.name == "measured"));
+        app.update(Action::Fit);
+        assert!(
+            (app.inputs().get("mu").unwrap() / 0.35 - 1.0).abs() < 1e-6,
+            "{:?}",
+            app.message()
+        );
+        assert!((app.inputs().get("KT").unwrap() / 250.0 - 1.0).abs() < 1e-6);
+        assert!(
+            app.message().unwrap().text.starts_with("fit: mu = 0.35"),
+            "{:?}",
+            app.message()
+        );
+        // A bad file is refused with its line; the loaded data stay.
+        std::fs::write(dir.path().join("bad.csv"), "F_N,w_mm\n1,x\n").unwrap();
+        app.update(Action::LoadData);
+        for _ in 0..200 {
+            app.update(Action::Backspace);
+        }
+        typed(&mut app, dir.path().join("bad.csv").to_str().unwrap());
+        app.update(Action::Commit);
+        assert!(
+            app.message()
+                .unwrap()
+                .text
+                .contains("line 2: 'x' in column w_mm")
+        );
+        assert_eq!(app.measurements().unwrap().points.len(), 25);
     }
 
     #[test]

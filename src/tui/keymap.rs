@@ -164,6 +164,20 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         Context::Main,
+        &[(KeyCode::Char('d'), NONE)],
+        "d",
+        Action::LoadData,
+        "load measured w(F)",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('f'), NONE)],
+        "f",
+        Action::Fit,
+        "fit mu, K_T to them",
+    ),
+    bind(
+        Context::Main,
         &[(KeyCode::Char('?'), NONE), (KeyCode::Char('?'), SHIFT)],
         "?",
         Action::ToggleHelp,

@@ -36,6 +36,9 @@ pub enum TuiError {
         "the terminal UI needs an interactive terminal; for a text report run `microslip report`, for scripts see `microslip --help`"
     )]
     NotATerminal,
+    /// The `--data` file is unreadable or malformed.
+    #[error("{0}")]
+    Data(String),
     /// The start-up preset is unusable.
     #[error(transparent)]
     Preset(#[from] PresetError),
@@ -45,15 +48,35 @@ pub enum TuiError {
 }
 
 /// Opens the TUI on `preset` (default: the paper's twin beams).
-pub fn run(charset: Charset, preset: Option<&str>) -> Result<(), TuiError> {
+pub fn run(
+    charset: Charset,
+    preset: Option<&str>,
+    data: Option<std::path::PathBuf>,
+) -> Result<(), TuiError> {
     let preset = preset::resolve(preset.unwrap_or("paper-beams"))?;
     if !io::stdout().is_terminal() || !io::stdin().is_terminal() {
         return Err(TuiError::NotATerminal);
     }
+    // A bad data file is refused before the screen changes, like a bad preset.
+    let data = match data {
+        Some(path) => {
+            let shown = path.display().to_string();
+            let text = std::fs::read_to_string(&path)
+                .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
+            let points = crate::fit::data::parse(&text)
+                .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
+            Some(app::Measurements {
+                path: shown,
+                points,
+            })
+        }
+        None => None,
+    };
     let mut app = App::new(AppOptions {
         theme: Theme::from_env(charset),
         preset,
         user_dir: preset::user_preset_dir(),
+        data,
     });
     let terminate = Arc::new(AtomicBool::new(false));
     for signal in [signal_hook::consts::SIGTERM, signal_hook::consts::SIGHUP] {

@@ -2,6 +2,7 @@
 //! drawing code turns a [`Plot`] into cells and never computes physics itself.
 
 use crate::curves::{self, Samples, Series, Spacing};
+use crate::fit::Measurement;
 use crate::numeric::{MeshDensity, NumericError, PlateFe, TwinBeamsFe};
 use crate::preset::{Model, ModelKind};
 use crate::report::{number, number_with};
@@ -128,22 +129,46 @@ fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// The force range of the beam charts: up to 3 F_thre, or further to show the current F.
-fn force_range(beams: &TwinBeams, force: TipForce) -> f64 {
-    (3.0 * beams.threshold_force()).max(1.25 * force.newtons())
+/// The force range of the beam charts: up to 3 F_thre, or further to show the current F and the
+/// largest measured force.
+fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64) -> f64 {
+    (3.0 * beams.threshold_force())
+        .max(1.25 * force.newtons())
+        .max(1.05 * f_data)
 }
 
 fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
     Samples::new(from, to, SAMPLES, spacing, ("from", "to")).ok()
 }
 
-/// Builds chart `chart` of `model`, with finite-element points if given.
-pub fn build(model: &Model, chart: usize, numeric: Option<&NumericPoints>) -> Plot {
+/// Builds chart `chart` of `model`, with finite-element points and measurements if given
+/// (measurements show on the twin beams' w(L) vs F chart).
+pub fn build(
+    model: &Model,
+    chart: usize,
+    numeric: Option<&NumericPoints>,
+    measured: Option<&[Measurement]>,
+) -> Plot {
+    let measured = measured.filter(|_| matches!(model, Model::Beam { .. }) && chart == 0);
     let mut plot = match *model {
-        Model::Beam { beams, force } => beam_plot(&beams, force, chart),
+        Model::Beam { beams, force } => {
+            let f_data = measured.and_then(|m| m.last()).map_or(0.0, |m| m.force);
+            beam_plot(&beams, force, chart, f_data)
+        }
         Model::Plate(plate) => plate_plot(&plate, chart),
     }
     .unwrap_or_default();
+    if let Some(points) = measured {
+        let points: Series = points.iter().map(|m| (m.force, m.deflection)).collect();
+        let top = max_y([&points]) * 1.05;
+        plot.y.bounds[1] = plot.y.bounds[1].max(top);
+        plot.y = linear_axis(plot.y.title.clone(), plot.y.bounds[0], plot.y.bounds[1]);
+        plot.series.push(PlotSeries {
+            name: "measured".into(),
+            points,
+            kind: SeriesKind::Points,
+        });
+    }
     if let Some(numeric) = numeric {
         plot.series.push(PlotSeries {
             name: "finite elements".into(),
@@ -154,9 +179,9 @@ pub fn build(model: &Model, chart: usize, numeric: Option<&NumericPoints>) -> Pl
     plot
 }
 
-fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize) -> Option<Plot> {
+fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> Option<Plot> {
     let p = beams.params();
-    let f_max = force_range(beams, force);
+    let f_max = force_range(beams, force, f_data);
     let forces = samples(0.0, f_max, Spacing::Linear)?;
     let kt = p.tangential_stiffness;
     let softer = beams.with_tangential_stiffness(kt / 5.0).ok()?;
@@ -315,7 +340,7 @@ pub fn numeric_points(model: &Model, chart: usize) -> Result<Option<NumericPoint
     match *model {
         Model::Beam { beams, force } if chart <= 1 => {
             // One model loaded monotonically through the sample forces: one load step per point.
-            let f_max = force_range(&beams, force);
+            let f_max = force_range(&beams, force, 0.0);
             let mut fe = TwinBeamsFe::new(beams.params(), density);
             let mut points = Vec::with_capacity(OVERLAY_POINTS);
             for i in 1..=OVERLAY_POINTS {
@@ -378,7 +403,7 @@ mod tests {
     fn every_chart_has_titles_units_bounds_and_finite_points() {
         for kind in [ModelKind::Beam, ModelKind::Plate] {
             for chart in 0..chart_names(kind).len() {
-                let plot = build(&model(kind), chart, None);
+                let plot = build(&model(kind), chart, None, None);
                 assert!(!plot.title.is_empty());
                 assert!(
                     plot.x.title.contains('(') && plot.y.title.contains('('),

@@ -49,6 +49,14 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 &format!("Name: {buffer}_"),
                 "letters, digits, - and _; Enter save, Esc cancel",
             ),
+            Mode::DataPath { buffer } => overlay::draw_prompt(
+                frame,
+                app,
+                area,
+                "Load measurements",
+                &format!("File: {buffer}_"),
+                "CSV with columns F_N,w_mm; Enter load, Esc cancel",
+            ),
             Mode::ConfirmOverwrite { name } => overlay::draw_prompt(
                 frame,
                 app,
