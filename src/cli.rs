@@ -63,6 +63,23 @@ pub enum Command {
     /// Tables over a parameter range, as CSV or JSON.
     #[command(subcommand)]
     Sweep(SweepCommand),
+    /// K_T from K_N and the K_T that FE codes assume, with what each does to the answer.
+    Kt {
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Contact element length of the FE model (mm); default: L/100.
+        #[arg(long, value_name = "LE", allow_negative_numbers = true)]
+        element_size: Option<f64>,
+        /// Normal contact stiffness K_N (MPa/mm), for paper eq. 4 and the measured K_T/K_N range.
+        #[arg(long, value_name = "KN", allow_negative_numbers = true)]
+        kn: Option<f64>,
+        /// Poisson ratio for eq. 4 (default: the plate's nu, else 0.3).
+        #[arg(long, value_name = "NU", allow_negative_numbers = true)]
+        nu: Option<f64>,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+        format: ReportFormat,
+    },
     /// Identify mu and K_T from a measured deflection curve.
     #[command(subcommand)]
     Fit(FitCommand),
@@ -379,6 +396,13 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             fixed,
             format,
         })) => run_fit(out, data, inputs, fixed, *format)?,
+        Some(Command::Kt {
+            inputs,
+            element_size,
+            kn,
+            nu,
+            format,
+        }) => run_kt(out, inputs, *element_size, *kn, *nu, *format)?,
         Some(Command::Presets) => list_presets(out)?,
         Some(Command::Check { files }) => check(out, files)?,
         Some(Command::Verify {
@@ -395,27 +419,46 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
 
 /// Resolves the preset (default: the paper's data set of `wanted`), applies `--set`, validates.
 fn load(args: &InputArgs, wanted: ModelKind) -> Result<(String, Model), CliError> {
-    let default = match wanted {
-        ModelKind::Beam => "paper-beams",
-        ModelKind::Plate => "paper-plate",
-    };
-    let spec = args.preset.as_deref().unwrap_or(default);
-    let preset = preset::resolve(spec)?;
+    let (name, preset) = resolve_preset(args, wanted)?;
     if preset.inputs.kind() != wanted {
+        let spec = args.preset.clone().unwrap_or_default();
         return Err(CliError::WrongModel {
-            preset: spec.to_string(),
+            preset: spec,
             found: preset.inputs.kind(),
             wanted,
         });
     }
+    apply_and_validate(args, name, preset)
+}
+
+/// Like [`load`], for commands that accept either model (`default` picks the default preset).
+fn load_any(args: &InputArgs, default: ModelKind) -> Result<(String, Model), CliError> {
+    let (name, preset) = resolve_preset(args, default)?;
+    apply_and_validate(args, name, preset)
+}
+
+fn resolve_preset(args: &InputArgs, default: ModelKind) -> Result<(String, Preset), CliError> {
+    let default = match default {
+        ModelKind::Beam => "paper-beams",
+        ModelKind::Plate => "paper-plate",
+    };
+    let preset = preset::resolve(args.preset.as_deref().unwrap_or(default))?;
+    Ok((preset.name.clone(), preset))
+}
+
+fn apply_and_validate(
+    args: &InputArgs,
+    name: String,
+    preset: Preset,
+) -> Result<(String, Model), CliError> {
     let mut inputs: Inputs = preset.inputs;
     for assignment in &args.assignments {
         inputs.apply_assignment(assignment)?;
     }
     let name = if args.assignments.is_empty() {
-        preset.name
+        name
     } else {
-        format!("{} (modified by --set)", preset.name)
+        format!("{name} (modified by --set)")
     };
     Ok((name, inputs.validate()?))
 }
@@ -550,6 +593,65 @@ fn run_fit(
         ReportFormat::Json => {
             write_json(out, &json::fit(&path.display().to_string(), &name, &result))?
         }
+    }
+    Ok(())
+}
+
+fn run_kt(
+    out: &mut impl Write,
+    inputs: &InputArgs,
+    element: Option<f64>,
+    kn: Option<f64>,
+    nu: Option<f64>,
+    format: ReportFormat,
+) -> Result<(), CliError> {
+    use crate::model::validate::{poisson_ratio, positive};
+    let (name, model) = load_any(inputs, ModelKind::Beam)?;
+    let (length, mu, pressure, modulus, current, model_nu) = match &model {
+        Model::Beam { beams, .. } => {
+            let p = beams.params();
+            (
+                p.length,
+                p.friction,
+                p.pressure,
+                p.youngs_modulus,
+                p.tangential_stiffness,
+                None,
+            )
+        }
+        Model::Plate(plate) => {
+            let p = plate.params();
+            (
+                p.half_length,
+                p.friction,
+                p.pressure,
+                p.youngs_modulus,
+                p.tangential_stiffness,
+                Some(p.poisson),
+            )
+        }
+    };
+    let element = match element {
+        Some(e) => positive("--element-size", e, "must be > 0 and finite (mm)")?,
+        None => length / 100.0,
+    };
+    let normal = match kn {
+        Some(kn) => {
+            let kn = positive("--kn", kn, "must be > 0 and finite (MPa/mm)")?;
+            let nu = poisson_ratio("--nu", nu.or(model_nu).unwrap_or(0.3))?;
+            Some((kn, nu))
+        }
+        None => None,
+    };
+    let candidates = curves::stiffness_candidates(current, mu, pressure, modulus, element, normal);
+    match format {
+        ReportFormat::Text => {
+            out.write_all(text::stiffness_table(&name, &model, element, &candidates).as_bytes())?
+        }
+        ReportFormat::Json => write_json(
+            out,
+            &json::stiffness_table(&name, &model, element, &candidates),
+        )?,
     }
     Ok(())
 }

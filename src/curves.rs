@@ -313,6 +313,85 @@ pub fn plate_contact_pressure_along(plate: &SqueezedPlate, positions: Samples) -
     positions.values().map(|x| (x, pressure.ratio(x))).collect()
 }
 
+/// A K_T to compare: where it comes from and its value (None: that source has no value).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StiffnessCandidate {
+    /// Source: the preset, the normal stiffness, or a code.
+    pub source: String,
+    /// The stiffness (MPa/mm), when the source gives one.
+    pub kt: Option<f64>,
+    /// How it was obtained, and how sure we are.
+    pub basis: String,
+}
+
+/// The K_T values worth comparing for one interface: the current one, those from a normal contact
+/// stiffness K_N (paper eq. 4 and the measured K_T/K_N range), and those FE codes assume by default
+/// for contact elements of length `element` (mm).
+pub fn stiffness_candidates(
+    current: f64,
+    mu: f64,
+    pressure: f64,
+    modulus: f64,
+    element: f64,
+    normal: Option<(f64, f64)>,
+) -> Vec<StiffnessCandidate> {
+    use crate::model::code_defaults::{CODE_DEFAULTS, MEASURED_RATIO_RANGE};
+    use crate::model::stiffness::tangential_from_normal;
+    let mut rows = vec![StiffnessCandidate {
+        source: "current".into(),
+        kt: Some(current),
+        basis: "the model's K_T".into(),
+    }];
+    if let Some((kn, nu)) = normal {
+        let (low, high) = MEASURED_RATIO_RANGE;
+        rows.push(StiffnessCandidate {
+            source: "K_N x 0.5".into(),
+            kt: Some(low * kn),
+            basis: "measured K_T/K_N, low end".into(),
+        });
+        rows.push(StiffnessCandidate {
+            source: "eq. 4".into(),
+            kt: tangential_from_normal(kn, nu).ok(),
+            basis: format!("pi (1 - nu) / (2 (2 - nu)) K_N, nu = {nu}"),
+        });
+        rows.push(StiffnessCandidate {
+            source: "K_N x 0.7".into(),
+            kt: Some(high * kn),
+            basis: "measured K_T/K_N, high end".into(),
+        });
+    }
+    for code in CODE_DEFAULTS {
+        rows.push(StiffnessCandidate {
+            source: code.code.into(),
+            kt: code.implied_stiffness(mu, pressure, modulus, element),
+            basis: format!("{} ({})", code.description, code.confirmation.label()),
+        });
+    }
+    rows
+}
+
+/// What a K_T does to the twin beams at one force: (F_1 (N), X (mm), w(L) (mm), regime).
+pub fn beam_answer(beams: &TwinBeams, force: TipForce, kt: f64) -> Option<(f64, f64, f64, Regime)> {
+    let beams = beams.with_tangential_stiffness(kt).ok()?;
+    let state = beams.regularized(force);
+    Some((
+        beams.first_macroslip_force(),
+        state.micro_zone_end(),
+        state.tip_deflection(),
+        state.regime(),
+    ))
+}
+
+/// What a K_T does to the plate: (u(L) (mm), X_r (mm), regime).
+pub fn plate_answer(plate: &SqueezedPlate, kt: f64) -> Option<(f64, f64, Regime)> {
+    let state = plate.with_tangential_stiffness(kt).ok()?.regularized();
+    Some((
+        state.end_displacement(),
+        state.micro_zone_end(),
+        state.regime(),
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -425,3 +425,41 @@ fn fit_errors_name_the_file_and_line() {
     );
     assert!(failure(&["fit", "beam", bad, "--fix", "nu=1"], 2).contains("invalid --fix 'nu=1'"));
 }
+
+#[test]
+fn kt_compares_physical_and_code_default_stiffnesses() {
+    let text = stdout_of(&["kt", "--element-size", "1", "--kn", "1000"]);
+    // Abaqus: mu P / (0.005 x 1 mm) = 0.3 / 0.005 = 60 MPa/mm.
+    assert!(
+        text.lines()
+            .any(|l| l.starts_with("Abaqus/Standard") && l.contains(" 60 ")),
+        "{text}"
+    );
+    // Eq. 4 at nu = 0.3: 0.7 pi / 3.4 x 1000 = 646.798 MPa/mm.
+    assert!(
+        text.lines()
+            .any(|l| l.starts_with("eq. 4") && l.contains("646.798")),
+        "{text}"
+    );
+    assert!(text.contains("could NOT be confirmed"));
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "kt",
+        "--preset",
+        "paper-plate",
+        "--element-size",
+        "0.1",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    let rows = json["candidates"].as_array().unwrap();
+    let abaqus = rows
+        .iter()
+        .find(|r| r["source"] == "Abaqus/Standard")
+        .unwrap();
+    // mu P = 3 MPa: 3 / (0.005 x 0.1) = 6000 MPa/mm.
+    assert!((abaqus["KT_MPa_per_mm"].as_f64().unwrap() - 6000.0).abs() < 1e-9);
+    assert!(abaqus["u_end_mm"].as_f64().unwrap() > 0.0);
+    assert!(failure(&["kt", "--element-size", "-1"], 2).contains("invalid --element-size = -1"));
+    assert!(failure(&["kt", "--kn", "5", "--nu", "0.5"], 2).contains("invalid --nu = 0.5"));
+}

@@ -175,17 +175,39 @@ fn measured_points_on_the_deflection_chart() {
     let points = (1..=12)
         .map(|i| {
             let force = 20.0 * f64::from(i);
-            let deflection = beams.regularized(microslip::TipForce::new(force).unwrap()).tip_deflection();
+            let deflection = beams
+                .regularized(microslip::TipForce::new(force).unwrap())
+                .tip_deflection();
             microslip::fit::Measurement { force, deflection }
         })
         .collect();
     let mut app = App::new(AppOptions {
-        theme: Theme { charset: Charset::Ascii, color: false },
+        theme: Theme {
+            charset: Charset::Ascii,
+            color: false,
+        },
         preset: preset::resolve("paper-beams").unwrap(),
         user_dir: None,
-        data: Some(microslip::tui::app::Measurements { path: "bench.csv".into(), points }),
+        data: Some(microslip::tui::app::Measurements {
+            path: "bench.csv".into(),
+            points,
+        }),
     });
     insta::assert_snapshot!("measured_points", screen(&app, 100, 30));
     app.update(Action::Fit);
     insta::assert_snapshot!("after_fit", screen(&app, 100, 30));
+}
+
+#[test]
+fn stiffness_panels() {
+    let mut app = app();
+    for _ in 0..3 {
+        app.update(Action::NextChart);
+    }
+    insta::assert_snapshot!("beam_stiffness_panel", screen(&app, 80, 24));
+    app.update(Action::SwitchModel);
+    for _ in 0..3 {
+        app.update(Action::NextChart);
+    }
+    insta::assert_snapshot!("plate_stiffness_panel", screen(&app, 80, 24));
 }

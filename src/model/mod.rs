@@ -1,6 +1,7 @@
 //! Pure physics: parameter types with checked constructors, closed-form solutions, root finding.
 //! No terminal, file or network I/O here, so every function is a plain, testable computation.
 
+pub mod code_defaults;
 pub mod hyperbolic;
 pub mod plate;
 pub mod regime;

@@ -167,6 +167,43 @@ pub fn fit(data: &str, preset: &str, result: &crate::fit::FitResult) -> Value {
     })
 }
 
+/// The K_T comparison.
+pub fn stiffness_table(
+    preset: &str,
+    model: &crate::preset::Model,
+    element: f64,
+    rows: &[crate::curves::StiffnessCandidate],
+) -> Value {
+    use crate::curves::{beam_answer, plate_answer};
+    use crate::preset::Model;
+    let rows: Vec<Value> = rows
+        .iter()
+        .map(|row| {
+            let mut object = serde_json::json!({ "source": row.source, "basis": row.basis, "KT_MPa_per_mm": row.kt });
+            match (model, row.kt) {
+                (Model::Beam { beams, force }, Some(kt)) => {
+                    if let Some((f_1, x, w, regime)) = beam_answer(beams, *force, kt) {
+                        object["F_1_N"] = f_1.into();
+                        object["X_mm"] = x.into();
+                        object["w_tip_mm"] = w.into();
+                        object["regime"] = regime.label().into();
+                    }
+                }
+                (Model::Plate(plate), Some(kt)) => {
+                    if let Some((u, x, regime)) = plate_answer(plate, kt) {
+                        object["u_end_mm"] = u.into();
+                        object["Xr_mm"] = x.into();
+                        object["regime"] = regime.label().into();
+                    }
+                }
+                _ => {}
+            }
+            object
+        })
+        .collect();
+    serde_json::json!({ "preset": preset, "element_size_mm": element, "candidates": rows })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -226,6 +226,107 @@ pub fn fit(
     out
 }
 
+/// The K_T comparison: each candidate and what it does to the answer.
+pub fn stiffness_table(
+    preset: &str,
+    model: &crate::preset::Model,
+    element: f64,
+    rows: &[crate::curves::StiffnessCandidate],
+) -> String {
+    use crate::curves::{beam_answer, plate_answer};
+    use crate::preset::Model;
+    let mut out = String::new();
+    match model {
+        Model::Beam { beams, force } => {
+            let p = beams.params();
+            let _ = writeln!(
+                out,
+                "K_T candidates for preset {preset}: twin beams at F = {} N, mu P = {} MPa, contact elements {} mm",
+                number(force.newtons()),
+                number(p.friction * p.pressure),
+                number(element)
+            );
+            let _ = writeln!(
+                out,
+                "{:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} basis",
+                "source", "K_T (MPa/mm)", "F_1 (N)", "X (mm)", "w(L) (mm)", "regime"
+            );
+            for row in rows {
+                match row
+                    .kt
+                    .and_then(|kt| beam_answer(beams, *force, kt).map(|a| (kt, a)))
+                {
+                    Some((kt, (f_1, x, w, regime))) => {
+                        let _ = writeln!(
+                            out,
+                            "{:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} {}",
+                            row.source,
+                            number(kt),
+                            number(f_1),
+                            number(x),
+                            number(w),
+                            regime.label(),
+                            row.basis
+                        );
+                    }
+                    None => {
+                        let _ = writeln!(
+                            out,
+                            "{:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} {}",
+                            row.source, "-", "-", "-", "-", "-", row.basis
+                        );
+                    }
+                }
+            }
+        }
+        Model::Plate(plate) => {
+            let p = plate.params();
+            let _ = writeln!(
+                out,
+                "K_T candidates for preset {preset}: squeezed plate, mu P = {} MPa, contact elements {} mm",
+                number(p.friction * p.pressure),
+                number(element)
+            );
+            let _ = writeln!(
+                out,
+                "{:<16} {:>12} {:>12} {:>10}  {:<20} basis",
+                "source", "K_T (MPa/mm)", "u(L) (mm)", "X_r (mm)", "regime"
+            );
+            for row in rows {
+                match row
+                    .kt
+                    .and_then(|kt| plate_answer(plate, kt).map(|a| (kt, a)))
+                {
+                    Some((kt, (u, x, regime))) => {
+                        let _ = writeln!(
+                            out,
+                            "{:<16} {:>12} {:>12} {:>10}  {:<20} {}",
+                            row.source,
+                            number(kt),
+                            number(u),
+                            number(x),
+                            regime.label(),
+                            row.basis
+                        );
+                    }
+                    None => {
+                        let _ = writeln!(
+                            out,
+                            "{:<16} {:>12} {:>12} {:>10}  {:<20} {}",
+                            row.source, "-", "-", "-", "-", row.basis
+                        );
+                    }
+                }
+            }
+        }
+    }
+    let _ = writeln!(
+        out,
+        "Elastic-slip defaults scale like mu P / element length: halve the elements, double K_T."
+    );
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -61,6 +61,8 @@ pub struct Plot {
     pub y: Axis,
     /// Curves, points and the cursor.
     pub series: Vec<PlotSeries>,
+    /// Text lines shown instead of a chart (the K_T comparison table).
+    pub table: Option<Vec<String>>,
 }
 
 /// Finite-element results for the overlay, in the chart's plotted units.
@@ -73,8 +75,18 @@ pub struct NumericPoints {
 /// The charts of each model, in the order `c` cycles through them.
 pub fn chart_names(kind: ModelKind) -> &'static [&'static str] {
     match kind {
-        ModelKind::Beam => &["w(L) vs F", "X vs F", "tau(x) at F"],
-        ModelKind::Plate => &["u(L) vs K_T", "X_r vs mu", "P_r(x)/P"],
+        ModelKind::Beam => &[
+            "w(L) vs F",
+            "X vs F",
+            "tau(x) at F",
+            "K_T: codes vs physics",
+        ],
+        ModelKind::Plate => &[
+            "u(L) vs K_T",
+            "X_r vs mu",
+            "P_r(x)/P",
+            "K_T: codes vs physics",
+        ],
     }
 }
 
@@ -141,6 +153,95 @@ fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
     Samples::new(from, to, SAMPLES, spacing, ("from", "to")).ok()
 }
 
+/// Contact elements assumed by the K_T table: L/100, a typical benchmark mesh (the command line's
+/// `microslip kt --element-size` sets any other).
+const TABLE_ELEMENTS_PER_LENGTH: f64 = 100.0;
+
+/// The K_T comparison as a narrow table (fits the 44-column chart pane of an 80x24 screen).
+fn stiffness_table(model: &Model) -> Plot {
+    use crate::model::code_defaults::{CODE_DEFAULTS, Confirmation, DefaultRule};
+    let (length, mu, pressure, modulus, kt) = match model {
+        Model::Beam { beams, .. } => {
+            let p = beams.params();
+            (
+                p.length,
+                p.friction,
+                p.pressure,
+                p.youngs_modulus,
+                p.tangential_stiffness,
+            )
+        }
+        Model::Plate(plate) => {
+            let p = plate.params();
+            (
+                p.half_length,
+                p.friction,
+                p.pressure,
+                p.youngs_modulus,
+                p.tangential_stiffness,
+            )
+        }
+    };
+    let element = length / TABLE_ELEMENTS_PER_LENGTH;
+    let rows = curves::stiffness_candidates(kt, mu, pressure, modulus, element, None);
+    let short = |source: &str| {
+        CODE_DEFAULTS
+            .iter()
+            .find(|c| c.code == source)
+            .map_or(source.to_string(), |c| c.short.to_string())
+    };
+    let mut lines = vec![match model {
+        Model::Beam { .. } => format!(
+            "{:<10} {:>7} {:>7} {:>7} {:>8}",
+            "source", "K_T", "F_1 N", "X mm", "w(L) mm"
+        ),
+        Model::Plate(_) => format!(
+            "{:<10} {:>7} {:>9} {:>8}",
+            "source", "K_T", "u(L) mm", "X_r mm"
+        ),
+    }];
+    for row in &rows {
+        let cells = match (model, row.kt) {
+            (Model::Beam { beams, force }, Some(k)) => {
+                curves::beam_answer(beams, *force, k).map(|(f_1, x, w, _)| {
+                    format!(
+                        "{:>7} {:>7} {:>7} {:>8}",
+                        tick(k),
+                        tick(f_1),
+                        tick(x),
+                        tick(w)
+                    )
+                })
+            }
+            (Model::Plate(plate), Some(k)) => curves::plate_answer(plate, k)
+                .map(|(u, x, _)| format!("{:>7} {:>9} {:>8}", tick(k), tick(u), tick(x))),
+            _ => None,
+        };
+        let cells = cells.unwrap_or_else(|| format!("{:>7}", "none"));
+        lines.push(format!("{:<10} {cells}", short(&row.source)));
+    }
+    lines.push(String::new());
+    lines.push(format!(
+        "K_T MPa/mm; FE elements {} mm (L/100)",
+        number(element)
+    ));
+    for code in CODE_DEFAULTS {
+        let how = match (code.rule, code.confirmation) {
+            (DefaultRule::UserSupplied, _) => "no default: user input",
+            (_, Confirmation::Confirmed) => "default confirmed",
+            (_, Confirmation::Indirect) => "seen in solver output only",
+            (_, Confirmation::NotConfirmed) => "default NOT confirmed",
+        };
+        lines.push(format!("{}: {how}", code.short));
+    }
+    lines.push("Other sizes, K_N, eq. 4: microslip kt".into());
+    Plot {
+        title: "K_T that FE codes assume by default".into(),
+        table: Some(lines),
+        ..Plot::default()
+    }
+}
+
 /// Builds chart `chart` of `model`, with finite-element points and measurements if given
 /// (measurements show on the twin beams' w(L) vs F chart).
 pub fn build(
@@ -149,6 +250,9 @@ pub fn build(
     numeric: Option<&NumericPoints>,
     measured: Option<&[Measurement]>,
 ) -> Plot {
+    if chart == 3 {
+        return stiffness_table(model);
+    }
     let measured = measured.filter(|_| matches!(model, Model::Beam { .. }) && chart == 0);
     let mut plot = match *model {
         Model::Beam { beams, force } => {
@@ -194,6 +298,7 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> O
             let (_, stiff) = curves::beam_deflection_vs_force(&stiffer, forces);
             let top = 1.05 * max_y([&coulomb, &regularized, &soft, &stiff]);
             Some(Plot {
+                table: None,
                 title: format!("w(L) vs F, K_T = {} MPa/mm", number(kt)),
                 x: linear_axis("F (N)", 0.0, f_max),
                 y: linear_axis("w(L) (mm)", 0.0, top),
@@ -212,6 +317,7 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> O
             let soft = curves::beam_slip_boundary_vs_force(&softer, forces);
             let stiff = curves::beam_slip_boundary_vs_force(&stiffer, forces);
             Some(Plot {
+                table: None,
                 title: format!(
                     "X vs F, K_T = {} MPa/mm, F_1 = {} N",
                     number(kt),
@@ -236,6 +342,7 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> O
                 (p.length, beams.coulomb_stress()),
             ];
             Some(Plot {
+                table: None,
                 title: format!("tau(x) at F = {} N, K_T = {} MPa/mm", number(f), number(kt)),
                 x: linear_axis("x (mm)", 0.0, p.length),
                 y: linear_axis("tau (MPa)", 0.0, top),
@@ -272,6 +379,7 @@ fn plate_plot(plate: &SqueezedPlate, chart: usize) -> Option<Plot> {
             let (coulomb, regularized) = (to_log(coulomb), to_log(regularized));
             let top = 1.05 * max_y([&coulomb, &regularized]);
             Some(Plot {
+                table: None,
                 title: "u(L) vs K_T (log scale)".into(),
                 x: log_axis("K_T (MPa/mm, log)", lo, hi),
                 y: linear_axis("u(L) (mm)", 0.0, top),
@@ -303,6 +411,7 @@ fn plate_plot(plate: &SqueezedPlate, chart: usize) -> Option<Plot> {
             let bottom = (bottom - 0.05 * (p.half_length - bottom)).max(0.0);
             series.push(cursor(mu, [bottom, p.half_length]));
             Some(Plot {
+                table: None,
                 title: format!("X_r vs mu, K_T = {} MPa/mm", number(kt)),
                 x: linear_axis("mu (-)", lo, hi),
                 y: linear_axis("X_r (mm)", bottom, p.half_length),
@@ -322,6 +431,7 @@ fn plate_plot(plate: &SqueezedPlate, chart: usize) -> Option<Plot> {
                 "FAILS"
             };
             Some(Plot {
+                table: None,
                 title: format!("P_r(x)/P; constant-P assumption {flag}"),
                 x: linear_axis("x (mm)", 0.0, p.half_length),
                 y: linear_axis("P_r/P (-)", low - pad, high + pad),
@@ -405,6 +515,14 @@ mod tests {
             for chart in 0..chart_names(kind).len() {
                 let plot = build(&model(kind), chart, None, None);
                 assert!(!plot.title.is_empty());
+                if let Some(table) = &plot.table {
+                    // The K_T table: every line fits the 44-column pane of an 80x24 screen, no NaN.
+                    assert!(
+                        table.iter().all(|l| l.len() <= 43 && !l.contains("NaN")),
+                        "{table:#?}"
+                    );
+                    continue;
+                }
                 assert!(
                     plot.x.title.contains('(') && plot.y.title.contains('('),
                     "{kind} {chart}: units"

@@ -22,7 +22,7 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
     let plot = app.plot();
     let names = plots::chart_names(app.kind());
     let title = format!(
-        "{} [{}/{}, c: next chart]",
+        "{} ({}/{}, c cycles)",
         names[app.chart() % names.len()],
         app.chart() + 1,
         names.len()
@@ -30,6 +30,12 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
     let block = pane(app, &title);
     let inner = block.inner(area);
     frame.render_widget(block, area);
+    if let Some(table) = &plot.table {
+        let mut lines = vec![Line::from(format!(" {}", plot.title)), Line::from("")];
+        lines.extend(table.iter().map(|l| Line::from(format!(" {l}"))));
+        frame.render_widget(Paragraph::new(lines), inner);
+        return;
+    }
     let legend = legend_line(plot, &theme);
     let legend_rows = if legend.width() as u16 > inner.width {
         2
