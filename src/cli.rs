@@ -12,6 +12,7 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use thiserror::Error;
 
+use crate::TipForce;
 use crate::curves::{self, RangeError, Spacing};
 use crate::fit::{self, FitError};
 use crate::model::validate::ParamError;
@@ -80,6 +81,20 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
         format: ReportFormat,
     },
+    /// Twin beams under a tip force cycling between +FA and -FA: loop, dissipation, damping.
+    Cycle {
+        /// Amplitude F_a (N).
+        #[arg(long, value_name = "FA", allow_negative_numbers = true)]
+        amplitude: f64,
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Points per branch of the loop (csv format).
+        #[arg(long, value_name = "N", default_value_t = 101)]
+        points: u64,
+        /// Output format: text summary, JSON summary, or the loop as CSV.
+        #[arg(long, value_enum, default_value_t = CycleFormat::Text)]
+        format: CycleFormat,
+    },
     /// Identify mu and K_T from a measured deflection curve.
     #[command(subcommand)]
     Fit(FitCommand),
@@ -146,6 +161,23 @@ pub enum SweepCommand {
         #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
         format: TableFormat,
     },
+    /// Twin beams cycled at amplitudes F_a from F0 to F1 (N): dissipation and damping per cycle.
+    Cycle {
+        /// First amplitude (N).
+        #[arg(long, value_name = "F0", allow_negative_numbers = true)]
+        from: f64,
+        /// Last amplitude (N).
+        #[arg(long, value_name = "F1", allow_negative_numbers = true)]
+        to: f64,
+        /// Number of rows, both ends included (2 to 100000000).
+        #[arg(long, value_name = "N")]
+        points: u64,
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
+        format: TableFormat,
+    },
     /// Squeezed plate over a range of K_T (MPa/mm), logarithmically spaced unless --linear.
     Plate {
         /// First K_T (MPa/mm).
@@ -186,6 +218,17 @@ pub enum FitCommand {
         #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
         format: ReportFormat,
     },
+}
+
+/// Formats of `cycle`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum CycleFormat {
+    /// Readable summary.
+    Text,
+    /// JSON summary.
+    Json,
+    /// The loop points, both laws, as CSV.
+    Csv,
 }
 
 /// Formats of single-point reports.
@@ -403,6 +446,33 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             nu,
             format,
         }) => run_kt(out, inputs, *element_size, *kn, *nu, *format)?,
+        Some(Command::Cycle {
+            amplitude,
+            inputs,
+            points,
+            format,
+        }) => run_cycle(out, *amplitude, inputs, *points, *format)?,
+        Some(Command::Sweep(SweepCommand::Cycle {
+            from,
+            to,
+            points,
+            inputs,
+            format,
+        })) => {
+            let samples = curves::force_samples(*from, *to, *points)?;
+            let (_, model) = load(inputs, ModelKind::Beam)?;
+            if let Model::Beam { beams, .. } = model {
+                let rows = curves::cycle_sweep(beams, samples);
+                match format {
+                    TableFormat::Csv => {
+                        write_csv(out, csv::CYCLE_HEADER, rows, csv::write_cycle_row)?
+                    }
+                    TableFormat::Json => {
+                        write_json_rows(out, rows.map(|r| json::CycleRow::from(&r)))?
+                    }
+                }
+            }
+        }
         Some(Command::Presets) => list_presets(out)?,
         Some(Command::Check { files }) => check(out, files)?,
         Some(Command::Verify {
@@ -592,6 +662,56 @@ fn run_fit(
         )?,
         ReportFormat::Json => {
             write_json(out, &json::fit(&path.display().to_string(), &name, &result))?
+        }
+    }
+    Ok(())
+}
+
+fn run_cycle(
+    out: &mut impl Write,
+    amplitude: f64,
+    inputs: &InputArgs,
+    points: u64,
+    format: CycleFormat,
+) -> Result<(), CliError> {
+    use crate::model::cycle::{Cycle, Law};
+    let amplitude = TipForce::new(amplitude).map_err(|e| {
+        CliError::Range(RangeError::Bound {
+            flag: "--amplitude",
+            value: e.value,
+            allowed: "must be >= 0 and finite (N)",
+        })
+    })?;
+    if !(2..=1_000_000).contains(&points) {
+        return Err(CliError::Range(RangeError::Bound {
+            flag: "--points",
+            value: points as f64,
+            allowed: "must be an integer in [2, 1000000]",
+        }));
+    }
+    let (name, model) = load(inputs, ModelKind::Beam)?;
+    let Model::Beam { beams, .. } = model else {
+        return Ok(());
+    };
+    match format {
+        CycleFormat::Text => out.write_all(text::cycle(&name, &beams, amplitude).as_bytes())?,
+        CycleFormat::Json => write_json(out, &json::cycle(&name, &beams, amplitude))?,
+        CycleFormat::Csv => {
+            let (c, r) = (
+                Cycle::new(&beams, Law::Coulomb, amplitude),
+                Cycle::new(&beams, Law::Regularized, amplitude),
+            );
+            let fa = amplitude.newtons();
+            writeln!(out, "{}", csv::LOOP_HEADER)?;
+            let last = (points - 1) as f64;
+            for i in 0..points {
+                let f = fa - 2.0 * fa * i as f64 / last;
+                csv::write_loop_row(out, "unloading", f, c.unloading(f), r.unloading(f))?;
+            }
+            for i in 0..points {
+                let f = -fa + 2.0 * fa * i as f64 / last;
+                csv::write_loop_row(out, "reloading", f, c.reloading(f), r.reloading(f))?;
+            }
         }
     }
     Ok(())

@@ -392,6 +392,52 @@ pub fn plate_answer(plate: &SqueezedPlate, kt: f64) -> Option<(f64, f64, Regime)
     ))
 }
 
+/// One cyclic amplitude, both laws: dissipation per cycle (N mm) and equivalent damping ratio.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CyclePoint {
+    /// Amplitude F_a (N).
+    pub amplitude: f64,
+    /// Coulomb dissipation per cycle (N mm).
+    pub d_coulomb: f64,
+    /// Regularized dissipation per cycle (N mm).
+    pub d_regularized: f64,
+    /// Coulomb D / (4 pi U).
+    pub zeta_coulomb: f64,
+    /// Regularized D / (4 pi U).
+    pub zeta_regularized: f64,
+}
+
+/// The twin beams cycled at one amplitude.
+pub fn cycle_point(beams: &TwinBeams, amplitude: TipForce) -> CyclePoint {
+    use crate::model::cycle::{Cycle, Law};
+    let (c, r) = (
+        Cycle::new(beams, Law::Coulomb, amplitude),
+        Cycle::new(beams, Law::Regularized, amplitude),
+    );
+    CyclePoint {
+        amplitude: amplitude.newtons(),
+        d_coulomb: c.dissipation(),
+        d_regularized: r.dissipation(),
+        zeta_coulomb: c.damping_ratio(),
+        zeta_regularized: r.damping_ratio(),
+    }
+}
+
+/// The twin beams cycled over a range of amplitudes (validated like tip forces).
+pub fn cycle_sweep(beams: TwinBeams, amplitudes: Samples) -> impl Iterator<Item = CyclePoint> {
+    amplitudes
+        .values()
+        .filter_map(move |f| TipForce::new(f).ok())
+        .map(move |f| cycle_point(&beams, f))
+}
+
+/// Dissipation per cycle D (N mm) against F_a (N): (Coulomb, regularized).
+pub fn dissipation_vs_amplitude(beams: &TwinBeams, amplitudes: Samples) -> (Series, Series) {
+    cycle_sweep(*beams, amplitudes)
+        .map(|p| ((p.amplitude, p.d_coulomb), (p.amplitude, p.d_regularized)))
+        .unzip()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

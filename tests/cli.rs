@@ -463,3 +463,55 @@ fn kt_compares_physical_and_code_default_stiffnesses() {
     assert!(failure(&["kt", "--element-size", "-1"], 2).contains("invalid --element-size = -1"));
     assert!(failure(&["kt", "--kn", "5", "--nu", "0.5"], 2).contains("invalid --nu = 0.5"));
 }
+
+#[test]
+fn cycle_reports_and_sweeps() {
+    let text = stdout_of(&["cycle", "--amplitude", "150"]);
+    // Coulomb: D = 4 mu P L^3 (F_a - F_thre) / (E h^2) = 4 x 0.3 x 8e6 x 70 / (210000 x 100) = 32 N mm.
+    assert!(
+        text.lines()
+            .any(|l| l.contains("dissipated per cycle D (N mm)") && l.contains(" 32 ")),
+        "{text}"
+    );
+    let csv = stdout_of(&[
+        "sweep", "cycle", "--from", "0", "--to", "300", "--points", "7",
+    ]);
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next(),
+        Some("Fa_N,D_coulomb_Nmm,D_regularized_Nmm,zeta_coulomb,zeta_regularized")
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 7);
+    assert_eq!(rows[0][1..], [0.0, 0.0, 0.0, 0.0]);
+    // F_a = 50 N is below F_thre and F_1: no dissipation in either law.
+    assert_eq!((rows[1][1], rows[1][2]), (0.0, 0.0));
+    assert!(rows[6][2] > 0.0 && rows[6][2] < rows[6][1]);
+    let loop_csv = stdout_of(&[
+        "cycle",
+        "--amplitude",
+        "150",
+        "--format",
+        "csv",
+        "--points",
+        "3",
+    ]);
+    assert!(
+        loop_csv.starts_with("branch,F_N,w_coulomb_mm,w_regularized_mm\nunloading,150.0,"),
+        "{loop_csv}"
+    );
+    // Coulomb residual deflection at F = 0 on unloading: w_a - 2 w_v(75) = 0.0857143 - 2 x 0.0178571 = 0.05.
+    assert!(loop_csv.contains("unloading,0.0,0.05,"), "{loop_csv}");
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "cycle",
+        "--amplitude",
+        "100",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(json["coulomb"]["onset_N"], 80.0);
+    assert!(failure(&["cycle", "--amplitude", "-5"], 2).contains("invalid --amplitude = -5"));
+}

@@ -201,13 +201,20 @@ fn measured_points_on_the_deflection_chart() {
 #[test]
 fn stiffness_panels() {
     let mut app = app();
-    for _ in 0..3 {
-        app.update(Action::NextChart);
-    }
+    app.update(Action::PreviousChart);
     insta::assert_snapshot!("beam_stiffness_panel", screen(&app, 80, 24));
     app.update(Action::SwitchModel);
+    app.update(Action::PreviousChart);
+    insta::assert_snapshot!("plate_stiffness_panel", screen(&app, 80, 24));
+}
+
+#[test]
+fn cyclic_loading_charts() {
+    let mut app = app_with("paper-beams-soft", Charset::Unicode, true);
     for _ in 0..3 {
         app.update(Action::NextChart);
     }
-    insta::assert_snapshot!("plate_stiffness_panel", screen(&app, 80, 24));
+    insta::assert_snapshot!("hysteresis_loop", screen(&app, 100, 30));
+    app.update(Action::NextChart);
+    insta::assert_snapshot!("dissipation_vs_amplitude", screen(&app, 100, 30));
 }

@@ -2,6 +2,7 @@
 //! No terminal, file or network I/O here, so every function is a plain, testable computation.
 
 pub mod code_defaults;
+pub mod cycle;
 pub mod hyperbolic;
 pub mod plate;
 pub mod regime;

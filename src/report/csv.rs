@@ -15,6 +15,40 @@ pub const BEAM_HEADER: &str =
 pub const PLATE_HEADER: &str =
     "KT_MPa_per_mm,u_coulomb_mm,u_regularized_mm,Xs_mm,Xr_mm,regime_coulomb,regime_regularized";
 
+/// Header of `microslip sweep cycle --format csv`.
+pub const CYCLE_HEADER: &str = "Fa_N,D_coulomb_Nmm,D_regularized_Nmm,zeta_coulomb,zeta_regularized";
+
+/// Header of `microslip cycle --format csv` (the loop, both laws).
+pub const LOOP_HEADER: &str = "branch,F_N,w_coulomb_mm,w_regularized_mm";
+
+/// Writes one cycle-sweep row.
+pub fn write_cycle_row(out: &mut impl Write, p: &crate::curves::CyclePoint) -> io::Result<()> {
+    write_row(
+        out,
+        &[
+            p.amplitude,
+            p.d_coulomb,
+            p.d_regularized,
+            p.zeta_coulomb,
+            p.zeta_regularized,
+        ],
+        &[],
+    )
+}
+
+/// Writes one loop point: branch label first.
+pub fn write_loop_row(
+    out: &mut impl Write,
+    branch: &str,
+    force: f64,
+    coulomb: f64,
+    regularized: f64,
+) -> io::Result<()> {
+    out.write_all(branch.as_bytes())?;
+    out.write_all(b",")?;
+    write_row(out, &[force, coulomb, regularized], &[])
+}
+
 /// Writes numbers then labels as one CSV line.
 fn write_row(out: &mut impl Write, numbers: &[f64], labels: &[&str]) -> io::Result<()> {
     let mut buffer = zmij::Buffer::new();

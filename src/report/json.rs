@@ -56,6 +56,55 @@ impl From<&BeamPoint> for BeamRow {
     }
 }
 
+/// One cycle-sweep row.
+#[derive(Serialize)]
+pub struct CycleRow {
+    #[serde(rename = "Fa_N")]
+    amplitude: f64,
+    #[serde(rename = "D_coulomb_Nmm")]
+    d_coulomb: f64,
+    #[serde(rename = "D_regularized_Nmm")]
+    d_regularized: f64,
+    zeta_coulomb: f64,
+    zeta_regularized: f64,
+}
+
+impl From<&crate::curves::CyclePoint> for CycleRow {
+    fn from(p: &crate::curves::CyclePoint) -> Self {
+        CycleRow {
+            amplitude: p.amplitude,
+            d_coulomb: p.d_coulomb,
+            d_regularized: p.d_regularized,
+            zeta_coulomb: p.zeta_coulomb,
+            zeta_regularized: p.zeta_regularized,
+        }
+    }
+}
+
+/// One cycle's summary for both laws.
+pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> Value {
+    use crate::model::cycle::{Cycle, Law};
+    let law = |law: Law| {
+        let c = Cycle::new(beams, law, amplitude);
+        serde_json::json!({
+            "onset_N": c.onset(),
+            "w_peak_mm": c.peak_deflection(),
+            "D_Nmm": c.dissipation(),
+            "U_Nmm": c.peak_energy(),
+            "zeta": c.damping_ratio(),
+            "secant_stiffness_N_per_mm": c.secant_stiffness(),
+        })
+    };
+    serde_json::json!({
+        "model": "beam",
+        "preset": preset,
+        "inputs": inputs_object(&Inputs::Beam { structure: beams.params(), force: amplitude.newtons() }),
+        "Fa_N": amplitude.newtons(),
+        "coulomb": law(Law::Coulomb),
+        "regularized": law(Law::Regularized),
+    })
+}
+
 /// One plate sweep row.
 #[derive(Serialize)]
 pub struct PlateRow {

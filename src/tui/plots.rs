@@ -79,6 +79,8 @@ pub fn chart_names(kind: ModelKind) -> &'static [&'static str] {
             "w(L) vs F",
             "X vs F",
             "tau(x) at F",
+            "loop +-F",
+            "D vs F_a",
             "K_T: codes vs physics",
         ],
         ModelKind::Plate => &[
@@ -151,6 +153,26 @@ fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64) -> f64 {
 
 fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
     Samples::new(from, to, SAMPLES, spacing, ("from", "to")).ok()
+}
+
+/// Index of the K_T table among each model's charts.
+const BEAM_STIFFNESS_TABLE: usize = 5;
+const PLATE_STIFFNESS_TABLE: usize = 3;
+/// Index of the hysteresis-loop and dissipation charts of the twin beams.
+const BEAM_LOOP: usize = 3;
+const BEAM_DISSIPATION: usize = 4;
+
+/// The closed hysteresis loop of a cycle: unloading from +F_a, then reloading from -F_a.
+fn loop_series(cycle: &crate::model::cycle::Cycle) -> Series {
+    let fa = cycle.amplitude();
+    let n = SAMPLES as usize / 2;
+    let down = (0..=n)
+        .map(|i| fa - 2.0 * fa * i as f64 / n as f64)
+        .map(|f| (f, cycle.unloading(f)));
+    let up = (1..=n)
+        .map(|i| -fa + 2.0 * fa * i as f64 / n as f64)
+        .map(|f| (f, cycle.reloading(f)));
+    down.chain(up).collect()
 }
 
 /// Contact elements assumed by the K_T table: L/100, a typical benchmark mesh (the command line's
@@ -250,7 +272,11 @@ pub fn build(
     numeric: Option<&NumericPoints>,
     measured: Option<&[Measurement]>,
 ) -> Plot {
-    if chart == 3 {
+    let table = match model {
+        Model::Beam { .. } => BEAM_STIFFNESS_TABLE,
+        Model::Plate(_) => PLATE_STIFFNESS_TABLE,
+    };
+    if chart == table {
         return stiffness_table(model);
     }
     let measured = measured.filter(|_| matches!(model, Model::Beam { .. }) && chart == 0);
@@ -330,6 +356,55 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> O
                     line("K_T*5", stiff),
                     line("K_T", regularized),
                     cursor(f, [0.0, p.length]),
+                ],
+            })
+        }
+        BEAM_LOOP => {
+            use crate::model::cycle::{Cycle, Law};
+            let (coulomb, regularized) = (
+                Cycle::new(beams, Law::Coulomb, force),
+                Cycle::new(beams, Law::Regularized, force),
+            );
+            let top = 1.05
+                * coulomb
+                    .peak_deflection()
+                    .max(regularized.peak_deflection())
+                    .max(f64::MIN_POSITIVE);
+            let span = f.max(1e-9);
+            Some(Plot {
+                table: None,
+                title: format!(
+                    "Loop +-{} N: D = {} (Coulomb), {} N mm",
+                    number(f),
+                    number_with(coulomb.dissipation(), 4),
+                    number_with(regularized.dissipation(), 4)
+                ),
+                x: linear_axis("F (N)", -span, span),
+                y: linear_axis("w(L) (mm)", -top, top),
+                series: vec![
+                    line("Coulomb", loop_series(&coulomb)),
+                    line("regularized", loop_series(&regularized)),
+                ],
+            })
+        }
+        BEAM_DISSIPATION => {
+            let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
+            let (coulomb, regularized) = curves::dissipation_vs_amplitude(beams, amplitudes);
+            let top = 1.05 * max_y([&coulomb, &regularized]).max(f64::MIN_POSITIVE);
+            let zeta = curves::cycle_point(beams, force);
+            Some(Plot {
+                table: None,
+                title: format!(
+                    "D per cycle vs F_a; zeta at F: {} (C), {} (reg.)",
+                    number_with(zeta.zeta_coulomb, 3),
+                    number_with(zeta.zeta_regularized, 3)
+                ),
+                x: linear_axis("F_a (N)", 0.0, f_max),
+                y: linear_axis("D (N mm)", 0.0, top),
+                series: vec![
+                    line("Coulomb", coulomb),
+                    line("regularized", regularized),
+                    cursor(f, [0.0, top]),
                 ],
             })
         }
@@ -467,7 +542,22 @@ pub fn numeric_points(model: &Model, chart: usize) -> Result<Option<NumericPoint
             }
             Ok(Some(NumericPoints { points }))
         }
-        Model::Beam { beams, force } => {
+        Model::Beam { beams, force } if chart == BEAM_LOOP => {
+            // The FE model driven round the same cycle: its own slider histories, no Masing rule.
+            let fa = force.newtons();
+            let mut fe = TwinBeamsFe::new(beams.params(), density);
+            fe.load_to(fa, 4)?;
+            let mut points = Vec::with_capacity(2 * OVERLAY_POINTS);
+            for (from, sign) in [(fa, -1.0), (-fa, 1.0)] {
+                for i in 1..=OVERLAY_POINTS {
+                    let f = from + sign * 2.0 * fa * i as f64 / OVERLAY_POINTS as f64;
+                    fe.load_to(f, 2)?;
+                    points.push((f, fe.tip_deflection()));
+                }
+            }
+            Ok(Some(NumericPoints { points }))
+        }
+        Model::Beam { beams, force } if chart == 2 => {
             let mut fe = TwinBeamsFe::new(beams.params(), density);
             fe.load_to(force.newtons(), 4)?;
             let samples = fe.interface();
@@ -496,7 +586,7 @@ pub fn numeric_points(model: &Model, chart: usize) -> Result<Option<NumericPoint
             }
             Ok(Some(NumericPoints { points }))
         }
-        Model::Plate(_) => Ok(None),
+        Model::Beam { .. } | Model::Plate(_) => Ok(None),
     }
 }
 

@@ -1,0 +1,161 @@
+//! Cyclic loading of the twin beams: Masing branches and dissipation against the independent
+//! finite-element solver driven through the same cycle, the Coulomb closed form derived from friction
+//! work, the K_T -> infinity limit, and the amplitude exponents.
+
+use microslip::model::cycle::{Cycle, Law};
+use microslip::numeric::{MeshDensity, TwinBeamsFe};
+use microslip::{TipForce, TwinBeams, TwinBeamsParams};
+
+fn beams(kt: f64) -> TwinBeams {
+    TwinBeams::new(TwinBeamsParams {
+        tangential_stiffness: kt,
+        ..TwinBeamsParams::PAPER
+    })
+    .unwrap()
+}
+
+fn cycle(kt: f64, law: Law, amplitude: f64) -> Cycle {
+    Cycle::new(&beams(kt), law, TipForce::new(amplitude).unwrap())
+}
+
+#[test]
+fn finite_elements_driven_round_the_cycle_follow_the_masing_branches() {
+    // The FE model never uses Masing's rule: each Gauss point keeps its own slider history.
+    for (kt, amplitude) in [(120.0, 150.0), (600.0, 100.0), (600.0, 300.0)] {
+        let params = TwinBeamsParams {
+            tangential_stiffness: kt,
+            ..TwinBeamsParams::PAPER
+        };
+        let exact = cycle(kt, Law::Regularized, amplitude);
+        let mut fe = TwinBeamsFe::new(params, MeshDensity::with_elements(100));
+        fe.load_to(amplitude, 8).unwrap();
+        let steps = 80;
+        let mut loop_points = vec![(amplitude, fe.tip_deflection())];
+        for (from, branch) in [(amplitude, -1.0), (-amplitude, 1.0)] {
+            for i in 1..=steps {
+                let f = from + branch * 2.0 * amplitude * f64::from(i) / f64::from(steps);
+                fe.load_to(f, 1).unwrap();
+                let w = fe.tip_deflection();
+                let expected = if branch < 0.0 {
+                    exact.unloading(f)
+                } else {
+                    exact.reloading(f)
+                };
+                assert!(
+                    (w - expected).abs() < 1e-5 * exact.peak_deflection(),
+                    "K_T={kt} F_a={amplitude} F={f}: {w} vs {expected}"
+                );
+                loop_points.push((f, w));
+            }
+        }
+        // Energy through the two tips: 2 x loop area, trapezoidal rule over the FE points.
+        let area: f64 = loop_points
+            .windows(2)
+            .map(|p| 0.5 * (p[0].0 + p[1].0) * (p[1].1 - p[0].1))
+            .sum();
+        let d = exact.dissipation();
+        assert!(
+            (2.0 * area / d - 1.0).abs() < 2e-3,
+            "K_T={kt} F_a={amplitude}: FE {} vs {d}",
+            2.0 * area
+        );
+    }
+}
+
+#[test]
+fn dissipation_formula_equals_the_area_of_its_own_loop() {
+    // (C3) is an algebraic shortcut; integrate the branches directly instead (Simpson, 20000 steps).
+    for (law, amplitude) in [
+        (Law::Regularized, 95.0),
+        (Law::Regularized, 400.0),
+        (Law::Coulomb, 150.0),
+    ] {
+        let c = cycle(120.0, law, amplitude);
+        let n = 20_000;
+        let h = 2.0 * amplitude / f64::from(n);
+        let gap = |f: f64| c.unloading(f) - c.reloading(f);
+        let simpson: f64 = (0..=n)
+            .map(|i| {
+                let weight = if i == 0 || i == n {
+                    1.0
+                } else if i % 2 == 1 {
+                    4.0
+                } else {
+                    2.0
+                };
+                weight * gap(-amplitude + h * f64::from(i))
+            })
+            .sum::<f64>()
+            * h
+            / 3.0;
+        let d = c.dissipation();
+        assert!(
+            (2.0 * simpson / d - 1.0).abs() < 1e-6,
+            "{law:?} F_a={amplitude}: {} vs {d}",
+            2.0 * simpson
+        );
+    }
+}
+
+#[test]
+fn stiff_interface_dissipates_like_coulomb() {
+    for amplitude in [100.0, 200.0, 800.0] {
+        let coulomb = cycle(1.0, Law::Coulomb, amplitude).dissipation();
+        let gaps: Vec<f64> = [1e4, 1e6, 1e8]
+            .iter()
+            .map(|&kt| (cycle(kt, Law::Regularized, amplitude).dissipation() / coulomb - 1.0).abs())
+            .collect();
+        assert!(
+            gaps[0] > gaps[1] && gaps[1] > gaps[2],
+            "F_a={amplitude}: {gaps:?}"
+        );
+        assert!(gaps[2] < 1e-3, "F_a={amplitude}: {gaps:?}");
+    }
+}
+
+#[test]
+fn amplitude_exponents() {
+    let b = beams(120.0);
+    let f1 = b.first_macroslip_force();
+    let d = |fa: f64| Cycle::new(&b, Law::Regularized, TipForce::new(fa).unwrap()).dissipation();
+    // Just above F_1: D ~ (F_a - F_1)^(3/2) (docs/theory.md, (C6)).
+    let slope = (d(f1 * (1.0 + 1e-5)) / d(f1 * (1.0 + 1e-6))).log10();
+    assert!(
+        (slope - 1.5).abs() < 0.05,
+        "small-amplitude exponent {slope}"
+    );
+    // Far above: D ~ F_a - F_thre, like Coulomb (the whole interface slides at mu P each cycle).
+    let slope = (d(8e4) / d(8e3)).log10();
+    let coulomb_slope = ((8e4 - 80.0) / (8e3 - 80.0_f64)).log10();
+    assert!(
+        (slope - coulomb_slope).abs() < 2e-3,
+        "large-amplitude exponent {slope} vs {coulomb_slope}"
+    );
+    // D grows with the amplitude; the secant stiffness falls.
+    let mut last = (0.0, f64::INFINITY);
+    for i in 1..200 {
+        let c = Cycle::new(
+            &b,
+            Law::Regularized,
+            TipForce::new(2.0 * f64::from(i)).unwrap(),
+        );
+        let now = (c.dissipation(), c.secant_stiffness());
+        assert!(
+            now.0 >= last.0 && now.1 <= last.1 * (1.0 + 1e-12),
+            "F_a={}",
+            2 * i
+        );
+        last = now;
+    }
+}
+
+#[test]
+fn coulomb_cycle_sticks_below_threshold_and_slides_linearly_above() {
+    assert_eq!(cycle(600.0, Law::Coulomb, 80.0).dissipation(), 0.0);
+    let (d1, d2) = (
+        cycle(600.0, Law::Coulomb, 100.0).dissipation(),
+        cycle(600.0, Law::Coulomb, 120.0).dissipation(),
+    );
+    // Linear in F_a - F_thre: D(120) / D(100) = 40 / 20.
+    assert!((d2 / d1 - 2.0).abs() < 1e-12);
+}
