@@ -150,6 +150,33 @@ fn amplitude_exponents() {
 }
 
 #[test]
+fn coulomb_damping_peaks_at_2_over_3_pi_at_one_and_a_half_times_the_threshold() {
+    // zeta = 6 (r - 1) / (pi r (4 r - 3)), r = F_a / F_thre (docs/theory.md, (C6)), for any beam.
+    for params in [
+        TwinBeamsParams::PAPER,
+        TwinBeamsParams {
+            length: 500.0,
+            half_height: 3.0,
+            friction: 0.7,
+            ..TwinBeamsParams::PAPER
+        },
+    ] {
+        let b = TwinBeams::new(params).unwrap();
+        let ft = b.threshold_force();
+        let zeta =
+            |r: f64| Cycle::new(&b, Law::Coulomb, TipForce::new(r * ft).unwrap()).damping_ratio();
+        let peak = 2.0 / (3.0 * std::f64::consts::PI);
+        assert!((zeta(1.5) - peak).abs() < 1e-12);
+        assert!(zeta(1.45) < peak && zeta(1.55) < peak);
+        let r = 4.0;
+        assert!(
+            (zeta(r) - 6.0 * (r - 1.0) / (std::f64::consts::PI * r * (4.0 * r - 3.0))).abs()
+                < 1e-12
+        );
+    }
+}
+
+#[test]
 fn coulomb_cycle_sticks_below_threshold_and_slides_linearly_above() {
     assert_eq!(cycle(600.0, Law::Coulomb, 80.0).dissipation(), 0.0);
     let (d1, d2) = (
