@@ -374,10 +374,10 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> O
             Some(Plot {
                 table: None,
                 title: format!(
-                    "Loop +-{} N: D = {} (Coulomb), {} N mm",
+                    "+-{} N: D = {} (C), {} (reg.) N mm",
                     number(f),
-                    number_with(coulomb.dissipation(), 4),
-                    number_with(regularized.dissipation(), 4)
+                    number_with(coulomb.dissipation(), 3),
+                    number_with(regularized.dissipation(), 3)
                 ),
                 x: linear_axis("F (N)", -span, span),
                 y: linear_axis("w(L) (mm)", -top, top),
