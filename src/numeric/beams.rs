@@ -21,21 +21,12 @@ use super::banded::SymmetricBand;
 use super::elements::{GAUSS, lagrange, quadratic_bar};
 use super::interface::{InterfacePoint, Response};
 use super::mesh::{graded_from_start, ratio_for_smallest};
+use super::newton::{self, Discretized};
 use crate::TwinBeamsParams;
 
 /// Unknowns per node (w, w', u_a, u_b) and per element midside (u_a, u_b).
 const NODE_DOFS: usize = 4;
 const STRIDE: usize = 6;
-/// Newton iterations allowed per load step before the step is cut.
-const MAX_ITERATIONS: usize = 60;
-/// Residual tolerance, relative to the load scale.
-const RESIDUAL_TOLERANCE: f64 = 1e-10;
-/// Residual accepted once the set of sliding points has settled: the linear solve is then exact and
-/// what remains is round-off. Finely graded meshes of stiff interfaces (elements of 1e-5 L next to
-/// the clamp, bending terms 12 E I / l^3) put that floor near 1e-6 of the load scale; this bound
-/// only guards against a pathological solve.
-pub(crate) const ROUND_OFF_TOLERANCE: f64 = 1e-4;
-
 /// Why a numerical solve failed.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum NumericError {
@@ -305,81 +296,10 @@ impl TwinBeamsFe {
         (residual, tangent)
     }
 
-    /// Newton iterations at one load level from the current state; commits the history on success.
-    fn solve_step(&mut self, force: f64) -> Result<(), NumericError> {
-        let p = &self.params;
-        let load_scale = 2.0 * force.abs() + p.width * p.friction * p.pressure * p.length;
-        let mut displacement = self.displacement.clone();
-        let mut previous_set: Option<Vec<bool>> = None;
-        let mut previous_norm = f64::INFINITY;
-        for _ in 0..MAX_ITERATIONS {
-            let responses = self.responses(&displacement);
-            let (residual, tangent) = self.residual_and_tangent(&displacement, force, &responses);
-            let norm = residual.iter().map(|r| r * r).sum::<f64>().sqrt();
-            let sliding: Vec<bool> = responses.iter().map(|r| r.sliding).collect();
-            // The system is linear for a fixed set of sliding points, so the Newton step taken with
-            // that set is exact: an unchanged set means convergence (up to round-off, which the loose
-            // residual check bounds).
-            let same_set = previous_set.as_ref() == Some(&sliding);
-            if norm <= RESIDUAL_TOLERANCE * load_scale
-                || (same_set
-                    && norm > 0.5 * previous_norm
-                    && norm <= ROUND_OFF_TOLERANCE * load_scale)
-            {
-                for (point, response) in self.points.iter_mut().zip(&responses) {
-                    point.plastic_slip = response.plastic_slip;
-                }
-                self.displacement = displacement;
-                self.force = force;
-                self.converged = responses;
-                return Ok(());
-            }
-            previous_set = Some(sliding);
-            previous_norm = norm;
-            let rhs: Vec<f64> = residual.iter().map(|r| -r).collect();
-            let step = tangent
-                .solve(&rhs)
-                .map_err(|e| NumericError::Singular(e.row))?;
-            for (d, s) in displacement.iter_mut().zip(step) {
-                *d += s;
-            }
-        }
-        Err(NumericError::NoConvergence {
-            load: force,
-            cuts: 0,
-        })
-    }
-
     /// Moves the tip force from its current value to `force` (N, either sign) in `steps` equal
     /// increments, halving an increment whose Newton iterations fail (up to 12 times).
     pub fn load_to(&mut self, force: f64, steps: usize) -> Result<(), NumericError> {
-        if !force.is_finite() {
-            return Err(NumericError::BadLoad(force));
-        }
-        let start = self.force;
-        let steps = steps.max(1);
-        for i in 1..=steps {
-            let target = start + (force - start) * i as f64 / steps as f64;
-            self.step_with_cuts(target, 12)?;
-        }
-        Ok(())
-    }
-
-    fn step_with_cuts(&mut self, target: f64, cuts_left: u32) -> Result<(), NumericError> {
-        let saved = (self.displacement.clone(), self.points.clone(), self.force);
-        match self.solve_step(target) {
-            Ok(()) => Ok(()),
-            Err(NumericError::NoConvergence { .. }) if cuts_left > 0 => {
-                (self.displacement, self.points, self.force) = saved;
-                let middle = 0.5 * (self.force + target);
-                self.step_with_cuts(middle, cuts_left - 1)?;
-                self.step_with_cuts(target, cuts_left - 1)
-            }
-            Err(NumericError::NoConvergence { load, .. }) => {
-                Err(NumericError::NoConvergence { load, cuts: 12 })
-            }
-            Err(other) => Err(other),
-        }
+        newton::load_to(self, force, steps)
     }
 
     /// The current tip force (N).
@@ -476,6 +396,42 @@ impl TwinBeamsFe {
             }
         }
         0.5 * (lo + hi)
+    }
+}
+
+impl Discretized for TwinBeamsFe {
+    const RESIDUAL_TOLERANCE: f64 = 1e-10;
+
+    fn load(&self) -> f64 {
+        self.force
+    }
+
+    fn displacement(&self) -> &[f64] {
+        &self.displacement
+    }
+
+    fn load_scale(&self, force: f64) -> f64 {
+        let p = &self.params;
+        2.0 * force.abs() + p.width * p.friction * p.pressure * p.length
+    }
+
+    fn linearize(
+        &self,
+        displacement: &[f64],
+        force: f64,
+    ) -> (Vec<f64>, SymmetricBand, Vec<Response>) {
+        let responses = self.responses(displacement);
+        let (residual, tangent) = self.residual_and_tangent(displacement, force, &responses);
+        (residual, tangent, responses)
+    }
+
+    fn commit(&mut self, displacement: Vec<f64>, responses: Vec<Response>, force: f64) {
+        for (point, response) in self.points.iter_mut().zip(&responses) {
+            point.plastic_slip = response.plastic_slip;
+        }
+        self.displacement = displacement;
+        self.force = force;
+        self.converged = responses;
     }
 }
 

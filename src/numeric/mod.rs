@@ -6,6 +6,7 @@ pub mod beams;
 pub mod elements;
 pub mod interface;
 pub mod mesh;
+mod newton;
 pub mod plate;
 
 pub use beams::{InterfaceSample, MeshDensity, NumericError, TwinBeamsFe};

@@ -12,14 +12,12 @@
 //! towards the free edge, where the slip zone and the boundary layer sit.
 
 use super::banded::SymmetricBand;
-use super::beams::{MeshDensity, NumericError, ROUND_OFF_TOLERANCE};
+use super::beams::{MeshDensity, NumericError};
 use super::elements::{GAUSS, lagrange, quadratic_bar};
 use super::interface::{InterfacePoint, Response};
 use super::mesh::{graded_towards_end, ratio_for_smallest};
+use super::newton::{self, Discretized};
 use crate::PlateParams;
-
-const MAX_ITERATIONS: usize = 60;
-const RESIDUAL_TOLERANCE: f64 = 1e-11;
 
 /// The squeezed plate discretized, with its current pressure and interface history.
 #[derive(Debug, Clone)]
@@ -96,106 +94,11 @@ impl PlateFe {
             .collect()
     }
 
-    fn solve_step(&mut self, pressure: f64) -> Result<(), NumericError> {
-        let p = &self.params;
-        let edge_force = p.thickness * p.poisson * pressure / (1.0 - p.poisson);
-        let load_scale =
-            edge_force.abs() + p.friction * pressure.abs() * p.half_length + f64::MIN_POSITIVE;
-        let last = self.displacement.len() - 1;
-        let mut displacement = self.displacement.clone();
-        let mut previous_set: Option<Vec<bool>> = None;
-        let mut previous_norm = f64::INFINITY;
-        for _ in 0..MAX_ITERATIONS {
-            let responses = self.responses(&displacement, pressure);
-            let sliding: Vec<bool> = responses.iter().map(|r| r.sliding).collect();
-            let same_set = previous_set.as_ref() == Some(&sliding);
-            let mut residual = self.stiffness.mul_accurate(&displacement);
-            let mut tangent = self.stiffness.clone();
-            for e in 0..self.nodes.len() - 1 {
-                let l = self.nodes[e + 1] - self.nodes[e];
-                for (g, &(r, weight)) in GAUSS.iter().enumerate() {
-                    let response = responses[e * GAUSS.len() + g];
-                    let n = lagrange(r);
-                    for i in 0..3 {
-                        residual[2 * e + i] += weight * l * response.stress * n[i];
-                        for j in 0..=i {
-                            tangent.add(
-                                2 * e + i,
-                                2 * e + j,
-                                weight * l * response.tangent * n[i] * n[j],
-                            );
-                        }
-                    }
-                }
-            }
-            residual[last] -= edge_force;
-            residual[0] = 0.0;
-            tangent.fix(0);
-            let norm = residual.iter().map(|r| r * r).sum::<f64>().sqrt();
-            // Linear for a fixed sliding set: an unchanged set means the last step was exact.
-            if norm <= RESIDUAL_TOLERANCE * load_scale
-                || (same_set
-                    && norm > 0.5 * previous_norm
-                    && norm <= ROUND_OFF_TOLERANCE * load_scale)
-            {
-                for (point, response) in self.points.iter_mut().zip(&responses) {
-                    point.plastic_slip = response.plastic_slip;
-                }
-                self.displacement = displacement;
-                self.pressure = pressure;
-                self.sliding = responses.iter().map(|r| r.sliding).collect();
-                return Ok(());
-            }
-            previous_set = Some(sliding);
-            previous_norm = norm;
-            let rhs: Vec<f64> = residual.iter().map(|r| -r).collect();
-            let step = tangent
-                .solve(&rhs)
-                .map_err(|e| NumericError::Singular(e.row))?;
-            for (d, s) in displacement.iter_mut().zip(step) {
-                *d += s;
-            }
-        }
-        Err(NumericError::NoConvergence {
-            load: pressure,
-            cuts: 0,
-        })
-    }
-
     /// Moves the applied pressure from its current value to `pressure` (MPa) in `steps` increments,
     /// halving an increment whose Newton iterations fail (up to 12 times). The friction strength
     /// mu P follows the pressure.
     pub fn load_to(&mut self, pressure: f64, steps: usize) -> Result<(), NumericError> {
-        if !pressure.is_finite() {
-            return Err(NumericError::BadLoad(pressure));
-        }
-        let start = self.pressure;
-        for i in 1..=steps.max(1) {
-            let target = start + (pressure - start) * i as f64 / steps.max(1) as f64;
-            self.step_with_cuts(target, 12)?;
-        }
-        Ok(())
-    }
-
-    fn step_with_cuts(&mut self, target: f64, cuts_left: u32) -> Result<(), NumericError> {
-        let saved = (
-            self.displacement.clone(),
-            self.points.clone(),
-            self.pressure,
-        );
-        match self.solve_step(target) {
-            Ok(()) => Ok(()),
-            Err(NumericError::NoConvergence { .. }) if cuts_left > 0 => {
-                (self.displacement, self.points, self.pressure) = saved;
-                let middle = 0.5 * (self.pressure + target);
-                self.step_with_cuts(middle, cuts_left - 1)?;
-                self.step_with_cuts(target, cuts_left - 1)
-            }
-            Err(NumericError::NoConvergence { load, .. }) => {
-                Err(NumericError::NoConvergence { load, cuts: 12 })
-            }
-            Err(other) => Err(other),
-        }
+        newton::load_to(self, pressure, steps)
     }
 
     /// The current pressure (MPa).
@@ -242,6 +145,66 @@ impl PlateFe {
             }
         }
         0.5 * (lo + hi)
+    }
+}
+
+impl Discretized for PlateFe {
+    const RESIDUAL_TOLERANCE: f64 = 1e-11;
+
+    fn load(&self) -> f64 {
+        self.pressure
+    }
+
+    fn displacement(&self) -> &[f64] {
+        &self.displacement
+    }
+
+    fn load_scale(&self, pressure: f64) -> f64 {
+        let p = &self.params;
+        let edge_force = p.thickness * p.poisson * pressure / (1.0 - p.poisson);
+        edge_force.abs() + p.friction * pressure.abs() * p.half_length + f64::MIN_POSITIVE
+    }
+
+    fn linearize(
+        &self,
+        displacement: &[f64],
+        pressure: f64,
+    ) -> (Vec<f64>, SymmetricBand, Vec<Response>) {
+        let p = &self.params;
+        let responses = self.responses(displacement, pressure);
+        let mut residual = self.stiffness.mul_accurate(displacement);
+        let mut tangent = self.stiffness.clone();
+        for e in 0..self.nodes.len() - 1 {
+            let l = self.nodes[e + 1] - self.nodes[e];
+            for (g, &(r, weight)) in GAUSS.iter().enumerate() {
+                let response = responses[e * GAUSS.len() + g];
+                let n = lagrange(r);
+                for i in 0..3 {
+                    residual[2 * e + i] += weight * l * response.stress * n[i];
+                    for j in 0..=i {
+                        tangent.add(
+                            2 * e + i,
+                            2 * e + j,
+                            weight * l * response.tangent * n[i] * n[j],
+                        );
+                    }
+                }
+            }
+        }
+        let last = residual.len() - 1;
+        residual[last] -= p.thickness * p.poisson * pressure / (1.0 - p.poisson);
+        residual[0] = 0.0;
+        tangent.fix(0);
+        (residual, tangent, responses)
+    }
+
+    fn commit(&mut self, displacement: Vec<f64>, responses: Vec<Response>, pressure: f64) {
+        for (point, response) in self.points.iter_mut().zip(&responses) {
+            point.plastic_slip = response.plastic_slip;
+        }
+        self.displacement = displacement;
+        self.pressure = pressure;
+        self.sliding = responses.iter().map(|r| r.sliding).collect();
     }
 }
 

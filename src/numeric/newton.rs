@@ -1,0 +1,119 @@
+//! Load stepping and Newton iterations, shared by both finite-element models.
+//!
+//! Each model only says how to linearize itself at a trial displacement (residual, consistent
+//! tangent, interface responses) and how to commit a converged state; the iteration, its
+//! convergence test and the step cutting live here once.
+
+use super::banded::SymmetricBand;
+use super::beams::NumericError;
+use super::interface::Response;
+
+/// Newton iterations allowed per load step before the step is cut.
+const MAX_ITERATIONS: usize = 60;
+/// Residual accepted once the set of sliding points has settled and the residual stopped falling:
+/// the linear solve is then exact and what remains is round-off (near 1e-6 of the load scale for
+/// finely graded meshes of stiff interfaces, whose bending terms 12 E I / l^3 are huge); this bound
+/// only guards against a pathological solve.
+const ROUND_OFF_TOLERANCE: f64 = 1e-4;
+/// Times a failing load step may be halved.
+const MAX_CUTS: u32 = 12;
+
+/// A discretized model driven by one load parameter (tip force, pressure).
+pub(crate) trait Discretized {
+    /// Residual norm, relative to [`Discretized::load_scale`], that counts as converged.
+    const RESIDUAL_TOLERANCE: f64;
+
+    /// The committed load.
+    fn load(&self) -> f64;
+
+    /// The committed displacement vector.
+    fn displacement(&self) -> &[f64];
+
+    /// A force scale of the problem at `load`, for the relative residual test.
+    fn load_scale(&self, load: f64) -> f64;
+
+    /// Residual (internal minus external, zero on fixed rows), consistent tangent and interface
+    /// responses at a trial displacement, from the committed interface history.
+    fn linearize(
+        &self,
+        displacement: &[f64],
+        load: f64,
+    ) -> (Vec<f64>, SymmetricBand, Vec<Response>);
+
+    /// Adopts a converged state and its interface history.
+    fn commit(&mut self, displacement: Vec<f64>, responses: Vec<Response>, load: f64);
+}
+
+/// Moves the load from its committed value to `target` in `steps` equal increments, halving an
+/// increment whose Newton iterations fail (up to 12 times).
+pub(crate) fn load_to<M: Discretized>(
+    model: &mut M,
+    target: f64,
+    steps: usize,
+) -> Result<(), NumericError> {
+    if !target.is_finite() {
+        return Err(NumericError::BadLoad(target));
+    }
+    let start = model.load();
+    let steps = steps.max(1);
+    for i in 1..=steps {
+        step_with_cuts(
+            model,
+            start + (target - start) * i as f64 / steps as f64,
+            MAX_CUTS,
+        )?;
+    }
+    Ok(())
+}
+
+/// One load step; on failure (nothing is committed then) two half steps.
+fn step_with_cuts<M: Discretized>(
+    model: &mut M,
+    target: f64,
+    cuts_left: u32,
+) -> Result<(), NumericError> {
+    match solve(model, target) {
+        Err(NumericError::NoConvergence { .. }) if cuts_left > 0 => {
+            let middle = 0.5 * (model.load() + target);
+            step_with_cuts(model, middle, cuts_left - 1)?;
+            step_with_cuts(model, target, cuts_left - 1)
+        }
+        Err(NumericError::NoConvergence { load, .. }) => Err(NumericError::NoConvergence {
+            load,
+            cuts: MAX_CUTS,
+        }),
+        other => other,
+    }
+}
+
+/// Newton iterations at one load level from the committed state; commits only on convergence.
+fn solve<M: Discretized>(model: &mut M, load: f64) -> Result<(), NumericError> {
+    let scale = model.load_scale(load);
+    let mut displacement = model.displacement().to_vec();
+    let mut previous_set: Option<Vec<bool>> = None;
+    let mut previous_norm = f64::INFINITY;
+    for _ in 0..MAX_ITERATIONS {
+        let (residual, tangent, responses) = model.linearize(&displacement, load);
+        let norm = residual.iter().map(|r| r * r).sum::<f64>().sqrt();
+        let sliding: Vec<bool> = responses.iter().map(|r| r.sliding).collect();
+        // The system is linear for a fixed set of sliding points, so the Newton step taken with that
+        // set is exact: an unchanged set whose residual stopped falling has converged to round-off.
+        let same_set = previous_set.as_ref() == Some(&sliding);
+        if norm <= M::RESIDUAL_TOLERANCE * scale
+            || (same_set && norm > 0.5 * previous_norm && norm <= ROUND_OFF_TOLERANCE * scale)
+        {
+            model.commit(displacement, responses, load);
+            return Ok(());
+        }
+        previous_set = Some(sliding);
+        previous_norm = norm;
+        let rhs: Vec<f64> = residual.iter().map(|r| -r).collect();
+        let step = tangent
+            .solve(&rhs)
+            .map_err(|e| NumericError::Singular(e.row))?;
+        for (d, s) in displacement.iter_mut().zip(step) {
+            *d += s;
+        }
+    }
+    Err(NumericError::NoConvergence { load, cuts: 0 })
+}
