@@ -396,14 +396,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             let (_, model) = load(inputs, ModelKind::Beam)?;
             if let Model::Beam { beams, .. } = model {
                 let rows = curves::beam_force_sweep(beams, samples);
-                match format {
-                    TableFormat::Csv => {
-                        write_csv(out, csv::BEAM_HEADER, rows, csv::write_beam_row)?
-                    }
-                    TableFormat::Json => {
-                        write_json_rows(out, rows.map(|r| json::BeamRow::from(&r)))?
-                    }
-                }
+                write_table(
+                    out,
+                    *format,
+                    csv::BEAM_HEADER,
+                    rows,
+                    csv::write_beam_row,
+                    |r| json::BeamRow::from(r),
+                )?;
             }
         }
         Some(Command::Sweep(SweepCommand::Plate {
@@ -423,14 +423,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             let (_, model) = load(inputs, ModelKind::Plate)?;
             if let Model::Plate(plate) = model {
                 let rows = curves::plate_kt_sweep(plate, samples);
-                match format {
-                    TableFormat::Csv => {
-                        write_csv(out, csv::PLATE_HEADER, rows, csv::write_plate_row)?
-                    }
-                    TableFormat::Json => {
-                        write_json_rows(out, rows.map(|r| json::PlateRow::from(&r)))?
-                    }
-                }
+                write_table(
+                    out,
+                    *format,
+                    csv::PLATE_HEADER,
+                    rows,
+                    csv::write_plate_row,
+                    |r| json::PlateRow::from(r),
+                )?;
             }
         }
         Some(Command::Fit(FitCommand::Beam {
@@ -463,14 +463,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             let (_, model) = load(inputs, ModelKind::Beam)?;
             if let Model::Beam { beams, .. } = model {
                 let rows = curves::cycle_sweep(beams, samples);
-                match format {
-                    TableFormat::Csv => {
-                        write_csv(out, csv::CYCLE_HEADER, rows, csv::write_cycle_row)?
-                    }
-                    TableFormat::Json => {
-                        write_json_rows(out, rows.map(|r| json::CycleRow::from(&r)))?
-                    }
-                }
+                write_table(
+                    out,
+                    *format,
+                    csv::CYCLE_HEADER,
+                    rows,
+                    csv::write_cycle_row,
+                    |r| json::CycleRow::from(r),
+                )?;
             }
         }
         Some(Command::Presets) => list_presets(out)?,
@@ -551,6 +551,21 @@ fn write_csv<W: Write, R>(
         write_row(out, &row)?;
     }
     Ok(())
+}
+
+/// A sweep's rows as CSV (with `header`) or as a JSON array, streamed either way.
+fn write_table<W: Write, R, J: serde::Serialize>(
+    out: &mut W,
+    format: TableFormat,
+    header: &str,
+    rows: impl Iterator<Item = R>,
+    write_row: impl Fn(&mut W, &R) -> io::Result<()>,
+    to_json: impl Fn(&R) -> J,
+) -> Result<(), CliError> {
+    match format {
+        TableFormat::Csv => write_csv(out, header, rows, write_row),
+        TableFormat::Json => write_json_rows(out, rows.map(|r| to_json(&r))),
+    }
 }
 
 /// Streams a JSON array, one object per line.
@@ -727,30 +742,15 @@ fn run_kt(
 ) -> Result<(), CliError> {
     use crate::model::validate::{poisson_ratio, positive};
     let (name, model) = load_any(inputs, ModelKind::Beam)?;
-    let (length, mu, pressure, modulus, current, model_nu) = match &model {
-        Model::Beam { beams, .. } => {
-            let p = beams.params();
-            (
-                p.length,
-                p.friction,
-                p.pressure,
-                p.youngs_modulus,
-                p.tangential_stiffness,
-                None,
-            )
-        }
-        Model::Plate(plate) => {
-            let p = plate.params();
-            (
-                p.half_length,
-                p.friction,
-                p.pressure,
-                p.youngs_modulus,
-                p.tangential_stiffness,
-                Some(p.poisson),
-            )
-        }
-    };
+    let data = model.interface();
+    let (length, mu, pressure, modulus, current, model_nu) = (
+        data.length,
+        data.friction,
+        data.pressure,
+        data.modulus,
+        data.stiffness,
+        data.poisson,
+    );
     let element = match element {
         Some(e) => positive("--element-size", e, "must be > 0 and finite (mm)")?,
         None => length / 100.0,

@@ -125,6 +125,53 @@ pub enum Model {
     Plate(SqueezedPlate),
 }
 
+/// The interface data common to both models: what the K_T comparisons need.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InterfaceData {
+    /// Length L (beam length or plate half-length) (mm).
+    pub length: f64,
+    /// Friction coefficient (-).
+    pub friction: f64,
+    /// Contact pressure (MPa).
+    pub pressure: f64,
+    /// Young's modulus (MPa).
+    pub modulus: f64,
+    /// Tangential stiffness (MPa/mm).
+    pub stiffness: f64,
+    /// Poisson ratio, where the model has one.
+    pub poisson: Option<f64>,
+}
+
+impl Model {
+    /// The model's interface data.
+    pub fn interface(&self) -> InterfaceData {
+        match self {
+            Model::Beam { beams, .. } => {
+                let p = beams.params();
+                InterfaceData {
+                    length: p.length,
+                    friction: p.friction,
+                    pressure: p.pressure,
+                    modulus: p.youngs_modulus,
+                    stiffness: p.tangential_stiffness,
+                    poisson: None,
+                }
+            }
+            Model::Plate(plate) => {
+                let p = plate.params();
+                InterfaceData {
+                    length: p.half_length,
+                    friction: p.friction,
+                    pressure: p.pressure,
+                    modulus: p.youngs_modulus,
+                    stiffness: p.tangential_stiffness,
+                    poisson: Some(p.poisson),
+                }
+            }
+        }
+    }
+}
+
 impl Inputs {
     /// The paper's data set for `kind` (beams at F = 100 N).
     pub fn paper(kind: ModelKind) -> Inputs {

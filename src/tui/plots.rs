@@ -182,28 +182,14 @@ const TABLE_ELEMENTS_PER_LENGTH: f64 = 100.0;
 /// The K_T comparison as a narrow table (fits the 44-column chart pane of an 80x24 screen).
 fn stiffness_table(model: &Model) -> Plot {
     use crate::model::code_defaults::{CODE_DEFAULTS, Confirmation, DefaultRule};
-    let (length, mu, pressure, modulus, kt) = match model {
-        Model::Beam { beams, .. } => {
-            let p = beams.params();
-            (
-                p.length,
-                p.friction,
-                p.pressure,
-                p.youngs_modulus,
-                p.tangential_stiffness,
-            )
-        }
-        Model::Plate(plate) => {
-            let p = plate.params();
-            (
-                p.half_length,
-                p.friction,
-                p.pressure,
-                p.youngs_modulus,
-                p.tangential_stiffness,
-            )
-        }
-    };
+    let data = model.interface();
+    let (length, mu, pressure, modulus, kt) = (
+        data.length,
+        data.friction,
+        data.pressure,
+        data.modulus,
+        data.stiffness,
+    );
     let element = length / TABLE_ELEMENTS_PER_LENGTH;
     let rows = curves::stiffness_candidates(kt, mu, pressure, modulus, element, None);
     let short = |source: &str| {
