@@ -3,6 +3,18 @@
 //!
 //! Units everywhere: mm, N, MPa; tangential stiffness K_T in MPa/mm.
 //!
+//! Layout (the shape of `ARCHITECTURE.md`, with four additions, each for a reason):
+//! - `model/` pure physics; beside the planned files, `cycle.rs` (cyclic loading is a closed form of
+//!   the same model) and `code_defaults.rs` (the FE codes' default friction penalties are data about
+//!   K_T, kept next to `stiffness.rs`).
+//! - `numeric/` the independent FE solvers; `newton.rs` holds the load stepping both share.
+//! - `fit/` identification of mu and K_T: an optimisation over the closed form, neither physics nor
+//!   I/O, so a module of its own (it parses data text but never opens files).
+//! - `verify.rs` the only place that calls both the closed forms and the FE solvers.
+//! - `curves.rs`, `preset.rs`, `report/` (text, JSON, CSV), `cli.rs` and `tui/` as planned. Presets are
+//!   parsed from a TOML table rather than serde structs so that every problem of a file can be
+//!   reported with its line, not only the first.
+//!
 //! ```
 //! use microslip::{TipForce, TwinBeams, TwinBeamsParams};
 //! let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
