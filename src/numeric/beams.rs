@@ -23,6 +23,7 @@ use super::interface::{InterfacePoint, Response};
 use super::mesh::{graded_from_start, ratio_for_smallest};
 use super::newton::{self, Discretized};
 use crate::TwinBeamsParams;
+use crate::model::solve::find_root_in_bracket;
 
 /// Unknowns per node (w, w', u_a, u_b) and per element midside (u_a, u_b).
 const NODE_DOFS: usize = 4;
@@ -377,25 +378,17 @@ impl TwinBeamsFe {
         // The slip of the last elastic point is below saturation, that of the first sliding one above.
         let saturation =
             self.params.friction * self.params.pressure / self.params.tangential_stiffness;
-        let mut lo = if first == 0 {
+        let lo = if first == 0 {
             0.0
         } else {
             samples[first - 1].x
         };
-        let mut hi = samples[first].x;
+        let hi = samples[first].x;
         let excess = |x: f64| self.slip_at(x).abs() - saturation;
         if excess(lo) > 0.0 {
             return lo;
         }
-        for _ in 0..100 {
-            let mid = 0.5 * (lo + hi);
-            if excess(mid) > 0.0 {
-                hi = mid
-            } else {
-                lo = mid
-            }
-        }
-        0.5 * (lo + hi)
+        find_root_in_bracket(excess, lo, hi)
     }
 }
 

@@ -18,6 +18,7 @@ use super::interface::{InterfacePoint, Response};
 use super::mesh::{graded_towards_end, ratio_for_smallest};
 use super::newton::{self, Discretized};
 use crate::PlateParams;
+use crate::model::solve::find_root_in_bracket;
 
 /// The squeezed plate discretized, with its current pressure and interface history.
 #[derive(Debug, Clone)]
@@ -134,17 +135,12 @@ impl PlateFe {
             self.nodes[e] + GAUSS[g % GAUSS.len()].0 * (self.nodes[e + 1] - self.nodes[e])
         };
         let saturation = self.params.friction * self.pressure / self.params.tangential_stiffness;
-        let mut lo = if first == 0 { 0.0 } else { position(first - 1) };
-        let mut hi = position(first);
-        for _ in 0..100 {
-            let mid = 0.5 * (lo + hi);
-            if self.displacement_at(mid).abs() > saturation {
-                hi = mid
-            } else {
-                lo = mid
-            }
-        }
-        0.5 * (lo + hi)
+        let lo = if first == 0 { 0.0 } else { position(first - 1) };
+        find_root_in_bracket(
+            |x| self.displacement_at(x).abs() - saturation,
+            lo,
+            position(first),
+        )
     }
 }
 
