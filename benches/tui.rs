@@ -66,15 +66,15 @@ fn report_bytes_per_change() {
     );
 }
 
-/// Everything the view recomputes after a parameter change (chart data), per chart, at the view's
-/// sampling density (200 points per curve, whatever the terminal size).
-#[divan::bench(args = [0, 1, 2])]
-fn recompute_beam_view(bencher: Bencher, chart: usize) {
-    let mut app = app("paper-beams");
+/// Nudges the last parameter (F or K_T) up and down on chart `chart` of `preset`: everything the view
+/// recomputes after a parameter change (chart data), at the view's sampling density (200 points per
+/// curve, whatever the terminal size).
+fn recompute(bencher: Bencher, preset_name: &str, chart: usize) {
+    let mut app = app(preset_name);
     for _ in 0..chart {
         app.update(Action::NextChart);
     }
-    app.update(Action::Previous); // select F
+    app.update(Action::Previous);
     let mut up = true;
     bencher.bench_local(|| {
         app.update(if up {
@@ -88,22 +88,13 @@ fn recompute_beam_view(bencher: Bencher, chart: usize) {
 }
 
 #[divan::bench(args = [0, 1, 2])]
+fn recompute_beam_view(bencher: Bencher, chart: usize) {
+    recompute(bencher, "paper-beams", chart);
+}
+
+#[divan::bench(args = [0, 1, 2])]
 fn recompute_plate_view(bencher: Bencher, chart: usize) {
-    let mut app = app("paper-plate");
-    for _ in 0..chart {
-        app.update(Action::NextChart);
-    }
-    app.update(Action::Previous); // select K_T
-    let mut up = true;
-    bencher.bench_local(|| {
-        app.update(if up {
-            Action::Increase
-        } else {
-            Action::Decrease
-        });
-        up = !up;
-        black_box(app.plot().series.len())
-    });
+    recompute(bencher, "paper-plate", chart);
 }
 
 /// Drawing one frame (all panes, chart included) into a 200x60 TestBackend.

@@ -67,6 +67,18 @@ pub struct Estimate {
     pub note: String,
 }
 
+impl Estimate {
+    /// A parameter held at `value` (`--fix`).
+    fn fixed(value: f64) -> Estimate {
+        Estimate {
+            value,
+            std_error: None,
+            status: Status::Fixed,
+            note: "held fixed".into(),
+        }
+    }
+}
+
 /// The outcome of a fit.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FitResult {
@@ -404,12 +416,7 @@ fn summarize(problem: &Problem, theta: &[f64], sse: f64) -> FitResult {
         };
     let mut next = log_errors.into_iter();
     let mu_estimate = match problem.fixed_mu {
-        Some(v) => Estimate {
-            value: v,
-            std_error: None,
-            status: Status::Fixed,
-            note: "held fixed".into(),
-        },
+        Some(v) => Estimate::fixed(v),
         None => {
             let (se, mut status, mut note) = judge(next.next().flatten(), mu, MU_RANGE);
             if beyond == 0 {
@@ -432,12 +439,7 @@ fn summarize(problem: &Problem, theta: &[f64], sse: f64) -> FitResult {
         }
     };
     let kt_estimate = match problem.fixed_kt {
-        Some(v) => Estimate {
-            value: v,
-            std_error: None,
-            status: Status::Fixed,
-            note: "held fixed".into(),
-        },
+        Some(v) => Estimate::fixed(v),
         None => {
             let (se, status, note) = judge(next.next().flatten(), kt, KT_RANGE);
             Estimate {
