@@ -23,6 +23,8 @@
 //! # Ok::<(), microslip::ParamError>(())
 //! ```
 
+#[cfg(feature = "app")]
+#[doc(hidden)]
 pub mod cli;
 pub mod curves;
 pub mod fit;
@@ -30,6 +32,8 @@ pub mod model;
 pub mod numeric;
 pub mod preset;
 pub mod report;
+#[cfg(feature = "app")]
+#[doc(hidden)]
 pub mod tui;
 pub mod verify;
 
