@@ -8,7 +8,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use divan::{Bencher, black_box};
 use microslip::preset;
-use microslip::tui::app::{Action, App, AppOptions};
+use microslip::tui::action::Action;
+use microslip::tui::app::{App, AppOptions};
 use microslip::tui::theme::{Charset, Theme};
 use microslip::tui::ui;
 use ratatui::backend::{CrosstermBackend, TestBackend};

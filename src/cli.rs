@@ -1,7 +1,8 @@
 //! The headless command line: reports, sweeps and presets for scripts and FE benchmarking.
 //!
 //! A thin layer: presets and `--set` come from [`crate::preset`], numbers from [`crate::curves`],
-//! formats from [`crate::report`]. Errors are one line on stderr with exit code 2 (usage or input
+//! formats from [`crate::report`]; this file only parses flags, checks the flags that are not model
+//! parameters, and names flags in error messages. Errors are one line on stderr with exit code 2 (usage or input
 //! problems); `check` exits with 1 when a file has problems. Nothing goes to stdout before the inputs
 //! are known to be valid, so a failed run never leaves half a table behind.
 
@@ -15,10 +16,13 @@ use thiserror::Error;
 use crate::TipForce;
 use crate::curves::{self, RangeError, Spacing};
 use crate::fit::{self, FitError};
-use crate::model::validate::ParamError;
+use crate::model::inputs::{Inputs, Model};
+use crate::model::params::{BeamParam, Domain, ModelKind, ParamError, Unit, parse_number};
 use crate::numeric::{MeshDensity, NumericError};
-use crate::preset::{self, Inputs, Model, ModelKind, Preset, PresetError, PresetSource};
-use crate::report::{self, csv, json, number, text};
+use crate::preset::{self, Preset, PresetError, PresetSource};
+use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
+use crate::report::table::{TableFormat, write_json, write_table};
+use crate::report::{self, json, number, text};
 use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
 
@@ -29,13 +33,12 @@ use crate::verify::{self, Grid};
 #[command(
     name = "microslip",
     version,
-    about,
+    // The doc comment above, not the crate description: the help speaks to users, Cargo.toml to
+    // crates.io.
     long_about = None,
     // A fixed width: help text (and its snapshot) must not depend on the terminal running it.
     term_width = 100,
-    after_help = "Units: mm, N, MPa; K_T in MPa/mm (1 MPa/um = 1000 MPa/mm).\n\
-                  Keys for --set and preset files: beam L b h E P mu KT F; plate L tp E nu mu P KT.\n\
-                  Without a command, microslip opens the terminal UI (keys: press ? inside)."
+    after_help = after_help()
 )]
 pub struct Cli {
     /// What to do (default: the terminal UI).
@@ -50,6 +53,17 @@ pub struct Cli {
     /// Measured twin-beam curve (CSV with columns F_N,w_mm) to show and fit in the terminal UI.
     #[arg(long, value_name = "DATA.csv")]
     pub data: Option<PathBuf>,
+}
+
+/// The closing lines of `--help`: units, and the parameter keys as the model defines them.
+fn after_help() -> String {
+    format!(
+        "Units: mm, N, MPa; K_T in MPa/mm (1 MPa/um = 1000 MPa/mm).\n\
+         Keys for --set and preset files: beam {}; plate {}.\n\
+         Without a command, microslip opens the terminal UI (keys: press ? inside).",
+        ModelKind::Beam.key_list(),
+        ModelKind::Plate.key_list()
+    )
 }
 
 /// Subcommands.
@@ -240,15 +254,6 @@ pub enum ReportFormat {
     Json,
 }
 
-/// Formats of sweeps.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum TableFormat {
-    /// CSV with a header line.
-    Csv,
-    /// JSON array of row objects.
-    Json,
-}
-
 /// Why a command failed.
 #[derive(Debug, Error)]
 pub enum CliError {
@@ -258,9 +263,24 @@ pub enum CliError {
     /// A parameter out of range.
     #[error(transparent)]
     Param(#[from] ParamError),
-    /// A sweep range problem.
-    #[error(transparent)]
-    Range(#[from] RangeError),
+    /// A sweep range problem, with the command's flags for the start, end and number of points.
+    #[error("{}", error.message(*flags))]
+    Range {
+        /// The problem.
+        error: RangeError,
+        /// The flags naming the start, the end and the number of points.
+        flags: [&'static str; 3],
+    },
+    /// A flag that is not a model parameter, out of its range.
+    #[error("invalid {flag} = {value}: {allowed}")]
+    Flag {
+        /// The flag.
+        flag: &'static str,
+        /// The value given.
+        value: f64,
+        /// What is allowed.
+        allowed: String,
+    },
     /// A preset of the other model.
     #[error("preset '{preset}' is a {found} preset; `microslip {wanted}` needs a {wanted} preset")]
     WrongModel {
@@ -392,18 +412,15 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             format,
         })) => {
-            let samples = curves::force_samples(*from, *to, *points)?;
+            let samples =
+                curves::force_samples(*from, *to, *points).map_err(|error| CliError::Range {
+                    error,
+                    flags: ["--from", "--to", "--points"],
+                })?;
             let (_, model) = load(inputs, ModelKind::Beam)?;
             if let Model::Beam { beams, .. } = model {
                 let rows = curves::beam_force_sweep(beams, samples);
-                write_table(
-                    out,
-                    *format,
-                    csv::BEAM_HEADER,
-                    rows,
-                    csv::write_beam_row,
-                    |r| json::BeamRow::from(r),
-                )?;
+                write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
             }
         }
         Some(Command::Sweep(SweepCommand::Plate {
@@ -419,18 +436,17 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             } else {
                 Spacing::Logarithmic
             };
-            let samples = curves::stiffness_samples(*kt_from, *kt_to, *points, spacing)?;
+            let samples =
+                curves::stiffness_samples(*kt_from, *kt_to, *points, spacing).map_err(|error| {
+                    CliError::Range {
+                        error,
+                        flags: ["--kt-from", "--kt-to", "--points"],
+                    }
+                })?;
             let (_, model) = load(inputs, ModelKind::Plate)?;
             if let Model::Plate(plate) = model {
                 let rows = curves::plate_kt_sweep(plate, samples);
-                write_table(
-                    out,
-                    *format,
-                    csv::PLATE_HEADER,
-                    rows,
-                    csv::write_plate_row,
-                    |r| json::PlateRow::from(r),
-                )?;
+                write_table(out, *format, rows.map(|r| PlateRow::from(&r)))?;
             }
         }
         Some(Command::Fit(FitCommand::Beam {
@@ -459,21 +475,22 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             format,
         })) => {
-            let samples = curves::force_samples(*from, *to, *points)?;
+            let samples =
+                curves::force_samples(*from, *to, *points).map_err(|error| CliError::Range {
+                    error,
+                    flags: ["--from", "--to", "--points"],
+                })?;
             let (_, model) = load(inputs, ModelKind::Beam)?;
             if let Model::Beam { beams, .. } = model {
                 let rows = curves::cycle_sweep(beams, samples);
-                write_table(
-                    out,
-                    *format,
-                    csv::CYCLE_HEADER,
-                    rows,
-                    csv::write_cycle_row,
-                    |r| json::CycleRow::from(r),
-                )?;
+                write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
             }
         }
-        Some(Command::Presets) => list_presets(out)?,
+        Some(Command::Presets) => {
+            let dir = preset::user_preset_dir();
+            let rows = preset::listing(dir.as_deref());
+            out.write_all(report::presets::listing(&rows, dir.as_deref()).as_bytes())?
+        }
         Some(Command::Check { files }) => check(out, files)?,
         Some(Command::Verify {
             quick,
@@ -508,11 +525,11 @@ fn load_any(args: &InputArgs, default: ModelKind) -> Result<(String, Model), Cli
 }
 
 fn resolve_preset(args: &InputArgs, default: ModelKind) -> Result<(String, Preset), CliError> {
-    let default = match default {
-        ModelKind::Beam => "paper-beams",
-        ModelKind::Plate => "paper-plate",
-    };
-    let preset = preset::resolve(args.preset.as_deref().unwrap_or(default))?;
+    let preset = preset::resolve(
+        args.preset
+            .as_deref()
+            .unwrap_or(preset::default_name(default)),
+    )?;
     Ok((preset.name.clone(), preset))
 }
 
@@ -523,7 +540,7 @@ fn apply_and_validate(
 ) -> Result<(String, Model), CliError> {
     let mut inputs: Inputs = preset.inputs;
     for assignment in &args.assignments {
-        inputs.apply_assignment(assignment)?;
+        preset::apply_assignment(&mut inputs, assignment)?;
     }
     let name = if args.assignments.is_empty() {
         name
@@ -533,120 +550,17 @@ fn apply_and_validate(
     Ok((name, inputs.validate()?))
 }
 
-fn write_json(out: &mut impl Write, value: &serde_json::Value) -> Result<(), CliError> {
-    serde_json::to_writer_pretty(&mut *out, value).map_err(io::Error::from)?;
-    writeln!(out)?;
-    Ok(())
-}
-
-/// Streams rows: memory stays flat however many points are asked for.
-fn write_csv<W: Write, R>(
-    out: &mut W,
-    header: &str,
-    rows: impl Iterator<Item = R>,
-    write_row: impl Fn(&mut W, &R) -> io::Result<()>,
-) -> Result<(), CliError> {
-    writeln!(out, "{header}")?;
-    for row in rows {
-        write_row(out, &row)?;
-    }
-    Ok(())
-}
-
-/// A sweep's rows as CSV (with `header`) or as a JSON array, streamed either way.
-fn write_table<W: Write, R, J: serde::Serialize>(
-    out: &mut W,
-    format: TableFormat,
-    header: &str,
-    rows: impl Iterator<Item = R>,
-    write_row: impl Fn(&mut W, &R) -> io::Result<()>,
-    to_json: impl Fn(&R) -> J,
-) -> Result<(), CliError> {
-    match format {
-        TableFormat::Csv => write_csv(out, header, rows, write_row),
-        TableFormat::Json => write_json_rows(out, rows.map(|r| to_json(&r))),
-    }
-}
-
-/// Streams a JSON array, one object per line.
-fn write_json_rows<R: serde::Serialize>(
-    out: &mut impl Write,
-    rows: impl Iterator<Item = R>,
-) -> Result<(), CliError> {
-    out.write_all(b"[")?;
-    for (i, row) in rows.enumerate() {
-        out.write_all(if i == 0 { b"\n  " } else { b",\n  " })?;
-        serde_json::to_writer(&mut *out, &row).map_err(io::Error::from)?;
-    }
-    out.write_all(b"\n]\n")?;
-    Ok(())
-}
-
-fn list_presets(out: &mut impl Write) -> Result<(), CliError> {
-    writeln!(
-        out,
-        "{:<20} {:<6} {:<8} description",
-        "name", "model", "source"
-    )?;
-    for p in preset::bundled() {
-        writeln!(
-            out,
-            "{:<20} {:<6} {:<8} {}",
-            p.name,
-            p.inputs.kind(),
-            "bundled",
-            p.description
-        )?;
-    }
-    let dir = preset::user_preset_dir();
-    for (path, loaded) in preset::user_presets() {
-        let name = path
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        match loaded {
-            Ok(p) => writeln!(
-                out,
-                "{:<20} {:<6} {:<8} {}",
-                name,
-                p.inputs.kind(),
-                "user",
-                p.description
-            )?,
-            Err(problems) => writeln!(
-                out,
-                "{:<20} {:<6} {:<8} INVALID: {} (run `microslip check {}`)",
-                name,
-                "?",
-                "user",
-                problems[0],
-                path.display()
-            )?,
-        }
-    }
-    match dir {
-        Some(dir) => writeln!(out, "\nuser presets: {}", dir.display())?,
-        None => writeln!(
-            out,
-            "\nuser presets: none (neither XDG_CONFIG_HOME nor HOME is set)"
-        )?,
-    }
-    Ok(())
-}
-
-/// `--fix` values: (mu, K_T).
+/// `--fix` values: (mu, K_T). Only those two are fitted, so only they can be held.
 fn parse_fixed(fixed: &[String]) -> Result<(Option<f64>, Option<f64>), CliError> {
     let (mut mu, mut kt) = (None, None);
     for text in fixed {
-        let (key, value) = text
-            .split_once('=')
-            .ok_or_else(|| CliError::Fix(text.clone()))?;
-        let value =
-            preset::parse_number(value.trim()).ok_or_else(|| CliError::Fix(text.clone()))?;
-        match key.trim() {
-            "mu" => mu = Some(value),
-            "KT" => kt = Some(value),
-            _ => return Err(CliError::Fix(text.clone())),
+        let bad = || CliError::Fix(text.clone());
+        let (key, value) = text.split_once('=').ok_or_else(bad)?;
+        let value = parse_number(value.trim()).ok_or_else(bad)?;
+        match key.trim().parse::<BeamParam>().map_err(|_| bad())? {
+            BeamParam::Friction => mu = Some(value),
+            BeamParam::Stiffness => kt = Some(value),
+            _ => return Err(bad()),
         }
     }
     Ok((mu, kt))
@@ -682,6 +596,19 @@ fn run_fit(
     Ok(())
 }
 
+/// Checks a flag that is not a model parameter against `domain`.
+fn check_flag(flag: &'static str, value: f64, domain: Domain, unit: Unit) -> Result<f64, CliError> {
+    if domain.contains(value) {
+        Ok(value)
+    } else {
+        Err(CliError::Flag {
+            flag,
+            value,
+            allowed: domain.describe(unit),
+        })
+    }
+}
+
 fn run_cycle(
     out: &mut impl Write,
     amplitude: f64,
@@ -689,21 +616,13 @@ fn run_cycle(
     points: u64,
     format: CycleFormat,
 ) -> Result<(), CliError> {
-    use crate::model::cycle::{Cycle, Law};
-    let amplitude = TipForce::new(amplitude).map_err(|e| {
-        CliError::Range(RangeError::Bound {
-            flag: "--amplitude",
-            value: e.value,
-            allowed: "must be >= 0 and finite (N)",
-        })
-    })?;
-    if !(2..=1_000_000).contains(&points) {
-        return Err(CliError::Range(RangeError::Bound {
-            flag: "--points",
-            value: points as f64,
-            allowed: "must be an integer in [2, 1000000]",
-        }));
-    }
+    let amplitude = check_flag("--amplitude", amplitude, Domain::NonNegative, Unit::Newton)?;
+    let amplitude = TipForce::new(amplitude)?;
+    let points_error = |error| CliError::Range {
+        error,
+        flags: ["", "", "--points"],
+    };
+    curves::check_points(points).map_err(points_error)?;
     let (name, model) = load(inputs, ModelKind::Beam)?;
     let Model::Beam { beams, .. } = model else {
         return Ok(());
@@ -712,21 +631,8 @@ fn run_cycle(
         CycleFormat::Text => out.write_all(text::cycle(&name, &beams, amplitude).as_bytes())?,
         CycleFormat::Json => write_json(out, &json::cycle(&name, &beams, amplitude))?,
         CycleFormat::Csv => {
-            let (c, r) = (
-                Cycle::new(&beams, Law::Coulomb, amplitude),
-                Cycle::new(&beams, Law::Regularized, amplitude),
-            );
-            let fa = amplitude.newtons();
-            writeln!(out, "{}", csv::LOOP_HEADER)?;
-            let last = (points - 1) as f64;
-            for i in 0..points {
-                let f = fa - 2.0 * fa * i as f64 / last;
-                csv::write_loop_row(out, "unloading", f, c.unloading(f), r.unloading(f))?;
-            }
-            for i in 0..points {
-                let f = -fa + 2.0 * fa * i as f64 / last;
-                csv::write_loop_row(out, "reloading", f, c.reloading(f), r.reloading(f))?;
-            }
+            let points = curves::cycle_loop(&beams, amplitude, points).map_err(points_error)?;
+            write_table(out, TableFormat::Csv, points.map(|p| LoopRow::from(&p)))?;
         }
     }
     Ok(())
@@ -740,38 +646,27 @@ fn run_kt(
     nu: Option<f64>,
     format: ReportFormat,
 ) -> Result<(), CliError> {
-    use crate::model::validate::{poisson_ratio, positive};
     let (name, model) = load_any(inputs, ModelKind::Beam)?;
     let data = model.interface();
-    let (length, mu, pressure, modulus, current, model_nu) = (
-        data.length,
-        data.friction,
-        data.pressure,
-        data.modulus,
-        data.stiffness,
-        data.poisson,
-    );
     let element = match element {
-        Some(e) => positive("--element-size", e, "must be > 0 and finite (mm)")?,
-        None => length / 100.0,
+        Some(e) => check_flag("--element-size", e, Domain::Positive, Unit::Millimetre)?,
+        None => data.length / 100.0,
     };
     let normal = match kn {
         Some(kn) => {
-            let kn = positive("--kn", kn, "must be > 0 and finite (MPa/mm)")?;
-            let nu = poisson_ratio("--nu", nu.or(model_nu).unwrap_or(0.3))?;
+            let kn = check_flag("--kn", kn, Domain::Positive, Unit::MegapascalPerMillimetre)?;
+            let nu = nu.or(data.poisson).unwrap_or(0.3);
+            let nu = check_flag("--nu", nu, Domain::PoissonRatio, Unit::Dimensionless)?;
             Some((kn, nu))
         }
         None => None,
     };
-    let candidates = curves::stiffness_candidates(current, mu, pressure, modulus, element, normal);
+    let comparison = curves::compare_stiffnesses(&model, element, normal);
     match format {
         ReportFormat::Text => {
-            out.write_all(text::stiffness_table(&name, &model, element, &candidates).as_bytes())?
+            out.write_all(text::stiffness_table(&name, &comparison).as_bytes())?
         }
-        ReportFormat::Json => write_json(
-            out,
-            &json::stiffness_table(&name, &model, element, &candidates),
-        )?,
+        ReportFormat::Json => write_json(out, &json::stiffness_table(&name, &comparison))?,
     }
     Ok(())
 }
@@ -783,18 +678,23 @@ fn run_verify(
     tolerance: f64,
 ) -> Result<(), CliError> {
     if !(MeshDensity::MIN_ELEMENTS..=MeshDensity::MAX_ELEMENTS).contains(&elements) {
-        return Err(CliError::Range(RangeError::Bound {
+        return Err(CliError::Flag {
             flag: "--elements",
             value: elements as f64,
-            allowed: "must be an integer in [10, 800] (beyond 800, round-off of the bending matrix dominates)",
-        }));
+            allowed: format!(
+                "must be an integer in [{}, {}] (beyond {}, round-off of the bending matrix dominates)",
+                MeshDensity::MIN_ELEMENTS,
+                MeshDensity::MAX_ELEMENTS,
+                MeshDensity::MAX_ELEMENTS
+            ),
+        });
     }
     if !(tolerance.is_finite() && tolerance > 0.0) {
-        return Err(CliError::Range(RangeError::Bound {
+        return Err(CliError::Flag {
             flag: "--tolerance",
             value: tolerance,
-            allowed: "must be > 0 and finite",
-        }));
+            allowed: "must be > 0 and finite".into(),
+        });
     }
     let density = MeshDensity::with_elements(elements);
     let started = std::time::Instant::now();
@@ -840,7 +740,7 @@ fn run_verify(
 fn check(out: &mut impl Write, files: &[PathBuf]) -> Result<(), CliError> {
     let mut failed = 0;
     for path in files {
-        match Preset::load(path) {
+        match preset::store::load(path) {
             Ok(p) => {
                 let PresetSource::File(path) = &p.source else {
                     continue;

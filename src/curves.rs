@@ -6,41 +6,88 @@
 
 use thiserror::Error;
 
+use crate::model::code_defaults::CodeDefault;
+use crate::model::cycle::{Cycle, Law};
+use crate::model::inputs::Model;
+use crate::model::params::{BeamParam, Param, PlateParam};
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
-/// Largest number of points a sweep accepts: beyond it a sweep is a mistake, not a request.
+/// Largest number of points a sweep (or a branch of a cycle's loop) accepts: beyond it a request is
+/// a mistake, not a need.
 pub const MAX_POINTS: u64 = 100_000_000;
 
-/// A rejected sweep range.
+/// Which end of a range a value is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RangeEnd {
+    /// The first value.
+    Start,
+    /// The last value.
+    End,
+}
+
+/// A rejected sampling. Messages say `start`, `end` and `points`; a caller with its own names for
+/// them (command-line flags) formats the same message with [`RangeError::message`].
 #[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
 pub enum RangeError {
     /// Start above end.
-    #[error(
-        "invalid range: {from_flag} = {from} is above {to_flag} = {to}; the start must not exceed the end"
-    )]
+    #[error("{}", self.message(["start", "end", "points"]))]
     Reversed {
-        /// Flag naming the start.
-        from_flag: &'static str,
         /// Start value.
         from: f64,
-        /// Flag naming the end.
-        to_flag: &'static str,
         /// End value.
         to: f64,
     },
     /// Too few or too many points.
-    #[error("invalid --points = {0}: must be an integer in [2, {MAX_POINTS}]")]
+    #[error("{}", self.message(["start", "end", "points"]))]
     Points(u64),
     /// A bound outside the allowed values.
-    #[error("invalid {flag} = {value}: {allowed}")]
+    #[error("{}", self.message(["start", "end", "points"]))]
     Bound {
-        /// The flag.
-        flag: &'static str,
+        /// Which end.
+        end: RangeEnd,
         /// The value.
         value: f64,
         /// What is allowed.
-        allowed: &'static str,
+        allowed: String,
     },
+}
+
+impl RangeError {
+    /// The message with the caller's names for the start, the end and the number of points.
+    pub fn message(&self, [start, end, points]: [&str; 3]) -> String {
+        match self {
+            RangeError::Reversed { from, to } => format!(
+                "invalid range: {start} = {from} is above {end} = {to}; the start must not exceed the end"
+            ),
+            RangeError::Points(n) => {
+                format!("invalid {points} = {n}: must be an integer in [2, {MAX_POINTS}]")
+            }
+            RangeError::Bound {
+                end: which,
+                value,
+                allowed,
+            } => {
+                let name = match which {
+                    RangeEnd::Start => start,
+                    RangeEnd::End => end,
+                };
+                format!("invalid {name} = {value}: {allowed}")
+            }
+        }
+    }
+}
+
+/// Checks a number of points: 2 to [`MAX_POINTS`].
+///
+/// # Errors
+/// [`RangeError::Points`] outside that range.
+pub fn check_points(points: u64) -> Result<u64, RangeError> {
+    if (2..=MAX_POINTS).contains(&points) {
+        Ok(points)
+    } else {
+        Err(RangeError::Points(points))
+    }
 }
 
 /// How sample values are spaced.
@@ -62,44 +109,60 @@ pub struct Samples {
 }
 
 impl Samples {
-    /// Checks the range; `flags` name the two bounds in messages (e.g. `("--from", "--to")`).
-    pub fn new(
-        from: f64,
-        to: f64,
-        points: u64,
-        spacing: Spacing,
-        flags: (&'static str, &'static str),
-    ) -> Result<Self, RangeError> {
+    /// Checks the range: finite ends (> 0 for logarithmic spacing), start <= end, 2 to
+    /// [`MAX_POINTS`] points.
+    ///
+    /// # Errors
+    /// The first problem found, as a [`RangeError`].
+    pub fn new(from: f64, to: f64, points: u64, spacing: Spacing) -> Result<Self, RangeError> {
         let allowed = match spacing {
             Spacing::Linear => "must be a finite number",
             Spacing::Logarithmic => "must be > 0 and finite (logarithmic spacing)",
         };
-        for (flag, value) in [(flags.0, from), (flags.1, to)] {
+        for (end, value) in [(RangeEnd::Start, from), (RangeEnd::End, to)] {
             if !value.is_finite() || (spacing == Spacing::Logarithmic && value <= 0.0) {
                 return Err(RangeError::Bound {
-                    flag,
+                    end,
                     value,
-                    allowed,
+                    allowed: allowed.to_string(),
                 });
             }
         }
         if from > to {
-            return Err(RangeError::Reversed {
-                from_flag: flags.0,
-                from,
-                to_flag: flags.1,
-                to,
-            });
+            return Err(RangeError::Reversed { from, to });
         }
-        if !(2..=MAX_POINTS).contains(&points) {
-            return Err(RangeError::Points(points));
-        }
+        check_points(points)?;
         Ok(Samples {
             from,
             to,
             points,
             spacing,
         })
+    }
+
+    /// A sampling of a parameter's values: both ends must be in the parameter's domain (so every
+    /// sample between them is too), then as [`Samples::new`].
+    ///
+    /// # Errors
+    /// An end outside the domain (with the domain in words), or a problem of [`Samples::new`].
+    pub fn of_param(
+        param: Param,
+        from: f64,
+        to: f64,
+        points: u64,
+        spacing: Spacing,
+    ) -> Result<Self, RangeError> {
+        let spec = param.spec();
+        for (end, value) in [(RangeEnd::Start, from), (RangeEnd::End, to)] {
+            if !spec.domain.contains(value) {
+                return Err(RangeError::Bound {
+                    end,
+                    value,
+                    allowed: spec.domain.describe(spec.unit),
+                });
+            }
+        }
+        Samples::new(from, to, points, spacing)
     }
 
     /// Number of samples.
@@ -139,6 +202,8 @@ pub struct BeamPoint {
     pub w_coulomb: f64,
     /// Regularized tip deflection (mm).
     pub w_regularized: f64,
+    /// End of the Coulomb stick zone (mm): L in stick, 0 once the interface slides.
+    pub stick_end: f64,
     /// End of the microslip zone X (mm); L without macroslip.
     pub micro_end: f64,
     /// Coulomb regime.
@@ -154,6 +219,7 @@ pub fn beam_point(beams: &TwinBeams, force: TipForce) -> BeamPoint {
         force: force.newtons(),
         w_coulomb: coulomb.tip_deflection(),
         w_regularized: regularized.tip_deflection(),
+        stick_end: coulomb.stick_end(),
         micro_end: regularized.micro_zone_end(),
         regime_coulomb: coulomb.regime(),
         regime_regularized: regularized.regime(),
@@ -170,17 +236,17 @@ pub fn beam_force_sweep(beams: TwinBeams, forces: Samples) -> impl Iterator<Item
 }
 
 /// A force sampling for [`beam_force_sweep`]: both bounds must be valid tip forces (>= 0, finite).
+///
+/// # Errors
+/// See [`Samples::of_param`].
 pub fn force_samples(from: f64, to: f64, points: u64) -> Result<Samples, RangeError> {
-    for (flag, value) in [("--from", from), ("--to", to)] {
-        if TipForce::new(value).is_err() {
-            return Err(RangeError::Bound {
-                flag,
-                value,
-                allowed: "must be >= 0 and finite (N)",
-            });
-        }
-    }
-    Samples::new(from, to, points, Spacing::Linear, ("--from", "--to"))
+    Samples::of_param(
+        Param::Beam(BeamParam::Force),
+        from,
+        to,
+        points,
+        Spacing::Linear,
+    )
 }
 
 /// Everything the reports show about the plate at one K_T, for both laws.
@@ -217,22 +283,22 @@ pub fn plate_point(plate: &SqueezedPlate) -> PlatePoint {
 }
 
 /// A K_T sampling for [`plate_kt_sweep`]: both bounds must be valid stiffnesses (> 0, finite).
+///
+/// # Errors
+/// See [`Samples::of_param`].
 pub fn stiffness_samples(
     from: f64,
     to: f64,
     points: u64,
     spacing: Spacing,
 ) -> Result<Samples, RangeError> {
-    for (flag, value) in [("--kt-from", from), ("--kt-to", to)] {
-        if !(value.is_finite() && value > 0.0) {
-            return Err(RangeError::Bound {
-                flag,
-                value,
-                allowed: "must be > 0 and finite (MPa/mm)",
-            });
-        }
-    }
-    Samples::new(from, to, points, spacing, ("--kt-from", "--kt-to"))
+    Samples::of_param(
+        Param::Plate(PlateParam::Stiffness),
+        from,
+        to,
+        points,
+        spacing,
+    )
 }
 
 /// The plate over a range of K_T (other parameters fixed). Values between two valid stiffnesses are
@@ -313,83 +379,151 @@ pub fn plate_contact_pressure_along(plate: &SqueezedPlate, positions: Samples) -
     positions.values().map(|x| (x, pressure.ratio(x))).collect()
 }
 
-/// A K_T to compare: where it comes from and its value (None: that source has no value).
-#[derive(Debug, Clone, PartialEq)]
-pub struct StiffnessCandidate {
-    /// Source: the preset, the normal stiffness, or a code.
-    pub source: String,
-    /// The stiffness (MPa/mm), when the source gives one.
-    pub kt: Option<f64>,
-    /// How it was obtained, and how sure we are.
-    pub basis: String,
+/// Where a K_T to compare comes from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CandidateSource {
+    /// The model's own K_T.
+    Current,
+    /// K_N times the low end of the measured K_T/K_N range.
+    NormalLow,
+    /// Paper eq. 4 from K_N at Poisson ratio `nu`.
+    Equation4 {
+        /// The Poisson ratio used (-).
+        nu: f64,
+    },
+    /// K_N times the high end of the measured K_T/K_N range.
+    NormalHigh,
+    /// A finite-element code's default.
+    Code(&'static CodeDefault),
 }
 
-/// The K_T values worth comparing for one interface: the current one, those from a normal contact
-/// stiffness K_N (paper eq. 4 and the measured K_T/K_N range), and those FE codes assume by default
-/// for contact elements of length `element` (mm).
-pub fn stiffness_candidates(
-    current: f64,
-    mu: f64,
-    pressure: f64,
-    modulus: f64,
+/// A K_T to compare: where it comes from and its value (`None`: that source gives no value).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StiffnessCandidate {
+    /// Source.
+    pub source: CandidateSource,
+    /// The stiffness (MPa/mm), when the source gives one.
+    pub kt: Option<f64>,
+}
+
+/// What a K_T does to the model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Answer {
+    /// Twin beams at the model's force.
+    Beam {
+        /// First-macroslip force F_1 (N).
+        first_macroslip_force: f64,
+        /// End of the microslip zone X (mm).
+        micro_end: f64,
+        /// Tip deflection w(L) (mm).
+        tip_deflection: f64,
+        /// Regime.
+        regime: Regime,
+    },
+    /// The plate.
+    Plate {
+        /// End displacement u(L) (mm).
+        end_displacement: f64,
+        /// End of the microslip zone X_r (mm).
+        micro_end: f64,
+        /// Regime.
+        regime: Regime,
+    },
+}
+
+/// One row of the K_T comparison: the candidate and, when it has a valid K_T, its answer.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ComparedStiffness {
+    /// The candidate.
+    pub candidate: StiffnessCandidate,
+    /// What it does to the model.
+    pub answer: Option<Answer>,
+}
+
+/// The K_T values worth comparing for one model and what each does to the answer: computed once,
+/// shown by the text and JSON reports and the TUI table alike.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StiffnessComparison {
+    /// The model compared (its own K_T is the first row).
+    pub model: Model,
+    /// Contact element length assumed for the codes' defaults (mm).
+    pub element: f64,
+    /// The rows: current, those from K_N (when given), then each code.
+    pub rows: Vec<ComparedStiffness>,
+}
+
+/// What `kt` does to `model` (at the model's force for the beams); `None` for an invalid K_T.
+pub fn answer_for_stiffness(model: &Model, kt: f64) -> Option<Answer> {
+    Some(match model {
+        Model::Beam { beams, force } => {
+            let beams = beams.with_tangential_stiffness(kt).ok()?;
+            let state = beams.regularized(*force);
+            Answer::Beam {
+                first_macroslip_force: beams.first_macroslip_force(),
+                micro_end: state.micro_zone_end(),
+                tip_deflection: state.tip_deflection(),
+                regime: state.regime(),
+            }
+        }
+        Model::Plate(plate) => {
+            let state = plate.with_tangential_stiffness(kt).ok()?.regularized();
+            Answer::Plate {
+                end_displacement: state.end_displacement(),
+                micro_end: state.micro_zone_end(),
+                regime: state.regime(),
+            }
+        }
+    })
+}
+
+/// Compares the K_T values worth comparing for `model`: the current one, those from a normal contact
+/// stiffness `normal` = (K_N (MPa/mm), nu) (paper eq. 4 and the measured K_T/K_N range), and those
+/// FE codes assume by default for contact elements of length `element` (mm).
+pub fn compare_stiffnesses(
+    model: &Model,
     element: f64,
     normal: Option<(f64, f64)>,
-) -> Vec<StiffnessCandidate> {
+) -> StiffnessComparison {
     use crate::model::code_defaults::{CODE_DEFAULTS, MEASURED_RATIO_RANGE};
     use crate::model::stiffness::tangential_from_normal;
-    let mut rows = vec![StiffnessCandidate {
-        source: "current".into(),
-        kt: Some(current),
-        basis: "the model's K_T".into(),
+    let data = model.interface();
+    let mut candidates = vec![StiffnessCandidate {
+        source: CandidateSource::Current,
+        kt: Some(data.stiffness),
     }];
     if let Some((kn, nu)) = normal {
         let (low, high) = MEASURED_RATIO_RANGE;
-        rows.push(StiffnessCandidate {
-            source: "K_N x 0.5".into(),
-            kt: Some(low * kn),
-            basis: "measured K_T/K_N, low end".into(),
-        });
-        rows.push(StiffnessCandidate {
-            source: "eq. 4".into(),
-            kt: tangential_from_normal(kn, nu).ok(),
-            basis: format!("pi (1 - nu) / (2 (2 - nu)) K_N, nu = {nu}"),
-        });
-        rows.push(StiffnessCandidate {
-            source: "K_N x 0.7".into(),
-            kt: Some(high * kn),
-            basis: "measured K_T/K_N, high end".into(),
-        });
+        candidates.extend([
+            StiffnessCandidate {
+                source: CandidateSource::NormalLow,
+                kt: Some(low * kn),
+            },
+            StiffnessCandidate {
+                source: CandidateSource::Equation4 { nu },
+                kt: tangential_from_normal(kn, nu).ok(),
+            },
+            StiffnessCandidate {
+                source: CandidateSource::NormalHigh,
+                kt: Some(high * kn),
+            },
+        ]);
     }
-    for code in CODE_DEFAULTS {
-        rows.push(StiffnessCandidate {
-            source: code.code.into(),
-            kt: code.implied_stiffness(mu, pressure, modulus, element),
-            basis: format!("{} ({})", code.description, code.confirmation.label()),
-        });
+    candidates.extend(CODE_DEFAULTS.iter().map(|code| StiffnessCandidate {
+        source: CandidateSource::Code(code),
+        kt: code.implied_stiffness(data.friction, data.pressure, data.modulus, element),
+    }));
+    let rows = candidates
+        .into_iter()
+        .map(|candidate| ComparedStiffness {
+            candidate,
+            answer: candidate.kt.and_then(|kt| answer_for_stiffness(model, kt)),
+        })
+        .collect();
+    StiffnessComparison {
+        model: *model,
+        element,
+        rows,
     }
-    rows
-}
-
-/// What a K_T does to the twin beams at one force: (F_1 (N), X (mm), w(L) (mm), regime).
-pub fn beam_answer(beams: &TwinBeams, force: TipForce, kt: f64) -> Option<(f64, f64, f64, Regime)> {
-    let beams = beams.with_tangential_stiffness(kt).ok()?;
-    let state = beams.regularized(force);
-    Some((
-        beams.first_macroslip_force(),
-        state.micro_zone_end(),
-        state.tip_deflection(),
-        state.regime(),
-    ))
-}
-
-/// What a K_T does to the plate: (u(L) (mm), X_r (mm), regime).
-pub fn plate_answer(plate: &SqueezedPlate, kt: f64) -> Option<(f64, f64, Regime)> {
-    let state = plate.with_tangential_stiffness(kt).ok()?.regularized();
-    Some((
-        state.end_displacement(),
-        state.micro_zone_end(),
-        state.regime(),
-    ))
 }
 
 /// One cyclic amplitude, both laws: dissipation per cycle (N mm) and equivalent damping ratio.
@@ -409,7 +543,6 @@ pub struct CyclePoint {
 
 /// The twin beams cycled at one amplitude.
 pub fn cycle_point(beams: &TwinBeams, amplitude: TipForce) -> CyclePoint {
-    use crate::model::cycle::{Cycle, Law};
     let (c, r) = (
         Cycle::new(beams, Law::Coulomb, amplitude),
         Cycle::new(beams, Law::Regularized, amplitude),
@@ -431,6 +564,80 @@ pub fn cycle_sweep(beams: TwinBeams, amplitudes: Samples) -> impl Iterator<Item 
         .map(move |f| cycle_point(&beams, f))
 }
 
+/// A branch of the hysteresis loop.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Branch {
+    /// From +F_a down to -F_a.
+    Unloading,
+    /// From -F_a back up to +F_a.
+    Reloading,
+}
+
+impl Branch {
+    /// `unloading` or `reloading`, as the CSV column says it.
+    pub fn label(self) -> &'static str {
+        match self {
+            Branch::Unloading => "unloading",
+            Branch::Reloading => "reloading",
+        }
+    }
+}
+
+/// One point of the hysteresis loop, both laws.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoopPoint {
+    /// The branch.
+    pub branch: Branch,
+    /// Tip force F (N).
+    pub force: f64,
+    /// Coulomb tip deflection (mm).
+    pub w_coulomb: f64,
+    /// Regularized tip deflection (mm).
+    pub w_regularized: f64,
+}
+
+/// The closed hysteresis loop of a cycle at `amplitude`: `points` evenly spaced forces per branch,
+/// both ends included (so the turning point at -F_a ends one branch and starts the next).
+///
+/// # Errors
+/// [`RangeError::Points`] outside 2 to [`MAX_POINTS`].
+pub fn cycle_loop(
+    beams: &TwinBeams,
+    amplitude: TipForce,
+    points: u64,
+) -> Result<impl Iterator<Item = LoopPoint>, RangeError> {
+    let points = check_points(points)?;
+    let (coulomb, regularized) = (
+        Cycle::new(beams, Law::Coulomb, amplitude),
+        Cycle::new(beams, Law::Regularized, amplitude),
+    );
+    let fa = amplitude.newtons();
+    let last = (points - 1) as f64;
+    let branch = move |branch: Branch| {
+        (0..points).map(move |i| {
+            let t = 2.0 * fa * i as f64 / last;
+            match branch {
+                Branch::Unloading => {
+                    let f = fa - t;
+                    (branch, f, coulomb.unloading(f), regularized.unloading(f))
+                }
+                Branch::Reloading => {
+                    let f = -fa + t;
+                    (branch, f, coulomb.reloading(f), regularized.reloading(f))
+                }
+            }
+        })
+    };
+    Ok(branch(Branch::Unloading)
+        .chain(branch(Branch::Reloading))
+        .map(|(branch, force, w_coulomb, w_regularized)| LoopPoint {
+            branch,
+            force,
+            w_coulomb,
+            w_regularized,
+        }))
+}
+
 /// Dissipation per cycle D (N mm) against F_a (N): (Coulomb, regularized).
 pub fn dissipation_vs_amplitude(beams: &TwinBeams, amplitudes: Samples) -> (Series, Series) {
     cycle_sweep(*beams, amplitudes)
@@ -445,42 +652,87 @@ mod tests {
 
     #[test]
     fn samples_hit_both_ends_exactly() {
-        let s = Samples::new(0.1, 0.7, 7, Spacing::Linear, ("a", "b")).unwrap();
+        let s = Samples::new(0.1, 0.7, 7, Spacing::Linear).unwrap();
         let v: Vec<f64> = s.values().collect();
         assert_eq!(v.len(), 7);
         assert_eq!((v[0], v[6]), (0.1, 0.7));
         assert!((v[3] - 0.4).abs() < 1e-15);
-        let s = Samples::new(1.0, 1e6, 7, Spacing::Logarithmic, ("a", "b")).unwrap();
+        let s = Samples::new(1.0, 1e6, 7, Spacing::Logarithmic).unwrap();
         let v: Vec<f64> = s.values().collect();
         assert_eq!((v[0], v[6]), (1.0, 1e6));
         assert!((v[3] - 1e3).abs() < 1e-9);
     }
 
     #[test]
-    fn bad_ranges_are_refused_with_their_flags() {
-        let err = force_samples(10.0, 5.0, 3).unwrap_err().to_string();
+    fn bad_ranges_are_refused_with_the_callers_names() {
+        const FLAGS: [&str; 3] = ["--from", "--to", "--points"];
+        let err = force_samples(10.0, 5.0, 3).unwrap_err();
         assert_eq!(
-            err,
+            err.message(FLAGS),
             "invalid range: --from = 10 is above --to = 5; the start must not exceed the end"
+        );
+        assert_eq!(
+            err.to_string(),
+            "invalid range: start = 10 is above end = 5; the start must not exceed the end"
         );
         assert_eq!(
             force_samples(0.0, 5.0, 1).unwrap_err(),
             RangeError::Points(1)
         );
+        assert_eq!(
+            RangeError::Points(1).message(FLAGS),
+            "invalid --points = 1: must be an integer in [2, 100000000]"
+        );
         assert!(force_samples(0.0, 5.0, MAX_POINTS + 1).is_err());
         assert!(
             force_samples(-1.0, 5.0, 3)
                 .unwrap_err()
-                .to_string()
-                .starts_with("invalid --from = -1")
+                .message(FLAGS)
+                .starts_with("invalid --from = -1: must be >= 0 and finite (N)")
         );
-        let err = stiffness_samples(0.0, 5.0, 3, Spacing::Logarithmic)
-            .unwrap_err()
-            .to_string();
+        let err = stiffness_samples(0.0, 5.0, 3, Spacing::Logarithmic).unwrap_err();
         assert_eq!(
-            err,
+            err.message(["--kt-from", "--kt-to", "--points"]),
             "invalid --kt-from = 0: must be > 0 and finite (MPa/mm)"
         );
+    }
+
+    #[test]
+    fn the_loop_closes_and_its_branches_meet_at_the_turning_points() {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let amplitude = TipForce::new(150.0).unwrap();
+        let points: Vec<LoopPoint> = cycle_loop(&beams, amplitude, 11).unwrap().collect();
+        assert_eq!(points.len(), 22);
+        let (first, turn, restart, last) = (points[0], points[10], points[11], points[21]);
+        assert_eq!((first.force, turn.force), (150.0, -150.0));
+        assert_eq!((restart.force, last.force), (-150.0, 150.0));
+        assert_eq!(turn.branch, Branch::Unloading);
+        assert_eq!(restart.branch, Branch::Reloading);
+        for (a, b) in [(first, last), (turn, restart)] {
+            assert!((a.w_coulomb - b.w_coulomb).abs() <= 1e-12 * a.w_coulomb.abs());
+            assert!((a.w_regularized - b.w_regularized).abs() <= 1e-12 * a.w_regularized.abs());
+        }
+        assert!(cycle_loop(&beams, amplitude, 1).is_err());
+    }
+
+    #[test]
+    fn the_stiffness_comparison_answers_every_valid_candidate() {
+        let model = crate::Inputs::paper(crate::ModelKind::Beam)
+            .validate()
+            .unwrap();
+        let table = compare_stiffnesses(&model, 2.0, Some((1000.0, 0.3)));
+        assert_eq!(table.rows[0].candidate.source, CandidateSource::Current);
+        assert!(matches!(
+            table.rows[0].answer,
+            Some(Answer::Beam { micro_end, .. }) if (micro_end - 17.3095).abs() < 1e-4
+        ));
+        assert!(matches!(
+            table.rows[2].candidate.source,
+            CandidateSource::Equation4 { nu } if nu == 0.3
+        ));
+        for row in &table.rows {
+            assert_eq!(row.answer.is_some(), row.candidate.kt.is_some());
+        }
     }
 
     #[test]

@@ -37,9 +37,10 @@ pub mod report;
 pub mod tui;
 pub mod verify;
 
+pub use model::inputs::{Inputs, Model};
+pub use model::params::{BeamParam, ModelKind, Param, ParamError, PlateParam, Unit};
 pub use model::plate::{
     ContactPressure, CoulombPlate, PlateParams, RegularizedPlate, SqueezedPlate,
 };
 pub use model::regime::Regime;
 pub use model::twin_beams::{CoulombBeams, RegularizedBeams, TipForce, TwinBeams, TwinBeamsParams};
-pub use model::validate::ParamError;

@@ -2,7 +2,8 @@
 //! with `cargo insta review` (or read the `.snap.new` files) before accepting them.
 
 use microslip::preset;
-use microslip::tui::app::{Action, App, AppOptions};
+use microslip::tui::action::Action;
+use microslip::tui::app::{App, AppOptions};
 use microslip::tui::theme::{Charset, Theme};
 use microslip::tui::ui;
 use ratatui::Terminal;

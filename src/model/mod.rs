@@ -4,9 +4,10 @@
 pub mod code_defaults;
 pub mod cycle;
 pub mod hyperbolic;
+pub mod inputs;
+pub mod params;
 pub mod plate;
 pub mod regime;
 pub mod solve;
 pub mod stiffness;
 pub mod twin_beams;
-pub mod validate;

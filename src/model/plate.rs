@@ -6,9 +6,9 @@
 //! Derivations and the paper's misprints: `docs/theory.md`, "Squeezed plate", equations (P1)...
 
 use super::hyperbolic::{sinh_cosh_ratio, sinh_ratio};
+use super::params::{ParamError, PlateParam};
 use super::regime::Regime;
 use super::solve::find_root_in_bracket;
-use super::validate::{ParamError, poisson_ratio, positive};
 
 /// Raw inputs of the squeezed-plate problem (mm, MPa, MPa/mm); validated by [`SqueezedPlate::new`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,6 +41,19 @@ impl PlateParams {
         pressure: 10.0,
         tangential_stiffness: 1e6,
     };
+
+    /// The field that holds `param`.
+    pub fn value_mut(&mut self, param: PlateParam) -> &mut f64 {
+        match param {
+            PlateParam::HalfLength => &mut self.half_length,
+            PlateParam::Thickness => &mut self.thickness,
+            PlateParam::Modulus => &mut self.youngs_modulus,
+            PlateParam::Poisson => &mut self.poisson,
+            PlateParam::Friction => &mut self.friction,
+            PlateParam::Pressure => &mut self.pressure,
+            PlateParam::Stiffness => &mut self.tangential_stiffness,
+        }
+    }
 }
 
 /// A validated squeezed plate with its derived constants.
@@ -57,22 +70,28 @@ pub struct SqueezedPlate {
 
 impl SqueezedPlate {
     /// Validates every input: lengths, E, P, mu, K_T finite and > 0; 0 <= nu < 0.5.
+    ///
+    /// # Errors
+    /// The first input out of its domain (see [`PlateParam::spec`]), in display order.
+    ///
+    /// # Examples
+    /// ```
+    /// use microslip::{PlateParams, SqueezedPlate};
+    /// let plate = SqueezedPlate::new(PlateParams::PAPER)?;
+    /// let state = plate.regularized();
+    /// assert!(state.end_displacement() > plate.coulomb().end_displacement()); // mm
+    /// let bad = PlateParams { poisson: 0.5, ..PlateParams::PAPER };
+    /// assert_eq!(
+    ///     SqueezedPlate::new(bad).unwrap_err().to_string(),
+    ///     "invalid nu = 0.5: must be in [0, 0.5) (dimensionless)"
+    /// );
+    /// # Ok::<(), microslip::ParamError>(())
+    /// ```
     pub fn new(params: PlateParams) -> Result<Self, ParamError> {
-        positive("L", params.half_length, "must be > 0 and finite (mm)")?;
-        positive("tp", params.thickness, "must be > 0 and finite (mm)")?;
-        positive("E", params.youngs_modulus, "must be > 0 and finite (MPa)")?;
-        poisson_ratio("nu", params.poisson)?;
-        positive(
-            "mu",
-            params.friction,
-            "must be > 0 and finite (dimensionless)",
-        )?;
-        positive("P", params.pressure, "must be > 0 and finite (MPa)")?;
-        positive(
-            "KT",
-            params.tangential_stiffness,
-            "must be > 0 and finite (MPa/mm)",
-        )?;
+        let mut fields = params;
+        for param in PlateParam::ALL {
+            param.check(*fields.value_mut(param))?;
+        }
         let PlateParams {
             thickness: t,
             youngs_modulus: e,
@@ -95,6 +114,9 @@ impl SqueezedPlate {
     }
 
     /// The same plate with another K_T (MPa/mm); validated like [`SqueezedPlate::new`].
+    ///
+    /// # Errors
+    /// [`ParamError`] when `kt` is not finite and > 0.
     pub fn with_tangential_stiffness(&self, kt: f64) -> Result<Self, ParamError> {
         SqueezedPlate::new(PlateParams {
             tangential_stiffness: kt,

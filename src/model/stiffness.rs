@@ -3,7 +3,7 @@
 //! microslip works in MPa/mm internally; the paper's nomenclature quotes K_T in MPa/um, and so do many
 //! measurements, so the UI may show both.
 
-use super::validate::{ParamError, poisson_ratio, positive};
+use super::params::{Domain, ParamError, PlateParam, Unit};
 
 /// Number of micrometres in a millimetre.
 const UM_PER_MM: f64 = 1000.0;
@@ -12,28 +12,28 @@ const UM_PER_MM: f64 = 1000.0;
 /// after Sherif & Kossa, 1991). It gives 0.647 at nu = 0.3, inside the 0.5-0.7 range measured by
 /// Gonzalez-Valadez et al. (paper refs. 17-19).
 pub fn tangential_to_normal_ratio(nu: f64) -> Result<f64, ParamError> {
-    let nu = poisson_ratio("nu", nu)?;
+    let nu = PlateParam::Poisson.check(nu)?;
     Ok(std::f64::consts::PI * (1.0 - nu) / (2.0 * (2.0 - nu)))
 }
 
 /// K_T (MPa/mm) from a normal contact stiffness K_N (MPa/mm), paper eq. 4.
 pub fn tangential_from_normal(kn: f64, nu: f64) -> Result<f64, ParamError> {
-    let kn = positive("KN", kn, "must be > 0 and finite (MPa/mm)")?;
+    let kn = Domain::Positive.check("KN", kn, Unit::MegapascalPerMillimetre)?;
     Ok(tangential_to_normal_ratio(nu)? * kn)
 }
 
 /// Saturation slip mu P / K_T (mm): the elastic slip at which the regularized law reaches mu P.
 pub fn saturation_slip(mu: f64, pressure: f64, kt: f64) -> Result<f64, ParamError> {
-    let mu = positive("mu", mu, "must be > 0 and finite (dimensionless)")?;
-    let p = positive("P", pressure, "must be > 0 and finite (MPa)")?;
-    let kt = positive("KT", kt, "must be > 0 and finite (MPa/mm)")?;
+    let mu = PlateParam::Friction.check(mu)?;
+    let p = PlateParam::Pressure.check(pressure)?;
+    let kt = PlateParam::Stiffness.check(kt)?;
     Ok(mu * p / kt)
 }
 
 /// K_T needed for a given saturation slip (mm): K_T = mu P / slip (MPa/mm). The paper's beam data set
 /// is built this way: 0.3 * 1 MPa / 5e-4 mm = 600 MPa/mm.
 pub fn stiffness_for_saturation_slip(mu: f64, pressure: f64, slip: f64) -> Result<f64, ParamError> {
-    let slip = positive("slip", slip, "must be > 0 and finite (mm)")?;
+    let slip = Domain::Positive.check("slip", slip, Unit::Millimetre)?;
     saturation_slip(mu, pressure, slip)
 }
 

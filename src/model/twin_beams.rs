@@ -12,9 +12,9 @@ use super::hyperbolic::{
     cosh_rem0, cosh_rem2, cosh_sinh_ratio, inv_sinh, one_minus_sech, sinh_ratio, sinh_rem1,
     sinh_rem3, sinhc,
 };
+use super::params::{BeamParam, ParamError};
 use super::regime::Regime;
 use super::solve::find_root_newton;
-use super::validate::{ParamError, non_negative, positive};
 
 /// Raw inputs of the twin-beam problem (mm, MPa, MPa/mm); validated by [`TwinBeams::new`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -47,6 +47,21 @@ impl TwinBeamsParams {
         friction: 0.3,
         tangential_stiffness: 600.0,
     };
+
+    /// The field that holds `param`, or `None` for the tip force, which is not a property of the
+    /// structure (see [`TipForce`]).
+    pub fn value_mut(&mut self, param: BeamParam) -> Option<&mut f64> {
+        Some(match param {
+            BeamParam::Length => &mut self.length,
+            BeamParam::Width => &mut self.width,
+            BeamParam::HalfHeight => &mut self.half_height,
+            BeamParam::Modulus => &mut self.youngs_modulus,
+            BeamParam::Pressure => &mut self.pressure,
+            BeamParam::Friction => &mut self.friction,
+            BeamParam::Stiffness => &mut self.tangential_stiffness,
+            BeamParam::Force => return None,
+        })
+    }
 }
 
 /// A validated twin-beam system with its load-independent derived constants.
@@ -63,8 +78,11 @@ pub struct TipForce(f64);
 
 impl TipForce {
     /// Accepts finite F >= 0 (N).
+    ///
+    /// # Errors
+    /// [`ParamError`] for a negative, NaN or infinite force.
     pub fn new(newtons: f64) -> Result<Self, ParamError> {
-        non_negative("F", newtons, "must be >= 0 and finite (N)").map(TipForce)
+        BeamParam::Force.check(newtons).map(TipForce)
     }
 
     /// The force in N.
@@ -75,22 +93,31 @@ impl TipForce {
 
 impl TwinBeams {
     /// Validates every input: all must be finite and strictly positive.
+    ///
+    /// # Errors
+    /// The first input out of its domain (see [`BeamParam::spec`]), in display order.
+    ///
+    /// # Examples
+    /// ```
+    /// use microslip::{TipForce, TwinBeams, TwinBeamsParams};
+    /// let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
+    /// assert_eq!(beams.threshold_force(), 80.0); // mu P b L, N
+    /// let state = beams.regularized(TipForce::new(100.0)?);
+    /// assert!((state.micro_zone_end() - 17.3095).abs() < 1e-4); // X, mm
+    /// let bad = TwinBeamsParams { friction: -0.3, ..TwinBeamsParams::PAPER };
+    /// assert_eq!(
+    ///     TwinBeams::new(bad).unwrap_err().to_string(),
+    ///     "invalid mu = -0.3: must be > 0 and finite (dimensionless)"
+    /// );
+    /// # Ok::<(), microslip::ParamError>(())
+    /// ```
     pub fn new(params: TwinBeamsParams) -> Result<Self, ParamError> {
-        positive("L", params.length, "must be > 0 and finite (mm)")?;
-        positive("b", params.width, "must be > 0 and finite (mm)")?;
-        positive("h", params.half_height, "must be > 0 and finite (mm)")?;
-        positive("E", params.youngs_modulus, "must be > 0 and finite (MPa)")?;
-        positive("P", params.pressure, "must be > 0 and finite (MPa)")?;
-        positive(
-            "mu",
-            params.friction,
-            "must be > 0 and finite (dimensionless)",
-        )?;
-        positive(
-            "KT",
-            params.tangential_stiffness,
-            "must be > 0 and finite (MPa/mm)",
-        )?;
+        let mut fields = params;
+        for param in BeamParam::ALL {
+            if let Some(&mut value) = fields.value_mut(param) {
+                param.check(value)?;
+            }
+        }
         let k = 2.0
             * (params.tangential_stiffness / (params.youngs_modulus * params.half_height)).sqrt();
         Ok(TwinBeams { params, k })
@@ -102,6 +129,9 @@ impl TwinBeams {
     }
 
     /// The same system with another K_T (MPa/mm); validated like [`TwinBeams::new`].
+    ///
+    /// # Errors
+    /// [`ParamError`] when `kt` is not finite and > 0.
     pub fn with_tangential_stiffness(&self, kt: f64) -> Result<Self, ParamError> {
         TwinBeams::new(TwinBeamsParams {
             tangential_stiffness: kt,
@@ -239,6 +269,16 @@ pub struct CoulombBeams {
 }
 
 impl CoulombBeams {
+    /// End of the stick zone (mm): the whole interface L while it sticks, 0 once it slides (under
+    /// the plain law the twin-beam interface slides all at once).
+    pub fn stick_end(&self) -> f64 {
+        if self.slides {
+            0.0
+        } else {
+            self.beams.params.length
+        }
+    }
+
     /// Stick below or at F_thre, macroslip (the whole interface at once) above.
     pub fn regime(&self) -> Regime {
         if self.slides {

@@ -1,116 +1,461 @@
-//! CSV rows for the sweeps. Headers are a contract with users' scripts: do not rename columns.
-//! Floats are written in their shortest round-trip form (parsing a value back gives the same f64) by
-//! `zmij`, already in the tree through serde_json: float formatting was 55 % of a million-row sweep
-//! with `core::fmt` (measured with callgrind), and zmij is several times faster.
+//! CSV from the serde row types of [`super::rows`]: the header is the row struct's field names and a
+//! line is its values, so the CSV header, the column order and the JSON keys cannot drift apart.
+//!
+//! A small serde serializer rather than the `csv` crate's, for two reasons: floats are written in
+//! their shortest round-trip form by `zmij` (already in the tree through serde_json, so CSV and JSON
+//! print the same digits; `core::fmt` float formatting was 55 % of a million-row sweep), and a row
+//! goes straight to the writer with no intermediate record.
 
+use std::fmt::Display;
 use std::io::{self, Write};
 
-use crate::curves::{BeamPoint, PlatePoint};
+use serde::ser::{self, Impossible, Serialize, SerializeStruct, Serializer};
 
-/// Header of `microslip sweep beam --format csv`.
-pub const BEAM_HEADER: &str =
-    "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized";
+/// Why a row could not be written: the writer failed, or a row type holds a field CSV cannot show
+/// (a nested struct, a sequence): a programming error that tests catch.
+#[derive(Debug)]
+struct Error(io::Error);
 
-/// Header of `microslip sweep plate --format csv`.
-pub const PLATE_HEADER: &str =
-    "KT_MPa_per_mm,u_coulomb_mm,u_regularized_mm,Xs_mm,Xr_mm,regime_coulomb,regime_regularized";
+impl Display for Error {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.fmt(f)
+    }
+}
 
-/// Header of `microslip sweep cycle --format csv`.
-pub const CYCLE_HEADER: &str = "Fa_N,D_coulomb_Nmm,D_regularized_Nmm,zeta_coulomb,zeta_regularized";
+impl std::error::Error for Error {}
 
-/// Header of `microslip cycle --format csv` (the loop, both laws).
-pub const LOOP_HEADER: &str = "branch,F_N,w_coulomb_mm,w_regularized_mm";
+impl ser::Error for Error {
+    fn custom<T: Display>(msg: T) -> Self {
+        Error(io::Error::other(msg.to_string()))
+    }
+}
 
-/// Writes one cycle-sweep row.
-pub fn write_cycle_row(out: &mut impl Write, p: &crate::curves::CyclePoint) -> io::Result<()> {
-    write_row(
+impl From<io::Error> for Error {
+    fn from(e: io::Error) -> Self {
+        Error(e)
+    }
+}
+
+fn unsupported(what: &str) -> Error {
+    Error(io::Error::other(format!(
+        "CSV rows hold numbers and labels only, not {what}"
+    )))
+}
+
+/// Writes the header line of row type `R`: its field names, as serde names them.
+pub fn write_header<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<()> {
+    row.serialize(Line {
         out,
-        &[
-            p.amplitude,
-            p.d_coulomb,
-            p.d_regularized,
-            p.zeta_coulomb,
-            p.zeta_regularized,
-        ],
-        &[],
-    )
-}
-
-/// Writes one loop point: branch label first.
-pub fn write_loop_row(
-    out: &mut impl Write,
-    branch: &str,
-    force: f64,
-    coulomb: f64,
-    regularized: f64,
-) -> io::Result<()> {
-    out.write_all(branch.as_bytes())?;
-    out.write_all(b",")?;
-    write_row(out, &[force, coulomb, regularized], &[])
-}
-
-/// Writes numbers then labels as one CSV line.
-fn write_row(out: &mut impl Write, numbers: &[f64], labels: &[&str]) -> io::Result<()> {
-    let mut buffer = zmij::Buffer::new();
-    for (i, &x) in numbers.iter().enumerate() {
-        if i > 0 {
-            out.write_all(b",")?;
-        }
-        out.write_all(buffer.format(x).as_bytes())?;
-    }
-    for label in labels {
-        out.write_all(b",")?;
-        out.write_all(label.as_bytes())?;
-    }
+        header: true,
+        first: true,
+    })
+    .map_err(|e| e.0)?;
     out.write_all(b"\n")
 }
 
-/// Writes one beam row.
-pub fn write_beam_row(out: &mut impl Write, p: &BeamPoint) -> io::Result<()> {
-    write_row(
+/// Writes one row as a CSV line.
+pub fn write_row<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<()> {
+    row.serialize(Line {
         out,
-        &[p.force, p.w_coulomb, p.w_regularized, p.micro_end],
-        &[p.regime_coulomb.label(), p.regime_regularized.label()],
-    )
+        header: false,
+        first: true,
+    })
+    .map_err(|e| e.0)?;
+    out.write_all(b"\n")
 }
 
-/// Writes one plate row.
-pub fn write_plate_row(out: &mut impl Write, p: &PlatePoint) -> io::Result<()> {
-    write_row(
-        out,
-        &[p.kt, p.u_coulomb, p.u_regularized, p.stick_end, p.micro_end],
-        &[p.regime_coulomb.label(), p.regime_regularized.label()],
-    )
+/// Serializes one struct as one line: its field names (`header`) or its values.
+struct Line<'a, W: Write> {
+    out: &'a mut W,
+    header: bool,
+    first: bool,
+}
+
+impl<W: Write> Line<'_, W> {
+    fn separator(&mut self) -> io::Result<()> {
+        if self.first {
+            self.first = false;
+            Ok(())
+        } else {
+            self.out.write_all(b",")
+        }
+    }
+}
+
+/// Writes a text cell, quoted when it holds a separator, a quote or a line break (RFC 4180).
+fn write_text(out: &mut impl Write, text: &str) -> io::Result<()> {
+    if text.contains([',', '"', '\n', '\r']) {
+        write!(out, "\"{}\"", text.replace('"', "\"\""))
+    } else {
+        out.write_all(text.as_bytes())
+    }
+}
+
+impl<W: Write> SerializeStruct for Line<'_, W> {
+    type Ok = ();
+    type Error = Error;
+
+    fn serialize_field<T: ?Sized + Serialize>(
+        &mut self,
+        key: &'static str,
+        value: &T,
+    ) -> Result<(), Error> {
+        self.separator()?;
+        if self.header {
+            write_text(self.out, key)?;
+            Ok(())
+        } else {
+            value.serialize(Cell { out: self.out })
+        }
+    }
+
+    fn end(self) -> Result<(), Error> {
+        Ok(())
+    }
+}
+
+impl<'a, W: Write> Serializer for Line<'a, W> {
+    type Ok = ();
+    type Error = Error;
+    type SerializeSeq = Impossible<(), Error>;
+    type SerializeTuple = Impossible<(), Error>;
+    type SerializeTupleStruct = Impossible<(), Error>;
+    type SerializeTupleVariant = Impossible<(), Error>;
+    type SerializeMap = Impossible<(), Error>;
+    type SerializeStruct = Self;
+    type SerializeStructVariant = Impossible<(), Error>;
+
+    fn serialize_struct(self, _: &'static str, _: usize) -> Result<Self, Error> {
+        Ok(self)
+    }
+
+    fn serialize_bool(self, _: bool) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_i8(self, _: i8) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_i16(self, _: i16) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_i32(self, _: i32) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_i64(self, _: i64) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_u8(self, _: u8) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_u16(self, _: u16) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_u32(self, _: u32) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_u64(self, _: u64) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_f32(self, _: f32) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_f64(self, _: f64) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_char(self, _: char) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_str(self, _: &str) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_bytes(self, _: &[u8]) -> Result<(), Error> {
+        Err(unsupported("bytes"))
+    }
+    fn serialize_none(self) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_some<T: ?Sized + Serialize>(self, _: &T) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_unit(self) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_unit_struct(self, _: &'static str) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_unit_variant(self, _: &'static str, _: u32, _: &'static str) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_newtype_struct<T: ?Sized + Serialize>(
+        self,
+        _: &'static str,
+        _: &T,
+    ) -> Result<(), Error> {
+        Err(unsupported("a bare value"))
+    }
+    fn serialize_newtype_variant<T: ?Sized + Serialize>(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: &T,
+    ) -> Result<(), Error> {
+        Err(unsupported("an enum"))
+    }
+    fn serialize_seq(self, _: Option<usize>) -> Result<Self::SerializeSeq, Error> {
+        Err(unsupported("a sequence"))
+    }
+    fn serialize_tuple(self, _: usize) -> Result<Self::SerializeTuple, Error> {
+        Err(unsupported("a tuple"))
+    }
+    fn serialize_tuple_struct(
+        self,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeTupleStruct, Error> {
+        Err(unsupported("a tuple"))
+    }
+    fn serialize_tuple_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeTupleVariant, Error> {
+        Err(unsupported("an enum"))
+    }
+    fn serialize_map(self, _: Option<usize>) -> Result<Self::SerializeMap, Error> {
+        Err(unsupported("a map"))
+    }
+    fn serialize_struct_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeStructVariant, Error> {
+        Err(unsupported("an enum"))
+    }
+}
+
+/// Serializes one field value as one cell.
+struct Cell<'a, W: Write> {
+    out: &'a mut W,
+}
+
+impl<W: Write> Cell<'_, W> {
+    fn float(self, x: f64) -> Result<(), Error> {
+        let mut buffer = zmij::Buffer::new();
+        self.out.write_all(buffer.format(x).as_bytes())?;
+        Ok(())
+    }
+
+    fn integer(self, x: impl Display) -> Result<(), Error> {
+        write!(self.out, "{x}")?;
+        Ok(())
+    }
+}
+
+impl<'a, W: Write> Serializer for Cell<'a, W> {
+    type Ok = ();
+    type Error = Error;
+    type SerializeSeq = Impossible<(), Error>;
+    type SerializeTuple = Impossible<(), Error>;
+    type SerializeTupleStruct = Impossible<(), Error>;
+    type SerializeTupleVariant = Impossible<(), Error>;
+    type SerializeMap = Impossible<(), Error>;
+    type SerializeStruct = Impossible<(), Error>;
+    type SerializeStructVariant = Impossible<(), Error>;
+
+    fn serialize_f64(self, x: f64) -> Result<(), Error> {
+        self.float(x)
+    }
+    fn serialize_f32(self, x: f32) -> Result<(), Error> {
+        self.float(f64::from(x))
+    }
+    fn serialize_str(self, text: &str) -> Result<(), Error> {
+        write_text(self.out, text)?;
+        Ok(())
+    }
+    fn serialize_bool(self, x: bool) -> Result<(), Error> {
+        self.integer(x)
+    }
+    fn serialize_i8(self, x: i8) -> Result<(), Error> {
+        self.integer(x)
+    }
+    fn serialize_i16(self, x: i16) -> Result<(), Error> {
+        self.integer(x)
+    }
+    fn serialize_i32(self, x: i32) -> Result<(), Error> {
+        self.integer(x)
+    }
+    fn serialize_i64(self, x: i64) -> Result<(), Error> {
+        self.integer(x)
+    }
+    fn serialize_u8(self, x: u8) -> Result<(), Error> {
+        self.integer(x)
+    }
+    fn serialize_u16(self, x: u16) -> Result<(), Error> {
+        self.integer(x)
+    }
+    fn serialize_u32(self, x: u32) -> Result<(), Error> {
+        self.integer(x)
+    }
+    fn serialize_u64(self, x: u64) -> Result<(), Error> {
+        self.integer(x)
+    }
+    fn serialize_char(self, x: char) -> Result<(), Error> {
+        self.serialize_str(x.encode_utf8(&mut [0; 4]))
+    }
+    /// An absent value is an empty cell.
+    fn serialize_none(self) -> Result<(), Error> {
+        Ok(())
+    }
+    fn serialize_some<T: ?Sized + Serialize>(self, value: &T) -> Result<(), Error> {
+        value.serialize(self)
+    }
+    /// A unit enum variant (a label) is its name.
+    fn serialize_unit_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        variant: &'static str,
+    ) -> Result<(), Error> {
+        self.serialize_str(variant)
+    }
+    fn serialize_newtype_struct<T: ?Sized + Serialize>(
+        self,
+        _: &'static str,
+        value: &T,
+    ) -> Result<(), Error> {
+        value.serialize(self)
+    }
+    fn serialize_bytes(self, _: &[u8]) -> Result<(), Error> {
+        Err(unsupported("bytes"))
+    }
+    fn serialize_unit(self) -> Result<(), Error> {
+        Ok(())
+    }
+    fn serialize_unit_struct(self, _: &'static str) -> Result<(), Error> {
+        Ok(())
+    }
+    fn serialize_newtype_variant<T: ?Sized + Serialize>(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: &T,
+    ) -> Result<(), Error> {
+        Err(unsupported("an enum with data"))
+    }
+    fn serialize_seq(self, _: Option<usize>) -> Result<Self::SerializeSeq, Error> {
+        Err(unsupported("a sequence"))
+    }
+    fn serialize_tuple(self, _: usize) -> Result<Self::SerializeTuple, Error> {
+        Err(unsupported("a tuple"))
+    }
+    fn serialize_tuple_struct(
+        self,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeTupleStruct, Error> {
+        Err(unsupported("a tuple"))
+    }
+    fn serialize_tuple_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeTupleVariant, Error> {
+        Err(unsupported("an enum with data"))
+    }
+    fn serialize_map(self, _: Option<usize>) -> Result<Self::SerializeMap, Error> {
+        Err(unsupported("a map"))
+    }
+    fn serialize_struct(self, _: &'static str, _: usize) -> Result<Self::SerializeStruct, Error> {
+        Err(unsupported("a nested struct"))
+    }
+    fn serialize_struct_variant(
+        self,
+        _: &'static str,
+        _: u32,
+        _: &'static str,
+        _: usize,
+    ) -> Result<Self::SerializeStructVariant, Error> {
+        Err(unsupported("an enum with data"))
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Regime;
+    use serde::Serialize;
+
+    #[derive(Serialize)]
+    struct Row {
+        #[serde(rename = "F_N")]
+        force: f64,
+        label: &'static str,
+        count: u64,
+    }
+
+    fn line(row: &Row, header: bool) -> String {
+        let mut out = Vec::new();
+        if header {
+            write_header(&mut out, row).unwrap();
+        } else {
+            write_row(&mut out, row).unwrap();
+        }
+        String::from_utf8(out).unwrap()
+    }
 
     #[test]
-    fn rows_round_trip_their_numbers() {
-        let p = BeamPoint {
+    fn the_header_is_the_field_names_and_a_line_the_values() {
+        let row = Row {
             force: 0.1 + 0.2,
-            w_coulomb: 1e-7 / 3.0,
-            w_regularized: 123_456_789.123,
-            micro_end: 200.0,
-            regime_coulomb: Regime::Stick,
-            regime_regularized: Regime::MicroslipMacroslip,
+            label: "micro+macro",
+            count: 7,
         };
-        let mut out = Vec::new();
-        write_beam_row(&mut out, &p).unwrap();
-        let line = String::from_utf8(out).unwrap();
-        let fields: Vec<&str> = line.trim_end().split(',').collect();
+        assert_eq!(line(&row, true), "F_N,label,count\n");
+        let text = line(&row, false);
+        let fields: Vec<&str> = text.trim_end().split(',').collect();
         assert_eq!(fields[0].parse::<f64>().unwrap(), 0.1 + 0.2);
-        assert_eq!(fields[1].parse::<f64>().unwrap(), 1e-7 / 3.0);
-        assert_eq!(fields[2].parse::<f64>().unwrap(), 123_456_789.123);
-        assert_eq!(&fields[4..], ["stick", "microslip+macroslip"]);
-        for x in [0.0, 1.0, 5e-324, 1e300, 1.0 / 3.0, -2.5e-8] {
-            let mut out = Vec::new();
-            write_row(&mut out, &[x], &[]).unwrap();
-            let text = String::from_utf8(out).unwrap();
-            assert_eq!(text.trim_end().parse::<f64>().unwrap(), x, "{text}");
+        assert_eq!(&fields[1..], ["micro+macro", "7"]);
+    }
+
+    #[test]
+    fn floats_round_trip_and_text_is_quoted_when_it_must_be() {
+        for x in [0.0, 1.0, 5e-324, 1e300, 1.0 / 3.0, -2.5e-8, 123_456_789.123] {
+            let text = line(
+                &Row {
+                    force: x,
+                    label: "",
+                    count: 0,
+                },
+                false,
+            );
+            let cell = text.split(',').next().unwrap();
+            assert_eq!(cell.parse::<f64>().unwrap(), x, "{text}");
         }
+        let text = line(
+            &Row {
+                force: 1.0,
+                label: "a,\"b\"",
+                count: 0,
+            },
+            false,
+        );
+        assert_eq!(text, "1.0,\"a,\"\"b\"\"\",0\n");
+    }
+
+    #[test]
+    fn nested_values_are_refused_not_flattened() {
+        #[derive(Serialize)]
+        struct Nested {
+            inner: Vec<f64>,
+        }
+        let mut out = Vec::new();
+        assert!(write_row(&mut out, &Nested { inner: vec![1.0] }).is_err());
     }
 }

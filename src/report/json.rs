@@ -1,84 +1,36 @@
-//! JSON output: the text reports' fields, with unit-suffixed names (`w_tip_mm`, `KT_MPa_per_mm`).
+//! JSON reports of single points (beam, plate, cycle, fit, K_T comparison): the text reports'
+//! fields, with unit-suffixed names (`w_tip_mm`, `KT_MPa_per_mm`). Tables (sweeps) are serialized
+//! from [`super::rows`] instead.
 
-use serde::Serialize;
 use serde_json::{Map, Value};
 
-use crate::curves::{BeamPoint, PlatePoint, beam_point, plate_point};
-use crate::preset::Inputs;
+use crate::curves::{Answer, StiffnessComparison, beam_point, plate_point};
+use crate::model::inputs::Inputs;
+use crate::model::params::Unit;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// `KEY_unit` with the unit spelled for identifiers: `L_mm`, `E_MPa`, `KT_MPa_per_mm`, `mu`.
-pub fn suffixed(key: &str, unit: &str) -> String {
+pub fn suffixed(key: &str, unit: Unit) -> String {
     match unit {
-        "-" => key.to_string(),
-        unit => format!("{key}_{}", unit.replace('/', "_per_")),
+        Unit::Dimensionless => key.to_string(),
+        unit => format!("{key}_{}", unit.symbol().replace('/', "_per_")),
     }
 }
 
 fn inputs_object(inputs: &Inputs) -> Value {
     let map: Map<String, Value> = inputs
         .kind()
-        .keys()
+        .params()
         .iter()
-        .map(|k| {
+        .map(|&param| {
             (
-                suffixed(k.name, k.unit),
-                Value::from(inputs.get(k.name).unwrap_or(f64::NAN)),
+                suffixed(param.name(), param.unit()),
+                // `get` cannot miss: the parameters come from the inputs' own model.
+                Value::from(inputs.get(param).unwrap_or(f64::NAN)),
             )
         })
         .collect();
     Value::Object(map)
-}
-
-/// One twin-beam sweep row.
-#[derive(Serialize)]
-pub struct BeamRow {
-    #[serde(rename = "F_N")]
-    force: f64,
-    w_coulomb_mm: f64,
-    w_regularized_mm: f64,
-    #[serde(rename = "X_mm")]
-    micro_end: f64,
-    regime_coulomb: &'static str,
-    regime_regularized: &'static str,
-}
-
-impl From<&BeamPoint> for BeamRow {
-    fn from(p: &BeamPoint) -> Self {
-        BeamRow {
-            force: p.force,
-            w_coulomb_mm: p.w_coulomb,
-            w_regularized_mm: p.w_regularized,
-            micro_end: p.micro_end,
-            regime_coulomb: p.regime_coulomb.label(),
-            regime_regularized: p.regime_regularized.label(),
-        }
-    }
-}
-
-/// One cycle-sweep row.
-#[derive(Serialize)]
-pub struct CycleRow {
-    #[serde(rename = "Fa_N")]
-    amplitude: f64,
-    #[serde(rename = "D_coulomb_Nmm")]
-    d_coulomb: f64,
-    #[serde(rename = "D_regularized_Nmm")]
-    d_regularized: f64,
-    zeta_coulomb: f64,
-    zeta_regularized: f64,
-}
-
-impl From<&crate::curves::CyclePoint> for CycleRow {
-    fn from(p: &crate::curves::CyclePoint) -> Self {
-        CycleRow {
-            amplitude: p.amplitude,
-            d_coulomb: p.d_coulomb,
-            d_regularized: p.d_regularized,
-            zeta_coulomb: p.zeta_coulomb,
-            zeta_regularized: p.zeta_regularized,
-        }
-    }
 }
 
 /// One cycle's summary for both laws.
@@ -105,43 +57,9 @@ pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> Value {
     })
 }
 
-/// One plate sweep row.
-#[derive(Serialize)]
-pub struct PlateRow {
-    #[serde(rename = "KT_MPa_per_mm")]
-    kt: f64,
-    u_coulomb_mm: f64,
-    u_regularized_mm: f64,
-    #[serde(rename = "Xs_mm")]
-    stick_end: f64,
-    #[serde(rename = "Xr_mm")]
-    micro_end: f64,
-    regime_coulomb: &'static str,
-    regime_regularized: &'static str,
-}
-
-impl From<&PlatePoint> for PlateRow {
-    fn from(p: &PlatePoint) -> Self {
-        PlateRow {
-            kt: p.kt,
-            u_coulomb_mm: p.u_coulomb,
-            u_regularized_mm: p.u_regularized,
-            stick_end: p.stick_end,
-            micro_end: p.micro_end,
-            regime_coulomb: p.regime_coulomb.label(),
-            regime_regularized: p.regime_regularized.label(),
-        }
-    }
-}
-
 /// Twin-beam report at one force.
 pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> Value {
     let row = beam_point(beams, force);
-    let stick_end = if row.regime_coulomb.has_macroslip() {
-        0.0
-    } else {
-        beams.params().length
-    };
     serde_json::json!({
         "model": "beam",
         "preset": preset,
@@ -153,7 +71,7 @@ pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> Value {
         "coulomb": {
             "regime": row.regime_coulomb.label(),
             "w_tip_mm": row.w_coulomb,
-            "stick_end_mm": stick_end,
+            "stick_end_mm": row.stick_end,
         },
         "regularized": {
             "regime": row.regime_regularized.label(),
@@ -217,40 +135,43 @@ pub fn fit(data: &str, preset: &str, result: &crate::fit::FitResult) -> Value {
 }
 
 /// The K_T comparison.
-pub fn stiffness_table(
-    preset: &str,
-    model: &crate::preset::Model,
-    element: f64,
-    rows: &[crate::curves::StiffnessCandidate],
-) -> Value {
-    use crate::curves::{beam_answer, plate_answer};
-    use crate::preset::Model;
-    let rows: Vec<Value> = rows
+pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> Value {
+    let rows: Vec<Value> = comparison
+        .rows
         .iter()
         .map(|row| {
-            let mut object = serde_json::json!({ "source": row.source, "basis": row.basis, "KT_MPa_per_mm": row.kt });
-            match (model, row.kt) {
-                (Model::Beam { beams, force }, Some(kt)) => {
-                    if let Some((f_1, x, w, regime)) = beam_answer(beams, *force, kt) {
-                        object["F_1_N"] = f_1.into();
-                        object["X_mm"] = x.into();
-                        object["w_tip_mm"] = w.into();
-                        object["regime"] = regime.label().into();
-                    }
+            let mut object = serde_json::json!({
+                "source": super::text::candidate_name(&row.candidate.source),
+                "basis": super::text::candidate_basis(&row.candidate.source),
+                "KT_MPa_per_mm": row.candidate.kt,
+            });
+            match row.answer {
+                Some(Answer::Beam {
+                    first_macroslip_force,
+                    micro_end,
+                    tip_deflection,
+                    regime,
+                }) => {
+                    object["F_1_N"] = first_macroslip_force.into();
+                    object["X_mm"] = micro_end.into();
+                    object["w_tip_mm"] = tip_deflection.into();
+                    object["regime"] = regime.label().into();
                 }
-                (Model::Plate(plate), Some(kt)) => {
-                    if let Some((u, x, regime)) = plate_answer(plate, kt) {
-                        object["u_end_mm"] = u.into();
-                        object["Xr_mm"] = x.into();
-                        object["regime"] = regime.label().into();
-                    }
+                Some(Answer::Plate {
+                    end_displacement,
+                    micro_end,
+                    regime,
+                }) => {
+                    object["u_end_mm"] = end_displacement.into();
+                    object["Xr_mm"] = micro_end.into();
+                    object["regime"] = regime.label().into();
                 }
-                _ => {}
+                None => {}
             }
             object
         })
         .collect();
-    serde_json::json!({ "preset": preset, "element_size_mm": element, "candidates": rows })
+    serde_json::json!({ "preset": preset, "element_size_mm": comparison.element, "candidates": rows })
 }
 
 #[cfg(test)]
@@ -259,8 +180,11 @@ mod tests {
 
     #[test]
     fn unit_suffixes_are_identifier_friendly() {
-        assert_eq!(suffixed("KT", "MPa/mm"), "KT_MPa_per_mm");
-        assert_eq!(suffixed("mu", "-"), "mu");
-        assert_eq!(suffixed("F", "N"), "F_N");
+        assert_eq!(
+            suffixed("KT", Unit::MegapascalPerMillimetre),
+            "KT_MPa_per_mm"
+        );
+        assert_eq!(suffixed("mu", Unit::Dimensionless), "mu");
+        assert_eq!(suffixed("F", Unit::Newton), "F_N");
     }
 }

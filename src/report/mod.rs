@@ -1,11 +1,17 @@
-//! Output formats over the physics: text reports for people, JSON and CSV for scripts.
+//! Every output format over the physics: text reports for people, JSON and CSV for scripts.
 //!
-//! Pure string building (no printing), so every format is testable and the binary stays thin. All
-//! numbers come from [`crate::curves`], the same functions the sweeps and the TUI use.
+//! Pure formatting (strings, or bytes into a writer the caller owns), so every format is testable
+//! and the binary stays thin. All numbers come from [`crate::curves`] and the structured results of
+//! [`crate::fit`] and [`crate::verify`], the same values the TUI shows. Nothing below this module
+//! imports it.
 
 pub mod csv;
 pub mod json;
+pub mod presets;
+pub mod rows;
+pub mod table;
 pub mod text;
+pub mod view;
 
 use std::fmt::Write;
 

@@ -1,30 +1,33 @@
-//! Readable single-point reports: inputs with units, thresholds, both laws side by side.
+//! Readable single-point reports: inputs with units, thresholds, both laws side by side; the K_T
+//! comparison; the fit. Pure string building from the structured results of the library.
 
 use std::fmt::Write;
 
 use super::number;
-use crate::curves::{beam_point, plate_point};
+use crate::curves::{Answer, CandidateSource, StiffnessComparison, beam_point, plate_point};
+use crate::model::inputs::{Inputs, Model};
+use crate::model::params::Unit;
 use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
-use crate::preset::Inputs;
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
-/// The inputs block: one line per key with value, unit and meaning.
+/// The inputs block: one line per parameter with value, unit and meaning.
 fn write_inputs(out: &mut String, inputs: &Inputs) {
     let _ = writeln!(out, "Inputs");
-    for key in inputs.kind().keys() {
-        let value = inputs.get(key.name).unwrap_or(f64::NAN);
-        let unit = if key.unit == "-" {
-            String::new()
-        } else {
-            format!(" {}", key.unit)
+    for &param in inputs.kind().params() {
+        let spec = param.spec();
+        // `get` cannot miss: the parameters come from the inputs' own model.
+        let value = inputs.get(param).unwrap_or(f64::NAN);
+        let unit = match spec.unit {
+            Unit::Dimensionless => String::new(),
+            unit => format!(" {unit}"),
         };
         let mut line = format!(
             "  {:<3} = {:<18} {}",
-            key.name,
+            spec.name,
             format!("{}{unit}", number(value)),
-            key.meaning
+            spec.meaning
         );
-        if key.name == "KT" {
+        if param.is_stiffness() {
             line.push_str(&format!(
                 " ({} MPa/um)",
                 number(mpa_per_mm_to_mpa_per_um(value))
@@ -106,11 +109,6 @@ pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
         "  mu P / K_T = {:<14} saturation slip",
         format!("{} um", number(mm_to_um(beams.saturation_slip())))
     );
-    let stick_end = if row.regime_coulomb.has_macroslip() {
-        0.0
-    } else {
-        p.length
-    };
     let _ = writeln!(
         out,
         "{:<24}{:<22}regularized",
@@ -123,7 +121,7 @@ pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
         values: (row.w_coulomb, row.w_regularized),
         regimes: (row.regime_coulomb, row.regime_regularized),
         zone_ends: (
-            format!("{} (stick end)", number(stick_end)),
+            format!("{} (stick end)", number(row.stick_end)),
             format!("{} (microslip end X)", number(row.micro_end)),
         ),
     };
@@ -295,24 +293,45 @@ pub fn fit(
     out
 }
 
+/// The name of a K_T candidate's source, as reports show it.
+pub fn candidate_name(source: &CandidateSource) -> &'static str {
+    match source {
+        CandidateSource::Current => "current",
+        CandidateSource::NormalLow => "K_N x 0.5",
+        CandidateSource::Equation4 { .. } => "eq. 4",
+        CandidateSource::NormalHigh => "K_N x 0.7",
+        CandidateSource::Code(code) => code.code,
+    }
+}
+
+/// How a K_T candidate was obtained, and how sure we are.
+pub fn candidate_basis(source: &CandidateSource) -> String {
+    match source {
+        CandidateSource::Current => "the model's K_T".into(),
+        CandidateSource::NormalLow => "measured K_T/K_N, low end".into(),
+        CandidateSource::Equation4 { nu } => format!("pi (1 - nu) / (2 (2 - nu)) K_N, nu = {nu}"),
+        CandidateSource::NormalHigh => "measured K_T/K_N, high end".into(),
+        CandidateSource::Code(code) => {
+            format!("{} ({})", code.description, code.confirmation.label())
+        }
+    }
+}
+
 /// The K_T comparison: each candidate and what it does to the answer.
-pub fn stiffness_table(
-    preset: &str,
-    model: &crate::preset::Model,
-    element: f64,
-    rows: &[crate::curves::StiffnessCandidate],
-) -> String {
-    use crate::curves::{beam_answer, plate_answer};
-    use crate::preset::Model;
+pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> String {
     let mut out = String::new();
-    match model {
-        Model::Beam { beams, force } => {
-            let p = beams.params();
+    let element = comparison.element;
+    let (mu, pressure) = {
+        let data = comparison.model.interface();
+        (data.friction, data.pressure)
+    };
+    match comparison.model {
+        Model::Beam { force, .. } => {
             let _ = writeln!(
                 out,
                 "K_T candidates for preset {preset}: twin beams at F = {} N, mu P = {} MPa, contact elements {} mm",
                 number(force.newtons()),
-                number(p.friction * p.pressure),
+                number(mu * pressure),
                 number(element)
             );
             let _ = writeln!(
@@ -320,40 +339,12 @@ pub fn stiffness_table(
                 "{:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} basis",
                 "source", "K_T (MPa/mm)", "F_1 (N)", "X (mm)", "w(L) (mm)", "regime"
             );
-            for row in rows {
-                match row
-                    .kt
-                    .and_then(|kt| beam_answer(beams, *force, kt).map(|a| (kt, a)))
-                {
-                    Some((kt, (f_1, x, w, regime))) => {
-                        let _ = writeln!(
-                            out,
-                            "{:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} {}",
-                            row.source,
-                            number(kt),
-                            number(f_1),
-                            number(x),
-                            number(w),
-                            regime.label(),
-                            row.basis
-                        );
-                    }
-                    None => {
-                        let _ = writeln!(
-                            out,
-                            "{:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} {}",
-                            row.source, "-", "-", "-", "-", "-", row.basis
-                        );
-                    }
-                }
-            }
         }
-        Model::Plate(plate) => {
-            let p = plate.params();
+        Model::Plate(_) => {
             let _ = writeln!(
                 out,
                 "K_T candidates for preset {preset}: squeezed plate, mu P = {} MPa, contact elements {} mm",
-                number(p.friction * p.pressure),
+                number(mu * pressure),
                 number(element)
             );
             let _ = writeln!(
@@ -361,33 +352,56 @@ pub fn stiffness_table(
                 "{:<16} {:>12} {:>12} {:>10}  {:<20} basis",
                 "source", "K_T (MPa/mm)", "u(L) (mm)", "X_r (mm)", "regime"
             );
-            for row in rows {
-                match row
-                    .kt
-                    .and_then(|kt| plate_answer(plate, kt).map(|a| (kt, a)))
-                {
-                    Some((kt, (u, x, regime))) => {
-                        let _ = writeln!(
-                            out,
-                            "{:<16} {:>12} {:>12} {:>10}  {:<20} {}",
-                            row.source,
-                            number(kt),
-                            number(u),
-                            number(x),
-                            regime.label(),
-                            row.basis
-                        );
-                    }
-                    None => {
-                        let _ = writeln!(
-                            out,
-                            "{:<16} {:>12} {:>12} {:>10}  {:<20} {}",
-                            row.source, "-", "-", "-", "-", row.basis
-                        );
-                    }
-                }
-            }
         }
+    }
+    for row in &comparison.rows {
+        let (source, basis) = (
+            candidate_name(&row.candidate.source),
+            candidate_basis(&row.candidate.source),
+        );
+        let kt = row.candidate.kt.map_or("-".to_string(), number);
+        let _ = match (comparison.model, row.answer) {
+            (
+                _,
+                Some(Answer::Beam {
+                    first_macroslip_force,
+                    micro_end,
+                    tip_deflection,
+                    regime,
+                }),
+            ) => writeln!(
+                out,
+                "{source:<16} {kt:>12} {:>10} {:>10} {:>11}  {:<20} {basis}",
+                number(first_macroslip_force),
+                number(micro_end),
+                number(tip_deflection),
+                regime.label(),
+            ),
+            (
+                _,
+                Some(Answer::Plate {
+                    end_displacement,
+                    micro_end,
+                    regime,
+                }),
+            ) => writeln!(
+                out,
+                "{source:<16} {kt:>12} {:>12} {:>10}  {:<20} {basis}",
+                number(end_displacement),
+                number(micro_end),
+                regime.label(),
+            ),
+            (Model::Beam { .. }, None) => writeln!(
+                out,
+                "{source:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} {basis}",
+                "-", "-", "-", "-", "-"
+            ),
+            (Model::Plate(_), None) => writeln!(
+                out,
+                "{source:<16} {:>12} {:>12} {:>10}  {:<20} {basis}",
+                "-", "-", "-", "-"
+            ),
+        };
     }
     let _ = writeln!(
         out,

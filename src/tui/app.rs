@@ -3,62 +3,16 @@
 
 use std::path::PathBuf;
 
+use super::action::Action;
 use super::keymap::Context;
-use super::plots::{self, NumericPoints, Plot};
+use super::plots::{self, NumericPoints, Plot, Views};
+use super::text_input::TextInput;
 use super::theme::Theme;
 use crate::fit::Measurement;
-use crate::preset::{self, Inputs, Model, ModelKind, ParamKey, Preset, PresetSource, SaveError};
-
-/// What a key press asks for (see the key map).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Action {
-    /// Leave the program.
-    Quit,
-    /// Next row (parameter or preset).
-    Next,
-    /// Previous row.
-    Previous,
-    /// Increase the selected parameter by a fine step.
-    Increase,
-    /// Decrease it by a fine step.
-    Decrease,
-    /// Increase by a coarse step.
-    IncreaseCoarse,
-    /// Decrease by a coarse step.
-    DecreaseCoarse,
-    /// Start typing an exact value.
-    StartEdit,
-    /// A typed character.
-    Input(char),
-    /// Delete the last typed character.
-    Backspace,
-    /// Accept (typed value, preset choice, name).
-    Commit,
-    /// Back out of the current overlay or entry.
-    Cancel,
-    /// Answer yes.
-    Yes,
-    /// Twin beams <-> plate.
-    SwitchModel,
-    /// Next chart of the model.
-    NextChart,
-    /// Previous chart.
-    PreviousChart,
-    /// Finite-element points on or off.
-    ToggleNumeric,
-    /// Help overlay on or off.
-    ToggleHelp,
-    /// Open the preset picker.
-    OpenPresets,
-    /// Save the parameters as a user preset.
-    SavePreset,
-    /// Back to the loaded preset's values.
-    Reset,
-    /// Ask for a measurement file (F_N, w_mm).
-    LoadData,
-    /// Fit mu and K_T to the measurements and adopt the identifiable ones.
-    Fit,
-}
+use crate::model::inputs::{Inputs, Model};
+use crate::model::params::{BeamParam, ModelKind, Param, parse_number};
+use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
+use crate::report::{number, number_with};
 
 /// A status-line message.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -69,17 +23,6 @@ pub struct Message {
     pub is_error: bool,
 }
 
-/// One row of the preset picker.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PresetEntry {
-    /// Name.
-    pub name: String,
-    /// `bundled` or `user`.
-    pub origin: &'static str,
-    /// The preset, or the first problem of an invalid file.
-    pub preset: Result<Preset, String>,
-}
-
 /// What has the keyboard.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Mode {
@@ -88,26 +31,26 @@ pub enum Mode {
     /// Typing a value for the selected parameter.
     Editing {
         /// Text typed so far.
-        buffer: String,
+        input: TextInput,
     },
     /// The help overlay.
     Help,
     /// The preset picker.
     Presets {
         /// Bundled then user presets.
-        entries: Vec<PresetEntry>,
+        entries: Vec<Listed>,
         /// Selected row.
         selected: usize,
     },
     /// Typing the name of a preset to save.
     SaveName {
         /// Text typed so far.
-        buffer: String,
+        input: TextInput,
     },
     /// Typing the path of a measurement file.
     DataPath {
         /// Text typed so far.
-        buffer: String,
+        input: TextInput,
     },
     /// Asking before overwriting a user preset.
     ConfirmOverwrite {
@@ -131,13 +74,12 @@ impl Mode {
     }
 }
 
-/// Per-model state: inputs (always valid), the preset they came from, selection and chart.
+/// Per-model state: inputs (always valid), the preset they came from and the selected row.
 #[derive(Debug, Clone, PartialEq)]
 struct ModelState {
     inputs: Inputs,
     preset: Preset,
     selected: usize,
-    chart: usize,
 }
 
 /// Start-up choices.
@@ -169,6 +111,7 @@ pub struct App {
     beam: ModelState,
     plate: ModelState,
     kind: ModelKind,
+    views: Views,
     mode: Mode,
     message: Option<Message>,
     show_numeric: bool,
@@ -179,23 +122,6 @@ pub struct App {
     measurements: Option<Measurements>,
 }
 
-/// Relative fine and coarse steps of multiplicative parameters.
-const FINE_FACTOR: f64 = 1.02;
-const COARSE_FACTOR: f64 = 1.25;
-
-fn bundled_preset(kind: ModelKind) -> Preset {
-    let name = match kind {
-        ModelKind::Beam => "paper-beams",
-        ModelKind::Plate => "paper-plate",
-    };
-    preset::resolve(name).unwrap_or_else(|_| Preset {
-        name: name.to_string(),
-        description: String::new(),
-        inputs: Inputs::paper(kind),
-        source: PresetSource::Bundled,
-    })
-}
-
 impl App {
     /// The app on `options.preset`; the other model starts on its paper preset.
     pub fn new(options: AppOptions) -> App {
@@ -203,24 +129,19 @@ impl App {
             inputs: preset.inputs,
             preset,
             selected: 0,
-            chart: 0,
         };
         let kind = options.preset.inputs.kind();
+        let other = state(preset::paper(kind.other()));
         let (beam, plate) = match kind {
-            ModelKind::Beam => (
-                state(options.preset),
-                state(bundled_preset(ModelKind::Plate)),
-            ),
-            ModelKind::Plate => (
-                state(bundled_preset(ModelKind::Beam)),
-                state(options.preset),
-            ),
+            ModelKind::Beam => (state(options.preset), other),
+            ModelKind::Plate => (other, state(options.preset)),
         };
         let mut app = App {
             theme: options.theme,
             beam,
             plate,
             kind,
+            views: Views::default(),
             mode: Mode::Normal,
             message: None,
             show_numeric: false,
@@ -283,14 +204,14 @@ impl App {
         self.state().selected
     }
 
-    /// The selected parameter's key.
-    pub fn selected_key(&self) -> ParamKey {
-        self.kind.keys()[self.state().selected]
+    /// The selected parameter.
+    pub fn selected_param(&self) -> Param {
+        self.kind.params()[self.state().selected]
     }
 
-    /// Index of the chart shown.
-    pub fn chart(&self) -> usize {
-        self.state().chart
+    /// The views shown for each model.
+    pub fn views(&self) -> Views {
+        self.views
     }
 
     /// What has the keyboard.
@@ -340,9 +261,8 @@ impl App {
     /// Rebuilds the chart (and the finite-element points when shown) after any change.
     fn recompute(&mut self) {
         let Some(model) = self.model() else { return };
-        let chart = self.state().chart;
         if self.show_numeric {
-            match plots::numeric_points(&model, chart) {
+            match plots::numeric_points(&model, self.views) {
                 Ok(points) => self.numeric = points,
                 Err(e) => {
                     self.numeric = None;
@@ -353,7 +273,7 @@ impl App {
             self.numeric = None;
         }
         let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
-        self.plot = plots::build(&model, chart, self.numeric.as_ref(), measured);
+        self.plot = plots::build(&model, self.views, self.numeric.as_ref(), measured);
     }
 
     /// Applies one action.
@@ -364,32 +284,43 @@ impl App {
         }
         match std::mem::replace(&mut self.mode, Mode::Normal) {
             Mode::Normal => self.update_normal(action),
-            Mode::Editing { buffer } => self.update_editing(buffer, action),
+            Mode::Editing { input } => {
+                if let Some(text) = self.edit(
+                    input,
+                    action,
+                    |input| Mode::Editing { input },
+                    "edit cancelled",
+                ) {
+                    self.commit_value(&text);
+                }
+            }
             Mode::Help => {
                 if action != Action::ToggleHelp && action != Action::Cancel {
                     self.mode = Mode::Help;
                 }
             }
             Mode::Presets { entries, selected } => self.update_presets(entries, selected, action),
-            Mode::SaveName { buffer } => self.update_save_name(buffer, action),
-            Mode::DataPath { buffer } => match action {
-                Action::Input(c) if buffer.len() < 4096 => {
-                    self.mode = Mode::DataPath {
-                        buffer: buffer + &c.to_string(),
-                    }
+            Mode::SaveName { input } => {
+                if let Some(name) = self.edit(
+                    input,
+                    action,
+                    |input| Mode::SaveName { input },
+                    "save cancelled",
+                ) {
+                    self.save(&name, false);
                 }
-                Action::Backspace => {
-                    let mut buffer = buffer;
-                    buffer.pop();
-                    self.mode = Mode::DataPath { buffer };
-                }
-                Action::Commit => {
-                    self.load_data(buffer.trim());
+            }
+            Mode::DataPath { input } => {
+                if let Some(path) = self.edit(
+                    input,
+                    action,
+                    |input| Mode::DataPath { input },
+                    "loading cancelled",
+                ) {
+                    self.load_data(&path);
                     self.recompute();
                 }
-                Action::Cancel => self.info("loading cancelled"),
-                _ => self.mode = Mode::DataPath { buffer },
-            },
+            }
             Mode::ConfirmOverwrite { name } => match action {
                 Action::Yes => self.save(&name, true),
                 _ => self.info("save cancelled; the existing preset is unchanged"),
@@ -397,39 +328,60 @@ impl App {
         }
     }
 
+    /// One key in a text-entry mode: edits stay in the mode (rebuilt by `mode`), Esc leaves it with
+    /// the note `cancelled`, Enter returns the trimmed text for the caller to act on.
+    fn edit(
+        &mut self,
+        mut input: TextInput,
+        action: Action,
+        mode: impl FnOnce(TextInput) -> Mode,
+        cancelled: &'static str,
+    ) -> Option<String> {
+        match action {
+            Action::Input(c) if !input.push(c) => {
+                self.error(format!(
+                    "input is limited to {} characters",
+                    super::text_input::MAX_CHARS
+                ));
+            }
+            Action::Input(_) => {}
+            Action::Backspace => input.pop(),
+            Action::Commit => return Some(input.trimmed().to_string()),
+            Action::Cancel => {
+                self.info(cancelled);
+                return None;
+            }
+            _ => {}
+        }
+        self.mode = mode(input);
+        None
+    }
+
     fn update_normal(&mut self, action: Action) {
-        let rows = self.kind.keys().len();
+        let rows = self.kind.params().len();
         match action {
             Action::Next => self.state_mut().selected = (self.state().selected + 1) % rows,
             Action::Previous => {
                 self.state_mut().selected = (self.state().selected + rows - 1) % rows
             }
-            Action::Increase => self.step(1.0, false),
-            Action::Decrease => self.step(-1.0, false),
-            Action::IncreaseCoarse => self.step(1.0, true),
-            Action::DecreaseCoarse => self.step(-1.0, true),
+            Action::Increase => self.step(true, false),
+            Action::Decrease => self.step(false, false),
+            Action::IncreaseCoarse => self.step(true, true),
+            Action::DecreaseCoarse => self.step(false, true),
             Action::StartEdit => {
                 self.message = None;
                 self.mode = Mode::Editing {
-                    buffer: String::new(),
+                    input: TextInput::default(),
                 };
             }
             Action::SwitchModel => {
-                self.kind = match self.kind {
-                    ModelKind::Beam => ModelKind::Plate,
-                    ModelKind::Plate => ModelKind::Beam,
-                };
+                self.kind = self.kind.other();
                 self.message = None;
                 self.recompute();
             }
             Action::NextChart | Action::PreviousChart => {
-                let charts = plots::chart_names(self.kind).len();
-                let chart = self.state().chart;
-                self.state_mut().chart = if action == Action::NextChart {
-                    (chart + 1) % charts
-                } else {
-                    (chart + charts - 1) % charts
-                };
+                let forward = action == Action::NextChart;
+                self.views = self.views.turn(self.kind, forward);
                 self.recompute();
             }
             Action::ToggleNumeric => {
@@ -443,16 +395,14 @@ impl App {
             Action::OpenPresets => self.open_presets(),
             Action::SavePreset => {
                 self.mode = Mode::SaveName {
-                    buffer: String::new(),
+                    input: TextInput::default(),
                 }
             }
             Action::LoadData => {
-                let buffer = self
-                    .measurements
-                    .as_ref()
-                    .map(|m| m.path.clone())
-                    .unwrap_or_default();
-                self.mode = Mode::DataPath { buffer };
+                let path = self.measurements.as_ref().map_or("", |m| m.path.as_str());
+                self.mode = Mode::DataPath {
+                    input: TextInput::new(path),
+                };
             }
             Action::Fit => self.fit(),
             Action::Reset => {
@@ -461,7 +411,12 @@ impl App {
                 self.info(format!("reset to preset {}", self.preset_name()));
                 self.recompute();
             }
-            _ => {}
+            Action::Input(_)
+            | Action::Backspace
+            | Action::Commit
+            | Action::Cancel
+            | Action::Yes
+            | Action::Quit => {}
         }
     }
 
@@ -500,27 +455,26 @@ impl App {
         };
         match crate::fit::fit_twin_beams(beams.params(), &measurements.points, None, None) {
             Ok(result) => {
-                let mut adopted = Vec::new();
+                let mut inputs = self.state().inputs;
                 let mut text = Vec::new();
-                for (key, estimate) in [("mu", &result.mu), ("KT", &result.kt)] {
-                    let error = estimate.std_error.map_or(String::new(), |e| {
-                        format!(" +- {}", crate::report::number_with(e, 2))
-                    });
+                for (param, estimate) in [
+                    (BeamParam::Friction, &result.mu),
+                    (BeamParam::Stiffness, &result.kt),
+                ] {
+                    let error = estimate
+                        .std_error
+                        .map_or(String::new(), |e| format!(" +- {}", number_with(e, 2)));
                     text.push(format!(
-                        "{key} = {}{error} ({})",
-                        crate::report::number(estimate.value),
+                        "{param} = {}{error} ({})",
+                        number(estimate.value),
                         estimate.status.label()
                     ));
                     if matches!(
                         estimate.status,
                         crate::fit::Status::Identified | crate::fit::Status::Weak
                     ) {
-                        adopted.push((key, estimate.value));
+                        let _ = inputs.set(Param::Beam(param), estimate.value);
                     }
-                }
-                let mut inputs = self.state().inputs;
-                for (key, value) in &adopted {
-                    let _ = inputs.set(key, *value);
                 }
                 if inputs.validate().is_ok() {
                     self.state_mut().inputs = inputs;
@@ -529,51 +483,34 @@ impl App {
                 self.info(format!(
                     "fit: {}; RMS {} mm",
                     text.join(", "),
-                    crate::report::number_with(result.rms, 3)
+                    number_with(result.rms, 3)
                 ));
             }
             Err(e) => self.error(format!("fit failed: {e}")),
         }
     }
 
-    /// Moves the selected parameter by a fine or coarse step; the result is validated like typed input.
-    fn step(&mut self, direction: f64, coarse: bool) {
-        let key = self.selected_key();
-        let inputs = self.state().inputs;
-        let Some(value) = inputs.get(key.name) else {
+    /// Moves the selected parameter by its fine or coarse step; the result is validated like typed
+    /// input.
+    fn step(&mut self, up: bool, coarse: bool) {
+        let param = self.selected_param();
+        let Some(value) = self.inputs().get(param) else {
             return;
         };
-        let next = match key.name {
-            "nu" => (value + direction * if coarse { 0.05 } else { 0.005 }).clamp(0.0, 0.499),
-            "F" => {
-                // Additive, in steps of the Coulomb threshold, so that F can reach and leave 0.
-                let threshold = match self.model() {
-                    Some(Model::Beam { beams, .. }) => beams.threshold_force(),
-                    _ => 1.0,
-                };
-                (value + direction * threshold * if coarse { 0.1 } else { 0.01 }).max(0.0)
-            }
-            _ => {
-                let factor = match (key.name, coarse) {
-                    ("KT", true) => 10f64.powf(0.25),
-                    (_, true) => COARSE_FACTOR,
-                    (_, false) => FINE_FACTOR,
-                };
-                if direction > 0.0 {
-                    value * factor
-                } else {
-                    value / factor
-                }
-            }
+        // The force steps in fractions of F_thre, the scale at which the regimes change.
+        let scale = match self.model() {
+            Some(Model::Beam { beams, .. }) => beams.threshold_force(),
+            _ => 1.0,
         };
-        self.set_value(key, next);
+        let next = param.spec().step.apply(value, up, coarse, scale);
+        self.set_value(param, next);
     }
 
     /// Sets a parameter if the model accepts it; otherwise refuses with the model's message and keeps
     /// the previous value.
-    fn set_value(&mut self, key: ParamKey, value: f64) {
+    fn set_value(&mut self, param: Param, value: f64) {
         let mut candidate = self.state().inputs;
-        if let Err(e) = candidate.set(key.name, value) {
+        if let Err(e) = candidate.set(param, value) {
             self.error(e.to_string());
             return;
         }
@@ -583,70 +520,29 @@ impl App {
                 self.message = None;
                 self.recompute();
             }
-            Err(e) => self.error(format!(
-                "{e}; kept {}",
-                crate::report::number(self.inputs().get(key.name).unwrap_or(0.0))
+            Err(e) => self.error(format!("{e}; kept {}", self.current_value(param))),
+        }
+    }
+
+    /// The parameter's current value, as the status line shows it.
+    fn current_value(&self, param: Param) -> String {
+        number(self.inputs().get(param).unwrap_or(0.0))
+    }
+
+    /// Enter in the value field: parse, then set like a step.
+    fn commit_value(&mut self, text: &str) {
+        let param = self.selected_param();
+        match parse_number(text) {
+            Some(value) => self.set_value(param, value),
+            None => self.error(format!(
+                "invalid value '{text}' for {param}: not a finite number; kept {}",
+                self.current_value(param)
             )),
         }
     }
 
-    fn update_editing(&mut self, mut buffer: String, action: Action) {
-        match action {
-            Action::Input(c) if buffer.len() < 32 => {
-                buffer.push(c);
-                self.mode = Mode::Editing { buffer };
-            }
-            Action::Backspace => {
-                buffer.pop();
-                self.mode = Mode::Editing { buffer };
-            }
-            Action::Commit => {
-                let key = self.selected_key();
-                match preset::parse_number(buffer.trim()) {
-                    Some(value) => self.set_value(key, value),
-                    None => self.error(format!(
-                        "invalid value '{}' for {}: not a finite number; kept {}",
-                        buffer.trim(),
-                        key.name,
-                        crate::report::number(self.inputs().get(key.name).unwrap_or(0.0))
-                    )),
-                }
-            }
-            Action::Cancel => self.info("edit cancelled"),
-            _ => self.mode = Mode::Editing { buffer },
-        }
-    }
-
     fn open_presets(&mut self) {
-        let mut entries: Vec<PresetEntry> = preset::bundled()
-            .into_iter()
-            .map(|p| PresetEntry {
-                name: p.name.clone(),
-                origin: "bundled",
-                preset: Ok(p),
-            })
-            .collect();
-        if let Some(dir) = &self.user_dir
-            && let Ok(read) = std::fs::read_dir(dir)
-        {
-            let mut paths: Vec<PathBuf> = read
-                .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-                .collect();
-            paths.sort();
-            for path in paths {
-                let name = path
-                    .file_stem()
-                    .map(|s| s.to_string_lossy().into_owned())
-                    .unwrap_or_default();
-                let preset = Preset::load(&path).map_err(|problems| problems[0].to_string());
-                entries.push(PresetEntry {
-                    name,
-                    origin: "user",
-                    preset,
-                });
-            }
-        }
+        let entries = preset::listing(self.user_dir.as_deref());
         let selected = entries
             .iter()
             .position(|e| e.name == self.preset_name())
@@ -654,7 +550,7 @@ impl App {
         self.mode = Mode::Presets { entries, selected };
     }
 
-    fn update_presets(&mut self, entries: Vec<PresetEntry>, selected: usize, action: Action) {
+    fn update_presets(&mut self, entries: Vec<Listed>, selected: usize, action: Action) {
         let count = entries.len().max(1);
         match action {
             Action::Next => {
@@ -687,27 +583,11 @@ impl App {
             },
             Action::SavePreset => {
                 self.mode = Mode::SaveName {
-                    buffer: String::new(),
+                    input: TextInput::default(),
                 }
             }
             Action::Cancel => {}
             _ => self.mode = Mode::Presets { entries, selected },
-        }
-    }
-
-    fn update_save_name(&mut self, mut buffer: String, action: Action) {
-        match action {
-            Action::Input(c) if buffer.len() < 64 => {
-                buffer.push(c);
-                self.mode = Mode::SaveName { buffer };
-            }
-            Action::Backspace => {
-                buffer.pop();
-                self.mode = Mode::SaveName { buffer };
-            }
-            Action::Commit => self.save(buffer.trim(), false),
-            Action::Cancel => self.info("save cancelled"),
-            _ => self.mode = Mode::SaveName { buffer },
         }
     }
 
@@ -743,6 +623,12 @@ mod tests {
     use super::*;
     use crate::tui::theme::Charset;
 
+    const L: Param = Param::Beam(BeamParam::Length);
+    const B: Param = Param::Beam(BeamParam::Width);
+    const MU: Param = Param::Beam(BeamParam::Friction);
+    const KT: Param = Param::Beam(BeamParam::Stiffness);
+    const F: Param = Param::Beam(BeamParam::Force);
+
     fn app_with_dir(dir: Option<PathBuf>) -> App {
         App::new(AppOptions {
             theme: Theme {
@@ -768,17 +654,17 @@ mod tests {
     #[test]
     fn arrows_select_and_step_parameters() {
         let mut app = app();
-        assert_eq!(app.selected_key().name, "L");
+        assert_eq!(app.selected_param().name(), "L");
         app.update(Action::Previous);
-        assert_eq!(app.selected_key().name, "F");
+        assert_eq!(app.selected_param().name(), "F");
         app.update(Action::Increase);
         // F steps by 1 % of F_thre = 0.8 N.
-        assert!((app.inputs().get("F").unwrap() - 100.8).abs() < 1e-9);
+        assert!((app.inputs().get(F).unwrap() - 100.8).abs() < 1e-9);
         app.update(Action::Next);
         app.update(Action::Next);
-        assert_eq!(app.selected_key().name, "b");
+        assert_eq!(app.selected_param().name(), "b");
         app.update(Action::IncreaseCoarse);
-        assert!((app.inputs().get("b").unwrap() - 25.0).abs() < 1e-9);
+        assert!((app.inputs().get(B).unwrap() - 25.0).abs() < 1e-9);
         assert!(app.modified());
         app.update(Action::Reset);
         assert!(!app.modified());
@@ -791,7 +677,7 @@ mod tests {
         for _ in 0..20 {
             app.update(Action::DecreaseCoarse);
         }
-        assert_eq!(app.inputs().get("F"), Some(0.0));
+        assert_eq!(app.inputs().get(F), Some(0.0));
         assert!(app.message().is_none());
     }
 
@@ -807,7 +693,7 @@ mod tests {
             message.text,
             "invalid L = -5: must be > 0 and finite (mm); kept 200"
         );
-        assert_eq!(app.inputs().get("L"), Some(200.0));
+        assert_eq!(app.inputs().get(L), Some(200.0));
         assert_eq!(app.mode(), &Mode::Normal);
         app.update(Action::StartEdit);
         typed(&mut app, "abc");
@@ -823,11 +709,11 @@ mod tests {
         app.update(Action::Backspace);
         typed(&mut app, "50");
         app.update(Action::Commit);
-        assert_eq!(app.inputs().get("L"), Some(350.0));
+        assert_eq!(app.inputs().get(L), Some(350.0));
         app.update(Action::StartEdit);
         typed(&mut app, "1");
         app.update(Action::Cancel);
-        assert_eq!(app.inputs().get("L"), Some(350.0));
+        assert_eq!(app.inputs().get(L), Some(350.0));
     }
 
     #[test]
@@ -837,18 +723,20 @@ mod tests {
         app.update(Action::SwitchModel);
         assert_eq!(app.kind(), ModelKind::Plate);
         assert_eq!(app.preset_name(), "paper-plate");
-        assert_eq!(app.selected_key().name, "L");
+        assert_eq!(app.selected_param().name(), "L");
         app.update(Action::SwitchModel);
-        assert_eq!(app.inputs().get("L"), Some(250.0));
+        assert_eq!(app.inputs().get(L), Some(250.0));
     }
 
     #[test]
     fn charts_cycle_both_ways() {
         let mut app = app();
         app.update(Action::PreviousChart);
-        assert_eq!(app.chart(), plots::chart_names(ModelKind::Beam).len() - 1);
+        let (position, count) = app.views().beam.position();
+        assert_eq!(position, count);
+        assert!(count > 1);
         app.update(Action::NextChart);
-        assert_eq!(app.chart(), 0);
+        assert_eq!(app.views().beam.position().0, 1);
     }
 
     #[test]
@@ -885,7 +773,7 @@ mod tests {
         app.update(Action::Next);
         app.update(Action::Commit);
         assert_eq!(app.preset_name(), "paper-beams-soft");
-        assert_eq!(app.inputs().get("KT"), Some(120.0));
+        assert_eq!(app.inputs().get(KT), Some(120.0));
         // Invalid user file: refused with its problem, picker stays open.
         app.update(Action::OpenPresets);
         for _ in 0..2 {
@@ -956,11 +844,11 @@ mod tests {
         assert!(app.plot().series.iter().any(|s| s.name == "measured"));
         app.update(Action::Fit);
         assert!(
-            (app.inputs().get("mu").unwrap() / 0.35 - 1.0).abs() < 1e-6,
+            (app.inputs().get(MU).unwrap() / 0.35 - 1.0).abs() < 1e-6,
             "{:?}",
             app.message()
         );
-        assert!((app.inputs().get("KT").unwrap() / 250.0 - 1.0).abs() < 1e-6);
+        assert!((app.inputs().get(KT).unwrap() / 250.0 - 1.0).abs() < 1e-6);
         assert!(
             app.message().unwrap().text.starts_with("fit: mu = 0.35"),
             "{:?}",

@@ -1,9 +1,10 @@
 //! Keys as data: one table maps key presses to actions per context, and the help overlay is printed
-//! from the same table, so the two cannot drift apart.
+//! from the same table (labels included, generated from the bound keys), so the two cannot drift
+//! apart.
 
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
-use super::app::Action;
+use super::action::Action;
 
 /// Where the user is; the same key means different things in different places.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -27,8 +28,6 @@ pub struct Binding {
     pub context: Context,
     /// The keys (code, required modifiers).
     pub keys: &'static [(KeyCode, KeyModifiers)],
-    /// How the keys are written in the help (ASCII only, so the ASCII charset can show it).
-    pub label: &'static str,
     /// What happens.
     pub action: Action,
     /// What the help says.
@@ -41,16 +40,54 @@ const SHIFT: KeyModifiers = KeyModifiers::SHIFT;
 const fn bind(
     context: Context,
     keys: &'static [(KeyCode, KeyModifiers)],
-    label: &'static str,
     action: Action,
     description: &'static str,
 ) -> Binding {
     Binding {
         context,
         keys,
-        label,
         action,
         description,
+    }
+}
+
+/// How one key is written in the help: `j`, `L`, `Down`, `S-Right` (ASCII only, so the ASCII
+/// charset can show it).
+fn key_label(code: KeyCode, modifiers: KeyModifiers) -> String {
+    let name = match code {
+        KeyCode::Char(c) => return c.to_string(),
+        KeyCode::Up => "Up",
+        KeyCode::Down => "Down",
+        KeyCode::Left => "Left",
+        KeyCode::Right => "Right",
+        KeyCode::Enter => "Enter",
+        KeyCode::Esc => "Esc",
+        KeyCode::Tab => "Tab",
+        KeyCode::Backspace => "Backspace",
+        other => return format!("{other:?}"),
+    };
+    if modifiers.contains(KeyModifiers::SHIFT) {
+        format!("S-{name}")
+    } else {
+        name.to_string()
+    }
+}
+
+impl Binding {
+    /// The keys as the help writes them: each key once, a shifted letter and its lower case
+    /// counted as one key (`y` for y and Y), joined by ` / `.
+    pub fn label(&self) -> String {
+        let mut labels: Vec<String> = Vec::new();
+        for &(code, modifiers) in self.keys {
+            let label = key_label(code, modifiers);
+            if !labels
+                .iter()
+                .any(|l| l.eq_ignore_ascii_case(&label) && l.len() == 1)
+            {
+                labels.push(label);
+            }
+        }
+        labels.join(" / ")
     }
 }
 
@@ -59,28 +96,24 @@ pub const BINDINGS: &[Binding] = &[
     bind(
         Context::Main,
         &[(KeyCode::Char('j'), NONE), (KeyCode::Down, NONE)],
-        "j / Down",
         Action::Next,
         "next parameter",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('k'), NONE), (KeyCode::Up, NONE)],
-        "k / Up",
         Action::Previous,
         "previous parameter",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('l'), NONE), (KeyCode::Right, NONE)],
-        "l / Right",
         Action::Increase,
         "increase, fine step",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('h'), NONE), (KeyCode::Left, NONE)],
-        "h / Left",
         Action::Decrease,
         "decrease, fine step",
     ),
@@ -91,7 +124,6 @@ pub const BINDINGS: &[Binding] = &[
             (KeyCode::Char('L'), NONE),
             (KeyCode::Right, SHIFT),
         ],
-        "L / S-Right",
         Action::IncreaseCoarse,
         "increase, coarse step",
     ),
@@ -102,119 +134,102 @@ pub const BINDINGS: &[Binding] = &[
             (KeyCode::Char('H'), NONE),
             (KeyCode::Left, SHIFT),
         ],
-        "H / S-Left",
         Action::DecreaseCoarse,
         "decrease, coarse step",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Enter, NONE), (KeyCode::Char('e'), NONE)],
-        "Enter / e",
         Action::StartEdit,
         "type an exact value",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('m'), NONE), (KeyCode::Tab, NONE)],
-        "m / Tab",
         Action::SwitchModel,
         "switch beams / plate",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('c'), NONE)],
-        "c",
         Action::NextChart,
         "next chart",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('C'), SHIFT), (KeyCode::Char('C'), NONE)],
-        "C",
         Action::PreviousChart,
         "previous chart",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('n'), NONE)],
-        "n",
         Action::ToggleNumeric,
         "toggle FE points",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('p'), NONE)],
-        "p",
         Action::OpenPresets,
         "load a preset",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('s'), NONE)],
-        "s",
         Action::SavePreset,
         "save as user preset",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('r'), NONE)],
-        "r",
         Action::Reset,
         "reset to the preset",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('d'), NONE)],
-        "d",
         Action::LoadData,
         "load measured w(F)",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('f'), NONE)],
-        "f",
         Action::Fit,
         "fit mu, K_T to them",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('?'), NONE), (KeyCode::Char('?'), SHIFT)],
-        "?",
         Action::ToggleHelp,
         "this help",
     ),
     bind(
         Context::Main,
         &[(KeyCode::Char('q'), NONE), (KeyCode::Esc, NONE)],
-        "q / Esc",
         Action::Quit,
         "quit",
     ),
     bind(
         Context::Presets,
         &[(KeyCode::Char('j'), NONE), (KeyCode::Down, NONE)],
-        "j / Down",
         Action::Next,
         "next preset",
     ),
     bind(
         Context::Presets,
         &[(KeyCode::Char('k'), NONE), (KeyCode::Up, NONE)],
-        "k / Up",
         Action::Previous,
         "previous preset",
     ),
     bind(
         Context::Presets,
         &[(KeyCode::Enter, NONE)],
-        "Enter",
         Action::Commit,
         "load selected preset",
     ),
     bind(
         Context::Presets,
         &[(KeyCode::Char('s'), NONE)],
-        "s",
         Action::SavePreset,
         "save as user preset",
     ),
@@ -225,42 +240,36 @@ pub const BINDINGS: &[Binding] = &[
             (KeyCode::Char('q'), NONE),
             (KeyCode::Char('p'), NONE),
         ],
-        "Esc / q",
         Action::Cancel,
         "close the picker",
     ),
     bind(
         Context::TextEntry,
         &[(KeyCode::Enter, NONE)],
-        "Enter",
         Action::Commit,
         "accept",
     ),
     bind(
         Context::TextEntry,
         &[(KeyCode::Esc, NONE)],
-        "Esc",
         Action::Cancel,
         "cancel, keep old value",
     ),
     bind(
         Context::TextEntry,
         &[(KeyCode::Backspace, NONE)],
-        "Backspace",
         Action::Backspace,
         "delete last character",
     ),
     bind(
         Context::Confirm,
         &[(KeyCode::Char('y'), NONE), (KeyCode::Char('Y'), SHIFT)],
-        "y",
         Action::Yes,
         "yes",
     ),
     bind(
         Context::Confirm,
         &[(KeyCode::Char('n'), NONE), (KeyCode::Esc, NONE)],
-        "n / Esc",
         Action::Cancel,
         "no",
     ),
@@ -272,7 +281,6 @@ pub const BINDINGS: &[Binding] = &[
             (KeyCode::Char('?'), SHIFT),
             (KeyCode::Char('q'), NONE),
         ],
-        "Esc / ? / q",
         Action::ToggleHelp,
         "close the help",
     ),
@@ -373,21 +381,21 @@ mod tests {
         assert!(
             BINDINGS
                 .iter()
-                .all(|b| b.label.len() <= 13 && b.description.len() <= 22)
+                .all(|b| b.label().len() <= 13 && b.description.len() <= 22)
         );
     }
 
     #[test]
     fn no_key_is_bound_twice_in_one_context_and_labels_are_ascii() {
         for (i, a) in BINDINGS.iter().enumerate() {
-            assert!(a.label.is_ascii() && a.description.is_ascii());
+            assert!(a.label().is_ascii() && a.description.is_ascii());
             for b in &BINDINGS[i + 1..] {
                 if a.context == b.context {
                     assert!(
                         a.keys.iter().all(|k| !b.keys.contains(k)),
                         "{} / {}",
-                        a.label,
-                        b.label
+                        a.label(),
+                        b.label()
                     );
                 }
             }

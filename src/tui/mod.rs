@@ -1,14 +1,17 @@
 //! The terminal UI: terminal set-up and restore, and the event loop. Everything else lives in
-//! [`app`] (state), [`keymap`] (keys), [`plots`] (chart data) and [`ui`] (drawing).
+//! [`action`] (what keys ask for), [`app`] (state), [`keymap`] (keys), [`plots`] (chart data),
+//! [`text_input`] (typed text) and [`ui`] (drawing).
 //!
 //! Over SSH: the screen is redrawn only after a key or a resize (no frame rate; the 250 ms poll only
 //! checks for SIGTERM/SIGHUP and draws nothing), queued keys are applied before a single redraw, the
 //! mouse is not captured, and the terminal is restored on quit, on error, on panic (ratatui's hook)
 //! and on SIGTERM or SIGHUP (a dropped SSH link).
 
+pub mod action;
 pub mod app;
 pub mod keymap;
 pub mod plots;
+pub mod text_input;
 pub mod theme;
 pub mod ui;
 
@@ -23,6 +26,7 @@ use ratatui::crossterm::event::{self, Event, KeyEventKind};
 use app::{App, AppOptions};
 use theme::{Charset, Theme};
 
+use crate::model::params::ModelKind;
 use crate::preset::{self, PresetError};
 
 /// How often the loop wakes up to look for a termination signal (no redraw happens then).
@@ -53,7 +57,7 @@ pub fn run(
     preset: Option<&str>,
     data: Option<std::path::PathBuf>,
 ) -> Result<(), TuiError> {
-    let preset = preset::resolve(preset.unwrap_or("paper-beams"))?;
+    let preset = preset::resolve(preset.unwrap_or(preset::default_name(ModelKind::Beam)))?;
     if !io::stdout().is_terminal() || !io::stdin().is_terminal() {
         return Err(TuiError::NotATerminal);
     }

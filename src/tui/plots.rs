@@ -1,10 +1,12 @@
 //! What each chart shows, as plain data (title, axes, series), built from [`crate::curves`]. The
 //! drawing code turns a [`Plot`] into cells and never computes physics itself.
 
-use crate::curves::{self, Samples, Series, Spacing};
+use crate::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::fit::Measurement;
+use crate::model::inputs::Model;
+use crate::model::params::ModelKind;
 use crate::numeric::{MeshDensity, NumericError, PlateFe, TwinBeamsFe};
-use crate::preset::{Model, ModelKind};
+use crate::report::view::{BeamChart, PlateChart, Table, View};
 use crate::report::{number, number_with};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
@@ -72,23 +74,46 @@ pub struct NumericPoints {
     pub points: Series,
 }
 
-/// The charts of each model, in the order `c` cycles through them.
-pub fn chart_names(kind: ModelKind) -> &'static [&'static str] {
-    match kind {
-        ModelKind::Beam => &[
-            "w(L) vs F",
-            "X vs F",
-            "tau(x) at F",
-            "loop +-F",
-            "D vs F_a",
-            "K_T: codes vs physics",
-        ],
-        ModelKind::Plate => &[
-            "u(L) vs K_T",
-            "X_r vs mu",
-            "P_r(x)/P",
-            "K_T: codes vs physics",
-        ],
+/// The view shown for each model; each keeps its own when the other model is active.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Views {
+    /// The twin beams' view.
+    pub beam: View<BeamChart>,
+    /// The plate's view.
+    pub plate: View<PlateChart>,
+}
+
+impl Default for Views {
+    fn default() -> Self {
+        Views {
+            beam: View::first(),
+            plate: View::first(),
+        }
+    }
+}
+
+impl Views {
+    /// The views with `kind`'s moved one forward or back.
+    pub fn turn(self, kind: ModelKind, forward: bool) -> Views {
+        match kind {
+            ModelKind::Beam => Views {
+                beam: self.beam.turn(forward),
+                ..self
+            },
+            ModelKind::Plate => Views {
+                plate: self.plate.turn(forward),
+                ..self
+            },
+        }
+    }
+
+    /// Title, 1-based position and count of `kind`'s view, for the pane title.
+    pub fn describe(self, kind: ModelKind) -> (&'static str, usize, usize) {
+        let ((position, count), title) = match kind {
+            ModelKind::Beam => (self.beam.position(), self.beam.title()),
+            ModelKind::Plate => (self.plate.position(), self.plate.title()),
+        };
+        (title, position, count)
     }
 }
 
@@ -152,28 +177,11 @@ fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64) -> f64 {
 }
 
 fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
-    Samples::new(from, to, SAMPLES, spacing, ("from", "to")).ok()
+    Samples::new(from, to, SAMPLES, spacing).ok()
 }
 
-/// Index of the K_T table among each model's charts.
-const BEAM_STIFFNESS_TABLE: usize = 5;
-const PLATE_STIFFNESS_TABLE: usize = 3;
-/// Index of the hysteresis-loop and dissipation charts of the twin beams.
-const BEAM_LOOP: usize = 3;
-const BEAM_DISSIPATION: usize = 4;
-
-/// The closed hysteresis loop of a cycle: unloading from +F_a, then reloading from -F_a.
-fn loop_series(cycle: &crate::model::cycle::Cycle) -> Series {
-    let fa = cycle.amplitude();
-    let n = SAMPLES as usize / 2;
-    let down = (0..=n)
-        .map(|i| fa - 2.0 * fa * i as f64 / n as f64)
-        .map(|f| (f, cycle.unloading(f)));
-    let up = (1..=n)
-        .map(|i| -fa + 2.0 * fa * i as f64 / n as f64)
-        .map(|f| (f, cycle.reloading(f)));
-    down.chain(up).collect()
-}
+/// Loop points per branch: one per column of a 100-column chart.
+const LOOP_POINTS: u64 = SAMPLES / 2 + 1;
 
 /// Contact elements assumed by the K_T table: L/100, a typical benchmark mesh (the command line's
 /// `microslip kt --element-size` sets any other).
@@ -182,21 +190,11 @@ const TABLE_ELEMENTS_PER_LENGTH: f64 = 100.0;
 /// The K_T comparison as a narrow table (fits the 44-column chart pane of an 80x24 screen).
 fn stiffness_table(model: &Model) -> Plot {
     use crate::model::code_defaults::{CODE_DEFAULTS, Confirmation, DefaultRule};
-    let data = model.interface();
-    let (length, mu, pressure, modulus, kt) = (
-        data.length,
-        data.friction,
-        data.pressure,
-        data.modulus,
-        data.stiffness,
-    );
-    let element = length / TABLE_ELEMENTS_PER_LENGTH;
-    let rows = curves::stiffness_candidates(kt, mu, pressure, modulus, element, None);
-    let short = |source: &str| {
-        CODE_DEFAULTS
-            .iter()
-            .find(|c| c.code == source)
-            .map_or(source.to_string(), |c| c.short.to_string())
+    let element = model.interface().length / TABLE_ELEMENTS_PER_LENGTH;
+    let comparison = curves::compare_stiffnesses(model, element, None);
+    let short = |source: &CandidateSource| match source {
+        CandidateSource::Code(code) => code.short,
+        other => crate::report::text::candidate_name(other),
     };
     let mut lines = vec![match model {
         Model::Beam { .. } => format!(
@@ -208,25 +206,39 @@ fn stiffness_table(model: &Model) -> Plot {
             "source", "K_T", "u(L) mm", "X_r mm"
         ),
     }];
-    for row in &rows {
-        let cells = match (model, row.kt) {
-            (Model::Beam { beams, force }, Some(k)) => {
-                curves::beam_answer(beams, *force, k).map(|(f_1, x, w, _)| {
-                    format!(
-                        "{:>7} {:>7} {:>7} {:>8}",
-                        tick(k),
-                        tick(f_1),
-                        tick(x),
-                        tick(w)
-                    )
-                })
-            }
-            (Model::Plate(plate), Some(k)) => curves::plate_answer(plate, k)
-                .map(|(u, x, _)| format!("{:>7} {:>9} {:>8}", tick(k), tick(u), tick(x))),
-            _ => None,
+    for row in &comparison.rows {
+        let cells = match (row.candidate.kt, row.answer) {
+            (
+                Some(k),
+                Some(Answer::Beam {
+                    first_macroslip_force,
+                    micro_end,
+                    tip_deflection,
+                    ..
+                }),
+            ) => format!(
+                "{:>7} {:>7} {:>7} {:>8}",
+                tick(k),
+                tick(first_macroslip_force),
+                tick(micro_end),
+                tick(tip_deflection)
+            ),
+            (
+                Some(k),
+                Some(Answer::Plate {
+                    end_displacement,
+                    micro_end,
+                    ..
+                }),
+            ) => format!(
+                "{:>7} {:>9} {:>8}",
+                tick(k),
+                tick(end_displacement),
+                tick(micro_end)
+            ),
+            _ => format!("{:>7}", "none"),
         };
-        let cells = cells.unwrap_or_else(|| format!("{:>7}", "none"));
-        lines.push(format!("{:<10} {cells}", short(&row.source)));
+        lines.push(format!("{:<10} {cells}", short(&row.candidate.source)));
     }
     lines.push(String::new());
     lines.push(format!(
@@ -250,30 +262,29 @@ fn stiffness_table(model: &Model) -> Plot {
     }
 }
 
-/// Builds chart `chart` of `model`, with finite-element points and measurements if given
-/// (measurements show on the twin beams' w(L) vs F chart).
+/// Builds the view of `model` chosen in `views`, with finite-element points and measurements if
+/// given (measurements show on the twin beams' w(L) vs F chart).
 pub fn build(
     model: &Model,
-    chart: usize,
+    views: Views,
     numeric: Option<&NumericPoints>,
     measured: Option<&[Measurement]>,
 ) -> Plot {
-    let table = match model {
-        Model::Beam { .. } => BEAM_STIFFNESS_TABLE,
-        Model::Plate(_) => PLATE_STIFFNESS_TABLE,
+    let (plot, measured) = match *model {
+        Model::Beam { beams, force } => match views.beam {
+            View::Table(Table::StiffnessComparison) => return stiffness_table(model),
+            View::Chart(chart) => {
+                let measured = measured.filter(|_| chart == BeamChart::Deflection);
+                let f_data = measured.and_then(|m| m.last()).map_or(0.0, |m| m.force);
+                (beam_plot(&beams, force, chart, f_data), measured)
+            }
+        },
+        Model::Plate(plate) => match views.plate {
+            View::Table(Table::StiffnessComparison) => return stiffness_table(model),
+            View::Chart(chart) => (plate_plot(&plate, chart), None),
+        },
     };
-    if chart == table {
-        return stiffness_table(model);
-    }
-    let measured = measured.filter(|_| matches!(model, Model::Beam { .. }) && chart == 0);
-    let mut plot = match *model {
-        Model::Beam { beams, force } => {
-            let f_data = measured.and_then(|m| m.last()).map_or(0.0, |m| m.force);
-            beam_plot(&beams, force, chart, f_data)
-        }
-        Model::Plate(plate) => plate_plot(&plate, chart),
-    }
-    .unwrap_or_default();
+    let mut plot = plot.unwrap_or_default();
     if let Some(points) = measured {
         let points: Series = points.iter().map(|m| (m.force, m.deflection)).collect();
         let top = max_y([&points]) * 1.05;
@@ -295,7 +306,7 @@ pub fn build(
     plot
 }
 
-fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> Option<Plot> {
+fn beam_plot(beams: &TwinBeams, force: TipForce, chart: BeamChart, f_data: f64) -> Option<Plot> {
     let p = beams.params();
     let f_max = force_range(beams, force, f_data);
     let forces = samples(0.0, f_max, Spacing::Linear)?;
@@ -304,7 +315,7 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> O
     let stiffer = beams.with_tangential_stiffness(kt * 5.0).ok()?;
     let f = force.newtons();
     match chart {
-        0 => {
+        BeamChart::Deflection => {
             let (coulomb, regularized) = curves::beam_deflection_vs_force(beams, forces);
             let (_, soft) = curves::beam_deflection_vs_force(&softer, forces);
             let (_, stiff) = curves::beam_deflection_vs_force(&stiffer, forces);
@@ -324,7 +335,7 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> O
                 ],
             })
         }
-        1 => {
+        BeamChart::SlipBoundary => {
             let regularized = curves::beam_slip_boundary_vs_force(beams, forces);
             let soft = curves::beam_slip_boundary_vs_force(&softer, forces);
             let stiff = curves::beam_slip_boundary_vs_force(&stiffer, forces);
@@ -345,12 +356,17 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> O
                 ],
             })
         }
-        BEAM_LOOP => {
+        BeamChart::Loop => {
             use crate::model::cycle::{Cycle, Law};
             let (coulomb, regularized) = (
                 Cycle::new(beams, Law::Coulomb, force),
                 Cycle::new(beams, Law::Regularized, force),
             );
+            let (coulomb_loop, regularized_loop): (Series, Series) =
+                curves::cycle_loop(beams, force, LOOP_POINTS)
+                    .ok()?
+                    .map(|p| ((p.force, p.w_coulomb), (p.force, p.w_regularized)))
+                    .unzip();
             let top = 1.05
                 * coulomb
                     .peak_deflection()
@@ -368,12 +384,12 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> O
                 x: linear_axis("F (N)", -span, span),
                 y: linear_axis("w(L) (mm)", -top, top),
                 series: vec![
-                    line("Coulomb", loop_series(&coulomb)),
-                    line("regularized", loop_series(&regularized)),
+                    line("Coulomb", coulomb_loop),
+                    line("regularized", regularized_loop),
                 ],
             })
         }
-        BEAM_DISSIPATION => {
+        BeamChart::Dissipation => {
             let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
             let (coulomb, regularized) = curves::dissipation_vs_amplitude(beams, amplitudes);
             let top = 1.05 * max_y([&coulomb, &regularized]).max(f64::MIN_POSITIVE);
@@ -394,7 +410,7 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: usize, f_data: f64) -> O
                 ],
             })
         }
-        _ => {
+        BeamChart::Shear => {
             let positions = samples(0.0, p.length, Spacing::Linear)?;
             let (coulomb, regularized) = curves::beam_shear_along(beams, force, positions);
             let top = 1.1 * max_y([&coulomb, &regularized]).max(beams.coulomb_stress());
@@ -423,11 +439,11 @@ fn stiffness_range(kt: f64) -> (f64, f64) {
     (centre - 4.0, centre + 4.0)
 }
 
-fn plate_plot(plate: &SqueezedPlate, chart: usize) -> Option<Plot> {
+fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
     let p = plate.params();
     let kt = p.tangential_stiffness;
     match chart {
-        0 => {
+        PlateChart::Displacement => {
             let (lo, hi) = stiffness_range(kt);
             let stiffnesses = samples(10f64.powf(lo), 10f64.powf(hi), Spacing::Logarithmic)?;
             let (coulomb, regularized) =
@@ -451,7 +467,7 @@ fn plate_plot(plate: &SqueezedPlate, chart: usize) -> Option<Plot> {
                 ],
             })
         }
-        1 => {
+        PlateChart::SlipBoundary => {
             let mu = p.friction;
             let (lo, hi) = (mu / 5.0, (mu * 5.0).min(5.0).max(mu * 1.5));
             let frictions = samples(lo, hi, Spacing::Linear)?;
@@ -479,7 +495,7 @@ fn plate_plot(plate: &SqueezedPlate, chart: usize) -> Option<Plot> {
                 series,
             })
         }
-        _ => {
+        PlateChart::ContactPressure => {
             let positions = samples(0.0, p.half_length, Spacing::Linear)?;
             let ratio = curves::plate_contact_pressure_along(plate, positions);
             let (low, high) = ratio.iter().fold((1.0_f64, 1.0_f64), |(lo, hi), &(_, r)| {
@@ -506,10 +522,14 @@ fn plate_plot(plate: &SqueezedPlate, chart: usize) -> Option<Plot> {
 }
 
 /// Finite-element points for chart `chart`, where the chart has a finite-element counterpart.
-pub fn numeric_points(model: &Model, chart: usize) -> Result<Option<NumericPoints>, NumericError> {
+pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoints>, NumericError> {
     let density = MeshDensity::with_elements(OVERLAY_ELEMENTS);
-    match *model {
-        Model::Beam { beams, force } if chart <= 1 => {
+    match (*model, views.beam, views.plate) {
+        (
+            Model::Beam { beams, force },
+            View::Chart(chart @ (BeamChart::Deflection | BeamChart::SlipBoundary)),
+            _,
+        ) => {
             // One model loaded monotonically through the sample forces: one load step per point.
             let f_max = force_range(&beams, force, 0.0);
             let mut fe = TwinBeamsFe::new(beams.params(), density);
@@ -519,7 +539,7 @@ pub fn numeric_points(model: &Model, chart: usize) -> Result<Option<NumericPoint
                 fe.load_to(f, 2)?;
                 points.push((
                     f,
-                    if chart == 0 {
+                    if chart == BeamChart::Deflection {
                         fe.tip_deflection()
                     } else {
                         fe.micro_zone_end()
@@ -528,7 +548,7 @@ pub fn numeric_points(model: &Model, chart: usize) -> Result<Option<NumericPoint
             }
             Ok(Some(NumericPoints { points }))
         }
-        Model::Beam { beams, force } if chart == BEAM_LOOP => {
+        (Model::Beam { beams, force }, View::Chart(BeamChart::Loop), _) => {
             // The FE model driven round the same cycle: its own slider histories, no Masing rule.
             let fa = force.newtons();
             let mut fe = TwinBeamsFe::new(beams.params(), density);
@@ -543,7 +563,7 @@ pub fn numeric_points(model: &Model, chart: usize) -> Result<Option<NumericPoint
             }
             Ok(Some(NumericPoints { points }))
         }
-        Model::Beam { beams, force } if chart == 2 => {
+        (Model::Beam { beams, force }, View::Chart(BeamChart::Shear), _) => {
             let mut fe = TwinBeamsFe::new(beams.params(), density);
             fe.load_to(force.newtons(), 4)?;
             let samples = fe.interface();
@@ -556,7 +576,7 @@ pub fn numeric_points(model: &Model, chart: usize) -> Result<Option<NumericPoint
                     .collect(),
             }))
         }
-        Model::Plate(plate) if chart == 0 => {
+        (Model::Plate(plate), _, View::Chart(PlateChart::Displacement)) => {
             let p = plate.params();
             let (lo, hi) = stiffness_range(p.tangential_stiffness);
             let mut points = Vec::with_capacity(OVERLAY_POINTS + 1);
@@ -572,14 +592,29 @@ pub fn numeric_points(model: &Model, chart: usize) -> Result<Option<NumericPoint
             }
             Ok(Some(NumericPoints { points }))
         }
-        Model::Beam { .. } | Model::Plate(_) => Ok(None),
+        // No finite-element counterpart: dissipation (a closed-form integral of the loop), the
+        // contact pressure, X_r vs mu, and the tables.
+        (Model::Beam { .. }, View::Chart(BeamChart::Dissipation) | View::Table(_), _)
+        | (
+            Model::Plate(_),
+            _,
+            View::Chart(PlateChart::SlipBoundary | PlateChart::ContactPressure) | View::Table(_),
+        ) => Ok(None),
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::preset::Inputs;
+    use crate::model::inputs::Inputs;
+
+    /// Every view of `kind`, as the `c` key reaches them.
+    fn every_view(kind: ModelKind) -> Vec<Views> {
+        let (_, _, count) = Views::default().describe(kind);
+        std::iter::successors(Some(Views::default()), |v| Some(v.turn(kind, true)))
+            .take(count)
+            .collect()
+    }
 
     fn model(kind: ModelKind) -> Model {
         Inputs::paper(kind).validate().unwrap()
@@ -588,8 +623,9 @@ mod tests {
     #[test]
     fn every_chart_has_titles_units_bounds_and_finite_points() {
         for kind in [ModelKind::Beam, ModelKind::Plate] {
-            for chart in 0..chart_names(kind).len() {
-                let plot = build(&model(kind), chart, None, None);
+            for views in every_view(kind) {
+                let chart = views.describe(kind).0;
+                let plot = build(&model(kind), views, None, None);
                 assert!(!plot.title.is_empty());
                 if let Some(table) = &plot.table {
                     // The K_T table: every line fits the 44-column pane of an 80x24 screen, no NaN.
@@ -619,7 +655,7 @@ mod tests {
     #[test]
     fn finite_element_points_sit_on_the_analytic_curve() {
         let m = model(ModelKind::Beam);
-        let numeric = numeric_points(&m, 0).unwrap().unwrap();
+        let numeric = numeric_points(&m, Views::default()).unwrap().unwrap();
         let Model::Beam { beams, .. } = m else {
             unreachable!()
         };
@@ -630,9 +666,15 @@ mod tests {
             assert!((w / exact - 1.0).abs() < 1e-4, "F={f}");
         }
         assert!(
-            numeric_points(&model(ModelKind::Plate), 2)
-                .unwrap()
-                .is_none()
+            numeric_points(
+                &model(ModelKind::Plate),
+                Views {
+                    plate: View::Chart(PlateChart::ContactPressure),
+                    ..Views::default()
+                }
+            )
+            .unwrap()
+            .is_none()
         );
     }
 }

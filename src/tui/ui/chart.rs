@@ -20,13 +20,8 @@ use crate::tui::theme::{Role, Theme};
 pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
     let theme = app.theme();
     let plot = app.plot();
-    let names = plots::chart_names(app.kind());
-    let title = format!(
-        "{} ({}/{}, c cycles)",
-        names[app.chart() % names.len()],
-        app.chart() + 1,
-        names.len()
-    );
+    let (name, position, count) = app.views().describe(app.kind());
+    let title = format!("{name} ({position}/{count}, c cycles)");
     let block = pane(app, &title);
     let inner = block.inner(area);
     frame.render_widget(block, area);

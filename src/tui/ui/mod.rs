@@ -29,7 +29,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
         let left_width = if area.width >= 120 { 44 } else { 34 };
         let [left, right] =
             Layout::horizontal([Constraint::Length(left_width), Constraint::Min(0)]).areas(main);
-        let parameter_rows = app.kind().keys().len() as u16 + 2;
+        let parameter_rows = app.kind().params().len() as u16 + 2;
         let [parameters, summary] =
             Layout::vertical([Constraint::Length(parameter_rows), Constraint::Min(0)]).areas(left);
         panes::draw_parameters(frame, app, parameters);
@@ -41,20 +41,20 @@ pub fn draw(frame: &mut Frame, app: &App) {
             Mode::Presets { entries, selected } => {
                 overlay::draw_presets(frame, app, area, entries, *selected)
             }
-            Mode::SaveName { buffer } => overlay::draw_prompt(
+            Mode::SaveName { input } => overlay::draw_prompt(
                 frame,
                 app,
                 area,
                 "Save preset",
-                &format!("Name: {buffer}_"),
+                &format!("Name: {}_", input.as_str()),
                 "letters, digits, - and _; Enter save, Esc cancel",
             ),
-            Mode::DataPath { buffer } => overlay::draw_prompt(
+            Mode::DataPath { input } => overlay::draw_prompt(
                 frame,
                 app,
                 area,
                 "Load measurements",
-                &format!("File: {buffer}_"),
+                &format!("File: {}_", input.as_str()),
                 "CSV with columns F_N,w_mm; Enter load, Esc cancel",
             ),
             Mode::ConfirmOverwrite { name } => overlay::draw_prompt(

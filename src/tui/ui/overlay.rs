@@ -6,7 +6,8 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Paragraph};
 
 use super::panes::pane;
-use crate::tui::app::{App, PresetEntry};
+use crate::preset::Listed;
+use crate::tui::app::App;
 use crate::tui::keymap::{BINDINGS, Context, context_title};
 use crate::tui::theme::Role;
 
@@ -41,7 +42,8 @@ fn help_lines(app: &App, contexts: &[Context]) -> Vec<Line<'static>> {
         for binding in BINDINGS.iter().filter(|b| b.context == context) {
             lines.push(Line::from(format!(
                 " {:<13} {}",
-                binding.label, binding.description
+                binding.label(),
+                binding.description
             )));
         }
     }
@@ -67,13 +69,7 @@ pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
 }
 
 /// The preset list: bundled first, then the user's; invalid user files are listed with their problem.
-pub fn draw_presets(
-    frame: &mut Frame,
-    app: &App,
-    area: Rect,
-    entries: &[PresetEntry],
-    selected: usize,
-) {
+pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed], selected: usize) {
     let theme = app.theme();
     let height = (entries.len() as u16 + 4).clamp(6, area.height.saturating_sub(2));
     let popup = centred(area, 76, height);

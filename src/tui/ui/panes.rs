@@ -6,8 +6,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Paragraph};
 
 use crate::curves::{beam_point, plate_point};
+use crate::model::inputs::Model;
+use crate::model::params::{ModelKind, Unit};
 use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
-use crate::preset::Model;
 use crate::report::number;
 use crate::tui::app::{App, Mode};
 use crate::tui::theme::Role;
@@ -26,27 +27,31 @@ pub fn pane<'a>(app: &App, title: &'a str) -> Block<'a> {
 pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
     let theme = app.theme();
     let title = match app.kind() {
-        crate::preset::ModelKind::Beam => "Twin beams",
-        crate::preset::ModelKind::Plate => "Squeezed plate",
+        ModelKind::Beam => "Twin beams",
+        ModelKind::Plate => "Squeezed plate",
     };
     let inputs = app.inputs();
     let lines: Vec<Line> = app
         .kind()
-        .keys()
+        .params()
         .iter()
         .enumerate()
-        .map(|(i, key)| {
+        .map(|(i, &param)| {
             let selected = i == app.selected();
-            let value = inputs.get(key.name).unwrap_or(f64::NAN);
+            // `get` cannot miss: the parameters come from the active model.
+            let value = inputs.get(param).unwrap_or(f64::NAN);
             let shown = match app.mode() {
-                Mode::Editing { buffer } if selected => format!("{buffer}_"),
+                Mode::Editing { input } if selected => format!("{}_", input.as_str()),
                 _ => number(value),
             };
-            let unit = if key.unit == "-" { "" } else { key.unit };
+            let unit = match param.unit() {
+                Unit::Dimensionless => "",
+                unit => unit.symbol(),
+            };
             let text = format!(
                 "{} {:<3} {:>11} {:<7}",
                 if selected { ">" } else { " " },
-                key.name,
+                param.name(),
                 shown,
                 unit
             );
@@ -155,10 +160,11 @@ pub fn draw_status(frame: &mut Frame, app: &App, area: Rect) {
     )];
     match (app.mode(), app.message()) {
         (Mode::Editing { .. }, _) => {
-            let key = app.selected_key();
+            let param = app.selected_param();
             spans.push(Span::raw(format!(
                 "| {} ({}): type a value, Enter accept, Esc cancel",
-                key.name, key.unit
+                param.name(),
+                param.unit()
             )));
         }
         (_, Some(message)) => {

@@ -1,0 +1,236 @@
+//! The inputs of either model as users set them ([`Inputs`], unvalidated, addressed by typed
+//! [`Param`]s) and the validated models the physics accepts ([`Model`]). Presets, `--set` and the
+//! TUI all edit an [`Inputs`] and validate it through the checked constructors.
+
+use super::params::{BeamParam, ModelKind, Param, ParamError, UnknownParam};
+use super::plate::{PlateParams, SqueezedPlate};
+use super::twin_beams::{TipForce, TwinBeams, TwinBeamsParams};
+
+/// Unvalidated inputs of one model, as read from a preset, flags or key presses.
+///
+/// # Examples
+/// ```
+/// use microslip::model::inputs::Inputs;
+/// use microslip::model::params::{BeamParam, ModelKind, Param};
+/// let mut inputs = Inputs::paper(ModelKind::Beam);
+/// inputs.set(Param::Beam(BeamParam::Stiffness), 120.0)?;
+/// assert!(inputs.validate().is_ok());
+/// inputs.set(Param::Beam(BeamParam::Length), -1.0)?;
+/// assert_eq!(
+///     inputs.validate().unwrap_err().to_string(),
+///     "invalid L = -1: must be > 0 and finite (mm)"
+/// );
+/// # Ok::<(), microslip::model::params::UnknownParam>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Inputs {
+    /// Twin beams and the tip force F (N).
+    Beam {
+        /// Structure and interface.
+        structure: TwinBeamsParams,
+        /// Tip force on each beam (N).
+        force: f64,
+    },
+    /// Squeezed plate.
+    Plate(PlateParams),
+}
+
+/// Validated inputs: what the physics core accepts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Model {
+    /// Twin beams at a tip force.
+    Beam {
+        /// The beams.
+        beams: TwinBeams,
+        /// The tip force.
+        force: TipForce,
+    },
+    /// Squeezed plate.
+    Plate(SqueezedPlate),
+}
+
+/// The interface data common to both models: what the K_T comparisons need.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InterfaceData {
+    /// Length L (beam length or plate half-length) (mm).
+    pub length: f64,
+    /// Friction coefficient (-).
+    pub friction: f64,
+    /// Contact pressure (MPa).
+    pub pressure: f64,
+    /// Young's modulus (MPa).
+    pub modulus: f64,
+    /// Tangential stiffness (MPa/mm).
+    pub stiffness: f64,
+    /// Poisson ratio, where the model has one.
+    pub poisson: Option<f64>,
+}
+
+impl Model {
+    /// Which model this is.
+    pub fn kind(&self) -> ModelKind {
+        match self {
+            Model::Beam { .. } => ModelKind::Beam,
+            Model::Plate(_) => ModelKind::Plate,
+        }
+    }
+
+    /// The model's interface data.
+    pub fn interface(&self) -> InterfaceData {
+        match self {
+            Model::Beam { beams, .. } => {
+                let p = beams.params();
+                InterfaceData {
+                    length: p.length,
+                    friction: p.friction,
+                    pressure: p.pressure,
+                    modulus: p.youngs_modulus,
+                    stiffness: p.tangential_stiffness,
+                    poisson: None,
+                }
+            }
+            Model::Plate(plate) => {
+                let p = plate.params();
+                InterfaceData {
+                    length: p.half_length,
+                    friction: p.friction,
+                    pressure: p.pressure,
+                    modulus: p.youngs_modulus,
+                    stiffness: p.tangential_stiffness,
+                    poisson: Some(p.poisson),
+                }
+            }
+        }
+    }
+
+    /// The inputs this model was validated from.
+    pub fn inputs(&self) -> Inputs {
+        match self {
+            Model::Beam { beams, force } => Inputs::Beam {
+                structure: beams.params(),
+                force: force.newtons(),
+            },
+            Model::Plate(plate) => Inputs::Plate(plate.params()),
+        }
+    }
+}
+
+impl Inputs {
+    /// The paper's data set for `kind` (beams at F = 100 N).
+    pub fn paper(kind: ModelKind) -> Inputs {
+        match kind {
+            ModelKind::Beam => Inputs::Beam {
+                structure: TwinBeamsParams::PAPER,
+                force: 100.0,
+            },
+            ModelKind::Plate => Inputs::Plate(PlateParams::PAPER),
+        }
+    }
+
+    /// Which model these inputs are for.
+    pub fn kind(&self) -> ModelKind {
+        match self {
+            Inputs::Beam { .. } => ModelKind::Beam,
+            Inputs::Plate(_) => ModelKind::Plate,
+        }
+    }
+
+    fn slot(&mut self, param: Param) -> Option<&mut f64> {
+        match (self, param) {
+            (Inputs::Beam { force, .. }, Param::Beam(BeamParam::Force)) => Some(force),
+            (Inputs::Beam { structure, .. }, Param::Beam(p)) => structure.value_mut(p),
+            (Inputs::Plate(s), Param::Plate(p)) => Some(s.value_mut(p)),
+            _ => None,
+        }
+    }
+
+    /// The value of a parameter, or `None` for a parameter of the other model.
+    pub fn get(&self, param: Param) -> Option<f64> {
+        let mut copy = *self;
+        copy.slot(param).map(|v| *v)
+    }
+
+    /// Sets one parameter without validating its range (see [`Inputs::validate`]).
+    ///
+    /// # Errors
+    /// [`UnknownParam`] when `param` belongs to the other model.
+    pub fn set(&mut self, param: Param, value: f64) -> Result<(), UnknownParam> {
+        let model = self.kind();
+        let slot = self.slot(param).ok_or_else(|| UnknownParam {
+            key: param.name().to_string(),
+            model,
+        })?;
+        *slot = value;
+        Ok(())
+    }
+
+    /// Validates through the model's checked constructors.
+    ///
+    /// # Errors
+    /// The first out-of-range parameter, in display order.
+    pub fn validate(&self) -> Result<Model, ParamError> {
+        Ok(match *self {
+            Inputs::Beam { structure, force } => Model::Beam {
+                beams: TwinBeams::new(structure)?,
+                force: TipForce::new(force)?,
+            },
+            Inputs::Plate(params) => Model::Plate(SqueezedPlate::new(params)?),
+        })
+    }
+
+    /// Every out-of-range parameter, not only the first: each one is checked on its own against
+    /// its domain, so one bad value cannot hide another.
+    pub fn all_param_errors(&self) -> Vec<ParamError> {
+        self.kind()
+            .params()
+            .iter()
+            .filter_map(|&param| {
+                let value = self.get(param)?;
+                let spec = param.spec();
+                spec.domain.check(spec.name, value, spec.unit).err()
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_parameter_has_its_own_slot() {
+        for kind in ModelKind::ALL {
+            let mut inputs = Inputs::paper(kind);
+            for (i, &param) in kind.params().iter().enumerate() {
+                inputs.set(param, 1000.0 + i as f64).unwrap();
+            }
+            for (i, &param) in kind.params().iter().enumerate() {
+                assert_eq!(inputs.get(param), Some(1000.0 + i as f64), "{param}");
+            }
+            let other = kind.other().params()[0];
+            assert_eq!(inputs.get(other), None);
+            assert!(inputs.set(other, 1.0).is_err());
+        }
+    }
+
+    #[test]
+    fn all_errors_are_listed_and_agree_with_the_constructors() {
+        let mut inputs = Inputs::paper(ModelKind::Plate);
+        inputs
+            .set(Param::Plate(super::super::params::PlateParam::Poisson), 0.5)
+            .unwrap();
+        inputs
+            .set(
+                Param::Plate(super::super::params::PlateParam::Stiffness),
+                f64::NAN,
+            )
+            .unwrap();
+        let errors = inputs.all_param_errors();
+        assert_eq!(
+            errors.iter().map(|e| e.field).collect::<Vec<_>>(),
+            ["nu", "KT"]
+        );
+        assert_eq!(inputs.validate().unwrap_err(), errors[0]);
+        assert!(Inputs::paper(ModelKind::Beam).all_param_errors().is_empty());
+    }
+}

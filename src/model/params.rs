@@ -1,0 +1,685 @@
+//! Typed parameters: one enum per model whose variants are the inputs users can set, each with its
+//! key, unit, meaning, allowed domain and UI step. This is the only place that knows how a parameter
+//! is spelled (`KT`, `nu`, `F`): presets, `--set`, the TUI parameter pane, the text and JSON reports
+//! and the range checks of the checked constructors all go through these enums, so a typo in code
+//! fails to compile and a typo in a file fails to parse with the list of valid keys.
+
+use std::fmt;
+use std::str::FromStr;
+
+use thiserror::Error;
+
+/// Which benchmark a parameter set describes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ModelKind {
+    /// Twin cantilever beams (paper section 2.1).
+    Beam,
+    /// Squeezed plate (paper section 2.2).
+    Plate,
+}
+
+impl ModelKind {
+    /// Both models, beams first.
+    pub const ALL: [ModelKind; 2] = [ModelKind::Beam, ModelKind::Plate];
+
+    /// The `model = "..."` value in preset files.
+    pub fn name(self) -> &'static str {
+        match self {
+            ModelKind::Beam => "beam",
+            ModelKind::Plate => "plate",
+        }
+    }
+
+    /// The parameters of this model, in display order.
+    pub fn params(self) -> &'static [Param] {
+        match self {
+            ModelKind::Beam => &BEAM_PARAMS,
+            ModelKind::Plate => &PLATE_PARAMS,
+        }
+    }
+
+    /// The other model.
+    pub fn other(self) -> ModelKind {
+        match self {
+            ModelKind::Beam => ModelKind::Plate,
+            ModelKind::Plate => ModelKind::Beam,
+        }
+    }
+
+    /// Parses a model key of this kind (`KT`, `nu`, ...).
+    ///
+    /// # Errors
+    /// [`UnknownParam`] (with the allowed keys) when the model has no such key.
+    pub fn param(self, key: &str) -> Result<Param, UnknownParam> {
+        self.params()
+            .iter()
+            .copied()
+            .find(|p| p.name() == key)
+            .ok_or_else(|| UnknownParam {
+                key: key.to_string(),
+                model: self,
+            })
+    }
+
+    /// The keys, space separated, as error messages list them.
+    pub fn key_list(self) -> String {
+        self.params()
+            .iter()
+            .map(|p| p.name())
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+}
+
+impl fmt::Display for ModelKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.name())
+    }
+}
+
+impl FromStr for ModelKind {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, Self::Err> {
+        ModelKind::ALL
+            .into_iter()
+            .find(|k| k.name() == text)
+            .ok_or_else(|| format!("unknown model '{text}': must be \"beam\" or \"plate\""))
+    }
+}
+
+/// A key the model does not have.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("unknown key '{key}' for the {model} model (allowed: {})", model.key_list())]
+pub struct UnknownParam {
+    /// The key as written.
+    pub key: String,
+    /// The model.
+    pub model: ModelKind,
+}
+
+/// Physical unit of a parameter, as shown to users.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Unit {
+    /// Millimetre.
+    Millimetre,
+    /// Newton.
+    Newton,
+    /// Megapascal (N/mm^2).
+    Megapascal,
+    /// Megapascal per millimetre (stiffness per unit area).
+    MegapascalPerMillimetre,
+    /// No unit.
+    Dimensionless,
+}
+
+impl Unit {
+    /// The symbol: `mm`, `N`, `MPa`, `MPa/mm`, or `-` for dimensionless.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Unit::Millimetre => "mm",
+            Unit::Newton => "N",
+            Unit::Megapascal => "MPa",
+            Unit::MegapascalPerMillimetre => "MPa/mm",
+            Unit::Dimensionless => "-",
+        }
+    }
+
+    /// The unit as range messages spell it (`dimensionless` rather than `-`).
+    fn in_words(self) -> &'static str {
+        match self {
+            Unit::Dimensionless => "dimensionless",
+            other => other.symbol(),
+        }
+    }
+}
+
+impl fmt::Display for Unit {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.symbol())
+    }
+}
+
+/// The values a parameter may take. Every domain excludes NaN and infinities.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Domain {
+    /// Finite and strictly above zero (lengths, moduli, pressures, friction, stiffness).
+    Positive,
+    /// Finite and at or above zero (loads).
+    NonNegative,
+    /// 0 <= nu < 0.5: a stable isotropic solid that does not expand under compression (0.5 is
+    /// incompressible and makes the plane-strain compliance singular).
+    PoissonRatio,
+}
+
+impl Domain {
+    /// True when `value` is allowed.
+    pub fn contains(self, value: f64) -> bool {
+        value.is_finite()
+            && match self {
+                Domain::Positive => value > 0.0,
+                Domain::NonNegative => value >= 0.0,
+                Domain::PoissonRatio => (0.0..0.5).contains(&value),
+            }
+    }
+
+    /// The allowed range in words, with the unit: `must be > 0 and finite (mm)`.
+    pub fn describe(self, unit: Unit) -> String {
+        let unit = unit.in_words();
+        match self {
+            Domain::Positive => format!("must be > 0 and finite ({unit})"),
+            Domain::NonNegative => format!("must be >= 0 and finite ({unit})"),
+            Domain::PoissonRatio => format!("must be in [0, 0.5) ({unit})"),
+        }
+    }
+
+    /// Passes `value` through when allowed, otherwise names `field`, the value and the range.
+    pub(crate) fn check(
+        self,
+        field: &'static str,
+        value: f64,
+        unit: Unit,
+    ) -> Result<f64, ParamError> {
+        if self.contains(value) {
+            Ok(value)
+        } else {
+            Err(ParamError {
+                field,
+                value,
+                domain: self,
+                unit,
+            })
+        }
+    }
+}
+
+/// A rejected input value: the field as users write it, the value and the allowed range.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("invalid {field} = {value}: {}", domain.describe(*unit))]
+pub struct ParamError {
+    /// Field name as the user writes it (preset key), e.g. `KT`.
+    pub field: &'static str,
+    /// The rejected value (may be NaN or infinite).
+    pub value: f64,
+    /// What is allowed.
+    pub domain: Domain,
+    /// The field's unit.
+    pub unit: Unit,
+}
+
+/// How the TUI steps a parameter with the arrow keys.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Step {
+    /// Multiply or divide by a factor (quantities that span decades and stay positive).
+    Factor {
+        /// Fine step factor.
+        fine: f64,
+        /// Coarse step factor.
+        coarse: f64,
+    },
+    /// Add or subtract, then clamp to `[min, max]`.
+    Add {
+        /// Fine step.
+        fine: f64,
+        /// Coarse step.
+        coarse: f64,
+        /// Smallest value reached by stepping.
+        min: f64,
+        /// Largest value reached by stepping.
+        max: f64,
+    },
+    /// Add or subtract a fraction of a model scale (the twin beams' F_thre for the force, so that F
+    /// can reach and leave 0 in steps that mean the same for every geometry), never below zero.
+    FractionOfScale {
+        /// Fine fraction.
+        fine: f64,
+        /// Coarse fraction.
+        coarse: f64,
+    },
+}
+
+impl Step {
+    /// The value after one step up (`up`) or down; `scale` is used by [`Step::FractionOfScale`].
+    pub fn apply(self, value: f64, up: bool, coarse: bool, scale: f64) -> f64 {
+        let sign = if up { 1.0 } else { -1.0 };
+        match self {
+            Step::Factor { fine, coarse: big } => {
+                let factor = if coarse { big } else { fine };
+                if up { value * factor } else { value / factor }
+            }
+            Step::Add {
+                fine,
+                coarse: big,
+                min,
+                max,
+            } => (value + sign * if coarse { big } else { fine }).clamp(min, max),
+            Step::FractionOfScale { fine, coarse: big } => {
+                (value + sign * scale * if coarse { big } else { fine }).max(0.0)
+            }
+        }
+    }
+}
+
+/// Relative fine and coarse steps of multiplicative parameters.
+const FACTOR: Step = Step::Factor {
+    fine: 1.02,
+    coarse: 1.25,
+};
+
+/// Everything users see of one parameter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ParamSpec {
+    /// Key in preset files, `--set` and the TUI (`KT`).
+    pub name: &'static str,
+    /// Unit.
+    pub unit: Unit,
+    /// What the value means.
+    pub meaning: &'static str,
+    /// Allowed values.
+    pub domain: Domain,
+    /// Arrow-key step.
+    pub step: Step,
+}
+
+const fn spec(
+    name: &'static str,
+    unit: Unit,
+    meaning: &'static str,
+    domain: Domain,
+    step: Step,
+) -> ParamSpec {
+    ParamSpec {
+        name,
+        unit,
+        meaning,
+        domain,
+        step,
+    }
+}
+
+const MODULUS: ParamSpec = spec(
+    "E",
+    Unit::Megapascal,
+    "Young's modulus",
+    Domain::Positive,
+    FACTOR,
+);
+const FRICTION: ParamSpec = spec(
+    "mu",
+    Unit::Dimensionless,
+    "friction coefficient",
+    Domain::Positive,
+    FACTOR,
+);
+/// K_T spans decades: its coarse step is a quarter decade.
+const STIFFNESS: ParamSpec = spec(
+    "KT",
+    Unit::MegapascalPerMillimetre,
+    "tangential contact stiffness",
+    Domain::Positive,
+    Step::Factor {
+        fine: 1.02,
+        coarse: 1.778_279_410_038_922_8, // 10^0.25
+    },
+);
+
+/// The inputs of the twin-beam problem.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum BeamParam {
+    /// Beam length L (mm).
+    Length,
+    /// Beam width b (mm).
+    Width,
+    /// Half height h of one beam (mm): each beam is 2h high.
+    HalfHeight,
+    /// Young's modulus E (MPa).
+    Modulus,
+    /// Interface pressure P (MPa).
+    Pressure,
+    /// Friction coefficient mu (-).
+    Friction,
+    /// Tangential contact stiffness K_T (MPa/mm).
+    Stiffness,
+    /// Tip force F on each beam (N).
+    Force,
+}
+
+impl BeamParam {
+    /// Every beam parameter, in display order.
+    pub const ALL: [BeamParam; 8] = [
+        BeamParam::Length,
+        BeamParam::Width,
+        BeamParam::HalfHeight,
+        BeamParam::Modulus,
+        BeamParam::Pressure,
+        BeamParam::Friction,
+        BeamParam::Stiffness,
+        BeamParam::Force,
+    ];
+
+    /// Key, unit, meaning, domain and step.
+    pub fn spec(self) -> ParamSpec {
+        const LENGTH: Domain = Domain::Positive;
+        match self {
+            BeamParam::Length => spec("L", Unit::Millimetre, "beam length", LENGTH, FACTOR),
+            BeamParam::Width => spec("b", Unit::Millimetre, "beam width", LENGTH, FACTOR),
+            BeamParam::HalfHeight => spec(
+                "h",
+                Unit::Millimetre,
+                "half height (each beam is 2h high)",
+                LENGTH,
+                FACTOR,
+            ),
+            BeamParam::Modulus => MODULUS,
+            BeamParam::Pressure => spec(
+                "P",
+                Unit::Megapascal,
+                "interface pressure",
+                Domain::Positive,
+                FACTOR,
+            ),
+            BeamParam::Friction => FRICTION,
+            BeamParam::Stiffness => STIFFNESS,
+            BeamParam::Force => spec(
+                "F",
+                Unit::Newton,
+                "tip force on each beam",
+                Domain::NonNegative,
+                Step::FractionOfScale {
+                    fine: 0.01,
+                    coarse: 0.1,
+                },
+            ),
+        }
+    }
+
+    /// Checks `value` against this parameter's domain.
+    ///
+    /// # Errors
+    /// [`ParamError`] naming the key, the value and the allowed range.
+    pub fn check(self, value: f64) -> Result<f64, ParamError> {
+        let spec = self.spec();
+        spec.domain.check(spec.name, value, spec.unit)
+    }
+}
+
+/// The inputs of the squeezed-plate problem.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PlateParam {
+    /// Half-length L (mm).
+    HalfLength,
+    /// Thickness t_p (mm).
+    Thickness,
+    /// Young's modulus E (MPa).
+    Modulus,
+    /// Poisson ratio nu (-).
+    Poisson,
+    /// Friction coefficient mu (-).
+    Friction,
+    /// Applied pressure P (MPa).
+    Pressure,
+    /// Tangential contact stiffness K_T (MPa/mm).
+    Stiffness,
+}
+
+impl PlateParam {
+    /// Every plate parameter, in display order.
+    pub const ALL: [PlateParam; 7] = [
+        PlateParam::HalfLength,
+        PlateParam::Thickness,
+        PlateParam::Modulus,
+        PlateParam::Poisson,
+        PlateParam::Friction,
+        PlateParam::Pressure,
+        PlateParam::Stiffness,
+    ];
+
+    /// Key, unit, meaning, domain and step.
+    pub fn spec(self) -> ParamSpec {
+        match self {
+            PlateParam::HalfLength => spec(
+                "L",
+                Unit::Millimetre,
+                "half-length of the plate",
+                Domain::Positive,
+                FACTOR,
+            ),
+            PlateParam::Thickness => spec(
+                "tp",
+                Unit::Millimetre,
+                "plate thickness",
+                Domain::Positive,
+                FACTOR,
+            ),
+            PlateParam::Modulus => MODULUS,
+            PlateParam::Poisson => spec(
+                "nu",
+                Unit::Dimensionless,
+                "Poisson ratio",
+                Domain::PoissonRatio,
+                // Stepping stops just short of the excluded 0.5.
+                Step::Add {
+                    fine: 0.005,
+                    coarse: 0.05,
+                    min: 0.0,
+                    max: 0.499,
+                },
+            ),
+            PlateParam::Friction => FRICTION,
+            PlateParam::Pressure => spec(
+                "P",
+                Unit::Megapascal,
+                "applied pressure",
+                Domain::Positive,
+                FACTOR,
+            ),
+            PlateParam::Stiffness => STIFFNESS,
+        }
+    }
+
+    /// Checks `value` against this parameter's domain.
+    ///
+    /// # Errors
+    /// [`ParamError`] naming the key, the value and the allowed range.
+    pub fn check(self, value: f64) -> Result<f64, ParamError> {
+        let spec = self.spec();
+        spec.domain.check(spec.name, value, spec.unit)
+    }
+}
+
+/// A parameter of either model: what the TUI's parameter pane and presets iterate over.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Param {
+    /// A twin-beam parameter.
+    Beam(BeamParam),
+    /// A squeezed-plate parameter.
+    Plate(PlateParam),
+}
+
+const BEAM_PARAMS: [Param; 8] = {
+    let mut all = [Param::Beam(BeamParam::Length); 8];
+    let mut i = 0;
+    while i < all.len() {
+        all[i] = Param::Beam(BeamParam::ALL[i]);
+        i += 1;
+    }
+    all
+};
+
+const PLATE_PARAMS: [Param; 7] = {
+    let mut all = [Param::Plate(PlateParam::HalfLength); 7];
+    let mut i = 0;
+    while i < all.len() {
+        all[i] = Param::Plate(PlateParam::ALL[i]);
+        i += 1;
+    }
+    all
+};
+
+impl Param {
+    /// Key, unit, meaning, domain and step.
+    pub fn spec(self) -> ParamSpec {
+        match self {
+            Param::Beam(p) => p.spec(),
+            Param::Plate(p) => p.spec(),
+        }
+    }
+
+    /// The key (`KT`).
+    pub fn name(self) -> &'static str {
+        self.spec().name
+    }
+
+    /// The unit.
+    pub fn unit(self) -> Unit {
+        self.spec().unit
+    }
+
+    /// The model this parameter belongs to.
+    pub fn model(self) -> ModelKind {
+        match self {
+            Param::Beam(_) => ModelKind::Beam,
+            Param::Plate(_) => ModelKind::Plate,
+        }
+    }
+
+    /// True for the tangential stiffness K_T of either model (shown in MPa/um as well).
+    pub fn is_stiffness(self) -> bool {
+        matches!(
+            self,
+            Param::Beam(BeamParam::Stiffness) | Param::Plate(PlateParam::Stiffness)
+        )
+    }
+}
+
+impl fmt::Display for Param {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.name())
+    }
+}
+
+impl fmt::Display for BeamParam {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.spec().name)
+    }
+}
+
+impl fmt::Display for PlateParam {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.spec().name)
+    }
+}
+
+impl FromStr for BeamParam {
+    type Err = UnknownParam;
+
+    fn from_str(key: &str) -> Result<Self, Self::Err> {
+        match ModelKind::Beam.param(key)? {
+            Param::Beam(p) => Ok(p),
+            Param::Plate(_) => unreachable!("the beam model lists only beam parameters"),
+        }
+    }
+}
+
+impl FromStr for PlateParam {
+    type Err = UnknownParam;
+
+    fn from_str(key: &str) -> Result<Self, Self::Err> {
+        match ModelKind::Plate.param(key)? {
+            Param::Plate(p) => Ok(p),
+            Param::Beam(_) => unreachable!("the plate model lists only plate parameters"),
+        }
+    }
+}
+
+/// Parses a number as users type it: `1e6`, `600`, `0.3`; rejects NaN and infinities spelled out.
+pub fn parse_number(text: &str) -> Option<f64> {
+    let value: f64 = text.parse().ok()?;
+    // "nan" and "inf" parse in Rust; they are never what a user means. Range checks catch the rest.
+    if value.is_nan() || text.to_ascii_lowercase().contains("inf") {
+        None
+    } else {
+        Some(value)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errors_name_field_value_and_range() {
+        let err = BeamParam::Length.check(-3.0).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "invalid L = -3: must be > 0 and finite (mm)"
+        );
+        assert!(BeamParam::Modulus.check(f64::NAN).is_err());
+        assert!(BeamParam::Modulus.check(f64::INFINITY).is_err());
+        assert!(BeamParam::Modulus.check(0.0).is_err());
+        assert_eq!(BeamParam::Force.check(0.0), Ok(0.0));
+        assert!(BeamParam::Force.check(-1e-300).is_err());
+        assert_eq!(PlateParam::Poisson.check(0.0), Ok(0.0));
+        assert!(PlateParam::Poisson.check(0.5).is_err());
+        assert!(PlateParam::Poisson.check(-0.1).is_err());
+        assert_eq!(
+            PlateParam::Poisson.check(0.7).unwrap_err().to_string(),
+            "invalid nu = 0.7: must be in [0, 0.5) (dimensionless)"
+        );
+        assert_eq!(
+            BeamParam::Friction.check(-1.0).unwrap_err().to_string(),
+            "invalid mu = -1: must be > 0 and finite (dimensionless)"
+        );
+    }
+
+    #[test]
+    fn keys_parse_back_to_their_parameter_and_typos_list_the_keys() {
+        for kind in ModelKind::ALL {
+            for &param in kind.params() {
+                assert_eq!(kind.param(param.name()), Ok(param));
+                assert_eq!(param.model(), kind);
+            }
+        }
+        assert_eq!("KT".parse::<BeamParam>(), Ok(BeamParam::Stiffness));
+        assert_eq!("nu".parse::<PlateParam>(), Ok(PlateParam::Poisson));
+        assert_eq!(
+            "Kt".parse::<BeamParam>().unwrap_err().to_string(),
+            "unknown key 'Kt' for the beam model (allowed: L b h E P mu KT F)"
+        );
+        assert_eq!(
+            ModelKind::Plate.param("F").unwrap_err().to_string(),
+            "unknown key 'F' for the plate model (allowed: L tp E nu mu P KT)"
+        );
+    }
+
+    #[test]
+    fn steps_move_both_ways_and_respect_their_bounds() {
+        let kt = BeamParam::Stiffness.spec().step;
+        assert!((kt.apply(600.0, true, true, 0.0) / 600.0 - 10f64.powf(0.25)).abs() < 1e-12);
+        assert!((kt.apply(600.0, false, false, 0.0) - 600.0 / 1.02).abs() < 1e-12);
+        let nu = PlateParam::Poisson.spec().step;
+        assert_eq!(nu.apply(0.49, true, true, 0.0), 0.499);
+        assert_eq!(nu.apply(0.01, false, true, 0.0), 0.0);
+        let force = BeamParam::Force.spec().step;
+        assert!((force.apply(100.0, true, false, 80.0) - 100.8).abs() < 1e-12);
+        assert_eq!(force.apply(1.0, false, true, 80.0), 0.0);
+        for kind in ModelKind::ALL {
+            for &param in kind.params() {
+                let spec = param.spec();
+                assert!(
+                    spec.domain
+                        .contains(spec.step.apply(1e-3, false, true, 1.0))
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn numbers_refuse_nan_and_infinities() {
+        assert_eq!(parse_number("1e6"), Some(1e6));
+        assert_eq!(parse_number("NaN"), None);
+        assert_eq!(parse_number("inf"), None);
+        assert_eq!(parse_number("-Infinity"), None);
+        assert_eq!(parse_number("abc"), None);
+    }
+}

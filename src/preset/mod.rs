@@ -1,0 +1,283 @@
+//! Presets: named parameter sets in TOML, bundled in the binary or saved by the user.
+//!
+//! One file per preset, flat keys named as users write them (the keys of
+//! [`crate::model::params`]), plus `model` and an optional `description`. Missing parameter keys take
+//! the paper's value for that model, so a preset can say only what it changes; unknown keys are
+//! errors (a typo such as `Kt` must not silently fall back to a default).
+//!
+//! Four jobs, four files: this one holds the types, the bundled presets and name resolution;
+//! [`parse`] reads TOML text (and `--set KEY=VALUE`), [`write`] writes it, [`store`] is the only
+//! part that touches the file system.
+
+pub mod parse;
+pub mod store;
+pub mod write;
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use thiserror::Error;
+
+use crate::model::inputs::Inputs;
+use crate::model::params::{ModelKind, ParamError, UnknownParam};
+
+pub use parse::apply_assignment;
+pub use store::{SaveError, save_atomic, user_preset_dir, user_presets};
+pub use write::to_toml;
+
+/// A parsed preset.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Preset {
+    /// Name (file stem for user files).
+    pub name: String,
+    /// One-line description.
+    pub description: String,
+    /// The parameters.
+    pub inputs: Inputs,
+    /// Where it came from.
+    pub source: PresetSource,
+}
+
+/// Where a preset lives.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum PresetSource {
+    /// Embedded in the binary.
+    Bundled,
+    /// A TOML file.
+    File(PathBuf),
+}
+
+impl PresetSource {
+    /// `bundled` or `user`, as listings show it.
+    pub fn origin(&self) -> &'static str {
+        match self {
+            PresetSource::Bundled => "bundled",
+            PresetSource::File(_) => "user",
+        }
+    }
+}
+
+impl fmt::Display for PresetSource {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PresetSource::Bundled => f.pad("bundled"),
+            PresetSource::File(path) => f.pad(&path.display().to_string()),
+        }
+    }
+}
+
+/// What can go wrong with a preset or an assignment. Messages name the key, the value and what is
+/// allowed; [`Located`] adds the line inside a file.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum PresetError {
+    /// A key the model does not have.
+    #[error(transparent)]
+    UnknownKey(#[from] UnknownParam),
+    /// A value that is not a finite number.
+    #[error("invalid value '{text}' for {key}: not a finite number")]
+    NotANumber {
+        /// The key.
+        key: String,
+        /// The text found.
+        text: String,
+    },
+    /// `--set` text without `=`.
+    #[error("invalid assignment '{text}': expected KEY=VALUE, e.g. KT=600")]
+    Assignment {
+        /// The text found.
+        text: String,
+    },
+    /// A missing or unknown `model`.
+    #[error("{0}")]
+    Model(String),
+    /// A value out of range.
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    /// TOML syntax (the message carries line and column).
+    #[error("{0}")]
+    Syntax(String),
+    /// The file could not be read.
+    #[error("cannot read {path}: {reason}")]
+    Io {
+        /// The path.
+        path: String,
+        /// The OS's reason.
+        reason: String,
+    },
+    /// No preset of that name.
+    #[error("no preset named '{name}' (see `microslip presets`; a path must end in .toml)")]
+    NotFound {
+        /// The name asked for.
+        name: String,
+    },
+}
+
+/// A problem located in a preset file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Located {
+    /// 1-based line, when the problem has one.
+    pub line: Option<usize>,
+    /// The problem.
+    pub error: PresetError,
+}
+
+impl fmt::Display for Located {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(line) => write!(f, "line {line}: {}", self.error),
+            None => write!(f, "{}", self.error),
+        }
+    }
+}
+
+/// Presets embedded in the binary: (name, TOML text).
+pub const BUNDLED: &[(&str, &str)] = &[
+    (
+        "paper-beams",
+        include_str!("../../presets/paper-beams.toml"),
+    ),
+    (
+        "paper-beams-soft",
+        include_str!("../../presets/paper-beams-soft.toml"),
+    ),
+    (
+        "paper-plate",
+        include_str!("../../presets/paper-plate.toml"),
+    ),
+];
+
+/// The bundled preset that opens a model by default (the paper's data set).
+pub fn default_name(kind: ModelKind) -> &'static str {
+    match kind {
+        ModelKind::Beam => "paper-beams",
+        ModelKind::Plate => "paper-plate",
+    }
+}
+
+/// The bundled presets, parsed.
+pub fn bundled() -> Vec<Preset> {
+    BUNDLED
+        .iter()
+        .filter_map(|(name, text)| Preset::parse(text, name, PresetSource::Bundled).ok())
+        .collect()
+}
+
+/// The paper's preset for `kind`; falls back to the paper's inputs should the bundled file ever
+/// fail to parse (a test guards against that).
+pub fn paper(kind: ModelKind) -> Preset {
+    let name = default_name(kind);
+    resolve(name).unwrap_or_else(|_| Preset {
+        name: name.to_string(),
+        description: String::new(),
+        inputs: Inputs::paper(kind),
+        source: PresetSource::Bundled,
+    })
+}
+
+/// Resolves `--preset`: a path when it contains a path separator or ends in `.toml`, else a bundled
+/// name, else a user preset of that name.
+///
+/// # Errors
+/// [`PresetError::NotFound`] for an unknown name, [`PresetError::Io`] for an unreadable file, and
+/// the file's first problem (with its line) for an invalid one.
+pub fn resolve(spec: &str) -> Result<Preset, PresetError> {
+    let first = |mut problems: Vec<Located>| {
+        let problem = problems.remove(0);
+        match problem.line {
+            Some(line) => {
+                PresetError::Syntax(format!("preset '{spec}', line {line}: {}", problem.error))
+            }
+            None => match problem.error {
+                PresetError::Io { .. } => problem.error,
+                other => PresetError::Syntax(format!("preset '{spec}': {other}")),
+            },
+        }
+    };
+    if spec.contains(std::path::MAIN_SEPARATOR) || spec.contains('/') || spec.ends_with(".toml") {
+        return store::load(Path::new(spec)).map_err(first);
+    }
+    if let Some((name, text)) = BUNDLED.iter().find(|(name, _)| *name == spec) {
+        return Preset::parse(text, name, PresetSource::Bundled).map_err(first);
+    }
+    match user_preset_dir().map(|dir| dir.join(format!("{spec}.toml"))) {
+        Some(path) if path.exists() => store::load(&path).map_err(first),
+        _ => Err(PresetError::NotFound {
+            name: spec.to_string(),
+        }),
+    }
+}
+
+/// One row of a preset listing: bundled presets first, then the user's, with invalid user files
+/// kept (and their first problem) so that a listing can show them rather than hide them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Listed {
+    /// Name (file stem for user files).
+    pub name: String,
+    /// `bundled` or `user`.
+    pub origin: &'static str,
+    /// The preset, or the first problem of an invalid file.
+    pub preset: Result<Preset, String>,
+}
+
+/// Every preset a user can load: the bundled ones, then those in `user_dir` (sorted by name).
+pub fn listing(user_dir: Option<&Path>) -> Vec<Listed> {
+    let bundled = bundled().into_iter().map(|p| Listed {
+        name: p.name.clone(),
+        origin: PresetSource::Bundled.origin(),
+        preset: Ok(p),
+    });
+    let user = user_dir
+        .map(user_presets)
+        .unwrap_or_default()
+        .into_iter()
+        .map(|(path, loaded)| Listed {
+            name: path
+                .file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_default(),
+            origin: "user",
+            preset: loaded.map_err(|problems| problems[0].to_string()),
+        });
+    bundled.chain(user).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::params::{BeamParam, Param};
+
+    #[test]
+    fn bundled_presets_parse_and_validate() {
+        let presets = bundled();
+        assert_eq!(presets.len(), BUNDLED.len());
+        for preset in presets {
+            assert!(preset.inputs.validate().is_ok(), "{}", preset.name);
+            assert!(!preset.description.is_empty());
+        }
+        let soft = resolve("paper-beams-soft").unwrap();
+        assert_eq!(
+            soft.inputs.get(Param::Beam(BeamParam::Stiffness)),
+            Some(120.0)
+        );
+        for kind in ModelKind::ALL {
+            assert_eq!(paper(kind).inputs, Inputs::paper(kind));
+        }
+    }
+
+    #[test]
+    fn listing_keeps_invalid_user_files_with_their_problem() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("b.toml"), "model = \"beam\"\nKT = -1\n").unwrap();
+        std::fs::write(dir.path().join("a.toml"), "model = \"plate\"\n").unwrap();
+        std::fs::write(dir.path().join("notes.txt"), "not a preset").unwrap();
+        let rows = listing(Some(dir.path()));
+        let names: Vec<&str> = rows.iter().map(|r| r.name.as_str()).collect();
+        assert_eq!(
+            names,
+            ["paper-beams", "paper-beams-soft", "paper-plate", "a", "b"]
+        );
+        assert!(rows[4].preset.as_ref().unwrap_err().contains("line 2"));
+        assert_eq!(listing(None).len(), BUNDLED.len());
+    }
+}

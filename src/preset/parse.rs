@@ -1,0 +1,262 @@
+//! Reading presets: TOML text to [`Preset`], collecting every problem with its line (the TOML
+//! parser's spans give the lines), and `--set KEY=VALUE` assignments. Keys are parsed by
+//! [`ModelKind::param`], the one place that knows how parameters are spelled.
+
+use std::collections::BTreeMap;
+
+use toml::Spanned;
+
+use super::{Located, Preset, PresetError, PresetSource};
+use crate::model::inputs::Inputs;
+use crate::model::params::{ModelKind, parse_number};
+
+/// Applies `KEY=VALUE` as typed on the command line.
+///
+/// # Errors
+/// [`PresetError::Assignment`] without `=`, [`PresetError::UnknownKey`] for a key the model does not
+/// have, [`PresetError::NotANumber`] for a value that is not a finite number. The range is checked
+/// later, by [`Inputs::validate`].
+pub fn apply_assignment(inputs: &mut Inputs, assignment: &str) -> Result<(), PresetError> {
+    let (key, value) = assignment
+        .split_once('=')
+        .ok_or_else(|| PresetError::Assignment {
+            text: assignment.to_string(),
+        })?;
+    let (key, value) = (key.trim(), value.trim());
+    let param = inputs.kind().param(key)?;
+    let number = parse_number(value).ok_or_else(|| PresetError::NotANumber {
+        key: key.to_string(),
+        text: value.to_string(),
+    })?;
+    inputs.set(param, number)?;
+    Ok(())
+}
+
+/// 1-based line of a byte offset.
+fn line_at(text: &str, offset: usize) -> usize {
+    text.as_bytes()[..offset.min(text.len())]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+        + 1
+}
+
+/// toml's syntax message ("TOML parse error at line L, column C" then an excerpt) on one line.
+fn syntax_summary(error: &toml::de::Error) -> String {
+    let message = error.to_string();
+    let lines: Vec<&str> = message.lines().filter(|l| !l.trim().is_empty()).collect();
+    match (lines.first(), lines.last()) {
+        (Some(first), Some(last)) if first != last => format!("{first}: {}", last.trim()),
+        (Some(first), _) => first.to_string(),
+        _ => "invalid TOML".to_string(),
+    }
+}
+
+impl Preset {
+    /// Parses preset text, collecting every problem (for `microslip check`); the first one is enough
+    /// for callers that only need to refuse.
+    ///
+    /// # Errors
+    /// Every problem found, each with its 1-based line when it has one, sorted by line.
+    ///
+    /// # Examples
+    /// ```
+    /// use microslip::preset::{Preset, PresetSource};
+    /// let text = "model = \"beam\"\nKT = 120\nL = -1\nKt = 5\n";
+    /// let problems = Preset::parse(text, "mine", PresetSource::Bundled).unwrap_err();
+    /// let shown: Vec<String> = problems.iter().map(ToString::to_string).collect();
+    /// assert_eq!(shown[0], "line 3: invalid L = -1: must be > 0 and finite (mm)");
+    /// assert!(shown[1].starts_with("line 4: unknown key 'Kt' for the beam model"));
+    /// ```
+    pub fn parse(text: &str, name: &str, source: PresetSource) -> Result<Preset, Vec<Located>> {
+        type Table = BTreeMap<Spanned<String>, Spanned<toml::Value>>;
+        let table: Table = toml::from_str(text).map_err(|e| {
+            vec![Located {
+                line: None,
+                error: PresetError::Syntax(syntax_summary(&e)),
+            }]
+        })?;
+        let line_of = |key: &Spanned<String>| Some(line_at(text, key.span().start));
+        let model = table.iter().find(|(key, _)| key.get_ref() == "model");
+        let kind = match model {
+            Some((key, value)) => match value.get_ref().as_str().map(str::parse::<ModelKind>) {
+                Some(Ok(kind)) => kind,
+                found => {
+                    let found = match found {
+                        Some(_) => format!("'{}'", value.get_ref().as_str().unwrap_or_default()),
+                        None => "a non-string value".to_string(),
+                    };
+                    return Err(vec![Located {
+                        line: line_of(key),
+                        error: PresetError::Model(format!(
+                            "invalid model = {found}: must be \"beam\" or \"plate\""
+                        )),
+                    }]);
+                }
+            },
+            None => {
+                return Err(vec![Located {
+                    line: None,
+                    error: PresetError::Model(
+                        "missing key 'model': must be \"beam\" or \"plate\"".to_string(),
+                    ),
+                }]);
+            }
+        };
+        let mut problems = Vec::new();
+        let mut lines = BTreeMap::new();
+        let mut inputs = Inputs::paper(kind);
+        let mut description = String::new();
+        for (key, value) in &table {
+            let (name_of_key, value) = (key.get_ref().as_str(), value.get_ref());
+            let not_a_number = || PresetError::NotANumber {
+                key: name_of_key.to_string(),
+                text: value.to_string(),
+            };
+            let result = match name_of_key {
+                "model" => Ok(()),
+                "description" => match value.as_str() {
+                    Some(text) => {
+                        description = text.to_string();
+                        Ok(())
+                    }
+                    None => Err(not_a_number()),
+                },
+                _ => kind
+                    .param(name_of_key)
+                    .map_err(PresetError::from)
+                    .and_then(|param| {
+                        lines.insert(param.name(), line_of(key));
+                        let number = value
+                            .as_float()
+                            .or_else(|| value.as_integer().map(|i| i as f64))
+                            .filter(|n| !n.is_nan())
+                            .ok_or_else(not_a_number)?;
+                        inputs.set(param, number).map_err(PresetError::from)
+                    }),
+            };
+            if let Err(error) = result {
+                problems.push(Located {
+                    line: line_of(key),
+                    error,
+                });
+            }
+        }
+        for error in inputs.all_param_errors() {
+            problems.push(Located {
+                line: lines.get(error.field).copied().flatten(),
+                error: PresetError::Param(error),
+            });
+        }
+        if problems.is_empty() {
+            Ok(Preset {
+                name: name.to_string(),
+                description,
+                inputs,
+                source,
+            })
+        } else {
+            problems.sort_by_key(|p| p.line.unwrap_or(0));
+            Err(problems)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::params::{Param, PlateParam};
+
+    #[test]
+    fn every_problem_is_reported_with_its_line() {
+        let text = "model = \"beam\"\nKt = 5\nL = -1\nmu = \"high\"\nE = 0\n";
+        let problems = Preset::parse(text, "x", PresetSource::Bundled).unwrap_err();
+        let shown: Vec<String> = problems.iter().map(ToString::to_string).collect();
+        assert_eq!(shown.len(), 4, "{shown:?}");
+        assert!(shown[0].starts_with(
+            "line 2: unknown key 'Kt' for the beam model (allowed: L b h E P mu KT F)"
+        ));
+        assert!(
+            shown[1].starts_with("line 3: invalid L = -1: must be > 0 and finite (mm)"),
+            "{shown:?}"
+        );
+        assert!(
+            shown[2].starts_with("line 4: invalid value '\"high\"' for mu"),
+            "{shown:?}"
+        );
+        assert!(shown[3].starts_with("line 5: invalid E = 0"), "{shown:?}");
+    }
+
+    #[test]
+    fn lines_come_from_the_parser_not_from_the_look_of_the_text() {
+        // Quoted keys, keys after comments and blank lines, and a key whose name starts another's.
+        let text = "# comment\n\nmodel = \"plate\"\n\"nu\" = 0.7\n  tp=-2 # thin\nP = 1\n";
+        let problems = Preset::parse(text, "x", PresetSource::Bundled).unwrap_err();
+        let lines: Vec<Option<usize>> = problems.iter().map(|p| p.line).collect();
+        assert_eq!(lines, [Some(4), Some(5)], "{problems:?}");
+        let problems =
+            Preset::parse("description = 3\nmodel = 4\n", "x", PresetSource::Bundled).unwrap_err();
+        assert_eq!(
+            problems[0].to_string(),
+            "line 2: invalid model = a non-string value: must be \"beam\" or \"plate\""
+        );
+    }
+
+    #[test]
+    fn syntax_errors_carry_line_and_column() {
+        let problems =
+            Preset::parse("model = \"beam\"\nL = = 3\n", "x", PresetSource::Bundled).unwrap_err();
+        let message = problems[0].to_string();
+        assert!(message.contains("line 2, column"), "{message}");
+        assert!(!message.contains('\n'));
+    }
+
+    #[test]
+    fn model_must_be_named() {
+        let problems = Preset::parse("L = 3\n", "x", PresetSource::Bundled).unwrap_err();
+        assert!(problems[0].to_string().contains("missing key 'model'"));
+        let problems =
+            Preset::parse("model = \"shell\"\n", "x", PresetSource::Bundled).unwrap_err();
+        assert_eq!(
+            problems[0].to_string(),
+            "line 1: invalid model = 'shell': must be \"beam\" or \"plate\""
+        );
+    }
+
+    #[test]
+    fn assignments_check_key_and_number() {
+        let mut inputs = Inputs::paper(ModelKind::Plate);
+        apply_assignment(&mut inputs, "nu=0.25").unwrap();
+        assert_eq!(inputs.get(Param::Plate(PlateParam::Poisson)), Some(0.25));
+        apply_assignment(&mut inputs, " KT = 1e3 ").unwrap();
+        assert_eq!(inputs.get(Param::Plate(PlateParam::Stiffness)), Some(1e3));
+        let err = apply_assignment(&mut inputs, "F=3")
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            err,
+            "unknown key 'F' for the plate model (allowed: L tp E nu mu P KT)"
+        );
+        let err = apply_assignment(&mut inputs, "E=abc")
+            .unwrap_err()
+            .to_string();
+        assert_eq!(err, "invalid value 'abc' for E: not a finite number");
+        assert!(apply_assignment(&mut inputs, "E=NaN").is_err());
+        assert!(apply_assignment(&mut inputs, "E=inf").is_err());
+        assert!(apply_assignment(&mut inputs, "E").is_err());
+    }
+
+    #[test]
+    fn missing_keys_fall_back_to_the_paper_values() {
+        let preset =
+            Preset::parse("model = \"plate\"\nKT = 10\n", "x", PresetSource::Bundled).unwrap();
+        assert_eq!(
+            preset.inputs.get(Param::Plate(PlateParam::Thickness)),
+            Some(0.2)
+        );
+        assert_eq!(
+            preset.inputs.get(Param::Plate(PlateParam::Stiffness)),
+            Some(10.0)
+        );
+    }
+}

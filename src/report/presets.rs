@@ -1,0 +1,67 @@
+//! The preset listing of `microslip presets`: bundled then user presets, invalid files shown with
+//! their first problem, and where user presets live.
+
+use std::fmt::Write;
+use std::path::Path;
+
+use crate::preset::Listed;
+
+/// The listing as text; `user_dir` is where user presets are looked for (`None`: no such folder).
+pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{:<20} {:<6} {:<8} description",
+        "name", "model", "source"
+    );
+    for row in rows {
+        let _ = match &row.preset {
+            Ok(p) => writeln!(
+                out,
+                "{:<20} {:<6} {:<8} {}",
+                row.name,
+                p.inputs.kind(),
+                row.origin,
+                p.description
+            ),
+            Err(problem) => {
+                let file = user_dir.map_or_else(
+                    || format!("{}.toml", row.name),
+                    |dir| dir.join(format!("{}.toml", row.name)).display().to_string(),
+                );
+                writeln!(
+                    out,
+                    "{:<20} {:<6} {:<8} INVALID: {problem} (run `microslip check {file}`)",
+                    row.name, "?", row.origin,
+                )
+            }
+        };
+    }
+    let _ = match user_dir {
+        Some(dir) => writeln!(out, "\nuser presets: {}", dir.display()),
+        None => writeln!(
+            out,
+            "\nuser presets: none (no configuration directory is known for this user)"
+        ),
+    };
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::preset;
+
+    #[test]
+    fn invalid_files_are_listed_with_their_problem_and_how_to_check_them() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("bad.toml"), "model = \"beam\"\nKT = -3\n").unwrap();
+        let text = listing(&preset::listing(Some(dir.path())), Some(dir.path()));
+        assert!(text.starts_with("name "));
+        assert!(text.contains("paper-beams          beam   bundled "));
+        let bad = text.lines().find(|l| l.starts_with("bad ")).unwrap();
+        assert!(bad.contains("INVALID: line 2: invalid KT = -3"), "{bad}");
+        assert!(bad.contains("microslip check "), "{bad}");
+        assert!(text.ends_with(&format!("user presets: {}\n", dir.path().display())));
+    }
+}

@@ -1,0 +1,163 @@
+//! One serde row type per table: the single definition of a table's columns, their order and their
+//! names (units in the names: `w_coulomb_mm`, `KT_MPa_per_mm`). [`super::csv`] writes them as CSV
+//! (the field names are the header), serde_json as JSON objects. The column names are a contract
+//! with users' scripts: do not rename them.
+
+use serde::Serialize;
+
+use crate::curves::{BeamPoint, CyclePoint, LoopPoint, PlatePoint};
+
+/// One row of `microslip sweep beam`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct BeamRow {
+    /// Tip force (N).
+    #[serde(rename = "F_N")]
+    pub force: f64,
+    /// Coulomb tip deflection (mm).
+    pub w_coulomb_mm: f64,
+    /// Regularized tip deflection (mm).
+    pub w_regularized_mm: f64,
+    /// End of the microslip zone (mm).
+    #[serde(rename = "X_mm")]
+    pub micro_end: f64,
+    /// Coulomb regime.
+    pub regime_coulomb: &'static str,
+    /// Regularized regime.
+    pub regime_regularized: &'static str,
+}
+
+impl From<&BeamPoint> for BeamRow {
+    fn from(p: &BeamPoint) -> Self {
+        BeamRow {
+            force: p.force,
+            w_coulomb_mm: p.w_coulomb,
+            w_regularized_mm: p.w_regularized,
+            micro_end: p.micro_end,
+            regime_coulomb: p.regime_coulomb.label(),
+            regime_regularized: p.regime_regularized.label(),
+        }
+    }
+}
+
+/// One row of `microslip sweep plate`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct PlateRow {
+    /// Tangential stiffness (MPa/mm).
+    #[serde(rename = "KT_MPa_per_mm")]
+    pub kt: f64,
+    /// Coulomb end displacement (mm).
+    pub u_coulomb_mm: f64,
+    /// Regularized end displacement (mm).
+    pub u_regularized_mm: f64,
+    /// End of the Coulomb stick zone (mm).
+    #[serde(rename = "Xs_mm")]
+    pub stick_end: f64,
+    /// End of the microslip zone (mm).
+    #[serde(rename = "Xr_mm")]
+    pub micro_end: f64,
+    /// Coulomb regime.
+    pub regime_coulomb: &'static str,
+    /// Regularized regime.
+    pub regime_regularized: &'static str,
+}
+
+impl From<&PlatePoint> for PlateRow {
+    fn from(p: &PlatePoint) -> Self {
+        PlateRow {
+            kt: p.kt,
+            u_coulomb_mm: p.u_coulomb,
+            u_regularized_mm: p.u_regularized,
+            stick_end: p.stick_end,
+            micro_end: p.micro_end,
+            regime_coulomb: p.regime_coulomb.label(),
+            regime_regularized: p.regime_regularized.label(),
+        }
+    }
+}
+
+/// One row of `microslip sweep cycle`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct CycleRow {
+    /// Amplitude (N).
+    #[serde(rename = "Fa_N")]
+    pub amplitude: f64,
+    /// Coulomb dissipation per cycle (N mm).
+    #[serde(rename = "D_coulomb_Nmm")]
+    pub d_coulomb: f64,
+    /// Regularized dissipation per cycle (N mm).
+    #[serde(rename = "D_regularized_Nmm")]
+    pub d_regularized: f64,
+    /// Coulomb equivalent damping ratio (-).
+    pub zeta_coulomb: f64,
+    /// Regularized equivalent damping ratio (-).
+    pub zeta_regularized: f64,
+}
+
+impl From<&CyclePoint> for CycleRow {
+    fn from(p: &CyclePoint) -> Self {
+        CycleRow {
+            amplitude: p.amplitude,
+            d_coulomb: p.d_coulomb,
+            d_regularized: p.d_regularized,
+            zeta_coulomb: p.zeta_coulomb,
+            zeta_regularized: p.zeta_regularized,
+        }
+    }
+}
+
+/// One point of `microslip cycle --format csv` (the hysteresis loop, both laws).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct LoopRow {
+    /// `unloading` or `reloading`.
+    pub branch: &'static str,
+    /// Tip force (N).
+    #[serde(rename = "F_N")]
+    pub force: f64,
+    /// Coulomb tip deflection (mm).
+    pub w_coulomb_mm: f64,
+    /// Regularized tip deflection (mm).
+    pub w_regularized_mm: f64,
+}
+
+impl From<&LoopPoint> for LoopRow {
+    fn from(p: &LoopPoint) -> Self {
+        LoopRow {
+            branch: p.branch.label(),
+            force: p.force,
+            w_coulomb_mm: p.w_coulomb,
+            w_regularized_mm: p.w_regularized,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn header<R: Serialize + Default>() -> String {
+        let mut out = Vec::new();
+        super::super::csv::write_header(&mut out, &R::default()).unwrap();
+        String::from_utf8(out).unwrap().trim_end().to_string()
+    }
+
+    /// The headers users' scripts read: a change here breaks them, so it must be deliberate.
+    #[test]
+    fn headers_are_the_published_contract() {
+        assert_eq!(
+            header::<BeamRow>(),
+            "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized"
+        );
+        assert_eq!(
+            header::<PlateRow>(),
+            "KT_MPa_per_mm,u_coulomb_mm,u_regularized_mm,Xs_mm,Xr_mm,regime_coulomb,regime_regularized"
+        );
+        assert_eq!(
+            header::<CycleRow>(),
+            "Fa_N,D_coulomb_Nmm,D_regularized_Nmm,zeta_coulomb,zeta_regularized"
+        );
+        assert_eq!(
+            header::<LoopRow>(),
+            "branch,F_N,w_coulomb_mm,w_regularized_mm"
+        );
+    }
+}

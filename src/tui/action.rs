@@ -1,0 +1,54 @@
+//! [`Action`]: what a key press (or, later, an event) asks the app to do. Its own module so that
+//! the key map (which produces actions) and the app (which applies them) depend on it and not on
+//! each other.
+
+/// What a key press asks for (see the key map).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Action {
+    /// Leave the program.
+    Quit,
+    /// Next row (parameter or preset).
+    Next,
+    /// Previous row.
+    Previous,
+    /// Increase the selected parameter by a fine step.
+    Increase,
+    /// Decrease it by a fine step.
+    Decrease,
+    /// Increase by a coarse step.
+    IncreaseCoarse,
+    /// Decrease by a coarse step.
+    DecreaseCoarse,
+    /// Start typing an exact value.
+    StartEdit,
+    /// A typed character.
+    Input(char),
+    /// Delete the last typed character.
+    Backspace,
+    /// Accept (typed value, preset choice, name).
+    Commit,
+    /// Back out of the current overlay or entry.
+    Cancel,
+    /// Answer yes.
+    Yes,
+    /// Twin beams <-> plate.
+    SwitchModel,
+    /// Next chart of the model.
+    NextChart,
+    /// Previous chart.
+    PreviousChart,
+    /// Finite-element points on or off.
+    ToggleNumeric,
+    /// Help overlay on or off.
+    ToggleHelp,
+    /// Open the preset picker.
+    OpenPresets,
+    /// Save the parameters as a user preset.
+    SavePreset,
+    /// Back to the loaded preset's values.
+    Reset,
+    /// Ask for a measurement file (F_N, w_mm).
+    LoadData,
+    /// Fit mu and K_T to the measurements and adopt the identifiable ones.
+    Fit,
+}
