@@ -6,6 +6,7 @@
 pub mod csv;
 pub mod json;
 pub mod text;
+pub mod verify;
 
 use std::fmt::Write;
 
