@@ -22,7 +22,7 @@ use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
 use crate::report::table::{TableFormat, write_json, write_table};
-use crate::report::{self, json, number, text};
+use crate::report::{self, json, text};
 use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
 
@@ -699,41 +699,12 @@ fn run_verify(
     let density = MeshDensity::with_elements(elements);
     let started = std::time::Instant::now();
     let results = verify::run(grid, density)?;
-    writeln!(
-        out,
-        "Closed forms vs finite elements ({} elements per model, regularized law)",
-        density.elements
-    )?;
-    writeln!(
-        out,
-        "{:<18} {:>5}  {:>16}  {:>9}  {:<4}  worst case",
-        "quantity", "cases", "worst rel. error", "tolerance", ""
-    )?;
-    let mut failed = 0;
-    for w in &results {
-        let pass = w.error <= tolerance;
-        failed += usize::from(!pass);
-        writeln!(
-            out,
-            "{:<18} {:>5}  {:>16}  {:>9}  {:<4}  {}",
-            w.quantity,
-            w.cases,
-            format!("{:.2e}", w.error),
-            number(tolerance),
-            if pass { "ok" } else { "FAIL" },
-            w.case
-        )?;
-    }
-    let cases: usize = results.iter().map(|w| w.cases).sum::<usize>() / 2;
-    writeln!(
-        out,
-        "{cases} cases in {:.2} s",
-        started.elapsed().as_secs_f64()
-    )?;
-    if failed > 0 {
-        Err(CliError::VerifyFailed(failed))
-    } else {
-        Ok(())
+    let seconds = started.elapsed().as_secs_f64();
+    let table = report::verify::table(&results, density.elements, tolerance, seconds);
+    out.write_all(table.as_bytes())?;
+    match verify::failures(&results, tolerance) {
+        0 => Ok(()),
+        failed => Err(CliError::VerifyFailed(failed)),
     }
 }
 

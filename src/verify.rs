@@ -1,9 +1,9 @@
 //! Cross-check of the closed forms against the independent finite-element solvers, over a grid that
 //! spans every regime and the transitions between them. This is the only module that calls both; the
-//! solvers in [`crate::numeric`] never see a closed form.
+//! solvers in [`crate::numeric`] never see a closed form. Results are data (the worst case of each
+//! quantity); the table for people is written by the `report` module.
 
 use crate::numeric::{MeshDensity, NumericError, PlateFe, TwinBeamsFe};
-use crate::report::number;
 use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
 /// Default tolerance on every relative error (the target of the numerical-solver issue).
@@ -18,37 +18,76 @@ pub enum Grid {
     Quick,
 }
 
+/// A quantity both the closed forms and the finite elements compute.
+#[non_exhaustive]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Quantity {
+    /// Twin beams: tip deflection w(L) (mm).
+    BeamTipDeflection,
+    /// Twin beams: end X of the microslip zone (mm).
+    BeamMicroslipEnd,
+    /// Plate: end displacement u(L) (mm).
+    PlateEndDisplacement,
+    /// Plate: end X_r of the microslip zone (mm).
+    PlateMicroslipEnd,
+}
+
+/// One compared case: the full parameters, so that it can be rerun.
+#[non_exhaustive]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Case {
+    /// Twin beams at a tip force.
+    Beam {
+        /// The beams.
+        params: TwinBeamsParams,
+        /// Tip force (N).
+        force: f64,
+    },
+    /// A plate at its own pressure.
+    Plate(PlateParams),
+}
+
 /// The worst disagreement found for one quantity.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Worst {
-    /// What was compared, with its unit.
-    pub quantity: &'static str,
+    /// What was compared.
+    pub quantity: Quantity,
     /// How many cases compared it.
     pub cases: usize,
     /// Largest relative error.
     pub error: f64,
-    /// The parameters of that case.
-    pub case: String,
+    /// The case of that error (None when no case compared the quantity).
+    pub case: Option<Case>,
 }
 
 impl Worst {
-    fn new(quantity: &'static str) -> Self {
+    fn new(quantity: Quantity) -> Self {
         Worst {
             quantity,
             cases: 0,
             error: 0.0,
-            case: String::new(),
+            case: None,
         }
     }
 
-    fn record(&mut self, numeric: f64, exact: f64, case: impl FnOnce() -> String) {
+    fn record(&mut self, numeric: f64, exact: f64, case: Case) {
         self.cases += 1;
         let error = relative_error(numeric, exact);
-        if error > self.error || self.case.is_empty() {
+        if error > self.error || self.case.is_none() {
             self.error = error;
-            self.case = case();
+            self.case = Some(case);
         }
     }
+
+    /// Whether the worst relative error is within `tolerance` (a NaN error is not).
+    pub fn passes(&self, tolerance: f64) -> bool {
+        self.error <= tolerance
+    }
+}
+
+/// How many of the quantities exceed `tolerance`.
+pub fn failures(results: &[Worst], tolerance: f64) -> usize {
+    results.iter().filter(|w| !w.passes(tolerance)).count()
 }
 
 /// |a - b| / |b|, or |a| when b is 0.
@@ -113,10 +152,14 @@ fn plate_shapes(grid: Grid) -> Vec<PlateParams> {
 const BEAM_STIFFNESSES: [f64; 5] = [12.0, 120.0, 600.0, 6e3, 6e4];
 const PLATE_STIFFNESSES: [f64; 6] = [1.0, 1e3, 1e5, 1e6, 1e7, 1e8];
 
-/// Runs the comparison; returns the worst case of each quantity.
+/// Runs the comparison; returns the worst case of each quantity, in the order of [`Quantity`].
+///
+/// # Errors
+///
+/// The [`NumericError`] of the first finite-element solve that fails.
 pub fn run(grid: Grid, density: MeshDensity) -> Result<Vec<Worst>, NumericError> {
-    let mut w = Worst::new("beam w(L) (mm)");
-    let mut x = Worst::new("beam X (mm)");
+    let mut w = Worst::new(Quantity::BeamTipDeflection);
+    let mut x = Worst::new(Quantity::BeamMicroslipEnd);
     for shape in beam_shapes(grid) {
         for kt in BEAM_STIFFNESSES {
             let params = TwinBeamsParams {
@@ -141,14 +184,14 @@ pub fn run(grid: Grid, density: MeshDensity) -> Result<Vec<Worst>, NumericError>
                 let exact = beams.regularized(force);
                 let mut fe = TwinBeamsFe::new(params, density);
                 fe.load_to(f, 4)?;
-                let case = || beam_case(&params, f);
+                let case = Case::Beam { params, force: f };
                 w.record(fe.tip_deflection(), exact.tip_deflection(), case);
                 x.record(fe.micro_zone_end(), exact.micro_zone_end(), case);
             }
         }
     }
-    let mut u = Worst::new("plate u(L) (mm)");
-    let mut xr = Worst::new("plate X_r (mm)");
+    let mut u = Worst::new(Quantity::PlateEndDisplacement);
+    let mut xr = Worst::new(Quantity::PlateMicroslipEnd);
     for shape in plate_shapes(grid) {
         for kt in PLATE_STIFFNESSES {
             let params = PlateParams {
@@ -161,39 +204,12 @@ pub fn run(grid: Grid, density: MeshDensity) -> Result<Vec<Worst>, NumericError>
             let exact = plate.regularized();
             let mut fe = PlateFe::new(params, density);
             fe.load_to(params.pressure, 2)?;
-            let case = || plate_case(&params);
+            let case = Case::Plate(params);
             u.record(fe.end_displacement(), exact.end_displacement(), case);
             xr.record(fe.micro_zone_end(), exact.micro_zone_end(), case);
         }
     }
     Ok(vec![w, x, u, xr])
-}
-
-fn beam_case(p: &TwinBeamsParams, force: f64) -> String {
-    format!(
-        "K_T={} MPa/mm F={} N L={} b={} h={} mm E={} MPa P={} MPa mu={}",
-        number(p.tangential_stiffness),
-        number(force),
-        number(p.length),
-        number(p.width),
-        number(p.half_height),
-        number(p.youngs_modulus),
-        number(p.pressure),
-        number(p.friction)
-    )
-}
-
-fn plate_case(p: &PlateParams) -> String {
-    format!(
-        "K_T={} MPa/mm L={} t_p={} mm E={} MPa nu={} mu={} P={} MPa",
-        number(p.tangential_stiffness),
-        number(p.half_length),
-        number(p.thickness),
-        number(p.youngs_modulus),
-        number(p.poisson),
-        number(p.friction),
-        number(p.pressure)
-    )
 }
 
 #[cfg(test)]
@@ -204,5 +220,27 @@ mod tests {
     fn relative_error_handles_zero_references() {
         assert_eq!(relative_error(1e-3, 0.0), 1e-3);
         assert!((relative_error(1.01, 1.0) - 0.01).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_worst_case_is_kept_and_failures_are_counted_against_the_tolerance() {
+        let case = |force| Case::Beam {
+            params: TwinBeamsParams::PAPER,
+            force,
+        };
+        let mut worst = Worst::new(Quantity::BeamTipDeflection);
+        worst.record(1.0, 1.0, case(10.0));
+        assert_eq!((worst.error, worst.case), (0.0, Some(case(10.0))));
+        worst.record(1.02, 1.0, case(20.0));
+        worst.record(1.01, 1.0, case(30.0));
+        assert_eq!(worst.cases, 3);
+        assert_eq!(worst.case, Some(case(20.0)));
+        assert!(worst.passes(0.03) && !worst.passes(0.01));
+        let mut broken = Worst::new(Quantity::PlateEndDisplacement);
+        broken.record(f64::NAN, 1.0, Case::Plate(PlateParams::PAPER));
+        assert!(!broken.passes(1.0));
+        let results = [worst, broken];
+        assert_eq!(failures(&results, 0.03), 1);
+        assert_eq!(failures(&results, 0.01), 2);
     }
 }

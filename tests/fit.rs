@@ -1,7 +1,7 @@
 //! Identification of mu and K_T from synthetic measurements: known parameters plus noise must be
 //! recovered within the uncertainty the fit reports, and data that cannot show a parameter must say so.
 
-use microslip::fit::{Measurement, Status, fit_twin_beams};
+use microslip::fit::{Evidence, Measurement, Status, fit_twin_beams};
 use microslip::{TipForce, TwinBeams, TwinBeamsParams};
 
 /// Deterministic Gaussian noise (xorshift64 + Box-Muller), so the test is reproducible.
@@ -103,10 +103,12 @@ fn data_below_the_threshold_cannot_show_mu() {
     let fit = fit_twin_beams(TwinBeamsParams::PAPER, &data, None, None).unwrap();
     assert_eq!(fit.mu.status, Status::NotIdentifiable, "{fit:?}");
     assert!(
-        fit.mu.note.contains("no measurement above F_1"),
-        "{}",
-        fit.mu.note
+        matches!(fit.mu.evidence, Evidence::NoDataAboveFirstMacroslip { .. }),
+        "{:?}",
+        fit.mu.evidence
     );
+    let note = microslip::report::text::evidence(&fit.mu.evidence);
+    assert!(note.contains("no measurement above F_1"), "{note}");
     assert_eq!(fit.beyond_first_macroslip, 0);
     // K_T still shows in the microslip stiffness.
     assert_ne!(fit.kt.status, Status::NotIdentifiable, "{:?}", fit.kt);

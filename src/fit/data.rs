@@ -1,6 +1,9 @@
-//! Measured twin-beam deflection curves: a CSV text with a header naming `F_N` and `w_mm` (other
-//! columns are ignored), one measurement per row, forces strictly increasing. Every error names the
-//! line, so a user can go straight to it.
+//! Reads measured twin-beam deflection curves from CSV text (header naming `F_N` and `w_mm`, one
+//! measurement per row, forces strictly increasing) and names the file line of every problem.
+//!
+//! The text is read by the `csv` crate, so spreadsheet output works as is: a UTF-8 byte-order mark,
+//! quoted fields, CRLF line ends, blank lines, `#` comment lines (a `#` that starts the line), spaces
+//! around fields and extra columns in any order (ignored).
 
 use thiserror::Error;
 
@@ -26,6 +29,9 @@ pub struct DataError {
 /// Fewest rows a fit accepts: two parameters need at least one more point than parameters.
 pub const MIN_ROWS: usize = 3;
 
+/// The comment character: a line that starts with it is skipped.
+const COMMENT: u8 = b'#';
+
 fn error(line: usize, problem: impl Into<String>) -> DataError {
     DataError {
         line,
@@ -33,20 +39,78 @@ fn error(line: usize, problem: impl Into<String>) -> DataError {
     }
 }
 
-/// Parses the text of a measurement CSV.
-pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
-    let mut lines = text
-        .lines()
+/// The 1-based line on which the record read from byte `offset` starts.
+///
+/// The `csv` reader's own position of a record is where the previous record ended, before the blank
+/// and comment lines it skips; this skips them the same way (line ends, and whole lines that start
+/// with the comment character) and counts the line breaks before the record's first byte. A lone
+/// `\r` counts as a line break, as it does for the reader.
+fn start_line(bytes: &[u8], offset: usize) -> usize {
+    let mut at = offset.min(bytes.len());
+    loop {
+        match bytes.get(at) {
+            Some(b'\r' | b'\n') => at += 1,
+            Some(&COMMENT) => {
+                at = bytes[at..]
+                    .iter()
+                    .position(|&b| b == b'\n')
+                    .map_or(bytes.len(), |end| at + end + 1);
+            }
+            _ => break,
+        }
+    }
+    let before = &bytes[..at];
+    let breaks = before
+        .iter()
         .enumerate()
-        .map(|(i, l)| (i + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
-    let Some((header_line, header)) = lines.next() else {
+        .filter(|&(i, &b)| b == b'\n' || (b == b'\r' && before.get(i + 1) != Some(&b'\n')))
+        .count();
+    1 + breaks
+}
+
+/// Parses the text of a measurement CSV.
+///
+/// # Errors
+///
+/// A [`DataError`] with the 1-based line of the file when the text has no header, the header lacks
+/// `F_N` or `w_mm`, a value is missing or not a finite number, a force is negative or not above the
+/// previous one, or there are fewer than [`MIN_ROWS`] measurements.
+pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
+    // The reader would skip the mark as well; removing it here keeps byte offsets and lines aligned.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let bytes = text.as_bytes();
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .comment(Some(COMMENT))
+        .trim(csv::Trim::All)
+        .from_reader(bytes);
+    // (line, record) of every non-blank record; a line of spaces is a record of one empty field.
+    let mut records = std::iter::from_fn(move || {
+        let mut record = csv::StringRecord::new();
+        match reader.read_record(&mut record) {
+            Ok(true) => {
+                let offset = record.position().map_or(0, |p| p.byte());
+                Some(Ok((start_line(bytes, offset as usize), record)))
+            }
+            Ok(false) => None,
+            Err(e) => {
+                let offset = e.position().map_or(0, |p| p.byte());
+                Some(Err(error(
+                    start_line(bytes, offset as usize),
+                    e.to_string(),
+                )))
+            }
+        }
+    })
+    .filter(|r| !matches!(r, Ok((_, record)) if record.len() == 1 && record[0].is_empty()));
+    let Some((header_line, header)) = records.next().transpose()? else {
         return Err(error(
             1,
             "empty file: expected a header naming the columns F_N and w_mm",
         ));
     };
-    let columns: Vec<&str> = header.split(',').map(str::trim).collect();
+    let columns: Vec<&str> = header.iter().collect();
     let find = |name: &str| {
         columns.iter().position(|c| *c == name).ok_or_else(|| {
             error(
@@ -61,11 +125,11 @@ pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
     let (force_column, deflection_column) = (find("F_N")?, find("w_mm")?);
     let mut data: Vec<Measurement> = Vec::new();
     let mut last_line = header_line;
-    for (line, row) in lines {
+    for record in records {
+        let (line, fields) = record?;
         last_line = line;
-        let fields: Vec<&str> = row.split(',').map(str::trim).collect();
         let value = |column: usize, name: &str| -> Result<f64, DataError> {
-            let text = fields.get(column).copied().unwrap_or("");
+            let text = fields.get(column).unwrap_or("");
             match text.parse::<f64>() {
                 Ok(v) if v.is_finite() => Ok(v),
                 _ if text.is_empty() => Err(error(line, format!("no value in column {name}"))),
@@ -122,6 +186,111 @@ mod tests {
                 force: 60.0,
                 deflection: 0.03
             }
+        );
+    }
+
+    /// The three measurements most tests below expect, whatever the file's dressing.
+    const EXPECTED: [Measurement; 3] = [
+        Measurement {
+            force: 10.0,
+            deflection: 0.1,
+        },
+        Measurement {
+            force: 20.0,
+            deflection: 0.2,
+        },
+        Measurement {
+            force: 30.0,
+            deflection: 0.3,
+        },
+    ];
+
+    #[test]
+    fn a_byte_order_mark_is_not_part_of_the_first_column_name() {
+        let text = "\u{feff}F_N,w_mm\n10,0.1\n20,0.2\n30,0.3\n";
+        assert_eq!(parse(text).unwrap(), EXPECTED);
+        // Nor does it shift the lines: the bad value is on the fourth line.
+        let message = parse("\u{feff}F_N,w_mm\n10,0.1\n20,0.2\n30,x\n")
+            .unwrap_err()
+            .to_string();
+        assert_eq!(message, "line 4: 'x' in column w_mm is not a finite number");
+        let message = parse("\u{feff}# exported\nF_N,w_mm\n10,x\n")
+            .unwrap_err()
+            .to_string();
+        assert_eq!(message, "line 3: 'x' in column w_mm is not a finite number");
+    }
+
+    #[test]
+    fn quoted_headers_and_values_are_unquoted() {
+        let text = "\"run\",\"F_N\",\"w_mm\"\n\"a, b\",10,0.1\n\"c\",\"20\",\"0.2\"\nd,30,0.3\n";
+        assert_eq!(parse(text).unwrap(), EXPECTED);
+        let message = parse("\"F_N\",\"deflection\"\n1,2\n")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            message.starts_with(
+                "line 1: missing column 'w_mm' in the header (found: F_N, deflection)"
+            ),
+            "{message}"
+        );
+    }
+
+    #[test]
+    fn comment_and_blank_lines_anywhere_keep_the_line_numbers() {
+        let text = "# bench 3\n\nF_N,w_mm\n10,0.1\n# gauge reset\n\n20,0.2\n   \n30,0.3\n# end\n";
+        assert_eq!(parse(text).unwrap(), EXPECTED);
+        // Lines: 1 comment, 2 blank, 3 header, 4 data, 5 comment, 6 blank, 7 data, 8 comment, 9 bad.
+        let text = "# bench 3\n\nF_N,w_mm\n10,0.1\n# gauge reset\n\n20,0.2\n# x\n30,abc\n";
+        assert_eq!(
+            parse(text).unwrap_err().to_string(),
+            "line 9: 'abc' in column w_mm is not a finite number"
+        );
+        // A missing column is reported on the header's own line, after the comments.
+        let text = "# a\n# b\n\nF_N,w\n";
+        assert!(
+            parse(text)
+                .unwrap_err()
+                .to_string()
+                .starts_with("line 4: missing column 'w_mm'")
+        );
+        // Too few rows: the line of the last row read.
+        let text = "F_N,w_mm\n10,0.1\n# c\n20,0.2\n\n# d\n";
+        assert_eq!(
+            parse(text).unwrap_err().to_string(),
+            "line 4: only 2 data rows; at least 3 are needed"
+        );
+        // Only comments and blank lines: no header.
+        assert!(
+            parse("# nothing\n\n# here\n")
+                .unwrap_err()
+                .to_string()
+                .starts_with("line 1: empty file")
+        );
+    }
+
+    #[test]
+    fn spaces_around_fields_and_names_are_ignored() {
+        let text = " F_N , w_mm \n 10 , 0.1 \n20,   0.2\t\n  30,0.3   \n";
+        assert_eq!(parse(text).unwrap(), EXPECTED);
+        let message = parse("F_N , w_mm\n10 , 0.1\n20 ,  \n")
+            .unwrap_err()
+            .to_string();
+        assert_eq!(message, "line 3: no value in column w_mm");
+    }
+
+    #[test]
+    fn crlf_files_read_like_lf_files_and_count_lines_the_same() {
+        let text = "F_N,w_mm\r\n10,0.1\r\n20,0.2\r\n30,0.3\r\n";
+        assert_eq!(parse(text).unwrap(), EXPECTED);
+        let text = "# c\r\nF_N,w_mm\r\n10,0.1\r\n\r\n20,0.2\r\n30,abc\r\n";
+        assert_eq!(
+            parse(text).unwrap_err().to_string(),
+            "line 6: 'abc' in column w_mm is not a finite number"
+        );
+        // Old Mac line ends (a lone CR) are line breaks too.
+        assert_eq!(
+            parse("F_N,w_mm\r10,0.1\r20,x\r").unwrap_err().to_string(),
+            "line 3: 'x' in column w_mm is not a finite number"
         );
     }
 

@@ -9,6 +9,9 @@
 //! user's guess, then Levenberg-Marquardt refines it. Standard errors come from the Jacobian at the
 //! optimum (s^2 (J^T J)^-1, delta method back to linear units). Identifiability is judged from the
 //! physics first (no data beyond F_1: mu cannot be seen) and from the standard errors second.
+//!
+//! Results are data only: the reason behind each verdict is an [`Evidence`] carrying its numbers;
+//! the words for people are written by the `report` module.
 
 pub mod data;
 
@@ -54,6 +57,38 @@ impl Status {
     }
 }
 
+/// Why a parameter got its [`Status`]: the finding behind the verdict, with its numbers.
+#[non_exhaustive]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Evidence {
+    /// Held at a given value (`--fix`), not fitted.
+    HeldFixed,
+    /// The standard error at the optimum, relative to the value.
+    StandardError {
+        /// Standard error / value (-).
+        relative: f64,
+    },
+    /// The best fit sits at the edge of the search range, so no standard error means anything.
+    AtSearchBound,
+    /// The residuals do not depend on the parameter at all.
+    NoDependence,
+    /// (mu only) Every measurement is at or below F_1, where the deflection does not depend on mu:
+    /// the data only bound mu from below.
+    NoDataAboveFirstMacroslip {
+        /// F_1 at the fitted values (N).
+        first_macroslip_force: f64,
+        /// The lower bound on mu the data do show (-): the fitted mu scaled by F_max / F_1.
+        mu_at_least: f64,
+    },
+    /// (mu only) A small standard error, but from too few measurements above F_1 to trust it.
+    FewPointsAboveFirstMacroslip {
+        /// Standard error / value (-).
+        relative: f64,
+        /// Measurements above F_1.
+        points: usize,
+    },
+}
+
 /// One fitted (or fixed) parameter.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Estimate {
@@ -63,8 +98,8 @@ pub struct Estimate {
     pub std_error: Option<f64>,
     /// Identifiability.
     pub status: Status,
-    /// Why, in plain words.
-    pub note: String,
+    /// Why: the finding behind `status`.
+    pub evidence: Evidence,
 }
 
 impl Estimate {
@@ -74,7 +109,7 @@ impl Estimate {
             value,
             std_error: None,
             status: Status::Fixed,
-            note: "held fixed".into(),
+            evidence: Evidence::HeldFixed,
         }
     }
 }
@@ -99,6 +134,7 @@ pub struct FitResult {
 }
 
 /// Why a fit could not run.
+#[non_exhaustive]
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum FitError {
     /// The structure or a fixed value is invalid.
@@ -231,6 +267,46 @@ fn normal_matrix(jac: &[Vec<f64>]) -> Vec<Vec<f64>> {
 
 /// Fits mu and K_T (each unless fixed) of twin beams with the geometry, E and P of `structure` to
 /// a measured w(L) vs F curve. The structure's own mu and K_T are not used as a start: the grid is.
+///
+/// # Errors
+///
+/// [`FitError::Param`] when the structure or a fixed value is invalid (the model's own checks), and
+/// [`FitError::TooFewPoints`] when there are not more measurements than free parameters.
+///
+/// # Examples
+///
+/// A curve measured on beams with mu = 0.4 and K_T = 200 MPa/mm, well past F_1, gives both back:
+///
+/// ```
+/// use microslip::fit::{Measurement, Status, fit_twin_beams};
+/// use microslip::{TipForce, TwinBeams, TwinBeamsParams};
+///
+/// let truth = TwinBeams::new(TwinBeamsParams {
+///     friction: 0.4,
+///     tangential_stiffness: 200.0,
+///     ..TwinBeamsParams::PAPER
+/// })?;
+/// let data: Vec<Measurement> = (1..=30)
+///     .map(|i| {
+///         let force = 10.0 * f64::from(i);
+///         let w = truth.regularized(TipForce::new(force)?).tip_deflection();
+///         Ok(Measurement { force, deflection: w })
+///     })
+///     .collect::<Result<_, microslip::ParamError>>()?;
+///
+/// // Only the geometry, E and P of the structure are used.
+/// let fit = fit_twin_beams(TwinBeamsParams::PAPER, &data, None, None)?;
+/// assert!((fit.mu.value - 0.4).abs() < 1e-6);
+/// assert!((fit.kt.value - 200.0).abs() < 1e-3);
+/// assert_eq!(fit.mu.status, Status::Identified);
+/// assert!(fit.beyond_first_macroslip > 2);
+///
+/// // Holding K_T fixed fits mu alone.
+/// let fit = fit_twin_beams(TwinBeamsParams::PAPER, &data, None, Some(200.0))?;
+/// assert_eq!(fit.kt.status, Status::Fixed);
+/// assert!((fit.mu.value - 0.4).abs() < 1e-6);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn fit_twin_beams(
     structure: TwinBeamsParams,
     data: &[Measurement],
@@ -384,71 +460,61 @@ fn summarize(problem: &Problem, theta: &[f64], sse: f64) -> FitResult {
     });
     let beyond = problem.data.iter().filter(|m| m.force > f_1).count();
     let f_max = problem.data.last().map_or(0.0, |m| m.force);
-    let judge =
-        |log_error: Option<f64>, value: f64, bound: (f64, f64)| -> (Option<f64>, Status, String) {
-            let at_bound = value <= bound.0 * 1.0001 || value >= bound.1 / 1.0001;
-            match log_error {
-                Some(e) if e.is_finite() && !at_bound => {
-                    let status = if e <= IDENTIFIED {
-                        Status::Identified
-                    } else if e <= UNIDENTIFIABLE {
-                        Status::Weak
-                    } else {
-                        Status::NotIdentifiable
-                    };
-                    (
-                        Some(value * e),
-                        status,
-                        format!("relative standard error {:.2} %", 100.0 * e),
-                    )
-                }
-                _ if at_bound => (
-                    None,
-                    Status::NotIdentifiable,
-                    "the best fit sits at the edge of the search range".into(),
-                ),
-                _ => (
-                    None,
-                    Status::NotIdentifiable,
-                    "the data do not depend on it".into(),
-                ),
+    let judge = |log_error: Option<f64>, value: f64, bound: (f64, f64)| -> Estimate {
+        let at_bound = value <= bound.0 * 1.0001 || value >= bound.1 / 1.0001;
+        let (std_error, status, evidence) = match log_error {
+            Some(e) if e.is_finite() && !at_bound => {
+                let status = if e <= IDENTIFIED {
+                    Status::Identified
+                } else if e <= UNIDENTIFIABLE {
+                    Status::Weak
+                } else {
+                    Status::NotIdentifiable
+                };
+                (
+                    Some(value * e),
+                    status,
+                    Evidence::StandardError { relative: e },
+                )
             }
+            _ if at_bound => (None, Status::NotIdentifiable, Evidence::AtSearchBound),
+            _ => (None, Status::NotIdentifiable, Evidence::NoDependence),
         };
+        Estimate {
+            value,
+            std_error,
+            status,
+            evidence,
+        }
+    };
     let mut next = log_errors.into_iter();
     let mu_estimate = match problem.fixed_mu {
         Some(v) => Estimate::fixed(v),
         None => {
-            let (se, mut status, mut note) = judge(next.next().flatten(), mu, MU_RANGE);
+            let mut estimate = judge(next.next().flatten(), mu, MU_RANGE);
             if beyond == 0 {
-                status = Status::NotIdentifiable;
-                note = format!(
-                    "no measurement above F_1 = {} N: below F_1 the deflection does not depend on mu; the data only show mu >= {}",
-                    crate::report::number(f_1),
-                    crate::report::number(mu * f_max / f_1)
-                );
-            } else if beyond < 2 && status == Status::Identified {
-                status = Status::Weak;
-                note = format!("{note}; only {beyond} measurement above F_1");
+                estimate.std_error = None;
+                estimate.status = Status::NotIdentifiable;
+                estimate.evidence = Evidence::NoDataAboveFirstMacroslip {
+                    first_macroslip_force: f_1,
+                    mu_at_least: mu * f_max / f_1,
+                };
+            } else if beyond < 2
+                && estimate.status == Status::Identified
+                && let Evidence::StandardError { relative } = estimate.evidence
+            {
+                estimate.status = Status::Weak;
+                estimate.evidence = Evidence::FewPointsAboveFirstMacroslip {
+                    relative,
+                    points: beyond,
+                };
             }
-            Estimate {
-                value: mu,
-                std_error: if beyond == 0 { None } else { se },
-                status,
-                note,
-            }
+            estimate
         }
     };
     let kt_estimate = match problem.fixed_kt {
         Some(v) => Estimate::fixed(v),
-        None => {
-            let (se, status, note) = judge(next.next().flatten(), kt, KT_RANGE);
-            Estimate {
-                value: kt,
-                std_error: se,
-                status,
-                note,
-            }
-        }
+        None => judge(next.next().flatten(), kt, KT_RANGE),
     };
     FitResult {
         mu: mu_estimate,

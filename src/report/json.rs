@@ -115,7 +115,7 @@ fn estimate(e: &crate::fit::Estimate) -> Value {
         "value": e.value,
         "std_error": e.std_error,
         "status": e.status.label(),
-        "note": e.note,
+        "note": super::text::evidence(&e.evidence),
     })
 }
 

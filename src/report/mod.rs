@@ -11,6 +11,7 @@ pub mod presets;
 pub mod rows;
 pub mod table;
 pub mod text;
+pub mod verify;
 pub mod view;
 
 use std::fmt::Write;

@@ -246,6 +246,36 @@ pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> String {
     out
 }
 
+/// The reason behind a fit verdict, in plain words (the text and JSON fit reports' note).
+pub fn evidence(evidence: &crate::fit::Evidence) -> String {
+    use crate::fit::Evidence;
+    match *evidence {
+        Evidence::HeldFixed => "held fixed".to_string(),
+        Evidence::StandardError { relative } => {
+            format!("relative standard error {:.2} %", 100.0 * relative)
+        }
+        Evidence::AtSearchBound => "the best fit sits at the edge of the search range".to_string(),
+        Evidence::NoDependence => "the data do not depend on it".to_string(),
+        Evidence::NoDataAboveFirstMacroslip {
+            first_macroslip_force,
+            mu_at_least,
+        } => format!(
+            "no measurement above F_1 = {} N: below F_1 the deflection does not depend on mu; the data only show mu >= {}",
+            number(first_macroslip_force),
+            number(mu_at_least)
+        ),
+        Evidence::FewPointsAboveFirstMacroslip { relative, points } => format!(
+            "relative standard error {:.2} %; only {points} {} above F_1",
+            100.0 * relative,
+            if points == 1 {
+                "measurement"
+            } else {
+                "measurements"
+            }
+        ),
+    }
+}
+
 /// Fit report: estimates with standard errors and a plain verdict on identifiability.
 pub fn fit(
     data: &str,
@@ -278,7 +308,7 @@ pub fn fit(
             "  {name} = {}{error}{unit}: {} ({})",
             number(estimate.value),
             estimate.status.label(),
-            estimate.note
+            evidence(&estimate.evidence)
         );
     }
     let _ = writeln!(out, "  residual RMS = {} mm", number(result.rms));
@@ -414,6 +444,40 @@ pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> String
 mod tests {
     use super::*;
     use crate::{PlateParams, TwinBeamsParams};
+
+    #[test]
+    fn every_fit_evidence_has_its_words() {
+        use crate::fit::Evidence;
+        let cases = [
+            (Evidence::HeldFixed, "held fixed"),
+            (
+                Evidence::StandardError { relative: 0.0123 },
+                "relative standard error 1.23 %",
+            ),
+            (
+                Evidence::AtSearchBound,
+                "the best fit sits at the edge of the search range",
+            ),
+            (Evidence::NoDependence, "the data do not depend on it"),
+            (
+                Evidence::NoDataAboveFirstMacroslip {
+                    first_macroslip_force: 80.5,
+                    mu_at_least: 0.25,
+                },
+                "no measurement above F_1 = 80.5 N: below F_1 the deflection does not depend on mu; the data only show mu >= 0.25",
+            ),
+            (
+                Evidence::FewPointsAboveFirstMacroslip {
+                    relative: 0.001,
+                    points: 1,
+                },
+                "relative standard error 0.10 %; only 1 measurement above F_1",
+            ),
+        ];
+        for (evidence, words) in cases {
+            assert_eq!(super::evidence(&evidence), words);
+        }
+    }
 
     #[test]
     fn beam_report_shows_units_thresholds_and_both_laws() {
