@@ -119,8 +119,16 @@ pub enum Command {
         /// Run one geometry per model only (a smoke test).
         #[arg(long)]
         quick: bool,
-        /// Elements per model (10 to 800; the smallest element shrinks in proportion).
-        #[arg(long, value_name = "N", default_value_t = MeshDensity::default().elements)]
+        #[arg(
+            long,
+            value_name = "N",
+            default_value_t = MeshDensity::default().elements,
+            help = format!(
+                "Elements per model ({} to {}; the smallest element shrinks in proportion)",
+                MeshDensity::MIN_ELEMENTS,
+                MeshDensity::MAX_ELEMENTS
+            )
+        )]
         elements: usize,
         /// Largest relative error accepted on w(L), X, u(L) and X_r.
         #[arg(long, value_name = "T", default_value_t = verify::DEFAULT_TOLERANCE)]

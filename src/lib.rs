@@ -3,18 +3,35 @@
 //!
 //! Units everywhere: mm, N, MPa; tangential stiffness K_T in MPa/mm.
 //!
-//! Layout (the shape of `ARCHITECTURE.md`, with four additions, each for a reason):
-//! - `model/` pure physics; beside the planned files, `cycle.rs` (cyclic loading is a closed form of
-//!   the same model) and `code_defaults.rs` (the FE codes' default friction penalties are data about
-//!   K_T, kept next to `stiffness.rs`).
-//! - `numeric/` the independent FE solvers; `newton.rs` holds the load stepping both share.
-//! - `fit/` identification of mu and K_T: an optimisation over the closed form, neither physics nor
-//!   I/O, so a module of its own (it parses data text but never opens files).
-//! - `verify.rs` the only place that calls both the closed forms and the FE solvers.
-//! - `curves.rs`, `preset.rs`, `report/` (text, JSON, CSV), `cli.rs` and `tui/` as planned. Presets are
-//!   parsed from a TOML table rather than serde structs so that every problem of a file can be
-//!   reported with its line, not only the first.
+//! # Layers
+//! Data flows one way; no module imports one above it:
 //!
+//! ```text
+//! preset (TOML) / --set / keys -> model::inputs::Inputs (typed model::params::Param)
+//!   -> model (checked constructors, closed forms)   <- numeric (independent FE) <- verify
+//!   -> curves (the only loops over parameters)      <- fit (identification)
+//!   -> report (text, CSV, JSON; views)  -> cli | tui   (feature `app`)
+//! ```
+//!
+//! - [`model`]: pure physics. Typed parameters ([`model::params`]: key, unit, domain, step), inputs
+//!   and validated models ([`model::inputs`]), the closed forms, cyclic loading, K_T helpers and FE
+//!   code defaults. No I/O.
+//! - [`numeric`]: finite-element solvers that never call the closed forms.
+//! - [`verify`]: the only place that calls both, returning the worst cases as data.
+//! - [`curves`]: sweeps, the hysteresis loop and the K_T comparison, computed once for every output.
+//! - [`fit`]: identification of mu and K_T, with structured evidence (no prose).
+//! - [`preset`]: TOML parse and write, and the file store (atomic, no clobber).
+//! - [`report`]: every format, from one serde row per table; what views exist ([`report::view`]).
+//! - `cli` and `tui` (behind the default feature `app`, hidden from these docs): thin layers that
+//!   parse flags or keys, call the library and hand the results to `report` or the screen. With
+//!   `default-features = false` none of clap, ratatui, crossterm or signal-hook is compiled.
+//!
+//! Beside `ARCHITECTURE.md`'s plan: `model/` also holds `cycle.rs` (cyclic loading is a closed form
+//! of the same model) and `code_defaults.rs` (FE codes' default friction penalties are data about
+//! K_T); `verify.rs` sits at the top level because it is neither physics nor I/O; chart and table
+//! enums live in `report::view` so that figure exports can name views the way the TUI does.
+//!
+//! # Example
 //! ```
 //! use microslip::{TipForce, TwinBeams, TwinBeamsParams};
 //! let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;

@@ -2,7 +2,7 @@
 //! measurement per row, forces strictly increasing) and names the file line of every problem.
 //!
 //! The text is read by the `csv` crate, so spreadsheet output works as is: a UTF-8 byte-order mark,
-//! quoted fields, CRLF line ends, blank lines, `#` comment lines (a `#` that starts the line), spaces
+//! quoted fields, CRLF line ends, blank lines, `#` comment lines (indented or not), spaces
 //! around fields and extra columns in any order (ignored).
 
 use thiserror::Error;
@@ -103,7 +103,13 @@ pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
             }
         }
     })
-    .filter(|r| !matches!(r, Ok((_, record)) if record.len() == 1 && record[0].is_empty()));
+    // Also skipped: comment lines indented with spaces, which the reader's own comment rule (a `#`
+    // in the first column) does not catch.
+    .filter(|r| {
+        !matches!(r, Ok((_, record))
+            if (record.len() == 1 && record[0].is_empty())
+                || record.get(0).is_some_and(|first| first.starts_with('#')))
+    });
     let Some((header_line, header)) = records.next().transpose()? else {
         return Err(error(
             1,
@@ -258,6 +264,12 @@ mod tests {
         assert_eq!(
             parse(text).unwrap_err().to_string(),
             "line 4: only 2 data rows; at least 3 are needed"
+        );
+        // Indented comments are comments too (as before the csv crate), lines still counted.
+        let text = "  # bench 3\nF_N,w_mm\n10,0.1\n\t# reset, again\n20,0.2\n  # x\n30,abc\n";
+        assert_eq!(
+            parse(text).unwrap_err().to_string(),
+            "line 7: 'abc' in column w_mm is not a finite number"
         );
         // Only comments and blank lines: no header.
         assert!(

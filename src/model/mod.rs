@@ -3,11 +3,11 @@
 
 pub mod code_defaults;
 pub mod cycle;
-pub mod hyperbolic;
+mod hyperbolic;
 pub mod inputs;
 pub mod params;
 pub mod plate;
 pub mod regime;
-pub mod solve;
+pub(crate) mod solve;
 pub mod stiffness;
 pub mod twin_beams;

@@ -11,18 +11,27 @@ const UM_PER_MM: f64 = 1000.0;
 /// K_T / K_N = pi (1 - nu) / (2 (2 - nu)) for a Greenwood-Williamson rough surface (paper eq. 4,
 /// after Sherif & Kossa, 1991). It gives 0.647 at nu = 0.3, inside the 0.5-0.7 range measured by
 /// Gonzalez-Valadez et al. (paper refs. 17-19).
+///
+/// # Errors
+/// [`ParamError`] when nu is outside [0, 0.5).
 pub fn tangential_to_normal_ratio(nu: f64) -> Result<f64, ParamError> {
     let nu = PlateParam::Poisson.check(nu)?;
     Ok(std::f64::consts::PI * (1.0 - nu) / (2.0 * (2.0 - nu)))
 }
 
 /// K_T (MPa/mm) from a normal contact stiffness K_N (MPa/mm), paper eq. 4.
+///
+/// # Errors
+/// [`ParamError`] when K_N is not finite and > 0, or nu is outside [0, 0.5).
 pub fn tangential_from_normal(kn: f64, nu: f64) -> Result<f64, ParamError> {
     let kn = Domain::Positive.check("KN", kn, Unit::MegapascalPerMillimetre)?;
     Ok(tangential_to_normal_ratio(nu)? * kn)
 }
 
 /// Saturation slip mu P / K_T (mm): the elastic slip at which the regularized law reaches mu P.
+///
+/// # Errors
+/// [`ParamError`] naming the first of mu, P, K_T that is not finite and > 0.
 pub fn saturation_slip(mu: f64, pressure: f64, kt: f64) -> Result<f64, ParamError> {
     let mu = PlateParam::Friction.check(mu)?;
     let p = PlateParam::Pressure.check(pressure)?;
@@ -32,6 +41,9 @@ pub fn saturation_slip(mu: f64, pressure: f64, kt: f64) -> Result<f64, ParamErro
 
 /// K_T needed for a given saturation slip (mm): K_T = mu P / slip (MPa/mm). The paper's beam data set
 /// is built this way: 0.3 * 1 MPa / 5e-4 mm = 600 MPa/mm.
+///
+/// # Errors
+/// [`ParamError`] naming the first of slip, mu, P that is not finite and > 0.
 pub fn stiffness_for_saturation_slip(mu: f64, pressure: f64, slip: f64) -> Result<f64, ParamError> {
     let slip = Domain::Positive.check("slip", slip, Unit::Millimetre)?;
     saturation_slip(mu, pressure, slip)

@@ -30,18 +30,14 @@ impl SymmetricBand {
         }
     }
 
-    /// Number of rows.
-    pub fn size(&self) -> usize {
-        self.n
-    }
-
     fn index(&self, i: usize, j: usize) -> usize {
         let (i, j) = if i >= j { (i, j) } else { (j, i) };
         debug_assert!(i - j <= self.bandwidth, "entry ({i}, {j}) outside the band");
         i * (self.bandwidth + 1) + self.bandwidth - (i - j)
     }
 
-    /// Entry (i, j).
+    /// Entry (i, j) (tests read the assembled matrix through it).
+    #[cfg(test)]
     pub fn get(&self, i: usize, j: usize) -> f64 {
         let (hi, lo) = if i >= j { (i, j) } else { (j, i) };
         if hi - lo > self.bandwidth {
@@ -67,7 +63,8 @@ impl SymmetricBand {
         self.values[k] = 1.0;
     }
 
-    /// Matrix-vector product.
+    /// Plain matrix-vector product: the tests' yardstick for [`SymmetricBand::mul_accurate`].
+    #[cfg(test)]
     pub fn mul(&self, x: &[f64]) -> Vec<f64> {
         let mut y = vec![0.0; self.n];
         for i in 0..self.n {

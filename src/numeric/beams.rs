@@ -11,16 +11,15 @@
 //! ```
 //!
 //! is a quadratic polynomial in both its parts. The interface carries the regularized Coulomb law at
-//! Gauss points, each with its own loading history ([`InterfacePoint`]); Newton iterations use the
+//! Gauss points, each with its own loading history (a Jenkins element per point); Newton iterations use the
 //! consistent tangent (K_T on elastic points, 0 on sliding ones). Nothing here assumes the upper beam
 //! mirrors the lower one: the antisymmetry u_b = -u_a comes out of the solution.
 
-use thiserror::Error;
-
 use super::banded::SymmetricBand;
 use super::elements::{GAUSS, lagrange, quadratic_bar};
+use super::error::NumericError;
 use super::interface::{InterfacePoint, Response};
-use super::mesh::{graded_from_start, ratio_for_smallest};
+use super::mesh::{MeshDensity, graded_from_start, ratio_for_smallest};
 use super::newton::{self, Discretized};
 use crate::TwinBeamsParams;
 use crate::model::solve::find_root_in_bracket;
@@ -28,63 +27,6 @@ use crate::model::solve::find_root_in_bracket;
 /// Unknowns per node (w, w', u_a, u_b) and per element midside (u_a, u_b).
 const NODE_DOFS: usize = 4;
 const STRIDE: usize = 6;
-/// Why a numerical solve failed.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum NumericError {
-    /// Newton did not converge even with small load steps.
-    #[error("Newton iterations did not converge at load {load} after {cuts} step cuts")]
-    NoConvergence {
-        /// The load level that failed.
-        load: f64,
-        /// How many times the step was halved.
-        cuts: u32,
-    },
-    /// The stiffness matrix is singular (should not happen with a clamped model).
-    #[error("singular stiffness matrix at row {0}")]
-    Singular(usize),
-    /// A load that is not a finite number.
-    #[error("invalid load {0}: must be finite")]
-    BadLoad(f64),
-}
-
-/// Mesh density of the finite-element models.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct MeshDensity {
-    /// Number of elements.
-    pub elements: usize,
-    /// Smallest element, as a fraction of the interface's shortest length scale.
-    pub smallest_fraction: f64,
-}
-
-impl Default for MeshDensity {
-    /// The default mesh: 400 elements, smallest element 1/50 of the shortest length scale.
-    fn default() -> Self {
-        MeshDensity {
-            elements: 400,
-            smallest_fraction: 0.02,
-        }
-    }
-}
-
-impl MeshDensity {
-    /// Fewest elements accepted by the command line.
-    pub const MIN_ELEMENTS: usize = 10;
-    /// Most elements accepted by the command line: the Hermite bending matrix has a condition number
-    /// growing like n^4, and beyond ~800 elements (L/h = 20) Newton's refinement can no longer push
-    /// the round-off below the discretization error (measured: 1e-13 at 400, 1e-4 at 1200).
-    pub const MAX_ELEMENTS: usize = 800;
-
-    /// `elements` elements with the default grading (the smallest element shrinks in proportion).
-    pub fn with_elements(elements: usize) -> Self {
-        let default = MeshDensity::default();
-        MeshDensity {
-            elements,
-            smallest_fraction: default.smallest_fraction * default.elements as f64
-                / elements.max(1) as f64,
-        }
-    }
-}
-
 /// One Gauss point of the interface after a solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct InterfaceSample {
@@ -299,6 +241,10 @@ impl TwinBeamsFe {
 
     /// Moves the tip force from its current value to `force` (N, either sign) in `steps` equal
     /// increments, halving an increment whose Newton iterations fail (up to 12 times).
+    ///
+    /// # Errors
+    /// [`NumericError::BadLoad`] for a non-finite force; [`NumericError::NoConvergence`] when an
+    /// increment fails even after 12 halvings; [`NumericError::Singular`] should never happen.
     pub fn load_to(&mut self, force: f64, steps: usize) -> Result<(), NumericError> {
         newton::load_to(self, force, steps)
     }

@@ -5,7 +5,7 @@
 //! convergence test and the step cutting live here once.
 
 use super::banded::SymmetricBand;
-use super::beams::NumericError;
+use super::error::NumericError;
 use super::interface::Response;
 
 /// Newton iterations allowed per load step before the step is cut.

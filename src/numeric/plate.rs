@@ -12,9 +12,10 @@
 //! towards the free edge, where the slip zone and the boundary layer sit.
 
 use super::banded::SymmetricBand;
-use super::beams::{MeshDensity, NumericError};
 use super::elements::{GAUSS, lagrange, quadratic_bar};
+use super::error::NumericError;
 use super::interface::{InterfacePoint, Response};
+use super::mesh::MeshDensity;
 use super::mesh::{graded_towards_end, ratio_for_smallest};
 use super::newton::{self, Discretized};
 use crate::PlateParams;
@@ -98,6 +99,10 @@ impl PlateFe {
     /// Moves the applied pressure from its current value to `pressure` (MPa) in `steps` increments,
     /// halving an increment whose Newton iterations fail (up to 12 times). The friction strength
     /// mu P follows the pressure.
+    ///
+    /// # Errors
+    /// [`NumericError::BadLoad`] for a non-finite pressure; [`NumericError::NoConvergence`] when
+    /// an increment fails even after 12 halvings; [`NumericError::Singular`] should never happen.
     pub fn load_to(&mut self, pressure: f64, steps: usize) -> Result<(), NumericError> {
         newton::load_to(self, pressure, steps)
     }

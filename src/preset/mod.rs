@@ -6,7 +6,7 @@
 //! errors (a typo such as `Kt` must not silently fall back to a default).
 //!
 //! Four jobs, four files: this one holds the types, the bundled presets and name resolution;
-//! [`parse`] reads TOML text (and `--set KEY=VALUE`), [`write`] writes it, [`store`] is the only
+//! [`parse`] reads TOML text (and `--set KEY=VALUE`), [`mod@write`] writes it, [`store`] is the only
 //! part that touches the file system.
 
 pub mod parse;

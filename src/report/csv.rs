@@ -43,6 +43,9 @@ fn unsupported(what: &str) -> Error {
 }
 
 /// Writes the header line of row type `R`: its field names, as serde names them.
+///
+/// # Errors
+/// The writer's error, or an error for a row type with a nested field.
 pub fn write_header<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<()> {
     row.serialize(Line {
         out,
@@ -54,6 +57,9 @@ pub fn write_header<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<(
 }
 
 /// Writes one row as a CSV line.
+///
+/// # Errors
+/// The writer's error, or an error for a row type with a nested field.
 pub fn write_row<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<()> {
     row.serialize(Line {
         out,

@@ -1,0 +1,24 @@
+//! [`NumericError`]: why a finite-element solve failed. Its own module so that the models
+//! (`beams`, `plate`) and the shared Newton driver all use it without importing one another.
+
+use thiserror::Error;
+
+/// Why a numerical solve failed.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum NumericError {
+    /// Newton did not converge even with small load steps.
+    #[error("Newton iterations did not converge at load {load} after {cuts} step cuts")]
+    NoConvergence {
+        /// The load level that failed.
+        load: f64,
+        /// How many times the step was halved.
+        cuts: u32,
+    },
+    /// The stiffness matrix is singular (should not happen with a clamped model).
+    #[error("singular stiffness matrix at row {0}")]
+    Singular(usize),
+    /// A load that is not a finite number.
+    #[error("invalid load {0}: must be finite")]
+    BadLoad(f64),
+}
