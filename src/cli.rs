@@ -13,8 +13,7 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use thiserror::Error;
 
-use crate::TipForce;
-use crate::curves::{self, RangeError, Spacing};
+use crate::curves::{self, RangeError, Samples, Spacing};
 use crate::fit::{self, FitError};
 use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, Domain, ModelKind, ParamError, Unit, parse_number};
@@ -25,6 +24,7 @@ use crate::report::table::{TableFormat, write_json, write_table};
 use crate::report::{self, json, text};
 use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
+use crate::{TipForce, TwinBeams};
 
 /// microslip: friction benchmarks under the regularized Coulomb law (Ligier & Bonhote, 2014).
 ///
@@ -420,16 +420,9 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             format,
         })) => {
-            let samples =
-                curves::force_samples(*from, *to, *points).map_err(|error| CliError::Range {
-                    error,
-                    flags: ["--from", "--to", "--points"],
-                })?;
-            let (_, model) = load(inputs, ModelKind::Beam)?;
-            if let Model::Beam { beams, .. } = model {
-                let rows = curves::beam_force_sweep(beams, samples);
-                write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
-            }
+            let (beams, forces) = beams_over_forces(inputs, *from, *to, *points)?;
+            let rows = curves::beam_force_sweep(beams, forces);
+            write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
         }
         Some(Command::Sweep(SweepCommand::Plate {
             kt_from,
@@ -483,16 +476,9 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             format,
         })) => {
-            let samples =
-                curves::force_samples(*from, *to, *points).map_err(|error| CliError::Range {
-                    error,
-                    flags: ["--from", "--to", "--points"],
-                })?;
-            let (_, model) = load(inputs, ModelKind::Beam)?;
-            if let Model::Beam { beams, .. } = model {
-                let rows = curves::cycle_sweep(beams, samples);
-                write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
-            }
+            let (beams, amplitudes) = beams_over_forces(inputs, *from, *to, *points)?;
+            let rows = curves::cycle_sweep(beams, amplitudes);
+            write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
         }
         Some(Command::Presets) => {
             let dir = preset::user_preset_dir();
@@ -510,6 +496,25 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
         }
     }
     Ok(())
+}
+
+/// The twin beams of `inputs` and a force range `--from`, `--to`, `--points` (a sweep over F or
+/// over the cycle amplitude F_a): the range is checked before the preset is read.
+fn beams_over_forces(
+    inputs: &InputArgs,
+    from: f64,
+    to: f64,
+    points: u64,
+) -> Result<(TwinBeams, Samples), CliError> {
+    let forces = curves::force_samples(from, to, points).map_err(|error| CliError::Range {
+        error,
+        flags: ["--from", "--to", "--points"],
+    })?;
+    match load(inputs, ModelKind::Beam)? {
+        (_, Model::Beam { beams, .. }) => Ok((beams, forces)),
+        // `load` refuses a preset of the other model with `WrongModel`.
+        (_, Model::Plate(_)) => unreachable!("load(.., Beam) returned a plate"),
+    }
 }
 
 /// Resolves the preset (default: the paper's data set of `wanted`), applies `--set`, validates.

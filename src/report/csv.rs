@@ -70,6 +70,68 @@ pub fn write_row<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<()> 
     out.write_all(b"\n")
 }
 
+/// The serializer methods both [`Line`] and [`Cell`] refuse: bytes, enums with data and every
+/// compound value but a row's own struct (serde requires each to be spelled out).
+macro_rules! refuse_compound_values {
+    () => {
+        fn serialize_bytes(self, _: &[u8]) -> Result<(), Error> {
+            Err(unsupported("bytes"))
+        }
+        fn serialize_newtype_variant<T: ?Sized + Serialize>(
+            self,
+            _: &'static str,
+            _: u32,
+            _: &'static str,
+            _: &T,
+        ) -> Result<(), Error> {
+            Err(unsupported("an enum with data"))
+        }
+        fn serialize_seq(self, _: Option<usize>) -> Result<Self::SerializeSeq, Error> {
+            Err(unsupported("a sequence"))
+        }
+        fn serialize_tuple(self, _: usize) -> Result<Self::SerializeTuple, Error> {
+            Err(unsupported("a tuple"))
+        }
+        fn serialize_tuple_struct(
+            self,
+            _: &'static str,
+            _: usize,
+        ) -> Result<Self::SerializeTupleStruct, Error> {
+            Err(unsupported("a tuple"))
+        }
+        fn serialize_tuple_variant(
+            self,
+            _: &'static str,
+            _: u32,
+            _: &'static str,
+            _: usize,
+        ) -> Result<Self::SerializeTupleVariant, Error> {
+            Err(unsupported("an enum with data"))
+        }
+        fn serialize_map(self, _: Option<usize>) -> Result<Self::SerializeMap, Error> {
+            Err(unsupported("a map"))
+        }
+        fn serialize_struct_variant(
+            self,
+            _: &'static str,
+            _: u32,
+            _: &'static str,
+            _: usize,
+        ) -> Result<Self::SerializeStructVariant, Error> {
+            Err(unsupported("an enum with data"))
+        }
+    };
+}
+
+/// Serializer methods of one argument that [`Line`] refuses: a line is a struct, not a value.
+macro_rules! refuse_bare_values {
+    ($($method:ident: $type:ty),* $(,)?) => {
+        $(fn $method(self, _: $type) -> Result<(), Error> {
+            Err(unsupported("a bare value"))
+        })*
+    };
+}
+
 /// Serializes one struct as one line: its field names (`header`) or its values.
 struct Line<'a, W: Write> {
     out: &'a mut W,
@@ -131,52 +193,28 @@ impl<'a, W: Write> Serializer for Line<'a, W> {
     type SerializeStruct = Self;
     type SerializeStructVariant = Impossible<(), Error>;
 
+    refuse_compound_values!();
+
     fn serialize_struct(self, _: &'static str, _: usize) -> Result<Self, Error> {
         Ok(self)
     }
 
-    fn serialize_bool(self, _: bool) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_i8(self, _: i8) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_i16(self, _: i16) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_i32(self, _: i32) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_i64(self, _: i64) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_u8(self, _: u8) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_u16(self, _: u16) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_u32(self, _: u32) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_u64(self, _: u64) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_f32(self, _: f32) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_f64(self, _: f64) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_char(self, _: char) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_str(self, _: &str) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_bytes(self, _: &[u8]) -> Result<(), Error> {
-        Err(unsupported("bytes"))
-    }
+    refuse_bare_values!(
+        serialize_bool: bool,
+        serialize_i8: i8,
+        serialize_i16: i16,
+        serialize_i32: i32,
+        serialize_i64: i64,
+        serialize_u8: u8,
+        serialize_u16: u16,
+        serialize_u32: u32,
+        serialize_u64: u64,
+        serialize_f32: f32,
+        serialize_f64: f64,
+        serialize_char: char,
+        serialize_str: &str,
+        serialize_unit_struct: &'static str,
+    );
     fn serialize_none(self) -> Result<(), Error> {
         Err(unsupported("a bare value"))
     }
@@ -184,9 +222,6 @@ impl<'a, W: Write> Serializer for Line<'a, W> {
         Err(unsupported("a bare value"))
     }
     fn serialize_unit(self) -> Result<(), Error> {
-        Err(unsupported("a bare value"))
-    }
-    fn serialize_unit_struct(self, _: &'static str) -> Result<(), Error> {
         Err(unsupported("a bare value"))
     }
     fn serialize_unit_variant(self, _: &'static str, _: u32, _: &'static str) -> Result<(), Error> {
@@ -199,49 +234,15 @@ impl<'a, W: Write> Serializer for Line<'a, W> {
     ) -> Result<(), Error> {
         Err(unsupported("a bare value"))
     }
-    fn serialize_newtype_variant<T: ?Sized + Serialize>(
-        self,
-        _: &'static str,
-        _: u32,
-        _: &'static str,
-        _: &T,
-    ) -> Result<(), Error> {
-        Err(unsupported("an enum"))
-    }
-    fn serialize_seq(self, _: Option<usize>) -> Result<Self::SerializeSeq, Error> {
-        Err(unsupported("a sequence"))
-    }
-    fn serialize_tuple(self, _: usize) -> Result<Self::SerializeTuple, Error> {
-        Err(unsupported("a tuple"))
-    }
-    fn serialize_tuple_struct(
-        self,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Self::SerializeTupleStruct, Error> {
-        Err(unsupported("a tuple"))
-    }
-    fn serialize_tuple_variant(
-        self,
-        _: &'static str,
-        _: u32,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Self::SerializeTupleVariant, Error> {
-        Err(unsupported("an enum"))
-    }
-    fn serialize_map(self, _: Option<usize>) -> Result<Self::SerializeMap, Error> {
-        Err(unsupported("a map"))
-    }
-    fn serialize_struct_variant(
-        self,
-        _: &'static str,
-        _: u32,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Self::SerializeStructVariant, Error> {
-        Err(unsupported("an enum"))
-    }
+}
+
+/// Serializer methods of [`Cell`] that write a value as `Display` shows it (integers, booleans).
+macro_rules! write_displayed {
+    ($($method:ident: $type:ty),* $(,)?) => {
+        $(fn $method(self, x: $type) -> Result<(), Error> {
+            self.integer(x)
+        })*
+    };
 }
 
 /// Serializes one field value as one cell.
@@ -273,6 +274,8 @@ impl<'a, W: Write> Serializer for Cell<'a, W> {
     type SerializeStruct = Impossible<(), Error>;
     type SerializeStructVariant = Impossible<(), Error>;
 
+    refuse_compound_values!();
+
     fn serialize_f64(self, x: f64) -> Result<(), Error> {
         self.float(x)
     }
@@ -283,33 +286,17 @@ impl<'a, W: Write> Serializer for Cell<'a, W> {
         write_text(self.out, text)?;
         Ok(())
     }
-    fn serialize_bool(self, x: bool) -> Result<(), Error> {
-        self.integer(x)
-    }
-    fn serialize_i8(self, x: i8) -> Result<(), Error> {
-        self.integer(x)
-    }
-    fn serialize_i16(self, x: i16) -> Result<(), Error> {
-        self.integer(x)
-    }
-    fn serialize_i32(self, x: i32) -> Result<(), Error> {
-        self.integer(x)
-    }
-    fn serialize_i64(self, x: i64) -> Result<(), Error> {
-        self.integer(x)
-    }
-    fn serialize_u8(self, x: u8) -> Result<(), Error> {
-        self.integer(x)
-    }
-    fn serialize_u16(self, x: u16) -> Result<(), Error> {
-        self.integer(x)
-    }
-    fn serialize_u32(self, x: u32) -> Result<(), Error> {
-        self.integer(x)
-    }
-    fn serialize_u64(self, x: u64) -> Result<(), Error> {
-        self.integer(x)
-    }
+    write_displayed!(
+        serialize_bool: bool,
+        serialize_i8: i8,
+        serialize_i16: i16,
+        serialize_i32: i32,
+        serialize_i64: i64,
+        serialize_u8: u8,
+        serialize_u16: u16,
+        serialize_u32: u32,
+        serialize_u64: u64,
+    );
     fn serialize_char(self, x: char) -> Result<(), Error> {
         self.serialize_str(x.encode_utf8(&mut [0; 4]))
     }
@@ -336,60 +323,14 @@ impl<'a, W: Write> Serializer for Cell<'a, W> {
     ) -> Result<(), Error> {
         value.serialize(self)
     }
-    fn serialize_bytes(self, _: &[u8]) -> Result<(), Error> {
-        Err(unsupported("bytes"))
-    }
     fn serialize_unit(self) -> Result<(), Error> {
         Ok(())
     }
     fn serialize_unit_struct(self, _: &'static str) -> Result<(), Error> {
         Ok(())
     }
-    fn serialize_newtype_variant<T: ?Sized + Serialize>(
-        self,
-        _: &'static str,
-        _: u32,
-        _: &'static str,
-        _: &T,
-    ) -> Result<(), Error> {
-        Err(unsupported("an enum with data"))
-    }
-    fn serialize_seq(self, _: Option<usize>) -> Result<Self::SerializeSeq, Error> {
-        Err(unsupported("a sequence"))
-    }
-    fn serialize_tuple(self, _: usize) -> Result<Self::SerializeTuple, Error> {
-        Err(unsupported("a tuple"))
-    }
-    fn serialize_tuple_struct(
-        self,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Self::SerializeTupleStruct, Error> {
-        Err(unsupported("a tuple"))
-    }
-    fn serialize_tuple_variant(
-        self,
-        _: &'static str,
-        _: u32,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Self::SerializeTupleVariant, Error> {
-        Err(unsupported("an enum with data"))
-    }
-    fn serialize_map(self, _: Option<usize>) -> Result<Self::SerializeMap, Error> {
-        Err(unsupported("a map"))
-    }
     fn serialize_struct(self, _: &'static str, _: usize) -> Result<Self::SerializeStruct, Error> {
         Err(unsupported("a nested struct"))
-    }
-    fn serialize_struct_variant(
-        self,
-        _: &'static str,
-        _: u32,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Self::SerializeStructVariant, Error> {
-        Err(unsupported("an enum with data"))
     }
 }
 
