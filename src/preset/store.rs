@@ -94,9 +94,14 @@ pub fn save_atomic(
     };
     std::fs::create_dir_all(dir).map_err(|e| io_error(dir, e))?;
     // Dropped (and so deleted) on every early return below.
-    let mut temporary = tempfile::Builder::new()
-        .prefix(&format!(".{name}.toml."))
-        .suffix(".tmp")
+    let prefix = format!(".{name}.toml.");
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".tmp");
+    // A preset is an ordinary file: the permissions `File::create` would give (0666 less the
+    // umask), not the private 0600 of a temporary file.
+    #[cfg(unix)]
+    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+    let mut temporary = builder
         .tempfile_in(dir)
         .map_err(|e| io_error(dir, e))?;
     temporary
@@ -208,6 +213,18 @@ mod tests {
             Err(SaveError::Bundled(_))
         ));
         assert!(leftovers(dir.path()).is_empty());
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn saved_presets_get_ordinary_file_permissions() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = tempfile::tempdir().unwrap();
+        let saved = save_atomic(dir.path(), "p", "model = \"beam\"\n", false).unwrap();
+        let reference = dir.path().join("reference");
+        std::fs::File::create(&reference).unwrap();
+        let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o777;
+        assert_eq!(mode(&saved), mode(&reference));
     }
 
     #[test]
