@@ -100,6 +100,19 @@ pub enum Spacing {
 }
 
 /// A validated sampling of [from, to] with `points` values, both ends included exactly.
+///
+/// # Examples
+/// ```
+/// use microslip::curves::{beam_force_sweep, force_samples};
+/// use microslip::{Regime, TwinBeams, TwinBeamsParams};
+/// let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
+/// let forces = force_samples(0.0, 300.0, 4)?; // 0, 100, 200, 300 N
+/// let rows: Vec<_> = beam_force_sweep(beams, forces).collect();
+/// assert_eq!(rows[1].force, 100.0);
+/// assert_eq!(rows[1].regime_regularized, Regime::MicroslipMacroslip);
+/// assert!(force_samples(0.0, -1.0, 4).is_err()); // -1 N is not a tip force
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Samples {
     from: f64,
@@ -442,6 +455,23 @@ pub struct ComparedStiffness {
 
 /// The K_T values worth comparing for one model and what each does to the answer: computed once,
 /// shown by the text and JSON reports and the TUI table alike.
+///
+/// # Examples
+/// ```
+/// use microslip::curves::{Answer, CandidateSource, compare_stiffnesses};
+/// use microslip::{Inputs, ModelKind};
+/// let model = Inputs::paper(ModelKind::Plate).validate()?;
+/// // Contact elements of 0.1 mm, and K_N = 1e6 MPa/mm at nu = 0.3 for paper eq. 4.
+/// let table = compare_stiffnesses(&model, 0.1, Some((1e6, 0.3)));
+/// let eq4 = table
+///     .rows
+///     .iter()
+///     .find(|r| matches!(r.candidate.source, CandidateSource::Equation4 { .. }))
+///     .unwrap();
+/// assert!((eq4.candidate.kt.unwrap() - 6.47e5).abs() < 1e3); // MPa/mm
+/// assert!(matches!(eq4.answer, Some(Answer::Plate { .. })));
+/// # Ok::<(), microslip::ParamError>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct StiffnessComparison {
     /// The model compared (its own K_T is the first row).

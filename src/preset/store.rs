@@ -101,9 +101,7 @@ pub fn save_atomic(
     // umask), not the private 0600 of a temporary file.
     #[cfg(unix)]
     builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
-    let mut temporary = builder
-        .tempfile_in(dir)
-        .map_err(|e| io_error(dir, e))?;
+    let mut temporary = builder.tempfile_in(dir).map_err(|e| io_error(dir, e))?;
     temporary
         .write_all(text.as_bytes())
         .and_then(|()| temporary.as_file().sync_all())

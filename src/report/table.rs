@@ -19,6 +19,22 @@ pub enum TableFormat {
 
 /// Writes `rows` as CSV (header from the row type) or as a JSON array with one object per line.
 ///
+/// # Examples
+/// ```
+/// use microslip::curves::{beam_force_sweep, force_samples};
+/// use microslip::report::rows::BeamRow;
+/// use microslip::report::table::{TableFormat, write_table};
+/// use microslip::{TwinBeams, TwinBeamsParams};
+/// let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
+/// let rows = beam_force_sweep(beams, force_samples(0.0, 80.0, 2)?).map(|p| BeamRow::from(&p));
+/// let mut csv = Vec::new();
+/// write_table(&mut csv, TableFormat::Csv, rows)?;
+/// let csv = String::from_utf8(csv)?;
+/// assert!(csv.starts_with("F_N,w_coulomb_mm,w_regularized_mm,X_mm,"));
+/// assert_eq!(csv.lines().count(), 3);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
 /// # Errors
 /// The writer's error.
 pub fn write_table<R: Serialize + Default>(
