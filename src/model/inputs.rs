@@ -102,17 +102,6 @@ impl Model {
             }
         }
     }
-
-    /// The inputs this model was validated from.
-    pub fn inputs(&self) -> Inputs {
-        match self {
-            Model::Beam { beams, force } => Inputs::Beam {
-                structure: beams.params(),
-                force: force.newtons(),
-            },
-            Model::Plate(plate) => Inputs::Plate(plate.params()),
-        }
-    }
 }
 
 impl Inputs {

@@ -236,7 +236,7 @@ pub fn listing(user_dir: Option<&Path>) -> Vec<Listed> {
                 .file_stem()
                 .map(|s| s.to_string_lossy().into_owned())
                 .unwrap_or_default(),
-            origin: "user",
+            origin: PresetSource::File(path).origin(),
             preset: loaded.map_err(|problems| problems[0].to_string()),
         });
     bundled.chain(user).collect()
