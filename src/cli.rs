@@ -347,7 +347,7 @@ pub fn main() -> ExitCode {
     };
     if cli.command.is_none() {
         return match crate::tui::run(cli.charset, cli.preset.as_deref(), cli.data.clone()) {
-            Ok(()) => ExitCode::SUCCESS,
+            Ok(exit) => ExitCode::from(exit.code()),
             Err(error) => {
                 eprintln!("microslip: {error}");
                 ExitCode::from(2)

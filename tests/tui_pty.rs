@@ -55,7 +55,10 @@ fn start() -> (Session, Box<dyn portable_pty::Child + Send + Sync>) {
         })
         .expect("a pseudo-terminal");
     let mut command = CommandBuilder::new("sh");
-    command.args(["-c", &format!("'{binary}'; echo; echo EXIT=$?; stty -a")]);
+    command.args([
+        "-c",
+        &format!("'{binary}'; code=$?; echo; echo EXIT=$code; stty -a"),
+    ]);
     command.env("TERM", "xterm-256color");
     command.env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"));
     let child = pty.slave.spawn_command(command).unwrap();
@@ -126,6 +129,115 @@ fn keys_change_the_screen_and_quit_restores_the_terminal() {
     session.send("m");
     session.wait_for("Squeezed plate");
     session.wait_for("X_r = 9.83832 mm");
+    // The beam parameters were edited: quitting asks first; "n" stays, "y" quits.
+    session.send("q");
+    session.wait_for("Quit anyway?");
+    session.send("n");
+    session.wait_for("not quitting");
+    session.send("q");
+    session.wait_for("Quit anyway?");
+    session.send("y");
+    session.wait_for("EXIT=0");
+    session.assert_restored();
+    let _ = child.wait();
+}
+
+/// The pid of microslip, the only child of the shell that `start` runs.
+fn microslip_pid(child: &(dyn portable_pty::Child + Send + Sync)) -> String {
+    let shell = child.process_id().expect("shell pid");
+    let start = Instant::now();
+    loop {
+        let children =
+            std::fs::read_to_string(format!("/proc/{shell}/task/{shell}/children")).unwrap();
+        if let Some(pid) = children.split_whitespace().next() {
+            return pid.to_string();
+        }
+        assert!(start.elapsed() < Duration::from_secs(10), "no microslip");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+fn kill(signal: &str, pid: &str) {
+    let status = std::process::Command::new("kill")
+        .args([&format!("-{signal}"), pid])
+        .status()
+        .unwrap();
+    assert!(status.success());
+}
+
+/// The process state letter from /proc (R, S, T for stopped, ...).
+fn state(pid: &str) -> char {
+    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).unwrap_or_default();
+    stat.rsplit(") ")
+        .next()
+        .and_then(|rest| rest.chars().next())
+        .unwrap_or('?')
+}
+
+#[test]
+fn a_signal_is_acted_on_even_behind_a_storm_of_keys() {
+    let (mut session, mut child) = start();
+    session.wait_for("Twin beams");
+    let pid = microslip_pid(child.as_ref());
+    // 20 000 keys that each change a parameter (and so recompute the chart), queued at once.
+    let storm = "lh".repeat(10_000);
+    let writer_keys = storm.clone();
+    let mut writer = std::mem::replace(&mut session.writer, Box::new(std::io::sink()));
+    let typing = std::thread::spawn(move || {
+        let _ = writer.write_all(writer_keys.as_bytes());
+        let _ = writer.flush();
+        writer
+    });
+    std::thread::sleep(Duration::from_millis(300));
+    let sent = Instant::now();
+    kill("TERM", &pid);
+    session.wait_for("EXIT=143");
+    let took = sent.elapsed();
+    eprintln!("SIGTERM behind the key storm: exit seen after {took:?}");
+    // The loop looks at signals between any two keys; 1 s leaves room for a loaded CI machine
+    // (measured here: well under 100 ms).
+    assert!(took < Duration::from_secs(1), "SIGTERM took {took:?}");
+    session.writer = typing.join().unwrap();
+    session.assert_restored();
+    let _ = child.wait();
+}
+
+#[test]
+fn ctrl_z_suspends_and_continuing_redraws() {
+    let (mut session, mut child) = start();
+    session.wait_for("Twin beams");
+    let pid = microslip_pid(child.as_ref());
+    session.raw.clear();
+    session.send("\u{1a}");
+    let start = Instant::now();
+    while state(&pid) != 'T' {
+        assert!(start.elapsed() < Duration::from_secs(10), "not stopped");
+        session.pump(Duration::from_millis(20));
+    }
+    // What was written before stopping may still be on its way through the pty.
+    let start = Instant::now();
+    while !String::from_utf8_lossy(&session.raw).contains("\u{1b}[?1049l")
+        && start.elapsed() < Duration::from_secs(5)
+    {
+        session.pump(Duration::from_millis(20));
+    }
+    let left = String::from_utf8_lossy(&session.raw).into_owned();
+    assert!(left.contains("\u{1b}[?1049l"), "alternate screen not left");
+    assert!(
+        left.contains("\u{1b}[?2004l"),
+        "bracketed paste not switched off"
+    );
+    session.raw.clear();
+    kill("CONT", &pid);
+    let start = Instant::now();
+    while !String::from_utf8_lossy(&session.raw).contains("Twin beams") {
+        assert!(
+            start.elapsed() < Duration::from_secs(10),
+            "no redraw after fg"
+        );
+        session.pump(Duration::from_millis(20));
+    }
+    assert!(String::from_utf8_lossy(&session.raw).contains("\u{1b}[?1049h"));
     session.send("q");
     session.wait_for("EXIT=0");
     session.assert_restored();
@@ -133,24 +245,79 @@ fn keys_change_the_screen_and_quit_restores_the_terminal() {
 }
 
 #[test]
-fn sigterm_and_sighup_restore_the_terminal() {
-    for signal in ["TERM", "HUP"] {
+fn a_paste_is_text_in_the_value_field_and_never_keys() {
+    let (mut session, mut child) = start();
+    session.wait_for("Twin beams");
+    // Select F, start typing, paste "150\nq\n": 150 goes into the field, "q" is not a key.
+    session.send("k\r");
+    session.wait_for("type a value");
+    session.send("\u{1b}[200~150\nq\n\u{1b}[201~");
+    session.wait_for("150_");
+    session.send("\r");
+    session.wait_for("At F = 150 N");
+    // On the main screen a paste is ignored, with a word.
+    session.send("\u{1b}[200~q\u{1b}[201~");
+    session.wait_for("paste ignored");
+    session.send("q");
+    session.wait_for("Quit anyway?");
+    session.send("y");
+    session.wait_for("EXIT=0");
+    session.assert_restored();
+    let _ = child.wait();
+}
+
+#[test]
+fn a_hung_up_terminal_ends_the_program_within_a_second() {
+    let binary = env!("CARGO_BIN_EXE_microslip");
+    let pty = native_pty_system()
+        .openpty(PtySize {
+            rows: 30,
+            cols: 100,
+            pixel_width: 0,
+            pixel_height: 0,
+        })
+        .unwrap();
+    let mut command = CommandBuilder::new(binary);
+    command.env("TERM", "xterm-256color");
+    command.env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"));
+    let mut child = pty.slave.spawn_command(command).unwrap();
+    drop(pty.slave);
+    // Read until the first frame is out, then let the reader go: it holds a copy of the master.
+    let mut reader = pty.master.try_clone_reader().unwrap();
+    let mut seen = Vec::new();
+    let mut buffer = [0u8; 4096];
+    while !String::from_utf8_lossy(&seen).contains("Twin beams") {
+        let n = reader.read(&mut buffer).unwrap();
+        assert!(n > 0, "no frame");
+        seen.extend_from_slice(&buffer[..n]);
+    }
+    drop(reader);
+    let writer = pty.master.take_writer().unwrap();
+    // What a dropped SSH link or a killed tmux pane does: the terminal's other end closes.
+    drop(writer);
+    drop(pty.master);
+    let closed = Instant::now();
+    loop {
+        if child.try_wait().unwrap().is_some() {
+            break;
+        }
+        assert!(
+            closed.elapsed() < Duration::from_secs(1),
+            "still running {:?} after the hang-up",
+            closed.elapsed()
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+#[test]
+fn sigterm_sighup_and_sigint_restore_the_terminal() {
+    for (signal, code) in [("TERM", 143), ("HUP", 129), ("INT", 130)] {
         let (mut session, mut child) = start();
         session.wait_for("Twin beams");
-        // microslip is the shell's only child.
-        let shell = child.process_id().expect("shell pid");
-        let children =
-            std::fs::read_to_string(format!("/proc/{shell}/task/{shell}/children")).unwrap();
-        let pid = children
-            .split_whitespace()
-            .next()
-            .expect("microslip pid")
-            .to_string();
-        let status = std::process::Command::new("kill")
-            .args([&format!("-{signal}"), &pid])
-            .status()
-            .unwrap();
-        assert!(status.success());
+        let pid = microslip_pid(child.as_ref());
+        kill(signal, &pid);
+        session.wait_for(&format!("EXIT={code}"));
         session.assert_restored();
         let _ = child.wait();
     }

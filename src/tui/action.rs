@@ -5,8 +5,13 @@
 /// What a key press asks for (see the key map).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Action {
-    /// Leave the program.
+    /// Leave the program now (Ctrl-C, or yes to "quit anyway?").
     Quit,
+    /// Leave the program, asking first when a model has unsaved edits (q, Esc).
+    RequestQuit,
+    /// Suspend like other full-screen programs (Ctrl-Z): the event loop restores the terminal and
+    /// stops the process; `fg` resumes it. The app state does not change.
+    Suspend,
     /// Next row (parameter or preset).
     Next,
     /// Previous row.

@@ -57,6 +57,11 @@ pub enum Mode {
         /// The preset name.
         name: String,
     },
+    /// Asking before quitting with unsaved edits.
+    ConfirmQuit {
+        /// What would be lost, e.g. `beam (paper-beams)`.
+        unsaved: String,
+    },
 }
 
 impl Mode {
@@ -69,7 +74,7 @@ impl Mode {
             }
             Mode::Help => Context::Help,
             Mode::Presets { .. } => Context::Presets,
-            Mode::ConfirmOverwrite { .. } => Context::Confirm,
+            Mode::ConfirmOverwrite { .. } | Mode::ConfirmQuit { .. } => Context::Confirm,
         }
     }
 }
@@ -199,6 +204,18 @@ impl App {
         self.state().inputs != self.state().preset.inputs
     }
 
+    /// The models whose parameters differ from their loaded preset, as `beam (paper-beams)`.
+    fn unsaved(&self) -> Vec<String> {
+        [
+            (ModelKind::Beam, &self.beam),
+            (ModelKind::Plate, &self.plate),
+        ]
+        .into_iter()
+        .filter(|(_, state)| state.inputs != state.preset.inputs)
+        .map(|(kind, state)| format!("{kind} ({})", state.preset.name))
+        .collect()
+    }
+
     /// Index of the selected parameter.
     pub fn selected(&self) -> usize {
         self.state().selected
@@ -278,9 +295,14 @@ impl App {
 
     /// Applies one action.
     pub fn update(&mut self, action: Action) {
-        if action == Action::Quit {
-            self.quit = true;
-            return;
+        match action {
+            Action::Quit => {
+                self.quit = true;
+                return;
+            }
+            // The event loop suspends the process; nothing in the state changes.
+            Action::Suspend => return,
+            _ => {}
         }
         match std::mem::replace(&mut self.mode, Mode::Normal) {
             Mode::Normal => self.update_normal(action),
@@ -325,7 +347,43 @@ impl App {
                 Action::Yes => self.save(&name, true),
                 _ => self.info("save cancelled; the existing preset is unchanged"),
             },
+            Mode::ConfirmQuit { unsaved } => match action {
+                Action::Yes => self.quit = true,
+                Action::Cancel => self.info("not quitting; s saves the parameters as a preset"),
+                _ => self.mode = Mode::ConfirmQuit { unsaved },
+            },
         }
+    }
+
+    /// Pasted text (bracketed paste): typed into the field being edited, up to the first line
+    /// break (a paste never runs keys); elsewhere it is ignored with a note. Returns true when the
+    /// screen changed.
+    pub fn paste(&mut self, text: &str) -> bool {
+        let line = text.split(['\n', '\r']).next().unwrap_or("");
+        let input = match &mut self.mode {
+            Mode::Editing { input } | Mode::SaveName { input } | Mode::DataPath { input } => input,
+            Mode::Normal => {
+                self.info("paste ignored: press Enter to type a value, then paste");
+                return true;
+            }
+            _ => return false,
+        };
+        let mut complete = true;
+        for c in line.chars().filter(|c| !c.is_control()) {
+            if !input.push(c) {
+                complete = false;
+                break;
+            }
+        }
+        if !complete {
+            self.error(format!(
+                "paste cut at {} characters, the input limit",
+                super::text_input::MAX_CHARS
+            ));
+        } else if line.len() < text.trim_end_matches(['\n', '\r']).len() {
+            self.info("pasted the first line only; Enter accepts it");
+        }
+        true
     }
 
     /// One key in a text-entry mode: edits stay in the mode (rebuilt by `mode`), Esc leaves it with
@@ -392,6 +450,17 @@ impl App {
                 }
             }
             Action::ToggleHelp => self.mode = Mode::Help,
+            Action::RequestQuit => {
+                let unsaved = self.unsaved();
+                if unsaved.is_empty() {
+                    self.quit = true;
+                } else {
+                    self.message = None;
+                    self.mode = Mode::ConfirmQuit {
+                        unsaved: unsaved.join(", "),
+                    };
+                }
+            }
             Action::OpenPresets => self.open_presets(),
             Action::SavePreset => {
                 self.mode = Mode::SaveName {
@@ -416,6 +485,7 @@ impl App {
             | Action::Commit
             | Action::Cancel
             | Action::Yes
+            | Action::Suspend
             | Action::Quit => {}
         }
     }

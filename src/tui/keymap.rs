@@ -206,7 +206,7 @@ pub const BINDINGS: &[Binding] = &[
     bind(
         Context::Main,
         &[(KeyCode::Char('q'), NONE), (KeyCode::Esc, NONE)],
-        Action::Quit,
+        Action::RequestQuit,
         "quit",
     ),
     bind(
@@ -286,12 +286,22 @@ pub const BINDINGS: &[Binding] = &[
     ),
 ];
 
-/// The action for a key press in a context, if any. Ctrl-C quits everywhere; in text entry, any
-/// other printable character is typed.
+/// Keys that mean the same everywhere, as the help lists them: (key, action, what happens).
+pub const GLOBAL_KEYS: [(char, Action, &str); 2] = [
+    ('c', Action::Quit, "quit, without asking"),
+    ('z', Action::Suspend, "suspend (fg resumes)"),
+];
+
+/// The action for a key press in a context, if any. Ctrl-C quits and Ctrl-Z suspends everywhere;
+/// in text entry, any other printable character is typed.
 pub fn action_for(context: Context, key: KeyEvent) -> Option<Action> {
-    if key.modifiers.contains(KeyModifiers::CONTROL) && matches!(key.code, KeyCode::Char('c' | 'C'))
+    if key.modifiers.contains(KeyModifiers::CONTROL)
+        && let KeyCode::Char(c) = key.code
+        && let Some(&(_, action, _)) = GLOBAL_KEYS
+            .iter()
+            .find(|(k, _, _)| k.eq_ignore_ascii_case(&c))
     {
-        return Some(Action::Quit);
+        return Some(action);
     }
     let found = BINDINGS
         .iter()
@@ -346,6 +356,21 @@ mod tests {
                 Some(Action::Quit)
             );
         }
+    }
+
+    #[test]
+    fn ctrl_z_suspends_everywhere_and_q_asks_before_quitting() {
+        assert_eq!(
+            action_for(
+                Context::TextEntry,
+                key(KeyCode::Char('z'), KeyModifiers::CONTROL)
+            ),
+            Some(Action::Suspend)
+        );
+        assert_eq!(
+            action_for(Context::Main, key(KeyCode::Char('q'), NONE)),
+            Some(Action::RequestQuit)
+        );
     }
 
     #[test]

@@ -1,24 +1,31 @@
-//! The terminal UI: terminal set-up and restore, and the event loop. Everything else lives in
-//! [`action`] (what keys ask for), [`app`] (state), [`keymap`] (keys), [`plots`] (chart data),
-//! [`text_input`] (typed text) and [`ui`] (drawing).
+//! The terminal UI: the event loop. Everything else lives in [`action`] (what keys ask for),
+//! [`app`] (state), [`keymap`] (keys), [`plots`] (chart data), [`text_input`] (typed text),
+//! [`terminal`] (entering, leaving, suspending), [`signals`] and [`ui`] (drawing).
 //!
-//! Over SSH: the screen is redrawn only after a key or a resize (no frame rate; the 250 ms poll only
-//! checks for SIGTERM/SIGHUP and draws nothing), queued keys are applied before a single redraw, the
-//! mouse is not captured, and the terminal is restored on quit, on error, on panic (ratatui's hook)
-//! and on SIGTERM or SIGHUP (a dropped SSH link).
+//! Over SSH (see README, "Limits"):
+//! - The screen is redrawn only after a key, a paste or a resize; there is no frame rate.
+//! - A reader thread turns terminal input into events. The loop applies every queued event, for
+//!   up to [`BATCH`] at a time, then draws once, so a storm of keys costs one frame per batch.
+//! - Signals are looked at between any two events and at least every [`TICK`]. SIGTERM, SIGHUP
+//!   and SIGINT restore the terminal and exit with 128 + the signal; SIGTSTP and Ctrl-Z suspend.
+//! - A terminal that hung up (a dropped link, a killed pane) ends the program within a tick, even
+//!   if no SIGHUP arrives.
+//! - Pastes arrive as text (bracketed paste). The mouse is not captured. A panic restores the
+//!   terminal through ratatui's hook.
 
 pub mod action;
 pub mod app;
 pub mod keymap;
 pub mod plots;
+mod signals;
+pub mod terminal;
 pub mod text_input;
 pub mod theme;
 pub mod ui;
 
 use std::io::{self, IsTerminal};
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::Duration;
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
+use std::time::{Duration, Instant};
 
 use ratatui::DefaultTerminal;
 use ratatui::crossterm::event::{self, Event, KeyEventKind};
@@ -29,8 +36,34 @@ use theme::{Charset, Theme};
 use crate::model::params::ModelKind;
 use crate::preset::{self, PresetError};
 
-/// How often the loop wakes up to look for a termination signal (no redraw happens then).
-const SIGNAL_POLL: Duration = Duration::from_millis(250);
+/// How often the loop wakes up without input, to look for signals and a hung-up terminal (it
+/// draws nothing then).
+pub const TICK: Duration = Duration::from_millis(50);
+
+/// Longest run of queued events applied before the screen is redrawn.
+pub const BATCH: Duration = Duration::from_millis(30);
+
+/// How the TUI ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Exit {
+    /// The user quit.
+    Quit,
+    /// A signal (its number) asked the program to end.
+    Signal(i32),
+    /// The terminal went away.
+    HangUp,
+}
+
+impl Exit {
+    /// The process exit code: 0, or 128 + the signal as shells report it (129 for a hang-up).
+    pub fn code(self) -> u8 {
+        match self {
+            Exit::Quit => 0,
+            Exit::Signal(n) => u8::try_from(128 + n).unwrap_or(255),
+            Exit::HangUp => 129,
+        }
+    }
+}
 
 /// Why the TUI could not run.
 #[derive(Debug, thiserror::Error)]
@@ -56,7 +89,7 @@ pub fn run(
     charset: Charset,
     preset: Option<&str>,
     data: Option<std::path::PathBuf>,
-) -> Result<(), TuiError> {
+) -> Result<Exit, TuiError> {
     let preset = preset::resolve(preset.unwrap_or(preset::default_name(ModelKind::Beam)))?;
     if !io::stdout().is_terminal() || !io::stdin().is_terminal() {
         return Err(TuiError::NotATerminal);
@@ -82,50 +115,99 @@ pub fn run(
         user_dir: preset::user_preset_dir(),
         data,
     });
-    let terminate = Arc::new(AtomicBool::new(false));
-    for signal in [signal_hook::consts::SIGTERM, signal_hook::consts::SIGHUP] {
-        signal_hook::flag::register(signal, Arc::clone(&terminate))?;
+    let signals = signals::Signals::install()?;
+    let mut terminal = terminal::enter()?;
+    let events = spawn_reader();
+    let result = event_loop(&mut terminal, &mut app, &signals, &events);
+    if result.as_ref().is_ok_and(|exit| *exit != Exit::HangUp) {
+        let _ = terminal.show_cursor();
     }
-    let mut terminal = ratatui::try_init()?;
-    let result = event_loop(&mut terminal, &mut app, &terminate);
-    let _ = terminal.show_cursor();
-    ratatui::restore();
+    terminal::leave();
     result.map_err(TuiError::from)
+}
+
+/// Reads terminal events on a thread of its own and hands them over a channel, so that the loop
+/// never blocks inside the terminal library and always gets back to its signals. The thread ends
+/// at the first read error (the terminal is gone) or when the loop has gone.
+fn spawn_reader() -> Receiver<io::Result<Event>> {
+    let (sender, receiver) = mpsc::channel();
+    std::thread::spawn(move || {
+        loop {
+            let event = event::read();
+            let failed = event.is_err();
+            if sender.send(event).is_err() || failed {
+                break;
+            }
+        }
+    });
+    receiver
+}
+
+/// Applies one event; true when the screen must be redrawn.
+fn apply(terminal: &mut DefaultTerminal, app: &mut App, event: Event) -> io::Result<bool> {
+    Ok(match event {
+        Event::Key(key) if key.kind == KeyEventKind::Press => {
+            match keymap::action_for(app.mode().context(), key) {
+                Some(action::Action::Suspend) => {
+                    terminal::suspend(terminal)?;
+                    true
+                }
+                Some(action) => {
+                    app.update(action);
+                    true
+                }
+                None => false,
+            }
+        }
+        Event::Paste(text) => app.paste(&text),
+        Event::Resize(..) => true,
+        _ => false,
+    })
 }
 
 fn event_loop(
     terminal: &mut DefaultTerminal,
     app: &mut App,
-    terminate: &AtomicBool,
-) -> io::Result<()> {
+    signals: &signals::Signals,
+    events: &Receiver<io::Result<Event>>,
+) -> io::Result<Exit> {
     terminal.draw(|frame| ui::draw(frame, app))?;
-    while !terminate.load(Ordering::Relaxed) {
-        if !event::poll(SIGNAL_POLL)? {
-            continue;
-        }
-        let mut redraw = false;
-        // Apply every queued event, then draw once.
-        loop {
-            match event::read()? {
-                Event::Key(key) if key.kind == KeyEventKind::Press => {
-                    if let Some(action) = keymap::action_for(app.mode().context(), key) {
-                        app.update(action);
-                        redraw = true;
-                    }
-                    if app.should_quit() {
-                        return Ok(());
-                    }
-                }
-                Event::Resize(..) => redraw = true,
-                _ => {}
+    loop {
+        match signals.take() {
+            Some(signals::Request::Terminate(signal)) => return Ok(Exit::Signal(signal)),
+            Some(signals::Request::Suspend) => {
+                terminal::suspend(terminal)?;
+                terminal.draw(|frame| ui::draw(frame, app))?;
             }
-            if !event::poll(Duration::ZERO)? {
+            None => {}
+        }
+        if terminal::hung_up() {
+            return Ok(Exit::HangUp);
+        }
+        let first = match events.recv_timeout(TICK) {
+            Ok(event) => event,
+            Err(RecvTimeoutError::Timeout) => continue,
+            Err(RecvTimeoutError::Disconnected) => return Ok(Exit::HangUp),
+        };
+        // Apply queued events for up to one batch, stopping early for a signal; then draw once.
+        let started = Instant::now();
+        let mut redraw = false;
+        let mut next = Some(first);
+        while let Some(event) = next {
+            let Ok(event) = event else {
+                return Ok(Exit::HangUp);
+            };
+            redraw |= apply(terminal, app, event)?;
+            if app.should_quit() {
+                return Ok(Exit::Quit);
+            }
+            if signals.waiting() || started.elapsed() >= BATCH {
                 break;
             }
+            next = events.try_recv().ok();
         }
-        if redraw {
+        if redraw && !signals.waiting() {
             terminal.draw(|frame| ui::draw(frame, app))?;
         }
     }
-    Ok(())
 }

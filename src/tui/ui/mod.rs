@@ -65,6 +65,14 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 &format!("Preset '{name}' exists. Overwrite it?"),
                 "y overwrite, n or Esc keep the existing file",
             ),
+            Mode::ConfirmQuit { unsaved } => overlay::draw_prompt(
+                frame,
+                app,
+                area,
+                "Quit?",
+                &format!("Unsaved edits: {unsaved}. Quit anyway?"),
+                "y quit, n or Esc stay (s saves as a preset)",
+            ),
             Mode::Normal | Mode::Editing { .. } => {}
         }
     }

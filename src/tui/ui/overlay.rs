@@ -8,7 +8,7 @@ use ratatui::widgets::{Clear, Paragraph};
 use super::panes::pane;
 use crate::preset::Listed;
 use crate::tui::app::App;
-use crate::tui::keymap::{BINDINGS, Context, context_title};
+use crate::tui::keymap::{BINDINGS, Context, GLOBAL_KEYS, context_title};
 use crate::tui::theme::Role;
 
 /// A centred rectangle of at most `width` x `height` inside `area`.
@@ -64,7 +64,12 @@ pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
         &[Context::Presets, Context::TextEntry, Context::Confirm],
     );
     right_lines.push(Line::from(""));
-    right_lines.push(Line::from("Ctrl-C quits from anywhere."));
+    for (key, _, what) in GLOBAL_KEYS {
+        right_lines.push(Line::from(format!(
+            " Ctrl-{:<8} {what}",
+            key.to_ascii_uppercase()
+        )));
+    }
     frame.render_widget(Paragraph::new(right_lines), right);
 }
 

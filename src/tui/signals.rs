@@ -1,0 +1,47 @@
+//! The signals the TUI acts on, recorded by async-signal-safe handlers and read by the event loop
+//! between any two events, so that no signal waits behind queued keys or a long redraw.
+
+use std::io;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM, SIGTSTP};
+
+/// What a signal asks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Request {
+    /// Restore the terminal and exit with 128 + the signal number.
+    Terminate(i32),
+    /// Restore the terminal and stop; redraw on continue.
+    Suspend,
+}
+
+/// The last signal received and not yet acted on.
+pub struct Signals {
+    pending: Arc<AtomicUsize>,
+}
+
+impl Signals {
+    /// Installs the handlers: SIGTERM, SIGHUP and SIGINT end the program, SIGTSTP suspends it.
+    pub fn install() -> io::Result<Signals> {
+        let pending = Arc::new(AtomicUsize::new(0));
+        for signal in [SIGTERM, SIGHUP, SIGINT, SIGTSTP] {
+            signal_hook::flag::register_usize(signal, Arc::clone(&pending), signal as usize)?;
+        }
+        Ok(Signals { pending })
+    }
+
+    /// The pending request, if any; taking it clears it.
+    pub fn take(&self) -> Option<Request> {
+        match self.pending.swap(0, Ordering::SeqCst) {
+            0 => None,
+            n if n == SIGTSTP as usize => Some(Request::Suspend),
+            n => Some(Request::Terminate(n as i32)),
+        }
+    }
+
+    /// True when a signal is waiting (without taking it).
+    pub fn waiting(&self) -> bool {
+        self.pending.load(Ordering::SeqCst) != 0
+    }
+}
