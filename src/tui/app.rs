@@ -810,6 +810,45 @@ mod tests {
     }
 
     #[test]
+    fn pastes_are_text_up_to_the_first_line_break_and_never_keys() {
+        let mut app = app();
+        app.update(Action::Previous); // F
+        app.update(Action::StartEdit);
+        assert!(app.paste("150\nq\n"));
+        assert!(!app.should_quit());
+        app.update(Action::Commit);
+        assert_eq!(app.inputs().get(F), Some(150.0));
+        assert!(app.paste("q"));
+        assert!(!app.should_quit());
+        assert!(app.message().unwrap().text.starts_with("paste ignored"));
+    }
+
+    #[test]
+    fn quitting_with_unsaved_edits_asks_first() {
+        let mut app = app();
+        app.update(Action::RequestQuit);
+        assert!(app.should_quit(), "nothing edited: quits at once");
+        let mut app = app_with_dir(None);
+        app.update(Action::Increase);
+        app.update(Action::SwitchModel);
+        app.update(Action::RequestQuit);
+        let Mode::ConfirmQuit { unsaved } = app.mode().clone() else {
+            panic!("no question: {:?}", app.mode())
+        };
+        assert_eq!(unsaved, "beam (paper-beams)");
+        app.update(Action::Cancel);
+        assert!(!app.should_quit());
+        app.update(Action::RequestQuit);
+        app.update(Action::Yes);
+        assert!(app.should_quit());
+        // Ctrl-C never asks.
+        let mut app = app_with_dir(None);
+        app.update(Action::Increase);
+        app.update(Action::Quit);
+        assert!(app.should_quit());
+    }
+
+    #[test]
     fn help_and_quit() {
         let mut app = app();
         app.update(Action::ToggleHelp);
