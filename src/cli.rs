@@ -16,7 +16,9 @@ use thiserror::Error;
 use crate::curves::{self, RangeError, Samples, Spacing};
 use crate::fit::{self, FitError};
 use crate::model::inputs::{Inputs, Model};
-use crate::model::params::{BeamParam, Domain, ModelKind, ParamError, Unit, parse_number};
+use crate::model::params::{
+    BeamParam, Domain, ModelKind, ParamError, Unit, compact_number, parse_number,
+};
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
@@ -280,7 +282,7 @@ pub enum CliError {
         flags: [&'static str; 3],
     },
     /// A flag that is not a model parameter, out of its range.
-    #[error("invalid {flag} = {value}: {allowed}")]
+    #[error("invalid {flag} = {}: {allowed}", compact_number(*value))]
     Flag {
         /// The flag.
         flag: &'static str,
@@ -617,7 +619,7 @@ fn check_flag(flag: &'static str, value: f64, domain: Domain, unit: Unit) -> Res
         Err(CliError::Flag {
             flag,
             value,
-            allowed: domain.describe(unit),
+            allowed: domain.refusal(value, unit),
         })
     }
 }
@@ -629,7 +631,7 @@ fn run_cycle(
     points: u64,
     format: CycleFormat,
 ) -> Result<(), CliError> {
-    let amplitude = check_flag("--amplitude", amplitude, Domain::NonNegative, Unit::Newton)?;
+    let amplitude = check_flag("--amplitude", amplitude, Domain::FORCE, Unit::Newton)?;
     let amplitude = TipForce::new(amplitude)?;
     let points_error = |error| CliError::Range {
         error,
@@ -662,12 +664,12 @@ fn run_kt(
     let (name, model) = load_any(inputs, ModelKind::Beam)?;
     let data = model.interface();
     let element = match element {
-        Some(e) => check_flag("--element-size", e, Domain::Positive, Unit::Millimetre)?,
+        Some(e) => check_flag("--element-size", e, Domain::ELEMENT_SIZE, Unit::Millimetre)?,
         None => data.length / 100.0,
     };
     let normal = match kn {
         Some(kn) => {
-            let kn = check_flag("--kn", kn, Domain::Positive, Unit::MegapascalPerMillimetre)?;
+            let kn = check_flag("--kn", kn, Domain::STIFFNESS, Unit::MegapascalPerMillimetre)?;
             let nu = nu.or(data.poisson).unwrap_or(0.3);
             let nu = check_flag("--nu", nu, Domain::PoissonRatio, Unit::Dimensionless)?;
             Some((kn, nu))
