@@ -423,7 +423,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             format,
         })) => {
             let (beams, forces) = beams_over_forces(inputs, *from, *to, *points)?;
-            let rows = curves::beam_force_sweep(beams, forces);
+            let rows = curves::beam_force_sweep(beams, forces).map_err(force_range_error)?;
             write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
         }
         Some(Command::Sweep(SweepCommand::Plate {
@@ -439,16 +439,15 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             } else {
                 Spacing::Logarithmic
             };
-            let samples =
-                curves::stiffness_samples(*kt_from, *kt_to, *points, spacing).map_err(|error| {
-                    CliError::Range {
-                        error,
-                        flags: ["--kt-from", "--kt-to", "--points"],
-                    }
-                })?;
+            let range_error = |error| CliError::Range {
+                error,
+                flags: ["--kt-from", "--kt-to", "--points"],
+            };
+            let samples = curves::stiffness_samples(*kt_from, *kt_to, *points, spacing)
+                .map_err(range_error)?;
             let (_, model) = load(inputs, ModelKind::Plate)?;
             if let Model::Plate(plate) = model {
-                let rows = curves::plate_kt_sweep(plate, samples);
+                let rows = curves::plate_kt_sweep(plate, samples).map_err(range_error)?;
                 write_table(out, *format, rows.map(|r| PlateRow::from(&r)))?;
             }
         }
@@ -479,7 +478,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             format,
         })) => {
             let (beams, amplitudes) = beams_over_forces(inputs, *from, *to, *points)?;
-            let rows = curves::cycle_sweep(beams, amplitudes);
+            let rows = curves::cycle_sweep(beams, amplitudes).map_err(force_range_error)?;
             write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
         }
         Some(Command::Presets) => {
@@ -508,14 +507,19 @@ fn beams_over_forces(
     to: f64,
     points: u64,
 ) -> Result<(TwinBeams, Samples), CliError> {
-    let forces = curves::force_samples(from, to, points).map_err(|error| CliError::Range {
-        error,
-        flags: ["--from", "--to", "--points"],
-    })?;
+    let forces = curves::force_samples(from, to, points).map_err(force_range_error)?;
     match load(inputs, ModelKind::Beam)? {
         (_, Model::Beam { beams, .. }) => Ok((beams, forces)),
         // `load` refuses a preset of the other model with `WrongModel`.
         (_, Model::Plate(_)) => unreachable!("load(.., Beam) returned a plate"),
+    }
+}
+
+/// A force range error, named by the flags `--from`, `--to`, `--points`.
+fn force_range_error(error: RangeError) -> CliError {
+    CliError::Range {
+        error,
+        flags: ["--from", "--to", "--points"],
     }
 }
 
