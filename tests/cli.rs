@@ -515,3 +515,25 @@ fn cycle_reports_and_sweeps() {
     assert_eq!(json["coulomb"]["onset_N"], 80.0);
     assert!(failure(&["cycle", "--amplitude", "-5"], 2).contains("invalid --amplitude = -5"));
 }
+
+#[test]
+fn kt_candidates_outside_the_domain_show_their_value_and_why() {
+    // K_N = 1e-6 MPa/mm gives K_T of 5e-7 to 7e-7 from the measured ratios and eq. 4, below the
+    // accepted 1e-6: shown, marked, not evaluated.
+    let text = stdout_of(&["kt", "--kn", "1e-6"]);
+    let low = text.lines().find(|l| l.starts_with("K_N x 0.5")).unwrap();
+    assert!(
+        low.contains("5e-7") && low.contains("K_T out of range"),
+        "{low}"
+    );
+    assert!(
+        text.contains("K_T out of range: not evaluated, K_T must be in [1e-6, 1e12] MPa/mm."),
+        "{text}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_of(&["kt", "--kn", "1e-6", "--format", "json"])).unwrap();
+    assert_eq!(
+        json["candidates"][1]["not_evaluated"],
+        "invalid KT = 5e-7: must be in [1e-6, 1e12] MPa/mm"
+    );
+}

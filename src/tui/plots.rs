@@ -207,6 +207,16 @@ const LOOP_POINTS: u64 = SAMPLES / 2 + 1;
 /// `microslip kt --element-size` sets any other).
 const TABLE_ELEMENTS_PER_LENGTH: f64 = 100.0;
 
+/// A table cell of at most `width` characters: 3 significant digits, fewer for the long exponent
+/// forms of extreme values (`6.67e-17` becomes `6.7e-17`).
+fn cell(value: f64, width: usize) -> String {
+    (1..=3)
+        .rev()
+        .map(|digits| number_with(value, digits))
+        .find(|text| text.len() <= width)
+        .unwrap_or_else(|| number_with(value, 1))
+}
+
 /// The K_T comparison as a narrow table (fits the 44-column chart pane of an 80x24 screen).
 fn stiffness_table(model: &Model) -> Plot {
     use crate::model::code_defaults::{CODE_DEFAULTS, Confirmation, DefaultRule};
@@ -238,10 +248,10 @@ fn stiffness_table(model: &Model) -> Plot {
                 }),
             ) => format!(
                 "{:>7} {:>7} {:>7} {:>8}",
-                tick(k),
-                tick(first_macroslip_force),
-                tick(micro_end),
-                tick(tip_deflection)
+                cell(k, 7),
+                cell(first_macroslip_force, 7),
+                cell(micro_end, 7),
+                cell(tip_deflection, 8)
             ),
             (
                 Some(k),
@@ -252,10 +262,11 @@ fn stiffness_table(model: &Model) -> Plot {
                 }),
             ) => format!(
                 "{:>7} {:>9} {:>8}",
-                tick(k),
-                tick(end_displacement),
-                tick(micro_end)
+                cell(k, 7),
+                cell(end_displacement, 9),
+                cell(micro_end, 8)
             ),
+            (Some(k), None) => format!("{:>7} out of range", cell(k, 7)),
             _ => format!("{:>7}", "none"),
         };
         lines.push(format!("{:<10} {cells}", short(&row.candidate.source)));
@@ -706,7 +717,14 @@ mod tests {
 
     /// Axes finite and strictly increasing, every point finite and on the chart.
     fn check_plot(plot: &Plot, what: &str) {
-        if plot.table.is_some() {
+        if let Some(table) = &plot.table {
+            for line in table {
+                assert!(line.len() <= 43, "{what}: {line}");
+                assert!(
+                    !line.contains("n/a") && !line.contains("NaN") && !line.contains("inf"),
+                    "{what}: {line}"
+                );
+            }
             return;
         }
         for axis in [&plot.x, &plot.y] {
