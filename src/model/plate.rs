@@ -69,7 +69,8 @@ pub struct SqueezedPlate {
 }
 
 impl SqueezedPlate {
-    /// Validates every input: lengths, E, P, mu, K_T finite and > 0; 0 <= nu < 0.5.
+    /// Validates every input against its domain ([`PlateParam::spec`]): lengths, E, P, mu, K_T
+    /// positive and bounded; 0 <= nu < 0.5.
     ///
     /// # Errors
     /// The first input out of its domain (see [`PlateParam::spec`]), in display order.
@@ -129,7 +130,7 @@ impl SqueezedPlate {
     /// The same plate with another K_T (MPa/mm); validated like [`SqueezedPlate::new`].
     ///
     /// # Errors
-    /// [`ParamError`] when `kt` is not finite and > 0.
+    /// [`ParamError`] when `kt` is outside the K_T domain.
     pub fn with_tangential_stiffness(&self, kt: f64) -> Result<Self, ParamError> {
         SqueezedPlate::new(PlateParams {
             tangential_stiffness: kt,

@@ -22,7 +22,7 @@ pub fn tangential_to_normal_ratio(nu: f64) -> Result<f64, ParamError> {
 /// K_T (MPa/mm) from a normal contact stiffness K_N (MPa/mm), paper eq. 4.
 ///
 /// # Errors
-/// [`ParamError`] when K_N is not finite and > 0, or nu is outside [0, 0.5).
+/// [`ParamError`] when K_N is outside the stiffness domain, or nu is outside [0, 0.5).
 pub fn tangential_from_normal(kn: f64, nu: f64) -> Result<f64, ParamError> {
     let kn = Domain::STIFFNESS.check("KN", kn, Unit::MegapascalPerMillimetre)?;
     Ok(tangential_to_normal_ratio(nu)? * kn)
@@ -31,7 +31,7 @@ pub fn tangential_from_normal(kn: f64, nu: f64) -> Result<f64, ParamError> {
 /// Saturation slip mu P / K_T (mm): the elastic slip at which the regularized law reaches mu P.
 ///
 /// # Errors
-/// [`ParamError`] naming the first of mu, P, K_T that is not finite and > 0.
+/// [`ParamError`] naming the first of mu, P, K_T outside its domain.
 pub fn saturation_slip(mu: f64, pressure: f64, kt: f64) -> Result<f64, ParamError> {
     let mu = PlateParam::Friction.check(mu)?;
     let p = PlateParam::Pressure.check(pressure)?;

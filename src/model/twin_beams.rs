@@ -77,10 +77,10 @@ pub struct TwinBeams {
 pub struct TipForce(f64);
 
 impl TipForce {
-    /// Accepts finite F >= 0 (N).
+    /// Accepts F in the force domain, 0 to 1e12 N.
     ///
     /// # Errors
-    /// [`ParamError`] for a negative, NaN or infinite force.
+    /// [`ParamError`] for a negative, NaN, infinite or too large force.
     pub fn new(newtons: f64) -> Result<Self, ParamError> {
         BeamParam::Force.check(newtons).map(TipForce)
     }
@@ -98,7 +98,7 @@ impl TipForce {
 }
 
 impl TwinBeams {
-    /// Validates every input: all must be finite and strictly positive.
+    /// Validates every input against its domain ([`BeamParam::spec`]): finite, positive, bounded.
     ///
     /// # Errors
     /// The first input out of its domain (see [`BeamParam::spec`]), in display order.
@@ -137,7 +137,7 @@ impl TwinBeams {
     /// The same system with another K_T (MPa/mm); validated like [`TwinBeams::new`].
     ///
     /// # Errors
-    /// [`ParamError`] when `kt` is not finite and > 0.
+    /// [`ParamError`] when `kt` is outside the K_T domain.
     pub fn with_tangential_stiffness(&self, kt: f64) -> Result<Self, ParamError> {
         TwinBeams::new(TwinBeamsParams {
             tangential_stiffness: kt,
