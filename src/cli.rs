@@ -16,7 +16,9 @@ use thiserror::Error;
 use crate::curves::{self, RangeError, Samples, Spacing};
 use crate::fit::{self, FitError};
 use crate::model::inputs::{Inputs, Model};
-use crate::model::params::{BeamParam, Domain, ModelKind, ParamError, Unit, parse_number};
+use crate::model::params::{
+    BeamParam, Domain, ModelKind, ParamError, Unit, compact_number, parse_number,
+};
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
@@ -280,7 +282,7 @@ pub enum CliError {
         flags: [&'static str; 3],
     },
     /// A flag that is not a model parameter, out of its range.
-    #[error("invalid {flag} = {value}: {allowed}")]
+    #[error("invalid {flag} = {}: {allowed}", compact_number(*value))]
     Flag {
         /// The flag.
         flag: &'static str,
@@ -421,7 +423,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             format,
         })) => {
             let (beams, forces) = beams_over_forces(inputs, *from, *to, *points)?;
-            let rows = curves::beam_force_sweep(beams, forces);
+            let rows = curves::beam_force_sweep(beams, forces).map_err(force_range_error)?;
             write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
         }
         Some(Command::Sweep(SweepCommand::Plate {
@@ -437,16 +439,15 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             } else {
                 Spacing::Logarithmic
             };
-            let samples =
-                curves::stiffness_samples(*kt_from, *kt_to, *points, spacing).map_err(|error| {
-                    CliError::Range {
-                        error,
-                        flags: ["--kt-from", "--kt-to", "--points"],
-                    }
-                })?;
+            let range_error = |error| CliError::Range {
+                error,
+                flags: ["--kt-from", "--kt-to", "--points"],
+            };
+            let samples = curves::stiffness_samples(*kt_from, *kt_to, *points, spacing)
+                .map_err(range_error)?;
             let (_, model) = load(inputs, ModelKind::Plate)?;
             if let Model::Plate(plate) = model {
-                let rows = curves::plate_kt_sweep(plate, samples);
+                let rows = curves::plate_kt_sweep(plate, samples).map_err(range_error)?;
                 write_table(out, *format, rows.map(|r| PlateRow::from(&r)))?;
             }
         }
@@ -477,7 +478,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             format,
         })) => {
             let (beams, amplitudes) = beams_over_forces(inputs, *from, *to, *points)?;
-            let rows = curves::cycle_sweep(beams, amplitudes);
+            let rows = curves::cycle_sweep(beams, amplitudes).map_err(force_range_error)?;
             write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
         }
         Some(Command::Presets) => {
@@ -506,14 +507,19 @@ fn beams_over_forces(
     to: f64,
     points: u64,
 ) -> Result<(TwinBeams, Samples), CliError> {
-    let forces = curves::force_samples(from, to, points).map_err(|error| CliError::Range {
-        error,
-        flags: ["--from", "--to", "--points"],
-    })?;
+    let forces = curves::force_samples(from, to, points).map_err(force_range_error)?;
     match load(inputs, ModelKind::Beam)? {
         (_, Model::Beam { beams, .. }) => Ok((beams, forces)),
         // `load` refuses a preset of the other model with `WrongModel`.
         (_, Model::Plate(_)) => unreachable!("load(.., Beam) returned a plate"),
+    }
+}
+
+/// A force range error, named by the flags `--from`, `--to`, `--points`.
+fn force_range_error(error: RangeError) -> CliError {
+    CliError::Range {
+        error,
+        flags: ["--from", "--to", "--points"],
     }
 }
 
@@ -617,7 +623,7 @@ fn check_flag(flag: &'static str, value: f64, domain: Domain, unit: Unit) -> Res
         Err(CliError::Flag {
             flag,
             value,
-            allowed: domain.describe(unit),
+            allowed: domain.refusal(value, unit),
         })
     }
 }
@@ -629,7 +635,7 @@ fn run_cycle(
     points: u64,
     format: CycleFormat,
 ) -> Result<(), CliError> {
-    let amplitude = check_flag("--amplitude", amplitude, Domain::NonNegative, Unit::Newton)?;
+    let amplitude = check_flag("--amplitude", amplitude, Domain::FORCE, Unit::Newton)?;
     let amplitude = TipForce::new(amplitude)?;
     let points_error = |error| CliError::Range {
         error,
@@ -662,12 +668,12 @@ fn run_kt(
     let (name, model) = load_any(inputs, ModelKind::Beam)?;
     let data = model.interface();
     let element = match element {
-        Some(e) => check_flag("--element-size", e, Domain::Positive, Unit::Millimetre)?,
+        Some(e) => check_flag("--element-size", e, Domain::ELEMENT_SIZE, Unit::Millimetre)?,
         None => data.length / 100.0,
     };
     let normal = match kn {
         Some(kn) => {
-            let kn = check_flag("--kn", kn, Domain::Positive, Unit::MegapascalPerMillimetre)?;
+            let kn = check_flag("--kn", kn, Domain::STIFFNESS, Unit::MegapascalPerMillimetre)?;
             let nu = nu.or(data.poisson).unwrap_or(0.3);
             let nu = check_flag("--nu", nu, Domain::PoissonRatio, Unit::Dimensionless)?;
             Some((kn, nu))

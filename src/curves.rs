@@ -9,7 +9,7 @@ use thiserror::Error;
 use crate::model::code_defaults::CodeDefault;
 use crate::model::cycle::{Cycle, Law};
 use crate::model::inputs::Model;
-use crate::model::params::{BeamParam, Param, PlateParam};
+use crate::model::params::{BeamParam, Param, PlateParam, compact_number};
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
 /// Largest number of points a sweep (or a branch of a cycle's loop) accepts: beyond it a request is
@@ -58,7 +58,9 @@ impl RangeError {
     pub fn message(&self, [start, end, points]: [&str; 3]) -> String {
         match self {
             RangeError::Reversed { from, to } => format!(
-                "invalid range: {start} = {from} is above {end} = {to}; the start must not exceed the end"
+                "invalid range: {start} = {} is above {end} = {}; the start must not exceed the end",
+                compact_number(*from),
+                compact_number(*to)
             ),
             RangeError::Points(n) => {
                 format!("invalid {points} = {n}: must be an integer in [2, {MAX_POINTS}]")
@@ -72,7 +74,7 @@ impl RangeError {
                     RangeEnd::Start => start,
                     RangeEnd::End => end,
                 };
-                format!("invalid {name} = {value}: {allowed}")
+                format!("invalid {name} = {}: {allowed}", compact_number(*value))
             }
         }
     }
@@ -107,7 +109,7 @@ pub enum Spacing {
 /// use microslip::{Regime, TwinBeams, TwinBeamsParams};
 /// let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
 /// let forces = force_samples(0.0, 300.0, 4)?; // 0, 100, 200, 300 N
-/// let rows: Vec<_> = beam_force_sweep(beams, forces).collect();
+/// let rows: Vec<_> = beam_force_sweep(beams, forces)?.collect();
 /// assert_eq!(rows[1].force, 100.0);
 /// assert_eq!(rows[1].regime_regularized, Regime::MicroslipMacroslip);
 /// assert!(force_samples(0.0, -1.0, 4).is_err()); // -1 N is not a tip force
@@ -171,11 +173,31 @@ impl Samples {
                 return Err(RangeError::Bound {
                     end,
                     value,
-                    allowed: spec.domain.describe(spec.unit),
+                    allowed: spec.domain.refusal(value, spec.unit),
                 });
             }
         }
         Samples::new(from, to, points, spacing)
+    }
+
+    /// Checks that every sample is an accepted value of `param`: both ends are (the samples lie
+    /// between them and a domain is an interval). What every sweep checks before its first row, so
+    /// that no row is ever dropped or computed at another value than the one asked for.
+    ///
+    /// # Errors
+    /// [`RangeError::Bound`] for the first end outside the domain.
+    pub fn check_within(&self, param: Param) -> Result<(), RangeError> {
+        let spec = param.spec();
+        for (end, value) in [(RangeEnd::Start, self.from), (RangeEnd::End, self.to)] {
+            if !spec.domain.contains(value) {
+                return Err(RangeError::Bound {
+                    end,
+                    value,
+                    allowed: spec.domain.refusal(value, spec.unit),
+                });
+            }
+        }
+        Ok(())
     }
 
     /// Number of samples.
@@ -188,16 +210,23 @@ impl Samples {
         false
     }
 
-    /// The i-th sample value (0-based); the last one is exactly `to`.
+    /// The i-th sample value (0-based); the first one is exactly `from`, the last one exactly `to`,
+    /// and none is outside [from, to] (round-off of the spacing is clamped away).
     pub fn value(&self, i: u64) -> f64 {
         if i + 1 >= self.points {
             return self.to;
         }
         let t = i as f64 / (self.points - 1) as f64;
-        match self.spacing {
-            Spacing::Linear => self.from + t * (self.to - self.from),
+        let value = match self.spacing {
+            // Monotonic in t; to - from overflows only for ends of opposite signs near f64::MAX,
+            // where the weighted form takes over.
+            Spacing::Linear if (self.to - self.from).is_finite() => {
+                self.from + t * (self.to - self.from)
+            }
+            Spacing::Linear => (1.0 - t) * self.from + t * self.to,
             Spacing::Logarithmic => self.from * (self.to / self.from).powf(t),
-        }
+        };
+        value.clamp(self.from, self.to)
     }
 
     /// The sample values in order.
@@ -239,16 +268,24 @@ pub fn beam_point(beams: &TwinBeams, force: TipForce) -> BeamPoint {
     }
 }
 
-/// The twin beams over a range of forces. Forces come from a [`Samples`] whose bounds the caller
-/// checked to be >= 0 (see [`force_samples`]); a sample that still fails [`TipForce::new`] is skipped.
-pub fn beam_force_sweep(beams: TwinBeams, forces: Samples) -> impl Iterator<Item = BeamPoint> {
-    forces
+/// The twin beams over a range of forces: one row per sample, every one computed at the force
+/// asked for.
+///
+/// # Errors
+/// [`RangeError::Bound`] when an end of `forces` is not an accepted tip force (see
+/// [`force_samples`], which checks this when the range is made).
+pub fn beam_force_sweep(
+    beams: TwinBeams,
+    forces: Samples,
+) -> Result<impl Iterator<Item = BeamPoint>, RangeError> {
+    forces.check_within(Param::Beam(BeamParam::Force))?;
+    // Every sample lies in the force domain, so clamping changes nothing.
+    Ok(forces
         .values()
-        .filter_map(move |f| TipForce::new(f).ok())
-        .map(move |f| beam_point(&beams, f))
+        .map(move |f| beam_point(&beams, TipForce::clamped(f))))
 }
 
-/// A force sampling for [`beam_force_sweep`]: both bounds must be valid tip forces (>= 0, finite).
+/// A force sampling for [`beam_force_sweep`]: both bounds must be accepted tip forces.
 ///
 /// # Errors
 /// See [`Samples::of_param`].
@@ -295,7 +332,7 @@ pub fn plate_point(plate: &SqueezedPlate) -> PlatePoint {
     }
 }
 
-/// A K_T sampling for [`plate_kt_sweep`]: both bounds must be valid stiffnesses (> 0, finite).
+/// A K_T sampling for [`plate_kt_sweep`]: both bounds must be accepted stiffnesses.
 ///
 /// # Errors
 /// See [`Samples::of_param`].
@@ -314,33 +351,48 @@ pub fn stiffness_samples(
     )
 }
 
-/// The plate over a range of K_T (other parameters fixed). Values between two valid stiffnesses are
-/// valid, so no sample is lost in practice; one that failed validation would be skipped.
+/// The plate over a range of K_T (other parameters fixed): one row per sample.
+///
+/// # Errors
+/// [`RangeError::Bound`] when an end of `stiffnesses` is not an accepted K_T (see
+/// [`stiffness_samples`]).
 pub fn plate_kt_sweep(
     plate: SqueezedPlate,
     stiffnesses: Samples,
-) -> impl Iterator<Item = PlatePoint> {
-    stiffnesses
+) -> Result<impl Iterator<Item = PlatePoint>, RangeError> {
+    stiffnesses.check_within(Param::Plate(PlateParam::Stiffness))?;
+    Ok(stiffnesses
         .values()
-        .filter_map(move |kt| plate.with_tangential_stiffness(kt).ok())
-        .map(|p| plate_point(&p))
+        .map(move |kt| plate_point(&plate.with_clamped(PlateParam::Stiffness, kt))))
 }
 
 /// A sampled curve: (x, y) points in order of x.
 pub type Series = Vec<(f64, f64)>;
 
 /// Tip deflection w(L) (mm) against F (N): (Coulomb, regularized).
-pub fn beam_deflection_vs_force(beams: &TwinBeams, forces: Samples) -> (Series, Series) {
-    beam_force_sweep(*beams, forces)
+///
+/// # Errors
+/// As [`beam_force_sweep`].
+pub fn beam_deflection_vs_force(
+    beams: &TwinBeams,
+    forces: Samples,
+) -> Result<(Series, Series), RangeError> {
+    Ok(beam_force_sweep(*beams, forces)?
         .map(|p| ((p.force, p.w_coulomb), (p.force, p.w_regularized)))
-        .unzip()
+        .unzip())
 }
 
 /// End of the microslip zone X (mm) against F (N), regularized law (X = L below F_1).
-pub fn beam_slip_boundary_vs_force(beams: &TwinBeams, forces: Samples) -> Series {
-    beam_force_sweep(*beams, forces)
+///
+/// # Errors
+/// As [`beam_force_sweep`].
+pub fn beam_slip_boundary_vs_force(
+    beams: &TwinBeams,
+    forces: Samples,
+) -> Result<Series, RangeError> {
+    Ok(beam_force_sweep(*beams, forces)?
         .map(|p| (p.force, p.micro_end))
-        .collect()
+        .collect())
 }
 
 /// Interface shear tau (MPa) along the beams at one force: (Coulomb, regularized).
@@ -362,28 +414,32 @@ pub fn beam_shear_along(
 }
 
 /// End displacement u(L) (mm) against K_T (MPa/mm): (Coulomb, regularized).
+///
+/// # Errors
+/// As [`plate_kt_sweep`].
 pub fn plate_end_displacement_vs_stiffness(
     plate: &SqueezedPlate,
     stiffnesses: Samples,
-) -> (Series, Series) {
-    plate_kt_sweep(*plate, stiffnesses)
+) -> Result<(Series, Series), RangeError> {
+    Ok(plate_kt_sweep(*plate, stiffnesses)?
         .map(|p| ((p.kt, p.u_coulomb), (p.kt, p.u_regularized)))
-        .unzip()
+        .unzip())
 }
 
-/// End of the microslip zone X_r (mm) against mu, at the plate's K_T.
-pub fn plate_slip_boundary_vs_friction(plate: &SqueezedPlate, frictions: Samples) -> Series {
-    frictions
+/// End of the microslip zone X_r (mm) against mu, at the plate's K_T: one point per sample.
+///
+/// # Errors
+/// [`RangeError::Bound`] when an end of `frictions` is not an accepted friction coefficient.
+pub fn plate_slip_boundary_vs_friction(
+    plate: &SqueezedPlate,
+    frictions: Samples,
+) -> Result<Series, RangeError> {
+    frictions.check_within(Param::Plate(PlateParam::Friction))?;
+    Ok(frictions
         .values()
-        .filter_map(|mu| {
-            SqueezedPlate::new(crate::PlateParams {
-                friction: mu,
-                ..plate.params()
-            })
-            .ok()
-        })
+        .map(|mu| plate.with_clamped(PlateParam::Friction, mu))
         .map(|p| (p.params().friction, p.regularized().micro_zone_end()))
-        .collect()
+        .collect())
 }
 
 /// Contact pressure ratio P_r / P along the half-plate.
@@ -586,12 +642,18 @@ pub fn cycle_point(beams: &TwinBeams, amplitude: TipForce) -> CyclePoint {
     }
 }
 
-/// The twin beams cycled over a range of amplitudes (validated like tip forces).
-pub fn cycle_sweep(beams: TwinBeams, amplitudes: Samples) -> impl Iterator<Item = CyclePoint> {
-    amplitudes
+/// The twin beams cycled over a range of amplitudes (accepted tip forces): one row per sample.
+///
+/// # Errors
+/// [`RangeError::Bound`] when an end of `amplitudes` is not an accepted tip force.
+pub fn cycle_sweep(
+    beams: TwinBeams,
+    amplitudes: Samples,
+) -> Result<impl Iterator<Item = CyclePoint>, RangeError> {
+    amplitudes.check_within(Param::Beam(BeamParam::Force))?;
+    Ok(amplitudes
         .values()
-        .filter_map(move |f| TipForce::new(f).ok())
-        .map(move |f| cycle_point(&beams, f))
+        .map(move |f| cycle_point(&beams, TipForce::clamped(f))))
 }
 
 /// A branch of the hysteresis loop.
@@ -669,10 +731,16 @@ pub fn cycle_loop(
 }
 
 /// Dissipation per cycle D (N mm) against F_a (N): (Coulomb, regularized).
-pub fn dissipation_vs_amplitude(beams: &TwinBeams, amplitudes: Samples) -> (Series, Series) {
-    cycle_sweep(*beams, amplitudes)
+///
+/// # Errors
+/// As [`cycle_sweep`].
+pub fn dissipation_vs_amplitude(
+    beams: &TwinBeams,
+    amplitudes: Samples,
+) -> Result<(Series, Series), RangeError> {
+    Ok(cycle_sweep(*beams, amplitudes)?
         .map(|p| ((p.amplitude, p.d_coulomb), (p.amplitude, p.d_regularized)))
-        .unzip()
+        .unzip())
 }
 
 #[cfg(test)]
@@ -728,6 +796,77 @@ mod tests {
     }
 
     #[test]
+    fn samples_never_leave_their_range() {
+        // Logarithmic spacing over 18 decades and linear spacing over a range far narrower than its
+        // ends: round-off of the spacing must not step outside [from, to].
+        for (from, to, spacing) in [
+            (1e-6, 1e12, Spacing::Logarithmic),
+            (0.3, 0.3 * (1.0 + 4.0 * f64::EPSILON), Spacing::Logarithmic),
+            (1e12 - 1e-3, 1e12, Spacing::Linear),
+            (-f64::MAX, f64::MAX, Spacing::Linear),
+        ] {
+            let samples = Samples::new(from, to, 1001, spacing).unwrap();
+            assert!(
+                samples
+                    .values()
+                    .all(|v| v.is_finite() && (from..=to).contains(&v)),
+                "{from} {to}"
+            );
+        }
+    }
+
+    #[test]
+    fn sweeps_refuse_a_range_outside_the_domain_before_the_first_row() {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        let wide = Samples::new(-1.0, 1e13, 3, Spacing::Linear).unwrap();
+        assert!(matches!(
+            beam_force_sweep(beams, wide),
+            Err(RangeError::Bound {
+                end: RangeEnd::Start,
+                ..
+            })
+        ));
+        assert!(cycle_sweep(beams, wide).is_err());
+        let high = Samples::new(1.0, 1e13, 3, Spacing::Linear).unwrap();
+        assert_eq!(
+            cycle_sweep(beams, high).err().unwrap().to_string(),
+            "invalid end = 1e13: must be in [0, 1e12] N"
+        );
+        let soft = Samples::new(1e-7, 1.0, 3, Spacing::Logarithmic).unwrap();
+        assert!(plate_kt_sweep(plate, soft).is_err());
+        assert!(plate_slip_boundary_vs_friction(&plate, high).is_err());
+    }
+
+    #[test]
+    fn sweeps_over_the_whole_domain_give_every_row_finite() {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let rows: Vec<BeamPoint> = beam_force_sweep(beams, force_samples(0.0, 1e12, 101).unwrap())
+            .unwrap()
+            .collect();
+        assert_eq!(rows.len(), 101);
+        assert!(rows.iter().all(|r| {
+            [r.w_coulomb, r.w_regularized, r.micro_end]
+                .iter()
+                .all(|v| v.is_finite())
+        }));
+        let cycles: Vec<CyclePoint> = cycle_sweep(beams, force_samples(0.0, 1e12, 11).unwrap())
+            .unwrap()
+            .collect();
+        assert_eq!(cycles.len(), 11);
+        let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        let all = stiffness_samples(1e-6, 1e12, 181, Spacing::Logarithmic).unwrap();
+        let rows: Vec<PlatePoint> = plate_kt_sweep(plate, all).unwrap().collect();
+        assert_eq!(rows.len(), 181);
+        assert_eq!((rows[0].kt, rows[180].kt), (1e-6, 1e12));
+        assert!(rows.iter().all(|r| {
+            [r.u_coulomb, r.u_regularized, r.micro_end]
+                .iter()
+                .all(|v| v.is_finite())
+        }));
+    }
+
+    #[test]
     fn the_loop_closes_and_its_branches_meet_at_the_turning_points() {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
         let amplitude = TipForce::new(150.0).unwrap();
@@ -768,14 +907,15 @@ mod tests {
     #[test]
     fn sweeps_yield_one_row_per_sample() {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
-        let rows: Vec<BeamPoint> =
-            beam_force_sweep(beams, force_samples(0.0, 300.0, 31).unwrap()).collect();
+        let rows: Vec<BeamPoint> = beam_force_sweep(beams, force_samples(0.0, 300.0, 31).unwrap())
+            .unwrap()
+            .collect();
         assert_eq!(rows.len(), 31);
         assert!((rows[10].force - 100.0).abs() < 1e-12);
         assert_eq!(rows[10].regime_regularized, Regime::MicroslipMacroslip);
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
         let samples = stiffness_samples(1.0, 1e7, 8, Spacing::Logarithmic).unwrap();
-        let rows: Vec<PlatePoint> = plate_kt_sweep(plate, samples).collect();
+        let rows: Vec<PlatePoint> = plate_kt_sweep(plate, samples).unwrap().collect();
         assert_eq!(rows.len(), 8);
         assert_eq!(rows[7].kt, 1e7);
     }

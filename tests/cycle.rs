@@ -186,3 +186,77 @@ fn coulomb_cycle_sticks_below_threshold_and_slides_linearly_above() {
     // Linear in F_a - F_thre: D(120) / D(100) = 40 / 20.
     assert!((d2 / d1 - 2.0).abs() < 1e-12);
 }
+
+/// (C4) written out: D = 4 mu P L^3 (F_a - F_thre) / (E h^2), F_thre = 4 mu b h P / 3.
+fn coulomb_dissipation(p: &TwinBeamsParams, amplitude: f64) -> f64 {
+    let threshold = 4.0 * p.friction * p.width * p.half_height * p.pressure / 3.0;
+    4.0 * p.friction * p.pressure * p.length.powi(3) * (amplitude - threshold)
+        / (p.youngs_modulus * p.half_height * p.half_height)
+}
+
+/// 1 - D_reg / D_Coulomb predicted for an X small against L: D_reg / D_C = ((L - X) / L)^3
+/// ((C3)-(C4)) and X ~ q / (k^2 L), q = F_thre / (F_a - F_thre), k = 2 sqrt(K_T / (E h)) (the
+/// small-z asymptote of (B8)), so 1 - D_reg / D_C ~ 3 q / (k L)^2.
+fn predicted_shortfall(p: &TwinBeamsParams, amplitude: f64) -> f64 {
+    let threshold = 4.0 * p.friction * p.width * p.half_height * p.pressure / 3.0;
+    let q = threshold / (amplitude - threshold);
+    let kl = 2.0 * (p.tangential_stiffness / (p.youngs_modulus * p.half_height)).sqrt() * p.length;
+    3.0 * q / (kl * kl)
+}
+
+#[test]
+fn dissipation_keeps_its_precision_up_to_the_largest_amplitude() {
+    // The paper's beams up to F_a = 1e12 N (1.25e10 F_thre), and a beam of the smallest accepted
+    // cross-section where F_a / F_thre reaches 1e35. Coulomb against (C4) to 1e-13; the regularized
+    // law against the Coulomb law through the predicted shortfall, to 1e-3 of it (its rounding,
+    // ~4e-16, allowed for). The earlier loop-area form lost 3e-6 at 1e12 N and gave a regularized
+    // D of 0.4 times the Coulomb one at 1e17 N.
+    let tiny = TwinBeamsParams {
+        width: 1e-6,
+        half_height: 1e-6,
+        pressure: 1e-6,
+        friction: 1e-6,
+        ..TwinBeamsParams::PAPER
+    };
+    for params in [TwinBeamsParams::PAPER, tiny] {
+        let b = TwinBeams::new(params).unwrap();
+        for amplitude in [1e4, 1e8, 1e11, 1e12] {
+            let force = TipForce::new(amplitude).unwrap();
+            let (c, r) = (
+                Cycle::new(&b, Law::Coulomb, force).dissipation(),
+                Cycle::new(&b, Law::Regularized, force).dissipation(),
+            );
+            let exact = coulomb_dissipation(&params, amplitude);
+            assert!(
+                (c / exact - 1.0).abs() < 1e-13,
+                "{params:?} F_a={amplitude}: {c} vs {exact}"
+            );
+            let (shortfall, predicted) = (1.0 - r / c, predicted_shortfall(&params, amplitude));
+            assert!(
+                (shortfall - predicted).abs() <= 1e-3 * predicted + 4.0 * f64::EPSILON,
+                "{params:?} F_a={amplitude}: 1 - D_reg/D_C = {shortfall}, predicted {predicted}"
+            );
+        }
+    }
+}
+
+#[test]
+fn regularized_dissipation_tends_to_coulomb_as_the_interface_stiffens() {
+    // K_T -> infinity at a fixed amplitude: the same shortfall 3 q / (k L)^2 -> 0, checked to 1e-3
+    // of itself from K_T = 1e6 to the largest accepted 1e12 MPa/mm, against (C4) written out.
+    for amplitude in [100.0, 800.0] {
+        for kt in [1e6, 1e8, 1e10, 1e12] {
+            let params = TwinBeamsParams {
+                tangential_stiffness: kt,
+                ..TwinBeamsParams::PAPER
+            };
+            let d = cycle(kt, Law::Regularized, amplitude).dissipation();
+            let shortfall = 1.0 - d / coulomb_dissipation(&params, amplitude);
+            let predicted = predicted_shortfall(&params, amplitude);
+            assert!(
+                (shortfall - predicted).abs() <= 1e-3 * predicted + 4.0 * f64::EPSILON,
+                "K_T={kt} F_a={amplitude}: {shortfall} vs {predicted}"
+            );
+        }
+    }
+}

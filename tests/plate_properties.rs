@@ -296,3 +296,115 @@ fn contact_pressure_solves_the_flat_timoshenko_plate_equation() {
         );
     }
 }
+
+#[test]
+fn short_thick_plates_solve_the_plate_equation_too() {
+    // Plates shorter than the edge layers ((r_p - r_m) L <= 1) take the power series of (P8); the
+    // same residual check as above, with steps scaled to L, and the mean deviation by quadrature.
+    use common::integrate;
+    for (l, t, nu, mu) in [
+        (0.05, 1.0, 0.3, 0.3),
+        (1e-3, 0.5, 0.3, 10.0),
+        (1e-5, 100.0, 0.0, 1.0),
+        (2.0, 1e3, 0.49, 0.05),
+    ] {
+        let plate = SqueezedPlate::new(PlateParams {
+            half_length: l,
+            thickness: t,
+            poisson: nu,
+            friction: mu,
+            ..PlateParams::PAPER
+        })
+        .unwrap();
+        let cp = plate.contact_pressure();
+        let (beta2, mu_h) = (5.0 * (1.0 - nu) / (t * t), mu * t / 2.0);
+        let excess = |x: f64| cp.ratio(x) - 1.0;
+        let step = 1e-3 * l;
+        for i in 1..20 {
+            let x = l * f64::from(i) / 20.0;
+            let q = integrate(excess, 0.0, x, 400);
+            let residual =
+                derivative(excess, x, step) - beta2 * mu_h * excess(x) - beta2 * q - beta2 * mu_h;
+            assert!(
+                residual.abs() < 1e-6 * beta2 * mu_h,
+                "L={l} t={t} x={x}: residual {residual}"
+            );
+        }
+        // Q(L) = 0: the pressure still balances the load.
+        let balance = integrate(excess, 0.0, l, 400);
+        assert!(
+            balance.abs() < 1e-9 * beta2 * mu_h * l * l,
+            "L={l} t={t}: {balance}"
+        );
+        let mean = integrate(|x| excess(x).abs(), 0.0, l, 20_000) / l;
+        assert!(
+            relative_error(cp.mean_deviation(), mean) < 1e-6,
+            "L={l} t={t}: {} vs {mean}",
+            cp.mean_deviation()
+        );
+    }
+}
+
+#[test]
+fn contact_pressure_is_continuous_where_its_evaluation_switches() {
+    // The series serves (r_p - r_m) L <= 1, the exponentials beyond; r_p - r_m = 2 a_2 with
+    // a_1 = beta^2 mu h / 2, a_2 = sqrt(a_1^2 + beta^2) (P8).
+    let (t, nu, mu) = (0.2, 0.3, 0.3);
+    let beta2: f64 = 5.0 * (1.0 - nu) / (t * t);
+    let a1 = 0.5 * beta2 * mu * t / 2.0;
+    let switch = 1.0 / (2.0 * (a1 * a1 + beta2).sqrt());
+    let at = |l: f64| {
+        SqueezedPlate::new(PlateParams {
+            half_length: l,
+            thickness: t,
+            poisson: nu,
+            friction: mu,
+            ..PlateParams::PAPER
+        })
+        .unwrap()
+        .contact_pressure()
+    };
+    let (below, above) = (at(switch * (1.0 - 1e-9)), at(switch * (1.0 + 1e-9)));
+    for (a, b) in [
+        (below.ratio(0.0), above.ratio(0.0)),
+        (below.mean_deviation(), above.mean_deviation()),
+    ] {
+        assert!(relative_error(a, b) < 1e-7, "{a} vs {b}");
+    }
+    // ratio(L) - 1 and ratio(0) - 1 as well (they are small here: compare the deviations).
+    let (db, da) = (below.ratio(switch) - 1.0, above.ratio(switch) - 1.0);
+    assert!(relative_error(db, da) < 1e-7, "{db} vs {da}");
+}
+
+#[test]
+fn the_coulomb_end_displacement_does_not_depend_on_the_length() {
+    // Once the slide zone l = nu t_p / (mu (1 - nu)) fits in the half-plate, u(L) = kappa l^2 / 2
+    // (P3) whatever L, up to the largest accepted L: no L - X_s that rounds to 0.
+    let expected = 1.3 * 0.09 * 0.2 * 10.0 / (2.0 * 0.7 * 0.3 * 70_000.0);
+    for l in [1.0, 10.0, 1e3, 123_456.7, 1e6] {
+        let plate = SqueezedPlate::new(PlateParams {
+            half_length: l,
+            ..PlateParams::PAPER
+        })
+        .unwrap();
+        let c = plate.coulomb();
+        assert_eq!(c.regime(), Regime::StickMacroslip, "L = {l}");
+        assert!(
+            relative_error(c.end_displacement(), expected) < 1e-12,
+            "L = {l}"
+        );
+        assert!(relative_error(c.slide_zone(), 0.2 / 0.7) < 1e-15, "L = {l}");
+        // The regularized plate at K_T = 1e8: u(L) = u_Coulomb + mu P / (2 K_T) once
+        // tanh(alpha X_r) = 1 (see stiff_interface_recovers_coulomb), whatever L.
+        let r = plate.with_tangential_stiffness(1e8).unwrap().regularized();
+        let gap = r.end_displacement() - expected;
+        assert!(relative_error(gap, 3.0 / 2e8) < 1e-6, "L = {l}: {gap}");
+        // X_r ~ L + 1/alpha - l (P6) with the macroslip length solved for directly.
+        let alpha = (0.91_f64 * 1e8 / (70_000.0 * 0.2)).sqrt();
+        assert!(
+            relative_error(r.macroslip_length(), 0.2 / 0.7 - 1.0 / alpha) < 1e-9,
+            "L = {l}: {}",
+            r.macroslip_length()
+        );
+    }
+}

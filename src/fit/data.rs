@@ -7,6 +7,8 @@
 
 use thiserror::Error;
 
+use crate::model::params::{BeamParam, Unit, compact_number};
+
 /// One measurement: tip force (N) and tip deflection (mm).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Measurement {
@@ -73,8 +75,9 @@ fn start_line(bytes: &[u8], offset: usize) -> usize {
 /// # Errors
 ///
 /// A [`DataError`] with the 1-based line of the file when the text has no header, the header lacks
-/// `F_N` or `w_mm`, a value is missing or not a finite number, a force is negative or not above the
-/// previous one, or there are fewer than [`MIN_ROWS`] measurements.
+/// `F_N` or `w_mm`, a value is missing or not a finite number, a force is negative, beyond the
+/// accepted tip forces or not above the previous one, or there are fewer than [`MIN_ROWS`]
+/// measurements.
 pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
     // The reader would skip the mark as well; removing it here keeps byte offsets and lines aligned.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
@@ -151,6 +154,17 @@ pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
             return Err(error(
                 line,
                 format!("F_N = {force} is negative; forces must be >= 0 N"),
+            ));
+        }
+        let forces = BeamParam::Force.spec().domain;
+        if !forces.contains(force) {
+            return Err(error(
+                line,
+                format!(
+                    "F_N = {} is too large; forces {}",
+                    compact_number(force),
+                    forces.describe(Unit::Newton)
+                ),
             ));
         }
         if let Some(previous) = data.last()
@@ -327,6 +341,10 @@ mod tests {
                 "line 3: only 2 data rows; at least 3 are needed",
             ),
             ("F_N,w_mm\n-1,0.1\n", "line 2: F_N = -1 is negative"),
+            (
+                "F_N,w_mm\n10,0.1\n2e12,0.2\n",
+                "line 3: F_N = 2e12 is too large; forces must be in [0, 1e12] N",
+            ),
             (
                 "F_N,w_mm\n10,NaN\n",
                 "line 2: 'NaN' in column w_mm is not a finite number",

@@ -23,21 +23,6 @@ pub enum Law {
     Regularized,
 }
 
-/// Gauss-Legendre nodes and weights on [-1, 1], 16 points.
-const GAUSS16: [(f64, f64); 8] = [
-    (0.095_012_509_837_637_44, 0.189_450_610_455_068_5),
-    (0.281_603_550_779_258_9, 0.182_603_415_044_923_6),
-    (0.458_016_777_657_227_4, 0.169_156_519_395_002_5),
-    (0.617_876_244_402_643_8, 0.149_595_988_816_576_7),
-    (0.755_404_408_355_003, 0.124_628_971_255_533_9),
-    (0.865_631_202_387_831_8, 0.095_158_511_682_492_8),
-    (0.944_575_023_073_232_6, 0.062_253_523_938_647_9),
-    (0.989_400_934_991_649_9, 0.027_152_459_411_754_1),
-];
-
-/// Panels of the quadrature of the excess deflection over [F_onset, F_a].
-const PANELS: usize = 8;
-
 /// One cycle of amplitude F_a for one law.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Cycle {
@@ -50,6 +35,9 @@ pub struct Cycle {
     initial_compliance: f64,
     /// F_thre (Coulomb) or F_1 (regularized) (N).
     onset: f64,
+    /// Length L - X of the macroslip zone at the turning point F_a (mm): L for Coulomb above
+    /// F_thre, 0 below the onset.
+    macroslip_length: f64,
 }
 
 impl Cycle {
@@ -59,6 +47,11 @@ impl Cycle {
             Law::Coulomb => beams.threshold_force(),
             Law::Regularized => beams.first_macroslip_force(),
         };
+        let macroslip_length = match law {
+            Law::Coulomb if amplitude.newtons() > onset => beams.params().length,
+            Law::Coulomb => 0.0,
+            Law::Regularized => beams.regularized(amplitude).macroslip_length(),
+        };
         let mut cycle = Cycle {
             beams: *beams,
             law,
@@ -66,10 +59,12 @@ impl Cycle {
             peak_deflection: 0.0,
             initial_compliance: 0.0,
             onset,
+            macroslip_length,
         };
         // Below the onset the virgin curve is a straight line through the origin: its slope at any
-        // load under the onset is the initial compliance.
-        let probe = 0.5 * onset;
+        // load under the onset is the initial compliance. The onset may lie beyond the largest
+        // accepted force (a soft interface): the probe stays below both.
+        let probe = 0.5 * TipForce::clamped(onset).newtons();
         cycle.initial_compliance = cycle.virgin(probe) / probe;
         cycle.peak_deflection = cycle.virgin(cycle.amplitude);
         cycle
@@ -85,11 +80,10 @@ impl Cycle {
         self.onset
     }
 
-    /// The virgin curve w_v(F) (mm), odd in F.
+    /// The virgin curve w_v(F) (mm), odd in F; |F| beyond the largest accepted force is taken at
+    /// that force (the branches never ask for more than F_a).
     pub fn virgin(&self, force: f64) -> f64 {
-        let Ok(f) = TipForce::new(force.abs()) else {
-            return 0.0;
-        };
+        let f = TipForce::clamped(force.abs());
         let w = match self.law {
             Law::Coulomb => self.beams.coulomb(f).tip_deflection(),
             Law::Regularized => self.beams.regularized(f).tip_deflection(),
@@ -112,53 +106,16 @@ impl Cycle {
         -self.peak_deflection + 2.0 * self.virgin(0.5 * (self.amplitude + force))
     }
 
-    /// Excess of the virgin curve over its initial straight line, w_v(F) - c F (mm), zero below the
-    /// onset of sliding.
-    fn excess(&self, force: f64) -> f64 {
-        if force <= self.onset {
-            0.0
-        } else {
-            self.virgin(force) - self.initial_compliance * force
-        }
-    }
-
-    /// Integral of the excess over [onset, F_a] (N mm). Closed form for Coulomb (the excess is
-    /// 3 c_s (F - F_thre)); for the regularized law Gauss-Legendre in u with F = F_1 + (F_a - F_1) u^2,
-    /// which absorbs the square-root onset of macroslip at F_1.
-    fn excess_integral(&self) -> f64 {
-        let span = self.amplitude - self.onset;
-        if span <= 0.0 {
-            return 0.0;
-        }
-        if self.law == Law::Coulomb {
-            return 1.5 * self.initial_compliance * span * span;
-        }
-        let mut sum = 0.0;
-        for panel in 0..PANELS {
-            let (a, b) = (
-                panel as f64 / PANELS as f64,
-                (panel + 1) as f64 / PANELS as f64,
-            );
-            let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
-            for &(node, weight) in &GAUSS16 {
-                for u in [mid - half * node, mid + half * node] {
-                    let force = self.onset + span * u * u;
-                    sum += weight * half * self.excess(force) * 2.0 * span * u;
-                }
-            }
-        }
-        sum
-    }
-
-    /// Energy dissipated per cycle by the whole system, both beams' tip forces (N mm):
-    /// D = 2 x loop area = 16 [delta_a F_a / 2 - int_onset^F_a delta dF], delta the excess deflection
-    /// (docs/theory.md, (C3)). Zero while the cycle never reaches the onset of sliding.
+    /// Energy dissipated per cycle by the whole system, both beams' tip forces (N mm), from the
+    /// friction work of the plastic slip (docs/theory.md, (C3)):
+    /// D = 4 mu P (F_a - F_thre) (L - X)^3 / (E h^2), with X the end of the microslip zone at F_a
+    /// (X = 0 for Coulomb, which gives (C4)); zero while the cycle never reaches the onset of sliding.
+    /// A product of positive factors: no cancellation at any amplitude.
     pub fn dissipation(&self) -> f64 {
         if self.amplitude <= self.onset {
             return 0.0;
         }
-        let peak_excess = self.excess(self.amplitude);
-        (16.0 * (0.5 * peak_excess * self.amplitude - self.excess_integral())).max(0.0)
+        dissipation_from_macroslip(&self.beams, self.amplitude, self.macroslip_length)
     }
 
     /// Peak elastic energy U = 1/2 (2 F_a) w_a of the two tip forces (N mm), the secant definition.
@@ -184,6 +141,18 @@ impl Cycle {
             1.0 / self.initial_compliance
         }
     }
+}
+
+/// D = 4 b mu P int_0^L s_p dx (N mm): every point slides back and forth by twice its plastic slip
+/// s_p at the turning point (Masing, (C1)), against mu P. In the macroslip zone, the last
+/// `macroslip_length` a = L - X mm, (B10) gives s_p = 2 (tau_b - mu P)(a^2 - (L - x)^2) / (E h),
+/// whose integral is (4/3)(tau_b - mu P) a^3 / (E h); with tau_b - mu P = 3 (F_a - F_thre) / (4 b h),
+/// D = 4 mu P (F_a - F_thre) a^3 / (E h^2).
+fn dissipation_from_macroslip(beams: &TwinBeams, amplitude: f64, macroslip_length: f64) -> f64 {
+    let p = beams.params();
+    let excess = amplitude - beams.threshold_force();
+    let ratio = macroslip_length / p.half_height;
+    4.0 * beams.coulomb_stress() * excess * ratio * ratio * macroslip_length / p.youngs_modulus
 }
 
 #[cfg(test)]

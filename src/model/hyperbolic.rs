@@ -1,8 +1,8 @@
 //! Overflow-free, cancellation-free hyperbolic building blocks.
 //!
 //! The closed forms of both models are made of `sinh`, `cosh` and their Taylor remainders evaluated at
-//! `k x`, where `k` ranges over many decades (K_T from 1e-3 to 1e9 MPa/mm gives `k L` from ~1e-3 to
-//! ~1e4). Evaluated naively, `cosh(k L)` overflows above 710 and `cosh(k x) - 1 - (k x)^2 / 2`
+//! `k x`, where `k` ranges over many decades (over the accepted domain `k L` runs from ~6e-16 to
+//! ~2e17, docs/theory.md). Evaluated naively, `cosh(k L)` overflows above 710 and `cosh(k x) - 1 - (k x)^2 / 2`
 //! loses every digit for small arguments. Every function here stays finite and accurate to a few ulps
 //! for all non-negative finite arguments, which is what lets the models promise "no NaN, no overflow".
 

@@ -140,46 +140,140 @@ impl fmt::Display for Unit {
     }
 }
 
-/// The values a parameter may take. Every domain excludes NaN and infinities.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// The values a parameter may take: a closed interval of finite numbers (half-open for the Poisson
+/// ratio). Every domain excludes NaN and infinities, and every one is bounded, so that every derived
+/// quantity of every accepted input is a finite f64: the bounds and the reasons for them are in
+/// docs/theory.md, "Accepted domain".
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Domain {
-    /// Finite and strictly above zero (lengths, moduli, pressures, friction, stiffness).
-    Positive,
-    /// Finite and at or above zero (loads).
-    NonNegative,
+    /// Strictly positive, from `min` to `max` inclusive, `0 < min < max` (lengths, moduli,
+    /// pressures, friction, stiffness).
+    Positive {
+        /// Smallest accepted value.
+        min: f64,
+        /// Largest accepted value.
+        max: f64,
+    },
+    /// From 0 to `max` inclusive (loads).
+    NonNegative {
+        /// Largest accepted value.
+        max: f64,
+    },
     /// 0 <= nu < 0.5: a stable isotropic solid that does not expand under compression (0.5 is
     /// incompressible and makes the plane-strain compliance singular).
     PoissonRatio,
 }
 
 impl Domain {
+    /// Lengths (mm): 1 nm to 1 km.
+    pub const LENGTH: Domain = Domain::Positive {
+        min: 1e-6,
+        max: 1e6,
+    };
+    /// Young's modulus (MPa): 100 Pa (soft gels) to 10 TPa (beyond diamond).
+    pub const MODULUS: Domain = Domain::Positive {
+        min: 1e-4,
+        max: 1e7,
+    };
+    /// Pressures (MPa): 1 Pa to 10 GPa.
+    pub const PRESSURE: Domain = Domain::Positive {
+        min: 1e-6,
+        max: 1e4,
+    };
+    /// Friction coefficient (-): 1e-6 (superlubricity and below) to 10 (adhesive contacts).
+    pub const FRICTION: Domain = Domain::Positive {
+        min: 1e-6,
+        max: 10.0,
+    };
+    /// Tangential and normal contact stiffness (MPa/mm): 1e-6 to 1e12 (1e9 MPa/um).
+    pub const STIFFNESS: Domain = Domain::Positive {
+        min: 1e-6,
+        max: 1e12,
+    };
+    /// Tip force or cycle amplitude (N): 0 to 1e12 N.
+    pub const FORCE: Domain = Domain::NonNegative { max: 1e12 };
+    /// FE contact element length (mm): down to a hundredth of the shortest accepted length, the
+    /// default L/100 of `microslip kt`.
+    pub const ELEMENT_SIZE: Domain = Domain::Positive {
+        min: 1e-8,
+        max: 1e6,
+    };
+
+    /// The smallest accepted value (0 for loads and the Poisson ratio).
+    pub fn min(self) -> f64 {
+        match self {
+            Domain::Positive { min, .. } => min,
+            Domain::NonNegative { .. } | Domain::PoissonRatio => 0.0,
+        }
+    }
+
+    /// The largest accepted value, or for the Poisson ratio the excluded upper end 0.5.
+    pub fn max(self) -> f64 {
+        match self {
+            Domain::Positive { max, .. } | Domain::NonNegative { max } => max,
+            Domain::PoissonRatio => 0.5,
+        }
+    }
+
     /// True when `value` is allowed.
     pub fn contains(self, value: f64) -> bool {
         value.is_finite()
             && match self {
-                Domain::Positive => value > 0.0,
-                Domain::NonNegative => value >= 0.0,
+                Domain::Positive { min, max } => (min..=max).contains(&value),
+                Domain::NonNegative { max } => (0.0..=max).contains(&value),
                 Domain::PoissonRatio => (0.0..0.5).contains(&value),
             }
     }
 
-    /// The allowed range in words, with the unit: `must be > 0 and finite (mm)`.
-    pub fn describe(self, unit: Unit) -> String {
-        let unit = unit.in_words();
+    /// `value` moved into the domain: the nearest accepted value (for the Poisson ratio, the
+    /// largest f64 below 0.5 at the top). NaN maps to the smallest accepted value.
+    pub fn clamp(self, value: f64) -> f64 {
+        if value.is_nan() {
+            return self.min();
+        }
         match self {
-            Domain::Positive => format!("must be > 0 and finite ({unit})"),
-            Domain::NonNegative => format!("must be >= 0 and finite ({unit})"),
-            Domain::PoissonRatio => format!("must be in [0, 0.5) ({unit})"),
+            Domain::PoissonRatio => value.clamp(0.0, 0.5_f64.next_down()),
+            other => value.clamp(other.min(), other.max()),
+        }
+    }
+
+    /// The allowed range in words, with the unit: `must be in [1e-6, 1e6] mm`.
+    pub fn describe(self, unit: Unit) -> String {
+        let range = match self {
+            Domain::PoissonRatio => "[0, 0.5)".to_string(),
+            other => format!(
+                "[{}, {}]",
+                compact_number(other.min()),
+                compact_number(other.max())
+            ),
+        };
+        match unit {
+            Unit::Dimensionless => format!("must be in {range} (dimensionless)"),
+            unit => format!("must be in {range} {unit}"),
+        }
+    }
+
+    /// Why `value` is refused, in words: the sign rule for NaN, infinities and values of the wrong
+    /// sign (`must be > 0 and finite (mm)`), the range otherwise ([`Domain::describe`]).
+    pub fn refusal(self, value: f64, unit: Unit) -> String {
+        let words = unit.in_words();
+        match self {
+            Domain::Positive { .. } if !(value.is_finite() && value > 0.0) => {
+                format!("must be > 0 and finite ({words})")
+            }
+            Domain::NonNegative { .. } if !(value.is_finite() && value >= 0.0) => {
+                format!("must be >= 0 and finite ({words})")
+            }
+            Domain::PoissonRatio => format!("must be in [0, 0.5) ({words})"),
+            _ => self.describe(unit),
         }
     }
 
     /// Passes `value` through when allowed, otherwise names `field`, the value and the range.
-    pub(crate) fn check(
-        self,
-        field: &'static str,
-        value: f64,
-        unit: Unit,
-    ) -> Result<f64, ParamError> {
+    ///
+    /// # Errors
+    /// [`ParamError`] when `value` is outside the domain.
+    pub fn check(self, field: &'static str, value: f64, unit: Unit) -> Result<f64, ParamError> {
         if self.contains(value) {
             Ok(value)
         } else {
@@ -193,9 +287,20 @@ impl Domain {
     }
 }
 
+/// A number as messages show it: plain between 1e-3 and 1e6 (`-3`, `0.7`, `200`), shortest
+/// exponent form outside (`1e-7`, `1e307`, `1.25e6`), so that no message prints 300 digits.
+pub fn compact_number(value: f64) -> String {
+    let magnitude = value.abs();
+    if value.is_finite() && value != 0.0 && !(1e-3..1e6).contains(&magnitude) {
+        format!("{value:e}")
+    } else {
+        format!("{value}")
+    }
+}
+
 /// A rejected input value: the field as users write it, the value and the allowed range.
 #[derive(Debug, Clone, PartialEq, Error)]
-#[error("invalid {field} = {value}: {}", domain.describe(*unit))]
+#[error("invalid {field} = {}: {}", compact_number(*value), domain.refusal(*value, *unit))]
 pub struct ParamError {
     /// Field name as the user writes it (preset key), e.g. `KT`.
     pub field: &'static str,
@@ -301,14 +406,14 @@ const MODULUS: ParamSpec = spec(
     "E",
     Unit::Megapascal,
     "Young's modulus",
-    Domain::Positive,
+    Domain::MODULUS,
     FACTOR,
 );
 const FRICTION: ParamSpec = spec(
     "mu",
     Unit::Dimensionless,
     "friction coefficient",
-    Domain::Positive,
+    Domain::FRICTION,
     FACTOR,
 );
 /// K_T spans decades: its coarse step is a quarter decade.
@@ -316,7 +421,7 @@ const STIFFNESS: ParamSpec = spec(
     "KT",
     Unit::MegapascalPerMillimetre,
     "tangential contact stiffness",
-    Domain::Positive,
+    Domain::STIFFNESS,
     Step::Factor {
         fine: 1.02,
         coarse: 1.778_279_410_038_922_8, // 10^0.25
@@ -359,7 +464,7 @@ impl BeamParam {
 
     /// Key, unit, meaning, domain and step.
     pub fn spec(self) -> ParamSpec {
-        const LENGTH: Domain = Domain::Positive;
+        const LENGTH: Domain = Domain::LENGTH;
         match self {
             BeamParam::Length => spec("L", Unit::Millimetre, "beam length", LENGTH, FACTOR),
             BeamParam::Width => spec("b", Unit::Millimetre, "beam width", LENGTH, FACTOR),
@@ -375,7 +480,7 @@ impl BeamParam {
                 "P",
                 Unit::Megapascal,
                 "interface pressure",
-                Domain::Positive,
+                Domain::PRESSURE,
                 FACTOR,
             ),
             BeamParam::Friction => FRICTION,
@@ -384,7 +489,7 @@ impl BeamParam {
                 "F",
                 Unit::Newton,
                 "tip force on each beam",
-                Domain::NonNegative,
+                Domain::FORCE,
                 Step::FractionOfScale {
                     fine: 0.01,
                     coarse: 0.1,
@@ -441,14 +546,14 @@ impl PlateParam {
                 "L",
                 Unit::Millimetre,
                 "half-length of the plate",
-                Domain::Positive,
+                Domain::LENGTH,
                 FACTOR,
             ),
             PlateParam::Thickness => spec(
                 "tp",
                 Unit::Millimetre,
                 "plate thickness",
-                Domain::Positive,
+                Domain::LENGTH,
                 FACTOR,
             ),
             PlateParam::Modulus => MODULUS,
@@ -470,7 +575,7 @@ impl PlateParam {
                 "P",
                 Unit::Megapascal,
                 "applied pressure",
-                Domain::Positive,
+                Domain::PRESSURE,
                 FACTOR,
             ),
             PlateParam::Stiffness => STIFFNESS,
@@ -630,6 +735,80 @@ mod tests {
             BeamParam::Friction.check(-1.0).unwrap_err().to_string(),
             "invalid mu = -1: must be > 0 and finite (dimensionless)"
         );
+    }
+
+    #[test]
+    fn every_domain_is_bounded_and_says_its_range_with_the_unit() {
+        // Above the range, or positive below it: the range with the unit.
+        assert_eq!(
+            BeamParam::Force.check(1e307).unwrap_err().to_string(),
+            "invalid F = 1e307: must be in [0, 1e12] N"
+        );
+        assert_eq!(
+            PlateParam::HalfLength.check(1e-7).unwrap_err().to_string(),
+            "invalid L = 1e-7: must be in [1e-6, 1e6] mm"
+        );
+        assert_eq!(
+            BeamParam::Friction.check(11.0).unwrap_err().to_string(),
+            "invalid mu = 11: must be in [1e-6, 10] (dimensionless)"
+        );
+        assert_eq!(
+            BeamParam::Stiffness.check(2e12).unwrap_err().to_string(),
+            "invalid KT = 2e12: must be in [1e-6, 1e12] MPa/mm"
+        );
+        // Zero, negative, NaN and infinities keep the sign rule.
+        assert_eq!(
+            BeamParam::Modulus.check(0.0).unwrap_err().to_string(),
+            "invalid E = 0: must be > 0 and finite (MPa)"
+        );
+        assert_eq!(
+            BeamParam::Pressure
+                .check(f64::INFINITY)
+                .unwrap_err()
+                .to_string(),
+            "invalid P = inf: must be > 0 and finite (MPa)"
+        );
+        assert_eq!(
+            BeamParam::Force.check(f64::NAN).unwrap_err().to_string(),
+            "invalid F = NaN: must be >= 0 and finite (N)"
+        );
+        // Both ends are accepted, the next f64 beyond them is not.
+        for kind in ModelKind::ALL {
+            for &param in kind.params() {
+                let domain = param.spec().domain;
+                let (min, max) = (domain.min(), domain.max());
+                assert!(min.is_finite() && max.is_finite() && min < max, "{param}");
+                assert!(domain.contains(min), "{param}");
+                assert!(!domain.contains(min.next_down()), "{param}");
+                assert_eq!(
+                    domain.contains(max),
+                    domain != Domain::PoissonRatio,
+                    "{param}"
+                );
+                assert!(!domain.contains(max.next_up()), "{param}");
+                for v in [f64::NAN, -1.0, 0.5 * min, 2.0 * max, 1e300] {
+                    assert!(domain.contains(domain.clamp(v)), "{param} {v}");
+                }
+                assert_eq!(domain.clamp(min), min);
+            }
+        }
+        assert_eq!(Domain::FORCE.clamp(2e12), 1e12);
+        assert_eq!(
+            Domain::LENGTH.describe(Unit::Millimetre),
+            "must be in [1e-6, 1e6] mm"
+        );
+    }
+
+    #[test]
+    fn messages_print_huge_and_tiny_numbers_in_exponent_form() {
+        assert_eq!(compact_number(-3.0), "-3");
+        assert_eq!(compact_number(0.7), "0.7");
+        assert_eq!(compact_number(123_456.5), "123456.5");
+        assert_eq!(compact_number(1e6), "1e6");
+        assert_eq!(compact_number(1.25e-7), "1.25e-7");
+        assert_eq!(compact_number(1e308), "1e308");
+        assert_eq!(compact_number(0.0), "0");
+        assert_eq!(compact_number(f64::NEG_INFINITY), "-inf");
     }
 
     #[test]

@@ -69,7 +69,8 @@ pub struct SqueezedPlate {
 }
 
 impl SqueezedPlate {
-    /// Validates every input: lengths, E, P, mu, K_T finite and > 0; 0 <= nu < 0.5.
+    /// Validates every input against its domain ([`PlateParam::spec`]): lengths, E, P, mu, K_T
+    /// positive and bounded; 0 <= nu < 0.5.
     ///
     /// # Errors
     /// The first input out of its domain (see [`PlateParam::spec`]), in display order.
@@ -92,6 +93,19 @@ impl SqueezedPlate {
         for param in PlateParam::ALL {
             param.check(*fields.value_mut(param))?;
         }
+        Ok(Self::derive(params))
+    }
+
+    /// The same plate with `param` set to the accepted value nearest to `value` (see
+    /// [`crate::model::params::Domain::clamp`]): infallible, for sweeps whose range was checked.
+    pub fn with_clamped(&self, param: PlateParam, value: f64) -> SqueezedPlate {
+        let mut params = self.params;
+        *params.value_mut(param) = param.spec().domain.clamp(value);
+        Self::derive(params)
+    }
+
+    /// The derived constants of validated inputs.
+    fn derive(params: PlateParams) -> SqueezedPlate {
         let PlateParams {
             thickness: t,
             youngs_modulus: e,
@@ -100,12 +114,12 @@ impl SqueezedPlate {
             ..
         } = params;
         let compliance = 1.0 - nu * nu;
-        Ok(SqueezedPlate {
+        SqueezedPlate {
             params,
             alpha: (compliance * params.tangential_stiffness / (e * t)).sqrt(),
             slide_length: nu * t / (mu * (1.0 - nu)),
             strain_gradient: compliance * mu * params.pressure / (e * t),
-        })
+        }
     }
 
     /// The inputs this plate was built from.
@@ -116,7 +130,7 @@ impl SqueezedPlate {
     /// The same plate with another K_T (MPa/mm); validated like [`SqueezedPlate::new`].
     ///
     /// # Errors
-    /// [`ParamError`] when `kt` is not finite and > 0.
+    /// [`ParamError`] when `kt` is outside the K_T domain.
     pub fn with_tangential_stiffness(&self, kt: f64) -> Result<Self, ParamError> {
         SqueezedPlate::new(PlateParams {
             tangential_stiffness: kt,
@@ -134,19 +148,28 @@ impl SqueezedPlate {
         self.params.friction * self.params.pressure / self.params.tangential_stiffness
     }
 
-    /// Displacement of a zone sliding at mu P from `start` (where it equals `start_u`) to x, (P2).
-    fn sliding_displacement(&self, start: f64, start_u: f64, x: f64) -> f64 {
-        let l = self.params.half_length;
-        start_u
-            + self.strain_gradient
-                * (self.slide_length * (x - start) - 0.5 * ((l - start).powi(2) - (l - x).powi(2)))
+    /// Displacement in a zone sliding at mu P, (P2), written with distances from the free end so
+    /// that nothing is a difference of lengths near L: the zone is the last `zone` mm of the
+    /// half-plate, u = `start_u` where it starts, and the point is `from_end` = L - x from the end
+    /// (0 <= from_end <= zone). With a = zone, b = from_end, (P2) becomes
+    /// u = u_0 + kappa (a - b) (l - (a + b) / 2); a <= l in both laws, so every factor is >= 0.
+    fn sliding_displacement(&self, zone: f64, start_u: f64, from_end: f64) -> f64 {
+        let b = from_end.clamp(0.0, zone);
+        start_u + self.strain_gradient * (zone - b) * (self.slide_length - 0.5 * (zone + b))
+    }
+
+    /// nu (1 + nu) P / E = kappa l (-): the free plane-strain expansion strain, computed directly
+    /// rather than as the product of kappa and l (one huge, the other tiny near nu = 0.5).
+    fn free_strain(&self) -> f64 {
+        let p = &self.params;
+        p.poisson * (1.0 + p.poisson) * p.pressure / p.youngs_modulus
     }
 
     /// Solution under the plain Coulomb law.
     pub fn coulomb(&self) -> CoulombPlate {
         CoulombPlate {
             plate: *self,
-            stick_end: (self.params.half_length - self.slide_length).max(0.0),
+            slide_zone: self.slide_length.min(self.params.half_length),
         }
     }
 
@@ -157,18 +180,40 @@ impl SqueezedPlate {
         let m = self.alpha * self.slide_length;
         // No macroslip iff the all-microslip end shear K_T u(L) stays <= mu P, i.e. m tanh(alpha L) <= 1.
         let has_macroslip = m * big_lambda.tanh() > 1.0;
-        let micro_end = if has_macroslip {
-            // (P6): h(z) = Lambda - z + coth z - m, strictly decreasing; h(1/m) >= 0 since coth z > 1/z,
-            // and h(Lambda) = coth Lambda - m < 0.
-            let h = |z: f64| big_lambda - z + 1.0 / z.tanh() - m;
-            find_root_in_bracket(h, 1.0 / m, big_lambda) / self.alpha
+        let (micro_end, macro_length) = if has_macroslip {
+            self.microslip_boundary(big_lambda, m)
         } else {
-            l
+            (l, 0.0)
         };
         RegularizedPlate {
             plate: *self,
             micro_end,
+            macro_length,
             has_macroslip,
+        }
+    }
+
+    /// Solves (P6) for X_r and the macroslip length L - X_r (mm), each computed without subtracting
+    /// lengths near L: h(z) = alpha (L - l) - z + coth z with z = alpha X_r is strictly decreasing,
+    /// h(1/m) >= 0 since coth z > 1/z, and h(Lambda) = coth Lambda - m < 0 (m = alpha l, Lambda =
+    /// alpha L). When the root lies in the lower half of the bracket (z <= Lambda / 2) it is found
+    /// as z; otherwise as d = Lambda - z, the root of H(d) = d + coth(Lambda - d) - m, in
+    /// [0, Lambda / 2]. Either way the smaller of X_r and L - X_r is the unknown, known to 1e-12
+    /// relative, and the other is a difference without cancellation.
+    fn microslip_boundary(&self, big_lambda: f64, m: f64) -> (f64, f64) {
+        let (alpha, l) = (self.alpha, self.params.half_length);
+        // alpha (L - l): one rounding, where alpha L - alpha l would lose the digits L and l share.
+        let offset = alpha * (l - self.slide_length);
+        let h = |z: f64| offset - z + 1.0 / z.tanh();
+        let lower = 1.0 / m;
+        let half = 0.5 * big_lambda;
+        if lower < half && alpha * (0.5 * l - self.slide_length) + 1.0 / half.tanh() < 0.0 {
+            let z = find_root_in_bracket(h, lower, half);
+            (z / alpha, l - z / alpha)
+        } else {
+            let big_h = |d: f64| d + 1.0 / (big_lambda - d).tanh() - m;
+            let d = find_root_in_bracket(big_h, 0.0, big_lambda - lower.max(half));
+            (l - d / alpha, d / alpha)
         }
     }
 
@@ -182,39 +227,51 @@ impl SqueezedPlate {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CoulombPlate {
     plate: SqueezedPlate,
-    stick_end: f64,
+    /// Length of the sliding zone at the free end, min(l, L) (mm): kept rather than X_s because
+    /// L - X_s loses every digit when l is far below L.
+    slide_zone: f64,
 }
 
 impl CoulombPlate {
     /// End X_s of the stick zone (mm), eq. (P3): L - nu t_p / (mu (1 - nu)), or 0 when all slides.
     pub fn stick_end(&self) -> f64 {
-        self.stick_end
+        self.plate.params.half_length - self.slide_zone
+    }
+
+    /// Length L - X_s of the sliding zone at the free end (mm): min(l, L).
+    pub fn slide_zone(&self) -> f64 {
+        self.slide_zone
     }
 
     /// Stick only when nu = 0 (nothing pushes the plate outward); macroslip alone when the slip length
-    /// exceeds L; stick then macroslip otherwise.
+    /// reaches L; stick then macroslip otherwise.
     pub fn regime(&self) -> Regime {
-        let l = self.plate.params.half_length;
-        if self.stick_end >= l {
+        if self.slide_zone <= 0.0 {
             Regime::Stick
-        } else if self.stick_end <= 0.0 {
+        } else if self.slide_zone >= self.plate.params.half_length {
             Regime::Macroslip
         } else {
             Regime::StickMacroslip
         }
     }
 
+    /// True when x lies in the sliding zone, decided by the distance from the free end.
+    fn slides_at(&self, x: f64) -> bool {
+        self.plate.params.half_length - x < self.slide_zone
+    }
+
     /// Displacement u(x) (mm), eq. (P2): zero in the stick zone.
     pub fn displacement(&self, x: f64) -> f64 {
-        if x <= self.stick_end {
-            0.0
+        if self.slides_at(x) {
+            self.plate
+                .sliding_displacement(self.slide_zone, 0.0, self.plate.params.half_length - x)
         } else {
-            self.plate.sliding_displacement(self.stick_end, 0.0, x)
+            0.0
         }
     }
 
     /// End displacement u(L) (mm), eq. (P3): kappa l^2 / 2 = (1 + nu) nu^2 t_p P / (2 (1 - nu) mu E)
-    /// when a stick zone exists.
+    /// when a stick zone exists, whatever L.
     pub fn end_displacement(&self) -> f64 {
         self.displacement(self.plate.params.half_length)
     }
@@ -222,10 +279,10 @@ impl CoulombPlate {
     /// Interface shear stress (MPa): 0 in the stick zone (the strain is zero, so is its gradient),
     /// mu P in the slip zone.
     pub fn shear_stress(&self, x: f64) -> f64 {
-        if x <= self.stick_end {
-            0.0
-        } else {
+        if self.slides_at(x) {
             self.plate.params.friction * self.plate.params.pressure
+        } else {
+            0.0
         }
     }
 }
@@ -235,6 +292,9 @@ impl CoulombPlate {
 pub struct RegularizedPlate {
     plate: SqueezedPlate,
     micro_end: f64,
+    /// L - X_r (mm), solved for directly when it is the smaller of the two (see
+    /// `SqueezedPlate::microslip_boundary`); 0 without macroslip.
+    macro_length: f64,
     has_macroslip: bool,
 }
 
@@ -242,6 +302,11 @@ impl RegularizedPlate {
     /// End X_r of the microslip zone (mm); L when nothing slides.
     pub fn micro_zone_end(&self) -> f64 {
         self.micro_end
+    }
+
+    /// Length L - X_r of the macroslip zone at the free end (mm); 0 without macroslip.
+    pub fn macroslip_length(&self) -> f64 {
+        self.macro_length
     }
 
     /// Microslip alone, or microslip near the centre then macroslip near the free end.
@@ -253,23 +318,25 @@ impl RegularizedPlate {
         }
     }
 
+    /// True when x lies in the macroslip zone, decided by the distance from the free end.
+    fn slides_at(&self, x: f64) -> bool {
+        self.has_macroslip && self.plate.params.half_length - x < self.macro_length
+    }
+
     /// Displacement u(x) (mm): (P5) in microslip, (P2) beyond X_r.
     pub fn displacement(&self, x: f64) -> f64 {
         let p = &self.plate;
-        let ax = p.alpha * x.max(0.0);
+        let l = p.params.half_length;
+        let ax = p.alpha * x.clamp(0.0, l);
         if !self.has_macroslip {
             // (P5) with sigma_x(L) = 0: u = (kappa l / alpha) sinh(alpha x) / cosh(alpha L).
-            let amplitude = p.strain_gradient * p.slide_length / p.alpha;
-            return amplitude
-                * sinh_cosh_ratio(
-                    ax.min(p.alpha * p.params.half_length),
-                    p.alpha * p.params.half_length,
-                );
+            return p.free_strain() / p.alpha * sinh_cosh_ratio(ax, p.alpha * l);
         }
-        if x <= self.micro_end {
-            p.saturation_slip() * sinh_ratio(ax, p.alpha * self.micro_end)
+        if self.slides_at(x) {
+            p.sliding_displacement(self.macro_length, p.saturation_slip(), l - x)
         } else {
-            p.sliding_displacement(self.micro_end, p.saturation_slip(), x)
+            p.saturation_slip()
+                * sinh_ratio(ax.min(p.alpha * self.micro_end), p.alpha * self.micro_end)
         }
     }
 
@@ -281,10 +348,10 @@ impl RegularizedPlate {
     /// Interface shear stress (MPa): K_T u in microslip, mu P in macroslip.
     pub fn shear_stress(&self, x: f64) -> f64 {
         let p = &self.plate.params;
-        if x > self.micro_end {
+        if self.slides_at(x) {
             p.friction * p.pressure
         } else {
-            p.tangential_stiffness * self.displacement(x)
+            (p.tangential_stiffness * self.displacement(x)).min(p.friction * p.pressure)
         }
     }
 }
@@ -297,18 +364,42 @@ pub const PRESSURE_DEVIATION_LIMIT: f64 = 0.03;
 
 /// Contact pressure P_r(x) under a plate kept flat on the plane with saturated friction (eq. (P8)).
 ///
-/// Q(x) = mu h P [-1 + ((1 - e_m) e^{r_p (x - L)} + (1 - e_p) e^{r_m x}) / (1 - e_p e_m)], with
-/// h = t_p / 2, r_p > 0 > r_m the roots of r^2 - beta^2 mu h r - beta^2 = 0, e_p = e^{-r_p L},
-/// e_m = e^{r_m L}: a form with only decaying exponentials, so no overflow for long plates.
+/// Q(x) = mu h P psi(x / L), h = t_p / 2, where psi solves psi'' - c L psi' - beta^2 L^2 psi =
+/// beta^2 L^2 on [0, 1] with psi(0) = psi(1) = 0 (c = beta^2 mu h). Two evaluations, each free of
+/// overflow and cancellation in its range (docs/theory.md, (P8)):
+/// - (r_p - r_m) L > 1: psi = -1 + ((1 - e_m) e^{r_p (x - L)} + (1 - e_p) e^{r_m x}) / (1 - e_p e_m),
+///   r_p > 0 > r_m the roots of r^2 - c r - beta^2 = 0, e_p = e^{-r_p L}, e_m = e^{r_m L}: only
+///   decaying exponentials, so no overflow for long plates.
+/// - shorter plates: the power series of psi in x / L, whose terms all have one sign, where the
+///   exponential form would subtract numbers that agree to all but (r_p - r_m) L of their size.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactPressure {
     half_length: f64,
     /// mu h (mm).
     lever: f64,
-    rate_edge: f64,
-    rate_centre: f64,
-    weight_edge: f64,
-    weight_centre: f64,
+    shape: PressureShape,
+}
+
+/// Terms of the power series of psi (short plates).
+const PRESSURE_SERIES_TERMS: usize = 24;
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum PressureShape {
+    Exponential {
+        rate_edge: f64,
+        rate_centre: f64,
+        weight_edge: f64,
+        weight_centre: f64,
+    },
+    /// psi = psi_p + a psi_h as power series in xi = x / L (see `ContactPressure::series`).
+    Series {
+        /// c L (-).
+        drift: f64,
+        /// beta^2 L^2 (-).
+        stiffness: f64,
+        /// a = -psi_p(1) / psi_h(1).
+        weight: f64,
+    },
 }
 
 impl ContactPressure {
@@ -320,48 +411,133 @@ impl ContactPressure {
         let lever = p.friction * half_thickness;
         let a1 = 0.5 * beta2 * lever;
         let a2 = (a1 * a1 + beta2).sqrt();
-        let (rate_edge, rate_centre) = (a1 + a2, a1 - a2);
-        let e_p = (-rate_edge * p.half_length).exp();
-        let e_m = (rate_centre * p.half_length).exp();
-        let det = 1.0 - e_p * e_m;
+        let l = p.half_length;
+        // r_m = a1 - a2 = -beta^2 / (a1 + a2): the product of the roots, without the cancellation of
+        // a1 - a2 when a1 >> beta.
+        let (rate_edge, rate_centre) = (a1 + a2, -beta2 / (a1 + a2));
+        let shape = if (rate_edge - rate_centre) * l > 1.0 {
+            // 1 - e_p e_m, 1 - e_m and 1 - e_p through expm1: exact when r L is small.
+            let det = -((rate_centre - rate_edge) * l).exp_m1();
+            PressureShape::Exponential {
+                rate_edge,
+                rate_centre,
+                weight_edge: -(rate_centre * l).exp_m1() / det,
+                weight_centre: -(-rate_edge * l).exp_m1() / det,
+            }
+        } else {
+            let (drift, stiffness) = (beta2 * lever * l, beta2 * l * l);
+            let particular = Self::series(drift, stiffness, 1.0, false)[0];
+            let homogeneous = Self::series(drift, stiffness, 1.0, true)[0];
+            PressureShape::Series {
+                drift,
+                stiffness,
+                weight: -particular / homogeneous,
+            }
+        };
         ContactPressure {
-            half_length: p.half_length,
+            half_length: l,
             lever,
-            rate_edge,
-            rate_centre,
-            weight_edge: (1.0 - e_m) / det,
-            weight_centre: (1.0 - e_p) / det,
+            shape,
         }
     }
 
-    fn edge_term(&self, x: f64) -> f64 {
-        self.weight_edge * (self.rate_edge * (x - self.half_length)).exp()
+    /// A solution of psi'' - c psi' - b psi = b (= 0 when `homogeneous`) with psi(0) = 0 and
+    /// psi'(0) = 0 (particular) or 1 (homogeneous), and its first two derivatives, at `xi` in
+    /// [0, 1], as power series (c = c L, b = beta^2 L^2 <= 1/4 here). The coefficients follow
+    /// (n + 2)(n + 1) b_{n+2} = c (n + 1) b_{n+1} + b b_n (+ b for n = 0 unless homogeneous): all
+    /// of one sign, so the sums are exact to rounding; they fall like 1/n!, so 24 terms exceed f64
+    /// precision. The full psi = psi_p + a psi_h with a = -psi_p(1) / psi_h(1).
+    fn series(c: f64, b: f64, xi: f64, homogeneous: bool) -> [f64; 3] {
+        // b_n, b_{n+1} and xi^n, walking n upwards.
+        let (mut current, mut next) = if homogeneous { (0.0, 1.0) } else { (0.0, 0.0) };
+        let mut power = 1.0;
+        let (mut value, mut slope, mut curvature) = (0.0, 0.0, 0.0);
+        let mut previous_power = 0.0; // xi^(n-1)
+        let mut before_previous = 0.0; // xi^(n-2)
+        for n in 0..PRESSURE_SERIES_TERMS {
+            let k = n as f64;
+            value += current * power;
+            slope += k * current * previous_power;
+            curvature += k * (k - 1.0) * current * before_previous;
+            let source = if n == 0 && !homogeneous { b } else { 0.0 };
+            let after = (c * (k + 1.0) * next + b * current + source) / ((k + 2.0) * (k + 1.0));
+            (current, next) = (next, after);
+            before_previous = previous_power;
+            previous_power = power;
+            power *= xi;
+        }
+        [value, slope, curvature]
     }
 
-    fn centre_term(&self, x: f64) -> f64 {
-        self.weight_centre * (self.rate_centre * x).exp()
+    /// psi (-) and its first two derivatives with respect to x (1/mm, 1/mm^2) at `x`.
+    fn psi(&self, x: f64) -> [f64; 3] {
+        let l = self.half_length;
+        match self.shape {
+            PressureShape::Exponential {
+                rate_edge,
+                rate_centre,
+                weight_edge,
+                weight_centre,
+            } => {
+                let edge = weight_edge * (rate_edge * (x - l)).exp();
+                let centre = weight_centre * (rate_centre * x).exp();
+                [
+                    edge + centre - 1.0,
+                    rate_edge * edge + rate_centre * centre,
+                    rate_edge * rate_edge * edge + rate_centre * rate_centre * centre,
+                ]
+            }
+            PressureShape::Series {
+                drift,
+                stiffness,
+                weight,
+            } => {
+                let xi = x / l;
+                let p = Self::series(drift, stiffness, xi, false);
+                let h = Self::series(drift, stiffness, xi, true);
+                [
+                    p[0] + weight * h[0],
+                    (p[1] + weight * h[1]) / l,
+                    (p[2] + weight * h[2]) / (l * l),
+                ]
+            }
+        }
     }
 
     /// P_r(x) / P (-), 0 <= x <= L: below 1 near the centre, above 1 near the free end.
     pub fn ratio(&self, x: f64) -> f64 {
         let x = x.clamp(0.0, self.half_length);
-        1.0 + self.lever
-            * (self.rate_edge * self.edge_term(x) + self.rate_centre * self.centre_term(x))
-    }
-
-    /// Shear force Q(x) / P (mm) in the paper's sign convention.
-    fn shear_over_pressure(&self, x: f64) -> f64 {
-        self.lever * (self.edge_term(x) + self.centre_term(x) - 1.0)
+        1.0 + self.lever * self.psi(x)[1]
     }
 
     /// Mean of |P_r / P - 1| over [0, L] (-). Q is convex with Q(0) = Q(L) = 0, so P_r - P = Q'
     /// changes sign once, at the minimum x0 of Q, and the mean is 2 |Q(x0)| / (P L).
     pub fn mean_deviation(&self) -> f64 {
-        let ratio = -self.rate_centre * self.weight_centre / (self.rate_edge * self.weight_edge);
-        let x0 = ((ratio.ln() + self.rate_edge * self.half_length)
-            / (self.rate_edge - self.rate_centre))
-            .clamp(0.0, self.half_length);
-        2.0 * self.shear_over_pressure(x0).abs() / self.half_length
+        let l = self.half_length;
+        let x0 = match self.shape {
+            PressureShape::Exponential {
+                rate_edge,
+                rate_centre,
+                weight_edge,
+                weight_centre,
+            } => {
+                let ratio = -rate_centre * weight_centre / (rate_edge * weight_edge);
+                (ratio.ln() + rate_edge * l) / (rate_edge - rate_centre)
+            }
+            PressureShape::Series { .. } => {
+                // psi is nearly the parabola -b x (L - x) / 2: Newton on psi' from the middle.
+                let mut x = 0.5 * l;
+                for _ in 0..8 {
+                    let [_, slope, curvature] = self.psi(x);
+                    if curvature.is_nan() || curvature <= 0.0 {
+                        break;
+                    }
+                    x = (x - slope / curvature).clamp(0.0, l);
+                }
+                x
+            }
+        };
+        2.0 * self.lever * self.psi(x0.clamp(0.0, l))[0].abs() / l
     }
 
     /// False when P_r departs from P by more than [`PRESSURE_DEVIATION_LIMIT`] on average, i.e. when

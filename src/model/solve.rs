@@ -34,10 +34,12 @@ impl Convergency<f64> for RelativeConvergence {
     }
 }
 
-/// Finds the root of `f` in `[lo, hi]` (with `0 < lo < hi`) to [`RELATIVE_TOLERANCE`].
+/// Finds the root of `f` in `[lo, hi]` (with `0 <= lo < hi`) to [`RELATIVE_TOLERANCE`].
 ///
 /// Precondition, guaranteed by each caller's analysis: `f(lo)` and `f(hi)` have opposite signs (or
-/// one is zero) and the root is unique in the bracket.
+/// one is zero) and the root is unique in the bracket. When round-off makes both ends show the same
+/// sign anyway (the root then lies within round-off of an end, e.g. an analytic lower bound that
+/// agrees with the root to all digits), the end where |f| is smaller is the answer.
 pub fn find_root_in_bracket(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
     let (f_lo, f_hi) = (f(lo), f(hi));
     if f_lo == 0.0 {
@@ -45,6 +47,9 @@ pub fn find_root_in_bracket(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
     }
     if f_hi == 0.0 {
         return hi;
+    }
+    if f_lo.signum() == f_hi.signum() {
+        return if f_lo.abs() <= f_hi.abs() { lo } else { hi };
     }
     let mut convergence = RelativeConvergence {
         tolerance: RELATIVE_TOLERANCE / 4.0,
@@ -183,6 +188,15 @@ mod tests {
         let f = |x: f64| x.powi(3) - 5.0;
         let x = bisect(&f, 0.1, 4.0, f(0.1));
         assert!(((x - 5f64.cbrt()) / 5f64.cbrt()).abs() < 1e-11);
+    }
+
+    #[test]
+    fn a_bracket_without_a_sign_change_returns_the_end_nearer_the_root() {
+        // A root a hair below the lower end, as round-off can make it: the lower end is returned,
+        // not the far end that bisection would drift to.
+        let f = |x: f64| 1e-3 - x;
+        assert_eq!(find_root_in_bracket(f, 2e-3, 1.0), 2e-3);
+        assert_eq!(find_root_in_bracket(|x| x - 2.0, 0.0, 1.0), 1.0);
     }
 
     #[test]

@@ -22,16 +22,16 @@ pub fn tangential_to_normal_ratio(nu: f64) -> Result<f64, ParamError> {
 /// K_T (MPa/mm) from a normal contact stiffness K_N (MPa/mm), paper eq. 4.
 ///
 /// # Errors
-/// [`ParamError`] when K_N is not finite and > 0, or nu is outside [0, 0.5).
+/// [`ParamError`] when K_N is outside the stiffness domain, or nu is outside [0, 0.5).
 pub fn tangential_from_normal(kn: f64, nu: f64) -> Result<f64, ParamError> {
-    let kn = Domain::Positive.check("KN", kn, Unit::MegapascalPerMillimetre)?;
+    let kn = Domain::STIFFNESS.check("KN", kn, Unit::MegapascalPerMillimetre)?;
     Ok(tangential_to_normal_ratio(nu)? * kn)
 }
 
 /// Saturation slip mu P / K_T (mm): the elastic slip at which the regularized law reaches mu P.
 ///
 /// # Errors
-/// [`ParamError`] naming the first of mu, P, K_T that is not finite and > 0.
+/// [`ParamError`] naming the first of mu, P, K_T outside its domain.
 pub fn saturation_slip(mu: f64, pressure: f64, kt: f64) -> Result<f64, ParamError> {
     let mu = PlateParam::Friction.check(mu)?;
     let p = PlateParam::Pressure.check(pressure)?;
@@ -43,10 +43,19 @@ pub fn saturation_slip(mu: f64, pressure: f64, kt: f64) -> Result<f64, ParamErro
 /// is built this way: 0.3 * 1 MPa / 5e-4 mm = 600 MPa/mm.
 ///
 /// # Errors
-/// [`ParamError`] naming the first of slip, mu, P that is not finite and > 0.
+/// [`ParamError`] naming the first of slip, mu, P outside its domain (the slip: > 0 and finite),
+/// or `KT` when the K_T it gives is outside the K_T domain.
 pub fn stiffness_for_saturation_slip(mu: f64, pressure: f64, slip: f64) -> Result<f64, ParamError> {
-    let slip = Domain::Positive.check("slip", slip, Unit::Millimetre)?;
-    saturation_slip(mu, pressure, slip)
+    if !(slip.is_finite() && slip > 0.0) {
+        let any_positive = Domain::Positive {
+            min: f64::MIN_POSITIVE,
+            max: f64::MAX,
+        };
+        return any_positive.check("slip", slip, Unit::Millimetre);
+    }
+    let mu = PlateParam::Friction.check(mu)?;
+    let p = PlateParam::Pressure.check(pressure)?;
+    PlateParam::Stiffness.check(mu * p / slip)
 }
 
 /// MPa/mm to MPa/um.

@@ -14,7 +14,7 @@ use super::hyperbolic::{
 };
 use super::params::{BeamParam, ParamError};
 use super::regime::Regime;
-use super::solve::find_root_newton;
+use super::solve::{find_root_in_bracket, find_root_newton};
 
 /// Raw inputs of the twin-beam problem (mm, MPa, MPa/mm); validated by [`TwinBeams::new`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -77,12 +77,18 @@ pub struct TwinBeams {
 pub struct TipForce(f64);
 
 impl TipForce {
-    /// Accepts finite F >= 0 (N).
+    /// Accepts F in the force domain, 0 to 1e12 N.
     ///
     /// # Errors
-    /// [`ParamError`] for a negative, NaN or infinite force.
+    /// [`ParamError`] for a negative, NaN, infinite or too large force.
     pub fn new(newtons: f64) -> Result<Self, ParamError> {
         BeamParam::Force.check(newtons).map(TipForce)
+    }
+
+    /// The accepted force nearest to `newtons` (N): itself when accepted, 0 for negative values and
+    /// NaN, the largest accepted force above it.
+    pub fn clamped(newtons: f64) -> Self {
+        TipForce(BeamParam::Force.spec().domain.clamp(newtons))
     }
 
     /// The force in N.
@@ -92,7 +98,7 @@ impl TipForce {
 }
 
 impl TwinBeams {
-    /// Validates every input: all must be finite and strictly positive.
+    /// Validates every input against its domain ([`BeamParam::spec`]): finite, positive, bounded.
     ///
     /// # Errors
     /// The first input out of its domain (see [`BeamParam::spec`]), in display order.
@@ -131,7 +137,7 @@ impl TwinBeams {
     /// The same system with another K_T (MPa/mm); validated like [`TwinBeams::new`].
     ///
     /// # Errors
-    /// [`ParamError`] when `kt` is not finite and > 0.
+    /// [`ParamError`] when `kt` is outside the K_T domain.
     pub fn with_tangential_stiffness(&self, kt: f64) -> Result<Self, ParamError> {
         TwinBeams::new(TwinBeamsParams {
             tangential_stiffness: kt,
@@ -158,6 +164,12 @@ impl TwinBeams {
     /// carries, uniform along x.
     fn bonded_shear(&self, force: f64) -> f64 {
         3.0 * force / (4.0 * self.params.width * self.params.half_height)
+    }
+
+    /// tau_b - mu P = 3 (F - F_thre) / (4 b h) (MPa): the shear the interface cannot carry, positive
+    /// exactly when F > F_thre.
+    fn excess_shear(&self, force: f64) -> f64 {
+        self.bonded_shear(force - self.threshold_force())
     }
 
     /// Coulomb threshold F_thre = 4 mu b h P / 3 (N), eq. (B3): below it the pair sticks.
@@ -194,11 +206,12 @@ impl TwinBeams {
         let bonded = self.bonded_shear(f);
         let lambda = self.k * p.length;
         let has_macroslip = f > self.first_macroslip_force();
-        let (micro_end, end_shear) = if has_macroslip {
-            (self.micro_zone_end(f), self.coulomb_stress())
+        let (micro_end, macro_length, end_shear) = if has_macroslip {
+            let (x, a) = self.microslip_boundary(f);
+            (x, a, self.coulomb_stress())
         } else {
             // (B6): tau(L) = tau_b (1 - sech kL), the shear at the free end with no macroslip.
-            (p.length, bonded * one_minus_sech(lambda))
+            (p.length, 0.0, bonded * one_minus_sech(lambda))
         };
         let kx = self.k * micro_end;
         // C k = tau'(0), the shear gradient at the clamp, (B9); stable for any kX > 0.
@@ -212,6 +225,7 @@ impl TwinBeams {
             force: f,
             has_macroslip,
             micro_end,
+            macro_length,
             end_shear,
             bonded_shear: bonded,
             slope_at_clamp,
@@ -219,25 +233,31 @@ impl TwinBeams {
             moments_at_end: [0.0; 3],
         };
         state.moments_at_end = state.micro_moments(micro_end);
-        state.total_shear =
-            state.moments_at_end[0] + self.coulomb_stress() * (p.length - micro_end);
+        state.total_shear = state.moments_at_end[0] + self.coulomb_stress() * macro_length;
         state
     }
 
-    /// Solves (B8) for the end X of the microslip zone when F > F_1 (mm).
+    /// Solves (B8) for the end X of the microslip zone when F > F_1, and the macroslip length L - X
+    /// (mm, mm).
     ///
     /// With z = kX, lambda = kL and q = F_thre / (F - F_thre), the condition that the slip gradient is
-    /// continuous at X reads g(z) = q / sinh z - tanh(z/2) - (lambda - z) = 0. g decreases from +inf at
-    /// z -> 0 and is negative at z = lambda when F > F_1, and its root is unique (docs/theory.md).
-    fn micro_zone_end(&self, force: f64) -> f64 {
-        let lambda = self.k * self.params.length;
+    /// continuous at X reads g(z) = q / sinh z - tanh(z/2) - (lambda - z) = 0. g is positive below its
+    /// unique root and negative above it up to z = lambda when F > F_1 (docs/theory.md). The smaller
+    /// of X and L - X is the unknown: z when the root lies in the lower half [.., lambda / 2], else
+    /// y = lambda - z in [0, lambda / 2]; so each is known to 1e-12 relative, and neither is a
+    /// difference of nearly equal lengths.
+    fn microslip_boundary(&self, force: f64) -> (f64, f64) {
+        let length = self.params.length;
+        let lambda = self.k * length;
         let q = self.threshold_force() / (force - self.threshold_force());
-        // With m = expm1(-z) (so e^-z = 1 + m): 1/sinh z = -2 (1 + m) / (m (2 + m)) and
-        // tanh(z/2) = -m / (2 + m). One expm1 per evaluation, exact for small and large z alike.
-        let g = |z: f64| {
+        // q / sinh z - tanh(z / 2), with m = expm1(-z) (so e^-z = 1 + m): 1/sinh z =
+        // -2 (1 + m) / (m (2 + m)) and tanh(z/2) = -m / (2 + m). One expm1 per evaluation, exact for
+        // small and large z alike.
+        let shear_terms = |z: f64| {
             let m = (-z).exp_m1();
-            (-2.0 * q * (1.0 + m) / m + m) / (2.0 + m) - (lambda - z)
+            (-2.0 * q * (1.0 + m) / m + m) / (2.0 + m)
         };
+        let g = |z: f64| shear_terms(z) - (lambda - z);
         // g'(z) = cosh z (cosh z - r) / sinh^2 z, r = 1 + q; with e = e^-z:
         // (1 + e^2)((1 - e)^2 - 2 q e) / (1 - e^2)^2.
         let dg = |z: f64| {
@@ -250,13 +270,22 @@ impl TwinBeams {
         let lower = 0.5 * 1f64.min(lambda).min(q / (1.1753 * (lambda + 0.5)));
         if lower <= f64::MIN_POSITIVE {
             // F is so far above F_thre that X underflows: the whole interface is in macroslip.
-            return 0.0;
+            return (0.0, length);
         }
-        // Start from the small-z approximation q/z + z/2 = lambda (exact as z -> 0), which is also
-        // close where it is not exact: Newton then needs a handful of steps.
-        let discriminant = (lambda * lambda - 2.0 * q).max(0.0);
-        let start = 2.0 * q / (lambda + discriminant.sqrt());
-        find_root_newton(g, dg, start, lower, lambda) / self.k
+        let half = 0.5 * lambda;
+        if lower < half && g(half) < 0.0 {
+            // Start from the small-z approximation q/z + z/2 = lambda (exact as z -> 0), which is
+            // also close where it is not exact: Newton then needs a handful of steps.
+            let discriminant = (lambda * lambda - 2.0 * q).max(0.0);
+            let start = 2.0 * q / (lambda + discriminant.sqrt());
+            let z = find_root_newton(g, dg, start, lower, half);
+            (z / self.k, length - z / self.k)
+        } else {
+            // g(lambda - y) with the last term written as y itself.
+            let from_tip = |y: f64| shear_terms(lambda - y) - y;
+            let y = find_root_in_bracket(from_tip, 0.0, lambda - lower.max(half));
+            (length - y / self.k, y / self.k)
+        }
     }
 }
 
@@ -304,9 +333,12 @@ impl CoulombBeams {
             return 0.0;
         }
         let p = &self.beams.params;
-        let excess = self.beams.bonded_shear(self.force) - self.beams.coulomb_stress();
-        2.0 * excess * (p.length * p.length - (p.length - x).powi(2))
-            / (p.youngs_modulus * p.half_height)
+        // tau_b - mu P = 3 (F - F_thre) / (4 b h): positive whenever F > F_thre, which the
+        // difference of the two rounded stresses need not be.
+        let excess = self.beams.excess_shear(self.force);
+        // L^2 - (L - x)^2 = x (2L - x): no difference of squares.
+        let x = x.clamp(0.0, p.length);
+        2.0 * excess * x * (2.0 * p.length - x) / (p.youngs_modulus * p.half_height)
     }
 
     /// Deflection w(x) (mm), eq. (B3)/(B4): the bonded 4h-high beam under 2F in stick; each 2h-high
@@ -340,6 +372,8 @@ pub struct RegularizedBeams {
     has_macroslip: bool,
     /// X (mm): end of the microslip zone; L when there is no macroslip.
     micro_end: f64,
+    /// L - X (mm), solved for directly when it is the smaller of the two; 0 without macroslip.
+    macro_length: f64,
     /// tau(X) (MPa): mu P with macroslip, tau_b (1 - sech kL) without.
     end_shear: f64,
     /// tau_b = 3F/(4bh) (MPa), the particular solution of (B5).
@@ -365,6 +399,12 @@ impl RegularizedBeams {
     /// End X of the microslip zone, measured from the clamp (mm); L when nothing slides.
     pub fn micro_zone_end(&self) -> f64 {
         self.micro_end
+    }
+
+    /// Length L - X of the macroslip zone at the free end (mm); 0 without macroslip. Solved for
+    /// directly, so it keeps its relative precision when X is within round-off of L.
+    pub fn macroslip_length(&self) -> f64 {
+        self.macro_length
     }
 
     /// The tip force this solution is for (N).
@@ -409,10 +449,14 @@ impl RegularizedBeams {
         if x <= self.micro_end {
             return self.shear_stress(x) / p.tangential_stiffness;
         }
-        let excess = self.bonded_shear - self.beams.coulomb_stress();
+        // (L - X)^2 - (L - x)^2 = (a - b)(a + b) with a = L - X, b = L - x.
+        let excess = self.beams.excess_shear(self.force);
+        let (a, b) = (
+            self.macro_length,
+            (p.length - x).clamp(0.0, self.macro_length),
+        );
         self.beams.saturation_slip()
-            + 2.0 * excess * ((p.length - self.micro_end).powi(2) - (p.length - x).powi(2))
-                / (p.youngs_modulus * p.half_height)
+            + 2.0 * excess * (a - b) * (a + b) / (p.youngs_modulus * p.half_height)
     }
 
     /// Moments m_n = integral over [0, y] of (y - xi)^n tau(xi) d xi, n = 0, 1, 2, for 0 <= y <= X
@@ -449,7 +493,12 @@ impl RegularizedBeams {
         let p = &self.beams.params;
         let x = x.clamp(0.0, p.length);
         let y = x.min(self.micro_end);
-        let a = x - y;
+        // The part of [0, x] in macroslip; at the tip, the macroslip length itself.
+        let a = if x >= p.length {
+            self.macro_length
+        } else {
+            x - y
+        };
         let [m0, m1, m2] = if y == self.micro_end {
             self.moments_at_end
         } else {
@@ -541,6 +590,51 @@ mod tests {
                 assert!((at_x - 0.3).abs() < 1e-9, "F={f}: tau(X-) = {at_x}");
             }
         }
+    }
+
+    #[test]
+    fn the_microslip_end_and_the_macroslip_length_add_up_to_l() {
+        let beams = paper();
+        let f_1 = beams.first_macroslip_force();
+        // Just above F_1 (X near L, found as L - X), then deep in macroslip (X small, found as X).
+        for f in [f_1 * (1.0 + 1e-9), 81.0, 100.0, 1e4, 1e9] {
+            let state = beams.regularized(force(f));
+            assert_eq!(state.regime(), Regime::MicroslipMacroslip);
+            let (x, a) = (state.micro_zone_end(), state.macroslip_length());
+            assert!(a > 0.0 && x > 0.0, "F={f}");
+            assert!(
+                (x + a - 200.0).abs() <= 4.0 * f64::EPSILON * 200.0,
+                "F={f}: {x} + {a}"
+            );
+        }
+        assert_eq!(beams.regularized(force(50.0)).macroslip_length(), 0.0);
+    }
+
+    #[test]
+    fn coulomb_slip_is_not_negative_one_ulp_above_the_threshold() {
+        // tau_b - mu P from F - F_thre: positive whenever the interface slides.
+        let thin = TwinBeams::new(TwinBeamsParams {
+            friction: 7.105_017_298_846_543e-6,
+            pressure: 1e-6,
+            width: 1.192_292_328_757_343e-6,
+            half_height: 3_753.103_293_958_533_4,
+            ..TwinBeamsParams::PAPER
+        })
+        .unwrap();
+        let f = thin.threshold_force().next_up();
+        let c = thin.coulomb(force(f));
+        assert_eq!(c.regime(), Regime::Macroslip);
+        for x in [0.0, 100.0, 200.0] {
+            assert!(c.slip(x) >= 0.0, "x={x}: {}", c.slip(x));
+        }
+    }
+
+    #[test]
+    fn clamped_forces_are_the_nearest_accepted_ones() {
+        assert_eq!(TipForce::clamped(12.5).newtons(), 12.5);
+        assert_eq!(TipForce::clamped(-3.0).newtons(), 0.0);
+        assert_eq!(TipForce::clamped(f64::NAN).newtons(), 0.0);
+        assert_eq!(TipForce::clamped(1e307).newtons(), 1e12);
     }
 
     #[test]

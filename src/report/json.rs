@@ -6,7 +6,7 @@ use serde_json::{Map, Value};
 
 use crate::curves::{Answer, StiffnessComparison, beam_point, plate_point};
 use crate::model::inputs::Inputs;
-use crate::model::params::Unit;
+use crate::model::params::{BeamParam, Unit};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// `KEY_unit` with the unit spelled for identifiers: `L_mm`, `E_MPa`, `KT_MPa_per_mm`, `mu`.
@@ -166,7 +166,14 @@ pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> Value 
                     object["Xr_mm"] = micro_end.into();
                     object["regime"] = regime.label().into();
                 }
-                None => {}
+                // A K_T the model refuses: say why rather than leave the answer out silently.
+                None => {
+                    if let Some(Err(refused)) =
+                        row.candidate.kt.map(|kt| BeamParam::Stiffness.check(kt))
+                    {
+                        object["not_evaluated"] = refused.to_string().into();
+                    }
+                }
             }
             object
         })

@@ -26,7 +26,7 @@ pub enum TableFormat {
 /// use microslip::report::table::{TableFormat, write_table};
 /// use microslip::{TwinBeams, TwinBeamsParams};
 /// let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
-/// let rows = beam_force_sweep(beams, force_samples(0.0, 80.0, 2)?).map(|p| BeamRow::from(&p));
+/// let rows = beam_force_sweep(beams, force_samples(0.0, 80.0, 2)?)?.map(|p| BeamRow::from(&p));
 /// let mut csv = Vec::new();
 /// write_table(&mut csv, TableFormat::Csv, rows)?;
 /// let csv = String::from_utf8(csv)?;

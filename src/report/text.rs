@@ -6,7 +6,7 @@ use std::fmt::Write;
 use super::number;
 use crate::curves::{Answer, CandidateSource, StiffnessComparison, beam_point, plate_point};
 use crate::model::inputs::{Inputs, Model};
-use crate::model::params::Unit;
+use crate::model::params::{BeamParam, Unit};
 use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
@@ -347,6 +347,15 @@ pub fn candidate_basis(source: &CandidateSource) -> String {
     }
 }
 
+/// The regime column of a candidate without an answer: no K_T at all, or one the model refuses.
+fn unanswered(kt: Option<f64>) -> &'static str {
+    if kt.is_some() {
+        "K_T out of range"
+    } else {
+        "-"
+    }
+}
+
 /// The K_T comparison: each candidate and what it does to the answer.
 pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> String {
     let mut out = String::new();
@@ -423,15 +432,32 @@ pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> String
             ),
             (Model::Beam { .. }, None) => writeln!(
                 out,
-                "{source:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} {basis}",
-                "-", "-", "-", "-", "-"
+                "{source:<16} {kt:>12} {:>10} {:>10} {:>11}  {:<20} {basis}",
+                "-",
+                "-",
+                "-",
+                unanswered(row.candidate.kt)
             ),
             (Model::Plate(_), None) => writeln!(
                 out,
-                "{source:<16} {:>12} {:>12} {:>10}  {:<20} {basis}",
-                "-", "-", "-", "-"
+                "{source:<16} {kt:>12} {:>12} {:>10}  {:<20} {basis}",
+                "-",
+                "-",
+                unanswered(row.candidate.kt)
             ),
         };
+    }
+    if comparison
+        .rows
+        .iter()
+        .any(|row| row.candidate.kt.is_some() && row.answer.is_none())
+    {
+        let stiffness = BeamParam::Stiffness.spec();
+        let _ = writeln!(
+            out,
+            "K_T out of range: not evaluated, K_T {}.",
+            stiffness.domain.describe(stiffness.unit)
+        );
     }
     let _ = writeln!(
         out,

@@ -4,7 +4,7 @@
 use crate::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::fit::Measurement;
 use crate::model::inputs::Model;
-use crate::model::params::ModelKind;
+use crate::model::params::{BeamParam, ModelKind, PlateParam};
 use crate::numeric::{MeshDensity, NumericError, PlateFe, TwinBeamsFe};
 use crate::report::view::{BeamChart, PlateChart, Table, View};
 use crate::report::{number, number_with};
@@ -133,8 +133,27 @@ fn cursor(x: f64, [y0, y1]: [f64; 2]) -> PlotSeries {
     }
 }
 
+/// Finite, strictly increasing bounds from a data range that may be flat (or, defensively, not
+/// finite): a range narrower than 1e-9 of its magnitude is widened to that, a flat range at 0 to
+/// [0, 1]. `lo + 1` would not do: it equals `lo` above 2^53.
+fn axis_bounds(lo: f64, hi: f64) -> [f64; 2] {
+    let lo = if lo.is_finite() { lo } else { 0.0 };
+    let hi = if hi.is_finite() { hi } else { lo };
+    let magnitude = lo.abs().max(hi.abs());
+    let least = if magnitude > 0.0 {
+        1e-9 * magnitude
+    } else {
+        1.0
+    };
+    if hi - lo >= least {
+        [lo, hi]
+    } else {
+        [lo, lo + least]
+    }
+}
+
 fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
-    let hi = if hi > lo { hi } else { lo + 1.0 };
+    let [lo, hi] = axis_bounds(lo, hi);
     Axis {
         title: title.into(),
         bounds: [lo, hi],
@@ -169,11 +188,12 @@ fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
 }
 
 /// The force range of the beam charts: up to 3 F_thre, or further to show the current F and the
-/// largest measured force.
+/// largest measured force, but never beyond the largest accepted force (the sweeps refuse it).
 fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64) -> f64 {
-    (3.0 * beams.threshold_force())
+    let wanted = (3.0 * beams.threshold_force())
         .max(1.25 * force.newtons())
-        .max(1.05 * f_data)
+        .max(1.05 * f_data);
+    TipForce::clamped(wanted).newtons()
 }
 
 fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
@@ -186,6 +206,16 @@ const LOOP_POINTS: u64 = SAMPLES / 2 + 1;
 /// Contact elements assumed by the K_T table: L/100, a typical benchmark mesh (the command line's
 /// `microslip kt --element-size` sets any other).
 const TABLE_ELEMENTS_PER_LENGTH: f64 = 100.0;
+
+/// A table cell of at most `width` characters: 3 significant digits, fewer for the long exponent
+/// forms of extreme values (`6.67e-17` becomes `6.7e-17`).
+fn cell(value: f64, width: usize) -> String {
+    (1..=3)
+        .rev()
+        .map(|digits| number_with(value, digits))
+        .find(|text| text.len() <= width)
+        .unwrap_or_else(|| number_with(value, 1))
+}
 
 /// The K_T comparison as a narrow table (fits the 44-column chart pane of an 80x24 screen).
 fn stiffness_table(model: &Model) -> Plot {
@@ -218,10 +248,10 @@ fn stiffness_table(model: &Model) -> Plot {
                 }),
             ) => format!(
                 "{:>7} {:>7} {:>7} {:>8}",
-                tick(k),
-                tick(first_macroslip_force),
-                tick(micro_end),
-                tick(tip_deflection)
+                cell(k, 7),
+                cell(first_macroslip_force, 7),
+                cell(micro_end, 7),
+                cell(tip_deflection, 8)
             ),
             (
                 Some(k),
@@ -232,10 +262,11 @@ fn stiffness_table(model: &Model) -> Plot {
                 }),
             ) => format!(
                 "{:>7} {:>9} {:>8}",
-                tick(k),
-                tick(end_displacement),
-                tick(micro_end)
+                cell(k, 7),
+                cell(end_displacement, 9),
+                cell(micro_end, 8)
             ),
+            (Some(k), None) => format!("{:>7} out of range", cell(k, 7)),
             _ => format!("{:>7}", "none"),
         };
         lines.push(format!("{:<10} {cells}", short(&row.candidate.source)));
@@ -284,7 +315,14 @@ pub fn build(
             View::Chart(chart) => (plate_plot(&plate, chart), None),
         },
     };
-    let mut plot = plot.unwrap_or_default();
+    // Every range above lies in the accepted domain, so a chart is always built; should one not be,
+    // an empty chart with valid axes is drawn rather than axes without extent.
+    let mut plot = plot.unwrap_or_else(|| Plot {
+        title: "no chart for these values".into(),
+        x: linear_axis("- (-)", 0.0, 1.0),
+        y: linear_axis("- (-)", 0.0, 1.0),
+        ..Plot::default()
+    });
     if let Some(points) = measured {
         let points: Series = points.iter().map(|m| (m.force, m.deflection)).collect();
         let top = max_y([&points]) * 1.05;
@@ -311,34 +349,47 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: BeamChart, f_data: f64) 
     let f_max = force_range(beams, force, f_data);
     let forces = samples(0.0, f_max, Spacing::Linear)?;
     let kt = p.tangential_stiffness;
-    let softer = beams.with_tangential_stiffness(kt / 5.0).ok()?;
-    let stiffer = beams.with_tangential_stiffness(kt * 5.0).ok()?;
+    // The curves at K_T/5 and K_T*5, where those are accepted stiffnesses.
+    let companions: Vec<(&str, TwinBeams)> = [("K_T/5", kt / 5.0), ("K_T*5", kt * 5.0)]
+        .into_iter()
+        .filter(|&(_, k)| BeamParam::Stiffness.check(k).is_ok())
+        .filter_map(|(label, k)| Some((label, beams.with_tangential_stiffness(k).ok()?)))
+        .collect();
     let f = force.newtons();
     match chart {
         BeamChart::Deflection => {
-            let (coulomb, regularized) = curves::beam_deflection_vs_force(beams, forces);
-            let (_, soft) = curves::beam_deflection_vs_force(&softer, forces);
-            let (_, stiff) = curves::beam_deflection_vs_force(&stiffer, forces);
-            let top = 1.05 * max_y([&coulomb, &regularized, &soft, &stiff]);
+            let (coulomb, regularized) = curves::beam_deflection_vs_force(beams, forces).ok()?;
+            // The current K_T last, so that it is drawn on top.
+            let mut series = vec![line("Coulomb", coulomb)];
+            for (label, other) in &companions {
+                let (_, w) = curves::beam_deflection_vs_force(other, forces).ok()?;
+                series.push(line(*label, w));
+            }
+            series.push(line("K_T", regularized));
+            let top = 1.05 * max_y(series.iter().map(|s| &s.points));
+            let y = linear_axis("w(L) (mm)", 0.0, top);
+            series.push(cursor(f, y.bounds));
             Some(Plot {
                 table: None,
                 title: format!("w(L) vs F, K_T = {} MPa/mm", number(kt)),
                 x: linear_axis("F (N)", 0.0, f_max),
-                y: linear_axis("w(L) (mm)", 0.0, top),
-                // The current K_T last, so that it is drawn on top.
-                series: vec![
-                    line("Coulomb", coulomb),
-                    line("K_T/5", soft),
-                    line("K_T*5", stiff),
-                    line("K_T", regularized),
-                    cursor(f, [0.0, top]),
-                ],
+                y,
+                series,
             })
         }
         BeamChart::SlipBoundary => {
-            let regularized = curves::beam_slip_boundary_vs_force(beams, forces);
-            let soft = curves::beam_slip_boundary_vs_force(&softer, forces);
-            let stiff = curves::beam_slip_boundary_vs_force(&stiffer, forces);
+            let mut series = Vec::new();
+            for (label, other) in &companions {
+                series.push(line(
+                    *label,
+                    curves::beam_slip_boundary_vs_force(other, forces).ok()?,
+                ));
+            }
+            series.push(line(
+                "K_T",
+                curves::beam_slip_boundary_vs_force(beams, forces).ok()?,
+            ));
+            series.push(cursor(f, [0.0, p.length]));
             Some(Plot {
                 table: None,
                 title: format!(
@@ -348,12 +399,7 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: BeamChart, f_data: f64) 
                 ),
                 x: linear_axis("F (N)", 0.0, f_max),
                 y: linear_axis("X (mm)", 0.0, p.length),
-                series: vec![
-                    line("K_T/5", soft),
-                    line("K_T*5", stiff),
-                    line("K_T", regularized),
-                    cursor(f, [0.0, p.length]),
-                ],
+                series,
             })
         }
         BeamChart::Loop => {
@@ -391,7 +437,8 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: BeamChart, f_data: f64) 
         }
         BeamChart::Dissipation => {
             let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
-            let (coulomb, regularized) = curves::dissipation_vs_amplitude(beams, amplitudes);
+            let (coulomb, regularized) =
+                curves::dissipation_vs_amplitude(beams, amplitudes).ok()?;
             let top = 1.05 * max_y([&coulomb, &regularized]).max(f64::MIN_POSITIVE);
             let zeta = curves::cycle_point(beams, force);
             Some(Plot {
@@ -433,10 +480,11 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: BeamChart, f_data: f64) 
     }
 }
 
-/// The K_T range of the plate's displacement chart: four decades either side of K_T (log10 units).
+/// The K_T range of the plate's displacement chart: four decades either side of K_T, within the
+/// accepted stiffnesses (ends in MPa/mm).
 fn stiffness_range(kt: f64) -> (f64, f64) {
-    let centre = kt.log10();
-    (centre - 4.0, centre + 4.0)
+    let domain = PlateParam::Stiffness.spec().domain;
+    (domain.clamp(kt / 1e4), domain.clamp(kt * 1e4))
 }
 
 fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
@@ -444,10 +492,10 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
     let kt = p.tangential_stiffness;
     match chart {
         PlateChart::Displacement => {
-            let (lo, hi) = stiffness_range(kt);
-            let stiffnesses = samples(10f64.powf(lo), 10f64.powf(hi), Spacing::Logarithmic)?;
+            let (from, to) = stiffness_range(kt);
+            let stiffnesses = samples(from, to, Spacing::Logarithmic)?;
             let (coulomb, regularized) =
-                curves::plate_end_displacement_vs_stiffness(plate, stiffnesses);
+                curves::plate_end_displacement_vs_stiffness(plate, stiffnesses).ok()?;
             let to_log = |s: Series| {
                 s.into_iter()
                     .map(|(k, u)| (k.log10(), u))
@@ -455,28 +503,38 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
             };
             let (coulomb, regularized) = (to_log(coulomb), to_log(regularized));
             let top = 1.05 * max_y([&coulomb, &regularized]);
+            let y = linear_axis("u(L) (mm)", 0.0, top);
+            let cursor = cursor(kt.log10(), y.bounds);
             Some(Plot {
                 table: None,
                 title: "u(L) vs K_T (log scale)".into(),
-                x: log_axis("K_T (MPa/mm, log)", lo, hi),
-                y: linear_axis("u(L) (mm)", 0.0, top),
+                x: log_axis("K_T (MPa/mm, log)", from.log10(), to.log10()),
+                y,
                 series: vec![
                     line("Coulomb", coulomb),
                     line("regularized", regularized),
-                    cursor(kt.log10(), [0.0, top]),
+                    cursor,
                 ],
             })
         }
         PlateChart::SlipBoundary => {
             let mu = p.friction;
-            let (lo, hi) = (mu / 5.0, (mu * 5.0).min(5.0).max(mu * 1.5));
+            // mu/5 to 5 (or 1.5 mu beyond 5), within the accepted friction coefficients.
+            let domain = PlateParam::Friction.spec().domain;
+            let (lo, hi) = (
+                domain.clamp(mu / 5.0),
+                domain.clamp((mu * 5.0).min(5.0).max(mu * 1.5)),
+            );
             let frictions = samples(lo, hi, Spacing::Linear)?;
             let mut series = Vec::new();
             for (label, factor) in [("K_T/10", 0.1), ("K_T*10", 10.0), ("K_T", 1.0)] {
-                let other = plate.with_tangential_stiffness(kt * factor).ok()?;
+                // Companions only where their K_T is accepted.
+                let Ok(other) = plate.with_tangential_stiffness(kt * factor) else {
+                    continue;
+                };
                 series.push(line(
                     label,
-                    curves::plate_slip_boundary_vs_friction(&other, frictions),
+                    curves::plate_slip_boundary_vs_friction(&other, frictions).ok()?,
                 ));
             }
             // Zoom on the band the curves use: X_r stays near L over most of the range.
@@ -486,12 +544,13 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
                 .map(|q| q.1)
                 .fold(p.half_length, f64::min);
             let bottom = (bottom - 0.05 * (p.half_length - bottom)).max(0.0);
-            series.push(cursor(mu, [bottom, p.half_length]));
+            let y = linear_axis("X_r (mm)", bottom, p.half_length);
+            series.push(cursor(mu, y.bounds));
             Some(Plot {
                 table: None,
                 title: format!("X_r vs mu, K_T = {} MPa/mm", number(kt)),
                 x: linear_axis("mu (-)", lo, hi),
-                y: linear_axis("X_r (mm)", bottom, p.half_length),
+                y,
                 series,
             })
         }
@@ -578,12 +637,16 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
         }
         (Model::Plate(plate), _, View::Chart(PlateChart::Displacement)) => {
             let p = plate.params();
-            let (lo, hi) = stiffness_range(p.tangential_stiffness);
+            let (from, to) = stiffness_range(p.tangential_stiffness);
+            let (lo, hi) = (from.log10(), to.log10());
             let mut points = Vec::with_capacity(OVERLAY_POINTS + 1);
             for i in 0..=OVERLAY_POINTS {
                 let log_kt = lo + (hi - lo) * i as f64 / OVERLAY_POINTS as f64;
                 let params = crate::PlateParams {
-                    tangential_stiffness: 10f64.powf(log_kt),
+                    tangential_stiffness: PlateParam::Stiffness
+                        .spec()
+                        .domain
+                        .clamp(10f64.powf(log_kt)),
                     ..p
                 };
                 let mut fe = PlateFe::new(params, density);
@@ -650,6 +713,111 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Axes finite and strictly increasing, every point finite and on the chart.
+    fn check_plot(plot: &Plot, what: &str) {
+        if let Some(table) = &plot.table {
+            for line in table {
+                assert!(line.len() <= 43, "{what}: {line}");
+                assert!(
+                    !line.contains("n/a") && !line.contains("NaN") && !line.contains("inf"),
+                    "{what}: {line}"
+                );
+            }
+            return;
+        }
+        for axis in [&plot.x, &plot.y] {
+            let [lo, hi] = axis.bounds;
+            assert!(
+                lo.is_finite() && hi.is_finite() && lo < hi,
+                "{what}: {} {:?}",
+                axis.title,
+                axis.bounds
+            );
+            assert!(axis.labels.iter().all(|l| !l.contains("n/a")), "{what}");
+        }
+        assert!(!plot.series.is_empty(), "{what}");
+        for s in &plot.series {
+            for &(x, y) in &s.points {
+                let inside = |v: f64, [lo, hi]: [f64; 2]| {
+                    v.is_finite() && v >= lo - 1e-9 * (hi - lo) && v <= hi + 1e-9 * (hi - lo)
+                };
+                assert!(
+                    inside(x, plot.x.bounds) && inside(y, plot.y.bounds),
+                    "{what} {}: ({x}, {y}) outside {:?} x {:?}",
+                    s.name,
+                    plot.x.bounds,
+                    plot.y.bounds
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn every_chart_at_every_corner_of_the_domain_has_valid_axes() {
+        use crate::model::params::BeamParam;
+        // Every corner of each model's domain (the beam force at 0, at the largest accepted force
+        // or at F_thre, in turn), every view.
+        let beam_params = BeamParam::ALL;
+        for mask in 0..1_u32 << 7 {
+            let mut inputs = Inputs::paper(ModelKind::Beam);
+            for (i, param) in beam_params[..7].iter().enumerate() {
+                let domain = param.spec().domain;
+                let value = if mask & (1 << i) == 0 {
+                    domain.min()
+                } else {
+                    domain.max()
+                };
+                inputs.set(crate::Param::Beam(*param), value).unwrap();
+            }
+            let Ok(Model::Beam { beams, .. }) = inputs.validate() else {
+                panic!("corner {mask} refused");
+            };
+            let force = match mask % 3 {
+                0 => 0.0,
+                1 => BeamParam::Force.spec().domain.max(),
+                _ => TipForce::clamped(beams.threshold_force()).newtons(),
+            };
+            inputs
+                .set(crate::Param::Beam(BeamParam::Force), force)
+                .unwrap();
+            let model = inputs.validate().unwrap();
+            for views in every_view(ModelKind::Beam) {
+                let plot = build(&model, views, None, None);
+                check_plot(&plot, &format!("beam corner {mask} F={force} {views:?}"));
+            }
+        }
+        let plate_params = crate::PlateParam::ALL;
+        for mask in 0..1_u32 << 7 {
+            let mut inputs = Inputs::paper(ModelKind::Plate);
+            for (i, param) in plate_params.iter().enumerate() {
+                let domain = param.spec().domain;
+                let value = if mask & (1 << i) == 0 {
+                    domain.min()
+                } else {
+                    domain.clamp(domain.max())
+                };
+                inputs.set(crate::Param::Plate(*param), value).unwrap();
+            }
+            let model = inputs.validate().unwrap();
+            for views in every_view(ModelKind::Plate) {
+                let plot = build(&model, views, None, None);
+                check_plot(&plot, &format!("plate corner {mask} {views:?}"));
+            }
+        }
+    }
+
+    #[test]
+    fn flat_and_huge_ranges_still_give_increasing_axes() {
+        assert_eq!(axis_bounds(0.0, 0.0), [0.0, 1.0]);
+        let [lo, hi] = axis_bounds(1e17, 1e17);
+        assert!(lo < hi && hi - lo >= 1e8);
+        let [lo, hi] = axis_bounds(1e-300, 1e-300);
+        assert!(lo < hi);
+        assert_eq!(axis_bounds(2.0, 5.0), [2.0, 5.0]);
+        let [lo, hi] = axis_bounds(f64::NAN, f64::INFINITY);
+        assert!(lo.is_finite() && hi.is_finite() && lo < hi);
     }
 
     #[test]
