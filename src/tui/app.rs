@@ -572,7 +572,9 @@ impl App {
             Some(Model::Beam { beams, .. }) => beams.threshold_force(),
             _ => 1.0,
         };
-        let next = param.spec().step.apply(value, up, coarse, scale);
+        // A step stops at the edge of the accepted domain rather than being refused there.
+        let spec = param.spec();
+        let next = spec.domain.clamp(spec.step.apply(value, up, coarse, scale));
         self.set_value(param, next);
     }
 
@@ -738,6 +740,20 @@ mod tests {
         assert!(app.modified());
         app.update(Action::Reset);
         assert!(!app.modified());
+    }
+
+    #[test]
+    fn steps_stop_at_the_edge_of_the_domain() {
+        let mut app = app();
+        for _ in 0..2 {
+            app.update(Action::Previous); // KT
+        }
+        let max = BeamParam::Stiffness.spec().domain.max();
+        for _ in 0..200 {
+            app.update(Action::IncreaseCoarse);
+        }
+        assert_eq!(app.inputs().get(KT), Some(max));
+        assert!(app.message().is_none(), "{:?}", app.message());
     }
 
     #[test]
