@@ -595,7 +595,7 @@ fn run_fit(
         path: path.display().to_string(),
         reason,
     };
-    let text = std::fs::read_to_string(path).map_err(|e| data_error(e.to_string()))?;
+    let text = fit::data::read_text(path).map_err(|e| data_error(e.to_string()))?;
     let data = fit::data::parse(&text).map_err(|e| data_error(e.to_string()))?;
     let result = fit::fit_twin_beams(beams.params(), &data, fixed_mu, fixed_kt)?;
     match format {

@@ -515,3 +515,95 @@ fn cycle_reports_and_sweeps() {
     assert_eq!(json["coulomb"]["onset_N"], 80.0);
     assert!(failure(&["cycle", "--amplitude", "-5"], 2).contains("invalid --amplitude = -5"));
 }
+
+#[cfg(target_os = "linux")]
+#[test]
+fn endless_inputs_stop_at_the_cap_with_bounded_memory() {
+    // `check` and `--preset` read at most 64 KiB of an endless device.
+    let output = microslip().args(["check", "/dev/zero"]).output().unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert_eq!(
+        text,
+        "/dev/zero: cannot read /dev/zero: file is larger than the 64 KiB limit for a preset\n"
+    );
+    let stderr = failure(&["beam", "--preset", "/dev/zero"], 2);
+    assert!(
+        stderr.contains("cannot read /dev/zero: file is larger than the 64 KiB limit for a preset"),
+        "{stderr}"
+    );
+    // `fit` reads at most 256 MiB, here under a 1 GiB address-space limit: unbounded reading
+    // would abort on a failed allocation instead of exiting 2 with the limit.
+    let output = std::process::Command::new("sh")
+        .args([
+            "-c",
+            "ulimit -v 1048576 && exec \"$0\" \"$@\"",
+            env!("CARGO_BIN_EXE_microslip"),
+            "fit",
+            "beam",
+            "/dev/zero",
+        ])
+        .env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert_eq!(
+        stderr,
+        "microslip: /dev/zero: file is larger than the 256 MiB limit for a measurement file\n"
+    );
+}
+
+#[cfg(unix)]
+#[test]
+fn a_fifo_fed_forever_is_refused_at_the_cap() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("endless.toml");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let writer_path = fifo.clone();
+    // Writes until the reader goes away (then the write fails and the thread ends).
+    let writer = std::thread::spawn(move || {
+        use std::io::Write;
+        let mut pipe = std::fs::OpenOptions::new()
+            .write(true)
+            .open(writer_path)
+            .unwrap();
+        let line = b"# a comment that never ends\n".repeat(100);
+        while pipe.write_all(&line).is_ok() {}
+    });
+    let output = microslip().arg("check").arg(&fifo).output().unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        text.ends_with(": file is larger than the 64 KiB limit for a preset\n"),
+        "{text}"
+    );
+    writer.join().unwrap();
+}
+
+#[test]
+fn oversized_files_are_refused_by_size_without_reading_them() {
+    let dir = tempfile::tempdir().unwrap();
+    // Sparse files: the size is enough to refuse them.
+    let preset = dir.path().join("big.toml");
+    std::fs::File::create(&preset)
+        .unwrap()
+        .set_len(64 * 1024 + 1)
+        .unwrap();
+    let data = dir.path().join("big.csv");
+    std::fs::File::create(&data)
+        .unwrap()
+        .set_len((256 << 20) + 1)
+        .unwrap();
+    let stderr = failure(&["beam", "--preset", preset.to_str().unwrap()], 2);
+    assert!(stderr.contains("larger than the 64 KiB limit"), "{stderr}");
+    let stderr = failure(&["fit", "beam", data.to_str().unwrap()], 2);
+    assert!(
+        stderr.ends_with("big.csv: file is larger than the 256 MiB limit for a measurement file\n"),
+        "{stderr}"
+    );
+}

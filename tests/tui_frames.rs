@@ -219,3 +219,30 @@ fn cyclic_loading_charts() {
     app.update(Action::NextChart);
     insta::assert_snapshot!("dissipation_vs_amplitude", screen(&app, 100, 30));
 }
+
+#[test]
+fn the_d_key_refuses_a_measurement_file_above_the_cap() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("huge.csv");
+    // Sparse: refused by its size, never read.
+    std::fs::File::create(&path)
+        .unwrap()
+        .set_len((256 << 20) + 1)
+        .unwrap();
+    let mut app = app();
+    app.update(Action::LoadData);
+    for c in path.to_str().unwrap().chars() {
+        app.update(Action::Input(c));
+    }
+    app.update(Action::Commit);
+    let message = app.message().expect("a message");
+    assert!(message.is_error);
+    assert!(
+        message
+            .text
+            .ends_with("huge.csv: file is larger than the 256 MiB limit for a measurement file"),
+        "{}",
+        message.text
+    );
+    assert!(app.measurements().is_none());
+}
