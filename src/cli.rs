@@ -349,7 +349,7 @@ pub fn main() -> ExitCode {
         return match crate::tui::run(cli.charset, cli.preset.as_deref(), cli.data.clone()) {
             Ok(()) => ExitCode::SUCCESS,
             Err(error) => {
-                eprintln!("microslip: {error}");
+                print_error(&error.to_string());
                 ExitCode::from(2)
             }
         };
@@ -361,10 +361,17 @@ pub fn main() -> ExitCode {
         // `microslip sweep ... | head`: the reader left; that is not an error.
         Err(CliError::Output(e)) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("microslip: {error}");
+            print_error(&error.to_string());
             ExitCode::from(error.exit_code())
         }
     }
+}
+
+/// The one error line on stderr. Errors echo what users gave (preset names, paths, values, CSV
+/// headers), so the whole line is sanitized here, once, at the edge: a control character in any of
+/// them is shown escaped instead of reaching the terminal.
+fn print_error(message: &str) {
+    eprintln!("microslip: {}", report::sanitize(message));
 }
 
 /// Help and version go to stdout as clap writes them; every other parse error becomes one line.
@@ -385,7 +392,7 @@ fn report_clap_error(error: &clap::Error) -> ExitCode {
         .collect();
     let line = first_block.join(" ");
     let line = line.strip_prefix("error: ").unwrap_or(&line);
-    eprintln!("microslip: {line} (see --help)");
+    print_error(&format!("{line} (see --help)"));
     ExitCode::from(2)
 }
 
@@ -723,6 +730,9 @@ fn run_verify(
 
 fn check(out: &mut impl Write, files: &[PathBuf]) -> Result<(), CliError> {
     let mut failed = 0;
+    // Paths, descriptions and the values quoted in problems come from users: every line is
+    // sanitized before it reaches the terminal.
+    let mut say = |line: String| writeln!(out, "{}", report::sanitize(&line));
     for path in files {
         match preset::store::load(path) {
             Ok(p) => {
@@ -734,17 +744,16 @@ fn check(out: &mut impl Write, files: &[PathBuf]) -> Result<(), CliError> {
                 } else {
                     &p.description
                 };
-                writeln!(
-                    out,
+                say(format!(
                     "{}: ok ({} preset: {description})",
                     path.display(),
                     p.inputs.kind()
-                )?;
+                ))?;
             }
             Err(problems) => {
                 failed += 1;
                 for problem in problems {
-                    writeln!(out, "{}: {problem}", path.display())?;
+                    say(format!("{}: {problem}", path.display()))?;
                 }
             }
         }

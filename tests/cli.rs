@@ -607,3 +607,91 @@ fn oversized_files_are_refused_by_size_without_reading_them() {
         "{stderr}"
     );
 }
+
+/// True when `text` holds a control character other than a line feed, or a bidirectional control.
+fn has_raw_control(text: &str) -> bool {
+    text.chars()
+        .any(|c| (c.is_control() && c != '\n') || ('\u{202a}'..='\u{202e}').contains(&c))
+}
+
+#[test]
+fn control_characters_from_users_never_reach_the_terminal() {
+    let dir = tempfile::tempdir().unwrap();
+    let presets = dir.path().join("microslip").join("presets");
+    std::fs::create_dir_all(&presets).unwrap();
+    let evil = "model = \"beam\"\ndescription = \"bell \\u0007 clear \\u001b[2J\\nfake \\u009b31m \\u202e\"\n";
+    std::fs::write(presets.join("evil\u{1b}[31m.toml"), evil).unwrap();
+    let run = |args: &[&str]| {
+        microslip()
+            .env("XDG_CONFIG_HOME", dir.path())
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    // The listing.
+    let output = run(&["presets"]);
+    assert!(output.status.success());
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(!has_raw_control(&text), "{text:?}");
+    assert!(
+        text.contains("evil\\x1b[31m")
+            && text.contains("bell \\x07 clear \\x1b[2J\\nfake \\u{9b}31m \\u{202e}"),
+        "{text}"
+    );
+    // check: the description and the path.
+    let file = presets.join("evil\u{1b}[31m.toml");
+    let output = microslip().arg("check").arg(&file).output().unwrap();
+    assert!(output.status.success());
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(!has_raw_control(&text), "{text:?}");
+    assert!(
+        text.contains("evil\\x1b[31m.toml: ok (beam preset: bell \\x07"),
+        "{text}"
+    );
+    // check: a key quoted in a problem.
+    let bad = dir.path().join("bad.toml");
+    std::fs::write(&bad, "model = \"beam\"\n\"K\\u001b]0;owned\\u0007\" = 5\n").unwrap();
+    let output = microslip().arg("check").arg(&bad).output().unwrap();
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(!has_raw_control(&text), "{text:?}");
+    assert!(text.contains("unknown key 'K\\x1b]0;owned\\x07'"), "{text}");
+    // Reports name the preset; JSON escapes what a terminal would obey.
+    let name = "evil\u{1b}[31m";
+    let output = run(&["beam", "--preset", name]);
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        output.status.success() && !has_raw_control(&text),
+        "{text:?}"
+    );
+    assert!(text.contains("preset evil\\x1b[31m"), "{text}");
+    let output = run(&["beam", "--preset", name, "--format", "json"]);
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(!has_raw_control(&text), "{text:?}");
+    let json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(json["preset"], name);
+    // Errors echo names, paths, values and CSV headers: one sanitized line.
+    for (args, expected) in [
+        (
+            vec!["beam", "--preset", "nope\u{1b}[2J"],
+            "no preset named 'nope\\x1b[2J'",
+        ),
+        (
+            vec!["beam", "--set", "KT=\u{7}\u{1b}[5m"],
+            "invalid value '\\x07\\x1b[5m' for KT",
+        ),
+        (vec!["bogus\u{7}\u{9b}x"], "unrecognized subcommand 'bogus"),
+        (
+            vec!["beam", "--preset", "/nonexistent/\u{9b}x.toml"],
+            "cannot read /nonexistent/\\u{9b}x.toml",
+        ),
+    ] {
+        let stderr = failure(&args, 2);
+        assert!(!has_raw_control(&stderr), "{stderr:?}");
+        assert!(stderr.contains(expected), "{args:?}: {stderr}");
+    }
+    let csv = dir.path().join("header.csv");
+    std::fs::write(&csv, "F_N,\u{1b}[31mw\n1,2\n").unwrap();
+    let stderr = failure(&["fit", "beam", csv.to_str().unwrap()], 2);
+    assert!(!has_raw_control(&stderr), "{stderr:?}");
+    assert!(stderr.contains("(found: F_N, \\x1b[31mw)"), "{stderr}");
+}

@@ -246,3 +246,29 @@ fn the_d_key_refuses_a_measurement_file_above_the_cap() {
     );
     assert!(app.measurements().is_none());
 }
+
+#[test]
+fn the_preset_picker_shows_control_characters_escaped() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("evil\u{1b}[2J.toml"),
+        "model = \"beam\"\ndescription = \"bell \\u0007 \\u001b]0;title\\u0007 \\u202e\"\n",
+    )
+    .unwrap();
+    let mut app = App::new(AppOptions {
+        theme: Theme {
+            charset: Charset::Ascii,
+            color: false,
+        },
+        preset: preset::resolve("paper-beams").unwrap(),
+        user_dir: Some(dir.path().to_path_buf()),
+        data: None,
+    });
+    app.update(Action::OpenPresets);
+    let text = screen(&app, 100, 30);
+    assert!(
+        text.contains(r"evil\x1b[2J") && text.contains(r"bell \x07 \x1b]0;title\x07 \u{202e}"),
+        "{text}"
+    );
+    assert!(!text.contains('\u{202e}'));
+}

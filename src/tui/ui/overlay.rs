@@ -7,6 +7,7 @@ use ratatui::widgets::{Clear, Paragraph};
 
 use super::panes::pane;
 use crate::preset::Listed;
+use crate::report::sanitize;
 use crate::tui::app::App;
 use crate::tui::keymap::{BINDINGS, Context, context_title};
 use crate::tui::theme::Role;
@@ -85,14 +86,20 @@ pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed]
         .skip(first)
         .take(visible)
         .map(|(i, entry)| {
+            // Names and descriptions come from users' files: shown escaped, never obeyed.
             let (model, description) = match &entry.preset {
-                Ok(p) => (p.inputs.kind().name(), p.description.clone()),
-                Err(problem) => ("?", format!("INVALID: {problem}")),
+                Ok(p) => (
+                    p.inputs.kind().name(),
+                    sanitize(&p.description).into_owned(),
+                ),
+                Err(problem) => ("?", format!("INVALID: {}", sanitize(problem))),
             };
             let marker = if i == selected { ">" } else { " " };
             let text = format!(
                 "{marker} {:<18} {:<5} {:<7} {description}",
-                entry.name, model, entry.origin
+                sanitize(&entry.name),
+                model,
+                entry.origin
             );
             let style = if i == selected {
                 theme.style(Role::Selected)
@@ -126,7 +133,7 @@ pub fn draw_prompt(
     let inner = block.inner(popup);
     frame.render_widget(block, popup);
     let lines = vec![
-        Line::from(format!(" {content}")),
+        Line::from(format!(" {}", sanitize(content))),
         Line::from(""),
         Line::from(Span::styled(
             format!(" {hint}"),

@@ -9,7 +9,7 @@ use crate::curves::{beam_point, plate_point};
 use crate::model::inputs::Model;
 use crate::model::params::{ModelKind, Unit};
 use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
-use crate::report::number;
+use crate::report::{number, sanitize};
 use crate::tui::app::{App, Mode};
 use crate::tui::theme::Role;
 
@@ -155,7 +155,7 @@ pub fn draw_status(frame: &mut Frame, app: &App, area: Rect) {
     let theme = app.theme();
     let marker = if app.modified() { "*" } else { "" };
     let mut spans = vec![Span::styled(
-        format!(" {} | {}{marker} ", app.kind(), app.preset_name()),
+        format!(" {} | {}{marker} ", app.kind(), sanitize(app.preset_name())),
         theme.style(Role::Title),
     )];
     match (app.mode(), app.message()) {
@@ -173,8 +173,9 @@ pub fn draw_status(frame: &mut Frame, app: &App, area: Rect) {
             } else {
                 Role::Info
             };
+            // Messages quote paths, names and values users typed or files hold.
             spans.push(Span::styled(
-                format!("| {}", message.text),
+                format!("| {}", sanitize(&message.text)),
                 theme.style(role),
             ));
         }
