@@ -6,9 +6,10 @@
 //! problems); `check` exits with 1 when a file has problems. Nothing goes to stdout before the inputs
 //! are known to be valid, so a failed run never leaves half a table behind.
 
-use std::io::{self, BufWriter, Write};
+use std::io::{self, BufWriter, IsTerminal, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::time::{Duration, Instant};
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use thiserror::Error;
@@ -602,9 +603,16 @@ fn run_fit(
         path: path.display().to_string(),
         reason,
     };
+    let mut progress = ProgressLine::new(io::stderr(), io::stderr().is_terminal());
     let text = fit::data::read_text(path).map_err(|e| data_error(e.to_string()))?;
     let data = fit::data::parse(&text).map_err(|e| data_error(e.to_string()))?;
-    let result = fit::fit_twin_beams(beams.params(), &data, fixed_mu, fixed_kt)?;
+    drop(text);
+    let result =
+        fit::fit_twin_beams_with_progress(beams.params(), &data, fixed_mu, fixed_kt, &mut |p| {
+            progress.update(&p, Instant::now())
+        });
+    progress.finish();
+    let result = result?;
     match format {
         ReportFormat::Text => out.write_all(
             text::fit(&path.display().to_string(), &name, &beams.params(), &result).as_bytes(),
@@ -614,6 +622,62 @@ fn run_fit(
         }
     }
     Ok(())
+}
+
+/// A long fit's progress on stderr: shown only when stderr is a terminal (scripts and pipes see
+/// nothing) and once the command has run for [`ProgressLine::AFTER`]; one line rewritten in place
+/// at most every [`ProgressLine::EVERY`], erased when the fit ends so that the report starts clean.
+struct ProgressLine<W: Write> {
+    out: W,
+    enabled: bool,
+    started: Instant,
+    last: Option<Instant>,
+    shown: bool,
+}
+
+impl<W: Write> ProgressLine<W> {
+    /// Quiet for this long: short fits print nothing.
+    const AFTER: Duration = Duration::from_secs(1);
+    /// Fastest refresh.
+    const EVERY: Duration = Duration::from_millis(100);
+
+    fn new(out: W, enabled: bool) -> Self {
+        ProgressLine {
+            out,
+            enabled,
+            started: Instant::now(),
+            last: None,
+            shown: false,
+        }
+    }
+
+    fn update(&mut self, progress: &fit::Progress, now: Instant) {
+        if !self.enabled
+            || now.saturating_duration_since(self.started) < Self::AFTER
+            || self
+                .last
+                .is_some_and(|last| now.saturating_duration_since(last) < Self::EVERY)
+        {
+            return;
+        }
+        self.last = Some(now);
+        self.shown = true;
+        // Carriage return and erase-line: the line is rewritten in place. A progress line is
+        // best-effort: a failed write must not fail the fit.
+        let _ = write!(
+            self.out,
+            "\r\x1b[2Kmicroslip: {}",
+            text::fit_progress(progress)
+        );
+        let _ = self.out.flush();
+    }
+
+    fn finish(&mut self) {
+        if self.shown {
+            let _ = write!(self.out, "\r\x1b[2K");
+            let _ = self.out.flush();
+        }
+    }
 }
 
 /// Checks a flag that is not a model parameter against `domain`.
@@ -773,5 +837,47 @@ mod tests {
     #[test]
     fn clap_definition_is_consistent() {
         Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn fit_progress_shows_after_a_second_at_most_ten_times_a_second_and_is_erased() {
+        let grid = |done| fit::Progress::Bracket {
+            done,
+            total: 784,
+            points: 1024,
+        };
+        let mut line = ProgressLine::new(Vec::new(), true);
+        let t0 = line.started;
+        line.update(&grid(1), t0 + Duration::from_millis(999));
+        assert!(line.out.is_empty(), "nothing within the first second");
+        line.update(&grid(400), t0 + Duration::from_millis(1000));
+        line.update(&grid(401), t0 + Duration::from_millis(1050));
+        line.update(
+            &fit::Progress::Refine {
+                iteration: 2,
+                points: 1_000_000,
+                pass: fit::Pass::Derivatives,
+                done: 250_000,
+            },
+            t0 + Duration::from_millis(1100),
+        );
+        line.finish();
+        let text = String::from_utf8(line.out).unwrap();
+        assert_eq!(
+            text,
+            "\r\x1b[2Kmicroslip: fitting: grid search for a start on 1024 measurements, 51%\
+             \r\x1b[2Kmicroslip: fitting: refining on 1000000 measurements, iteration 2: derivatives 25%\
+             \r\x1b[2K"
+        );
+        // Not a terminal: never anything, not even the erasing.
+        let mut quiet = ProgressLine::new(Vec::new(), false);
+        let t0 = quiet.started;
+        quiet.update(&grid(400), t0 + Duration::from_secs(5));
+        quiet.finish();
+        assert!(quiet.out.is_empty());
+        // A quick fit that showed nothing erases nothing.
+        let mut quick = ProgressLine::new(Vec::new(), true);
+        quick.finish();
+        assert!(quick.out.is_empty());
     }
 }

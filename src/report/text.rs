@@ -351,6 +351,36 @@ pub fn candidate_basis(source: &CandidateSource) -> String {
     }
 }
 
+/// One line on how far a running fit got, for a progress display.
+pub fn fit_progress(progress: &crate::fit::Progress) -> String {
+    use crate::fit::{Pass, Progress};
+    let percent = |done: usize, total: usize| 100 * done / total.max(1);
+    match *progress {
+        Progress::Bracket {
+            done,
+            total,
+            points,
+        } => format!(
+            "fitting: grid search for a start on {points} measurements, {}%",
+            percent(done, total)
+        ),
+        Progress::Refine {
+            iteration,
+            points,
+            pass,
+            done,
+        } => format!(
+            "fitting: refining on {points} measurements, iteration {iteration}: {} {}%",
+            match pass {
+                Pass::Residuals => "residuals",
+                Pass::Derivatives => "derivatives",
+                Pass::Step => "trying a step",
+            },
+            percent(done, points)
+        ),
+    }
+}
+
 /// The K_T comparison: each candidate and what it does to the answer.
 pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> String {
     let preset = sanitize(preset);
