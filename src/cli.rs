@@ -382,8 +382,18 @@ fn report_clap_error(error: &clap::Error) -> ExitCode {
         error.kind(),
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
     ) {
-        let _ = error.print();
-        return ExitCode::SUCCESS;
+        // Written like any other output: a full disk or a closed terminal is an error, a reader
+        // that left (`microslip --help | head -3`) is not.
+        let written = error.print().and_then(|()| io::stdout().flush());
+        return match written {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+            Err(e) => {
+                let error = CliError::Output(e);
+                print_error(&error.to_string());
+                ExitCode::from(error.exit_code())
+            }
+        };
     }
     let rendered = error.render().to_string();
     let first_block: Vec<&str> = rendered

@@ -695,3 +695,34 @@ fn control_characters_from_users_never_reach_the_terminal() {
     assert!(!has_raw_control(&stderr), "{stderr:?}");
     assert!(stderr.contains("(found: F_N, \\x1b[31mw)"), "{stderr}");
 }
+
+#[cfg(target_os = "linux")]
+#[test]
+fn help_and_version_on_a_full_disk_fail_with_a_message() {
+    let to_full_disk = |arg: &str| {
+        let full = std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap();
+        std::process::Command::new(env!("CARGO_BIN_EXE_microslip"))
+            .arg(arg)
+            .env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"))
+            .stdout(full)
+            .output()
+            .unwrap()
+    };
+    for flag in ["--help", "--version", "-h", "-V"] {
+        let output = to_full_disk(flag);
+        let stderr = String::from_utf8(output.stderr).unwrap();
+        assert_eq!(output.status.code(), Some(1), "{flag}: {stderr}");
+        assert!(
+            stderr.starts_with("microslip: cannot write output: No space left on device"),
+            "{flag}: {stderr}"
+        );
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    }
+    // Other output to a full disk fails the same way.
+    let output = to_full_disk("report");
+    assert_eq!(output.status.code(), Some(1));
+    assert!(String::from_utf8(output.stderr).unwrap().contains("No space left on device"));
+}
