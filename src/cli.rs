@@ -17,7 +17,7 @@ use thiserror::Error;
 use crate::curves::{self, RangeError, Samples, Spacing};
 use crate::fit::{self, FitError};
 use crate::model::inputs::{Inputs, Model};
-use crate::model::params::{BeamParam, Domain, ModelKind, ParamError, Unit, parse_number};
+use crate::model::params::{BeamParam, Compact, Domain, ModelKind, ParamError, Unit, parse_number};
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
@@ -281,7 +281,7 @@ pub enum CliError {
         flags: [&'static str; 3],
     },
     /// A flag that is not a model parameter, out of its range.
-    #[error("invalid {flag} = {value}: {allowed}")]
+    #[error("invalid {flag} = {}: {allowed}", Compact(*value))]
     Flag {
         /// The flag.
         flag: &'static str,

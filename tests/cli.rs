@@ -724,5 +724,58 @@ fn help_and_version_on_a_full_disk_fail_with_a_message() {
     // Other output to a full disk fails the same way.
     let output = to_full_disk("report");
     assert_eq!(output.status.code(), Some(1));
-    assert!(String::from_utf8(output.stderr).unwrap().contains("No space left on device"));
+    assert!(
+        String::from_utf8(output.stderr)
+            .unwrap()
+            .contains("No space left on device")
+    );
+}
+
+#[test]
+fn huge_and_tiny_values_are_echoed_as_typed() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("neg.csv");
+    std::fs::write(&data, "F_N,w_mm\n-1e308,0.1\n").unwrap();
+    let unordered = dir.path().join("unordered.csv");
+    std::fs::write(&unordered, "F_N,w_mm\n1e300,0.1\n2.5e-7,0.2\n").unwrap();
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["beam", "--set", "L=-1e308"],
+            "invalid L = -1e308: must be > 0 and finite (mm)",
+        ),
+        (
+            &["cycle", "--amplitude", "-1e308"],
+            "invalid --amplitude = -1e308: must be >= 0 and finite (N)",
+        ),
+        (
+            // (`=`: clap takes `-1e-300` alone for a flag; a negative exponent is not a number to it.)
+            &["kt", "--element-size=-1e-300"],
+            "invalid --element-size = -1e-300",
+        ),
+        (
+            &[
+                "sweep", "beam", "--from", "1e308", "--to", "1e300", "--points", "3",
+            ],
+            "--from = 1e308 is above --to = 1e300",
+        ),
+        (
+            &[
+                "sweep", "beam", "--from", "-1e308", "--to", "5", "--points", "3",
+            ],
+            "invalid --from = -1e308",
+        ),
+        (
+            &["fit", "beam", data.to_str().unwrap()],
+            "line 2: F_N = -1e308 is negative",
+        ),
+        (
+            &["fit", "beam", unordered.to_str().unwrap()],
+            "line 3: F_N = 2.5e-7 is not above the previous 1e300",
+        ),
+    ];
+    for (args, expected) in cases {
+        let stderr = failure(args, 2);
+        assert!(stderr.contains(expected), "{args:?}: {stderr}");
+        assert!(stderr.len() < 200, "{args:?}: {stderr}");
+    }
 }

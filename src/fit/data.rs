@@ -10,6 +10,7 @@ use std::path::Path;
 use thiserror::Error;
 
 use crate::file::{ReadError, Size, read_capped};
+use crate::model::params::Compact;
 
 /// One measurement: tip force (N) and tip deflection (mm).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -195,7 +196,10 @@ pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
         if force < 0.0 {
             return Err(error(
                 line,
-                format!("F_N = {force} is negative; forces must be >= 0 N"),
+                format!(
+                    "F_N = {} is negative; forces must be >= 0 N",
+                    Compact(force)
+                ),
             ));
         }
         if let Some(previous) = data.last()
@@ -204,8 +208,9 @@ pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
             return Err(error(
                 line,
                 format!(
-                    "F_N = {force} is not above the previous {}: forces must increase (one loading branch)",
-                    previous.force
+                    "F_N = {} is not above the previous {}: forces must increase (one loading branch)",
+                    Compact(force),
+                    Compact(previous.force)
                 ),
             ));
         }
