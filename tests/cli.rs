@@ -779,3 +779,20 @@ fn huge_and_tiny_values_are_echoed_as_typed() {
         assert!(stderr.len() < 200, "{args:?}: {stderr}");
     }
 }
+
+#[test]
+fn check_says_a_numeric_description_must_be_a_string() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("numeric.toml");
+    std::fs::write(&file, "model = \"beam\"\ndescription = 42\n").unwrap();
+    let output = microslip().arg("check").arg(&file).output().unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        text.contains(
+            "numeric.toml: line 2: invalid value '42' for description: must be a string, in double quotes"
+        ),
+        "{text}"
+    );
+    assert!(!text.contains("finite number"), "{text}");
+}

@@ -82,6 +82,14 @@ pub enum PresetError {
         /// The text found.
         text: String,
     },
+    /// A value that is not a string where text is expected (`description`).
+    #[error("invalid value '{text}' for {key}: must be a string, in double quotes")]
+    NotAString {
+        /// The key.
+        key: String,
+        /// The text found.
+        text: String,
+    },
     /// `--set` text without `=`.
     #[error("invalid assignment '{text}': expected KEY=VALUE, e.g. KT=600")]
     Assignment {
