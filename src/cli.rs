@@ -291,7 +291,7 @@ pub enum CliError {
         allowed: String,
     },
     /// A preset of the other model.
-    #[error("preset '{preset}' is a {found} preset; `microslip {wanted}` needs a {wanted} preset")]
+    #[error("preset '{preset}' is a {found} preset; `microslip {command}` needs a {wanted} preset")]
     WrongModel {
         /// The preset.
         preset: String,
@@ -299,6 +299,8 @@ pub enum CliError {
         found: ModelKind,
         /// The model the command needs.
         wanted: ModelKind,
+        /// The command, as typed after `microslip` (e.g. `fit beam`).
+        command: &'static str,
     },
     /// The cross-check found errors above tolerance (already reported on stdout).
     #[error("{0} of the quantities checked exceed the tolerance")]
@@ -412,7 +414,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
     match &cli.command {
         None | Some(Command::Report) => out.write_all(report::paper_report().as_bytes())?,
         Some(Command::Beam(args)) => {
-            let (name, model) = load(&args.inputs, ModelKind::Beam)?;
+            let (name, model) = load(&args.inputs, ModelKind::Beam, "beam")?;
             if let Model::Beam { beams, force } = model {
                 match args.format {
                     ReportFormat::Text => {
@@ -423,7 +425,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             }
         }
         Some(Command::Plate(args)) => {
-            let (name, model) = load(&args.inputs, ModelKind::Plate)?;
+            let (name, model) = load(&args.inputs, ModelKind::Plate, "plate")?;
             if let Model::Plate(plate) = model {
                 match args.format {
                     ReportFormat::Text => out.write_all(text::plate(&name, &plate).as_bytes())?,
@@ -438,7 +440,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             format,
         })) => {
-            let (beams, forces) = beams_over_forces(inputs, *from, *to, *points)?;
+            let (beams, forces) = beams_over_forces(inputs, *from, *to, *points, "sweep beam")?;
             let rows = curves::beam_force_sweep(beams, forces);
             write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
         }
@@ -462,7 +464,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                         flags: ["--kt-from", "--kt-to", "--points"],
                     }
                 })?;
-            let (_, model) = load(inputs, ModelKind::Plate)?;
+            let (_, model) = load(inputs, ModelKind::Plate, "sweep plate")?;
             if let Model::Plate(plate) = model {
                 let rows = curves::plate_kt_sweep(plate, samples);
                 write_table(out, *format, rows.map(|r| PlateRow::from(&r)))?;
@@ -494,7 +496,8 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             format,
         })) => {
-            let (beams, amplitudes) = beams_over_forces(inputs, *from, *to, *points)?;
+            let (beams, amplitudes) =
+                beams_over_forces(inputs, *from, *to, *points, "sweep cycle")?;
             let rows = curves::cycle_sweep(beams, amplitudes);
             write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
         }
@@ -517,18 +520,20 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
 }
 
 /// The twin beams of `inputs` and a force range `--from`, `--to`, `--points` (a sweep over F or
-/// over the cycle amplitude F_a): the range is checked before the preset is read.
+/// over the cycle amplitude F_a): the range is checked before the preset is read. `command` names
+/// the subcommand in errors.
 fn beams_over_forces(
     inputs: &InputArgs,
     from: f64,
     to: f64,
     points: u64,
+    command: &'static str,
 ) -> Result<(TwinBeams, Samples), CliError> {
     let forces = curves::force_samples(from, to, points).map_err(|error| CliError::Range {
         error,
         flags: ["--from", "--to", "--points"],
     })?;
-    match load(inputs, ModelKind::Beam)? {
+    match load(inputs, ModelKind::Beam, command)? {
         (_, Model::Beam { beams, .. }) => Ok((beams, forces)),
         // `load` refuses a preset of the other model with `WrongModel`.
         (_, Model::Plate(_)) => unreachable!("load(.., Beam) returned a plate"),
@@ -536,7 +541,12 @@ fn beams_over_forces(
 }
 
 /// Resolves the preset (default: the paper's data set of `wanted`), applies `--set`, validates.
-fn load(args: &InputArgs, wanted: ModelKind) -> Result<(String, Model), CliError> {
+/// `command` (as typed after `microslip`) names the command when the preset is of the other model.
+fn load(
+    args: &InputArgs,
+    wanted: ModelKind,
+    command: &'static str,
+) -> Result<(String, Model), CliError> {
     let (name, preset) = resolve_preset(args, wanted)?;
     if preset.inputs.kind() != wanted {
         let spec = args.preset.clone().unwrap_or_default();
@@ -544,6 +554,7 @@ fn load(args: &InputArgs, wanted: ModelKind) -> Result<(String, Model), CliError
             preset: spec,
             found: preset.inputs.kind(),
             wanted,
+            command,
         });
     }
     apply_and_validate(args, name, preset)
@@ -605,7 +616,7 @@ fn run_fit(
     format: ReportFormat,
 ) -> Result<(), CliError> {
     let (fixed_mu, fixed_kt) = parse_fixed(fixed)?;
-    let (name, model) = load(inputs, ModelKind::Beam)?;
+    let (name, model) = load(inputs, ModelKind::Beam, "fit beam")?;
     let Model::Beam { beams, .. } = model else {
         return Ok(());
     };
@@ -717,7 +728,7 @@ fn run_cycle(
         flags: ["", "", "--points"],
     };
     curves::check_points(points).map_err(points_error)?;
-    let (name, model) = load(inputs, ModelKind::Beam)?;
+    let (name, model) = load(inputs, ModelKind::Beam, "cycle")?;
     let Model::Beam { beams, .. } = model else {
         return Ok(());
     };

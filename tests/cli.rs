@@ -796,3 +796,78 @@ fn check_says_a_numeric_description_must_be_a_string() {
     );
     assert!(!text.contains("finite number"), "{text}");
 }
+
+#[test]
+fn a_preset_of_the_other_model_names_the_command_that_was_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("d.csv");
+    std::fs::write(&data, "F_N,w_mm\n1,0.001\n2,0.002\n3,0.003\n").unwrap();
+    let data = data.to_str().unwrap();
+    let cases: &[(&[&str], &str)] = &[
+        (&["beam", "--preset", "paper-plate"], "`microslip beam`"),
+        (&["plate", "--preset", "paper-beams"], "`microslip plate`"),
+        (
+            &["fit", "beam", data, "--preset", "paper-plate"],
+            "`microslip fit beam`",
+        ),
+        (
+            &["cycle", "--amplitude", "100", "--preset", "paper-plate"],
+            "`microslip cycle`",
+        ),
+        (
+            &[
+                "sweep",
+                "beam",
+                "--from",
+                "0",
+                "--to",
+                "1",
+                "--points",
+                "2",
+                "--preset",
+                "paper-plate",
+            ],
+            "`microslip sweep beam`",
+        ),
+        (
+            &[
+                "sweep",
+                "cycle",
+                "--from",
+                "0",
+                "--to",
+                "1",
+                "--points",
+                "2",
+                "--preset",
+                "paper-plate",
+            ],
+            "`microslip sweep cycle`",
+        ),
+        (
+            &[
+                "sweep",
+                "plate",
+                "--kt-from",
+                "1",
+                "--kt-to",
+                "2",
+                "--points",
+                "2",
+                "--preset",
+                "paper-beams",
+            ],
+            "`microslip sweep plate`",
+        ),
+    ];
+    for (args, command) in cases {
+        let stderr = failure(args, 2);
+        let wanted = if command.contains("plate") {
+            "plate"
+        } else {
+            "beam"
+        };
+        let expected = format!("{command} needs a {wanted} preset");
+        assert!(stderr.contains(&expected), "{args:?}: {stderr}");
+    }
+}
