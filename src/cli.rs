@@ -842,6 +842,15 @@ fn check(out: &mut impl Write, files: &[PathBuf]) -> Result<(), CliError> {
                 }
             }
         }
+        // A warning, not a problem: the file is fine, only its name loses to a bundled preset.
+        if let Some(name) = path.file_stem().and_then(|s| s.to_str())
+            && preset::is_bundled(name)
+        {
+            let warning = PresetError::Shadowed {
+                name: name.to_string(),
+            };
+            say(format!("{}: warning: {warning}", path.display()))?;
+        }
     }
     if failed > 0 {
         Err(CliError::CheckFailed(failed))

@@ -871,3 +871,57 @@ fn a_preset_of_the_other_model_names_the_command_that_was_run() {
         assert!(stderr.contains(&expected), "{args:?}: {stderr}");
     }
 }
+
+#[test]
+fn bundled_names_win_and_a_user_file_of_that_name_gets_a_warning() {
+    let dir = tempfile::tempdir().unwrap();
+    let presets = dir.path().join("microslip").join("presets");
+    std::fs::create_dir_all(&presets).unwrap();
+    let file = presets.join("paper-beams.toml");
+    std::fs::write(&file, "model = \"beam\"\ndescription = \"mine\"\nKT = 5\n").unwrap();
+    let run = |args: &[&str]| {
+        microslip()
+            .env("XDG_CONFIG_HOME", dir.path())
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    // --preset NAME: the bundled one.
+    let output = run(&["beam", "--preset", "paper-beams", "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(json["inputs"]["KT_MPa_per_mm"], 600.0);
+    // The listing warns.
+    let text = String::from_utf8(run(&["presets"]).stdout).unwrap();
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("paper-beams ") && l.contains(" user "))
+        .unwrap_or_else(|| panic!("no user row in\n{text}"));
+    assert!(
+        line.contains("WARNING: named like the bundled preset 'paper-beams', which wins"),
+        "{line}"
+    );
+    // check: the file is valid (exit 0) but named like a bundled preset.
+    let output = microslip().arg("check").arg(&file).output().unwrap();
+    assert!(output.status.success());
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        text.contains("paper-beams.toml: ok (beam preset: mine)"),
+        "{text}"
+    );
+    assert!(
+        text.contains(
+            "paper-beams.toml: warning: named like the bundled preset 'paper-beams', which wins"
+        ),
+        "{text}"
+    );
+    // By path it still loads.
+    let output = run(&[
+        "beam",
+        "--preset",
+        file.to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(json["inputs"]["KT_MPa_per_mm"], 5.0);
+}

@@ -272,3 +272,53 @@ fn the_preset_picker_shows_control_characters_escaped() {
     );
     assert!(!text.contains('\u{202e}'));
 }
+
+#[test]
+fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("paper-beams.toml"),
+        "model = \"beam\"\nKT = 5\n",
+    )
+    .unwrap();
+    let mut app = App::new(AppOptions {
+        theme: Theme {
+            charset: Charset::Ascii,
+            color: false,
+        },
+        preset: preset::resolve("paper-beams-soft").unwrap(),
+        user_dir: Some(dir.path().to_path_buf()),
+        data: None,
+    });
+    app.update(Action::OpenPresets);
+    // Bundled: paper-beams, paper-beams-soft (selected), paper-plate; then the user's paper-beams.
+    app.update(Action::Next);
+    app.update(Action::Next);
+    let text = screen(&app, 120, 30);
+    assert!(
+        text.contains("> paper-beams        ?     user    WARNING: shadowed by the bundled one"),
+        "{text}"
+    );
+    app.update(Action::Commit);
+    assert_eq!(app.preset_name(), "paper-beams-soft");
+    let message = app.message().unwrap();
+    assert!(message.is_error);
+    assert!(
+        message
+            .text
+            .starts_with("cannot load paper-beams: named like the bundled preset"),
+        "{}",
+        message.text
+    );
+    // The picker stays open; picking the bundled one (first row) loads the bundled values.
+    for _ in 0..3 {
+        app.update(Action::Previous);
+    }
+    app.update(Action::Commit);
+    assert_eq!(app.preset_name(), "paper-beams");
+    assert_eq!(
+        app.inputs()
+            .get(microslip::Param::Beam(microslip::BeamParam::Stiffness)),
+        Some(600.0)
+    );
+}

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
-use super::{BUNDLED, Located, Preset, PresetError, PresetSource};
+use super::{Located, Preset, PresetError, PresetSource};
 use crate::file::{Size, read_capped};
 
 /// Why a preset could not be saved.
@@ -87,7 +87,7 @@ pub fn save_atomic(
     if !valid {
         return Err(SaveError::BadName(name.to_string()));
     }
-    if BUNDLED.iter().any(|(bundled, _)| *bundled == name) {
+    if super::is_bundled(name) {
         return Err(SaveError::Bundled(name.to_string()));
     }
     let target = dir.join(format!("{name}.toml"));

@@ -27,6 +27,14 @@ pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
                 row.origin,
                 sanitize(&p.description)
             ),
+            Err(warning) if row.shadowed => writeln!(
+                out,
+                "{:<20} {:<6} {:<8} WARNING: {}",
+                name,
+                "?",
+                row.origin,
+                sanitize(warning),
+            ),
             Err(problem) => {
                 let file = user_dir.map_or_else(
                     || format!("{}.toml", row.name),
@@ -74,6 +82,24 @@ mod tests {
         assert!(bad.contains("INVALID: line 2: invalid KT = -3"), "{bad}");
         assert!(bad.contains("microslip check "), "{bad}");
         assert!(text.ends_with(&format!("user presets: {}\n", dir.path().display())));
+    }
+
+    #[test]
+    fn a_user_file_named_like_a_bundled_preset_gets_a_warning_not_invalid() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("paper-plate.toml"), "model = \"beam\"\n").unwrap();
+        let text = listing(&preset::listing(Some(dir.path())), Some(dir.path()));
+        let shadowed: Vec<&str> = text
+            .lines()
+            .filter(|l| l.starts_with("paper-plate ") && l.contains(" user "))
+            .collect();
+        assert_eq!(shadowed.len(), 1, "{text}");
+        assert!(
+            shadowed[0]
+                .contains("WARNING: named like the bundled preset 'paper-plate', which wins"),
+            "{text}"
+        );
+        assert!(!text.contains("INVALID"), "{text}");
     }
 
     #[test]

@@ -69,7 +69,8 @@ pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
     frame.render_widget(Paragraph::new(right_lines), right);
 }
 
-/// The preset list: bundled first, then the user's; invalid user files are listed with their problem.
+/// The preset list: bundled first, then the user's; invalid user files are listed with their problem,
+/// and a user file named like a bundled preset (which wins) with a warning.
 pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed], selected: usize) {
     let theme = app.theme();
     let height = (entries.len() as u16 + 4).clamp(6, area.height.saturating_sub(2));
@@ -92,6 +93,8 @@ pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed]
                     p.inputs.kind().name(),
                     sanitize(&p.description).into_owned(),
                 ),
+                // Short enough for the box; Enter on it shows the whole warning.
+                Err(_) if entry.shadowed => ("?", "WARNING: shadowed by the bundled one".into()),
                 Err(problem) => ("?", format!("INVALID: {}", sanitize(problem))),
             };
             let marker = if i == selected { ">" } else { " " };
