@@ -322,3 +322,55 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
         Some(600.0)
     );
 }
+
+/// Types `path` into the `d` prompt and loads it.
+fn load_data(app: &mut App, path: &str) {
+    app.update(Action::LoadData);
+    for c in path.chars() {
+        app.update(Action::Input(c));
+    }
+    app.update(Action::Commit);
+}
+
+#[test]
+fn a_long_status_message_wraps_upwards_instead_of_being_cut() {
+    let mut app = app();
+    let path = "/nonexistent/measurements/from the bench in building 7/campaign 2031-04/\
+                specimen 12 of 40, second loading branch after the gauge reset.csv";
+    load_data(&mut app, path);
+    let text = screen(&app, 80, 24);
+    // Every word of the message is on screen, in order, across the bottom rows.
+    let bottom: Vec<&str> = text.lines().rev().take(4).collect();
+    let joined: String = bottom
+        .iter()
+        .rev()
+        .map(|l| l.trim_matches('"').trim())
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(
+        joined.contains("specimen 12 of 40, second loading branch after the gauge reset.csv: No such file or directory"),
+        "{text}"
+    );
+    insta::assert_snapshot!("long_status_message", text);
+    // Too long even for four lines: what fits, then `...`.
+    let mut app = app_with("paper-beams", Charset::Ascii, false);
+    load_data(
+        &mut app,
+        &format!("/nonexistent/{}.csv", "very long name ".repeat(30)),
+    );
+    let text = screen(&app, 80, 24);
+    let rows: Vec<&str> = text.lines().collect();
+    assert!(
+        rows[23].trim_end_matches('"').trim_end().ends_with("..."),
+        "{text}"
+    );
+    assert!(!rows[19].contains("very long"), "{text}");
+    assert!(
+        rows[20].contains("beam | paper-beams | /nonexistent/very long"),
+        "{text}"
+    );
+    // A short message again: back to one line.
+    app.update(Action::SwitchModel);
+    let text = screen(&app, 80, 24);
+    assert!(!text.contains("very long"), "{text}");
+}
