@@ -374,3 +374,20 @@ fn a_long_status_message_wraps_upwards_instead_of_being_cut() {
     let text = screen(&app, 80, 24);
     assert!(!text.contains("very long"), "{text}");
 }
+
+#[test]
+fn the_readme_shows_the_real_main_screen() {
+    let readme = include_str!("../README.md");
+    let start = readme
+        .find("```text\n┌ Twin beams")
+        .expect("the screen capture in README.md")
+        + "```text\n".len();
+    let end = start + readme[start..].find("```").unwrap();
+    let captured: Vec<&str> = readme[start..end].lines().map(str::trim_end).collect();
+    let real = screen(&app(), 80, 24);
+    let real: Vec<&str> = real
+        .lines()
+        .map(|l| l.trim_matches('"').trim_end())
+        .collect();
+    assert_eq!(captured, real);
+}
