@@ -625,12 +625,21 @@ fn run_fit(
         reason,
     };
     let mut progress = ProgressLine::new(io::stderr(), io::stderr().is_terminal());
-    let text = fit::data::read_text(path).map_err(|e| data_error(e.to_string()))?;
-    let data = fit::data::parse(&text).map_err(|e| data_error(e.to_string()))?;
-    drop(text);
+    let contents = fit::data::read_text(path).map_err(|e| data_error(e.to_string()))?;
+    let data = fit::data::parse_with_progress(&contents, &mut |done, total| {
+        progress.update(Instant::now(), || text::reading_progress(done, total))
+    });
+    drop(contents);
+    let data = match data {
+        Ok(data) => data,
+        Err(e) => {
+            progress.finish();
+            return Err(data_error(e.to_string()));
+        }
+    };
     let result =
         fit::fit_twin_beams_with_progress(beams.params(), &data, fixed_mu, fixed_kt, &mut |p| {
-            progress.update(&p, Instant::now())
+            progress.update(Instant::now(), || text::fit_progress(&p))
         });
     progress.finish();
     let result = result?;
@@ -645,7 +654,7 @@ fn run_fit(
     Ok(())
 }
 
-/// A long fit's progress on stderr: shown only when stderr is a terminal (scripts and pipes see
+/// A long fit's progress (reading, then fitting) on stderr: shown only when stderr is a terminal (scripts and pipes see
 /// nothing) and once the command has run for [`ProgressLine::AFTER`]; one line rewritten in place
 /// at most every [`ProgressLine::EVERY`], erased when the fit ends so that the report starts clean.
 struct ProgressLine<W: Write> {
@@ -672,7 +681,8 @@ impl<W: Write> ProgressLine<W> {
         }
     }
 
-    fn update(&mut self, progress: &fit::Progress, now: Instant) {
+    /// Shows `message()` if it is time to; the message is only built then.
+    fn update(&mut self, now: Instant, message: impl FnOnce() -> String) {
         if !self.enabled
             || now.saturating_duration_since(self.started) < Self::AFTER
             || self
@@ -685,11 +695,7 @@ impl<W: Write> ProgressLine<W> {
         self.shown = true;
         // Carriage return and erase-line: the line is rewritten in place. A progress line is
         // best-effort: a failed write must not fail the fit.
-        let _ = write!(
-            self.out,
-            "\r\x1b[2Kmicroslip: {}",
-            text::fit_progress(progress)
-        );
+        let _ = write!(self.out, "\r\x1b[2Kmicroslip: {}", message());
         let _ = self.out.flush();
     }
 
@@ -878,18 +884,19 @@ mod tests {
         };
         let mut line = ProgressLine::new(Vec::new(), true);
         let t0 = line.started;
-        line.update(&grid(1), t0 + Duration::from_millis(999));
+        let show = |p: fit::Progress| move || text::fit_progress(&p);
+        line.update(t0 + Duration::from_millis(999), show(grid(1)));
         assert!(line.out.is_empty(), "nothing within the first second");
-        line.update(&grid(400), t0 + Duration::from_millis(1000));
-        line.update(&grid(401), t0 + Duration::from_millis(1050));
+        line.update(t0 + Duration::from_millis(1000), show(grid(400)));
+        line.update(t0 + Duration::from_millis(1050), show(grid(401)));
         line.update(
-            &fit::Progress::Refine {
+            t0 + Duration::from_millis(1100),
+            show(fit::Progress::Refine {
                 iteration: 2,
                 points: 1_000_000,
                 pass: fit::Pass::Derivatives,
                 done: 250_000,
-            },
-            t0 + Duration::from_millis(1100),
+            }),
         );
         line.finish();
         let text = String::from_utf8(line.out).unwrap();
@@ -902,7 +909,9 @@ mod tests {
         // Not a terminal: never anything, not even the erasing.
         let mut quiet = ProgressLine::new(Vec::new(), false);
         let t0 = quiet.started;
-        quiet.update(&grid(400), t0 + Duration::from_secs(5));
+        quiet.update(t0 + Duration::from_secs(5), || {
+            text::reading_progress(50, 100)
+        });
         quiet.finish();
         assert!(quiet.out.is_empty());
         // A quick fit that showed nothing erases nothing.

@@ -124,6 +124,21 @@ impl<'a> LineCounter<'a> {
 /// `F_N` or `w_mm`, a value is missing or not a finite number, a force is negative or not above the
 /// previous one, or there are fewer than [`MIN_ROWS`] measurements.
 pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
+    parse_with_progress(text, &mut |_, _| {})
+}
+
+/// Rows read between two progress reports of [`parse_with_progress`].
+const PROGRESS_ROWS: usize = 1 << 16;
+
+/// [`parse`], telling `progress` (bytes read, bytes in all) every few ten thousand rows: a file of
+/// several million rows takes seconds.
+///
+/// # Errors
+/// As [`parse`].
+pub fn parse_with_progress(
+    text: &str,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Vec<Measurement>, DataError> {
     // The reader would skip the mark as well; removing it here keeps byte offsets and lines aligned.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let bytes = text.as_bytes();
@@ -177,9 +192,13 @@ pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
     let (force_column, deflection_column) = (find("F_N")?, find("w_mm")?);
     let mut data: Vec<Measurement> = Vec::new();
     let mut last_line = header_line;
-    for record in records {
+    for (row, record) in records.enumerate() {
         let (line, fields) = record?;
         last_line = line;
+        if row % PROGRESS_ROWS == 0 {
+            let at = fields.position().map_or(0, |p| p.byte() as usize);
+            progress(at, text.len());
+        }
         let value = |column: usize, name: &str| -> Result<f64, DataError> {
             let text = fields.get(column).unwrap_or("");
             match text.parse::<f64>() {
@@ -354,6 +373,26 @@ mod tests {
             parse("F_N,w_mm\r10,0.1\r20,x\r").unwrap_err().to_string(),
             "line 3: 'x' in column w_mm is not a finite number"
         );
+    }
+
+    #[test]
+    fn long_files_report_progress_in_bytes() {
+        let mut text = String::from("F_N,w_mm\n");
+        for i in 1..=200_000 {
+            text.push_str(&format!("{i},0.1\n"));
+        }
+        let mut reports = Vec::new();
+        let data =
+            parse_with_progress(&text, &mut |done, total| reports.push((done, total))).unwrap();
+        assert_eq!(data.len(), 200_000);
+        // Rows 0, 65 536, 131 072 and 196 608.
+        assert_eq!(reports.len(), 4, "{reports:?}");
+        assert!(
+            reports
+                .iter()
+                .all(|&(done, total)| done < total && total == text.len())
+        );
+        assert!(reports.windows(2).all(|w| w[0].0 < w[1].0), "{reports:?}");
     }
 
     #[test]

@@ -351,6 +351,14 @@ pub fn candidate_basis(source: &CandidateSource) -> String {
     }
 }
 
+/// One line on how far reading a measurement file got, for a progress display.
+pub fn reading_progress(done: usize, total: usize) -> String {
+    format!(
+        "reading the measurements, {}%",
+        (done as f64 / total.max(1) as f64 * 100.0) as u32
+    )
+}
+
 /// One line on how far a running fit got, for a progress display.
 pub fn fit_progress(progress: &crate::fit::Progress) -> String {
     use crate::fit::{Pass, Progress};
