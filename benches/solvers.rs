@@ -1,6 +1,7 @@
 //! Speed of the solvers: `cargo bench --bench solvers`. Results and machine: BENCHMARKS.md.
 
 use divan::{Bencher, black_box};
+use microslip::fit::{Measurement, fit_twin_beams};
 use microslip::numeric::{MeshDensity, PlateFe, TwinBeamsFe};
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
@@ -51,4 +52,39 @@ fn plate_finite_elements(bencher: Bencher) {
         fe.load_to(black_box(10.0), 1).unwrap();
         fe.end_displacement()
     });
+}
+
+/// A measured curve of `rows` points from 1 to 300 N (mu = 0.4, K_T = 200 MPa/mm, the paper's
+/// geometry) with reproducible noise of +-5e-5 mm, about a quarter of a percent of the largest w.
+fn measured_curve(rows: usize) -> Vec<Measurement> {
+    let beams = TwinBeams::new(TwinBeamsParams {
+        friction: 0.4,
+        tangential_stiffness: 200.0,
+        ..TwinBeamsParams::PAPER
+    })
+    .unwrap();
+    let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    (0..rows)
+        .map(|i| {
+            let force = 1.0 + 299.0 * i as f64 / (rows - 1) as f64;
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let noise = 1e-4 * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
+            let w = beams
+                .regularized(TipForce::new(force).unwrap())
+                .tip_deflection();
+            Measurement {
+                force,
+                deflection: w + noise,
+            }
+        })
+        .collect()
+}
+
+/// Fit of mu and K_T to a measured curve (both free), from the grid search to the standard errors.
+#[divan::bench(args = [10_000, 100_000], sample_count = 10)]
+fn fit_mu_and_kt(bencher: Bencher, rows: usize) {
+    let data = measured_curve(rows);
+    bencher.bench_local(|| fit_twin_beams(TwinBeamsParams::PAPER, black_box(&data), None, None));
 }

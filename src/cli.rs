@@ -6,9 +6,10 @@
 //! problems); `check` exits with 1 when a file has problems. Nothing goes to stdout before the inputs
 //! are known to be valid, so a failed run never leaves half a table behind.
 
-use std::io::{self, BufWriter, Write};
+use std::io::{self, BufWriter, IsTerminal, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::time::{Duration, Instant};
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use thiserror::Error;
@@ -16,9 +17,7 @@ use thiserror::Error;
 use crate::curves::{self, RangeError, Samples, Spacing};
 use crate::fit::{self, FitError};
 use crate::model::inputs::{Inputs, Model};
-use crate::model::params::{
-    BeamParam, Domain, ModelKind, ParamError, Unit, compact_number, parse_number,
-};
+use crate::model::params::{BeamParam, Compact, Domain, ModelKind, ParamError, Unit, parse_number};
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
@@ -282,7 +281,7 @@ pub enum CliError {
         flags: [&'static str; 3],
     },
     /// A flag that is not a model parameter, out of its range.
-    #[error("invalid {flag} = {}: {allowed}", compact_number(*value))]
+    #[error("invalid {flag} = {}: {allowed}", Compact(*value))]
     Flag {
         /// The flag.
         flag: &'static str,
@@ -292,7 +291,7 @@ pub enum CliError {
         allowed: String,
     },
     /// A preset of the other model.
-    #[error("preset '{preset}' is a {found} preset; `microslip {wanted}` needs a {wanted} preset")]
+    #[error("preset '{preset}' is a {found} preset; `microslip {command}` needs a {wanted} preset")]
     WrongModel {
         /// The preset.
         preset: String,
@@ -300,6 +299,8 @@ pub enum CliError {
         found: ModelKind,
         /// The model the command needs.
         wanted: ModelKind,
+        /// The command, as typed after `microslip` (e.g. `fit beam`).
+        command: &'static str,
     },
     /// The cross-check found errors above tolerance (already reported on stdout).
     #[error("{0} of the quantities checked exceed the tolerance")]
@@ -351,7 +352,7 @@ pub fn main() -> ExitCode {
         return match crate::tui::run(cli.charset, cli.preset.as_deref(), cli.data.clone()) {
             Ok(exit) => ExitCode::from(exit.code()),
             Err(error) => {
-                eprintln!("microslip: {error}");
+                print_error(&error.to_string());
                 ExitCode::from(2)
             }
         };
@@ -363,10 +364,17 @@ pub fn main() -> ExitCode {
         // `microslip sweep ... | head`: the reader left; that is not an error.
         Err(CliError::Output(e)) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("microslip: {error}");
+            print_error(&error.to_string());
             ExitCode::from(error.exit_code())
         }
     }
+}
+
+/// The one error line on stderr. Errors echo what users gave (preset names, paths, values, CSV
+/// headers), so the whole line is sanitized here, once, at the edge: a control character in any of
+/// them is shown escaped instead of reaching the terminal.
+fn print_error(message: &str) {
+    eprintln!("microslip: {}", report::sanitize(message));
 }
 
 /// Help and version go to stdout as clap writes them; every other parse error becomes one line.
@@ -376,8 +384,18 @@ fn report_clap_error(error: &clap::Error) -> ExitCode {
         error.kind(),
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
     ) {
-        let _ = error.print();
-        return ExitCode::SUCCESS;
+        // Written like any other output: a full disk or a closed terminal is an error, a reader
+        // that left (`microslip --help | head -3`) is not.
+        let written = error.print().and_then(|()| io::stdout().flush());
+        return match written {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+            Err(e) => {
+                let error = CliError::Output(e);
+                print_error(&error.to_string());
+                ExitCode::from(error.exit_code())
+            }
+        };
     }
     let rendered = error.render().to_string();
     let first_block: Vec<&str> = rendered
@@ -387,7 +405,7 @@ fn report_clap_error(error: &clap::Error) -> ExitCode {
         .collect();
     let line = first_block.join(" ");
     let line = line.strip_prefix("error: ").unwrap_or(&line);
-    eprintln!("microslip: {line} (see --help)");
+    print_error(&format!("{line} (see --help)"));
     ExitCode::from(2)
 }
 
@@ -396,7 +414,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
     match &cli.command {
         None | Some(Command::Report) => out.write_all(report::paper_report().as_bytes())?,
         Some(Command::Beam(args)) => {
-            let (name, model) = load(&args.inputs, ModelKind::Beam)?;
+            let (name, model) = load(&args.inputs, ModelKind::Beam, "beam")?;
             if let Model::Beam { beams, force } = model {
                 match args.format {
                     ReportFormat::Text => {
@@ -407,7 +425,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             }
         }
         Some(Command::Plate(args)) => {
-            let (name, model) = load(&args.inputs, ModelKind::Plate)?;
+            let (name, model) = load(&args.inputs, ModelKind::Plate, "plate")?;
             if let Model::Plate(plate) = model {
                 match args.format {
                     ReportFormat::Text => out.write_all(text::plate(&name, &plate).as_bytes())?,
@@ -422,7 +440,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             format,
         })) => {
-            let (beams, forces) = beams_over_forces(inputs, *from, *to, *points)?;
+            let (beams, forces) = beams_over_forces(inputs, *from, *to, *points, "sweep beam")?;
             let rows = curves::beam_force_sweep(beams, forces).map_err(force_range_error)?;
             write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
         }
@@ -445,7 +463,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             };
             let samples = curves::stiffness_samples(*kt_from, *kt_to, *points, spacing)
                 .map_err(range_error)?;
-            let (_, model) = load(inputs, ModelKind::Plate)?;
+            let (_, model) = load(inputs, ModelKind::Plate, "sweep plate")?;
             if let Model::Plate(plate) = model {
                 let rows = curves::plate_kt_sweep(plate, samples).map_err(range_error)?;
                 write_table(out, *format, rows.map(|r| PlateRow::from(&r)))?;
@@ -477,7 +495,8 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             format,
         })) => {
-            let (beams, amplitudes) = beams_over_forces(inputs, *from, *to, *points)?;
+            let (beams, amplitudes) =
+                beams_over_forces(inputs, *from, *to, *points, "sweep cycle")?;
             let rows = curves::cycle_sweep(beams, amplitudes).map_err(force_range_error)?;
             write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
         }
@@ -500,15 +519,17 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
 }
 
 /// The twin beams of `inputs` and a force range `--from`, `--to`, `--points` (a sweep over F or
-/// over the cycle amplitude F_a): the range is checked before the preset is read.
+/// over the cycle amplitude F_a): the range is checked before the preset is read. `command` names
+/// the subcommand in errors.
 fn beams_over_forces(
     inputs: &InputArgs,
     from: f64,
     to: f64,
     points: u64,
+    command: &'static str,
 ) -> Result<(TwinBeams, Samples), CliError> {
     let forces = curves::force_samples(from, to, points).map_err(force_range_error)?;
-    match load(inputs, ModelKind::Beam)? {
+    match load(inputs, ModelKind::Beam, command)? {
         (_, Model::Beam { beams, .. }) => Ok((beams, forces)),
         // `load` refuses a preset of the other model with `WrongModel`.
         (_, Model::Plate(_)) => unreachable!("load(.., Beam) returned a plate"),
@@ -524,7 +545,12 @@ fn force_range_error(error: RangeError) -> CliError {
 }
 
 /// Resolves the preset (default: the paper's data set of `wanted`), applies `--set`, validates.
-fn load(args: &InputArgs, wanted: ModelKind) -> Result<(String, Model), CliError> {
+/// `command` (as typed after `microslip`) names the command when the preset is of the other model.
+fn load(
+    args: &InputArgs,
+    wanted: ModelKind,
+    command: &'static str,
+) -> Result<(String, Model), CliError> {
     let (name, preset) = resolve_preset(args, wanted)?;
     if preset.inputs.kind() != wanted {
         let spec = args.preset.clone().unwrap_or_default();
@@ -532,6 +558,7 @@ fn load(args: &InputArgs, wanted: ModelKind) -> Result<(String, Model), CliError
             preset: spec,
             found: preset.inputs.kind(),
             wanted,
+            command,
         });
     }
     apply_and_validate(args, name, preset)
@@ -593,7 +620,7 @@ fn run_fit(
     format: ReportFormat,
 ) -> Result<(), CliError> {
     let (fixed_mu, fixed_kt) = parse_fixed(fixed)?;
-    let (name, model) = load(inputs, ModelKind::Beam)?;
+    let (name, model) = load(inputs, ModelKind::Beam, "fit beam")?;
     let Model::Beam { beams, .. } = model else {
         return Ok(());
     };
@@ -601,9 +628,25 @@ fn run_fit(
         path: path.display().to_string(),
         reason,
     };
-    let text = std::fs::read_to_string(path).map_err(|e| data_error(e.to_string()))?;
-    let data = fit::data::parse(&text).map_err(|e| data_error(e.to_string()))?;
-    let result = fit::fit_twin_beams(beams.params(), &data, fixed_mu, fixed_kt)?;
+    let mut progress = ProgressLine::new(io::stderr(), io::stderr().is_terminal());
+    let contents = fit::data::read_text(path).map_err(|e| data_error(e.to_string()))?;
+    let data = fit::data::parse_with_progress(&contents, &mut |done, total| {
+        progress.update(Instant::now(), || text::reading_progress(done, total))
+    });
+    drop(contents);
+    let data = match data {
+        Ok(data) => data,
+        Err(e) => {
+            progress.finish();
+            return Err(data_error(e.to_string()));
+        }
+    };
+    let result =
+        fit::fit_twin_beams_with_progress(beams.params(), &data, fixed_mu, fixed_kt, &mut |p| {
+            progress.update(Instant::now(), || text::fit_progress(&p))
+        });
+    progress.finish();
+    let result = result?;
     match format {
         ReportFormat::Text => out.write_all(
             text::fit(&path.display().to_string(), &name, &beams.params(), &result).as_bytes(),
@@ -613,6 +656,59 @@ fn run_fit(
         }
     }
     Ok(())
+}
+
+/// A long fit's progress (reading, then fitting) on stderr: shown only when stderr is a terminal (scripts and pipes see
+/// nothing) and once the command has run for [`ProgressLine::AFTER`]; one line rewritten in place
+/// at most every [`ProgressLine::EVERY`], erased when the fit ends so that the report starts clean.
+struct ProgressLine<W: Write> {
+    out: W,
+    enabled: bool,
+    started: Instant,
+    last: Option<Instant>,
+    shown: bool,
+}
+
+impl<W: Write> ProgressLine<W> {
+    /// Quiet for this long: short fits print nothing.
+    const AFTER: Duration = Duration::from_secs(1);
+    /// Fastest refresh.
+    const EVERY: Duration = Duration::from_millis(100);
+
+    fn new(out: W, enabled: bool) -> Self {
+        ProgressLine {
+            out,
+            enabled,
+            started: Instant::now(),
+            last: None,
+            shown: false,
+        }
+    }
+
+    /// Shows `message()` if it is time to; the message is only built then.
+    fn update(&mut self, now: Instant, message: impl FnOnce() -> String) {
+        if !self.enabled
+            || now.saturating_duration_since(self.started) < Self::AFTER
+            || self
+                .last
+                .is_some_and(|last| now.saturating_duration_since(last) < Self::EVERY)
+        {
+            return;
+        }
+        self.last = Some(now);
+        self.shown = true;
+        // Carriage return and erase-line: the line is rewritten in place. A progress line is
+        // best-effort: a failed write must not fail the fit.
+        let _ = write!(self.out, "\r\x1b[2Kmicroslip: {}", message());
+        let _ = self.out.flush();
+    }
+
+    fn finish(&mut self) {
+        if self.shown {
+            let _ = write!(self.out, "\r\x1b[2K");
+            let _ = self.out.flush();
+        }
+    }
 }
 
 /// Checks a flag that is not a model parameter against `domain`.
@@ -642,7 +738,7 @@ fn run_cycle(
         flags: ["", "", "--points"],
     };
     curves::check_points(points).map_err(points_error)?;
-    let (name, model) = load(inputs, ModelKind::Beam)?;
+    let (name, model) = load(inputs, ModelKind::Beam, "cycle")?;
     let Model::Beam { beams, .. } = model else {
         return Ok(());
     };
@@ -729,6 +825,9 @@ fn run_verify(
 
 fn check(out: &mut impl Write, files: &[PathBuf]) -> Result<(), CliError> {
     let mut failed = 0;
+    // Paths, descriptions and the values quoted in problems come from users: every line is
+    // sanitized before it reaches the terminal.
+    let mut say = |line: String| writeln!(out, "{}", report::sanitize(&line));
     for path in files {
         match preset::store::load(path) {
             Ok(p) => {
@@ -740,19 +839,27 @@ fn check(out: &mut impl Write, files: &[PathBuf]) -> Result<(), CliError> {
                 } else {
                     &p.description
                 };
-                writeln!(
-                    out,
+                say(format!(
                     "{}: ok ({} preset: {description})",
                     path.display(),
                     p.inputs.kind()
-                )?;
+                ))?;
             }
             Err(problems) => {
                 failed += 1;
                 for problem in problems {
-                    writeln!(out, "{}: {problem}", path.display())?;
+                    say(format!("{}: {problem}", path.display()))?;
                 }
             }
+        }
+        // A warning, not a problem: the file is fine, only its name loses to a bundled preset.
+        if let Some(name) = path.file_stem().and_then(|s| s.to_str())
+            && preset::is_bundled(name)
+        {
+            let warning = PresetError::Shadowed {
+                name: name.to_string(),
+            };
+            say(format!("{}: warning: {warning}", path.display()))?;
         }
     }
     if failed > 0 {
@@ -770,5 +877,50 @@ mod tests {
     #[test]
     fn clap_definition_is_consistent() {
         Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn fit_progress_shows_after_a_second_at_most_ten_times_a_second_and_is_erased() {
+        let grid = |done| fit::Progress::Bracket {
+            done,
+            total: 784,
+            points: 1024,
+        };
+        let mut line = ProgressLine::new(Vec::new(), true);
+        let t0 = line.started;
+        let show = |p: fit::Progress| move || text::fit_progress(&p);
+        line.update(t0 + Duration::from_millis(999), show(grid(1)));
+        assert!(line.out.is_empty(), "nothing within the first second");
+        line.update(t0 + Duration::from_millis(1000), show(grid(400)));
+        line.update(t0 + Duration::from_millis(1050), show(grid(401)));
+        line.update(
+            t0 + Duration::from_millis(1100),
+            show(fit::Progress::Refine {
+                iteration: 2,
+                points: 1_000_000,
+                pass: fit::Pass::Derivatives,
+                done: 250_000,
+            }),
+        );
+        line.finish();
+        let text = String::from_utf8(line.out).unwrap();
+        assert_eq!(
+            text,
+            "\r\x1b[2Kmicroslip: fitting: grid search for a start on 1024 measurements, 51%\
+             \r\x1b[2Kmicroslip: fitting: refining on 1000000 measurements, iteration 2: derivatives 25%\
+             \r\x1b[2K"
+        );
+        // Not a terminal: never anything, not even the erasing.
+        let mut quiet = ProgressLine::new(Vec::new(), false);
+        let t0 = quiet.started;
+        quiet.update(t0 + Duration::from_secs(5), || {
+            text::reading_progress(50, 100)
+        });
+        quiet.finish();
+        assert!(quiet.out.is_empty());
+        // A quick fit that showed nothing erases nothing.
+        let mut quick = ProgressLine::new(Vec::new(), true);
+        quick.finish();
+        assert!(quick.out.is_empty());
     }
 }

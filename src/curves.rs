@@ -9,7 +9,7 @@ use thiserror::Error;
 use crate::model::code_defaults::CodeDefault;
 use crate::model::cycle::{Cycle, Law};
 use crate::model::inputs::Model;
-use crate::model::params::{BeamParam, Param, PlateParam, compact_number};
+use crate::model::params::{BeamParam, Compact, Param, PlateParam};
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
 /// Largest number of points a sweep (or a branch of a cycle's loop) accepts: beyond it a request is
@@ -59,8 +59,8 @@ impl RangeError {
         match self {
             RangeError::Reversed { from, to } => format!(
                 "invalid range: {start} = {} is above {end} = {}; the start must not exceed the end",
-                compact_number(*from),
-                compact_number(*to)
+                Compact(*from),
+                Compact(*to)
             ),
             RangeError::Points(n) => {
                 format!("invalid {points} = {n}: must be an integer in [2, {MAX_POINTS}]")
@@ -74,7 +74,7 @@ impl RangeError {
                     RangeEnd::Start => start,
                     RangeEnd::End => end,
                 };
-                format!("invalid {name} = {}: {allowed}", compact_number(*value))
+                format!("invalid {name} = {}: {allowed}", Compact(*value))
             }
         }
     }

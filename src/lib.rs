@@ -21,6 +21,8 @@
 //! - [`curves`]: sweeps, the hysteresis loop and the K_T comparison, computed once for every output.
 //! - [`fit`]: identification of mu and K_T, with structured evidence (no prose).
 //! - [`preset`]: TOML parse and write, and the file store (atomic, no clobber).
+//! - [`file`]: reading a file a user named, with a size cap (presets, measurements); below
+//!   `preset` and `fit`, above nothing.
 //! - [`report`]: every format, from one serde row per table; what views exist ([`report::view`]).
 //! - `cli` and `tui` (behind the default feature `app`, hidden from these docs): thin layers that
 //!   parse flags or keys, call the library and hand the results to `report` or the screen. With
@@ -44,6 +46,7 @@
 #[doc(hidden)]
 pub mod cli;
 pub mod curves;
+pub mod file;
 pub mod fit;
 pub mod model;
 pub mod numeric;

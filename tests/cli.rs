@@ -833,3 +833,415 @@ fn kt_candidates_outside_the_domain_show_their_value_and_why() {
         "invalid KT = 5e-7: must be in [1e-6, 1e12] MPa/mm"
     );
 }
+
+#[cfg(target_os = "linux")]
+#[test]
+fn endless_inputs_stop_at_the_cap_with_bounded_memory() {
+    // `check` and `--preset` read at most 64 KiB of an endless device.
+    let output = microslip().args(["check", "/dev/zero"]).output().unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert_eq!(
+        text,
+        "/dev/zero: cannot read /dev/zero: file is larger than the 64 KiB limit for a preset\n"
+    );
+    let stderr = failure(&["beam", "--preset", "/dev/zero"], 2);
+    assert!(
+        stderr.contains("cannot read /dev/zero: file is larger than the 64 KiB limit for a preset"),
+        "{stderr}"
+    );
+    // `fit` reads at most 256 MiB, here under a 1 GiB address-space limit: unbounded reading
+    // would abort on a failed allocation instead of exiting 2 with the limit.
+    let output = std::process::Command::new("sh")
+        .args([
+            "-c",
+            "ulimit -v 1048576 && exec \"$0\" \"$@\"",
+            env!("CARGO_BIN_EXE_microslip"),
+            "fit",
+            "beam",
+            "/dev/zero",
+        ])
+        .env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert_eq!(
+        stderr,
+        "microslip: /dev/zero: file is larger than the 256 MiB limit for a measurement file\n"
+    );
+}
+
+#[cfg(unix)]
+#[test]
+fn a_fifo_fed_forever_is_refused_at_the_cap() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("endless.toml");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let writer_path = fifo.clone();
+    // Writes until the reader goes away (then the write fails and the thread ends).
+    let writer = std::thread::spawn(move || {
+        use std::io::Write;
+        let mut pipe = std::fs::OpenOptions::new()
+            .write(true)
+            .open(writer_path)
+            .unwrap();
+        let line = b"# a comment that never ends\n".repeat(100);
+        while pipe.write_all(&line).is_ok() {}
+    });
+    let output = microslip().arg("check").arg(&fifo).output().unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        text.ends_with(": file is larger than the 64 KiB limit for a preset\n"),
+        "{text}"
+    );
+    writer.join().unwrap();
+}
+
+#[test]
+fn oversized_files_are_refused_by_size_without_reading_them() {
+    let dir = tempfile::tempdir().unwrap();
+    // Sparse files: the size is enough to refuse them.
+    let preset = dir.path().join("big.toml");
+    std::fs::File::create(&preset)
+        .unwrap()
+        .set_len(64 * 1024 + 1)
+        .unwrap();
+    let data = dir.path().join("big.csv");
+    std::fs::File::create(&data)
+        .unwrap()
+        .set_len((256 << 20) + 1)
+        .unwrap();
+    let stderr = failure(&["beam", "--preset", preset.to_str().unwrap()], 2);
+    assert!(stderr.contains("larger than the 64 KiB limit"), "{stderr}");
+    let stderr = failure(&["fit", "beam", data.to_str().unwrap()], 2);
+    assert!(
+        stderr.ends_with("big.csv: file is larger than the 256 MiB limit for a measurement file\n"),
+        "{stderr}"
+    );
+}
+
+/// True when `text` holds a control character other than a line feed, or a bidirectional control.
+fn has_raw_control(text: &str) -> bool {
+    text.chars()
+        .any(|c| (c.is_control() && c != '\n') || ('\u{202a}'..='\u{202e}').contains(&c))
+}
+
+#[test]
+fn control_characters_from_users_never_reach_the_terminal() {
+    let dir = tempfile::tempdir().unwrap();
+    let presets = dir.path().join("microslip").join("presets");
+    std::fs::create_dir_all(&presets).unwrap();
+    let evil = "model = \"beam\"\ndescription = \"bell \\u0007 clear \\u001b[2J\\nfake \\u009b31m \\u202e\"\n";
+    std::fs::write(presets.join("evil\u{1b}[31m.toml"), evil).unwrap();
+    let run = |args: &[&str]| {
+        microslip()
+            .env("XDG_CONFIG_HOME", dir.path())
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    // The listing.
+    let output = run(&["presets"]);
+    assert!(output.status.success());
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(!has_raw_control(&text), "{text:?}");
+    assert!(
+        text.contains("evil\\x1b[31m")
+            && text.contains("bell \\x07 clear \\x1b[2J\\nfake \\u{9b}31m \\u{202e}"),
+        "{text}"
+    );
+    // check: the description and the path.
+    let file = presets.join("evil\u{1b}[31m.toml");
+    let output = microslip().arg("check").arg(&file).output().unwrap();
+    assert!(output.status.success());
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(!has_raw_control(&text), "{text:?}");
+    assert!(
+        text.contains("evil\\x1b[31m.toml: ok (beam preset: bell \\x07"),
+        "{text}"
+    );
+    // check: a key quoted in a problem.
+    let bad = dir.path().join("bad.toml");
+    std::fs::write(&bad, "model = \"beam\"\n\"K\\u001b]0;owned\\u0007\" = 5\n").unwrap();
+    let output = microslip().arg("check").arg(&bad).output().unwrap();
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(!has_raw_control(&text), "{text:?}");
+    assert!(text.contains("unknown key 'K\\x1b]0;owned\\x07'"), "{text}");
+    // Reports name the preset; JSON escapes what a terminal would obey.
+    let name = "evil\u{1b}[31m";
+    let output = run(&["beam", "--preset", name]);
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        output.status.success() && !has_raw_control(&text),
+        "{text:?}"
+    );
+    assert!(text.contains("preset evil\\x1b[31m"), "{text}");
+    let output = run(&["beam", "--preset", name, "--format", "json"]);
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(!has_raw_control(&text), "{text:?}");
+    let json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(json["preset"], name);
+    // Errors echo names, paths, values and CSV headers: one sanitized line.
+    for (args, expected) in [
+        (
+            vec!["beam", "--preset", "nope\u{1b}[2J"],
+            "no preset named 'nope\\x1b[2J'",
+        ),
+        (
+            vec!["beam", "--set", "KT=\u{7}\u{1b}[5m"],
+            "invalid value '\\x07\\x1b[5m' for KT",
+        ),
+        (vec!["bogus\u{7}\u{9b}x"], "unrecognized subcommand 'bogus"),
+        (
+            vec!["beam", "--preset", "/nonexistent/\u{9b}x.toml"],
+            "cannot read /nonexistent/\\u{9b}x.toml",
+        ),
+    ] {
+        let stderr = failure(&args, 2);
+        assert!(!has_raw_control(&stderr), "{stderr:?}");
+        assert!(stderr.contains(expected), "{args:?}: {stderr}");
+    }
+    let csv = dir.path().join("header.csv");
+    std::fs::write(&csv, "F_N,\u{1b}[31mw\n1,2\n").unwrap();
+    let stderr = failure(&["fit", "beam", csv.to_str().unwrap()], 2);
+    assert!(!has_raw_control(&stderr), "{stderr:?}");
+    assert!(stderr.contains("(found: F_N, \\x1b[31mw)"), "{stderr}");
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn help_and_version_on_a_full_disk_fail_with_a_message() {
+    let to_full_disk = |arg: &str| {
+        let full = std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap();
+        std::process::Command::new(env!("CARGO_BIN_EXE_microslip"))
+            .arg(arg)
+            .env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"))
+            .stdout(full)
+            .output()
+            .unwrap()
+    };
+    for flag in ["--help", "--version", "-h", "-V"] {
+        let output = to_full_disk(flag);
+        let stderr = String::from_utf8(output.stderr).unwrap();
+        assert_eq!(output.status.code(), Some(1), "{flag}: {stderr}");
+        assert!(
+            stderr.starts_with("microslip: cannot write output: No space left on device"),
+            "{flag}: {stderr}"
+        );
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    }
+    // Other output to a full disk fails the same way.
+    let output = to_full_disk("report");
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        String::from_utf8(output.stderr)
+            .unwrap()
+            .contains("No space left on device")
+    );
+}
+
+#[test]
+fn huge_and_tiny_values_are_echoed_as_typed() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("neg.csv");
+    std::fs::write(&data, "F_N,w_mm\n-1e308,0.1\n").unwrap();
+    let unordered = dir.path().join("unordered.csv");
+    // (Forces above 1e12 N are now outside the domain: the order check is shown within it.)
+    std::fs::write(&unordered, "F_N,w_mm\n1e12,0.1\n2.5e-7,0.2\n").unwrap();
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["beam", "--set", "L=-1e308"],
+            "invalid L = -1e308: must be > 0 and finite (mm)",
+        ),
+        (
+            &["cycle", "--amplitude", "-1e308"],
+            "invalid --amplitude = -1e308: must be >= 0 and finite (N)",
+        ),
+        (
+            // (`=`: clap takes `-1e-300` alone for a flag; a negative exponent is not a number to it.)
+            &["kt", "--element-size=-1e-300"],
+            "invalid --element-size = -1e-300",
+        ),
+        (
+            &[
+                "sweep", "beam", "--from", "1e12", "--to", "2.5e-7", "--points", "3",
+            ],
+            // (1e308 is now refused first, as outside the force domain, echoed as "1e308" too.)
+            "--from = 1e12 is above --to = 2.5e-7",
+        ),
+        (
+            &[
+                "sweep", "beam", "--from", "-1e308", "--to", "5", "--points", "3",
+            ],
+            "invalid --from = -1e308",
+        ),
+        (
+            &["fit", "beam", data.to_str().unwrap()],
+            "line 2: F_N = -1e308 is negative",
+        ),
+        (
+            &["fit", "beam", unordered.to_str().unwrap()],
+            "line 3: F_N = 2.5e-7 is not above the previous 1e12",
+        ),
+    ];
+    for (args, expected) in cases {
+        let stderr = failure(args, 2);
+        assert!(stderr.contains(expected), "{args:?}: {stderr}");
+        assert!(stderr.len() < 200, "{args:?}: {stderr}");
+    }
+}
+
+#[test]
+fn check_says_a_numeric_description_must_be_a_string() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("numeric.toml");
+    std::fs::write(&file, "model = \"beam\"\ndescription = 42\n").unwrap();
+    let output = microslip().arg("check").arg(&file).output().unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        text.contains(
+            "numeric.toml: line 2: invalid value '42' for description: must be a string, in double quotes"
+        ),
+        "{text}"
+    );
+    assert!(!text.contains("finite number"), "{text}");
+}
+
+#[test]
+fn a_preset_of_the_other_model_names_the_command_that_was_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("d.csv");
+    std::fs::write(&data, "F_N,w_mm\n1,0.001\n2,0.002\n3,0.003\n").unwrap();
+    let data = data.to_str().unwrap();
+    let cases: &[(&[&str], &str)] = &[
+        (&["beam", "--preset", "paper-plate"], "`microslip beam`"),
+        (&["plate", "--preset", "paper-beams"], "`microslip plate`"),
+        (
+            &["fit", "beam", data, "--preset", "paper-plate"],
+            "`microslip fit beam`",
+        ),
+        (
+            &["cycle", "--amplitude", "100", "--preset", "paper-plate"],
+            "`microslip cycle`",
+        ),
+        (
+            &[
+                "sweep",
+                "beam",
+                "--from",
+                "0",
+                "--to",
+                "1",
+                "--points",
+                "2",
+                "--preset",
+                "paper-plate",
+            ],
+            "`microslip sweep beam`",
+        ),
+        (
+            &[
+                "sweep",
+                "cycle",
+                "--from",
+                "0",
+                "--to",
+                "1",
+                "--points",
+                "2",
+                "--preset",
+                "paper-plate",
+            ],
+            "`microslip sweep cycle`",
+        ),
+        (
+            &[
+                "sweep",
+                "plate",
+                "--kt-from",
+                "1",
+                "--kt-to",
+                "2",
+                "--points",
+                "2",
+                "--preset",
+                "paper-beams",
+            ],
+            "`microslip sweep plate`",
+        ),
+    ];
+    for (args, command) in cases {
+        let stderr = failure(args, 2);
+        let wanted = if command.contains("plate") {
+            "plate"
+        } else {
+            "beam"
+        };
+        let expected = format!("{command} needs a {wanted} preset");
+        assert!(stderr.contains(&expected), "{args:?}: {stderr}");
+    }
+}
+
+#[test]
+fn bundled_names_win_and_a_user_file_of_that_name_gets_a_warning() {
+    let dir = tempfile::tempdir().unwrap();
+    let presets = dir.path().join("microslip").join("presets");
+    std::fs::create_dir_all(&presets).unwrap();
+    let file = presets.join("paper-beams.toml");
+    std::fs::write(&file, "model = \"beam\"\ndescription = \"mine\"\nKT = 5\n").unwrap();
+    let run = |args: &[&str]| {
+        microslip()
+            .env("XDG_CONFIG_HOME", dir.path())
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    // --preset NAME: the bundled one.
+    let output = run(&["beam", "--preset", "paper-beams", "--format", "json"]);
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(json["inputs"]["KT_MPa_per_mm"], 600.0);
+    // The listing warns.
+    let text = String::from_utf8(run(&["presets"]).stdout).unwrap();
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("paper-beams ") && l.contains(" user "))
+        .unwrap_or_else(|| panic!("no user row in\n{text}"));
+    assert!(
+        line.contains("WARNING: named like the bundled preset 'paper-beams', which wins"),
+        "{line}"
+    );
+    // check: the file is valid (exit 0) but named like a bundled preset.
+    let output = microslip().arg("check").arg(&file).output().unwrap();
+    assert!(output.status.success());
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        text.contains("paper-beams.toml: ok (beam preset: mine)"),
+        "{text}"
+    );
+    assert!(
+        text.contains(
+            "paper-beams.toml: warning: named like the bundled preset 'paper-beams', which wins"
+        ),
+        "{text}"
+    );
+    // By path it still loads.
+    let output = run(&[
+        "beam",
+        "--preset",
+        file.to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(json["inputs"]["KT_MPa_per_mm"], 5.0);
+}

@@ -219,3 +219,175 @@ fn cyclic_loading_charts() {
     app.update(Action::NextChart);
     insta::assert_snapshot!("dissipation_vs_amplitude", screen(&app, 100, 30));
 }
+
+#[test]
+fn the_d_key_refuses_a_measurement_file_above_the_cap() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("huge.csv");
+    // Sparse: refused by its size, never read.
+    std::fs::File::create(&path)
+        .unwrap()
+        .set_len((256 << 20) + 1)
+        .unwrap();
+    let mut app = app();
+    app.update(Action::LoadData);
+    for c in path.to_str().unwrap().chars() {
+        app.update(Action::Input(c));
+    }
+    app.update(Action::Commit);
+    let message = app.message().expect("a message");
+    assert!(message.is_error);
+    assert!(
+        message
+            .text
+            .ends_with("huge.csv: file is larger than the 256 MiB limit for a measurement file"),
+        "{}",
+        message.text
+    );
+    assert!(app.measurements().is_none());
+}
+
+#[test]
+fn the_preset_picker_shows_control_characters_escaped() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("evil\u{1b}[2J.toml"),
+        "model = \"beam\"\ndescription = \"bell \\u0007 \\u001b]0;title\\u0007 \\u202e\"\n",
+    )
+    .unwrap();
+    let mut app = App::new(AppOptions {
+        theme: Theme {
+            charset: Charset::Ascii,
+            color: false,
+        },
+        preset: preset::resolve("paper-beams").unwrap(),
+        user_dir: Some(dir.path().to_path_buf()),
+        data: None,
+    });
+    app.update(Action::OpenPresets);
+    let text = screen(&app, 100, 30);
+    assert!(
+        text.contains(r"evil\x1b[2J") && text.contains(r"bell \x07 \x1b]0;title\x07 \u{202e}"),
+        "{text}"
+    );
+    assert!(!text.contains('\u{202e}'));
+}
+
+#[test]
+fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("paper-beams.toml"),
+        "model = \"beam\"\nKT = 5\n",
+    )
+    .unwrap();
+    let mut app = App::new(AppOptions {
+        theme: Theme {
+            charset: Charset::Ascii,
+            color: false,
+        },
+        preset: preset::resolve("paper-beams-soft").unwrap(),
+        user_dir: Some(dir.path().to_path_buf()),
+        data: None,
+    });
+    app.update(Action::OpenPresets);
+    // Bundled: paper-beams, paper-beams-soft (selected), paper-plate; then the user's paper-beams.
+    app.update(Action::Next);
+    app.update(Action::Next);
+    let text = screen(&app, 120, 30);
+    assert!(
+        text.contains("> paper-beams        ?     user    WARNING: shadowed by the bundled one"),
+        "{text}"
+    );
+    app.update(Action::Commit);
+    assert_eq!(app.preset_name(), "paper-beams-soft");
+    let message = app.message().unwrap();
+    assert!(message.is_error);
+    assert!(
+        message
+            .text
+            .starts_with("cannot load paper-beams: named like the bundled preset"),
+        "{}",
+        message.text
+    );
+    // The picker stays open; picking the bundled one (first row) loads the bundled values.
+    for _ in 0..3 {
+        app.update(Action::Previous);
+    }
+    app.update(Action::Commit);
+    assert_eq!(app.preset_name(), "paper-beams");
+    assert_eq!(
+        app.inputs()
+            .get(microslip::Param::Beam(microslip::BeamParam::Stiffness)),
+        Some(600.0)
+    );
+}
+
+/// Types `path` into the `d` prompt and loads it.
+fn load_data(app: &mut App, path: &str) {
+    app.update(Action::LoadData);
+    for c in path.chars() {
+        app.update(Action::Input(c));
+    }
+    app.update(Action::Commit);
+}
+
+#[test]
+fn a_long_status_message_wraps_upwards_instead_of_being_cut() {
+    let mut app = app();
+    let path = "/nonexistent/measurements/from the bench in building 7/campaign 2031-04/\
+                specimen 12 of 40, second loading branch after the gauge reset.csv";
+    load_data(&mut app, path);
+    let text = screen(&app, 80, 24);
+    // Every word of the message is on screen, in order, across the bottom rows.
+    let bottom: Vec<&str> = text.lines().rev().take(4).collect();
+    let joined: String = bottom
+        .iter()
+        .rev()
+        .map(|l| l.trim_matches('"').trim())
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(
+        joined.contains("specimen 12 of 40, second loading branch after the gauge reset.csv: No such file or directory"),
+        "{text}"
+    );
+    insta::assert_snapshot!("long_status_message", text);
+    // Too long even for four lines: what fits, then `...`.
+    let mut app = app_with("paper-beams", Charset::Ascii, false);
+    load_data(
+        &mut app,
+        &format!("/nonexistent/{}.csv", "very long name ".repeat(30)),
+    );
+    let text = screen(&app, 80, 24);
+    let rows: Vec<&str> = text.lines().collect();
+    assert!(
+        rows[23].trim_end_matches('"').trim_end().ends_with("..."),
+        "{text}"
+    );
+    assert!(!rows[19].contains("very long"), "{text}");
+    assert!(
+        rows[20].contains("beam | paper-beams | /nonexistent/very long"),
+        "{text}"
+    );
+    // A short message again: back to one line.
+    app.update(Action::SwitchModel);
+    let text = screen(&app, 80, 24);
+    assert!(!text.contains("very long"), "{text}");
+}
+
+#[test]
+fn the_readme_shows_the_real_main_screen() {
+    let readme = include_str!("../README.md");
+    let start = readme
+        .find("```text\n┌ Twin beams")
+        .expect("the screen capture in README.md")
+        + "```text\n".len();
+    let end = start + readme[start..].find("```").unwrap();
+    let captured: Vec<&str> = readme[start..end].lines().map(str::trim_end).collect();
+    let real = screen(&app(), 80, 24);
+    let real: Vec<&str> = real
+        .lines()
+        .map(|l| l.trim_matches('"').trim_end())
+        .collect();
+    assert_eq!(captured, real);
+}

@@ -322,3 +322,66 @@ fn sigterm_sighup_and_sigint_restore_the_terminal() {
         let _ = child.wait();
     }
 }
+
+#[test]
+fn a_data_file_above_the_cap_is_refused_before_the_screen_changes() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("huge.csv");
+    // Sparse: refused by its size, never read.
+    std::fs::File::create(&data)
+        .unwrap()
+        .set_len((256 << 20) + 1)
+        .unwrap();
+    let binary = env!("CARGO_BIN_EXE_microslip");
+    let pty = native_pty_system()
+        .openpty(PtySize {
+            rows: 30,
+            cols: 100,
+            pixel_width: 0,
+            pixel_height: 0,
+        })
+        .expect("a pseudo-terminal");
+    let mut command = CommandBuilder::new("sh");
+    command.args([
+        "-c",
+        &format!("'{binary}' --data '{}'; echo EXIT=$?", data.display()),
+    ]);
+    command.env("TERM", "xterm-256color");
+    command.env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"));
+    let mut child = pty.slave.spawn_command(command).unwrap();
+    drop(pty.slave);
+    let mut reader = pty.master.try_clone_reader().unwrap();
+    let (sender, output) = mpsc::channel();
+    std::thread::spawn(move || {
+        let mut buffer = [0u8; 4096];
+        while let Ok(n) = reader.read(&mut buffer) {
+            if n == 0 || sender.send(buffer[..n].to_vec()).is_err() {
+                break;
+            }
+        }
+    });
+    let mut raw = Vec::new();
+    let start = Instant::now();
+    while !String::from_utf8_lossy(&raw).contains("EXIT=") {
+        assert!(
+            start.elapsed() < Duration::from_secs(10),
+            "no exit: {}",
+            String::from_utf8_lossy(&raw)
+        );
+        if let Ok(chunk) = output.recv_timeout(Duration::from_millis(50)) {
+            raw.extend_from_slice(&chunk);
+        }
+    }
+    let text = String::from_utf8_lossy(&raw);
+    assert!(
+        text.contains("huge.csv: file is larger than the 256 MiB limit for a measurement file"),
+        "{text}"
+    );
+    assert!(text.contains("EXIT=2"), "{text}");
+    assert!(
+        !text.contains("\u{1b}[?1049h"),
+        "the screen changed: {text}"
+    );
+    let _ = child.wait();
+    drop(pty.master);
+}

@@ -241,11 +241,7 @@ impl Domain {
     pub fn describe(self, unit: Unit) -> String {
         let range = match self {
             Domain::PoissonRatio => "[0, 0.5)".to_string(),
-            other => format!(
-                "[{}, {}]",
-                compact_number(other.min()),
-                compact_number(other.max())
-            ),
+            other => format!("[{}, {}]", bound(other.min()), bound(other.max())),
         };
         match unit {
             Unit::Dimensionless => format!("must be in {range} (dimensionless)"),
@@ -287,20 +283,47 @@ impl Domain {
     }
 }
 
-/// A number as messages show it: plain between 1e-3 and 1e6 (`-3`, `0.7`, `200`), shortest
-/// exponent form outside (`1e-7`, `1e307`, `1.25e6`), so that no message prints 300 digits.
-pub fn compact_number(value: f64) -> String {
-    let magnitude = value.abs();
-    if value.is_finite() && value != 0.0 && !(1e-3..1e6).contains(&magnitude) {
+/// A bound of a domain as range messages write it: plain between 1e-3 and 1e6 (`10`, `0.5`),
+/// exponent form outside (`1e-6`, `1e12`), as ranges are usually written.
+fn bound(value: f64) -> String {
+    if value.is_finite() && value != 0.0 && !(1e-3..1e6).contains(&value.abs()) {
         format!("{value:e}")
     } else {
         format!("{value}")
     }
 }
 
+/// A number echoed in a message, short whatever its size: as Rust's shortest round-trip form prints
+/// it (`-3`, `0.25`, `123456`) unless that is more than three characters longer than the exponent
+/// form, which is then used (`1e6`, `-1e308` rather than 309 digits, `1.5e-7`). For a number typed
+/// by a user this gives back what was typed, or its shortest equivalent.
+///
+/// # Examples
+/// ```
+/// use microslip::model::params::Compact;
+/// assert_eq!(Compact(-3.0).to_string(), "-3");
+/// assert_eq!(Compact(0.25).to_string(), "0.25");
+/// assert_eq!(Compact(-1e308).to_string(), "-1e308");
+/// assert_eq!(Compact(2.5e-9).to_string(), "2.5e-9");
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Compact(pub f64);
+
+impl fmt::Display for Compact {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let plain = self.0.to_string();
+        let exponent = format!("{:e}", self.0);
+        if plain.len() <= exponent.len() + 3 {
+            f.pad(&plain)
+        } else {
+            f.pad(&exponent)
+        }
+    }
+}
+
 /// A rejected input value: the field as users write it, the value and the allowed range.
 #[derive(Debug, Clone, PartialEq, Error)]
-#[error("invalid {field} = {}: {}", compact_number(*value), domain.refusal(*value, *unit))]
+#[error("invalid {field} = {}: {}", Compact(*value), domain.refusal(*value, *unit))]
 pub struct ParamError {
     /// Field name as the user writes it (preset key), e.g. `KT`.
     pub field: &'static str,
@@ -713,11 +736,47 @@ mod tests {
     use super::*;
 
     #[test]
+    fn echoed_numbers_are_plain_when_short_and_exponential_when_long() {
+        let shown = |x: f64| Compact(x).to_string();
+        assert_eq!(shown(-1.0), "-1");
+        assert_eq!(shown(600.0), "600");
+        assert_eq!(shown(0.3), "0.3");
+        assert_eq!(shown(100_000.0), "100000");
+        assert_eq!(shown(123_456_789.0), "123456789");
+        assert_eq!(shown(1e6), "1e6");
+        assert_eq!(shown(1e-5), "0.00001");
+        assert_eq!(shown(1e-6), "1e-6");
+        assert_eq!(shown(-1e308), "-1e308");
+        assert_eq!(shown(f64::MAX), "1.7976931348623157e308");
+        assert_eq!(shown(5e-324), "5e-324");
+        assert_eq!(shown(f64::NAN), "NaN");
+        assert_eq!(shown(f64::NEG_INFINITY), "-inf");
+        // Round trip: what is shown parses back to the same number.
+        for x in [1e308, -2.5e-17, 0.1 + 0.2, 7.0 / 3.0, 1e21, 123.456e10] {
+            assert_eq!(shown(x).parse::<f64>().unwrap(), x, "{x}");
+            assert!(shown(x).len() <= 24, "{}", shown(x));
+        }
+    }
+
+    #[test]
     fn errors_name_field_value_and_range() {
         let err = BeamParam::Length.check(-3.0).unwrap_err();
         assert_eq!(
             err.to_string(),
             "invalid L = -3: must be > 0 and finite (mm)"
+        );
+        // Huge and tiny values print as typed, not as hundreds of digits.
+        assert_eq!(
+            BeamParam::Length.check(-1e308).unwrap_err().to_string(),
+            "invalid L = -1e308: must be > 0 and finite (mm)"
+        );
+        assert_eq!(
+            BeamParam::Force.check(-1e-300).unwrap_err().to_string(),
+            "invalid F = -1e-300: must be >= 0 and finite (N)"
+        );
+        assert_eq!(
+            PlateParam::Poisson.check(0.5).unwrap_err().to_string(),
+            "invalid nu = 0.5: must be in [0, 0.5) (dimensionless)"
         );
         assert!(BeamParam::Modulus.check(f64::NAN).is_err());
         assert!(BeamParam::Modulus.check(f64::INFINITY).is_err());
@@ -801,14 +860,14 @@ mod tests {
 
     #[test]
     fn messages_print_huge_and_tiny_numbers_in_exponent_form() {
-        assert_eq!(compact_number(-3.0), "-3");
-        assert_eq!(compact_number(0.7), "0.7");
-        assert_eq!(compact_number(123_456.5), "123456.5");
-        assert_eq!(compact_number(1e6), "1e6");
-        assert_eq!(compact_number(1.25e-7), "1.25e-7");
-        assert_eq!(compact_number(1e308), "1e308");
-        assert_eq!(compact_number(0.0), "0");
-        assert_eq!(compact_number(f64::NEG_INFINITY), "-inf");
+        assert_eq!(bound(-3.0), "-3");
+        assert_eq!(bound(0.7), "0.7");
+        assert_eq!(bound(123_456.5), "123456.5");
+        assert_eq!(bound(1e6), "1e6");
+        assert_eq!(bound(1.25e-7), "1.25e-7");
+        assert_eq!(bound(1e308), "1e308");
+        assert_eq!(bound(0.0), "0");
+        assert_eq!(bound(f64::NEG_INFINITY), "-inf");
     }
 
     #[test]

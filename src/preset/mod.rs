@@ -82,6 +82,14 @@ pub enum PresetError {
         /// The text found.
         text: String,
     },
+    /// A value that is not a string where text is expected (`description`).
+    #[error("invalid value '{text}' for {key}: must be a string, in double quotes")]
+    NotAString {
+        /// The key.
+        key: String,
+        /// The text found.
+        text: String,
+    },
     /// `--set` text without `=`.
     #[error("invalid assignment '{text}': expected KEY=VALUE, e.g. KT=600")]
     Assignment {
@@ -109,6 +117,14 @@ pub enum PresetError {
     #[error("no preset named '{name}' (see `microslip presets`; a path must end in .toml)")]
     NotFound {
         /// The name asked for.
+        name: String,
+    },
+    /// A user file named like a bundled preset: the bundled one wins everywhere.
+    #[error(
+        "named like the bundled preset '{name}', which wins (`--preset {name}`, the picker): rename the file to use it by name"
+    )]
+    Shadowed {
+        /// The name both have.
         name: String,
     },
 }
@@ -175,8 +191,15 @@ pub fn paper(kind: ModelKind) -> Preset {
     })
 }
 
+/// Whether `name` is a bundled preset's. Bundled names win everywhere: `--preset NAME` and the
+/// TUI's picker load the bundled preset, a user file of that name is listed with a warning
+/// ([`Listed::shadowed`]) and `check` warns about it; saving under such a name is refused.
+pub fn is_bundled(name: &str) -> bool {
+    BUNDLED.iter().any(|(bundled, _)| *bundled == name)
+}
+
 /// Resolves `--preset`: a path when it contains a path separator or ends in `.toml`, else a bundled
-/// name, else a user preset of that name.
+/// name, else a user preset of that name (bundled names win: see [`is_bundled`]).
 ///
 /// # Errors
 /// [`PresetError::NotFound`] for an unknown name, [`PresetError::Io`] for an unreadable file, and
@@ -216,8 +239,12 @@ pub struct Listed {
     pub name: String,
     /// `bundled` or `user`.
     pub origin: &'static str,
-    /// The preset, or the first problem of an invalid file.
+    /// The preset, or the first problem of an invalid file; for a shadowed file, the warning
+    /// ([`PresetError::Shadowed`]), so that it cannot be loaded by picking it either.
     pub preset: Result<Preset, String>,
+    /// A user file named like a bundled preset, which wins ([`is_bundled`]): listed with a
+    /// warning rather than as invalid.
+    pub shadowed: bool,
 }
 
 /// Every preset a user can load: the bundled ones, then those in `user_dir` (sorted by name).
@@ -226,18 +253,29 @@ pub fn listing(user_dir: Option<&Path>) -> Vec<Listed> {
         name: p.name.clone(),
         origin: PresetSource::Bundled.origin(),
         preset: Ok(p),
+        shadowed: false,
     });
     let user = user_dir
         .map(user_presets)
         .unwrap_or_default()
         .into_iter()
-        .map(|(path, loaded)| Listed {
-            name: path
+        .map(|(path, loaded)| {
+            let name = path
                 .file_stem()
                 .map(|s| s.to_string_lossy().into_owned())
-                .unwrap_or_default(),
-            origin: PresetSource::File(path).origin(),
-            preset: loaded.map_err(|problems| problems[0].to_string()),
+                .unwrap_or_default();
+            let shadowed = is_bundled(&name);
+            let preset = if shadowed {
+                Err(PresetError::Shadowed { name: name.clone() }.to_string())
+            } else {
+                loaded.map_err(|problems| problems[0].to_string())
+            };
+            Listed {
+                name,
+                origin: PresetSource::File(path).origin(),
+                preset,
+                shadowed,
+            }
         });
     bundled.chain(user).collect()
 }
@@ -279,5 +317,40 @@ mod tests {
         );
         assert!(rows[4].preset.as_ref().unwrap_err().contains("line 2"));
         assert_eq!(listing(None).len(), BUNDLED.len());
+    }
+
+    #[test]
+    fn a_user_file_named_like_a_bundled_preset_is_listed_shadowed_and_never_loaded() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(
+            dir.path().join("paper-beams.toml"),
+            "model = \"beam\"\nKT = 1\n",
+        )
+        .unwrap();
+        let rows = listing(Some(dir.path()));
+        let user: Vec<&Listed> = rows.iter().filter(|r| r.origin == "user").collect();
+        assert_eq!(user.len(), 1);
+        assert!(user[0].shadowed);
+        assert_eq!(
+            user[0].preset,
+            Err(
+                "named like the bundled preset 'paper-beams', which wins (`--preset paper-beams`, \
+                 the picker): rename the file to use it by name"
+                    .to_string()
+            )
+        );
+        assert!(
+            rows.iter()
+                .filter(|r| r.origin == "bundled")
+                .all(|r| !r.shadowed)
+        );
+        // The one rule: by name, the bundled preset.
+        assert_eq!(
+            resolve("paper-beams")
+                .unwrap()
+                .inputs
+                .get(Param::Beam(BeamParam::Stiffness)),
+            Some(600.0)
+        );
     }
 }

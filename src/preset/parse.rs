@@ -120,7 +120,10 @@ impl Preset {
                         description = text.to_string();
                         Ok(())
                     }
-                    None => Err(not_a_number()),
+                    None => Err(PresetError::NotAString {
+                        key: name_of_key.to_string(),
+                        text: value.to_string(),
+                    }),
                 },
                 _ => kind
                     .param(name_of_key)
@@ -209,6 +212,20 @@ mod tests {
         let message = problems[0].to_string();
         assert!(message.contains("line 2, column"), "{message}");
         assert!(!message.contains('\n'));
+    }
+
+    #[test]
+    fn a_description_that_is_not_text_is_called_what_it_is() {
+        for (value, shown) in [("5", "5"), ("true", "true"), ("[1, 2]", "[1, 2]")] {
+            let text = format!("model = \"beam\"\ndescription = {value}\n");
+            let problems = Preset::parse(&text, "x", PresetSource::Bundled).unwrap_err();
+            assert_eq!(
+                problems[0].to_string(),
+                format!(
+                    "line 2: invalid value '{shown}' for description: must be a string, in double quotes"
+                )
+            );
+        }
     }
 
     #[test]

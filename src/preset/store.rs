@@ -7,7 +7,8 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
-use super::{BUNDLED, Located, Preset, PresetError, PresetSource};
+use super::{Located, Preset, PresetError, PresetSource};
+use crate::file::{Size, read_capped};
 
 /// Why a preset could not be saved.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -35,13 +36,18 @@ pub enum SaveError {
     },
 }
 
+/// Largest preset file read: 64 KiB. A preset is a dozen lines (under 1 KiB); the cap leaves room
+/// for long comments and refuses a wrong file (a log, a device such as `/dev/zero`) at once instead of
+/// reading it into memory.
+pub const MAX_PRESET_SIZE: Size = Size(64 * 1024);
+
 /// Reads and parses a preset file; the name is the file stem.
 ///
 /// # Errors
-/// [`PresetError::Io`] when the file cannot be read, else every problem of its text (see
-/// [`Preset::parse`]).
+/// [`PresetError::Io`] when the file cannot be read or is larger than [`MAX_PRESET_SIZE`], else
+/// every problem of its text (see [`Preset::parse`]).
 pub fn load(path: &Path) -> Result<Preset, Vec<Located>> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
+    let text = read_capped(path, MAX_PRESET_SIZE, "a preset").map_err(|e| {
         vec![Located {
             line: None,
             error: PresetError::Io {
@@ -81,7 +87,7 @@ pub fn save_atomic(
     if !valid {
         return Err(SaveError::BadName(name.to_string()));
     }
-    if BUNDLED.iter().any(|(bundled, _)| *bundled == name) {
+    if super::is_bundled(name) {
         return Err(SaveError::Bundled(name.to_string()));
     }
     let target = dir.join(format!("{name}.toml"));
@@ -256,6 +262,31 @@ mod tests {
         assert!(matches!(result, Err(SaveError::Io { .. })), "{result:?}");
         assert!(leftovers(dir.path()).is_empty());
         assert!(blocker.join("inside").exists());
+    }
+
+    #[test]
+    fn a_file_larger_than_the_cap_is_refused_with_the_limit() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("huge.toml");
+        let mut text = String::from("model = \"beam\"\n");
+        while text.len() <= MAX_PRESET_SIZE.0 as usize {
+            text.push_str("# a long comment line, repeated until the file is past the cap\n");
+        }
+        std::fs::write(&path, &text).unwrap();
+        let problems = load(&path).unwrap_err();
+        assert_eq!(
+            problems[0].to_string(),
+            format!(
+                "cannot read {}: file is larger than the 64 KiB limit for a preset",
+                path.display()
+            )
+        );
+        // At the cap exactly, it is read.
+        text.truncate(MAX_PRESET_SIZE.0 as usize);
+        let end = text.rfind('\n').unwrap() + 1;
+        text.truncate(end);
+        std::fs::write(&path, &text).unwrap();
+        assert!(load(&path).is_ok());
     }
 
     #[test]

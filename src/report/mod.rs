@@ -14,6 +14,7 @@ pub mod text;
 pub mod verify;
 pub mod view;
 
+use std::borrow::Cow;
 use std::fmt::Write;
 
 use crate::curves::{beam_point, plate_point};
@@ -56,6 +57,45 @@ pub fn number_with(x: f64, digits: u32) -> String {
             _ => text,
         }
     }
+}
+
+/// A user-supplied string (preset name or description, file path, a value or CSV header echoed in an
+/// error) made safe for a terminal: control characters (C0, DEL, C1) and the invisible bidirectional
+/// controls that reorder text are shown as escapes instead of acting on the terminal. Tab, line feed
+/// and carriage return become `\t`, `\n` and `\r`, other ASCII controls `\xHH` (ESC is `\x1b`, so
+/// an escape sequence is shown, not obeyed), the rest `\u{HHHH}`. Everything else, including any
+/// other Unicode, is kept. The result is one line.
+///
+/// # Examples
+/// ```
+/// use microslip::report::sanitize;
+/// assert_eq!(sanitize("plain text, déjà vu"), "plain text, déjà vu");
+/// assert_eq!(sanitize("red \u{1b}[31malert\u{7}\nnext"), "red \\x1b[31malert\\x07\\nnext");
+/// assert_eq!(sanitize("\u{9b}2J"), "\\u{9b}2J");
+/// ```
+pub fn sanitize(text: &str) -> Cow<'_, str> {
+    fn unsafe_char(c: char) -> bool {
+        c.is_control() || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+    }
+    if !text.chars().any(unsafe_char) {
+        return Cow::Borrowed(text);
+    }
+    let mut out = String::with_capacity(text.len() + 16);
+    for c in text.chars() {
+        match c {
+            '\t' => out.push_str("\\t"),
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            c if c.is_ascii_control() => {
+                let _ = write!(out, "\\x{:02x}", u32::from(c));
+            }
+            c if unsafe_char(c) => {
+                let _ = write!(out, "\\u{{{:x}}}", u32::from(c));
+            }
+            c => out.push(c),
+        }
+    }
+    Cow::Owned(out)
 }
 
 /// Tip forces of the paper report's beam table, as multiples of F_thre: stick, threshold, then slip.
@@ -201,6 +241,23 @@ mod tests {
         assert_eq!(number_with(4.843_42e-4, 3), "4.84e-4");
         assert_eq!(number_with(1e10, 3), "1e10");
         assert_eq!(number_with(240.0, 3), "240");
+    }
+
+    #[test]
+    fn sanitize_leaves_no_control_character() {
+        let nasty = "a\u{1b}]0;title\u{7}b\u{1b}[2Jc\u{0}d\u{7f}e\u{85}f\u{9b}31mg\u{202e}h\r\n\ti";
+        let clean = sanitize(nasty);
+        assert!(
+            !clean
+                .chars()
+                .any(|c| c.is_control() || ('\u{202a}'..='\u{2069}').contains(&c)),
+            "{clean:?}"
+        );
+        assert_eq!(
+            clean,
+            "a\\x1b]0;title\\x07b\\x1b[2Jc\\x00d\\x7fe\\u{85}f\\u{9b}31mg\\u{202e}h\\r\\n\\ti"
+        );
+        assert!(matches!(sanitize("paper-beams"), Cow::Borrowed(_)));
     }
 
     #[test]

@@ -4,6 +4,7 @@
 use std::fmt::Write;
 use std::path::Path;
 
+use super::sanitize;
 use crate::preset::Listed;
 
 /// The listing as text; `user_dir` is where user presets are looked for (`None`: no such folder).
@@ -15,14 +16,24 @@ pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
         "name", "model", "source"
     );
     for row in rows {
+        // Names come from file names and descriptions from the files: either may hold anything.
+        let name = sanitize(&row.name);
         let _ = match &row.preset {
             Ok(p) => writeln!(
                 out,
                 "{:<20} {:<6} {:<8} {}",
-                row.name,
+                name,
                 p.inputs.kind(),
                 row.origin,
-                p.description
+                sanitize(&p.description)
+            ),
+            Err(warning) if row.shadowed => writeln!(
+                out,
+                "{:<20} {:<6} {:<8} WARNING: {}",
+                name,
+                "?",
+                row.origin,
+                sanitize(warning),
             ),
             Err(problem) => {
                 let file = user_dir.map_or_else(
@@ -31,14 +42,22 @@ pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
                 );
                 writeln!(
                     out,
-                    "{:<20} {:<6} {:<8} INVALID: {problem} (run `microslip check {file}`)",
-                    row.name, "?", row.origin,
+                    "{:<20} {:<6} {:<8} INVALID: {} (run `microslip check {}`)",
+                    name,
+                    "?",
+                    row.origin,
+                    sanitize(problem),
+                    sanitize(&file),
                 )
             }
         };
     }
     let _ = match user_dir {
-        Some(dir) => writeln!(out, "\nuser presets: {}", dir.display()),
+        Some(dir) => writeln!(
+            out,
+            "\nuser presets: {}",
+            sanitize(&dir.display().to_string())
+        ),
         None => writeln!(
             out,
             "\nuser presets: none (no configuration directory is known for this user)"
@@ -63,5 +82,50 @@ mod tests {
         assert!(bad.contains("INVALID: line 2: invalid KT = -3"), "{bad}");
         assert!(bad.contains("microslip check "), "{bad}");
         assert!(text.ends_with(&format!("user presets: {}\n", dir.path().display())));
+    }
+
+    #[test]
+    fn a_user_file_named_like_a_bundled_preset_gets_a_warning_not_invalid() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("paper-plate.toml"), "model = \"beam\"\n").unwrap();
+        let text = listing(&preset::listing(Some(dir.path())), Some(dir.path()));
+        let shadowed: Vec<&str> = text
+            .lines()
+            .filter(|l| l.starts_with("paper-plate ") && l.contains(" user "))
+            .collect();
+        assert_eq!(shadowed.len(), 1, "{text}");
+        assert!(
+            shadowed[0]
+                .contains("WARNING: named like the bundled preset 'paper-plate', which wins"),
+            "{text}"
+        );
+        assert!(!text.contains("INVALID"), "{text}");
+    }
+
+    #[test]
+    fn control_characters_in_names_and_descriptions_are_shown_escaped() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(
+            dir.path().join("evil\u{1b}[2J.toml"),
+            "model = \"beam\"\ndescription = \"ring \\u0007 clear \\u001b[2J\\nfake line\"\n",
+        )
+        .unwrap();
+        std::fs::write(
+            dir.path().join("bad\u{9b}.toml"),
+            "model = \"beam\"\nKT = -3\n",
+        )
+        .unwrap();
+        let text = listing(&preset::listing(Some(dir.path())), Some(dir.path()));
+        assert!(
+            !text.chars().any(|c| c.is_control() && c != '\n'),
+            "{text:?}"
+        );
+        assert!(
+            text.contains("evil\\x1b[2J") && text.contains("ring \\x07 clear \\x1b[2J\\nfake line"),
+            "{text}"
+        );
+        assert!(text.contains("bad\\u{9b}"), "{text}");
+        // One line per preset, the header and the folder: the newline did not split a row.
+        assert_eq!(text.lines().count(), 1 + 3 + 2 + 2);
     }
 }

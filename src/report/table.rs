@@ -63,17 +63,93 @@ pub fn write_table<R: Serialize + Default>(
 
 /// Writes one JSON document, pretty-printed, with a final newline.
 ///
+/// Strings stay exact, and safe on a terminal: JSON escapes C0 controls anyway, and here DEL, the C1
+/// controls and the bidirectional controls are written as `\uXXXX` escapes too (the same string for
+/// any JSON reader, nothing for a terminal to obey).
+///
 /// # Errors
 /// The writer's error.
 pub fn write_json(out: &mut impl Write, value: &impl Serialize) -> io::Result<()> {
-    serde_json::to_writer_pretty(&mut *out, value).map_err(io::Error::from)?;
+    let mut serializer = serde_json::Serializer::with_formatter(
+        &mut *out,
+        TerminalSafe(serde_json::ser::PrettyFormatter::new()),
+    );
+    value.serialize(&mut serializer).map_err(io::Error::from)?;
     writeln!(out)
+}
+
+/// A JSON formatter that escapes, in strings, what `serde_json` writes raw but a terminal may act
+/// on; the layout is the wrapped formatter's.
+struct TerminalSafe<F>(F);
+
+/// Delegates formatter methods to the wrapped formatter.
+macro_rules! delegate {
+    ($($name:ident($($arg:ident: $ty:ty),*);)*) => {$(
+        fn $name<W: ?Sized + Write>(&mut self, writer: &mut W $(, $arg: $ty)*) -> io::Result<()> {
+            self.0.$name(writer $(, $arg)*)
+        }
+    )*};
+}
+
+impl<F: serde_json::ser::Formatter> serde_json::ser::Formatter for TerminalSafe<F> {
+    delegate! {
+        begin_array();
+        end_array();
+        begin_array_value(first: bool);
+        end_array_value();
+        begin_object();
+        end_object();
+        begin_object_key(first: bool);
+        end_object_key();
+        begin_object_value();
+        end_object_value();
+    }
+
+    fn write_string_fragment<W: ?Sized + Write>(
+        &mut self,
+        writer: &mut W,
+        fragment: &str,
+    ) -> io::Result<()> {
+        let mut start = 0;
+        for (i, c) in fragment.char_indices() {
+            if c.is_control() || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}') {
+                writer.write_all(&fragment.as_bytes()[start..i])?;
+                write!(writer, "\\u{:04x}", u32::from(c))?;
+                start = i + c.len_utf8();
+            }
+        }
+        writer.write_all(&fragment.as_bytes()[start..])
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::report::rows::LoopRow;
+
+    #[test]
+    fn json_strings_are_exact_and_carry_no_raw_control_character() {
+        let value = serde_json::json!({ "name": "a\u{1b}[2J\u{7f}\u{9b}\u{202e}z", "n": [1, 2] });
+        let mut out = Vec::new();
+        write_json(&mut out, &value).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        assert!(
+            !text.chars().any(|c| c.is_control() && c != '\n'),
+            "{text:?}"
+        );
+        assert!(
+            text.contains(r#""a\u001b[2J\u007f\u009b\u202ez""#),
+            "{text}"
+        );
+        let back: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(back, value);
+        // The layout is serde_json's pretty one.
+        let mut plain = serde_json::to_string_pretty(&serde_json::json!({ "n": [1, 2] })).unwrap();
+        plain.push('\n');
+        let mut ours = Vec::new();
+        write_json(&mut ours, &serde_json::json!({ "n": [1, 2] })).unwrap();
+        assert_eq!(String::from_utf8(ours).unwrap(), plain);
+    }
 
     #[test]
     fn both_formats_carry_the_same_columns_in_the_same_order() {

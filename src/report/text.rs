@@ -3,7 +3,7 @@
 
 use std::fmt::Write;
 
-use super::number;
+use super::{number, sanitize};
 use crate::curves::{Answer, CandidateSource, StiffnessComparison, beam_point, plate_point};
 use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, Unit};
@@ -78,6 +78,7 @@ impl Comparison {
 
 /// Twin-beam report at one force.
 pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
+    let preset = sanitize(preset);
     let mut out = String::new();
     let p = beams.params();
     let row = beam_point(beams, force);
@@ -131,6 +132,7 @@ pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
 
 /// Squeezed-plate report.
 pub fn plate(preset: &str, plate: &SqueezedPlate) -> String {
+    let preset = sanitize(preset);
     let mut out = String::new();
     let p = plate.params();
     let row = plate_point(plate);
@@ -180,6 +182,7 @@ pub fn plate(preset: &str, plate: &SqueezedPlate) -> String {
 /// Cyclic-loading report: both laws side by side.
 pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> String {
     use crate::model::cycle::{Cycle, Law};
+    let preset = sanitize(preset);
     let (c, r) = (
         Cycle::new(beams, Law::Coulomb, amplitude),
         Cycle::new(beams, Law::Regularized, amplitude),
@@ -283,6 +286,7 @@ pub fn fit(
     structure: &crate::TwinBeamsParams,
     result: &crate::fit::FitResult,
 ) -> String {
+    let (data, preset) = (sanitize(data), sanitize(preset));
     let mut out = String::new();
     let p = structure;
     let _ = writeln!(
@@ -356,8 +360,47 @@ fn unanswered(kt: Option<f64>) -> &'static str {
     }
 }
 
+/// One line on how far reading a measurement file got, for a progress display.
+pub fn reading_progress(done: usize, total: usize) -> String {
+    format!(
+        "reading the measurements, {}%",
+        (done as f64 / total.max(1) as f64 * 100.0) as u32
+    )
+}
+
+/// One line on how far a running fit got, for a progress display.
+pub fn fit_progress(progress: &crate::fit::Progress) -> String {
+    use crate::fit::{Pass, Progress};
+    let percent = |done: usize, total: usize| 100 * done / total.max(1);
+    match *progress {
+        Progress::Bracket {
+            done,
+            total,
+            points,
+        } => format!(
+            "fitting: grid search for a start on {points} measurements, {}%",
+            percent(done, total)
+        ),
+        Progress::Refine {
+            iteration,
+            points,
+            pass,
+            done,
+        } => format!(
+            "fitting: refining on {points} measurements, iteration {iteration}: {} {}%",
+            match pass {
+                Pass::Residuals => "residuals",
+                Pass::Derivatives => "derivatives",
+                Pass::Step => "trying a step",
+            },
+            percent(done, points)
+        ),
+    }
+}
+
 /// The K_T comparison: each candidate and what it does to the answer.
 pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> String {
+    let preset = sanitize(preset);
     let mut out = String::new();
     let element = comparison.element;
     let (mu, pressure) = {

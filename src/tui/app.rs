@@ -492,7 +492,7 @@ impl App {
 
     /// Reads a measurement file; problems go to the status line and keep the previous data.
     fn load_data(&mut self, path: &str) {
-        let points = std::fs::read_to_string(path)
+        let points = crate::fit::data::read_text(path)
             .map_err(|e| e.to_string())
             .and_then(|text| crate::fit::data::parse(&text).map_err(|e| e.to_string()));
         match points {

@@ -7,6 +7,7 @@ use ratatui::widgets::{Clear, Paragraph};
 
 use super::panes::pane;
 use crate::preset::Listed;
+use crate::report::sanitize;
 use crate::tui::app::App;
 use crate::tui::keymap::{BINDINGS, Context, GLOBAL_KEYS, context_title};
 use crate::tui::theme::Role;
@@ -73,7 +74,8 @@ pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
     frame.render_widget(Paragraph::new(right_lines), right);
 }
 
-/// The preset list: bundled first, then the user's; invalid user files are listed with their problem.
+/// The preset list: bundled first, then the user's; invalid user files are listed with their problem,
+/// and a user file named like a bundled preset (which wins) with a warning.
 pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed], selected: usize) {
     let theme = app.theme();
     let height = (entries.len() as u16 + 4).clamp(6, area.height.saturating_sub(2));
@@ -90,14 +92,22 @@ pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed]
         .skip(first)
         .take(visible)
         .map(|(i, entry)| {
+            // Names and descriptions come from users' files: shown escaped, never obeyed.
             let (model, description) = match &entry.preset {
-                Ok(p) => (p.inputs.kind().name(), p.description.clone()),
-                Err(problem) => ("?", format!("INVALID: {problem}")),
+                Ok(p) => (
+                    p.inputs.kind().name(),
+                    sanitize(&p.description).into_owned(),
+                ),
+                // Short enough for the box; Enter on it shows the whole warning.
+                Err(_) if entry.shadowed => ("?", "WARNING: shadowed by the bundled one".into()),
+                Err(problem) => ("?", format!("INVALID: {}", sanitize(problem))),
             };
             let marker = if i == selected { ">" } else { " " };
             let text = format!(
                 "{marker} {:<18} {:<5} {:<7} {description}",
-                entry.name, model, entry.origin
+                sanitize(&entry.name),
+                model,
+                entry.origin
             );
             let style = if i == selected {
                 theme.style(Role::Selected)
@@ -131,7 +141,7 @@ pub fn draw_prompt(
     let inner = block.inner(popup);
     frame.render_widget(block, popup);
     let lines = vec![
-        Line::from(format!(" {content}")),
+        Line::from(format!(" {}", sanitize(content))),
         Line::from(""),
         Line::from(Span::styled(
             format!(" {hint}"),

@@ -2,14 +2,15 @@
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
+use ratatui::style::Style;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Borders, Paragraph};
+use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
 use crate::curves::{beam_point, plate_point};
 use crate::model::inputs::Model;
 use crate::model::params::{ModelKind, Unit};
 use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
-use crate::report::number;
+use crate::report::{number, sanitize};
 use crate::tui::app::{App, Mode};
 use crate::tui::theme::Role;
 
@@ -150,12 +151,14 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
 }
 
 /// Model, preset (with `*` when modified), the last message or the typing prompt, and the two keys
-/// everyone needs.
+/// everyone needs. A message too long for the line is not cut: the status grows upwards, over the
+/// bottom of the panes, to as many as [`STATUS_MAX_LINES`] lines, wrapped at spaces; only a message
+/// longer than that ends in `...`. It shrinks back with the next message.
 pub fn draw_status(frame: &mut Frame, app: &App, area: Rect) {
     let theme = app.theme();
     let marker = if app.modified() { "*" } else { "" };
     let mut spans = vec![Span::styled(
-        format!(" {} | {}{marker} ", app.kind(), app.preset_name()),
+        format!(" {} | {}{marker} ", app.kind(), sanitize(app.preset_name())),
         theme.style(Role::Title),
     )];
     match (app.mode(), app.message()) {
@@ -173,12 +176,101 @@ pub fn draw_status(frame: &mut Frame, app: &App, area: Rect) {
             } else {
                 Role::Info
             };
+            // Messages quote paths, names and values users typed or files hold.
             spans.push(Span::styled(
-                format!("| {}", message.text),
+                format!("| {}", sanitize(&message.text)),
                 theme.style(role),
             ));
         }
         _ => spans.push(Span::styled("| ? help  q quit", theme.style(Role::Muted))),
     }
-    frame.render_widget(Paragraph::new(Line::from(spans)), area);
+    let line = Line::from(spans);
+    if line.width() <= usize::from(area.width) {
+        frame.render_widget(Paragraph::new(line), area);
+        return;
+    }
+    let room = usize::from(area.y).min(STATUS_MAX_LINES - 1) + 1;
+    let lines = wrap(&line, usize::from(area.width), room);
+    let height = lines.len() as u16;
+    let grown = Rect {
+        y: area.y + 1 - height,
+        height,
+        ..area
+    };
+    frame.render_widget(Clear, grown);
+    frame.render_widget(Paragraph::new(lines), grown);
+}
+
+/// Most lines the status may take (the status row and the rows above it).
+pub const STATUS_MAX_LINES: usize = 4;
+
+/// `line` wrapped to `width` columns at spaces (a word longer than a line is broken), keeping each
+/// character's style; at most `max_lines` lines, the last ending in `...` when text was left out.
+fn wrap(line: &Line, width: usize, max_lines: usize) -> Vec<Line<'static>> {
+    let width = width.max(4);
+    let cells: Vec<(String, Style)> = line
+        .spans
+        .iter()
+        .flat_map(|span| {
+            let style = line.style.patch(span.style);
+            span.content.chars().map(move |c| (c.to_string(), style))
+        })
+        .collect();
+    let cell_width = |cell: &(String, Style)| Span::raw(cell.0.as_str()).width();
+    // Greedy: words (runs of non-spaces, with the spaces before them) go on the current row while
+    // they fit.
+    let mut rows: Vec<Vec<(String, Style)>> = vec![Vec::new()];
+    let mut used = 0;
+    let mut i = 0;
+    while i < cells.len() {
+        let start = i;
+        while i < cells.len() && cells[i].0 == " " {
+            i += 1;
+        }
+        while i < cells.len() && cells[i].0 != " " {
+            i += 1;
+        }
+        let word = &cells[start..i];
+        let word_width: usize = word.iter().map(cell_width).sum();
+        if used > 0 && used + word_width > width {
+            rows.push(Vec::new());
+            used = 0;
+        }
+        // A row made by wrapping does not start with the spaces between words.
+        let skip = if used == 0 && rows.len() > 1 {
+            word.iter().take_while(|c| c.0 == " ").count()
+        } else {
+            0
+        };
+        for cell in &word[skip..] {
+            let w = cell_width(cell);
+            if used + w > width {
+                rows.push(Vec::new());
+                used = 0;
+            }
+            if let Some(row) = rows.last_mut() {
+                row.push(cell.clone());
+            }
+            used += w;
+        }
+    }
+    if rows.len() > max_lines {
+        rows.truncate(max_lines);
+        if let Some(last) = rows.last_mut() {
+            let style = last.last().map_or_else(Style::default, |c| c.1);
+            while !last.is_empty() && last.iter().map(cell_width).sum::<usize>() + 3 > width {
+                last.pop();
+            }
+            last.extend(std::iter::repeat_n((".".to_string(), style), 3));
+        }
+    }
+    rows.into_iter()
+        .map(|row| {
+            Line::from(
+                row.into_iter()
+                    .map(|(text, style)| Span::styled(text, style))
+                    .collect::<Vec<_>>(),
+            )
+        })
+        .collect()
 }
