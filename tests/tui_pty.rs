@@ -267,6 +267,21 @@ fn a_paste_is_text_in_the_value_field_and_never_keys() {
 }
 
 #[test]
+fn a_value_beyond_the_domain_is_refused_and_the_screen_stays_live() {
+    // Item 1 of the hardening issue: F = 1e307 used to freeze the chart drawing for good.
+    let (mut session, mut child) = start();
+    session.wait_for("Twin beams");
+    session.send("k\r1e307\r");
+    session.wait_for("invalid F = 1e307");
+    session.send("c");
+    session.wait_for("X vs F");
+    session.send("q");
+    session.wait_for("EXIT=0");
+    session.assert_restored();
+    let _ = child.wait();
+}
+
+#[test]
 fn a_hung_up_terminal_ends_the_program_within_a_second() {
     let binary = env!("CARGO_BIN_EXE_microslip");
     let pty = native_pty_system()
