@@ -42,18 +42,23 @@ impl Session {
     }
 }
 
-/// Starts `microslip` in a 100x30 pseudo-terminal under `sh`, which prints the exit code and the
-/// terminal modes (`stty -a`) once microslip has exited.
-fn start() -> (Session, Box<dyn portable_pty::Child + Send + Sync>) {
-    let binary = env!("CARGO_BIN_EXE_microslip");
-    let pty = native_pty_system()
+/// A 100x30 pseudo-terminal.
+fn open_pty() -> portable_pty::PtyPair {
+    native_pty_system()
         .openpty(PtySize {
             rows: 30,
             cols: 100,
             pixel_width: 0,
             pixel_height: 0,
         })
-        .expect("a pseudo-terminal");
+        .expect("a pseudo-terminal")
+}
+
+/// Starts `microslip` in a 100x30 pseudo-terminal under `sh`, which prints the exit code and the
+/// terminal modes (`stty -a`) once microslip has exited.
+fn start() -> (Session, Box<dyn portable_pty::Child + Send + Sync>) {
+    let binary = env!("CARGO_BIN_EXE_microslip");
+    let pty = open_pty();
     let mut command = CommandBuilder::new("sh");
     command.args([
         "-c",
@@ -284,14 +289,7 @@ fn a_value_beyond_the_domain_is_refused_and_the_screen_stays_live() {
 #[test]
 fn a_hung_up_terminal_ends_the_program_within_a_second() {
     let binary = env!("CARGO_BIN_EXE_microslip");
-    let pty = native_pty_system()
-        .openpty(PtySize {
-            rows: 30,
-            cols: 100,
-            pixel_width: 0,
-            pixel_height: 0,
-        })
-        .unwrap();
+    let pty = open_pty();
     let mut command = CommandBuilder::new(binary);
     command.env("TERM", "xterm-256color");
     command.env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"));
@@ -348,14 +346,7 @@ fn a_data_file_above_the_cap_is_refused_before_the_screen_changes() {
         .set_len((256 << 20) + 1)
         .unwrap();
     let binary = env!("CARGO_BIN_EXE_microslip");
-    let pty = native_pty_system()
-        .openpty(PtySize {
-            rows: 30,
-            cols: 100,
-            pixel_width: 0,
-            pixel_height: 0,
-        })
-        .expect("a pseudo-terminal");
+    let pty = open_pty();
     let mut command = CommandBuilder::new("sh");
     command.args([
         "-c",
