@@ -125,6 +125,7 @@ pub struct App {
     plot: Plot,
     numeric: Option<NumericPoints>,
     measurements: Option<Measurements>,
+    check_in: fn(),
 }
 
 impl App {
@@ -155,6 +156,7 @@ impl App {
             plot: Plot::default(),
             numeric: None,
             measurements: options.data,
+            check_in: || {},
         };
         app.recompute();
         app
@@ -172,6 +174,12 @@ impl App {
             ModelKind::Beam => &mut self.beam,
             ModelKind::Plate => &mut self.plate,
         }
+    }
+
+    /// Sets what long computations call between chunks of work (the event loop's check for a
+    /// terminating signal), so that no signal waits for them.
+    pub fn set_check_in(&mut self, check_in: fn()) {
+        self.check_in = check_in;
     }
 
     /// Colours and characters.
@@ -523,7 +531,15 @@ impl App {
             });
             return;
         };
-        match crate::fit::fit_twin_beams(beams.params(), &measurements.points, None, None) {
+        let check_in = self.check_in;
+        let fitted = crate::fit::fit_twin_beams_with_progress(
+            beams.params(),
+            &measurements.points,
+            None,
+            None,
+            &mut |_| check_in(),
+        );
+        match fitted {
             Ok(result) => {
                 let mut inputs = self.state().inputs;
                 let mut text = Vec::new();

@@ -116,6 +116,7 @@ pub fn run(
         data,
     });
     let signals = signals::Signals::install()?;
+    app.set_check_in(signals::Signals::exit_if_terminating);
     let mut terminal = terminal::enter()?;
     let events = spawn_reader();
     let result = event_loop(&mut terminal, &mut app, &signals, &events);

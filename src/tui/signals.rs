@@ -2,7 +2,7 @@
 //! between any two events, so that no signal waits behind queued keys or a long redraw.
 
 use std::io;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM, SIGTSTP};
@@ -16,6 +16,9 @@ pub enum Request {
     Suspend,
 }
 
+/// The flag of the installed handlers, for [`Signals::exit_if_terminating`].
+static INSTALLED: OnceLock<Arc<AtomicUsize>> = OnceLock::new();
+
 /// The last signal received and not yet acted on.
 pub struct Signals {
     pending: Arc<AtomicUsize>,
@@ -28,6 +31,7 @@ impl Signals {
         for signal in [SIGTERM, SIGHUP, SIGINT, SIGTSTP] {
             signal_hook::flag::register_usize(signal, Arc::clone(&pending), signal as usize)?;
         }
+        let _ = INSTALLED.set(Arc::clone(&pending));
         Ok(Signals { pending })
     }
 
@@ -37,6 +41,20 @@ impl Signals {
             0 => None,
             n if n == SIGTSTP as usize => Some(Request::Suspend),
             n => Some(Request::Terminate(n as i32)),
+        }
+    }
+
+    /// Ends the process at once if a terminating signal is waiting: for long computations inside
+    /// one key's work (a fit of a million measurements), which check in between chunks so that
+    /// a signal still acts within milliseconds. Restores the terminal first.
+    pub fn exit_if_terminating() {
+        let Some(pending) = INSTALLED.get() else {
+            return;
+        };
+        let signal = pending.load(Ordering::SeqCst);
+        if signal != 0 && signal != SIGTSTP as usize {
+            super::terminal::leave();
+            std::process::exit(128 + signal as i32);
         }
     }
 
