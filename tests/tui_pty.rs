@@ -95,6 +95,15 @@ fn start() -> (Session, Box<dyn portable_pty::Child + Send + Sync>) {
 }
 
 impl Session {
+    /// `q` with unsaved edits: the question, `y`, exit 0 and a restored terminal.
+    fn quit_answering_yes(&mut self) {
+        self.send("q");
+        self.wait_for("Quit anyway?");
+        self.send("y");
+        self.wait_for("EXIT=0");
+        self.assert_restored();
+    }
+
     /// After microslip exited: the shell's report shows canonical mode and echo back on, and the
     /// alternate screen was left.
     fn assert_restored(&mut self) {
@@ -139,11 +148,7 @@ fn keys_change_the_screen_and_quit_restores_the_terminal() {
     session.wait_for("Quit anyway?");
     session.send("n");
     session.wait_for("not quitting");
-    session.send("q");
-    session.wait_for("Quit anyway?");
-    session.send("y");
-    session.wait_for("EXIT=0");
-    session.assert_restored();
+    session.quit_answering_yes();
     let _ = child.wait();
 }
 
@@ -263,11 +268,7 @@ fn a_paste_is_text_in_the_value_field_and_never_keys() {
     // On the main screen a paste is ignored, with a word.
     session.send("\u{1b}[200~q\u{1b}[201~");
     session.wait_for("paste ignored");
-    session.send("q");
-    session.wait_for("Quit anyway?");
-    session.send("y");
-    session.wait_for("EXIT=0");
-    session.assert_restored();
+    session.quit_answering_yes();
     let _ = child.wait();
 }
 
