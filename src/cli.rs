@@ -15,6 +15,8 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use thiserror::Error;
 
 use crate::curves::{self, RangeError, Samples, Spacing};
+use crate::fe::deck::{self, DeckMesh};
+use crate::fe::header::StickSlope;
 use crate::fit::{self, FitError};
 use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, Compact, Domain, ModelKind, ParamError, Unit, parse_number};
@@ -134,6 +136,46 @@ pub enum Command {
         /// Largest relative error accepted on w(L), X, u(L) and X_r.
         #[arg(long, value_name = "T", default_value_t = verify::DEFAULT_TOLERANCE)]
         tolerance: f64,
+    },
+    /// Write an input deck of an external FE code for the current parameters (README, "Benchmark
+    /// your FE code"): mesh, contact with stick slope = K_T, load steps, outputs.
+    Deck {
+        /// The FE code (ccx: CalculiX 2.20; Abaqus reads the same keywords, see README).
+        #[arg(value_enum)]
+        code: FeCode,
+        /// Which benchmark.
+        #[arg(value_enum)]
+        model: ModelKind,
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Mesh density (fine halves every element size: run both to check convergence).
+        #[arg(long, value_enum, default_value_t = DeckMesh::Coarse)]
+        mesh: DeckMesh,
+        /// Tip forces of the load steps (N, increasing), beams only; default: F_thre x 0.5, 0.75,
+        /// 1, 1.25, 1.875, 2.5.
+        #[arg(
+            long,
+            value_name = "F0,F1,...",
+            value_delimiter = ',',
+            allow_negative_numbers = true
+        )]
+        loads: Option<Vec<f64>>,
+        /// Give the FE code a stiff stick slope (boundary layer a tenth of h or t_p) instead of
+        /// K_T: plain Coulomb to within what the mesh resolves.
+        #[arg(long)]
+        near_coulomb: bool,
+        /// Poisson ratio of the beams' material (the closed forms do not use it; the shear
+        /// deflection does); the plate uses its own nu.
+        #[arg(
+            long,
+            value_name = "NU",
+            default_value_t = 0.3,
+            allow_negative_numbers = true
+        )]
+        nu: f64,
+        /// Write the deck to FILE instead of stdout (replaced atomically if it exists).
+        #[arg(short = 'o', long, value_name = "FILE")]
+        output: Option<PathBuf>,
     },
     /// Validate preset files; report every problem; exit 1 if any.
     Check {
@@ -261,6 +303,13 @@ pub enum ReportFormat {
     Text,
     /// JSON object with unit-suffixed names.
     Json,
+}
+
+/// External FE codes `deck` writes for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FeCode {
+    /// CalculiX's solver, ccx (tested with 2.20).
+    Ccx,
 }
 
 /// Why a command failed.
@@ -506,6 +555,31 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             out.write_all(report::presets::listing(&rows, dir.as_deref()).as_bytes())?
         }
         Some(Command::Check { files }) => check(out, files)?,
+        Some(Command::Deck {
+            code: FeCode::Ccx,
+            model,
+            inputs,
+            mesh,
+            loads,
+            near_coulomb,
+            nu,
+            output,
+        }) => {
+            let slope = if *near_coulomb {
+                StickSlope::NearCoulomb
+            } else {
+                StickSlope::Model
+            };
+            let deck = match load(inputs, *model, model_command(*model, "deck ccx"))? {
+                (_, Model::Beam { beams, .. }) => {
+                    let nu = check_flag("--nu", *nu, Domain::PoissonRatio, Unit::Dimensionless)?;
+                    let loads = deck_loads(&beams, loads.as_deref())?;
+                    deck::beam_deck(&beams, &loads, *mesh, slope, nu)
+                }
+                (_, Model::Plate(plate)) => deck::plate_deck(&plate, *mesh, slope),
+            };
+            write_output(out, output.as_deref(), deck.as_bytes())?
+        }
         Some(Command::Verify {
             quick,
             elements,
@@ -542,6 +616,65 @@ fn force_range_error(error: RangeError) -> CliError {
         error,
         flags: ["--from", "--to", "--points"],
     }
+}
+
+/// `command` followed by the model's name, for error messages ("deck ccx beam").
+fn model_command(model: ModelKind, command: &'static str) -> &'static str {
+    match (command, model) {
+        ("deck ccx", ModelKind::Beam) => "deck ccx beam",
+        ("deck ccx", ModelKind::Plate) => "deck ccx plate",
+        ("compare", ModelKind::Beam) => "compare beam",
+        ("compare", ModelKind::Plate) => "compare plate",
+        _ => command,
+    }
+}
+
+/// The load steps of a beam deck: `--loads` checked (each a valid force, strictly increasing), or
+/// the default multiples of F_thre, which span stick, microslip and macroslip.
+fn deck_loads(beams: &TwinBeams, loads: Option<&[f64]>) -> Result<Vec<TipForce>, CliError> {
+    let Some(loads) = loads else {
+        let thre = beams.threshold_force();
+        return Ok([0.5, 0.75, 1.0, 1.25, 1.875, 2.5]
+            .map(|m| TipForce::clamped(m * thre))
+            .to_vec());
+    };
+    let mut forces = Vec::with_capacity(loads.len());
+    for &f in loads {
+        let force = check_flag("--loads", f, Domain::FORCE, Unit::Newton)?;
+        if forces
+            .last()
+            .is_some_and(|last: &TipForce| last.newtons() >= force)
+        {
+            return Err(CliError::Flag {
+                flag: "--loads",
+                value: f,
+                allowed: "the loads must increase from one step to the next".to_string(),
+            });
+        }
+        forces.push(TipForce::clamped(force));
+    }
+    Ok(forces)
+}
+
+/// Writes `bytes` to `path` (replaced atomically: a temporary file in the same directory, then a
+/// rename), or to `out` when there is no path.
+fn write_output(
+    out: &mut impl Write,
+    path: Option<&std::path::Path>,
+    bytes: &[u8],
+) -> Result<(), CliError> {
+    let Some(path) = path else {
+        out.write_all(bytes)?;
+        return Ok(());
+    };
+    let dir = match path.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir,
+        _ => std::path::Path::new("."),
+    };
+    let mut file = tempfile::NamedTempFile::new_in(dir)?;
+    file.write_all(bytes)?;
+    file.persist(path).map_err(|e| CliError::Output(e.error))?;
+    Ok(())
 }
 
 /// Resolves the preset (default: the paper's data set of `wanted`), applies `--set`, validates.

@@ -46,6 +46,7 @@
 #[doc(hidden)]
 pub mod cli;
 pub mod curves;
+pub mod fe;
 pub mod file;
 pub mod fit;
 pub mod model;

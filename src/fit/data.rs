@@ -10,7 +10,7 @@ use std::path::Path;
 use thiserror::Error;
 
 use crate::file::{ReadError, Size, read_capped};
-use crate::model::params::{BeamParam, Compact, Unit};
+use crate::model::params::{Compact, Domain, Unit};
 
 /// One measurement: tip force (N) and tip deflection (mm).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -140,6 +140,53 @@ pub fn parse_with_progress(
     text: &str,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<Measurement>, DataError> {
+    let points = parse_curve_with_progress(text, &MEASURED_DEFLECTION, progress)?;
+    Ok(points
+        .into_iter()
+        .map(|(force, deflection)| Measurement { force, deflection })
+        .collect())
+}
+
+/// The two columns of a curve file and what the first may hold.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Curve {
+    /// Header of the abscissa column, e.g. `F_N`.
+    pub x: &'static str,
+    /// Header of the ordinate column, e.g. `w_mm`.
+    pub y: &'static str,
+    /// What the abscissae are, plural, for messages ("forces").
+    pub x_what: &'static str,
+    /// The values the abscissa may take, and their unit.
+    pub x_domain: Domain,
+    /// Unit of the abscissa.
+    pub x_unit: Unit,
+    /// Fewest rows accepted.
+    pub min_rows: usize,
+}
+
+/// A measured twin-beam curve for the fit: `F_N,w_mm`, at least [`MIN_ROWS`] rows.
+pub const MEASURED_DEFLECTION: Curve = Curve {
+    x: "F_N",
+    y: "w_mm",
+    x_what: "forces",
+    x_domain: Domain::FORCE,
+    x_unit: Unit::Newton,
+    min_rows: MIN_ROWS,
+};
+
+/// [`parse`] for any [`Curve`]: (abscissa, ordinate) pairs, abscissae strictly increasing.
+///
+/// # Errors
+/// As [`parse`], with the curve's column names.
+pub fn parse_curve(text: &str, curve: &Curve) -> Result<Vec<(f64, f64)>, DataError> {
+    parse_curve_with_progress(text, curve, &mut |_, _| {})
+}
+
+fn parse_curve_with_progress(
+    text: &str,
+    curve: &Curve,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Vec<(f64, f64)>, DataError> {
     // The reader would skip the mark as well; removing it here keeps byte offsets and lines aligned.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let bytes = text.as_bytes();
@@ -175,7 +222,10 @@ pub fn parse_with_progress(
     let Some((header_line, header)) = records.next().transpose()? else {
         return Err(error(
             1,
-            "empty file: expected a header naming the columns F_N and w_mm",
+            format!(
+                "empty file: expected a header naming the columns {} and {}",
+                curve.x, curve.y
+            ),
         ));
     };
     let columns: Vec<&str> = header.iter().collect();
@@ -184,14 +234,16 @@ pub fn parse_with_progress(
             error(
                 header_line,
                 format!(
-                    "missing column '{name}' in the header (found: {}); F_N and w_mm are required",
-                    columns.join(", ")
+                    "missing column '{name}' in the header (found: {}); {} and {} are required",
+                    columns.join(", "),
+                    curve.x,
+                    curve.y
                 ),
             )
         })
     };
-    let (force_column, deflection_column) = (find("F_N")?, find("w_mm")?);
-    let mut data: Vec<Measurement> = Vec::new();
+    let (force_column, deflection_column) = (find(curve.x)?, find(curve.y)?);
+    let mut data: Vec<(f64, f64)> = Vec::new();
     let mut last_line = header_line;
     for (row, record) in records.enumerate() {
         let (line, fields) = record?;
@@ -211,48 +263,50 @@ pub fn parse_with_progress(
                 )),
             }
         };
-        let force = value(force_column, "F_N")?;
-        let deflection = value(deflection_column, "w_mm")?;
-        if force < 0.0 {
+        let force = value(force_column, curve.x)?;
+        let deflection = value(deflection_column, curve.y)?;
+        if !curve.x_domain.contains(force) {
+            let problem = if force < 0.0 {
+                "is negative"
+            } else if force < curve.x_domain.min() {
+                "is too small"
+            } else {
+                "is too large"
+            };
             return Err(error(
                 line,
                 format!(
-                    "F_N = {} is negative; forces must be >= 0 N",
-                    Compact(force)
-                ),
-            ));
-        }
-        let forces = BeamParam::Force.spec().domain;
-        if !forces.contains(force) {
-            return Err(error(
-                line,
-                format!(
-                    "F_N = {} is too large; forces {}",
+                    "{} = {} {problem}; {} {}",
+                    curve.x,
                     Compact(force),
-                    forces.describe(Unit::Newton)
+                    curve.x_what,
+                    curve.x_domain.describe(curve.x_unit)
                 ),
             ));
         }
-        if let Some(previous) = data.last()
-            && force <= previous.force
+        if let Some(&(previous, _)) = data.last()
+            && force <= previous
         {
             return Err(error(
                 line,
                 format!(
-                    "F_N = {} is not above the previous {}: forces must increase (one loading branch)",
+                    "{} = {} is not above the previous {}: {} must increase (one loading branch)",
+                    curve.x,
                     Compact(force),
-                    Compact(previous.force)
+                    Compact(previous),
+                    curve.x_what
                 ),
             ));
         }
-        data.push(Measurement { force, deflection });
+        data.push((force, deflection));
     }
-    if data.len() < MIN_ROWS {
+    if data.len() < curve.min_rows {
         return Err(error(
             last_line,
             format!(
-                "only {} data rows; at least {MIN_ROWS} are needed",
-                data.len()
+                "only {} data rows; at least {} are needed",
+                data.len(),
+                curve.min_rows
             ),
         ));
     }

@@ -16,6 +16,9 @@ use super::params::{BeamParam, ParamError};
 use super::regime::Regime;
 use super::solve::{find_root_in_bracket, find_root_newton};
 
+/// Timoshenko's shear coefficient of a rectangular section, kappa = 5/6 (B13).
+pub const SHEAR_COEFFICIENT: f64 = 5.0 / 6.0;
+
 /// Raw inputs of the twin-beam problem (mm, MPa, MPa/mm); validated by [`TwinBeams::new`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TwinBeamsParams {
@@ -188,6 +191,19 @@ impl TwinBeams {
     /// all-microslip shear stress (B6) increases monotonically from the clamp to the tip.
     pub fn first_macroslip_position(&self) -> f64 {
         self.params.length
+    }
+
+    /// Tip deflection (mm) that transverse shear strain adds to each beam, F L / (kappa G b 2h) with
+    /// kappa = 5/6 and G = E / (2 (1 + nu)), eq. (B13). Not part of the paper's Euler-Bernoulli
+    /// model, and the same under every friction law: the interface shear acts along the beams' axis,
+    /// so it adds axial force and moment but no transverse shear force, which is F in each beam.
+    /// Continuum FE includes it; comparisons with FE add it (`fe::compare`). `poisson` must be a
+    /// valid Poisson ratio ([`crate::PlateParam::Poisson`]'s domain, 0 <= nu < 0.5).
+    pub fn shear_deflection(&self, force: TipForce, poisson: f64) -> f64 {
+        let p = &self.params;
+        let shear_modulus = p.youngs_modulus / (2.0 * (1.0 + poisson));
+        let area = p.width * 2.0 * p.half_height;
+        force.0 * p.length / (SHEAR_COEFFICIENT * shear_modulus * area)
     }
 
     /// Solution under the plain Coulomb law at tip force `force`.

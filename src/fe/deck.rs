@@ -1,0 +1,505 @@
+//! CalculiX input decks (Abaqus keyword syntax) for the two benchmarks.
+//!
+//! What the decks model, and how that differs from the paper's Ansys model (2000 quadratic
+//! plane-stress elements) and from the closed forms, is in docs/theory.md, "Benchmarking an FE code".
+//! In short: 20-node bricks with reduced integration (C3D20R), one element across the width;
+//! face-to-face penalty contact with a stiff linear normal law; `*FRICTION` with mu and a stick slope
+//! equal to K_T (CalculiX's stick slope is a shear stress per slip, MPa/mm, exactly K_T); small
+//! displacements. The beams are in plane stress (free side faces), the plate in plane strain (every
+//! node held across the width) on a fixed block standing for the rigid plane.
+//!
+//! A deck is plain text built in memory: deterministic bytes for the same inputs, no I/O. Its first
+//! lines carry a machine-readable header ([`DeckHeader`]) that `microslip compare` reads back, so
+//! that results are compared with the parameters that produced them.
+
+use std::fmt::Write as _;
+
+use super::header::{DeckHeader, StickSlope};
+use super::mesh::{Block, Face, graded_toward_end, uniform};
+use crate::model::params::Compact;
+use crate::{SqueezedPlate, TipForce, TwinBeams};
+
+/// How fine the deck's mesh is. `Fine` halves every element size of `Coarse`: running both is the
+/// mesh-convergence check (README, "Benchmark your FE code").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "app", derive(clap::ValueEnum))]
+pub enum DeckMesh {
+    /// About 100 elements along the beam and 2 through each beam's height; 4 through the plate.
+    #[default]
+    Coarse,
+    /// Every element size halved.
+    Fine,
+}
+
+impl DeckMesh {
+    /// The name used in headers and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            DeckMesh::Coarse => "coarse",
+            DeckMesh::Fine => "fine",
+        }
+    }
+
+    /// 1 for coarse, 2 for fine: the number of elements per coarse element along each direction.
+    fn refinement(self) -> usize {
+        match self {
+            DeckMesh::Coarse => 1,
+            DeckMesh::Fine => 2,
+        }
+    }
+}
+
+/// Names of the node sets the decks print to the .dat file; [`super::results`] looks them up.
+pub mod sets {
+    /// Tip nodes on the centre line of both beams (w(L) is their mean transverse displacement).
+    pub const BEAM_TIP: &str = "WTIP";
+    /// Lower beam's interface nodes along x (at z = 0).
+    pub const BEAM_LOWER_FACE: &str = "IFLOWER";
+    /// Upper beam's interface nodes along x (at z = 0); they start where `IFLOWER`'s are.
+    pub const BEAM_UPPER_FACE: &str = "IFUPPER";
+    /// Plate end nodes through the thickness (x = L, z = 0), from the contact face up.
+    pub const PLATE_END: &str = "UEND";
+    /// Plate contact-face nodes along x (y = 0, z = 0): the slip, since the plane does not move.
+    pub const PLATE_FACE: &str = "IFPLATE";
+}
+
+/// The twin-beam deck: the pressure P in a first step, then one step per tip force in `loads`
+/// (N on each beam, increasing), each printed at its end.
+pub fn beam_deck(
+    beams: &TwinBeams,
+    loads: &[TipForce],
+    mesh: DeckMesh,
+    stick_slope: StickSlope,
+    poisson: f64,
+) -> String {
+    let p = beams.params();
+    let slope = stick_slope.value_for_beams(beams);
+    let header = DeckHeader::beams(beams, loads, mesh, stick_slope, poisson);
+    let r = mesh.refinement();
+    let height = 2.0 * p.half_height;
+    // Along the beam: elements a fifth of a beam's height, graded down to 1/80 of it at the clamp,
+    // where the clamped face meets the interface and stresses are singular. A uniform mesh of the
+    // same size left w(L) 0.4 % too stiff, converging slowly (docs/theory.md, "Benchmarking an FE
+    // code"); two quadratic elements through each beam's height carry its bending exactly.
+    let from_clamp = graded_toward_end(
+        0.0,
+        p.length,
+        height / 80.0 / r as f64,
+        height / 5.0 / r as f64,
+        1.2,
+    );
+    let mut xs: Vec<f64> = from_clamp.iter().rev().map(|x| p.length - x).collect();
+    xs[0] = 0.0;
+    let through = 2 * r;
+    let zs = uniform(0.0, p.width, 1);
+    let lower = Block::new(
+        [xs.clone(), uniform(-height, 0.0, through), zs.clone()],
+        1,
+        1,
+    );
+    let upper = Block::new(
+        [xs, uniform(0.0, height, through), zs],
+        lower.node_count() + 1,
+        lower.element_count() + 1,
+    );
+    let normal_slope = normal_stiffness(p.youngs_modulus, height / through as f64, slope);
+
+    let mut deck = header.to_comment();
+    deck.push_str("*HEADING\n");
+    let _ = writeln!(
+        deck,
+        "microslip twin beams, K_T = {} MPa/mm",
+        Compact(slope)
+    );
+    write_nodes(&mut deck, &[&lower, &upper]);
+    write_elements(&mut deck, "LOWER", &lower);
+    write_elements(&mut deck, "UPPER", &upper);
+
+    let [nx, ny, _] = lower.elements_along();
+    let mut clamp = lower.nodes_at_x(0);
+    clamp.extend(upper.nodes_at_x(0));
+    write_nset(&mut deck, "CLAMP", &clamp);
+    // Centre line of each beam: half-grid row ny (mid-height), on both side faces.
+    let tip: Vec<usize> = [&lower, &upper]
+        .iter()
+        .flat_map(|b| [0, 2].map(|k| b.node([2 * nx, ny, k])))
+        .flatten()
+        .collect();
+    write_nset(&mut deck, sets::BEAM_TIP, &tip);
+    let face_line = |b: &Block, j: usize| -> Vec<usize> {
+        (0..=2 * nx).filter_map(|i| b.node([i, j, 0])).collect()
+    };
+    write_nset(&mut deck, sets::BEAM_LOWER_FACE, &face_line(&lower, 2 * ny));
+    write_nset(&mut deck, sets::BEAM_UPPER_FACE, &face_line(&upper, 0));
+    write_surface(
+        &mut deck,
+        "SLOWERTOP",
+        &lower.boundary_faces(Face::YMax),
+        Face::YMax,
+    );
+    write_surface(
+        &mut deck,
+        "SUPPERBOT",
+        &upper.boundary_faces(Face::YMin),
+        Face::YMin,
+    );
+
+    write_material(&mut deck, p.youngs_modulus, poisson, &["LOWER", "UPPER"]);
+    write_interaction(&mut deck, normal_slope, p.friction, slope);
+    deck.push_str(
+        "** slave: upper beam's lower face; master: lower beam's upper face\n\
+         *CONTACT PAIR, INTERACTION=JENKINS, TYPE=SURFACE TO SURFACE\n\
+         SUPPERBOT, SLOWERTOP\n\
+         *BOUNDARY\nCLAMP, 1, 3\n",
+    );
+
+    deck.push_str("** step 1: the interface pressure P, pressing the beams together\n");
+    start_step(&mut deck);
+    deck.push_str("*DLOAD\n");
+    for id in lower.boundary_faces(Face::YMin) {
+        let _ = writeln!(deck, "{id}, P{}, {}", Face::YMin.number(), real(p.pressure));
+    }
+    for id in upper.boundary_faces(Face::YMax) {
+        let _ = writeln!(deck, "{id}, P{}, {}", Face::YMax.number(), real(p.pressure));
+    }
+    end_beam_step(&mut deck);
+    for (n, force) in loads.iter().enumerate() {
+        let _ = writeln!(
+            deck,
+            "** step {}: tip force F = {} N on each beam (uniform shear traction on the end face)",
+            n + 2,
+            Compact(force.newtons())
+        );
+        start_step(&mut deck);
+        deck.push_str("*CLOAD\n");
+        for block in [&lower, &upper] {
+            for (id, f) in block.end_face_loads(force.newtons()) {
+                let _ = writeln!(deck, "{id}, 2, {}", real(f));
+            }
+        }
+        end_beam_step(&mut deck);
+    }
+    deck
+}
+
+/// The squeezed-plate deck: one step that applies P; the plate's end and contact face are printed.
+pub fn plate_deck(plate: &SqueezedPlate, mesh: DeckMesh, stick_slope: StickSlope) -> String {
+    let p = plate.params();
+    let slope = stick_slope.value_for_plate(plate);
+    let header = DeckHeader::plate(plate, mesh, stick_slope);
+    let r = mesh.refinement() as f64;
+    let through = 4 * mesh.refinement();
+    let layer = p.thickness / through as f64;
+    // The slip zone at the free end is about 1/alpha wide (L - X_r <= l and X_r - X_s -> 1/alpha):
+    // elements a tenth of that at the end, or half a layer if smaller (the contact face corner at
+    // the free end is where the displacement varies most)...
+    let alpha_squared = (1.0 - p.poisson * p.poisson) * slope / (p.youngs_modulus * p.thickness);
+    let finest = (0.1 / alpha_squared.sqrt()).min(0.5 * layer) / r;
+    // ...growing by 20 % per element to half the thickness, or L/50 on a long plate.
+    let coarsest = (p.thickness / (2.0 * r))
+        .max(p.half_length / (50.0 * r))
+        .max(finest);
+    let xs = graded_toward_end(0.0, p.half_length, finest, coarsest, 1.2);
+    let width = layer;
+    let zs = vec![0.0, width];
+    let plate_block = Block::new(
+        [xs.clone(), uniform(0.0, p.thickness, through), zs.clone()],
+        1,
+        1,
+    );
+    // The rigid plane: a fixed block under the plate, one coarse element longer than it.
+    let mut base_xs = xs;
+    base_xs.push(p.half_length + coarsest);
+    let base = Block::new(
+        [base_xs, vec![-p.thickness, 0.0], zs],
+        plate_block.node_count() + 1,
+        plate_block.element_count() + 1,
+    );
+    let normal_slope = normal_stiffness(p.youngs_modulus, layer, slope);
+
+    let mut deck = header.to_comment();
+    deck.push_str("*HEADING\n");
+    let _ = writeln!(
+        deck,
+        "microslip squeezed plate, K_T = {} MPa/mm",
+        Compact(slope)
+    );
+    write_nodes(&mut deck, &[&plate_block, &base]);
+    // Ground nodes for the weak springs, one plate thickness below the block.
+    let ground = plate_block.node_count() + base.node_count() + 1;
+    let corners = [0, 2].map(|k| plate_block.node([0, 0, k]).expect("a corner is a node"));
+    for (n, _) in corners.iter().enumerate() {
+        let _ = writeln!(
+            deck,
+            "{}, 0., {}, {}",
+            ground + n,
+            real(-2.0 * p.thickness),
+            real(width * n as f64)
+        );
+    }
+    write_elements(&mut deck, "PLATE", &plate_block);
+    write_elements(&mut deck, "BASE", &base);
+    let spring = plate_block.element_count() + base.element_count() + 1;
+    deck.push_str(
+        "** weak springs: face-to-face contact engages only once the plate penetrates, so the\n\
+         ** plate would float at the first iteration; they carry a negligible share of the load\n\
+         *ELEMENT, TYPE=SPRINGA, ELSET=ESPRING\n",
+    );
+    for (n, node) in corners.iter().enumerate() {
+        let _ = writeln!(deck, "{}, {}, {}", spring + n, node, ground + n);
+    }
+    // Stiffness: a millionth of the contact's over the whole face.
+    let spring_stiffness = 1e-6 * normal_slope * p.half_length * width;
+    let _ = writeln!(deck, "*SPRING, ELSET=ESPRING\n\n{}", real(spring_stiffness));
+
+    let [nx, ny, _] = plate_block.elements_along();
+    write_nset(&mut deck, "SYMMETRY", &plate_block.nodes_at_x(0));
+    let all_plate: Vec<usize> = plate_block.nodes().map(|(id, _)| id).collect();
+    write_nset(&mut deck, "PLATEALL", &all_plate);
+    let mut fixed: Vec<usize> = base.nodes().map(|(id, _)| id).collect();
+    fixed.extend([ground, ground + 1]);
+    write_nset(&mut deck, "FIXED", &fixed);
+    let end: Vec<usize> = (0..=2 * ny)
+        .filter_map(|j| plate_block.node([2 * nx, j, 0]))
+        .collect();
+    write_nset(&mut deck, sets::PLATE_END, &end);
+    let face: Vec<usize> = (0..=2 * nx)
+        .filter_map(|i| plate_block.node([i, 0, 0]))
+        .collect();
+    write_nset(&mut deck, sets::PLATE_FACE, &face);
+    write_surface(
+        &mut deck,
+        "SPLATEBOT",
+        &plate_block.boundary_faces(Face::YMin),
+        Face::YMin,
+    );
+    write_surface(
+        &mut deck,
+        "SBASETOP",
+        &base.boundary_faces(Face::YMax),
+        Face::YMax,
+    );
+
+    write_material(&mut deck, p.youngs_modulus, p.poisson, &["PLATE", "BASE"]);
+    write_interaction(&mut deck, normal_slope, p.friction, slope);
+    deck.push_str(
+        "** slave: the plate's lower face; master: the fixed block's upper face\n\
+         *CONTACT PAIR, INTERACTION=JENKINS, TYPE=SURFACE TO SURFACE\n\
+         SPLATEBOT, SBASETOP\n\
+         ** symmetry at x = 0, plane strain (no node moves across the width), fixed plane\n\
+         *BOUNDARY\nSYMMETRY, 1, 1\nPLATEALL, 3, 3\nFIXED, 1, 3\n",
+    );
+    deck.push_str("** step 1: the pressure P on the plate's upper face\n");
+    start_step(&mut deck);
+    deck.push_str("*DLOAD\n");
+    for id in plate_block.boundary_faces(Face::YMax) {
+        let _ = writeln!(deck, "{id}, P{}, {}", Face::YMax.number(), real(p.pressure));
+    }
+    for set in [sets::PLATE_END, sets::PLATE_FACE] {
+        let _ = writeln!(deck, "*NODE PRINT, NSET={set}\nU");
+    }
+    deck.push_str("*NODE FILE\nU\n*CONTACT FILE\nCDIS, CSTR\n*END STEP\n");
+    deck
+}
+
+/// The normal penalty K_N (MPa/mm): stiff against the elements it connects (100 E over an element's
+/// height), and at least 10 K_T, as CalculiX's manual advises for the stick slope.
+fn normal_stiffness(modulus: f64, element_height: f64, stick_slope: f64) -> f64 {
+    (100.0 * modulus / element_height).max(10.0 * stick_slope)
+}
+
+fn start_step(deck: &mut String) {
+    // One increment per step when it converges; CalculiX cuts it when it does not.
+    deck.push_str("*STEP, INC=1000\n*STATIC\n1., 1.\n");
+}
+
+fn end_beam_step(deck: &mut String) {
+    for set in [sets::BEAM_TIP, sets::BEAM_LOWER_FACE, sets::BEAM_UPPER_FACE] {
+        let _ = writeln!(deck, "*NODE PRINT, NSET={set}\nU");
+    }
+    deck.push_str("*NODE FILE\nU\n*CONTACT FILE\nCDIS, CSTR\n*END STEP\n");
+}
+
+fn write_nodes(deck: &mut String, blocks: &[&Block]) {
+    deck.push_str("*NODE, NSET=NALL\n");
+    for block in blocks {
+        for (id, [x, y, z]) in block.nodes() {
+            let _ = writeln!(deck, "{id}, {}, {}, {}", real(x), real(y), real(z));
+        }
+    }
+}
+
+fn write_elements(deck: &mut String, set: &str, block: &Block) {
+    let _ = writeln!(deck, "*ELEMENT, TYPE=C3D20R, ELSET={set}");
+    for (id, nodes) in block.elements() {
+        // At most 16 entries on a line: the id and 15 nodes, then the last 5.
+        let _ = write!(deck, "{id}");
+        for (n, node) in nodes.iter().enumerate() {
+            let _ = write!(deck, "{}{node}", if n == 15 { ",\n" } else { ", " });
+        }
+        deck.push('\n');
+    }
+}
+
+fn write_nset(deck: &mut String, name: &str, nodes: &[usize]) {
+    let _ = writeln!(deck, "*NSET, NSET={name}");
+    for line in nodes.chunks(10) {
+        let text: Vec<String> = line.iter().map(usize::to_string).collect();
+        let _ = writeln!(deck, "{}", text.join(", "));
+    }
+}
+
+fn write_surface(deck: &mut String, name: &str, elements: &[usize], face: Face) {
+    let _ = writeln!(deck, "*SURFACE, NAME={name}, TYPE=ELEMENT");
+    for id in elements {
+        let _ = writeln!(deck, "{id}, S{}", face.number());
+    }
+}
+
+fn write_material(deck: &mut String, modulus: f64, poisson: f64, sets: &[&str]) {
+    let _ = writeln!(
+        deck,
+        "*MATERIAL, NAME=SOLID\n*ELASTIC\n{}, {}",
+        real(modulus),
+        real(poisson)
+    );
+    for set in sets {
+        let _ = writeln!(deck, "*SOLID SECTION, ELSET={set}, MATERIAL=SOLID");
+    }
+}
+
+fn write_interaction(deck: &mut String, normal_slope: f64, friction: f64, stick_slope: f64) {
+    let _ = writeln!(
+        deck,
+        "** the regularized Coulomb law: tau = K_T s up to mu p (stick slope = K_T, MPa/mm)\n\
+         *SURFACE INTERACTION, NAME=JENKINS\n\
+         *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{}\n*FRICTION\n{}, {}",
+        real(normal_slope),
+        real(friction),
+        real(stick_slope)
+    );
+}
+
+/// A number as CalculiX must read it: shortest round-trip digits, always with a decimal point
+/// (some cards read an integer-looking first field as a degree of freedom).
+pub(crate) fn real(x: f64) -> String {
+    let text = format!("{x:?}");
+    match text.find('e') {
+        Some(e) if !text[..e].contains('.') => format!("{}.{}", &text[..e], &text[e..]),
+        _ => text,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{PlateParams, TwinBeamsParams};
+
+    fn paper_beam_deck(mesh: DeckMesh) -> String {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let loads = [40.0, 100.0].map(|f| TipForce::new(f).unwrap());
+        beam_deck(&beams, &loads, mesh, StickSlope::Model, 0.3)
+    }
+
+    #[test]
+    fn numbers_always_carry_a_decimal_point() {
+        assert_eq!(real(200.0), "200.0");
+        assert_eq!(real(0.1), "0.1");
+        assert_eq!(real(1e-7), "1.e-7");
+        assert_eq!(real(-2.5e20), "-2.5e20");
+    }
+
+    #[test]
+    fn the_same_inputs_give_the_same_bytes() {
+        assert_eq!(
+            paper_beam_deck(DeckMesh::Coarse),
+            paper_beam_deck(DeckMesh::Coarse)
+        );
+    }
+
+    #[test]
+    fn beam_deck_has_one_step_per_load_after_the_pressure() {
+        let deck = paper_beam_deck(DeckMesh::Coarse);
+        assert_eq!(deck.matches("*STEP").count(), 3);
+        assert_eq!(deck.matches("*END STEP").count(), 3);
+        assert!(
+            deck.contains("*FRICTION\n0.3, 600.0\n"),
+            "stick slope = K_T"
+        );
+        assert!(deck.contains("*ELASTIC\n210000.0, 0.3\n"));
+    }
+
+    #[test]
+    fn tip_loads_add_up_to_the_force_on_each_beam() {
+        let deck = paper_beam_deck(DeckMesh::Coarse);
+        let step = deck.split("*CLOAD\n").nth(2).unwrap();
+        let total: f64 = step
+            .lines()
+            .take_while(|l| !l.starts_with('*'))
+            .map(|l| l.split(", ").nth(2).unwrap().parse::<f64>().unwrap())
+            .sum();
+        assert!(
+            (total - 200.0).abs() < 1e-9,
+            "two beams x 100 N, got {total}"
+        );
+    }
+
+    #[test]
+    fn fine_mesh_has_about_four_times_the_elements() {
+        let count = |deck: &str| {
+            deck.split("*ELEMENT, TYPE=C3D20R")
+                .skip(1)
+                .map(|s| {
+                    s.lines()
+                        .skip(1)
+                        .take_while(|l| !l.starts_with('*'))
+                        .count()
+                        / 2
+                })
+                .sum::<usize>()
+        };
+        // Every size halved along x and y (the grading toward the clamp rounds the count), one
+        // element across the width in both.
+        let ratio = count(&paper_beam_deck(DeckMesh::Fine)) as f64
+            / count(&paper_beam_deck(DeckMesh::Coarse)) as f64;
+        assert!((3.5..4.5).contains(&ratio), "{ratio}");
+    }
+
+    #[test]
+    fn plate_deck_resolves_the_slip_zone() {
+        let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        let deck = plate_deck(&plate, DeckMesh::Coarse, StickSlope::Model);
+        assert!(deck.contains("*FRICTION\n0.3, 1000000.0\n"));
+        // The nodes of the contact face, in x order: the last two are 1/(4 alpha) apart at most.
+        let xs: Vec<f64> = node_x_of_set(&deck, sets::PLATE_FACE);
+        let last = xs[xs.len() - 1] - xs[xs.len() - 3];
+        let alpha = plate.decay_rate();
+        assert!(
+            last <= 0.1 / alpha + 1e-12,
+            "end element {last} mm, 1/alpha {}",
+            1.0 / alpha
+        );
+        assert_eq!(*xs.last().unwrap(), 10.0);
+    }
+
+    fn node_x_of_set(deck: &str, set: &str) -> Vec<f64> {
+        let coords: std::collections::HashMap<usize, f64> = deck
+            .split("*NODE, NSET=NALL\n")
+            .nth(1)
+            .unwrap()
+            .lines()
+            .take_while(|l| !l.starts_with('*'))
+            .map(|l| {
+                let f: Vec<&str> = l.split(", ").collect();
+                (f[0].parse().unwrap(), f[1].parse().unwrap())
+            })
+            .collect();
+        deck.split(&format!("*NSET, NSET={set}\n"))
+            .nth(1)
+            .unwrap()
+            .lines()
+            .take_while(|l| !l.starts_with('*'))
+            .flat_map(|l| l.split(", ").map(|n| coords[&n.parse::<usize>().unwrap()]))
+            .collect()
+    }
+}

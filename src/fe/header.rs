@@ -1,0 +1,384 @@
+//! The header a deck starts with: a comment block a person reads (what the deck is, how to run it,
+//! the closed-form values expected) and one machine-readable line that `microslip compare` reads
+//! back, so that FE results are compared with the parameters that produced them.
+
+use std::fmt::Write as _;
+
+use super::deck::DeckMesh;
+use crate::model::inputs::Inputs;
+use crate::model::params::{BeamParam, Compact, ModelKind, Param, PlateParam, parse_number};
+use crate::report::number;
+use crate::{Model, SqueezedPlate, TipForce, TwinBeams};
+
+/// The prefix of the machine-readable header line.
+pub const HEADER_PREFIX: &str = "** microslip-deck:";
+
+/// Which stick slope the deck gives CalculiX.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum StickSlope {
+    /// The model's K_T: the regularized law as the closed forms assume it.
+    #[default]
+    Model,
+    /// A stiff slope that makes the boundary layer a tenth of the beam's half-height h (1/k = h/10,
+    /// K_T = 25 E / h) or of the plate's thickness (1/alpha = t_p/10): the plain Coulomb law to
+    /// within what the mesh resolves, without the convergence trouble of a huge penalty.
+    NearCoulomb,
+}
+
+impl StickSlope {
+    /// The stick slope (MPa/mm) for `beams`.
+    pub fn value_for_beams(self, beams: &TwinBeams) -> f64 {
+        let p = beams.params();
+        match self {
+            StickSlope::Model => p.tangential_stiffness,
+            StickSlope::NearCoulomb => 25.0 * p.youngs_modulus / p.half_height,
+        }
+    }
+
+    /// The stick slope (MPa/mm) for `plate`.
+    pub fn value_for_plate(self, plate: &SqueezedPlate) -> f64 {
+        let p = plate.params();
+        match self {
+            StickSlope::Model => p.tangential_stiffness,
+            StickSlope::NearCoulomb => {
+                100.0 * p.youngs_modulus / ((1.0 - p.poisson * p.poisson) * p.thickness)
+            }
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            StickSlope::Model => "model",
+            StickSlope::NearCoulomb => "near-coulomb",
+        }
+    }
+}
+
+/// What a deck was made from. `inputs` holds the stick slope actually written as K_T, so the closed
+/// forms built from it are the ones the FE run should reproduce.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeckHeader {
+    /// The parameters (K_T = the deck's stick slope; F = the last load for the beams).
+    pub inputs: Inputs,
+    /// Tip forces of the load steps (N), beams only.
+    pub loads: Vec<f64>,
+    /// The mesh.
+    pub mesh: DeckMesh,
+    /// Where the stick slope came from.
+    pub stick_slope: StickSlope,
+    /// Poisson ratio of the material (-); the plate's nu for the plate.
+    pub poisson: f64,
+}
+
+/// A header line that cannot be read.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("line {line}: {message}")]
+pub struct HeaderError {
+    /// 1-based line.
+    pub line: usize,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl DeckHeader {
+    /// The header of a twin-beam deck.
+    pub fn beams(
+        beams: &TwinBeams,
+        loads: &[TipForce],
+        mesh: DeckMesh,
+        stick_slope: StickSlope,
+        poisson: f64,
+    ) -> DeckHeader {
+        let mut structure = beams.params();
+        structure.tangential_stiffness = stick_slope.value_for_beams(beams);
+        DeckHeader {
+            inputs: Inputs::Beam {
+                structure,
+                force: loads.last().map_or(0.0, |f| f.newtons()),
+            },
+            loads: loads.iter().map(|f| f.newtons()).collect(),
+            mesh,
+            stick_slope,
+            poisson,
+        }
+    }
+
+    /// The header of a squeezed-plate deck.
+    pub fn plate(plate: &SqueezedPlate, mesh: DeckMesh, stick_slope: StickSlope) -> DeckHeader {
+        let mut params = plate.params();
+        params.tangential_stiffness = stick_slope.value_for_plate(plate);
+        DeckHeader {
+            inputs: Inputs::Plate(params),
+            loads: Vec::new(),
+            mesh,
+            stick_slope,
+            poisson: params.poisson,
+        }
+    }
+
+    /// The model the header describes, validated.
+    ///
+    /// # Errors
+    /// A parameter out of its domain (a header edited by hand).
+    pub fn model(&self) -> Result<Model, crate::ParamError> {
+        self.inputs.validate()
+    }
+
+    /// The comment block that opens the deck.
+    pub fn to_comment(&self) -> String {
+        let kind = self.inputs.kind();
+        let mut text = format!(
+            "** microslip {}: CalculiX (ccx 2.20) deck for the {} (Ligier & Bonhote 2014)\n",
+            env!("CARGO_PKG_VERSION"),
+            match kind {
+                ModelKind::Beam => "twin cantilever beams",
+                ModelKind::Plate => "squeezed plate",
+            },
+        );
+        text.push_str(&self.machine_line());
+        text.push('\n');
+        let job = match kind {
+            ModelKind::Beam => "beam",
+            ModelKind::Plate => "plate",
+        };
+        let _ = writeln!(
+            text,
+            "** Units: mm, N, MPa; stick slope K_T in MPa/mm.\n\
+             ** Run it:      ccx -i JOB        (this file saved as JOB.inp)\n\
+             ** Compare it:  microslip compare {job} JOB.dat"
+        );
+        if let Ok(model) = self.model() {
+            text.push_str(&self.expected(&model));
+        }
+        text
+    }
+
+    /// The machine-readable line: `** microslip-deck: model=.. mesh=.. stick-slope=.. nu=..` then
+    /// every parameter as KEY=VALUE (shortest round-trip digits) and, for the beams, `F=F1,F2,..`.
+    fn machine_line(&self) -> String {
+        let kind = self.inputs.kind();
+        let mut line = format!(
+            "{HEADER_PREFIX} model={} mesh={} stick-slope={} nu={:?}",
+            kind.name(),
+            self.mesh.name(),
+            self.stick_slope.name(),
+            self.poisson
+        );
+        for &param in kind.params() {
+            // F is the list of loads; the plate's nu is `nu=` above.
+            if matches!(
+                param,
+                Param::Beam(BeamParam::Force) | Param::Plate(PlateParam::Poisson)
+            ) {
+                continue;
+            }
+            if let Some(value) = self.inputs.get(param) {
+                let _ = write!(line, " {}={value:?}", param.name());
+            }
+        }
+        if kind == ModelKind::Beam {
+            let loads: Vec<String> = self.loads.iter().map(|f| format!("{f:?}")).collect();
+            let _ = write!(line, " F={}", loads.join(","));
+        }
+        line
+    }
+
+    /// The closed-form values the run should reproduce, as comment lines.
+    fn expected(&self, model: &Model) -> String {
+        let mut text = String::new();
+        match model {
+            Model::Beam { beams, .. } => {
+                let _ = writeln!(
+                    text,
+                    "** Expected from the closed forms (Euler-Bernoulli, the paper's model; \"+ shear\"\n\
+                     ** adds each beam's shear deflection F L / (kappa G b 2h), kappa = 5/6, nu = {}):\n\
+                     **   F (N) | w(L) Coulomb (mm) | w(L) regularized (mm) | + shear (mm) | X (mm) | regime",
+                    Compact(self.poisson)
+                );
+                for &f in &self.loads {
+                    let force = TipForce::clamped(f);
+                    let state = beams.regularized(force);
+                    let w = state.tip_deflection();
+                    let _ = writeln!(
+                        text,
+                        "**   {} | {} | {} | {} | {} | {}",
+                        number(f),
+                        number(beams.coulomb(force).tip_deflection()),
+                        number(w),
+                        number(w + beams.shear_deflection(force, self.poisson)),
+                        number(state.micro_zone_end()),
+                        state.regime().label()
+                    );
+                }
+            }
+            Model::Plate(plate) => {
+                let state = plate.regularized();
+                let coulomb = plate.coulomb();
+                let _ = writeln!(
+                    text,
+                    "** Expected from the closed forms (strip theory, the paper's model):\n\
+                     **   u(L) regularized {} mm, Coulomb {} mm; X_r {} mm, X_s {} mm; regime {}",
+                    number(state.end_displacement()),
+                    number(coulomb.end_displacement()),
+                    number(state.micro_zone_end()),
+                    number(coulomb.stick_end()),
+                    state.regime().label()
+                );
+            }
+        }
+        text
+    }
+
+    /// Reads the header line of a deck, if `text` has one.
+    ///
+    /// # Errors
+    /// [`HeaderError`] with the line number when the line is there but malformed.
+    pub fn parse(text: &str) -> Result<Option<DeckHeader>, HeaderError> {
+        let Some((index, line)) = text
+            .lines()
+            .enumerate()
+            .find(|(_, l)| l.starts_with(HEADER_PREFIX))
+        else {
+            return Ok(None);
+        };
+        let fail = |message: String| HeaderError {
+            line: index + 1,
+            message,
+        };
+        let mut fields = std::collections::BTreeMap::new();
+        for field in line[HEADER_PREFIX.len()..].split_whitespace() {
+            let (key, value) = field
+                .split_once('=')
+                .ok_or_else(|| fail(format!("'{field}' is not KEY=VALUE")))?;
+            fields.insert(key, value);
+        }
+        let take = |key: &str| {
+            fields
+                .get(key)
+                .copied()
+                .ok_or_else(|| fail(format!("'{key}=' is missing")))
+        };
+        let number_of = |key: &str, text: &str| {
+            parse_number(text).ok_or_else(|| fail(format!("{key} = '{text}' is not a number")))
+        };
+        let kind = match take("model")? {
+            "beam" => ModelKind::Beam,
+            "plate" => ModelKind::Plate,
+            other => return Err(fail(format!("model = '{other}': expected beam or plate"))),
+        };
+        let mesh = match take("mesh")? {
+            "coarse" => DeckMesh::Coarse,
+            "fine" => DeckMesh::Fine,
+            other => return Err(fail(format!("mesh = '{other}': expected coarse or fine"))),
+        };
+        let stick_slope = match take("stick-slope")? {
+            "model" => StickSlope::Model,
+            "near-coulomb" => StickSlope::NearCoulomb,
+            other => {
+                return Err(fail(format!(
+                    "stick-slope = '{other}': expected model or near-coulomb"
+                )));
+            }
+        };
+        let poisson = number_of("nu", take("nu")?)?;
+        let mut inputs = Inputs::paper(kind);
+        for &param in kind.params() {
+            if param == Param::Beam(BeamParam::Force) {
+                continue;
+            }
+            let value = if param == Param::Plate(PlateParam::Poisson) {
+                poisson
+            } else {
+                number_of(param.name(), take(param.name())?)?
+            };
+            inputs.set(param, value).map_err(|e| fail(e.to_string()))?;
+        }
+        let mut loads = Vec::new();
+        if kind == ModelKind::Beam {
+            for text in take("F")?.split(',') {
+                loads.push(number_of("F", text)?);
+            }
+            inputs
+                .set(Param::Beam(BeamParam::Force), *loads.last().unwrap_or(&0.0))
+                .map_err(|e| fail(e.to_string()))?;
+        }
+        let header = DeckHeader {
+            inputs,
+            loads,
+            mesh,
+            stick_slope,
+            poisson,
+        };
+        header.model().map_err(|e| fail(e.to_string()))?;
+        Ok(Some(header))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{PlateParams, TwinBeamsParams};
+
+    #[test]
+    fn beam_header_reads_back_what_was_written() {
+        let beams = TwinBeams::new(TwinBeamsParams {
+            tangential_stiffness: 123.456789,
+            ..TwinBeamsParams::PAPER
+        })
+        .unwrap();
+        let loads = [40.0, 100.5, 1e-3].map(|f| TipForce::new(f).unwrap());
+        let header = DeckHeader::beams(&beams, &loads, DeckMesh::Fine, StickSlope::Model, 0.27);
+        let parsed = DeckHeader::parse(&header.to_comment()).unwrap().unwrap();
+        assert_eq!(parsed, header);
+    }
+
+    #[test]
+    fn near_coulomb_header_records_the_stiff_slope() {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let header = DeckHeader::beams(
+            &beams,
+            &[TipForce::new(40.0).unwrap()],
+            DeckMesh::Coarse,
+            StickSlope::NearCoulomb,
+            0.3,
+        );
+        // 1/k = h/10 with k = 2 sqrt(K_T / (E h)): K_T = 25 E / h.
+        let Model::Beam { beams: stiff, .. } = header.model().unwrap() else {
+            panic!("a beam header")
+        };
+        assert!((1.0 / stiff.decay_rate() - 1.0).abs() < 1e-12);
+        let parsed = DeckHeader::parse(&header.to_comment()).unwrap().unwrap();
+        assert_eq!(parsed.stick_slope, StickSlope::NearCoulomb);
+    }
+
+    #[test]
+    fn plate_header_reads_back_and_states_the_expected_values() {
+        let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        let header = DeckHeader::plate(&plate, DeckMesh::Coarse, StickSlope::Model);
+        let text = header.to_comment();
+        assert_eq!(DeckHeader::parse(&text).unwrap().unwrap(), header);
+        assert!(text.contains("u(L) regularized 9.459"), "{text}");
+    }
+
+    #[test]
+    fn a_broken_header_names_its_line_and_field() {
+        let text = "** other\n** microslip-deck: model=beam mesh=coarse stick-slope=model nu=0.3 \
+                    L=200 b=20 h=ten E=1 P=1 mu=0.3 KT=1 F=1";
+        let error = DeckHeader::parse(text).unwrap_err();
+        assert_eq!(error.to_string(), "line 2: h = 'ten' is not a number");
+        let missing = "** microslip-deck: model=plate mesh=coarse stick-slope=model nu=0.3";
+        assert_eq!(
+            DeckHeader::parse(missing).unwrap_err().message,
+            "'L=' is missing"
+        );
+        assert_eq!(DeckHeader::parse("no header here").unwrap(), None);
+        let negative = "** microslip-deck: model=plate mesh=coarse stick-slope=model nu=0.3 \
+                        L=-1 tp=0.2 E=7e4 mu=0.3 P=10 KT=1e6";
+        assert!(
+            DeckHeader::parse(negative)
+                .unwrap_err()
+                .message
+                .starts_with("invalid L = -1")
+        );
+    }
+}

@@ -1,0 +1,532 @@
+//! Readers of FE results: CalculiX's `.dat` file for a microslip deck, and plain CSV curves that any
+//! FE code can write (`F_N,w_mm` for the beams, `KT_MPa_per_mm,u_mm` for the plate).
+//!
+//! Parsing only: the caller reads the files (with a size cap, [`crate::file`]) and hands the text
+//! here. Every problem names its line where there is one.
+
+use std::collections::HashMap;
+
+use thiserror::Error;
+
+use super::deck::sets;
+use super::header::DeckHeader;
+use crate::fit::data::{self, Curve, MEASURED_DEFLECTION};
+use crate::model::inputs::Inputs;
+use crate::model::params::{Domain, Unit};
+use crate::model::regime::Regime;
+
+/// What is wrong with an FE result file.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+pub enum ResultsError {
+    /// A problem on a line.
+    #[error("line {line}: {problem}")]
+    Line {
+        /// 1-based line.
+        line: usize,
+        /// What is wrong.
+        problem: String,
+    },
+    /// Something the file should hold and does not.
+    #[error("{0}")]
+    Missing(String),
+}
+
+impl From<data::DataError> for ResultsError {
+    fn from(e: data::DataError) -> Self {
+        ResultsError::Line {
+            line: e.line,
+            problem: e.problem,
+        }
+    }
+}
+
+/// One FE point of the twin beams.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BeamFePoint {
+    /// Tip force on each beam (N).
+    pub force: f64,
+    /// Tip deflection w(L) (mm).
+    pub deflection: f64,
+    /// What the interface slip shows, when the results have it.
+    pub interface: Option<FeInterface>,
+}
+
+/// One FE point of the squeezed plate.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlateFePoint {
+    /// The stick slope K_T of the run (MPa/mm).
+    pub stiffness: f64,
+    /// u(L) (mm): the thickness mean for CalculiX results (what the strip theory's u stands for),
+    /// the given value for CSV.
+    pub end_displacement: f64,
+    /// u(L) at the contact face and at mid-thickness (mm), CalculiX results only.
+    pub through_thickness: Option<[f64; 2]>,
+    /// What the interface slip shows, when the results have it.
+    pub interface: Option<FeInterface>,
+}
+
+/// The interface state read from the slip profile: macroslip where K_T |s| >= mu P.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FeInterface {
+    /// Where the macroslip zone at the free end starts (mm): L when there is none.
+    pub macroslip_start: f64,
+    /// The regime of the regularized law the profile shows.
+    pub regime: Regime,
+}
+
+/// A microslip deck's `.dat` output, with the deck it came from.
+#[derive(Debug, Clone)]
+pub struct CcxRun<'a> {
+    /// The deck's header.
+    pub header: &'a DeckHeader,
+    /// The deck's text (for node coordinates).
+    pub deck: &'a str,
+    /// The `.dat` file's text.
+    pub dat: &'a str,
+}
+
+/// One block of a `.dat` file: a quantity of a node set at one time.
+#[derive(Debug, Clone, PartialEq)]
+struct DatBlock {
+    set: String,
+    time: f64,
+    rows: Vec<(usize, [f64; 3])>,
+}
+
+/// The CSV form of the plate curve.
+pub const PLATE_CURVE: Curve = Curve {
+    x: "KT_MPa_per_mm",
+    y: "u_mm",
+    x_what: "stiffnesses",
+    x_domain: Domain::STIFFNESS,
+    x_unit: Unit::MegapascalPerMillimetre,
+    min_rows: 1,
+};
+
+/// The CSV form of the beam curve: the measurement format of `fit`, one row or more.
+pub const BEAM_CURVE: Curve = Curve {
+    min_rows: 1,
+    ..MEASURED_DEFLECTION
+};
+
+/// Beam points from a CSV `F_N,w_mm`.
+///
+/// # Errors
+/// As [`data::parse_curve`].
+pub fn beam_points_from_csv(text: &str) -> Result<Vec<BeamFePoint>, ResultsError> {
+    Ok(data::parse_curve(text, &BEAM_CURVE)?
+        .into_iter()
+        .map(|(force, deflection)| BeamFePoint {
+            force,
+            deflection,
+            interface: None,
+        })
+        .collect())
+}
+
+/// Plate points from a CSV `KT_MPa_per_mm,u_mm`.
+///
+/// # Errors
+/// As [`data::parse_curve`].
+pub fn plate_points_from_csv(text: &str) -> Result<Vec<PlateFePoint>, ResultsError> {
+    Ok(data::parse_curve(text, &PLATE_CURVE)?
+        .into_iter()
+        .map(|(stiffness, end_displacement)| PlateFePoint {
+            stiffness,
+            end_displacement,
+            through_thickness: None,
+            interface: None,
+        })
+        .collect())
+}
+
+impl CcxRun<'_> {
+    /// The beam points of a beam deck's run: one per load step that CalculiX finished.
+    ///
+    /// # Errors
+    /// A malformed `.dat` line, or no result for the deck's first load step (a run that failed
+    /// before it, or the `.dat` of another deck).
+    pub fn beam_points(&self) -> Result<Vec<BeamFePoint>, ResultsError> {
+        let Inputs::Beam { structure, .. } = self.header.inputs else {
+            return Err(ResultsError::Missing(
+                "the deck is a plate deck; use `microslip compare plate`".into(),
+            ));
+        };
+        let blocks = parse_dat(self.dat)?;
+        let nodes = parse_nodes(self.deck)?;
+        let saturation = structure.friction * structure.pressure / structure.tangential_stiffness;
+        let mut points = Vec::new();
+        for (n, &force) in self.header.loads.iter().enumerate() {
+            // Step 1 applies the pressure; load n ends step n + 2, at total time n + 2.
+            let time = (n + 2) as f64;
+            let Some(tip) = find(&blocks, sets::BEAM_TIP, time) else {
+                break;
+            };
+            let deflection = mean(tip.rows.iter().map(|(_, u)| u[1]));
+            let interface = match (
+                find(&blocks, sets::BEAM_LOWER_FACE, time),
+                find(&blocks, sets::BEAM_UPPER_FACE, time),
+            ) {
+                (Some(lower), Some(upper)) => {
+                    let (xs, slips) = relative_slip(&nodes, lower, Some(upper))?;
+                    Some(interface_state(&xs, &slips, saturation))
+                }
+                _ => None,
+            };
+            points.push(BeamFePoint {
+                force,
+                deflection,
+                interface,
+            });
+        }
+        if points.is_empty() {
+            return Err(ResultsError::Missing(format!(
+                "no displacements of set {} at the end of the first load step (time 2): did ccx \
+                 finish, and is this the .dat of this deck?",
+                sets::BEAM_TIP
+            )));
+        }
+        Ok(points)
+    }
+
+    /// The plate point of a plate deck's run.
+    ///
+    /// # Errors
+    /// A malformed `.dat` line, or no result at the end of the step.
+    pub fn plate_point(&self) -> Result<PlateFePoint, ResultsError> {
+        let Inputs::Plate(plate) = self.header.inputs else {
+            return Err(ResultsError::Missing(
+                "the deck is a beam deck; use `microslip compare beam`".into(),
+            ));
+        };
+        let blocks = parse_dat(self.dat)?;
+        let nodes = parse_nodes(self.deck)?;
+        let end = find(&blocks, sets::PLATE_END, 1.0).ok_or_else(|| {
+            ResultsError::Missing(format!(
+                "no displacements of set {} at the end of the step (time 1): did ccx finish, and \
+                 is this the .dat of this deck?",
+                sets::PLATE_END
+            ))
+        })?;
+        // The end nodes from the contact face up, at every half element: Simpson's rule over
+        // each quadratic element gives the thickness mean exactly for the element's field.
+        let mut column: Vec<(f64, f64)> = end
+            .rows
+            .iter()
+            .map(|(id, u)| node_coordinate(&nodes, *id).map(|c| (c[1], u[0])))
+            .collect::<Result<_, _>>()?;
+        column.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if column.len() < 3 || column.len().is_multiple_of(2) {
+            return Err(ResultsError::Missing(format!(
+                "set {} has {} nodes; a column of quadratic elements has an odd number, 3 or more",
+                sets::PLATE_END,
+                column.len()
+            )));
+        }
+        let thickness = column[column.len() - 1].0 - column[0].0;
+        let mean = column
+            .windows(3)
+            .step_by(2)
+            .map(|w| (w[2].0 - w[0].0) * (w[0].1 + 4.0 * w[1].1 + w[2].1) / 6.0)
+            .sum::<f64>()
+            / thickness;
+        let face = column[0].1;
+        let mid = column[column.len() / 2].1;
+        let interface = match find(&blocks, sets::PLATE_FACE, 1.0) {
+            Some(face_nodes) => {
+                let (xs, slips) = relative_slip(&nodes, face_nodes, None)?;
+                let saturation = plate.friction * plate.pressure / plate.tangential_stiffness;
+                Some(interface_state(&xs, &slips, saturation))
+            }
+            None => None,
+        };
+        Ok(PlateFePoint {
+            stiffness: plate.tangential_stiffness,
+            end_displacement: mean,
+            through_thickness: Some([face, mid]),
+            interface,
+        })
+    }
+}
+
+fn find<'a>(blocks: &'a [DatBlock], set: &str, time: f64) -> Option<&'a DatBlock> {
+    // Blocks are printed at every increment; the last one at the step's end time is the result.
+    blocks
+        .iter()
+        .rev()
+        .find(|b| b.set.eq_ignore_ascii_case(set) && (b.time - time).abs() < 1e-6 * time.max(1.0))
+}
+
+fn mean(values: impl Iterator<Item = f64>) -> f64 {
+    let (sum, count) = values.fold((0.0, 0usize), |(s, n), v| (s + v, n + 1));
+    sum / count.max(1) as f64
+}
+
+fn node_coordinate(nodes: &HashMap<usize, [f64; 3]>, id: usize) -> Result<[f64; 3], ResultsError> {
+    nodes.get(&id).copied().ok_or_else(|| {
+        ResultsError::Missing(format!(
+            "node {id} of the .dat is not in the deck's *NODE list: the .dat is of another deck"
+        ))
+    })
+}
+
+/// Positions x (mm) and slips |u_other - u| (mm) along an interface, in x order. `other` is the
+/// facing surface's node set (same x positions); `None` for a fixed rigid plane.
+fn relative_slip(
+    nodes: &HashMap<usize, [f64; 3]>,
+    own: &DatBlock,
+    other: Option<&DatBlock>,
+) -> Result<(Vec<f64>, Vec<f64>), ResultsError> {
+    let mut points: Vec<(f64, f64)> = Vec::with_capacity(own.rows.len());
+    for (n, (id, u)) in own.rows.iter().enumerate() {
+        let x = node_coordinate(nodes, *id)?[0];
+        let facing = match other {
+            Some(block) => {
+                let (other_id, v) = block.rows.get(n).ok_or_else(|| {
+                    ResultsError::Missing(format!(
+                        "sets {} and {} differ in length",
+                        own.set, block.set
+                    ))
+                })?;
+                let other_x = node_coordinate(nodes, *other_id)?[0];
+                if (other_x - x).abs() > 1e-9 * x.abs().max(1.0) {
+                    return Err(ResultsError::Missing(format!(
+                        "nodes {id} and {other_id} do not face each other (x = {x} and {other_x})"
+                    )));
+                }
+                v[0]
+            }
+            None => 0.0,
+        };
+        points.push((x, (facing - u[0]).abs()));
+    }
+    points.sort_by(|a, b| a.0.total_cmp(&b.0));
+    Ok(points.into_iter().unzip())
+}
+
+/// The regime and the start of the macroslip zone at the free end from a slip profile: macroslip
+/// where |s| >= the saturation slip mu P / K_T. The start is found walking from the free end toward
+/// x = 0 and interpolated linearly between the last sliding node and the first one that does not.
+fn interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> FeInterface {
+    let n = xs.len();
+    let last = n.saturating_sub(1);
+    if n == 0 || slips[last] < saturation {
+        return FeInterface {
+            macroslip_start: xs.last().copied().unwrap_or(0.0),
+            regime: Regime::Microslip,
+        };
+    }
+    let mut i = last;
+    while i > 0 && slips[i - 1] >= saturation {
+        i -= 1;
+    }
+    if i == 0 {
+        return FeInterface {
+            macroslip_start: xs[0],
+            regime: Regime::Macroslip,
+        };
+    }
+    let (x0, x1, s0, s1) = (xs[i - 1], xs[i], slips[i - 1], slips[i]);
+    let start = x0 + (x1 - x0) * (saturation - s0) / (s1 - s0);
+    FeInterface {
+        macroslip_start: start,
+        regime: Regime::MicroslipMacroslip,
+    }
+}
+
+/// The displacement blocks of a `.dat` file. A block starts with a line like
+/// ` displacements (vx,vy,vz) for set WTIP and time  0.2000000E+01` and holds rows
+/// `node vx vy vz`; blocks of other quantities are skipped.
+fn parse_dat(text: &str) -> Result<Vec<DatBlock>, ResultsError> {
+    let mut blocks: Vec<DatBlock> = Vec::new();
+    let mut in_block = false;
+    for (index, line) in text.lines().enumerate() {
+        let fail = |problem: String| ResultsError::Line {
+            line: index + 1,
+            problem,
+        };
+        let trimmed = line.trim();
+        if trimmed.is_empty() {
+            continue;
+        }
+        if let Some(rest) = trimmed.strip_prefix("displacements (vx,vy,vz) for set ") {
+            let (set, time) = rest
+                .split_once(" and time")
+                .ok_or_else(|| fail("a displacement header without 'and time'".into()))?;
+            let time = time.trim();
+            let time = time
+                .parse::<f64>()
+                .ok()
+                .filter(|t| t.is_finite())
+                .ok_or_else(|| fail(format!("time '{time}' is not a number")))?;
+            blocks.push(DatBlock {
+                set: set.trim().to_string(),
+                time,
+                rows: Vec::new(),
+            });
+            in_block = true;
+            continue;
+        }
+        let fields: Vec<&str> = trimmed.split_whitespace().collect();
+        let is_row = fields.first().is_some_and(|f| f.parse::<usize>().is_ok());
+        match blocks.last_mut() {
+            Some(block) if in_block && is_row => {
+                if fields.len() != 4 {
+                    return Err(fail(format!(
+                        "expected a node and 3 displacements, found {} fields",
+                        fields.len()
+                    )));
+                }
+                let mut u = [0.0; 3];
+                for (slot, text) in u.iter_mut().zip(&fields[1..]) {
+                    *slot = text
+                        .parse::<f64>()
+                        .ok()
+                        .filter(|v| v.is_finite())
+                        .ok_or_else(|| fail(format!("'{text}' is not a finite number")))?;
+                }
+                let id = fields[0].parse().unwrap_or_default();
+                block.rows.push((id, u));
+            }
+            _ => in_block = false,
+        }
+    }
+    Ok(blocks)
+}
+
+/// The node coordinates of a deck's `*NODE` sections (mm).
+fn parse_nodes(deck: &str) -> Result<HashMap<usize, [f64; 3]>, ResultsError> {
+    let mut nodes = HashMap::new();
+    let mut in_nodes = false;
+    for (index, line) in deck.lines().enumerate() {
+        let trimmed = line.trim();
+        if trimmed.starts_with("**") || trimmed.is_empty() {
+            continue;
+        }
+        if trimmed.starts_with('*') {
+            let keyword = trimmed.split(',').next().unwrap_or("").trim();
+            in_nodes = keyword.eq_ignore_ascii_case("*NODE");
+            continue;
+        }
+        if !in_nodes {
+            continue;
+        }
+        let fail = |problem: String| ResultsError::Line {
+            line: index + 1,
+            problem: format!("deck: {problem}"),
+        };
+        let fields: Vec<&str> = trimmed.split(',').map(str::trim).collect();
+        let id = fields[0]
+            .parse::<usize>()
+            .map_err(|_| fail(format!("'{}' is not a node number", fields[0])))?;
+        let mut c = [0.0; 3];
+        for (axis, slot) in c.iter_mut().enumerate() {
+            let text = fields.get(axis + 1).copied().unwrap_or("0");
+            *slot = text
+                .parse::<f64>()
+                .map_err(|_| fail(format!("coordinate '{text}' is not a number")))?;
+        }
+        nodes.insert(id, c);
+    }
+    if nodes.is_empty() {
+        return Err(ResultsError::Missing(
+            "the deck has no *NODE section".into(),
+        ));
+    }
+    Ok(nodes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const DAT: &str = "
+ displacements (vx,vy,vz) for set WTIP and time  0.1000000E+01
+
+       253  2.778075E-04  4.785714E-05 -1.428571E-05
+       811  2.778075E-04  4.785714E-05  1.428571E-05
+
+ stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz) for set LOWER and time  0.1000000E+01
+
+         1   1  1.0  2.0  3.0  4.0  5.0  6.0
+
+ displacements (vx,vy,vz) for set WTIP and time  0.2000000E+01
+
+       253  1.0E-02  1.1E-02 0.0
+       811  1.0E-02  1.3E-02 0.0
+";
+
+    #[test]
+    fn dat_blocks_are_read_and_other_quantities_skipped() {
+        let blocks = parse_dat(DAT).unwrap();
+        assert_eq!(blocks.len(), 2);
+        assert_eq!(blocks[0].set, "WTIP");
+        assert_eq!(blocks[1].time, 2.0);
+        assert_eq!(
+            blocks[1].rows,
+            vec![(253, [1e-2, 1.1e-2, 0.0]), (811, [1e-2, 1.3e-2, 0.0])]
+        );
+        assert!((mean(blocks[1].rows.iter().map(|r| r.1[1])) - 1.2e-2).abs() < 1e-15);
+    }
+
+    #[test]
+    fn a_broken_dat_line_is_named() {
+        let broken = DAT.replace("1.1E-02", "1.1E-0x");
+        assert_eq!(
+            parse_dat(&broken).unwrap_err().to_string(),
+            "line 13: '1.1E-0x' is not a finite number"
+        );
+        let short = DAT.replace("  1.3E-02 0.0", "");
+        assert!(
+            parse_dat(&short)
+                .unwrap_err()
+                .to_string()
+                .starts_with("line 14: expected a node")
+        );
+    }
+
+    #[test]
+    fn macroslip_start_is_interpolated_from_the_free_end() {
+        let xs = [0.0, 1.0, 2.0, 3.0, 4.0];
+        // Saturation 1: the slip crosses it between x = 2 (0.5) and x = 3 (1.5).
+        let state = interface_state(&xs, &[0.0, 0.2, 0.5, 1.5, 3.0], 1.0);
+        assert_eq!(state.regime, Regime::MicroslipMacroslip);
+        assert!((state.macroslip_start - 2.5).abs() < 1e-12);
+        let none = interface_state(&xs, &[0.0, 0.1, 0.2, 0.3, 0.9], 1.0);
+        assert_eq!(
+            (none.macroslip_start, none.regime),
+            (4.0, Regime::Microslip)
+        );
+        let all = interface_state(&xs, &[1.0, 1.1, 1.2, 1.3, 1.4], 1.0);
+        assert_eq!((all.macroslip_start, all.regime), (0.0, Regime::Macroslip));
+    }
+
+    #[test]
+    fn deck_nodes_are_read() {
+        let deck = "** c\n*NODE, NSET=NALL\n1, 0.0, -20.0, 0.0\n2, 2.5e-1, 1., 3\n*ELEMENT, TYPE=C3D20R\n1, 2, 3\n";
+        let nodes = parse_nodes(deck).unwrap();
+        assert_eq!(nodes[&2], [0.25, 1.0, 3.0]);
+        assert_eq!(nodes.len(), 2);
+        assert!(
+            parse_nodes("*NODE\nx, 1, 2, 3\n")
+                .unwrap_err()
+                .to_string()
+                .contains("'x' is not a node number")
+        );
+    }
+
+    #[test]
+    fn csv_curves_take_one_row() {
+        let beams = beam_points_from_csv("F_N,w_mm\n100,0.039\n").unwrap();
+        assert_eq!(beams[0].deflection, 0.039);
+        let plate = plate_points_from_csv("KT_MPa_per_mm,u_mm\n1e4,6.8e-5\n1e6,1.48e-5\n").unwrap();
+        assert_eq!(plate.len(), 2);
+        let error = plate_points_from_csv("KT_MPa_per_mm,u_mm\n0,1\n").unwrap_err();
+        assert!(
+            error
+                .to_string()
+                .starts_with("line 2: KT_MPa_per_mm = 0 is too small"),
+            "{error}"
+        );
+    }
+}
