@@ -15,8 +15,10 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use thiserror::Error;
 
 use crate::curves::{self, RangeError, Samples, Spacing};
+use crate::fe;
 use crate::fe::deck::{self, DeckMesh};
 use crate::fe::header::StickSlope;
+use crate::fe::load::LoadError;
 use crate::fit::{self, FitError};
 use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, Compact, Domain, ModelKind, ParamError, Unit, parse_number};
@@ -177,6 +179,35 @@ pub enum Command {
         #[arg(short = 'o', long, value_name = "FILE")]
         output: Option<PathBuf>,
     },
+    /// Compare an FE code's results with the closed forms, point by point, and show the K_T they
+    /// imply.
+    Compare {
+        /// Which benchmark.
+        #[arg(value_enum)]
+        model: ModelKind,
+        /// Result files: the .dat of a `microslip deck ccx` run (its deck JOB.inp beside it), or a
+        /// CSV from any FE code: F_N,w_mm (beam) or KT_MPa_per_mm,u_mm (plate). Several plate
+        /// runs (one per K_T) may be given.
+        #[arg(required = true, value_name = "RESULT")]
+        results: Vec<PathBuf>,
+        /// The deck of a .dat result (default: the result's name with .inp).
+        #[arg(long, value_name = "FILE")]
+        deck: Option<PathBuf>,
+        /// Parameters for CSV results (a .dat takes them from its deck).
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Poisson ratio for the beams' shear deflection, CSV results only (a deck records its own).
+        #[arg(
+            long,
+            value_name = "NU",
+            default_value_t = 0.3,
+            allow_negative_numbers = true
+        )]
+        nu: f64,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = CompareFormat::Text)]
+        format: CompareFormat,
+    },
     /// Validate preset files; report every problem; exit 1 if any.
     Check {
         /// Preset files (TOML).
@@ -310,6 +341,17 @@ pub enum ReportFormat {
 pub enum FeCode {
     /// CalculiX's solver, ccx (tested with 2.20).
     Ccx,
+}
+
+/// Output formats of `compare`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum CompareFormat {
+    /// A table with the K_T the results imply.
+    Text,
+    /// One row per FE point.
+    Csv,
+    /// Rows and the implied K_T.
+    Json,
 }
 
 /// Why a command failed.
@@ -555,6 +597,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             out.write_all(report::presets::listing(&rows, dir.as_deref()).as_bytes())?
         }
         Some(Command::Check { files }) => check(out, files)?,
+        Some(Command::Compare {
+            model,
+            results,
+            deck,
+            inputs,
+            nu,
+            format,
+        }) => run_compare(out, *model, results, deck.as_deref(), inputs, *nu, *format)?,
         Some(Command::Deck {
             code: FeCode::Ccx,
             model,
@@ -616,6 +666,112 @@ fn force_range_error(error: RangeError) -> CliError {
         error,
         flags: ["--from", "--to", "--points"],
     }
+}
+
+/// `microslip compare`: reads every result file, builds the closed forms from its deck's header (or
+/// from `--preset`/`--set` for CSV) and prints the comparison.
+fn run_compare(
+    out: &mut impl Write,
+    model: ModelKind,
+    results: &[PathBuf],
+    deck: Option<&std::path::Path>,
+    inputs: &InputArgs,
+    nu: f64,
+    format: CompareFormat,
+) -> Result<(), CliError> {
+    let data_error = |e: LoadError| CliError::Data {
+        path: e.path,
+        reason: e.reason,
+    };
+    if deck.is_some() && results.len() > 1 {
+        return Err(CliError::Flag {
+            flag: "--deck",
+            value: results.len() as f64,
+            allowed: "--deck names the deck of one result file; give one result".to_string(),
+        });
+    }
+    let source: Vec<String> = results.iter().map(|p| p.display().to_string()).collect();
+    let source = source.join(", ");
+    // The parameters for CSV results, checked only when a CSV needs them.
+    let from_flags = || load(inputs, model, model_command(model, "compare"));
+    match model {
+        ModelKind::Beam => {
+            let [path] = results else {
+                return Err(CliError::Flag {
+                    flag: "RESULT",
+                    value: results.len() as f64,
+                    allowed: "compare beam takes one result file (all load steps of one run)"
+                        .to_string(),
+                });
+            };
+            let loaded = fe::load::beam_results(path, deck).map_err(data_error)?;
+            let (beams, poisson) = match &loaded.header {
+                Some(header) => match header.model()? {
+                    Model::Beam { beams, .. } => (beams, header.poisson),
+                    Model::Plate(_) => unreachable!("beam_results refuses plate decks"),
+                },
+                None => match from_flags()? {
+                    (_, Model::Beam { beams, .. }) => (
+                        beams,
+                        check_flag("--nu", nu, Domain::PoissonRatio, Unit::Dimensionless)?,
+                    ),
+                    (_, Model::Plate(_)) => unreachable!("load(.., Beam) returned a plate"),
+                },
+            };
+            let comparison = fe::compare::compare_beams(&beams, poisson, &loaded.points);
+            let stiffness = beams.params().tangential_stiffness;
+            match format {
+                CompareFormat::Text => out.write_all(
+                    report::compare::beam_text(&source, stiffness, &comparison).as_bytes(),
+                )?,
+                CompareFormat::Json => write_json(
+                    out,
+                    &report::compare::beam_json(&source, stiffness, &comparison),
+                )?,
+                CompareFormat::Csv => write_table(
+                    out,
+                    TableFormat::Csv,
+                    comparison
+                        .rows
+                        .iter()
+                        .map(report::compare::BeamCompareRow::from),
+                )?,
+            }
+        }
+        ModelKind::Plate => {
+            let mut rows = Vec::new();
+            for path in results {
+                let loaded = fe::load::plate_results(path, deck).map_err(data_error)?;
+                let plate = match &loaded.header {
+                    Some(header) => match header.model()? {
+                        Model::Plate(plate) => plate,
+                        Model::Beam { .. } => unreachable!("plate_results refuses beam decks"),
+                    },
+                    None => match from_flags()? {
+                        (_, Model::Plate(plate)) => plate,
+                        (_, Model::Beam { .. }) => {
+                            unreachable!("load(.., Plate) returned beams")
+                        }
+                    },
+                };
+                rows.extend(fe::compare::compare_plate(&plate, &loaded.points));
+            }
+            match format {
+                CompareFormat::Text => {
+                    out.write_all(report::compare::plate_text(&source, &rows).as_bytes())?
+                }
+                CompareFormat::Json => {
+                    write_json(out, &report::compare::plate_json(&source, &rows))?
+                }
+                CompareFormat::Csv => write_table(
+                    out,
+                    TableFormat::Csv,
+                    rows.iter().map(report::compare::PlateCompareRow::from),
+                )?,
+            }
+        }
+    }
+    Ok(())
 }
 
 /// `command` followed by the model's name, for error messages ("deck ccx beam").

@@ -9,7 +9,9 @@
 //! Why the decks are built as they are, and how they differ from the paper's Ansys model, is in
 //! docs/theory.md, "Benchmarking an FE code"; the measured agreement is in README.md.
 
+pub mod compare;
 pub mod deck;
 pub mod header;
+pub mod load;
 mod mesh;
 pub mod results;

@@ -138,6 +138,28 @@ impl SqueezedPlate {
         })
     }
 
+    /// The K_T (MPa/mm) at which the regularized u(L) equals `end_displacement` (mm), all else
+    /// as in this plate: what an FE result of u(L) says about the stiffness its code really used.
+    /// `None` when no K_T in the accepted domain gives it: u(L) falls from the free expansion
+    /// nu (1 + nu) P L / E (K_T -> 0) to the Coulomb value (K_T -> infinity), strictly (docs/theory.md,
+    /// (P10)), so outside that interval there is no answer, and inside it exactly one.
+    pub fn stiffness_for_end_displacement(&self, end_displacement: f64) -> Option<f64> {
+        let domain = crate::model::params::Domain::STIFFNESS;
+        let at = |log_kt: f64| {
+            self.with_clamped(PlateParam::Stiffness, log_kt.exp())
+                .regularized()
+                .end_displacement()
+        };
+        let (lo, hi) = (domain.min().ln(), domain.max().ln());
+        let (u_soft, u_stiff) = (at(lo), at(hi));
+        if !(u_stiff..=u_soft).contains(&end_displacement) {
+            return None;
+        }
+        // Relative misfit, so that the root finder sees numbers near 1 whatever the scale of u.
+        let log_kt = find_root_in_bracket(|k| at(k) / end_displacement - 1.0, lo, hi);
+        Some(log_kt.exp())
+    }
+
     /// alpha = sqrt((1 - nu^2) K_T / (E t_p)) (1/mm), eq. (P4).
     pub fn decay_rate(&self) -> f64 {
         self.alpha

@@ -1,0 +1,233 @@
+//! FE results against the closed forms, point by point, and the K_T the FE results imply.
+//!
+//! Beams: the FE w(L) against the paper's Euler-Bernoulli closed form and against it plus each
+//! beam's shear deflection (B13), which continuum elements include; the implied K_T (and mu) come
+//! from the existing fit ([`crate::fit`]) run on the FE points with the shear deflection taken off,
+//! so that it measures the interface, not the beam theory. Plate: u(L) against the strip theory,
+//! and per point the K_T whose closed-form u(L) equals the FE value.
+
+use super::results::{BeamFePoint, FeInterface, PlateFePoint};
+use crate::fit::{self, FitError, FitResult, Measurement};
+use crate::model::regime::Regime;
+use crate::{SqueezedPlate, TipForce, TwinBeams};
+
+/// One FE point of the beams beside the closed forms.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BeamCompared {
+    /// The FE point.
+    pub fe: BeamFePoint,
+    /// Euler-Bernoulli w(L) under the regularized law (mm): the paper's closed form.
+    pub euler: f64,
+    /// The same plus the shear deflection (mm).
+    pub shear_corrected: f64,
+    /// The closed form's regime.
+    pub regime: Regime,
+    /// The closed form's start of the macroslip zone X (mm): L when there is none.
+    pub macroslip_start: f64,
+}
+
+impl BeamCompared {
+    /// (FE - closed form) / closed form against the Euler-Bernoulli value.
+    pub fn difference_euler(&self) -> f64 {
+        self.fe.deflection / self.euler - 1.0
+    }
+
+    /// (FE - closed form) / closed form against the shear-corrected value.
+    pub fn difference_shear_corrected(&self) -> f64 {
+        self.fe.deflection / self.shear_corrected - 1.0
+    }
+
+    /// FE X minus the closed form's (mm), when the FE results have the slip.
+    pub fn macroslip_start_difference(&self) -> Option<f64> {
+        self.fe
+            .interface
+            .map(|i| i.macroslip_start - self.macroslip_start)
+    }
+}
+
+/// The beams' comparison.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BeamComparison {
+    /// Point by point.
+    pub rows: Vec<BeamCompared>,
+    /// The Poisson ratio used for the shear deflection.
+    pub poisson: f64,
+    /// mu and K_T fitted to the FE points less their shear deflection.
+    pub implied: Result<FitResult, FitError>,
+}
+
+/// Compares FE points of the beams with the closed forms of `beams` (the K_T the deck gave the FE
+/// code); `poisson` is the material's, for the shear deflection.
+pub fn compare_beams(beams: &TwinBeams, poisson: f64, points: &[BeamFePoint]) -> BeamComparison {
+    let rows: Vec<BeamCompared> = points
+        .iter()
+        .map(|&fe| {
+            let force = TipForce::clamped(fe.force);
+            let state = beams.regularized(force);
+            let euler = state.tip_deflection();
+            BeamCompared {
+                fe,
+                euler,
+                shear_corrected: euler + beams.shear_deflection(force, poisson),
+                regime: state.regime(),
+                macroslip_start: state.micro_zone_end(),
+            }
+        })
+        .collect();
+    let bending_only: Vec<Measurement> = rows
+        .iter()
+        .map(|r| Measurement {
+            force: r.fe.force,
+            deflection: r.fe.deflection - (r.shear_corrected - r.euler),
+        })
+        .collect();
+    let implied = fit::fit_twin_beams(beams.params(), &bending_only, None, None);
+    BeamComparison {
+        rows,
+        poisson,
+        implied,
+    }
+}
+
+/// One FE point of the plate beside the closed forms.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlateCompared {
+    /// The FE point.
+    pub fe: PlateFePoint,
+    /// The strip theory's u(L) under the regularized law at the FE run's K_T (mm).
+    pub closed: f64,
+    /// Under the plain Coulomb law (mm).
+    pub coulomb: f64,
+    /// The closed form's regime.
+    pub regime: Regime,
+    /// The closed form's X_r (mm).
+    pub micro_zone_end: f64,
+    /// The K_T (MPa/mm) whose closed-form u(L) equals the FE value; `None` when no accepted K_T
+    /// does (the FE value is outside the range the strip theory can give).
+    pub implied_stiffness: Option<f64>,
+}
+
+impl PlateCompared {
+    /// (FE - closed form) / closed form for u(L).
+    pub fn difference(&self) -> f64 {
+        self.fe.end_displacement / self.closed - 1.0
+    }
+
+    /// The same at the contact face and at mid-thickness, when the results have them.
+    pub fn differences_through_thickness(&self) -> Option<[f64; 2]> {
+        self.fe
+            .through_thickness
+            .map(|u| u.map(|u| u / self.closed - 1.0))
+    }
+
+    /// The FE interface state, when the results have the slip.
+    pub fn fe_interface(&self) -> Option<FeInterface> {
+        self.fe.interface
+    }
+}
+
+/// Compares FE points of the plate (each at its own K_T) with the closed forms of `plate` at that
+/// K_T. Points whose K_T is outside the accepted domain cannot occur: the readers refuse them.
+pub fn compare_plate(plate: &SqueezedPlate, points: &[PlateFePoint]) -> Vec<PlateCompared> {
+    points
+        .iter()
+        .map(|&fe| {
+            let at = plate.with_clamped(crate::PlateParam::Stiffness, fe.stiffness);
+            let state = at.regularized();
+            PlateCompared {
+                fe,
+                closed: state.end_displacement(),
+                coulomb: at.coulomb().end_displacement(),
+                regime: state.regime(),
+                micro_zone_end: state.micro_zone_end(),
+                implied_stiffness: at.stiffness_for_end_displacement(fe.end_displacement),
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{PlateParams, TwinBeamsParams};
+
+    #[test]
+    fn closed_form_points_compare_to_zero_and_imply_their_own_stiffness() {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let truth = TwinBeams::new(TwinBeamsParams {
+            tangential_stiffness: 300.0,
+            ..TwinBeamsParams::PAPER
+        })
+        .unwrap();
+        // "FE" points made of another K_T's closed form plus the shear deflection.
+        let points: Vec<BeamFePoint> = [40.0, 60.0, 80.0, 100.0, 150.0, 200.0]
+            .map(|f| {
+                let force = TipForce::new(f).unwrap();
+                BeamFePoint {
+                    force: f,
+                    deflection: truth.regularized(force).tip_deflection()
+                        + truth.shear_deflection(force, 0.3),
+                    interface: None,
+                }
+            })
+            .to_vec();
+        let same = compare_beams(&truth, 0.3, &points);
+        for row in &same.rows {
+            assert!(row.difference_shear_corrected().abs() < 1e-12);
+            assert!(row.difference_euler() > 0.0, "shear adds deflection");
+        }
+        let other = compare_beams(&beams, 0.3, &points);
+        let fit = other.implied.unwrap();
+        assert!(
+            (fit.kt.value / 300.0 - 1.0).abs() < 1e-4,
+            "{}",
+            fit.kt.value
+        );
+        assert!((fit.mu.value / 0.3 - 1.0).abs() < 1e-4, "{}", fit.mu.value);
+    }
+
+    #[test]
+    fn plate_stiffness_is_recovered_from_its_own_end_displacement() {
+        let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        for kt in [1e2, 1e4, 3e5, 1e6, 1e8] {
+            let u = plate
+                .with_tangential_stiffness(kt)
+                .unwrap()
+                .regularized()
+                .end_displacement();
+            let found = plate.stiffness_for_end_displacement(u).unwrap();
+            assert!((found / kt - 1.0).abs() < 1e-6, "K_T {kt}: found {found}");
+        }
+        // Below the Coulomb value, or beyond the free expansion, no K_T gives it.
+        let coulomb = plate.coulomb().end_displacement();
+        assert_eq!(plate.stiffness_for_end_displacement(0.5 * coulomb), None);
+        let p = PlateParams::PAPER;
+        let free = p.poisson * (1.0 + p.poisson) * p.pressure * p.half_length / p.youngs_modulus;
+        assert_eq!(plate.stiffness_for_end_displacement(1.01 * free), None);
+    }
+
+    #[test]
+    fn plate_comparison_uses_each_points_stiffness() {
+        let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        let u4 = plate
+            .with_tangential_stiffness(1e4)
+            .unwrap()
+            .regularized()
+            .end_displacement();
+        let rows = compare_plate(
+            &plate,
+            &[PlateFePoint {
+                stiffness: 1e4,
+                end_displacement: 1.1 * u4,
+                through_thickness: None,
+                interface: None,
+            }],
+        );
+        assert!((rows[0].difference() - 0.1).abs() < 1e-12);
+        assert_eq!(rows[0].regime, Regime::Microslip);
+        assert!(
+            rows[0].implied_stiffness.unwrap() < 1e4,
+            "more displacement, softer"
+        );
+    }
+}

@@ -1,0 +1,155 @@
+//! Reading FE result files a user names (CLI `compare`, the TUI's `d`): a CalculiX `.dat` with the
+//! microslip deck it came from (its header gives the parameters), or a CSV curve from any code.
+
+use std::path::{Path, PathBuf};
+
+use thiserror::Error;
+
+use super::header::DeckHeader;
+use super::results::{
+    BeamFePoint, CcxRun, PlateFePoint, beam_points_from_csv, plate_points_from_csv,
+};
+use crate::file::{Size, read_capped};
+use crate::model::params::ModelKind;
+
+/// Largest result file read (256 MiB): a `.dat` of a fine deck is a few MB.
+pub const MAX_RESULT_SIZE: Size = Size(256 << 20);
+
+/// A result file that cannot be used, with the file it is about.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("{path}: {reason}")]
+pub struct LoadError {
+    /// The file.
+    pub path: String,
+    /// What is wrong (with the line when there is one).
+    pub reason: String,
+}
+
+/// FE points read from one file, with the header of the deck that produced them (CalculiX), or
+/// none (CSV: the caller supplies the parameters).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Loaded<P> {
+    /// The deck's header, for `.dat` results.
+    pub header: Option<DeckHeader>,
+    /// The points.
+    pub points: Vec<P>,
+}
+
+fn read(path: &Path, what: &'static str) -> Result<String, LoadError> {
+    read_capped(path, MAX_RESULT_SIZE, what).map_err(|e| fail(path, e.to_string()))
+}
+
+fn fail(path: &Path, reason: impl Into<String>) -> LoadError {
+    LoadError {
+        path: path.display().to_string(),
+        reason: reason.into(),
+    }
+}
+
+/// Whether `path` names CalculiX output (by its extension: `.dat`; `.frd` is refused with advice).
+fn is_ccx(path: &Path) -> Result<bool, LoadError> {
+    match path.extension().and_then(|e| e.to_str()) {
+        Some(e) if e.eq_ignore_ascii_case("dat") => Ok(true),
+        Some(e) if e.eq_ignore_ascii_case("frd") => Err(fail(
+            path,
+            "give the .dat file of the run: the deck prints what compare reads there",
+        )),
+        _ => Ok(false),
+    }
+}
+
+/// The deck of a `.dat`: `deck` when given, else the `.dat`'s path with the extension `.inp`.
+fn deck_path(dat: &Path, deck: Option<&Path>) -> PathBuf {
+    deck.map_or_else(|| dat.with_extension("inp"), Path::to_path_buf)
+}
+
+fn read_run(
+    path: &Path,
+    deck: Option<&Path>,
+    wanted: ModelKind,
+) -> Result<(DeckHeader, String, String), LoadError> {
+    let deck_path = deck_path(path, deck);
+    let deck_text = read(&deck_path, "a deck").map_err(|e| LoadError {
+        reason: format!(
+            "the deck {} is needed beside a .dat (or give --deck): {}",
+            deck_path.display(),
+            e.reason
+        ),
+        ..e
+    })?;
+    let header = DeckHeader::parse(&deck_text)
+        .map_err(|e| fail(&deck_path, e.to_string()))?
+        .ok_or_else(|| {
+            fail(
+                &deck_path,
+                "no '** microslip-deck:' header line: compare reads .dat files of decks written \
+                 by `microslip deck ccx`; for other decks write a CSV",
+            )
+        })?;
+    if header.inputs.kind() != wanted {
+        return Err(fail(
+            &deck_path,
+            format!(
+                "a {} deck; use `microslip compare {}`",
+                header.inputs.kind().name(),
+                header.inputs.kind().name()
+            ),
+        ));
+    }
+    let dat = read(path, "an FE result file")?;
+    Ok((header, deck_text, dat))
+}
+
+/// Beam points from a `.dat` (with its deck) or a CSV `F_N,w_mm`.
+///
+/// # Errors
+/// [`LoadError`] naming the file and, where there is one, the line.
+pub fn beam_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<BeamFePoint>, LoadError> {
+    if is_ccx(path)? {
+        let (header, deck_text, dat) = read_run(path, deck, ModelKind::Beam)?;
+        let run = CcxRun {
+            header: &header,
+            deck: &deck_text,
+            dat: &dat,
+        };
+        let points = run.beam_points().map_err(|e| fail(path, e.to_string()))?;
+        Ok(Loaded {
+            header: Some(header),
+            points,
+        })
+    } else {
+        let text = read(path, "an FE result file")?;
+        let points = beam_points_from_csv(&text).map_err(|e| fail(path, e.to_string()))?;
+        Ok(Loaded {
+            header: None,
+            points,
+        })
+    }
+}
+
+/// Plate points from a `.dat` (with its deck) or a CSV `KT_MPa_per_mm,u_mm`.
+///
+/// # Errors
+/// [`LoadError`] naming the file and, where there is one, the line.
+pub fn plate_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<PlateFePoint>, LoadError> {
+    if is_ccx(path)? {
+        let (header, deck_text, dat) = read_run(path, deck, ModelKind::Plate)?;
+        let run = CcxRun {
+            header: &header,
+            deck: &deck_text,
+            dat: &dat,
+        };
+        let point = run.plate_point().map_err(|e| fail(path, e.to_string()))?;
+        Ok(Loaded {
+            header: Some(header),
+            points: vec![point],
+        })
+    } else {
+        let text = read(path, "an FE result file")?;
+        let points = plate_points_from_csv(&text).map_err(|e| fail(path, e.to_string()))?;
+        Ok(Loaded {
+            header: None,
+            points,
+        })
+    }
+}

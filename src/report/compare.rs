@@ -1,0 +1,252 @@
+//! `microslip compare`: FE results beside the closed forms, as text, CSV or JSON. The numbers come
+//! from [`crate::fe::compare`]; this file only words and lays them out.
+
+use std::fmt::Write as _;
+
+use serde::Serialize;
+use serde_json::Value;
+
+use super::{number, sanitize};
+use crate::fe::compare::{BeamCompared, BeamComparison, PlateCompared};
+use crate::model::params::Compact;
+
+/// One row of `microslip compare beam`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct BeamCompareRow {
+    /// Tip force on each beam (N).
+    #[serde(rename = "F_N")]
+    pub force: f64,
+    /// FE w(L) (mm).
+    pub w_fe_mm: f64,
+    /// Closed form, Euler-Bernoulli (the paper's) (mm).
+    pub w_euler_mm: f64,
+    /// (FE - Euler-Bernoulli) / Euler-Bernoulli.
+    pub diff_euler: f64,
+    /// Closed form plus the shear deflection (mm).
+    pub w_shear_corrected_mm: f64,
+    /// (FE - shear corrected) / shear corrected.
+    pub diff_shear_corrected: f64,
+    /// The closed form's regime.
+    pub regime: &'static str,
+    /// The regime the FE slip profile shows (empty without one).
+    pub regime_fe: Option<&'static str>,
+    /// Closed-form start of the macroslip zone X (mm).
+    #[serde(rename = "X_mm")]
+    pub macroslip_start: f64,
+    /// FE X (mm), from K_T |slip| = mu P (empty without a slip profile).
+    #[serde(rename = "X_fe_mm")]
+    pub macroslip_start_fe: Option<f64>,
+}
+
+impl From<&BeamCompared> for BeamCompareRow {
+    fn from(r: &BeamCompared) -> Self {
+        BeamCompareRow {
+            force: r.fe.force,
+            w_fe_mm: r.fe.deflection,
+            w_euler_mm: r.euler,
+            diff_euler: r.difference_euler(),
+            w_shear_corrected_mm: r.shear_corrected,
+            diff_shear_corrected: r.difference_shear_corrected(),
+            regime: r.regime.label(),
+            regime_fe: r.fe.interface.map(|i| i.regime.label()),
+            macroslip_start: r.macroslip_start,
+            macroslip_start_fe: r.fe.interface.map(|i| i.macroslip_start),
+        }
+    }
+}
+
+/// One row of `microslip compare plate`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct PlateCompareRow {
+    /// The run's stick slope K_T (MPa/mm).
+    #[serde(rename = "KT_MPa_per_mm")]
+    pub stiffness: f64,
+    /// FE u(L) (mm): thickness mean for CalculiX, the given value for CSV.
+    pub u_fe_mm: f64,
+    /// FE u(L) at the contact face (mm).
+    pub u_fe_contact_face_mm: Option<f64>,
+    /// FE u(L) at mid-thickness (mm).
+    pub u_fe_mid_thickness_mm: Option<f64>,
+    /// Strip theory, regularized law (mm).
+    pub u_mm: f64,
+    /// (FE - closed form) / closed form.
+    pub diff: f64,
+    /// The same at the contact face.
+    pub diff_contact_face: Option<f64>,
+    /// The same at mid-thickness.
+    pub diff_mid_thickness: Option<f64>,
+    /// Strip theory, plain Coulomb law (mm).
+    pub u_coulomb_mm: f64,
+    /// The closed form's regime.
+    pub regime: &'static str,
+    /// The regime the FE slip profile shows.
+    pub regime_fe: Option<&'static str>,
+    /// Closed-form X_r (mm).
+    #[serde(rename = "Xr_mm")]
+    pub micro_zone_end: f64,
+    /// FE X_r (mm), from K_T |slip| = mu P.
+    #[serde(rename = "Xr_fe_mm")]
+    pub micro_zone_end_fe: Option<f64>,
+    /// The K_T whose closed-form u(L) equals the FE value (MPa/mm).
+    #[serde(rename = "KT_implied_MPa_per_mm")]
+    pub implied_stiffness: Option<f64>,
+}
+
+impl From<&PlateCompared> for PlateCompareRow {
+    fn from(r: &PlateCompared) -> Self {
+        let through = r.fe.through_thickness;
+        let diffs = r.differences_through_thickness();
+        PlateCompareRow {
+            stiffness: r.fe.stiffness,
+            u_fe_mm: r.fe.end_displacement,
+            u_fe_contact_face_mm: through.map(|u| u[0]),
+            u_fe_mid_thickness_mm: through.map(|u| u[1]),
+            u_mm: r.closed,
+            diff: r.difference(),
+            diff_contact_face: diffs.map(|d| d[0]),
+            diff_mid_thickness: diffs.map(|d| d[1]),
+            u_coulomb_mm: r.coulomb,
+            regime: r.regime.label(),
+            regime_fe: r.fe_interface().map(|i| i.regime.label()),
+            micro_zone_end: r.micro_zone_end,
+            micro_zone_end_fe: r.fe_interface().map(|i| i.macroslip_start),
+            implied_stiffness: r.implied_stiffness,
+        }
+    }
+}
+
+fn percent(x: f64) -> String {
+    format!("{:+.2} %", 100.0 * x)
+}
+
+fn optional(x: Option<f64>) -> String {
+    x.map_or_else(|| "-".to_string(), number)
+}
+
+/// The beams' comparison as text. `source` names the FE results; `stiffness` is the K_T the closed
+/// forms use (the deck's stick slope).
+pub fn beam_text(source: &str, stiffness: f64, comparison: &BeamComparison) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "FE results ({}) vs the closed forms: twin beams, K_T = {} MPa/mm\n\
+         w(L) in mm; E-B: Euler-Bernoulli (the paper's closed form); +shear: plus each beam's shear\n\
+         deflection F L / (kappa G b 2h), kappa = 5/6, G = E / (2 (1 + nu)), nu = {}; X (mm): start of\n\
+         the macroslip zone, from the clamp (FE: where K_T |slip| = mu P).\n",
+        sanitize(source),
+        number(stiffness),
+        Compact(comparison.poisson)
+    );
+    let _ = writeln!(
+        out,
+        "{:>8} {:>11} {:>11} {:>9} {:>11} {:>9}  {:>9} {:>9}  regime (closed form / FE)",
+        "F (N)", "w FE", "w E-B", "diff", "w +shear", "diff", "X FE", "X"
+    );
+    for r in &comparison.rows {
+        let row = BeamCompareRow::from(r);
+        let _ = writeln!(
+            out,
+            "{:>8} {:>11} {:>11} {:>9} {:>11} {:>9}  {:>9} {:>9}  {} / {}",
+            number(row.force),
+            number(row.w_fe_mm),
+            number(row.w_euler_mm),
+            percent(row.diff_euler),
+            number(row.w_shear_corrected_mm),
+            percent(row.diff_shear_corrected),
+            optional(row.macroslip_start_fe),
+            number(row.macroslip_start),
+            row.regime,
+            row.regime_fe.unwrap_or("-")
+        );
+    }
+    out.push('\n');
+    match &comparison.implied {
+        Ok(fit) => {
+            let _ = writeln!(
+                out,
+                "What the FE points imply (fit of mu and K_T to w(L) less the shear deflection):\n  \
+                 K_T = {} MPa/mm ({}; the closed forms used {}), mu = {} ({}), RMS {} mm",
+                number(fit.kt.value),
+                fit.kt.status.label(),
+                number(stiffness),
+                number(fit.mu.value),
+                fit.mu.status.label(),
+                number(fit.rms)
+            );
+        }
+        Err(e) => {
+            let _ = writeln!(out, "No K_T implied: {e}");
+        }
+    }
+    out
+}
+
+/// The beams' comparison as JSON.
+pub fn beam_json(source: &str, stiffness: f64, comparison: &BeamComparison) -> Value {
+    let rows: Vec<BeamCompareRow> = comparison.rows.iter().map(BeamCompareRow::from).collect();
+    let implied = match &comparison.implied {
+        Ok(fit) => serde_json::json!({
+            "KT_MPa_per_mm": fit.kt.value,
+            "KT_status": fit.kt.status.label(),
+            "mu": fit.mu.value,
+            "mu_status": fit.mu.status.label(),
+            "rms_mm": fit.rms,
+        }),
+        Err(e) => serde_json::json!({ "error": e.to_string() }),
+    };
+    serde_json::json!({
+        "model": "beam",
+        "results": source,
+        "KT_MPa_per_mm": stiffness,
+        "nu": comparison.poisson,
+        "rows": rows,
+        "implied": implied,
+    })
+}
+
+/// The plate's comparison as text.
+pub fn plate_text(source: &str, rows: &[PlateCompared]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "FE results ({}) vs the closed forms: squeezed plate\n\
+         u(L) in mm; FE: thickness mean (face: contact face, mid: mid-thickness); closed form: strip\n\
+         theory, regularized law; X_r (mm) from the centre (FE: where K_T |slip| = mu P); implied K_T:\n\
+         the K_T whose closed-form u(L) equals the FE mean.\n",
+        sanitize(source)
+    );
+    let _ = writeln!(
+        out,
+        "{:>10} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>9}  {:>10}  regime (closed form / FE)",
+        "K_T", "u FE", "u closed", "diff", "face", "mid", "X_r FE", "X_r", "implied K_T"
+    );
+    for r in rows {
+        let row = PlateCompareRow::from(r);
+        let _ = writeln!(
+            out,
+            "{:>10} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>9}  {:>10}  {} / {}",
+            number(row.stiffness),
+            number(row.u_fe_mm),
+            number(row.u_mm),
+            percent(row.diff),
+            row.diff_contact_face.map_or("-".into(), percent),
+            row.diff_mid_thickness.map_or("-".into(), percent),
+            optional(row.micro_zone_end_fe),
+            number(row.micro_zone_end),
+            row.implied_stiffness.map_or("none".into(), number),
+            row.regime,
+            row.regime_fe.unwrap_or("-")
+        );
+    }
+    out
+}
+
+/// The plate's comparison as JSON.
+pub fn plate_json(source: &str, rows: &[PlateCompared]) -> Value {
+    let rows: Vec<PlateCompareRow> = rows.iter().map(PlateCompareRow::from).collect();
+    serde_json::json!({
+        "model": "plate",
+        "results": source,
+        "rows": rows,
+    })
+}
