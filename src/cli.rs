@@ -623,7 +623,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             let deck = match load(inputs, *model, model_command(*model, "deck ccx"))? {
                 (_, Model::Beam { beams, .. }) => {
                     let nu = check_flag("--nu", *nu, Domain::PoissonRatio, Unit::Dimensionless)?;
-                    let loads = deck_loads(&beams, loads.as_deref())?;
+                    let loads = deck_loads(&beams, loads.as_deref(), slope)?;
                     deck::beam_deck(&beams, &loads, *mesh, slope, nu)
                 }
                 (_, Model::Plate(plate)) => deck::plate_deck(&plate, *mesh, slope),
@@ -786,11 +786,21 @@ fn model_command(model: ModelKind, command: &'static str) -> &'static str {
 }
 
 /// The load steps of a beam deck: `--loads` checked (each a valid force, strictly increasing), or
-/// the default multiples of F_thre, which span stick, microslip and macroslip.
-fn deck_loads(beams: &TwinBeams, loads: Option<&[f64]>) -> Result<Vec<TipForce>, CliError> {
+/// the default multiples of F_thre, which span microslip and macroslip. With a near-Coulomb stick
+/// slope the interface is on the edge of sliding everywhere at exactly F_thre, and CalculiX's
+/// contact iterations can chatter there until they give up; the default then stops at 0.95 F_thre.
+fn deck_loads(
+    beams: &TwinBeams,
+    loads: Option<&[f64]>,
+    slope: StickSlope,
+) -> Result<Vec<TipForce>, CliError> {
     let Some(loads) = loads else {
         let thre = beams.threshold_force();
-        return Ok([0.5, 0.75, 1.0, 1.25, 1.875, 2.5]
+        let at_threshold = match slope {
+            StickSlope::Model => 1.0,
+            StickSlope::NearCoulomb => 0.95,
+        };
+        return Ok([0.5, 0.75, at_threshold, 1.25, 1.875, 2.5]
             .map(|m| TipForce::clamped(m * thre))
             .to_vec());
     };
