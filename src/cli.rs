@@ -139,8 +139,7 @@ pub enum Command {
         #[arg(long, value_name = "T", default_value_t = verify::DEFAULT_TOLERANCE)]
         tolerance: f64,
     },
-    /// Write an input deck of an external FE code for the current parameters (README, "Benchmark
-    /// your FE code"): mesh, contact with stick slope = K_T, load steps, outputs.
+    /// Write a CalculiX input deck for these parameters (README: "Benchmark your FE code").
     Deck {
         /// The FE code (ccx: CalculiX 2.20; Abaqus reads the same keywords, see README).
         #[arg(value_enum)]
@@ -179,8 +178,7 @@ pub enum Command {
         #[arg(short = 'o', long, value_name = "FILE")]
         output: Option<PathBuf>,
     },
-    /// Compare an FE code's results with the closed forms, point by point, and show the K_T they
-    /// imply.
+    /// Compare FE results with the closed forms, point by point, and the K_T they imply.
     Compare {
         /// Which benchmark.
         #[arg(value_enum)]
@@ -822,25 +820,20 @@ fn deck_loads(
     Ok(forces)
 }
 
-/// Writes `bytes` to `path` (replaced atomically: a temporary file in the same directory, then a
-/// rename), or to `out` when there is no path.
+/// Writes `bytes` to `path` (replaced atomically, [`crate::file::write_atomic`]), or to `out` when
+/// there is no path.
 fn write_output(
     out: &mut impl Write,
     path: Option<&std::path::Path>,
     bytes: &[u8],
 ) -> Result<(), CliError> {
-    let Some(path) = path else {
-        out.write_all(bytes)?;
-        return Ok(());
-    };
-    let dir = match path.parent() {
-        Some(dir) if !dir.as_os_str().is_empty() => dir,
-        _ => std::path::Path::new("."),
-    };
-    let mut file = tempfile::NamedTempFile::new_in(dir)?;
-    file.write_all(bytes)?;
-    file.persist(path).map_err(|e| CliError::Output(e.error))?;
-    Ok(())
+    match path {
+        Some(path) => crate::file::write_atomic(path, bytes, true).map_err(|e| CliError::Data {
+            path: path.display().to_string(),
+            reason: e.to_string(),
+        }),
+        None => Ok(out.write_all(bytes)?),
+    }
 }
 
 /// Resolves the preset (default: the paper's data set of `wanted`), applies `--set`, validates.

@@ -1,5 +1,5 @@
 //! Reading user files with a size cap: the only way the library reads a file a user named (a preset,
-//! a measured curve). A file larger than its cap is refused with the cap in the message instead of
+//! a measured curve, FE results); and writing one atomically ([`write_atomic`]). A file larger than its cap is refused with the cap in the message instead of
 //! being read: `/dev/zero`, a FIFO fed forever or a multi-gigabyte log given by mistake stop at the
 //! cap, so memory stays bounded and nothing hangs on an endless stream.
 
@@ -93,6 +93,54 @@ pub fn read_capped(path: &Path, limit: Size, what: &'static str) -> Result<Strin
     String::from_utf8(bytes).map_err(|e| ReadError::NotText {
         offset: e.utf8_error().valid_up_to(),
     })
+}
+
+/// Writes `bytes` to `target` so that it is never seen half written and no old content is lost to
+/// a failed write: a temporary file in the same directory, flushed, then renamed over `target` (or,
+/// without `overwrite`, moved only if `target` does not exist: [`io::ErrorKind::AlreadyExists`]
+/// otherwise), then the directory entry flushed so that the rename survives a power cut. The file
+/// gets the permissions `File::create` would give (0666 less the umask), not a temporary file's 0600.
+///
+/// # Errors
+/// The file system's error; `AlreadyExists` when `overwrite` is false and `target` exists.
+pub fn write_atomic(target: &Path, bytes: &[u8], overwrite: bool) -> io::Result<()> {
+    use std::io::Write;
+    let dir = match target.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir,
+        _ => Path::new("."),
+    };
+    let name = target
+        .file_name()
+        .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+    let prefix = format!(".{name}.");
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".tmp");
+    #[cfg(unix)]
+    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+    // Dropped (and so deleted) on every early return below.
+    let mut temporary = builder.tempfile_in(dir)?;
+    temporary.write_all(bytes)?;
+    temporary.as_file().sync_all()?;
+    if overwrite {
+        temporary.persist(target).map_err(|e| e.error)?;
+    } else {
+        temporary.persist_noclobber(target).map_err(|e| e.error)?;
+    }
+    sync_directory(dir)
+}
+
+/// Flushes a directory's entries, so that a rename survives a power cut. Windows has no such call
+/// (and does not need it for this); there it does nothing.
+fn sync_directory(dir: &Path) -> io::Result<()> {
+    #[cfg(unix)]
+    {
+        std::fs::File::open(dir)?.sync_all()
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = dir;
+        Ok(())
+    }
 }
 
 #[cfg(test)]

@@ -2,7 +2,6 @@
 //! atomic and never clobbers: a crash, a full disk or a file that appeared meanwhile never leaves a
 //! half-written, lost or overwritten preset, nor a stray temporary file.
 
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use thiserror::Error;
@@ -99,46 +98,12 @@ pub fn save_atomic(
         reason: e.to_string(),
     };
     std::fs::create_dir_all(dir).map_err(|e| io_error(dir, e))?;
-    // Dropped (and so deleted) on every early return below.
-    let prefix = format!(".{name}.toml.");
-    let mut builder = tempfile::Builder::new();
-    builder.prefix(&prefix).suffix(".tmp");
-    // A preset is an ordinary file: the permissions `File::create` would give (0666 less the
-    // umask), not the private 0600 of a temporary file.
-    #[cfg(unix)]
-    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
-    let mut temporary = builder.tempfile_in(dir).map_err(|e| io_error(dir, e))?;
-    temporary
-        .write_all(text.as_bytes())
-        .and_then(|()| temporary.as_file().sync_all())
-        .map_err(|e| io_error(&target, e))?;
-    let persisted = if overwrite {
-        temporary.persist(&target)
-    } else {
-        temporary.persist_noclobber(&target)
-    };
-    match persisted {
-        Ok(_) => {}
-        Err(e) if e.error.kind() == std::io::ErrorKind::AlreadyExists => {
-            return Err(SaveError::Exists(name.to_string()));
+    match crate::file::write_atomic(&target, text.as_bytes(), overwrite) {
+        Ok(()) => Ok(target),
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+            Err(SaveError::Exists(name.to_string()))
         }
-        Err(e) => return Err(io_error(&target, e.error)),
-    }
-    sync_directory(dir).map_err(|e| io_error(dir, e))?;
-    Ok(target)
-}
-
-/// Flushes a directory's entries, so that a rename survives a power cut. Windows has no such call
-/// (and does not need it for this); there it does nothing.
-fn sync_directory(dir: &Path) -> std::io::Result<()> {
-    #[cfg(unix)]
-    {
-        std::fs::File::open(dir)?.sync_all()
-    }
-    #[cfg(not(unix))]
-    {
-        let _ = dir;
-        Ok(())
+        Err(e) => Err(io_error(&target, e)),
     }
 }
 
@@ -169,6 +134,7 @@ mod tests {
     use crate::model::inputs::Inputs;
     use crate::model::params::{BeamParam, ModelKind, Param};
     use crate::preset::to_toml;
+    use std::io::Write;
 
     const KT: Param = Param::Beam(BeamParam::Stiffness);
 

@@ -1,0 +1,141 @@
+//! The closed forms against real CalculiX 2.20 results (`tests/data/calculix/`: decks written by
+//! `microslip deck ccx`, and the `.dat` files ccx wrote for them), read through the library's own
+//! readers. CalculiX is not needed here: CI runs it for real in `validation/calculix/validate.py`.
+//!
+//! The expected figures are independent of this code: the tolerances the validation states, and
+//! CalculiX values measured separately on another mesh (the project's shared reference,
+//! `calculix-2.20-comparison.md`).
+
+use std::path::PathBuf;
+
+use microslip::fe::compare::{compare_beams, compare_plate};
+use microslip::fe::deck::{DeckMesh, beam_deck};
+use microslip::fe::header::StickSlope;
+use microslip::fe::load::{beam_results, plate_results};
+use microslip::{Model, Regime, TipForce, TwinBeams, TwinBeamsParams};
+
+fn fixture(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/calculix")
+        .join(name)
+}
+
+#[test]
+fn the_committed_deck_is_the_one_the_code_writes_today() {
+    // The .dat files below are only evidence if they came from today's deck.
+    let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+    let loads = [40.0, 60.0, 80.0, 100.0, 150.0, 200.0].map(|f| TipForce::new(f).unwrap());
+    let deck = beam_deck(&beams, &loads, DeckMesh::Coarse, StickSlope::Model, 0.3);
+    let committed = std::fs::read_to_string(fixture("paper-beams.inp")).unwrap();
+    assert!(deck == committed, "regenerate tests/data/calculix with ccx");
+}
+
+#[test]
+fn paper_beams_agree_with_calculix_once_shear_deflection_is_added() {
+    let loaded = beam_results(&fixture("paper-beams.dat"), None).unwrap();
+    let header = loaded.header.expect("a .dat comes with its deck's header");
+    let Model::Beam { beams, .. } = header.model().unwrap() else {
+        panic!("a beam deck")
+    };
+    assert_eq!(loaded.points.len(), 6);
+    let comparison = compare_beams(&beams, header.poisson, &loaded.points);
+    for row in &comparison.rows {
+        let f = row.fe.force;
+        // Euler-Bernoulli alone is 0.7-2.3 % too stiff; with the shear deflection within 1 %.
+        assert!(
+            (0.005..0.03).contains(&row.difference_euler()),
+            "F = {f}: {}",
+            row.difference_euler()
+        );
+        assert!(
+            row.difference_shear_corrected().abs() < 0.01,
+            "F = {f}: {}",
+            row.difference_shear_corrected()
+        );
+        let fe = row.fe.interface.expect("the deck prints the interface");
+        assert_eq!(fe.regime, row.regime, "F = {f}");
+        // X to two elements (the mesh grows from 0.25 mm at the clamp to 4 mm).
+        assert!(
+            (fe.macroslip_start - row.macroslip_start).abs() < 1.0,
+            "F = {f}: X {} vs {}",
+            fe.macroslip_start,
+            row.macroslip_start
+        );
+    }
+    // The stiffness CalculiX really used is its stick slope, 600 MPa/mm.
+    let fit = comparison.implied.unwrap();
+    assert!(
+        (fit.kt.value / 600.0 - 1.0).abs() < 0.05,
+        "{}",
+        fit.kt.value
+    );
+    assert!((fit.mu.value / 0.3 - 1.0).abs() < 0.02, "{}", fit.mu.value);
+}
+
+#[test]
+fn calculix_beams_reproduce_the_independent_measurement() {
+    // CalculiX 2.20 on a uniform mesh of 200 x 4 elements per beam (shared reference, with the same
+    // load and a graded mesh converging to it): w(L) at F = 40, 100, 200 N.
+    let reference = [(40.0, 0.011377), (100.0, 0.038815), (200.0, 0.134333)];
+    let loaded = beam_results(&fixture("paper-beams.dat"), None).unwrap();
+    for (force, w) in reference {
+        let point = loaded.points.iter().find(|p| p.force == force).unwrap();
+        assert!(
+            (point.deflection / w - 1.0).abs() < 0.003,
+            "F = {force}: {} vs {w}",
+            point.deflection
+        );
+    }
+}
+
+#[test]
+fn the_strip_theory_holds_for_a_soft_interface_and_fails_at_the_papers_stiffness() {
+    let soft = plate_results(&fixture("plate-kt1e4.dat"), None).unwrap();
+    let Model::Plate(plate) = soft.header.as_ref().unwrap().model().unwrap() else {
+        panic!("a plate deck")
+    };
+    let row = compare_plate(&plate, &soft.points)[0];
+    assert!(row.difference().abs() < 0.02, "{}", row.difference());
+    for d in row.differences_through_thickness().unwrap() {
+        assert!(d.abs() < 0.02, "{d}");
+    }
+
+    let stiff = plate_results(&fixture("paper-plate.dat"), None).unwrap();
+    let Model::Plate(plate) = stiff.header.as_ref().unwrap().model().unwrap() else {
+        panic!("a plate deck")
+    };
+    let row = compare_plate(&plate, &stiff.points)[0];
+    assert!(row.difference() > 0.3, "{}", row.difference());
+    // The shared reference (another mesh): 4.482e-6 mm at the contact face, 1.482e-5 mm mid.
+    let [face, mid] = row.fe.through_thickness.unwrap();
+    assert!((face / 4.482e-6 - 1.0).abs() < 0.05, "{face}");
+    assert!((mid / 1.482e-5 - 1.0).abs() < 0.01, "{mid}");
+    // Both show macroslip at the free end.
+    let fe = row.fe.interface.unwrap();
+    assert_eq!(fe.regime, Regime::MicroslipMacroslip);
+    assert_eq!(row.regime, Regime::MicroslipMacroslip);
+    // The strip theory would need a softer interface to give CalculiX's mean u(L).
+    let implied = row.implied_stiffness.unwrap();
+    assert!(implied < 1e6, "{implied}");
+}
+
+#[test]
+fn a_dat_without_its_deck_says_what_is_missing() {
+    let dir = tempfile::tempdir().unwrap();
+    let dat = dir.path().join("run.dat");
+    std::fs::copy(fixture("paper-beams.dat"), &dat).unwrap();
+    let error = beam_results(&dat, None).unwrap_err();
+    assert!(
+        error.reason.contains("run.inp is needed beside a .dat"),
+        "{error}"
+    );
+    // With the deck named, it reads; a plate deck for a beam result is refused by name.
+    assert!(beam_results(&dat, Some(&fixture("paper-beams.inp"))).is_ok());
+    let wrong = beam_results(&dat, Some(&fixture("paper-plate.inp"))).unwrap_err();
+    assert!(
+        wrong
+            .reason
+            .contains("a plate deck; use `microslip compare plate`"),
+        "{wrong}"
+    );
+}
