@@ -413,7 +413,11 @@ fn the_coulomb_end_displacement_does_not_depend_on_the_length() {
 /// appears at very different K_T; what `compare plate` relies on to name one implied K_T.
 #[test]
 fn end_displacement_falls_strictly_with_tangential_stiffness() {
-    for (tp, nu, mu, length) in [(0.2, 0.3, 0.3, 10.0), (1.0, 0.1, 0.05, 3.0), (0.05, 0.45, 2.0, 100.0)] {
+    for (tp, nu, mu, length) in [
+        (0.2, 0.3, 0.3, 10.0),
+        (1.0, 0.1, 0.05, 3.0),
+        (0.05, 0.45, 2.0, 100.0),
+    ] {
         let plate = SqueezedPlate::new(PlateParams {
             thickness: tp,
             poisson: nu,
@@ -429,7 +433,10 @@ fn end_displacement_falls_strictly_with_tangential_stiffness() {
             let state = plate.with_tangential_stiffness(kt).unwrap().regularized();
             let u = state.end_displacement();
             regimes.insert(state.regime());
-            assert!(u < previous, "t_p {tp}: u(L) = {u} at K_T = {kt}, previous {previous}");
+            assert!(
+                u < previous,
+                "t_p {tp}: u(L) = {u} at K_T = {kt}, previous {previous}"
+            );
             previous = u;
         }
         assert_eq!(regimes.len(), 2, "the sweep crosses the regime change");

@@ -146,22 +146,21 @@ pub fn beam_deck(
 
     write_material(&mut deck, p.youngs_modulus, poisson, &["LOWER", "UPPER"]);
     write_interaction(&mut deck, normal_slope, p.friction, slope);
-    deck.push_str(
-        "** slave: upper beam's lower face; master: lower beam's upper face\n\
-         *CONTACT PAIR, INTERACTION=JENKINS, TYPE=SURFACE TO SURFACE\n\
-         SUPPERBOT, SLOWERTOP\n\
-         *BOUNDARY\nCLAMP, 1, 3\n",
+    write_contact_pair(
+        &mut deck,
+        "upper beam's lower face",
+        "lower beam's upper face",
+        ["SUPPERBOT", "SLOWERTOP"],
     );
+    deck.push_str("*BOUNDARY\nCLAMP, 1, 3\n");
 
     deck.push_str("** step 1: the interface pressure P, pressing the beams together\n");
     start_step(&mut deck);
-    deck.push_str("*DLOAD\n");
-    for id in lower.boundary_faces(Face::YMin) {
-        let _ = writeln!(deck, "{id}, P{}, {}", Face::YMin.number(), real(p.pressure));
-    }
-    for id in upper.boundary_faces(Face::YMax) {
-        let _ = writeln!(deck, "{id}, P{}, {}", Face::YMax.number(), real(p.pressure));
-    }
+    write_pressure(
+        &mut deck,
+        &[(&lower, Face::YMin), (&upper, Face::YMax)],
+        p.pressure,
+    );
     end_beam_step(&mut deck);
     for (n, force) in loads.iter().enumerate() {
         let _ = writeln!(
@@ -282,19 +281,19 @@ pub fn plate_deck(plate: &SqueezedPlate, mesh: DeckMesh, stick_slope: StickSlope
 
     write_material(&mut deck, p.youngs_modulus, p.poisson, &["PLATE", "BASE"]);
     write_interaction(&mut deck, normal_slope, p.friction, slope);
+    write_contact_pair(
+        &mut deck,
+        "the plate's lower face",
+        "the fixed block's upper face",
+        ["SPLATEBOT", "SBASETOP"],
+    );
     deck.push_str(
-        "** slave: the plate's lower face; master: the fixed block's upper face\n\
-         *CONTACT PAIR, INTERACTION=JENKINS, TYPE=SURFACE TO SURFACE\n\
-         SPLATEBOT, SBASETOP\n\
-         ** symmetry at x = 0, plane strain (no node moves across the width), fixed plane\n\
+        "** symmetry at x = 0, plane strain (no node moves across the width), fixed plane\n\
          *BOUNDARY\nSYMMETRY, 1, 1\nPLATEALL, 3, 3\nFIXED, 1, 3\n",
     );
     deck.push_str("** step 1: the pressure P on the plate's upper face\n");
     start_step(&mut deck);
-    deck.push_str("*DLOAD\n");
-    for id in plate_block.boundary_faces(Face::YMax) {
-        let _ = writeln!(deck, "{id}, P{}, {}", Face::YMax.number(), real(p.pressure));
-    }
+    write_pressure(&mut deck, &[(&plate_block, Face::YMax)], p.pressure);
     for set in [sets::PLATE_END, sets::PLATE_FACE] {
         let _ = writeln!(deck, "*NODE PRINT, NSET={set}\nU");
     }
@@ -356,6 +355,16 @@ fn write_surface(deck: &mut String, name: &str, elements: &[usize], face: Face) 
     }
 }
 
+/// A `*DLOAD` of pressure `pressure` (MPa) on the given boundary faces.
+fn write_pressure(deck: &mut String, faces: &[(&Block, Face)], pressure: f64) {
+    deck.push_str("*DLOAD\n");
+    for &(block, face) in faces {
+        for id in block.boundary_faces(face) {
+            let _ = writeln!(deck, "{id}, P{}, {}", face.number(), real(pressure));
+        }
+    }
+}
+
 fn write_material(deck: &mut String, modulus: f64, poisson: f64, sets: &[&str]) {
     let _ = writeln!(
         deck,
@@ -366,6 +375,17 @@ fn write_material(deck: &mut String, modulus: f64, poisson: f64, sets: &[&str]) 
     for set in sets {
         let _ = writeln!(deck, "*SOLID SECTION, ELSET={set}, MATERIAL=SOLID");
     }
+}
+
+/// The contact pair `[slave, master]` with the `JENKINS` interaction, and a comment saying which
+/// faces they are.
+fn write_contact_pair(deck: &mut String, slave: &str, master: &str, surfaces: [&str; 2]) {
+    let _ = writeln!(
+        deck,
+        "** slave: {slave}; master: {master}\n\
+         *CONTACT PAIR, INTERACTION=JENKINS, TYPE=SURFACE TO SURFACE\n{}, {}",
+        surfaces[0], surfaces[1]
+    );
 }
 
 fn write_interaction(deck: &mut String, normal_slope: f64, friction: f64, stick_slope: f64) {

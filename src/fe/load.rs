@@ -7,7 +7,7 @@ use thiserror::Error;
 
 use super::header::DeckHeader;
 use super::results::{
-    BeamFePoint, CcxRun, PlateFePoint, beam_points_from_csv, plate_points_from_csv,
+    BeamFePoint, CcxRun, PlateFePoint, ResultsError, beam_points_from_csv, plate_points_from_csv,
 };
 use crate::file::{Size, read_capped};
 use crate::model::params::ModelKind;
@@ -105,26 +105,13 @@ fn read_run(
 /// # Errors
 /// [`LoadError`] naming the file and, where there is one, the line.
 pub fn beam_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<BeamFePoint>, LoadError> {
-    if is_ccx(path)? {
-        let (header, deck_text, dat) = read_run(path, deck, ModelKind::Beam)?;
-        let run = CcxRun {
-            header: &header,
-            deck: &deck_text,
-            dat: &dat,
-        };
-        let points = run.beam_points().map_err(|e| fail(path, e.to_string()))?;
-        Ok(Loaded {
-            header: Some(header),
-            points,
-        })
-    } else {
-        let text = read(path, "an FE result file")?;
-        let points = beam_points_from_csv(&text).map_err(|e| fail(path, e.to_string()))?;
-        Ok(Loaded {
-            header: None,
-            points,
-        })
-    }
+    results(
+        path,
+        deck,
+        ModelKind::Beam,
+        |run| run.beam_points(),
+        beam_points_from_csv,
+    )
 }
 
 /// Plate points from a `.dat` (with its deck) or a CSV `KT_MPa_per_mm,u_mm`.
@@ -132,21 +119,38 @@ pub fn beam_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<BeamFePoi
 /// # Errors
 /// [`LoadError`] naming the file and, where there is one, the line.
 pub fn plate_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<PlateFePoint>, LoadError> {
+    results(
+        path,
+        deck,
+        ModelKind::Plate,
+        |run| run.plate_point().map(|p| vec![p]),
+        plate_points_from_csv,
+    )
+}
+
+/// The points of `path`: from CalculiX output (with its deck, which must be of `kind`) or a CSV.
+fn results<P>(
+    path: &Path,
+    deck: Option<&Path>,
+    kind: ModelKind,
+    from_run: impl Fn(&CcxRun) -> Result<Vec<P>, ResultsError>,
+    from_csv: impl Fn(&str) -> Result<Vec<P>, ResultsError>,
+) -> Result<Loaded<P>, LoadError> {
     if is_ccx(path)? {
-        let (header, deck_text, dat) = read_run(path, deck, ModelKind::Plate)?;
+        let (header, deck_text, dat) = read_run(path, deck, kind)?;
         let run = CcxRun {
             header: &header,
             deck: &deck_text,
             dat: &dat,
         };
-        let point = run.plate_point().map_err(|e| fail(path, e.to_string()))?;
+        let points = from_run(&run).map_err(|e| fail(path, e.to_string()))?;
         Ok(Loaded {
             header: Some(header),
-            points: vec![point],
+            points,
         })
     } else {
         let text = read(path, "an FE result file")?;
-        let points = plate_points_from_csv(&text).map_err(|e| fail(path, e.to_string()))?;
+        let points = from_csv(&text).map_err(|e| fail(path, e.to_string()))?;
         Ok(Loaded {
             header: None,
             points,
