@@ -391,3 +391,28 @@ fn the_readme_shows_the_real_main_screen() {
         .collect();
     assert_eq!(captured, real);
 }
+
+/// Types `path` into the `d` prompt and loads it.
+fn load(app: &mut App, path: &str) {
+    app.update(Action::LoadData);
+    // The prompt starts with the previous path: clear it first.
+    for _ in 0..200 {
+        app.update(Action::Backspace);
+    }
+    for c in path.chars() {
+        app.update(Action::Input(c));
+    }
+    app.update(Action::Commit);
+}
+
+#[test]
+fn calculix_points_on_the_deflection_and_displacement_charts() {
+    // Real CalculiX 2.20 results (tests/data/calculix); the deck's parameters become the model's.
+    let mut app = app_with("paper-beams-soft", Charset::Ascii, false);
+    load(&mut app, "tests/data/calculix/paper-beams.dat");
+    insta::assert_snapshot!("calculix_beam_points", screen(&app, 120, 40));
+    // Two plate runs of the same deck but for K_T make a curve of two points.
+    load(&mut app, "tests/data/calculix/plate-kt1e4.dat");
+    load(&mut app, "tests/data/calculix/paper-plate.dat");
+    insta::assert_snapshot!("calculix_plate_points", screen(&app, 120, 40));
+}

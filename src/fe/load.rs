@@ -63,11 +63,8 @@ fn deck_path(dat: &Path, deck: Option<&Path>) -> PathBuf {
     deck.map_or_else(|| dat.with_extension("inp"), Path::to_path_buf)
 }
 
-fn read_run(
-    path: &Path,
-    deck: Option<&Path>,
-    wanted: ModelKind,
-) -> Result<(DeckHeader, String, String), LoadError> {
+/// The header and text of the deck of the `.dat` at `path`.
+fn read_deck(path: &Path, deck: Option<&Path>) -> Result<(DeckHeader, String), LoadError> {
     let deck_path = deck_path(path, deck);
     let deck_text = read(&deck_path, "a deck").map_err(|e| LoadError {
         reason: format!(
@@ -86,9 +83,18 @@ fn read_run(
                  by `microslip deck ccx`; for other decks write a CSV",
             )
         })?;
+    Ok((header, deck_text))
+}
+
+fn read_run(
+    path: &Path,
+    deck: Option<&Path>,
+    wanted: ModelKind,
+) -> Result<(DeckHeader, String, String), LoadError> {
+    let (header, deck_text) = read_deck(path, deck)?;
     if header.inputs.kind() != wanted {
         return Err(fail(
-            &deck_path,
+            &deck_path(path, deck),
             format!(
                 "a {} deck; use `microslip compare {}`",
                 header.inputs.kind().name(),
@@ -98,6 +104,36 @@ fn read_run(
     }
     let dat = read(path, "an FE result file")?;
     Ok((header, deck_text, dat))
+}
+
+/// FE points of either model.
+#[derive(Debug, Clone, PartialEq)]
+pub enum AnyLoaded {
+    /// Twin-beam points.
+    Beam(Loaded<BeamFePoint>),
+    /// Squeezed-plate points.
+    Plate(Loaded<PlateFePoint>),
+}
+
+/// The points of `path`, of whichever model its deck is (CalculiX), or of `csv_model` (CSV: the
+/// columns do not say).
+///
+/// # Errors
+/// [`LoadError`] naming the file and, where there is one, the line.
+pub fn any_results(
+    path: &Path,
+    deck: Option<&Path>,
+    csv_model: ModelKind,
+) -> Result<AnyLoaded, LoadError> {
+    let kind = if is_ccx(path)? {
+        read_deck(path, deck)?.0.inputs.kind()
+    } else {
+        csv_model
+    };
+    match kind {
+        ModelKind::Beam => beam_results(path, deck).map(AnyLoaded::Beam),
+        ModelKind::Plate => plate_results(path, deck).map(AnyLoaded::Plate),
+    }
 }
 
 /// Beam points from a `.dat` (with its deck) or a CSV `F_N,w_mm`.

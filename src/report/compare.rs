@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use serde::Serialize;
 use serde_json::Value;
 
-use super::{number, sanitize};
+use super::{number, number_with, sanitize};
 use crate::fe::compare::{BeamCompared, BeamComparison, PlateCompared};
 use crate::model::params::Compact;
 
@@ -249,4 +249,62 @@ pub fn plate_json(source: &str, rows: &[PlateCompared]) -> Value {
         "results": source,
         "rows": rows,
     })
+}
+
+/// The range of `values` as "a to b" in percent, or the one value.
+fn percent_range(values: impl Iterator<Item = f64>) -> String {
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
+    if lo == hi {
+        percent(lo)
+    } else {
+        format!("{} to {}", percent(lo), percent(hi))
+    }
+}
+
+/// One line for the TUI's status: the beams' comparison in brief.
+pub fn beam_summary(code: &str, comparison: &BeamComparison) -> String {
+    let shear = percent_range(
+        comparison
+            .rows
+            .iter()
+            .map(|r| r.difference_shear_corrected()),
+    );
+    let euler = percent_range(comparison.rows.iter().map(|r| r.difference_euler()));
+    let implied = match &comparison.implied {
+        Ok(fit) if fit.kt.status == crate::fit::Status::Identified => {
+            format!("; implied K_T {} MPa/mm", number_with(fit.kt.value, 4))
+        }
+        Ok(fit) => format!(
+            "; implied K_T {} MPa/mm ({})",
+            number_with(fit.kt.value, 4),
+            fit.kt.status.label()
+        ),
+        Err(_) => String::new(),
+    };
+    format!(
+        "{code}, {} points: w(L) {shear} from closed form + shear (Euler-Bernoulli alone {euler}){implied}",
+        comparison.rows.len()
+    )
+}
+
+/// One line for the TUI's status: one plate run in brief.
+pub fn plate_summary(code: &str, row: &PlateCompared) -> String {
+    let through = row
+        .differences_through_thickness()
+        .map_or(String::new(), |[face, mid]| {
+            format!(
+                "; contact face {}, mid-thickness {}",
+                percent(face),
+                percent(mid)
+            )
+        });
+    format!(
+        "{code} at K_T = {} MPa/mm: u(L) {} mm, strip theory {} mm ({}{through})",
+        number(row.fe.stiffness),
+        number(row.fe.end_displacement),
+        number(row.closed),
+        percent(row.difference())
+    )
 }

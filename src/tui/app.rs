@@ -8,10 +8,12 @@ use super::keymap::Context;
 use super::plots::{self, NumericPoints, Plot, Views};
 use super::text_input::TextInput;
 use super::theme::Theme;
+use crate::PlateParams;
 use crate::fit::Measurement;
 use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, ModelKind, Param, parse_number};
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
+use crate::report::view::{BeamChart, PlateChart, View};
 use crate::report::{number, number_with};
 
 /// A status-line message.
@@ -125,6 +127,9 @@ pub struct App {
     plot: Plot,
     numeric: Option<NumericPoints>,
     measurements: Option<Measurements>,
+    /// Points of an external FE code loaded with `d` (a CalculiX .dat, or a plate CSV), and the
+    /// parameters of the deck they came from.
+    external: Option<(plots::ExternalPoints, Option<Inputs>)>,
     check_in: fn(),
 }
 
@@ -156,6 +161,7 @@ impl App {
             plot: Plot::default(),
             numeric: None,
             measurements: options.data,
+            external: None,
             check_in: || {},
         };
         app.recompute();
@@ -298,7 +304,14 @@ impl App {
             self.numeric = None;
         }
         let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
-        self.plot = plots::build(&model, self.views, self.numeric.as_ref(), measured);
+        let external = self.external.as_ref().map(|(points, _)| points);
+        self.plot = plots::build(
+            &model,
+            self.views,
+            self.numeric.as_ref(),
+            measured,
+            external,
+        );
     }
 
     /// Applies one action.
@@ -498,8 +511,17 @@ impl App {
         }
     }
 
-    /// Reads a measurement file; problems go to the status line and keep the previous data.
+    /// Reads what `d` names: a CalculiX `.dat` (FE results, of the model its deck is), a plate CSV
+    /// `KT_MPa_per_mm,u_mm` on the plate, else a measurement CSV `F_N,w_mm` for the fit. Problems go
+    /// to the status line and keep the previous data.
     fn load_data(&mut self, path: &str) {
+        let is_dat = std::path::Path::new(path)
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("dat"));
+        if is_dat || self.kind == ModelKind::Plate {
+            self.load_fe_results(path);
+            return;
+        }
         let points = crate::fit::data::read_text(path)
             .map_err(|e| e.to_string())
             .and_then(|text| crate::fit::data::parse(&text).map_err(|e| e.to_string()));
@@ -516,6 +538,100 @@ impl App {
             }
             Err(reason) => self.error(format!("{path}: {reason}")),
         }
+    }
+
+    /// FE results: shown on the w(L) or u(L) chart, labelled with the code's name; a deck's
+    /// parameters become the model's (the points mean nothing against others), and the status line
+    /// gives the comparison `microslip compare` prints.
+    fn load_fe_results(&mut self, path: &str) {
+        use crate::fe::load::{AnyLoaded, any_results};
+        let loaded = match any_results(std::path::Path::new(path), None, self.kind) {
+            Ok(loaded) => loaded,
+            Err(e) => return self.error(e.to_string()),
+        };
+        let (model, header, points, code) = match &loaded {
+            AnyLoaded::Beam(l) => (
+                ModelKind::Beam,
+                l.header.as_ref(),
+                l.points.iter().map(|p| (p.force, p.deflection)).collect(),
+                l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
+            ),
+            AnyLoaded::Plate(l) => (
+                ModelKind::Plate,
+                l.header.as_ref(),
+                l.points
+                    .iter()
+                    .map(|p| (p.stiffness, p.end_displacement))
+                    .collect::<Vec<_>>(),
+                l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
+            ),
+        };
+        let origin = header.map(|h| h.inputs);
+        if let Some(inputs) = origin {
+            self.kind = model;
+            self.state_mut().inputs = inputs;
+        }
+        // Plate runs of the same deck but for K_T add up to a curve; anything else replaces.
+        let same_plate = |previous: &Option<Inputs>| match (previous, origin) {
+            (Some(Inputs::Plate(a)), Some(Inputs::Plate(b))) => {
+                PlateParams {
+                    tangential_stiffness: b.tangential_stiffness,
+                    ..*a
+                } == b
+            }
+            _ => false,
+        };
+        let mut points: Vec<(f64, f64)> = points;
+        if let Some((previous, previous_origin)) = &self.external
+            && model == ModelKind::Plate
+            && previous.model == model
+            && same_plate(previous_origin)
+        {
+            points.extend(previous.points.iter().copied());
+            points.sort_by(|a, b| a.0.total_cmp(&b.0));
+            points.dedup_by(|a, b| a.0 == b.0);
+        }
+        let Some(Model::Beam { .. } | Model::Plate(_)) = self.model() else {
+            return self.error(format!("{path}: the deck's parameters are not valid"));
+        };
+        let summary = match (&loaded, self.model()) {
+            (AnyLoaded::Beam(l), Some(Model::Beam { beams, .. })) => {
+                let poisson = header.map_or(0.3, |h| h.poisson);
+                let comparison = crate::fe::compare::compare_beams(&beams, poisson, &l.points);
+                crate::report::compare::beam_summary(code, &comparison)
+            }
+            (AnyLoaded::Plate(l), Some(Model::Plate(plate))) => {
+                let rows = crate::fe::compare::compare_plate(&plate, &l.points);
+                rows.first()
+                    .map(|row| crate::report::compare::plate_summary(code, row))
+                    .unwrap_or_default()
+            }
+            _ => format!("{path}: FE results of the other model: press m"),
+        };
+        let adopted = if origin.is_some() {
+            " (deck parameters adopted)"
+        } else {
+            ""
+        };
+        self.info(format!("{path}{adopted}: {summary}"));
+        self.external = Some((
+            plots::ExternalPoints {
+                label: code.to_string(),
+                model,
+                points,
+            },
+            origin,
+        ));
+        self.views = match model {
+            ModelKind::Beam => Views {
+                beam: View::Chart(BeamChart::Deflection),
+                ..self.views
+            },
+            ModelKind::Plate => Views {
+                plate: View::Chart(PlateChart::Displacement),
+                ..self.views
+            },
+        };
     }
 
     /// Fits mu and K_T of the twin beams to the measurements; adopts each estimate the data

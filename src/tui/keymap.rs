@@ -189,7 +189,7 @@ pub const BINDINGS: &[Binding] = &[
         Context::Main,
         &[(KeyCode::Char('d'), NONE)],
         Action::LoadData,
-        "load measured w(F)",
+        "load data / FE results",
     ),
     bind(
         Context::Main,

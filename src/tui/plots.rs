@@ -74,6 +74,18 @@ pub struct NumericPoints {
     pub points: Series,
 }
 
+/// Points from an external FE code (or a CSV of any code), drawn on the chart of their quantity:
+/// w(L) vs F for the beams, u(L) vs K_T for the plate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExternalPoints {
+    /// The code's name, the legend label ("CalculiX").
+    pub label: String,
+    /// The model the points are of.
+    pub model: ModelKind,
+    /// (F in N, w(L) in mm) for the beams, (K_T in MPa/mm, u(L) in mm) for the plate.
+    pub points: Vec<(f64, f64)>,
+}
+
 /// The view shown for each model; each keeps its own when the other model is active.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Views {
@@ -293,26 +305,48 @@ fn stiffness_table(model: &Model) -> Plot {
     }
 }
 
-/// Builds the view of `model` chosen in `views`, with finite-element points and measurements if
-/// given (measurements show on the twin beams' w(L) vs F chart).
+/// Builds the view of `model` chosen in `views`, with finite-element points, measurements and an
+/// external code's points if given (measurements show on the twin beams' w(L) vs F chart, external
+/// points on the chart of their quantity).
 pub fn build(
     model: &Model,
     views: Views,
     numeric: Option<&NumericPoints>,
     measured: Option<&[Measurement]>,
+    external: Option<&ExternalPoints>,
 ) -> Plot {
-    let (plot, measured) = match *model {
+    let external = external.filter(|e| e.model == model.kind());
+    let mut overlays: Vec<(&str, Series)> = Vec::new();
+    let plot = match *model {
         Model::Beam { beams, force } => match views.beam {
             View::Table(Table::StiffnessComparison) => return stiffness_table(model),
             View::Chart(chart) => {
-                let measured = measured.filter(|_| chart == BeamChart::Deflection);
-                let f_data = measured.and_then(|m| m.last()).map_or(0.0, |m| m.force);
-                (beam_plot(&beams, force, chart, f_data), measured)
+                if chart == BeamChart::Deflection {
+                    if let Some(points) = measured {
+                        let series = points.iter().map(|m| (m.force, m.deflection)).collect();
+                        overlays.push(("measured", series));
+                    }
+                    if let Some(e) = external {
+                        overlays.push((e.label.as_str(), e.points.clone()));
+                    }
+                }
+                let f_data = overlays
+                    .iter()
+                    .flat_map(|(_, s)| s.iter().map(|p| p.0))
+                    .fold(0.0, f64::max);
+                beam_plot(&beams, force, chart, f_data)
             }
         },
         Model::Plate(plate) => match views.plate {
             View::Table(Table::StiffnessComparison) => return stiffness_table(model),
-            View::Chart(chart) => (plate_plot(&plate, chart), None),
+            View::Chart(chart) => {
+                if let (PlateChart::Displacement, Some(e)) = (chart, external) {
+                    // The chart's x axis is log10 K_T.
+                    let series = e.points.iter().map(|&(k, u)| (k.log10(), u)).collect();
+                    overlays.push((e.label.as_str(), series));
+                }
+                plate_plot(&plate, chart)
+            }
         },
     };
     // Every range above lies in the accepted domain, so a chart is always built; should one not be,
@@ -323,13 +357,12 @@ pub fn build(
         y: linear_axis("- (-)", 0.0, 1.0),
         ..Plot::default()
     });
-    if let Some(points) = measured {
-        let points: Series = points.iter().map(|m| (m.force, m.deflection)).collect();
+    for (name, points) in overlays {
         let top = max_y([&points]) * 1.05;
         plot.y.bounds[1] = plot.y.bounds[1].max(top);
         plot.y = linear_axis(plot.y.title.clone(), plot.y.bounds[0], plot.y.bounds[1]);
         plot.series.push(PlotSeries {
-            name: "measured".into(),
+            name: name.into(),
             points,
             kind: SeriesKind::Points,
         });
@@ -688,7 +721,7 @@ mod tests {
         for kind in [ModelKind::Beam, ModelKind::Plate] {
             for views in every_view(kind) {
                 let chart = views.describe(kind).0;
-                let plot = build(&model(kind), views, None, None);
+                let plot = build(&model(kind), views, None, None, None);
                 assert!(!plot.title.is_empty());
                 if let Some(table) = &plot.table {
                     // The K_T table: every line fits the 44-column pane of an 80x24 screen, no NaN.
@@ -784,7 +817,7 @@ mod tests {
                 .unwrap();
             let model = inputs.validate().unwrap();
             for views in every_view(ModelKind::Beam) {
-                let plot = build(&model, views, None, None);
+                let plot = build(&model, views, None, None, None);
                 check_plot(&plot, &format!("beam corner {mask} F={force} {views:?}"));
             }
         }
@@ -802,7 +835,7 @@ mod tests {
             }
             let model = inputs.validate().unwrap();
             for views in every_view(ModelKind::Plate) {
-                let plot = build(&model, views, None, None);
+                let plot = build(&model, views, None, None, None);
                 check_plot(&plot, &format!("plate corner {mask} {views:?}"));
             }
         }

@@ -53,9 +53,10 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 frame,
                 app,
                 area,
-                "Load measurements",
+                "Load measurements or FE results",
                 &format!("File: {}_", input.as_str()),
-                "CSV with columns F_N,w_mm; Enter load, Esc cancel",
+                "CSV F_N,w_mm (beams), KT_MPa_per_mm,u_mm (plate) or a CalculiX .dat; \
+                 Enter load, Esc cancel",
             ),
             Mode::ConfirmOverwrite { name } => overlay::draw_prompt(
                 frame,
