@@ -126,7 +126,9 @@ fn a_dat_without_its_deck_says_what_is_missing() {
     std::fs::copy(fixture("paper-beams.dat"), &dat).unwrap();
     let error = beam_results(&dat, None).unwrap_err();
     assert!(
-        error.reason.contains("run.inp is needed beside a .dat"),
+        error
+            .to_string()
+            .contains("run.inp: the deck that produced the .dat is needed"),
         "{error}"
     );
     // With the deck named, it reads; a plate deck for a beam result is refused by name.

@@ -1366,7 +1366,7 @@ fn compare_errors_name_the_file_and_line() {
     std::fs::copy(calculix_fixture("paper-beams.dat"), &dat).unwrap();
     let stderr = failure(&["compare", "beam", dat.to_str().unwrap()], 2);
     assert!(
-        stderr.contains("run.inp is needed beside a .dat (or give --deck)"),
+        stderr.contains("run.inp: the deck that produced the .dat is needed"),
         "{stderr}"
     );
     let text = std::fs::read_to_string(calculix_fixture("paper-beams.dat")).unwrap();
@@ -1384,6 +1384,9 @@ fn compare_errors_name_the_file_and_line() {
         stderr.contains("line 4: '1.0x' is not a finite number"),
         "{stderr}"
     );
+    let missing = dir.path().join("typo.dat");
+    let stderr = failure(&["compare", "beam", missing.to_str().unwrap()], 2);
+    assert!(stderr.contains("typo.dat: No such file"), "{stderr}");
     let frd = dir.path().join("run.frd");
     std::fs::write(&frd, "").unwrap();
     let stderr = failure(&["compare", "beam", frd.to_str().unwrap()], 2);

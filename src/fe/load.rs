@@ -65,11 +65,13 @@ fn deck_path(dat: &Path, deck: Option<&Path>) -> PathBuf {
 
 /// The header and text of the deck of the `.dat` at `path`.
 fn read_deck(path: &Path, deck: Option<&Path>) -> Result<(DeckHeader, String), LoadError> {
+    // The results first: a mistyped .dat path should say so, not that its deck is missing.
+    std::fs::metadata(path).map_err(|e| fail(path, e.to_string()))?;
     let deck_path = deck_path(path, deck);
     let deck_text = read(&deck_path, "a deck").map_err(|e| LoadError {
         reason: format!(
-            "the deck {} is needed beside a .dat (or give --deck): {}",
-            deck_path.display(),
+            "the deck that produced the .dat is needed, by default beside it with the extension \
+             .inp: {}",
             e.reason
         ),
         ..e
