@@ -5,6 +5,8 @@
 //! 2i + 1 the midpoint of element i. A 20-node brick has corner and edge nodes only, so a half-grid
 //! point is a node unless two or more of its indices are odd (face and body centres).
 
+pub(crate) use crate::numeric::mesh::graded_toward_end;
+
 /// Element boundaries along one axis (mm), strictly increasing, at least two.
 pub(crate) type Breaks = Vec<f64>;
 
@@ -235,38 +237,6 @@ pub(crate) fn uniform(start: f64, end: f64, n: usize) -> Breaks {
             }
         })
         .collect()
-}
-
-/// Boundaries over [start, end] that are `finest` wide at `end` and grow by `ratio` per element
-/// toward `start`, up to `coarsest`; the remaining length is split evenly so that no element is
-/// wider than `coarsest`. Used to resolve the slip zone at a free end.
-pub(crate) fn graded_toward_end(
-    start: f64,
-    end: f64,
-    finest: f64,
-    coarsest: f64,
-    ratio: f64,
-) -> Breaks {
-    let mut widths = Vec::new();
-    let mut covered = 0.0;
-    let mut width = finest.min(end - start);
-    while covered + width < end - start && width < coarsest {
-        widths.push(width);
-        covered += width;
-        width = (width * ratio).min(coarsest);
-    }
-    let rest = end - start - covered;
-    let even = (rest / coarsest).ceil().max(1.0) as usize;
-    let mut breaks = uniform(start, start + rest, even);
-    let mut x = start + rest;
-    for w in widths.iter().rev() {
-        x += w;
-        breaks.push(x);
-    }
-    if let Some(last) = breaks.last_mut() {
-        *last = end;
-    }
-    breaks
 }
 
 #[cfg(test)]

@@ -11,3 +11,4 @@ pub mod regime;
 pub(crate) mod solve;
 pub mod stiffness;
 pub mod twin_beams;
+pub mod validity;

@@ -93,6 +93,40 @@ pub fn ratio_for_smallest(length: f64, elements: usize, smallest: f64) -> f64 {
     hi.exp()
 }
 
+/// Boundaries over [start, end] that are `finest` wide at `end` and grow by `ratio` per element
+/// toward `start`, up to `coarsest`; the remaining length is split evenly so that no element is
+/// wider than `coarsest`. Used to resolve the slip zone at a free end.
+pub(crate) fn graded_toward_end(
+    start: f64,
+    end: f64,
+    finest: f64,
+    coarsest: f64,
+    ratio: f64,
+) -> Vec<f64> {
+    let mut widths = Vec::new();
+    let mut covered = 0.0;
+    let mut width = finest.min(end - start);
+    while covered + width < end - start && width < coarsest {
+        widths.push(width);
+        covered += width;
+        width = (width * ratio).min(coarsest);
+    }
+    let rest = end - start - covered;
+    let even = (rest / coarsest).ceil().max(1.0) as usize;
+    let mut breaks: Vec<f64> = (0..=even)
+        .map(|i| start + rest * i as f64 / even as f64)
+        .collect();
+    let mut x = start + rest;
+    for w in widths.iter().rev() {
+        x += w;
+        breaks.push(x);
+    }
+    if let Some(last) = breaks.last_mut() {
+        *last = end;
+    }
+    breaks
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -6,11 +6,13 @@ pub mod beams;
 mod elements;
 mod error;
 mod interface;
-mod mesh;
+pub(crate) mod mesh;
 mod newton;
 pub mod plate;
+pub mod plate_continuum;
 
 pub use beams::{InterfaceSample, TwinBeamsFe};
 pub use error::NumericError;
 pub use mesh::MeshDensity;
 pub use plate::PlateFe;
+pub use plate_continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};

@@ -1,0 +1,525 @@
+//! The squeezed plate as a 2-D plane-strain continuum: the answer where the strip theory fails.
+//!
+//! The strip theory (`model::plate`) assumes the displacement uniform through the thickness and the
+//! contact pressure equal to P. For stiff interfaces the slip zone at the free end is no wider than
+//! about two plate thicknesses, and neither holds (docs/theory.md, "Validity of the closed forms").
+//! This model drops both assumptions: 8-node quadrilaterals (Q8, 3 x 3 Gauss points) in plane strain
+//! over [0, L] x [0, t_p], symmetry u = 0 at x = 0, the pressure P on the upper face, and on the
+//! lower face the rigid plane: no normal motion (v = 0) and, at every node, the same Jenkins point as
+//! the 1-D solvers (tangential stiffness K_T times the node's share of the face, strength mu times
+//! the node's contact force). The contact force is the reaction of v = 0, so it comes out of the
+//! solution: the strengths are found by a fixed point (solve with given strengths, take the
+//! reactions, repeat), each solve being a Newton iteration with the shared driver. Loading is
+//! proportional (every force scales with P), so one load step reaches P.
+//!
+//! Nodes are numbered column by column from x = 0, so the stiffness is banded (half-bandwidth about
+//! 5 ny + 4 unknowns for ny elements through the thickness).
+
+use super::banded::SymmetricBand;
+use super::error::NumericError;
+use super::interface::{InterfacePoint, Response};
+use super::mesh::graded_toward_end;
+use super::newton::{self, Discretized};
+use crate::PlateParams;
+
+/// How fine the continuum mesh is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ContinuumMesh {
+    /// Elements through the thickness (the element sizes along x scale with it).
+    pub layers: usize,
+}
+
+impl Default for ContinuumMesh {
+    /// Four elements through the thickness, as CalculiX's calibration decks.
+    fn default() -> Self {
+        ContinuumMesh { layers: 4 }
+    }
+}
+
+/// The converged continuum solution at the applied pressure.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContinuumPlate {
+    /// u(L) on the contact face (y = 0) (mm).
+    pub end_displacement_face: f64,
+    /// u(L) at mid-thickness (mm).
+    pub end_displacement_mid: f64,
+    /// u(L) averaged through the thickness (Simpson's rule per element: exact for the element's
+    /// field) (mm): what the strip theory's u stands for.
+    pub end_displacement_mean: f64,
+    /// Where K_T |u| = mu P on the contact face, walking from the free end: X_r as the strip theory
+    /// defines it (mm); L when the end does not reach it.
+    pub micro_zone_end: f64,
+    /// Contact pressure at the free end over P: the stress concentration the strip theory ignores.
+    pub end_pressure_ratio: f64,
+    /// (x, u) along the contact face (mm, mm).
+    pub face: Vec<(f64, f64)>,
+    /// Fixed-point iterations on the contact pressure.
+    pub iterations: usize,
+}
+
+/// Fixed-point iterations allowed on the contact forces.
+const MAX_PRESSURE_ITERATIONS: usize = 60;
+/// Relative change of the contact forces that ends the fixed point.
+const PRESSURE_TOLERANCE: f64 = 1e-9;
+
+/// Solves the plate of `params` under its pressure P.
+///
+/// # Errors
+/// [`NumericError`] when Newton or the fixed point does not converge.
+pub fn solve_plate_continuum(
+    params: PlateParams,
+    mesh: ContinuumMesh,
+) -> Result<ContinuumPlate, NumericError> {
+    let grid = Grid::new(&params, mesh);
+    let pressure = params.pressure;
+    // Start from the strip theory's contact force: P times each node's share of the face.
+    let mut contact: Vec<f64> = grid.face_weights.iter().map(|w| w * pressure).collect();
+    for iteration in 1..=MAX_PRESSURE_ITERATIONS {
+        let mut model = Continuum::new(&grid, &params, &contact);
+        newton::load_to(&mut model, pressure, 1)?;
+        let reactions = model.face_reactions();
+        let scale = reactions.iter().fold(0.0_f64, |m, r| m.max(r.abs()));
+        let change = reactions
+            .iter()
+            .zip(&contact)
+            .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
+        // A node pulled upward would need tension from the plane: it carries no friction.
+        contact = reactions.iter().map(|r| r.max(0.0)).collect();
+        if change <= PRESSURE_TOLERANCE * scale {
+            return Ok(model.result(iteration, &contact));
+        }
+    }
+    Err(NumericError::NoConvergence {
+        load: pressure,
+        cuts: 0,
+    })
+}
+
+/// The mesh: element boundaries and the half-grid numbering of the Q8 nodes.
+#[derive(Debug, Clone)]
+struct Grid {
+    xs: Vec<f64>,
+    ys: Vec<f64>,
+    /// Node id of each half-grid point (column by column), `None` at element centres.
+    ids: Vec<Option<usize>>,
+    nodes: usize,
+    /// Share of the contact face of each lower-face node (mm per mm of width): Simpson weights.
+    face_weights: Vec<f64>,
+    bandwidth: usize,
+}
+
+/// Half-grid offsets of the Q8 nodes: corners counter-clockwise from (x-, y-), then midsides.
+const Q8: [(usize, usize); 8] = [
+    (0, 0),
+    (2, 0),
+    (2, 2),
+    (0, 2),
+    (1, 0),
+    (2, 1),
+    (1, 2),
+    (0, 1),
+];
+/// Natural coordinates of the same nodes.
+const Q8_NATURAL: [(f64, f64); 8] = [
+    (-1.0, -1.0),
+    (1.0, -1.0),
+    (1.0, 1.0),
+    (-1.0, 1.0),
+    (0.0, -1.0),
+    (1.0, 0.0),
+    (0.0, 1.0),
+    (-1.0, 0.0),
+];
+/// 3-point Gauss-Legendre rule on [-1, 1].
+const GAUSS3: [(f64, f64); 3] = [
+    (-0.774_596_669_241_483_4, 5.0 / 9.0),
+    (0.0, 8.0 / 9.0),
+    (0.774_596_669_241_483_4, 5.0 / 9.0),
+];
+
+impl Grid {
+    fn new(p: &PlateParams, mesh: ContinuumMesh) -> Grid {
+        let layers = mesh.layers.max(1);
+        let refinement = layers as f64 / 4.0;
+        let layer = p.thickness / layers as f64;
+        let alpha = ((1.0 - p.poisson * p.poisson) * p.tangential_stiffness
+            / (p.youngs_modulus * p.thickness))
+            .sqrt();
+        // As the CalculiX decks (`fe::deck`): 1/(10 alpha) or half a layer at the free end, growing
+        // by 20 % per element to half the thickness (or L/50).
+        let finest = (0.1 / alpha).min(0.5 * layer * refinement) / refinement;
+        let coarsest = (p.thickness / (2.0 * refinement))
+            .max(p.half_length / (50.0 * refinement))
+            .max(finest);
+        let xs = graded_toward_end(0.0, p.half_length, finest, coarsest, 1.2);
+        let ys: Vec<f64> = (0..=layers)
+            .map(|j| p.thickness * j as f64 / layers as f64)
+            .collect();
+        let (ni, nj) = (2 * (xs.len() - 1) + 1, 2 * layers + 1);
+        let mut ids = Vec::with_capacity(ni * nj);
+        let mut next = 0;
+        for i in 0..ni {
+            for j in 0..nj {
+                ids.push((i % 2 == 0 || j % 2 == 0).then(|| {
+                    next += 1;
+                    next - 1
+                }));
+            }
+        }
+        let mut face_weights = vec![0.0; ni];
+        for e in 0..xs.len() - 1 {
+            let length = xs[e + 1] - xs[e];
+            face_weights[2 * e] += length / 6.0;
+            face_weights[2 * e + 1] += 2.0 * length / 3.0;
+            face_weights[2 * e + 2] += length / 6.0;
+        }
+        let mut grid = Grid {
+            xs,
+            ys,
+            ids,
+            nodes: next,
+            face_weights,
+            bandwidth: 0,
+        };
+        grid.bandwidth = (0..grid.elements_x())
+            .map(|ex| {
+                let dofs = grid.element_dofs(ex, 0);
+                dofs.iter().max().unwrap_or(&0) - dofs.iter().min().unwrap_or(&0)
+            })
+            .max()
+            .unwrap_or(0);
+        grid
+    }
+
+    fn elements_x(&self) -> usize {
+        self.xs.len() - 1
+    }
+
+    fn elements_y(&self) -> usize {
+        self.ys.len() - 1
+    }
+
+    fn node(&self, i: usize, j: usize) -> usize {
+        let nj = 2 * self.elements_y() + 1;
+        self.ids[i * nj + j].expect("corner and midside points are nodes")
+    }
+
+    /// The 16 unknowns of element (ex, ey): (u, v) of each Q8 node.
+    fn element_dofs(&self, ex: usize, ey: usize) -> [usize; 16] {
+        let mut dofs = [0; 16];
+        for (k, &(a, b)) in Q8.iter().enumerate() {
+            let n = self.node(2 * ex + a, 2 * ey + b);
+            dofs[2 * k] = 2 * n;
+            dofs[2 * k + 1] = 2 * n + 1;
+        }
+        dofs
+    }
+}
+
+/// Q8 shape functions and their derivatives (d/dxi, d/deta) at (xi, eta).
+fn q8(xi: f64, eta: f64) -> ([f64; 8], [[f64; 2]; 8]) {
+    let mut n = [0.0; 8];
+    let mut d = [[0.0; 2]; 8];
+    for (k, &(a, b)) in Q8_NATURAL.iter().enumerate() {
+        if a != 0.0 && b != 0.0 {
+            n[k] = 0.25 * (1.0 + a * xi) * (1.0 + b * eta) * (a * xi + b * eta - 1.0);
+            d[k][0] = 0.25 * a * (1.0 + b * eta) * (2.0 * a * xi + b * eta);
+            d[k][1] = 0.25 * b * (1.0 + a * xi) * (a * xi + 2.0 * b * eta);
+        } else if a == 0.0 {
+            n[k] = 0.5 * (1.0 - xi * xi) * (1.0 + b * eta);
+            d[k][0] = -xi * (1.0 + b * eta);
+            d[k][1] = 0.5 * b * (1.0 - xi * xi);
+        } else {
+            n[k] = 0.5 * (1.0 + a * xi) * (1.0 - eta * eta);
+            d[k][0] = 0.5 * a * (1.0 - eta * eta);
+            d[k][1] = -eta * (1.0 + a * xi);
+        }
+    }
+    (n, d)
+}
+
+/// Plane-strain stiffness of a rectangular Q8 element, width * height, per unit depth.
+fn q8_stiffness(width: f64, height: f64, modulus: f64, poisson: f64) -> [[f64; 16]; 16] {
+    let c = modulus / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
+    let d = [
+        [c * (1.0 - poisson), c * poisson, 0.0],
+        [c * poisson, c * (1.0 - poisson), 0.0],
+        [0.0, 0.0, c * (1.0 - 2.0 * poisson) / 2.0],
+    ];
+    let (jx, jy) = (2.0 / width, 2.0 / height);
+    let det = width * height / 4.0;
+    let mut k = [[0.0; 16]; 16];
+    for &(xi, wx) in &GAUSS3 {
+        for &(eta, wy) in &GAUSS3 {
+            let (_, dn) = q8(xi, eta);
+            let mut b = [[0.0; 16]; 3];
+            for n in 0..8 {
+                let (dx, dy) = (dn[n][0] * jx, dn[n][1] * jy);
+                b[0][2 * n] = dx;
+                b[1][2 * n + 1] = dy;
+                b[2][2 * n] = dy;
+                b[2][2 * n + 1] = dx;
+            }
+            let weight = wx * wy * det;
+            for r in 0..16 {
+                let db = [0, 1, 2].map(|i| (0..3).map(|j| d[i][j] * b[j][r]).sum::<f64>());
+                for s in 0..16 {
+                    k[s][r] += weight * (b[0][s] * db[0] + b[1][s] * db[1] + b[2][s] * db[2]);
+                }
+            }
+        }
+    }
+    k
+}
+
+/// One solve with given contact forces (the strengths are mu times them).
+struct Continuum<'a> {
+    grid: &'a Grid,
+    params: &'a PlateParams,
+    /// Elastic stiffness, without boundary conditions.
+    stiffness: SymmetricBand,
+    /// Nodal forces of P = 1 on the upper face.
+    unit_load: Vec<f64>,
+    /// Contact force of each lower-face node at P = 1 (N per mm of width).
+    unit_contact: Vec<f64>,
+    fixed: Vec<usize>,
+    displacement: Vec<f64>,
+    points: Vec<InterfacePoint>,
+    pressure: f64,
+}
+
+impl<'a> Continuum<'a> {
+    fn new(grid: &'a Grid, params: &'a PlateParams, contact: &[f64]) -> Continuum<'a> {
+        let n = 2 * grid.nodes;
+        let mut stiffness = SymmetricBand::zeros(n, grid.bandwidth);
+        for ex in 0..grid.elements_x() {
+            let width = grid.xs[ex + 1] - grid.xs[ex];
+            for ey in 0..grid.elements_y() {
+                let height = grid.ys[ey + 1] - grid.ys[ey];
+                let k = q8_stiffness(width, height, params.youngs_modulus, params.poisson);
+                let dofs = grid.element_dofs(ex, ey);
+                for a in 0..16 {
+                    for b in 0..16 {
+                        if dofs[a] > dofs[b] || a == b {
+                            stiffness.add(dofs[a], dofs[b], k[a][b]);
+                        }
+                    }
+                }
+            }
+        }
+        let top = 2 * grid.elements_y();
+        let mut unit_load = vec![0.0; n];
+        for (i, w) in grid.face_weights.iter().enumerate() {
+            unit_load[2 * grid.node(i, top) + 1] -= w;
+        }
+        let columns = grid.face_weights.len();
+        let mut fixed: Vec<usize> = (0..=top)
+            .filter_map(|j| grid.ids[j].map(|id| 2 * id))
+            .collect();
+        fixed.extend((0..columns).map(|i| 2 * grid.node(i, 0) + 1));
+        let pressure = params.pressure;
+        Continuum {
+            grid,
+            params,
+            stiffness,
+            unit_load,
+            unit_contact: contact.iter().map(|c| c / pressure).collect(),
+            fixed,
+            displacement: vec![0.0; n],
+            points: vec![InterfacePoint::default(); columns],
+            pressure: 0.0,
+        }
+    }
+
+    fn responses(&self, displacement: &[f64], pressure: f64) -> Vec<Response> {
+        let p = self.params;
+        (0..self.points.len())
+            .map(|i| {
+                let slip = displacement[2 * self.grid.node(i, 0)];
+                let stiffness = p.tangential_stiffness * self.grid.face_weights[i];
+                let strength = p.friction * self.unit_contact[i] * pressure;
+                self.points[i].respond(slip, stiffness, strength)
+            })
+            .collect()
+    }
+
+    /// The upward force the plane exerts on each lower-face node (N per mm of width).
+    fn face_reactions(&self) -> Vec<f64> {
+        let internal = self.stiffness.mul_accurate(&self.displacement);
+        (0..self.points.len())
+            .map(|i| {
+                let dof = 2 * self.grid.node(i, 0) + 1;
+                internal[dof] - self.pressure * self.unit_load[dof]
+            })
+            .collect()
+    }
+
+    fn result(&self, iterations: usize, contact: &[f64]) -> ContinuumPlate {
+        let g = self.grid;
+        let p = self.params;
+        let last = g.face_weights.len() - 1;
+        let column: Vec<f64> = (0..=2 * g.elements_y())
+            .map(|j| self.displacement[2 * g.node(last, j)])
+            .collect();
+        let mean = column
+            .windows(3)
+            .step_by(2)
+            .map(|w| (w[0] + 4.0 * w[1] + w[2]) / 6.0)
+            .sum::<f64>()
+            / g.elements_y() as f64;
+        let x_of = |i: usize| {
+            if i % 2 == 0 {
+                g.xs[i / 2]
+            } else {
+                0.5 * (g.xs[i / 2] + g.xs[i / 2 + 1])
+            }
+        };
+        let face: Vec<(f64, f64)> = (0..=last)
+            .map(|i| (x_of(i), self.displacement[2 * g.node(i, 0)]))
+            .collect();
+        let saturation = p.friction * p.pressure / p.tangential_stiffness;
+        let mut start = p.half_length;
+        if face[last].1.abs() >= saturation {
+            let mut i = last;
+            while i > 0 && face[i - 1].1.abs() >= saturation {
+                i -= 1;
+            }
+            start = if i == 0 {
+                0.0
+            } else {
+                let ((x0, s0), (x1, s1)) = (face[i - 1], face[i]);
+                x0 + (x1 - x0) * (saturation - s0.abs()) / (s1.abs() - s0.abs())
+            };
+        }
+        // The end node's force over its share of the face is the pressure there.
+        let end_pressure_ratio = contact[last] / (g.face_weights[last] * p.pressure);
+        ContinuumPlate {
+            end_displacement_face: column[0],
+            end_displacement_mid: column[g.elements_y()],
+            end_displacement_mean: mean,
+            micro_zone_end: start,
+            end_pressure_ratio,
+            face,
+            iterations,
+        }
+    }
+}
+
+impl Discretized for Continuum<'_> {
+    const RESIDUAL_TOLERANCE: f64 = 1e-11;
+
+    fn load(&self) -> f64 {
+        self.pressure
+    }
+
+    fn displacement(&self) -> &[f64] {
+        &self.displacement
+    }
+
+    fn load_scale(&self, pressure: f64) -> f64 {
+        pressure.abs() * self.params.half_length + f64::MIN_POSITIVE
+    }
+
+    fn linearize(
+        &self,
+        displacement: &[f64],
+        pressure: f64,
+    ) -> (Vec<f64>, SymmetricBand, Vec<Response>) {
+        let responses = self.responses(displacement, pressure);
+        let mut residual = self.stiffness.mul_accurate(displacement);
+        for (r, f) in residual.iter_mut().zip(&self.unit_load) {
+            *r -= pressure * f;
+        }
+        let mut tangent = self.stiffness.clone();
+        for (i, response) in responses.iter().enumerate() {
+            let dof = 2 * self.grid.node(i, 0);
+            residual[dof] += response.stress;
+            tangent.add(dof, dof, response.tangent);
+        }
+        for &dof in &self.fixed {
+            residual[dof] = 0.0;
+            tangent.fix(dof);
+        }
+        (residual, tangent, responses)
+    }
+
+    fn commit(&mut self, displacement: Vec<f64>, responses: Vec<Response>, pressure: f64) {
+        for (point, response) in self.points.iter_mut().zip(&responses) {
+            point.plastic_slip = response.plastic_slip;
+        }
+        self.displacement = displacement;
+        self.pressure = pressure;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shape_functions_interpolate_and_sum_to_one() {
+        for (k, &(a, b)) in Q8_NATURAL.iter().enumerate() {
+            let (n, _) = q8(a, b);
+            for (m, value) in n.iter().enumerate() {
+                assert!((value - if m == k { 1.0 } else { 0.0 }).abs() < 1e-14);
+            }
+        }
+        let (n, d) = q8(0.3, -0.7);
+        assert!((n.iter().sum::<f64>() - 1.0).abs() < 1e-14);
+        assert!(d.iter().map(|g| g[0]).sum::<f64>().abs() < 1e-14);
+    }
+
+    #[test]
+    fn element_stiffness_has_three_rigid_modes() {
+        let k = q8_stiffness(2.0, 0.5, 1000.0, 0.3);
+        let nodes: Vec<(f64, f64)> = Q8_NATURAL.iter().map(|&(a, b)| (a, 0.25 * b)).collect();
+        let modes: [Box<dyn Fn(f64, f64) -> (f64, f64)>; 3] = [
+            Box::new(|_, _| (1.0, 0.0)),
+            Box::new(|_, _| (0.0, 1.0)),
+            Box::new(|x, y| (-y, x)),
+        ];
+        for mode in &modes {
+            let u: Vec<f64> = nodes
+                .iter()
+                .flat_map(|&(x, y)| {
+                    let (a, b) = mode(x, y);
+                    [a, b]
+                })
+                .collect();
+            for row in &k {
+                let f: f64 = row.iter().zip(&u).map(|(a, b)| a * b).sum();
+                assert!(f.abs() < 1e-9, "{f}");
+            }
+        }
+    }
+
+    #[test]
+    fn frictionless_plate_expands_as_plane_strain_predicts() {
+        // K_T tiny: no shear on the face; with v = 0 below and P above, sigma_y = -P, eps_z = 0,
+        // sigma_x = 0: u = nu (1 + nu) P x / E exactly, through the whole thickness.
+        let params = PlateParams {
+            tangential_stiffness: 1e-6,
+            ..PlateParams::PAPER
+        };
+        let plate = solve_plate_continuum(params, ContinuumMesh::default()).unwrap();
+        let free = 0.3 * 1.3 * 10.0 * 10.0 / 70_000.0;
+        for u in [
+            plate.end_displacement_face,
+            plate.end_displacement_mid,
+            plate.end_displacement_mean,
+        ] {
+            assert!((u / free - 1.0).abs() < 1e-6, "{u} vs {free}");
+        }
+        assert!((plate.end_pressure_ratio - 1.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn contact_forces_carry_the_applied_pressure() {
+        let grid = Grid::new(&PlateParams::PAPER, ContinuumMesh::default());
+        let contact: Vec<f64> = grid.face_weights.iter().map(|w| w * 10.0).collect();
+        let mut model = Continuum::new(&grid, &PlateParams::PAPER, &contact);
+        newton::load_to(&mut model, 10.0, 1).unwrap();
+        let total: f64 = model.face_reactions().iter().sum();
+        assert!((total / (10.0 * 10.0) - 1.0).abs() < 1e-9, "{total}");
+    }
+}
