@@ -78,8 +78,15 @@ pub enum Command {
     Report,
     /// Twin cantilever beams at one tip force: thresholds, X, w(L) for both laws, regimes.
     Beam(PointArgs),
-    /// Squeezed plate: X_s, X_r, u(L) for both laws, regimes, contact-pressure check.
-    Plate(PointArgs),
+    /// Squeezed plate: X_s, X_r, u(L) for both laws, regimes, contact-pressure check, validity.
+    Plate {
+        #[command(flatten)]
+        point: PointArgs,
+        /// Also solve the plane-strain continuum (done anyway when the strip theory is not
+        /// expected within 2 %).
+        #[arg(long)]
+        continuum: bool,
+    },
     /// Tables over a parameter range, as CSV or JSON.
     #[command(subcommand)]
     Sweep(SweepCommand),
@@ -513,12 +520,27 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 }
             }
         }
-        Some(Command::Plate(args)) => {
+        Some(Command::Plate {
+            point: args,
+            continuum,
+        }) => {
             let (name, model) = load(&args.inputs, ModelKind::Plate, "plate")?;
             if let Model::Plate(plate) = model {
+                let solved = (*continuum
+                    || plate.validity().validity != crate::model::validity::Validity::Holds)
+                    .then(|| {
+                        crate::numeric::solve_plate_continuum(
+                            plate.params(),
+                            crate::numeric::ContinuumMesh::default(),
+                        )
+                    });
                 match args.format {
-                    ReportFormat::Text => out.write_all(text::plate(&name, &plate).as_bytes())?,
-                    ReportFormat::Json => write_json(out, &json::plate(&name, &plate))?,
+                    ReportFormat::Text => {
+                        out.write_all(text::plate(&name, &plate, solved.as_ref()).as_bytes())?
+                    }
+                    ReportFormat::Json => {
+                        write_json(out, &json::plate(&name, &plate, solved.as_ref()))?
+                    }
                 }
             }
         }

@@ -10,6 +10,7 @@ use crate::model::code_defaults::CodeDefault;
 use crate::model::cycle::{Cycle, Law};
 use crate::model::inputs::Model;
 use crate::model::params::{BeamParam, Compact, Param, PlateParam};
+use crate::model::validity::Validity;
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
 /// Largest number of points a sweep (or a branch of a cycle's loop) accepts: beyond it a request is
@@ -316,6 +317,8 @@ pub struct PlatePoint {
     pub regime_coulomb: Regime,
     /// Regularized regime.
     pub regime_regularized: Regime,
+    /// Where the strip theory stands against a plane-strain continuum (V1).
+    pub strip_validity: Validity,
 }
 
 /// The plate as it is.
@@ -329,6 +332,7 @@ pub fn plate_point(plate: &SqueezedPlate) -> PlatePoint {
         micro_end: regularized.micro_zone_end(),
         regime_coulomb: coulomb.regime(),
         regime_regularized: regularized.regime(),
+        strip_validity: plate.validity().validity,
     }
 }
 

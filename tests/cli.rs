@@ -133,7 +133,8 @@ fn plate_sweep_is_logarithmic_unless_linear() {
     assert_eq!(
         lines.next(),
         Some(
-            "KT_MPa_per_mm,u_coulomb_mm,u_regularized_mm,Xs_mm,Xr_mm,regime_coulomb,regime_regularized"
+            "KT_MPa_per_mm,u_coulomb_mm,u_regularized_mm,Xs_mm,Xr_mm,regime_coulomb,regime_regularized,\
+             strip_theory"
         )
     );
     let kts: Vec<f64> = lines

@@ -82,7 +82,32 @@ pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> Value {
 }
 
 /// Squeezed-plate report.
-pub fn plate(preset: &str, plate: &SqueezedPlate) -> Value {
+pub fn plate(
+    preset: &str,
+    plate: &SqueezedPlate,
+    continuum: Option<&Result<crate::numeric::ContinuumPlate, crate::numeric::NumericError>>,
+) -> Value {
+    let mut value = plate_closed_form(preset, plate);
+    if let (Some(solved), Value::Object(map)) = (continuum, &mut value) {
+        map.insert(
+            "continuum".into(),
+            match solved {
+                Ok(c) => serde_json::json!({
+                    "u_end_mean_mm": c.end_displacement_mean,
+                    "u_end_contact_face_mm": c.end_displacement_face,
+                    "u_end_mid_thickness_mm": c.end_displacement_mid,
+                    "Xr_mm": c.micro_zone_end,
+                    "end_pressure_ratio": c.end_pressure_ratio,
+                }),
+                Err(e) => serde_json::json!({ "error": e.to_string() }),
+            },
+        );
+    }
+    value
+}
+
+/// The closed forms' part of the plate report.
+fn plate_closed_form(preset: &str, plate: &SqueezedPlate) -> Value {
     let row = plate_point(plate);
     let pressure = plate.contact_pressure();
     let half_length = plate.params().half_length;
@@ -107,6 +132,7 @@ pub fn plate(preset: &str, plate: &SqueezedPlate) -> Value {
             "mean_deviation": pressure.mean_deviation(),
             "constant_pressure_holds": pressure.constant_pressure_holds(),
         },
+        "strip_theory": strip_validity(plate),
     })
 }
 
@@ -179,6 +205,24 @@ pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> Value 
         })
         .collect();
     serde_json::json!({ "preset": preset, "element_size_mm": comparison.element, "candidates": rows })
+}
+
+/// The strip theory's envelope (V1) as JSON; the expected difference only where it is calibrated
+/// (alpha t_p <= `calibrated_up_to_alpha_tp`).
+pub fn strip_validity(plate: &SqueezedPlate) -> Value {
+    let v = plate.validity();
+    let mut value = serde_json::json!({
+        "validity": v.validity.label(),
+        "alpha_tp": v.thickness_over_layer,
+        "calibrated_up_to_alpha_tp": crate::model::validity::CALIBRATED_RATIO,
+    });
+    if let (Some(error), Value::Object(map)) = (v.expected_error, &mut value) {
+        map.insert(
+            "expected_difference_from_continuum".into(),
+            serde_json::json!(error),
+        );
+    }
+    value
 }
 
 #[cfg(test)]

@@ -99,6 +99,22 @@ pub fn sanitize(text: &str) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
+/// The strip theory's validity in a few words (TUI regime pane, one line of 30 characters):
+/// "holds (~1.6 %)", "approx. (~5.2 %)", "OUTSIDE (>10 %)". The number is the expected difference
+/// from a plane-strain continuum, (V1).
+pub fn strip_validity_short(v: &crate::model::validity::PlateValidity) -> String {
+    use crate::model::validity::Validity;
+    match v.validity {
+        Validity::Holds => format!("holds (~{} %)", percent_of(v.expected_error)),
+        Validity::Approximate => format!("approx. (~{} %)", percent_of(v.expected_error)),
+        Validity::Outside => format!("OUTSIDE (>{} %)", 100.0 * Validity::APPROXIMATE),
+    }
+}
+
+fn percent_of(error: Option<f64>) -> String {
+    error.map_or_else(|| "-".to_string(), |e| number_with(100.0 * e, 2))
+}
+
 /// Tip forces of the paper report's beam table, as multiples of F_thre: stick, threshold, then slip.
 const BEAM_FORCE_FACTORS: [f64; 7] = [0.5, 1.0, 1.125, 1.25, 1.5, 2.5, 3.75];
 

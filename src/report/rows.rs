@@ -59,6 +59,9 @@ pub struct PlateRow {
     pub regime_coulomb: &'static str,
     /// Regularized regime.
     pub regime_regularized: &'static str,
+    /// The strip theory against a plane-strain continuum (V1): holds (within 2 %), approximate
+    /// (10 %) or outside. Added after the original columns, which scripts read by name.
+    pub strip_theory: &'static str,
 }
 
 impl From<&PlatePoint> for PlateRow {
@@ -71,6 +74,7 @@ impl From<&PlatePoint> for PlateRow {
             micro_end: p.micro_end,
             regime_coulomb: p.regime_coulomb.label(),
             regime_regularized: p.regime_regularized.label(),
+            strip_theory: p.strip_validity.label(),
         }
     }
 }
@@ -149,7 +153,8 @@ mod tests {
         );
         assert_eq!(
             header::<PlateRow>(),
-            "KT_MPa_per_mm,u_coulomb_mm,u_regularized_mm,Xs_mm,Xr_mm,regime_coulomb,regime_regularized"
+            "KT_MPa_per_mm,u_coulomb_mm,u_regularized_mm,Xs_mm,Xr_mm,regime_coulomb,regime_regularized,\
+             strip_theory"
         );
         assert_eq!(
             header::<CycleRow>(),

@@ -3,11 +3,13 @@
 
 use std::fmt::Write;
 
-use super::{number, sanitize};
+use super::{number, number_with, sanitize};
 use crate::curves::{Answer, CandidateSource, StiffnessComparison, beam_point, plate_point};
 use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, Unit};
 use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
+use crate::model::validity::Validity;
+use crate::numeric::{ContinuumPlate, NumericError};
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
 /// The inputs block: one line per parameter with value, unit and meaning.
@@ -131,7 +133,11 @@ pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
 }
 
 /// Squeezed-plate report.
-pub fn plate(preset: &str, plate: &SqueezedPlate) -> String {
+pub fn plate(
+    preset: &str,
+    plate: &SqueezedPlate,
+    continuum: Option<&Result<ContinuumPlate, NumericError>>,
+) -> String {
     let preset = sanitize(preset);
     let mut out = String::new();
     let p = plate.params();
@@ -176,7 +182,53 @@ pub fn plate(preset: &str, plate: &SqueezedPlate) -> String {
         "does NOT hold (mean deviation > 3 %): treat the results with caution"
     };
     let _ = writeln!(out, "  constant-pressure assumption {verdict}");
+    write_strip_validity(&mut out, plate, continuum);
     out
+}
+
+/// The strip theory's envelope (V1) and, when given, the plane-strain continuum solution.
+fn write_strip_validity(
+    out: &mut String,
+    plate: &SqueezedPlate,
+    continuum: Option<&Result<ContinuumPlate, NumericError>>,
+) {
+    let v = plate.validity();
+    let expected = v.expected_error.map_or_else(
+        || "over 10 % (measured 3 % to 500 % in this range)".to_string(),
+        |e| format!("{} %", number_with(100.0 * e, 2)),
+    );
+    let _ = writeln!(
+        out,
+        "Validity of the strip theory (u uniform through t_p; docs/theory.md (V1))\n  \
+         alpha t_p = t_p / l_s = {}; expected difference from a plane-strain continuum {expected}: {}",
+        number_with(v.thickness_over_layer, 3),
+        match v.validity {
+            Validity::Holds => "holds (within 2 %)",
+            Validity::Approximate => "approximate (within 10 %)",
+            Validity::Outside => "OUTSIDE its envelope: use the continuum values below",
+        }
+    );
+    match continuum {
+        Some(Ok(c)) => {
+            let u = plate.regularized().end_displacement();
+            let _ = writeln!(
+                out,
+                "Plane-strain continuum (2-D finite elements, contact pressure from the solution)\n  \
+                 u(L) = {} mm thickness mean ({:+.1} % from the strip theory), {} mm at the contact \
+                 face, {} mm at mid-thickness\n  X_r = {} mm; contact pressure at the free end {} P",
+                number(c.end_displacement_mean),
+                100.0 * (c.end_displacement_mean / u - 1.0),
+                number(c.end_displacement_face),
+                number(c.end_displacement_mid),
+                number(c.micro_zone_end),
+                number_with(c.end_pressure_ratio, 3)
+            );
+        }
+        Some(Err(e)) => {
+            let _ = writeln!(out, "Plane-strain continuum: not solved ({e})");
+        }
+        None => {}
+    }
 }
 
 /// Cyclic-loading report: both laws side by side.
@@ -568,7 +620,7 @@ mod tests {
     #[test]
     fn plate_report_shows_both_zone_ends_and_the_pressure_flag() {
         let plate_model = SqueezedPlate::new(PlateParams::PAPER).unwrap();
-        let text = plate("paper-plate", &plate_model);
+        let text = plate("paper-plate", &plate_model, None);
         for needle in [
             "nu  = 0.3",
             "X_s = 9.71429",

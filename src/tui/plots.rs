@@ -5,7 +5,9 @@ use crate::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::fit::Measurement;
 use crate::model::inputs::Model;
 use crate::model::params::{BeamParam, ModelKind, PlateParam};
-use crate::numeric::{MeshDensity, NumericError, PlateFe, TwinBeamsFe};
+use crate::numeric::{
+    ContinuumMesh, MeshDensity, NumericError, PlateFe, TwinBeamsFe, solve_plate_continuum,
+};
 use crate::report::view::{BeamChart, PlateChart, Table, View};
 use crate::report::{number, number_with};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
@@ -72,6 +74,9 @@ pub struct Plot {
 pub struct NumericPoints {
     /// The points.
     pub points: Series,
+    /// The plate's plane-strain continuum solution at the same K_T (u(L) thickness mean), where
+    /// it converged: where the strip theory and the continuum part ways. Empty elsewhere.
+    pub continuum: Series,
 }
 
 /// Points from an external FE code (or a CSV of any code), drawn on the chart of their quantity:
@@ -373,6 +378,13 @@ pub fn build(
             points: numeric.points.clone(),
             kind: SeriesKind::Points,
         });
+        if !numeric.continuum.is_empty() {
+            plot.series.push(PlotSeries {
+                name: "2-D continuum".into(),
+                points: numeric.continuum.clone(),
+                kind: SeriesKind::Points,
+            });
+        }
     }
     plot
 }
@@ -638,7 +650,10 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
                     },
                 ));
             }
-            Ok(Some(NumericPoints { points }))
+            Ok(Some(NumericPoints {
+                points,
+                continuum: Vec::new(),
+            }))
         }
         (Model::Beam { beams, force }, View::Chart(BeamChart::Loop), _) => {
             // The FE model driven round the same cycle: its own slider histories, no Masing rule.
@@ -653,7 +668,10 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
                     points.push((f, fe.tip_deflection()));
                 }
             }
-            Ok(Some(NumericPoints { points }))
+            Ok(Some(NumericPoints {
+                points,
+                continuum: Vec::new(),
+            }))
         }
         (Model::Beam { beams, force }, View::Chart(BeamChart::Shear), _) => {
             let mut fe = TwinBeamsFe::new(beams.params(), density);
@@ -661,6 +679,7 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
             let samples = fe.interface();
             let stride = (samples.len() / 40).max(1);
             Ok(Some(NumericPoints {
+                continuum: Vec::new(),
                 points: samples
                     .iter()
                     .step_by(stride)
@@ -673,6 +692,7 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
             let (from, to) = stiffness_range(p.tangential_stiffness);
             let (lo, hi) = (from.log10(), to.log10());
             let mut points = Vec::with_capacity(OVERLAY_POINTS + 1);
+            let mut continuum = Vec::with_capacity(OVERLAY_POINTS + 1);
             for i in 0..=OVERLAY_POINTS {
                 let log_kt = lo + (hi - lo) * i as f64 / OVERLAY_POINTS as f64;
                 let params = crate::PlateParams {
@@ -685,8 +705,12 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
                 let mut fe = PlateFe::new(params, density);
                 fe.load_to(p.pressure, 2)?;
                 points.push((log_kt, fe.end_displacement()));
+                // A continuum solve that fails at an extreme K_T leaves a gap, not an error.
+                if let Ok(solution) = solve_plate_continuum(params, ContinuumMesh::default()) {
+                    continuum.push((log_kt, solution.end_displacement_mean));
+                }
             }
-            Ok(Some(NumericPoints { points }))
+            Ok(Some(NumericPoints { points, continuum }))
         }
         // No finite-element counterpart: dissipation (a closed-form integral of the loop), the
         // contact pressure, X_r vs mu, and the tables.

@@ -143,6 +143,10 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
                         "FAILS (>3 %)"
                     }
                 )),
+                text(format!(
+                    "strip theory {}",
+                    crate::report::strip_validity_short(&plate.validity())
+                )),
             ]
         }
         None => vec![text("invalid parameters".into())],
