@@ -22,6 +22,7 @@ use crate::fe::load::LoadError;
 use crate::fit::{self, FitError};
 use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, Compact, Domain, ModelKind, ParamError, Unit, parse_number};
+use crate::model::twin_beams::BeamTheory;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
@@ -172,15 +173,6 @@ pub enum Command {
         /// K_T: plain Coulomb to within what the mesh resolves.
         #[arg(long)]
         near_coulomb: bool,
-        /// Poisson ratio of the beams' material (the closed forms do not use it; the shear
-        /// deflection does); the plate uses its own nu.
-        #[arg(
-            long,
-            value_name = "NU",
-            default_value_t = 0.3,
-            allow_negative_numbers = true
-        )]
-        nu: f64,
         /// Write the deck to FILE instead of stdout (replaced atomically if it exists).
         #[arg(short = 'o', long, value_name = "FILE")]
         output: Option<PathBuf>,
@@ -201,14 +193,6 @@ pub enum Command {
         /// Parameters for CSV results (a .dat takes them from its deck).
         #[command(flatten)]
         inputs: InputArgs,
-        /// Poisson ratio for the beams' shear deflection, CSV results only (a deck records its own).
-        #[arg(
-            long,
-            value_name = "NU",
-            default_value_t = 0.3,
-            allow_negative_numbers = true
-        )]
-        nu: f64,
         /// Output format.
         #[arg(long, value_enum, default_value_t = CompareFormat::Text)]
         format: CompareFormat,
@@ -227,9 +211,13 @@ pub struct InputArgs {
     /// Bundled or user preset name, or a path to a TOML file.
     #[arg(long, value_name = "P")]
     pub preset: Option<String>,
-    /// Set a parameter, e.g. KT=120 (beam: L b h E P mu KT F; plate: L tp E nu mu P KT).
+    /// Set a parameter, e.g. KT=120 (beam: L b h E nu P mu KT F; plate: L tp E nu mu P KT).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub assignments: Vec<String>,
+    /// Beam theory of the twin beams' deflection (default: the preset's, else the paper's
+    /// Euler-Bernoulli); timoshenko adds each beam's shear deflection.
+    #[arg(long, value_name = "THEORY", value_parser = ["euler-bernoulli", "timoshenko"])]
+    pub beam_theory: Option<String>,
 }
 
 /// Arguments of `beam` and `plate`.
@@ -409,6 +397,9 @@ pub enum CliError {
         /// What is wrong (with the line number when there is one).
         reason: String,
     },
+    /// A bad `--beam-theory`.
+    #[error("{0}")]
+    Theory(String),
     /// A bad `--fix`.
     #[error("invalid --fix '{0}': expected mu=VALUE or KT=VALUE with a finite number")]
     Fix(String),
@@ -622,9 +613,8 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             results,
             deck,
             inputs,
-            nu,
             format,
-        }) => run_compare(out, *model, results, deck.as_deref(), inputs, *nu, *format)?,
+        }) => run_compare(out, *model, results, deck.as_deref(), inputs, *format)?,
         Some(Command::Deck {
             code: FeCode::Ccx,
             model,
@@ -632,7 +622,6 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             mesh,
             loads,
             near_coulomb,
-            nu,
             output,
         }) => {
             let slope = if *near_coulomb {
@@ -642,9 +631,8 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             };
             let deck = match load(inputs, *model, model_command(*model, "deck ccx"))? {
                 (_, Model::Beam { beams, .. }) => {
-                    let nu = check_flag("--nu", *nu, Domain::PoissonRatio, Unit::Dimensionless)?;
                     let loads = deck_loads(&beams, loads.as_deref(), slope)?;
-                    deck::beam_deck(&beams, &loads, *mesh, slope, nu)
+                    deck::beam_deck(&beams, &loads, *mesh, slope)
                 }
                 (_, Model::Plate(plate)) => deck::plate_deck(&plate, *mesh, slope),
             };
@@ -696,7 +684,6 @@ fn run_compare(
     results: &[PathBuf],
     deck: Option<&std::path::Path>,
     inputs: &InputArgs,
-    nu: f64,
     format: CompareFormat,
 ) -> Result<(), CliError> {
     let data_error = |e: LoadError| CliError::Data {
@@ -725,20 +712,17 @@ fn run_compare(
                 });
             };
             let loaded = fe::load::beam_results(path, deck).map_err(data_error)?;
-            let (beams, poisson) = match &loaded.header {
+            let beams = match &loaded.header {
                 Some(header) => match header.model()? {
-                    Model::Beam { beams, .. } => (beams, header.poisson),
+                    Model::Beam { beams, .. } => beams,
                     Model::Plate(_) => unreachable!("beam_results refuses plate decks"),
                 },
                 None => match from_flags()? {
-                    (_, Model::Beam { beams, .. }) => (
-                        beams,
-                        check_flag("--nu", nu, Domain::PoissonRatio, Unit::Dimensionless)?,
-                    ),
+                    (_, Model::Beam { beams, .. }) => beams,
                     (_, Model::Plate(_)) => unreachable!("load(.., Beam) returned a plate"),
                 },
             };
-            let comparison = fe::compare::compare_beams(&beams, poisson, &loaded.points);
+            let comparison = fe::compare::compare_beams(&beams, &loaded.points);
             let stiffness = beams.params().tangential_stiffness;
             match format {
                 CompareFormat::Text => out.write_all(
@@ -902,7 +886,18 @@ fn apply_and_validate(
     for assignment in &args.assignments {
         preset::apply_assignment(&mut inputs, assignment)?;
     }
-    let name = if args.assignments.is_empty() {
+    if let Some(theory) = &args.beam_theory {
+        let theory = BeamTheory::parse(theory).map_err(CliError::Theory)?;
+        match &mut inputs {
+            Inputs::Beam { structure, .. } => structure.theory = theory,
+            Inputs::Plate(_) => {
+                return Err(CliError::Theory(
+                    "--beam-theory applies to the twin beams, not the plate".to_string(),
+                ));
+            }
+        }
+    }
+    let name = if args.assignments.is_empty() && args.beam_theory.is_none() {
         name
     } else {
         format!("{name} (modified by --set)")

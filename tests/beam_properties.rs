@@ -226,6 +226,7 @@ fn solutions_are_invariant_under_a_change_of_units() {
         pressure: base.pressure * sigma,
         friction: base.friction,
         tangential_stiffness: base.tangential_stiffness * sigma / s,
+        ..base
     };
     let (a, b) = (
         TwinBeams::new(base).unwrap(),
@@ -347,4 +348,48 @@ fn every_corner_of_the_domain_gives_finite_physical_numbers() {
             }
         }
     }
+}
+
+/// (B13) Timoshenko: in the bonded limit (stiff interface, below F_thre) the pair is one beam of
+/// height 4h under 2F; its tip deflection with shear is 2F L^3 / (3 E I) + 2F L / (kappa G b 4h),
+/// I = b (4h)^3 / 12, written out here by hand. Soft interface: two free beams of height 2h under F.
+#[test]
+fn timoshenko_deflection_matches_hand_derived_limits() {
+    use microslip::model::twin_beams::BeamTheory;
+    let p = TwinBeamsParams {
+        tangential_stiffness: 1e12,
+        poisson: 0.25,
+        theory: BeamTheory::Timoshenko,
+        ..TwinBeamsParams::PAPER
+    };
+    let g = p.youngs_modulus / (2.0 * 1.25);
+    let f = 40.0;
+    let inertia = p.width * (4.0 * p.half_height).powi(3) / 12.0;
+    let bonded = 2.0 * f * p.length.powi(3) / (3.0 * p.youngs_modulus * inertia)
+        + 2.0 * f * p.length / (5.0 / 6.0 * g * p.width * 4.0 * p.half_height);
+    let w = TwinBeams::new(p)
+        .unwrap()
+        .coulomb(force(f))
+        .tip_deflection();
+    assert!(relative_error(w, bonded) < 1e-12, "{w} vs {bonded}");
+    let regularized = TwinBeams::new(p)
+        .unwrap()
+        .regularized(force(f))
+        .tip_deflection();
+    assert!(
+        relative_error(regularized, bonded) < 1e-4,
+        "{regularized} vs {bonded}"
+    );
+    let soft = TwinBeamsParams {
+        tangential_stiffness: 1e-6,
+        ..p
+    };
+    let inertia = p.width * (2.0 * p.half_height).powi(3) / 12.0;
+    let free = f * p.length.powi(3) / (3.0 * p.youngs_modulus * inertia)
+        + f * p.length / (5.0 / 6.0 * g * p.width * 2.0 * p.half_height);
+    let w = TwinBeams::new(soft)
+        .unwrap()
+        .regularized(force(f))
+        .tip_deflection();
+    assert!(relative_error(w, free) < 1e-6, "{w} vs {free}");
 }

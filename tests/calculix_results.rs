@@ -25,7 +25,7 @@ fn the_committed_deck_is_the_one_the_code_writes_today() {
     // The .dat files below are only evidence if they came from today's deck.
     let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
     let loads = [40.0, 60.0, 80.0, 100.0, 150.0, 200.0].map(|f| TipForce::new(f).unwrap());
-    let deck = beam_deck(&beams, &loads, DeckMesh::Coarse, StickSlope::Model, 0.3);
+    let deck = beam_deck(&beams, &loads, DeckMesh::Coarse, StickSlope::Model);
     let committed = std::fs::read_to_string(fixture("paper-beams.inp")).unwrap();
     assert!(deck == committed, "regenerate tests/data/calculix with ccx");
 }
@@ -38,7 +38,7 @@ fn paper_beams_agree_with_calculix_once_shear_deflection_is_added() {
         panic!("a beam deck")
     };
     assert_eq!(loaded.points.len(), 6);
-    let comparison = compare_beams(&beams, header.poisson, &loaded.points);
+    let comparison = compare_beams(&beams, &loaded.points);
     for row in &comparison.rows {
         let f = row.fe.force;
         // Euler-Bernoulli alone is 0.7-2.3 % too stiff; with the shear deflection within 1 %.
@@ -140,4 +140,28 @@ fn a_dat_without_its_deck_says_what_is_missing() {
             .contains("a plate deck; use `microslip compare plate`"),
         "{wrong}"
     );
+}
+
+#[test]
+fn the_timoshenko_option_brings_the_paper_beams_within_one_percent_of_calculix() {
+    let loaded = beam_results(&fixture("paper-beams.dat"), None).unwrap();
+    let Model::Beam { beams, .. } = loaded.header.unwrap().model().unwrap() else {
+        panic!("a beam deck")
+    };
+    let timoshenko = beams.with_theory(microslip::model::twin_beams::BeamTheory::Timoshenko);
+    for point in &loaded.points {
+        let force = TipForce::new(point.force).unwrap();
+        let euler = beams.regularized(force).tip_deflection();
+        let w = timoshenko.regularized(force).tip_deflection();
+        assert!(
+            (point.deflection / w - 1.0).abs() < 0.01,
+            "F = {}: CalculiX {} vs Timoshenko {w}",
+            point.force,
+            point.deflection
+        );
+        assert!(
+            (point.deflection / euler - 1.0).abs() > 0.005,
+            "Euler-Bernoulli is further"
+        );
+    }
 }

@@ -268,7 +268,7 @@ fn input_errors_are_one_line_name_the_field_and_exit_2() {
     let cases: &[(&[&str], &str)] = &[
         (
             &["beam", "--set", "Kt=5"],
-            "unknown key 'Kt' for the beam model (allowed: L b h E P mu KT F)",
+            "unknown key 'Kt' for the beam model (allowed: L b h E nu P mu KT F)",
         ),
         (
             &["beam", "--set", "KT=abc"],
@@ -1292,8 +1292,13 @@ fn deck_refuses_bad_loads_and_presets_of_the_other_model() {
     );
     let stderr = failure(&["deck", "ccx", "beam", "--loads", "-1"], 2);
     assert!(stderr.contains("invalid --loads = -1"), "{stderr}");
-    let stderr = failure(&["deck", "ccx", "beam", "--nu", "0.5"], 2);
-    assert!(stderr.contains("invalid --nu = 0.5"), "{stderr}");
+    let stderr = failure(&["deck", "ccx", "beam", "--set", "nu=0.5"], 2);
+    assert!(stderr.contains("invalid nu = 0.5"), "{stderr}");
+    let stderr = failure(&["plate", "--beam-theory", "timoshenko"], 2);
+    assert!(
+        stderr.contains("--beam-theory applies to the twin beams"),
+        "{stderr}"
+    );
     let stderr = failure(&["deck", "ccx", "plate", "--preset", "paper-beams"], 2);
     assert!(
         stderr.contains("`microslip deck ccx plate` needs a plate preset"),

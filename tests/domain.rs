@@ -11,6 +11,7 @@
 
 use microslip::model::cycle::{Cycle, Law};
 use microslip::model::params::{BeamParam, Domain, PlateParam};
+use microslip::model::twin_beams::BeamTheory;
 use microslip::{PlateParams, Regime, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 use proptest::prelude::*;
 
@@ -44,9 +45,11 @@ fn beam_params() -> impl Strategy<Value = TwinBeamsParams> {
         in_domain(BeamParam::Pressure.spec().domain),
         in_domain(BeamParam::Friction.spec().domain),
         in_domain(BeamParam::Stiffness.spec().domain),
+        poisson(),
+        any::<bool>(),
     )
         .prop_map(
-            |(length, width, half_height, e, p, mu, kt)| TwinBeamsParams {
+            |(length, width, half_height, e, p, mu, kt, nu, timoshenko)| TwinBeamsParams {
                 length,
                 width,
                 half_height,
@@ -54,6 +57,12 @@ fn beam_params() -> impl Strategy<Value = TwinBeamsParams> {
                 pressure: p,
                 friction: mu,
                 tangential_stiffness: kt,
+                poisson: nu,
+                theory: if timoshenko {
+                    BeamTheory::Timoshenko
+                } else {
+                    BeamTheory::EulerBernoulli
+                },
             },
         )
 }
@@ -161,10 +170,15 @@ fn check_beams(params: TwinBeamsParams, f: f64) -> Result<(), String> {
     if !((0.0..=p.length).contains(&x) && (r.regime().has_macroslip() || x == p.length)) {
         return fail(&format!("X = {x}"));
     }
-    // Bonded pair (the stiffest) <= either law <= the two beams bending alone (no shear transfer).
+    // Bonded pair (the stiffest) <= either law <= the two beams bending alone (no shear transfer),
+    // each plus the shear deflection under Timoshenko's theory (the same for all three, (B13)).
     let bh3 = p.width * p.half_height.powi(3);
-    let bonded = f * p.length.powi(3) / (8.0 * p.youngs_modulus * bh3);
-    let free = 4.0 * bonded;
+    let shear = match p.theory {
+        BeamTheory::EulerBernoulli => 0.0,
+        BeamTheory::Timoshenko => beams.shear_deflection(force),
+    };
+    let bending = f * p.length.powi(3) / (8.0 * p.youngs_modulus * bh3);
+    let (bonded, free) = (bending + shear, 4.0 * bending + shear);
     let (wc, wr) = (c.tip_deflection(), r.tip_deflection());
     if !all_finite(&[wc, wr]) {
         return fail(&format!("w(L) = {wc}, {wr}"));
@@ -324,6 +338,7 @@ fn scaled_beams(p: &TwinBeamsParams, s: f64, sigma: f64) -> TwinBeamsParams {
         pressure: p.pressure * sigma,
         friction: p.friction,
         tangential_stiffness: p.tangential_stiffness * sigma / s,
+        ..*p
     }
 }
 
@@ -609,8 +624,16 @@ fn every_corner_of_the_beam_domain() {
         ]
         .map(|f| Domain::FORCE.clamp(f))
     };
-    let all = BeamParam::ALL.map(|p| ends(p.spec().domain));
-    let bounds: [(f64, f64); 7] = [all[0], all[1], all[2], all[3], all[4], all[5], all[6]];
+    let bounds = [
+        BeamParam::Length,
+        BeamParam::Width,
+        BeamParam::HalfHeight,
+        BeamParam::Modulus,
+        BeamParam::Pressure,
+        BeamParam::Friction,
+        BeamParam::Stiffness,
+    ]
+    .map(|p| ends(p.spec().domain));
     for [length, width, half_height, e, p, mu, kt] in corners(bounds) {
         let params = TwinBeamsParams {
             length,
@@ -620,6 +643,7 @@ fn every_corner_of_the_beam_domain() {
             pressure: p,
             friction: mu,
             tangential_stiffness: kt,
+            ..TwinBeamsParams::PAPER
         };
         let beams = TwinBeams::new(params).unwrap();
         for f in forces(&beams) {
@@ -664,6 +688,7 @@ fn corners_map_onto_corners_under_a_change_of_units() {
         pressure: 1e-6,
         friction: 0.3,
         tangential_stiffness: 1e6,
+        ..TwinBeamsParams::PAPER
     };
     let mut checked = 0;
     for (s, sigma) in [(1e12, 1.0), (1e6, 1e8), (3.7e9, 17.0)] {

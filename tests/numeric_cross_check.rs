@@ -198,6 +198,7 @@ proptest! {
             pressure,
             friction: mu,
             tangential_stiffness: 10f64.powf(log_kt),
+            ..TwinBeamsParams::PAPER
         };
         let beams = TwinBeams::new(params).unwrap();
         let f = load * beams.threshold_force();

@@ -9,6 +9,7 @@
 use super::results::{BeamFePoint, FeInterface, PlateFePoint};
 use crate::fit::{self, FitError, FitResult, Measurement};
 use crate::model::regime::Regime;
+use crate::model::twin_beams::BeamTheory;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// One FE point of the beams beside the closed forms.
@@ -57,18 +58,19 @@ pub struct BeamComparison {
 }
 
 /// Compares FE points of the beams with the closed forms of `beams` (the K_T the deck gave the FE
-/// code); `poisson` is the material's, for the shear deflection.
-pub fn compare_beams(beams: &TwinBeams, poisson: f64, points: &[BeamFePoint]) -> BeamComparison {
+/// code; its nu for the shear deflection), under both beam theories whichever `beams` has.
+pub fn compare_beams(beams: &TwinBeams, points: &[BeamFePoint]) -> BeamComparison {
+    let euler_bernoulli = beams.with_theory(BeamTheory::EulerBernoulli);
     let rows: Vec<BeamCompared> = points
         .iter()
         .map(|&fe| {
             let force = TipForce::clamped(fe.force);
-            let state = beams.regularized(force);
+            let state = euler_bernoulli.regularized(force);
             let euler = state.tip_deflection();
             BeamCompared {
                 fe,
                 euler,
-                shear_corrected: euler + beams.shear_deflection(force, poisson),
+                shear_corrected: euler + beams.shear_deflection(force),
                 regime: state.regime(),
                 macroslip_start: state.micro_zone_end(),
             }
@@ -81,10 +83,10 @@ pub fn compare_beams(beams: &TwinBeams, poisson: f64, points: &[BeamFePoint]) ->
             deflection: r.fe.deflection - (r.shear_corrected - r.euler),
         })
         .collect();
-    let implied = fit::fit_twin_beams(beams.params(), &bending_only, None, None);
+    let implied = fit::fit_twin_beams(euler_bernoulli.params(), &bending_only, None, None);
     BeamComparison {
         rows,
-        poisson,
+        poisson: beams.params().poisson,
         implied,
     }
 }
@@ -166,17 +168,17 @@ mod tests {
                 BeamFePoint {
                     force: f,
                     deflection: truth.regularized(force).tip_deflection()
-                        + truth.shear_deflection(force, 0.3),
+                        + truth.shear_deflection(force),
                     interface: None,
                 }
             })
             .to_vec();
-        let same = compare_beams(&truth, 0.3, &points);
+        let same = compare_beams(&truth, &points);
         for row in &same.rows {
             assert!(row.difference_shear_corrected().abs() < 1e-12);
             assert!(row.difference_euler() > 0.0, "shear adds deflection");
         }
-        let other = compare_beams(&beams, 0.3, &points);
+        let other = compare_beams(&beams, &points);
         let fit = other.implied.unwrap();
         assert!(
             (fit.kt.value / 300.0 - 1.0).abs() < 1e-4,

@@ -70,11 +70,11 @@ pub fn beam_deck(
     loads: &[TipForce],
     mesh: DeckMesh,
     stick_slope: StickSlope,
-    poisson: f64,
 ) -> String {
     let p = beams.params();
+    let poisson = p.poisson;
     let slope = stick_slope.value_for_beams(beams);
-    let header = DeckHeader::beams(beams, loads, mesh, stick_slope, poisson);
+    let header = DeckHeader::beams(beams, loads, mesh, stick_slope);
     let r = mesh.refinement();
     let height = 2.0 * p.half_height;
     // Along the beam: elements a fifth of a beam's height, graded down to 1/80 of it at the clamp,
@@ -418,7 +418,7 @@ mod tests {
     fn paper_beam_deck(mesh: DeckMesh) -> String {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
         let loads = [40.0, 100.0].map(|f| TipForce::new(f).unwrap());
-        beam_deck(&beams, &loads, mesh, StickSlope::Model, 0.3)
+        beam_deck(&beams, &loads, mesh, StickSlope::Model)
     }
 
     #[test]

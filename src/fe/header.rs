@@ -87,7 +87,6 @@ impl DeckHeader {
         loads: &[TipForce],
         mesh: DeckMesh,
         stick_slope: StickSlope,
-        poisson: f64,
     ) -> DeckHeader {
         let mut structure = beams.params();
         structure.tangential_stiffness = stick_slope.value_for_beams(beams);
@@ -99,7 +98,7 @@ impl DeckHeader {
             loads: loads.iter().map(|f| f.newtons()).collect(),
             mesh,
             stick_slope,
-            poisson,
+            poisson: structure.poisson,
         }
     }
 
@@ -165,10 +164,11 @@ impl DeckHeader {
             self.poisson
         );
         for &param in kind.params() {
-            // F is the list of loads; the plate's nu is `nu=` above.
+            // F is the list of loads; nu is `nu=` above.
             if matches!(
                 param,
-                Param::Beam(BeamParam::Force) | Param::Plate(PlateParam::Poisson)
+                Param::Beam(BeamParam::Force | BeamParam::Poisson)
+                    | Param::Plate(PlateParam::Poisson)
             ) {
                 continue;
             }
@@ -205,7 +205,7 @@ impl DeckHeader {
                         number(f),
                         number(beams.coulomb(force).tip_deflection()),
                         number(w),
-                        number(w + beams.shear_deflection(force, self.poisson)),
+                        number(w + beams.shear_deflection(force)),
                         number(state.micro_zone_end()),
                         state.regime().label()
                     );
@@ -286,7 +286,10 @@ impl DeckHeader {
             if param == Param::Beam(BeamParam::Force) {
                 continue;
             }
-            let value = if param == Param::Plate(PlateParam::Poisson) {
+            let value = if matches!(
+                param,
+                Param::Plate(PlateParam::Poisson) | Param::Beam(BeamParam::Poisson)
+            ) {
                 poisson
             } else {
                 number_of(param.name(), take(param.name())?)?
@@ -323,11 +326,12 @@ mod tests {
     fn beam_header_reads_back_what_was_written() {
         let beams = TwinBeams::new(TwinBeamsParams {
             tangential_stiffness: 123.456789,
+            poisson: 0.27,
             ..TwinBeamsParams::PAPER
         })
         .unwrap();
         let loads = [40.0, 100.5, 1e-3].map(|f| TipForce::new(f).unwrap());
-        let header = DeckHeader::beams(&beams, &loads, DeckMesh::Fine, StickSlope::Model, 0.27);
+        let header = DeckHeader::beams(&beams, &loads, DeckMesh::Fine, StickSlope::Model);
         let parsed = DeckHeader::parse(&header.to_comment()).unwrap().unwrap();
         assert_eq!(parsed, header);
     }
@@ -340,7 +344,6 @@ mod tests {
             &[TipForce::new(40.0).unwrap()],
             DeckMesh::Coarse,
             StickSlope::NearCoulomb,
-            0.3,
         );
         // 1/k = h/10 with k = 2 sqrt(K_T / (E h)): K_T = 25 E / h.
         let Model::Beam { beams: stiff, .. } = header.model().unwrap() else {

@@ -440,6 +440,19 @@ const FRICTION: ParamSpec = spec(
     Domain::FRICTION,
     FACTOR,
 );
+/// The Poisson ratio; stepping stops just short of the excluded 0.5.
+const POISSON: ParamSpec = spec(
+    "nu",
+    Unit::Dimensionless,
+    "Poisson ratio",
+    Domain::PoissonRatio,
+    Step::Add {
+        fine: 0.005,
+        coarse: 0.05,
+        min: 0.0,
+        max: 0.499,
+    },
+);
 /// K_T spans decades: its coarse step is a quarter decade.
 const STIFFNESS: ParamSpec = spec(
     "KT",
@@ -469,17 +482,20 @@ pub enum BeamParam {
     Friction,
     /// Tangential contact stiffness K_T (MPa/mm).
     Stiffness,
+    /// Poisson ratio nu (-), for the Timoshenko deflection.
+    Poisson,
     /// Tip force F on each beam (N).
     Force,
 }
 
 impl BeamParam {
     /// Every beam parameter, in display order.
-    pub const ALL: [BeamParam; 8] = [
+    pub const ALL: [BeamParam; 9] = [
         BeamParam::Length,
         BeamParam::Width,
         BeamParam::HalfHeight,
         BeamParam::Modulus,
+        BeamParam::Poisson,
         BeamParam::Pressure,
         BeamParam::Friction,
         BeamParam::Stiffness,
@@ -509,6 +525,7 @@ impl BeamParam {
             ),
             BeamParam::Friction => FRICTION,
             BeamParam::Stiffness => STIFFNESS,
+            BeamParam::Poisson => POISSON,
             BeamParam::Force => spec(
                 "F",
                 Unit::Newton,
@@ -581,19 +598,7 @@ impl PlateParam {
                 FACTOR,
             ),
             PlateParam::Modulus => MODULUS,
-            PlateParam::Poisson => spec(
-                "nu",
-                Unit::Dimensionless,
-                "Poisson ratio",
-                Domain::PoissonRatio,
-                // Stepping stops just short of the excluded 0.5.
-                Step::Add {
-                    fine: 0.005,
-                    coarse: 0.05,
-                    min: 0.0,
-                    max: 0.499,
-                },
-            ),
+            PlateParam::Poisson => POISSON,
             PlateParam::Friction => FRICTION,
             PlateParam::Pressure => spec(
                 "P",
@@ -625,8 +630,8 @@ pub enum Param {
     Plate(PlateParam),
 }
 
-const BEAM_PARAMS: [Param; 8] = {
-    let mut all = [Param::Beam(BeamParam::Length); 8];
+const BEAM_PARAMS: [Param; BeamParam::ALL.len()] = {
+    let mut all = [Param::Beam(BeamParam::Length); BeamParam::ALL.len()];
     let mut i = 0;
     while i < all.len() {
         all[i] = Param::Beam(BeamParam::ALL[i]);
@@ -883,7 +888,7 @@ mod tests {
         assert_eq!("nu".parse::<PlateParam>(), Ok(PlateParam::Poisson));
         assert_eq!(
             "Kt".parse::<BeamParam>().unwrap_err().to_string(),
-            "unknown key 'Kt' for the beam model (allowed: L b h E P mu KT F)"
+            "unknown key 'Kt' for the beam model (allowed: L b h E nu P mu KT F)"
         );
         assert_eq!(
             ModelKind::Plate.param("F").unwrap_err().to_string(),

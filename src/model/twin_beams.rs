@@ -19,6 +19,62 @@ use super::solve::{find_root_in_bracket, find_root_newton};
 /// Timoshenko's shear coefficient of a rectangular section, kappa = 5/6 (B13).
 pub const SHEAR_COEFFICIENT: f64 = 5.0 / 6.0;
 
+/// Which beam theory the deflection uses. The friction closed forms (thresholds, X, tau, slip) are
+/// the same under both: the interface shear acts along the beams' axis, so transverse shear strain
+/// changes only the deflection, by F x / (kappa G b 2h) (B13).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum BeamTheory {
+    /// No shear strain: the paper's model.
+    #[default]
+    EulerBernoulli,
+    /// Plus each beam's shear deflection (kappa = 5/6, G = E / (2 (1 + nu))): within 1 % of
+    /// continuum FE for the beams measured (docs/theory.md, (V2)).
+    Timoshenko,
+}
+
+impl BeamTheory {
+    /// Both theories, the paper's first.
+    pub const ALL: [BeamTheory; 2] = [BeamTheory::EulerBernoulli, BeamTheory::Timoshenko];
+
+    /// The name in presets, flags and JSON.
+    pub fn key(self) -> &'static str {
+        match self {
+            BeamTheory::EulerBernoulli => "euler-bernoulli",
+            BeamTheory::Timoshenko => "timoshenko",
+        }
+    }
+
+    /// The name for people.
+    pub fn label(self) -> &'static str {
+        match self {
+            BeamTheory::EulerBernoulli => "Euler-Bernoulli",
+            BeamTheory::Timoshenko => "Timoshenko",
+        }
+    }
+
+    /// Reads [`BeamTheory::key`] (also `euler`).
+    ///
+    /// # Errors
+    /// The accepted names, when `text` is none of them.
+    pub fn parse(text: &str) -> Result<BeamTheory, String> {
+        match text.trim().to_ascii_lowercase().as_str() {
+            "euler-bernoulli" | "euler" => Ok(BeamTheory::EulerBernoulli),
+            "timoshenko" => Ok(BeamTheory::Timoshenko),
+            _ => Err(format!(
+                "invalid beam theory '{text}': must be \"euler-bernoulli\" or \"timoshenko\""
+            )),
+        }
+    }
+
+    /// The other theory.
+    pub fn other(self) -> BeamTheory {
+        match self {
+            BeamTheory::EulerBernoulli => BeamTheory::Timoshenko,
+            BeamTheory::Timoshenko => BeamTheory::EulerBernoulli,
+        }
+    }
+}
+
 /// Raw inputs of the twin-beam problem (mm, MPa, MPa/mm); validated by [`TwinBeams::new`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TwinBeamsParams {
@@ -36,6 +92,10 @@ pub struct TwinBeamsParams {
     pub friction: f64,
     /// Tangential contact stiffness K_T (MPa/mm).
     pub tangential_stiffness: f64,
+    /// Poisson ratio nu (-): used by the Timoshenko deflection only.
+    pub poisson: f64,
+    /// The beam theory of the deflection.
+    pub theory: BeamTheory,
 }
 
 impl TwinBeamsParams {
@@ -49,6 +109,8 @@ impl TwinBeamsParams {
         pressure: 1.0,
         friction: 0.3,
         tangential_stiffness: 600.0,
+        poisson: 0.3,
+        theory: BeamTheory::EulerBernoulli,
     };
 
     /// The field that holds `param`, or `None` for the tip force, which is not a property of the
@@ -62,6 +124,7 @@ impl TwinBeamsParams {
             BeamParam::Pressure => &mut self.pressure,
             BeamParam::Friction => &mut self.friction,
             BeamParam::Stiffness => &mut self.tangential_stiffness,
+            BeamParam::Poisson => &mut self.poisson,
             BeamParam::Force => return None,
         })
     }
@@ -194,16 +257,39 @@ impl TwinBeams {
     }
 
     /// Tip deflection (mm) that transverse shear strain adds to each beam, F L / (kappa G b 2h) with
-    /// kappa = 5/6 and G = E / (2 (1 + nu)), eq. (B13). Not part of the paper's Euler-Bernoulli
-    /// model, and the same under every friction law: the interface shear acts along the beams' axis,
-    /// so it adds axial force and moment but no transverse shear force, which is F in each beam.
-    /// Continuum FE includes it; comparisons with FE add it (`fe::compare`). `poisson` must be a
-    /// valid Poisson ratio ([`crate::PlateParam::Poisson`]'s domain, 0 <= nu < 0.5).
-    pub fn shear_deflection(&self, force: TipForce, poisson: f64) -> f64 {
+    /// kappa = 5/6 and G = E / (2 (1 + nu)), eq. (B13), whatever [`BeamTheory`] is chosen (the
+    /// Timoshenko deflections include it, the Euler-Bernoulli ones do not). The same under every
+    /// friction law: the interface shear acts along the beams' axis, so it adds axial force and
+    /// moment but no transverse shear force, which is F in each beam.
+    pub fn shear_deflection(&self, force: TipForce) -> f64 {
+        force.0 * self.params.length * self.shear_compliance()
+    }
+
+    /// 1 / (kappa G b 2h) (1/N): shear deflection per unit force and unit length.
+    fn shear_compliance(&self) -> f64 {
         let p = &self.params;
-        let shear_modulus = p.youngs_modulus / (2.0 * (1.0 + poisson));
-        let area = p.width * 2.0 * p.half_height;
-        force.0 * p.length / (SHEAR_COEFFICIENT * shear_modulus * area)
+        let shear_modulus = p.youngs_modulus / (2.0 * (1.0 + p.poisson));
+        1.0 / (SHEAR_COEFFICIENT * shear_modulus * p.width * 2.0 * p.half_height)
+    }
+
+    /// The shear deflection F x / (kappa G b 2h) at x under the chosen theory (0 for
+    /// Euler-Bernoulli).
+    fn theory_shear(&self, force: f64, x: f64) -> f64 {
+        match self.params.theory {
+            BeamTheory::EulerBernoulli => 0.0,
+            BeamTheory::Timoshenko => force * x * self.shear_compliance(),
+        }
+    }
+
+    /// The same beams under another theory.
+    pub fn with_theory(&self, theory: BeamTheory) -> TwinBeams {
+        TwinBeams {
+            params: TwinBeamsParams {
+                theory,
+                ..self.params
+            },
+            k: self.k,
+        }
     }
 
     /// Solution under the plain Coulomb law at tip force `force`.
@@ -363,12 +449,13 @@ impl CoulombBeams {
         let p = &self.beams.params;
         let shape = 3.0 * p.length * x * x - x * x * x;
         let bh3 = p.width * p.half_height.powi(3);
-        if self.slides {
+        let bending = if self.slides {
             (self.force - self.beams.coulomb_stress() * p.width * p.half_height) * shape
                 / (4.0 * p.youngs_modulus * bh3)
         } else {
             self.force * shape / (16.0 * p.youngs_modulus * bh3)
-        }
+        };
+        bending + self.beams.theory_shear(self.force, x)
     }
 
     /// Tip deflection w(L) (mm).
@@ -528,6 +615,7 @@ impl RegularizedBeams {
         let bending = self.force * (p.length * x * x / 2.0 - x.powi(3) / 6.0);
         let interface = bh * (self.total_shear * x * x / 2.0 - q);
         3.0 * (bending - interface) / (2.0 * p.youngs_modulus * bh * p.half_height * p.half_height)
+            + self.beams.theory_shear(self.force, x)
     }
 
     /// Tip deflection w(L) (mm).

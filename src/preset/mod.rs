@@ -99,6 +99,9 @@ pub enum PresetError {
     /// A missing or unknown `model`.
     #[error("{0}")]
     Model(String),
+    /// A bad `beam_theory`.
+    #[error("{0}")]
+    Theory(String),
     /// A value out of range.
     #[error(transparent)]
     Param(#[from] ParamError),

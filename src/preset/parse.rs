@@ -9,6 +9,7 @@ use toml::Spanned;
 use super::{Located, Preset, PresetError, PresetSource};
 use crate::model::inputs::Inputs;
 use crate::model::params::{ModelKind, parse_number};
+use crate::model::twin_beams::BeamTheory;
 
 /// Applies `KEY=VALUE` as typed on the command line.
 ///
@@ -31,6 +32,9 @@ pub fn apply_assignment(inputs: &mut Inputs, assignment: &str) -> Result<(), Pre
     inputs.set(param, number)?;
     Ok(())
 }
+
+/// The preset key of the twin beams' [`BeamTheory`].
+pub const THEORY_KEY: &str = "beam_theory";
 
 /// 1-based line of a byte offset.
 fn line_at(text: &str, offset: usize) -> usize {
@@ -115,6 +119,19 @@ impl Preset {
             };
             let result = match name_of_key {
                 "model" => Ok(()),
+                // Not a number: which beam theory the deflection uses.
+                THEORY_KEY => match (&mut inputs, value.as_str()) {
+                    (Inputs::Beam { structure, .. }, Some(text)) => BeamTheory::parse(text)
+                        .map(|theory| structure.theory = theory)
+                        .map_err(PresetError::Theory),
+                    (Inputs::Beam { .. }, None) => Err(PresetError::NotAString {
+                        key: name_of_key.to_string(),
+                        text: value.to_string(),
+                    }),
+                    (Inputs::Plate(_), _) => Err(PresetError::Theory(format!(
+                        "{THEORY_KEY} applies to the twin beams, not the plate"
+                    ))),
+                },
                 "description" => match value.as_str() {
                     Some(text) => {
                         description = text.to_string();
@@ -177,7 +194,7 @@ mod tests {
         let shown: Vec<String> = problems.iter().map(ToString::to_string).collect();
         assert_eq!(shown.len(), 4, "{shown:?}");
         assert!(shown[0].starts_with(
-            "line 2: unknown key 'Kt' for the beam model (allowed: L b h E P mu KT F)"
+            "line 2: unknown key 'Kt' for the beam model (allowed: L b h E nu P mu KT F)"
         ));
         assert!(
             shown[1].starts_with("line 3: invalid L = -1: must be > 0 and finite (mm)"),

@@ -10,6 +10,14 @@ pub fn to_toml(inputs: &Inputs, description: &str) -> String {
     let mut text = String::from("# microslip preset. Units: mm, N, MPa; KT in MPa/mm.\n");
     let _ = writeln!(text, "description = {}", toml::Value::from(description));
     let _ = writeln!(text, "model = \"{}\"", inputs.kind().name());
+    if let Inputs::Beam { structure, .. } = inputs {
+        let _ = writeln!(
+            text,
+            "{} = \"{}\"  # deflection: euler-bernoulli (the paper's) or timoshenko",
+            super::parse::THEORY_KEY,
+            structure.theory.key()
+        );
+    }
     for &param in inputs.kind().params() {
         let spec = param.spec();
         // `get` cannot miss: the parameters come from the inputs' own model.

@@ -44,6 +44,8 @@ pub enum Action {
     PreviousChart,
     /// Finite-element points on or off.
     ToggleNumeric,
+    /// Twin beams: Euler-Bernoulli or Timoshenko deflection.
+    ToggleBeamTheory,
     /// Help overlay on or off.
     ToggleHelp,
     /// Open the preset picker.

@@ -12,6 +12,7 @@ use crate::PlateParams;
 use crate::fit::Measurement;
 use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, ModelKind, Param, parse_number};
+use crate::model::twin_beams::BeamTheory;
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
 use crate::report::view::{BeamChart, PlateChart, View};
 use crate::report::{number, number_with};
@@ -470,6 +471,25 @@ impl App {
                     self.info("no finite-element points for this chart (they show on w(L), X and u(L) charts)");
                 }
             }
+            Action::ToggleBeamTheory => match &mut self.state_mut().inputs {
+                Inputs::Beam { structure, .. } => {
+                    structure.theory = structure.theory.other();
+                    let text = match structure.theory {
+                        BeamTheory::EulerBernoulli => {
+                            "beam theory: Euler-Bernoulli (the paper's; no shear deflection)"
+                        }
+                        BeamTheory::Timoshenko => {
+                            "beam theory: Timoshenko (adds each beam's shear deflection \
+                             F x / (kappa G b 2h), nu from the nu row)"
+                        }
+                    };
+                    self.info(text);
+                    self.recompute();
+                }
+                Inputs::Plate(_) => {
+                    self.error("the beam theory is a twin-beam setting: press m for the beams")
+                }
+            },
             Action::ToggleHelp => self.mode = Mode::Help,
             Action::RequestQuit => {
                 let unsaved = self.unsaved();
@@ -596,8 +616,7 @@ impl App {
         };
         let summary = match (&loaded, self.model()) {
             (AnyLoaded::Beam(l), Some(Model::Beam { beams, .. })) => {
-                let poisson = header.map_or(0.3, |h| h.poisson);
-                let comparison = crate::fe::compare::compare_beams(&beams, poisson, &l.points);
+                let comparison = crate::fe::compare::compare_beams(&beams, &l.points);
                 crate::report::compare::beam_summary(code, &comparison)
             }
             (AnyLoaded::Plate(l), Some(Model::Plate(plate))) => {

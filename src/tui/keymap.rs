@@ -169,6 +169,12 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         Context::Main,
+        &[(KeyCode::Char('b'), NONE)],
+        Action::ToggleBeamTheory,
+        "beam theory E-B/Timo.",
+    ),
+    bind(
+        Context::Main,
         &[(KeyCode::Char('p'), NONE)],
         Action::OpenPresets,
         "load a preset",

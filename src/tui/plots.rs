@@ -816,10 +816,14 @@ mod tests {
         use crate::model::params::BeamParam;
         // Every corner of each model's domain (the beam force at 0, at the largest accepted force
         // or at F_thre, in turn), every view.
-        let beam_params = BeamParam::ALL;
-        for mask in 0..1_u32 << 7 {
+        // nu (half-open domain, and only in the shear deflection) keeps its value.
+        let beam_params: Vec<BeamParam> = BeamParam::ALL
+            .into_iter()
+            .filter(|p| !matches!(p, BeamParam::Force | BeamParam::Poisson))
+            .collect();
+        for mask in 0..1_u32 << beam_params.len() {
             let mut inputs = Inputs::paper(ModelKind::Beam);
-            for (i, param) in beam_params[..7].iter().enumerate() {
+            for (i, param) in beam_params.iter().enumerate() {
                 let domain = param.spec().domain;
                 let value = if mask & (1 << i) == 0 {
                     domain.min()

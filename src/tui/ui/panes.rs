@@ -6,9 +6,10 @@ use ratatui::style::Style;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
+use crate::Inputs;
 use crate::curves::{beam_point, plate_point};
 use crate::model::inputs::Model;
-use crate::model::params::{ModelKind, Unit};
+use crate::model::params::Unit;
 use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::report::{number, sanitize};
 use crate::tui::app::{App, Mode};
@@ -27,11 +28,11 @@ pub fn pane<'a>(app: &App, title: &'a str) -> Block<'a> {
 /// colour, so it shows without colour too. While typing, the row shows the text being typed.
 pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
     let theme = app.theme();
-    let title = match app.kind() {
-        ModelKind::Beam => "Twin beams",
-        ModelKind::Plate => "Squeezed plate",
-    };
     let inputs = app.inputs();
+    let title = match inputs {
+        Inputs::Beam { structure, .. } => format!("Twin beams, {}", structure.theory.label()),
+        Inputs::Plate(_) => "Squeezed plate".to_string(),
+    };
     let lines: Vec<Line> = app
         .kind()
         .params()
@@ -64,7 +65,7 @@ pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
             Line::from(Span::styled(text, style))
         })
         .collect();
-    frame.render_widget(Paragraph::new(lines).block(pane(app, title)), area);
+    frame.render_widget(Paragraph::new(lines).block(pane(app, &title)), area);
 }
 
 /// The regime of each law and the numbers that define it, as plain text (readable without colour).
