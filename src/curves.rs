@@ -10,7 +10,7 @@ use crate::model::code_defaults::CodeDefault;
 use crate::model::cycle::{Cycle, Law};
 use crate::model::inputs::Model;
 use crate::model::params::{BeamParam, Compact, Param, PlateParam};
-use crate::model::validity::Validity;
+use crate::model::validity::{BeamValidity, Validity};
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
 /// Largest number of points a sweep (or a branch of a cycle's loop) accepts: beyond it a request is
@@ -253,19 +253,23 @@ pub struct BeamPoint {
     pub regime_coulomb: Regime,
     /// Regularized regime.
     pub regime_regularized: Regime,
+    /// Where the beam theory stands against continuum FE at this force (V2).
+    pub validity: BeamValidity,
 }
 
 /// The twin beams at one force.
 pub fn beam_point(beams: &TwinBeams, force: TipForce) -> BeamPoint {
     let (coulomb, regularized) = (beams.coulomb(force), beams.regularized(force));
+    let w_regularized = regularized.tip_deflection();
     BeamPoint {
         force: force.newtons(),
         w_coulomb: coulomb.tip_deflection(),
-        w_regularized: regularized.tip_deflection(),
+        w_regularized,
         stick_end: coulomb.stick_end(),
         micro_end: regularized.micro_zone_end(),
         regime_coulomb: coulomb.regime(),
         regime_regularized: regularized.regime(),
+        validity: beams.validity_at(force, w_regularized),
     }
 }
 

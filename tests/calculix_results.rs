@@ -165,3 +165,31 @@ fn the_timoshenko_option_brings_the_paper_beams_within_one_percent_of_calculix()
         );
     }
 }
+
+/// (V2): CalculiX stays within the stated envelope of both beam theories at every load, for the
+/// paper's beams and for slender ones (h/L = 1/80) deep in macroslip, where w(L)/L reaches 1 %.
+#[test]
+fn calculix_beams_stay_within_the_stated_envelope() {
+    use microslip::model::twin_beams::BeamTheory;
+    for file in ["paper-beams.dat", "slender-beams.dat"] {
+        let loaded = beam_results(&fixture(file), None).unwrap();
+        let Model::Beam { beams, .. } = loaded.header.unwrap().model().unwrap() else {
+            panic!("a beam deck")
+        };
+        for theory in BeamTheory::ALL {
+            let beams = beams.with_theory(theory);
+            for point in &loaded.points {
+                let force = TipForce::new(point.force).unwrap();
+                let w = beams.regularized(force).tip_deflection();
+                let envelope = beams.validity(force);
+                let error = (point.deflection / w - 1.0).abs();
+                assert!(
+                    error <= envelope.expected_error,
+                    "{file} {theory:?} F = {}: off by {error}, envelope {}",
+                    point.force,
+                    envelope.expected_error
+                );
+            }
+        }
+    }
+}

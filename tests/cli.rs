@@ -101,20 +101,31 @@ fn beam_sweep_csv_has_the_contract_header_and_round_trip_numbers() {
     let mut lines = csv.lines();
     assert_eq!(
         lines.next(),
-        Some("F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized")
+        Some(
+            "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized,beam_theory,\
+             vs_continuum_within"
+        )
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 16);
     assert_eq!(
-        rows[0][..],
-        ["0.0", "0.0", "0.0", "200.0", "stick", "microslip"]
+        rows[0][..7],
+        [
+            "0.0",
+            "0.0",
+            "0.0",
+            "200.0",
+            "stick",
+            "microslip",
+            "euler-bernoulli"
+        ]
     );
     // Row 5 is F = 100 N: FE reference w(L) = 3.829225956399e-2 mm, X = 17.30949125 mm.
     let row: Vec<f64> = rows[5][..4].iter().map(|v| v.parse().unwrap()).collect();
     assert!((row[0] - 100.0).abs() < 1e-12);
     assert!((row[2] / 3.829_225_956_399e-2 - 1.0).abs() < 2e-9);
     assert!((row[3] - 17.309_491_25).abs() < 1e-6);
-    assert_eq!(rows[5][4..], ["macroslip", "microslip+macroslip"]);
+    assert_eq!(rows[5][4..6], ["macroslip", "microslip+macroslip"]);
 }
 
 #[test]

@@ -8,6 +8,7 @@
 //! The calibration, its cases and its tables are in docs/theory.md, "Validity of the closed forms".
 
 use super::plate::SqueezedPlate;
+use super::twin_beams::{BeamTheory, TipForce, TwinBeams};
 
 /// Where a closed form stands against continuum mechanics.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -89,6 +90,58 @@ impl SqueezedPlate {
     }
 }
 
+/// The twin beams' envelope at one force.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BeamValidity {
+    /// The theory the deflection uses.
+    pub theory: BeamTheory,
+    /// Shear deflection over the Euler-Bernoulli w(L): what Euler-Bernoulli leaves out (B13).
+    pub shear_share: f64,
+    /// Bound on |w(L) continuum / w(L) closed form - 1| (V2): 0.7 % + 2 w(L)/L for Timoshenko, plus
+    /// the shear share for Euler-Bernoulli.
+    pub expected_error: f64,
+    /// The level of `expected_error`.
+    pub validity: Validity,
+}
+
+/// (V2): what remains between Timoshenko's w(L) and CalculiX when nothing else is left out: the
+/// clamp (a fixed end face is stiffer than beam theory's clamp) and the tip load, 0.7 % ...
+const BEAM_BASE_ERROR: f64 = 0.007;
+/// ... and a part growing with the deflection itself (small-displacement beams against contact
+/// that follows the deformed faces): 2 w(L)/L.
+const BEAM_DEFLECTION_FACTOR: f64 = 2.0;
+
+impl TwinBeams {
+    /// Where the closed form stands at `force` under its theory (V2).
+    pub fn validity(&self, force: TipForce) -> BeamValidity {
+        let deflection = self.regularized(force).tip_deflection();
+        self.validity_at(force, deflection)
+    }
+
+    /// [`TwinBeams::validity`] given the regularized w(L) at `force` under this theory (sweeps
+    /// have it already).
+    pub(crate) fn validity_at(&self, force: TipForce, deflection: f64) -> BeamValidity {
+        let p = self.params();
+        let shear = self.shear_deflection(force);
+        let euler = match p.theory {
+            BeamTheory::EulerBernoulli => deflection,
+            BeamTheory::Timoshenko => deflection - shear,
+        };
+        let shear_share = if euler > 0.0 { shear / euler } else { 0.0 };
+        let mut expected_error =
+            BEAM_BASE_ERROR + BEAM_DEFLECTION_FACTOR * (euler + shear) / p.length;
+        if p.theory == BeamTheory::EulerBernoulli {
+            expected_error += shear_share;
+        }
+        BeamValidity {
+            theory: p.theory,
+            shear_share,
+            expected_error,
+            validity: Validity::of_error(expected_error),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -109,6 +162,23 @@ mod tests {
         assert_eq!(plate(1e6).validity().validity, Validity::Outside);
         // alpha t_p at 1e4: sqrt(0.91 * 1e4 / (70000 * 0.2)) * 0.2 = 0.1612.
         assert!((plate(1e4).validity().thickness_over_layer - 0.16125).abs() < 1e-4);
+    }
+
+    #[test]
+    fn timoshenko_holds_for_the_papers_beams_where_euler_bernoulli_is_approximate_at_low_load() {
+        use crate::TwinBeamsParams;
+        let euler = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let timoshenko = euler.with_theory(BeamTheory::Timoshenko);
+        let low = TipForce::new(40.0).unwrap();
+        // Shear share at 40 N: F L / (kappa G b 2h) / w_EB = 2.97e-4 / 0.011121 = 2.67 %.
+        let v = euler.validity(low);
+        assert!((v.shear_share - 0.0267).abs() < 2e-4, "{}", v.shear_share);
+        assert_eq!(v.validity, Validity::Approximate);
+        assert_eq!(timoshenko.validity(low).validity, Validity::Holds);
+        assert_eq!(
+            euler.validity(TipForce::new(200.0).unwrap()).validity,
+            Validity::Holds
+        );
     }
 
     #[test]

@@ -78,6 +78,12 @@ pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> Value {
             "w_tip_mm": row.w_regularized,
             "X_mm": row.micro_end,
         },
+        "beam_theory": {
+            "theory": row.validity.theory.key(),
+            "shear_deflection_share": row.validity.shear_share,
+            "vs_continuum_within": row.validity.expected_error,
+            "validity": row.validity.validity.label(),
+        },
     })
 }
 

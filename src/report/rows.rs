@@ -24,6 +24,11 @@ pub struct BeamRow {
     pub regime_coulomb: &'static str,
     /// Regularized regime.
     pub regime_regularized: &'static str,
+    /// The deflection's beam theory (`euler-bernoulli` or `timoshenko`). Added after the original
+    /// columns, which scripts read by name.
+    pub beam_theory: &'static str,
+    /// Bound on |w(L) continuum FE / w(L) here - 1| (V2), a fraction.
+    pub vs_continuum_within: f64,
 }
 
 impl From<&BeamPoint> for BeamRow {
@@ -35,6 +40,8 @@ impl From<&BeamPoint> for BeamRow {
             micro_end: p.micro_end,
             regime_coulomb: p.regime_coulomb.label(),
             regime_regularized: p.regime_regularized.label(),
+            beam_theory: p.validity.theory.key(),
+            vs_continuum_within: p.validity.expected_error,
         }
     }
 }
@@ -149,7 +156,8 @@ mod tests {
     fn headers_are_the_published_contract() {
         assert_eq!(
             header::<BeamRow>(),
-            "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized"
+            "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized,beam_theory,\
+             vs_continuum_within"
         );
         assert_eq!(
             header::<PlateRow>(),

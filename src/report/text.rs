@@ -8,6 +8,7 @@ use crate::curves::{Answer, CandidateSource, StiffnessComparison, beam_point, pl
 use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, Unit};
 use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
+use crate::model::twin_beams::BeamTheory;
 use crate::model::validity::Validity;
 use crate::numeric::{ContinuumPlate, NumericError};
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
@@ -129,6 +130,25 @@ pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
         ),
     };
     comparison.write(&mut out);
+    let v = row.validity;
+    let left_out = match v.theory {
+        BeamTheory::EulerBernoulli => format!(
+            "; it leaves out the shear deflection, {} % of w(L) (--beam-theory timoshenko adds it)",
+            number_with(100.0 * v.shear_share, 3)
+        ),
+        BeamTheory::Timoshenko => String::new(),
+    };
+    let _ = writeln!(
+        out,
+        "Beam theory: {}{}\n  regularized w(L) within {} % of continuum FE (docs/theory.md (V2)): {}{left_out}",
+        v.theory.label(),
+        match v.theory {
+            BeamTheory::EulerBernoulli => " (the paper's)",
+            BeamTheory::Timoshenko => " (Euler-Bernoulli plus each beam's shear deflection)",
+        },
+        number_with(100.0 * v.expected_error, 2),
+        v.validity.label()
+    );
     out
 }
 

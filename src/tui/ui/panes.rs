@@ -152,7 +152,15 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
         }
         None => vec![text("invalid parameters".into())],
     };
-    frame.render_widget(Paragraph::new(lines).block(pane(app, "Regime")), area);
+    // The beams' pane is full at 80x24: their envelope (V2) goes in the title.
+    let title = match app.model() {
+        Some(Model::Beam { beams, force }) => format!(
+            "Regime, FE within {} %",
+            crate::report::number_with(100.0 * beams.validity(force).expected_error, 2)
+        ),
+        _ => "Regime".to_string(),
+    };
+    frame.render_widget(Paragraph::new(lines).block(pane(app, &title)), area);
 }
 
 /// Model, preset (with `*` when modified), the last message or the typing prompt, and the two keys
