@@ -97,19 +97,21 @@ pub struct BeamValidity {
     pub theory: BeamTheory,
     /// Shear deflection over the Euler-Bernoulli w(L): what Euler-Bernoulli leaves out (B13).
     pub shear_share: f64,
-    /// Bound on |w(L) continuum / w(L) closed form - 1| (V2): 0.7 % + 2 w(L)/L for Timoshenko, plus
-    /// the shear share for Euler-Bernoulli.
+    /// Bound on |w(L) continuum / w(L) closed form - 1| (V2): 0.2 h/L + 4 w(L)/L for Timoshenko,
+    /// plus the shear share for Euler-Bernoulli.
     pub expected_error: f64,
     /// The level of `expected_error`.
     pub validity: Validity,
 }
 
-/// (V2): what remains between Timoshenko's w(L) and CalculiX when nothing else is left out: the
-/// clamp (a fixed end face is stiffer than beam theory's clamp) and the tip load, 0.7 % ...
-const BEAM_BASE_ERROR: f64 = 0.007;
-/// ... and a part growing with the deflection itself (small-displacement beams against contact
-/// that follows the deformed faces): 2 w(L)/L.
-const BEAM_DEFLECTION_FACTOR: f64 = 2.0;
+/// (V2): what remains between Timoshenko's w(L) and CalculiX, from the clamp (a fixed end face is
+/// stiffer than beam theory's clamp) and the tip load, grows with the beam's stubbiness: 0.2 h/L
+/// (measured 0.13 % at h/L = 1/80 up to 3.0 % at h/L = 1/5) ...
+const BEAM_STUBBINESS_FACTOR: f64 = 0.2;
+/// ... and a part growing with the deflection itself, largest just above F_1 and deep in
+/// macroslip of slender beams (small-displacement beams against contact that follows the deformed
+/// faces): 4 w(L)/L.
+const BEAM_DEFLECTION_FACTOR: f64 = 4.0;
 
 impl TwinBeams {
     /// Where the closed form stands at `force` under its theory (V2).
@@ -128,8 +130,8 @@ impl TwinBeams {
             BeamTheory::Timoshenko => deflection - shear,
         };
         let shear_share = if euler > 0.0 { shear / euler } else { 0.0 };
-        let mut expected_error =
-            BEAM_BASE_ERROR + BEAM_DEFLECTION_FACTOR * (euler + shear) / p.length;
+        let mut expected_error = BEAM_STUBBINESS_FACTOR * p.half_height / p.length
+            + BEAM_DEFLECTION_FACTOR * (euler + shear) / p.length;
         if p.theory == BeamTheory::EulerBernoulli {
             expected_error += shear_share;
         }
@@ -175,10 +177,8 @@ mod tests {
         assert!((v.shear_share - 0.0267).abs() < 2e-4, "{}", v.shear_share);
         assert_eq!(v.validity, Validity::Approximate);
         assert_eq!(timoshenko.validity(low).validity, Validity::Holds);
-        assert_eq!(
-            euler.validity(TipForce::new(200.0).unwrap()).validity,
-            Validity::Holds
-        );
+        let high = TipForce::new(200.0).unwrap();
+        assert_eq!(timoshenko.validity(high).validity, Validity::Holds);
     }
 
     #[test]
