@@ -1332,8 +1332,8 @@ fn compare_reads_calculix_results_with_their_deck() {
     let mut lines = csv.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "F_N,w_fe_mm,w_euler_mm,diff_euler,w_shear_corrected_mm,diff_shear_corrected,regime,\
-         regime_fe,X_mm,X_fe_mm"
+        "F_N,w_fe_mm,w_euler_mm,diff_euler,w_shear_corrected_mm,diff_shear_corrected,\
+         shear_corrected_within,regime,regime_fe,X_mm,X_fe_mm"
     );
     assert_eq!(lines.count(), 6);
     let json: serde_json::Value = serde_json::from_str(&stdout_of(&[

@@ -25,6 +25,9 @@ pub struct BeamCompared {
     pub regime: Regime,
     /// The closed form's start of the macroslip zone X (mm): L when there is none.
     pub macroslip_start: f64,
+    /// The envelope (V2) of the shear-corrected (Timoshenko) value: the stated bound on its
+    /// difference from continuum FE.
+    pub shear_corrected_within: f64,
 }
 
 impl BeamCompared {
@@ -61,6 +64,7 @@ pub struct BeamComparison {
 /// code; its nu for the shear deflection), under both beam theories whichever `beams` has.
 pub fn compare_beams(beams: &TwinBeams, points: &[BeamFePoint]) -> BeamComparison {
     let euler_bernoulli = beams.with_theory(BeamTheory::EulerBernoulli);
+    let timoshenko = beams.with_theory(BeamTheory::Timoshenko);
     let rows: Vec<BeamCompared> = points
         .iter()
         .map(|&fe| {
@@ -73,6 +77,7 @@ pub fn compare_beams(beams: &TwinBeams, points: &[BeamFePoint]) -> BeamCompariso
                 shear_corrected: euler + beams.shear_deflection(force),
                 regime: state.regime(),
                 macroslip_start: state.micro_zone_end(),
+                shear_corrected_within: timoshenko.validity(force).expected_error,
             }
         })
         .collect();

@@ -26,6 +26,8 @@ pub struct BeamCompareRow {
     pub w_shear_corrected_mm: f64,
     /// (FE - shear corrected) / shear corrected.
     pub diff_shear_corrected: f64,
+    /// The stated bound on that difference (V2), a fraction.
+    pub shear_corrected_within: f64,
     /// The closed form's regime.
     pub regime: &'static str,
     /// The regime the FE slip profile shows (empty without one).
@@ -47,6 +49,7 @@ impl From<&BeamCompared> for BeamCompareRow {
             diff_euler: r.difference_euler(),
             w_shear_corrected_mm: r.shear_corrected,
             diff_shear_corrected: r.difference_shear_corrected(),
+            shear_corrected_within: r.shear_corrected_within,
             regime: r.regime.label(),
             regime_fe: r.fe.interface.map(|i| i.regime.label()),
             macroslip_start: r.macroslip_start,

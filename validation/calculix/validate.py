@@ -47,6 +47,7 @@ BEAM_CASES = [
      "stick slope 25 E / h = 525000 MPa/mm"),
     ("mu 0.5, P 2, K_T 300", ["--set", "mu=0.5", "--set", "P=2", "--set", "KT=300"],
      "another interface"),
+    ("stubby, h/L = 1/5", ["--set", "h=40"], "beam theory's limit: Euler-Bernoulli 17-30 % stiff"),
 ]
 MESH_CASE = ("paper K_T = 600", ["--preset", "paper-beams"])
 
@@ -56,6 +57,8 @@ MESH_CASE = ("paper K_T = 600", ["--preset", "paper-beams"])
 # dx 0.1/0.05/0.01, 4 elements through t_p) to within the bands given, and the mean must differ
 # from the strip theory by more than PLATE_FAILS: the envelope the README states.
 PLATE_HOLDS = 0.02
+# `microslip plate --continuum` (plane strain, contact pressure from the solution) against CalculiX.
+CONTINUUM_TOLERANCE = 0.01
 PLATE_FAILS = 0.10
 PLATE_CASES = [
     # K_T (MPa/mm), reference u(L) at contact face and mid-thickness (mm) or None, band (face, mid)
@@ -152,12 +155,14 @@ def main():
     lines.append(f"CalculiX {version}, microslip decks (C3D20R, coarse mesh unless stated), "
                  f"run {today} by `validation/calculix/validate.py`.\n")
     lines.append("**Twin beams**: w(L) of CalculiX against the closed form (Euler-Bernoulli, as in "
-                 "the paper) and against it plus each beam's shear deflection; X = start of the "
-                 "macroslip zone (mm). Tolerance: shear-corrected within "
-                 f"{100 * W_TOLERANCE:g} %, X within {X_ELEMENTS:g} elements (or both within h of "
-                 "the clamp, where the clamp, not beam theory, governs).\n")
-    lines.append("| case | F (N) | w ccx (mm) | vs E-B | vs E-B + shear | X ccx | X closed | regime |")
-    lines.append("|---|---|---|---|---|---|---|---|")
+                 "the paper) and against it plus each beam's shear deflection (Timoshenko); X = start "
+                 "of the macroslip zone (mm). Tolerance: Timoshenko within its stated envelope "
+                 f"(V2) and within {100 * W_TOLERANCE:g} % for h/L <= 1/20, X within "
+                 f"{X_ELEMENTS:g} elements (or both within h of the clamp, where the clamp, not beam "
+                 "theory, governs).\n")
+    lines.append("| case | F (N) | w ccx (mm) | vs E-B | vs Timoshenko | envelope | X ccx | X closed "
+                 "| regime |")
+    lines.append("|---|---|---|---|---|---|---|---|---|")
     for n, (name, args, what) in enumerate(BEAM_CASES):
         job = f"beam{n}"
         data, deck, wall, cpu = run_case(microslip, workdir, job, "beam", args)
@@ -166,9 +171,14 @@ def main():
         half_height = float(re.search(r" h=(\S+)", deck).group(1))
         for row in data["rows"]:
             diff = row["diff_shear_corrected"]
-            if abs(diff) > W_TOLERANCE:
+            # The stated envelope (V2) of the shear-corrected value, and the 1 % for
+            # beams as slender as the paper's or more (h/L <= 1/20).
+            tolerance = row["shear_corrected_within"]
+            if half_height / breaks[-1] <= 0.05:
+                tolerance = min(tolerance, W_TOLERANCE)
+            if abs(diff) > tolerance:
                 failures.append(f"beams {name}, F = {row['F_N']:g} N: shear-corrected w(L) "
-                                f"differs by {pct(diff)} (tolerance {100 * W_TOLERANCE:g} %)")
+                                f"differs by {pct(diff)} (tolerance {100 * tolerance:.2g} %)")
             x_fe, x = row["X_fe_mm"], row["X_mm"]
             if row["regime"] != row["regime_fe"]:
                 failures.append(f"beams {name}, F = {row['F_N']:g} N: regime {row['regime_fe']} "
@@ -181,10 +191,11 @@ def main():
                                     f"CalculiX, {x:.3f} mm closed form (allowed {allowed:.3f} mm)")
             lines.append(f"| {name} | {row['F_N']:g} | {row['w_fe_mm']:.6g} | "
                          f"{pct(row['diff_euler'])} | {pct(diff)} | "
+                         f"{100 * row['shear_corrected_within']:.2g} % | "
                          f"{x_fe:.4g} | {x:.4g} | {row['regime']} |")
         implied = data["implied"]
         if "KT_MPa_per_mm" in implied:
-            lines.append(f"| {name}: implied K_T | | | | | | | {implied['KT_MPa_per_mm']:.4g} MPa/mm "
+            lines.append(f"| {name}: implied K_T | | | | | | | | {implied['KT_MPa_per_mm']:.4g} MPa/mm "
                          f"({implied['KT_status']}), deck {data['KT_MPa_per_mm']:.4g} |")
 
     # Mesh convergence of the beams.
@@ -203,8 +214,9 @@ def main():
     lines.append("**Squeezed plate**: u(L) of CalculiX (thickness mean; contact face; "
                  "mid-thickness) against the strip theory.\n")
     lines.append("| K_T (MPa/mm) | u ccx mean (mm) | u closed (mm) | mean | contact face | "
-                 "mid-thickness | X_r ccx | X_r closed | implied K_T |")
-    lines.append("|---|---|---|---|---|---|---|---|---|")
+                 "mid-thickness | X_r ccx | X_r closed | implied K_T | microslip 2-D continuum "
+                 "mean (vs ccx) |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|")
     for kt, reference, band in PLATE_CASES:
         for mesh in ["coarse", "fine"]:
             job = f"plate{kt:g}{mesh}"
@@ -229,10 +241,21 @@ def main():
                         failures.append(f"plate K_T = {kt:g} ({mesh}), {where}: {got:.4g} mm, "
                                         f"reference {want:.4g} mm (band {100 * tol:g} %)")
             implied = row["KT_implied_MPa_per_mm"]
+            # The project's own plane-strain continuum solver against CalculiX: within 1 % on the
+            # thickness mean and mid-thickness.
+            continuum = json.loads(subprocess.run(
+                [microslip, "plate", "--set", f"KT={kt:g}", "--continuum", "--format", "json"],
+                check=True, capture_output=True, text=True).stdout)["continuum"]
+            for key, ccx in [("u_end_mean_mm", row["u_fe_mm"]),
+                             ("u_end_mid_thickness_mm", row["u_fe_mid_thickness_mm"])]:
+                if abs(continuum[key] / ccx - 1) > CONTINUUM_TOLERANCE:
+                    failures.append(f"plate K_T = {kt:g} ({mesh}): continuum {key} "
+                                    f"{continuum[key]:.5g} vs CalculiX {ccx:.5g}")
             lines.append(f"| {kt:g} ({mesh}) | {row['u_fe_mm']:.4g} | {row['u_mm']:.4g} | "
                          f"{pct(diffs[0])} | {pct(diffs[1])} | {pct(diffs[2])} | "
                          f"{row['Xr_fe_mm']:.4g} | {row['Xr_mm']:.4g} | "
-                         f"{'none' if implied is None else f'{implied:.4g}'} |")
+                         f"{'none' if implied is None else f'{implied:.4g}'} | "
+                         f"{continuum['u_end_mean_mm']:.4g} ({pct(continuum['u_end_mean_mm'] / row['u_fe_mm'] - 1)}) |")
 
     lines.append("\nRun times (ccx wall / CPU seconds, OMP_NUM_THREADS="
                  f"{os.environ.get('OMP_NUM_THREADS', '2')}): "
