@@ -2,7 +2,9 @@
 
 use divan::{Bencher, black_box};
 use microslip::fit::{Measurement, fit_twin_beams};
-use microslip::numeric::{MeshDensity, PlateFe, TwinBeamsFe};
+use microslip::numeric::{
+    ContinuumMesh, MeshDensity, PlateFe, TwinBeamsFe, solve_plate_continuum,
+};
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
 fn main() {
@@ -51,6 +53,21 @@ fn plate_finite_elements(bencher: Bencher) {
         let mut fe = PlateFe::new(PlateParams::PAPER, MeshDensity::default());
         fe.load_to(black_box(10.0), 1).unwrap();
         fe.end_displacement()
+    });
+}
+
+/// The plane-strain continuum plate (Q8, 4 layers, fixed point on the contact pressure), paper
+/// plate at K_T = 1e4 (no macroslip), 1e6 (the paper's) and 1e7.
+#[divan::bench(args = [1e4, 1e6, 1e7], sample_count = 10)]
+fn plate_continuum(bencher: Bencher, kt: f64) {
+    let params = PlateParams {
+        tangential_stiffness: kt,
+        ..PlateParams::PAPER
+    };
+    bencher.bench_local(|| {
+        solve_plate_continuum(black_box(params), ContinuumMesh::default())
+            .unwrap()
+            .end_displacement_mean
     });
 }
 
