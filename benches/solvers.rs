@@ -2,9 +2,7 @@
 
 use divan::{Bencher, black_box};
 use microslip::fit::{Measurement, fit_twin_beams};
-use microslip::numeric::{
-    ContinuumMesh, MeshDensity, PlateFe, TwinBeamsFe, solve_plate_continuum,
-};
+use microslip::numeric::{ContinuumMesh, MeshDensity, PlateFe, TwinBeamsFe, solve_plate_continuum};
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
 fn main() {

@@ -442,3 +442,49 @@ fn end_displacement_falls_strictly_with_tangential_stiffness() {
         assert_eq!(regimes.len(), 2, "the sweep crosses the regime change");
     }
 }
+
+/// (P9) The pressure flag judges the peak too: the peak |P_r/P - 1| is at an end (checked against a
+/// dense scan of P_r), and the flag flips where that scanned peak crosses 50 % on a long plate whose
+/// mean deviation stays small.
+#[test]
+fn constant_pressure_flag_bounds_the_peak_and_flips_at_its_limit() {
+    use microslip::model::plate::PRESSURE_PEAK_LIMIT;
+    let plate = |mu: f64| {
+        SqueezedPlate::new(PlateParams {
+            friction: mu,
+            poisson: 0.1,
+            half_length: 100.0,
+            ..PlateParams::PAPER
+        })
+        .unwrap()
+    };
+    let scanned_peak = |mu: f64| {
+        let pressure = plate(mu).contact_pressure();
+        (0..=4000)
+            .map(|i| (pressure.ratio(100.0 * f64::from(i) / 4000.0) - 1.0).abs())
+            .fold(0.0_f64, f64::max)
+    };
+    for mu in [0.1, 0.3, 1.0, 2.0] {
+        let peak = plate(mu).contact_pressure().peak_deviation();
+        assert!((peak - scanned_peak(mu)).abs() < 1e-12, "mu {mu}");
+    }
+    // The friction coefficient where the scanned peak reaches the limit, by bisection.
+    let (mut lo, mut hi) = (0.1, 2.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if scanned_peak(mid) > PRESSURE_PEAK_LIMIT {
+            hi = mid
+        } else {
+            lo = mid
+        }
+    }
+    let below = plate(lo * (1.0 - 1e-6)).contact_pressure();
+    let above = plate(hi * (1.0 + 1e-6)).contact_pressure();
+    assert!(below.mean_deviation() < 0.03 && above.mean_deviation() < 0.03);
+    assert!(below.constant_pressure_holds(), "mu {lo}");
+    assert!(!above.constant_pressure_holds(), "mu {hi}");
+    // The case the audit found: "holds" with 2.76 P at the edge before the peak was judged.
+    let audit = plate(1.0).contact_pressure();
+    assert!((audit.ratio(100.0) - 2.763).abs() < 1e-3);
+    assert!(!audit.constant_pressure_holds());
+}

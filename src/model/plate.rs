@@ -384,6 +384,12 @@ impl RegularizedPlate {
 /// the mean deviation is ~ mu t_p / L = 2 mu h / L (see docs/theory.md, (P9)).
 pub const PRESSURE_DEVIATION_LIMIT: f64 = 0.03;
 
+/// Largest peak |P_r / P - 1| (at the centre or the free end) with which the constant-pressure
+/// assumption is still said to hold: 0.5, i.e. the friction strength mu P_r at the edge within half
+/// of mu P. The peak does not shrink with L (about mu sqrt(5 (1 - nu)) / 2, (P9)): the mean alone
+/// said "holds" for mu = 1, nu = 0.1, L = 100 mm with P_r = 2.76 P at the edge.
+pub const PRESSURE_PEAK_LIMIT: f64 = 0.5;
+
 /// Contact pressure P_r(x) under a plate kept flat on the plane with saturated friction (eq. (P8)).
 ///
 /// Q(x) = mu h P psi(x / L), h = t_p / 2, where psi solves psi'' - c L psi' - beta^2 L^2 psi =
@@ -562,10 +568,20 @@ impl ContactPressure {
         2.0 * self.lever * self.psi(x0.clamp(0.0, l))[0].abs() / l
     }
 
-    /// False when P_r departs from P by more than [`PRESSURE_DEVIATION_LIMIT`] on average, i.e. when
-    /// the constant-pressure assumption of the friction solution no longer holds.
+    /// Largest |P_r / P - 1| over [0, L] (-). P_r - P = Q' is increasing (Q is convex), so the
+    /// largest departure sits at an end: the centre (below P) or the free edge (above P).
+    pub fn peak_deviation(&self) -> f64 {
+        (self.ratio(0.0) - 1.0)
+            .abs()
+            .max((self.ratio(self.half_length) - 1.0).abs())
+    }
+
+    /// False when P_r departs from P by more than [`PRESSURE_DEVIATION_LIMIT`] on average or by
+    /// more than [`PRESSURE_PEAK_LIMIT`] at its peak: the constant-pressure assumption of the
+    /// friction solution no longer holds.
     pub fn constant_pressure_holds(&self) -> bool {
         self.mean_deviation() <= PRESSURE_DEVIATION_LIMIT
+            && self.peak_deviation() <= PRESSURE_PEAK_LIMIT
     }
 }
 

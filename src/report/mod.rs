@@ -115,6 +115,58 @@ fn percent_of(error: Option<f64>) -> String {
     error.map_or_else(|| "-".to_string(), |e| number_with(100.0 * e, 2))
 }
 
+/// What the contact-pressure check found, with both measures and which one decides: "holds (mean
+/// deviation 0.6 % <= 3 %, peak 32.3 % <= 50 %)" or "does NOT hold: peak 176 % > 50 %".
+pub fn pressure_verdict(pressure: &crate::ContactPressure) -> String {
+    use crate::model::plate::{PRESSURE_DEVIATION_LIMIT, PRESSURE_PEAK_LIMIT};
+    let (mean, peak) = (pressure.mean_deviation(), pressure.peak_deviation());
+    let percent = |x: f64| number_with(100.0 * x, 3);
+    let mut failed = Vec::new();
+    if mean > PRESSURE_DEVIATION_LIMIT {
+        failed.push(format!(
+            "mean deviation {} % > {} %",
+            percent(mean),
+            percent(PRESSURE_DEVIATION_LIMIT)
+        ));
+    }
+    if peak > PRESSURE_PEAK_LIMIT {
+        failed.push(format!(
+            "peak {} % > {} %",
+            percent(peak),
+            percent(PRESSURE_PEAK_LIMIT)
+        ));
+    }
+    if failed.is_empty() {
+        format!(
+            "holds (mean deviation {} % <= {} %, peak {} % <= {} %)",
+            percent(mean),
+            percent(PRESSURE_DEVIATION_LIMIT),
+            percent(peak),
+            percent(PRESSURE_PEAK_LIMIT)
+        )
+    } else {
+        format!("does NOT hold: {}", failed.join(", "))
+    }
+}
+
+/// The same in a few words for the TUI's regime pane (30 characters): "holds", "FAILS (peak 176 %)".
+pub fn pressure_verdict_short(pressure: &crate::ContactPressure) -> String {
+    use crate::model::plate::PRESSURE_DEVIATION_LIMIT;
+    if pressure.constant_pressure_holds() {
+        "holds".to_string()
+    } else if pressure.mean_deviation() > PRESSURE_DEVIATION_LIMIT {
+        format!(
+            "FAILS (mean {} %)",
+            number_with(100.0 * pressure.mean_deviation(), 2)
+        )
+    } else {
+        format!(
+            "FAILS (peak {} %)",
+            number_with(100.0 * pressure.peak_deviation(), 3)
+        )
+    }
+}
+
 /// Tip forces of the paper report's beam table, as multiples of F_thre: stick, threshold, then slip.
 const BEAM_FORCE_FACTORS: [f64; 7] = [0.5, 1.0, 1.125, 1.25, 1.5, 2.5, 3.75];
 
@@ -206,15 +258,10 @@ fn write_plate_table(out: &mut String, plate: &SqueezedPlate) {
     );
     let _ = writeln!(
         out,
-        "  contact pressure P_r/P: {} (centre) to {} (edge), mean deviation {} % -> constant-pressure assumption {}",
+        "  contact pressure P_r/P: {} (centre) to {} (edge) -> constant-pressure assumption {}",
         number(pressure.ratio(0.0)),
         number(pressure.ratio(p.half_length)),
-        number(pressure.mean_deviation() * 100.0),
-        if pressure.constant_pressure_holds() {
-            "holds"
-        } else {
-            "does NOT hold"
-        }
+        pressure_verdict(&pressure)
     );
     let _ = writeln!(
         out,

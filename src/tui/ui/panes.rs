@@ -138,11 +138,7 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
                 )),
                 text(format!(
                     "constant P: {}",
-                    if pressure.constant_pressure_holds() {
-                        "holds"
-                    } else {
-                        "FAILS (>3 %)"
-                    }
+                    crate::report::pressure_verdict_short(&pressure)
                 )),
                 text(format!(
                     "strip theory {}",
