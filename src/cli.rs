@@ -108,7 +108,7 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
         format: ReportFormat,
     },
-    /// Twin beams under a tip force cycling between +FA and -FA: loop, dissipation, damping.
+    /// Twin beams cycled between +FA and -FA: loop (one beam), dissipation (both beams), damping.
     Cycle {
         /// Amplitude F_a (N).
         #[arg(long, value_name = "FA", allow_negative_numbers = true)]
@@ -250,7 +250,8 @@ pub enum SweepCommand {
         #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
         format: TableFormat,
     },
-    /// Twin beams cycled at amplitudes F_a from F0 to F1 (N): dissipation and damping per cycle.
+    /// Twin beams cycled at amplitudes F_a from F0 to F1 (N): dissipation (both beams) and damping
+    /// per cycle.
     Cycle {
         /// First amplitude (N).
         #[arg(long, value_name = "F0", allow_negative_numbers = true)]

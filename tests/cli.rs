@@ -482,7 +482,7 @@ fn cycle_reports_and_sweeps() {
     // Coulomb: D = 4 mu P L^3 (F_a - F_thre) / (E h^2) = 4 x 0.3 x 8e6 x 70 / (210000 x 100) = 32 N mm.
     assert!(
         text.lines()
-            .any(|l| l.contains("dissipated per cycle D (N mm)") && l.contains(" 32 ")),
+            .any(|l| l.contains("D per cycle, both beams (N mm)") && l.contains(" 32 ")),
         "{text}"
     );
     let csv = stdout_of(&[

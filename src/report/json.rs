@@ -54,6 +54,7 @@ pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> Value {
         "Fa_N": amplitude.newtons(),
         "coulomb": law(Law::Coulomb),
         "regularized": law(Law::Regularized),
+        "note": super::text::CYCLE_UNITS_NOTE,
     })
 }
 

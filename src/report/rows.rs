@@ -92,10 +92,10 @@ pub struct CycleRow {
     /// Amplitude (N).
     #[serde(rename = "Fa_N")]
     pub amplitude: f64,
-    /// Coulomb dissipation per cycle (N mm).
+    /// Coulomb dissipation per cycle, both beams (the whole interface) (N mm).
     #[serde(rename = "D_coulomb_Nmm")]
     pub d_coulomb: f64,
-    /// Regularized dissipation per cycle (N mm).
+    /// Regularized dissipation per cycle, both beams (N mm).
     #[serde(rename = "D_regularized_Nmm")]
     pub d_regularized: f64,
     /// Coulomb equivalent damping ratio (-).

@@ -286,12 +286,12 @@ pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> String {
             r.peak_deflection(),
         ),
         (
-            "dissipated per cycle D (N mm)",
+            "D per cycle, both beams (N mm)",
             c.dissipation(),
             r.dissipation(),
         ),
         (
-            "peak energy U = F_a w_a (N mm)",
+            "peak energy U, both (N mm)",
             c.peak_energy(),
             r.peak_energy(),
         ),
@@ -301,7 +301,7 @@ pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> String {
             r.damping_ratio(),
         ),
         (
-            "secant stiffness F_a/w_a (N/mm)",
+            "secant F_a/w_a, 1 beam (N/mm)",
             c.secant_stiffness(),
             r.secant_stiffness(),
         ),
@@ -314,12 +314,14 @@ pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> String {
             number(regularized)
         );
     }
-    let _ = writeln!(
-        out,
-        "  D counts the work of both beams' tip forces; U = 1/2 (2 F_a) w_a."
-    );
+    let _ = writeln!(out, "  {CYCLE_UNITS_NOTE}");
     out
 }
+
+/// What D, U and the secant stiffness refer to: said wherever they appear (text, JSON, help, TUI).
+pub const CYCLE_UNITS_NOTE: &str = "D and U are for the pair (both beams' tip forces, the whole \
+     interface; U = 1/2 (2 F_a) w_a); the secant stiffness F_a/w_a and the loop w(F) are one beam's \
+     (the loop's area is D/2).";
 
 /// The reason behind a fit verdict, in plain words (the text and JSON fit reports' note).
 pub fn evidence(evidence: &crate::fit::Evidence) -> String {

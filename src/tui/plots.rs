@@ -467,7 +467,7 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: BeamChart, f_data: f64) 
             Some(Plot {
                 table: None,
                 title: format!(
-                    "+-{} N: D = {} (C), {} (reg.) N mm",
+                    "1 beam +-{} N; D (2) {} (C), {} (reg.) N mm",
                     number(f),
                     number_with(coulomb.dissipation(), 3),
                     number_with(regularized.dissipation(), 3)
@@ -494,7 +494,7 @@ fn beam_plot(beams: &TwinBeams, force: TipForce, chart: BeamChart, f_data: f64) 
                     number_with(zeta.zeta_regularized, 3)
                 ),
                 x: linear_axis("F_a (N)", 0.0, f_max),
-                y: linear_axis("D (N mm)", 0.0, top),
+                y: linear_axis("D, 2 beams (N mm)", 0.0, top),
                 series: vec![
                     line("Coulomb", coulomb),
                     line("regularized", regularized),
