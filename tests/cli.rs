@@ -107,7 +107,7 @@ fn beam_sweep_csv_has_the_contract_header_and_round_trip_numbers() {
     assert_eq!(rows.len(), 16);
     assert_eq!(
         rows[0][..],
-        ["0.0", "0.0", "0.0", "200.0", "stick", "microslip"]
+        ["0.0", "0.0", "0.0", "200.0", "unloaded", "unloaded"]
     );
     // Row 5 is F = 100 N: FE reference w(L) = 3.829225956399e-2 mm, X = 17.30949125 mm.
     let row: Vec<f64> = rows[5][..4].iter().map(|v| v.parse().unwrap()).collect();
