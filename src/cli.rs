@@ -653,11 +653,10 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 (Model::Beam { beams, force }, Param::Beam(p)) => {
                     let rows = curves::beam_param_sweep(beams, force, p, values)
                         .map_err(force_range_error)?;
-                    let column = json::suffixed(param.name(), param.unit());
-                    write_table_after(
+                    write_varied(
                         out,
                         *format,
-                        &column,
+                        param,
                         rows.map(|(v, r)| (v, BeamRow::from(&r))),
                     )?;
                 }
@@ -705,11 +704,10 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 }
                 (Model::Plate(plate), Param::Plate(p)) => {
                     let rows = curves::plate_param_sweep(plate, p, values).map_err(range_error)?;
-                    let column = json::suffixed(param.name(), param.unit());
-                    write_table_after(
+                    write_varied(
                         out,
                         *format,
-                        &column,
+                        param,
                         rows.map(|(v, r)| (v, PlateRow::from(&r))),
                     )?;
                 }
@@ -835,6 +833,21 @@ fn beams_over_forces(
         // `load` refuses a preset of the other model with `WrongModel`.
         (_, Model::Plate(_)) => unreachable!("load(.., Beam) returned a plate"),
     }
+}
+
+/// A sweep over `param`: its column (named with its unit, `mu`, `L_mm`) first, then the rows.
+fn write_varied<R: serde::Serialize + Default>(
+    out: &mut impl Write,
+    format: TableFormat,
+    param: Param,
+    rows: impl Iterator<Item = (f64, R)>,
+) -> io::Result<()> {
+    write_table_after(
+        out,
+        format,
+        &json::suffixed(param.name(), param.unit()),
+        rows,
+    )
 }
 
 /// The parameter of `--vary` (or `default` without it) of `kind`.

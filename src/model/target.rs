@@ -306,6 +306,19 @@ pub struct Root {
     pub plateau: bool,
 }
 
+impl Root {
+    /// A run of the parameter over which the quantity equals the target (`value` one of its ends).
+    fn plateau(bracket: (f64, f64), value: f64, achieved: f64) -> Root {
+        Root {
+            value,
+            bracket,
+            achieved,
+            certified: true,
+            plateau: true,
+        }
+    }
+}
+
 /// The answer: every crossing found, in increasing order of the parameter.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Solved {
@@ -473,26 +486,14 @@ pub fn solve_for_target(
                     last.bracket.1 = end;
                     last.value = end;
                 }
-                _ => roots.push(Root {
-                    value: end,
-                    bracket: (a, end),
-                    achieved: ya,
-                    certified: true,
-                    plateau: true,
-                }),
+                _ => roots.push(Root::plateau((a, end), end, ya)),
             }
             continue;
         }
         if fb == 0.0 {
             // A plateau starts inside (a, b]: its lower end.
             let start = edge(&|x| !on_target(x), a, b);
-            roots.push(Root {
-                value: b,
-                bracket: (start, b),
-                achieved: yb,
-                certified: true,
-                plateau: true,
-            });
+            roots.push(Root::plateau((start, b), b, yb));
             continue;
         }
         if fa.signum() == fb.signum() {
@@ -518,13 +519,7 @@ pub fn solve_for_target(
         && misfit(y) == 0.0
         && roots.last().is_none_or(|r| r.bracket.1 != x)
     {
-        roots.push(Root {
-            value: x,
-            bracket: (x, x),
-            achieved: y,
-            certified: true,
-            plateau: true,
-        });
+        roots.push(Root::plateau((x, x), x, y));
     }
     if roots.is_empty() {
         let (min, max) = defined

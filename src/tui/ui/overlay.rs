@@ -160,19 +160,23 @@ pub fn draw_prompt(
     content: &str,
     hint: &str,
 ) {
-    let popup = centred(area, 60, 5);
+    // A long hint wraps onto more lines (the box grows) rather than being cut.
+    let hint_lines = wrap_words(hint, 56);
+    let popup = centred(area, 60, 4 + hint_lines.len().max(1) as u16);
     frame.render_widget(Clear, popup);
     let block = pane(app, title);
     let inner = block.inner(popup);
     frame.render_widget(block, popup);
-    let lines = vec![
+    let mut lines = vec![
         Line::from(format!(" {}", sanitize(content))),
         Line::from(""),
-        Line::from(Span::styled(
-            format!(" {hint}"),
-            app.theme().style(Role::Muted),
-        )),
     ];
+    lines.extend(hint_lines.into_iter().map(|h| {
+        Line::from(Span::styled(
+            format!(" {h}"),
+            app.theme().style(Role::Muted),
+        ))
+    }));
     frame.render_widget(Paragraph::new(lines), inner);
 }
 
