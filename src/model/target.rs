@@ -4,7 +4,7 @@
 //! How: the parameter's range (its whole accepted domain, or the caller's part of it) is scanned on
 //! a grid (logarithmic for positive parameters spanning more than a decade), every grid interval
 //! where the quantity crosses the target is a bracket, and each bracket is solved by
-//! [`find_root_in_bracket`] (Brent, certified, with bisection as the fallback). Each root is then
+//! `solve::find_root_in_bracket` (Brent, certified, with bisection as the fallback). Each root is then
 //! checked: the quantity there must equal the target to 1e-6 relative, otherwise the quantity
 //! jumps across the target (a discontinuity, not a root) and the answer says so. No crossing is an
 //! error that gives the range of the quantity over the range scanned; more than one crossing gives
