@@ -1348,6 +1348,18 @@ mod tests {
     }
 
     #[test]
+    fn the_force_axis_stays_when_mu_changes_until_a_fits_it() {
+        let mut app = app();
+        let before = app.plot().x.bounds;
+        select(&mut app, "mu");
+        app.update(Action::DecreaseCoarse);
+        assert_eq!(app.plot().x.bounds, before, "the x range jumped");
+        app.update(Action::FitAxes);
+        // 3 F_thre of mu = 0.3 / 1.25: 192 N instead of 240 N.
+        assert!((app.plot().x.bounds[1] - 192.0).abs() < 1e-9, "{:?}", app.plot().x);
+    }
+
+    #[test]
     fn i_walks_through_the_lines_of_the_regime_pane() {
         let mut app = app();
         app.update(Action::Explain);
