@@ -1356,7 +1356,11 @@ mod tests {
         assert_eq!(app.plot().x.bounds, before, "the x range jumped");
         app.update(Action::FitAxes);
         // 3 F_thre of mu = 0.3 / 1.25: 192 N instead of 240 N.
-        assert!((app.plot().x.bounds[1] - 192.0).abs() < 1e-9, "{:?}", app.plot().x);
+        assert!(
+            (app.plot().x.bounds[1] - 192.0).abs() < 1e-9,
+            "{:?}",
+            app.plot().x
+        );
     }
 
     #[test]
