@@ -21,12 +21,16 @@ use crate::fe::header::StickSlope;
 use crate::fe::load::LoadError;
 use crate::fit::{self, FitError};
 use crate::model::inputs::{Inputs, Model};
-use crate::model::params::{BeamParam, Compact, Domain, ModelKind, ParamError, Unit, parse_number};
+use crate::model::params::{
+    BeamParam, Compact, Domain, ModelKind, Param, ParamError, PlateParam, Unit, UnknownParam,
+    parse_number,
+};
+use crate::model::target::{Target, TargetError, solve_for_target};
 use crate::model::twin_beams::BeamTheory;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
-use crate::report::table::{TableFormat, write_json, write_table};
+use crate::report::table::{TableFormat, write_json, write_table, write_table_after};
 use crate::report::{self, json, text};
 use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
@@ -91,6 +95,38 @@ pub enum Command {
     /// Tables over a parameter range, as CSV or JSON.
     #[command(subcommand)]
     Sweep(SweepCommand),
+    /// The value of one parameter at which a quantity takes a target value (a certified root).
+    ///
+    /// Quantities: beam w(L) X ratio F_1 D zeta; plate u(L) X_r ratio (ratio: regularized over
+    /// Coulomb, e.g. ratio=1.01 for "within 1 % of Coulomb"). The parameter's whole accepted range
+    /// is searched unless --from/--to narrow it; every root is listed, and none is an error.
+    Solve {
+        /// Which benchmark.
+        #[arg(value_enum)]
+        model: ModelKind,
+        /// The parameter to solve for (beam: L b h E P mu KT F; plate: L tp E nu mu P KT).
+        #[arg(long, value_name = "NAME")]
+        vary: String,
+        /// The target, QUANTITY=VALUE (e.g. ratio=1.01, w(L)=0.05, X_r=9.5).
+        #[arg(long, value_name = "QUANTITY=VALUE")]
+        target: String,
+        /// Lowest value of the parameter searched (default: its smallest accepted value).
+        #[arg(long, value_name = "A", allow_negative_numbers = true, requires = "to")]
+        from: Option<f64>,
+        /// Highest value searched (default: its largest accepted value).
+        #[arg(
+            long,
+            value_name = "B",
+            allow_negative_numbers = true,
+            requires = "from"
+        )]
+        to: Option<f64>,
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+        format: ReportFormat,
+    },
     /// K_T from K_N and the K_T that FE codes assume, with what each does to the answer.
     Kt {
         #[command(flatten)]
@@ -233,17 +269,24 @@ pub struct PointArgs {
 /// Sweep subcommands.
 #[derive(Debug, Subcommand)]
 pub enum SweepCommand {
-    /// Twin beams over a range of tip forces F (N), linearly spaced (replaces the preset's F).
+    /// Twin beams over a range of tip forces F (N), linearly spaced (replaces the preset's F), or
+    /// of any parameter with --vary.
     Beam {
-        /// First force (N).
-        #[arg(long, value_name = "F0", allow_negative_numbers = true)]
+        /// The parameter to vary: L b h E P mu KT F (default F). Columns: the parameter's (e.g.
+        /// mu, KT_MPa_per_mm) then those of the F sweep; for F, the F sweep's own.
+        #[arg(long, value_name = "NAME")]
+        vary: Option<String>,
+        /// First value of the varied parameter (F: N).
+        #[arg(long, value_name = "A", allow_negative_numbers = true)]
         from: f64,
-        /// Last force (N).
-        #[arg(long, value_name = "F1", allow_negative_numbers = true)]
+        /// Last value.
+        #[arg(long, value_name = "B", allow_negative_numbers = true)]
         to: f64,
-        /// Number of rows, both ends included (2 to 100000000).
+        /// Number of rows, both ends included (2 to 100000000; 1 when --from = --to).
         #[arg(long, value_name = "N")]
         points: u64,
+        #[command(flatten)]
+        spacing: SpacingArgs,
         #[command(flatten)]
         inputs: InputArgs,
         /// Output format.
@@ -268,26 +311,60 @@ pub enum SweepCommand {
         #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
         format: TableFormat,
     },
-    /// Squeezed plate over a range of K_T (MPa/mm), logarithmically spaced unless --linear.
+    /// Squeezed plate over a range of K_T (MPa/mm), logarithmically spaced unless --linear, or of
+    /// any parameter with --vary NAME --from A --to B.
     Plate {
         /// First K_T (MPa/mm).
-        #[arg(long, value_name = "A", allow_negative_numbers = true)]
-        kt_from: f64,
+        #[arg(long, value_name = "A", allow_negative_numbers = true, conflicts_with_all = ["vary", "from"])]
+        kt_from: Option<f64>,
         /// Last K_T (MPa/mm).
+        #[arg(long, value_name = "B", allow_negative_numbers = true, conflicts_with_all = ["vary", "to"])]
+        kt_to: Option<f64>,
+        /// The parameter to vary: L tp E nu mu P KT (default KT). Columns: the parameter's (e.g.
+        /// mu) then those of the K_T sweep; for KT, the K_T sweep's own.
+        #[arg(long, value_name = "NAME")]
+        vary: Option<String>,
+        /// First value of the varied parameter (with --vary).
+        #[arg(long, value_name = "A", allow_negative_numbers = true)]
+        from: Option<f64>,
+        /// Last value of the varied parameter (with --vary).
         #[arg(long, value_name = "B", allow_negative_numbers = true)]
-        kt_to: f64,
-        /// Number of rows, both ends included (2 to 100000000).
+        to: Option<f64>,
+        /// Number of rows, both ends included (2 to 100000000; 1 when both ends are equal).
         #[arg(long, value_name = "N")]
         points: u64,
-        /// Space K_T linearly instead of logarithmically.
-        #[arg(long)]
-        linear: bool,
+        #[command(flatten)]
+        spacing: SpacingArgs,
         #[command(flatten)]
         inputs: InputArgs,
         /// Output format.
         #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
         format: TableFormat,
     },
+}
+
+/// How sweep values are spaced; the default is logarithmic for K_T, linear for the others.
+#[derive(Debug, Args)]
+pub struct SpacingArgs {
+    /// Space the values linearly.
+    #[arg(long, conflicts_with = "log")]
+    linear: bool,
+    /// Space the values logarithmically (both ends > 0).
+    #[arg(long)]
+    log: bool,
+}
+
+impl SpacingArgs {
+    /// The spacing asked for, or the parameter's default.
+    fn spacing(&self, param: Param) -> Spacing {
+        if self.linear {
+            Spacing::Linear
+        } else if self.log || param.is_stiffness() {
+            Spacing::Logarithmic
+        } else {
+            Spacing::Linear
+        }
+    }
 }
 
 /// Fit subcommands.
@@ -387,6 +464,15 @@ pub enum CliError {
         /// The command, as typed after `microslip` (e.g. `fit beam`).
         command: &'static str,
     },
+    /// A parameter name the model does not have.
+    #[error("invalid --vary: {0}")]
+    Vary(#[from] UnknownParam),
+    /// A target that cannot be solved.
+    #[error(transparent)]
+    Target(#[from] TargetError),
+    /// Missing flags.
+    #[error("{0}")]
+    Usage(&'static str),
     /// The cross-check found errors above tolerance (already reported on stdout).
     #[error("{0} of the quantities checked exceed the tolerance")]
     VerifyFailed(usize),
@@ -422,6 +508,7 @@ impl CliError {
     fn exit_code(&self) -> u8 {
         match self {
             CliError::CheckFailed(_)
+            | CliError::Target(TargetError::NoRoot { .. } | TargetError::Undefined { .. })
             | CliError::VerifyFailed(_)
             | CliError::Output(_)
             | CliError::Numeric(_) => 1,
@@ -537,39 +624,107 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             }
         }
         Some(Command::Sweep(SweepCommand::Beam {
+            vary,
             from,
             to,
             points,
+            spacing,
             inputs,
             format,
         })) => {
-            let (beams, forces) = beams_over_forces(inputs, *from, *to, *points, "sweep beam")?;
-            let rows = curves::beam_force_sweep(beams, forces).map_err(force_range_error)?;
-            write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
+            let param = varied(ModelKind::Beam, vary.as_deref(), "F")?;
+            let values = Samples::of_param(param, *from, *to, *points, spacing.spacing(param))
+                .map_err(force_range_error)?;
+            let (_, model) = load(inputs, ModelKind::Beam, "sweep beam")?;
+            match (model, param) {
+                (Model::Beam { beams, .. }, Param::Beam(BeamParam::Force)) => {
+                    let rows =
+                        curves::beam_force_sweep(beams, values).map_err(force_range_error)?;
+                    write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
+                }
+                (Model::Beam { beams, force }, Param::Beam(p)) => {
+                    let rows = curves::beam_param_sweep(beams, force, p, values)
+                        .map_err(force_range_error)?;
+                    write_varied(
+                        out,
+                        *format,
+                        param,
+                        rows.map(|(v, r)| (v, BeamRow::from(&r))),
+                    )?;
+                }
+                _ => {}
+            }
         }
         Some(Command::Sweep(SweepCommand::Plate {
             kt_from,
             kt_to,
+            vary,
+            from,
+            to,
             points,
-            linear,
+            spacing,
             inputs,
             format,
         })) => {
-            let spacing = if *linear {
-                Spacing::Linear
-            } else {
-                Spacing::Logarithmic
+            let (param, lo, hi, flags) = match (kt_from, kt_to, from, to) {
+                (Some(a), Some(b), None, None) => (
+                    Param::Plate(PlateParam::Stiffness),
+                    *a,
+                    *b,
+                    ["--kt-from", "--kt-to", "--points"],
+                ),
+                (None, None, Some(a), Some(b)) => (
+                    varied(ModelKind::Plate, vary.as_deref(), "KT")?,
+                    *a,
+                    *b,
+                    ["--from", "--to", "--points"],
+                ),
+                _ => {
+                    return Err(CliError::Usage(
+                        "sweep plate needs --kt-from A --kt-to B, or [--vary NAME] --from A --to B",
+                    ));
+                }
             };
-            let range_error = |error| CliError::Range {
-                error,
-                flags: ["--kt-from", "--kt-to", "--points"],
-            };
-            let samples = curves::stiffness_samples(*kt_from, *kt_to, *points, spacing)
+            let range_error = |error| CliError::Range { error, flags };
+            let values = Samples::of_param(param, lo, hi, *points, spacing.spacing(param))
                 .map_err(range_error)?;
             let (_, model) = load(inputs, ModelKind::Plate, "sweep plate")?;
-            if let Model::Plate(plate) = model {
-                let rows = curves::plate_kt_sweep(plate, samples).map_err(range_error)?;
-                write_table(out, *format, rows.map(|r| PlateRow::from(&r)))?;
+            match (model, param) {
+                (Model::Plate(plate), Param::Plate(PlateParam::Stiffness)) => {
+                    let rows = curves::plate_kt_sweep(plate, values).map_err(range_error)?;
+                    write_table(out, *format, rows.map(|r| PlateRow::from(&r)))?;
+                }
+                (Model::Plate(plate), Param::Plate(p)) => {
+                    let rows = curves::plate_param_sweep(plate, p, values).map_err(range_error)?;
+                    write_varied(
+                        out,
+                        *format,
+                        param,
+                        rows.map(|(v, r)| (v, PlateRow::from(&r))),
+                    )?;
+                }
+                _ => {}
+            }
+        }
+        Some(Command::Solve {
+            model,
+            vary,
+            target,
+            from,
+            to,
+            inputs,
+            format,
+        }) => {
+            let param = model.param(vary)?;
+            let target = Target::parse(target, *model)?;
+            let range = from.zip(*to);
+            let (name, validated) = load(inputs, *model, model_command(*model, "solve"))?;
+            let solved = solve_for_target(&validated, param, target, range)?;
+            match format {
+                ReportFormat::Text => {
+                    out.write_all(text::solved(&name, *model, &solved).as_bytes())?
+                }
+                ReportFormat::Json => write_json(out, &json::solved(&name, *model, &solved))?,
             }
         }
         Some(Command::Fit(FitCommand::Beam {
@@ -667,6 +822,26 @@ fn beams_over_forces(
         // `load` refuses a preset of the other model with `WrongModel`.
         (_, Model::Plate(_)) => unreachable!("load(.., Beam) returned a plate"),
     }
+}
+
+/// A sweep over `param`: its column (named with its unit, `mu`, `L_mm`) first, then the rows.
+fn write_varied<R: serde::Serialize + Default>(
+    out: &mut impl Write,
+    format: TableFormat,
+    param: Param,
+    rows: impl Iterator<Item = (f64, R)>,
+) -> io::Result<()> {
+    write_table_after(
+        out,
+        format,
+        &json::suffixed(param.name(), param.unit()),
+        rows,
+    )
+}
+
+/// The parameter of `--vary` (or `default` without it) of `kind`.
+fn varied(kind: ModelKind, vary: Option<&str>, default: &str) -> Result<Param, CliError> {
+    Ok(kind.param(vary.unwrap_or(default))?)
 }
 
 /// A force range error, named by the flags `--from`, `--to`, `--points`.
@@ -786,6 +961,8 @@ fn model_command(model: ModelKind, command: &'static str) -> &'static str {
         ("deck ccx", ModelKind::Plate) => "deck ccx plate",
         ("compare", ModelKind::Beam) => "compare beam",
         ("compare", ModelKind::Plate) => "compare plate",
+        ("solve", ModelKind::Beam) => "solve beam",
+        ("solve", ModelKind::Plate) => "solve plate",
         _ => command,
     }
 }

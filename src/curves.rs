@@ -64,7 +64,9 @@ impl RangeError {
                 Compact(*to)
             ),
             RangeError::Points(n) => {
-                format!("invalid {points} = {n}: must be an integer in [2, {MAX_POINTS}]")
+                format!(
+                    "invalid {points} = {n}: must be an integer in [2, {MAX_POINTS}], or 1 when {start} = {end}"
+                )
             }
             RangeError::Bound {
                 end: which,
@@ -126,7 +128,7 @@ pub struct Samples {
 
 impl Samples {
     /// Checks the range: finite ends (> 0 for logarithmic spacing), start <= end, 2 to
-    /// [`MAX_POINTS`] points.
+    /// [`MAX_POINTS`] points, or a single point when start = end.
     ///
     /// # Errors
     /// The first problem found, as a [`RangeError`].
@@ -147,7 +149,9 @@ impl Samples {
         if from > to {
             return Err(RangeError::Reversed { from, to });
         }
-        check_points(points)?;
+        if !(points == 1 && from == to) {
+            check_points(points)?;
+        }
         Ok(Samples {
             from,
             to,
@@ -206,7 +210,7 @@ impl Samples {
         self.points
     }
 
-    /// Always false: a valid sampling has at least two points.
+    /// Always false: a valid sampling has at least one point.
     pub fn is_empty(&self) -> bool {
         false
     }
@@ -372,6 +376,75 @@ pub fn plate_kt_sweep(
     Ok(stiffnesses
         .values()
         .map(move |kt| plate_point(&plate.with_clamped(PlateParam::Stiffness, kt))))
+}
+
+/// The twin beams over a range of any one parameter (the others, F included, as in `model`): one
+/// row per sample, the sample value first. For F this is [`beam_force_sweep`] with the force
+/// repeated in front.
+///
+/// # Errors
+/// [`RangeError::Bound`] when an end of `values` is not an accepted value of `param`.
+pub fn beam_param_sweep(
+    beams: TwinBeams,
+    force: TipForce,
+    param: BeamParam,
+    values: Samples,
+) -> Result<impl Iterator<Item = (f64, BeamPoint)>, RangeError> {
+    let param = Param::Beam(param);
+    values.check_within(param)?;
+    let model = Model::Beam { beams, force };
+    Ok(values.values().map(move |v| {
+        let point = match model.with_clamped(param, v) {
+            Model::Beam { beams, force } => beam_point(&beams, force),
+            // `with_clamped` keeps the model's kind.
+            Model::Plate(_) => unreachable!("a beam model changed kind"),
+        };
+        (v, point)
+    }))
+}
+
+/// The plate over a range of any one parameter (the others as in `plate`): one row per sample, the
+/// sample value first.
+///
+/// # Errors
+/// [`RangeError::Bound`] when an end of `values` is not an accepted value of `param`.
+pub fn plate_param_sweep(
+    plate: SqueezedPlate,
+    param: PlateParam,
+    values: Samples,
+) -> Result<impl Iterator<Item = (f64, PlatePoint)>, RangeError> {
+    values.check_within(Param::Plate(param))?;
+    Ok(values
+        .values()
+        .map(move |v| (v, plate_point(&plate.with_clamped(param, v)))))
+}
+
+/// The response of `model` (w(L) of the beams, u(L) of the plate, mm) against any one of its
+/// parameters: (Coulomb, regularized). The chart "w(L) vs this parameter".
+///
+/// # Errors
+/// [`RangeError::Bound`] when an end of `values` is not an accepted value of `param` (or `param`
+/// belongs to the other model).
+pub fn response_vs_param(
+    model: &Model,
+    param: Param,
+    values: Samples,
+) -> Result<(Series, Series), RangeError> {
+    match (*model, param) {
+        (Model::Beam { beams, force }, Param::Beam(p)) => {
+            Ok(beam_param_sweep(beams, force, p, values)?
+                .map(|(v, r)| ((v, r.w_coulomb), (v, r.w_regularized)))
+                .unzip())
+        }
+        (Model::Plate(plate), Param::Plate(p)) => Ok(plate_param_sweep(plate, p, values)?
+            .map(|(v, r)| ((v, r.u_coulomb), (v, r.u_regularized)))
+            .unzip()),
+        _ => Err(RangeError::Bound {
+            end: RangeEnd::Start,
+            value: f64::NAN,
+            allowed: format!("{param} is a parameter of the other model"),
+        }),
+    }
 }
 
 /// A sampled curve: (x, y) points in order of x.
@@ -787,7 +860,7 @@ mod tests {
         );
         assert_eq!(
             RangeError::Points(1).message(FLAGS),
-            "invalid --points = 1: must be an integer in [2, 100000000]"
+            "invalid --points = 1: must be an integer in [2, 100000000], or 1 when --from = --to"
         );
         assert!(force_samples(0.0, 5.0, MAX_POINTS + 1).is_err());
         assert!(

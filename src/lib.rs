@@ -14,8 +14,9 @@
 //! ```
 //!
 //! - [`model`]: pure physics. Typed parameters ([`model::params`]: key, unit, domain, step), inputs
-//!   and validated models ([`model::inputs`]), the closed forms, cyclic loading, K_T helpers and FE
-//!   code defaults. No I/O.
+//!   and validated models ([`model::inputs`]), the closed forms, cyclic loading, K_T helpers, FE
+//!   code defaults, and solving any parameter for a target value of a quantity
+//!   ([`model::target`]). No I/O.
 //! - [`numeric`]: finite-element solvers that never call the closed forms.
 //! - [`verify`]: the only place that calls both, returning the worst cases as data.
 //! - [`curves`]: sweeps, the hysteresis loop and the K_T comparison, computed once for every output.

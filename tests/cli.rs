@@ -115,8 +115,8 @@ fn beam_sweep_csv_has_the_contract_header_and_round_trip_numbers() {
             "0.0",
             "0.0",
             "200.0",
-            "stick",
-            "microslip",
+            "unloaded",
+            "unloaded",
             "euler-bernoulli"
         ]
     );
@@ -1423,4 +1423,66 @@ fn compare_errors_name_the_file_and_line() {
         stderr.contains("line 2: 'abc' in column u_mm is not a finite number"),
         "{stderr}"
     );
+}
+
+#[test]
+fn the_three_recipes_take_one_command_each() {
+    // 1. Smallest K_T with w(L) within 1 % of Coulomb at F = 100 N.
+    let text = stdout_of(&["solve", "beam", "--vary", "KT", "--target", "ratio=1.01"]);
+    assert!(text.contains("\nKT = 423.1"), "{text}");
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "solve",
+        "beam",
+        "--vary",
+        "KT",
+        "--target",
+        "ratio=1.01",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(json["roots"].as_array().unwrap().len(), 1);
+    // 2. w(L) at F = 120 N for mu from 0.1 to 0.5: the varied column first, then the F sweep's.
+    let csv = stdout_of(&[
+        "sweep", "beam", "--vary", "mu", "--from", "0.1", "--to", "0.5", "--points", "9", "--set",
+        "F=120",
+    ]);
+    assert!(
+        csv.starts_with("mu,F_N,w_coulomb_mm,w_regularized_mm,X_mm,"),
+        "{csv}"
+    );
+    assert_eq!(csv.lines().count(), 10);
+    // A single point is allowed when both ends are equal.
+    let one = stdout_of(&[
+        "sweep", "beam", "--from", "120", "--to", "120", "--points", "1",
+    ]);
+    assert_eq!(one.lines().count(), 2);
+    // 3. K_T at macroslip onset of the paper's plate: in the report, no solving.
+    let plate = stdout_of(&["plate"]);
+    assert!(
+        plate.contains("K_T at macroslip onset = 188462 MPa/mm"),
+        "{plate}"
+    );
+    // Problems are one line each: no root (exit 1), an unknown quantity or parameter (exit 2).
+    assert!(
+        failure(
+            &["solve", "beam", "--vary", "mu", "--target", "ratio=0.5"],
+            1
+        )
+        .contains("no mu in [1e-6, 10] gives ratio = 0.5")
+    );
+    assert!(
+        failure(&["solve", "plate", "--vary", "KT", "--target", "w(L)=1"], 2)
+            .contains("unknown quantity 'w(L)' for the plate model (allowed: u(L) X_r ratio)")
+    );
+    assert!(
+        failure(
+            &[
+                "sweep", "beam", "--vary", "tp", "--from", "0", "--to", "1", "--points", "2"
+            ],
+            2
+        )
+        .contains("invalid --vary: unknown key 'tp' for the beam model")
+    );
+    assert!(failure(&["sweep", "plate", "--points", "3"], 2).contains("--kt-from"));
 }

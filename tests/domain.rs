@@ -152,13 +152,17 @@ fn check_beams(params: TwinBeamsParams, f: f64) -> Result<(), String> {
         return fail("thresholds");
     }
     let (c, r) = (beams.coulomb(force), beams.regularized(force));
-    // Regimes follow the thresholds.
-    let coulomb_regime = if f > f_thre {
+    // Regimes follow the thresholds; F = 0 is unloaded under both laws.
+    let coulomb_regime = if f == 0.0 {
+        Regime::Unloaded
+    } else if f > f_thre {
         Regime::Macroslip
     } else {
         Regime::Stick
     };
-    let regularized_regime = if f > f_1 {
+    let regularized_regime = if f == 0.0 {
+        Regime::Unloaded
+    } else if f > f_1 {
         Regime::MicroslipMacroslip
     } else {
         Regime::Microslip

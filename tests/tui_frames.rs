@@ -89,8 +89,12 @@ fn input_error_keeps_the_old_value_and_says_why() {
     act(
         &mut app,
         &[
-            Action::Previous,
-            Action::Previous,
+            Action::Next,
+            Action::Next,
+            Action::Next,
+            Action::Next,
+            Action::Next,
+            Action::Next,
             Action::StartEdit,
             Action::Input('-'),
             Action::Input('3'),
@@ -415,4 +419,44 @@ fn calculix_points_on_the_deflection_and_displacement_charts() {
     load(&mut app, "tests/data/calculix/plate-kt1e4.dat");
     load(&mut app, "tests/data/calculix/paper-plate.dat");
     insta::assert_snapshot!("calculix_plate_points", screen(&app, 120, 40));
+}
+
+/// The workbench of issue 16 at the smallest and a large size, in both charsets: w(L) against the
+/// selected parameter (`v`), the explanation of a regime line (`i`), the target prompt (`t`), and
+/// a tall screen whose spare height explains every line.
+#[test]
+fn workbench_panes_at_80x24_and_200x60_in_both_charsets() {
+    for (charset, tag) in [(Charset::Unicode, "unicode"), (Charset::Ascii, "ascii")] {
+        let mut app = app_with("paper-beams", charset, true);
+        let shot = |name: &str, app: &App, width: u16, height: u16| {
+            let text = screen(app, width, height);
+            if charset == Charset::Ascii {
+                assert!(text.is_ascii(), "{name}");
+            }
+            insta::assert_snapshot!(format!("{name}_{width}x{height}_{tag}"), text);
+        };
+        shot("main", &app, 200, 60);
+        // mu is the seventh row (L b h E nu P mu).
+        act(&mut app, &[Action::Next; 6]);
+        app.update(Action::Vary);
+        shot("vary_mu", &app, 80, 24);
+        shot("vary_mu", &app, 200, 60);
+        app.update(Action::Vary);
+        act(
+            &mut app,
+            &[
+                Action::Explain,
+                Action::Next,
+                Action::Next,
+                Action::Next,
+                Action::Next,
+            ],
+        );
+        shot("explain_f1", &app, 80, 24);
+        app.update(Action::Cancel);
+        act(&mut app, &[Action::Next, Action::SolveTarget]);
+        shot("target_prompt", &app, 80, 24);
+        app.update(Action::Commit);
+        shot("target_solved", &app, 80, 24);
+    }
 }

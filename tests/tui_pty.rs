@@ -135,7 +135,8 @@ fn keys_change_the_screen_and_quit_restores_the_terminal() {
     session.wait_for("Twin beams");
     session.wait_for("100 N");
     // Select F (last row) and raise it by two coarse steps of 10 % of F_thre = 8 N.
-    session.send("k");
+    // Down to F, the last row (the selection does not wrap).
+    session.send("jjjjjjjj");
     session.send("L");
     session.send("L");
     session.wait_for("At F = 116 N");
@@ -259,7 +260,7 @@ fn a_paste_is_text_in_the_value_field_and_never_keys() {
     let (mut session, mut child) = start();
     session.wait_for("Twin beams");
     // Select F, start typing, paste "150\nq\n": 150 goes into the field, "q" is not a key.
-    session.send("k\r");
+    session.send("jjjjjjjj\r");
     session.wait_for("type a value");
     session.send("\u{1b}[200~150\nq\n\u{1b}[201~");
     session.wait_for("150_");
@@ -277,7 +278,7 @@ fn a_value_beyond_the_domain_is_refused_and_the_screen_stays_live() {
     // Item 1 of the hardening issue: F = 1e307 used to freeze the chart drawing for good.
     let (mut session, mut child) = start();
     session.wait_for("Twin beams");
-    session.send("k\r1e307\r");
+    session.send("jjjjjjjj\r1e307\r");
     session.wait_for("invalid F = 1e307");
     session.send("c");
     session.wait_for("X vs F");

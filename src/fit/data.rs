@@ -242,7 +242,15 @@ fn parse_curve_with_progress(
             )
         })
     };
-    let (force_column, deflection_column) = (find(curve.x)?, find(curve.y)?);
+    // A sweep table of microslip itself (`sweep beam`, `sweep plate`) names the regularized
+    // response `w_regularized_mm` / `u_regularized_mm`: read as the measured column when there is
+    // no `w_mm` / `u_mm`, so a sweep loads without renaming columns.
+    let sweep_column = curve.y.replace("_mm", "_regularized_mm");
+    let deflection_column = match columns.iter().position(|c| *c == sweep_column) {
+        Some(i) if !columns.contains(&curve.y) => i,
+        _ => find(curve.y)?,
+    };
+    let force_column = find(curve.x)?;
     let mut data: Vec<(f64, f64)> = Vec::new();
     let mut last_line = header_line;
     for (row, record) in records.enumerate() {
@@ -316,6 +324,20 @@ fn parse_curve_with_progress(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_sweep_table_of_microslip_loads_as_measurements() {
+        let text = "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized\n\
+                    0.0,0.0,0.0,200.0,unloaded,unloaded\n\
+                    50.0,0.01,0.012,200.0,stick,microslip\n\
+                    100.0,0.038,0.0383,17.3,macroslip,microslip+macroslip\n";
+        let data = parse(text).unwrap();
+        assert_eq!(data.len(), 3);
+        assert_eq!((data[1].force, data[1].deflection), (50.0, 0.012));
+        // A measured column wins over the sweep's.
+        let both = "F_N,w_regularized_mm,w_mm\n1,9,0.1\n2,9,0.2\n3,9,0.3\n";
+        assert_eq!(parse(both).unwrap()[0].deflection, 0.1);
+    }
 
     #[test]
     fn reads_the_two_columns_in_any_position_and_ignores_the_rest() {

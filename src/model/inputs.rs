@@ -75,6 +75,30 @@ impl Model {
         }
     }
 
+    /// The inputs this model was validated from.
+    pub fn inputs(&self) -> Inputs {
+        match *self {
+            Model::Beam { beams, force } => Inputs::Beam {
+                structure: beams.params(),
+                force: force.newtons(),
+            },
+            Model::Plate(plate) => Inputs::Plate(plate.params()),
+        }
+    }
+
+    /// The same model with `param` set to the accepted value nearest to `value` (see
+    /// [`super::params::Domain::clamp`]): infallible, for sweeps and root finding whose range was
+    /// checked. A parameter of the other model leaves the model as it is.
+    pub fn with_clamped(&self, param: Param, value: f64) -> Model {
+        let mut inputs = self.inputs();
+        if inputs.set(param, param.spec().domain.clamp(value)).is_err() {
+            return *self;
+        }
+        // Every other value came from this (valid) model and the new one is in its domain, so
+        // validation succeeds; should it not, the model stays as it is rather than panicking.
+        inputs.validate().unwrap_or(*self)
+    }
+
     /// The model's interface data.
     pub fn interface(&self) -> InterfaceData {
         match self {

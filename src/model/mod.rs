@@ -10,5 +10,6 @@ pub mod plate;
 pub mod regime;
 pub(crate) mod solve;
 pub mod stiffness;
+pub mod target;
 pub mod twin_beams;
 pub mod validity;

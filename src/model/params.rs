@@ -677,6 +677,42 @@ impl Param {
         }
     }
 
+    /// The values engineers usually give this parameter, `[low, high]` in its unit: a value inside
+    /// the accepted domain but outside this range is accepted with a warning (a slip of the
+    /// keyboard, `mu = 4.5` for 0.45, or a unit mix-up, L in um). Wider than any benchmark in the
+    /// literature, narrower than the domain.
+    pub fn usual_range(self) -> (f64, f64) {
+        let length = (0.1, 1e4);
+        match self {
+            Param::Beam(BeamParam::Length | BeamParam::Width | BeamParam::HalfHeight)
+            | Param::Plate(PlateParam::HalfLength | PlateParam::Thickness) => length,
+            Param::Beam(BeamParam::Modulus) | Param::Plate(PlateParam::Modulus) => (1.0, 1.2e6),
+            Param::Beam(BeamParam::Pressure) | Param::Plate(PlateParam::Pressure) => (1e-3, 2e3),
+            Param::Beam(BeamParam::Friction) | Param::Plate(PlateParam::Friction) => (0.01, 2.0),
+            Param::Beam(BeamParam::Stiffness) | Param::Plate(PlateParam::Stiffness) => (0.1, 1e9),
+            Param::Beam(BeamParam::Force) => (0.0, 1e7),
+            Param::Beam(BeamParam::Poisson) | Param::Plate(PlateParam::Poisson) => (0.0, 0.5),
+        }
+    }
+
+    /// A warning when an accepted `value` is outside [`Param::usual_range`], naming the range.
+    pub fn unusual(self, value: f64) -> Option<String> {
+        let (low, high) = self.usual_range();
+        let unit = match self.unit() {
+            Unit::Dimensionless => String::new(),
+            unit => format!(" {unit}"),
+        };
+        (!(low..=high).contains(&value)).then(|| {
+            format!(
+                "{} = {}{unit} is far outside the usual range [{}, {}]{unit}: check the value",
+                self.name(),
+                Compact(value),
+                Compact(low),
+                Compact(high)
+            )
+        })
+    }
+
     /// True for the tangential stiffness K_T of either model (shown in MPa/um as well).
     pub fn is_stiffness(self) -> bool {
         matches!(

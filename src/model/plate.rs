@@ -170,6 +170,32 @@ impl SqueezedPlate {
         self.params.friction * self.params.pressure / self.params.tangential_stiffness
     }
 
+    /// The K_T (MPa/mm) at which macroslip first appears at the free end, all else as in this plate
+    /// (docs/theory.md, (P11)): the regularized plate is all microslip while alpha l tanh(alpha L)
+    /// <= 1, and alpha grows with K_T, so the onset is the one root of z tanh z = L / l (z = alpha L,
+    /// l the Coulomb slip length (P3)), K_T = z^2 E t_p / ((1 - nu^2) L^2). Below it the plate is
+    /// all microslip, above it microslip then macroslip. `None` when nu = 0 (the plate does not
+    /// expand, so nothing ever slides). The value may lie outside the accepted K_T domain; callers
+    /// say so.
+    pub fn macroslip_onset_stiffness(&self) -> Option<f64> {
+        let p = &self.params;
+        if self.slide_length <= 0.0 {
+            return None;
+        }
+        let c = p.half_length / self.slide_length;
+        if !c.is_finite() {
+            return None;
+        }
+        // z tanh z <= min(z, z^2) bounds the root below; tanh z >= tanh(1) min(z, 1) bounds it above.
+        let t1 = 1f64.tanh();
+        let lo = c.max(c.sqrt());
+        let hi = (c / t1).max((c / t1).sqrt());
+        let z = find_root_in_bracket(|z: f64| z * z.tanh() / c - 1.0, lo, hi);
+        let kt = (z / p.half_length).powi(2) * p.youngs_modulus * p.thickness
+            / (1.0 - p.poisson * p.poisson);
+        kt.is_finite().then_some(kt)
+    }
+
     /// Displacement in a zone sliding at mu P, (P2), written with distances from the free end so
     /// that nothing is a difference of lengths near L: the zone is the last `zone` mm of the
     /// half-plate, u = `start_u` where it starts, and the point is `from_end` = L - x from the end

@@ -18,6 +18,8 @@ pub enum Regime {
     StickMacroslip,
     /// Regularized law: an elastic microslip zone near x = 0, a sliding zone beyond.
     MicroslipMacroslip,
+    /// No load (the twin beams at F = 0): nothing is stressed and nothing slips, whatever the law.
+    Unloaded,
 }
 
 impl Regime {
@@ -29,6 +31,7 @@ impl Regime {
             Regime::Macroslip => "macroslip",
             Regime::StickMacroslip => "stick+macroslip",
             Regime::MicroslipMacroslip => "microslip+macroslip",
+            Regime::Unloaded => "unloaded",
         }
     }
 

@@ -410,9 +410,11 @@ impl CoulombBeams {
         }
     }
 
-    /// Stick below or at F_thre, macroslip (the whole interface at once) above.
+    /// Stick below or at F_thre, macroslip (the whole interface at once) above; unloaded at F = 0.
     pub fn regime(&self) -> Regime {
-        if self.slides {
+        if self.force == 0.0 {
+            Regime::Unloaded
+        } else if self.slides {
             Regime::Macroslip
         } else {
             Regime::Stick
@@ -490,9 +492,12 @@ pub struct RegularizedBeams {
 }
 
 impl RegularizedBeams {
-    /// Microslip alone up to F_1; microslip near the clamp plus macroslip near the tip beyond.
+    /// Microslip alone up to F_1; microslip near the clamp plus macroslip near the tip beyond;
+    /// unloaded at F = 0 (no shear, no slip: not "microslip").
     pub fn regime(&self) -> Regime {
-        if self.has_macroslip {
+        if self.force == 0.0 {
+            Regime::Unloaded
+        } else if self.has_macroslip {
             Regime::MicroslipMacroslip
         } else {
             Regime::Microslip
@@ -676,8 +681,11 @@ mod tests {
 
     #[test]
     fn zero_force_gives_a_zero_solution() {
+        // Zero load is its own state, not "microslip" (issue 16): nothing is stressed.
         let state = paper().regularized(force(0.0));
-        assert_eq!(state.regime(), Regime::Microslip);
+        assert_eq!(state.regime(), Regime::Unloaded);
+        assert_eq!(paper().coulomb(force(0.0)).regime(), Regime::Unloaded);
+        assert_eq!(paper().regularized(force(1e-9)).regime(), Regime::Microslip);
         assert_eq!(state.tip_deflection(), 0.0);
         assert_eq!(state.shear_stress(100.0), 0.0);
     }

@@ -70,6 +70,41 @@ pub fn write_row<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<()> 
     out.write_all(b"\n")
 }
 
+/// Writes the header line of row type `R` after a leading column named `first` (a sweep over a
+/// parameter: the parameter's column, then the row's).
+///
+/// # Errors
+/// As [`write_header`].
+pub fn write_header_after<R: Serialize>(
+    out: &mut impl Write,
+    first: &str,
+    row: &R,
+) -> io::Result<()> {
+    write_text(out, first)?;
+    row.serialize(Line {
+        out,
+        header: true,
+        first: false,
+    })
+    .map_err(|e| e.0)?;
+    out.write_all(b"\n")
+}
+
+/// Writes one row after a leading number (the header of [`write_header_after`]).
+///
+/// # Errors
+/// As [`write_row`].
+pub fn write_row_after<R: Serialize>(out: &mut impl Write, first: f64, row: &R) -> io::Result<()> {
+    Cell { out: &mut *out }.float(first).map_err(|e| e.0)?;
+    row.serialize(Line {
+        out,
+        header: false,
+        first: false,
+    })
+    .map_err(|e| e.0)?;
+    out.write_all(b"\n")
+}
+
 /// The serializer methods both [`Line`] and [`Cell`] refuse: bytes, enums with data and every
 /// compound value but a row's own struct (serde requires each to be spelled out).
 macro_rules! refuse_compound_values {

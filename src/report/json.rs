@@ -95,6 +95,10 @@ pub fn plate(
     continuum: Option<&Result<crate::numeric::ContinuumPlate, crate::numeric::NumericError>>,
 ) -> Value {
     let mut value = plate_closed_form(preset, plate);
+    // K_T at the onset of macroslip (P11); absent when nothing ever slides (nu = 0).
+    if let (Some(kt), Value::Object(map)) = (plate.macroslip_onset_stiffness(), &mut value) {
+        map.insert("KT_macroslip_onset_MPa_per_mm".into(), Value::from(kt));
+    }
     if let (Some(solved), Value::Object(map)) = (continuum, &mut value) {
         map.insert(
             "continuum".into(),
@@ -233,6 +237,38 @@ pub fn strip_validity(plate: &SqueezedPlate) -> Value {
         );
     }
     value
+}
+
+/// The answer of `microslip solve`.
+pub fn solved(
+    preset: &str,
+    kind: crate::ModelKind,
+    solved: &crate::model::target::Solved,
+) -> Value {
+    let quantity = solved.target.quantity;
+    let roots: Vec<Value> = solved
+        .roots
+        .iter()
+        .map(|r| {
+            serde_json::json!({
+                "value": r.value,
+                "achieved": r.achieved,
+                "bracket": [r.bracket.0, r.bracket.1],
+                "certified": r.certified,
+                "plateau": r.plateau,
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "model": kind.name(),
+        "preset": preset,
+        "param": solved.param.name(),
+        "unit": solved.param.unit().symbol(),
+        "quantity": quantity.name(kind),
+        "target": solved.target.value,
+        "range": [solved.range.0, solved.range.1],
+        "roots": roots,
+    })
 }
 
 #[cfg(test)]

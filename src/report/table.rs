@@ -61,6 +61,42 @@ pub fn write_table<R: Serialize + Default>(
     }
 }
 
+/// Writes `rows`, each a leading value and a row, as [`write_table`] does, with the leading value
+/// in a first column named `column` (CSV) or a first key `column` (JSON): a sweep over any
+/// parameter, whose rows are those of the model's usual sweep.
+///
+/// # Errors
+/// The writer's error.
+pub fn write_table_after<R: Serialize + Default>(
+    out: &mut impl Write,
+    format: TableFormat,
+    column: &str,
+    rows: impl Iterator<Item = (f64, R)>,
+) -> io::Result<()> {
+    match format {
+        TableFormat::Csv => {
+            csv::write_header_after(out, column, &R::default())?;
+            for (value, row) in rows {
+                csv::write_row_after(out, value, &row)?;
+            }
+            Ok(())
+        }
+        TableFormat::Json => {
+            let key = serde_json::to_string(column).map_err(io::Error::from)?;
+            out.write_all(b"[")?;
+            for (i, (value, row)) in rows.enumerate() {
+                out.write_all(if i == 0 { b"\n  " } else { b",\n  " })?;
+                let object = serde_json::to_string(&row).map_err(io::Error::from)?;
+                let rest = object.strip_prefix('{').unwrap_or(&object);
+                let value = serde_json::to_string(&value).map_err(io::Error::from)?;
+                let comma = if rest.starts_with('}') { "" } else { "," };
+                write!(out, "{{{key}:{value}{comma}{rest}")?;
+            }
+            out.write_all(b"\n]\n")
+        }
+    }
+}
+
 /// Writes one JSON document, pretty-printed, with a final newline.
 ///
 /// Strings stay exact, and safe on a terminal: JSON escapes C0 controls anyway, and here DEL, the C1

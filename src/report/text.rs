@@ -173,6 +173,7 @@ pub fn plate(
         "  saturation slip mu P / K_T = {} um",
         number(mm_to_um(plate.saturation_slip()))
     );
+    let _ = writeln!(out, "  {}", plate_onset(plate));
     let _ = writeln!(out, "{:<24}{:<22}regularized", "Solution", "Coulomb");
     let comparison = Comparison {
         response: "u(L) (mm)",
@@ -579,6 +580,93 @@ pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> String
     let _ = writeln!(
         out,
         "Elastic-slip defaults scale like mu P / element length: halve the elements, double K_T."
+    );
+    out
+}
+
+/// The plate's K_T at macroslip onset in words (docs/theory.md, (P11)), as the text report and the
+/// TUI say it.
+pub fn plate_onset(plate: &SqueezedPlate) -> String {
+    match plate.macroslip_onset_stiffness() {
+        Some(kt) => format!(
+            "K_T at macroslip onset = {} MPa/mm: below it all microslip, above it macroslip at the free end",
+            number(kt)
+        ),
+        None => "no macroslip at any K_T (nu = 0: the plate does not expand)".to_string(),
+    }
+}
+
+/// The answer of `microslip solve`: every root found, or why there is none.
+pub fn solved(
+    preset: &str,
+    kind: crate::ModelKind,
+    solved: &crate::model::target::Solved,
+) -> String {
+    let preset = sanitize(preset);
+    let mut out = String::new();
+    let param = solved.param;
+    let quantity = solved.target.quantity;
+    let (name, unit) = (quantity.name(kind), quantity.unit());
+    let unit_of = |u: &str| {
+        if u.is_empty() {
+            String::new()
+        } else {
+            format!(" {u}")
+        }
+    };
+    let punit = match param.unit() {
+        crate::Unit::Dimensionless => String::new(),
+        u => format!(" {u}"),
+    };
+    let _ = writeln!(
+        out,
+        "{kind} ({preset}): {param} such that {name} = {}{}",
+        number(solved.target.value),
+        unit_of(unit)
+    );
+    let _ = writeln!(out, "  {name}: {}", quantity.meaning(kind));
+    for root in &solved.roots {
+        if root.plateau && root.bracket.0 < root.bracket.1 {
+            let _ = writeln!(
+                out,
+                "{name} = {}{} for every {param} in [{}, {}]{punit} (a plateau; its ends found by bisection)",
+                number(root.achieved),
+                unit_of(unit),
+                number(root.bracket.0),
+                number(root.bracket.1)
+            );
+        } else if root.certified {
+            let _ = writeln!(
+                out,
+                "{param} = {}{punit}   ({name} = {}{} there; root bracketed in [{}, {}]{punit})",
+                number(root.value),
+                number(root.achieved),
+                unit_of(unit),
+                number(root.bracket.0),
+                number(root.bracket.1)
+            );
+        } else {
+            let _ = writeln!(
+                out,
+                "{param} = {}{punit}: {name} jumps across the target there ({} on one side): not a root",
+                number(root.value),
+                number(root.achieved)
+            );
+        }
+    }
+    if solved.roots.len() > 1 {
+        let _ = writeln!(
+            out,
+            "more than one {param} gives {name} = {}: narrow the search with --from/--to",
+            number(solved.target.value)
+        );
+    }
+    let _ = writeln!(
+        out,
+        "searched {param} in [{}, {}]{punit} ({}-point scan; each bracket solved to 1e-12 relative)",
+        number(solved.range.0),
+        number(solved.range.1),
+        crate::model::target::SCAN_POINTS
     );
     out
 }

@@ -58,4 +58,32 @@ pub enum Action {
     LoadData,
     /// Fit mu and K_T to the measurements and adopt the identifiable ones.
     Fit,
+    /// Undo the last parameter change.
+    Undo,
+    /// Redo the last undone change.
+    Redo,
+    /// Chart the response against the selected parameter (again: back to the views).
+    Vary,
+    /// Solve for a target on the selected parameter.
+    SolveTarget,
+    /// Explain the numbers of the regime pane.
+    Explain,
+    /// Fit the chart's axes to the data (the force range of the beams' charts follows F_thre again).
+    FitAxes,
+    /// Text entry: cursor one character left.
+    CursorLeft,
+    /// Text entry: cursor one character right.
+    CursorRight,
+    /// Text entry: cursor to the start.
+    CursorHome,
+    /// Text entry: cursor to the end.
+    CursorEnd,
+    /// Text entry: delete the character under the cursor.
+    Delete,
+    /// Text entry: delete from the start to the cursor (Ctrl-U).
+    ClearToStart,
+    /// Text entry: delete the word before the cursor (Ctrl-W).
+    DeleteWord,
+    /// Text entry: complete a file name (Tab).
+    Complete,
 }

@@ -11,7 +11,7 @@ use super::theme::Theme;
 use crate::PlateParams;
 use crate::fit::Measurement;
 use crate::model::inputs::{Inputs, Model};
-use crate::model::params::{BeamParam, ModelKind, Param, parse_number};
+use crate::model::params::{BeamParam, Compact, ModelKind, Param, parse_number};
 use crate::model::twin_beams::BeamTheory;
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
 use crate::report::view::{BeamChart, PlateChart, View};
@@ -65,6 +65,18 @@ pub enum Mode {
         /// What would be lost, e.g. `beam (paper-beams)`.
         unsaved: String,
     },
+    /// Asking before resetting edited parameters to the preset.
+    ConfirmReset,
+    /// Typing a target (`ratio=1.01`) to solve the selected parameter for.
+    Target {
+        /// Text typed so far.
+        input: TextInput,
+    },
+    /// What one line of the regime pane means (`j`/`k` move through the lines).
+    Explain {
+        /// The line explained (0-based).
+        line: usize,
+    },
 }
 
 impl Mode {
@@ -72,12 +84,16 @@ impl Mode {
     pub fn context(&self) -> Context {
         match self {
             Mode::Normal => Context::Main,
-            Mode::Editing { .. } | Mode::SaveName { .. } | Mode::DataPath { .. } => {
-                Context::TextEntry
-            }
+            Mode::Editing { .. }
+            | Mode::SaveName { .. }
+            | Mode::DataPath { .. }
+            | Mode::Target { .. } => Context::TextEntry,
             Mode::Help => Context::Help,
+            Mode::Explain { .. } => Context::Explain,
             Mode::Presets { .. } => Context::Presets,
-            Mode::ConfirmOverwrite { .. } | Mode::ConfirmQuit { .. } => Context::Confirm,
+            Mode::ConfirmOverwrite { .. } | Mode::ConfirmQuit { .. } | Mode::ConfirmReset => {
+                Context::Confirm
+            }
         }
     }
 }
@@ -88,7 +104,20 @@ struct ModelState {
     inputs: Inputs,
     preset: Preset,
     selected: usize,
+    /// The parameter charted on the x axis (`v`), instead of the model's views.
+    varied: Option<Param>,
 }
+
+/// The parameters of both models and which is active: one step of the undo history.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Snapshot {
+    beam: Inputs,
+    plate: Inputs,
+    kind: ModelKind,
+}
+
+/// Changes kept for `u` (the oldest are dropped beyond this).
+pub const HISTORY: usize = 100;
 
 /// Start-up choices.
 #[derive(Debug, Clone)]
@@ -132,6 +161,14 @@ pub struct App {
     /// parameters of the deck they came from.
     external: Option<(plots::ExternalPoints, Option<Inputs>)>,
     check_in: fn(),
+    undo: Vec<Snapshot>,
+    redo: Vec<Snapshot>,
+    /// The last target typed after `t`, offered again.
+    last_target: String,
+    /// The force range (N) of the beams' charts over F, kept while parameters change so that the
+    /// axes do not jump; `a` fits it to the current F_thre again.
+    force_span: Option<f64>,
+    help_page: usize,
 }
 
 impl App {
@@ -141,6 +178,7 @@ impl App {
             inputs: preset.inputs,
             preset,
             selected: 0,
+            varied: None,
         };
         let kind = options.preset.inputs.kind();
         let other = state(preset::paper(kind.other()));
@@ -164,9 +202,56 @@ impl App {
             measurements: options.data,
             external: None,
             check_in: || {},
+            undo: Vec::new(),
+            redo: Vec::new(),
+            last_target: "ratio=1.01".to_string(),
+            force_span: None,
+            help_page: 0,
         };
+        app.fit_axes();
         app.recompute();
         app
+    }
+
+    /// The force range of the beams' charts: 3 F_thre of the current beams.
+    fn fit_axes(&mut self) {
+        if let Ok(Model::Beam { beams, .. }) = self.beam.inputs.validate() {
+            self.force_span = Some(3.0 * beams.threshold_force());
+        }
+    }
+
+    fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            beam: self.beam.inputs,
+            plate: self.plate.inputs,
+            kind: self.kind,
+        }
+    }
+
+    fn restore(&mut self, snapshot: Snapshot) {
+        self.beam.inputs = snapshot.beam;
+        self.plate.inputs = snapshot.plate;
+        self.kind = snapshot.kind;
+    }
+
+    /// The parameter charted on the x axis, if `v` chose one.
+    pub fn varied(&self) -> Option<Param> {
+        self.state().varied
+    }
+
+    /// True when `param` differs from the loaded preset's value.
+    pub fn is_edited(&self, param: Param) -> bool {
+        self.state().inputs.get(param) != self.state().preset.inputs.get(param)
+    }
+
+    /// The page of the help shown (the drawing clamps it to the pages there are).
+    pub fn help_page(&self) -> usize {
+        self.help_page
+    }
+
+    /// How many changes `u` can undo and `Ctrl-R` redo.
+    pub fn history(&self) -> (usize, usize) {
+        (self.undo.len(), self.redo.len())
     }
 
     fn state(&self) -> &ModelState {
@@ -304,6 +389,10 @@ impl App {
         } else {
             self.numeric = None;
         }
+        if let Some(param) = self.state().varied {
+            self.plot = super::vary_plot::build(&model, param);
+            return;
+        }
         let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
         let external = self.external.as_ref().map(|(points, _)| points);
         self.plot = plots::build(
@@ -312,6 +401,7 @@ impl App {
             self.numeric.as_ref(),
             measured,
             external,
+            self.force_span,
         );
     }
 
@@ -326,6 +416,44 @@ impl App {
             Action::Suspend => return,
             _ => {}
         }
+        let before = self.snapshot();
+        self.dispatch(action);
+        let after = self.snapshot();
+        let changed = before.beam != after.beam || before.plate != after.plate;
+        if changed && !matches!(action, Action::Undo | Action::Redo) {
+            self.undo.push(before);
+            if self.undo.len() > HISTORY {
+                self.undo.remove(0);
+            }
+            self.redo.clear();
+        }
+    }
+
+    /// Undoes (`redo` false) or redoes the last change of either model's parameters.
+    fn travel(&mut self, redo: bool) {
+        let now = self.snapshot();
+        let (from, to) = if redo {
+            (&mut self.redo, &mut self.undo)
+        } else {
+            (&mut self.undo, &mut self.redo)
+        };
+        let Some(snapshot) = from.pop() else {
+            let what = if redo { "redo" } else { "undo" };
+            return self.info(format!("nothing to {what}"));
+        };
+        let left = from.len();
+        to.push(now);
+        self.restore(snapshot);
+        self.recompute();
+        let (done, key) = if redo {
+            ("redone", "Ctrl-R")
+        } else {
+            ("undone", "u")
+        };
+        self.info(format!("{done}; {left} more with {key}"));
+    }
+
+    fn dispatch(&mut self, action: Action) {
         match std::mem::replace(&mut self.mode, Mode::Normal) {
             Mode::Normal => self.update_normal(action),
             Mode::Editing { input } => {
@@ -338,11 +466,18 @@ impl App {
                     self.commit_value(&text);
                 }
             }
-            Mode::Help => {
-                if action != Action::ToggleHelp && action != Action::Cancel {
+            Mode::Help => match action {
+                Action::ToggleHelp | Action::Cancel => {}
+                Action::Next => {
+                    self.help_page += 1;
                     self.mode = Mode::Help;
                 }
-            }
+                Action::Previous => {
+                    self.help_page = self.help_page.saturating_sub(1);
+                    self.mode = Mode::Help;
+                }
+                _ => self.mode = Mode::Help,
+            },
             Mode::Presets { entries, selected } => self.update_presets(entries, selected, action),
             Mode::SaveName { input } => {
                 if let Some(name) = self.edit(
@@ -374,6 +509,103 @@ impl App {
                 Action::Cancel => self.info("not quitting; s saves the parameters as a preset"),
                 _ => self.mode = Mode::ConfirmQuit { unsaved },
             },
+            Mode::ConfirmReset => match action {
+                Action::Yes => {
+                    let preset = self.state().preset.inputs;
+                    self.state_mut().inputs = preset;
+                    self.info(format!(
+                        "reset to preset {}; u undoes the reset",
+                        self.preset_name()
+                    ));
+                    self.recompute();
+                }
+                Action::Cancel => self.info("reset cancelled; the parameters are unchanged"),
+                _ => self.mode = Mode::ConfirmReset,
+            },
+            Mode::Target { input } => {
+                if let Some(text) = self.edit(
+                    input,
+                    action,
+                    |input| Mode::Target { input },
+                    "solve cancelled",
+                ) {
+                    self.solve_target(&text);
+                }
+            }
+            Mode::Explain { line } => {
+                let count = self
+                    .model()
+                    .map_or(1, |m| super::summary::summary_lines(&m).len());
+                match action {
+                    Action::Next => {
+                        self.mode = Mode::Explain {
+                            line: (line + 1).min(count - 1),
+                        }
+                    }
+                    Action::Previous => {
+                        self.mode = Mode::Explain {
+                            line: line.saturating_sub(1),
+                        }
+                    }
+                    Action::Cancel | Action::Explain => {}
+                    _ => self.mode = Mode::Explain { line },
+                }
+            }
+        }
+    }
+
+    /// `t`: the value of the selected parameter at which a quantity takes the typed target; one
+    /// certified root is adopted (u undoes it), anything else is said.
+    fn solve_target(&mut self, text: &str) {
+        use crate::model::target::{Target, solve_for_target};
+        let (Some(model), param) = (self.model(), self.selected_param()) else {
+            return;
+        };
+        self.last_target = text.to_string();
+        let target = match Target::parse(text, self.kind) {
+            Ok(target) => target,
+            Err(e) => return self.error(e.to_string()),
+        };
+        let name = target.quantity.name(self.kind);
+        let unit = |u: &str| {
+            if u.is_empty() {
+                String::new()
+            } else {
+                format!(" {u}")
+            }
+        };
+        let punit = unit(param.unit().symbol()).replace(" -", "");
+        match solve_for_target(&model, param, target, None) {
+            Ok(solved) => match solved.roots.as_slice() {
+                [root] if root.plateau => self.info(format!(
+                    "{name} = {} for every {param} from {} to {}{punit}; nothing changed",
+                    number(root.achieved),
+                    number(root.bracket.0),
+                    number(root.bracket.1)
+                )),
+                [root] if root.certified => {
+                    self.set_value(param, root.value);
+                    if self.message.is_none() {
+                        self.info(format!(
+                            "{param} = {}{punit} gives {name} = {}{} (certified root; u undoes)",
+                            number(root.value),
+                            number(root.achieved),
+                            unit(target.quantity.unit())
+                        ));
+                    }
+                }
+                roots => {
+                    let values: Vec<String> = roots.iter().map(|r| number(r.value)).collect();
+                    self.info(format!(
+                        "{} values of {param} give {name} = {}: {}{punit}; nothing changed \
+                         (microslip solve --from/--to narrows the search)",
+                        roots.len(),
+                        number(target.value),
+                        values.join(", ")
+                    ));
+                }
+            },
+            Err(e) => self.error(e.to_string()),
         }
     }
 
@@ -426,6 +658,25 @@ impl App {
             }
             Action::Input(_) => {}
             Action::Backspace => input.pop(),
+            Action::Delete => input.delete(),
+            Action::CursorLeft => input.move_by(-1),
+            Action::CursorRight => input.move_by(1),
+            Action::CursorHome => input.jump(false),
+            Action::CursorEnd => input.jump(true),
+            Action::ClearToStart => input.clear_to_start(),
+            Action::DeleteWord => input.delete_word(),
+            Action::Complete => {
+                let (text, names) = super::text_input::complete_path(input.as_str());
+                input.set(&text);
+                match names.len() {
+                    0 => self.info("no file name starts so"),
+                    1 => self.message = None,
+                    n => self.info(format!(
+                        "{n} matches: {}",
+                        names.iter().take(8).cloned().collect::<Vec<_>>().join("  ")
+                    )),
+                }
+            }
             Action::Commit => return Some(input.trimmed().to_string()),
             Action::Cancel => {
                 self.info(cancelled);
@@ -440,19 +691,44 @@ impl App {
     fn update_normal(&mut self, action: Action) {
         let rows = self.kind.params().len();
         match action {
-            Action::Next => self.state_mut().selected = (self.state().selected + 1) % rows,
-            Action::Previous => {
-                self.state_mut().selected = (self.state().selected + rows - 1) % rows
-            }
+            // The selection stops at the ends: a key held too long does not land on another row.
+            Action::Next => self.state_mut().selected = (self.state().selected + 1).min(rows - 1),
+            Action::Previous => self.state_mut().selected = self.state().selected.saturating_sub(1),
             Action::Increase => self.step(true, false),
             Action::Decrease => self.step(false, false),
             Action::IncreaseCoarse => self.step(true, true),
             Action::DecreaseCoarse => self.step(false, true),
             Action::StartEdit => {
                 self.message = None;
+                let value = self.inputs().get(self.selected_param()).unwrap_or(0.0);
                 self.mode = Mode::Editing {
-                    input: TextInput::default(),
+                    input: TextInput::prefilled(&Compact(value).to_string()),
                 };
+            }
+            Action::Undo => self.travel(false),
+            Action::Redo => self.travel(true),
+            Action::Vary => {
+                let param = self.selected_param();
+                let state = self.state_mut();
+                state.varied = if state.varied == Some(param) {
+                    None
+                } else {
+                    Some(param)
+                };
+                self.message = None;
+                self.recompute();
+            }
+            Action::SolveTarget => {
+                self.message = None;
+                self.mode = Mode::Target {
+                    input: TextInput::prefilled(&self.last_target),
+                };
+            }
+            Action::Explain => self.mode = Mode::Explain { line: 0 },
+            Action::FitAxes => {
+                self.fit_axes();
+                self.info("axes fitted to the data");
+                self.recompute();
             }
             Action::SwitchModel => {
                 self.kind = self.kind.other();
@@ -461,7 +737,10 @@ impl App {
             }
             Action::NextChart | Action::PreviousChart => {
                 let forward = action == Action::NextChart;
-                self.views = self.views.turn(self.kind, forward);
+                // From a chart against a parameter, c goes back to the view it came from.
+                if self.state_mut().varied.take().is_none() {
+                    self.views = self.views.turn(self.kind, forward);
+                }
                 self.recompute();
             }
             Action::ToggleNumeric => {
@@ -490,7 +769,10 @@ impl App {
                     self.error("the beam theory is a twin-beam setting: press m for the beams")
                 }
             },
-            Action::ToggleHelp => self.mode = Mode::Help,
+            Action::ToggleHelp => {
+                self.help_page = 0;
+                self.mode = Mode::Help;
+            }
             Action::RequestQuit => {
                 let unsaved = self.unsaved();
                 if unsaved.is_empty() {
@@ -511,18 +793,31 @@ impl App {
             Action::LoadData => {
                 let path = self.measurements.as_ref().map_or("", |m| m.path.as_str());
                 self.mode = Mode::DataPath {
-                    input: TextInput::new(path),
+                    input: TextInput::prefilled(path),
                 };
             }
             Action::Fit => self.fit(),
             Action::Reset => {
-                let preset = self.state().preset.inputs;
-                self.state_mut().inputs = preset;
-                self.info(format!("reset to preset {}", self.preset_name()));
-                self.recompute();
+                if self.modified() {
+                    self.message = None;
+                    self.mode = Mode::ConfirmReset;
+                } else {
+                    self.info(format!(
+                        "no edits: the values are preset {}",
+                        self.preset_name()
+                    ));
+                }
             }
             Action::Input(_)
             | Action::Backspace
+            | Action::Delete
+            | Action::CursorLeft
+            | Action::CursorRight
+            | Action::CursorHome
+            | Action::CursorEnd
+            | Action::ClearToStart
+            | Action::DeleteWord
+            | Action::Complete
             | Action::Commit
             | Action::Cancel
             | Action::Yes
@@ -741,6 +1036,9 @@ impl App {
             Ok(_) => {
                 self.state_mut().inputs = candidate;
                 self.message = None;
+                if let Some(warning) = param.unusual(value) {
+                    self.error(format!("accepted, but {warning}; u undoes"));
+                }
                 self.recompute();
             }
             Err(e) => self.error(format!("{e}; kept {}", self.current_value(param))),
@@ -796,6 +1094,7 @@ impl App {
                     state.inputs = preset.inputs;
                     state.preset = preset;
                     self.info(format!("loaded preset {}", self.preset_name()));
+                    self.fit_axes();
                     self.recompute();
                 }
                 Some(Err(problem)) => {
@@ -868,6 +1167,16 @@ mod tests {
         app_with_dir(None)
     }
 
+    /// Selects the row of `name` with j/k.
+    fn select(app: &mut App, name: &str) {
+        for _ in 0..10 {
+            app.update(Action::Previous);
+        }
+        while app.selected_param().name() != name {
+            app.update(Action::Next);
+        }
+    }
+
     fn typed(app: &mut App, text: &str) {
         for c in text.chars() {
             app.update(Action::Input(c));
@@ -878,39 +1187,56 @@ mod tests {
     fn arrows_select_and_step_parameters() {
         let mut app = app();
         assert_eq!(app.selected_param().name(), "L");
+        // The selection does not wrap from the first row to the last, nor back.
         app.update(Action::Previous);
+        assert_eq!(app.selected_param().name(), "L");
+        select(&mut app, "F");
+        app.update(Action::Next);
         assert_eq!(app.selected_param().name(), "F");
         app.update(Action::Increase);
         // F steps by 1 % of F_thre = 0.8 N.
         assert!((app.inputs().get(F).unwrap() - 100.8).abs() < 1e-9);
-        app.update(Action::Next);
-        app.update(Action::Next);
-        assert_eq!(app.selected_param().name(), "b");
+        select(&mut app, "b");
         app.update(Action::IncreaseCoarse);
         assert!((app.inputs().get(B).unwrap() - 25.0).abs() < 1e-9);
         assert!(app.modified());
+        assert!(app.is_edited(B) && !app.is_edited(L));
+        // Reset asks first; no keeps the edits, yes resets, u undoes the reset.
         app.update(Action::Reset);
+        assert_eq!(app.mode(), &Mode::ConfirmReset);
+        app.update(Action::Cancel);
+        assert!(app.modified());
+        app.update(Action::Reset);
+        app.update(Action::Yes);
         assert!(!app.modified());
+        app.update(Action::Undo);
+        assert!((app.inputs().get(B).unwrap() - 25.0).abs() < 1e-9);
     }
 
     #[test]
     fn steps_stop_at_the_edge_of_the_domain() {
         let mut app = app();
-        for _ in 0..2 {
-            app.update(Action::Previous); // KT
-        }
+        select(&mut app, "KT");
         let max = BeamParam::Stiffness.spec().domain.max();
         for _ in 0..200 {
             app.update(Action::IncreaseCoarse);
         }
         assert_eq!(app.inputs().get(KT), Some(max));
-        assert!(app.message().is_none(), "{:?}", app.message());
+        // 1e12 MPa/mm is accepted, with a warning: far outside the usual range.
+        assert!(
+            app.message()
+                .unwrap()
+                .text
+                .contains("far outside the usual range"),
+            "{:?}",
+            app.message()
+        );
     }
 
     #[test]
     fn force_steps_stop_at_zero() {
         let mut app = app();
-        app.update(Action::Previous);
+        select(&mut app, "F");
         for _ in 0..20 {
             app.update(Action::DecreaseCoarse);
         }
@@ -954,6 +1280,123 @@ mod tests {
     }
 
     #[test]
+    fn undo_and_redo_walk_a_bounded_history_of_both_models() {
+        let mut app = app();
+        app.update(Action::Undo);
+        assert_eq!(app.message().unwrap().text, "nothing to undo");
+        app.update(Action::IncreaseCoarse); // L 250
+        app.update(Action::SwitchModel);
+        app.update(Action::IncreaseCoarse); // plate L 12.5
+        app.update(Action::SwitchModel);
+        app.update(Action::IncreaseCoarse); // L 312.5
+        assert_eq!(app.history(), (3, 0));
+        app.update(Action::Undo);
+        assert_eq!(app.inputs().get(L), Some(250.0));
+        // Undoing the plate's change shows the plate.
+        app.update(Action::Undo);
+        assert_eq!(app.kind(), ModelKind::Plate);
+        assert_eq!(
+            app.inputs()
+                .get(Param::Plate(crate::PlateParam::HalfLength)),
+            Some(10.0)
+        );
+        app.update(Action::Undo);
+        assert_eq!(app.kind(), ModelKind::Beam);
+        assert_eq!(app.inputs().get(L), Some(200.0));
+        app.update(Action::Redo);
+        app.update(Action::Redo);
+        assert_eq!(app.kind(), ModelKind::Beam);
+        assert_eq!(app.inputs().get(L), Some(250.0));
+        // A new change forgets what could be redone.
+        app.update(Action::Increase);
+        assert_eq!(app.history(), (3, 0));
+        for _ in 0..2 * HISTORY {
+            app.update(Action::Increase);
+        }
+        assert_eq!(app.history().0, HISTORY);
+    }
+
+    #[test]
+    fn typing_replaces_the_prefilled_value_and_unusual_values_warn() {
+        let mut app = app();
+        select(&mut app, "mu");
+        app.update(Action::StartEdit);
+        let Mode::Editing { input } = app.mode() else {
+            panic!()
+        };
+        assert_eq!(input.shown(), "[0.3]");
+        typed(&mut app, "4.5");
+        app.update(Action::Commit);
+        assert_eq!(app.inputs().get(MU), Some(4.5));
+        let message = app.message().unwrap();
+        assert!(message.is_error && message.text.contains("mu = 4.5 is far outside"));
+        // Outside the domain: refused, as before.
+        app.update(Action::StartEdit);
+        typed(&mut app, "450");
+        app.update(Action::Commit);
+        assert_eq!(app.inputs().get(MU), Some(4.5));
+        app.update(Action::Undo);
+        assert_eq!(app.inputs().get(MU), Some(0.3));
+    }
+
+    #[test]
+    fn v_charts_the_response_against_the_selected_row_and_t_solves_it() {
+        let mut app = app();
+        select(&mut app, "mu");
+        app.update(Action::Vary);
+        assert_eq!(app.varied(), Some(MU));
+        assert!(app.plot().title.starts_with("w(L) vs mu"));
+        app.update(Action::NextChart);
+        assert_eq!(app.varied(), None);
+        assert_eq!(app.views().beam.position().0, 1);
+        // t on K_T with the offered target ratio=1.01: the smallest K_T within 1 % of Coulomb.
+        select(&mut app, "KT");
+        app.update(Action::SolveTarget);
+        app.update(Action::Commit);
+        let kt = app.inputs().get(KT).unwrap();
+        assert!((kt - 423.12).abs() < 0.01, "{kt} {:?}", app.message());
+        assert!(app.message().unwrap().text.contains("certified root"));
+        app.update(Action::Undo);
+        assert_eq!(app.inputs().get(KT), Some(600.0));
+        // No root: said, nothing changed.
+        app.update(Action::SolveTarget);
+        typed(&mut app, "ratio=0.5");
+        app.update(Action::Commit);
+        assert!(app.message().unwrap().is_error);
+        assert_eq!(app.inputs().get(KT), Some(600.0));
+    }
+
+    #[test]
+    fn the_force_axis_stays_when_mu_changes_until_a_fits_it() {
+        let mut app = app();
+        let before = app.plot().x.bounds;
+        select(&mut app, "mu");
+        app.update(Action::DecreaseCoarse);
+        assert_eq!(app.plot().x.bounds, before, "the x range jumped");
+        app.update(Action::FitAxes);
+        // 3 F_thre of mu = 0.3 / 1.25: 192 N instead of 240 N.
+        assert!(
+            (app.plot().x.bounds[1] - 192.0).abs() < 1e-9,
+            "{:?}",
+            app.plot().x
+        );
+    }
+
+    #[test]
+    fn i_walks_through_the_lines_of_the_regime_pane() {
+        let mut app = app();
+        app.update(Action::Explain);
+        assert_eq!(app.mode(), &Mode::Explain { line: 0 });
+        for _ in 0..50 {
+            app.update(Action::Next);
+        }
+        let count = crate::tui::summary::summary_lines(&app.model().unwrap()).len();
+        assert_eq!(app.mode(), &Mode::Explain { line: count - 1 });
+        app.update(Action::Cancel);
+        assert_eq!(app.mode(), &Mode::Normal);
+    }
+
+    #[test]
     fn switching_model_keeps_each_models_edits() {
         let mut app = app();
         app.update(Action::IncreaseCoarse);
@@ -979,7 +1422,7 @@ mod tests {
     #[test]
     fn pastes_are_text_up_to_the_first_line_break_and_never_keys() {
         let mut app = app();
-        app.update(Action::Previous); // F
+        select(&mut app, "F");
         app.update(Action::StartEdit);
         assert!(app.paste("150\nq\n"));
         assert!(!app.should_quit());

@@ -19,6 +19,8 @@ pub enum Context {
     Confirm,
     /// The help overlay.
     Help,
+    /// The explanation of the regime pane's lines.
+    Explain,
 }
 
 /// One line of the key map.
@@ -36,6 +38,7 @@ pub struct Binding {
 
 const NONE: KeyModifiers = KeyModifiers::NONE;
 const SHIFT: KeyModifiers = KeyModifiers::SHIFT;
+const CTRL: KeyModifiers = KeyModifiers::CONTROL;
 
 const fn bind(
     context: Context,
@@ -55,6 +58,7 @@ const fn bind(
 /// charset can show it).
 fn key_label(code: KeyCode, modifiers: KeyModifiers) -> String {
     let name = match code {
+        KeyCode::Char(c) if modifiers.contains(KeyModifiers::CONTROL) => return format!("C-{c}"),
         KeyCode::Char(c) => return c.to_string(),
         KeyCode::Up => "Up",
         KeyCode::Down => "Down",
@@ -64,6 +68,9 @@ fn key_label(code: KeyCode, modifiers: KeyModifiers) -> String {
         KeyCode::Esc => "Esc",
         KeyCode::Tab => "Tab",
         KeyCode::Backspace => "Backspace",
+        KeyCode::Home => "Home",
+        KeyCode::End => "End",
+        KeyCode::Delete => "Del",
         other => return format!("{other:?}"),
     };
     if modifiers.contains(KeyModifiers::SHIFT) {
@@ -205,6 +212,42 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         Context::Main,
+        &[(KeyCode::Char('v'), NONE)],
+        Action::Vary,
+        "chart w(L)|u(L) vs row",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('t'), NONE)],
+        Action::SolveTarget,
+        "solve row for a target",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('i'), NONE)],
+        Action::Explain,
+        "explain the numbers",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('a'), NONE)],
+        Action::FitAxes,
+        "fit axes to the data",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('u'), NONE)],
+        Action::Undo,
+        "undo a change",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('r'), CTRL)],
+        Action::Redo,
+        "redo",
+    ),
+    bind(
+        Context::Main,
         &[(KeyCode::Char('?'), NONE), (KeyCode::Char('?'), SHIFT)],
         Action::ToggleHelp,
         "this help",
@@ -265,7 +308,55 @@ pub const BINDINGS: &[Binding] = &[
         Context::TextEntry,
         &[(KeyCode::Backspace, NONE)],
         Action::Backspace,
-        "delete last character",
+        "delete before cursor",
+    ),
+    bind(
+        Context::TextEntry,
+        &[(KeyCode::Delete, NONE)],
+        Action::Delete,
+        "delete under cursor",
+    ),
+    bind(
+        Context::TextEntry,
+        &[(KeyCode::Left, NONE)],
+        Action::CursorLeft,
+        "cursor left",
+    ),
+    bind(
+        Context::TextEntry,
+        &[(KeyCode::Right, NONE)],
+        Action::CursorRight,
+        "cursor right",
+    ),
+    bind(
+        Context::TextEntry,
+        &[(KeyCode::Home, NONE), (KeyCode::Char('a'), CTRL)],
+        Action::CursorHome,
+        "start of line",
+    ),
+    bind(
+        Context::TextEntry,
+        &[(KeyCode::End, NONE), (KeyCode::Char('e'), CTRL)],
+        Action::CursorEnd,
+        "end of line",
+    ),
+    bind(
+        Context::TextEntry,
+        &[(KeyCode::Char('u'), CTRL)],
+        Action::ClearToStart,
+        "delete to start",
+    ),
+    bind(
+        Context::TextEntry,
+        &[(KeyCode::Char('w'), CTRL)],
+        Action::DeleteWord,
+        "delete word before",
+    ),
+    bind(
+        Context::TextEntry,
+        &[(KeyCode::Tab, NONE)],
+        Action::Complete,
+        "complete a file name",
     ),
     bind(
         Context::Confirm,
@@ -281,6 +372,18 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         Context::Help,
+        &[(KeyCode::Char('j'), NONE), (KeyCode::Down, NONE)],
+        Action::Next,
+        "next page",
+    ),
+    bind(
+        Context::Help,
+        &[(KeyCode::Char('k'), NONE), (KeyCode::Up, NONE)],
+        Action::Previous,
+        "previous page",
+    ),
+    bind(
+        Context::Help,
         &[
             (KeyCode::Esc, NONE),
             (KeyCode::Char('?'), NONE),
@@ -289,6 +392,28 @@ pub const BINDINGS: &[Binding] = &[
         ],
         Action::ToggleHelp,
         "close the help",
+    ),
+    bind(
+        Context::Explain,
+        &[(KeyCode::Char('j'), NONE), (KeyCode::Down, NONE)],
+        Action::Next,
+        "next line",
+    ),
+    bind(
+        Context::Explain,
+        &[(KeyCode::Char('k'), NONE), (KeyCode::Up, NONE)],
+        Action::Previous,
+        "previous line",
+    ),
+    bind(
+        Context::Explain,
+        &[
+            (KeyCode::Esc, NONE),
+            (KeyCode::Char('i'), NONE),
+            (KeyCode::Char('q'), NONE),
+        ],
+        Action::Cancel,
+        "close",
     ),
 ];
 
@@ -337,6 +462,7 @@ pub fn context_title(context: Context) -> &'static str {
         Context::TextEntry => "Typing a value or a name",
         Context::Confirm => "Yes/no questions",
         Context::Help => "This help",
+        Context::Explain => "Explaining the numbers",
     }
 }
 

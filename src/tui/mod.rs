@@ -18,10 +18,12 @@ pub mod app;
 pub mod keymap;
 pub mod plots;
 mod signals;
+pub mod summary;
 pub mod terminal;
 pub mod text_input;
 pub mod theme;
 pub mod ui;
+pub mod vary_plot;
 
 use std::io::{self, IsTerminal};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError};

@@ -134,7 +134,7 @@ impl Views {
     }
 }
 
-fn line(name: impl Into<String>, points: Series) -> PlotSeries {
+pub(super) fn line(name: impl Into<String>, points: Series) -> PlotSeries {
     PlotSeries {
         name: name.into(),
         points,
@@ -142,7 +142,7 @@ fn line(name: impl Into<String>, points: Series) -> PlotSeries {
     }
 }
 
-fn cursor(x: f64, [y0, y1]: [f64; 2]) -> PlotSeries {
+pub(super) fn cursor(x: f64, [y0, y1]: [f64; 2]) -> PlotSeries {
     PlotSeries {
         name: "current".into(),
         points: vec![(x, y0), (x, y1)],
@@ -169,7 +169,7 @@ fn axis_bounds(lo: f64, hi: f64) -> [f64; 2] {
     }
 }
 
-fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
+pub(super) fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
     let [lo, hi] = axis_bounds(lo, hi);
     Axis {
         title: title.into(),
@@ -179,7 +179,7 @@ fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
 }
 
 /// An axis in log10 units, labelled with the values themselves.
-fn log_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
+pub(super) fn log_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
     let labels = [lo, 0.5 * (lo + hi), hi]
         .iter()
         .map(|&v| tick(10f64.powf(v)))
@@ -196,7 +196,7 @@ fn tick(value: f64) -> String {
     number_with(value, 3)
 }
 
-fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
+pub(super) fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
     series
         .into_iter()
         .flatten()
@@ -204,16 +204,18 @@ fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// The force range of the beam charts: up to 3 F_thre, or further to show the current F and the
-/// largest measured force, but never beyond the largest accepted force (the sweeps refuse it).
-fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64) -> f64 {
-    let wanted = (3.0 * beams.threshold_force())
+/// The force range of the beam charts: up to `span` (kept by the app while parameters change) or
+/// 3 F_thre, or further to show the current F and the largest measured force, but never beyond the
+/// largest accepted force (the sweeps refuse it).
+fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64, span: Option<f64>) -> f64 {
+    let wanted = span
+        .unwrap_or(3.0 * beams.threshold_force())
         .max(1.25 * force.newtons())
         .max(1.05 * f_data);
     TipForce::clamped(wanted).newtons()
 }
 
-fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
+pub(super) fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
     Samples::new(from, to, SAMPLES, spacing).ok()
 }
 
@@ -319,6 +321,7 @@ pub fn build(
     numeric: Option<&NumericPoints>,
     measured: Option<&[Measurement]>,
     external: Option<&ExternalPoints>,
+    force_span: Option<f64>,
 ) -> Plot {
     let external = external.filter(|e| e.model == model.kind());
     let mut overlays: Vec<(&str, Series)> = Vec::new();
@@ -339,7 +342,7 @@ pub fn build(
                     .iter()
                     .flat_map(|(_, s)| s.iter().map(|p| p.0))
                     .fold(0.0, f64::max);
-                beam_plot(&beams, force, chart, f_data)
+                beam_plot(&beams, force, chart, f_data, force_span)
             }
         },
         Model::Plate(plate) => match views.plate {
@@ -389,9 +392,15 @@ pub fn build(
     plot
 }
 
-fn beam_plot(beams: &TwinBeams, force: TipForce, chart: BeamChart, f_data: f64) -> Option<Plot> {
+fn beam_plot(
+    beams: &TwinBeams,
+    force: TipForce,
+    chart: BeamChart,
+    f_data: f64,
+    span: Option<f64>,
+) -> Option<Plot> {
     let p = beams.params();
-    let f_max = force_range(beams, force, f_data);
+    let f_max = force_range(beams, force, f_data, span);
     let forces = samples(0.0, f_max, Spacing::Linear)?;
     let kt = p.tangential_stiffness;
     // The curves at K_T/5 and K_T*5, where those are accepted stiffnesses.
@@ -635,7 +644,7 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
             _,
         ) => {
             // One model loaded monotonically through the sample forces: one load step per point.
-            let f_max = force_range(&beams, force, 0.0);
+            let f_max = force_range(&beams, force, 0.0, None);
             let mut fe = TwinBeamsFe::new(beams.params(), density);
             let mut points = Vec::with_capacity(OVERLAY_POINTS);
             for i in 1..=OVERLAY_POINTS {
@@ -745,7 +754,7 @@ mod tests {
         for kind in [ModelKind::Beam, ModelKind::Plate] {
             for views in every_view(kind) {
                 let chart = views.describe(kind).0;
-                let plot = build(&model(kind), views, None, None, None);
+                let plot = build(&model(kind), views, None, None, None, None);
                 assert!(!plot.title.is_empty());
                 if let Some(table) = &plot.table {
                     // The K_T table: every line fits the 44-column pane of an 80x24 screen, no NaN.
@@ -845,7 +854,7 @@ mod tests {
                 .unwrap();
             let model = inputs.validate().unwrap();
             for views in every_view(ModelKind::Beam) {
-                let plot = build(&model, views, None, None, None);
+                let plot = build(&model, views, None, None, None, None);
                 check_plot(&plot, &format!("beam corner {mask} F={force} {views:?}"));
             }
         }
@@ -863,7 +872,7 @@ mod tests {
             }
             let model = inputs.validate().unwrap();
             for views in every_view(ModelKind::Plate) {
-                let plot = build(&model, views, None, None, None);
+                let plot = build(&model, views, None, None, None, None);
                 check_plot(&plot, &format!("plate corner {mask} {views:?}"));
             }
         }

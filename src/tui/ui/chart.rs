@@ -21,7 +21,10 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
     let theme = app.theme();
     let plot = app.plot();
     let (name, position, count) = app.views().describe(app.kind());
-    let title = format!("{name} ({position}/{count}, c cycles)");
+    let title = match app.varied() {
+        Some(param) => format!("vs {param} (v or c: back to {name})"),
+        None => format!("{name} ({position}/{count}, c cycles)"),
+    };
     let block = pane(app, &title);
     let inner = block.inner(area);
     frame.render_widget(block, area);
@@ -31,7 +34,10 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
         frame.render_widget(Paragraph::new(lines), inner);
         return;
     }
-    let legend = legend_line(plot, &theme);
+    let mut legend = legend_line(plot, &theme, false);
+    if legend.width() as u16 > inner.width {
+        legend = legend_line(plot, &theme, true);
+    }
     let legend_rows = if legend.width() as u16 > inner.width {
         2
     } else {
@@ -59,7 +65,10 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
 }
 
 /// The legend: each curve's symbol (or a coloured bar) and name.
-fn legend_line<'a>(plot: &'a Plot, theme: &Theme) -> Line<'a> {
+/// The legend; `compact` (for narrow panes) drops the spaces between marks and names, so that the
+/// legend of an 80-column screen fits on one line.
+fn legend_line<'a>(plot: &'a Plot, theme: &Theme, compact: bool) -> Line<'a> {
+    let (gap, after) = if compact { ("", " ") } else { (" ", "  ") };
     let mut spans = vec![Span::raw(" ")];
     for (i, series) in plot
         .series
@@ -73,7 +82,7 @@ fn legend_line<'a>(plot: &'a Plot, theme: &Theme) -> Line<'a> {
             "--".to_string()
         };
         spans.push(Span::styled(mark, theme.series_style(i)));
-        spans.push(Span::raw(format!(" {}  ", series.name)));
+        spans.push(Span::raw(format!("{gap}{}{after}", series.name)));
     }
     if plot.series.iter().any(|s| s.kind == SeriesKind::Cursor) {
         spans.push(Span::styled(

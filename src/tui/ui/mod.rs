@@ -46,7 +46,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 app,
                 area,
                 "Save preset",
-                &format!("Name: {}_", input.as_str()),
+                &format!("Name: {}", input.shown()),
                 "letters, digits, - and _; Enter save, Esc cancel",
             ),
             Mode::DataPath { input } => overlay::draw_prompt(
@@ -54,9 +54,9 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 app,
                 area,
                 "Load measurements or FE results",
-                &format!("File: {}_", input.as_str()),
-                "CSV F_N,w_mm (beams), KT_MPa_per_mm,u_mm (plate) or a CalculiX .dat; \
-                 Enter load, Esc cancel",
+                &format!("File: {}", input.shown()),
+                "CSV F_N,w_mm (a beam sweep's CSV too), KT_MPa_per_mm,u_mm (plate) or a \
+                 CalculiX .dat; Tab completes, Enter load, Esc cancel",
             ),
             Mode::ConfirmOverwrite { name } => overlay::draw_prompt(
                 frame,
@@ -74,6 +74,29 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 &format!("Unsaved edits: {unsaved}. Quit anyway?"),
                 "y quit, n or Esc stay (s saves as a preset)",
             ),
+            Mode::ConfirmReset => overlay::draw_prompt(
+                frame,
+                app,
+                area,
+                "Reset?",
+                &format!(
+                    "Reset the edited values (*) to preset {}?",
+                    app.preset_name()
+                ),
+                "y reset (u undoes it), n or Esc keep the edits",
+            ),
+            Mode::Target { input } => overlay::draw_prompt(
+                frame,
+                app,
+                area,
+                "Solve for a target",
+                &format!("{} such that {}", app.selected_param(), input.shown()),
+                &format!(
+                    "one of {}; Enter solve, Esc cancel",
+                    crate::model::target::Quantity::names(app.kind())
+                ),
+            ),
+            Mode::Explain { line } => overlay::draw_explanation(frame, app, area, *line),
             Mode::Normal | Mode::Editing { .. } => {}
         }
     }

@@ -10,6 +10,7 @@ use crate::preset::Listed;
 use crate::report::sanitize;
 use crate::tui::app::App;
 use crate::tui::keymap::{BINDINGS, Context, GLOBAL_KEYS, context_title};
+use crate::tui::summary::{summary_lines, wrap_words};
 use crate::tui::theme::Role;
 
 /// A centred rectangle of at most `width` x `height` inside `area`.
@@ -51,27 +52,51 @@ fn help_lines(app: &App, contexts: &[Context]) -> Vec<Line<'static>> {
     lines
 }
 
-/// The key map, in two columns, straight from the binding table.
+/// The key map, straight from the binding table: the contexts one after the other, flowing down two
+/// columns, on as many pages as the screen needs (`j`/`k` turn them).
 pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
-    let popup = centred(area, 78, 22);
+    let popup = centred(area, 78, area.height.saturating_sub(2).max(10));
     frame.render_widget(Clear, popup);
     let block = pane(app, "Keys (Esc or ? closes)");
     let inner = block.inner(popup);
     frame.render_widget(block, popup);
-    let [left, right] = Layout::horizontal([Constraint::Fill(1), Constraint::Fill(1)]).areas(inner);
-    frame.render_widget(Paragraph::new(help_lines(app, &[Context::Main])), left);
-    let mut right_lines = help_lines(
+    let mut lines = help_lines(
         app,
-        &[Context::Presets, Context::TextEntry, Context::Confirm],
+        &[
+            Context::Main,
+            Context::TextEntry,
+            Context::Presets,
+            Context::Confirm,
+            Context::Explain,
+        ],
     );
-    right_lines.push(Line::from(""));
+    lines.push(Line::from(""));
     for (key, _, what) in GLOBAL_KEYS {
-        right_lines.push(Line::from(format!(
+        lines.push(Line::from(format!(
             " Ctrl-{:<8} {what}",
             key.to_ascii_uppercase()
         )));
     }
-    frame.render_widget(Paragraph::new(right_lines), right);
+    let rows = usize::from(inner.height.saturating_sub(1)).max(1);
+    let columns: Vec<Vec<Line>> = lines.chunks(rows).map(<[Line]>::to_vec).collect();
+    let pages = columns.len().div_ceil(2).max(1);
+    let page = app.help_page().min(pages - 1);
+    let [body, hint] = Layout::vertical([Constraint::Min(0), Constraint::Length(1)]).areas(inner);
+    let [left, right] = Layout::horizontal([Constraint::Fill(1), Constraint::Fill(1)]).areas(body);
+    for (i, column) in [left, right].into_iter().enumerate() {
+        if let Some(lines) = columns.get(2 * page + i) {
+            frame.render_widget(Paragraph::new(lines.clone()), column);
+        }
+    }
+    if pages > 1 {
+        frame.render_widget(
+            Paragraph::new(Span::styled(
+                format!(" page {}/{pages}: j next, k back", page + 1),
+                app.theme().style(Role::Muted),
+            )),
+            hint,
+        );
+    }
 }
 
 /// The preset list: bundled first, then the user's; invalid user files are listed with their problem,
@@ -135,18 +160,67 @@ pub fn draw_prompt(
     content: &str,
     hint: &str,
 ) {
-    let popup = centred(area, 60, 5);
+    // A long hint wraps onto more lines (the box grows) rather than being cut.
+    let hint_lines = wrap_words(hint, 56);
+    let popup = centred(area, 60, 4 + hint_lines.len().max(1) as u16);
     frame.render_widget(Clear, popup);
     let block = pane(app, title);
     let inner = block.inner(popup);
     frame.render_widget(block, popup);
-    let lines = vec![
+    let mut lines = vec![
         Line::from(format!(" {}", sanitize(content))),
         Line::from(""),
-        Line::from(Span::styled(
-            format!(" {hint}"),
-            app.theme().style(Role::Muted),
-        )),
     ];
+    lines.extend(hint_lines.into_iter().map(|h| {
+        Line::from(Span::styled(
+            format!(" {h}"),
+            app.theme().style(Role::Muted),
+        ))
+    }));
     frame.render_widget(Paragraph::new(lines), inner);
+}
+
+/// What one line of the regime pane means, in a box over the bottom of the chart; the line itself
+/// is highlighted in the pane.
+pub fn draw_explanation(frame: &mut Frame, app: &App, area: Rect, line: usize) {
+    let Some(model) = app.model() else { return };
+    let lines = summary_lines(&model);
+    let Some(chosen) = lines.get(line.min(lines.len().saturating_sub(1))) else {
+        return;
+    };
+    let width = area.width.saturating_sub(36).clamp(40, 80);
+    let text = wrap_words(chosen.meaning, usize::from(width) - 4);
+    let height = text.len() as u16 + 4;
+    let popup = Rect {
+        x: area.x + area.width.saturating_sub(width + 1),
+        y: area.y + area.height.saturating_sub(height + 1),
+        width,
+        height: height.min(area.height),
+    };
+    frame.render_widget(Clear, popup);
+    let title = format!(
+        "{}{}",
+        chosen.text.trim_end(),
+        chosen
+            .regime
+            .as_deref()
+            .map_or(String::new(), |r| format!(" {r}"))
+    );
+    let block = pane(app, &title);
+    let inner = block.inner(popup);
+    frame.render_widget(block, popup);
+    let mut body: Vec<Line> = text
+        .into_iter()
+        .map(|l| Line::from(format!(" {l}")))
+        .collect();
+    body.push(Line::from(""));
+    body.push(Line::from(Span::styled(
+        format!(
+            " line {}/{}: j/k other lines, Esc closes",
+            line + 1,
+            lines.len()
+        ),
+        app.theme().style(Role::Muted),
+    )));
+    frame.render_widget(Paragraph::new(body), inner);
 }

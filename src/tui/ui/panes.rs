@@ -7,12 +7,11 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
 use crate::Inputs;
-use crate::curves::{beam_point, plate_point};
 use crate::model::inputs::Model;
 use crate::model::params::Unit;
-use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::report::{number, sanitize};
 use crate::tui::app::{App, Mode};
+use crate::tui::summary::{summary_lines, wrap_words};
 use crate::tui::theme::Role;
 
 /// A bordered pane with a title.
@@ -43,16 +42,18 @@ pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
             // `get` cannot miss: the parameters come from the active model.
             let value = inputs.get(param).unwrap_or(f64::NAN);
             let shown = match app.mode() {
-                Mode::Editing { input } if selected => format!("{}_", input.as_str()),
+                Mode::Editing { input } if selected => input.shown(),
                 _ => number(value),
             };
             let unit = match param.unit() {
                 Unit::Dimensionless => "",
                 unit => unit.symbol(),
             };
+            // `*`: edited, differs from the loaded preset (shown without colour too).
             let text = format!(
-                "{} {:<3} {:>11} {:<7}",
+                "{}{}{:<3} {:>11} {:<7}",
                 if selected { ">" } else { " " },
+                if app.is_edited(param) { "*" } else { " " },
                 param.name(),
                 shown,
                 unit
@@ -69,94 +70,58 @@ pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
 }
 
 /// The regime of each law and the numbers that define it, as plain text (readable without colour).
+/// Where the pane has room for twice its lines (tall screens), each line is followed by what it
+/// means.
 pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
     let theme = app.theme();
-    let regime = |label: &str, value: String| {
-        Line::from(vec![
-            Span::raw(format!(" {label:<12}")),
-            Span::styled(value, theme.style(Role::Regime)),
-        ])
+    let Some(model) = app.model() else {
+        let lines = vec![Line::from(" invalid parameters")];
+        frame.render_widget(Paragraph::new(lines).block(pane(app, "Regime")), area);
+        return;
     };
-    let text = |s: String| Line::from(format!(" {s}"));
-    let lines = match app.model() {
-        Some(Model::Beam { beams, force }) => {
-            let row = beam_point(&beams, force);
-            let ratio = if row.w_coulomb > 0.0 {
-                number(row.w_regularized / row.w_coulomb)
-            } else {
-                "-".into()
-            };
-            vec![
-                text(format!("At F = {} N", number(row.force))),
-                regime("Coulomb", row.regime_coulomb.to_string()),
-                regime("regularized", row.regime_regularized.to_string()),
-                text(format!(
-                    "F_thre {} N  F_1 {} N",
-                    number(beams.threshold_force()),
-                    number(beams.first_macroslip_force())
-                )),
-                text(format!("X = {} mm (microslip end)", number(row.micro_end))),
-                text(format!("w(L) Coulomb {} mm", number(row.w_coulomb))),
-                text(format!("w(L) regular. {} mm", number(row.w_regularized))),
-                text(format!("ratio reg/Coulomb {ratio}")),
-                text(format!(
-                    "mu P/K_T = {} um",
-                    number(mm_to_um(beams.saturation_slip()))
-                )),
-                text(format!(
-                    "K_T = {} MPa/um",
-                    number(mpa_per_mm_to_mpa_per_um(
-                        beams.params().tangential_stiffness
-                    ))
-                )),
-            ]
-        }
-        Some(Model::Plate(plate)) => {
-            let row = plate_point(&plate);
-            let ratio = if row.u_coulomb > 0.0 {
-                number(row.u_regularized / row.u_coulomb)
-            } else {
-                "-".into()
-            };
-            let pressure = plate.contact_pressure();
-            vec![
-                regime("Coulomb", row.regime_coulomb.to_string()),
-                regime("regularized", row.regime_regularized.to_string()),
-                text(format!("X_s = {} mm (stick end)", number(row.stick_end))),
-                text(format!("X_r = {} mm (micro end)", number(row.micro_end))),
-                text(format!("u(L) Coulomb {} mm", number(row.u_coulomb))),
-                text(format!("u(L) regular. {} mm", number(row.u_regularized))),
-                text(format!("ratio reg/Coulomb {ratio}")),
-                text(format!(
-                    "mu P/K_T = {} um",
-                    number(mm_to_um(plate.saturation_slip()))
-                )),
-                text(format!(
-                    "P_r/P {} to {}",
-                    number(pressure.ratio(0.0)),
-                    number(pressure.ratio(plate.params().half_length))
-                )),
-                text(format!(
-                    "constant P: {}",
-                    crate::report::pressure_verdict_short(&pressure)
-                )),
-                text(format!(
-                    "strip theory {}",
-                    crate::report::strip_validity_short(&plate.validity())
-                )),
-            ]
-        }
-        None => vec![text("invalid parameters".into())],
-    };
+    let summary = summary_lines(&model);
     // The beams' pane is full at 80x24: their envelope (V2) goes in the title.
-    let title = match app.model() {
-        Some(Model::Beam { beams, force }) => format!(
-            "Regime, FE within {} %",
-            crate::report::number_with(100.0 * beams.validity(force).expected_error, 2)
+    let title = match &model {
+        Model::Beam { beams, force } => format!(
+            "Regime (i), FE within {} %",
+            crate::report::number_with(100.0 * beams.validity(*force).expected_error, 2)
         ),
-        _ => "Regime".to_string(),
+        Model::Plate(_) => "Regime (i explains)".to_string(),
     };
-    frame.render_widget(Paragraph::new(lines).block(pane(app, &title)), area);
+    let block = pane(app, &title);
+    let inner = block.inner(area);
+    let width = usize::from(inner.width.saturating_sub(3)).max(10);
+    let explained: usize = summary
+        .iter()
+        .map(|l| 1 + l.meaning.len().div_ceil(width))
+        .sum();
+    let room = usize::from(inner.height) >= explained;
+    let highlighted = match app.mode() {
+        Mode::Explain { line } => Some(*line),
+        _ => None,
+    };
+    let mut lines = Vec::new();
+    for (i, line) in summary.into_iter().enumerate() {
+        let style = if highlighted == Some(i) {
+            theme.style(Role::Selected)
+        } else {
+            Style::default()
+        };
+        let mut spans = vec![Span::styled(format!(" {}", line.text), style)];
+        if let Some(regime) = line.regime {
+            spans.push(Span::styled(regime, theme.style(Role::Regime)));
+        }
+        lines.push(Line::from(spans));
+        if room {
+            for chunk in wrap_words(line.meaning, width) {
+                lines.push(Line::from(Span::styled(
+                    format!("   {chunk}"),
+                    theme.style(Role::Muted),
+                )));
+            }
+        }
+    }
+    frame.render_widget(Paragraph::new(lines).block(block), area);
 }
 
 /// Model, preset (with `*` when modified), the last message or the typing prompt, and the two keys
@@ -171,10 +136,10 @@ pub fn draw_status(frame: &mut Frame, app: &App, area: Rect) {
         theme.style(Role::Title),
     )];
     match (app.mode(), app.message()) {
-        (Mode::Editing { .. }, _) => {
+        (Mode::Editing { .. }, None) => {
             let param = app.selected_param();
             spans.push(Span::raw(format!(
-                "| {} ({}): type a value, Enter accept, Esc cancel",
+                "| {} ({}): type a value (replaces), Enter accept, Esc cancel",
                 param.name(),
                 param.unit()
             )));

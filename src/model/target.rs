@@ -1,0 +1,638 @@
+//! Solving for a target: the value of one parameter at which a quantity of the solution (w(L),
+//! u(L), X, the ratio to Coulomb, F_1, D, zeta) takes a given value, all other inputs fixed.
+//!
+//! How: the parameter's range (its whole accepted domain, or the caller's part of it) is scanned on
+//! a grid (logarithmic for positive parameters spanning more than a decade), every grid interval
+//! where the quantity crosses the target is a bracket, and each bracket is solved by
+//! `solve::find_root_in_bracket` (Brent, certified, with bisection as the fallback). Each root is then
+//! checked: the quantity there must equal the target to 1e-6 relative, otherwise the quantity
+//! jumps across the target (a discontinuity, not a root) and the answer says so. No crossing is an
+//! error that gives the range of the quantity over the range scanned; more than one crossing gives
+//! every root found. A pair of roots closer together than a grid step can be missed; the scan has
+//! [`SCAN_POINTS`] points, and narrowing the range refines it.
+//!
+//! This scan is a loop over a parameter, like those of `curves`; it lives here because it is part of
+//! the root finding (the brackets), and `curves` sits above `model`.
+
+use std::str::FromStr;
+
+use thiserror::Error;
+
+use super::cycle::{Cycle, Law};
+use super::inputs::Model;
+use super::params::{Compact, ModelKind, Param, parse_number};
+use super::solve::find_root_in_bracket;
+
+/// Grid points of the scan for brackets.
+pub const SCAN_POINTS: usize = 400;
+
+/// Largest relative misfit of the quantity at an accepted root.
+const ROOT_CHECK: f64 = 1e-6;
+
+/// A quantity of the solution that a target can be set on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Quantity {
+    /// Twin beams: regularized tip deflection w(L) (mm).
+    Deflection,
+    /// Plate: regularized end displacement u(L) (mm).
+    Displacement,
+    /// End of the microslip zone: X (beams) or X_r (plate) (mm), regularized law.
+    MicroEnd,
+    /// Regularized over Coulomb w(L) (beams) or u(L) (plate) (-).
+    Ratio,
+    /// Twin beams: the force F_1 at which macroslip first appears (N).
+    FirstMacroslipForce,
+    /// Twin beams: dissipation per cycle of amplitude F, regularized law (N mm).
+    Dissipation,
+    /// Twin beams: equivalent damping ratio of a cycle of amplitude F, regularized law (-).
+    DampingRatio,
+}
+
+impl Quantity {
+    /// Every quantity.
+    pub const ALL: [Quantity; 7] = [
+        Quantity::Deflection,
+        Quantity::Displacement,
+        Quantity::MicroEnd,
+        Quantity::Ratio,
+        Quantity::FirstMacroslipForce,
+        Quantity::Dissipation,
+        Quantity::DampingRatio,
+    ];
+
+    /// True when `kind` has this quantity.
+    pub fn applies_to(self, kind: ModelKind) -> bool {
+        match self {
+            Quantity::MicroEnd | Quantity::Ratio => true,
+            Quantity::Displacement => kind == ModelKind::Plate,
+            _ => kind == ModelKind::Beam,
+        }
+    }
+
+    /// The name as targets spell it for `kind` (`w(L)`, `X_r`, `ratio`).
+    pub fn name(self, kind: ModelKind) -> &'static str {
+        match self {
+            Quantity::Deflection => "w(L)",
+            Quantity::Displacement => "u(L)",
+            Quantity::MicroEnd if kind == ModelKind::Plate => "X_r",
+            Quantity::MicroEnd => "X",
+            Quantity::Ratio => "ratio",
+            Quantity::FirstMacroslipForce => "F_1",
+            Quantity::Dissipation => "D",
+            Quantity::DampingRatio => "zeta",
+        }
+    }
+
+    /// The unit (`mm`, `N`, `N mm`, or empty for ratios).
+    pub fn unit(self) -> &'static str {
+        match self {
+            Quantity::Deflection | Quantity::Displacement | Quantity::MicroEnd => "mm",
+            Quantity::FirstMacroslipForce => "N",
+            Quantity::Dissipation => "N mm",
+            Quantity::Ratio | Quantity::DampingRatio => "",
+        }
+    }
+
+    /// What it is, in words.
+    pub fn meaning(self, kind: ModelKind) -> &'static str {
+        match (self, kind) {
+            (Quantity::Deflection, _) => "tip deflection, regularized law",
+            (Quantity::Displacement, _) => "end displacement, regularized law",
+            (Quantity::MicroEnd, ModelKind::Beam) => {
+                "end of the microslip zone X, from the clamp (L: no macroslip)"
+            }
+            (Quantity::MicroEnd, ModelKind::Plate) => {
+                "end of the microslip zone X_r, from the centre (L: no macroslip)"
+            }
+            (Quantity::Ratio, ModelKind::Beam) => "w(L) regularized / w(L) Coulomb",
+            (Quantity::Ratio, ModelKind::Plate) => "u(L) regularized / u(L) Coulomb",
+            (Quantity::FirstMacroslipForce, _) => "force at which macroslip first appears",
+            (Quantity::Dissipation, _) => "dissipation per cycle of amplitude F (regularized)",
+            (Quantity::DampingRatio, _) => "equivalent damping ratio at amplitude F (regularized)",
+        }
+    }
+
+    /// The names targets accept for `kind`, as error messages list them.
+    pub fn names(kind: ModelKind) -> String {
+        Quantity::ALL
+            .iter()
+            .filter(|q| q.applies_to(kind))
+            .map(|q| q.name(kind))
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
+    /// Parses a quantity name (case-sensitive as written above; `w`, `u`, `Xr`, `F1` also accepted)
+    /// for `kind`.
+    ///
+    /// # Errors
+    /// [`TargetError::Quantity`] for a name neither model has, or one of the other model.
+    pub fn parse(text: &str, kind: ModelKind) -> Result<Quantity, TargetError> {
+        let quantity = match text {
+            "w(L)" | "w" | "wL" => Quantity::Deflection,
+            "u(L)" | "u" | "uL" => Quantity::Displacement,
+            "X" | "X_r" | "Xr" => Quantity::MicroEnd,
+            "ratio" => Quantity::Ratio,
+            "F_1" | "F1" => Quantity::FirstMacroslipForce,
+            "D" => Quantity::Dissipation,
+            "zeta" => Quantity::DampingRatio,
+            _ => {
+                return Err(TargetError::Quantity {
+                    name: text.to_string(),
+                    kind,
+                });
+            }
+        };
+        if quantity.applies_to(kind) {
+            Ok(quantity)
+        } else {
+            Err(TargetError::Quantity {
+                name: text.to_string(),
+                kind,
+            })
+        }
+    }
+
+    /// The quantity's value for `model`; `None` where it is not defined (a ratio at zero load, a
+    /// quantity of the other model).
+    pub fn evaluate(self, model: &Model) -> Option<f64> {
+        let value = match (self, model) {
+            (Quantity::Deflection, Model::Beam { beams, force }) => {
+                beams.regularized(*force).tip_deflection()
+            }
+            (Quantity::Displacement, Model::Plate(plate)) => plate.regularized().end_displacement(),
+            (Quantity::MicroEnd, Model::Beam { beams, force }) => {
+                beams.regularized(*force).micro_zone_end()
+            }
+            (Quantity::MicroEnd, Model::Plate(plate)) => plate.regularized().micro_zone_end(),
+            (Quantity::Ratio, Model::Beam { beams, force }) => {
+                let coulomb = beams.coulomb(*force).tip_deflection();
+                if coulomb <= 0.0 {
+                    return None;
+                }
+                beams.regularized(*force).tip_deflection() / coulomb
+            }
+            (Quantity::Ratio, Model::Plate(plate)) => {
+                let coulomb = plate.coulomb().end_displacement();
+                if coulomb <= 0.0 {
+                    return None;
+                }
+                plate.regularized().end_displacement() / coulomb
+            }
+            (Quantity::FirstMacroslipForce, Model::Beam { beams, .. }) => {
+                beams.first_macroslip_force()
+            }
+            (Quantity::Dissipation, Model::Beam { beams, force }) => {
+                Cycle::new(beams, Law::Regularized, *force).dissipation()
+            }
+            (Quantity::DampingRatio, Model::Beam { beams, force }) => {
+                Cycle::new(beams, Law::Regularized, *force).damping_ratio()
+            }
+            _ => return None,
+        };
+        value.is_finite().then_some(value)
+    }
+}
+
+/// A target: a quantity and the value it should take, as typed `ratio=1.01`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Target {
+    /// The quantity.
+    pub quantity: Quantity,
+    /// Its wanted value, in the quantity's unit.
+    pub value: f64,
+}
+
+impl Target {
+    /// Parses `QUANTITY=VALUE` for `kind` (`ratio=1.01`, `w(L)=0.05`, `X_r=9.5`).
+    ///
+    /// # Errors
+    /// A missing `=`, an unknown quantity, or a value that is not a finite number.
+    pub fn parse(text: &str, kind: ModelKind) -> Result<Target, TargetError> {
+        let Some((name, value)) = text.split_once('=') else {
+            return Err(TargetError::Syntax(text.to_string()));
+        };
+        let quantity = Quantity::parse(name.trim(), kind)?;
+        let value = parse_number(value.trim()).ok_or_else(|| TargetError::Value {
+            text: value.trim().to_string(),
+        })?;
+        Ok(Target { quantity, value })
+    }
+}
+
+impl FromStr for Quantity {
+    type Err = TargetError;
+
+    /// Parses a name of either model (the beams' first).
+    fn from_str(text: &str) -> Result<Self, Self::Err> {
+        Quantity::parse(text, ModelKind::Beam).or_else(|_| Quantity::parse(text, ModelKind::Plate))
+    }
+}
+
+/// Why a target cannot be solved.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum TargetError {
+    /// No `=` in the target.
+    #[error("invalid target '{0}': expected QUANTITY=VALUE, e.g. ratio=1.01")]
+    Syntax(String),
+    /// A quantity the model does not have.
+    #[error("unknown quantity '{name}' for the {kind} model (allowed: {})", Quantity::names(*kind))]
+    Quantity {
+        /// As typed.
+        name: String,
+        /// The model.
+        kind: ModelKind,
+    },
+    /// The value is not a number.
+    #[error("invalid target value '{text}': not a finite number")]
+    Value {
+        /// As typed.
+        text: String,
+    },
+    /// The range to search is not part of the parameter's domain, or reversed.
+    #[error("invalid range for {param}: {reason}")]
+    Range {
+        /// The parameter's key.
+        param: &'static str,
+        /// Why.
+        reason: String,
+    },
+    /// The quantity does not reach the target anywhere in the range.
+    #[error(
+        "no {param} in [{}, {}]{unit} gives {quantity} = {}: over that range {quantity} goes from {} to {} (min {}, max {})",
+        Compact(range.0), Compact(range.1), Compact(*target), Compact(ends.0), Compact(ends.1),
+        Compact(extremes.0), Compact(extremes.1)
+    )]
+    NoRoot {
+        /// The parameter's key.
+        param: &'static str,
+        /// The parameter's unit with a leading space, empty when dimensionless.
+        unit: &'static str,
+        /// The quantity's name.
+        quantity: &'static str,
+        /// The target value.
+        target: f64,
+        /// The range scanned.
+        range: (f64, f64),
+        /// The quantity at both ends of the range.
+        ends: (f64, f64),
+        /// Its smallest and largest value found on the scan.
+        extremes: (f64, f64),
+    },
+    /// The quantity is not defined anywhere in the range.
+    #[error("{quantity} is not defined for any {param} in the range (zero load?)")]
+    Undefined {
+        /// The parameter's key.
+        param: &'static str,
+        /// The quantity's name.
+        quantity: &'static str,
+    },
+}
+
+/// One value of the parameter where the quantity crosses the target.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Root {
+    /// The parameter's value.
+    pub value: f64,
+    /// The grid interval it was found in.
+    pub bracket: (f64, f64),
+    /// The quantity there.
+    pub achieved: f64,
+    /// True when the quantity equals the target there (to 1e-6 relative); false when it jumps
+    /// across the target (a discontinuity at `value`).
+    pub certified: bool,
+    /// True when the quantity equals the target exactly on every grid point of `bracket` (a
+    /// plateau: X = L below the onset of macroslip); `value` is then the plateau's upper end.
+    pub plateau: bool,
+}
+
+impl Root {
+    /// A run of the parameter over which the quantity equals the target (`value` one of its ends).
+    fn plateau(bracket: (f64, f64), value: f64, achieved: f64) -> Root {
+        Root {
+            value,
+            bracket,
+            achieved,
+            certified: true,
+            plateau: true,
+        }
+    }
+}
+
+/// The answer: every crossing found, in increasing order of the parameter.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solved {
+    /// The parameter varied.
+    pub param: Param,
+    /// The target.
+    pub target: Target,
+    /// The range scanned.
+    pub range: (f64, f64),
+    /// The roots.
+    pub roots: Vec<Root>,
+}
+
+/// The scan grid over [lo, hi] within `domain`: logarithmic when both ends are positive and more
+/// than a decade apart; from 0, the point 0 then a logarithmic grid from 1e-15 of `hi`; else linear.
+fn scan_grid(lo: f64, hi: f64, points: usize) -> Vec<f64> {
+    let n = points.max(2);
+    let log = |a: f64, b: f64, n: usize| -> Vec<f64> {
+        let (la, lb) = (a.ln(), b.ln());
+        (0..n)
+            .map(|i| {
+                if i == 0 {
+                    a
+                } else if i + 1 == n {
+                    b
+                } else {
+                    (la + (lb - la) * i as f64 / (n - 1) as f64)
+                        .exp()
+                        .clamp(a, b)
+                }
+            })
+            .collect()
+    };
+    if lo > 0.0 && hi / lo > 10.0 {
+        log(lo, hi, n)
+    } else if lo == 0.0 && hi > 0.0 {
+        let start = (hi * 1e-15).max(f64::MIN_POSITIVE);
+        std::iter::once(0.0).chain(log(start, hi, n - 1)).collect()
+    } else {
+        (0..n)
+            .map(|i| {
+                if i + 1 == n {
+                    hi
+                } else {
+                    lo + (hi - lo) * i as f64 / (n - 1) as f64
+                }
+            })
+            .collect()
+    }
+}
+
+/// The range a search covers: `range` checked against the parameter's domain, or the whole domain
+/// (for the Poisson ratio, up to the largest value below 0.5).
+fn search_range(param: Param, range: Option<(f64, f64)>) -> Result<(f64, f64), TargetError> {
+    let spec = param.spec();
+    let domain = spec.domain;
+    let (lo, hi) = match range {
+        Some(r) => r,
+        None => (domain.min(), domain.clamp(domain.max())),
+    };
+    for value in [lo, hi] {
+        if !domain.contains(value) {
+            return Err(TargetError::Range {
+                param: spec.name,
+                reason: format!("{} {}", Compact(value), domain.refusal(value, spec.unit)),
+            });
+        }
+    }
+    if lo >= hi {
+        return Err(TargetError::Range {
+            param: spec.name,
+            reason: format!("from = {} must be below to = {}", Compact(lo), Compact(hi)),
+        });
+    }
+    Ok((lo, hi))
+}
+
+/// The last point of [a, b] where `holds` (true at `a`, false at `b`), by bisection to 1e-12
+/// relative: where a plateau ends.
+fn edge(holds: &impl Fn(f64) -> bool, mut a: f64, mut b: f64) -> f64 {
+    while b - a > 1e-12 * a.abs().max(b.abs()) {
+        let mid = 0.5 * (a + b);
+        if mid <= a || mid >= b {
+            break;
+        }
+        if holds(mid) {
+            a = mid;
+        } else {
+            b = mid;
+        }
+    }
+    a
+}
+
+/// Solves for the values of `param` in `range` (default: its whole domain) at which `target`'s
+/// quantity equals the target value, all other inputs as in `model`.
+///
+/// # Errors
+/// A quantity of the other model, a range outside the domain, no crossing in the range, or a
+/// quantity undefined everywhere.
+///
+/// # Examples
+/// ```
+/// use microslip::model::inputs::Inputs;
+/// use microslip::model::params::{BeamParam, ModelKind, Param};
+/// use microslip::model::target::{Target, solve_for_target};
+/// let model = Inputs::paper(ModelKind::Beam).validate()?;
+/// let target = Target::parse("ratio=1.01", ModelKind::Beam)?;
+/// let solved = solve_for_target(&model, Param::Beam(BeamParam::Stiffness), target, None)?;
+/// assert_eq!(solved.roots.len(), 1);
+/// assert!((solved.roots[0].value - 423.0).abs() < 1.0); // MPa/mm
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn solve_for_target(
+    model: &Model,
+    param: Param,
+    target: Target,
+    range: Option<(f64, f64)>,
+) -> Result<Solved, TargetError> {
+    let kind = model.kind();
+    let quantity = target.quantity;
+    let name = quantity.name(kind);
+    if !quantity.applies_to(kind) || param.model() != kind {
+        return Err(TargetError::Quantity {
+            name: name.to_string(),
+            kind,
+        });
+    }
+    let range = search_range(param, range)?;
+    let at = |x: f64| quantity.evaluate(&model.with_clamped(param, x));
+    // The misfit, relative where the target is not zero so that Brent sees numbers near 1.
+    let misfit = |y: f64| {
+        if target.value != 0.0 {
+            y / target.value - 1.0
+        } else {
+            y
+        }
+    };
+    let grid = scan_grid(range.0, range.1, SCAN_POINTS);
+    let values: Vec<(f64, Option<f64>)> = grid.iter().map(|&x| (x, at(x))).collect();
+    let defined: Vec<(f64, f64)> = values
+        .iter()
+        .filter_map(|&(x, y)| y.map(|y| (x, y)))
+        .collect();
+    let (Some(first), Some(last)) = (defined.first(), defined.last()) else {
+        return Err(TargetError::Undefined {
+            param: param.name(),
+            quantity: name,
+        });
+    };
+    let mut roots: Vec<Root> = Vec::new();
+    for pair in values.windows(2) {
+        let ((a, ya), (b, yb)) = (pair[0], pair[1]);
+        let (Some(ya), Some(yb)) = (ya, yb) else {
+            continue;
+        };
+        let (fa, fb) = (misfit(ya), misfit(yb));
+        let on_target = |x: f64| at(x).is_some_and(|y| misfit(y) == 0.0);
+        if fa == 0.0 {
+            // A run of grid points on the target (a plateau, e.g. X = L below the onset of
+            // macroslip) is one answer: the interval, its ends found by bisection.
+            let end = if fb == 0.0 { b } else { edge(&on_target, a, b) };
+            match roots.last_mut() {
+                Some(last) if last.plateau && last.bracket.1 == a => {
+                    last.bracket.1 = end;
+                    last.value = end;
+                }
+                _ => roots.push(Root::plateau((a, end), end, ya)),
+            }
+            continue;
+        }
+        if fb == 0.0 {
+            // A plateau starts inside (a, b]: its lower end.
+            let start = edge(&|x| !on_target(x), a, b);
+            roots.push(Root::plateau((start, b), b, yb));
+            continue;
+        }
+        if fa.signum() == fb.signum() {
+            continue;
+        }
+        let x = find_root_in_bracket(|x| at(x).map_or(f64::NAN, misfit), a, b);
+        let achieved = at(x).unwrap_or(f64::NAN);
+        let certified = misfit(achieved).abs()
+            <= if target.value != 0.0 {
+                ROOT_CHECK
+            } else {
+                ROOT_CHECK * ya.abs().max(yb.abs())
+            };
+        roots.push(Root {
+            value: x,
+            bracket: (a, b),
+            achieved,
+            certified,
+            plateau: false,
+        });
+    }
+    if let Some(&(x, y)) = defined.last()
+        && misfit(y) == 0.0
+        && roots.last().is_none_or(|r| r.bracket.1 != x)
+    {
+        roots.push(Root::plateau((x, x), x, y));
+    }
+    if roots.is_empty() {
+        let (min, max) = defined
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(_, y)| {
+                (lo.min(y), hi.max(y))
+            });
+        return Err(TargetError::NoRoot {
+            param: param.name(),
+            unit: match param.unit() {
+                super::params::Unit::Dimensionless => "",
+                super::params::Unit::Millimetre => " mm",
+                super::params::Unit::Newton => " N",
+                super::params::Unit::Megapascal => " MPa",
+                super::params::Unit::MegapascalPerMillimetre => " MPa/mm",
+            },
+            quantity: name,
+            target: target.value,
+            range,
+            ends: (first.1, last.1),
+            extremes: (min, max),
+        });
+    }
+    Ok(Solved {
+        param,
+        target,
+        range,
+        roots,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::inputs::Inputs;
+    use crate::model::params::{BeamParam, PlateParam};
+
+    fn beams() -> Model {
+        Inputs::paper(ModelKind::Beam).validate().unwrap()
+    }
+
+    #[test]
+    fn grids_cover_the_range_and_are_increasing() {
+        for (lo, hi) in [
+            (1e-6, 1e12),
+            (0.0, 1e12),
+            (0.0, 0.5f64.next_down()),
+            (1.0, 2.0),
+        ] {
+            let g = scan_grid(lo, hi, 50);
+            assert_eq!((g[0], *g.last().unwrap()), (lo, hi));
+            assert!(g.windows(2).all(|w| w[0] < w[1]), "{lo} {hi}");
+        }
+    }
+
+    #[test]
+    fn targets_parse_and_name_their_quantities() {
+        let t = Target::parse("ratio=1.01", ModelKind::Beam).unwrap();
+        assert_eq!((t.quantity, t.value), (Quantity::Ratio, 1.01));
+        assert_eq!(
+            Target::parse(" X_r = 9.5", ModelKind::Plate)
+                .unwrap()
+                .quantity,
+            Quantity::MicroEnd
+        );
+        assert_eq!(
+            Target::parse("w(L)=0.1", ModelKind::Plate)
+                .unwrap_err()
+                .to_string(),
+            "unknown quantity 'w(L)' for the plate model (allowed: u(L) X_r ratio)"
+        );
+        assert!(Target::parse("ratio", ModelKind::Beam).is_err());
+        assert!(Target::parse("ratio=nan", ModelKind::Beam).is_err());
+    }
+
+    #[test]
+    fn a_target_out_of_reach_says_what_the_range_gives() {
+        let err = solve_for_target(
+            &beams(),
+            Param::Beam(BeamParam::Stiffness),
+            Target::parse("ratio=0.5", ModelKind::Beam).unwrap(),
+            None,
+        )
+        .unwrap_err();
+        assert!(
+            err.to_string()
+                .starts_with("no KT in [1e-6, 1e12] MPa/mm gives ratio = 0.5"),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn every_root_is_a_root_and_the_range_is_respected() {
+        // X vs F on the beams: X = L up to F_1, then falls: X = 100 mm has exactly one F.
+        let solved = solve_for_target(
+            &beams(),
+            Param::Beam(BeamParam::Force),
+            Target::parse("X=100", ModelKind::Beam).unwrap(),
+            Some((0.0, 1000.0)),
+        )
+        .unwrap();
+        assert_eq!(solved.roots.len(), 1);
+        let root = solved.roots[0];
+        assert!(root.certified && (root.achieved - 100.0).abs() < 1e-6);
+        let plate = Inputs::paper(ModelKind::Plate).validate().unwrap();
+        assert!(
+            solve_for_target(
+                &plate,
+                Param::Plate(PlateParam::Stiffness),
+                Target::parse("X_r=9", ModelKind::Plate).unwrap(),
+                Some((1.0, 0.5)),
+            )
+            .is_err()
+        );
+    }
+}

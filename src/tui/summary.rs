@@ -1,0 +1,227 @@
+//! The lines of the regime pane and what each means: shared by the pane, the explanation of `i`
+//! and the app (which moves through them). Text only, no drawing.
+
+use crate::curves::{beam_point, plate_point};
+use crate::model::inputs::Model;
+use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
+use crate::report::number;
+
+/// One line of the regime pane: its text (a regime line has a label and a styled value) and what
+/// it means, in words for someone who has not read the paper (`i`, and the spare height of tall
+/// screens).
+pub struct SummaryLine {
+    /// The text, or the label of a regime line.
+    pub text: String,
+    /// The regime, for regime lines.
+    pub regime: Option<String>,
+    /// What the line means.
+    pub meaning: &'static str,
+}
+
+fn plain(text: String, meaning: &'static str) -> SummaryLine {
+    SummaryLine {
+        text,
+        regime: None,
+        meaning,
+    }
+}
+
+fn regime_line(label: &str, regime: String, meaning: &'static str) -> SummaryLine {
+    SummaryLine {
+        text: format!("{label:<12}"),
+        regime: Some(regime),
+        meaning,
+    }
+}
+
+/// The lines of the regime pane for `model`.
+pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
+    const RATIO: &str =
+        "regularized / Coulomb: 1.01 means 1 % more than under the plain Coulomb law";
+    const SATURATION: &str = "mu P / K_T: the elastic slip at which the regularized law reaches the \
+         Coulomb stress mu P";
+    match model {
+        Model::Beam { beams, force } => {
+            let row = beam_point(beams, *force);
+            let ratio = if row.w_coulomb > 0.0 {
+                number(row.w_regularized / row.w_coulomb)
+            } else {
+                "- (no load)".into()
+            };
+            // At zero load nothing is loaded, whatever the law: say so rather than "microslip".
+            let (coulomb, regularized, heading) = if row.force == 0.0 {
+                (
+                    "unloaded".to_string(),
+                    "unloaded".to_string(),
+                    "At F = 0 N: no load, no slip".to_string(),
+                )
+            } else {
+                (
+                    row.regime_coulomb.to_string(),
+                    row.regime_regularized.to_string(),
+                    format!("At F = {} N (tip force)", number(row.force)),
+                )
+            };
+            vec![
+                plain(
+                    heading,
+                    "the tip force on each beam; every line below is at this force",
+                ),
+                regime_line(
+                    "Coulomb",
+                    coulomb,
+                    "plain Coulomb law: stick (nothing slips) below F_thre, the whole interface \
+                     slides (macroslip) above it",
+                ),
+                regime_line(
+                    "regularized",
+                    regularized,
+                    "regularized law (tau = K_T x slip up to mu P): microslip = every point slips \
+                     elastically; +macroslip = the part near the free end slides at mu P",
+                ),
+                plain(
+                    format!("F_thre {} N: all slides", number(beams.threshold_force())),
+                    "Coulomb threshold 4 mu b h P / 3: above it the whole interface slides",
+                ),
+                plain(
+                    format!(
+                        "F_1 {} N: tip slides",
+                        number(beams.first_macroslip_force())
+                    ),
+                    "regularized law: above F_1 macroslip starts at the free end (x = L) and \
+                     spreads toward the clamp",
+                ),
+                plain(
+                    format!("X = {} mm from clamp", number(row.micro_end)),
+                    "X: where microslip ends and macroslip begins, measured from the clamp \
+                     (x = 0); X = L: no macroslip",
+                ),
+                plain(
+                    format!("w(L) Coulomb {} mm", number(row.w_coulomb)),
+                    "tip deflection under the plain Coulomb law",
+                ),
+                plain(
+                    format!("w(L) regularized {} mm", number(row.w_regularized)),
+                    "tip deflection under the regularized law",
+                ),
+                plain(format!("ratio to Coulomb {ratio}"), RATIO),
+                plain(
+                    format!(
+                        "saturation slip {} um",
+                        number(mm_to_um(beams.saturation_slip()))
+                    ),
+                    SATURATION,
+                ),
+                plain(
+                    format!(
+                        "K_T = {} MPa/um",
+                        number(mpa_per_mm_to_mpa_per_um(
+                            beams.params().tangential_stiffness
+                        ))
+                    ),
+                    "K_T in the unit some FE codes use: 1 MPa/um = 1000 MPa/mm",
+                ),
+            ]
+        }
+        Model::Plate(plate) => {
+            let row = plate_point(plate);
+            let ratio = if row.u_coulomb > 0.0 {
+                number(row.u_regularized / row.u_coulomb)
+            } else {
+                "-".into()
+            };
+            let pressure = plate.contact_pressure();
+            let onset = match plate.macroslip_onset_stiffness() {
+                Some(kt) => format!("macroslip K_T > {} MPa/mm", number(kt)),
+                None => "no macroslip at any K_T".into(),
+            };
+            vec![
+                regime_line(
+                    "Coulomb",
+                    row.regime_coulomb.to_string(),
+                    "plain Coulomb law: stick near the centre, sliding (macroslip) near the free end",
+                ),
+                regime_line(
+                    "regularized",
+                    row.regime_regularized.to_string(),
+                    "regularized law: microslip = every point slips elastically; +macroslip = \
+                     the part near the free end slides at mu P",
+                ),
+                plain(
+                    format!("X_s = {} mm stick end", number(row.stick_end)),
+                    "Coulomb law: the plate sticks from the centre (x = 0) to X_s, slides beyond",
+                ),
+                plain(
+                    format!("X_r = {} mm microslip end", number(row.micro_end)),
+                    "regularized law: microslip from the centre to X_r, macroslip beyond; \
+                     X_r = L: no macroslip",
+                ),
+                plain(
+                    onset,
+                    "the K_T above which macroslip appears at the free end (closed form, \
+                     theory (P11)): the plate's F_1",
+                ),
+                plain(
+                    format!("u(L) Coulomb {} mm", number(row.u_coulomb)),
+                    "displacement of the free end under the plain Coulomb law",
+                ),
+                plain(
+                    format!("u(L) regularized {} mm", number(row.u_regularized)),
+                    "displacement of the free end under the regularized law",
+                ),
+                plain(format!("ratio to Coulomb {ratio}"), RATIO),
+                plain(
+                    format!(
+                        "saturation slip {} um",
+                        number(mm_to_um(plate.saturation_slip()))
+                    ),
+                    SATURATION,
+                ),
+                plain(
+                    format!(
+                        "P_r/P {} to {}",
+                        number(pressure.ratio(0.0)),
+                        number(pressure.ratio(plate.params().half_length))
+                    ),
+                    "contact pressure over the applied pressure, centre to free end (flat plate, \
+                     saturated friction)",
+                ),
+                plain(
+                    format!(
+                        "constant P: {}",
+                        crate::report::pressure_verdict_short(&pressure)
+                    ),
+                    "the closed forms assume P constant under the plate; fails when P_r deviates \
+                     by more than 3 % on average or 50 % at its peak (centre or free end)",
+                ),
+                plain(
+                    format!(
+                        "strip theory {}",
+                        crate::report::strip_validity_short(&plate.validity())
+                    ),
+                    "the closed forms treat the plate as a strip (u uniform through t_p); this \
+                     says how far a 2-D continuum differs",
+                ),
+            ]
+        }
+    }
+}
+
+/// `text` cut into lines of at most `width` characters at spaces.
+pub fn wrap_words(text: &str, width: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut current = String::new();
+    for word in text.split(' ') {
+        if !current.is_empty() && current.len() + 1 + word.len() > width {
+            lines.push(std::mem::take(&mut current));
+        }
+        if !current.is_empty() {
+            current.push(' ');
+        }
+        current.push_str(word);
+    }
+    if !current.is_empty() {
+        lines.push(current);
+    }
+    lines
+}

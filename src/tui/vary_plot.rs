@@ -1,0 +1,131 @@
+//! The chart of `v`: the response (w(L) of the beams, u(L) of the plate) against the selected
+//! parameter, both laws, with the cursor at the current value. Numbers from
+//! [`crate::curves::response_vs_param`]; axes and series from [`super::plots`].
+
+use super::plots::{Plot, cursor, line, linear_axis, log_axis, max_y, samples};
+use crate::curves::{Spacing, response_vs_param};
+use crate::model::inputs::Model;
+use crate::model::params::{BeamParam, Domain, Param, Step};
+
+/// The range charted for `param` around its current `value`: the step's natural span (a decade
+/// each way for multiplicative parameters, 0 to 3 F_thre or 1.25 F for the force, the whole range
+/// of nu), inside the domain; and whether the axis is logarithmic.
+fn range(model: &Model, param: Param, value: f64) -> (f64, f64, bool) {
+    let spec = param.spec();
+    let domain = spec.domain;
+    match spec.step {
+        Step::Factor { .. } => {
+            let lo = domain.clamp(value / 10.0);
+            let hi = domain.clamp(value * 10.0);
+            (lo, hi, true)
+        }
+        Step::Add { min, max, .. } => (min, max, false),
+        Step::FractionOfScale { .. } => {
+            let scale = match (model, param) {
+                (Model::Beam { beams, .. }, Param::Beam(BeamParam::Force)) => {
+                    beams.threshold_force()
+                }
+                _ => value,
+            };
+            let hi = Domain::FORCE.clamp((3.0 * scale).max(1.25 * value));
+            (0.0, if hi > 0.0 { hi } else { 1.0 }, false)
+        }
+    }
+}
+
+/// w(L) or u(L) against `param`, Coulomb and regularized, cursor at the current value.
+pub fn build(model: &Model, param: Param) -> Plot {
+    let (response, law) = match model {
+        Model::Beam { .. } => ("w(L)", "w(L) (mm)"),
+        Model::Plate(_) => ("u(L)", "u(L) (mm)"),
+    };
+    let value = model.inputs().get(param).unwrap_or(f64::NAN);
+    let (lo, hi, log) = range(model, param, value);
+    let spacing = if log {
+        Spacing::Logarithmic
+    } else {
+        Spacing::Linear
+    };
+    let unit = match param.unit().symbol() {
+        "-" => String::new(),
+        u => format!(" ({u})"),
+    };
+    let title = format!("{response} vs {param}, others fixed (v: back)");
+    let curves = samples(lo, hi, spacing).and_then(|s| response_vs_param(model, param, s).ok());
+    let Some((coulomb, regularized)) = curves else {
+        return Plot {
+            title: format!("{response} vs {param}: no range to chart"),
+            x: linear_axis("-", 0.0, 1.0),
+            y: linear_axis("-", 0.0, 1.0),
+            ..Plot::default()
+        };
+    };
+    let y_top = max_y([&coulomb, &regularized]) * 1.05;
+    let to_x = |x: f64| if log { x.log10() } else { x };
+    let plotted = |series: Vec<(f64, f64)>| series.into_iter().map(|(x, y)| (to_x(x), y)).collect();
+    let x_title = format!("{param}{unit}");
+    let x = if log {
+        log_axis(x_title, lo.log10(), hi.log10())
+    } else {
+        linear_axis(x_title, lo, hi)
+    };
+    let y = linear_axis(law, 0.0, y_top);
+    let mut series = vec![
+        line("Coulomb", plotted(coulomb)),
+        line("regularized", plotted(regularized)),
+    ];
+    if value.is_finite() {
+        series.push(cursor(to_x(value), y.bounds));
+    }
+    Plot {
+        title,
+        x,
+        y,
+        series,
+        table: None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::inputs::Inputs;
+    use crate::model::params::ModelKind;
+
+    #[test]
+    fn every_parameter_of_both_models_charts_with_finite_points() {
+        for kind in ModelKind::ALL {
+            let model = Inputs::paper(kind).validate().unwrap();
+            for &param in kind.params() {
+                let plot = build(&model, param);
+                assert_eq!(plot.series.len(), 3, "{param}");
+                assert!(plot.x.bounds[0] < plot.x.bounds[1], "{param}");
+                for s in &plot.series {
+                    assert!(
+                        s.points.iter().all(|p| p.0.is_finite() && p.1.is_finite()),
+                        "{param}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_chart_of_mu_at_120_n_agrees_with_the_model() {
+        // Task 2 of issue 16, as the chart shows it.
+        let mut inputs = Inputs::paper(ModelKind::Beam);
+        inputs.set(Param::Beam(BeamParam::Force), 120.0).unwrap();
+        let model = inputs.validate().unwrap();
+        let plot = build(&model, Param::Beam(BeamParam::Friction));
+        let regularized = &plot.series[1].points;
+        for &(x, w) in regularized.iter().step_by(37) {
+            let mu = 10f64.powf(x);
+            let direct = model.with_clamped(Param::Beam(BeamParam::Friction), mu);
+            let Model::Beam { beams, force } = direct else {
+                panic!()
+            };
+            let expected = beams.regularized(force).tip_deflection();
+            assert!((w / expected - 1.0).abs() < 1e-9, "mu {mu}");
+        }
+    }
+}
