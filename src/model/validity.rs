@@ -150,11 +150,8 @@ mod tests {
     use crate::PlateParams;
 
     fn plate(kt: f64) -> SqueezedPlate {
-        SqueezedPlate::new(PlateParams {
-            tangential_stiffness: kt,
-            ..PlateParams::PAPER
-        })
-        .unwrap()
+        let paper = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        paper.with_tangential_stiffness(kt).unwrap()
     }
 
     #[test]
