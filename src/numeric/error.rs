@@ -21,4 +21,7 @@ pub enum NumericError {
     /// A load that is not a finite number.
     #[error("invalid load {0}: must be finite")]
     BadLoad(f64),
+    /// Inputs the solver does not handle (the message says which and why).
+    #[error("{0}")]
+    OutOfRange(String),
 }

@@ -57,6 +57,12 @@ pub struct ContinuumPlate {
     pub iterations: usize,
 }
 
+/// Largest alpha t_p the solver accepts (K_T = 1.5e8 MPa/mm for the paper's plate): Newton stops
+/// converging somewhere below 51 (the paper's plate at K_T = 1e9 MPa/mm fails after 1.5 s), while
+/// the answer has nearly stopped changing (u(L) mean 1.2329e-5 mm at alpha t_p = 5.1, 1.2141e-5 at
+/// 16.1: 1.5 %).
+const MAX_THICKNESS_OVER_LAYER: f64 = 20.0;
+
 /// Fixed-point iterations allowed on the contact forces.
 const MAX_PRESSURE_ITERATIONS: usize = 60;
 /// Relative change of the contact forces that ends the fixed point.
@@ -70,6 +76,21 @@ pub fn solve_plate_continuum(
     params: PlateParams,
     mesh: ContinuumMesh,
 ) -> Result<ContinuumPlate, NumericError> {
+    let p = &params;
+    let ratio = ((1.0 - p.poisson * p.poisson) * p.tangential_stiffness
+        / (p.youngs_modulus * p.thickness))
+        .sqrt()
+        * p.thickness;
+    if !(ratio <= MAX_THICKNESS_OVER_LAYER) {
+        return Err(NumericError::OutOfRange(format!(
+            "K_T = {} MPa/mm is too stiff for the continuum solver: alpha t_p = {:.3} > {}, where \
+             Newton no longer converges; the interface is then Coulomb-like (the continuum u(L) \
+             changes by 1.5 % between alpha t_p = 5 and 16)",
+            crate::model::params::Compact(p.tangential_stiffness),
+            ratio,
+            MAX_THICKNESS_OVER_LAYER
+        )));
+    }
     let grid = Grid::new(&params, mesh);
     let pressure = params.pressure;
     // Start from the strip theory's contact force: P times each node's share of the face.
@@ -147,7 +168,8 @@ impl Grid {
             .sqrt();
         // As the CalculiX decks (`fe::deck`): 1/(10 alpha) or half a layer at the free end, growing
         // by 20 % per element to half the thickness (or L/50).
-        let finest = (0.1 / alpha).min(0.5 * layer * refinement) / refinement;
+        let finest =
+            (0.1 / alpha).clamp(layer * refinement / 8.0, 0.5 * layer * refinement) / refinement;
         let coarsest = (p.thickness / (2.0 * refinement))
             .max(p.half_length / (50.0 * refinement))
             .max(finest);
@@ -518,5 +540,29 @@ mod tests {
         newton::load_to(&mut model, 10.0, 1).unwrap();
         let total: f64 = model.face_reactions().iter().sum();
         assert!((total / (10.0 * 10.0) - 1.0).abs() < 1e-9, "{total}");
+    }
+}
+
+#[cfg(test)]
+mod limits {
+    use super::*;
+
+    #[test]
+    fn a_too_stiff_interface_is_refused_at_once_with_its_reason() {
+        let params = PlateParams {
+            tangential_stiffness: 1e10,
+            ..PlateParams::PAPER
+        };
+        let error = solve_plate_continuum(params, ContinuumMesh::default()).unwrap_err();
+        assert!(
+            error.to_string().contains("alpha t_p = 161.245 > 20"),
+            "{error}"
+        );
+        // Just inside the limit it solves.
+        let inside = PlateParams {
+            tangential_stiffness: 1.4e8,
+            ..PlateParams::PAPER
+        };
+        assert!(solve_plate_continuum(inside, ContinuumMesh::default()).is_ok());
     }
 }
