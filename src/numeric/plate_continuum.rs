@@ -81,7 +81,7 @@ pub fn solve_plate_continuum(
         / (p.youngs_modulus * p.thickness))
         .sqrt()
         * p.thickness;
-    if !(ratio <= MAX_THICKNESS_OVER_LAYER) {
+    if ratio > MAX_THICKNESS_OVER_LAYER {
         return Err(NumericError::OutOfRange(format!(
             "K_T = {} MPa/mm is too stiff for the continuum solver: alpha t_p = {:.3} > {}, where \
              Newton no longer converges; the interface is then Coulomb-like (the continuum u(L) \
