@@ -71,11 +71,14 @@ const PRESSURE_TOLERANCE: f64 = 1e-9;
 /// Solves the plate of `params` under its pressure P.
 ///
 /// # Errors
-/// [`NumericError`] when Newton or the fixed point does not converge.
+/// [`NumericError::OutOfRange`] for inputs outside their domains or an interface too stiff for it
+/// (alpha t_p > 20); other [`NumericError`]s when Newton or the fixed point does not converge.
 pub fn solve_plate_continuum(
     params: PlateParams,
     mesh: ContinuumMesh,
 ) -> Result<ContinuumPlate, NumericError> {
+    // Only accepted inputs (every one finite and in its domain) reach the mesh.
+    crate::SqueezedPlate::new(params).map_err(|e| NumericError::OutOfRange(e.to_string()))?;
     let p = &params;
     let ratio = ((1.0 - p.poisson * p.poisson) * p.tangential_stiffness
         / (p.youngs_modulus * p.thickness))
