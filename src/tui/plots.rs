@@ -30,6 +30,25 @@ pub struct Axis {
     pub bounds: [f64; 2],
     /// Tick labels, evenly spaced from min to max.
     pub labels: Vec<String>,
+    /// True when the plotted units are log10 of the values (the labels show the values).
+    pub log: bool,
+}
+
+impl Axis {
+    /// `count` tick labels evenly spaced from min to max (at least the axis's own three): large
+    /// charts get more ticks.
+    pub fn ticks(&self, count: usize) -> Vec<String> {
+        if count <= self.labels.len() {
+            return self.labels.clone();
+        }
+        let [lo, hi] = self.bounds;
+        (0..count)
+            .map(|i| {
+                let v = lo + (hi - lo) * i as f64 / (count - 1) as f64;
+                tick(if self.log { 10f64.powf(v) } else { v })
+            })
+            .collect()
+    }
 }
 
 /// How a series is drawn.
@@ -175,6 +194,7 @@ pub(super) fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
         title: title.into(),
         bounds: [lo, hi],
         labels: [lo, 0.5 * (lo + hi), hi].iter().map(|&v| tick(v)).collect(),
+        log: false,
     }
 }
 
@@ -188,6 +208,7 @@ pub(super) fn log_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
         title: title.into(),
         bounds: [lo, hi],
         labels,
+        log: true,
     }
 }
 

@@ -25,7 +25,12 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
         Some(param) => format!("vs {param} (v or c: back to {name})"),
         None => format!("{name} ({position}/{count}, c cycles)"),
     };
-    let block = pane(app, &title);
+    let mut block = pane(app, &title);
+    if plot.table.is_none() {
+        // The x axis's title on the pane's lower border, not on the chart's bottom row, where it
+        // would hide a curve lying along y = 0 (u(L) under Coulomb on the plate's K_T axis).
+        block = block.title_bottom(Line::from(format!(" {} ", plot.x.title)).right_aligned());
+    }
     let inner = block.inner(area);
     frame.render_widget(block, area);
     if let Some(table) = &plot.table {
@@ -60,7 +65,7 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
     if theme.symbol_mode() {
         draw_with_symbols(frame.buffer_mut(), plot, &theme, body);
     } else {
-        chart(plot, &theme, colour_datasets(plot, &theme)).render(body, frame.buffer_mut());
+        chart(plot, &theme, colour_datasets(plot, &theme), body).render(body, frame.buffer_mut());
     }
 }
 
@@ -114,23 +119,34 @@ fn colour_datasets<'a>(plot: &'a Plot, theme: &Theme) -> Vec<Dataset<'a>> {
         .collect()
 }
 
-/// A ratatui Chart of `datasets` with the plot's axes and no built-in legend.
-fn chart<'a>(plot: &'a Plot, theme: &Theme, datasets: Vec<Dataset<'a>>) -> Chart<'a> {
-    let axis = |a: &'a plots::Axis| {
+/// Tick labels along an axis `cells` long: three on small charts, five or seven on large ones
+/// (at 200x60 the chart is about 150 columns by 50 rows).
+fn tick_count(cells: u16, per_tick: u16) -> usize {
+    match cells / per_tick {
+        0..=2 => 3,
+        3..=5 => 5,
+        _ => 7,
+    }
+}
+
+/// A ratatui Chart of `datasets` with the plot's axes (more ticks on larger `area`s) and no
+/// built-in legend.
+fn chart<'a>(plot: &'a Plot, theme: &Theme, datasets: Vec<Dataset<'a>>, area: Rect) -> Chart<'a> {
+    let axis = |a: &'a plots::Axis, count: usize, titled: bool| {
         Axis::default()
-            .title(a.title.as_str())
+            .title(if titled { a.title.as_str() } else { "" })
             .bounds(a.bounds)
             .labels(
-                a.labels
-                    .iter()
-                    .map(|l| Line::from(l.as_str()))
+                a.ticks(count)
+                    .into_iter()
+                    .map(Line::from)
                     .collect::<Vec<_>>(),
             )
             .style(theme.style(Role::Muted))
     };
     Chart::new(datasets)
-        .x_axis(axis(&plot.x))
-        .y_axis(axis(&plot.y))
+        .x_axis(axis(&plot.x, tick_count(area.width, 40), false))
+        .y_axis(axis(&plot.y, tick_count(area.height, 16), true))
         .legend_position(None)
 }
 
@@ -156,7 +172,7 @@ fn draw_with_symbols(buffer: &mut Buffer, plot: &Plot, theme: &Theme, area: Rect
                 .data(&s.points)
         })
         .collect();
-    chart(plot, theme, datasets).render(area, buffer);
+    chart(plot, theme, datasets, area).render(area, buffer);
     for y in area.top()..area.bottom() {
         for x in area.left()..area.right() {
             let cell = &mut buffer[(x, y)];
