@@ -215,7 +215,7 @@ fn write_strip_validity(
 ) {
     let v = plate.validity();
     let expected = v.expected_error.map_or_else(
-        || "over 10 % (measured 3 % to 500 % in this range)".to_string(),
+        || "over 10 % (measured 3 % to 540 % in this range)".to_string(),
         |e| format!("{} %", number_with(100.0 * e, 2)),
     );
     let _ = writeln!(
