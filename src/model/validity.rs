@@ -58,7 +58,7 @@ pub struct PlateValidity {
     /// Expected |u(L) continuum / u(L) strip - 1| (thickness mean), from the calibration
     /// 0.40 (alpha t_p)^2 / (1 - nu)^1.2: an upper bound over everything measured for
     /// alpha t_p <= 0.5 (docs/theory.md, (V1)). `None` beyond, where the difference was measured
-    /// between 3 % and 500 % and no formula captures it (always [`Validity::Outside`]).
+    /// between 3 % and 540 % and no formula captures it (always [`Validity::Outside`]).
     pub expected_error: Option<f64>,
     /// The level of `expected_error`.
     pub validity: Validity,
