@@ -460,23 +460,3 @@ fn workbench_panes_at_80x24_and_200x60_in_both_charsets() {
         shot("target_solved", &app, 80, 24);
     }
 }
-
-/// `y` on w(L) vs F: the K_T family as its difference from Coulomb (relative), then log; on
-/// u(L) vs K_T the default is log, then relative. At 80x24 and 120x40, in both charsets.
-#[test]
-fn y_axis_modes_at_80x24_and_120x40_in_both_charsets() {
-    for (charset, tag) in [(Charset::Unicode, "unicode"), (Charset::Ascii, "ascii")] {
-        let mut app = app_with("paper-beams", charset, true);
-        app.update(Action::CycleYMode);
-        for (width, height) in [(80, 24), (120, 40)] {
-            let text = screen(&app, width, height);
-            assert!(text.contains("w(L) / Coulomb - 1 (%)"), "{text}");
-            insta::assert_snapshot!(format!("relative_w_{width}x{height}_{tag}"), text);
-        }
-        app.update(Action::SwitchModel);
-        app.update(Action::CycleYMode);
-        let text = screen(&app, 80, 24);
-        assert!(text.contains("u(L) / Coulomb - 1 (%)"), "{text}");
-        insta::assert_snapshot!(format!("relative_u_80x24_{tag}"), text);
-    }
-}

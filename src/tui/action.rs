@@ -44,8 +44,6 @@ pub enum Action {
     PreviousChart,
     /// Finite-element points on or off.
     ToggleNumeric,
-    /// The active chart's y axis: linear, log, relative to Coulomb (where offered).
-    CycleYMode,
     /// Twin beams: Euler-Bernoulli or Timoshenko deflection.
     ToggleBeamTheory,
     /// Help overlay on or off.

@@ -750,20 +750,6 @@ impl App {
                     self.info("no finite-element points for this chart (they show on w(L), X and u(L) charts)");
                 }
             }
-            Action::CycleYMode => match self.views.next_y_mode(self.kind) {
-                Some(views) => {
-                    self.views = views;
-                    self.info(format!(
-                        "y axis: {} (y cycles)",
-                        self.views.y_mode(self.kind).label()
-                    ));
-                    self.recompute();
-                }
-                None => self.info(
-                    "this chart has a linear y axis only (log and relative: w(L) vs F, D vs F_a, \
-                     u(L) vs K_T)",
-                ),
-            },
             Action::ToggleBeamTheory => match &mut self.state_mut().inputs {
                 Inputs::Beam { structure, .. } => {
                     structure.theory = structure.theory.other();

@@ -176,12 +176,6 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         Context::Main,
-        &[(KeyCode::Char('y'), NONE)],
-        Action::CycleYMode,
-        "y axis lin/log/rel.",
-    ),
-    bind(
-        Context::Main,
         &[(KeyCode::Char('b'), NONE)],
         Action::ToggleBeamTheory,
         "beam theory E-B/Timo.",

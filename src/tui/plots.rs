@@ -117,8 +117,6 @@ pub struct Views {
     pub beam: View<BeamChart>,
     /// The plate's view.
     pub plate: View<PlateChart>,
-    /// The y axis of each chart that has a choice.
-    pub y: YModes,
 }
 
 impl Default for Views {
@@ -126,97 +124,7 @@ impl Default for Views {
         Views {
             beam: View::first(),
             plate: View::first(),
-            y: YModes::default(),
         }
-    }
-}
-
-/// How a chart's y axis shows its values.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum YMode {
-    /// The values on a linear scale.
-    Linear,
-    /// log10 of the values (non-positive values are not drawn): for quantities spanning decades.
-    Log,
-    /// Each regularized curve as its difference from the Coulomb curve, in % (y / y_Coulomb - 1):
-    /// where the K_T family separates.
-    Relative,
-}
-
-impl YMode {
-    /// A word for the axis title and the status line.
-    pub fn label(self) -> &'static str {
-        match self {
-            YMode::Linear => "linear",
-            YMode::Log => "log",
-            YMode::Relative => "relative to Coulomb",
-        }
-    }
-}
-
-/// The y-axis mode of each chart that offers more than one.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct YModes {
-    /// w(L) vs F.
-    pub deflection: YMode,
-    /// D vs F_a.
-    pub dissipation: YMode,
-    /// u(L) vs K_T.
-    pub displacement: YMode,
-}
-
-impl Default for YModes {
-    /// Log where the quantity spans decades (u(L) vs K_T: 8e-6 to 5e-4 mm for the paper's plate;
-    /// D vs F_a: zero, then growing linearly), linear for w(L) vs F.
-    fn default() -> Self {
-        YModes {
-            deflection: YMode::Linear,
-            dissipation: YMode::Log,
-            displacement: YMode::Log,
-        }
-    }
-}
-
-impl Views {
-    /// The modes the active chart of `kind` offers (empty: only linear) and its current one.
-    fn y_choice(&self, kind: ModelKind) -> (&'static [YMode], Option<YMode>) {
-        // Each chart's own order, its default first.
-        const FAMILY: &[YMode] = &[YMode::Linear, YMode::Relative, YMode::Log];
-        const DECADES: &[YMode] = &[YMode::Log, YMode::Relative, YMode::Linear];
-        const SPAN: &[YMode] = &[YMode::Log, YMode::Linear];
-        match kind {
-            ModelKind::Beam => match self.beam {
-                View::Chart(BeamChart::Deflection) => (FAMILY, Some(self.y.deflection)),
-                View::Chart(BeamChart::Dissipation) => (SPAN, Some(self.y.dissipation)),
-                _ => (&[], None),
-            },
-            ModelKind::Plate => match self.plate {
-                View::Chart(PlateChart::Displacement) => (DECADES, Some(self.y.displacement)),
-                _ => (&[], None),
-            },
-        }
-    }
-
-    /// The y-axis mode of the active chart of `kind` (linear where there is no choice).
-    pub fn y_mode(&self, kind: ModelKind) -> YMode {
-        self.y_choice(kind).1.unwrap_or(YMode::Linear)
-    }
-
-    /// The views with the active chart's y axis moved to its next mode; `None` when the chart has
-    /// only one.
-    pub fn next_y_mode(self, kind: ModelKind) -> Option<Views> {
-        let (modes, current) = self.y_choice(kind);
-        let current = current?;
-        let at = modes.iter().position(|&m| m == current).unwrap_or(0);
-        let next = modes[(at + 1) % modes.len()];
-        let mut views = self;
-        match (kind, self.beam, self.plate) {
-            (ModelKind::Beam, View::Chart(BeamChart::Deflection), _) => views.y.deflection = next,
-            (ModelKind::Beam, View::Chart(BeamChart::Dissipation), _) => views.y.dissipation = next,
-            (ModelKind::Plate, _, _) => views.y.displacement = next,
-            _ => return None,
-        }
-        Some(views)
     }
 }
 
@@ -502,86 +410,7 @@ pub fn build(
             });
         }
     }
-    transform_y(&mut plot, views.y_mode(model.kind()));
     plot
-}
-
-/// Rewrites every series of `plot` for `mode` (linear: unchanged), and the y axis with it. The
-/// cursor keeps its x and spans the new axis.
-fn transform_y(plot: &mut Plot, mode: YMode) {
-    let map: Box<dyn Fn(f64, f64) -> Option<f64>> = match mode {
-        YMode::Linear => return,
-        YMode::Log => Box::new(|_, y: f64| (y > 0.0).then(|| y.log10())),
-        YMode::Relative => {
-            let Some(reference) = plot
-                .series
-                .iter()
-                .find(|s| s.name == "Coulomb" && s.kind == SeriesKind::Line)
-                .map(|s| s.points.clone())
-            else {
-                return;
-            };
-            Box::new(move |x: f64, y: f64| {
-                let c = interpolate(&reference, x)?;
-                (c > 0.0).then(|| 100.0 * (y / c - 1.0))
-            })
-        }
-    };
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for series in plot
-        .series
-        .iter_mut()
-        .filter(|s| s.kind != SeriesKind::Cursor)
-    {
-        series.points = series
-            .points
-            .iter()
-            .filter_map(|&(x, y)| map(x, y).filter(|v| v.is_finite()).map(|v| (x, v)))
-            .collect();
-        for &(_, y) in &series.points {
-            lo = lo.min(y);
-            hi = hi.max(y);
-        }
-    }
-    if mode == YMode::Relative {
-        // The Coulomb curve is the zero line of this view.
-        lo = lo.min(0.0);
-        hi = hi.max(0.0);
-    }
-    let quantity = plot.y.title.split(" (").next().unwrap_or("y").to_string();
-    plot.y = match mode {
-        YMode::Log => {
-            let [lo, hi] = axis_bounds(lo, hi);
-            log_axis(format!("{} (log)", plot.y.title), lo, hi)
-        }
-        _ => {
-            let pad = 0.05 * (hi - lo).abs().max(f64::MIN_POSITIVE);
-            linear_axis(format!("{quantity} / Coulomb - 1 (%)"), lo - pad, hi + pad)
-        }
-    };
-    for series in plot
-        .series
-        .iter_mut()
-        .filter(|s| s.kind == SeriesKind::Cursor)
-    {
-        for point in &mut series.points {
-            point.1 = point.1.clamp(plot.y.bounds[0], plot.y.bounds[1]);
-        }
-        if let [first, last] = series.points.as_mut_slice() {
-            first.1 = plot.y.bounds[0];
-            last.1 = plot.y.bounds[1];
-        }
-    }
-}
-
-/// The y of the polyline `points` (sorted by x) at `x`, linearly interpolated; `None` outside it.
-fn interpolate(points: &[(f64, f64)], x: f64) -> Option<f64> {
-    let i = points.partition_point(|p| p.0 < x);
-    match (i.checked_sub(1).and_then(|j| points.get(j)), points.get(i)) {
-        (_, Some(&(x1, y1))) if x1 == x => Some(y1),
-        (Some(&(x0, y0)), Some(&(x1, y1))) => Some(y0 + (y1 - y0) * (x - x0) / (x1 - x0)),
-        _ => None,
-    }
 }
 
 fn beam_plot(
