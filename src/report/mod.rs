@@ -5,6 +5,7 @@
 //! [`crate::fit`] and [`crate::verify`], the same values the TUI shows. Nothing below this module
 //! imports it.
 
+pub mod chart;
 pub mod compare;
 pub mod csv;
 pub mod json;

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use super::action::Action;
 use super::keymap::Context;
-use super::plots::{self, NumericPoints, Plot, Views};
+use crate::report::chart::{self, NumericPoints, Plot, Views};
 use super::text_input::TextInput;
 use super::theme::Theme;
 use crate::PlateParams;
@@ -159,7 +159,7 @@ pub struct App {
     measurements: Option<Measurements>,
     /// Points of an external FE code loaded with `d` (a CalculiX .dat, or a plate CSV), and the
     /// parameters of the deck they came from.
-    external: Option<(plots::ExternalPoints, Option<Inputs>)>,
+    external: Option<(chart::ExternalPoints, Option<Inputs>)>,
     check_in: fn(),
     undo: Vec<Snapshot>,
     redo: Vec<Snapshot>,
@@ -379,7 +379,7 @@ impl App {
     fn recompute(&mut self) {
         let Some(model) = self.model() else { return };
         if self.show_numeric {
-            match plots::numeric_points(&model, self.views) {
+            match chart::numeric_points(&model, self.views) {
                 Ok(points) => self.numeric = points,
                 Err(e) => {
                     self.numeric = None;
@@ -390,12 +390,12 @@ impl App {
             self.numeric = None;
         }
         if let Some(param) = self.state().varied {
-            self.plot = super::vary_plot::build(&model, param);
+            self.plot = chart::vary::build(&model, param);
             return;
         }
         let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
         let external = self.external.as_ref().map(|(points, _)| points);
-        self.plot = plots::build(
+        self.plot = chart::build(
             &model,
             self.views,
             self.numeric.as_ref(),
@@ -929,7 +929,7 @@ impl App {
         };
         self.info(format!("{path}{adopted}: {summary}"));
         self.external = Some((
-            plots::ExternalPoints {
+            chart::ExternalPoints {
                 label: code.to_string(),
                 model,
                 points,

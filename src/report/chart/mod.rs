@@ -1,5 +1,8 @@
 //! What each chart shows, as plain data (title, axes, series), built from [`crate::curves`]. The
-//! drawing code turns a [`Plot`] into cells and never computes physics itself.
+//! TUI turns a [`Plot`] into cells, the figure writer ([`crate::report::figure`]) into SVG; neither
+//! computes physics itself, so a curve on screen and in a figure are the same numbers.
+
+pub mod vary;
 
 use crate::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::fit::Measurement;
@@ -134,7 +137,7 @@ impl Views {
     }
 }
 
-pub(super) fn line(name: impl Into<String>, points: Series) -> PlotSeries {
+pub fn line(name: impl Into<String>, points: Series) -> PlotSeries {
     PlotSeries {
         name: name.into(),
         points,
@@ -142,7 +145,7 @@ pub(super) fn line(name: impl Into<String>, points: Series) -> PlotSeries {
     }
 }
 
-pub(super) fn cursor(x: f64, [y0, y1]: [f64; 2]) -> PlotSeries {
+pub fn cursor(x: f64, [y0, y1]: [f64; 2]) -> PlotSeries {
     PlotSeries {
         name: "current".into(),
         points: vec![(x, y0), (x, y1)],
@@ -169,7 +172,7 @@ fn axis_bounds(lo: f64, hi: f64) -> [f64; 2] {
     }
 }
 
-pub(super) fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
+pub fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
     let [lo, hi] = axis_bounds(lo, hi);
     Axis {
         title: title.into(),
@@ -179,7 +182,7 @@ pub(super) fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
 }
 
 /// An axis in log10 units, labelled with the values themselves.
-pub(super) fn log_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
+pub fn log_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
     let labels = [lo, 0.5 * (lo + hi), hi]
         .iter()
         .map(|&v| tick(10f64.powf(v)))
@@ -196,7 +199,7 @@ fn tick(value: f64) -> String {
     number_with(value, 3)
 }
 
-pub(super) fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
+pub fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
     series
         .into_iter()
         .flatten()
@@ -215,7 +218,7 @@ fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64, span: Option<f64
     TipForce::clamped(wanted).newtons()
 }
 
-pub(super) fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
+pub fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
     Samples::new(from, to, SAMPLES, spacing).ok()
 }
 
