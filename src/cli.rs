@@ -29,8 +29,10 @@ use crate::model::target::{Target, TargetError, solve_for_target};
 use crate::model::twin_beams::BeamTheory;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
+use crate::report::figure::{self, FigureError};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
 use crate::report::table::{TableFormat, write_json, write_table, write_table_after};
+use crate::report::view::AnyChart;
 use crate::report::{self, json, text};
 use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
@@ -233,6 +235,33 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = CompareFormat::Text)]
         format: CompareFormat,
     },
+    /// Draw a chart of the terminal UI as an SVG figure, or write its data as CSV.
+    Plot {
+        /// The chart (its model's paper preset unless --preset names another).
+        #[arg(value_enum)]
+        chart: AnyChart,
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Add the project's finite-element points (w-vs-f, x-vs-f, tau, loop, u-vs-kt).
+        #[arg(long)]
+        fe: bool,
+        /// Output format (default: csv for a FILE ending in .csv, else svg).
+        #[arg(long, value_enum)]
+        format: Option<FigureFormat>,
+        /// Write to FILE instead of stdout (replaced atomically if it exists).
+        #[arg(short = 'o', long, value_name = "FILE.svg")]
+        output: Option<PathBuf>,
+    },
+    /// Regenerate the paper's figures, the cycle loop and D vs F_a: SVG + CSV each, and an
+    /// index.html that shows them all.
+    Figures {
+        /// The directory to write into (made if missing; files in it are replaced).
+        #[arg(long, value_name = "DIR")]
+        out: PathBuf,
+        /// Leave out the finite-element points (faster).
+        #[arg(long)]
+        no_fe: bool,
+    },
     /// Validate preset files; report every problem; exit 1 if any.
     Check {
         /// Preset files (TOML).
@@ -425,6 +454,32 @@ pub enum CompareFormat {
     Json,
 }
 
+/// Formats of `microslip plot`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FigureFormat {
+    /// An SVG figure: axes with units, legend, the chart's curves and points.
+    Svg,
+    /// The chart's points: series, x, y (with the axis titles).
+    Csv,
+}
+
+impl ValueEnum for AnyChart {
+    fn value_variants<'a>() -> &'a [Self] {
+        AnyChart::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        let model = match self.kind() {
+            ModelKind::Beam => "beam",
+            ModelKind::Plate => "plate",
+        };
+        Some(
+            clap::builder::PossibleValue::new(self.key())
+                .help(format!("{model}: {}", self.title())),
+        )
+    }
+}
+
 /// Why a command failed.
 #[derive(Debug, Error)]
 pub enum CliError {
@@ -496,6 +551,9 @@ pub enum CliError {
     /// A numerical solve failed.
     #[error("numerical solver: {0}")]
     Numeric(#[from] NumericError),
+    /// A figure that cannot be drawn.
+    #[error(transparent)]
+    Figure(#[from] FigureError),
     /// Files with problems (already reported on stdout).
     #[error("{0} of the files checked have problems")]
     CheckFailed(usize),
@@ -764,6 +822,34 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             out.write_all(report::presets::listing(&rows, dir.as_deref()).as_bytes())?
         }
         Some(Command::Check { files }) => check(out, files)?,
+        Some(Command::Plot {
+            chart,
+            inputs,
+            fe,
+            format,
+            output,
+        }) => {
+            let command = match chart.kind() {
+                ModelKind::Beam => "plot (a beam chart)",
+                ModelKind::Plate => "plot (a plate chart)",
+            };
+            let (_, model) = load(inputs, chart.kind(), command)?;
+            let plot = report::chart::figure(&model, *chart, *fe)?;
+            let csv = output
+                .as_deref()
+                .and_then(|p| p.extension())
+                .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+            let bytes = match format.unwrap_or(if csv {
+                FigureFormat::Csv
+            } else {
+                FigureFormat::Svg
+            }) {
+                FigureFormat::Svg => figure::svg(&plot)?.into_bytes(),
+                FigureFormat::Csv => chart_csv(&plot)?,
+            };
+            write_output(out, output.as_deref(), &bytes)?
+        }
+        Some(Command::Figures { out: dir, no_fe }) => run_figures(out, dir, !*no_fe)?,
         Some(Command::Compare {
             model,
             results,
@@ -1270,6 +1356,47 @@ fn run_kt(
         }
         ReportFormat::Json => write_json(out, &json::stiffness_table(&name, &comparison))?,
     }
+    Ok(())
+}
+
+/// A chart's points as CSV (the same rows as the TUI's export).
+fn chart_csv(plot: &report::chart::Plot) -> Result<Vec<u8>, CliError> {
+    let mut bytes = Vec::new();
+    write_table(&mut bytes, TableFormat::Csv, report::rows::chart_rows(plot))?;
+    Ok(bytes)
+}
+
+/// `microslip figures`: every figure of [`figure::PAPER_FIGURES`] as SVG and CSV, then the index.
+fn run_figures(out: &mut impl Write, dir: &std::path::Path, fe: bool) -> Result<(), CliError> {
+    let unwritable = |e: io::Error| CliError::Data {
+        path: dir.display().to_string(),
+        reason: e.to_string(),
+    };
+    std::fs::create_dir_all(dir).map_err(unwritable)?;
+    for f in figure::PAPER_FIGURES {
+        let inputs = InputArgs {
+            preset: Some(f.preset.to_string()),
+            assignments: Vec::new(),
+            beam_theory: None,
+        };
+        let (_, model) = load(&inputs, f.chart.kind(), "figures")?;
+        let plot = report::chart::figure(&model, f.chart, fe && f.finite_elements)?;
+        let svg = dir.join(format!("{}.svg", f.stem));
+        write_output(out, Some(&svg), figure::svg(&plot)?.as_bytes())?;
+        write_output(
+            out,
+            Some(&dir.join(format!("{}.csv", f.stem))),
+            &chart_csv(&plot)?,
+        )?;
+        writeln!(out, "{}  {}", svg.display(), f.chart.title())?;
+    }
+    let index = dir.join("index.html");
+    write_output(
+        out,
+        Some(&index),
+        figure::index_html(figure::PAPER_FIGURES).as_bytes(),
+    )?;
+    writeln!(out, "{}  open it in a browser", index.display())?;
     Ok(())
 }
 

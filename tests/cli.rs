@@ -1486,3 +1486,50 @@ fn the_three_recipes_take_one_command_each() {
     );
     assert!(failure(&["sweep", "plate", "--points", "3"], 2).contains("--kt-from"));
 }
+
+#[test]
+fn plot_writes_an_svg_figure_or_its_data_and_refuses_the_other_models_preset() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("w.svg");
+    let csv = dir.path().join("w.csv");
+    for file in [&svg, &csv] {
+        let path = file.to_str().unwrap();
+        stdout_of(&["plot", "w-vs-f", "--set", "mu=0.2", "--fe", "-o", path]);
+    }
+    let svg = std::fs::read_to_string(svg).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("finite elements"));
+    let csv = std::fs::read_to_string(csv).unwrap();
+    assert!(csv.starts_with("series,x_axis,x,y_axis,y\n"));
+    assert!(csv.contains("\nfinite elements,F (N),"), "{csv}");
+    // The log axis of u(L) vs K_T is written as K_T values, not their logarithms.
+    let data = stdout_of(&["plot", "u-vs-kt", "--format", "csv"]);
+    let first = data.lines().nth(1).unwrap();
+    assert!(
+        first.starts_with("Coulomb,\"K_T (MPa/mm, log)\",100"),
+        "{first}"
+    );
+    let error = failure(&["plot", "u-vs-kt", "--preset", "paper-beams"], 2);
+    assert!(error.contains("plate"), "{error}");
+    let error = failure(&["plot", "nope"], 2);
+    assert!(error.contains("w-vs-f"), "{error}");
+}
+
+#[test]
+fn figures_writes_every_figure_its_data_and_an_index() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("figs");
+    let text = stdout_of(&["figures", "--out", out.to_str().unwrap(), "--no-fe"]);
+    assert!(text.contains("index.html"));
+    let index = std::fs::read_to_string(out.join("index.html")).unwrap();
+    let figures: Vec<&str> = index
+        .split("<img src=\"")
+        .skip(1)
+        .map(|s| s.split('"').next().unwrap())
+        .collect();
+    assert!(figures.len() >= 9, "{figures:?}");
+    for svg in figures {
+        let body = std::fs::read_to_string(out.join(svg)).unwrap();
+        assert!(body.starts_with("<svg"), "{svg}");
+        assert!(out.join(svg.replace(".svg", ".csv")).exists(), "{svg}");
+    }
+}

@@ -8,6 +8,8 @@
 pub mod chart;
 pub mod compare;
 pub mod csv;
+#[cfg(feature = "figures")]
+pub mod figure;
 pub mod json;
 pub mod presets;
 pub mod rows;

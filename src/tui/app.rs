@@ -5,7 +5,6 @@ use std::path::PathBuf;
 
 use super::action::Action;
 use super::keymap::Context;
-use crate::report::chart::{self, NumericPoints, Plot, Views};
 use super::text_input::TextInput;
 use super::theme::Theme;
 use crate::PlateParams;
@@ -14,6 +13,7 @@ use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, Compact, ModelKind, Param, parse_number};
 use crate::model::twin_beams::BeamTheory;
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
+use crate::report::chart::{self, NumericPoints, Plot, Views};
 use crate::report::view::{BeamChart, PlateChart, View};
 use crate::report::{number, number_with};
 
@@ -169,6 +169,8 @@ pub struct App {
     /// axes do not jump; `a` fits it to the current F_thre again.
     force_span: Option<f64>,
     help_page: usize,
+    /// Where `x` writes the chart's SVG and CSV (the working directory unless set).
+    export_dir: PathBuf,
 }
 
 impl App {
@@ -207,6 +209,7 @@ impl App {
             last_target: "ratio=1.01".to_string(),
             force_span: None,
             help_page: 0,
+            export_dir: PathBuf::from("."),
         };
         app.fit_axes();
         app.recompute();
@@ -232,6 +235,81 @@ impl App {
         self.beam.inputs = snapshot.beam;
         self.plate.inputs = snapshot.plate;
         self.kind = snapshot.kind;
+    }
+
+    /// Where `x` writes the exported chart (default: the working directory).
+    pub fn set_export_dir(&mut self, dir: PathBuf) {
+        self.export_dir = dir;
+    }
+
+    /// The file name (without extension) of the chart shown: `microslip-w-vs-f`, or after `v`
+    /// `microslip-w-vs-mu`.
+    fn export_stem(&self) -> String {
+        let chart = match (self.varied(), self.kind) {
+            (Some(param), kind) => {
+                let response = if kind == ModelKind::Beam { "w" } else { "u" };
+                let name = param.to_string().to_ascii_lowercase();
+                let name: String = name
+                    .chars()
+                    .map(|c| if c.is_ascii_alphanumeric() { c } else { '-' })
+                    .collect();
+                format!("{response}-vs-{name}")
+            }
+            (None, ModelKind::Beam) => self.views.beam.key().to_string(),
+            (None, ModelKind::Plate) => self.views.plate.key().to_string(),
+        };
+        format!("microslip-{chart}")
+    }
+
+    /// `x`: the chart shown as an SVG figure and its points as CSV, under the first free name
+    /// (`-2`, `-3`, ... appended); never replaces a file.
+    fn export_chart(&mut self) {
+        use crate::report::figure;
+        use crate::report::table::{TableFormat, write_table};
+        if self.plot.table.is_some() {
+            return self.error("x exports charts; this is a table (microslip kt prints it)");
+        }
+        let svg = match figure::svg(&self.plot) {
+            Ok(svg) => svg,
+            Err(e) => return self.error(e.to_string()),
+        };
+        let mut csv = Vec::new();
+        let rows = crate::report::rows::chart_rows(&self.plot);
+        if let Err(e) = write_table(&mut csv, TableFormat::Csv, rows) {
+            return self.error(format!("export failed: {e}"));
+        }
+        let stem = self.export_stem();
+        for n in 1..=999 {
+            let name = if n == 1 {
+                stem.clone()
+            } else {
+                format!("{stem}-{n}")
+            };
+            let (svg_path, csv_path) = (
+                self.export_dir.join(format!("{name}.svg")),
+                self.export_dir.join(format!("{name}.csv")),
+            );
+            if csv_path.exists() {
+                continue;
+            }
+            let written = crate::file::write_atomic(&svg_path, svg.as_bytes(), false)
+                .and_then(|()| crate::file::write_atomic(&csv_path, &csv, false));
+            match written {
+                Ok(()) => {
+                    return self.info(format!(
+                        "chart exported: {} (+ .csv data)",
+                        svg_path.display()
+                    ));
+                }
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+                Err(e) => {
+                    return self.error(format!("cannot export to {}: {e}", svg_path.display()));
+                }
+            }
+        }
+        self.error(format!(
+            "export: {stem}-2 to -999 all exist; move some away"
+        ));
     }
 
     /// The parameter charted on the x axis, if `v` chose one.
@@ -707,6 +785,7 @@ impl App {
             }
             Action::Undo => self.travel(false),
             Action::Redo => self.travel(true),
+            Action::ExportChart => self.export_chart(),
             Action::Vary => {
                 let param = self.selected_param();
                 let state = self.state_mut();
@@ -1600,5 +1679,39 @@ mod tests {
             app.message().unwrap().text,
             "no user preset directory: set XDG_CONFIG_HOME or HOME"
         );
+    }
+
+    #[test]
+    fn x_exports_the_chart_as_svg_and_csv_without_replacing_files() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut app = app();
+        app.set_export_dir(dir.path().to_path_buf());
+        app.update(Action::ExportChart);
+        let message = app.message().unwrap();
+        assert!(!message.is_error, "{}", message.text);
+        assert!(
+            message.text.contains("microslip-w-vs-f.svg"),
+            "{}",
+            message.text
+        );
+        let svg = std::fs::read_to_string(dir.path().join("microslip-w-vs-f.svg")).unwrap();
+        assert!(svg.contains(&app.plot().title));
+        let csv = std::fs::read_to_string(dir.path().join("microslip-w-vs-f.csv")).unwrap();
+        assert!(
+            csv.starts_with("series,x_axis,x,y_axis,y\nCoulomb,F (N),0"),
+            "{csv}"
+        );
+        // Again: a new name, the first files untouched.
+        app.update(Action::ExportChart);
+        assert!(dir.path().join("microslip-w-vs-f-2.svg").exists());
+        // After v, the file says what is charted; a table is refused with a reason.
+        app.update(Action::Vary);
+        app.update(Action::ExportChart);
+        assert!(dir.path().join("microslip-w-vs-l.csv").exists());
+        app.update(Action::Vary);
+        app.update(Action::PreviousChart);
+        app.update(Action::ExportChart);
+        assert!(app.message().unwrap().is_error);
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 6);
     }
 }

@@ -236,6 +236,12 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         Context::Main,
+        &[(KeyCode::Char('x'), NONE)],
+        Action::ExportChart,
+        "export chart SVG+CSV",
+    ),
+    bind(
+        Context::Main,
         &[(KeyCode::Char('u'), NONE)],
         Action::Undo,
         "undo a change",

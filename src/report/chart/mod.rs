@@ -11,7 +11,7 @@ use crate::model::params::{BeamParam, ModelKind, PlateParam};
 use crate::numeric::{
     ContinuumMesh, MeshDensity, NumericError, PlateFe, TwinBeamsFe, solve_plate_continuum,
 };
-use crate::report::view::{BeamChart, PlateChart, Table, View};
+use crate::report::view::{AnyChart, BeamChart, PlateChart, Table, View};
 use crate::report::{number, number_with};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
@@ -33,6 +33,19 @@ pub struct Axis {
     pub bounds: [f64; 2],
     /// Tick labels, evenly spaced from min to max.
     pub labels: Vec<String>,
+    /// True when the plotted units are log10 of the values (the labels show the values).
+    pub log: bool,
+}
+
+impl Axis {
+    /// The value a plotted coordinate stands for: `10^v` on a log axis, `v` itself otherwise.
+    pub fn value(&self, plotted: f64) -> f64 {
+        if self.log {
+            10f64.powf(plotted)
+        } else {
+            plotted
+        }
+    }
 }
 
 /// How a series is drawn.
@@ -127,6 +140,20 @@ impl Views {
         }
     }
 
+    /// The default views with `chart` shown for its model.
+    pub fn showing(chart: AnyChart) -> Views {
+        match chart {
+            AnyChart::Beam(c) => Views {
+                beam: View::Chart(c),
+                ..Views::default()
+            },
+            AnyChart::Plate(c) => Views {
+                plate: View::Chart(c),
+                ..Views::default()
+            },
+        }
+    }
+
     /// Title, 1-based position and count of `kind`'s view, for the pane title.
     pub fn describe(self, kind: ModelKind) -> (&'static str, usize, usize) {
         let ((position, count), title) = match kind {
@@ -178,6 +205,7 @@ pub fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
         title: title.into(),
         bounds: [lo, hi],
         labels: [lo, 0.5 * (lo + hi), hi].iter().map(|&v| tick(v)).collect(),
+        log: false,
     }
 }
 
@@ -191,6 +219,7 @@ pub fn log_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
         title: title.into(),
         bounds: [lo, hi],
         labels,
+        log: true,
     }
 }
 
@@ -635,6 +664,21 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
             })
         }
     }
+}
+
+/// The chart `chart` of `model` (a model of the chart's kind) as a figure shows it: the TUI's
+/// series, with the finite-element points where asked and the chart has them.
+///
+/// # Errors
+/// The finite-element solver's, when `finite_elements` is asked and it fails.
+pub fn figure(model: &Model, chart: AnyChart, finite_elements: bool) -> Result<Plot, NumericError> {
+    let views = Views::showing(chart);
+    let numeric = if finite_elements {
+        numeric_points(model, views)?
+    } else {
+        None
+    };
+    Ok(build(model, views, numeric.as_ref(), None, None, None))
 }
 
 /// Finite-element points for chart `chart`, where the chart has a finite-element counterpart.
