@@ -142,6 +142,26 @@ pub enum Command {
         /// Poisson ratio for eq. 4 (default: the plate's nu, else 0.3).
         #[arg(long, value_name = "NU", allow_negative_numbers = true)]
         nu: Option<f64>,
+        /// Instead of the table: the smallest K_T for which the regularized w(L) (beams) or u(L)
+        /// (plate) is within T of Coulomb (1% or 0.01), and each FE code's setting for it.
+        #[arg(long, value_name = "T", conflicts_with_all = ["kn", "nu"])]
+        tolerance: Option<String>,
+        /// With --tolerance, beams: lowest tip force checked (N; default: the preset's F).
+        #[arg(
+            long,
+            value_name = "A",
+            allow_negative_numbers = true,
+            requires = "tolerance"
+        )]
+        from: Option<f64>,
+        /// With --tolerance, beams: highest tip force checked (N; default: the preset's F).
+        #[arg(
+            long,
+            value_name = "B",
+            allow_negative_numbers = true,
+            requires = "tolerance"
+        )]
+        to: Option<f64>,
         /// Output format.
         #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
         format: ReportFormat,
@@ -794,9 +814,19 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
         Some(Command::Kt {
             inputs,
             element_size,
+            tolerance: Some(tolerance),
+            from,
+            to,
+            format,
+            ..
+        }) => run_kt_tolerance(out, inputs, *element_size, tolerance, [*from, *to], *format)?,
+        Some(Command::Kt {
+            inputs,
+            element_size,
             kn,
             nu,
             format,
+            ..
         }) => run_kt(out, inputs, *element_size, *kn, *nu, *format)?,
         Some(Command::Cycle {
             amplitude,
@@ -1326,6 +1356,53 @@ fn run_cycle(
     Ok(())
 }
 
+/// The contact element length of `--element-size`, default L/100.
+fn element_size(element: Option<f64>, model: &Model) -> Result<f64, CliError> {
+    match element {
+        Some(e) => check_flag("--element-size", e, Domain::ELEMENT_SIZE, Unit::Millimetre),
+        None => Ok(model.interface().length / 100.0),
+    }
+}
+
+fn run_kt_tolerance(
+    out: &mut impl Write,
+    inputs: &InputArgs,
+    element: Option<f64>,
+    tolerance: &str,
+    [from, to]: [Option<f64>; 2],
+    format: ReportFormat,
+) -> Result<(), CliError> {
+    use crate::model::tolerance::{self, parse_tolerance};
+    let tol = parse_tolerance(tolerance).map_err(CliError::Theory)?;
+    let (name, model) = load_any(inputs, ModelKind::Beam)?;
+    let element = element_size(element, &model)?;
+    let answer = match model {
+        Model::Beam { beams, force } => {
+            let f = force.newtons();
+            let range = [
+                check_flag("--from", from.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
+                check_flag("--to", to.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
+            ];
+            tolerance::beam_stiffness_for_tolerance(&beams, range, tol, element)
+                .map_err(|e| CliError::Theory(e.to_string()))?
+        }
+        Model::Plate(plate) => {
+            if from.is_some() || to.is_some() {
+                return Err(CliError::Usage(
+                    "--from/--to are tip forces of the twin beams; the plate has none",
+                ));
+            }
+            tolerance::plate_stiffness_for_tolerance(&plate, tol, element)
+                .map_err(|e| CliError::Theory(e.to_string()))?
+        }
+    };
+    match format {
+        ReportFormat::Text => out.write_all(text::tolerance(&name, &model, &answer).as_bytes())?,
+        ReportFormat::Json => write_json(out, &json::tolerance(&name, &answer))?,
+    }
+    Ok(())
+}
+
 fn run_kt(
     out: &mut impl Write,
     inputs: &InputArgs,
@@ -1336,10 +1413,7 @@ fn run_kt(
 ) -> Result<(), CliError> {
     let (name, model) = load_any(inputs, ModelKind::Beam)?;
     let data = model.interface();
-    let element = match element {
-        Some(e) => check_flag("--element-size", e, Domain::ELEMENT_SIZE, Unit::Millimetre)?,
-        None => data.length / 100.0,
-    };
+    let element = element_size(element, &model)?;
     let normal = match kn {
         Some(kn) => {
             let kn = check_flag("--kn", kn, Domain::STIFFNESS, Unit::MegapascalPerMillimetre)?;

@@ -1533,3 +1533,57 @@ fn figures_writes_every_figure_its_data_and_an_index() {
         assert!(out.join(svg.replace(".svg", ".csv")).exists(), "{svg}");
     }
 }
+
+#[test]
+fn kt_tolerance_answers_with_the_stiffness_and_each_codes_setting() {
+    let text = stdout_of(&["kt", "--tolerance", "1%"]);
+    assert!(
+        text.contains("within 1 % of Coulomb at F = 100 N"),
+        "{text}"
+    );
+    assert!(text.contains("K_T >= 423.1 MPa/mm"), "{text}");
+    assert!(text.contains("SLIP TOLERANCE <=") && text.contains("stick slope lambda >= 423"));
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "kt",
+        "--tolerance",
+        "0.01",
+        "--from",
+        "0",
+        "--to",
+        "300",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    let kt = json["KT_min_MPa_per_mm"].as_f64().unwrap();
+    assert!((kt - 11412.0).abs() < 1.0, "{kt}");
+    assert_eq!(json["force_range_N"], serde_json::json!([0.0, 300.0]));
+    let plate = stdout_of(&["kt", "--tolerance", "1%", "--preset", "paper-plate"]);
+    assert!(
+        plate.contains("u(L)") && plate.contains("1.885e7"),
+        "{plate}"
+    );
+    for (args, says) in [
+        (&["kt", "--tolerance", "0"][..], "--tolerance"),
+        (&["kt", "--tolerance", "1%", "--from", "-3"], "--from"),
+        (
+            &["kt", "--tolerance", "1%", "--from", "0", "--to", "0"],
+            "no positive force",
+        ),
+        (
+            &[
+                "kt",
+                "--tolerance",
+                "1%",
+                "--preset",
+                "paper-plate",
+                "--to",
+                "5",
+            ],
+            "plate",
+        ),
+    ] {
+        let error = failure(args, 2);
+        assert!(error.contains(says), "{args:?}: {error}");
+    }
+}

@@ -268,6 +268,51 @@ fn cell(value: f64, width: usize) -> String {
         .unwrap_or_else(|| number_with(value, 1))
 }
 
+/// The tolerance the K_T table answers for: 1 % of Coulomb (`microslip kt --tolerance` takes any).
+const TABLE_TOLERANCE: f64 = 0.01;
+
+/// The K_T table's answer to "how stiff for Coulomb within 1 %": the beams at F and over 0..F, the
+/// plate at its pressure.
+fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
+    use crate::model::tolerance::{
+        Threshold, beam_stiffness_for_tolerance, plate_stiffness_for_tolerance,
+    };
+    let shown = |answer: Result<_, _>| match answer
+        .map(|a: crate::model::tolerance::ToleranceAnswer| a.threshold)
+    {
+        Ok(Threshold::Stiffness(k) | Threshold::Everywhere(k)) => format!(">= {}", cell(k, 7)),
+        Ok(Threshold::Nowhere { stiffness, .. }) => format!("> {}", cell(stiffness, 7)),
+        Err(_) => "-".to_string(),
+    };
+    let within = format!(
+        "within {} % of Coulomb: K_T",
+        number(100.0 * TABLE_TOLERANCE)
+    );
+    let heading = format!("W{}", &within[1..]);
+    match model {
+        Model::Beam { beams, force } => {
+            let f = force.newtons();
+            if f <= 0.0 {
+                return vec![format!("{heading}: any, at F = 0")];
+            }
+            let at = beam_stiffness_for_tolerance(beams, [f, f], TABLE_TOLERANCE, element);
+            let upto = beam_stiffness_for_tolerance(beams, [0.0, f], TABLE_TOLERANCE, element);
+            vec![
+                format!("{heading} {} at F,", shown(at)),
+                format!("  {} at all F up to F", shown(upto)),
+            ]
+        }
+        Model::Plate(plate) => vec![format!(
+            "u(L) {within} {}",
+            shown(plate_stiffness_for_tolerance(
+                plate,
+                TABLE_TOLERANCE,
+                element
+            ))
+        )],
+    }
+}
+
 /// The K_T comparison as a narrow table (fits the 44-column chart pane of an 80x24 screen).
 fn stiffness_table(model: &Model) -> Plot {
     use crate::model::code_defaults::{CODE_DEFAULTS, Confirmation, DefaultRule};
@@ -323,6 +368,7 @@ fn stiffness_table(model: &Model) -> Plot {
         lines.push(format!("{:<10} {cells}", short(&row.candidate.source)));
     }
     lines.push(String::new());
+    lines.extend(tolerance_lines(model, element));
     lines.push(format!(
         "K_T MPa/mm; FE elements {} mm (L/100)",
         number(element)
@@ -336,7 +382,7 @@ fn stiffness_table(model: &Model) -> Plot {
         };
         lines.push(format!("{}: {how}", code.short));
     }
-    lines.push("Other sizes, K_N, eq. 4: microslip kt".into());
+    lines.push("Other sizes, K_N, tolerances: microslip kt".into());
     Plot {
         title: "K_T that FE codes assume by default".into(),
         table: Some(lines),
