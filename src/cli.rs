@@ -29,6 +29,7 @@ use crate::model::target::{Target, TargetError, solve_for_target};
 use crate::model::twin_beams::BeamTheory;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
+use crate::report::chart::YMode;
 use crate::report::figure::{self, FigureError};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
 use crate::report::table::{TableFormat, write_json, write_table, write_table_after};
@@ -265,6 +266,10 @@ pub enum Command {
         /// Add the project's finite-element points (w-vs-f, x-vs-f, tau, loop, u-vs-kt).
         #[arg(long)]
         fe: bool,
+        /// The y axis: linear, log, or relative (each curve / Coulomb - 1, in %); default: log for
+        /// u-vs-kt and d-vs-fa, linear otherwise. A mode the chart cannot show is refused.
+        #[arg(long, value_enum, value_name = "MODE")]
+        y: Option<YMode>,
         /// Output format (default: csv for a FILE ending in .csv, else svg).
         #[arg(long, value_enum)]
         format: Option<FigureFormat>,
@@ -562,6 +567,9 @@ pub enum CliError {
     /// A bad `--beam-theory`.
     #[error("{0}")]
     Theory(String),
+    /// Another flag the command cannot use as given (the message names it).
+    #[error("{0}")]
+    Invalid(String),
     /// A bad `--fix`.
     #[error("invalid --fix '{0}': expected mu=VALUE or KT=VALUE with a finite number")]
     Fix(String),
@@ -856,6 +864,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             chart,
             inputs,
             fe,
+            y,
             format,
             output,
         }) => {
@@ -864,7 +873,16 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 ModelKind::Plate => "plot (a plate chart)",
             };
             let (_, model) = load(inputs, chart.kind(), command)?;
-            let plot = report::chart::figure(&model, *chart, *fe)?;
+            let mode = y.unwrap_or(YMode::default_for(*chart));
+            let plot = report::chart::figure(&model, *chart, *fe, YMode::Linear)?;
+            if !mode.applies_to(&plot) {
+                return Err(CliError::Invalid(format!(
+                    "--y {}: chart {} cannot show it (log needs values >= 0, relative a Coulomb curve over increasing x)",
+                    mode.label(),
+                    chart.key()
+                )));
+            }
+            let plot = mode.apply(plot);
             let csv = output
                 .as_deref()
                 .and_then(|p| p.extension())
@@ -1373,7 +1391,7 @@ fn run_kt_tolerance(
     format: ReportFormat,
 ) -> Result<(), CliError> {
     use crate::model::tolerance::{self, parse_tolerance};
-    let tol = parse_tolerance(tolerance).map_err(CliError::Theory)?;
+    let tol = parse_tolerance(tolerance).map_err(CliError::Invalid)?;
     let (name, model) = load_any(inputs, ModelKind::Beam)?;
     let element = element_size(element, &model)?;
     let answer = match model {
@@ -1384,7 +1402,7 @@ fn run_kt_tolerance(
                 check_flag("--to", to.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
             ];
             tolerance::beam_stiffness_for_tolerance(&beams, range, tol, element)
-                .map_err(|e| CliError::Theory(e.to_string()))?
+                .map_err(|e| CliError::Invalid(e.to_string()))?
         }
         Model::Plate(plate) => {
             if from.is_some() || to.is_some() {
@@ -1393,7 +1411,7 @@ fn run_kt_tolerance(
                 ));
             }
             tolerance::plate_stiffness_for_tolerance(&plate, tol, element)
-                .map_err(|e| CliError::Theory(e.to_string()))?
+                .map_err(|e| CliError::Invalid(e.to_string()))?
         }
     };
     match format {
@@ -1454,7 +1472,7 @@ fn run_figures(out: &mut impl Write, dir: &std::path::Path, fe: bool) -> Result<
             beam_theory: None,
         };
         let (_, model) = load(&inputs, f.chart.kind(), "figures")?;
-        let plot = report::chart::figure(&model, f.chart, fe && f.finite_elements)?;
+        let plot = report::chart::figure(&model, f.chart, fe && f.finite_elements, f.y)?;
         let svg = dir.join(format!("{}.svg", f.stem));
         write_output(out, Some(&svg), figure::svg(&plot)?.as_bytes())?;
         write_output(

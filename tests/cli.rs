@@ -1508,6 +1508,13 @@ fn plot_writes_an_svg_figure_or_its_data_and_refuses_the_other_models_preset() {
         first.starts_with("Coulomb,\"K_T (MPa/mm, log)\",100"),
         "{first}"
     );
+    // The y modes: u(L) vs K_T opens on a log axis, w(L) vs F can be relative to Coulomb, the loop
+    // (both signs) cannot be logarithmic.
+    assert!(stdout_of(&["plot", "u-vs-kt"]).contains("u(L) (mm, log)"));
+    let relative = stdout_of(&["plot", "w-vs-f", "--y", "relative", "--format", "csv"]);
+    assert!(relative.contains("w(L) / Coulomb - 1 (%)"), "{relative}");
+    let error = failure(&["plot", "loop", "--y", "log"], 2);
+    assert!(error.contains("--y log"), "{error}");
     let error = failure(&["plot", "u-vs-kt", "--preset", "paper-beams"], 2);
     assert!(error.contains("plate"), "{error}");
     let error = failure(&["plot", "nope"], 2);

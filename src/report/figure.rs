@@ -10,7 +10,7 @@ use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
 use thiserror::Error;
 
-use super::chart::{Plot, PlotSeries, SeriesKind};
+use super::chart::{Plot, PlotSeries, SeriesKind, YMode};
 use super::number_with;
 use super::view::{AnyChart, BeamChart, PlateChart};
 
@@ -191,6 +191,8 @@ pub struct PaperFigure {
     pub chart: AnyChart,
     /// With the project's finite-element points (the paper's comparison figures).
     pub finite_elements: bool,
+    /// The y axis.
+    pub y: YMode,
     /// What it shows, for the index page.
     pub caption: &'static str,
 }
@@ -202,14 +204,25 @@ pub const PAPER_FIGURES: &[PaperFigure] = &[
         stem: "beam-w-vs-f",
         preset: "paper-beams",
         chart: AnyChart::Beam(BeamChart::Deflection),
+        y: YMode::Linear,
         finite_elements: true,
         caption: "Twin beams, K_T = 600 MPa/mm: tip deflection w(L) against the tip force F, \
                   Coulomb and regularized (K_T/5, K_T, K_T x 5), finite-element points at K_T",
     },
     PaperFigure {
+        stem: "beam-w-vs-f-relative",
+        preset: "paper-beams",
+        chart: AnyChart::Beam(BeamChart::Deflection),
+        y: YMode::Relative,
+        finite_elements: true,
+        caption: "Twin beams: the same curves as w(L) / w(L)_Coulomb - 1 in %, where the K_T \
+                  family separates: constant in stick, falling once Coulomb slides",
+    },
+    PaperFigure {
         stem: "beam-soft-w-vs-f",
         preset: "paper-beams-soft",
         chart: AnyChart::Beam(BeamChart::Deflection),
+        y: YMode::Linear,
         finite_elements: true,
         caption: "Twin beams, K_T/5 = 120 MPa/mm: w(L) against F, finite-element points at \
                   120 MPa/mm",
@@ -218,6 +231,7 @@ pub const PAPER_FIGURES: &[PaperFigure] = &[
         stem: "beam-x-vs-f",
         preset: "paper-beams",
         chart: AnyChart::Beam(BeamChart::SlipBoundary),
+        y: YMode::Linear,
         finite_elements: true,
         caption: "Twin beams: end X of the microslip zone (from the clamp) against F, \
                   finite-element points at K_T",
@@ -226,6 +240,7 @@ pub const PAPER_FIGURES: &[PaperFigure] = &[
         stem: "beam-soft-x-vs-f",
         preset: "paper-beams-soft",
         chart: AnyChart::Beam(BeamChart::SlipBoundary),
+        y: YMode::Linear,
         finite_elements: true,
         caption: "Twin beams, K_T/5: X against F, finite-element points at 120 MPa/mm",
     },
@@ -233,6 +248,7 @@ pub const PAPER_FIGURES: &[PaperFigure] = &[
         stem: "plate-u-vs-kt",
         preset: "paper-plate",
         chart: AnyChart::Plate(PlateChart::Displacement),
+        y: YMode::Log,
         finite_elements: true,
         caption: "Squeezed plate: end displacement u(L) against K_T, Coulomb and regularized, \
                   finite-element points and the 2-D plane-strain continuum",
@@ -241,6 +257,7 @@ pub const PAPER_FIGURES: &[PaperFigure] = &[
         stem: "plate-xr-vs-mu",
         preset: "paper-plate",
         chart: AnyChart::Plate(PlateChart::SlipBoundary),
+        y: YMode::Linear,
         finite_elements: false,
         caption: "Squeezed plate: end X_r of the microslip zone against mu, for K_T/10, K_T, \
                   K_T x 10",
@@ -249,6 +266,7 @@ pub const PAPER_FIGURES: &[PaperFigure] = &[
         stem: "plate-pressure",
         preset: "paper-plate",
         chart: AnyChart::Plate(PlateChart::ContactPressure),
+        y: YMode::Linear,
         finite_elements: false,
         caption: "Squeezed plate: contact pressure P_r(x)/P along the half-plate, against the \
                   constant-pressure assumption",
@@ -257,6 +275,7 @@ pub const PAPER_FIGURES: &[PaperFigure] = &[
         stem: "beam-loop",
         preset: "paper-beams",
         chart: AnyChart::Beam(BeamChart::Loop),
+        y: YMode::Linear,
         finite_elements: true,
         caption: "One beam cycled between +F and -F (F = 100 N): the hysteresis loop, both laws, \
                   finite-element points of the same cycle",
@@ -265,6 +284,7 @@ pub const PAPER_FIGURES: &[PaperFigure] = &[
         stem: "beam-d-vs-fa",
         preset: "paper-beams",
         chart: AnyChart::Beam(BeamChart::Dissipation),
+        y: YMode::Log,
         finite_elements: false,
         caption: "Twin beams: dissipation per cycle D (both beams) against the amplitude F_a",
     },
@@ -288,13 +308,18 @@ pub fn index_html(figures: &[PaperFigure]) -> String {
             "<figure id=\"{stem}\">\n<img src=\"{stem}.svg\" alt=\"{title}\">\n\
              <figcaption>{caption} (preset <code>{preset}</code>; \
              data: <a href=\"{stem}.csv\">{stem}.csv</a>; \
-             <code>microslip plot {key} --preset {preset}{fe}</code>)</figcaption>\n</figure>\n",
+             <code>microslip plot {key} --preset {preset}{fe} --y {y}</code>)</figcaption>\n</figure>\n",
             stem = f.stem,
             title = f.chart.title(),
             caption = f.caption,
             preset = f.preset,
             key = f.chart.key(),
             fe = if f.finite_elements { " --fe" } else { "" },
+            y = match f.y {
+                YMode::Linear => "linear",
+                YMode::Log => "log",
+                YMode::Relative => "relative",
+            },
         ));
     }
     page.push_str("</body>\n</html>\n");
@@ -310,7 +335,7 @@ mod tests {
 
     fn paper_figure(chart: AnyChart, fe: bool) -> Plot {
         let model = Inputs::paper(chart.kind()).validate().unwrap();
-        chart::figure(&model, chart, fe).unwrap()
+        chart::figure(&model, chart, fe, chart::YMode::Linear).unwrap()
     }
 
     #[test]

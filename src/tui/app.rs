@@ -13,8 +13,8 @@ use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, Compact, ModelKind, Param, parse_number};
 use crate::model::twin_beams::BeamTheory;
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
-use crate::report::chart::{self, NumericPoints, Plot, Views};
-use crate::report::view::{BeamChart, PlateChart, View};
+use crate::report::chart::{self, NumericPoints, Plot, Views, YMode};
+use crate::report::view::{AnyChart, BeamChart, PlateChart, View};
 use crate::report::{number, number_with};
 
 /// A status-line message.
@@ -171,6 +171,9 @@ pub struct App {
     help_page: usize,
     /// Where `x` writes the chart's SVG and CSV (the working directory unless set).
     export_dir: PathBuf,
+    /// The y-axis modes chosen with `y`, by chart (None: the chart against a parameter of `v`);
+    /// a chart not listed shows its default ([`YMode::default_for`]).
+    y_modes: Vec<(Option<AnyChart>, YMode)>,
 }
 
 impl App {
@@ -210,6 +213,7 @@ impl App {
             force_span: None,
             help_page: 0,
             export_dir: PathBuf::from("."),
+            y_modes: Vec::new(),
         };
         app.fit_axes();
         app.recompute();
@@ -467,20 +471,65 @@ impl App {
         } else {
             self.numeric = None;
         }
+        let plot = self.linear_plot(&model);
+        self.plot = self.y_mode().apply(plot);
+    }
+
+    /// The chart shown, with its y axis linear.
+    fn linear_plot(&self, model: &Model) -> Plot {
         if let Some(param) = self.state().varied {
-            self.plot = chart::vary::build(&model, param);
-            return;
+            return chart::vary::build(model, param);
         }
         let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
         let external = self.external.as_ref().map(|(points, _)| points);
-        self.plot = chart::build(
-            &model,
+        chart::build(
+            model,
             self.views,
             self.numeric.as_ref(),
             measured,
             external,
             self.force_span,
-        );
+        )
+    }
+
+    /// Which chart the y-axis mode belongs to: the view's chart, None for the chart of `v`;
+    /// tables have none (outer None).
+    fn y_key(&self) -> Option<Option<AnyChart>> {
+        if self.varied().is_some() {
+            return Some(None);
+        }
+        match (self.kind, self.views.beam, self.views.plate) {
+            (ModelKind::Beam, View::Chart(c), _) => Some(Some(AnyChart::Beam(c))),
+            (ModelKind::Plate, _, View::Chart(c)) => Some(Some(AnyChart::Plate(c))),
+            _ => None,
+        }
+    }
+
+    /// The y-axis mode of the chart shown.
+    pub fn y_mode(&self) -> YMode {
+        let Some(key) = self.y_key() else {
+            return YMode::Linear;
+        };
+        self.y_modes
+            .iter()
+            .find(|(k, _)| *k == key)
+            .map_or_else(|| key.map_or(YMode::Linear, YMode::default_for), |m| m.1)
+    }
+
+    /// `y`: the next y-axis mode the chart can show.
+    fn cycle_y_axis(&mut self) {
+        let (Some(key), Some(model)) = (self.y_key(), self.model()) else {
+            return self.error("y: a table has no y axis");
+        };
+        let current = self.y_mode();
+        let next = current.next_for(&self.linear_plot(&model));
+        if next == current {
+            return self.info(format!("y axis: only {} for this chart", current.label()));
+        }
+        self.y_modes.retain(|(k, _)| *k != key);
+        self.y_modes.push((key, next));
+        self.recompute();
+        self.info(format!("y axis: {} (y: next mode)", next.label()));
     }
 
     /// Applies one action.
@@ -786,6 +835,7 @@ impl App {
             Action::Undo => self.travel(false),
             Action::Redo => self.travel(true),
             Action::ExportChart => self.export_chart(),
+            Action::CycleYAxis => self.cycle_y_axis(),
             Action::Vary => {
                 let param = self.selected_param();
                 let state = self.state_mut();

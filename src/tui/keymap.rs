@@ -236,6 +236,12 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         Context::Main,
+        &[(KeyCode::Char('y'), NONE)],
+        Action::CycleYAxis,
+        "y axis lin/log/rel.",
+    ),
+    bind(
+        Context::Main,
         &[(KeyCode::Char('x'), NONE)],
         Action::ExportChart,
         "export chart SVG+CSV",

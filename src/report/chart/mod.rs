@@ -3,6 +3,9 @@
 //! computes physics itself, so a curve on screen and in a figure are the same numbers.
 
 pub mod vary;
+mod ymode;
+
+pub use ymode::YMode;
 
 use crate::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::fit::Measurement;
@@ -713,18 +716,24 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
 }
 
 /// The chart `chart` of `model` (a model of the chart's kind) as a figure shows it: the TUI's
-/// series, with the finite-element points where asked and the chart has them.
+/// series, with the finite-element points where asked and the chart has them, the y axis in mode
+/// `y` where it applies.
 ///
 /// # Errors
 /// The finite-element solver's, when `finite_elements` is asked and it fails.
-pub fn figure(model: &Model, chart: AnyChart, finite_elements: bool) -> Result<Plot, NumericError> {
+pub fn figure(
+    model: &Model,
+    chart: AnyChart,
+    finite_elements: bool,
+    y: YMode,
+) -> Result<Plot, NumericError> {
     let views = Views::showing(chart);
     let numeric = if finite_elements {
         numeric_points(model, views)?
     } else {
         None
     };
-    Ok(build(model, views, numeric.as_ref(), None, None, None))
+    Ok(y.apply(build(model, views, numeric.as_ref(), None, None, None)))
 }
 
 /// Finite-element points for chart `chart`, where the chart has a finite-element counterpart.
