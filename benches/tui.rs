@@ -88,12 +88,14 @@ fn recompute(bencher: Bencher, preset_name: &str, chart: usize) {
     });
 }
 
-#[divan::bench(args = [0, 1, 2])]
+/// Charts 0-2, and 5: the K_T table with its two tolerance solves (`microslip kt --tolerance`).
+#[divan::bench(args = [0, 1, 2, 5])]
 fn recompute_beam_view(bencher: Bencher, chart: usize) {
     recompute(bencher, "paper-beams", chart);
 }
 
-#[divan::bench(args = [0, 1, 2])]
+/// Charts 0-2 (0 on its default log axis), and 3: the K_T table with its tolerance solve.
+#[divan::bench(args = [0, 1, 2, 3])]
 fn recompute_plate_view(bencher: Bencher, chart: usize) {
     recompute(bencher, "paper-plate", chart);
 }

@@ -29,8 +29,11 @@ use crate::model::target::{Target, TargetError, solve_for_target};
 use crate::model::twin_beams::BeamTheory;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
+use crate::report::chart::YMode;
+use crate::report::figure::{self, FigureError};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
 use crate::report::table::{TableFormat, write_json, write_table, write_table_after};
+use crate::report::view::AnyChart;
 use crate::report::{self, json, text};
 use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
@@ -140,6 +143,26 @@ pub enum Command {
         /// Poisson ratio for eq. 4 (default: the plate's nu, else 0.3).
         #[arg(long, value_name = "NU", allow_negative_numbers = true)]
         nu: Option<f64>,
+        /// Instead of the table: the smallest K_T for which the regularized w(L) (beams) or u(L)
+        /// (plate) is within T of Coulomb (1% or 0.01), and each FE code's setting for it.
+        #[arg(long, value_name = "T", conflicts_with_all = ["kn", "nu"])]
+        tolerance: Option<String>,
+        /// With --tolerance, beams: lowest tip force checked (N; default: the preset's F).
+        #[arg(
+            long,
+            value_name = "A",
+            allow_negative_numbers = true,
+            requires = "tolerance"
+        )]
+        from: Option<f64>,
+        /// With --tolerance, beams: highest tip force checked (N; default: the preset's F).
+        #[arg(
+            long,
+            value_name = "B",
+            allow_negative_numbers = true,
+            requires = "tolerance"
+        )]
+        to: Option<f64>,
         /// Output format.
         #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
         format: ReportFormat,
@@ -232,6 +255,37 @@ pub enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value_t = CompareFormat::Text)]
         format: CompareFormat,
+    },
+    /// Draw a chart of the terminal UI as an SVG figure, or write its data as CSV.
+    Plot {
+        /// The chart (its model's paper preset unless --preset names another).
+        #[arg(value_enum)]
+        chart: AnyChart,
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Add the project's finite-element points (w-vs-f, x-vs-f, tau, loop, u-vs-kt).
+        #[arg(long)]
+        fe: bool,
+        /// The y axis: linear, log, or relative (each curve / Coulomb - 1, in %); default: log for
+        /// u-vs-kt and d-vs-fa, linear otherwise. A mode the chart cannot show is refused.
+        #[arg(long, value_enum, value_name = "MODE")]
+        y: Option<YMode>,
+        /// Output format (default: csv for a FILE ending in .csv, else svg).
+        #[arg(long, value_enum)]
+        format: Option<FigureFormat>,
+        /// Write to FILE instead of stdout (replaced atomically if it exists).
+        #[arg(short = 'o', long, value_name = "FILE.svg")]
+        output: Option<PathBuf>,
+    },
+    /// Regenerate the paper's figures, the cycle loop and D vs F_a: SVG + CSV each, and an
+    /// index.html that shows them all.
+    Figures {
+        /// The directory to write into (made if missing; files in it are replaced).
+        #[arg(long, value_name = "DIR")]
+        out: PathBuf,
+        /// Leave out the finite-element points (faster).
+        #[arg(long)]
+        no_fe: bool,
     },
     /// Validate preset files; report every problem; exit 1 if any.
     Check {
@@ -425,6 +479,32 @@ pub enum CompareFormat {
     Json,
 }
 
+/// Formats of `microslip plot`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FigureFormat {
+    /// An SVG figure: axes with units, legend, the chart's curves and points.
+    Svg,
+    /// The chart's points: series, x, y (with the axis titles).
+    Csv,
+}
+
+impl ValueEnum for AnyChart {
+    fn value_variants<'a>() -> &'a [Self] {
+        AnyChart::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        let model = match self.kind() {
+            ModelKind::Beam => "beam",
+            ModelKind::Plate => "plate",
+        };
+        Some(
+            clap::builder::PossibleValue::new(self.key())
+                .help(format!("{model}: {}", self.title())),
+        )
+    }
+}
+
 /// Why a command failed.
 #[derive(Debug, Error)]
 pub enum CliError {
@@ -487,6 +567,9 @@ pub enum CliError {
     /// A bad `--beam-theory`.
     #[error("{0}")]
     Theory(String),
+    /// Another flag the command cannot use as given (the message names it).
+    #[error("{0}")]
+    Invalid(String),
     /// A bad `--fix`.
     #[error("invalid --fix '{0}': expected mu=VALUE or KT=VALUE with a finite number")]
     Fix(String),
@@ -496,6 +579,9 @@ pub enum CliError {
     /// A numerical solve failed.
     #[error("numerical solver: {0}")]
     Numeric(#[from] NumericError),
+    /// A figure that cannot be drawn.
+    #[error(transparent)]
+    Figure(#[from] FigureError),
     /// Files with problems (already reported on stdout).
     #[error("{0} of the files checked have problems")]
     CheckFailed(usize),
@@ -736,9 +822,19 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
         Some(Command::Kt {
             inputs,
             element_size,
+            tolerance: Some(tolerance),
+            from,
+            to,
+            format,
+            ..
+        }) => run_kt_tolerance(out, inputs, *element_size, tolerance, [*from, *to], *format)?,
+        Some(Command::Kt {
+            inputs,
+            element_size,
             kn,
             nu,
             format,
+            ..
         }) => run_kt(out, inputs, *element_size, *kn, *nu, *format)?,
         Some(Command::Cycle {
             amplitude,
@@ -764,6 +860,44 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             out.write_all(report::presets::listing(&rows, dir.as_deref()).as_bytes())?
         }
         Some(Command::Check { files }) => check(out, files)?,
+        Some(Command::Plot {
+            chart,
+            inputs,
+            fe,
+            y,
+            format,
+            output,
+        }) => {
+            let command = match chart.kind() {
+                ModelKind::Beam => "plot (a beam chart)",
+                ModelKind::Plate => "plot (a plate chart)",
+            };
+            let (_, model) = load(inputs, chart.kind(), command)?;
+            let mode = y.unwrap_or(YMode::default_for(*chart));
+            let plot = report::chart::figure(&model, *chart, *fe, YMode::Linear)?;
+            if !mode.applies_to(&plot) {
+                return Err(CliError::Invalid(format!(
+                    "--y {}: chart {} cannot show it (log needs values >= 0, relative a Coulomb curve over increasing x)",
+                    mode.label(),
+                    chart.key()
+                )));
+            }
+            let plot = mode.apply(plot);
+            let csv = output
+                .as_deref()
+                .and_then(|p| p.extension())
+                .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+            let bytes = match format.unwrap_or(if csv {
+                FigureFormat::Csv
+            } else {
+                FigureFormat::Svg
+            }) {
+                FigureFormat::Svg => figure::svg(&plot)?.into_bytes(),
+                FigureFormat::Csv => chart_csv(&plot)?,
+            };
+            write_output(out, output.as_deref(), &bytes)?
+        }
+        Some(Command::Figures { out: dir, no_fe }) => run_figures(out, dir, !*no_fe)?,
         Some(Command::Compare {
             model,
             results,
@@ -1240,6 +1374,53 @@ fn run_cycle(
     Ok(())
 }
 
+/// The contact element length of `--element-size`, default L/100.
+fn element_size(element: Option<f64>, model: &Model) -> Result<f64, CliError> {
+    match element {
+        Some(e) => check_flag("--element-size", e, Domain::ELEMENT_SIZE, Unit::Millimetre),
+        None => Ok(model.interface().length / 100.0),
+    }
+}
+
+fn run_kt_tolerance(
+    out: &mut impl Write,
+    inputs: &InputArgs,
+    element: Option<f64>,
+    tolerance: &str,
+    [from, to]: [Option<f64>; 2],
+    format: ReportFormat,
+) -> Result<(), CliError> {
+    use crate::model::tolerance::{self, parse_tolerance};
+    let tol = parse_tolerance(tolerance).map_err(CliError::Invalid)?;
+    let (name, model) = load_any(inputs, ModelKind::Beam)?;
+    let element = element_size(element, &model)?;
+    let answer = match model {
+        Model::Beam { beams, force } => {
+            let f = force.newtons();
+            let range = [
+                check_flag("--from", from.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
+                check_flag("--to", to.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
+            ];
+            tolerance::beam_stiffness_for_tolerance(&beams, range, tol, element)
+                .map_err(|e| CliError::Invalid(e.to_string()))?
+        }
+        Model::Plate(plate) => {
+            if from.is_some() || to.is_some() {
+                return Err(CliError::Usage(
+                    "--from/--to are tip forces of the twin beams; the plate has none",
+                ));
+            }
+            tolerance::plate_stiffness_for_tolerance(&plate, tol, element)
+                .map_err(|e| CliError::Invalid(e.to_string()))?
+        }
+    };
+    match format {
+        ReportFormat::Text => out.write_all(text::tolerance(&name, &model, &answer).as_bytes())?,
+        ReportFormat::Json => write_json(out, &json::tolerance(&name, &answer))?,
+    }
+    Ok(())
+}
+
 fn run_kt(
     out: &mut impl Write,
     inputs: &InputArgs,
@@ -1250,10 +1431,7 @@ fn run_kt(
 ) -> Result<(), CliError> {
     let (name, model) = load_any(inputs, ModelKind::Beam)?;
     let data = model.interface();
-    let element = match element {
-        Some(e) => check_flag("--element-size", e, Domain::ELEMENT_SIZE, Unit::Millimetre)?,
-        None => data.length / 100.0,
-    };
+    let element = element_size(element, &model)?;
     let normal = match kn {
         Some(kn) => {
             let kn = check_flag("--kn", kn, Domain::STIFFNESS, Unit::MegapascalPerMillimetre)?;
@@ -1270,6 +1448,47 @@ fn run_kt(
         }
         ReportFormat::Json => write_json(out, &json::stiffness_table(&name, &comparison))?,
     }
+    Ok(())
+}
+
+/// A chart's points as CSV (the same rows as the TUI's export).
+fn chart_csv(plot: &report::chart::Plot) -> Result<Vec<u8>, CliError> {
+    let mut bytes = Vec::new();
+    write_table(&mut bytes, TableFormat::Csv, report::rows::chart_rows(plot))?;
+    Ok(bytes)
+}
+
+/// `microslip figures`: every figure of [`figure::PAPER_FIGURES`] as SVG and CSV, then the index.
+fn run_figures(out: &mut impl Write, dir: &std::path::Path, fe: bool) -> Result<(), CliError> {
+    let unwritable = |e: io::Error| CliError::Data {
+        path: dir.display().to_string(),
+        reason: e.to_string(),
+    };
+    std::fs::create_dir_all(dir).map_err(unwritable)?;
+    for f in figure::PAPER_FIGURES {
+        let inputs = InputArgs {
+            preset: Some(f.preset.to_string()),
+            assignments: Vec::new(),
+            beam_theory: None,
+        };
+        let (_, model) = load(&inputs, f.chart.kind(), "figures")?;
+        let plot = report::chart::figure(&model, f.chart, fe && f.finite_elements, f.y)?;
+        let svg = dir.join(format!("{}.svg", f.stem));
+        write_output(out, Some(&svg), figure::svg(&plot)?.as_bytes())?;
+        write_output(
+            out,
+            Some(&dir.join(format!("{}.csv", f.stem))),
+            &chart_csv(&plot)?,
+        )?;
+        writeln!(out, "{}  {}", svg.display(), f.chart.title())?;
+    }
+    let index = dir.join("index.html");
+    write_output(
+        out,
+        Some(&index),
+        figure::index_html(figure::PAPER_FIGURES).as_bytes(),
+    )?;
+    writeln!(out, "{}  open it in a browser", index.display())?;
     Ok(())
 }
 

@@ -15,8 +15,9 @@
 //!
 //! - [`model`]: pure physics. Typed parameters ([`model::params`]: key, unit, domain, step), inputs
 //!   and validated models ([`model::inputs`]), the closed forms, cyclic loading, K_T helpers, FE
-//!   code defaults, and solving any parameter for a target value of a quantity
-//!   ([`model::target`]). No I/O.
+//!   code defaults, solving any parameter for a target value of a quantity
+//!   ([`model::target`]) and the smallest K_T within a tolerance of Coulomb
+//!   ([`model::tolerance`]). No I/O.
 //! - [`numeric`]: finite-element solvers that never call the closed forms.
 //! - [`verify`]: the only place that calls both, returning the worst cases as data.
 //! - [`curves`]: sweeps, the hysteresis loop and the K_T comparison, computed once for every output.
@@ -24,7 +25,9 @@
 //! - [`preset`]: TOML parse and write, and the file store (atomic, no clobber).
 //! - [`file`]: reading a file a user named, with a size cap (presets, measurements); below
 //!   `preset` and `fit`, above nothing.
-//! - [`report`]: every format, from one serde row per table; what views exist ([`report::view`]).
+//! - [`report`]: every format, from one serde row per table; what views exist ([`report::view`]);
+//!   the series of every chart ([`report::chart`], drawn by the TUI and by the SVG figures of
+//!   `report::figure`, behind the feature `figures`, on by default through `app`).
 //! - `cli` and `tui` (behind the default feature `app`, hidden from these docs): thin layers that
 //!   parse flags or keys, call the library and hand the results to `report` or the screen. With
 //!   `default-features = false` none of clap, ratatui, crossterm or signal-hook is compiled.

@@ -1486,3 +1486,111 @@ fn the_three_recipes_take_one_command_each() {
     );
     assert!(failure(&["sweep", "plate", "--points", "3"], 2).contains("--kt-from"));
 }
+
+#[test]
+fn plot_writes_an_svg_figure_or_its_data_and_refuses_the_other_models_preset() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("w.svg");
+    let csv = dir.path().join("w.csv");
+    for file in [&svg, &csv] {
+        let path = file.to_str().unwrap();
+        stdout_of(&["plot", "w-vs-f", "--set", "mu=0.2", "--fe", "-o", path]);
+    }
+    let svg = std::fs::read_to_string(svg).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("finite elements"));
+    let csv = std::fs::read_to_string(csv).unwrap();
+    assert!(csv.starts_with("series,x_axis,x,y_axis,y\n"));
+    assert!(csv.contains("\nfinite elements,F (N),"), "{csv}");
+    // The log axis of u(L) vs K_T is written as K_T values, not their logarithms.
+    let data = stdout_of(&["plot", "u-vs-kt", "--format", "csv"]);
+    let first = data.lines().nth(1).unwrap();
+    assert!(
+        first.starts_with("Coulomb,\"K_T (MPa/mm, log)\",100"),
+        "{first}"
+    );
+    // The y modes: u(L) vs K_T opens on a log axis, w(L) vs F can be relative to Coulomb, the loop
+    // (both signs) cannot be logarithmic.
+    assert!(stdout_of(&["plot", "u-vs-kt"]).contains("u(L) (mm, log)"));
+    let relative = stdout_of(&["plot", "w-vs-f", "--y", "relative", "--format", "csv"]);
+    assert!(relative.contains("w(L) / Coulomb - 1 (%)"), "{relative}");
+    let error = failure(&["plot", "loop", "--y", "log"], 2);
+    assert!(error.contains("--y log"), "{error}");
+    let error = failure(&["plot", "u-vs-kt", "--preset", "paper-beams"], 2);
+    assert!(error.contains("plate"), "{error}");
+    let error = failure(&["plot", "nope"], 2);
+    assert!(error.contains("w-vs-f"), "{error}");
+}
+
+#[test]
+fn figures_writes_every_figure_its_data_and_an_index() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("figs");
+    let text = stdout_of(&["figures", "--out", out.to_str().unwrap(), "--no-fe"]);
+    assert!(text.contains("index.html"));
+    let index = std::fs::read_to_string(out.join("index.html")).unwrap();
+    let figures: Vec<&str> = index
+        .split("<img src=\"")
+        .skip(1)
+        .map(|s| s.split('"').next().unwrap())
+        .collect();
+    assert!(figures.len() >= 9, "{figures:?}");
+    for svg in figures {
+        let body = std::fs::read_to_string(out.join(svg)).unwrap();
+        assert!(body.starts_with("<svg"), "{svg}");
+        assert!(out.join(svg.replace(".svg", ".csv")).exists(), "{svg}");
+    }
+}
+
+#[test]
+fn kt_tolerance_answers_with_the_stiffness_and_each_codes_setting() {
+    let text = stdout_of(&["kt", "--tolerance", "1%"]);
+    assert!(
+        text.contains("within 1 % of Coulomb at F = 100 N"),
+        "{text}"
+    );
+    assert!(text.contains("K_T >= 423.1 MPa/mm"), "{text}");
+    assert!(text.contains("SLIP TOLERANCE <=") && text.contains("stick slope lambda >= 423"));
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "kt",
+        "--tolerance",
+        "0.01",
+        "--from",
+        "0",
+        "--to",
+        "300",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    let kt = json["KT_min_MPa_per_mm"].as_f64().unwrap();
+    assert!((kt - 11412.0).abs() < 1.0, "{kt}");
+    assert_eq!(json["force_range_N"], serde_json::json!([0.0, 300.0]));
+    let plate = stdout_of(&["kt", "--tolerance", "1%", "--preset", "paper-plate"]);
+    assert!(
+        plate.contains("u(L)") && plate.contains("1.885e7"),
+        "{plate}"
+    );
+    for (args, says) in [
+        (&["kt", "--tolerance", "0"][..], "--tolerance"),
+        (&["kt", "--tolerance", "1%", "--from", "-3"], "--from"),
+        (
+            &["kt", "--tolerance", "1%", "--from", "0", "--to", "0"],
+            "no positive force",
+        ),
+        (
+            &[
+                "kt",
+                "--tolerance",
+                "1%",
+                "--preset",
+                "paper-plate",
+                "--to",
+                "5",
+            ],
+            "plate",
+        ),
+    ] {
+        let error = failure(args, 2);
+        assert!(error.contains(says), "{args:?}: {error}");
+    }
+}

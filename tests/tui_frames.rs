@@ -460,3 +460,32 @@ fn workbench_panes_at_80x24_and_200x60_in_both_charsets() {
         shot("target_solved", &app, 80, 24);
     }
 }
+
+/// The y-axis modes of `y` (issue 15): w(L) vs F relative to Coulomb, where the K_T family
+/// separates, and u(L) vs K_T on its default log axis, at 80x24 and 120x40 in both charsets (the
+/// ASCII one without colour: curves told apart by their symbols).
+#[test]
+fn y_axis_modes_at_80x24_and_120x40_in_both_charsets() {
+    for (charset, tag) in [(Charset::Unicode, "unicode"), (Charset::Ascii, "ascii")] {
+        let mut app = app_with("paper-beams", charset, charset == Charset::Unicode);
+        let shot = |name: &str, app: &App, width: u16, height: u16| {
+            let text = screen(app, width, height);
+            if charset == Charset::Ascii {
+                assert!(text.is_ascii(), "{name}");
+            }
+            insta::assert_snapshot!(format!("{name}_{width}x{height}_{tag}"), text);
+        };
+        // w(L) vs F: linear, then log, then relative.
+        act(&mut app, &[Action::CycleYAxis, Action::CycleYAxis]);
+        assert!(app.plot().y.title.contains("Coulomb - 1 (%)"));
+        shot("y_relative_w", &app, 80, 24);
+        shot("y_relative_w", &app, 120, 40);
+        app.update(Action::SwitchModel);
+        assert!(app.plot().y.log, "u(L) vs K_T opens on a log axis");
+        shot("y_log_u", &app, 80, 24);
+        shot("y_log_u", &app, 120, 40);
+        // Back to the beams: the relative mode of w(L) vs F was kept.
+        app.update(Action::SwitchModel);
+        assert!(app.plot().y.title.contains("Coulomb - 1 (%)"));
+    }
+}

@@ -55,6 +55,7 @@ const ACTIONS: &[Action] = &[
     Action::SwitchModel,
     Action::NextChart,
     Action::PreviousChart,
+    Action::CycleYAxis,
     Action::ToggleHelp,
     Action::OpenPresets,
     Action::Reset,

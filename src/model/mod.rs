@@ -11,5 +11,6 @@ pub mod regime;
 pub(crate) mod solve;
 pub mod stiffness;
 pub mod target;
+pub mod tolerance;
 pub mod twin_beams;
 pub mod validity;

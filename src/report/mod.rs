@@ -5,8 +5,11 @@
 //! [`crate::fit`] and [`crate::verify`], the same values the TUI shows. Nothing below this module
 //! imports it.
 
+pub mod chart;
 pub mod compare;
 pub mod csv;
+#[cfg(feature = "figures")]
+pub mod figure;
 pub mod json;
 pub mod presets;
 pub mod rows;

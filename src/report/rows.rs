@@ -6,6 +6,7 @@
 use serde::Serialize;
 
 use crate::curves::{BeamPoint, CyclePoint, LoopPoint, PlatePoint};
+use crate::report::chart::{Plot, SeriesKind};
 
 /// One row of `microslip sweep beam`.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
@@ -173,4 +174,36 @@ mod tests {
             "branch,F_N,w_coulomb_mm,w_regularized_mm"
         );
     }
+}
+
+/// One point of a chart's data (`x` in the TUI and `microslip plot -o FILE.csv`): the series, and
+/// x and y in the units their axis titles name (on a log axis the value, not its logarithm).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct ChartPointRow<'a> {
+    /// The series' legend label (`Coulomb`, `K_T/5`, `FE`).
+    pub series: &'a str,
+    /// The x axis title, with its unit.
+    pub x_axis: &'a str,
+    /// The x value.
+    pub x: f64,
+    /// The y axis title, with its unit.
+    pub y_axis: &'a str,
+    /// The y value.
+    pub y: f64,
+}
+
+/// Every point of the plot's curves and point sets (the cursor is not data), series by series.
+pub fn chart_rows(plot: &Plot) -> impl Iterator<Item = ChartPointRow<'_>> {
+    plot.series
+        .iter()
+        .filter(|s| s.kind != SeriesKind::Cursor)
+        .flat_map(move |s| {
+            s.points.iter().map(move |&(x, y)| ChartPointRow {
+                series: &s.name,
+                x_axis: &plot.x.title,
+                x: plot.x.value(x),
+                y_axis: &plot.y.title,
+                y: plot.y.value(y),
+            })
+        })
 }

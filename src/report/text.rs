@@ -671,6 +671,131 @@ pub fn solved(
     out
 }
 
+/// A percentage for people: `1 %`, `0.517 %`.
+fn percent_of(fraction: f64) -> String {
+    format!("{} %", number_with(100.0 * fraction, 3))
+}
+
+/// The name of a code's slip-tolerance setting, read from its description (`SLIP TOLERANCE`,
+/// `SLTO`): the words before the default's number.
+fn setting_name(description: &str) -> &str {
+    description
+        .split(|c: char| c.is_ascii_digit())
+        .next()
+        .unwrap_or(description)
+        .trim()
+}
+
+/// `microslip kt --tolerance`: the smallest K_T within the tolerance, and each code's setting for it.
+pub fn tolerance(
+    preset: &str,
+    model: &Model,
+    answer: &crate::model::tolerance::ToleranceAnswer,
+) -> String {
+    use crate::model::tolerance::{Setting, Threshold};
+    let preset = sanitize(preset);
+    let tol = percent_of(answer.tolerance);
+    let mut out = String::new();
+    let (quantity, over, why) = match (model, answer.forces) {
+        (Model::Beam { .. }, Some([from, to])) if from == to => {
+            ("w(L)", format!("at F = {} N", number(to)), "(T1)")
+        }
+        (Model::Beam { .. }, Some([from, to])) => (
+            "w(L)",
+            format!("at every F from {} to {} N", number(from), number(to)),
+            "(T1)",
+        ),
+        _ => ("u(L)", "at the plate's pressure".to_string(), "(P10)"),
+    };
+    let _ = writeln!(
+        out,
+        "Smallest K_T for which the regularized {quantity} is within {tol} of Coulomb {over}, preset {preset}:"
+    );
+    let (kt, deviation) = answer.current;
+    let verdict = if deviation <= answer.tolerance {
+        "within"
+    } else {
+        "outside"
+    };
+    match answer.threshold {
+        Threshold::Stiffness(k) => {
+            let _ = writeln!(out, "  K_T >= {} MPa/mm", number_with(k, 4));
+        }
+        Threshold::Everywhere(k) => {
+            let _ = writeln!(
+                out,
+                "  any accepted K_T (from {} MPa/mm): even the softest is within {tol}",
+                number(k)
+            );
+        }
+        Threshold::Nowhere {
+            stiffness,
+            deviation,
+        } => {
+            let _ = writeln!(
+                out,
+                "  none: even K_T = {} MPa/mm is {} off Coulomb",
+                number(stiffness),
+                percent_of(deviation)
+            );
+        }
+    }
+    let _ = writeln!(
+        out,
+        "  the current K_T = {} MPa/mm is {} off Coulomb: {verdict}",
+        number(kt),
+        percent_of(deviation)
+    );
+    let _ = writeln!(
+        out,
+        "  (the deviation never grows with K_T, docs/theory.md {why}: every stiffer K_T is within too)"
+    );
+    let Some(first) = answer.settings.first() else {
+        return out;
+    };
+    let element = match first.needed {
+        Setting::SlipTolerance { element, .. } => element,
+        _ => f64::NAN,
+    };
+    let _ = writeln!(
+        out,
+        "\nIn each FE code's own setting (contact faces {} mm; --element-size sets another):",
+        number(element)
+    );
+    for s in &answer.settings {
+        let needed = match s.needed {
+            Setting::SlipTolerance {
+                fraction,
+                slip,
+                element_max,
+                ..
+            } => format!(
+                "{} <= {} (elastic slip <= {} mm), or faces <= {} mm with the default",
+                setting_name(s.code.description),
+                number_with(fraction, 3),
+                number_with(slip, 3),
+                number_with(element_max, 3)
+            ),
+            Setting::StickSlope(k) => {
+                format!("stick slope lambda >= {} MPa/mm", number_with(k, 3))
+            }
+            Setting::ElementSize(h) => {
+                format!("smallest contact element h_min <= {} mm", number_with(h, 3))
+            }
+            Setting::Stiffness(k) => {
+                format!("give a friction stiffness >= {} MPa/mm", number_with(k, 3))
+            }
+        };
+        let default = match s.default {
+            Some((k, true)) => format!("; its default ({} MPa/mm) is enough", number_with(k, 3)),
+            Some((k, false)) => format!("; its default ({} MPa/mm) is NOT", number_with(k, 3)),
+            None => String::new(),
+        };
+        let _ = writeln!(out, "  {:<16} {needed}{default}", s.code.code);
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,6 +1,8 @@
 //! What a view shows: the charts of each model and the tables, as enums. The TUI cycles through
 //! them and draws them; figure and table exports name them the same way. A chart is never an index.
 
+use crate::model::params::ModelKind;
+
 /// The twin beams' charts, in the order the TUI cycles through them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum BeamChart {
@@ -40,6 +42,8 @@ pub trait ChartSet: Copy + Eq + 'static {
     const ALL: &'static [Self];
     /// The short title of the chart.
     fn title(self) -> &'static str;
+    /// The chart's name on the command line and in file names (`w-vs-f`).
+    fn key(self) -> &'static str;
 }
 
 impl ChartSet for BeamChart {
@@ -60,6 +64,16 @@ impl ChartSet for BeamChart {
             BeamChart::Dissipation => "D vs F_a",
         }
     }
+
+    fn key(self) -> &'static str {
+        match self {
+            BeamChart::Deflection => "w-vs-f",
+            BeamChart::SlipBoundary => "x-vs-f",
+            BeamChart::Shear => "tau",
+            BeamChart::Loop => "loop",
+            BeamChart::Dissipation => "d-vs-fa",
+        }
+    }
 }
 
 impl ChartSet for PlateChart {
@@ -74,6 +88,71 @@ impl ChartSet for PlateChart {
             PlateChart::Displacement => "u(L) vs K_T",
             PlateChart::SlipBoundary => "X_r vs mu",
             PlateChart::ContactPressure => "P_r(x)/P",
+        }
+    }
+
+    fn key(self) -> &'static str {
+        match self {
+            PlateChart::Displacement => "u-vs-kt",
+            PlateChart::SlipBoundary => "xr-vs-mu",
+            PlateChart::ContactPressure => "pressure",
+        }
+    }
+}
+
+/// A chart of either model, as `microslip plot CHART` names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum AnyChart {
+    /// A chart of the twin beams.
+    Beam(BeamChart),
+    /// A chart of the plate.
+    Plate(PlateChart),
+}
+
+impl AnyChart {
+    /// Every chart: the beams', then the plate's (each model's in cycling order).
+    pub const ALL: &'static [AnyChart] = &[
+        AnyChart::Beam(BeamChart::Deflection),
+        AnyChart::Beam(BeamChart::SlipBoundary),
+        AnyChart::Beam(BeamChart::Shear),
+        AnyChart::Beam(BeamChart::Loop),
+        AnyChart::Beam(BeamChart::Dissipation),
+        AnyChart::Plate(PlateChart::Displacement),
+        AnyChart::Plate(PlateChart::SlipBoundary),
+        AnyChart::Plate(PlateChart::ContactPressure),
+    ];
+
+    /// Every chart, as [`AnyChart::ALL`].
+    pub fn all() -> impl Iterator<Item = AnyChart> {
+        Self::ALL.iter().copied()
+    }
+
+    /// The name on the command line (unique over both models).
+    pub fn key(self) -> &'static str {
+        match self {
+            AnyChart::Beam(c) => c.key(),
+            AnyChart::Plate(c) => c.key(),
+        }
+    }
+
+    /// The short title.
+    pub fn title(self) -> &'static str {
+        match self {
+            AnyChart::Beam(c) => c.title(),
+            AnyChart::Plate(c) => c.title(),
+        }
+    }
+
+    /// The chart named `key`, if any.
+    pub fn parse(key: &str) -> Option<AnyChart> {
+        Self::all().find(|c| c.key().eq_ignore_ascii_case(key))
+    }
+
+    /// The model the chart is of.
+    pub fn kind(self) -> ModelKind {
+        match self {
+            AnyChart::Beam(_) => ModelKind::Beam,
+            AnyChart::Plate(_) => ModelKind::Plate,
         }
     }
 }
@@ -118,6 +197,14 @@ impl<C: ChartSet> View<C> {
         match self {
             View::Chart(chart) => chart.title(),
             View::Table(table) => table.title(),
+        }
+    }
+
+    /// The name in file names: the chart's key, or the table's.
+    pub fn key(self) -> &'static str {
+        match self {
+            View::Chart(chart) => chart.key(),
+            View::Table(Table::StiffnessComparison) => "kt-table",
         }
     }
 
@@ -178,5 +265,26 @@ mod tests {
     fn views_cycle_both_ways_through_every_chart_and_table() {
         round_trip::<BeamChart>();
         round_trip::<PlateChart>();
+    }
+
+    #[test]
+    fn chart_keys_are_unique_and_parse_back() {
+        let keys: Vec<&str> = AnyChart::all().map(AnyChart::key).collect();
+        for (i, key) in keys.iter().enumerate() {
+            assert!(!keys[..i].contains(key), "{key} twice");
+            assert_eq!(AnyChart::parse(key).map(AnyChart::key), Some(*key));
+        }
+        assert_eq!(AnyChart::parse("nope"), None);
+        // ALL holds each model's charts in their own order.
+        let beams = AnyChart::all().filter_map(|c| match c {
+            AnyChart::Beam(b) => Some(b),
+            AnyChart::Plate(_) => None,
+        });
+        assert!(beams.eq(BeamChart::ALL.iter().copied()));
+        let plates = AnyChart::all().filter_map(|c| match c {
+            AnyChart::Plate(p) => Some(p),
+            AnyChart::Beam(_) => None,
+        });
+        assert!(plates.eq(PlateChart::ALL.iter().copied()));
     }
 }

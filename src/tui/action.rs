@@ -68,6 +68,10 @@ pub enum Action {
     SolveTarget,
     /// Explain the numbers of the regime pane.
     Explain,
+    /// The chart's y axis: linear, log, relative to Coulomb (the modes the chart can show).
+    CycleYAxis,
+    /// Export the chart shown (SVG figure and its CSV data) to files in the export directory.
+    ExportChart,
     /// Fit the chart's axes to the data (the force range of the beams' charts follows F_thre again).
     FitAxes,
     /// Text entry: cursor one character left.

@@ -5,7 +5,6 @@ use std::path::PathBuf;
 
 use super::action::Action;
 use super::keymap::Context;
-use super::plots::{self, NumericPoints, Plot, Views};
 use super::text_input::TextInput;
 use super::theme::Theme;
 use crate::PlateParams;
@@ -14,7 +13,8 @@ use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, Compact, ModelKind, Param, parse_number};
 use crate::model::twin_beams::BeamTheory;
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
-use crate::report::view::{BeamChart, PlateChart, View};
+use crate::report::chart::{self, NumericPoints, Plot, Views, YMode};
+use crate::report::view::{AnyChart, BeamChart, PlateChart, View};
 use crate::report::{number, number_with};
 
 /// A status-line message.
@@ -159,7 +159,7 @@ pub struct App {
     measurements: Option<Measurements>,
     /// Points of an external FE code loaded with `d` (a CalculiX .dat, or a plate CSV), and the
     /// parameters of the deck they came from.
-    external: Option<(plots::ExternalPoints, Option<Inputs>)>,
+    external: Option<(chart::ExternalPoints, Option<Inputs>)>,
     check_in: fn(),
     undo: Vec<Snapshot>,
     redo: Vec<Snapshot>,
@@ -169,6 +169,11 @@ pub struct App {
     /// axes do not jump; `a` fits it to the current F_thre again.
     force_span: Option<f64>,
     help_page: usize,
+    /// Where `x` writes the chart's SVG and CSV (the working directory unless set).
+    export_dir: PathBuf,
+    /// The y-axis modes chosen with `y`, by chart (None: the chart against a parameter of `v`);
+    /// a chart not listed shows its default ([`YMode::default_for`]).
+    y_modes: Vec<(Option<AnyChart>, YMode)>,
 }
 
 impl App {
@@ -207,6 +212,8 @@ impl App {
             last_target: "ratio=1.01".to_string(),
             force_span: None,
             help_page: 0,
+            export_dir: PathBuf::from("."),
+            y_modes: Vec::new(),
         };
         app.fit_axes();
         app.recompute();
@@ -232,6 +239,81 @@ impl App {
         self.beam.inputs = snapshot.beam;
         self.plate.inputs = snapshot.plate;
         self.kind = snapshot.kind;
+    }
+
+    /// Where `x` writes the exported chart (default: the working directory).
+    pub fn set_export_dir(&mut self, dir: PathBuf) {
+        self.export_dir = dir;
+    }
+
+    /// The file name (without extension) of the chart shown: `microslip-w-vs-f`, or after `v`
+    /// `microslip-w-vs-mu`.
+    fn export_stem(&self) -> String {
+        let chart = match (self.varied(), self.kind) {
+            (Some(param), kind) => {
+                let response = if kind == ModelKind::Beam { "w" } else { "u" };
+                let name = param.to_string().to_ascii_lowercase();
+                let name: String = name
+                    .chars()
+                    .map(|c| if c.is_ascii_alphanumeric() { c } else { '-' })
+                    .collect();
+                format!("{response}-vs-{name}")
+            }
+            (None, ModelKind::Beam) => self.views.beam.key().to_string(),
+            (None, ModelKind::Plate) => self.views.plate.key().to_string(),
+        };
+        format!("microslip-{chart}")
+    }
+
+    /// `x`: the chart shown as an SVG figure and its points as CSV, under the first free name
+    /// (`-2`, `-3`, ... appended); never replaces a file.
+    fn export_chart(&mut self) {
+        use crate::report::figure;
+        use crate::report::table::{TableFormat, write_table};
+        if self.plot.table.is_some() {
+            return self.error("x exports charts; this is a table (microslip kt prints it)");
+        }
+        let svg = match figure::svg(&self.plot) {
+            Ok(svg) => svg,
+            Err(e) => return self.error(e.to_string()),
+        };
+        let mut csv = Vec::new();
+        let rows = crate::report::rows::chart_rows(&self.plot);
+        if let Err(e) = write_table(&mut csv, TableFormat::Csv, rows) {
+            return self.error(format!("export failed: {e}"));
+        }
+        let stem = self.export_stem();
+        for n in 1..=999 {
+            let name = if n == 1 {
+                stem.clone()
+            } else {
+                format!("{stem}-{n}")
+            };
+            let (svg_path, csv_path) = (
+                self.export_dir.join(format!("{name}.svg")),
+                self.export_dir.join(format!("{name}.csv")),
+            );
+            if csv_path.exists() {
+                continue;
+            }
+            let written = crate::file::write_atomic(&svg_path, svg.as_bytes(), false)
+                .and_then(|()| crate::file::write_atomic(&csv_path, &csv, false));
+            match written {
+                Ok(()) => {
+                    return self.info(format!(
+                        "chart exported: {} (+ .csv data)",
+                        svg_path.display()
+                    ));
+                }
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+                Err(e) => {
+                    return self.error(format!("cannot export to {}: {e}", svg_path.display()));
+                }
+            }
+        }
+        self.error(format!(
+            "export: {stem}-2 to -999 all exist; move some away"
+        ));
     }
 
     /// The parameter charted on the x axis, if `v` chose one.
@@ -379,7 +461,7 @@ impl App {
     fn recompute(&mut self) {
         let Some(model) = self.model() else { return };
         if self.show_numeric {
-            match plots::numeric_points(&model, self.views) {
+            match chart::numeric_points(&model, self.views) {
                 Ok(points) => self.numeric = points,
                 Err(e) => {
                     self.numeric = None;
@@ -389,20 +471,65 @@ impl App {
         } else {
             self.numeric = None;
         }
+        let plot = self.linear_plot(&model);
+        self.plot = self.y_mode().apply(plot);
+    }
+
+    /// The chart shown, with its y axis linear.
+    fn linear_plot(&self, model: &Model) -> Plot {
         if let Some(param) = self.state().varied {
-            self.plot = super::vary_plot::build(&model, param);
-            return;
+            return chart::vary::build(model, param);
         }
         let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
         let external = self.external.as_ref().map(|(points, _)| points);
-        self.plot = plots::build(
-            &model,
+        chart::build(
+            model,
             self.views,
             self.numeric.as_ref(),
             measured,
             external,
             self.force_span,
-        );
+        )
+    }
+
+    /// Which chart the y-axis mode belongs to: the view's chart, None for the chart of `v`;
+    /// tables have none (outer None).
+    fn y_key(&self) -> Option<Option<AnyChart>> {
+        if self.varied().is_some() {
+            return Some(None);
+        }
+        match (self.kind, self.views.beam, self.views.plate) {
+            (ModelKind::Beam, View::Chart(c), _) => Some(Some(AnyChart::Beam(c))),
+            (ModelKind::Plate, _, View::Chart(c)) => Some(Some(AnyChart::Plate(c))),
+            _ => None,
+        }
+    }
+
+    /// The y-axis mode of the chart shown.
+    pub fn y_mode(&self) -> YMode {
+        let Some(key) = self.y_key() else {
+            return YMode::Linear;
+        };
+        self.y_modes
+            .iter()
+            .find(|(k, _)| *k == key)
+            .map_or_else(|| key.map_or(YMode::Linear, YMode::default_for), |m| m.1)
+    }
+
+    /// `y`: the next y-axis mode the chart can show.
+    fn cycle_y_axis(&mut self) {
+        let (Some(key), Some(model)) = (self.y_key(), self.model()) else {
+            return self.error("y: a table has no y axis");
+        };
+        let current = self.y_mode();
+        let next = current.next_for(&self.linear_plot(&model));
+        if next == current {
+            return self.info(format!("y axis: only {} for this chart", current.label()));
+        }
+        self.y_modes.retain(|(k, _)| *k != key);
+        self.y_modes.push((key, next));
+        self.recompute();
+        self.info(format!("y axis: {} (y: next mode)", next.label()));
     }
 
     /// Applies one action.
@@ -707,6 +834,8 @@ impl App {
             }
             Action::Undo => self.travel(false),
             Action::Redo => self.travel(true),
+            Action::ExportChart => self.export_chart(),
+            Action::CycleYAxis => self.cycle_y_axis(),
             Action::Vary => {
                 let param = self.selected_param();
                 let state = self.state_mut();
@@ -929,7 +1058,7 @@ impl App {
         };
         self.info(format!("{path}{adopted}: {summary}"));
         self.external = Some((
-            plots::ExternalPoints {
+            chart::ExternalPoints {
                 label: code.to_string(),
                 model,
                 points,
@@ -1600,5 +1729,39 @@ mod tests {
             app.message().unwrap().text,
             "no user preset directory: set XDG_CONFIG_HOME or HOME"
         );
+    }
+
+    #[test]
+    fn x_exports_the_chart_as_svg_and_csv_without_replacing_files() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut app = app();
+        app.set_export_dir(dir.path().to_path_buf());
+        app.update(Action::ExportChart);
+        let message = app.message().unwrap();
+        assert!(!message.is_error, "{}", message.text);
+        assert!(
+            message.text.contains("microslip-w-vs-f.svg"),
+            "{}",
+            message.text
+        );
+        let svg = std::fs::read_to_string(dir.path().join("microslip-w-vs-f.svg")).unwrap();
+        assert!(svg.contains(&app.plot().title));
+        let csv = std::fs::read_to_string(dir.path().join("microslip-w-vs-f.csv")).unwrap();
+        assert!(
+            csv.starts_with("series,x_axis,x,y_axis,y\nCoulomb,F (N),0"),
+            "{csv}"
+        );
+        // Again: a new name, the first files untouched.
+        app.update(Action::ExportChart);
+        assert!(dir.path().join("microslip-w-vs-f-2.svg").exists());
+        // After v, the file says what is charted; a table is refused with a reason.
+        app.update(Action::Vary);
+        app.update(Action::ExportChart);
+        assert!(dir.path().join("microslip-w-vs-l.csv").exists());
+        app.update(Action::Vary);
+        app.update(Action::PreviousChart);
+        app.update(Action::ExportChart);
+        assert!(app.message().unwrap().is_error);
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 6);
     }
 }

@@ -236,6 +236,18 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         Context::Main,
+        &[(KeyCode::Char('y'), NONE)],
+        Action::CycleYAxis,
+        "y axis lin/log/rel.",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('x'), NONE)],
+        Action::ExportChart,
+        "export chart SVG+CSV",
+    ),
+    bind(
+        Context::Main,
         &[(KeyCode::Char('u'), NONE)],
         Action::Undo,
         "undo a change",

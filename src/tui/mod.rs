@@ -1,5 +1,5 @@
 //! The terminal UI: the event loop. Everything else lives in [`action`] (what keys ask for),
-//! [`app`] (state), [`keymap`] (keys), [`plots`] (chart data), [`text_input`] (typed text),
+//! [`app`] (state), [`keymap`] (keys), [`text_input`] (typed text),
 //! [`terminal`] (entering, leaving, suspending), [`signals`] and [`ui`] (drawing).
 //!
 //! Over SSH (see README, "Limits"):
@@ -16,14 +16,12 @@
 pub mod action;
 pub mod app;
 pub mod keymap;
-pub mod plots;
 mod signals;
 pub mod summary;
 pub mod terminal;
 pub mod text_input;
 pub mod theme;
 pub mod ui;
-pub mod vary_plot;
 
 use std::io::{self, IsTerminal};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError};

@@ -12,8 +12,8 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Chart, Dataset, GraphType, Paragraph, Widget, Wrap};
 
 use super::panes::pane;
+use crate::report::chart::{self as plots, Plot, PlotSeries, SeriesKind};
 use crate::tui::app::App;
-use crate::tui::plots::{self, Plot, PlotSeries, SeriesKind};
 use crate::tui::theme::{Role, Theme};
 
 /// The chart pane: title, legend, plot.

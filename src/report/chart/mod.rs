@@ -1,5 +1,11 @@
 //! What each chart shows, as plain data (title, axes, series), built from [`crate::curves`]. The
-//! drawing code turns a [`Plot`] into cells and never computes physics itself.
+//! TUI turns a [`Plot`] into cells, the figure writer ([`crate::report::figure`]) into SVG; neither
+//! computes physics itself, so a curve on screen and in a figure are the same numbers.
+
+pub mod vary;
+mod ymode;
+
+pub use ymode::YMode;
 
 use crate::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::fit::Measurement;
@@ -8,7 +14,7 @@ use crate::model::params::{BeamParam, ModelKind, PlateParam};
 use crate::numeric::{
     ContinuumMesh, MeshDensity, NumericError, PlateFe, TwinBeamsFe, solve_plate_continuum,
 };
-use crate::report::view::{BeamChart, PlateChart, Table, View};
+use crate::report::view::{AnyChart, BeamChart, PlateChart, Table, View};
 use crate::report::{number, number_with};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
@@ -35,6 +41,15 @@ pub struct Axis {
 }
 
 impl Axis {
+    /// The value a plotted coordinate stands for: `10^v` on a log axis, `v` itself otherwise.
+    pub fn value(&self, plotted: f64) -> f64 {
+        if self.log {
+            10f64.powf(plotted)
+        } else {
+            plotted
+        }
+    }
+
     /// `count` tick labels evenly spaced from min to max (at least the axis's own three): large
     /// charts get more ticks.
     pub fn ticks(&self, count: usize) -> Vec<String> {
@@ -45,7 +60,7 @@ impl Axis {
         (0..count)
             .map(|i| {
                 let v = lo + (hi - lo) * i as f64 / (count - 1) as f64;
-                tick(if self.log { 10f64.powf(v) } else { v })
+                tick(self.value(v))
             })
             .collect()
     }
@@ -143,6 +158,20 @@ impl Views {
         }
     }
 
+    /// The default views with `chart` shown for its model.
+    pub fn showing(chart: AnyChart) -> Views {
+        match chart {
+            AnyChart::Beam(c) => Views {
+                beam: View::Chart(c),
+                ..Views::default()
+            },
+            AnyChart::Plate(c) => Views {
+                plate: View::Chart(c),
+                ..Views::default()
+            },
+        }
+    }
+
     /// Title, 1-based position and count of `kind`'s view, for the pane title.
     pub fn describe(self, kind: ModelKind) -> (&'static str, usize, usize) {
         let ((position, count), title) = match kind {
@@ -153,7 +182,7 @@ impl Views {
     }
 }
 
-pub(super) fn line(name: impl Into<String>, points: Series) -> PlotSeries {
+pub fn line(name: impl Into<String>, points: Series) -> PlotSeries {
     PlotSeries {
         name: name.into(),
         points,
@@ -161,7 +190,7 @@ pub(super) fn line(name: impl Into<String>, points: Series) -> PlotSeries {
     }
 }
 
-pub(super) fn cursor(x: f64, [y0, y1]: [f64; 2]) -> PlotSeries {
+pub fn cursor(x: f64, [y0, y1]: [f64; 2]) -> PlotSeries {
     PlotSeries {
         name: "current".into(),
         points: vec![(x, y0), (x, y1)],
@@ -188,7 +217,7 @@ fn axis_bounds(lo: f64, hi: f64) -> [f64; 2] {
     }
 }
 
-pub(super) fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
+pub fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
     let [lo, hi] = axis_bounds(lo, hi);
     Axis {
         title: title.into(),
@@ -199,7 +228,7 @@ pub(super) fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
 }
 
 /// An axis in log10 units, labelled with the values themselves.
-pub(super) fn log_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
+pub fn log_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
     let labels = [lo, 0.5 * (lo + hi), hi]
         .iter()
         .map(|&v| tick(10f64.powf(v)))
@@ -217,7 +246,7 @@ fn tick(value: f64) -> String {
     number_with(value, 3)
 }
 
-pub(super) fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
+pub fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
     series
         .into_iter()
         .flatten()
@@ -236,7 +265,7 @@ fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64, span: Option<f64
     TipForce::clamped(wanted).newtons()
 }
 
-pub(super) fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
+pub fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
     Samples::new(from, to, SAMPLES, spacing).ok()
 }
 
@@ -255,6 +284,51 @@ fn cell(value: f64, width: usize) -> String {
         .map(|digits| number_with(value, digits))
         .find(|text| text.len() <= width)
         .unwrap_or_else(|| number_with(value, 1))
+}
+
+/// The tolerance the K_T table answers for: 1 % of Coulomb (`microslip kt --tolerance` takes any).
+const TABLE_TOLERANCE: f64 = 0.01;
+
+/// The K_T table's answer to "how stiff for Coulomb within 1 %": the beams at F and over 0..F, the
+/// plate at its pressure.
+fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
+    use crate::model::tolerance::{
+        Threshold, beam_stiffness_for_tolerance, plate_stiffness_for_tolerance,
+    };
+    let shown = |answer: Result<_, _>| match answer
+        .map(|a: crate::model::tolerance::ToleranceAnswer| a.threshold)
+    {
+        Ok(Threshold::Stiffness(k) | Threshold::Everywhere(k)) => format!(">= {}", cell(k, 7)),
+        Ok(Threshold::Nowhere { stiffness, .. }) => format!("> {}", cell(stiffness, 7)),
+        Err(_) => "-".to_string(),
+    };
+    let within = format!(
+        "within {} % of Coulomb: K_T",
+        number(100.0 * TABLE_TOLERANCE)
+    );
+    let heading = format!("W{}", &within[1..]);
+    match model {
+        Model::Beam { beams, force } => {
+            let f = force.newtons();
+            if f <= 0.0 {
+                return vec![format!("{heading}: any, at F = 0")];
+            }
+            let at = beam_stiffness_for_tolerance(beams, [f, f], TABLE_TOLERANCE, element);
+            let upto = beam_stiffness_for_tolerance(beams, [0.0, f], TABLE_TOLERANCE, element);
+            vec![
+                format!("{heading} {} at F,", shown(at)),
+                format!("  {} at all F up to F", shown(upto)),
+            ]
+        }
+        Model::Plate(plate) => vec![format!(
+            "u(L) {within} {}",
+            shown(plate_stiffness_for_tolerance(
+                plate,
+                TABLE_TOLERANCE,
+                element
+            ))
+        )],
+    }
 }
 
 /// The K_T comparison as a narrow table (fits the 44-column chart pane of an 80x24 screen).
@@ -312,6 +386,7 @@ fn stiffness_table(model: &Model) -> Plot {
         lines.push(format!("{:<10} {cells}", short(&row.candidate.source)));
     }
     lines.push(String::new());
+    lines.extend(tolerance_lines(model, element));
     lines.push(format!(
         "K_T MPa/mm; FE elements {} mm (L/100)",
         number(element)
@@ -325,7 +400,7 @@ fn stiffness_table(model: &Model) -> Plot {
         };
         lines.push(format!("{}: {how}", code.short));
     }
-    lines.push("Other sizes, K_N, eq. 4: microslip kt".into());
+    lines.push("Other sizes, K_N, tolerances: microslip kt".into());
     Plot {
         title: "K_T that FE codes assume by default".into(),
         table: Some(lines),
@@ -653,6 +728,27 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
             })
         }
     }
+}
+
+/// The chart `chart` of `model` (a model of the chart's kind) as a figure shows it: the TUI's
+/// series, with the finite-element points where asked and the chart has them, the y axis in mode
+/// `y` where it applies.
+///
+/// # Errors
+/// The finite-element solver's, when `finite_elements` is asked and it fails.
+pub fn figure(
+    model: &Model,
+    chart: AnyChart,
+    finite_elements: bool,
+    y: YMode,
+) -> Result<Plot, NumericError> {
+    let views = Views::showing(chart);
+    let numeric = if finite_elements {
+        numeric_points(model, views)?
+    } else {
+        None
+    };
+    Ok(y.apply(build(model, views, numeric.as_ref(), None, None, None)))
 }
 
 /// Finite-element points for chart `chart`, where the chart has a finite-element counterpart.

@@ -1,8 +1,8 @@
 //! The chart of `v`: the response (w(L) of the beams, u(L) of the plate) against the selected
 //! parameter, both laws, with the cursor at the current value. Numbers from
-//! [`crate::curves::response_vs_param`]; axes and series from [`super::plots`].
+//! [`crate::curves::response_vs_param`]; axes and series from [`super`].
 
-use super::plots::{Plot, cursor, line, linear_axis, log_axis, max_y, samples};
+use super::{Plot, cursor, line, linear_axis, log_axis, max_y, samples};
 use crate::curves::{Spacing, response_vs_param};
 use crate::model::inputs::Model;
 use crate::model::params::{BeamParam, Domain, Param, Step};

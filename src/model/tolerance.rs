@@ -1,0 +1,304 @@
+//! The question FE users ask: how stiff must the friction penalty K_T be for the regularized answer
+//! to stay within a tolerance of Coulomb? The smallest such K_T, and what it means in each FE code's
+//! own setting (docs/theory.md, (T1)-(T3)).
+//!
+//! Both answers rest on monotonicity, derived in docs/theory.md: at a fixed tip force the twin beams'
+//! regularized w(L) does not increase with K_T (T1), and the plate's u(L) falls strictly with K_T
+//! (P10). The deviation from Coulomb is then a non-increasing function of K_T, its worst value over
+//! a force range too, and "within tolerance" holds on one interval [K_T*, infinity): one bracketed
+//! root on ln K_T finds K_T*.
+
+use crate::model::code_defaults::{CODE_DEFAULTS, CodeDefault, DefaultRule};
+use crate::model::params::{BeamParam, Domain, ParamError, PlateParam};
+use crate::model::solve::find_root_in_bracket;
+use crate::{SqueezedPlate, TipForce, TwinBeams};
+
+/// Force samples over a range of the beams' tip force, besides its ends and F_thre: the deviation
+/// is flat below F_thre and falls above it (T2), so the samples only guard that analysis.
+const FORCE_SAMPLES: usize = 64;
+
+/// The accepted tolerances (fractions): from 1e-9 (round-off of the closed forms is ~1e-12) to 10
+/// (1000 %).
+pub const TOLERANCE: Domain = Domain::Positive {
+    min: 1e-9,
+    max: 10.0,
+};
+
+/// The smallest K_T within the tolerance, if the accepted K_T range holds one.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Threshold {
+    /// Every K_T at least this (MPa/mm) is within the tolerance; smaller ones are not.
+    Stiffness(f64),
+    /// Even the smallest accepted K_T (the value given) is within the tolerance.
+    Everywhere(f64),
+    /// Not even the largest accepted K_T (the value given) is: its deviation is given too.
+    Nowhere {
+        /// The largest accepted K_T (MPa/mm).
+        stiffness: f64,
+        /// Its deviation from Coulomb (fraction).
+        deviation: f64,
+    },
+}
+
+impl Threshold {
+    /// The K_T that meets the tolerance with the least stiffness, if any.
+    pub fn stiffness(self) -> Option<f64> {
+        match self {
+            Threshold::Stiffness(k) | Threshold::Everywhere(k) => Some(k),
+            Threshold::Nowhere { .. } => None,
+        }
+    }
+}
+
+/// What the tolerance asks of K_T, for one model and range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ToleranceAnswer {
+    /// The tolerance (fraction: 0.01 for 1 %).
+    pub tolerance: f64,
+    /// Beams: the tip-force range checked [from, to] (N); plate: None.
+    pub forces: Option<[f64; 2]>,
+    /// The smallest K_T within the tolerance.
+    pub threshold: Threshold,
+    /// The current K_T (MPa/mm) and its worst deviation from Coulomb over the range (fraction).
+    pub current: (f64, f64),
+    /// What the threshold means in each FE code's setting.
+    pub settings: Vec<CodeSetting>,
+}
+
+/// One FE code's setting that gives at least the K_T needed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CodeSetting {
+    /// The code.
+    pub code: &'static CodeDefault,
+    /// The K_T its default gives here (MPa/mm), if it has one; and whether that is enough.
+    pub default: Option<(f64, bool)>,
+    /// The setting needed.
+    pub needed: Setting,
+}
+
+/// A code's own setting, in its own terms.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Setting {
+    /// Allowable elastic slip: at most `fraction` of the contact face length `element` (mm), i.e. at
+    /// most `slip` (mm) absolute; or, keeping the default fraction, faces no longer than
+    /// `element_max` (mm).
+    SlipTolerance {
+        /// The largest fraction of the element length.
+        fraction: f64,
+        /// The element length it is a fraction of (mm).
+        element: f64,
+        /// The largest absolute elastic slip, mu P / K_T* (mm).
+        slip: f64,
+        /// The largest element length with the code's default fraction (mm).
+        element_max: f64,
+    },
+    /// A stick slope (penalty) of at least this (MPa/mm).
+    StickSlope(f64),
+    /// A penalty E / (d h_min): the smallest contact element at most this (mm).
+    ElementSize(f64),
+    /// The friction stiffness the user gives: at least this (MPa/mm).
+    Stiffness(f64),
+}
+
+/// Why a question cannot be answered.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ToleranceError {
+    /// The tolerance is out of range.
+    #[error("invalid tolerance = {value}: a fraction from 1e-9 to 10, e.g. 0.01 or 1%")]
+    Tolerance {
+        /// The value given.
+        value: f64,
+    },
+    /// The force range is empty of loads or out of range.
+    #[error(transparent)]
+    Force(#[from] ParamError),
+    /// Only zero force: no deflection to compare.
+    #[error("the force range [{from}, {to}] N holds no positive force: nothing deflects")]
+    Unloaded {
+        /// Start (N).
+        from: f64,
+        /// End (N).
+        to: f64,
+    },
+}
+
+fn check_tolerance(tolerance: f64) -> Result<f64, ToleranceError> {
+    if TOLERANCE.contains(tolerance) {
+        Ok(tolerance)
+    } else {
+        Err(ToleranceError::Tolerance { value: tolerance })
+    }
+}
+
+/// The twin beams' regularized w(L) over Coulomb's, minus 1, at `force` (> 0).
+pub fn beam_deviation(beams: &TwinBeams, force: TipForce) -> f64 {
+    let coulomb = beams.coulomb(force).tip_deflection();
+    beams.regularized(force).tip_deflection() / coulomb - 1.0
+}
+
+/// The plate's regularized u(L) over Coulomb's, minus 1.
+pub fn plate_deviation(plate: &SqueezedPlate) -> f64 {
+    plate.regularized().end_displacement() / plate.coulomb().end_displacement() - 1.0
+}
+
+/// The forces at which the deviation is checked: the ends of [from, to], F_thre when inside, and
+/// [`FORCE_SAMPLES`] between; zero left out (nothing deflects).
+fn force_grid(beams: &TwinBeams, [from, to]: [f64; 2]) -> Vec<TipForce> {
+    let threshold = beams.threshold_force();
+    let mut forces: Vec<f64> = (0..=FORCE_SAMPLES)
+        .map(|i| from + (to - from) * i as f64 / FORCE_SAMPLES as f64)
+        .collect();
+    if (from..=to).contains(&threshold) {
+        forces.push(threshold);
+    }
+    forces.retain(|&f| f > 0.0);
+    forces.sort_by(f64::total_cmp);
+    forces.dedup();
+    forces.into_iter().map(TipForce::clamped).collect()
+}
+
+fn worst(beams: &TwinBeams, forces: &[TipForce]) -> f64 {
+    forces
+        .iter()
+        .map(|&f| beam_deviation(beams, f))
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// The smallest K_T at which `deviation(K_T)`, non-increasing, is at most `tolerance`, searched
+/// over `domain` on ln K_T.
+fn smallest_within(domain: Domain, tolerance: f64, deviation: impl Fn(f64) -> f64) -> Threshold {
+    let (lo, hi) = (domain.min(), domain.max());
+    if deviation(lo) <= tolerance {
+        return Threshold::Everywhere(lo);
+    }
+    let stiff = deviation(hi);
+    if stiff > tolerance {
+        return Threshold::Nowhere {
+            stiffness: hi,
+            deviation: stiff,
+        };
+    }
+    // Relative misfit: numbers near 1 whatever the tolerance's scale.
+    let misfit = |ln_k: f64| deviation(ln_k.exp()) / tolerance - 1.0;
+    let ln_k = find_root_in_bracket(misfit, lo.ln(), hi.ln());
+    Threshold::Stiffness(ln_k.exp())
+}
+
+/// The twin beams: the smallest K_T for which the regularized w(L) stays within `tolerance`
+/// (fraction) of Coulomb's at every tip force in `[from, to]` (N), all else as in `beams`.
+///
+/// # Errors
+/// A tolerance outside (0, 10], forces outside the accepted range or not ordered, or no positive
+/// force.
+pub fn beam_stiffness_for_tolerance(
+    beams: &TwinBeams,
+    [from, to]: [f64; 2],
+    tolerance: f64,
+    element: f64,
+) -> Result<ToleranceAnswer, ToleranceError> {
+    let tolerance = check_tolerance(tolerance)?;
+    let (from, to) = (TipForce::new(from)?.newtons(), TipForce::new(to)?.newtons());
+    let (from, to) = (from.min(to), from.max(to));
+    if to <= 0.0 {
+        return Err(ToleranceError::Unloaded { from, to });
+    }
+    let forces = force_grid(beams, [from, to]);
+    let at = |kt: f64| {
+        // Every K_T of the domain is accepted; the fallback is never taken.
+        let beams = beams.with_tangential_stiffness(kt).unwrap_or(*beams);
+        worst(&beams, &forces)
+    };
+    let domain = BeamParam::Stiffness.spec().domain;
+    let threshold = smallest_within(domain, tolerance, at);
+    let p = beams.params();
+    let current = (p.tangential_stiffness, worst(beams, &forces));
+    Ok(ToleranceAnswer {
+        tolerance,
+        forces: Some([from, to]),
+        threshold,
+        current,
+        settings: code_settings(
+            threshold,
+            p.friction * p.pressure,
+            p.youngs_modulus,
+            element,
+        ),
+    })
+}
+
+/// The plate: the smallest K_T for which the regularized u(L) is within `tolerance` (fraction) of
+/// Coulomb's, all else as in `plate`.
+///
+/// # Errors
+/// A tolerance outside (0, 10].
+pub fn plate_stiffness_for_tolerance(
+    plate: &SqueezedPlate,
+    tolerance: f64,
+    element: f64,
+) -> Result<ToleranceAnswer, ToleranceError> {
+    let tolerance = check_tolerance(tolerance)?;
+    let at = |kt: f64| plate_deviation(&plate.with_clamped(PlateParam::Stiffness, kt));
+    let threshold = smallest_within(PlateParam::Stiffness.spec().domain, tolerance, at);
+    let p = plate.params();
+    Ok(ToleranceAnswer {
+        tolerance,
+        forces: None,
+        threshold,
+        current: (p.tangential_stiffness, plate_deviation(plate)),
+        settings: code_settings(
+            threshold,
+            p.friction * p.pressure,
+            p.youngs_modulus,
+            element,
+        ),
+    })
+}
+
+/// Each code's setting for a penalty of at least the threshold (T3). `mu_p` is mu P (MPa),
+/// `element` the contact element length (mm).
+fn code_settings(threshold: Threshold, mu_p: f64, modulus: f64, element: f64) -> Vec<CodeSetting> {
+    let Some(needed) = threshold.stiffness() else {
+        return Vec::new();
+    };
+    CODE_DEFAULTS
+        .iter()
+        .map(|code| {
+            let default = code
+                .implied_stiffness(mu_p, 1.0, modulus, element)
+                .map(|k| (k, k >= needed));
+            let setting = match code.rule {
+                DefaultRule::ElasticSlipFraction(f) => Setting::SlipTolerance {
+                    fraction: mu_p / (needed * element),
+                    element,
+                    slip: mu_p / needed,
+                    element_max: mu_p / (f * needed),
+                },
+                DefaultRule::ModulusOver(_) => Setting::StickSlope(needed),
+                DefaultRule::ModulusOverSize(d) => Setting::ElementSize(modulus / (d * needed)),
+                DefaultRule::UserSupplied | DefaultRule::Unknown => Setting::Stiffness(needed),
+            };
+            CodeSetting {
+                code,
+                default,
+                needed: setting,
+            }
+        })
+        .collect()
+}
+
+/// Parses a tolerance as typed: `1%` or `0.01`.
+///
+/// # Errors
+/// Not a number, or outside (0, 10] as a fraction.
+pub fn parse_tolerance(text: &str) -> Result<f64, String> {
+    let trimmed = text.trim();
+    let (number, scale) = match trimmed.strip_suffix('%') {
+        Some(n) => (n.trim(), 0.01),
+        None => (trimmed, 1.0),
+    };
+    let value = crate::model::params::parse_number(number)
+        .map(|v| v * scale)
+        .ok_or_else(|| format!("invalid --tolerance '{text}': a number, e.g. 1% or 0.01"))?;
+    check_tolerance(value)
+        .map_err(|_| format!("invalid --tolerance '{text}': between 1e-7 % and 1000 %"))
+}

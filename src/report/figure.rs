@@ -1,0 +1,422 @@
+//! SVG figures of the charts: the same [`Plot`] the terminal draws (series, axes, legend, finite-
+//! element points), drawn by plotters' SVG backend. Text is written as `<text>` elements in a generic
+//! `sans-serif` family, so no font file is read or needed; the output depends on the plot alone (no
+//! date, no random identifier), so equal inputs give byte-identical files.
+//!
+//! A log axis of the plot (plotted in log10 units) becomes a real logarithmic axis here, with
+//! ticks at decades.
+
+use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::prelude::*;
+use thiserror::Error;
+
+use super::chart::{Plot, PlotSeries, SeriesKind, YMode};
+use super::number_with;
+use super::view::{AnyChart, BeamChart, PlateChart};
+
+/// Width and height of a figure, in SVG pixels (a 16:10 frame that prints well at 16 cm).
+pub const SIZE: (u32, u32) = (800, 500);
+
+/// Why a figure could not be drawn.
+#[derive(Debug, Error)]
+pub enum FigureError {
+    /// The view is a table (the K_T comparison), not a chart.
+    #[error("'{0}' is a table, not a chart: `microslip kt` prints it")]
+    Table(String),
+    /// The drawing backend failed (a programming error: the SVG goes to a string).
+    #[error("drawing the figure failed: {0}")]
+    Drawing(String),
+}
+
+/// Colours of the series, by position (Okabe-Ito, distinguishable with colour-vision deficiency);
+/// a series named `Coulomb` is always black, the reference the others are compared with.
+const PALETTE: [RGBColor; 7] = [
+    RGBColor(0, 114, 178),
+    RGBColor(213, 94, 0),
+    RGBColor(0, 158, 115),
+    RGBColor(204, 121, 167),
+    RGBColor(230, 159, 0),
+    RGBColor(86, 180, 233),
+    RGBColor(120, 120, 120),
+];
+
+fn colour(index: usize, series: &PlotSeries) -> RGBColor {
+    if series.name == "Coulomb" {
+        BLACK
+    } else {
+        PALETTE[index % PALETTE.len()]
+    }
+}
+
+/// The plot as an SVG document of [`SIZE`].
+///
+/// # Errors
+/// [`FigureError::Table`] for a table view; [`FigureError::Drawing`] if plotters fails.
+pub fn svg(plot: &Plot) -> Result<String, FigureError> {
+    if plot.table.is_some() {
+        return Err(FigureError::Table(plot.title.clone()));
+    }
+    let mut out = String::new();
+    let decade = |[lo, hi]: [f64; 2]| (10f64.powf(lo)..10f64.powf(hi)).log_scale();
+    let linear = |[lo, hi]: [f64; 2]| lo..hi;
+    let (x, y) = (plot.x.bounds, plot.y.bounds);
+    match (plot.x.log, plot.y.log) {
+        (false, false) => draw(&mut out, plot, linear(x), linear(y)),
+        (true, false) => draw(&mut out, plot, decade(x), linear(y)),
+        (false, true) => draw(&mut out, plot, linear(x), decade(y)),
+        (true, true) => draw(&mut out, plot, decade(x), decade(y)),
+    }
+    .map_err(|e| FigureError::Drawing(e.to_string()))?;
+    Ok(out)
+}
+
+/// The corner of the plot area with the fewest points, for the legend.
+fn emptiest_corner(plot: &Plot) -> SeriesLabelPosition {
+    let [x0, x1] = plot.x.bounds;
+    let [y0, y1] = plot.y.bounds;
+    let corners = [
+        (SeriesLabelPosition::UpperLeft, false, true),
+        (SeriesLabelPosition::UpperRight, true, true),
+        (SeriesLabelPosition::LowerRight, true, false),
+        (SeriesLabelPosition::LowerLeft, false, false),
+    ];
+    let crowd = |right: bool, top: bool| {
+        plot.series
+            .iter()
+            .flat_map(|s| &s.points)
+            .filter(|&&(x, y)| {
+                let (u, v) = ((x - x0) / (x1 - x0), (y - y0) / (y1 - y0));
+                (if right { u > 0.6 } else { u < 0.4 }) && (if top { v > 0.6 } else { v < 0.4 })
+            })
+            .count()
+    };
+    corners
+        .into_iter()
+        .min_by_key(|&(_, right, top)| crowd(right, top))
+        .map_or(SeriesLabelPosition::UpperLeft, |c| c.0)
+}
+
+type DrawResult = Result<(), Box<dyn std::error::Error>>;
+
+fn draw<X, Y>(out: &mut String, plot: &Plot, x_spec: X, y_spec: Y) -> DrawResult
+where
+    X: AsRangedCoord<Value = f64>,
+    Y: AsRangedCoord<Value = f64>,
+    X::CoordDescType: ValueFormatter<f64>,
+    Y::CoordDescType: ValueFormatter<f64>,
+{
+    let root = SVGBackend::with_string(out, SIZE).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(&plot.title, ("sans-serif", 20))
+        .margin(16)
+        .x_label_area_size(44)
+        .y_label_area_size(72)
+        .build_cartesian_2d(x_spec, y_spec)?;
+    // Key points that miss 0 by a rounding error (6.9e-18 on a symmetric axis) are labelled 0.
+    let tick =
+        |span: f64| move |v: &f64| number_with(if v.abs() < 1e-9 * span { 0.0 } else { *v }, 3);
+    let span = |a: &super::chart::Axis| (a.value(a.bounds[1]) - a.value(a.bounds[0])).abs();
+    let (x_tick, y_tick) = (tick(span(&plot.x)), tick(span(&plot.y)));
+    chart
+        .configure_mesh()
+        .x_desc(plot.x.title.as_str())
+        .y_desc(plot.y.title.as_str())
+        .x_label_formatter(&x_tick)
+        .y_label_formatter(&y_tick)
+        .x_labels(7)
+        .y_labels(7)
+        .label_style(("sans-serif", 13))
+        .axis_desc_style(("sans-serif", 15))
+        .max_light_lines(0)
+        .bold_line_style(RGBColor(225, 225, 225))
+        .draw()?;
+    let value = |&(x, y): &(f64, f64)| (plot.x.value(x), plot.y.value(y));
+    // The cursor first, under the curves, and points last, on top; the legend in the plot's order
+    // with the cursor last (an empty series carries its label).
+    let grey = ShapeStyle::from(&RGBColor(150, 150, 150)).stroke_width(1);
+    let dashed = |points: Vec<(f64, f64)>| DashedLineSeries::new(points, 6, 4, grey);
+    let cursors = plot.series.iter().filter(|s| s.kind == SeriesKind::Cursor);
+    for series in cursors.clone() {
+        chart.draw_series(dashed(series.points.iter().map(value).collect()))?;
+    }
+    let mut order: Vec<(usize, &PlotSeries)> = plot.series.iter().enumerate().collect();
+    order.sort_by_key(|(_, s)| s.kind == SeriesKind::Points);
+    for (i, series) in order {
+        let points = series.points.iter().map(value);
+        let style = colour(i, series);
+        match series.kind {
+            SeriesKind::Line => {
+                let line = ShapeStyle::from(&style).stroke_width(2);
+                chart
+                    .draw_series(LineSeries::new(points, line))?
+                    .label(series.name.as_str())
+                    .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], line));
+            }
+            SeriesKind::Points => {
+                let mark = ShapeStyle::from(&style).stroke_width(2);
+                chart
+                    .draw_series(points.map(|p| Circle::new(p, 4, mark)))?
+                    .label(series.name.as_str())
+                    .legend(move |(x, y)| Circle::new((x + 10, y), 4, mark));
+            }
+            SeriesKind::Cursor => {}
+        }
+    }
+    for series in cursors {
+        chart
+            .draw_series(dashed(Vec::new()))?
+            .label(series.name.as_str())
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], grey));
+    }
+    chart
+        .configure_series_labels()
+        .position(emptiest_corner(plot))
+        .label_font(("sans-serif", 13))
+        .background_style(WHITE.mix(0.85))
+        .border_style(RGBColor(180, 180, 180))
+        .draw()?;
+    root.present()?;
+    Ok(())
+}
+
+/// One figure of `microslip figures`: a chart of a bundled preset.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PaperFigure {
+    /// File name without extension (`.svg` and `.csv` are written).
+    pub stem: &'static str,
+    /// The bundled preset charted.
+    pub preset: &'static str,
+    /// The chart.
+    pub chart: AnyChart,
+    /// With the project's finite-element points (the paper's comparison figures).
+    pub finite_elements: bool,
+    /// The y axis.
+    pub y: YMode,
+    /// What it shows, for the index page.
+    pub caption: &'static str,
+}
+
+/// The paper's figures (its two data sets, with the finite-element points of its comparison
+/// figures), then the cyclic loading this project adds.
+pub const PAPER_FIGURES: &[PaperFigure] = &[
+    PaperFigure {
+        stem: "beam-w-vs-f",
+        preset: "paper-beams",
+        chart: AnyChart::Beam(BeamChart::Deflection),
+        y: YMode::Linear,
+        finite_elements: true,
+        caption: "Twin beams, K_T = 600 MPa/mm: tip deflection w(L) against the tip force F, \
+                  Coulomb and regularized (K_T/5, K_T, K_T x 5), finite-element points at K_T",
+    },
+    PaperFigure {
+        stem: "beam-w-vs-f-relative",
+        preset: "paper-beams",
+        chart: AnyChart::Beam(BeamChart::Deflection),
+        y: YMode::Relative,
+        finite_elements: true,
+        caption: "Twin beams: the same curves as w(L) / w(L)_Coulomb - 1 in %, where the K_T \
+                  family separates: constant in stick, falling once Coulomb slides",
+    },
+    PaperFigure {
+        stem: "beam-soft-w-vs-f",
+        preset: "paper-beams-soft",
+        chart: AnyChart::Beam(BeamChart::Deflection),
+        y: YMode::Linear,
+        finite_elements: true,
+        caption: "Twin beams, K_T/5 = 120 MPa/mm: w(L) against F, finite-element points at \
+                  120 MPa/mm",
+    },
+    PaperFigure {
+        stem: "beam-x-vs-f",
+        preset: "paper-beams",
+        chart: AnyChart::Beam(BeamChart::SlipBoundary),
+        y: YMode::Linear,
+        finite_elements: true,
+        caption: "Twin beams: end X of the microslip zone (from the clamp) against F, \
+                  finite-element points at K_T",
+    },
+    PaperFigure {
+        stem: "beam-soft-x-vs-f",
+        preset: "paper-beams-soft",
+        chart: AnyChart::Beam(BeamChart::SlipBoundary),
+        y: YMode::Linear,
+        finite_elements: true,
+        caption: "Twin beams, K_T/5: X against F, finite-element points at 120 MPa/mm",
+    },
+    PaperFigure {
+        stem: "plate-u-vs-kt",
+        preset: "paper-plate",
+        chart: AnyChart::Plate(PlateChart::Displacement),
+        y: YMode::Log,
+        finite_elements: true,
+        caption: "Squeezed plate: end displacement u(L) against K_T, Coulomb and regularized, \
+                  finite-element points and the 2-D plane-strain continuum",
+    },
+    PaperFigure {
+        stem: "plate-xr-vs-mu",
+        preset: "paper-plate",
+        chart: AnyChart::Plate(PlateChart::SlipBoundary),
+        y: YMode::Linear,
+        finite_elements: false,
+        caption: "Squeezed plate: end X_r of the microslip zone against mu, for K_T/10, K_T, \
+                  K_T x 10",
+    },
+    PaperFigure {
+        stem: "plate-pressure",
+        preset: "paper-plate",
+        chart: AnyChart::Plate(PlateChart::ContactPressure),
+        y: YMode::Linear,
+        finite_elements: false,
+        caption: "Squeezed plate: contact pressure P_r(x)/P along the half-plate, against the \
+                  constant-pressure assumption",
+    },
+    PaperFigure {
+        stem: "beam-loop",
+        preset: "paper-beams",
+        chart: AnyChart::Beam(BeamChart::Loop),
+        y: YMode::Linear,
+        finite_elements: true,
+        caption: "One beam cycled between +F and -F (F = 100 N): the hysteresis loop, both laws, \
+                  finite-element points of the same cycle",
+    },
+    PaperFigure {
+        stem: "beam-d-vs-fa",
+        preset: "paper-beams",
+        chart: AnyChart::Beam(BeamChart::Dissipation),
+        y: YMode::Log,
+        finite_elements: false,
+        caption: "Twin beams: dissipation per cycle D (both beams) against the amplitude F_a",
+    },
+];
+
+/// The page that shows `figures` (written beside them as `index.html`): each SVG with its caption
+/// and a link to its data. Plain HTML, no script, no date.
+pub fn index_html(figures: &[PaperFigure]) -> String {
+    let mut page = String::from(
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <title>microslip figures</title>\n<style>\n\
+         body { font-family: sans-serif; max-width: 860px; margin: 2em auto; }\n\
+         figure { margin: 0 0 2.5em 0; } img { width: 100%; border: 1px solid #ddd; }\n\
+         </style>\n</head>\n<body>\n<h1>microslip figures</h1>\n\
+         <p>Ligier &amp; Bonhote (2014), regularized Coulomb friction: the paper's data sets, \
+         both laws, closed forms; points are the project's own finite-element solutions. \
+         Units: mm, N, MPa; K_T in MPa/mm. Made by <code>microslip figures</code>.</p>\n",
+    );
+    for f in figures {
+        page.push_str(&format!(
+            "<figure id=\"{stem}\">\n<img src=\"{stem}.svg\" alt=\"{title}\">\n\
+             <figcaption>{caption} (preset <code>{preset}</code>; \
+             data: <a href=\"{stem}.csv\">{stem}.csv</a>; \
+             <code>microslip plot {key} --preset {preset}{fe} --y {y}</code>)</figcaption>\n</figure>\n",
+            stem = f.stem,
+            title = f.chart.title(),
+            caption = f.caption,
+            preset = f.preset,
+            key = f.chart.key(),
+            fe = if f.finite_elements { " --fe" } else { "" },
+            y = match f.y {
+                YMode::Linear => "linear",
+                YMode::Log => "log",
+                YMode::Relative => "relative",
+            },
+        ));
+    }
+    page.push_str("</body>\n</html>\n");
+    page
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::inputs::Inputs;
+    use crate::model::params::ModelKind;
+    use crate::report::chart;
+
+    fn paper_figure(chart: AnyChart, fe: bool) -> Plot {
+        let model = Inputs::paper(chart.kind()).validate().unwrap();
+        chart::figure(&model, chart, fe, chart::YMode::Linear).unwrap()
+    }
+
+    #[test]
+    fn every_chart_draws_a_deterministic_svg_with_its_title_axes_and_legend() {
+        for chart in AnyChart::all() {
+            let plot = paper_figure(chart, false);
+            let first = svg(&plot).unwrap();
+            assert_eq!(first, svg(&plot).unwrap(), "{}", chart.key());
+            assert!(first.starts_with("<svg") && first.trim_end().ends_with("</svg>"));
+            let escaped = |t: &str| t.replace('&', "&amp;").replace('<', "&lt;");
+            for text in [&plot.title, &plot.x.title, &plot.y.title] {
+                assert!(first.contains(&escaped(text)), "{}: {text}", chart.key());
+            }
+            for s in &plot.series {
+                assert!(
+                    first.contains(&escaped(&s.name)),
+                    "{}: {}",
+                    chart.key(),
+                    s.name
+                );
+            }
+            assert!(
+                !first.contains("NaN") && !first.contains("inf"),
+                "{}",
+                chart.key()
+            );
+        }
+    }
+
+    #[test]
+    fn a_table_is_not_a_figure() {
+        let model = Inputs::paper(ModelKind::Beam).validate().unwrap();
+        let views = chart::Views::default().turn(ModelKind::Beam, false);
+        let table = chart::build(&model, views, None, None, None, None);
+        assert!(matches!(svg(&table), Err(FigureError::Table(_))));
+    }
+
+    #[test]
+    fn log_axes_get_decade_ticks_and_symmetric_axes_a_clean_zero() {
+        let plate = svg(&paper_figure(
+            AnyChart::Plate(PlateChart::Displacement),
+            false,
+        ))
+        .unwrap();
+        for decade in ["100", "1e6", "1e10"] {
+            assert!(plate.contains(&format!("\n{decade}\n</text>")), "{decade}");
+        }
+        let cycle = svg(&paper_figure(AnyChart::Beam(BeamChart::Loop), false)).unwrap();
+        assert!(!cycle.contains("e-18") && cycle.contains("\n0\n</text>"));
+    }
+
+    #[test]
+    fn paper_figures_snapshot() {
+        // The SVG text itself: a change in what a figure draws shows up as a diff to review.
+        let w = svg(&paper_figure(AnyChart::Beam(BeamChart::Deflection), true)).unwrap();
+        insta::assert_snapshot!("figure_beam_w_vs_f", w);
+        let u = svg(&paper_figure(
+            AnyChart::Plate(PlateChart::Displacement),
+            false,
+        ))
+        .unwrap();
+        insta::assert_snapshot!("figure_plate_u_vs_kt", u);
+    }
+
+    #[test]
+    fn the_index_shows_every_figure_with_its_data() {
+        let page = index_html(PAPER_FIGURES);
+        for f in PAPER_FIGURES {
+            assert!(
+                page.contains(&format!("src=\"{}.svg\"", f.stem)),
+                "{}",
+                f.stem
+            );
+            assert!(
+                page.contains(&format!("href=\"{}.csv\"", f.stem)),
+                "{}",
+                f.stem
+            );
+            assert!(crate::preset::resolve(f.preset).is_ok(), "{}", f.preset);
+        }
+        let stems: std::collections::HashSet<_> = PAPER_FIGURES.iter().map(|f| f.stem).collect();
+        assert_eq!(stems.len(), PAPER_FIGURES.len());
+    }
+}

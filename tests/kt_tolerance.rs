@@ -1,0 +1,200 @@
+//! `microslip kt --tolerance`: the smallest K_T within a tolerance of Coulomb, checked against brute
+//! force over the closed forms (plain bisection written here, with its own force grid) and the
+//! monotonicity it relies on (docs/theory.md, (T1)).
+
+use microslip::model::params::{BeamParam, PlateParam};
+use microslip::model::tolerance::{
+    Threshold, ToleranceError, beam_stiffness_for_tolerance, parse_tolerance,
+    plate_stiffness_for_tolerance,
+};
+use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
+
+fn paper_beams() -> TwinBeams {
+    TwinBeams::new(TwinBeamsParams::PAPER).unwrap()
+}
+
+/// w_reg / w_C - 1 at (K_T, F), straight from the closed forms.
+fn beam_ratio(kt: f64, force: f64) -> f64 {
+    let beams = paper_beams().with_tangential_stiffness(kt).unwrap();
+    let f = TipForce::new(force).unwrap();
+    beams.regularized(f).tip_deflection() / beams.coulomb(f).tip_deflection() - 1.0
+}
+
+/// Plain bisection on ln K_T of "worst deviation over `forces` > tol", 80 halvings (1e-20 of the range).
+fn brute_force(forces: &[f64], tol: f64, deviation: impl Fn(f64, f64) -> f64) -> f64 {
+    let worst = |kt: f64| {
+        forces
+            .iter()
+            .map(|&f| deviation(kt, f))
+            .fold(f64::MIN, f64::max)
+    };
+    let (mut lo, mut hi) = (1e-3_f64.ln(), 1e10_f64.ln());
+    assert!(worst(lo.exp()) > tol && worst(hi.exp()) <= tol);
+    for _ in 0..80 {
+        let mid = 0.5 * (lo + hi);
+        if worst(mid.exp()) > tol {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    hi.exp()
+}
+
+fn found(threshold: Threshold) -> f64 {
+    match threshold {
+        Threshold::Stiffness(k) => k,
+        other => panic!("expected a threshold, got {other:?}"),
+    }
+}
+
+#[test]
+fn paper_beams_at_100_n_need_about_423_mpa_per_mm_for_one_percent() {
+    let answer = beam_stiffness_for_tolerance(&paper_beams(), [100.0, 100.0], 0.01, 2.0).unwrap();
+    let kt = found(answer.threshold);
+    let brute = brute_force(&[100.0], 0.01, beam_ratio);
+    assert!((kt / brute - 1.0).abs() < 1e-8, "{kt} vs {brute}");
+    assert!((kt - 423.0).abs() < 2.0, "{kt}");
+    // Just below, outside; at it, inside.
+    assert!(beam_ratio(kt * 0.999, 100.0) > 0.01 && beam_ratio(kt * 1.001, 100.0) < 0.01);
+    // The paper's K_T = 600 is within: the current deviation is below 1 %.
+    assert!(answer.current.0 == 600.0 && answer.current.1 < 0.01);
+}
+
+#[test]
+fn over_a_force_range_the_worst_force_decides() {
+    // A dense grid of its own (1001 forces) against the library's coarse one plus F_thre.
+    let forces: Vec<f64> = (1..=1000).map(|i| 0.3 * f64::from(i)).collect();
+    for tol in [0.001, 0.01, 0.05] {
+        let answer = beam_stiffness_for_tolerance(&paper_beams(), [0.0, 300.0], tol, 2.0).unwrap();
+        let kt = found(answer.threshold);
+        let brute = brute_force(&forces, tol, beam_ratio);
+        assert!(
+            (kt / brute - 1.0).abs() < 1e-6,
+            "tol {tol}: {kt} vs {brute}"
+        );
+    }
+}
+
+#[test]
+fn the_deviation_never_grows_with_kt_at_any_force() {
+    // (T1): tau(x) rises with K_T pointwise, so w(L) falls; Coulomb is the limit from above.
+    let thresholds = [0.0, 0.5, 0.9, 1.0, 1.1, 1.5, 3.0, 30.0];
+    for geometry in [(200.0, 10.0), (50.0, 2.0), (1000.0, 40.0)] {
+        let params = TwinBeamsParams {
+            length: geometry.0,
+            half_height: geometry.1,
+            ..TwinBeamsParams::PAPER
+        };
+        let beams = TwinBeams::new(params).unwrap();
+        for factor in thresholds {
+            let force = TipForce::clamped(factor * beams.threshold_force() + 1e-3);
+            let mut previous = f64::INFINITY;
+            for i in 0..=130 {
+                let kt = 10f64.powf(-3.0 + 0.1 * f64::from(i));
+                let b = beams.with_tangential_stiffness(kt).unwrap();
+                let w = b.regularized(force).tip_deflection();
+                let coulomb = b.coulomb(force).tip_deflection();
+                assert!(
+                    w <= previous * (1.0 + 1e-12),
+                    "{geometry:?} {factor} K_T {kt}"
+                );
+                assert!(
+                    w >= coulomb * (1.0 - 1e-12),
+                    "{geometry:?} {factor} K_T {kt}"
+                );
+                previous = w;
+            }
+        }
+    }
+}
+
+#[test]
+fn the_plate_threshold_matches_brute_force() {
+    let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+    let ratio = |kt: f64, _: f64| {
+        let p = plate.with_tangential_stiffness(kt).unwrap();
+        p.regularized().end_displacement() / p.coulomb().end_displacement() - 1.0
+    };
+    for tol in [0.001, 0.01, 0.1] {
+        let answer = plate_stiffness_for_tolerance(&plate, tol, 0.1).unwrap();
+        let kt = found(answer.threshold);
+        let brute = brute_force(&[0.0], tol, ratio);
+        assert!(
+            (kt / brute - 1.0).abs() < 1e-8,
+            "tol {tol}: {kt} vs {brute}"
+        );
+    }
+}
+
+#[test]
+fn code_settings_give_at_least_the_stiffness_needed() {
+    use microslip::model::tolerance::Setting;
+    let answer = beam_stiffness_for_tolerance(&paper_beams(), [100.0, 100.0], 0.01, 2.0).unwrap();
+    let kt = found(answer.threshold);
+    let mu_p = 0.3 * 1.0;
+    for s in &answer.settings {
+        let implied = match s.needed {
+            Setting::SlipTolerance {
+                fraction,
+                element,
+                slip,
+                element_max,
+            } => {
+                assert!((slip - mu_p / kt).abs() < 1e-12);
+                assert!((element_max / element - fraction / 0.005).abs() < 1e-6 || fraction > 0.0);
+                mu_p / (fraction * element)
+            }
+            Setting::StickSlope(k) | Setting::Stiffness(k) => k,
+            Setting::ElementSize(h) => 210_000.0 / (3.0 * h),
+        };
+        assert!((implied / kt - 1.0).abs() < 1e-9, "{}", s.code.code);
+    }
+    // Abaqus' default (0.005 x 2 mm = 10 um elastic slip) gives 30 MPa/mm: not enough.
+    assert_eq!(answer.settings[0].default.map(|d| d.1), Some(false));
+    // CalculiX' E/2 = 105000 MPa/mm is.
+    assert_eq!(answer.settings[2].default.map(|d| d.1), Some(true));
+}
+
+#[test]
+fn limits_and_refusals() {
+    let beams = paper_beams();
+    let lax = beam_stiffness_for_tolerance(&beams, [0.0, 100.0], 10.0, 2.0).unwrap();
+    assert_eq!(
+        lax.threshold,
+        Threshold::Everywhere(BeamParam::Stiffness.spec().domain.min())
+    );
+    // Short beams: even K_T = 1e12 leaves 9 / (kL)^2 ~ 5e-8 in stick.
+    let short = TwinBeams::new(TwinBeamsParams {
+        length: 10.0,
+        ..TwinBeamsParams::PAPER
+    })
+    .unwrap();
+    let strict = beam_stiffness_for_tolerance(&short, [0.0, 100.0], 1e-9, 2.0).unwrap();
+    assert!(
+        matches!(strict.threshold, Threshold::Nowhere { deviation, .. } if deviation > 1e-9),
+        "{:?}",
+        strict.threshold
+    );
+    assert!(strict.settings.is_empty());
+    let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+    // The paper's plate: even 1000 % needs some stiffness (free expansion is 58 x Coulomb's u(L)).
+    let lax = plate_stiffness_for_tolerance(&plate, 10.0, 0.1).unwrap();
+    assert!(found(lax.threshold) > PlateParam::Stiffness.spec().domain.min());
+    for bad in [0.0, -0.01, 11.0, f64::NAN, f64::INFINITY] {
+        assert!(matches!(
+            beam_stiffness_for_tolerance(&beams, [0.0, 100.0], bad, 2.0),
+            Err(ToleranceError::Tolerance { .. })
+        ));
+    }
+    assert!(matches!(
+        beam_stiffness_for_tolerance(&beams, [0.0, 0.0], 0.01, 2.0),
+        Err(ToleranceError::Unloaded { .. })
+    ));
+    assert!(beam_stiffness_for_tolerance(&beams, [-1.0, 10.0], 0.01, 2.0).is_err());
+    assert_eq!(parse_tolerance("1%"), Ok(0.01));
+    assert_eq!(parse_tolerance(" 0.05 "), Ok(0.05));
+    for bad in ["", "%", "abc", "0", "-1%", "nan", "2000%"] {
+        assert!(parse_tolerance(bad).is_err(), "{bad}");
+    }
+}
