@@ -88,24 +88,53 @@ fn read_deck(path: &Path, deck: Option<&Path>) -> Result<(DeckHeader, String), L
     Ok((header, deck_text))
 }
 
-fn read_run(
+/// Refuses a deck of the other model, naming the command that reads it.
+fn check_kind(
+    header: &DeckHeader,
     path: &Path,
     deck: Option<&Path>,
     wanted: ModelKind,
-) -> Result<(DeckHeader, String, String), LoadError> {
-    let (header, deck_text) = read_deck(path, deck)?;
-    if header.inputs.kind() != wanted {
-        return Err(fail(
-            &deck_path(path, deck),
-            format!(
-                "a {} deck; use `microslip compare {}`",
-                header.inputs.kind().name(),
-                header.inputs.kind().name()
-            ),
-        ));
+) -> Result<(), LoadError> {
+    let found = header.inputs.kind();
+    if found == wanted {
+        return Ok(());
     }
+    Err(fail(
+        &deck_path(path, deck),
+        format!(
+            "a {} deck; use `microslip compare {}`",
+            found.name(),
+            found.name()
+        ),
+    ))
+}
+
+/// The points of the `.dat` at `path`, read with its already read deck.
+fn ccx_points<P>(
+    path: &Path,
+    header: DeckHeader,
+    deck_text: &str,
+    from_run: impl Fn(&CcxRun) -> Result<Vec<P>, ResultsError>,
+) -> Result<Loaded<P>, LoadError> {
     let dat = read(path, "an FE result file")?;
-    Ok((header, deck_text, dat))
+    let run = CcxRun {
+        header: &header,
+        deck: deck_text,
+        dat: &dat,
+    };
+    let points = from_run(&run).map_err(|e| fail(path, e.to_string()))?;
+    Ok(Loaded {
+        header: Some(header),
+        points,
+    })
+}
+
+fn beam_run(run: &CcxRun) -> Result<Vec<BeamFePoint>, ResultsError> {
+    run.beam_points()
+}
+
+fn plate_run(run: &CcxRun) -> Result<Vec<PlateFePoint>, ResultsError> {
+    run.plate_point().map(|p| vec![p])
 }
 
 /// FE points of either model.
@@ -127,12 +156,17 @@ pub fn any_results(
     deck: Option<&Path>,
     csv_model: ModelKind,
 ) -> Result<AnyLoaded, LoadError> {
-    let kind = if is_ccx(path)? {
-        read_deck(path, deck)?.0.inputs.kind()
-    } else {
-        csv_model
-    };
-    match kind {
+    if is_ccx(path)? {
+        // The deck says which model; it is read once.
+        let (header, deck_text) = read_deck(path, deck)?;
+        return match header.inputs.kind() {
+            ModelKind::Beam => ccx_points(path, header, &deck_text, beam_run).map(AnyLoaded::Beam),
+            ModelKind::Plate => {
+                ccx_points(path, header, &deck_text, plate_run).map(AnyLoaded::Plate)
+            }
+        };
+    }
+    match csv_model {
         ModelKind::Beam => beam_results(path, deck).map(AnyLoaded::Beam),
         ModelKind::Plate => plate_results(path, deck).map(AnyLoaded::Plate),
     }
@@ -143,13 +177,7 @@ pub fn any_results(
 /// # Errors
 /// [`LoadError`] naming the file and, where there is one, the line.
 pub fn beam_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<BeamFePoint>, LoadError> {
-    results(
-        path,
-        deck,
-        ModelKind::Beam,
-        |run| run.beam_points(),
-        beam_points_from_csv,
-    )
+    results(path, deck, ModelKind::Beam, beam_run, beam_points_from_csv)
 }
 
 /// Plate points from a `.dat` (with its deck) or a CSV `KT_MPa_per_mm,u_mm`.
@@ -161,7 +189,7 @@ pub fn plate_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<PlateFeP
         path,
         deck,
         ModelKind::Plate,
-        |run| run.plate_point().map(|p| vec![p]),
+        plate_run,
         plate_points_from_csv,
     )
 }
@@ -175,17 +203,9 @@ fn results<P>(
     from_csv: impl Fn(&str) -> Result<Vec<P>, ResultsError>,
 ) -> Result<Loaded<P>, LoadError> {
     if is_ccx(path)? {
-        let (header, deck_text, dat) = read_run(path, deck, kind)?;
-        let run = CcxRun {
-            header: &header,
-            deck: &deck_text,
-            dat: &dat,
-        };
-        let points = from_run(&run).map_err(|e| fail(path, e.to_string()))?;
-        Ok(Loaded {
-            header: Some(header),
-            points,
-        })
+        let (header, deck_text) = read_deck(path, deck)?;
+        check_kind(&header, path, deck, kind)?;
+        ccx_points(path, header, &deck_text, from_run)
     } else {
         let text = read(path, "an FE result file")?;
         let points = from_csv(&text).map_err(|e| fail(path, e.to_string()))?;
