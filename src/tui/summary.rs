@@ -16,6 +16,19 @@ pub struct SummaryLine {
     pub regime: Option<String>,
     /// What the line means.
     pub meaning: &'static str,
+    /// When the pane is short of rows, lines are dropped in increasing order of this rank; 0: kept
+    /// always. What is dropped can be read elsewhere (the ratio and one w(L) give the other).
+    pub drop_rank: u8,
+}
+
+impl SummaryLine {
+    /// The same line, dropped `rank`-th when rows are short.
+    fn dropped(self, rank: u8) -> SummaryLine {
+        SummaryLine {
+            drop_rank: rank,
+            ..self
+        }
+    }
 }
 
 fn plain(text: String, meaning: &'static str) -> SummaryLine {
@@ -23,6 +36,7 @@ fn plain(text: String, meaning: &'static str) -> SummaryLine {
         text,
         regime: None,
         meaning,
+        drop_rank: 0,
     }
 }
 
@@ -31,6 +45,7 @@ fn regime_line(label: &str, regime: String, meaning: &'static str) -> SummaryLin
         text: format!("{label:<12}"),
         regime: Some(regime),
         meaning,
+        drop_rank: 0,
     }
 }
 
@@ -99,7 +114,8 @@ pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
                 plain(
                     format!("w(L) Coulomb {} mm", number(row.w_coulomb)),
                     "tip deflection under the plain Coulomb law",
-                ),
+                )
+                .dropped(3),
                 plain(
                     format!("w(L) regularized {} mm", number(row.w_regularized)),
                     "tip deflection under the regularized law",
@@ -111,7 +127,8 @@ pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
                         number(mm_to_um(beams.saturation_slip()))
                     ),
                     SATURATION,
-                ),
+                )
+                .dropped(2),
                 plain(
                     format!(
                         "K_T = {} MPa/um",
@@ -120,7 +137,8 @@ pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
                         ))
                     ),
                     "K_T in the unit some FE codes use: 1 MPa/um = 1000 MPa/mm",
-                ),
+                )
+                .dropped(1),
             ]
         }
         Model::Plate(plate) => {
@@ -164,7 +182,8 @@ pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
                 plain(
                     format!("u(L) Coulomb {} mm", number(row.u_coulomb)),
                     "displacement of the free end under the plain Coulomb law",
-                ),
+                )
+                .dropped(3),
                 plain(
                     format!("u(L) regularized {} mm", number(row.u_regularized)),
                     "displacement of the free end under the regularized law",
@@ -176,7 +195,8 @@ pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
                         number(mm_to_um(plate.saturation_slip()))
                     ),
                     SATURATION,
-                ),
+                )
+                .dropped(1),
                 plain(
                     format!(
                         "P_r/P {} to {}",
@@ -185,7 +205,8 @@ pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
                     ),
                     "contact pressure over the applied pressure, centre to free end (flat plate, \
                      saturated friction)",
-                ),
+                )
+                .dropped(2),
                 plain(
                     format!(
                         "constant P: {}",

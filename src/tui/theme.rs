@@ -4,6 +4,8 @@
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::border;
 
+use crate::curves::Zone;
+
 /// Which characters may be drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum Charset {
@@ -110,6 +112,43 @@ impl Theme {
         match self.charset {
             Charset::Ascii => "|",
             Charset::Unicode => "│",
+        }
+    }
+
+    /// The zone strip's symbol of a zone: the same shapes in both charsets, so that the ASCII
+    /// legend (`=` stick, `~` microslip, `#` macroslip) reads the same as the Unicode one.
+    pub fn zone_symbol(&self, zone: Zone) -> &'static str {
+        match (self.charset, zone) {
+            (Charset::Ascii, Zone::Stick) => "=",
+            (Charset::Ascii, Zone::Microslip) => "~",
+            (Charset::Ascii, Zone::Macroslip) => "#",
+            (Charset::Ascii, Zone::Unloaded) => "-",
+            (Charset::Unicode, Zone::Stick) => "═",
+            (Charset::Unicode, Zone::Microslip) => "≈",
+            (Charset::Unicode, Zone::Macroslip) => "█",
+            (Charset::Unicode, Zone::Unloaded) => "─",
+        }
+    }
+
+    /// The zone strip's colour of a zone (none without colour: the symbols tell them apart).
+    pub fn zone_style(&self, zone: Zone) -> Style {
+        if !self.color {
+            return Style::default();
+        }
+        let colour = match zone {
+            Zone::Stick => Color::Green,
+            Zone::Microslip => Color::Yellow,
+            Zone::Macroslip => Color::LightRed,
+            Zone::Unloaded => Color::Gray,
+        };
+        Style::default().fg(colour)
+    }
+
+    /// Sparkline levels from 0 to full, none of them a zone symbol.
+    pub fn spark_levels(&self) -> &'static [&'static str] {
+        match self.charset {
+            Charset::Ascii => &[" ", ".", ":", ";", "+", "*", "%", "@"],
+            Charset::Unicode => &[" ", "▁", "▂", "▃", "▄", "▅", "▆", "▇", "█"],
         }
     }
 

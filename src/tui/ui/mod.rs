@@ -4,6 +4,7 @@
 mod chart;
 mod overlay;
 mod panes;
+mod strip;
 
 use ratatui::Frame;
 use ratatui::buffer::Buffer;

@@ -13,6 +13,7 @@ use crate::report::{number, sanitize};
 use crate::tui::app::{App, Mode};
 use crate::tui::summary::{summary_lines, wrap_words};
 use crate::tui::theme::Role;
+use crate::tui::ui::strip::{self, StripSize};
 
 /// A bordered pane with a title.
 pub fn pane<'a>(app: &App, title: &'a str) -> Block<'a> {
@@ -90,18 +91,48 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
     };
     let block = pane(app, &title);
     let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let height = usize::from(inner.height);
     let width = usize::from(inner.width.saturating_sub(3)).max(10);
     let explained: usize = summary
         .iter()
         .map(|l| 1 + l.meaning.len().div_ceil(width))
         .sum();
-    let room = usize::from(inner.height) >= explained;
+    // Meanings under the lines with a strip that names the boundaries, where both fit; else the
+    // largest strip the lines leave room for; at the smallest, the strip takes its rows from the
+    // least needed lines instead (see `SummaryLine::drop_rank`).
+    let fits = |rows: usize, size: StripSize| rows + size.rows() <= height;
+    let (room, size) = [StripSize::WithShear, StripSize::Marked]
+        .into_iter()
+        .find(|&s| fits(explained, s))
+        .map(|s| (true, s))
+        .or_else(|| {
+            StripSize::LARGEST_FIRST
+                .into_iter()
+                .find(|&s| fits(summary.len(), s))
+                .map(|s| (false, s))
+        })
+        .unwrap_or((false, StripSize::Compact));
+    let mut keep = vec![true; summary.len()];
+    let mut ranks: Vec<(u8, usize)> = summary
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| l.drop_rank > 0)
+        .map(|(i, l)| (l.drop_rank, i))
+        .collect();
+    ranks.sort();
+    for (_, i) in ranks {
+        if fits(keep.iter().filter(|&&k| k).count(), size) {
+            break;
+        }
+        keep[i] = false;
+    }
     let highlighted = match app.mode() {
         Mode::Explain { line } => Some(*line),
         _ => None,
     };
     let mut lines = Vec::new();
-    for (i, line) in summary.into_iter().enumerate() {
+    for (i, line) in summary.into_iter().enumerate().filter(|(i, _)| keep[*i]) {
         let style = if highlighted == Some(i) {
             theme.style(Role::Selected)
         } else {
@@ -121,7 +152,11 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
             }
         }
     }
-    frame.render_widget(Paragraph::new(lines).block(block), area);
+    // Under the text, or at the bottom where the text is cut.
+    let text_rows = lines.len().min(height.saturating_sub(size.rows()));
+    lines.truncate(text_rows);
+    lines.extend(strip::lines(&model, &theme, inner.width, size));
+    frame.render_widget(Paragraph::new(lines), inner);
 }
 
 /// Model, preset (with `*` when modified), the last message or the typing prompt, and the two keys
