@@ -122,3 +122,68 @@ fn render_200x60(bencher: Bencher, charset: &str) {
         terminal.draw(|f| ui::draw(f, &app)).unwrap();
     });
 }
+
+/// `app` with four pins (mu 0.2, 0.25, 0.35, 0.4) and mu back at 0.3, the selection on the last row.
+fn with_four_pins(mut app: App) -> App {
+    let rows = app.kind().params().len();
+    for _ in 0..rows {
+        app.update(Action::Previous);
+    }
+    while app.selected_param().name() != "mu" {
+        app.update(Action::Next);
+    }
+    for mu in ["0.2", "0.25", "0.35", "0.4", "0.3"] {
+        app.update(Action::StartEdit);
+        for c in mu.chars() {
+            app.update(Action::Input(c));
+        }
+        app.update(Action::Commit);
+        if mu != "0.3" {
+            app.update(Action::Pin);
+        }
+    }
+    for _ in 0..rows {
+        app.update(Action::Next);
+    }
+    app
+}
+
+/// As `recompute_beam_view` and `recompute_plate_view` on their first chart, with four pins: each
+/// pin rebuilds the chart at its own parameters.
+#[divan::bench(args = ["paper-beams", "paper-plate"])]
+fn recompute_with_4_pins(bencher: Bencher, preset_name: &str) {
+    let mut app = with_four_pins(app(preset_name));
+    let mut up = true;
+    bencher.bench_local(|| {
+        app.update(if up {
+            Action::Increase
+        } else {
+            Action::Decrease
+        });
+        up = !up;
+        black_box(app.plot().series.len())
+    });
+}
+
+/// `render_200x60` with four pins on the beams' w(L) chart.
+#[divan::bench(args = ["unicode", "ascii"])]
+fn render_200x60_with_4_pins(bencher: Bencher, charset: &str) {
+    let charset = if charset == "ascii" {
+        Charset::Ascii
+    } else {
+        Charset::Unicode
+    };
+    let app = with_four_pins(App::new(AppOptions {
+        theme: Theme {
+            charset,
+            color: true,
+        },
+        preset: preset::resolve("paper-beams").unwrap(),
+        user_dir: None,
+        data: None,
+    }));
+    let mut terminal = Terminal::new(TestBackend::new(200, 60)).unwrap();
+    bencher.bench_local(|| {
+        terminal.draw(|f| ui::draw(f, &app)).unwrap();
+    });
+}

@@ -614,7 +614,14 @@ pub fn interface_zones(model: &Model) -> InterfaceZones {
             let row = plate_point(plate);
             let p = (row.stick_end, row.micro_end);
             let r = (row.regime_coulomb, row.regime_regularized);
-            (plate.params().half_length, p.0, p.1, r.0, r.1, ("X_s", "X_r"))
+            (
+                plate.params().half_length,
+                p.0,
+                p.1,
+                r.0,
+                r.1,
+                ("X_s", "X_r"),
+            )
         }
     };
     let zones = |regime: Regime, end: f64, inner: Zone| {
@@ -625,11 +632,14 @@ pub fn interface_zones(model: &Model) -> InterfaceZones {
         }
     };
     let inside = |at: f64| at > 0.0 && at < length;
-    let boundaries = [(names.0, stick_end, coulomb), (names.1, micro_end, regularized)]
-        .into_iter()
-        .filter(|&(_, at, regime)| regime != Regime::Unloaded && inside(at))
-        .map(|(name, at, _)| ZoneBoundary { name, at })
-        .collect();
+    let boundaries = [
+        (names.0, stick_end, coulomb),
+        (names.1, micro_end, regularized),
+    ]
+    .into_iter()
+    .filter(|&(_, at, regime)| regime != Regime::Unloaded && inside(at))
+    .map(|(name, at, _)| ZoneBoundary { name, at })
+    .collect();
     InterfaceZones {
         length,
         coulomb: zones(coulomb, stick_end, Zone::Stick),

@@ -379,6 +379,21 @@ fn a_long_status_message_wraps_upwards_instead_of_being_cut() {
     assert!(!text.contains("very long"), "{text}");
 }
 
+/// The README's capture: the paper's beams compared with two pinned friction coefficients, at
+/// 100x30, where the zone strip names X.
+fn readme_app() -> App {
+    let mut app = app();
+    set(&mut app, "mu", "0.2");
+    app.update(Action::Pin);
+    set(&mut app, "mu", "0.45");
+    app.update(Action::Pin);
+    set(&mut app, "mu", "0.3");
+    for _ in 0..20 {
+        app.update(Action::Previous);
+    }
+    app
+}
+
 #[test]
 fn the_readme_shows_the_real_main_screen() {
     let readme = include_str!("../README.md");
@@ -388,7 +403,8 @@ fn the_readme_shows_the_real_main_screen() {
         + "```text\n".len();
     let end = start + readme[start..].find("```").unwrap();
     let captured: Vec<&str> = readme[start..end].lines().map(str::trim_end).collect();
-    let real = screen(&app(), 80, 24);
+    let real = screen(&readme_app(), 100, 30);
+    insta::assert_snapshot!("readme_pins_and_strip_100x30", real);
     let real: Vec<&str> = real
         .lines()
         .map(|l| l.trim_matches('"').trim_end())
@@ -488,4 +504,56 @@ fn y_axis_modes_at_80x24_and_120x40_in_both_charsets() {
         app.update(Action::SwitchModel);
         assert!(app.plot().y.title.contains("Coulomb - 1 (%)"));
     }
+}
+
+/// Selects the row of `name` and types `value` into it.
+fn set(app: &mut App, name: &str, value: &str) {
+    for _ in 0..20 {
+        app.update(Action::Previous);
+    }
+    while app.selected_param().name() != name {
+        app.update(Action::Next);
+    }
+    app.update(Action::StartEdit);
+    for c in value.chars() {
+        app.update(Action::Input(c));
+    }
+    app.update(Action::Commit);
+}
+
+#[test]
+fn pins_and_the_zone_strip_at_80x24_and_120x40_in_both_charsets() {
+    for (charset, name) in [(Charset::Unicode, "unicode"), (Charset::Ascii, "ascii")] {
+        // Pin the paper's beams (mu 0.3), then mu 0.2; compare both with mu 0.45.
+        let mut app = app_with("paper-beams", charset, true);
+        app.update(Action::Pin);
+        set(&mut app, "mu", "0.2");
+        app.update(Action::Pin);
+        set(&mut app, "mu", "0.45");
+        for (w, h) in [(80, 24), (120, 40)] {
+            insta::assert_snapshot!(format!("pins_{w}x{h}_{name}"), screen(&app, w, h));
+        }
+        // The pins follow the chart switch: X vs F at the same three friction coefficients.
+        app.update(Action::NextChart);
+        insta::assert_snapshot!(
+            format!("pins_slip_boundary_120x40_{name}"),
+            screen(&app, 120, 40)
+        );
+    }
+}
+
+#[test]
+fn pins_in_relative_mode_and_on_the_plate() {
+    let mut app = app();
+    app.update(Action::Pin);
+    set(&mut app, "KT", "2000");
+    app.update(Action::CycleYAxis);
+    app.update(Action::CycleYAxis);
+    assert_eq!(app.y_mode(), microslip::report::chart::YMode::Relative);
+    insta::assert_snapshot!("pins_relative_120x40", screen(&app, 120, 40));
+    // Without colour, on the plate: the pin is told apart by its number.
+    let mut app = app_with("paper-plate", Charset::Unicode, false);
+    app.update(Action::Pin);
+    set(&mut app, "tp", "0.5");
+    insta::assert_snapshot!("pins_plate_80x24_no_color", screen(&app, 80, 24));
 }

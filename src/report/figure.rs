@@ -40,7 +40,18 @@ const PALETTE: [RGBColor; 7] = [
     RGBColor(120, 120, 120),
 ];
 
+/// Colours of pinned curves (drawn dashed), by pin number: set apart from [`PALETTE`].
+const PIN_PALETTE: [RGBColor; 4] = [
+    RGBColor(80, 80, 80),
+    RGBColor(117, 112, 179),
+    RGBColor(166, 118, 29),
+    RGBColor(102, 166, 30),
+];
+
 fn colour(index: usize, series: &PlotSeries) -> RGBColor {
+    if let SeriesKind::Pin(n) = series.kind {
+        return PIN_PALETTE[usize::from(n.saturating_sub(1)) % PIN_PALETTE.len()];
+    }
     if series.name == "Coulomb" {
         BLACK
     } else {
@@ -159,6 +170,13 @@ where
                     .draw_series(points.map(|p| Circle::new(p, 4, mark)))?
                     .label(series.name.as_str())
                     .legend(move |(x, y)| Circle::new((x + 10, y), 4, mark));
+            }
+            SeriesKind::Pin(_) => {
+                let line = ShapeStyle::from(&style).stroke_width(2);
+                chart
+                    .draw_series(DashedLineSeries::new(points, 10, 5, line))?
+                    .label(series.name.as_str())
+                    .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], line));
             }
             SeriesKind::Cursor => {}
         }

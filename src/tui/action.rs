@@ -70,6 +70,11 @@ pub enum Action {
     Explain,
     /// The chart's y axis: linear, log, relative to Coulomb (the modes the chart can show).
     CycleYAxis,
+    /// Pin the current parameters: their main curve stays on every chart of the model, for
+    /// comparison (at most four pins; a fifth replaces the oldest).
+    Pin,
+    /// Remove every pin of the model.
+    ClearPins,
     /// Export the chart shown (SVG figure and its CSV data) to files in the export directory.
     ExportChart,
     /// Fit the chart's axes to the data (the force range of the beams' charts follows F_thre again).

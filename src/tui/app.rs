@@ -13,7 +13,7 @@ use crate::model::inputs::{Inputs, Model};
 use crate::model::params::{BeamParam, Compact, ModelKind, Param, parse_number};
 use crate::model::twin_beams::BeamTheory;
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
-use crate::report::chart::{self, NumericPoints, Plot, Views, YMode};
+use crate::report::chart::{self, NumericPoints, Plot, Views, YMode, pins};
 use crate::report::view::{AnyChart, BeamChart, PlateChart, View};
 use crate::report::{number, number_with};
 
@@ -106,6 +106,27 @@ struct ModelState {
     selected: usize,
     /// The parameter charted on the x axis (`v`), instead of the model's views.
     varied: Option<Param>,
+    /// Parameters pinned with `g`, oldest first: their curves show on every chart of the model.
+    pins: Vec<Pin>,
+}
+
+/// Parameters kept for comparison (`g`), with the number their curve is drawn with.
+#[derive(Debug, Clone, PartialEq)]
+struct Pin {
+    number: u8,
+    inputs: Inputs,
+    /// The chart last built at these values, and what it was built for: a pin's chart does not
+    /// change with the current parameters, so dragging a value rebuilds only the current curves.
+    chart: Option<(PinnedChart, Plot)>,
+}
+
+/// What a pinned chart depends on besides the pin's values.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct PinnedChart {
+    views: Views,
+    varied: Option<Param>,
+    force_span: Option<f64>,
+    y_mode: YMode,
 }
 
 /// The parameters of both models and which is active: one step of the undo history.
@@ -184,6 +205,7 @@ impl App {
             preset,
             selected: 0,
             varied: None,
+            pins: Vec::new(),
         };
         let kind = options.preset.inputs.kind();
         let other = state(preset::paper(kind.other()));
@@ -471,25 +493,121 @@ impl App {
         } else {
             self.numeric = None;
         }
-        let plot = self.linear_plot(&model);
-        self.plot = self.y_mode().apply(plot);
+        let y_mode = self.y_mode();
+        let plot = y_mode.apply(self.linear_plot(&model));
+        if plot.table.is_some() || self.state().pins.is_empty() {
+            self.plot = plot;
+            return;
+        }
+        // Each pin: the same chart at its values, in the same y mode, without the overlays.
+        let key = PinnedChart {
+            views: self.views,
+            varied: self.state().varied,
+            force_span: self.force_span,
+            y_mode,
+        };
+        for i in 0..self.state().pins.len() {
+            let pin = &self.state().pins[i];
+            if pin.chart.as_ref().is_some_and(|(k, _)| *k == key) {
+                continue;
+            }
+            let built = pin
+                .inputs
+                .validate()
+                .ok()
+                .map(|m| (key, y_mode.apply(self.chart_of(&m, None, None, None))));
+            self.state_mut().pins[i].chart = built;
+        }
+        let current = self.inputs();
+        let pinned: Vec<(u8, String, &Plot)> = self
+            .state()
+            .pins
+            .iter()
+            .filter_map(|pin| {
+                let (_, plot) = pin.chart.as_ref()?;
+                Some((pin.number, pins::label(&pin.inputs, &current), plot))
+            })
+            .collect();
+        self.plot = pins::add_pins(plot, &pinned);
     }
 
     /// The chart shown, with its y axis linear.
     fn linear_plot(&self, model: &Model) -> Plot {
+        let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
+        let external = self.external.as_ref().map(|(points, _)| points);
+        self.chart_of(model, self.numeric.as_ref(), measured, external)
+    }
+
+    /// The chart shown (the view's, or the one against the parameter of `v`) for `model`.
+    fn chart_of(
+        &self,
+        model: &Model,
+        numeric: Option<&NumericPoints>,
+        measured: Option<&[Measurement]>,
+        external: Option<&chart::ExternalPoints>,
+    ) -> Plot {
         if let Some(param) = self.state().varied {
             return chart::vary::build(model, param);
         }
-        let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
-        let external = self.external.as_ref().map(|(points, _)| points);
         chart::build(
             model,
             self.views,
-            self.numeric.as_ref(),
+            numeric,
             measured,
             external,
             self.force_span,
         )
+    }
+
+    /// `g`: keeps the current parameters as a pin (the oldest goes beyond [`pins::MAX_PINS`]).
+    fn pin(&mut self) {
+        if self.y_key().is_none() {
+            return self.error("g: a table has no curves to pin; pins show on every chart (c)");
+        }
+        if self.model().is_none() {
+            return self.error("g: the parameters are not valid, nothing to pin");
+        }
+        let inputs = self.inputs();
+        let kind = self.kind;
+        let state = self.state_mut();
+        if let Some(pin) = state.pins.iter().find(|p| p.inputs == inputs) {
+            let number = pin.number;
+            return self.info(format!("these values are pin {number} already"));
+        }
+        let dropped = if state.pins.len() >= pins::MAX_PINS {
+            Some(state.pins.remove(0).number)
+        } else {
+            None
+        };
+        let number = (1..=pins::MAX_PINS as u8)
+            .find(|n| state.pins.iter().all(|p| p.number != *n))
+            .unwrap_or(1);
+        state.pins.push(Pin {
+            number,
+            inputs,
+            chart: None,
+        });
+        self.recompute();
+        let replaced = dropped.map_or(String::new(), |n| {
+            format!(
+                " (replaces pin {n}, the oldest: at most {})",
+                pins::MAX_PINS
+            )
+        });
+        self.info(format!(
+            "pin {number}{replaced}: drawn as {number}s on every {kind} chart; change a value to \
+             compare, G clears"
+        ));
+    }
+
+    /// `G`: removes every pin of the active model.
+    fn clear_pins(&mut self) {
+        let count = std::mem::take(&mut self.state_mut().pins).len();
+        if count == 0 {
+            return self.info("no pins to clear (g pins the curves)");
+        }
+        self.recompute();
+        self.info(format!("{count} pin(s) cleared"));
     }
 
     /// Which chart the y-axis mode belongs to: the view's chart, None for the chart of `v`;
@@ -835,6 +953,8 @@ impl App {
             Action::Undo => self.travel(false),
             Action::Redo => self.travel(true),
             Action::ExportChart => self.export_chart(),
+            Action::Pin => self.pin(),
+            Action::ClearPins => self.clear_pins(),
             Action::CycleYAxis => self.cycle_y_axis(),
             Action::Vary => {
                 let param = self.selected_param();
@@ -1310,6 +1430,77 @@ mod tests {
         for c in text.chars() {
             app.update(Action::Input(c));
         }
+    }
+
+    /// The pinned series of the chart shown: (number, name).
+    fn pinned(app: &App) -> Vec<(u8, String)> {
+        app.plot()
+            .series
+            .iter()
+            .filter_map(|s| match s.kind {
+                chart::SeriesKind::Pin(n) => Some((n, s.name.clone())),
+                _ => None,
+            })
+            .collect()
+    }
+
+    fn set_typed(app: &mut App, name: &str, value: &str) {
+        select(app, name);
+        app.update(Action::StartEdit);
+        typed(app, value);
+        app.update(Action::Commit);
+    }
+
+    #[test]
+    fn pins_keep_values_follow_the_charts_and_are_named_by_what_differs() {
+        let mut app = app();
+        app.update(Action::Pin);
+        assert_eq!(pinned(&app), [(1, "pin 1: = current".to_string())]);
+        set_typed(&mut app, "mu", "0.2");
+        assert_eq!(pinned(&app), [(1, "pin 1: mu 0.3->0.2".to_string())]);
+        // The same values twice: one pin.
+        app.update(Action::Pin);
+        app.update(Action::Pin);
+        assert_eq!(pinned(&app).len(), 2);
+        assert!(app.message().unwrap().text.contains("pin 2 already"));
+        // Every chart of the model shows them, the table refuses to pin, the plate has its own.
+        for _ in 0..4 {
+            app.update(Action::NextChart);
+            assert_eq!(pinned(&app).len(), 2, "{}", app.plot().title);
+        }
+        app.update(Action::NextChart);
+        assert!(app.plot().table.is_some());
+        app.update(Action::Pin);
+        assert!(app.message().unwrap().is_error);
+        app.update(Action::NextChart);
+        app.update(Action::SwitchModel);
+        assert!(pinned(&app).is_empty());
+        app.update(Action::SwitchModel);
+        assert_eq!(pinned(&app).len(), 2);
+        // A fifth pin replaces the oldest, and its number is free again.
+        for mu in ["0.25", "0.35"] {
+            set_typed(&mut app, "mu", mu);
+            app.update(Action::Pin);
+        }
+        let numbers: Vec<u8> = pinned(&app).iter().map(|p| p.0).collect();
+        assert_eq!(numbers, [1, 2, 3, 4]);
+        set_typed(&mut app, "mu", "0.4");
+        app.update(Action::Pin);
+        assert!(app.message().unwrap().text.contains("replaces pin 1"));
+        set_typed(&mut app, "mu", "0.5");
+        let names: Vec<String> = pinned(&app).into_iter().map(|p| p.1).collect();
+        assert_eq!(
+            names,
+            [
+                "pin 2: mu 0.2->0.5",
+                "pin 3: mu 0.25->0.5",
+                "pin 4: mu 0.35->0.5",
+                "pin 1: mu 0.4->0.5",
+            ]
+        );
+        app.update(Action::ClearPins);
+        assert!(pinned(&app).is_empty());
+        assert!(app.message().unwrap().text.contains("4 pin(s) cleared"));
     }
 
     #[test]

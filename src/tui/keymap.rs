@@ -242,6 +242,18 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         Context::Main,
+        &[(KeyCode::Char('g'), NONE)],
+        Action::Pin,
+        "pin curves (up to 4)",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('G'), SHIFT), (KeyCode::Char('G'), NONE)],
+        Action::ClearPins,
+        "clear the pins",
+    ),
+    bind(
+        Context::Main,
         &[(KeyCode::Char('x'), NONE)],
         Action::ExportChart,
         "export chart SVG+CSV",

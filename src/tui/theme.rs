@@ -52,6 +52,14 @@ const SERIES_COLORS: [Color; 6] = [
     Color::LightRed,
     Color::LightBlue,
 ];
+/// Pinned curves are drawn with their number; their colours are set apart from the series'.
+const PIN_SYMBOLS: [&str; 4] = ["1", "2", "3", "4"];
+const PIN_COLORS: [Color; 4] = [
+    Color::White,
+    Color::LightMagenta,
+    Color::LightCyan,
+    Color::LightGreen,
+];
 const SERIES_ASCII: [&str; 6] = ["*", "o", "+", "x", "#", "%"];
 const SERIES_UNICODE: [&str; 6] = ["•", "o", "+", "×", "■", "◆"];
 
@@ -104,6 +112,22 @@ impl Theme {
         match self.charset {
             Charset::Ascii => SERIES_ASCII[index % SERIES_ASCII.len()],
             Charset::Unicode => SERIES_UNICODE[index % SERIES_UNICODE.len()],
+        }
+    }
+
+    /// A pinned curve's symbol: its number, in every charset and colour mode, so the legend's
+    /// `1 mu 0.3->0.2` and the curve's 1s match without colour.
+    pub fn pin_symbol(&self, number: u8) -> &'static str {
+        PIN_SYMBOLS[usize::from(number.saturating_sub(1)) % PIN_SYMBOLS.len()]
+    }
+
+    /// A pinned curve's style (none without colour).
+    pub fn pin_style(&self, number: u8) -> Style {
+        if self.color {
+            Style::default()
+                .fg(PIN_COLORS[usize::from(number.saturating_sub(1)) % PIN_COLORS.len()])
+        } else {
+            Style::default()
         }
     }
 

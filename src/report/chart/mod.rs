@@ -2,6 +2,7 @@
 //! TUI turns a [`Plot`] into cells, the figure writer ([`crate::report::figure`]) into SVG; neither
 //! computes physics itself, so a curve on screen and in a figure are the same numbers.
 
+pub mod pins;
 pub mod vary;
 mod ymode;
 
@@ -75,6 +76,9 @@ pub enum SeriesKind {
     Points,
     /// The vertical cursor at the current value.
     Cursor,
+    /// A pinned curve (its number, 1 to [`pins::MAX_PINS`]): the same quantity at parameters
+    /// kept for comparison.
+    Pin(u8),
 }
 
 /// One series.

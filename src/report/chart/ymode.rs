@@ -111,7 +111,7 @@ fn quantity(title: &str) -> &str {
 }
 
 /// Rebuilds the cursors (vertical lines) of `series` over the new y bounds.
-fn stretch_cursors(series: &mut [PlotSeries], bounds: [f64; 2]) {
+pub(super) fn stretch_cursors(series: &mut [PlotSeries], bounds: [f64; 2]) {
     for s in series.iter_mut().filter(|s| s.kind == SeriesKind::Cursor) {
         if let Some(&(x, _)) = s.points.first() {
             *s = cursor(x, bounds);

@@ -9,10 +9,11 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Style};
 use ratatui::symbols::{self, Marker};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Axis, Chart, Dataset, GraphType, Paragraph, Widget, Wrap};
+use ratatui::widgets::{Axis, Chart, Dataset, GraphType, Paragraph, Widget};
 
 use super::panes::pane;
-use crate::report::chart::{self as plots, Plot, PlotSeries, SeriesKind};
+use crate::curves::Series;
+use crate::report::chart::{self as plots, Plot, PlotSeries, SeriesKind, pins};
 use crate::tui::app::App;
 use crate::tui::theme::{Role, Theme};
 
@@ -39,15 +40,13 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
         frame.render_widget(Paragraph::new(lines), inner);
         return;
     }
-    let mut legend = legend_line(plot, &theme, false);
-    if legend.width() as u16 > inner.width {
-        legend = legend_line(plot, &theme, true);
+    // Spaced out where one line holds it, compact otherwise; pins may need more lines.
+    let width = usize::from(inner.width);
+    let mut legend = legend_lines(plot, &theme, false, width);
+    if legend.len() > 1 {
+        legend = legend_lines(plot, &theme, true, width);
     }
-    let legend_rows = if legend.width() as u16 > inner.width {
-        2
-    } else {
-        1
-    };
+    let legend_rows = legend.len().clamp(1, MAX_LEGEND_ROWS) as u16;
     let [heading, legend_area, body] = Layout::vertical([
         Constraint::Length(1),
         Constraint::Length(legend_rows),
@@ -58,65 +57,155 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
         Paragraph::new(Line::from(format!(" {}", plot.title))),
         heading,
     );
-    frame.render_widget(
-        Paragraph::new(legend).wrap(Wrap { trim: false }),
-        legend_area,
-    );
+    frame.render_widget(Paragraph::new(legend), legend_area);
     if theme.symbol_mode() {
         draw_with_symbols(frame.buffer_mut(), plot, &theme, body);
     } else {
-        chart(plot, &theme, colour_datasets(plot, &theme), body).render(body, frame.buffer_mut());
+        let labels = pin_label_points(plot);
+        chart(plot, &theme, colour_datasets(plot, &theme, &labels), body)
+            .render(body, frame.buffer_mut());
+        if !labels.is_empty() {
+            label_pins(frame.buffer_mut(), &theme, body);
+        }
     }
 }
 
-/// The legend: each curve's symbol (or a coloured bar) and name.
-/// The legend; `compact` (for narrow panes) drops the spaces between marks and names, so that the
-/// legend of an 80-column screen fits on one line.
-fn legend_line<'a>(plot: &'a Plot, theme: &Theme, compact: bool) -> Line<'a> {
+/// Rows the legend may take (four pins and five curves on an 80-column screen need three).
+const MAX_LEGEND_ROWS: usize = 3;
+
+/// The legend: each curve's symbol (or a coloured bar) and name, then each pin's number and label,
+/// then the cursor; packed into lines of `width` without splitting an entry. `compact` (for narrow
+/// panes) drops the spaces between marks and names, so that the legend of an 80-column screen fits
+/// on one line.
+fn legend_lines<'a>(plot: &'a Plot, theme: &Theme, compact: bool, width: usize) -> Vec<Line<'a>> {
     let (gap, after) = if compact { ("", " ") } else { (" ", "  ") };
-    let mut spans = vec![Span::raw(" ")];
+    let mut entries: Vec<Vec<Span>> = Vec::new();
     for (i, series) in plot
         .series
         .iter()
         .enumerate()
-        .filter(|(_, s)| s.kind != SeriesKind::Cursor)
+        .filter(|(_, s)| !matches!(s.kind, SeriesKind::Cursor | SeriesKind::Pin(_)))
     {
         let mark = if theme.symbol_mode() {
             theme.series_symbol(i).to_string()
         } else {
             "--".to_string()
         };
-        spans.push(Span::styled(mark, theme.series_style(i)));
-        spans.push(Span::raw(format!("{gap}{}{after}", series.name)));
+        entries.push(vec![
+            Span::styled(mark, theme.series_style(i)),
+            Span::raw(format!("{gap}{}{after}", series.name)),
+        ]);
+    }
+    for series in &plot.series {
+        if let SeriesKind::Pin(n) = series.kind {
+            entries.push(vec![
+                Span::styled(theme.pin_symbol(n), theme.pin_style(n)),
+                Span::raw(format!(" {}{after}", pins::label_of(&series.name))),
+            ]);
+        }
     }
     if plot.series.iter().any(|s| s.kind == SeriesKind::Cursor) {
-        spans.push(Span::styled(
+        entries.push(vec![Span::styled(
             format!("{} current", theme.cursor_symbol()),
             theme.style(Role::Cursor),
-        ));
+        )]);
     }
-    Line::from(spans)
+    let mut lines: Vec<Vec<Span>> = vec![vec![Span::raw(" ")]];
+    let mut used = 1;
+    for entry in entries {
+        let size: usize = entry.iter().map(Span::width).sum();
+        if used > 1 && used + size > width {
+            lines.push(vec![Span::raw(" ")]);
+            used = 1;
+        }
+        used += size;
+        if let Some(line) = lines.last_mut() {
+            line.extend(entry);
+        }
+    }
+    lines.into_iter().map(Line::from).collect()
 }
 
 /// Braille datasets told apart by colour (the cursor in the muted style, finite-element points as
-/// blocks).
-fn colour_datasets<'a>(plot: &'a Plot, theme: &Theme) -> Vec<Dataset<'a>> {
+/// blocks, pins first so that the live curves are drawn over them), and last the places where each
+/// pin carries its number, as dots tagged with `Color::Indexed(n)` for [`label_pins`] to replace
+/// (the series' own colours are named colours, never indexed ones).
+fn colour_datasets<'a>(
+    plot: &'a Plot,
+    theme: &Theme,
+    labels: &'a [(u8, Series)],
+) -> Vec<Dataset<'a>> {
+    let mut order: Vec<(usize, &PlotSeries)> = plot.series.iter().enumerate().collect();
+    order.sort_by_key(|(_, s)| !matches!(s.kind, SeriesKind::Pin(_)));
+    let curves = order.into_iter().map(|(i, s)| {
+        let (graph, style, marker) = match s.kind {
+            SeriesKind::Line => (GraphType::Line, theme.series_style(i), Marker::Braille),
+            SeriesKind::Points => (GraphType::Scatter, theme.series_style(i), Marker::Block),
+            SeriesKind::Cursor => (GraphType::Line, theme.style(Role::Cursor), Marker::Braille),
+            SeriesKind::Pin(n) => (GraphType::Line, theme.pin_style(n), Marker::Braille),
+        };
+        Dataset::default()
+            .marker(marker)
+            .graph_type(graph)
+            .style(style)
+            .data(&s.points)
+    });
+    let tags = labels.iter().map(|(n, points)| {
+        Dataset::default()
+            .marker(Marker::Dot)
+            .graph_type(GraphType::Scatter)
+            .style(Style::default().fg(Color::Indexed(*n)))
+            .data(points)
+    });
+    curves.chain(tags).collect()
+}
+
+/// Where along the x range pin `n` carries its number in colour mode: two places, shifted per
+/// pin so that the numbers of close curves do not land on one another.
+fn label_fractions(n: u8) -> [f64; 2] {
+    let shift = 0.07 * f64::from(n.saturating_sub(1));
+    [0.3 + shift, 0.62 + shift]
+}
+
+/// The points of each pinned curve that carry its number in colour mode.
+fn pin_label_points(plot: &Plot) -> Vec<(u8, Series)> {
+    let [x0, x1] = plot.x.bounds;
     plot.series
         .iter()
-        .enumerate()
-        .map(|(i, s)| {
-            let (graph, style, marker) = match s.kind {
-                SeriesKind::Line => (GraphType::Line, theme.series_style(i), Marker::Braille),
-                SeriesKind::Points => (GraphType::Scatter, theme.series_style(i), Marker::Block),
-                SeriesKind::Cursor => (GraphType::Line, theme.style(Role::Cursor), Marker::Braille),
-            };
-            Dataset::default()
-                .marker(marker)
-                .graph_type(graph)
-                .style(style)
-                .data(&s.points)
+        .filter_map(|s| match s.kind {
+            SeriesKind::Pin(n) if !s.points.is_empty() => {
+                let nearest = |f: f64| {
+                    let x = x0 + f * (x1 - x0);
+                    s.points
+                        .iter()
+                        .copied()
+                        .min_by(|a, b| (a.0 - x).abs().total_cmp(&(b.0 - x).abs()))
+                };
+                Some((
+                    n,
+                    label_fractions(n).into_iter().filter_map(nearest).collect(),
+                ))
+            }
+            _ => None,
         })
         .collect()
+}
+
+/// Colour mode: each pinned curve (a Braille line in its colour) carries its number where
+/// [`colour_datasets`] left a tagged dot, so that it is named on the chart as in the legend.
+fn label_pins(buffer: &mut Buffer, theme: &Theme, area: Rect) {
+    for y in area.top()..area.bottom() {
+        for x in area.left()..area.right() {
+            let cell = &mut buffer[(x, y)];
+            let Color::Indexed(n) = cell.fg else { continue };
+            if cell.symbol() != symbols::DOT {
+                continue;
+            }
+            let style = theme.pin_style(n);
+            cell.set_symbol(theme.pin_symbol(n))
+                .set_style(style.fg(style.fg.unwrap_or(Color::Reset)));
+        }
+    }
 }
 
 /// Tick labels along an axis `cells` long: three on small charts, five or seven on large ones
@@ -155,7 +244,12 @@ fn chart<'a>(plot: &'a Plot, theme: &Theme, datasets: Vec<Dataset<'a>>, area: Re
 /// first so that curves stay on top of it.
 fn draw_with_symbols(buffer: &mut Buffer, plot: &Plot, theme: &Theme, area: Rect) {
     let mut order: Vec<(usize, &PlotSeries)> = plot.series.iter().enumerate().collect();
-    order.sort_by_key(|(_, s)| s.kind != SeriesKind::Cursor);
+    // The cursor first, then pins, then the live curves on top.
+    order.sort_by_key(|(_, s)| match s.kind {
+        SeriesKind::Cursor => 0,
+        SeriesKind::Pin(_) => 1,
+        SeriesKind::Line | SeriesKind::Points => 2,
+    });
     let tag = |i: usize| Style::default().fg(Color::Indexed(i as u8));
     let datasets = order
         .iter()
@@ -183,6 +277,7 @@ fn draw_with_symbols(buffer: &mut Buffer, plot: &Plot, theme: &Theme, area: Rect
             let i = usize::from(i);
             let (symbol, style) = match plot.series.get(i).map(|s| s.kind) {
                 Some(SeriesKind::Cursor) => (theme.cursor_symbol(), theme.style(Role::Cursor)),
+                Some(SeriesKind::Pin(n)) => (theme.pin_symbol(n), theme.pin_style(n)),
                 _ => (theme.series_symbol(i), theme.series_style(i)),
             };
             cell.set_symbol(symbol)

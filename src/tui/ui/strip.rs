@@ -62,7 +62,10 @@ pub fn lines(model: &Model, theme: &Theme, width: u16, size: StripSize) -> Vec<L
             Model::Plate(_) => "centre",
         };
         lines.push(Line::from(Span::styled(
-            format!(" Zones: x = 0 ({origin}) to {} mm", number_with(zones.length, 3)),
+            format!(
+                " Zones: x = 0 ({origin}) to {} mm",
+                number_with(zones.length, 3)
+            ),
             theme.style(Role::Muted),
         )));
     }
@@ -110,7 +113,10 @@ fn zone_cells(spans: &[ZoneSpan], length: f64, cells: usize) -> (Vec<Zone>, Vec<
             cells
         } else {
             let at = (span.to / length * cells as f64).round() as usize;
-            at.clamp(zones.len() + 1, cells.saturating_sub(left).max(zones.len() + 1))
+            at.clamp(
+                zones.len() + 1,
+                cells.saturating_sub(left).max(zones.len() + 1),
+            )
         };
         zones.resize(end.min(cells), span.zone);
         if left > 0 {
@@ -174,7 +180,10 @@ fn legend(theme: &Theme) -> Line<'static> {
         (Zone::Microslip, "microslip "),
         (Zone::Macroslip, "macroslip"),
     ] {
-        spans.push(Span::styled(theme.zone_symbol(zone), theme.zone_style(zone)));
+        spans.push(Span::styled(
+            theme.zone_symbol(zone),
+            theme.zone_style(zone),
+        ));
         spans.push(Span::raw(name));
     }
     Line::from(spans)
@@ -183,12 +192,8 @@ fn legend(theme: &Theme) -> Line<'static> {
 /// tau / (mu P) of each law at the centre of each cell, in [0, 1].
 fn shear_ratios(model: &Model, zones: &InterfaceZones, cells: usize) -> (Vec<f64>, Vec<f64>) {
     let half = zones.length / (2 * cells) as f64;
-    let Ok(positions) = Samples::new(
-        half,
-        zones.length - half,
-        cells as u64,
-        Spacing::Linear,
-    ) else {
+    let Ok(positions) = Samples::new(half, zones.length - half, cells as u64, Spacing::Linear)
+    else {
         return (Vec::new(), Vec::new());
     };
     let (series, limit): ((Series, Series), f64) = match model {
@@ -237,11 +242,17 @@ mod tests {
         let (cells, cuts) = zone_cells(&spans, 200.0, 20);
         assert_eq!(cuts, [5]);
         assert_eq!(cells.iter().filter(|&&z| z == Zone::Microslip).count(), 5);
-        let tiny = [span(0.0, 9.99, Zone::Stick), span(9.99, 10.0, Zone::Macroslip)];
+        let tiny = [
+            span(0.0, 9.99, Zone::Stick),
+            span(9.99, 10.0, Zone::Macroslip),
+        ];
         let (cells, cuts) = zone_cells(&tiny, 10.0, 20);
         assert_eq!(cuts, [19]);
         assert_eq!(cells[19], Zone::Macroslip);
-        let at_start = [span(0.0, 0.01, Zone::Stick), span(0.01, 10.0, Zone::Macroslip)];
+        let at_start = [
+            span(0.0, 0.01, Zone::Stick),
+            span(0.01, 10.0, Zone::Macroslip),
+        ];
         assert_eq!(zone_cells(&at_start, 10.0, 20).1, [1]);
     }
 

@@ -1,0 +1,223 @@
+//! Pinned curves: exploring means comparing one state with another, so a pin keeps a set of
+//! parameters and every chart of its model shows, next to the current curves, the pinned state's
+//! main curve (the regularized law: `K_T`, `regularized`, `P_r/P`). A pin keeps parameters rather
+//! than points so that it follows chart switches: on w(L) vs F, X vs F or tau(x) alike, the pinned
+//! curve is the same quantity as the current one, built by the same code over the same x range.
+//!
+//! A pin is labelled by what differs from the current parameters (`mu 0.3->0.2`: 0.3 pinned,
+//! 0.2 now), so the legend says what the comparison is about.
+
+use super::{Plot, PlotSeries, SeriesKind, linear_axis, log_axis};
+use crate::model::inputs::Inputs;
+use crate::model::twin_beams::BeamTheory;
+use crate::report::number;
+
+/// Pins kept at most: more curves than that cannot be told apart on a terminal chart.
+pub const MAX_PINS: usize = 4;
+
+/// Names of the series a pin keeps: the regularized law's curve of each chart.
+const MAIN_SERIES: [&str; 3] = ["K_T", "regularized", "P_r/P"];
+
+/// Differences named in a label before the rest are counted (`+2`).
+const NAMED_DIFFERENCES: usize = 2;
+
+/// The regularized law's curve of `plot`, the one a pin keeps (None for tables).
+pub fn main_series(plot: &Plot) -> Option<&PlotSeries> {
+    plot.series
+        .iter()
+        .find(|s| s.kind == SeriesKind::Line && MAIN_SERIES.contains(&s.name.as_str()))
+}
+
+fn theory(theory: BeamTheory) -> &'static str {
+    match theory {
+        BeamTheory::EulerBernoulli => "EB",
+        BeamTheory::Timoshenko => "Timo",
+    }
+}
+
+/// What differs between a pin and the current parameters, pinned value first:
+/// `mu 0.3->0.2 KT 600->1e3 +1`; `= current` when nothing does.
+pub fn label(pinned: &Inputs, current: &Inputs) -> String {
+    let mut differences: Vec<String> = pinned
+        .kind()
+        .params()
+        .iter()
+        .filter_map(|&param| {
+            let (was, now) = (pinned.get(param)?, current.get(param)?);
+            (was != now).then(|| format!("{} {}->{}", param.name(), number(was), number(now)))
+        })
+        .collect();
+    if let (Inputs::Beam { structure: was, .. }, Inputs::Beam { structure: now, .. }) =
+        (pinned, current)
+        && was.theory != now.theory
+    {
+        differences.push(format!(
+            "theory {}->{}",
+            theory(was.theory),
+            theory(now.theory)
+        ));
+    }
+    match differences.len() {
+        0 => "= current".to_string(),
+        n if n <= NAMED_DIFFERENCES => differences.join(" "),
+        n => format!(
+            "{} +{}",
+            differences[..NAMED_DIFFERENCES].join(" "),
+            n - NAMED_DIFFERENCES
+        ),
+    }
+}
+
+/// A pinned series' name in CSV and figures: `pin 1: mu 0.6->0.3`.
+pub fn series_name(number: u8, label: &str) -> String {
+    format!("pin {number}: {label}")
+}
+
+/// The label of a pinned series' name (what follows `pin 1: `), for legends that show the number
+/// as the series' own symbol.
+pub fn label_of(name: &str) -> &str {
+    name.split_once(": ").map_or(name, |(_, label)| label)
+}
+
+/// `plot` with each pin's main curve added as [`SeriesKind::Pin`] (its number and label), taken
+/// from `pinned`: the same chart built at the pin's parameters, in the same y-axis mode. Points
+/// beyond the x range are left out (a pin at another K_T has its own K_T range); the y range
+/// grows to show every pinned curve.
+pub fn add_pins(mut plot: Plot, pinned: &[(u8, String, &Plot)]) -> Plot {
+    if plot.table.is_some() {
+        return plot;
+    }
+    let [x0, x1] = plot.x.bounds;
+    let [mut lo, mut hi] = plot.y.bounds;
+    for (number, label, pinned_plot) in pinned {
+        let Some(main) = main_series(pinned_plot) else {
+            continue;
+        };
+        let points: Vec<(f64, f64)> = main
+            .points
+            .iter()
+            .copied()
+            .filter(|&(x, y)| x >= x0 && x <= x1 && y.is_finite())
+            .collect();
+        for &(_, y) in &points {
+            lo = lo.min(y);
+            hi = hi.max(y);
+        }
+        plot.series.push(PlotSeries {
+            name: series_name(*number, label),
+            points,
+            kind: SeriesKind::Pin(*number),
+        });
+    }
+    if [lo, hi] != plot.y.bounds {
+        let title = plot.y.title.clone();
+        plot.y = if plot.y.log {
+            log_axis(title, lo, hi)
+        } else {
+            linear_axis(title, lo, hi)
+        };
+        super::ymode::stretch_cursors(&mut plot.series, plot.y.bounds);
+    }
+    plot
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::params::{BeamParam, ModelKind, Param, PlateParam};
+    use crate::report::chart::{Views, build};
+    use crate::report::view::View;
+
+    fn every_view(kind: ModelKind) -> Vec<Views> {
+        let (_, _, count) = Views::default().describe(kind);
+        std::iter::successors(Some(Views::default()), |v| Some(v.turn(kind, true)))
+            .take(count)
+            .collect()
+    }
+
+    #[test]
+    fn every_chart_has_a_curve_to_pin_and_tables_have_none() {
+        for kind in ModelKind::ALL {
+            let model = Inputs::paper(kind).validate().unwrap();
+            for views in every_view(kind) {
+                let plot = build(&model, views, None, None, None, None);
+                let is_table = matches!(
+                    (kind, views.beam, views.plate),
+                    (ModelKind::Beam, View::Table(_), _) | (ModelKind::Plate, _, View::Table(_))
+                );
+                assert_eq!(main_series(&plot).is_none(), is_table, "{}", plot.title);
+            }
+        }
+    }
+
+    #[test]
+    fn labels_name_what_differs_pinned_value_first() {
+        let current = Inputs::paper(ModelKind::Beam);
+        assert_eq!(label(&current, &current), "= current");
+        let mut pinned = current;
+        pinned.set(Param::Beam(BeamParam::Friction), 0.2).unwrap();
+        assert_eq!(label(&pinned, &current), "mu 0.2->0.3");
+        pinned
+            .set(Param::Beam(BeamParam::Stiffness), 120.0)
+            .unwrap();
+        pinned.set(Param::Beam(BeamParam::Force), 50.0).unwrap();
+        assert_eq!(label(&pinned, &current), "mu 0.2->0.3 KT 120->600 +1");
+        let plate = Inputs::paper(ModelKind::Plate);
+        let mut pinned = plate;
+        pinned
+            .set(Param::Plate(PlateParam::Thickness), 0.5)
+            .unwrap();
+        assert_eq!(label(&pinned, &plate), "tp 0.5->0.2");
+    }
+
+    /// The default chart (w(L) vs F) at `inputs` over 0..240 N (3 F_thre of the paper's beams):
+    /// pins are built over the current chart's force range.
+    fn build_at(inputs: &Inputs) -> Plot {
+        let model = inputs.validate().unwrap();
+        build(&model, Views::default(), None, None, None, Some(240.0))
+    }
+
+    #[test]
+    fn a_pinned_curve_is_the_main_curve_of_the_same_chart_at_the_pinned_values() {
+        let current = Inputs::paper(ModelKind::Beam);
+        let mut pinned = current;
+        pinned.set(Param::Beam(BeamParam::Friction), 0.6).unwrap();
+        let plot = add_pins(
+            build_at(&current),
+            &[(1, label(&pinned, &current), &build_at(&pinned))],
+        );
+        let pin = plot.series.last().unwrap();
+        assert_eq!(pin.kind, SeriesKind::Pin(1));
+        assert_eq!(pin.name, "pin 1: mu 0.6->0.3");
+        assert_eq!(label_of(&pin.name), "mu 0.6->0.3");
+        // Twice mu: twice F_thre, so at the top of the range the pinned beams deflect less.
+        let alone = build_at(&pinned);
+        assert_eq!(&pin.points, &main_series(&alone).unwrap().points);
+        let current_top = main_series(&plot).unwrap().points.last().unwrap().1;
+        assert!(pin.points.last().unwrap().1 < current_top);
+    }
+
+    #[test]
+    fn the_y_range_grows_to_show_a_pin_and_points_beyond_the_x_range_are_left_out() {
+        let current = Inputs::paper(ModelKind::Beam);
+        let mut pinned = current;
+        // A tenth of mu: the pinned beams slide early and deflect far more.
+        pinned.set(Param::Beam(BeamParam::Friction), 0.03).unwrap();
+        let before = build_at(&current);
+        let pinned_plot = build_at(&pinned);
+        let plot = add_pins(before.clone(), &[(2, "x".into(), &pinned_plot)]);
+        let pin = plot.series.last().unwrap();
+        assert_eq!(pin.points.last().unwrap().0, 240.0);
+        let top = pin.points.iter().map(|p| p.1).fold(0.0, f64::max);
+        assert!(top > before.y.bounds[1]);
+        assert!(plot.y.bounds[1] >= top);
+        assert!(pin.points.iter().all(|p| p.0 <= plot.x.bounds[1]));
+        // The cursor spans the new range.
+        let cursor = plot
+            .series
+            .iter()
+            .find(|s| s.kind == SeriesKind::Cursor)
+            .unwrap();
+        assert_eq!(cursor.points[1].1, plot.y.bounds[1]);
+    }
+}
