@@ -483,14 +483,22 @@ pub fn beam_shear_along(
     positions: Samples,
 ) -> (Series, Series) {
     let (coulomb, regularized) = (beams.coulomb(force), beams.regularized(force));
+    both_along(
+        positions,
+        |x| coulomb.shear_stress(x),
+        |x| regularized.shear_stress(x),
+    )
+}
+
+/// One quantity of both laws at each position: (Coulomb, regularized).
+fn both_along(
+    positions: Samples,
+    coulomb: impl Fn(f64) -> f64,
+    regularized: impl Fn(f64) -> f64,
+) -> (Series, Series) {
     positions
         .values()
-        .map(|x| {
-            (
-                (x, coulomb.shear_stress(x)),
-                (x, regularized.shear_stress(x)),
-            )
-        })
+        .map(|x| ((x, coulomb(x)), (x, regularized(x))))
         .unzip()
 }
 
@@ -532,15 +540,11 @@ pub fn plate_contact_pressure_along(plate: &SqueezedPlate, positions: Samples) -
 /// Interface shear tau (MPa) along the half-plate: (Coulomb, regularized).
 pub fn plate_shear_along(plate: &SqueezedPlate, positions: Samples) -> (Series, Series) {
     let (coulomb, regularized) = (plate.coulomb(), plate.regularized());
-    positions
-        .values()
-        .map(|x| {
-            (
-                (x, coulomb.shear_stress(x)),
-                (x, regularized.shear_stress(x)),
-            )
-        })
-        .unzip()
+    both_along(
+        positions,
+        |x| coulomb.shear_stress(x),
+        |x| regularized.shear_stress(x),
+    )
 }
 
 /// What one stretch of the interface does.

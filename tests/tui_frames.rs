@@ -327,13 +327,18 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
     );
 }
 
-/// Types `path` into the `d` prompt and loads it.
-fn load_data(app: &mut App, path: &str) {
-    app.update(Action::LoadData);
-    for c in path.chars() {
+/// Types `text` into the open prompt and presses Enter.
+fn type_and_commit(app: &mut App, text: &str) {
+    for c in text.chars() {
         app.update(Action::Input(c));
     }
     app.update(Action::Commit);
+}
+
+/// Types `path` into the `d` prompt and loads it.
+fn load_data(app: &mut App, path: &str) {
+    app.update(Action::LoadData);
+    type_and_commit(app, path);
 }
 
 #[test]
@@ -419,10 +424,7 @@ fn load(app: &mut App, path: &str) {
     for _ in 0..200 {
         app.update(Action::Backspace);
     }
-    for c in path.chars() {
-        app.update(Action::Input(c));
-    }
-    app.update(Action::Commit);
+    type_and_commit(app, path);
 }
 
 #[test]
@@ -515,10 +517,7 @@ fn set(app: &mut App, name: &str, value: &str) {
         app.update(Action::Next);
     }
     app.update(Action::StartEdit);
-    for c in value.chars() {
-        app.update(Action::Input(c));
-    }
-    app.update(Action::Commit);
+    type_and_commit(app, value);
 }
 
 #[test]

@@ -867,7 +867,7 @@ mod tests {
     use crate::model::inputs::Inputs;
 
     /// Every view of `kind`, as the `c` key reaches them.
-    fn every_view(kind: ModelKind) -> Vec<Views> {
+    pub(super) fn every_view(kind: ModelKind) -> Vec<Views> {
         let (_, _, count) = Views::default().describe(kind);
         std::iter::successors(Some(Views::default()), |v| Some(v.turn(kind, true)))
             .take(count)

@@ -128,12 +128,7 @@ mod tests {
     use crate::report::chart::{Views, build};
     use crate::report::view::View;
 
-    fn every_view(kind: ModelKind) -> Vec<Views> {
-        let (_, _, count) = Views::default().describe(kind);
-        std::iter::successors(Some(Views::default()), |v| Some(v.turn(kind, true)))
-            .take(count)
-            .collect()
-    }
+    use crate::report::chart::tests::every_view;
 
     #[test]
     fn every_chart_has_a_curve_to_pin_and_tables_have_none() {

@@ -83,10 +83,12 @@ pub fn lines(model: &Model, theme: &Theme, width: u16, size: StripSize) -> Vec<L
                 None => carets.push((cell, text)),
             }
         }
-        lines.push(Line::from(Span::styled(
-            marker_row(&carets, cells),
-            theme.style(Role::Muted),
-        )));
+        let markers = if carets.is_empty() {
+            " one zone per law: no boundary inside".to_string()
+        } else {
+            marker_row(&carets, cells)
+        };
+        lines.push(Line::from(Span::styled(markers, theme.style(Role::Muted))));
         lines.push(legend(theme));
     }
     if size >= StripSize::WithShear {
