@@ -270,6 +270,10 @@ pub enum Command {
         /// u-vs-kt and d-vs-fa, linear otherwise. A mode the chart cannot show is refused.
         #[arg(long, value_enum, value_name = "MODE")]
         y: Option<YMode>,
+        /// Add the chart at other values, as the TUI's pins (g): the same --set on top of the
+        /// inputs, several joined by commas (--pin mu=0.2 --pin mu=0.45,KT=1000); at most 4.
+        #[arg(long = "pin", value_name = "KEY=VALUE,...")]
+        pins: Vec<String>,
         /// Output format (default: csv for a FILE ending in .csv, else svg).
         #[arg(long, value_enum)]
         format: Option<FigureFormat>,
@@ -865,6 +869,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             fe,
             y,
+            pins,
             format,
             output,
         }) => {
@@ -882,7 +887,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                     chart.key()
                 )));
             }
-            let plot = mode.apply(plot);
+            let pinned = pinned_models(&model, pins)?;
+            let plot = report::chart::pins::with_pinned_models(
+                mode.apply(plot),
+                &model,
+                *chart,
+                &pinned,
+                mode,
+            );
             let csv = output
                 .as_deref()
                 .and_then(|p| p.extension())
@@ -1156,6 +1168,29 @@ fn write_output(
 
 /// Resolves the preset (default: the paper's data set of `wanted`), applies `--set`, validates.
 /// `command` (as typed after `microslip`) names the command when the preset is of the other model.
+/// The models of `plot --pin`: each pin's assignments on top of `model`'s inputs.
+fn pinned_models(model: &Model, pins: &[String]) -> Result<Vec<Model>, CliError> {
+    use crate::report::chart::pins::MAX_PINS;
+    if pins.len() > MAX_PINS {
+        return Err(CliError::Invalid(format!(
+            "--pin: {} pins given, at most {MAX_PINS} (more curves cannot be told apart)",
+            pins.len()
+        )));
+    }
+    pins.iter()
+        .map(|pin| {
+            let mut inputs = model.inputs();
+            for assignment in pin.split(',').map(str::trim) {
+                preset::apply_assignment(&mut inputs, assignment)
+                    .map_err(|e| CliError::Invalid(format!("--pin {pin}: {e}")))?;
+            }
+            inputs
+                .validate()
+                .map_err(|e| CliError::Invalid(format!("--pin {pin}: {e}")))
+        })
+        .collect()
+}
+
 fn load(
     args: &InputArgs,
     wanted: ModelKind,

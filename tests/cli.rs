@@ -1594,3 +1594,45 @@ fn kt_tolerance_answers_with_the_stiffness_and_each_codes_setting() {
         assert!(error.contains(says), "{args:?}: {error}");
     }
 }
+
+#[test]
+fn plot_pins_draw_the_chart_at_other_values_over_the_same_range() {
+    let data = stdout_of(&["plot", "w-vs-f", "--pin", "mu=0.2", "--format", "csv"]);
+    let pinned: Vec<&str> = data
+        .lines()
+        .filter(|l| l.starts_with("pin 1: mu 0.2->0.3,"))
+        .collect();
+    assert_eq!(pinned.len(), 200, "{data}");
+    // Over the current chart's force range (3 F_thre = 240 N at mu = 0.3, not 160 N at mu = 0.2),
+    // and at 240 N the same w(L) as `microslip beam` at mu = 0.2.
+    let last: Vec<&str> = pinned[199].split(',').collect();
+    assert_eq!(last[2], "240.0");
+    let point = stdout_of(&[
+        "beam", "--set", "mu=0.2", "--set", "F=240", "--format", "json",
+    ]);
+    let json: serde_json::Value = serde_json::from_str(&point).unwrap();
+    let w = json["regularized"]["w_tip_mm"].as_f64().unwrap();
+    let pinned_w: f64 = last[4].parse().unwrap();
+    assert!((pinned_w - w).abs() <= 1e-12 * w, "{pinned_w} vs {w}");
+    // Several values per pin, and the refusals name the pin.
+    let two = stdout_of(&[
+        "plot",
+        "x-vs-f",
+        "--pin",
+        "mu=0.2,KT=1000",
+        "--format",
+        "csv",
+    ]);
+    assert!(two.contains("pin 1: mu 0.2->0.3 KT 1000->600,"), "{two}");
+    let error = failure(&["plot", "w-vs-f", "--pin", "mu=-1"], 2);
+    assert!(
+        error.contains("--pin mu=-1") && error.contains("mu"),
+        "{error}"
+    );
+    let five: Vec<&str> = ["mu=0.1", "mu=0.2", "mu=0.4", "mu=0.5", "mu=0.6"]
+        .iter()
+        .flat_map(|p| ["--pin", *p])
+        .collect();
+    let error = failure(&[&["plot", "w-vs-f"], five.as_slice()].concat(), 2);
+    assert!(error.contains("at most 4"), "{error}");
+}

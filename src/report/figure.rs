@@ -176,7 +176,11 @@ where
                 chart
                     .draw_series(DashedLineSeries::new(points, 10, 5, line))?
                     .label(series.name.as_str())
-                    .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], line));
+                    .legend(move |(x, y)| {
+                        EmptyElement::at((x, y))
+                            + PathElement::new([(0, 0), (8, 0)], line)
+                            + PathElement::new([(12, 0), (20, 0)], line)
+                    });
             }
             SeriesKind::Cursor => {}
         }

@@ -7,10 +7,11 @@
 //! A pin is labelled by what differs from the current parameters (`mu 0.3->0.2`: 0.3 pinned,
 //! 0.2 now), so the legend says what the comparison is about.
 
-use super::{Plot, PlotSeries, SeriesKind, linear_axis, log_axis};
-use crate::model::inputs::Inputs;
+use super::{Plot, PlotSeries, SeriesKind, Views, YMode, build, linear_axis, log_axis};
+use crate::model::inputs::{Inputs, Model};
 use crate::model::twin_beams::BeamTheory;
 use crate::report::number;
+use crate::report::view::AnyChart;
 
 /// Pins kept at most: more curves than that cannot be told apart on a terminal chart.
 pub const MAX_PINS: usize = 4;
@@ -110,6 +111,11 @@ pub fn add_pins(mut plot: Plot, pinned: &[(u8, String, &Plot)]) -> Plot {
         });
     }
     if [lo, hi] != plot.y.bounds {
+        // A little room where a pin widened the range, so its curve does not run along the frame.
+        let pad = 0.03 * (hi - lo);
+        let [old_lo, old_hi] = plot.y.bounds;
+        let lo = if lo < old_lo { lo - pad } else { lo };
+        let hi = if hi > old_hi { hi + pad } else { hi };
         let title = plot.y.title.clone();
         plot.y = if plot.y.log {
             log_axis(title, lo, hi)
@@ -121,11 +127,35 @@ pub fn add_pins(mut plot: Plot, pinned: &[(u8, String, &Plot)]) -> Plot {
     plot
 }
 
+/// `base` (the chart of `chart` at `current`, in y mode `mode`) with the same chart at each of
+/// `pinned` added as pins 1, 2, ...: what `microslip plot --pin` draws. The pins are built over
+/// `base`'s force range (the beams' force axis would otherwise follow each pin's F_thre).
+pub fn with_pinned_models(
+    base: Plot,
+    current: &Model,
+    chart: AnyChart,
+    pinned: &[Model],
+    mode: YMode,
+) -> Plot {
+    let span = Some(base.x.bounds[1]);
+    let plots: Vec<Plot> = pinned
+        .iter()
+        .map(|m| mode.apply(build(m, Views::showing(chart), None, None, None, span)))
+        .collect();
+    let now = current.inputs();
+    let entries: Vec<(u8, String, &Plot)> = pinned
+        .iter()
+        .zip(&plots)
+        .zip(1u8..)
+        .map(|((m, plot), n)| (n, label(&m.inputs(), &now), plot))
+        .collect();
+    add_pins(base, &entries)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::model::params::{BeamParam, ModelKind, Param, PlateParam};
-    use crate::report::chart::{Views, build};
     use crate::report::view::View;
 
     use crate::report::chart::tests::every_view;
