@@ -84,12 +84,13 @@ pub fn lines(model: &Model, theme: &Theme, width: u16, size: StripSize) -> Vec<L
             }
         }
         let markers = if carets.is_empty() {
-            " one zone per law: no boundary inside".to_string()
+            " no boundary inside (0, L)".to_string()
         } else {
             marker_row(&carets, cells)
         };
         lines.push(Line::from(Span::styled(markers, theme.style(Role::Muted))));
-        lines.push(legend(theme));
+        let unloaded = zones.coulomb.iter().any(|z| z.zone == Zone::Unloaded);
+        lines.push(legend(theme, unloaded));
     }
     if size >= StripSize::WithShear {
         lines.push(Line::from(Span::styled(
@@ -175,8 +176,17 @@ fn marker_row(carets: &[(usize, String)], cells: usize) -> String {
     row.into_iter().collect::<String>().trim_end().to_string()
 }
 
-fn legend(theme: &Theme) -> Line<'static> {
+/// The symbols' meanings; with no load, what the strip shows instead (one symbol, nothing slips).
+fn legend(theme: &Theme, unloaded: bool) -> Line<'static> {
     let mut spans = vec![Span::raw(" ")];
+    if unloaded {
+        spans.push(Span::styled(
+            theme.zone_symbol(Zone::Unloaded),
+            theme.zone_style(Zone::Unloaded),
+        ));
+        spans.push(Span::raw("unloaded: no load, no slip"));
+        return Line::from(spans);
+    }
     for (zone, name) in [
         (Zone::Stick, "stick "),
         (Zone::Microslip, "microslip "),
@@ -256,6 +266,48 @@ mod tests {
             span(0.01, 10.0, Zone::Macroslip),
         ];
         assert_eq!(zone_cells(&at_start, 10.0, 20).1, [1]);
+    }
+
+    fn text(line: &Line) -> String {
+        line.spans.iter().map(|s| s.content.as_ref()).collect()
+    }
+
+    #[test]
+    fn an_unloaded_interface_is_drawn_and_explained_as_such() {
+        use crate::tui::theme::Charset;
+        let theme = Theme {
+            charset: Charset::Ascii,
+            color: false,
+        };
+        let beams = crate::TwinBeams::new(crate::TwinBeamsParams::PAPER).unwrap();
+        let model = Model::Beam {
+            beams,
+            force: crate::TipForce::new(0.0).unwrap(),
+        };
+        let rows: Vec<String> = lines(&model, &theme, 24, StripSize::Marked)
+            .iter()
+            .map(text)
+            .collect();
+        assert_eq!(rows.len(), StripSize::Marked.rows());
+        assert_eq!(rows[1], format!(" C {}", "-".repeat(20)));
+        assert_eq!(rows[2], format!(" R {}", "-".repeat(20)));
+        assert_eq!(rows[3], " no boundary inside (0, L)");
+        assert_eq!(rows[4], " -unloaded: no load, no slip");
+        // Loaded past F_1: microslip then macroslip, X named under its boundary.
+        let model = Model::Beam {
+            beams,
+            force: crate::TipForce::new(100.0).unwrap(),
+        };
+        let rows: Vec<String> = lines(&model, &theme, 24, StripSize::WithShear)
+            .iter()
+            .map(text)
+            .collect();
+        assert_eq!(rows.len(), StripSize::WithShear.rows());
+        assert_eq!(rows[1], format!(" C {}", "#".repeat(20)));
+        // X = 17.3 mm of 200 mm on 20 cells: 1.7 -> 2 cells of microslip.
+        assert_eq!(rows[2], format!(" R ~~{}", "#".repeat(18)));
+        assert_eq!(rows[3], "     ^X 17.3");
+        assert_eq!(rows[4], " =stick ~microslip #macroslip");
     }
 
     #[test]
