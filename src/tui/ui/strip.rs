@@ -239,7 +239,6 @@ fn spark_row(label: &str, ratios: &[f64], theme: &Theme) -> Line<'static> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::curves::ZoneSpan;
 
     fn span(from: f64, to: f64, zone: Zone) -> ZoneSpan {
         ZoneSpan { from, to, zone }
@@ -268,8 +267,12 @@ mod tests {
         assert_eq!(zone_cells(&at_start, 10.0, 20).1, [1]);
     }
 
-    fn text(line: &Line) -> String {
-        line.spans.iter().map(|s| s.content.as_ref()).collect()
+    /// The strip's rows as plain text, 24 columns wide.
+    fn rows(model: &Model, theme: &Theme, size: StripSize) -> Vec<String> {
+        lines(model, theme, 24, size)
+            .iter()
+            .map(|line| line.spans.iter().map(|s| s.content.as_ref()).collect())
+            .collect()
     }
 
     #[test]
@@ -284,30 +287,24 @@ mod tests {
             beams,
             force: crate::TipForce::new(0.0).unwrap(),
         };
-        let rows: Vec<String> = lines(&model, &theme, 24, StripSize::Marked)
-            .iter()
-            .map(text)
-            .collect();
-        assert_eq!(rows.len(), StripSize::Marked.rows());
-        assert_eq!(rows[1], format!(" C {}", "-".repeat(20)));
-        assert_eq!(rows[2], format!(" R {}", "-".repeat(20)));
-        assert_eq!(rows[3], " no boundary inside (0, L)");
-        assert_eq!(rows[4], " -unloaded: no load, no slip");
+        let marked = rows(&model, &theme, StripSize::Marked);
+        assert_eq!(marked.len(), StripSize::Marked.rows());
+        assert_eq!(marked[1], format!(" C {}", "-".repeat(20)));
+        assert_eq!(marked[2], format!(" R {}", "-".repeat(20)));
+        assert_eq!(marked[3], " no boundary inside (0, L)");
+        assert_eq!(marked[4], " -unloaded: no load, no slip");
         // Loaded past F_1: microslip then macroslip, X named under its boundary.
         let model = Model::Beam {
             beams,
             force: crate::TipForce::new(100.0).unwrap(),
         };
-        let rows: Vec<String> = lines(&model, &theme, 24, StripSize::WithShear)
-            .iter()
-            .map(text)
-            .collect();
-        assert_eq!(rows.len(), StripSize::WithShear.rows());
-        assert_eq!(rows[1], format!(" C {}", "#".repeat(20)));
+        let full = rows(&model, &theme, StripSize::WithShear);
+        assert_eq!(full.len(), StripSize::WithShear.rows());
+        assert_eq!(full[1], format!(" C {}", "#".repeat(20)));
         // X = 17.3 mm of 200 mm on 20 cells: 1.7 -> 2 cells of microslip.
-        assert_eq!(rows[2], format!(" R ~~{}", "#".repeat(18)));
-        assert_eq!(rows[3], "     ^X 17.3");
-        assert_eq!(rows[4], " =stick ~microslip #macroslip");
+        assert_eq!(full[2], format!(" R ~~{}", "#".repeat(18)));
+        assert_eq!(full[3], "     ^X 17.3");
+        assert_eq!(full[4], " =stick ~microslip #macroslip");
     }
 
     #[test]
