@@ -937,7 +937,8 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                     deck::beam_deck(&beams, &loads, *mesh, slope)
                 }
                 (_, Model::Plate(plate)) => deck::plate_deck(&plate, *mesh, slope),
-            };
+            }
+            .map_err(|e| CliError::Invalid(e.to_string()))?;
             write_output(out, output.as_deref(), deck.as_bytes())?
         }
         Some(Command::Verify {
@@ -1150,19 +1151,26 @@ fn deck_loads(
     Ok(forces)
 }
 
-/// Writes `bytes` to `path` (replaced atomically, [`crate::file::write_atomic`]), or to `out` when
-/// there is no path.
+/// Writes `bytes` to `path` ([`crate::file::write_atomic`]: a regular file replaced atomically with
+/// its mode kept, a device or FIFO written through, a link followed, a read-only file refused), or
+/// to `out` when there is no path or it is `-` or `/dev/stdout` (the program's own standard output,
+/// whatever it is redirected to, is written as a stream, never replaced).
 fn write_output(
     out: &mut impl Write,
     path: Option<&std::path::Path>,
     bytes: &[u8],
 ) -> Result<(), CliError> {
+    let to_stdout = |p: &std::path::Path| {
+        p == std::path::Path::new("-") || p == std::path::Path::new("/dev/stdout")
+    };
     match path {
-        Some(path) => crate::file::write_atomic(path, bytes, true).map_err(|e| CliError::Data {
-            path: path.display().to_string(),
-            reason: e.to_string(),
-        }),
-        None => Ok(out.write_all(bytes)?),
+        Some(path) if !to_stdout(path) => {
+            crate::file::write_atomic(path, bytes, true).map_err(|e| CliError::Data {
+                path: path.display().to_string(),
+                reason: e.to_string(),
+            })
+        }
+        _ => Ok(out.write_all(bytes)?),
     }
 }
 
@@ -1285,7 +1293,8 @@ fn run_fit(
         reason,
     };
     let mut progress = ProgressLine::new(io::stderr(), io::stderr().is_terminal());
-    let contents = fit::data::read_text(path).map_err(|e| data_error(e.to_string()))?;
+    let contents = fit::data::read_text(path, crate::file::Kinds::AnyReadable)
+        .map_err(|e| data_error(e.to_string()))?;
     let data = fit::data::parse_with_progress(&contents, &mut |done, total| {
         progress.update(Instant::now(), || text::reading_progress(done, total))
     });

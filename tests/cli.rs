@@ -849,17 +849,17 @@ fn kt_candidates_outside_the_domain_show_their_value_and_why() {
 #[cfg(target_os = "linux")]
 #[test]
 fn endless_inputs_stop_at_the_cap_with_bounded_memory() {
-    // `check` and `--preset` read at most 64 KiB of an endless device.
+    // A preset is a regular file: `check` and `--preset` refuse a device without reading it.
     let output = microslip().args(["check", "/dev/zero"]).output().unwrap();
     assert_eq!(output.status.code(), Some(1));
     let text = String::from_utf8(output.stdout).unwrap();
     assert_eq!(
         text,
-        "/dev/zero: cannot read /dev/zero: file is larger than the 64 KiB limit for a preset\n"
+        "/dev/zero: cannot read /dev/zero: a character device, not a regular file\n"
     );
     let stderr = failure(&["beam", "--preset", "/dev/zero"], 2);
     assert!(
-        stderr.contains("cannot read /dev/zero: file is larger than the 64 KiB limit for a preset"),
+        stderr.contains("cannot read /dev/zero: a character device, not a regular file"),
         "{stderr}"
     );
     // `fit` reads at most 256 MiB, here under a 1 GiB address-space limit: unbounded reading
@@ -888,7 +888,7 @@ fn endless_inputs_stop_at_the_cap_with_bounded_memory() {
 #[test]
 fn a_fifo_fed_forever_is_refused_at_the_cap() {
     let dir = tempfile::tempdir().unwrap();
-    let fifo = dir.path().join("endless.toml");
+    let fifo = dir.path().join("endless.csv");
     let made = std::process::Command::new("mkfifo")
         .arg(&fifo)
         .status()
@@ -902,15 +902,13 @@ fn a_fifo_fed_forever_is_refused_at_the_cap() {
             .write(true)
             .open(writer_path)
             .unwrap();
-        let line = b"# a comment that never ends\n".repeat(100);
+        let line = b"# a comment that never ends\n".repeat(1000);
         while pipe.write_all(&line).is_ok() {}
     });
-    let output = microslip().arg("check").arg(&fifo).output().unwrap();
-    assert_eq!(output.status.code(), Some(1));
-    let text = String::from_utf8(output.stdout).unwrap();
+    let stderr = failure(&["fit", "beam", fifo.to_str().unwrap()], 2);
     assert!(
-        text.ends_with(": file is larger than the 64 KiB limit for a preset\n"),
-        "{text}"
+        stderr.ends_with(": file is larger than the 256 MiB limit for a measurement file\n"),
+        "{stderr}"
     );
     writer.join().unwrap();
 }
@@ -1291,6 +1289,19 @@ fn deck_writes_a_calculix_deck_with_a_readable_header() {
         use std::os::unix::fs::PermissionsExt;
         let mode = std::fs::metadata(&path).unwrap().permissions().mode() & 0o777;
         assert_ne!(mode, 0o600, "not a private temporary file");
+    }
+}
+
+/// `h = 1e-6` used to abort on a failed allocation (exit 134, a backtrace); `L = 1e6` wrote 574 MB.
+#[test]
+fn a_deck_too_large_for_ccx_is_refused_with_its_size_and_a_way_out() {
+    for set in ["h=1e-6", "h=1e-3", "L=1e6"] {
+        let stderr = failure(&["deck", "ccx", "beam", "--set", set], 2);
+        assert!(
+            stderr.contains("elements, more than the 20000")
+                && stderr.contains("choose beams with L/h below about"),
+            "{set}: {stderr}"
+        );
     }
 }
 

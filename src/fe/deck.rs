@@ -14,8 +14,10 @@
 
 use std::fmt::Write as _;
 
+use thiserror::Error;
+
 use super::header::{DeckHeader, StickSlope};
-use super::mesh::{Block, Face, graded_toward_end, uniform};
+use super::mesh::{Block, Face, graded_toward_end, graded_toward_end_count, uniform};
 use crate::model::params::Compact;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
@@ -63,31 +65,122 @@ pub mod sets {
     pub const PLATE_FACE: &str = "IFPLATE";
 }
 
+/// The largest deck written: 20 000 elements. The fine decks have about a thousand (888 for the
+/// paper's beams, 1 002 for its plate), and halving the coarse decks' element size changes w(L) by
+/// 0.03 %; a deck twenty times the fine one gains nothing a benchmark can see, while CalculiX's
+/// direct solver grows faster than the element count (minutes per increment and gigabytes beyond
+/// this). Beyond it a deck
+/// is refused by its element count, before anything is allocated ([`DeckTooLarge`]).
+pub const MAX_DECK_ELEMENTS: usize = 20_000;
+
+/// A deck over [`MAX_DECK_ELEMENTS`]: its element count and how to get a smaller one.
+///
+/// The largest L/h that fits is found by bisection on the count itself (the grading at the clamp
+/// adds a part that does not grow with L/h, so a proportion would overshoot).
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error(
+    "the deck would have {} elements, more than the {MAX_DECK_ELEMENTS} a CalculiX run on one \
+     machine can take in reasonable time (docs/theory.md, \"Benchmarking an FE code\"); {advice}",
+    count(*elements)
+)]
+pub struct DeckTooLarge {
+    /// The number of elements the deck would have.
+    pub elements: f64,
+    /// What to change to get a smaller mesh.
+    pub advice: String,
+}
+
+/// A count in words a reader takes in at once: whole up to a million, then "2.00e9".
+fn count(n: f64) -> String {
+    if n < 1e6 {
+        format!("{n:.0}")
+    } else {
+        format!("{n:.2e}")
+    }
+}
+
+/// The grading along the beams: (finest at the clamp, coarsest, growth ratio), mm.
+///
+/// Elements a fifth of a beam's height, graded down to 1/80 of it at the clamp, where the clamped
+/// face meets the interface and stresses are singular. A uniform mesh of the same size left w(L)
+/// 0.4 % too stiff, converging slowly (docs/theory.md, "Benchmarking an FE code"); two quadratic
+/// elements through each beam's height carry its bending exactly.
+fn beam_grading(beams: &TwinBeams, mesh: DeckMesh) -> (f64, f64, f64) {
+    let height = 2.0 * beams.params().half_height;
+    let r = mesh.refinement() as f64;
+    (height / 80.0 / r, height / 5.0 / r, 1.2)
+}
+
+/// The number of elements of the beam deck (two blocks, `2 r` elements through each beam's
+/// height, one across the width), counted without building it.
+fn beam_element_count(beams: &TwinBeams, mesh: DeckMesh) -> f64 {
+    let (finest, coarsest, ratio) = beam_grading(beams, mesh);
+    let along = graded_toward_end_count(0.0, beams.params().length, finest, coarsest, ratio);
+    2.0 * along * (2 * mesh.refinement()) as f64
+}
+
+/// Refuses a beam deck over [`MAX_DECK_ELEMENTS`], with the slenderness that would fit.
+fn check_beam_size(beams: &TwinBeams, mesh: DeckMesh) -> Result<(), DeckTooLarge> {
+    let elements = beam_element_count(beams, mesh);
+    if elements <= MAX_DECK_ELEMENTS as f64 {
+        return Ok(());
+    }
+    let p = beams.params();
+    let slenderness = p.length / p.half_height;
+    let count_at = |ratio: f64| {
+        let params = crate::TwinBeamsParams {
+            half_height: p.length / ratio,
+            ..p
+        };
+        TwinBeams::new(params).map_or(f64::INFINITY, |b| beam_element_count(&b, mesh))
+    };
+    let (mut fits, mut too_many) = (1.0_f64, slenderness);
+    for _ in 0..60 {
+        let mid = (fits * too_many).sqrt();
+        if count_at(mid) <= MAX_DECK_ELEMENTS as f64 {
+            fits = mid;
+        } else {
+            too_many = mid;
+        }
+    }
+    let finer = match mesh {
+        DeckMesh::Fine => "use --mesh coarse (4 times fewer elements) or ",
+        DeckMesh::Coarse => "",
+    };
+    Err(DeckTooLarge {
+        elements,
+        advice: format!(
+            "elements along the beams are h/5 long, so the count grows with L/h = {} (L = {} mm, \
+             h = {} mm); {finer}choose beams with L/h below about {}",
+            Compact(slenderness),
+            Compact(p.length),
+            Compact(p.half_height),
+            Compact(fits.floor()),
+        ),
+    })
+}
+
 /// The twin-beam deck: the pressure P in a first step, then one step per tip force in `loads`
 /// (N on each beam, increasing), each printed at its end.
+///
+/// # Errors
+/// [`DeckTooLarge`] when the mesh would have more than [`MAX_DECK_ELEMENTS`] elements (very
+/// slender beams).
 pub fn beam_deck(
     beams: &TwinBeams,
     loads: &[TipForce],
     mesh: DeckMesh,
     stick_slope: StickSlope,
-) -> String {
+) -> Result<String, DeckTooLarge> {
+    check_beam_size(beams, mesh)?;
     let p = beams.params();
     let poisson = p.poisson;
     let slope = stick_slope.value_for_beams(beams);
     let header = DeckHeader::beams(beams, loads, mesh, stick_slope);
     let r = mesh.refinement();
     let height = 2.0 * p.half_height;
-    // Along the beam: elements a fifth of a beam's height, graded down to 1/80 of it at the clamp,
-    // where the clamped face meets the interface and stresses are singular. A uniform mesh of the
-    // same size left w(L) 0.4 % too stiff, converging slowly (docs/theory.md, "Benchmarking an FE
-    // code"); two quadratic elements through each beam's height carry its bending exactly.
-    let from_clamp = graded_toward_end(
-        0.0,
-        p.length,
-        height / 80.0 / r as f64,
-        height / 5.0 / r as f64,
-        1.2,
-    );
+    let (finest, coarsest, ratio) = beam_grading(beams, mesh);
+    let from_clamp = graded_toward_end(0.0, p.length, finest, coarsest, ratio);
     let mut xs: Vec<f64> = from_clamp.iter().rev().map(|x| p.length - x).collect();
     xs[0] = 0.0;
     let through = 2 * r;
@@ -178,17 +271,14 @@ pub fn beam_deck(
         }
         end_beam_step(&mut deck);
     }
-    deck
+    Ok(deck)
 }
 
-/// The squeezed-plate deck: one step that applies P; the plate's end and contact face are printed.
-pub fn plate_deck(plate: &SqueezedPlate, mesh: DeckMesh, stick_slope: StickSlope) -> String {
+/// The grading along the plate: (finest at the free end, coarsest, growth ratio), mm.
+fn plate_grading(plate: &SqueezedPlate, mesh: DeckMesh, slope: f64) -> (f64, f64, f64) {
     let p = plate.params();
-    let slope = stick_slope.value_for_plate(plate);
-    let header = DeckHeader::plate(plate, mesh, stick_slope);
     let r = mesh.refinement() as f64;
-    let through = 4 * mesh.refinement();
-    let layer = p.thickness / through as f64;
+    let layer = p.thickness / (4.0 * r);
     // The slip zone at the free end is about 1/alpha wide (L - X_r <= l and X_r - X_s -> 1/alpha):
     // elements a tenth of that at the end, or half a layer if smaller (the contact face corner at
     // the free end is where the displacement varies most)...
@@ -198,7 +288,43 @@ pub fn plate_deck(plate: &SqueezedPlate, mesh: DeckMesh, stick_slope: StickSlope
     let coarsest = (p.thickness / (2.0 * r))
         .max(p.half_length / (50.0 * r))
         .max(finest);
-    let xs = graded_toward_end(0.0, p.half_length, finest, coarsest, 1.2);
+    (finest, coarsest, 1.2)
+}
+
+/// The number of elements of the plate deck, counted without building it: `4 r` layers through
+/// the plate, and the base block under it, one element thick and one element longer.
+fn plate_element_count(plate: &SqueezedPlate, mesh: DeckMesh, slope: f64) -> f64 {
+    let (finest, coarsest, ratio) = plate_grading(plate, mesh, slope);
+    let along = graded_toward_end_count(0.0, plate.params().half_length, finest, coarsest, ratio);
+    along * (4 * mesh.refinement()) as f64 + along + 1.0
+}
+
+/// The squeezed-plate deck: one step that applies P; the plate's end and contact face are printed.
+///
+/// # Errors
+/// [`DeckTooLarge`] when the mesh would have more than [`MAX_DECK_ELEMENTS`] elements. The
+/// grading keeps a plate deck to a few thousand elements over the whole accepted domain (at most
+/// 50 per refinement level along L plus a logarithmic grading), so this is a guard, not a limit
+/// users meet.
+pub fn plate_deck(
+    plate: &SqueezedPlate,
+    mesh: DeckMesh,
+    stick_slope: StickSlope,
+) -> Result<String, DeckTooLarge> {
+    let p = plate.params();
+    let slope = stick_slope.value_for_plate(plate);
+    let header = DeckHeader::plate(plate, mesh, stick_slope);
+    let through = 4 * mesh.refinement();
+    let layer = p.thickness / through as f64;
+    let (finest, coarsest, ratio) = plate_grading(plate, mesh, slope);
+    let elements = plate_element_count(plate, mesh, slope);
+    if elements > MAX_DECK_ELEMENTS as f64 {
+        return Err(DeckTooLarge {
+            elements,
+            advice: "the plate's mesh is graded toward its free end; report this case".into(),
+        });
+    }
+    let xs = graded_toward_end(0.0, p.half_length, finest, coarsest, ratio);
     let width = layer;
     let zs = vec![0.0, width];
     let plate_block = Block::new(
@@ -298,7 +424,7 @@ pub fn plate_deck(plate: &SqueezedPlate, mesh: DeckMesh, stick_slope: StickSlope
         let _ = writeln!(deck, "*NODE PRINT, NSET={set}\nU");
     }
     deck.push_str("*NODE FILE\nU\n*CONTACT FILE\nCDIS, CSTR\n*END STEP\n");
-    deck
+    Ok(deck)
 }
 
 /// The normal penalty K_N (MPa/mm): stiff against the elements it connects (100 E over an element's
@@ -418,7 +544,84 @@ mod tests {
     fn paper_beam_deck(mesh: DeckMesh) -> String {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
         let loads = [40.0, 100.0].map(|f| TipForce::new(f).unwrap());
-        beam_deck(&beams, &loads, mesh, StickSlope::Model)
+        beam_deck(&beams, &loads, mesh, StickSlope::Model).unwrap()
+    }
+
+    /// Elements in a written deck: the lines of its `*ELEMENT` cards, springs excluded.
+    fn elements_written(deck: &str) -> usize {
+        let mut inside = false;
+        let mut count = 0;
+        for line in deck.lines() {
+            // A 20-node brick takes two lines, the first ending with a comma.
+            if line.starts_with('*') {
+                inside = line.starts_with("*ELEMENT") && !line.contains("SPRINGA");
+            } else if inside && !line.trim_end().ends_with(',') {
+                count += 1;
+            }
+        }
+        count
+    }
+
+    #[test]
+    fn the_counted_size_is_the_written_size() {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        for mesh in [DeckMesh::Coarse, DeckMesh::Fine] {
+            assert_eq!(
+                beam_element_count(&beams, mesh),
+                elements_written(&paper_beam_deck(mesh)) as f64
+            );
+            let counted =
+                plate_element_count(&plate, mesh, StickSlope::Model.value_for_plate(&plate));
+            let deck = plate_deck(&plate, mesh, StickSlope::Model).unwrap();
+            assert_eq!(counted, elements_written(&deck) as f64);
+        }
+    }
+
+    /// `h = 1e-6` used to abort on a 20 TB allocation; `L = 1e6` wrote 574 MB.
+    #[test]
+    fn a_deck_too_large_is_refused_with_its_count_the_limit_and_a_way_out() {
+        let loads = [TipForce::new(1.0).unwrap()];
+        for (length, half_height) in [(200.0, 1e-6), (1e6, 10.0), (200.0, 1e-3)] {
+            let params = TwinBeamsParams {
+                length,
+                half_height,
+                ..TwinBeamsParams::PAPER
+            };
+            let beams = TwinBeams::new(params).unwrap();
+            for mesh in [DeckMesh::Coarse, DeckMesh::Fine] {
+                let refused = beam_deck(&beams, &loads, mesh, StickSlope::Model).unwrap_err();
+                assert!(refused.elements > MAX_DECK_ELEMENTS as f64);
+                let message = refused.to_string();
+                assert!(message.contains("more than the 20000"), "{message}");
+                assert!(message.contains("L/h below about"), "{message}");
+            }
+        }
+        // The advice holds: beams at the slenderness it names fit.
+        let params = TwinBeamsParams {
+            half_height: 1e-3,
+            ..TwinBeamsParams::PAPER
+        };
+        let refused = beam_deck(
+            &TwinBeams::new(params).unwrap(),
+            &loads,
+            DeckMesh::Coarse,
+            StickSlope::Model,
+        )
+        .unwrap_err();
+        let fits: f64 = refused.advice.rsplit(' ').next().unwrap().parse().unwrap();
+        let params = TwinBeamsParams {
+            half_height: params.length / fits,
+            ..TwinBeamsParams::PAPER
+        };
+        let beams = TwinBeams::new(params).unwrap();
+        assert!(beam_deck(&beams, &loads, DeckMesh::Coarse, StickSlope::Model).is_ok());
+        let params = TwinBeamsParams {
+            half_height: params.length / (1.05 * fits),
+            ..TwinBeamsParams::PAPER
+        };
+        let beams = TwinBeams::new(params).unwrap();
+        assert!(beam_deck(&beams, &loads, DeckMesh::Coarse, StickSlope::Model).is_err());
     }
 
     #[test]
@@ -488,7 +691,7 @@ mod tests {
     #[test]
     fn plate_deck_resolves_the_slip_zone() {
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
-        let deck = plate_deck(&plate, DeckMesh::Coarse, StickSlope::Model);
+        let deck = plate_deck(&plate, DeckMesh::Coarse, StickSlope::Model).unwrap();
         assert!(deck.contains("*FRICTION\n0.3, 1000000.0\n"));
         // The nodes of the contact face, in x order: the last two are 1/(4 alpha) apart at most.
         let xs: Vec<f64> = node_x_of_set(&deck, sets::PLATE_FACE);

@@ -9,7 +9,7 @@ use super::header::DeckHeader;
 use super::results::{
     BeamFePoint, CcxRun, PlateFePoint, ResultsError, beam_points_from_csv, plate_points_from_csv,
 };
-use crate::file::{Size, read_capped};
+use crate::file::{Kinds, Size, read_capped};
 use crate::model::params::ModelKind;
 
 /// Largest result file read (256 MiB): a `.dat` of a fine deck is a few MB.
@@ -36,7 +36,8 @@ pub struct Loaded<P> {
 }
 
 fn read(path: &Path, what: &'static str) -> Result<String, LoadError> {
-    read_capped(path, MAX_RESULT_SIZE, what).map_err(|e| fail(path, e.to_string()))
+    read_capped(path, MAX_RESULT_SIZE, what, Kinds::RegularOnly)
+        .map_err(|e| fail(path, e.to_string()))
 }
 
 fn fail(path: &Path, reason: impl Into<String>) -> LoadError {
@@ -66,7 +67,7 @@ fn deck_path(dat: &Path, deck: Option<&Path>) -> PathBuf {
 /// The header and text of the deck of the `.dat` at `path`.
 fn read_deck(path: &Path, deck: Option<&Path>) -> Result<(DeckHeader, String), LoadError> {
     // The results first: a mistyped .dat path should say so, not that its deck is missing.
-    std::fs::metadata(path).map_err(|e| fail(path, e.to_string()))?;
+    crate::file::require_regular(path).map_err(|e| fail(path, e.to_string()))?;
     let deck_path = deck_path(path, deck);
     let deck_text = read(&deck_path, "a deck").map_err(|e| LoadError {
         reason: format!(

@@ -5,7 +5,7 @@
 //! 2i + 1 the midpoint of element i. A 20-node brick has corner and edge nodes only, so a half-grid
 //! point is a node unless two or more of its indices are odd (face and body centres).
 
-pub(crate) use crate::numeric::mesh::graded_toward_end;
+pub(crate) use crate::numeric::mesh::{graded_toward_end, graded_toward_end_count};
 
 /// Element boundaries along one axis (mm), strictly increasing, at least two.
 pub(crate) type Breaks = Vec<f64>;

@@ -9,7 +9,7 @@ use std::path::Path;
 
 use thiserror::Error;
 
-use crate::file::{ReadError, Size, read_capped};
+use crate::file::{Kinds, ReadError, Size, read_capped};
 use crate::model::params::{Compact, Domain, Unit};
 
 /// One measurement: tip force (N) and tip deflection (mm).
@@ -41,12 +41,14 @@ pub const MIN_ROWS: usize = 3;
 pub const MAX_DATA_SIZE: Size = Size(256 << 20);
 
 /// Reads the text of a measurement file, refusing one larger than [`MAX_DATA_SIZE`]; give the text
-/// to [`parse`].
+/// to [`parse`]. `kinds` says whether a stream (a FIFO, `<(...)`) is read ([`Kinds::AnyReadable`],
+/// the command line) or refused ([`Kinds::RegularOnly`], the terminal UI, which must not wait).
 ///
 /// # Errors
-/// The file cannot be read, is larger than the cap, or is not UTF-8 text.
-pub fn read_text(path: impl AsRef<Path>) -> Result<String, ReadError> {
-    read_capped(path.as_ref(), MAX_DATA_SIZE, "a measurement file")
+/// The file cannot be read, is not of an accepted kind, is larger than the cap, or is not UTF-8
+/// text.
+pub fn read_text(path: impl AsRef<Path>, kinds: Kinds) -> Result<String, ReadError> {
+    read_capped(path.as_ref(), MAX_DATA_SIZE, "a measurement file", kinds)
 }
 
 /// The comment character: a line that starts with it is skipped.
@@ -511,11 +513,16 @@ mod tests {
         let file = std::fs::File::create(&path).unwrap();
         file.set_len(MAX_DATA_SIZE.0 + 1).unwrap();
         assert_eq!(
-            read_text(&path).unwrap_err().to_string(),
+            read_text(&path, Kinds::AnyReadable)
+                .unwrap_err()
+                .to_string(),
             "file is larger than the 256 MiB limit for a measurement file"
         );
         std::fs::write(&path, "F_N,w_mm\n1,2\n").unwrap();
-        assert_eq!(read_text(&path).unwrap(), "F_N,w_mm\n1,2\n");
+        assert_eq!(
+            read_text(&path, Kinds::AnyReadable).unwrap(),
+            "F_N,w_mm\n1,2\n"
+        );
     }
 
     #[test]

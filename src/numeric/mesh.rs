@@ -103,16 +103,8 @@ pub(crate) fn graded_toward_end(
     coarsest: f64,
     ratio: f64,
 ) -> Vec<f64> {
-    let mut widths = Vec::new();
-    let mut covered = 0.0;
-    let mut width = finest.min(end - start);
-    while covered + width < end - start && width < coarsest {
-        widths.push(width);
-        covered += width;
-        width = (width * ratio).min(coarsest);
-    }
-    let rest = end - start - covered;
-    let even = (rest / coarsest).ceil().max(1.0) as usize;
+    let Grading { widths, rest, even } = grading(end - start, finest, coarsest, ratio);
+    let even = even as usize;
     let mut breaks: Vec<f64> = (0..=even)
         .map(|i| start + rest * i as f64 / even as f64)
         .collect();
@@ -127,9 +119,66 @@ pub(crate) fn graded_toward_end(
     breaks
 }
 
+/// How [`graded_toward_end`] splits a length: the growing widths at the end, then `even` elements
+/// over the `rest`.
+struct Grading {
+    widths: Vec<f64>,
+    rest: f64,
+    even: f64,
+}
+
+/// The grading of `length`. Only the growing part is stored (its count is logarithmic in
+/// `coarsest / finest`); the even part is a count, so that the size of a mesh can be known without
+/// allocating it ([`graded_toward_end_count`]).
+fn grading(length: f64, finest: f64, coarsest: f64, ratio: f64) -> Grading {
+    let mut widths = Vec::new();
+    let mut covered = 0.0;
+    let mut width = finest.min(length);
+    while covered + width < length && width < coarsest {
+        widths.push(width);
+        covered += width;
+        width = (width * ratio).min(coarsest);
+    }
+    let rest = length - covered;
+    Grading {
+        widths,
+        rest,
+        even: (rest / coarsest).ceil().max(1.0),
+    }
+}
+
+/// The number of elements [`graded_toward_end`] would make, without making them (a deck too large
+/// to write is refused by its size before any allocation).
+pub(crate) fn graded_toward_end_count(
+    start: f64,
+    end: f64,
+    finest: f64,
+    coarsest: f64,
+    ratio: f64,
+) -> f64 {
+    let g = grading(end - start, finest, coarsest, ratio);
+    g.even + g.widths.len() as f64
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_count_of_a_graded_mesh_is_known_without_making_it() {
+        for (end, finest, coarsest) in [(300.0, 0.25, 4.0), (10.0, 1e-3, 0.5), (1.0, 2.0, 3.0)] {
+            let breaks = graded_toward_end(0.0, end, finest, coarsest, 1.2);
+            let count = graded_toward_end_count(0.0, end, finest, coarsest, 1.2);
+            assert_eq!(
+                count,
+                (breaks.len() - 1) as f64,
+                "{end} {finest} {coarsest}"
+            );
+        }
+        // Far too many to make: counted all the same, with no allocation of that size.
+        let count = graded_toward_end_count(0.0, 1e6, 1e-9, 1e-7, 1.2);
+        assert!((count - 1e13).abs() < 1e7, "{count}");
+    }
 
     #[test]
     fn graded_meshes_cover_the_interval_monotonically() {

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use thiserror::Error;
 
 use super::{Located, Preset, PresetError, PresetSource};
-use crate::file::{Size, read_capped};
+use crate::file::{Kinds, Size, read_capped};
 
 /// Why a preset could not be saved.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -46,7 +46,7 @@ pub const MAX_PRESET_SIZE: Size = Size(64 * 1024);
 /// [`PresetError::Io`] when the file cannot be read or is larger than [`MAX_PRESET_SIZE`], else
 /// every problem of its text (see [`Preset::parse`]).
 pub fn load(path: &Path) -> Result<Preset, Vec<Located>> {
-    let text = read_capped(path, MAX_PRESET_SIZE, "a preset").map_err(|e| {
+    let text = read_capped(path, MAX_PRESET_SIZE, "a preset", Kinds::RegularOnly).map_err(|e| {
         vec![Located {
             line: None,
             error: PresetError::Io {
@@ -98,6 +98,15 @@ pub fn save_atomic(
         reason: e.to_string(),
     };
     std::fs::create_dir_all(dir).map_err(|e| io_error(dir, e))?;
+    // A FIFO or device under a preset's name would swallow the preset: refused, not written through.
+    if let Ok(metadata) = std::fs::metadata(&target)
+        && !metadata.is_file()
+    {
+        return Err(SaveError::Io {
+            path: target.display().to_string(),
+            reason: format!("{}, not a regular file", crate::file::kind_of(&metadata)),
+        });
+    }
     match crate::file::write_atomic(&target, text.as_bytes(), overwrite) {
         Ok(()) => Ok(target),
         Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {

@@ -318,8 +318,11 @@ impl App {
             if csv_path.exists() {
                 continue;
             }
-            let written = crate::file::write_atomic(&svg_path, svg.as_bytes(), false)
-                .and_then(|()| crate::file::write_atomic(&csv_path, &csv, false));
+            // Both or neither: a disk with room for the SVG only must not keep it.
+            let written = crate::file::write_new_files(&[
+                (svg_path.as_path(), svg.as_bytes()),
+                (csv_path.as_path(), csv.as_slice()),
+            ]);
             match written {
                 Ok(()) => {
                     return self.info(format!(
@@ -1086,7 +1089,7 @@ impl App {
             self.load_fe_results(path);
             return;
         }
-        let points = crate::fit::data::read_text(path)
+        let points = crate::fit::data::read_text(path, crate::file::Kinds::RegularOnly)
             .map_err(|e| e.to_string())
             .and_then(|text| crate::fit::data::parse(&text).map_err(|e| e.to_string()));
         match points {

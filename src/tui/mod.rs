@@ -98,7 +98,7 @@ pub fn run(
     let data = match data {
         Some(path) => {
             let shown = path.display().to_string();
-            let text = crate::fit::data::read_text(&path)
+            let text = crate::fit::data::read_text(&path, crate::file::Kinds::AnyReadable)
                 .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
             let points = crate::fit::data::parse(&text)
                 .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
