@@ -1001,6 +1001,32 @@ fn force_range_error(error: RangeError) -> CliError {
 
 /// `microslip compare`: reads every result file, builds the closed forms from its deck's header (or
 /// from `--preset`/`--set` for CSV) and prints the comparison.
+/// Says on stderr which parameter flags a CalculiX run's deck overrides: its header gives the
+/// parameters the run was made with, and comparing at others would mean nothing (they used to be
+/// ignored without a word).
+fn note_flags_the_deck_overrides(inputs: &InputArgs) {
+    let mut given: Vec<String> = inputs
+        .preset
+        .iter()
+        .map(|p| format!("--preset {p}"))
+        .collect();
+    given.extend(inputs.assignments.iter().map(|a| format!("--set {a}")));
+    given.extend(
+        inputs
+            .beam_theory
+            .iter()
+            .map(|t| format!("--beam-theory {t}")),
+    );
+    if given.is_empty() {
+        return;
+    }
+    eprintln!(
+        "microslip: note: {} not used: the deck's header gives the parameters of the run (compare \
+         shows both beam theories); to compare FE points at other parameters, give them as CSV",
+        report::sanitize(&given.join(" "))
+    );
+}
+
 fn run_compare(
     out: &mut impl Write,
     model: ModelKind,
@@ -1035,6 +1061,9 @@ fn run_compare(
                 });
             };
             let loaded = fe::load::beam_results(path, deck).map_err(data_error)?;
+            if loaded.header.is_some() {
+                note_flags_the_deck_overrides(inputs);
+            }
             let beams = match &loaded.header {
                 Some(header) => match header.model()? {
                     Model::Beam { beams, .. } => beams,
@@ -1069,6 +1098,9 @@ fn run_compare(
             let mut rows = Vec::new();
             for path in results {
                 let loaded = fe::load::plate_results(path, deck).map_err(data_error)?;
+                if loaded.header.is_some() && rows.is_empty() {
+                    note_flags_the_deck_overrides(inputs);
+                }
                 let plate = match &loaded.header {
                     Some(header) => match header.model()? {
                         Model::Plate(plate) => plate,

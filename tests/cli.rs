@@ -1387,6 +1387,57 @@ fn compare_reads_csv_from_any_code_with_the_parameters_given() {
     assert!(json["implied"]["error"].is_string(), "{json}");
 }
 
+/// `--set` beside a deck's results used to be ignored without a word.
+#[test]
+fn compare_says_which_flags_the_deck_overrides() {
+    let output = microslip()
+        .args([
+            "compare",
+            "beam",
+            &calculix_fixture("paper-beams.dat"),
+            "--set",
+            "KT=120",
+        ])
+        .output()
+        .unwrap();
+    assert!(output.status.success());
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.starts_with("microslip: note: --set KT=120 not used: the deck's header gives"),
+        "{stderr}"
+    );
+    assert!(
+        String::from_utf8(output.stdout)
+            .unwrap()
+            .contains("K_T = 600 MPa/mm")
+    );
+}
+
+/// At F = 0 the closed form is 0: "-inf %" and "NaN %" used to be printed (text, CSV, JSON).
+#[test]
+fn compare_at_zero_load_says_the_relative_difference_is_undefined() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("fe.csv");
+    std::fs::write(&csv, "F_N,w_mm\n0,0\n40,0.0114\n100,0.039\n").unwrap();
+    let path = csv.to_str().unwrap();
+    let text = stdout_of(&["compare", "beam", path]);
+    for bad in ["inf", "NaN"] {
+        assert!(!text.contains(bad), "{text}");
+    }
+    assert!(
+        text.contains("n/a") && text.contains("relative difference is undefined"),
+        "{text}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_of(&["compare", "beam", path, "--format", "json"])).unwrap();
+    assert!(json["rows"][0]["diff_euler"].is_null(), "{json}");
+    assert!(json["rows"][1]["diff_euler"].is_f64(), "{json}");
+    let csv = stdout_of(&["compare", "beam", path, "--format", "csv"]);
+    let first = csv.lines().nth(1).unwrap();
+    assert!(first.starts_with("0.0,0.0,0.0,,"), "{first}");
+}
+
 #[test]
 fn compare_errors_name_the_file_and_line() {
     let dir = tempfile::tempdir().unwrap();

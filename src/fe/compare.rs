@@ -30,15 +30,22 @@ pub struct BeamCompared {
     pub shear_corrected_within: f64,
 }
 
+/// (FE - closed form) / closed form, or `None` where the closed form is 0 (no load, or a plate
+/// with nu = 0 that nothing squeezes sideways): a relative difference is undefined there, and
+/// dividing printed "-inf %" and "NaN %".
+pub fn relative_difference(fe: f64, closed: f64) -> Option<f64> {
+    (closed != 0.0).then(|| fe / closed - 1.0)
+}
+
 impl BeamCompared {
-    /// (FE - closed form) / closed form against the Euler-Bernoulli value.
-    pub fn difference_euler(&self) -> f64 {
-        self.fe.deflection / self.euler - 1.0
+    /// (FE - closed form) / closed form against the Euler-Bernoulli value; `None` at F = 0.
+    pub fn difference_euler(&self) -> Option<f64> {
+        relative_difference(self.fe.deflection, self.euler)
     }
 
-    /// (FE - closed form) / closed form against the shear-corrected value.
-    pub fn difference_shear_corrected(&self) -> f64 {
-        self.fe.deflection / self.shear_corrected - 1.0
+    /// (FE - closed form) / closed form against the shear-corrected value; `None` at F = 0.
+    pub fn difference_shear_corrected(&self) -> Option<f64> {
+        relative_difference(self.fe.deflection, self.shear_corrected)
     }
 
     /// FE X minus the closed form's (mm), when the FE results have the slip.
@@ -115,16 +122,19 @@ pub struct PlateCompared {
 }
 
 impl PlateCompared {
-    /// (FE - closed form) / closed form for u(L).
-    pub fn difference(&self) -> f64 {
-        self.fe.end_displacement / self.closed - 1.0
+    /// (FE - closed form) / closed form for u(L); `None` where the closed form is 0.
+    pub fn difference(&self) -> Option<f64> {
+        relative_difference(self.fe.end_displacement, self.closed)
     }
 
-    /// The same at the contact face and at mid-thickness, when the results have them.
+    /// The same at the contact face and at mid-thickness, when the results have them and the
+    /// closed form is not 0.
     pub fn differences_through_thickness(&self) -> Option<[f64; 2]> {
-        self.fe
-            .through_thickness
-            .map(|u| u.map(|u| u / self.closed - 1.0))
+        let [face, mid] = self.fe.through_thickness?;
+        Some([
+            relative_difference(face, self.closed)?,
+            relative_difference(mid, self.closed)?,
+        ])
     }
 
     /// The FE interface state, when the results have the slip.
@@ -180,8 +190,11 @@ mod tests {
             .to_vec();
         let same = compare_beams(&truth, &points);
         for row in &same.rows {
-            assert!(row.difference_shear_corrected().abs() < 1e-12);
-            assert!(row.difference_euler() > 0.0, "shear adds deflection");
+            assert!(row.difference_shear_corrected().unwrap().abs() < 1e-12);
+            assert!(
+                row.difference_euler().unwrap() > 0.0,
+                "shear adds deflection"
+            );
         }
         let other = compare_beams(&beams, &points);
         let fit = other.implied.unwrap();
@@ -230,7 +243,7 @@ mod tests {
                 interface: None,
             }],
         );
-        assert!((rows[0].difference() - 0.1).abs() < 1e-12);
+        assert!((rows[0].difference().unwrap() - 0.1).abs() < 1e-12);
         assert_eq!(rows[0].regime, Regime::Microslip);
         assert!(
             rows[0].implied_stiffness.unwrap() < 1e4,

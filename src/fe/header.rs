@@ -6,7 +6,9 @@ use std::fmt::Write as _;
 
 use super::deck::DeckMesh;
 use crate::model::inputs::Inputs;
-use crate::model::params::{BeamParam, Compact, ModelKind, Param, PlateParam, parse_number};
+use crate::model::params::{
+    BeamParam, Compact, Domain, ModelKind, Param, PlateParam, Unit, parse_number,
+};
 use crate::report::number;
 use crate::{Model, SqueezedPlate, TipForce, TwinBeams};
 
@@ -229,16 +231,18 @@ impl DeckHeader {
         text
     }
 
-    /// Reads the header line of a deck, if `text` has one.
+    /// Reads the header line of a deck, if `text` has one, and validates it as a preset is
+    /// validated: every parameter in its domain (same messages), every key known and given once,
+    /// the loads of a beam deck forces in their domain, increasing. A byte-order mark or spaces
+    /// before the line do not hide it (an editor may add them).
     ///
     /// # Errors
     /// [`HeaderError`] with the line number when the line is there but malformed.
     pub fn parse(text: &str) -> Result<Option<DeckHeader>, HeaderError> {
-        let Some((index, line)) = text
-            .lines()
-            .enumerate()
-            .find(|(_, l)| l.starts_with(HEADER_PREFIX))
-        else {
+        let Some((index, line)) = text.lines().enumerate().find_map(|(i, l)| {
+            let l = l.trim_start_matches('\u{feff}').trim_start();
+            l.starts_with(HEADER_PREFIX).then_some((i, l))
+        }) else {
             return Ok(None);
         };
         let fail = |message: String| HeaderError {
@@ -250,7 +254,9 @@ impl DeckHeader {
             let (key, value) = field
                 .split_once('=')
                 .ok_or_else(|| fail(format!("'{field}' is not KEY=VALUE")))?;
-            fields.insert(key, value);
+            if fields.insert(key, value).is_some() {
+                return Err(fail(format!("'{key}=' is given twice")));
+            }
         }
         let take = |key: &str| {
             fields
@@ -280,6 +286,17 @@ impl DeckHeader {
                 )));
             }
         };
+        let known: Vec<&str> = ["model", "mesh", "stick-slope"]
+            .into_iter()
+            .chain(kind.params().iter().map(|p| p.name()))
+            .collect();
+        if let Some(unknown) = fields.keys().find(|k| !known.contains(k)) {
+            return Err(fail(format!(
+                "unknown key '{unknown}' in a {} deck's header (known: {})",
+                kind.name(),
+                known.join(", ")
+            )));
+        }
         let poisson = number_of("nu", take("nu")?)?;
         let mut inputs = Inputs::paper(kind);
         for &param in kind.params() {
@@ -296,10 +313,23 @@ impl DeckHeader {
             };
             inputs.set(param, value).map_err(|e| fail(e.to_string()))?;
         }
-        let mut loads = Vec::new();
+        let mut loads: Vec<f64> = Vec::new();
         if kind == ModelKind::Beam {
             for text in take("F")?.split(',') {
-                loads.push(number_of("F", text)?);
+                let force = number_of("F", text)?;
+                Domain::FORCE
+                    .check("F", force, Unit::Newton)
+                    .map_err(|e| fail(e.to_string()))?;
+                if let Some(&previous) = loads.last()
+                    && force <= previous
+                {
+                    return Err(fail(format!(
+                        "F = {}: the loads must increase from one step to the next (after {})",
+                        Compact(force),
+                        Compact(previous)
+                    )));
+                }
+                loads.push(force);
             }
             inputs
                 .set(Param::Beam(BeamParam::Force), *loads.last().unwrap_or(&0.0))
@@ -330,7 +360,7 @@ mod tests {
             ..TwinBeamsParams::PAPER
         })
         .unwrap();
-        let loads = [40.0, 100.5, 1e-3].map(|f| TipForce::new(f).unwrap());
+        let loads = [1e-3, 40.0, 100.5].map(|f| TipForce::new(f).unwrap());
         let header = DeckHeader::beams(&beams, &loads, DeckMesh::Fine, StickSlope::Model);
         let parsed = DeckHeader::parse(&header.to_comment()).unwrap().unwrap();
         assert_eq!(parsed, header);
@@ -361,6 +391,54 @@ mod tests {
         let text = header.to_comment();
         assert_eq!(DeckHeader::parse(&text).unwrap().unwrap(), header);
         assert!(text.contains("u(L) regularized 9.459"), "{text}");
+    }
+
+    /// A header edited by hand is validated like a preset (it used to accept negative and
+    /// reversed loads, unknown and repeated keys, and to compare at F = 1e400 against 1e12).
+    #[test]
+    fn an_edited_header_is_refused_like_a_preset() {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let loads = [40.0, 60.0].map(|f| TipForce::new(f).unwrap());
+        let good =
+            DeckHeader::beams(&beams, &loads, DeckMesh::Coarse, StickSlope::Model).to_comment();
+        let edit = |from: &str, to: &str| {
+            assert!(good.contains(from), "{from}");
+            DeckHeader::parse(&good.replacen(from, to, 1))
+                .unwrap_err()
+                .to_string()
+        };
+        assert_eq!(
+            edit("F=40.0,60.0", "F=-5,60"),
+            "line 2: invalid F = -5: must be >= 0 and finite (N)"
+        );
+        assert_eq!(
+            edit("F=40.0,60.0", "F=1e400,60"),
+            "line 2: invalid F = (a number beyond 1.8e308): must be in [0, 1e12] N"
+        );
+        assert_eq!(
+            edit("F=40.0,60.0", "F=60,40"),
+            "line 2: F = 40: the loads must increase from one step to the next (after 60)"
+        );
+        assert_eq!(
+            edit("F=40.0,60.0", "F=40,40"),
+            "line 2: F = 40: the loads must increase from one step to the next (after 40)"
+        );
+        assert_eq!(edit(" mu=", " mu=0.2 mu="), "line 2: 'mu=' is given twice");
+        assert!(
+            edit(" mu=", " colour=red mu=")
+                .starts_with("line 2: unknown key 'colour' in a beam deck's header (known:"),
+        );
+        assert_eq!(
+            edit(" KT=600.0", " KT=1e13"),
+            "line 2: invalid KT = 1e13: must be in [1e-6, 1e12] MPa/mm"
+        );
+        // A byte-order mark or indentation does not hide the header.
+        let marked = format!(
+            "\u{feff}{}",
+            good.replacen("** microslip-deck:", "   ** microslip-deck:", 1)
+        );
+        let header = DeckHeader::parse(&marked).unwrap().unwrap();
+        assert_eq!(header.loads, [40.0, 60.0]);
     }
 
     #[test]

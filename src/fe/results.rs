@@ -12,7 +12,7 @@ use super::deck::sets;
 use super::header::DeckHeader;
 use crate::fit::data::{self, Curve, MEASURED_DEFLECTION};
 use crate::model::inputs::Inputs;
-use crate::model::params::{Domain, Unit};
+use crate::model::params::{Compact, Domain, Unit};
 use crate::model::regime::Regime;
 
 /// What is wrong with an FE result file.
@@ -154,37 +154,46 @@ impl CcxRun<'_> {
         };
         let blocks = parse_dat(self.dat)?;
         let nodes = parse_nodes(self.deck)?;
+        let deck_sets = parse_node_sets(self.deck);
         let saturation = structure.friction * structure.pressure / structure.tangential_stiffness;
-        let mut points = Vec::new();
-        for (n, &force) in self.header.loads.iter().enumerate() {
+        let loads = &self.header.loads;
+        let mut points = Vec::with_capacity(loads.len());
+        for (n, &force) in loads.iter().enumerate() {
             // Step 1 applies the pressure; load n ends step n + 2, at total time n + 2.
             let time = (n + 2) as f64;
-            let Some(tip) = find(&blocks, sets::BEAM_TIP, time) else {
-                break;
+            let step = || {
+                format!(
+                    "load step {} of {} (F = {} N, time {})",
+                    n + 1,
+                    loads.len(),
+                    Compact(force),
+                    time
+                )
             };
+            let [tip, lower, upper] =
+                [sets::BEAM_TIP, sets::BEAM_LOWER_FACE, sets::BEAM_UPPER_FACE].map(|set| {
+                    complete_block(&blocks, &deck_sets, set, time).map_err(|why| {
+                        if points.is_empty() || why.starts_with("no ") {
+                            ResultsError::Missing(format!(
+                                "{}: {why}; the .dat holds {} of the deck's {} load steps (did \
+                                 ccx finish, and is this the .dat of this deck?)",
+                                step(),
+                                points.len(),
+                                loads.len()
+                            ))
+                        } else {
+                            ResultsError::Missing(format!("{}: {why}", step()))
+                        }
+                    })
+                });
+            let (tip, lower, upper) = (tip?, lower?, upper?);
             let deflection = mean(tip.rows.iter().map(|(_, u)| u[1]));
-            let interface = match (
-                find(&blocks, sets::BEAM_LOWER_FACE, time),
-                find(&blocks, sets::BEAM_UPPER_FACE, time),
-            ) {
-                (Some(lower), Some(upper)) => {
-                    let (xs, slips) = relative_slip(&nodes, lower, Some(upper))?;
-                    Some(interface_state(&xs, &slips, saturation))
-                }
-                _ => None,
-            };
+            let (xs, slips) = relative_slip(&nodes, lower, Some(upper))?;
             points.push(BeamFePoint {
                 force,
                 deflection,
-                interface,
+                interface: Some(interface_state(&xs, &slips, saturation)),
             });
-        }
-        if points.is_empty() {
-            return Err(ResultsError::Missing(format!(
-                "no displacements of set {} at the end of the first load step (time 2): did ccx \
-                 finish, and is this the .dat of this deck?",
-                sets::BEAM_TIP
-            )));
         }
         Ok(points)
     }
@@ -201,13 +210,16 @@ impl CcxRun<'_> {
         };
         let blocks = parse_dat(self.dat)?;
         let nodes = parse_nodes(self.deck)?;
-        let end = find(&blocks, sets::PLATE_END, 1.0).ok_or_else(|| {
-            ResultsError::Missing(format!(
-                "no displacements of set {} at the end of the step (time 1): did ccx finish, and \
-                 is this the .dat of this deck?",
-                sets::PLATE_END
-            ))
-        })?;
+        let deck_sets = parse_node_sets(self.deck);
+        let [end, face_nodes] = [sets::PLATE_END, sets::PLATE_FACE].map(|set| {
+            complete_block(&blocks, &deck_sets, set, 1.0).map_err(|why| {
+                ResultsError::Missing(format!(
+                    "at the end of the step (time 1): {why} (did ccx finish, and is this the .dat \
+                     of this deck?)"
+                ))
+            })
+        });
+        let (end, face_nodes) = (end?, face_nodes?);
         // The end nodes from the contact face up, at every half element: Simpson's rule over
         // each quadratic element gives the thickness mean exactly for the element's field.
         let mut column: Vec<(f64, f64)> = end
@@ -232,19 +244,13 @@ impl CcxRun<'_> {
             / thickness;
         let face = column[0].1;
         let mid = column[column.len() / 2].1;
-        let interface = match find(&blocks, sets::PLATE_FACE, 1.0) {
-            Some(face_nodes) => {
-                let (xs, slips) = relative_slip(&nodes, face_nodes, None)?;
-                let saturation = plate.friction * plate.pressure / plate.tangential_stiffness;
-                Some(interface_state(&xs, &slips, saturation))
-            }
-            None => None,
-        };
+        let (xs, slips) = relative_slip(&nodes, face_nodes, None)?;
+        let saturation = plate.friction * plate.pressure / plate.tangential_stiffness;
         Ok(PlateFePoint {
             stiffness: plate.tangential_stiffness,
             end_displacement: mean,
             through_thickness: Some([face, mid]),
-            interface,
+            interface: Some(interface_state(&xs, &slips, saturation)),
         })
     }
 }
@@ -255,6 +261,89 @@ fn find<'a>(blocks: &'a [DatBlock], set: &str, time: f64) -> Option<&'a DatBlock
         .iter()
         .rev()
         .find(|b| b.set.eq_ignore_ascii_case(set) && (b.time - time).abs() < 1e-6 * time.max(1.0))
+}
+
+/// The block of `set` at `time`, checked against the deck: exactly the nodes the deck's `*NSET`
+/// lists, each once. A `.dat` cut short, or edited, fails here with what is missing, instead of
+/// giving a mean or a profile over part of the set (a plate `.dat` cut inside its `UEND` block
+/// used to give a thickness mean 40 % low and an implied K_T 70 times too stiff).
+fn complete_block<'a>(
+    blocks: &'a [DatBlock],
+    deck_sets: &HashMap<String, Vec<usize>>,
+    set: &str,
+    time: f64,
+) -> Result<&'a DatBlock, String> {
+    let block = find(blocks, set, time).ok_or_else(|| format!("no displacements of set {set}"))?;
+    let Some(expected) = deck_sets.get(&set.to_ascii_uppercase()) else {
+        return Err(format!("the deck has no *NSET {set}"));
+    };
+    let mut found: Vec<usize> = block.rows.iter().map(|(id, _)| *id).collect();
+    found.sort_unstable();
+    let mut wanted = expected.clone();
+    wanted.sort_unstable();
+    if found == wanted {
+        return Ok(block);
+    }
+    let missing = wanted
+        .iter()
+        .filter(|id| found.binary_search(id).is_err())
+        .count();
+    let mut unique = found.clone();
+    unique.dedup();
+    let repeated = found.len() - unique.len();
+    let foreign = unique
+        .iter()
+        .filter(|id| wanted.binary_search(id).is_err())
+        .count();
+    let mut problems = Vec::new();
+    if missing > 0 {
+        problems.push(format!("{missing} missing"));
+    }
+    if repeated > 0 {
+        problems.push(format!("{repeated} repeated"));
+    }
+    if foreign > 0 {
+        problems.push(format!("{foreign} not in the set"));
+    }
+    Err(format!(
+        "set {set} has {} rows for the deck's {} nodes ({})",
+        found.len(),
+        wanted.len(),
+        problems.join(", ")
+    ))
+}
+
+/// The node sets a deck defines (`*NSET, NSET=NAME` then node numbers), by upper-case name.
+fn parse_node_sets(deck: &str) -> HashMap<String, Vec<usize>> {
+    let mut found: HashMap<String, Vec<usize>> = HashMap::new();
+    let mut current: Option<String> = None;
+    for line in deck.lines() {
+        let trimmed = line.trim();
+        if trimmed.starts_with("**") || trimmed.is_empty() {
+            continue;
+        }
+        if trimmed.starts_with('*') {
+            current = None;
+            let mut fields = trimmed.split(',').map(str::trim);
+            if fields
+                .next()
+                .is_some_and(|k| k.eq_ignore_ascii_case("*NSET"))
+            {
+                current = fields
+                    .filter_map(|f| f.split_once('='))
+                    .find(|(k, _)| k.trim().eq_ignore_ascii_case("NSET"))
+                    .map(|(_, name)| name.trim().to_ascii_uppercase());
+            }
+            continue;
+        }
+        if let Some(name) = &current {
+            let ids = trimmed
+                .split(',')
+                .filter_map(|f| f.trim().parse::<usize>().ok());
+            found.entry(name.clone()).or_default().extend(ids);
+        }
+    }
+    found
 }
 
 fn mean(values: impl Iterator<Item = f64>) -> f64 {
@@ -384,12 +473,28 @@ fn parse_dat(text: &str) -> Result<Vec<DatBlock>, ResultsError> {
                         .ok()
                         .filter(|v| v.is_finite())
                         .ok_or_else(|| fail(format!("'{text}' is not a finite number")))?;
+                    if !Domain::DISPLACEMENT.contains(*slot) {
+                        return Err(fail(format!(
+                            "displacement {text} is not one: {}",
+                            Domain::DISPLACEMENT.describe(Unit::Millimetre)
+                        )));
+                    }
                 }
                 let id = fields[0].parse().unwrap_or_default();
                 block.rows.push((id, u));
             }
             _ => in_block = false,
         }
+    }
+    // CalculiX ends every line it writes; a last line without its end was cut, and its last number
+    // may be cut inside its exponent ("1.99E-05" read as "1.99E-0").
+    if !text.is_empty() && !text.ends_with('\n') {
+        return Err(ResultsError::Line {
+            line: text.lines().count(),
+            problem: "the file ends inside this line: it was cut short (a run still writing, or \
+                      a copy that did not finish)"
+                .into(),
+        });
     }
     Ok(blocks)
 }

@@ -308,6 +308,17 @@ fn parse_curve_with_progress(
                 ),
             ));
         }
+        if !Domain::DISPLACEMENT.contains(deflection) {
+            return Err(error(
+                line,
+                format!(
+                    "{} = {} is not a displacement: {}",
+                    curve.y,
+                    Compact(deflection),
+                    Domain::DISPLACEMENT.describe(Unit::Millimetre)
+                ),
+            ));
+        }
         data.push((force, deflection));
     }
     if data.len() < curve.min_rows {
@@ -523,6 +534,17 @@ mod tests {
             read_text(&path, Kinds::AnyReadable).unwrap(),
             "F_N,w_mm\n1,2\n"
         );
+    }
+
+    /// 1e200 in a result gave a 200-digit percentage, 1.7e308 "inf": refused with the range.
+    #[test]
+    fn a_displacement_beyond_any_structure_is_refused_with_its_line_and_range() {
+        let text = "F_N,w_mm\n1,0.5\n2,1e200\n3,1\n";
+        assert_eq!(
+            parse(text).unwrap_err().to_string(),
+            "line 3: w_mm = 1e200 is not a displacement: must be in [-1e6, 1e6] mm"
+        );
+        assert!(parse("F_N,w_mm\n1,-2\n2,-1e6\n3,1e6\n").is_ok());
     }
 
     #[test]

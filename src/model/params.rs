@@ -163,6 +163,11 @@ pub enum Domain {
     /// 0 <= nu < 0.5: a stable isotropic solid that does not expand under compression (0.5 is
     /// incompressible and makes the plane-strain compliance singular).
     PoissonRatio,
+    /// From `-max` to `max` inclusive (displacements read from FE results, of either sign).
+    Symmetric {
+        /// Largest accepted magnitude.
+        max: f64,
+    },
 }
 
 impl Domain {
@@ -193,6 +198,10 @@ impl Domain {
     };
     /// Tip force or cycle amplitude (N): 0 to 1e12 N.
     pub const FORCE: Domain = Domain::NonNegative { max: 1e12 };
+    /// A displacement read from FE results (mm): no larger in magnitude than the longest accepted
+    /// length, 1 km. A small-displacement FE result beyond that is not a result (an overflowed or
+    /// corrupted file), and comparing it would print numbers that mean nothing.
+    pub const DISPLACEMENT: Domain = Domain::Symmetric { max: 1e6 };
     /// FE contact element length (mm): down to a hundredth of the shortest accepted length, the
     /// default L/100 of `microslip kt`.
     pub const ELEMENT_SIZE: Domain = Domain::Positive {
@@ -205,13 +214,16 @@ impl Domain {
         match self {
             Domain::Positive { min, .. } => min,
             Domain::NonNegative { .. } | Domain::PoissonRatio => 0.0,
+            Domain::Symmetric { max } => -max,
         }
     }
 
     /// The largest accepted value, or for the Poisson ratio the excluded upper end 0.5.
     pub fn max(self) -> f64 {
         match self {
-            Domain::Positive { max, .. } | Domain::NonNegative { max } => max,
+            Domain::Positive { max, .. }
+            | Domain::NonNegative { max }
+            | Domain::Symmetric { max } => max,
             Domain::PoissonRatio => 0.5,
         }
     }
@@ -223,6 +235,7 @@ impl Domain {
                 Domain::Positive { min, max } => (min..=max).contains(&value),
                 Domain::NonNegative { max } => (0.0..=max).contains(&value),
                 Domain::PoissonRatio => (0.0..0.5).contains(&value),
+                Domain::Symmetric { max } => (-max..=max).contains(&value),
             }
     }
 
@@ -255,10 +268,11 @@ impl Domain {
     pub fn refusal(self, value: f64, unit: Unit) -> String {
         let words = unit.in_words();
         match self {
-            Domain::Positive { .. } if !(value.is_finite() && value > 0.0) => {
+            // A number too large for an f64 (`1e400`) is too large, not of the wrong sign: the range.
+            Domain::Positive { .. } if value.is_nan() || value <= 0.0 => {
                 format!("must be > 0 and finite ({words})")
             }
-            Domain::NonNegative { .. } if !(value.is_finite() && value >= 0.0) => {
+            Domain::NonNegative { .. } if value.is_nan() || value < 0.0 => {
                 format!("must be >= 0 and finite ({words})")
             }
             Domain::PoissonRatio => format!("must be in [0, 0.5) ({words})"),
@@ -322,9 +336,24 @@ impl fmt::Display for Compact {
     }
 }
 
+/// A rejected value as a message echoes it: [`Compact`], except that a number too large for an f64
+/// (typed `1e400`, which parses as infinity) is not echoed as "inf", which nobody typed.
+struct Echo(f64);
+
+impl fmt::Display for Echo {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.0.is_infinite() {
+            let sign = if self.0 < 0.0 { "-" } else { "" };
+            write!(f, "{sign}(a number beyond 1.8e308)")
+        } else {
+            Compact(self.0).fmt(f)
+        }
+    }
+}
+
 /// A rejected input value: the field as users write it, the value and the allowed range.
 #[derive(Debug, Clone, PartialEq, Error)]
-#[error("invalid {field} = {}: {}", Compact(*value), domain.refusal(*value, *unit))]
+#[error("invalid {field} = {}: {}", Echo(*value), domain.refusal(*value, *unit))]
 pub struct ParamError {
     /// Field name as the user writes it (preset key), e.g. `KT`.
     pub field: &'static str,
@@ -867,7 +896,7 @@ mod tests {
                 .check(f64::INFINITY)
                 .unwrap_err()
                 .to_string(),
-            "invalid P = inf: must be > 0 and finite (MPa)"
+            "invalid P = (a number beyond 1.8e308): must be in [1e-6, 10000] MPa"
         );
         assert_eq!(
             BeamParam::Force.check(f64::NAN).unwrap_err().to_string(),

@@ -20,12 +20,12 @@ pub struct BeamCompareRow {
     pub w_fe_mm: f64,
     /// Closed form, Euler-Bernoulli (the paper's) (mm).
     pub w_euler_mm: f64,
-    /// (FE - Euler-Bernoulli) / Euler-Bernoulli.
-    pub diff_euler: f64,
+    /// (FE - Euler-Bernoulli) / Euler-Bernoulli; empty (null) at F = 0, where it is undefined.
+    pub diff_euler: Option<f64>,
     /// Closed form plus the shear deflection (mm).
     pub w_shear_corrected_mm: f64,
-    /// (FE - shear corrected) / shear corrected.
-    pub diff_shear_corrected: f64,
+    /// (FE - shear corrected) / shear corrected; empty (null) at F = 0.
+    pub diff_shear_corrected: Option<f64>,
     /// The stated bound on that difference (V2), a fraction.
     pub shear_corrected_within: f64,
     /// The closed form's regime.
@@ -72,8 +72,8 @@ pub struct PlateCompareRow {
     pub u_fe_mid_thickness_mm: Option<f64>,
     /// Strip theory, regularized law (mm).
     pub u_mm: f64,
-    /// (FE - closed form) / closed form.
-    pub diff: f64,
+    /// (FE - closed form) / closed form; empty (null) where the closed form is 0 (nu = 0).
+    pub diff: Option<f64>,
     /// The same at the contact face.
     pub diff_contact_face: Option<f64>,
     /// The same at mid-thickness.
@@ -118,9 +118,24 @@ impl From<&PlateCompared> for PlateCompareRow {
     }
 }
 
+/// A relative difference in percent: two decimals, or the exponent form beyond 1e5 % (a number of
+/// 200 digits helps nobody), "n/a" where it is undefined (a closed form of 0).
 fn percent(x: f64) -> String {
-    format!("{:+.2} %", 100.0 * x)
+    let p = 100.0 * x;
+    if p.abs() < 1e5 {
+        format!("{p:+.2} %")
+    } else {
+        format!("{p:+.2e} %")
+    }
 }
+
+fn percent_or_na(x: Option<f64>) -> String {
+    x.map_or_else(|| "n/a".to_string(), percent)
+}
+
+/// The note under a table with an undefined relative difference.
+const UNDEFINED_NOTE: &str = "n/a: the closed form is 0 there (no load, or nothing squeezes the \
+plate sideways), so a relative difference is undefined; compare the values themselves.";
 
 fn optional(x: Option<f64>) -> String {
     x.map_or_else(|| "-".to_string(), number)
@@ -153,14 +168,21 @@ pub fn beam_text(source: &str, stiffness: f64, comparison: &BeamComparison) -> S
             number(row.force),
             number(row.w_fe_mm),
             number(row.w_euler_mm),
-            percent(row.diff_euler),
+            percent_or_na(row.diff_euler),
             number(row.w_shear_corrected_mm),
-            percent(row.diff_shear_corrected),
+            percent_or_na(row.diff_shear_corrected),
             optional(row.macroslip_start_fe),
             number(row.macroslip_start),
             row.regime,
             row.regime_fe.unwrap_or("-")
         );
+    }
+    if comparison
+        .rows
+        .iter()
+        .any(|r| r.difference_euler().is_none())
+    {
+        let _ = writeln!(out, "{UNDEFINED_NOTE}");
     }
     out.push('\n');
     match &comparison.implied {
@@ -231,7 +253,7 @@ pub fn plate_text(source: &str, rows: &[PlateCompared]) -> String {
             number(row.stiffness),
             number(row.u_fe_mm),
             number(row.u_mm),
-            percent(row.diff),
+            percent_or_na(row.diff),
             row.diff_contact_face.map_or("-".into(), percent),
             row.diff_mid_thickness.map_or("-".into(), percent),
             optional(row.micro_zone_end_fe),
@@ -240,6 +262,9 @@ pub fn plate_text(source: &str, rows: &[PlateCompared]) -> String {
             row.regime,
             row.regime_fe.unwrap_or("-")
         );
+    }
+    if rows.iter().any(|r| r.difference().is_none()) {
+        let _ = writeln!(out, "{UNDEFINED_NOTE}");
     }
     out
 }
@@ -254,12 +279,16 @@ pub fn plate_json(source: &str, rows: &[PlateCompared]) -> Value {
     })
 }
 
-/// The range of `values` as "a to b" in percent, or the one value.
-fn percent_range(values: impl Iterator<Item = f64>) -> String {
-    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-        (lo.min(v), hi.max(v))
-    });
-    if lo == hi {
+/// The range of the defined `values` as "a to b" in percent, or the one value; "n/a" when none is.
+fn percent_range(values: impl Iterator<Item = Option<f64>>) -> String {
+    let (lo, hi) = values
+        .flatten()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+    if lo > hi {
+        "n/a".to_string()
+    } else if lo == hi {
         percent(lo)
     } else {
         format!("{} to {}", percent(lo), percent(hi))
@@ -308,6 +337,6 @@ pub fn plate_summary(code: &str, row: &PlateCompared) -> String {
         number(row.fe.stiffness),
         number(row.fe.end_displacement),
         number(row.closed),
-        percent(row.difference())
+        percent_or_na(row.difference())
     )
 }
