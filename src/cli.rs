@@ -878,11 +878,18 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 ModelKind::Plate => "plot (a plate chart)",
             };
             let (_, model) = load(inputs, chart.kind(), command)?;
-            let mode = y.unwrap_or(YMode::default_for(*chart));
             let plot = report::chart::figure(&model, *chart, *fe, YMode::Linear)?;
+            // The chart's own default falls back to linear where it cannot apply (u(L) = 0 at
+            // nu = 0 on a log axis); a mode asked for with --y is refused instead.
+            let mode = match y {
+                Some(mode) => *mode,
+                None => Some(YMode::default_for(*chart))
+                    .filter(|m| m.applies_to(&plot))
+                    .unwrap_or(YMode::Linear),
+            };
             if !mode.applies_to(&plot) {
                 return Err(CliError::Invalid(format!(
-                    "--y {}: chart {} cannot show it (log needs values >= 0, relative a Coulomb curve over increasing x)",
+                    "--y {}: chart {} cannot show it (log needs values > 0, none negative; relative needs a Coulomb curve over increasing x)",
                     mode.label(),
                     chart.key()
                 )));

@@ -291,10 +291,13 @@ impl CoulombPlate {
         self.slide_zone
     }
 
-    /// Stick only when nu = 0 (nothing pushes the plate outward); macroslip alone when the slip length
-    /// reaches L; stick then macroslip otherwise.
+    /// Unloaded when nu = 0 (nothing pushes the plate outward, so the interface carries no shear);
+    /// macroslip alone when the slip length reaches L; stick then macroslip otherwise.
     pub fn regime(&self) -> Regime {
-        if self.slide_zone <= 0.0 {
+        if self.plate.params.poisson == 0.0 {
+            // Nothing squeezes the plate sideways: no shear anywhere, as the unloaded beams.
+            Regime::Unloaded
+        } else if self.slide_zone <= 0.0 {
             Regime::Stick
         } else if self.slide_zone >= self.plate.params.half_length {
             Regime::Macroslip
@@ -359,7 +362,9 @@ impl RegularizedPlate {
 
     /// Microslip alone, or microslip near the centre then macroslip near the free end.
     pub fn regime(&self) -> Regime {
-        if self.has_macroslip {
+        if self.plate.params.poisson == 0.0 {
+            Regime::Unloaded
+        } else if self.has_macroslip {
             Regime::MicroslipMacroslip
         } else {
             Regime::Microslip
@@ -640,9 +645,21 @@ mod tests {
             poisson: 0.0,
             ..PlateParams::PAPER
         };
-        let c = SqueezedPlate::new(no_poisson).unwrap().coulomb();
-        assert_eq!(c.regime(), Regime::Stick);
+        // nu = 0: the pressure does not squeeze the plate sideways; no shear under either law,
+        // u = 0 exactly, and the continuum agrees exactly (it was 2e-21 mm, "+inf %").
+        let plate = SqueezedPlate::new(no_poisson).unwrap();
+        let c = plate.coulomb();
+        assert_eq!(c.regime(), Regime::Unloaded);
         assert_eq!(c.end_displacement(), 0.0);
+        let r = plate.regularized();
+        assert_eq!(r.regime(), Regime::Unloaded);
+        assert_eq!(r.end_displacement(), 0.0);
+        let continuum =
+            crate::numeric::plate_continuum::solve_plate_continuum(no_poisson, Default::default())
+                .unwrap();
+        assert_eq!(continuum.end_displacement_mean, 0.0);
+        assert_eq!(continuum.micro_zone_end, no_poisson.half_length);
+        assert_eq!(plate.validity().expected_error, Some(0.0));
         let slippery = PlateParams {
             friction: 1e-3,
             ..PlateParams::PAPER

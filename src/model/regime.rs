@@ -18,7 +18,8 @@ pub enum Regime {
     StickMacroslip,
     /// Regularized law: an elastic microslip zone near x = 0, a sliding zone beyond.
     MicroslipMacroslip,
-    /// No load (the twin beams at F = 0): nothing is stressed and nothing slips, whatever the law.
+    /// No tangential load (the twin beams at F = 0, the plate at nu = 0, which the pressure does
+    /// not squeeze sideways): the interface carries no shear and nothing slips, whatever the law.
     Unloaded,
 }
 

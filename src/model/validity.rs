@@ -78,6 +78,15 @@ impl SqueezedPlate {
     pub fn validity(&self) -> PlateValidity {
         let p = self.params();
         let ratio = self.decay_rate() * p.thickness;
+        if p.poisson == 0.0 {
+            // u = 0 exactly in the strip theory and in the continuum (nothing squeezes the plate
+            // sideways): the theory is exact whatever alpha t_p.
+            return PlateValidity {
+                thickness_over_layer: ratio,
+                expected_error: Some(0.0),
+                validity: Validity::Holds,
+            };
+        }
         let expected_error = (ratio <= CALIBRATED_RATIO).then(|| {
             PLATE_ERROR_COEFFICIENT * ratio * ratio
                 / (1.0 - p.poisson).powf(PLATE_ERROR_POISSON_EXPONENT)

@@ -95,6 +95,9 @@ pub fn solve_plate_continuum(
         )));
     }
     let grid = Grid::new(&params, mesh);
+    if p.poisson == 0.0 {
+        return Ok(unstrained(&grid, &params));
+    }
     let pressure = params.pressure;
     // Start from the strip theory's contact force: P times each node's share of the face.
     let mut contact: Vec<f64> = grid.face_weights.iter().map(|w| w * pressure).collect();
@@ -117,6 +120,26 @@ pub fn solve_plate_continuum(
         load: pressure,
         cuts: 0,
     })
+}
+
+/// The solution at nu = 0, exactly: the uniform stress sigma_y = -P, sigma_x = sigma_z = tau = 0
+/// satisfies equilibrium, the loaded and free faces and the symmetry plane, and in plane strain
+/// with nu = 0 it strains nothing along x, so no point moves along x, nothing slips, and the
+/// interface carries no shear; the elastic solution being unique, it is the solution. Newton
+/// would return it to rounding (u(L) = 2e-21 mm), which a report then divided by the strip
+/// theory's exact 0 ("+inf %").
+fn unstrained(grid: &Grid, params: &PlateParams) -> ContinuumPlate {
+    let last = grid.face_weights.len() - 1;
+    let face = (0..=last).map(|i| (grid.face_x(i), 0.0)).collect();
+    ContinuumPlate {
+        end_displacement_face: 0.0,
+        end_displacement_mid: 0.0,
+        end_displacement_mean: 0.0,
+        micro_zone_end: params.half_length,
+        end_pressure_ratio: 1.0,
+        face,
+        iterations: 0,
+    }
 }
 
 /// The mesh: element boundaries and the half-grid numbering of the Q8 nodes.
@@ -162,6 +185,15 @@ const GAUSS3: [(f64, f64); 3] = [
 ];
 
 impl Grid {
+    /// x (mm) of the i-th node along the contact face (corners at even i, midsides at odd i).
+    fn face_x(&self, i: usize) -> f64 {
+        if i.is_multiple_of(2) {
+            self.xs[i / 2]
+        } else {
+            0.5 * (self.xs[i / 2] + self.xs[i / 2 + 1])
+        }
+    }
+
     fn new(p: &PlateParams, mesh: ContinuumMesh) -> Grid {
         let layers = mesh.layers.max(1);
         let refinement = layers as f64 / 4.0;
@@ -392,15 +424,8 @@ impl<'a> Continuum<'a> {
             .map(|w| (w[0] + 4.0 * w[1] + w[2]) / 6.0)
             .sum::<f64>()
             / g.elements_y() as f64;
-        let x_of = |i: usize| {
-            if i.is_multiple_of(2) {
-                g.xs[i / 2]
-            } else {
-                0.5 * (g.xs[i / 2] + g.xs[i / 2 + 1])
-            }
-        };
         let face: Vec<(f64, f64)> = (0..=last)
-            .map(|i| (x_of(i), self.displacement[2 * g.node(i, 0)]))
+            .map(|i| (g.face_x(i), self.displacement[2 * g.node(i, 0)]))
             .collect();
         let saturation = p.friction * p.pressure / p.tangential_stiffness;
         let mut start = p.half_length;

@@ -94,18 +94,36 @@ pub fn add_pins(mut plot: Plot, pinned: &[(u8, String, &Plot)]) -> Plot {
         let Some(main) = main_series(pinned_plot) else {
             continue;
         };
-        let points: Vec<(f64, f64)> = main
+        let in_range = main
             .points
             .iter()
             .copied()
-            .filter(|&(x, y)| x >= x0 && x <= x1 && y.is_finite())
-            .collect();
+            .filter(|&(x, y)| x >= x0 && x <= x1 && y.is_finite());
+        // On a log axis, a pinned chart that could not go log itself (its curve is 0, D at a
+        // friction that never slips, u(L) at nu = 0) still holds raw values: a 0 there would be
+        // drawn as 10^0 = 1. Values a log axis cannot show are left out and the label says so.
+        let (points, label) = if plot.y.log && !pinned_plot.y.log {
+            let all: Vec<(f64, f64)> = in_range.collect();
+            let shown: Vec<(f64, f64)> = all
+                .iter()
+                .filter(|p| p.1 > 0.0)
+                .map(|&(x, y)| (x, y.log10()))
+                .collect();
+            let label = match all.len() - shown.len() {
+                0 => label.clone(),
+                n if n == all.len() => format!("{label} (0: not on a log axis)"),
+                n => format!("{label} ({n} values <= 0 left out)"),
+            };
+            (shown, label)
+        } else {
+            (in_range.collect(), label.clone())
+        };
         for &(_, y) in &points {
             lo = lo.min(y);
             hi = hi.max(y);
         }
         plot.series.push(PlotSeries {
-            name: series_name(*number, label),
+            name: series_name(*number, &label),
             points,
             kind: SeriesKind::Pin(*number),
         });
@@ -172,6 +190,53 @@ mod tests {
                 );
                 assert_eq!(main_series(&plot).is_none(), is_table, "{}", plot.title);
             }
+        }
+    }
+
+    /// A pinned chart whose curve is 0 everywhere (D at a friction that never slips; u(L) at
+    /// nu = 0) used to be drawn at 10^0 = 1 on a log axis; values <= 0 are now left out and the
+    /// legend says so.
+    #[test]
+    fn values_a_log_axis_cannot_show_are_left_out_and_said() {
+        use crate::report::view::{AnyChart, BeamChart, PlateChart};
+        let cases = [
+            (
+                ModelKind::Beam,
+                AnyChart::Beam(BeamChart::Dissipation),
+                Param::Beam(BeamParam::Friction),
+                10.0,
+            ),
+            (
+                ModelKind::Plate,
+                AnyChart::Plate(PlateChart::Displacement),
+                Param::Plate(PlateParam::Poisson),
+                0.0,
+            ),
+        ];
+        for (kind, chart, param, value) in cases {
+            let current = Inputs::paper(kind).validate().unwrap();
+            let base = YMode::Log.apply(build(
+                &current,
+                Views::showing(chart),
+                None,
+                None,
+                None,
+                None,
+            ));
+            assert!(base.y.log, "{}", base.title);
+            let mut pinned = Inputs::paper(kind);
+            pinned.set(param, value).unwrap();
+            let pinned = pinned.validate().unwrap();
+            let plot = with_pinned_models(base, &current, chart, &[pinned], YMode::Log);
+            let pin = plot.series.last().unwrap();
+            assert_eq!(pin.kind, SeriesKind::Pin(1));
+            assert!(
+                pin.points.is_empty(),
+                "{}: {:?}",
+                pin.name,
+                &pin.points[..3.min(pin.points.len())]
+            );
+            assert!(pin.name.ends_with("(0: not on a log axis)"), "{}", pin.name);
         }
     }
 
