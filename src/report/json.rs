@@ -256,6 +256,7 @@ pub fn solved(
                 "bracket": [r.bracket.0, r.bracket.1],
                 "certified": r.certified,
                 "plateau": r.plateau,
+                "within_rounding": r.within_rounding,
             })
         })
         .collect();

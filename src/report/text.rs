@@ -630,7 +630,25 @@ pub fn solved(
     );
     let _ = writeln!(out, "  {name}: {}", quantity.meaning(kind));
     for root in &solved.roots {
-        if root.plateau && root.bracket.0 < root.bracket.1 {
+        if root.plateau && root.within_rounding {
+            let limit = if root.bracket.1 >= solved.range.1 {
+                format!(
+                    "; it tends to {} as {param} grows: reached in the limit, not at a root",
+                    number(solved.target.value)
+                )
+            } else {
+                String::new()
+            };
+            let _ = writeln!(
+                out,
+                "{name} = {}{} to within {:e} relative (the rounding band) for every {param} in [{}, {}]{punit}{limit}",
+                number(solved.target.value),
+                unit_of(unit),
+                crate::model::target::ROUNDING,
+                number(root.bracket.0),
+                number(root.bracket.1)
+            );
+        } else if root.plateau && root.bracket.0 < root.bracket.1 {
             let _ = writeln!(
                 out,
                 "{name} = {}{} for every {param} in [{}, {}]{punit} (a plateau; its ends found by bisection)",

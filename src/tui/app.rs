@@ -826,8 +826,17 @@ impl App {
         match solve_for_target(&model, param, target, None) {
             Ok(solved) => match solved.roots.as_slice() {
                 [root] if root.plateau => self.info(format!(
-                    "{name} = {} for every {param} from {} to {}{punit}; nothing changed",
-                    number(root.achieved),
+                    "{name} = {}{} for every {param} from {} to {}{punit}; nothing changed",
+                    number(if root.within_rounding {
+                        target.value
+                    } else {
+                        root.achieved
+                    }),
+                    if root.within_rounding {
+                        " to within rounding (a limit, not a root)"
+                    } else {
+                        ""
+                    },
                     number(root.bracket.0),
                     number(root.bracket.1)
                 )),
