@@ -115,6 +115,8 @@ pub struct NumericPoints {
     /// The plate's plane-strain continuum solution at the same K_T (u(L) thickness mean), where
     /// it converged: where the strip theory and the continuum part ways. Empty elsewhere.
     pub continuum: Series,
+    /// Sample points whose solve did not converge (left as gaps; the legend says how many).
+    pub failed: usize,
 }
 
 /// Points from an external FE code (or a CSV of any code), drawn on the chart of their quantity:
@@ -476,8 +478,12 @@ pub fn build(
         });
     }
     if let Some(numeric) = numeric {
+        let name = match numeric.failed {
+            0 => "finite elements".to_string(),
+            n => format!("finite elements ({n} points did not converge)"),
+        };
         plot.series.push(PlotSeries {
-            name: "finite elements".into(),
+            name,
             points: numeric.points.clone(),
             kind: SeriesKind::Points,
         });
@@ -768,9 +774,21 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
             let f_max = force_range(&beams, force, 0.0, None);
             let mut fe = TwinBeamsFe::new(beams.params(), density);
             let mut points = Vec::with_capacity(OVERLAY_POINTS);
+            let (mut failed, mut failure) = (0, None);
             for i in 1..=OVERLAY_POINTS {
                 let f = f_max * i as f64 / OVERLAY_POINTS as f64;
-                fe.load_to(f, 2)?;
+                // A very stiff interface can make Newton cycle at one load (the whole interface
+                // on the yield limit to round-off): that point is a gap, the model stays at the
+                // last converged load and the next point goes on from there.
+                match fe.load_to(f, 2) {
+                    Ok(()) => {}
+                    Err(e @ NumericError::NoConvergence { .. }) => {
+                        failed += 1;
+                        failure = Some(e);
+                        continue;
+                    }
+                    Err(e) => return Err(e),
+                }
                 points.push((
                     f,
                     if chart == BeamChart::Deflection {
@@ -780,10 +798,14 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
                     },
                 ));
             }
-            Ok(Some(NumericPoints {
-                points,
-                continuum: Vec::new(),
-            }))
+            match failure {
+                Some(e) if points.is_empty() => Err(e),
+                _ => Ok(Some(NumericPoints {
+                    points,
+                    continuum: Vec::new(),
+                    failed,
+                })),
+            }
         }
         (Model::Beam { beams, force }, View::Chart(BeamChart::Loop), _) => {
             // The FE model driven round the same cycle: its own slider histories, no Masing rule.
@@ -801,6 +823,7 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
             Ok(Some(NumericPoints {
                 points,
                 continuum: Vec::new(),
+                failed: 0,
             }))
         }
         (Model::Beam { beams, force }, View::Chart(BeamChart::Shear), _) => {
@@ -810,6 +833,7 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
             let stride = (samples.len() / 40).max(1);
             Ok(Some(NumericPoints {
                 continuum: Vec::new(),
+                failed: 0,
                 points: samples
                     .iter()
                     .step_by(stride)
@@ -847,7 +871,11 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
             }
             match failure {
                 Some(e) if points.is_empty() => Err(e),
-                _ => Ok(Some(NumericPoints { points, continuum })),
+                _ => Ok(Some(NumericPoints {
+                    failed: OVERLAY_POINTS + 1 - points.len(),
+                    points,
+                    continuum,
+                })),
             }
         }
         // No finite-element counterpart: dissipation (a closed-form integral of the loop), the
