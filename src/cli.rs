@@ -140,12 +140,17 @@ pub enum Command {
         /// Normal contact stiffness K_N (MPa/mm), for paper eq. 4 and the measured K_T/K_N range.
         #[arg(long, value_name = "KN", allow_negative_numbers = true)]
         kn: Option<f64>,
-        /// Poisson ratio for eq. 4 (default: the plate's nu, else 0.3).
-        #[arg(long, value_name = "NU", allow_negative_numbers = true)]
+        /// Poisson ratio for eq. 4 with --kn (default: the plate's nu, else 0.3).
+        #[arg(
+            long,
+            value_name = "NU",
+            allow_negative_numbers = true,
+            requires = "kn"
+        )]
         nu: Option<f64>,
         /// Instead of the table: the smallest K_T for which the regularized w(L) (beams) or u(L)
         /// (plate) is within T of Coulomb (1% or 0.01), and each FE code's setting for it.
-        #[arg(long, value_name = "T", conflicts_with_all = ["kn", "nu"])]
+        #[arg(long, value_name = "T", conflicts_with_all = ["kn", "nu"], allow_hyphen_values = true)]
         tolerance: Option<String>,
         /// With --tolerance, beams: lowest tip force checked (N; default: the preset's F).
         #[arg(
@@ -175,7 +180,7 @@ pub enum Command {
         #[command(flatten)]
         inputs: InputArgs,
         /// Points per branch of the loop (csv format).
-        #[arg(long, value_name = "N", default_value_t = 101)]
+        #[arg(long, value_name = "N", default_value_t = 101, value_parser = parse_count, allow_negative_numbers = true)]
         points: u64,
         /// Output format: text summary, JSON summary, or the loop as CSV.
         #[arg(long, value_enum, default_value_t = CycleFormat::Text)]
@@ -341,7 +346,7 @@ pub enum SweepCommand {
         #[arg(long, value_name = "B", allow_negative_numbers = true)]
         to: f64,
         /// Number of rows, both ends included (2 to 100000000; 1 when --from = --to).
-        #[arg(long, value_name = "N")]
+        #[arg(long, value_name = "N", value_parser = parse_count, allow_negative_numbers = true)]
         points: u64,
         #[command(flatten)]
         spacing: SpacingArgs,
@@ -361,7 +366,7 @@ pub enum SweepCommand {
         #[arg(long, value_name = "F1", allow_negative_numbers = true)]
         to: f64,
         /// Number of rows, both ends included (2 to 100000000).
-        #[arg(long, value_name = "N")]
+        #[arg(long, value_name = "N", value_parser = parse_count, allow_negative_numbers = true)]
         points: u64,
         #[command(flatten)]
         inputs: InputArgs,
@@ -389,7 +394,7 @@ pub enum SweepCommand {
         #[arg(long, value_name = "B", allow_negative_numbers = true)]
         to: Option<f64>,
         /// Number of rows, both ends included (2 to 100000000; 1 when both ends are equal).
-        #[arg(long, value_name = "N")]
+        #[arg(long, value_name = "N", value_parser = parse_count, allow_negative_numbers = true)]
         points: u64,
         #[command(flatten)]
         spacing: SpacingArgs,
@@ -551,14 +556,14 @@ pub enum CliError {
     /// A parameter name the model does not have.
     #[error("invalid --vary: {0}")]
     Vary(#[from] UnknownParam),
-    /// A target that cannot be solved.
+    /// A target that cannot be solved (boxed: its "no root" case carries the whole scan).
     #[error(transparent)]
-    Target(#[from] TargetError),
+    Target(Box<TargetError>),
     /// Missing flags.
     #[error("{0}")]
     Usage(&'static str),
     /// The cross-check found errors above tolerance (already reported on stdout).
-    #[error("{0} of the quantities checked exceed the tolerance")]
+    #[error("{0} of the quantities checked {verb} the tolerance", verb = if *.0 == 1 { "exceeds" } else { "exceed" })]
     VerifyFailed(usize),
     /// Unreadable or malformed measurements.
     #[error("{path}: {reason}")]
@@ -587,18 +592,31 @@ pub enum CliError {
     #[error(transparent)]
     Figure(#[from] FigureError),
     /// Files with problems (already reported on stdout).
-    #[error("{0} of the files checked have problems")]
+    #[error("{0} of the files checked {verb} problems", verb = if *.0 == 1 { "has" } else { "have" })]
     CheckFailed(usize),
     /// Writing the output failed.
     #[error("cannot write output: {0}")]
     Output(#[from] io::Error),
 }
 
+impl From<TargetError> for CliError {
+    fn from(e: TargetError) -> Self {
+        CliError::Target(Box::new(e))
+    }
+}
+
 impl CliError {
     fn exit_code(&self) -> u8 {
         match self {
+            CliError::Target(e)
+                if matches!(
+                    **e,
+                    TargetError::NoRoot { .. } | TargetError::Undefined { .. }
+                ) =>
+            {
+                1
+            }
             CliError::CheckFailed(_)
-            | CliError::Target(TargetError::NoRoot { .. } | TargetError::Undefined { .. })
             | CliError::VerifyFailed(_)
             | CliError::Output(_)
             | CliError::Numeric(_) => 1,
@@ -943,7 +961,15 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                     let loads = deck_loads(&beams, loads.as_deref(), slope)?;
                     deck::beam_deck(&beams, &loads, *mesh, slope)
                 }
-                (_, Model::Plate(plate)) => deck::plate_deck(&plate, *mesh, slope),
+                (_, Model::Plate(plate)) => {
+                    if loads.is_some() {
+                        return Err(CliError::Usage(
+                            "--loads are the tip forces of a beam deck; the plate deck applies its \
+                             pressure P in one step (set P with --set P=...)",
+                        ));
+                    }
+                    deck::plate_deck(&plate, *mesh, slope)
+                }
             }
             .map_err(|e| CliError::Invalid(e.to_string()))?;
             write_output(out, output.as_deref(), deck.as_bytes())?
@@ -1190,6 +1216,18 @@ fn deck_loads(
     Ok(forces)
 }
 
+/// A count as users write numbers, the README's notation included: `101`, `1e8`. Anything but a
+/// whole number of at most 1e15 (a negative, a fraction, a word) is refused with what is expected;
+/// the range of each count is checked where it is used.
+fn parse_count(text: &str) -> Result<u64, String> {
+    let refuse = || format!("must be a whole number such as 101 or 1e8 (got '{text}')");
+    let value = parse_number(text.trim()).ok_or_else(refuse)?;
+    if value < 0.0 || value.fract() != 0.0 || value > 1e15 {
+        return Err(refuse());
+    }
+    Ok(value as u64)
+}
+
 /// Writes `bytes` to `path` ([`crate::file::write_atomic`]: a regular file replaced atomically with
 /// its mode kept, a device or FIFO written through, a link followed, a read-only file refused), or
 /// to `out` when there is no path or it is `-` or `/dev/stdout` (the program's own standard output,
@@ -1227,7 +1265,15 @@ fn pinned_models(model: &Model, pins: &[String]) -> Result<Vec<Model>, CliError>
     pins.iter()
         .map(|pin| {
             let mut inputs = model.inputs();
+            let mut keys: Vec<&str> = Vec::new();
             for assignment in pin.split(',').map(str::trim) {
+                let key = assignment.split('=').next().unwrap_or("").trim();
+                if keys.contains(&key) {
+                    return Err(CliError::Invalid(format!(
+                        "--pin {pin}: {key} is given twice; a pin sets each parameter once"
+                    )));
+                }
+                keys.push(key);
                 preset::apply_assignment(&mut inputs, assignment)
                     .map_err(|e| CliError::Invalid(format!("--pin {pin}: {e}")))?;
             }
@@ -1291,10 +1337,11 @@ fn apply_and_validate(
             }
         }
     }
-    let name = if args.assignments.is_empty() && args.beam_theory.is_none() {
-        name
-    } else {
-        format!("{name} (modified by --set)")
+    let name = match (args.assignments.is_empty(), args.beam_theory.is_none()) {
+        (true, true) => name,
+        (false, true) => format!("{name} (modified by --set)"),
+        (true, false) => format!("{name} (modified by --beam-theory)"),
+        (false, false) => format!("{name} (modified by --set and --beam-theory)"),
     };
     Ok((name, inputs.validate()?))
 }
@@ -1418,7 +1465,8 @@ impl<W: Write> ProgressLine<W> {
 /// Checks a flag that is not a model parameter against `domain`.
 fn check_flag(flag: &'static str, value: f64, domain: Domain, unit: Unit) -> Result<f64, CliError> {
     if domain.contains(value) {
-        Ok(value)
+        // -0 is 0 from here on (never "-0.0" in JSON or a deck header).
+        Ok(value + 0.0)
     } else {
         Err(CliError::Flag {
             flag,
@@ -1484,6 +1532,17 @@ fn run_kt_tolerance(
                 check_flag("--from", from.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
                 check_flag("--to", to.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
             ];
+            // As `solve` and `sweep`: a reversed range is a typo, not a range.
+            if range[0] > range[1] {
+                return Err(CliError::Flag {
+                    flag: "--to",
+                    value: range[1],
+                    allowed: format!(
+                        "must not be below --from = {} N (the forces checked run from --from up to --to)",
+                        Compact(range[0])
+                    ),
+                });
+            }
             tolerance::beam_stiffness_for_tolerance(&beams, range, tol, element)
                 .map_err(|e| CliError::Invalid(e.to_string()))?
         }
@@ -1563,7 +1622,9 @@ fn run_figures(out: &mut impl Write, dir: &std::path::Path, fe: bool) -> Result<
             Some(&dir.join(format!("{}.csv", f.stem))),
             &chart_csv(&plot)?,
         )?;
-        writeln!(out, "{}  {}", svg.display(), f.chart.title())?;
+        // The folder is the user's text: control characters are shown escaped, never sent.
+        let shown = svg.display().to_string();
+        writeln!(out, "{}  {}", report::sanitize(&shown), f.chart.title())?;
     }
     let index = dir.join("index.html");
     write_output(
@@ -1571,7 +1632,8 @@ fn run_figures(out: &mut impl Write, dir: &std::path::Path, fe: bool) -> Result<
         Some(&index),
         figure::index_html(figure::PAPER_FIGURES).as_bytes(),
     )?;
-    writeln!(out, "{}  open it in a browser", index.display())?;
+    let shown = index.display().to_string();
+    writeln!(out, "{}  open it in a browser", report::sanitize(&shown))?;
     Ok(())
 }
 

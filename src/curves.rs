@@ -63,6 +63,10 @@ impl RangeError {
                 Compact(*from),
                 Compact(*to)
             ),
+            // Without a range (a loop's points per branch), the one-point case does not exist.
+            RangeError::Points(n) if start.is_empty() => {
+                format!("invalid {points} = {n}: must be an integer in [2, {MAX_POINTS}]")
+            }
             RangeError::Points(n) => {
                 format!(
                     "invalid {points} = {n}: must be an integer in [2, {MAX_POINTS}], or 1 when {start} = {end}"

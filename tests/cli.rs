@@ -894,22 +894,35 @@ fn a_fifo_fed_forever_is_refused_at_the_cap() {
         .status()
         .unwrap();
     assert!(made.success());
+    // The writer must be there before microslip opens the FIFO (a FIFO with no writer reads as
+    // empty): a reader held by the test lets the writer open at once, and the writer says when
+    // it has. Dropping that reader once microslip is done makes the writer's next write fail.
+    use std::os::unix::fs::OpenOptionsExt;
+    let held = std::fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(libc::O_NONBLOCK)
+        .open(&fifo)
+        .unwrap();
     let writer_path = fifo.clone();
-    // Writes until the reader goes away (then the write fails and the thread ends).
+    let (opened, is_open) = std::sync::mpsc::channel();
+    // Writes until the readers go away (then the write fails and the thread ends).
     let writer = std::thread::spawn(move || {
         use std::io::Write;
         let mut pipe = std::fs::OpenOptions::new()
             .write(true)
             .open(writer_path)
             .unwrap();
+        opened.send(()).unwrap();
         let line = b"# a comment that never ends\n".repeat(1000);
         while pipe.write_all(&line).is_ok() {}
     });
+    is_open.recv().unwrap();
     let stderr = failure(&["fit", "beam", fifo.to_str().unwrap()], 2);
     assert!(
         stderr.ends_with(": file is larger than the 256 MiB limit for a measurement file\n"),
         "{stderr}"
     );
+    drop(held);
     writer.join().unwrap();
 }
 

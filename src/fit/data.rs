@@ -253,6 +253,15 @@ fn parse_curve_with_progress(
         _ => find(curve.y)?,
     };
     let force_column = find(curve.x)?;
+    // A column named twice: which one is meant cannot be known (it used to take the first).
+    for name in [curve.x, curve.y, sweep_column.as_str()] {
+        if columns.iter().filter(|c| **c == name).count() > 1 {
+            return Err(error(
+                header_line,
+                format!("column '{name}' appears more than once in the header; keep one"),
+            ));
+        }
+    }
     let mut data: Vec<(f64, f64)> = Vec::new();
     let mut last_line = header_line;
     for (row, record) in records.enumerate() {
@@ -320,6 +329,17 @@ fn parse_curve_with_progress(
             ));
         }
         data.push((force, deflection));
+    }
+    if data.iter().any(|p| p.1 != 0.0) && data.iter().all(|p| p.1 <= 0.0) {
+        return Err(error(
+            header_line,
+            format!(
+                "every {} is negative or zero: microslip counts displacements positive in the \
+                 direction of the load (F pushes the tip, P squeezes the plate outward); many FE \
+                 codes report them along -y: flip the sign of the column",
+                curve.y
+            ),
+        ));
     }
     if data.len() < curve.min_rows {
         return Err(error(
@@ -534,6 +554,25 @@ mod tests {
             read_text(&path, Kinds::AnyReadable).unwrap(),
             "F_N,w_mm\n1,2\n"
         );
+    }
+
+    #[test]
+    fn a_column_named_twice_and_an_all_negative_curve_are_refused_with_a_reason() {
+        assert_eq!(
+            parse("F_N,w_mm,w_mm\n1,1,2\n2,2,3\n3,3,4\n")
+                .unwrap_err()
+                .to_string(),
+            "line 1: column 'w_mm' appears more than once in the header; keep one"
+        );
+        let negative = parse("F_N,w_mm\n0,0\n1,-1\n2,-2\n3,-3\n")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            negative.contains("flip the sign of the column"),
+            "{negative}"
+        );
+        // One negative point among positive ones is data, not a sign convention.
+        assert!(parse("F_N,w_mm\n0,-1e-9\n1,1\n2,2\n").is_ok());
     }
 
     /// 1e200 in a result gave a 200-digit percentage, 1.7e308 "inf": refused with the range.

@@ -286,7 +286,8 @@ impl Domain {
     /// [`ParamError`] when `value` is outside the domain.
     pub fn check(self, field: &'static str, value: f64, unit: Unit) -> Result<f64, ParamError> {
         if self.contains(value) {
-            Ok(value)
+            // -0 passes as 0, and is 0 from here on (never "-0.0" in JSON or a deck header).
+            Ok(value + 0.0)
         } else {
             Err(ParamError {
                 field,
@@ -798,7 +799,8 @@ pub fn parse_number(text: &str) -> Option<f64> {
     if value.is_nan() || text.to_ascii_lowercase().contains("inf") {
         None
     } else {
-        Some(value)
+        // "-0" is 0: a negative zero would be echoed as "-0.0" in JSON and deck headers.
+        Some(value + 0.0)
     }
 }
 
@@ -986,6 +988,7 @@ mod tests {
     #[test]
     fn numbers_refuse_nan_and_infinities() {
         assert_eq!(parse_number("1e6"), Some(1e6));
+        assert!(parse_number("-0").unwrap().is_sign_positive());
         assert_eq!(parse_number("NaN"), None);
         assert_eq!(parse_number("inf"), None);
         assert_eq!(parse_number("-Infinity"), None);

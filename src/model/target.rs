@@ -23,6 +23,16 @@ use super::inputs::Model;
 use super::params::{Compact, ModelKind, Param, parse_number};
 use super::solve::find_root_in_bracket;
 
+/// A computed value in a message: six significant digits, not the 17 of a round trip.
+struct Six(f64);
+
+impl std::fmt::Display for Six {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let rounded: f64 = format!("{:.5e}", self.0).parse().unwrap_or(self.0);
+        Compact(rounded).fmt(f)
+    }
+}
+
 /// Grid points of the scan for brackets.
 pub const SCAN_POINTS: usize = 400;
 
@@ -267,9 +277,10 @@ pub enum TargetError {
     },
     /// The quantity does not reach the target anywhere in the range.
     #[error(
-        "no {param} in [{}, {}]{unit} gives {quantity} = {}: over that range {quantity} goes from {} to {} (min {}, max {})",
-        Compact(range.0), Compact(range.1), Compact(*target), Compact(ends.0), Compact(ends.1),
-        Compact(extremes.0), Compact(extremes.1)
+        "no {param} in [{}, {}]{unit} gives {quantity} = {}{quantity_unit}: over that range \
+         {quantity} goes from {}{quantity_unit} to {}{quantity_unit} (min {}{quantity_unit}, max {}{quantity_unit})",
+        Compact(range.0), Compact(range.1), Compact(*target), Six(ends.0), Six(ends.1),
+        Six(extremes.0), Six(extremes.1)
     )]
     NoRoot {
         /// The parameter's key.
@@ -278,6 +289,8 @@ pub enum TargetError {
         unit: &'static str,
         /// The quantity's name.
         quantity: &'static str,
+        /// The quantity's unit with a leading space, empty when dimensionless.
+        quantity_unit: &'static str,
         /// The target value.
         target: f64,
         /// The range scanned.
@@ -561,6 +574,12 @@ pub fn solve_for_target(
                 super::params::Unit::MegapascalPerMillimetre => " MPa/mm",
             },
             quantity: name,
+            quantity_unit: match quantity.unit() {
+                "mm" => " mm",
+                "N" => " N",
+                "N mm" => " N mm",
+                _ => "",
+            },
             target: target.value,
             range,
             ends: (first.1, last.1),

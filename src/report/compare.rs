@@ -235,9 +235,9 @@ pub fn plate_text(source: &str, rows: &[PlateCompared]) -> String {
     let _ = writeln!(
         out,
         "FE results ({}) vs the closed forms: squeezed plate\n\
-         u(L) in mm; FE: thickness mean (face: contact face, mid: mid-thickness); closed form: strip\n\
-         theory, regularized law; X_r (mm) from the centre (FE: where K_T |slip| = mu P); implied K_T:\n\
-         the K_T whose closed-form u(L) equals the FE mean.\n",
+         K_T in MPa/mm; u(L) in mm; FE: thickness mean (face: contact face, mid: mid-thickness);\n\
+         closed form: strip theory, regularized law; X_r (mm) from the centre (FE: where K_T |slip|\n\
+         = mu P); implied K_T (MPa/mm): the K_T whose closed-form u(L) equals the FE mean.\n",
         sanitize(source)
     );
     let _ = writeln!(

@@ -63,6 +63,15 @@ pub fn number_with(x: f64, digits: u32) -> String {
     }
 }
 
+/// `n` and the noun, singular for one: "1 measurement", "3 measurements".
+pub fn count_of(n: usize, noun: &str) -> String {
+    if n == 1 {
+        format!("1 {noun}")
+    } else {
+        format!("{n} {noun}s")
+    }
+}
+
 /// A user-supplied string (preset name or description, file path, a value or CSV header echoed in an
 /// error) made safe for a terminal: control characters (C0, DEL, C1) and the invisible bidirectional
 /// controls that reorder text are shown as escapes instead of acting on the terminal. Tab, line feed

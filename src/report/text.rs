@@ -370,8 +370,8 @@ pub fn fit(
     let p = structure;
     let _ = writeln!(
         out,
-        "Fit of mu and K_T to {data} ({} measurements), twin beams of preset {preset}",
-        result.points
+        "Fit of mu and K_T to {data} ({}), twin beams of preset {preset}",
+        super::count_of(result.points, "measurement")
     );
     let _ = writeln!(
         out,
@@ -386,12 +386,16 @@ pub fn fit(
         let error = estimate
             .std_error
             .map_or(String::new(), |e| format!(" +- {}", number(e)));
+        // "fixed (held fixed)" said it twice: a held value needs no reason.
+        let reason = match estimate.evidence {
+            crate::fit::Evidence::HeldFixed => String::new(),
+            ref other => format!(" ({})", evidence(other)),
+        };
         let _ = writeln!(
             out,
-            "  {name} = {}{error}{unit}: {} ({})",
+            "  {name} = {}{error}{unit}: {}{reason}",
             number(estimate.value),
             estimate.status.label(),
-            evidence(&estimate.evidence)
         );
     }
     let _ = writeln!(out, "  residual RMS = {} mm", number(result.rms));

@@ -854,9 +854,9 @@ impl App {
                 roots => {
                     let values: Vec<String> = roots.iter().map(|r| number(r.value)).collect();
                     self.info(format!(
-                        "{} values of {param} give {name} = {}: {}{punit}; nothing changed \
+                        "{} of {param} give {name} = {}: {}{punit}; nothing changed \
                          (microslip solve --from/--to narrows the search)",
-                        roots.len(),
+                        crate::report::count_of(roots.len(), "value"),
                         number(target.value),
                         values.join(", ")
                     ));
@@ -879,16 +879,20 @@ impl App {
             }
             _ => return false,
         };
-        let mut complete = true;
-        for c in line.chars().filter(|c| !c.is_control()) {
-            if !input.push(c) {
-                complete = false;
-                break;
-            }
+        // All or nothing: a paste longer than the input takes is refused whole (as the README
+        // says), never cut, so that a value is never entered half pasted.
+        let mut trial = input.clone();
+        let complete = line
+            .chars()
+            .filter(|c| !c.is_control())
+            .all(|c| trial.push(c));
+        if complete {
+            *input = trial;
         }
         if !complete {
             self.error(format!(
-                "paste cut at {} characters, the input limit",
+                "paste refused: {} characters, more than the {} an input takes; nothing was pasted",
+                line.chars().filter(|c| !c.is_control()).count(),
                 super::text_input::MAX_CHARS
             ));
         } else if line.len() < text.trim_end_matches(['\n', '\r']).len() {
@@ -1104,8 +1108,8 @@ impl App {
         match points {
             Ok(points) => {
                 self.info(format!(
-                    "loaded {} measurements from {path}; f fits mu and K_T",
-                    points.len()
+                    "loaded {} from {path}; f fits mu and K_T",
+                    crate::report::count_of(points.len(), "measurement")
                 ));
                 self.measurements = Some(Measurements {
                     path: path.to_string(),
@@ -1749,6 +1753,26 @@ mod tests {
         assert!(count > 1);
         app.update(Action::NextChart);
         assert_eq!(app.views().beam.position().0, 1);
+    }
+
+    #[test]
+    fn a_paste_longer_than_an_input_takes_is_refused_whole() {
+        let mut app = app();
+        select(&mut app, "F");
+        app.update(Action::StartEdit);
+        assert!(app.paste("12"));
+        assert!(app.paste(&"9".repeat(5000)));
+        let message = app.message().unwrap().text.clone();
+        assert!(
+            message.starts_with("paste refused: 5000 characters"),
+            "{message}"
+        );
+        app.update(Action::Commit);
+        assert_eq!(
+            app.inputs().get(F),
+            Some(12.0),
+            "the earlier text, untouched"
+        );
     }
 
     #[test]
