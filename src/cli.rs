@@ -657,7 +657,8 @@ pub fn main() -> ExitCode {
 /// headers), so the whole line is sanitized here, once, at the edge: a control character in any of
 /// them is shown escaped instead of reaching the terminal.
 fn print_error(message: &str) {
-    eprintln!("microslip: {}", report::sanitize(message));
+    // Not `eprintln!`, which panics when stderr is gone (a terminal that hung up).
+    let _ = writeln!(io::stderr(), "microslip: {}", report::sanitize(message));
 }
 
 /// Help and version go to stdout as clap writes them; every other parse error becomes one line.

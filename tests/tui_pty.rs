@@ -260,6 +260,31 @@ fn ctrl_z_suspends_and_continuing_redraws() {
     let _ = child.wait();
 }
 
+/// SIGTSTP/SIGCONT pairs faster than the loop acts on them, ending on SIGCONT: the shell has
+/// continued the program, so it must not stop itself afterwards (it used to stay stopped, 5 runs
+/// of 5).
+#[test]
+fn a_storm_of_stops_and_continues_ending_on_continue_leaves_it_running() {
+    let (mut session, mut child) = start();
+    session.wait_for("Twin beams");
+    let pid = microslip_pid(child.as_ref());
+    let pairs = "kill -TSTP $0; kill -CONT $0; ".repeat(50);
+    let status = std::process::Command::new("sh")
+        .args(["-c", &pairs, &pid])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let start = Instant::now();
+    while start.elapsed() < Duration::from_millis(500) {
+        session.pump(Duration::from_millis(20));
+    }
+    assert_ne!(state(&pid), 'T', "left stopped after the last SIGCONT");
+    session.send("q");
+    session.wait_for("EXIT=0");
+    session.assert_restored();
+    let _ = child.wait();
+}
+
 #[test]
 fn a_paste_is_text_in_the_value_field_and_never_keys() {
     let (mut session, mut child) = start();
@@ -318,8 +343,12 @@ fn a_hung_up_terminal_ends_the_program_within_a_second() {
     drop(pty.master);
     let closed = Instant::now();
     loop {
-        if child.try_wait().unwrap().is_some() {
-            eprintln!("ended {:?} after the hang-up", closed.elapsed());
+        if let Some(status) = child.try_wait().unwrap() {
+            eprintln!("ended {:?} after the hang-up: {status:?}", closed.elapsed());
+            // Exit 129, not SIGABRT: the dropped `Terminal` used to report its failure to show
+            // the cursor with `eprintln!`, which panics on the closed stderr, twice, and aborts.
+            assert_eq!(status.exit_code(), 129, "{status:?}");
+            assert_eq!(status.signal(), None, "{status:?}");
             break;
         }
         assert!(

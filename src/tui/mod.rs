@@ -120,7 +120,24 @@ pub fn run(
     let mut terminal = terminal::enter()?;
     let events = spawn_reader();
     let result = event_loop(&mut terminal, &mut app, &signals, &events);
-    if result.as_ref().is_ok_and(|exit| *exit != Exit::HangUp) {
+    // A SIGHUP sent by hand leaves a live terminal to restore; a closed one reports POLLHUP.
+    let hung_up = terminal::hung_up();
+    let gone = hung_up || matches!(result, Ok(Exit::HangUp) | Err(_));
+    if gone {
+        // Nothing is left to restore, and ratatui's `Terminal` would, when dropped, report its
+        // failure to show the cursor with `eprintln!`, which panics on the closed stderr; the
+        // panic hook's own report then panicked again and the process died of SIGABRT (with a
+        // core dump, 1.2 to 2 s) instead of exiting 129.
+        // Whatever the loop was doing when the terminal went (a failed draw is an I/O error),
+        // this is a hang-up: exit 129, with nothing printed to a stderr that is gone.
+        std::mem::forget(terminal);
+        return match result {
+            Ok(Exit::Signal(signal)) => Ok(Exit::Signal(signal)),
+            Err(e) if !hung_up => Err(TuiError::from(e)),
+            _ => Ok(Exit::HangUp),
+        };
+    }
+    if result.is_ok() {
         let _ = terminal.show_cursor();
     }
     terminal::leave();
@@ -176,6 +193,9 @@ fn event_loop(
     loop {
         match signals.take() {
             Some(signals::Request::Terminate(signal)) => return Ok(Exit::Signal(signal)),
+            // A SIGCONT after the SIGTSTP voids it: the shell has continued us already.
+            Some(signals::Request::Suspend) if signals::Signals::continued_since_stop_request() => {
+            }
             Some(signals::Request::Suspend) => {
                 terminal::suspend(terminal)?;
                 terminal.draw(|frame| ui::draw(frame, app))?;
