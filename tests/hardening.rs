@@ -129,6 +129,33 @@ fn a_held_value_is_said_once_and_one_measurement_is_singular() {
     assert!(out.contains("mu  = 0.3: fixed\n"), "{out}");
 }
 
+/// Inside the accepted domain the FE solvers used to fail after 12 step cuts, with no chart and
+/// no table; now each is refused at once with what to change.
+#[test]
+fn fe_solvers_refuse_what_they_cannot_solve_and_say_what_to_change() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("w.svg");
+    for set in ["KT=1e12", "E=1e-4"] {
+        let (code, _, err) = run(&[
+            "plot",
+            "w-vs-f",
+            "--fe",
+            "--set",
+            set,
+            "-o",
+            svg.to_str().unwrap(),
+        ]);
+        assert_eq!(code, 1, "{set}: {err}");
+        assert!(err.contains("lower K_T to at most"), "{set}: {err}");
+    }
+    let err = refused(&["verify", "--quick", "--elements", "10"]);
+    assert!(err.contains("must be an integer in [25, 800]"), "{err}");
+    // The coarsest accepted mesh solves every case: a table (exit 1 when a quantity is above the
+    // tolerance at so coarse a mesh, which the table says), never a solver failure.
+    let (code, out, err) = run(&["verify", "--quick", "--elements", "25"]);
+    assert!(code <= 1 && out.contains("worst rel. error"), "{out}{err}");
+}
+
 #[test]
 fn a_log_chart_that_cannot_be_log_falls_back_to_linear_unless_asked() {
     let dir = tempfile::tempdir().unwrap();

@@ -467,7 +467,14 @@ impl ContactPressure {
         // Timoshenko plate in plane strain: D = E t^3 / (12 (1 - nu^2)), shear stiffness (5/6) G t,
         // so beta^2 = (5/6) G t / D = 5 (1 - nu) / t^2.
         let beta2 = 5.0 * (1.0 - p.poisson) / (p.thickness * p.thickness);
-        let lever = p.friction * half_thickness;
+        // The friction stress mu P acts at the lever t/2 only where the plate slides; at nu = 0
+        // nothing squeezes it sideways, no shear acts (see `CoulombPlate::regime`), and the
+        // pressure stays P everywhere.
+        let lever = if p.poisson == 0.0 {
+            0.0
+        } else {
+            p.friction * half_thickness
+        };
         let a1 = 0.5 * beta2 * lever;
         let a2 = (a1 * a1 + beta2).sqrt();
         let l = p.half_length;
@@ -660,6 +667,16 @@ mod tests {
         assert_eq!(continuum.end_displacement_mean, 0.0);
         assert_eq!(continuum.micro_zone_end, no_poisson.half_length);
         assert_eq!(plate.validity().expected_error, Some(0.0));
+        // No shear, no moment from friction: the contact pressure is P everywhere (it read 0.72 P
+        // at the centre and 1.40 P at the edge, as if friction were saturated).
+        let pressure = plate.contact_pressure();
+        for x in [0.0, 2.5, 5.0, 9.9, 10.0] {
+            assert!(
+                (pressure.ratio(x) - 1.0).abs() < 1e-12,
+                "x = {x}: {}",
+                pressure.ratio(x)
+            );
+        }
         let slippery = PlateParams {
             friction: 1e-3,
             ..PlateParams::PAPER
