@@ -305,7 +305,9 @@ fn short_thick_plates_solve_the_plate_equation_too() {
     for (l, t, nu, mu) in [
         (0.05, 1.0, 0.3, 0.3),
         (1e-3, 0.5, 0.3, 10.0),
-        (1e-5, 100.0, 0.0, 1.0),
+        // nu small but not 0: at nu = 0 no friction acts and the pressure is P everywhere (the
+        // saturated-friction equation checked here does not apply; src/model/plate.rs tests it).
+        (1e-5, 100.0, 1e-3, 1.0),
         (2.0, 1e3, 0.49, 0.05),
     ] {
         let plate = SqueezedPlate::new(PlateParams {
