@@ -67,10 +67,10 @@ pub mod sets {
 
 /// The largest deck written: 20 000 elements. The fine decks have about a thousand (888 for the
 /// paper's beams, 1 002 for its plate), and halving the coarse decks' element size changes w(L) by
-/// 0.03 %; a deck twenty times the fine one gains nothing a benchmark can see, while CalculiX's
-/// direct solver grows faster than the element count (minutes per increment and gigabytes beyond
-/// this). Beyond it a deck
-/// is refused by its element count, before anything is allocated ([`DeckTooLarge`]).
+/// 0.03 %; a deck twenty times the fine one gains nothing a benchmark can see, while the time and
+/// memory of CalculiX's direct solver grow faster than the element count (a run at the limit was
+/// not measured). Beyond it a deck is refused by its element count, before anything is allocated
+/// ([`DeckTooLarge`]).
 pub const MAX_DECK_ELEMENTS: usize = 20_000;
 
 /// A deck over [`MAX_DECK_ELEMENTS`]: its element count and how to get a smaller one.
