@@ -193,6 +193,11 @@ impl Domain {
     };
     /// Tip force or cycle amplitude (N): 0 to 1e12 N.
     pub const FORCE: Domain = Domain::NonNegative { max: 1e12 };
+    /// A deck's force step per increment (N): positive, up to the largest tip force.
+    pub const FORCE_STEP: Domain = Domain::Positive {
+        min: 1e-12,
+        max: 1e12,
+    };
     /// FE contact element length (mm): down to a hundredth of the shortest accepted length, the
     /// default L/100 of `microslip kt`.
     pub const ELEMENT_SIZE: Domain = Domain::Positive {
