@@ -224,14 +224,14 @@ pub fn plate_text(source: &str, rows: &[PlateCompared]) -> String {
     );
     let _ = writeln!(
         out,
-        "{:>10} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>9}  {:>10}  regime (closed form / FE)",
+        "{:>10} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>9}  {:>16}  regime (closed form / FE)",
         "K_T", "u FE", "u closed", "diff", "face", "mid", "X_r FE", "X_r", "implied K_T"
     );
     for r in rows {
         let row = PlateCompareRow::from(r);
         let _ = writeln!(
             out,
-            "{:>10} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>9}  {:>10}  {} / {}",
+            "{:>10} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>9}  {:>16}  {} / {}",
             number(row.stiffness),
             number(row.u_fe_mm),
             number(row.u_mm),
