@@ -237,6 +237,10 @@ pub enum Command {
         /// K_T: plain Coulomb to within what the mesh resolves.
         #[arg(long)]
         near_coulomb: bool,
+        /// Largest tip-force change per increment (N) in the load steps that end beyond F_1
+        /// (friction is path-dependent once it saturates), beams only; default: F_1 / 20.
+        #[arg(long, value_name = "N")]
+        increment: Option<f64>,
         /// Write the deck to FILE instead of stdout (replaced atomically if it exists).
         #[arg(short = 'o', long, value_name = "FILE")]
         output: Option<PathBuf>,
@@ -950,6 +954,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             mesh,
             loads,
             near_coulomb,
+            increment,
             output,
         }) => {
             let slope = if *near_coulomb {
@@ -960,7 +965,11 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             let deck = match load(inputs, *model, model_command(*model, "deck ccx"))? {
                 (_, Model::Beam { beams, .. }) => {
                     let loads = deck_loads(&beams, loads.as_deref(), slope)?;
-                    deck::beam_deck(&beams, &loads, *mesh, slope)
+                    let force_step = increment
+                        .map(|f| check_flag("--increment", f, Domain::FORCE_STEP, Unit::Newton))
+                        .transpose()?;
+                    let path = deck::LoadPath { force_step };
+                    deck::beam_deck_on_path(&beams, &loads, *mesh, slope, path)
                 }
                 (_, Model::Plate(plate)) => {
                     if loads.is_some() {

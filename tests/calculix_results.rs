@@ -122,9 +122,18 @@ fn the_strip_theory_holds_for_a_soft_interface_and_fails_at_the_papers_stiffness
     let fe = row.fe.interface.unwrap();
     assert_eq!(fe.regime, Regime::MicroslipMacroslip);
     assert_eq!(row.regime, Regime::MicroslipMacroslip);
-    // The strip theory would need a softer interface to give CalculiX's mean u(L).
-    let implied = row.implied_stiffness.unwrap();
-    assert!(implied < 1e6, "{implied}");
+    // The strip theory would need a softer interface to give CalculiX's mean u(L), but that is
+    // the strip theory's error, not the interface's: no K_T is implied where it does not hold.
+    assert_eq!(row.implied_stiffness, None);
+    assert_ne!(
+        row.strip_validity,
+        microslip::model::validity::Validity::Holds
+    );
+    assert!(
+        plate
+            .stiffness_for_end_displacement(row.fe.end_displacement)
+            .is_some_and(|k| k < 1e6)
+    );
 }
 
 #[test]

@@ -1451,6 +1451,33 @@ fn compare_at_zero_load_says_the_relative_difference_is_undefined() {
     assert!(first.starts_with("0.0,0.0,0.0,,"), "{first}");
 }
 
+/// `compare plate`'s text table stays in columns when the implied K_T is replaced by the reason
+/// it is not given: the regime column starts at the same place on every row.
+#[test]
+fn compare_plate_keeps_its_columns_when_no_stiffness_is_implied() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("plate.csv");
+    // K_T = 1e4: the strip theory holds (a number); 1e6 and 1e8: it does not (a reason).
+    std::fs::write(&csv, "KT_MPa_per_mm,u_mm\n1e4,2e-4\n1e6,1e-5\n1e8,1e-5\n").unwrap();
+    let text = stdout_of(&["compare", "plate", csv.to_str().unwrap()]);
+    let header = text.lines().find(|l| l.contains("regime (")).unwrap();
+    let column = header.find("regime (").unwrap();
+    let rows: Vec<&str> = text
+        .lines()
+        .skip_while(|l| !l.contains("regime ("))
+        .skip(1)
+        .filter(|l| !l.trim().is_empty())
+        .collect();
+    assert_eq!(rows.len(), 3, "{text}");
+    assert!(
+        rows.iter().any(|r| r.contains("(not calibrated)")),
+        "{text}"
+    );
+    for row in rows {
+        assert_eq!(&row[column - 2..column], "  ", "{text}");
+        assert!(row[column..].starts_with("microslip"), "{text}");
+    }
+}
 #[test]
 fn compare_errors_name_the_file_and_line() {
     let dir = tempfile::tempdir().unwrap();

@@ -10,6 +10,7 @@ use super::results::{BeamFePoint, FeInterface, PlateFePoint};
 use crate::fit::{self, FitError, FitResult, Measurement};
 use crate::model::regime::Regime;
 use crate::model::twin_beams::BeamTheory;
+use crate::model::validity::Validity;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// One FE point of the beams beside the closed forms.
@@ -117,8 +118,13 @@ pub struct PlateCompared {
     /// The closed form's X_r (mm).
     pub micro_zone_end: f64,
     /// The K_T (MPa/mm) whose closed-form u(L) equals the FE value; `None` when no accepted K_T
-    /// does (the FE value is outside the range the strip theory can give).
+    /// does (the FE value is outside the range the strip theory can give), or when the strip
+    /// theory does not hold at the run's K_T ([`PlateCompared::strip_validity`]): there the
+    /// difference is the strip theory's, not the interface's, and inverting it would name a K_T
+    /// the run did not have (a run at 1e7 "implied" 5.8e5).
     pub implied_stiffness: Option<f64>,
+    /// (V1) for the thickness mean at the run's K_T.
+    pub strip_validity: Validity,
 }
 
 impl PlateCompared {
@@ -151,13 +157,17 @@ pub fn compare_plate(plate: &SqueezedPlate, points: &[PlateFePoint]) -> Vec<Plat
         .map(|&fe| {
             let at = plate.with_clamped(crate::PlateParam::Stiffness, fe.stiffness);
             let state = at.regularized();
+            let strip_validity = at.validity().validity;
             PlateCompared {
                 fe,
                 closed: state.end_displacement(),
                 coulomb: at.coulomb().end_displacement(),
                 regime: state.regime(),
                 micro_zone_end: state.micro_zone_end(),
-                implied_stiffness: at.stiffness_for_end_displacement(fe.end_displacement),
+                implied_stiffness: (strip_validity == Validity::Holds)
+                    .then(|| at.stiffness_for_end_displacement(fe.end_displacement))
+                    .flatten(),
+                strip_validity,
             }
         })
         .collect()
@@ -226,25 +236,41 @@ mod tests {
         assert_eq!(plate.stiffness_for_end_displacement(1.01 * free), None);
     }
 
+    /// The strip theory's u(L) of the paper's plate at `kt`.
+    fn paper_u(kt: f64) -> f64 {
+        let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        let at = plate.with_tangential_stiffness(kt).unwrap();
+        at.regularized().end_displacement()
+    }
+
+    fn mean_only(stiffness: f64, end_displacement: f64) -> PlateFePoint {
+        PlateFePoint {
+            stiffness,
+            end_displacement,
+            through_thickness: None,
+            interface: None,
+        }
+    }
+
+    #[test]
+    fn no_stiffness_is_implied_where_the_strip_theory_does_not_hold() {
+        // The paper's plate at K_T = 1e7 (alpha t_p = 5.1): a u(L) that the strip theory reaches
+        // at a softer K_T would "imply" that K_T; it is withheld.
+        let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        let u = paper_u(5.8e5);
+        assert!(plate.stiffness_for_end_displacement(u).is_some());
+        let rows = compare_plate(&plate, &[mean_only(1e7, u)]);
+        assert_eq!(rows[0].implied_stiffness, None);
+        assert_ne!(rows[0].strip_validity, Validity::Holds);
+    }
+
     #[test]
     fn plate_comparison_uses_each_points_stiffness() {
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
-        let u4 = plate
-            .with_tangential_stiffness(1e4)
-            .unwrap()
-            .regularized()
-            .end_displacement();
-        let rows = compare_plate(
-            &plate,
-            &[PlateFePoint {
-                stiffness: 1e4,
-                end_displacement: 1.1 * u4,
-                through_thickness: None,
-                interface: None,
-            }],
-        );
+        let rows = compare_plate(&plate, &[mean_only(1e4, 1.1 * paper_u(1e4))]);
         assert!((rows[0].difference().unwrap() - 0.1).abs() < 1e-12);
         assert_eq!(rows[0].regime, Regime::Microslip);
+        assert_eq!(rows[0].strip_validity, Validity::Holds);
         assert!(
             rows[0].implied_stiffness.unwrap() < 1e4,
             "more displacement, softer"

@@ -4,9 +4,11 @@
 //! plane-stress elements) and from the closed forms, is in docs/theory.md, "Benchmarking an FE code".
 //! In short: 20-node bricks with reduced integration (C3D20R), one element across the width;
 //! face-to-face penalty contact with a stiff linear normal law; `*FRICTION` with mu and a stick slope
-//! equal to K_T (CalculiX's stick slope is a shear stress per slip, MPa/mm, exactly K_T); small
-//! displacements. The beams are in plane stress (free side faces), the plate in plane strain (every
-//! node held across the width) on a fixed block standing for the rigid plane.
+//! equal to K_T (CalculiX's stick slope is a shear stress per slip, MPa/mm, exactly K_T). The
+//! beams' steps are `NLGEOM` (the pressure follows the rotating faces) and follow the load path in
+//! increments ([`LoadPath`]); the plate's single step is linear. The beams are in plane stress
+//! (free side faces), the plate in plane strain (every node held across the width) on a fixed block
+//! standing for the rigid plane.
 //!
 //! A deck is plain text built in memory: deterministic bytes for the same inputs, no I/O. Its first
 //! lines carry a machine-readable header ([`DeckHeader`]) that `microslip compare` reads back, so
@@ -160,8 +162,61 @@ fn check_beam_size(beams: &TwinBeams, mesh: DeckMesh) -> Result<(), DeckTooLarge
     })
 }
 
+/// How finely a beam deck follows the load path: the largest change of the tip force (N) within one
+/// increment, in every load step that ends beyond F_1.
+///
+/// Friction is path-dependent once the interface saturates: a point that slides at mu p while p
+/// changes, or that stops sliding, ends where its history took it. CalculiX's answer in macroslip
+/// changes with the increment size (docs/theory.md, "Benchmarking an FE code": -1.0 % one increment
+/// per step, -1.7 % converged against Timoshenko at h/L = 1/30, mu P = 1.5 MPa) and converges
+/// about linearly in it. Below F_1 nothing saturates, the interface law is linear, and one
+/// increment is exact: those steps keep one.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LoadPath {
+    /// Largest tip-force change per increment (N); `None`: [`LoadPath::DEFAULT_FRACTION`] F_1.
+    pub force_step: Option<f64>,
+}
+
+impl LoadPath {
+    /// The default force step as a fraction of F_1 (at the deck's stick slope). Measured at
+    /// h/L = 1/30, mu P = 1.5 MPa, F = 1.25 F_1: steps of F_1/20, /40, /80 gave -0.18, -0.27,
+    /// -0.31 % against Timoshenko, first-order convergence to -0.35 %; F_1/40 leaves 0.08 points.
+    pub const DEFAULT_FRACTION: f64 = 0.025;
+    /// The validation's increment check: halving the force step may move w(L) by this much at
+    /// most. Convergence is first order, so the error left is about twice the move: 0.2 %.
+    /// Measured moves (h/L = 1/30, mu P = 1.5 MPa, F_1/40 to F_1/80): 0.050 % at 1.0125 F_1,
+    /// 0.043 % at 1.25 F_1, 0.004 % at 1.025 F_1.
+    pub const CONVERGED: f64 = 0.001;
+    /// Smallest increment as a fraction of a step: at most 1000 increments per step.
+    const SMALLEST: f64 = 1e-3;
+
+    /// The force step (N) for `beams` (K_T = the deck's stick slope).
+    pub fn force_step(self, beams: &TwinBeams) -> f64 {
+        self.force_step
+            .unwrap_or_else(|| Self::DEFAULT_FRACTION * beams.first_macroslip_force())
+    }
+
+    /// The increment of a step from `from` to `to` (N) as a fraction of the step: 1 when the step
+    /// ends at or below F_1 (`onset`), else `step / (to - from)`, between 1e-3 and 1.
+    pub fn increment(step: f64, onset: f64, from: f64, to: f64) -> f64 {
+        if to <= onset || to <= from {
+            1.0
+        } else {
+            (step / (to - from)).clamp(Self::SMALLEST, 1.0)
+        }
+    }
+}
+
 /// The twin-beam deck: the pressure P in a first step, then one step per tip force in `loads`
-/// (N on each beam, increasing), each printed at its end.
+/// (N on each beam, increasing), each printed at its end, on the default load path.
+///
+/// Every step is `NLGEOM`. CalculiX's contact always works on the deformed faces; with linear
+/// geometry the pressure on the outer faces keeps its direction while the beams rotate by
+/// theta = w', so in the beams' frame it carries an axial traction P theta on each outer face, an
+/// extra "friction" that beam theory does not have. Against mu P it is theta / mu: at macroslip
+/// onset of h/L = 1/30, mu P = 1.5 MPa it made CalculiX 1 % stiffer than Timoshenko, whatever mu
+/// (docs/theory.md, "How the decks are built"). With `NLGEOM` the pressure follows the faces, as
+/// the closed forms assume; what remains of large rotations is of order theta^2.
 ///
 /// # Errors
 /// [`DeckTooLarge`] when the mesh would have more than [`MAX_DECK_ELEMENTS`] elements (very
@@ -171,6 +226,20 @@ pub fn beam_deck(
     loads: &[TipForce],
     mesh: DeckMesh,
     stick_slope: StickSlope,
+) -> Result<String, DeckTooLarge> {
+    beam_deck_on_path(beams, loads, mesh, stick_slope, LoadPath::default())
+}
+
+/// [`beam_deck`] with the load path `path`.
+///
+/// # Errors
+/// As [`beam_deck`].
+pub fn beam_deck_on_path(
+    beams: &TwinBeams,
+    loads: &[TipForce],
+    mesh: DeckMesh,
+    stick_slope: StickSlope,
+    path: LoadPath,
 ) -> Result<String, DeckTooLarge> {
     check_beam_size(beams, mesh)?;
     let p = beams.params();
@@ -247,22 +316,36 @@ pub fn beam_deck(
     );
     deck.push_str("*BOUNDARY\nCLAMP, 1, 3\n");
 
+    // A near-Coulomb slope beyond K_T's accepted range: F_1 is F_thre there to many digits.
+    let at_slope = beams.with_tangential_stiffness(slope).unwrap_or(*beams);
+    let onset = at_slope.first_macroslip_force();
+    let force_step = path.force_step(&at_slope);
+    let _ = writeln!(
+        deck,
+        "** load path: steps ending beyond F_1 = {} N (at this stick slope) in increments of at most\n\
+         ** {} N of tip force (friction is path-dependent once it saturates); the others in one",
+        Compact(onset),
+        Compact(force_step)
+    );
     deck.push_str("** step 1: the interface pressure P, pressing the beams together\n");
-    start_step(&mut deck);
+    start_step(&mut deck, 1.0, Geometry::Nonlinear);
     write_pressure(
         &mut deck,
         &[(&lower, Face::YMin), (&upper, Face::YMax)],
         p.pressure,
     );
     end_beam_step(&mut deck);
+    let mut from = 0.0;
     for (n, force) in loads.iter().enumerate() {
+        let increment = LoadPath::increment(force_step, onset, from, force.newtons());
+        from = force.newtons();
         let _ = writeln!(
             deck,
             "** step {}: tip force F = {} N on each beam (uniform shear traction on the end face)",
             n + 2,
             Compact(force.newtons())
         );
-        start_step(&mut deck);
+        start_step(&mut deck, increment, Geometry::Nonlinear);
         deck.push_str("*CLOAD\n");
         for block in [&lower, &upper] {
             for (id, f) in block.end_face_loads(force.newtons()) {
@@ -417,8 +500,10 @@ pub fn plate_deck(
         "** symmetry at x = 0, plane strain (no node moves across the width), fixed plane\n\
          *BOUNDARY\nSYMMETRY, 1, 1\nPLATEALL, 3, 3\nFIXED, 1, 3\n",
     );
+    // One increment: the plate's problem is homogeneous of degree one in P (slip, traction and
+    // mu p all scale with it), so every point's history is a ramp and the path cannot matter.
     deck.push_str("** step 1: the pressure P on the plate's upper face\n");
-    start_step(&mut deck);
+    start_step(&mut deck, 1.0, Geometry::Linear);
     write_pressure(&mut deck, &[(&plate_block, Face::YMax)], p.pressure);
     for set in [sets::PLATE_END, sets::PLATE_FACE] {
         let _ = writeln!(deck, "*NODE PRINT, NSET={set}\nU");
@@ -433,9 +518,32 @@ fn normal_stiffness(modulus: f64, element_height: f64, stick_slope: f64) -> f64 
     (100.0 * modulus / element_height).max(10.0 * stick_slope)
 }
 
-fn start_step(deck: &mut String) {
-    // One increment per step when it converges; CalculiX cuts it when it does not.
-    deck.push_str("*STEP, INC=1000\n*STATIC\n1., 1.\n");
+/// How a deck's steps treat geometry.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Geometry {
+    /// Small displacements throughout (the plate: its faces do not rotate).
+    Linear,
+    /// `NLGEOM`: the pressure follows the faces as they rotate (the beams; see [`beam_deck`]).
+    Nonlinear,
+}
+
+/// A step of unit time whose increments are at most `increment` (CalculiX cuts them further when
+/// an increment does not converge, and grows them back up to `increment`).
+fn start_step(deck: &mut String, increment: f64, geometry: Geometry) {
+    let nlgeom = match geometry {
+        Geometry::Linear => "",
+        Geometry::Nonlinear => " NLGEOM,",
+    };
+    if increment >= 1.0 {
+        let _ = writeln!(deck, "*STEP,{nlgeom} INC=1000\n*STATIC\n1., 1.");
+    } else {
+        // CalculiX reads at most 20 characters per field: 10 significant digits.
+        let _ = writeln!(
+            deck,
+            "*STEP,{nlgeom} INC=10000\n*STATIC\n{increment:.9e}, 1., {:.9e}, {increment:.9e}",
+            increment * 1e-3
+        );
+    }
 }
 
 fn end_beam_step(deck: &mut String) {
@@ -650,6 +758,51 @@ mod tests {
             "stick slope = K_T"
         );
         assert!(deck.contains("*ELASTIC\n210000.0, 0.3\n"));
+    }
+
+    #[test]
+    fn steps_beyond_macroslip_onset_are_cut_into_force_steps() {
+        // Below F_1 (or a step that does not rise) one increment; beyond, step / (to - from),
+        // clamped to [1e-3, 1].
+        assert_eq!(LoadPath::increment(2.0, 100.0, 40.0, 100.0), 1.0);
+        assert_eq!(LoadPath::increment(2.0, 100.0, 100.0, 100.0), 1.0);
+        assert!((LoadPath::increment(2.0, 100.0, 80.0, 120.0) - 0.05).abs() < 1e-15);
+        assert_eq!(LoadPath::increment(50.0, 100.0, 80.0, 120.0), 1.0);
+        assert_eq!(LoadPath::increment(1e-6, 100.0, 80.0, 120.0), 1e-3);
+        // The paper's beams: F_1 = F_thre / (1 - sech kL) with F_thre = 80 N; the default step is
+        // F_1 / 40.
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let default = LoadPath::default().force_step(&beams);
+        assert!((default - beams.first_macroslip_force() / 40.0).abs() < 1e-12);
+        let given = LoadPath {
+            force_step: Some(3.0),
+        };
+        assert_eq!(given.force_step(&beams), 3.0);
+    }
+
+    #[test]
+    fn beam_steps_are_nonlinear_and_fine_beyond_onset() {
+        // F_1 of the paper's beams is about 80 N: the 40 N step keeps one increment, the step
+        // from 40 to 100 N is cut into increments of at most 2 N, 1/30 of it.
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let loads = [40.0, 100.0].map(|f| TipForce::new(f).unwrap());
+        let path = LoadPath {
+            force_step: Some(2.0),
+        };
+        let deck =
+            beam_deck_on_path(&beams, &loads, DeckMesh::Coarse, StickSlope::Model, path).unwrap();
+        assert_eq!(
+            deck.matches("*STEP, NLGEOM, INC=1000\n*STATIC\n1., 1.\n")
+                .count(),
+            2
+        );
+        let line = "3.333333333e-2, 1., 3.333333333e-5, 3.333333333e-2";
+        assert_eq!(deck.matches(&line).count(), 1, "{line}");
+        // The plate keeps one linear increment: its problem scales with P.
+        let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+        let plate = plate_deck(&plate, DeckMesh::Coarse, StickSlope::Model).unwrap();
+        assert!(plate.contains("*STEP, INC=1000\n*STATIC\n1., 1.\n"));
+        assert!(!plate.contains("NLGEOM"));
     }
 
     #[test]

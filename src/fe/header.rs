@@ -190,6 +190,10 @@ impl DeckHeader {
         let mut text = String::new();
         match model {
             Model::Beam { beams, .. } => {
+                // The columns are Euler-Bernoulli whatever theory the preset chose: "+ shear"
+                // adds the shear deflection once (a Timoshenko model's w(L) already holds it).
+                let beams =
+                    &beams.with_theory(crate::model::twin_beams::BeamTheory::EulerBernoulli);
                 let _ = writeln!(
                     text,
                     "** Expected from the closed forms (Euler-Bernoulli, the paper's model; \"+ shear\"\n\
@@ -364,6 +368,31 @@ mod tests {
         let header = DeckHeader::beams(&beams, &loads, DeckMesh::Fine, StickSlope::Model);
         let parsed = DeckHeader::parse(&header.to_comment()).unwrap().unwrap();
         assert_eq!(parsed, header);
+    }
+
+    #[test]
+    fn a_timoshenko_preset_expects_the_shear_deflection_once() {
+        use crate::model::twin_beams::BeamTheory;
+        let euler = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let timoshenko = euler.with_theory(BeamTheory::Timoshenko);
+        let loads = [TipForce::new(40.0).unwrap()];
+        let text = |b: &TwinBeams| {
+            let h = DeckHeader::beams(b, &loads, DeckMesh::Coarse, StickSlope::Model);
+            let model = h.model().unwrap();
+            h.expected(&model)
+        };
+        // w(L) regularized at 40 N (stick): 0.011121 mm Euler-Bernoulli, + shear 2.97e-4 mm.
+        let expected = text(&timoshenko);
+        assert_eq!(expected, text(&euler));
+        let row = expected.lines().nth(3).unwrap();
+        let w: Vec<f64> = row
+            .split('|')
+            .skip(1)
+            .take(3)
+            .map(|c| c.trim().parse().unwrap())
+            .collect();
+        assert!((w[1] - 0.011121).abs() < 1e-6, "{row}");
+        assert!((w[2] - w[1] - 2.97e-4).abs() < 1e-6, "{row}");
     }
 
     #[test]

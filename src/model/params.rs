@@ -202,6 +202,11 @@ impl Domain {
     /// length, 1 km. A small-displacement FE result beyond that is not a result (an overflowed or
     /// corrupted file), and comparing it would print numbers that mean nothing.
     pub const DISPLACEMENT: Domain = Domain::Symmetric { max: 1e6 };
+    /// A deck's force step per increment (N): positive, up to the largest tip force.
+    pub const FORCE_STEP: Domain = Domain::Positive {
+        min: 1e-12,
+        max: 1e12,
+    };
     /// FE contact element length (mm): down to a hundredth of the shortest accepted length, the
     /// default L/100 of `microslip kt`.
     pub const ELEMENT_SIZE: Domain = Domain::Positive {

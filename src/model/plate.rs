@@ -666,7 +666,7 @@ mod tests {
                 .unwrap();
         assert_eq!(continuum.end_displacement_mean, 0.0);
         assert_eq!(continuum.micro_zone_end, no_poisson.half_length);
-        assert_eq!(plate.validity().expected_error, Some(0.0));
+        assert_eq!(plate.validity().expected_error(), Some(0.0));
         // No shear, no moment from friction: the contact pressure is P everywhere (it read 0.72 P
         // at the centre and 1.40 P at the edge, as if friction were saturated).
         let pressure = plate.contact_pressure();

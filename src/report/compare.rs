@@ -93,6 +93,8 @@ pub struct PlateCompareRow {
     /// The K_T whose closed-form u(L) equals the FE value (MPa/mm).
     #[serde(rename = "KT_implied_MPa_per_mm")]
     pub implied_stiffness: Option<f64>,
+    /// (V1) for the thickness mean at the run's K_T; the implied K_T is given only where it holds.
+    pub strip_theory: &'static str,
 }
 
 impl From<&PlateCompared> for PlateCompareRow {
@@ -114,6 +116,7 @@ impl From<&PlateCompared> for PlateCompareRow {
             micro_zone_end: r.micro_zone_end,
             micro_zone_end_fe: r.fe_interface().map(|i| i.macroslip_start),
             implied_stiffness: r.implied_stiffness,
+            strip_theory: r.strip_validity.label(),
         }
     }
 }
@@ -237,19 +240,21 @@ pub fn plate_text(source: &str, rows: &[PlateCompared]) -> String {
         "FE results ({}) vs the closed forms: squeezed plate\n\
          K_T in MPa/mm; u(L) in mm; FE: thickness mean (face: contact face, mid: mid-thickness);\n\
          closed form: strip theory, regularized law; X_r (mm) from the centre (FE: where K_T |slip|\n\
-         = mu P); implied K_T (MPa/mm): the K_T whose closed-form u(L) equals the FE mean.\n",
+         = mu P); implied K_T (MPa/mm): the K_T whose closed-form u(L) equals the FE mean, given only\n\
+         where the strip theory holds (docs/theory.md (V1)); elsewhere the difference is the strip\n\
+         theory's, not the interface's.\n",
         sanitize(source)
     );
     let _ = writeln!(
         out,
-        "{:>10} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>9}  {:>10}  regime (closed form / FE)",
+        "{:>10} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>9}  {:>16}  regime (closed form / FE)",
         "K_T", "u FE", "u closed", "diff", "face", "mid", "X_r FE", "X_r", "implied K_T"
     );
     for r in rows {
         let row = PlateCompareRow::from(r);
         let _ = writeln!(
             out,
-            "{:>10} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>9}  {:>10}  {} / {}",
+            "{:>10} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>9}  {:>16}  {} / {}",
             number(row.stiffness),
             number(row.u_fe_mm),
             number(row.u_mm),
@@ -258,7 +263,16 @@ pub fn plate_text(source: &str, rows: &[PlateCompared]) -> String {
             row.diff_mid_thickness.map_or("-".into(), percent),
             optional(row.micro_zone_end_fe),
             number(row.micro_zone_end),
-            row.implied_stiffness.map_or("none".into(), number),
+            row.implied_stiffness.map_or_else(
+                || {
+                    if r.strip_validity == crate::model::validity::Validity::Holds {
+                        "none".into()
+                    } else {
+                        format!("({})", r.strip_validity.label())
+                    }
+                },
+                number
+            ),
             row.regime,
             row.regime_fe.unwrap_or("-")
         );

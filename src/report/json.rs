@@ -221,19 +221,34 @@ pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> Value 
     serde_json::json!({ "preset": preset, "element_size_mm": comparison.element, "candidates": rows })
 }
 
-/// The strip theory's envelope (V1) as JSON; the expected difference only where it is calibrated
-/// (alpha t_p <= `calibrated_up_to_alpha_tp`).
+/// The strip theory's envelope (V1) as JSON: the verdict on the thickness-mean u(L) and, where a
+/// calibration reaches, the bound on each quantity (thickness mean, contact face, mid-thickness);
+/// X_r is not bounded.
 pub fn strip_validity(plate: &SqueezedPlate) -> Value {
+    use crate::model::validity as v1;
     let v = plate.validity();
     let mut value = serde_json::json!({
         "validity": v.validity.label(),
+        "validity_covers": "u(L) thickness mean",
         "alpha_tp": v.thickness_over_layer,
-        "calibrated_up_to_alpha_tp": crate::model::validity::CALIBRATED_RATIO,
+        "slip_zone_over_tp": v.slip_over_thickness,
+        "calibrated_up_to_alpha_tp": v1::CALIBRATED_RATIO,
+        "calibrated_from_slip_zone_over_tp": v1::CALIBRATED_SLIP,
+        "calibrated_slip_zone_up_to_alpha_tp": v1::CALIBRATED_RATIO_SLIP,
+        "X_r_bounded": false,
     });
-    if let (Some(error), Value::Object(map)) = (v.expected_error, &mut value) {
+    if let (Some(e), Value::Object(map)) = (v.expected, &mut value) {
         map.insert(
             "expected_difference_from_continuum".into(),
-            serde_json::json!(error),
+            serde_json::json!(e[0]),
+        );
+        map.insert(
+            "expected_difference_contact_face".into(),
+            serde_json::json!(e[1]),
+        );
+        map.insert(
+            "expected_difference_mid_thickness".into(),
+            serde_json::json!(e[2]),
         );
     }
     value

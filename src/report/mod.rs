@@ -111,15 +111,17 @@ pub fn sanitize(text: &str) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
-/// The strip theory's validity in a few words (TUI regime pane, one line of 30 characters):
-/// "holds (~1.6 %)", "approx. (~5.2 %)", "OUTSIDE (>10 %)". The number is the expected difference
-/// from a plane-strain continuum, (V1).
+/// The strip theory's validity in a few words (TUI regime pane, one line of 30 characters), for
+/// the thickness-mean u(L): "mean holds (~1.6 %)", "mean approx. (~5.2 %)", "mean OUTSIDE",
+/// "not calibrated". The number is the expected difference from a plane-strain continuum, (V1).
 pub fn strip_validity_short(v: &crate::model::validity::PlateValidity) -> String {
     use crate::model::validity::Validity;
+    let e = v.expected_error();
     match v.validity {
-        Validity::Holds => format!("holds (~{} %)", percent_of(v.expected_error)),
-        Validity::Approximate => format!("approx. (~{} %)", percent_of(v.expected_error)),
-        Validity::Outside => format!("OUTSIDE (>{} %)", 100.0 * Validity::APPROXIMATE),
+        Validity::Holds => format!("mean holds (~{} %)", percent_of(e)),
+        Validity::Approximate => format!("mean approx. (~{} %)", percent_of(e)),
+        Validity::Outside => format!("mean OUTSIDE (>{} %)", 100.0 * Validity::APPROXIMATE),
+        Validity::NotCalibrated => "not calibrated".to_string(),
     }
 }
 

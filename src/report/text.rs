@@ -214,21 +214,45 @@ fn write_strip_validity(
     continuum: Option<&Result<ContinuumPlate, NumericError>>,
 ) {
     let v = plate.validity();
-    let expected = v.expected_error.map_or_else(
-        || "over 10 % (measured 3 % to 540 % in this range)".to_string(),
-        |e| format!("{} %", number_with(100.0 * e, 2)),
-    );
+    let verdict = match v.validity {
+        Validity::Holds => "holds (within 2 %)",
+        Validity::Approximate => "approximate (within 10 %)",
+        Validity::Outside => "OUTSIDE its envelope: use the continuum values below",
+        Validity::NotCalibrated => {
+            "NOT CALIBRATED here (no bound reaches this plate): use the continuum values below"
+        }
+    };
     let _ = writeln!(
         out,
         "Validity of the strip theory (u uniform through t_p; docs/theory.md (V1))\n  \
-         alpha t_p = t_p / l_s = {}; expected difference from a plane-strain continuum {expected}: {}",
+         alpha t_p = t_p / l_s = {}; slip zone L - X_r = {} t_p\n  \
+         u(L) as the thickness mean: {verdict}",
         number_with(v.thickness_over_layer, 3),
-        match v.validity {
-            Validity::Holds => "holds (within 2 %)",
-            Validity::Approximate => "approximate (within 10 %)",
-            Validity::Outside => "OUTSIDE its envelope: use the continuum values below",
-        }
+        number_with(v.slip_over_thickness, 3),
     );
+    match v.expected {
+        Some(e) => {
+            let _ = writeln!(
+                out,
+                "  expected difference from a plane-strain continuum: thickness mean {} %, \
+                 contact face {} %, mid-thickness {} %; X_r is not bounded (the strip's slip \
+                 zone is too long where the thickness matters)",
+                number_with(100.0 * e[0], 2),
+                number_with(100.0 * e[1], 2),
+                number_with(100.0 * e[2], 2)
+            );
+        }
+        None => {
+            let _ = writeln!(
+                out,
+                "  calibrated for alpha t_p <= {} or a slip zone of at least {} t_p (alpha t_p <= \
+                 {}); measured differences beyond range from under 1 % to 540 %",
+                crate::model::validity::CALIBRATED_RATIO,
+                crate::model::validity::CALIBRATED_SLIP,
+                crate::model::validity::CALIBRATED_RATIO_SLIP
+            );
+        }
+    }
     match continuum {
         Some(Ok(c)) => {
             let u = plate.regularized().end_displacement();

@@ -167,7 +167,7 @@ fn apply(terminal: &mut DefaultTerminal, app: &mut App, event: Event) -> io::Res
         Event::Key(key) if key.kind == KeyEventKind::Press => {
             match keymap::action_for(app.mode().context(), key) {
                 Some(action::Action::Suspend) => {
-                    terminal::suspend(terminal)?;
+                    terminal::suspend(terminal, || true)?;
                     true
                 }
                 Some(action) => {
@@ -197,7 +197,9 @@ fn event_loop(
             Some(signals::Request::Suspend) if signals::Signals::continued_since_stop_request() => {
             }
             Some(signals::Request::Suspend) => {
-                terminal::suspend(terminal)?;
+                terminal::suspend(terminal, || {
+                    !signals::Signals::continued_since_stop_request()
+                })?;
                 terminal.draw(|frame| ui::draw(frame, app))?;
             }
             None => {}

@@ -221,7 +221,8 @@ pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
                         crate::report::strip_validity_short(&plate.validity())
                     ),
                     "the closed forms treat the plate as a strip (u uniform through t_p); this \
-                     says how far a 2-D continuum differs",
+                     says how far a 2-D continuum's thickness-mean u(L) differs (V1); the contact \
+                     face and mid-thickness have their own bounds (microslip plate), X_r none",
                 ),
             ]
         }

@@ -27,11 +27,15 @@ pub fn leave() {
 
 /// Suspends like other full-screen programs: restores the terminal, stops the process (the default
 /// action of SIGTSTP), and once the shell continues it (`fg`), takes the terminal back and clears it
-/// so that the next draw repaints everything.
-pub fn suspend(terminal: &mut DefaultTerminal) -> io::Result<()> {
+/// so that the next draw repaints everything. `still_wanted` is asked once the terminal is restored,
+/// just before stopping: a SIGCONT that arrived meanwhile means the shell has continued the program
+/// already, and stopping then would leave it stopped for good.
+pub fn suspend(terminal: &mut DefaultTerminal, still_wanted: impl Fn() -> bool) -> io::Result<()> {
     leave();
     #[cfg(unix)]
-    signal_hook::low_level::emulate_default_handler(signal_hook::consts::SIGTSTP)?;
+    if still_wanted() {
+        signal_hook::low_level::emulate_default_handler(signal_hook::consts::SIGTSTP)?;
+    }
     enable_raw_mode()?;
     execute!(stdout(), EnterAlternateScreen, EnableBracketedPaste)?;
     // `resize` clears the screen and forgets the last frame, so the next draw repaints it all.
