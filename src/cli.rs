@@ -1473,17 +1473,13 @@ impl<W: Write> ProgressLine<W> {
 }
 
 /// Checks a flag that is not a model parameter against `domain`.
+/// [`Domain::check`] (which also turns -0 into 0) with the flag's name in the refusal.
 fn check_flag(flag: &'static str, value: f64, domain: Domain, unit: Unit) -> Result<f64, CliError> {
-    if domain.contains(value) {
-        // -0 is 0 from here on (never "-0.0" in JSON or a deck header).
-        Ok(value + 0.0)
-    } else {
-        Err(CliError::Flag {
-            flag,
-            value,
-            allowed: domain.refusal(value, unit),
-        })
-    }
+    domain.check(flag, value, unit).map_err(|_| CliError::Flag {
+        flag,
+        value,
+        allowed: domain.refusal(value, unit),
+    })
 }
 
 fn run_cycle(

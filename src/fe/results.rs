@@ -313,34 +313,45 @@ fn complete_block<'a>(
     ))
 }
 
+/// The data lines of a deck, each with its 0-based line index and the keyword card it belongs to
+/// (`*NODE, NSET=NALL`); comments (`**`) and blank lines are skipped, as are data lines before any
+/// keyword.
+fn deck_data_lines(deck: &str) -> impl Iterator<Item = (usize, &str, &str)> {
+    let mut keyword = None;
+    deck.lines().enumerate().filter_map(move |(index, line)| {
+        let trimmed = line.trim();
+        if trimmed.starts_with("**") || trimmed.is_empty() {
+            return None;
+        }
+        if trimmed.starts_with('*') {
+            keyword = Some(trimmed);
+            return None;
+        }
+        keyword.map(|card| (index, card, trimmed))
+    })
+}
+
+/// The keyword of a card (`*NODE` of `*NODE, NSET=NALL`) is `name`, in any case.
+fn card_is(card: &str, name: &str) -> bool {
+    card.split(',')
+        .next()
+        .is_some_and(|k| k.trim().eq_ignore_ascii_case(name))
+}
+
 /// The node sets a deck defines (`*NSET, NSET=NAME` then node numbers), by upper-case name.
 fn parse_node_sets(deck: &str) -> HashMap<String, Vec<usize>> {
     let mut found: HashMap<String, Vec<usize>> = HashMap::new();
-    let mut current: Option<String> = None;
-    for line in deck.lines() {
-        let trimmed = line.trim();
-        if trimmed.starts_with("**") || trimmed.is_empty() {
-            continue;
-        }
-        if trimmed.starts_with('*') {
-            current = None;
-            let mut fields = trimmed.split(',').map(str::trim);
-            if fields
-                .next()
-                .is_some_and(|k| k.eq_ignore_ascii_case("*NSET"))
-            {
-                current = fields
-                    .filter_map(|f| f.split_once('='))
-                    .find(|(k, _)| k.trim().eq_ignore_ascii_case("NSET"))
-                    .map(|(_, name)| name.trim().to_ascii_uppercase());
-            }
-            continue;
-        }
-        if let Some(name) = &current {
-            let ids = trimmed
+    for (_, card, data) in deck_data_lines(deck).filter(|(_, card, _)| card_is(card, "*NSET")) {
+        let name = card
+            .split(',')
+            .filter_map(|f| f.split_once('='))
+            .find(|(k, _)| k.trim().eq_ignore_ascii_case("NSET"))
+            .map(|(_, name)| name.trim().to_ascii_uppercase());
+        if let Some(name) = name {
+            let ids = data
                 .split(',')
                 .filter_map(|f| f.trim().parse::<usize>().ok());
-            found.entry(name.clone()).or_default().extend(ids);
+            found.entry(name).or_default().extend(ids);
         }
     }
     found
@@ -502,20 +513,7 @@ fn parse_dat(text: &str) -> Result<Vec<DatBlock>, ResultsError> {
 /// The node coordinates of a deck's `*NODE` sections (mm).
 fn parse_nodes(deck: &str) -> Result<HashMap<usize, [f64; 3]>, ResultsError> {
     let mut nodes = HashMap::new();
-    let mut in_nodes = false;
-    for (index, line) in deck.lines().enumerate() {
-        let trimmed = line.trim();
-        if trimmed.starts_with("**") || trimmed.is_empty() {
-            continue;
-        }
-        if trimmed.starts_with('*') {
-            let keyword = trimmed.split(',').next().unwrap_or("").trim();
-            in_nodes = keyword.eq_ignore_ascii_case("*NODE");
-            continue;
-        }
-        if !in_nodes {
-            continue;
-        }
+    for (index, _, trimmed) in deck_data_lines(deck).filter(|(_, card, _)| card_is(card, "*NODE")) {
         let fail = |problem: String| ResultsError::Line {
             line: index + 1,
             problem: format!("deck: {problem}"),

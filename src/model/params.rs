@@ -342,6 +342,22 @@ impl fmt::Display for Compact {
     }
 }
 
+/// A computed number in a message, rounded to `digits` significant digits and written as
+/// [`Compact`] writes it ("1.714", "1.75e10", "0.0952381"): not the 17 digits of a round trip.
+///
+/// # Examples
+/// ```
+/// use microslip::model::params::significant;
+/// assert_eq!(significant(0.09523809306122456, 6), "0.0952381");
+/// assert_eq!(significant(1.75e10, 4), "1.75e10");
+/// ```
+pub fn significant(x: f64, digits: usize) -> String {
+    let rounded: f64 = format!("{x:.*e}", digits.saturating_sub(1))
+        .parse()
+        .unwrap_or(x);
+    Compact(rounded).to_string()
+}
+
 /// A rejected value as a message echoes it: [`Compact`], except that a number too large for an f64
 /// (typed `1e400`, which parses as infinity) is not echoed as "inf", which nobody typed.
 struct Echo(f64);

@@ -20,18 +20,8 @@ use thiserror::Error;
 
 use super::cycle::{Cycle, Law};
 use super::inputs::Model;
-use super::params::{Compact, ModelKind, Param, parse_number};
+use super::params::{Compact, ModelKind, Param, parse_number, significant};
 use super::solve::find_root_in_bracket;
-
-/// A computed value in a message: six significant digits, not the 17 of a round trip.
-struct Six(f64);
-
-impl std::fmt::Display for Six {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let rounded: f64 = format!("{:.5e}", self.0).parse().unwrap_or(self.0);
-        Compact(rounded).fmt(f)
-    }
-}
 
 /// Grid points of the scan for brackets.
 pub const SCAN_POINTS: usize = 400;
@@ -279,8 +269,8 @@ pub enum TargetError {
     #[error(
         "no {param} in [{}, {}]{unit} gives {quantity} = {}{quantity_unit}: over that range \
          {quantity} goes from {}{quantity_unit} to {}{quantity_unit} (min {}{quantity_unit}, max {}{quantity_unit})",
-        Compact(range.0), Compact(range.1), Compact(*target), Six(ends.0), Six(ends.1),
-        Six(extremes.0), Six(extremes.1)
+        Compact(range.0), Compact(range.1), Compact(*target), significant(ends.0, 6),
+        significant(ends.1, 6), significant(extremes.0, 6), significant(extremes.1, 6)
     )]
     NoRoot {
         /// The parameter's key.

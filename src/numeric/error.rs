@@ -28,6 +28,5 @@ pub enum NumericError {
 
 /// A number in a message, to four significant digits ("1.714", "1.75e10", "5.385e-7").
 pub(crate) fn short(x: f64) -> String {
-    let rounded: f64 = format!("{x:.3e}").parse().unwrap_or(x);
-    crate::model::params::Compact(rounded).to_string()
+    crate::model::params::significant(x, 4)
 }
