@@ -468,6 +468,12 @@ impl App {
         &self.plot
     }
 
+    /// Says why Ctrl-Z did nothing: the kernel discards a stop in a process group that no
+    /// job-control shell leads (`ssh host microslip`, `sh -c`), since nothing could resume it.
+    pub fn suspend_ignored(&mut self) {
+        self.error("Not suspended: no job-control shell here could resume microslip (q quits)");
+    }
+
     fn info(&mut self, text: impl Into<String>) {
         self.message = Some(Message {
             text: text.into(),

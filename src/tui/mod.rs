@@ -7,7 +7,8 @@
 //! - A reader thread turns terminal input into events. The loop applies every queued event, for
 //!   up to [`BATCH`] at a time, then draws once, so a storm of keys costs one frame per batch.
 //! - Signals are looked at between any two events and at least every [`TICK`]. SIGTERM, SIGHUP
-//!   and SIGINT restore the terminal and exit with 128 + the signal; SIGTSTP and Ctrl-Z suspend.
+//!   and SIGINT restore the terminal and exit with 128 + the signal; SIGTSTP and Ctrl-Z suspend
+//!   (where a shell with job control can resume the program; see [`signals`]).
 //! - A terminal that hung up (a dropped link, a killed pane) ends the program within a tick, even
 //!   if no SIGHUP arrives.
 //! - Pastes arrive as text (bracketed paste). The mouse is not captured. A panic restores the
@@ -162,13 +163,15 @@ fn spawn_reader() -> Receiver<io::Result<Event>> {
 }
 
 /// Applies one event; true when the screen must be redrawn.
-fn apply(terminal: &mut DefaultTerminal, app: &mut App, event: Event) -> io::Result<bool> {
-    Ok(match event {
+fn apply(app: &mut App, event: Event) -> bool {
+    match event {
         Event::Key(key) if key.kind == KeyEventKind::Press => {
             match keymap::action_for(app.mode().context(), key) {
+                // Like the terminal's own Ctrl-Z: the loop acts on the SIGTSTP once this batch
+                // is over.
                 Some(action::Action::Suspend) => {
-                    terminal::suspend(terminal, || true)?;
-                    true
+                    signals::request_suspend();
+                    false
                 }
                 Some(action) => {
                     app.update(action);
@@ -180,7 +183,7 @@ fn apply(terminal: &mut DefaultTerminal, app: &mut App, event: Event) -> io::Res
         Event::Paste(text) => app.paste(&text),
         Event::Resize(..) => true,
         _ => false,
-    })
+    }
 }
 
 fn event_loop(
@@ -193,13 +196,10 @@ fn event_loop(
     loop {
         match signals.take() {
             Some(signals::Request::Terminate(signal)) => return Ok(Exit::Signal(signal)),
-            // A SIGCONT after the SIGTSTP voids it: the shell has continued us already.
-            Some(signals::Request::Suspend) if signals::Signals::continued_since_stop_request() => {
-            }
             Some(signals::Request::Suspend) => {
-                terminal::suspend(terminal, || {
-                    !signals::Signals::continued_since_stop_request()
-                })?;
+                if terminal::suspend(terminal)? == signals::Suspended::Ignored {
+                    app.suspend_ignored();
+                }
                 terminal.draw(|frame| ui::draw(frame, app))?;
             }
             None => {}
@@ -220,7 +220,7 @@ fn event_loop(
             let Ok(event) = event else {
                 return Ok(Exit::HangUp);
             };
-            redraw |= apply(terminal, app, event)?;
+            redraw |= apply(app, event);
             if app.should_quit() {
                 return Ok(Exit::Quit);
             }

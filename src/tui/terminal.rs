@@ -10,6 +10,8 @@ use ratatui::crossterm::execute;
 use ratatui::crossterm::terminal::{EnterAlternateScreen, enable_raw_mode};
 use ratatui::layout::Rect;
 
+use super::signals;
+
 /// Enters raw mode, the alternate screen and bracketed paste (so that a paste arrives as text, not
 /// as keys).
 pub fn enter() -> io::Result<DefaultTerminal> {
@@ -25,24 +27,22 @@ pub fn leave() {
     let _ = ratatui::try_restore();
 }
 
-/// Suspends like other full-screen programs: restores the terminal, stops the process (the default
-/// action of SIGTSTP), and once the shell continues it (`fg`), takes the terminal back and clears it
-/// so that the next draw repaints everything. `still_wanted` is asked once the terminal is restored,
-/// just before stopping: a SIGCONT that arrived meanwhile means the shell has continued the program
-/// already, and stopping then would leave it stopped for good.
-pub fn suspend(terminal: &mut DefaultTerminal, still_wanted: impl Fn() -> bool) -> io::Result<()> {
+/// Suspends like other full-screen programs: restores the terminal, lets the pending SIGTSTP take
+/// its default action (the process stops inside `signals::suspend_now`), and once it runs again
+/// takes the terminal back and clears it so that the next draw repaints everything. The kernel,
+/// not this function, decides whether the stop happens (see the `signals` module): `Ignored` means the
+/// process group is orphaned, with no shell that could resume it.
+pub fn suspend(terminal: &mut DefaultTerminal) -> io::Result<signals::Suspended> {
     leave();
-    #[cfg(unix)]
-    if still_wanted() {
-        signal_hook::low_level::emulate_default_handler(signal_hook::consts::SIGTSTP)?;
-    }
+    let outcome = signals::suspend_now()?;
     enable_raw_mode()?;
     execute!(stdout(), EnterAlternateScreen, EnableBracketedPaste)?;
     // `resize` clears the screen and forgets the last frame, so the next draw repaints it all.
     // (`clear` would ask the terminal for the cursor position, an answer that the reader thread,
     // not this one, would receive.)
     let size = terminal.size()?;
-    terminal.resize(Rect::new(0, 0, size.width, size.height))
+    terminal.resize(Rect::new(0, 0, size.width, size.height))?;
+    Ok(outcome)
 }
 
 /// True when the terminal on standard input has hung up (its other end closed: a dropped SSH link,
