@@ -2,7 +2,9 @@
 
 use divan::{Bencher, black_box};
 use microslip::fit::{Measurement, fit_twin_beams};
-use microslip::numeric::{ContinuumMesh, MeshDensity, PlateFe, TwinBeamsFe, solve_plate_continuum};
+use microslip::numeric::MeshDensity;
+use microslip::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
+use microslip::problems::twin_beams::TwinBeamsFe;
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
 fn main() {

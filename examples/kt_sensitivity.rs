@@ -8,7 +8,7 @@
 //! cargo run --example kt_sensitivity --no-default-features
 //! ```
 
-use microslip::curves::{Samples, Spacing};
+use microslip::study::curves::{Samples, Spacing};
 use microslip::{ParamError, TipForce, TwinBeams, TwinBeamsParams};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

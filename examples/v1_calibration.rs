@@ -8,7 +8,7 @@
 //! cargo run --release --example v1_calibration --no-default-features
 //! ```
 
-use microslip::numeric::plate_continuum::{ContinuumMesh, solve_plate_continuum};
+use microslip::problems::plate::continuum::{ContinuumMesh, solve_plate_continuum};
 use microslip::{PlateParams, SqueezedPlate};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

@@ -1,6 +1,6 @@
 //! The headless command line: reports, sweeps and presets for scripts and FE benchmarking.
 //!
-//! A thin layer: presets and `--set` come from [`crate::preset`], numbers from [`crate::curves`],
+//! A thin layer: presets and `--set` come from [`crate::preset`], numbers from [`crate::study::curves`],
 //! formats from [`crate::report`]; this file only parses flags, checks the flags that are not model
 //! parameters, and names flags in error messages. Errors are one line on stderr with exit code 2 (usage or input
 //! problems); `check` exits with 1 when a file has problems. Nothing goes to stdout before the inputs
@@ -14,27 +14,25 @@ use std::time::{Duration, Instant};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use thiserror::Error;
 
-use crate::curves::{self, RangeError, Samples, Spacing};
 use crate::fe;
 use crate::fe::deck::{self, DeckMesh};
 use crate::fe::header::StickSlope;
 use crate::fe::load::LoadError;
 use crate::fit::{self, FitError};
-use crate::model::inputs::{Inputs, Model};
-use crate::model::params::{
-    BeamParam, Compact, Domain, ModelKind, Param, ParamError, PlateParam, Unit, UnknownParam,
-    parse_number,
-};
-use crate::model::target::{Target, TargetError, solve_for_target};
-use crate::model::twin_beams::BeamTheory;
+use crate::kernel::params::{Compact, Domain, ParamError, Unit, parse_number};
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
+use crate::problems::inputs::{Inputs, Model};
+use crate::problems::twin_beams::closed_form::BeamTheory;
+use crate::problems::{BeamParam, ModelKind, Param, PlateParam, UnknownParam};
 use crate::report::chart::YMode;
 use crate::report::figure::{self, FigureError};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
 use crate::report::table::{TableFormat, write_json, write_table, write_table_after};
 use crate::report::view::AnyChart;
 use crate::report::{self, json, text};
+use crate::study::curves::{self, RangeError, Samples, Spacing};
+use crate::study::target::{Target, TargetError, solve_for_target};
 use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
 use crate::{TipForce, TwinBeams};
@@ -719,11 +717,11 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             let (name, model) = load(&args.inputs, ModelKind::Plate, "plate")?;
             if let Model::Plate(plate) = model {
                 let solved = (*continuum
-                    || plate.validity().validity != crate::model::validity::Validity::Holds)
+                    || plate.validity().validity != crate::kernel::validity::Validity::Holds)
                     .then(|| {
-                        crate::numeric::solve_plate_continuum(
+                        crate::problems::plate::solve_plate_continuum(
                             plate.params(),
-                            crate::numeric::ContinuumMesh::default(),
+                            crate::problems::plate::ContinuumMesh::default(),
                         )
                     });
                 match args.format {
@@ -1527,7 +1525,7 @@ fn run_kt_tolerance(
     [from, to]: [Option<f64>; 2],
     format: ReportFormat,
 ) -> Result<(), CliError> {
-    use crate::model::tolerance::{self, parse_tolerance};
+    use crate::study::tolerance::{self, parse_tolerance};
     let tol = parse_tolerance(tolerance).map_err(CliError::Invalid)?;
     let (name, model) = load_any(inputs, ModelKind::Beam)?;
     let element = element_size(element, &model)?;

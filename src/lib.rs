@@ -1,30 +1,37 @@
-//! microslip: closed-form solutions of two friction benchmarks (Ligier & Bonhote, 2014) under the
-//! plain and the regularized Coulomb law.
+//! microslip: closed-form solutions of friction benchmarks (the two of Ligier & Bonhote, 2014:
+//! twin beams and a squeezed plate) under the plain and the regularized Coulomb law.
 //!
 //! Units everywhere: mm, N, MPa; tangential stiffness K_T in MPa/mm.
 //!
 //! # Layers
-//! Data flows one way; no module imports one above it:
+//! Data flows one way, lowest first; `tests/layering.rs` reads every `crate::` path of the shipped
+//! code and fails on an edge that runs up or sideways:
 //!
 //! ```text
-//! preset (TOML) / --set / keys -> model::inputs::Inputs (typed model::params::Param)
-//!   -> model (checked constructors, closed forms)   <- numeric (independent FE) <- verify
-//!   -> curves (the only loops over parameters)      <- fit (identification)
-//!   -> report (text, CSV, JSON; views)  -> cli | tui   (feature `app`)
+//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- fe <- report <- tui <- cli
 //! ```
 //!
-//! - [`model`]: pure physics. Typed parameters ([`model::params`]: key, unit, domain, step), inputs
-//!   and validated models ([`model::inputs`]), the closed forms, cyclic loading, K_T helpers, FE
-//!   code defaults, solving any parameter for a target value of a quantity
-//!   ([`model::target`]) and the smallest K_T within a tolerance of Coulomb
-//!   ([`model::tolerance`]). No I/O.
-//! - [`numeric`]: finite-element solvers that never call the closed forms.
-//! - [`verify`]: the only place that calls both, returning the worst cases as data.
-//! - [`curves`]: sweeps, the hysteresis loop and the K_T comparison, computed once for every output.
+//! - [`kernel`]: what no problem owns: typed parameters (units, domains, the error that names a
+//!   field, its value and its range), number formatting shared by every output, overflow-free
+//!   hyperbolic functions, certified root finding, regimes, validity verdicts, and the FE codes'
+//!   default friction penalties (data about K_T). No I/O.
+//! - [`mod@file`]: reading a file a user named (a size cap, never blocking) and writing one without
+//!   clobbering it; the lowest layer beside the kernel.
+//! - [`numeric`]: problem-agnostic finite-element kernels (meshes, elements, banded Cholesky, the
+//!   Jenkins interface point, Newton with load stepping).
+//! - [`problems`]: one folder per benchmark ([`problems::twin_beams`], [`problems::plate`]) with its
+//!   parameters, closed forms, validity envelope and independent discretized solver; the closed
+//!   forms and the discretized solvers never import each other (the layering test checks it), so
+//!   their agreement proves something. [`problems::ModelKind`] lists the problems and
+//!   [`problems::inputs`] holds the inputs and validated models of any of them.
+//! - [`study`]: sweeps, families and loops over any parameter, solving for a target value, the
+//!   smallest K_T within a tolerance of Coulomb.
 //! - [`fit`]: identification of mu and K_T, with structured evidence (no prose).
+//! - [`verify`]: the only place that calls both the closed forms and the discretized solvers,
+//!   returning the worst cases as data.
 //! - [`preset`]: TOML parse and write, and the file store (atomic, no clobber).
-//! - [`file`]: reading a file a user named, with a size cap (presets, measurements); below
-//!   `preset` and `fit`, above nothing.
+//! - [`fe`]: decks for CalculiX (Abaqus keyword syntax), result readers, the comparison of an FE
+//!   code's answer with the closed forms (it uses [`fit`] for the implied K_T, so it sits above it).
 //! - [`report`]: every format, from one serde row per table; what views exist ([`report::view`]);
 //!   the series of every chart ([`report::chart`], drawn by the TUI and by the SVG figures of
 //!   `report::figure`, behind the feature `figures`, on by default through `app`).
@@ -32,10 +39,12 @@
 //!   parse flags or keys, call the library and hand the results to `report` or the screen. With
 //!   `default-features = false` none of clap, ratatui, crossterm or signal-hook is compiled.
 //!
-//! Beside `ARCHITECTURE.md`'s plan: `model/` also holds `cycle.rs` (cyclic loading is a closed form
-//! of the same model) and `code_defaults.rs` (FE codes' default friction penalties are data about
-//! K_T); `verify.rs` sits at the top level because it is neither physics nor I/O; chart and table
-//! enums live in `report::view` so that figure exports can name views the way the TUI does.
+//! Beside the plan in `ARCHITECTURE.md` (a design note kept outside this repository): `study`
+//! still holds some per-problem sampling functions (`study::curves`) and `report` still builds the
+//! chart series; `verify` sits at the top level because it calls both sides of every problem and
+//! is neither physics nor I/O; chart and table enums live in `report::view` so that figure exports
+//! can name views the way the TUI does; `cli` sits above `tui` because `microslip` with no
+//! command starts the TUI.
 //!
 //! # Example
 //! ```
@@ -49,23 +58,27 @@
 #[cfg(feature = "app")]
 #[doc(hidden)]
 pub mod cli;
-pub mod curves;
 pub mod fe;
 pub mod file;
 pub mod fit;
-pub mod model;
+pub mod kernel;
 pub mod numeric;
 pub mod preset;
+pub mod problems;
 pub mod report;
+pub mod study;
 #[cfg(feature = "app")]
 #[doc(hidden)]
 pub mod tui;
 pub mod verify;
 
-pub use model::inputs::{Inputs, Model};
-pub use model::params::{BeamParam, ModelKind, Param, ParamError, PlateParam, Unit};
-pub use model::plate::{
+pub use kernel::params::{ParamError, Unit};
+pub use kernel::regime::Regime;
+pub use problems::inputs::{Inputs, Model};
+pub use problems::plate::closed_form::{
     ContactPressure, CoulombPlate, PlateParams, RegularizedPlate, SqueezedPlate,
 };
-pub use model::regime::Regime;
-pub use model::twin_beams::{CoulombBeams, RegularizedBeams, TipForce, TwinBeams, TwinBeamsParams};
+pub use problems::twin_beams::closed_form::{
+    CoulombBeams, RegularizedBeams, TipForce, TwinBeams, TwinBeamsParams,
+};
+pub use problems::{BeamParam, ModelKind, Param, PlateParam};

@@ -3,7 +3,9 @@
 //! solvers in [`crate::numeric`] never see a closed form. Results are data (the worst case of each
 //! quantity); the table for people is written by the `report` module.
 
-use crate::numeric::{MeshDensity, NumericError, PlateFe, TwinBeamsFe};
+use crate::numeric::{MeshDensity, NumericError};
+use crate::problems::plate::PlateFe;
+use crate::problems::twin_beams::TwinBeamsFe;
 use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
 /// Default tolerance on every relative error (the target of the numerical-solver issue).

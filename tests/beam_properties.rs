@@ -355,7 +355,7 @@ fn every_corner_of_the_domain_gives_finite_physical_numbers() {
 /// I = b (4h)^3 / 12, written out here by hand. Soft interface: two free beams of height 2h under F.
 #[test]
 fn timoshenko_deflection_matches_hand_derived_limits() {
-    use microslip::model::twin_beams::BeamTheory;
+    use microslip::problems::twin_beams::closed_form::BeamTheory;
     let p = TwinBeamsParams {
         tangential_stiffness: 1e12,
         poisson: 0.25,

@@ -127,7 +127,7 @@ fn the_strip_theory_holds_for_a_soft_interface_and_fails_at_the_papers_stiffness
     assert_eq!(row.implied_stiffness, None);
     assert_ne!(
         row.strip_validity,
-        microslip::model::validity::Validity::Holds
+        microslip::kernel::validity::Validity::Holds
     );
     assert!(
         plate
@@ -165,7 +165,8 @@ fn the_timoshenko_option_brings_the_paper_beams_within_one_percent_of_calculix()
     let Model::Beam { beams, .. } = loaded.header.unwrap().model().unwrap() else {
         panic!("a beam deck")
     };
-    let timoshenko = beams.with_theory(microslip::model::twin_beams::BeamTheory::Timoshenko);
+    let timoshenko =
+        beams.with_theory(microslip::problems::twin_beams::closed_form::BeamTheory::Timoshenko);
     for point in &loaded.points {
         let force = TipForce::new(point.force).unwrap();
         let euler = beams.regularized(force).tip_deflection();
@@ -188,7 +189,7 @@ fn the_timoshenko_option_brings_the_paper_beams_within_one_percent_of_calculix()
 /// ones (h/L = 1/5), where Euler-Bernoulli is 17-30 % too stiff.
 #[test]
 fn calculix_beams_stay_within_the_stated_envelope() {
-    use microslip::model::twin_beams::BeamTheory;
+    use microslip::problems::twin_beams::closed_form::BeamTheory;
     for file in ["paper-beams.dat", "slender-beams.dat", "stubby-beams.dat"] {
         let loaded = beam_results(&fixture(file), None).unwrap();
         let Model::Beam { beams, .. } = loaded.header.unwrap().model().unwrap() else {

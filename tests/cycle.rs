@@ -2,8 +2,9 @@
 //! finite-element solver driven through the same cycle, the Coulomb closed form derived from friction
 //! work, the K_T -> infinity limit, and the amplitude exponents.
 
-use microslip::model::cycle::{Cycle, Law};
-use microslip::numeric::{MeshDensity, TwinBeamsFe};
+use microslip::numeric::MeshDensity;
+use microslip::problems::twin_beams::TwinBeamsFe;
+use microslip::problems::twin_beams::cycle::{Cycle, Law};
 use microslip::{TipForce, TwinBeams, TwinBeamsParams};
 
 fn beams(kt: f64) -> TwinBeams {

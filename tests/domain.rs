@@ -9,9 +9,10 @@
 //! numbers (P_r/P, zeta) not at all. The dimensionless groups the closed forms depend on, k L,
 //! alpha L, alpha l, F / F_thre, are unchanged, so the regimes are too.
 
-use microslip::model::cycle::{Cycle, Law};
-use microslip::model::params::{BeamParam, Domain, PlateParam};
-use microslip::model::twin_beams::BeamTheory;
+use microslip::kernel::params::Domain;
+use microslip::problems::twin_beams::closed_form::BeamTheory;
+use microslip::problems::twin_beams::cycle::{Cycle, Law};
+use microslip::problems::{BeamParam, PlateParam};
 use microslip::{PlateParams, Regime, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 use proptest::prelude::*;
 

@@ -2,8 +2,8 @@
 //! force over the closed forms (plain bisection written here, with its own force grid) and the
 //! monotonicity it relies on (docs/theory.md, (T1)).
 
-use microslip::model::params::{BeamParam, PlateParam};
-use microslip::model::tolerance::{
+use microslip::problems::{BeamParam, PlateParam};
+use microslip::study::tolerance::{
     Threshold, ToleranceError, beam_stiffness_for_tolerance, parse_tolerance,
     plate_stiffness_for_tolerance,
 };
@@ -129,7 +129,7 @@ fn the_plate_threshold_matches_brute_force() {
 
 #[test]
 fn code_settings_give_at_least_the_stiffness_needed() {
-    use microslip::model::tolerance::Setting;
+    use microslip::study::tolerance::Setting;
     let answer = beam_stiffness_for_tolerance(&paper_beams(), [100.0, 100.0], 0.01, 2.0).unwrap();
     let kt = found(answer.threshold);
     let mu_p = 0.3 * 1.0;

@@ -4,7 +4,9 @@
 mod common;
 
 use common::{reference_rows, relative_error};
-use microslip::numeric::{MeshDensity, PlateFe, TwinBeamsFe};
+use microslip::numeric::MeshDensity;
+use microslip::problems::plate::PlateFe;
+use microslip::problems::twin_beams::TwinBeamsFe;
 use microslip::verify::{self, Grid};
 use microslip::{PlateParams, Regime, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 use proptest::prelude::*;

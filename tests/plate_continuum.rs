@@ -4,8 +4,9 @@
 use std::path::PathBuf;
 
 use microslip::fe::load::plate_results;
-use microslip::model::validity::{PLATE_QUANTITIES, Validity};
-use microslip::numeric::{ContinuumMesh, solve_plate_continuum};
+use microslip::kernel::validity::Validity;
+use microslip::problems::plate::validity::PLATE_QUANTITIES;
+use microslip::problems::plate::{ContinuumMesh, solve_plate_continuum};
 use microslip::{Model, PlateParams, SqueezedPlate};
 
 fn fixture(name: &str) -> PathBuf {

@@ -306,7 +306,7 @@ fn short_thick_plates_solve_the_plate_equation_too() {
         (0.05, 1.0, 0.3, 0.3),
         (1e-3, 0.5, 0.3, 10.0),
         // nu small but not 0: at nu = 0 no friction acts and the pressure is P everywhere (the
-        // saturated-friction equation checked here does not apply; src/model/plate.rs tests it).
+        // saturated-friction equation checked here does not apply; src/problems/plate/closed_form.rs tests it).
         (1e-5, 100.0, 1e-3, 1.0),
         (2.0, 1e3, 0.49, 0.05),
     ] {
@@ -450,7 +450,7 @@ fn end_displacement_falls_strictly_with_tangential_stiffness() {
 /// mean deviation stays small.
 #[test]
 fn constant_pressure_flag_bounds_the_peak_and_flips_at_its_limit() {
-    use microslip::model::plate::PRESSURE_PEAK_LIMIT;
+    use microslip::problems::plate::closed_form::PRESSURE_PEAK_LIMIT;
     let plate = |mu: f64| {
         SqueezedPlate::new(PlateParams {
             friction: mu,

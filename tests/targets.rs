@@ -2,10 +2,10 @@
 //! thresholds inverted by hand, and brute-force bisection written here on the public solution
 //! methods (not on the solver under test).
 
-use microslip::curves::{Samples, Spacing, beam_param_sweep, plate_param_sweep};
-use microslip::model::inputs::{Inputs, Model};
-use microslip::model::params::{BeamParam, ModelKind, Param, PlateParam};
-use microslip::model::target::{Target, TargetError, solve_for_target};
+use microslip::problems::inputs::{Inputs, Model};
+use microslip::problems::{BeamParam, ModelKind, Param, PlateParam};
+use microslip::study::curves::{Samples, Spacing, beam_param_sweep, plate_param_sweep};
+use microslip::study::target::{Target, TargetError, solve_for_target};
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
 /// Plain bisection of a sign change of `f` on [lo, hi] in log space, 200 halvings.

@@ -8,9 +8,9 @@
 
 use super::results::{BeamFePoint, FeInterface, PlateFePoint};
 use crate::fit::{self, FitError, FitResult, Measurement};
-use crate::model::regime::Regime;
-use crate::model::twin_beams::BeamTheory;
-use crate::model::validity::Validity;
+use crate::kernel::regime::Regime;
+use crate::kernel::validity::Validity;
+use crate::problems::twin_beams::closed_form::BeamTheory;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// One FE point of the beams beside the closed forms.

@@ -20,7 +20,7 @@ use thiserror::Error;
 
 use super::header::{DeckHeader, StickSlope};
 use super::mesh::{Block, Face, graded_toward_end, graded_toward_end_count, uniform};
-use crate::model::params::Compact;
+use crate::kernel::params::Compact;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// How fine the deck's mesh is. `Fine` halves every element size of `Coarse`: running both is the

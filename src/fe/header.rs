@@ -5,11 +5,10 @@
 use std::fmt::Write as _;
 
 use super::deck::DeckMesh;
-use crate::model::inputs::Inputs;
-use crate::model::params::{
-    BeamParam, Compact, Domain, ModelKind, Param, PlateParam, Unit, parse_number,
-};
-use crate::report::number;
+use crate::kernel::format::number;
+use crate::kernel::params::{Compact, Domain, Unit, parse_number};
+use crate::problems::inputs::Inputs;
+use crate::problems::{BeamParam, ModelKind, Param, PlateParam};
 use crate::{Model, SqueezedPlate, TipForce, TwinBeams};
 
 /// The prefix of the machine-readable header line.
@@ -192,8 +191,9 @@ impl DeckHeader {
             Model::Beam { beams, .. } => {
                 // The columns are Euler-Bernoulli whatever theory the preset chose: "+ shear"
                 // adds the shear deflection once (a Timoshenko model's w(L) already holds it).
-                let beams =
-                    &beams.with_theory(crate::model::twin_beams::BeamTheory::EulerBernoulli);
+                let beams = &beams.with_theory(
+                    crate::problems::twin_beams::closed_form::BeamTheory::EulerBernoulli,
+                );
                 let _ = writeln!(
                     text,
                     "** Expected from the closed forms (Euler-Bernoulli, the paper's model; \"+ shear\"\n\
@@ -372,7 +372,7 @@ mod tests {
 
     #[test]
     fn a_timoshenko_preset_expects_the_shear_deflection_once() {
-        use crate::model::twin_beams::BeamTheory;
+        use crate::problems::twin_beams::closed_form::BeamTheory;
         let euler = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
         let timoshenko = euler.with_theory(BeamTheory::Timoshenko);
         let loads = [TipForce::new(40.0).unwrap()];

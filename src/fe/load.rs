@@ -10,7 +10,7 @@ use super::results::{
     BeamFePoint, CcxRun, PlateFePoint, ResultsError, beam_points_from_csv, plate_points_from_csv,
 };
 use crate::file::{Kinds, Size, read_capped};
-use crate::model::params::ModelKind;
+use crate::problems::ModelKind;
 
 /// Largest result file read (256 MiB): a `.dat` of a fine deck is a few MB.
 pub const MAX_RESULT_SIZE: Size = Size(256 << 20);

@@ -11,9 +11,9 @@ use thiserror::Error;
 use super::deck::sets;
 use super::header::DeckHeader;
 use crate::fit::data::{self, Curve, MEASURED_DEFLECTION};
-use crate::model::inputs::Inputs;
-use crate::model::params::{Compact, Domain, Unit};
-use crate::model::regime::Regime;
+use crate::kernel::params::{Compact, Domain, Unit};
+use crate::kernel::regime::Regime;
+use crate::problems::inputs::Inputs;
 
 /// What is wrong with an FE result file.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]

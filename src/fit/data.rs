@@ -10,7 +10,7 @@ use std::path::Path;
 use thiserror::Error;
 
 use crate::file::{Kinds, ReadError, Size, read_capped};
-use crate::model::params::{Compact, Domain, Unit};
+use crate::kernel::params::{Compact, Domain, Unit};
 
 /// One measurement: tip force (N) and tip deflection (mm).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -26,7 +26,7 @@ use thiserror::Error;
 
 pub use data::{DataError, Measurement};
 
-use crate::model::params::ParamError;
+use crate::kernel::params::ParamError;
 use crate::{TipForce, TwinBeams, TwinBeamsParams};
 
 /// Search range of mu (-) and K_T (MPa/mm): wide enough for any real interface.

@@ -28,5 +28,5 @@ pub enum NumericError {
 
 /// A number in a message, to four significant digits ("1.714", "1.75e10", "5.385e-7").
 pub(crate) fn short(x: f64) -> String {
-    crate::model::params::significant(x, 4)
+    crate::kernel::params::significant(x, 4)
 }

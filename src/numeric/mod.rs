@@ -1,18 +1,16 @@
-//! Independent discretized solvers that never call the closed forms: the project's own proof that
+//! Problem-agnostic finite-element kernels: graded meshes, element ingredients, a banded Cholesky
+//! solver, the Jenkins interface point with its return mapping, and load stepping with Newton
+//! iterations. Each problem's own discretized solver (`problems::*::discretized`, the plate's
+//! `continuum`) is built on them and never calls the closed forms: the project's own proof that
 //! the analytical core is right (see `microslip verify` and `docs/theory.md`, "Numerical solver").
 
-mod banded;
-pub mod beams;
-mod elements;
+pub(crate) mod banded;
+pub(crate) mod elements;
 mod error;
-mod interface;
+pub(crate) mod interface;
 pub(crate) mod mesh;
-mod newton;
-pub mod plate;
-pub mod plate_continuum;
+pub(crate) mod newton;
 
-pub use beams::{InterfaceSample, TwinBeamsFe};
 pub use error::NumericError;
+pub(crate) use error::short;
 pub use mesh::MeshDensity;
-pub use plate::PlateFe;
-pub use plate_continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};

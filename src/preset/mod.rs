@@ -1,7 +1,7 @@
 //! Presets: named parameter sets in TOML, bundled in the binary or saved by the user.
 //!
 //! One file per preset, flat keys named as users write them (the keys of
-//! [`crate::model::params`]), plus `model` and an optional `description`. Missing parameter keys take
+//! [`crate::kernel::params`]), plus `model` and an optional `description`. Missing parameter keys take
 //! the paper's value for that model, so a preset can say only what it changes; unknown keys are
 //! errors (a typo such as `Kt` must not silently fall back to a default).
 //!
@@ -18,8 +18,9 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
-use crate::model::inputs::Inputs;
-use crate::model::params::{ModelKind, ParamError, UnknownParam};
+use crate::kernel::params::ParamError;
+use crate::problems::inputs::Inputs;
+use crate::problems::{ModelKind, UnknownParam};
 
 pub use parse::apply_assignment;
 pub use store::{SaveError, save_atomic, user_preset_dir, user_presets};
@@ -286,7 +287,7 @@ pub fn listing(user_dir: Option<&Path>) -> Vec<Listed> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::params::{BeamParam, Param};
+    use crate::problems::{BeamParam, Param};
 
     #[test]
     fn bundled_presets_parse_and_validate() {

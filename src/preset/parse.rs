@@ -7,9 +7,10 @@ use std::collections::BTreeMap;
 use toml::Spanned;
 
 use super::{Located, Preset, PresetError, PresetSource};
-use crate::model::inputs::Inputs;
-use crate::model::params::{ModelKind, parse_number};
-use crate::model::twin_beams::BeamTheory;
+use crate::kernel::params::parse_number;
+use crate::problems::ModelKind;
+use crate::problems::inputs::Inputs;
+use crate::problems::twin_beams::closed_form::BeamTheory;
 
 /// Applies `KEY=VALUE` as typed on the command line.
 ///
@@ -185,7 +186,7 @@ impl Preset {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::params::{Param, PlateParam};
+    use crate::problems::{Param, PlateParam};
 
     #[test]
     fn every_problem_is_reported_with_its_line() {

@@ -140,9 +140,9 @@ pub fn user_presets(dir: &Path) -> Vec<(PathBuf, Result<Preset, Vec<Located>>)> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::inputs::Inputs;
-    use crate::model::params::{BeamParam, ModelKind, Param};
     use crate::preset::to_toml;
+    use crate::problems::inputs::Inputs;
+    use crate::problems::{BeamParam, ModelKind, Param};
     use std::io::Write;
 
     const KT: Param = Param::Beam(BeamParam::Stiffness);

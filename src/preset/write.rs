@@ -3,7 +3,7 @@
 
 use std::fmt::Write;
 
-use crate::model::inputs::Inputs;
+use crate::problems::inputs::Inputs;
 
 /// A preset file's text for `inputs`: every key, with units in comments.
 pub fn to_toml(inputs: &Inputs, description: &str) -> String {
@@ -34,8 +34,8 @@ pub fn to_toml(inputs: &Inputs, description: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::params::ModelKind;
     use crate::preset::{Preset, PresetSource};
+    use crate::problems::ModelKind;
 
     #[test]
     fn written_text_parses_back_to_the_same_inputs() {

@@ -8,7 +8,7 @@ use serde_json::Value;
 
 use super::{number, number_with, sanitize};
 use crate::fe::compare::{BeamCompared, BeamComparison, PlateCompared};
-use crate::model::params::Compact;
+use crate::kernel::params::Compact;
 
 /// One row of `microslip compare beam`.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
@@ -265,7 +265,7 @@ pub fn plate_text(source: &str, rows: &[PlateCompared]) -> String {
             number(row.micro_zone_end),
             row.implied_stiffness.map_or_else(
                 || {
-                    if r.strip_validity == crate::model::validity::Validity::Holds {
+                    if r.strip_validity == crate::kernel::validity::Validity::Holds {
                         "none".into()
                     } else {
                         format!("({})", r.strip_validity.label())

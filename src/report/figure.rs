@@ -351,8 +351,8 @@ pub fn index_html(figures: &[PaperFigure]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::inputs::Inputs;
-    use crate::model::params::ModelKind;
+    use crate::problems::ModelKind;
+    use crate::problems::inputs::Inputs;
     use crate::report::chart;
 
     fn paper_figure(chart: AnyChart, fe: bool) -> Plot {

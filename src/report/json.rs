@@ -4,9 +4,10 @@
 
 use serde_json::{Map, Value};
 
-use crate::curves::{Answer, StiffnessComparison, beam_point, plate_point};
-use crate::model::inputs::Inputs;
-use crate::model::params::{BeamParam, Unit};
+use crate::kernel::params::Unit;
+use crate::problems::BeamParam;
+use crate::problems::inputs::Inputs;
+use crate::study::curves::{Answer, StiffnessComparison, beam_point, plate_point};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// `KEY_unit` with the unit spelled for identifiers: `L_mm`, `E_MPa`, `KT_MPa_per_mm`, `mu`.
@@ -35,7 +36,7 @@ fn inputs_object(inputs: &Inputs) -> Value {
 
 /// One cycle's summary for both laws.
 pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> Value {
-    use crate::model::cycle::{Cycle, Law};
+    use crate::problems::twin_beams::cycle::{Cycle, Law};
     let law = |law: Law| {
         let c = Cycle::new(beams, law, amplitude);
         serde_json::json!({
@@ -92,7 +93,9 @@ pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> Value {
 pub fn plate(
     preset: &str,
     plate: &SqueezedPlate,
-    continuum: Option<&Result<crate::numeric::ContinuumPlate, crate::numeric::NumericError>>,
+    continuum: Option<
+        &Result<crate::problems::plate::ContinuumPlate, crate::numeric::NumericError>,
+    >,
 ) -> Value {
     let mut value = plate_closed_form(preset, plate);
     // K_T at the onset of macroslip (P11); absent when nothing ever slides (nu = 0).
@@ -142,8 +145,8 @@ fn plate_closed_form(preset: &str, plate: &SqueezedPlate) -> Value {
             "ratio_edge": pressure.ratio(half_length),
             "mean_deviation": pressure.mean_deviation(),
             "peak_deviation": pressure.peak_deviation(),
-            "mean_deviation_limit": crate::model::plate::PRESSURE_DEVIATION_LIMIT,
-            "peak_deviation_limit": crate::model::plate::PRESSURE_PEAK_LIMIT,
+            "mean_deviation_limit": crate::problems::plate::closed_form::PRESSURE_DEVIATION_LIMIT,
+            "peak_deviation_limit": crate::problems::plate::closed_form::PRESSURE_PEAK_LIMIT,
             "constant_pressure_holds": pressure.constant_pressure_holds(),
         },
         "strip_theory": strip_validity(plate),
@@ -225,7 +228,7 @@ pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> Value 
 /// calibration reaches, the bound on each quantity (thickness mean, contact face, mid-thickness);
 /// X_r is not bounded.
 pub fn strip_validity(plate: &SqueezedPlate) -> Value {
-    use crate::model::validity as v1;
+    use crate::problems::plate::validity as v1;
     let v = plate.validity();
     let mut value = serde_json::json!({
         "validity": v.validity.label(),
@@ -258,7 +261,7 @@ pub fn strip_validity(plate: &SqueezedPlate) -> Value {
 pub fn solved(
     preset: &str,
     kind: crate::ModelKind,
-    solved: &crate::model::target::Solved,
+    solved: &crate::study::target::Solved,
 ) -> Value {
     let quantity = solved.target.quantity;
     let roots: Vec<Value> = solved
@@ -288,8 +291,8 @@ pub fn solved(
 }
 
 /// `microslip kt --tolerance` as JSON.
-pub fn tolerance(preset: &str, answer: &crate::model::tolerance::ToleranceAnswer) -> Value {
-    use crate::model::tolerance::{Setting, Threshold};
+pub fn tolerance(preset: &str, answer: &crate::study::tolerance::ToleranceAnswer) -> Value {
+    use crate::study::tolerance::{Setting, Threshold};
     let (threshold, note) = match answer.threshold {
         Threshold::Stiffness(k) => (Some(k), "smallest K_T within the tolerance"),
         Threshold::Everywhere(k) => (Some(k), "every accepted K_T is within the tolerance"),

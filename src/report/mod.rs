@@ -1,9 +1,10 @@
 //! Every output format over the physics: text reports for people, JSON and CSV for scripts.
 //!
 //! Pure formatting (strings, or bytes into a writer the caller owns), so every format is testable
-//! and the binary stays thin. All numbers come from [`crate::curves`] and the structured results of
+//! and the binary stays thin. All numbers come from [`crate::study::curves`] and the structured results of
 //! [`crate::fit`] and [`crate::verify`], the same values the TUI shows. Nothing below this module
-//! imports it.
+//! imports it (tests/layering.rs checks it); the number formatting that decks and reports share
+//! lives in [`crate::kernel::format`] and is re-exported here.
 
 pub mod chart;
 pub mod compare;
@@ -21,47 +22,10 @@ pub mod view;
 use std::borrow::Cow;
 use std::fmt::Write;
 
-use crate::curves::{beam_point, plate_point};
+use crate::study::curves::{beam_point, plate_point};
 use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
-/// A number for people: 6 significant digits, plain notation between 1e-3 and 1e6, exponent outside,
-/// trailing zeros dropped. Never prints NaN: a non-finite value (which the core does not produce)
-/// shows as "n/a".
-pub fn number(x: f64) -> String {
-    number_with(x, 6)
-}
-
-/// [`number`] with `digits` significant digits (at least 1); charts use 3 for tick labels.
-pub fn number_with(x: f64, digits: u32) -> String {
-    let digits = digits.max(1) as i32;
-    if !x.is_finite() {
-        return "n/a".to_string();
-    }
-    if x == 0.0 {
-        return "0".to_string();
-    }
-    let magnitude = x.abs();
-    if (1e-3..1e6).contains(&magnitude) {
-        let decimals = (digits - 1 - magnitude.log10().floor() as i32).max(0) as usize;
-        let text = format!("{x:.decimals$}");
-        if text.contains('.') {
-            text.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            text
-        }
-    } else {
-        let text = format!("{x:.*e}", (digits - 1) as usize);
-        match text.split_once('e') {
-            Some((mantissa, exponent)) if mantissa.contains('.') => {
-                format!(
-                    "{}e{exponent}",
-                    mantissa.trim_end_matches('0').trim_end_matches('.')
-                )
-            }
-            _ => text,
-        }
-    }
-}
+pub use crate::kernel::format::{number, number_with};
 
 /// `n` and the noun, singular for one: "1 measurement", "3 measurements".
 pub fn count_of(n: usize, noun: &str) -> String {
@@ -114,8 +78,8 @@ pub fn sanitize(text: &str) -> Cow<'_, str> {
 /// The strip theory's validity in a few words (TUI regime pane, one line of 30 characters), for
 /// the thickness-mean u(L): "mean holds (~1.6 %)", "mean approx. (~5.2 %)", "mean OUTSIDE",
 /// "not calibrated". The number is the expected difference from a plane-strain continuum, (V1).
-pub fn strip_validity_short(v: &crate::model::validity::PlateValidity) -> String {
-    use crate::model::validity::Validity;
+pub fn strip_validity_short(v: &crate::problems::plate::validity::PlateValidity) -> String {
+    use crate::kernel::validity::Validity;
     let e = v.expected_error();
     match v.validity {
         Validity::Holds => format!("mean holds (~{} %)", percent_of(e)),
@@ -132,7 +96,7 @@ fn percent_of(error: Option<f64>) -> String {
 /// What the contact-pressure check found, with both measures and which one decides: "holds (mean
 /// deviation 0.6 % <= 3 %, peak 32.3 % <= 50 %)" or "does NOT hold: peak 176 % > 50 %".
 pub fn pressure_verdict(pressure: &crate::ContactPressure) -> String {
-    use crate::model::plate::{PRESSURE_DEVIATION_LIMIT, PRESSURE_PEAK_LIMIT};
+    use crate::problems::plate::closed_form::{PRESSURE_DEVIATION_LIMIT, PRESSURE_PEAK_LIMIT};
     let (mean, peak) = (pressure.mean_deviation(), pressure.peak_deviation());
     let percent = |x: f64| number_with(100.0 * x, 3);
     let mut failed = Vec::new();
@@ -165,7 +129,7 @@ pub fn pressure_verdict(pressure: &crate::ContactPressure) -> String {
 
 /// The same in a few words for the TUI's regime pane (30 characters): "holds", "FAILS (peak 176 %)".
 pub fn pressure_verdict_short(pressure: &crate::ContactPressure) -> String {
-    use crate::model::plate::PRESSURE_DEVIATION_LIMIT;
+    use crate::problems::plate::closed_form::PRESSURE_DEVIATION_LIMIT;
     if pressure.constant_pressure_holds() {
         "holds".to_string()
     } else if pressure.mean_deviation() > PRESSURE_DEVIATION_LIMIT {

@@ -5,8 +5,8 @@
 
 use serde::Serialize;
 
-use crate::curves::{BeamPoint, CyclePoint, LoopPoint, PlatePoint};
 use crate::report::chart::{Plot, SeriesKind};
+use crate::study::curves::{BeamPoint, CyclePoint, LoopPoint, PlatePoint};
 
 /// One row of `microslip sweep beam`.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]

@@ -21,7 +21,7 @@ pub enum TableFormat {
 ///
 /// # Examples
 /// ```
-/// use microslip::curves::{beam_force_sweep, force_samples};
+/// use microslip::study::curves::{beam_force_sweep, force_samples};
 /// use microslip::report::rows::BeamRow;
 /// use microslip::report::table::{TableFormat, write_table};
 /// use microslip::{TwinBeams, TwinBeamsParams};

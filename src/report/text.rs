@@ -4,13 +4,15 @@
 use std::fmt::Write;
 
 use super::{number, number_with, sanitize};
-use crate::curves::{Answer, CandidateSource, StiffnessComparison, beam_point, plate_point};
-use crate::model::inputs::{Inputs, Model};
-use crate::model::params::{BeamParam, Unit};
-use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
-use crate::model::twin_beams::BeamTheory;
-use crate::model::validity::Validity;
-use crate::numeric::{ContinuumPlate, NumericError};
+use crate::kernel::params::Unit;
+use crate::kernel::validity::Validity;
+use crate::numeric::NumericError;
+use crate::problems::BeamParam;
+use crate::problems::inputs::{Inputs, Model};
+use crate::problems::plate::ContinuumPlate;
+use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
+use crate::problems::twin_beams::closed_form::BeamTheory;
+use crate::study::curves::{Answer, CandidateSource, StiffnessComparison, beam_point, plate_point};
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
 /// The inputs block: one line per parameter with value, unit and meaning.
@@ -247,9 +249,9 @@ fn write_strip_validity(
                 out,
                 "  calibrated for alpha t_p <= {} or a slip zone of at least {} t_p (alpha t_p <= \
                  {}); measured differences beyond range from under 1 % to 540 %",
-                crate::model::validity::CALIBRATED_RATIO,
-                crate::model::validity::CALIBRATED_SLIP,
-                crate::model::validity::CALIBRATED_RATIO_SLIP
+                crate::problems::plate::validity::CALIBRATED_RATIO,
+                crate::problems::plate::validity::CALIBRATED_SLIP,
+                crate::problems::plate::validity::CALIBRATED_RATIO_SLIP
             );
         }
     }
@@ -282,7 +284,7 @@ fn write_strip_validity(
 
 /// Cyclic-loading report: both laws side by side.
 pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> String {
-    use crate::model::cycle::{Cycle, Law};
+    use crate::problems::twin_beams::cycle::{Cycle, Law};
     let preset = sanitize(preset);
     let (c, r) = (
         Cycle::new(beams, Law::Coulomb, amplitude),
@@ -632,7 +634,7 @@ pub fn plate_onset(plate: &SqueezedPlate) -> String {
 pub fn solved(
     preset: &str,
     kind: crate::ModelKind,
-    solved: &crate::model::target::Solved,
+    solved: &crate::study::target::Solved,
 ) -> String {
     let preset = sanitize(preset);
     let mut out = String::new();
@@ -672,7 +674,7 @@ pub fn solved(
                 "{name} = {}{} to within {:e} relative (the rounding band) for every {param} in [{}, {}]{punit}{limit}",
                 number(solved.target.value),
                 unit_of(unit),
-                crate::model::target::ROUNDING,
+                crate::study::target::ROUNDING,
                 number(root.bracket.0),
                 number(root.bracket.1)
             );
@@ -716,7 +718,7 @@ pub fn solved(
         "searched {param} in [{}, {}]{punit} ({}-point scan; each bracket solved to 1e-12 relative)",
         number(solved.range.0),
         number(solved.range.1),
-        crate::model::target::SCAN_POINTS
+        crate::study::target::SCAN_POINTS
     );
     out
 }
@@ -740,9 +742,9 @@ fn setting_name(description: &str) -> &str {
 pub fn tolerance(
     preset: &str,
     model: &Model,
-    answer: &crate::model::tolerance::ToleranceAnswer,
+    answer: &crate::study::tolerance::ToleranceAnswer,
 ) -> String {
-    use crate::model::tolerance::{Setting, Threshold};
+    use crate::study::tolerance::{Setting, Threshold};
     let preset = sanitize(preset);
     let tol = percent_of(answer.tolerance);
     let mut out = String::new();

@@ -1,7 +1,7 @@
 //! What a view shows: the charts of each model and the tables, as enums. The TUI cycles through
 //! them and draws them; figure and table exports name them the same way. A chart is never an index.
 
-use crate::model::params::ModelKind;
+use crate::problems::ModelKind;
 
 /// The twin beams' charts, in the order the TUI cycles through them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

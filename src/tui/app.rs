@@ -9,10 +9,11 @@ use super::text_input::TextInput;
 use super::theme::Theme;
 use crate::PlateParams;
 use crate::fit::Measurement;
-use crate::model::inputs::{Inputs, Model};
-use crate::model::params::{BeamParam, Compact, ModelKind, Param, parse_number};
-use crate::model::twin_beams::BeamTheory;
+use crate::kernel::params::{Compact, parse_number};
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
+use crate::problems::inputs::{Inputs, Model};
+use crate::problems::twin_beams::closed_form::BeamTheory;
+use crate::problems::{BeamParam, ModelKind, Param};
 use crate::report::chart::{self, NumericPoints, Plot, Views, YMode, pins};
 use crate::report::view::{AnyChart, BeamChart, PlateChart, View};
 use crate::report::{number, number_with};
@@ -811,7 +812,7 @@ impl App {
     /// `t`: the value of the selected parameter at which a quantity takes the typed target; one
     /// certified root is adopted (u undoes it), anything else is said.
     fn solve_target(&mut self, text: &str) {
-        use crate::model::target::{Target, solve_for_target};
+        use crate::study::target::{Target, solve_for_target};
         let (Some(model), param) = (self.model(), self.selected_param()) else {
             return;
         };

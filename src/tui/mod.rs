@@ -1,6 +1,6 @@
 //! The terminal UI: the event loop. Everything else lives in [`action`] (what keys ask for),
 //! [`app`] (state), [`keymap`] (keys), [`text_input`] (typed text),
-//! [`terminal`] (entering, leaving, suspending), [`signals`] and [`ui`] (drawing).
+//! [`terminal`] (entering, leaving, suspending), `signals` and [`ui`] (drawing).
 //!
 //! Over SSH (see README, "Limits"):
 //! - The screen is redrawn only after a key, a paste or a resize; there is no frame rate.
@@ -8,7 +8,7 @@
 //!   up to [`BATCH`] at a time, then draws once, so a storm of keys costs one frame per batch.
 //! - Signals are looked at between any two events and at least every [`TICK`]. SIGTERM, SIGHUP
 //!   and SIGINT restore the terminal and exit with 128 + the signal; SIGTSTP and Ctrl-Z suspend
-//!   (where a shell with job control can resume the program; see [`signals`]).
+//!   (where a shell with job control can resume the program; see `signals`).
 //! - A terminal that hung up (a dropped link, a killed pane) ends the program within a tick, even
 //!   if no SIGHUP arrives.
 //! - Pastes arrive as text (bracketed paste). The mouse is not captured. A panic restores the
@@ -34,8 +34,8 @@ use ratatui::crossterm::event::{self, Event, KeyEventKind};
 use app::{App, AppOptions};
 use theme::{Charset, Theme};
 
-use crate::model::params::ModelKind;
 use crate::preset::{self, PresetError};
+use crate::problems::ModelKind;
 
 /// How often the loop wakes up without input, to look for signals and a hung-up terminal (it
 /// draws nothing then).

@@ -1,10 +1,10 @@
 //! The lines of the regime pane and what each means: shared by the pane, the explanation of `i`
 //! and the app (which moves through them). Text only, no drawing.
 
-use crate::curves::{beam_point, plate_point};
-use crate::model::inputs::Model;
-use crate::model::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
+use crate::problems::inputs::Model;
+use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::report::number;
+use crate::study::curves::{beam_point, plate_point};
 
 /// One line of the regime pane: its text (a regime line has a label and a styled value) and what
 /// it means, in words for someone who has not read the paper (`i`, and the spare height of tall

@@ -1,5 +1,5 @@
-//! What each chart shows, as plain data (title, axes, series), built from [`crate::curves`]. The
-//! TUI turns a [`Plot`] into cells, the figure writer ([`crate::report::figure`]) into SVG; neither
+//! What each chart shows, as plain data (title, axes, series), built from [`crate::study::curves`]. The
+//! TUI turns a [`Plot`] into cells, the figure writer (`report::figure`, behind the feature `figures`) into SVG; neither
 //! computes physics itself, so a curve on screen and in a figure are the same numbers.
 
 pub mod pins;
@@ -8,15 +8,15 @@ mod ymode;
 
 pub use ymode::YMode;
 
-use crate::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::fit::Measurement;
-use crate::model::inputs::Model;
-use crate::model::params::{BeamParam, ModelKind, PlateParam};
-use crate::numeric::{
-    ContinuumMesh, MeshDensity, NumericError, PlateFe, TwinBeamsFe, solve_plate_continuum,
-};
+use crate::numeric::{MeshDensity, NumericError};
+use crate::problems::inputs::Model;
+use crate::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
+use crate::problems::twin_beams::TwinBeamsFe;
+use crate::problems::{BeamParam, ModelKind, PlateParam};
 use crate::report::view::{AnyChart, BeamChart, PlateChart, Table, View};
 use crate::report::{number, number_with};
+use crate::study::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// Points per analytic curve: two per column of a 100-column chart, enough for Braille resolution.
@@ -298,11 +298,11 @@ const TABLE_TOLERANCE: f64 = 0.01;
 /// The K_T table's answer to "how stiff for Coulomb within 1 %": the beams at F and over 0..F, the
 /// plate at its pressure.
 fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
-    use crate::model::tolerance::{
+    use crate::study::tolerance::{
         Threshold, beam_stiffness_for_tolerance, plate_stiffness_for_tolerance,
     };
     let shown = |answer: Result<_, _>| match answer
-        .map(|a: crate::model::tolerance::ToleranceAnswer| a.threshold)
+        .map(|a: crate::study::tolerance::ToleranceAnswer| a.threshold)
     {
         Ok(Threshold::Stiffness(k) | Threshold::Everywhere(k)) => format!(">= {}", cell(k, 7)),
         Ok(Threshold::Nowhere { stiffness, .. }) => format!("> {}", cell(stiffness, 7)),
@@ -339,7 +339,7 @@ fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
 
 /// The K_T comparison as a narrow table (fits the 44-column chart pane of an 80x24 screen).
 fn stiffness_table(model: &Model) -> Plot {
-    use crate::model::code_defaults::{CODE_DEFAULTS, Confirmation, DefaultRule};
+    use crate::kernel::code_defaults::{CODE_DEFAULTS, Confirmation, DefaultRule};
     let element = model.interface().length / TABLE_ELEMENTS_PER_LENGTH;
     let comparison = curves::compare_stiffnesses(model, element, None);
     let short = |source: &CandidateSource| match source {
@@ -563,7 +563,7 @@ fn beam_plot(
             })
         }
         BeamChart::Loop => {
-            use crate::model::cycle::{Cycle, Law};
+            use crate::problems::twin_beams::cycle::{Cycle, Law};
             let (coulomb, regularized) = (
                 Cycle::new(beams, Law::Coulomb, force),
                 Cycle::new(beams, Law::Regularized, force),
@@ -892,7 +892,7 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::inputs::Inputs;
+    use crate::problems::inputs::Inputs;
 
     /// Every view of `kind`, as the `c` key reaches them.
     pub(super) fn every_view(kind: ModelKind) -> Vec<Views> {
@@ -979,7 +979,7 @@ mod tests {
 
     #[test]
     fn every_chart_at_every_corner_of_the_domain_has_valid_axes() {
-        use crate::model::params::BeamParam;
+        use crate::problems::BeamParam;
         // Every corner of each model's domain (the beam force at 0, at the largest accepted force
         // or at F_thre, in turn), every view.
         // nu (half-open domain, and only in the shear deflection) keeps its value.

@@ -8,8 +8,8 @@
 //! 0.2 now), so the legend says what the comparison is about.
 
 use super::{Plot, PlotSeries, SeriesKind, Views, YMode, build, linear_axis, log_axis};
-use crate::model::inputs::{Inputs, Model};
-use crate::model::twin_beams::BeamTheory;
+use crate::problems::inputs::{Inputs, Model};
+use crate::problems::twin_beams::closed_form::BeamTheory;
 use crate::report::number;
 use crate::report::view::AnyChart;
 
@@ -173,7 +173,7 @@ pub fn with_pinned_models(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::params::{BeamParam, ModelKind, Param, PlateParam};
+    use crate::problems::{BeamParam, ModelKind, Param, PlateParam};
     use crate::report::view::View;
 
     use crate::report::chart::tests::every_view;

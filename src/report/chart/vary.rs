@@ -1,11 +1,12 @@
 //! The chart of `v`: the response (w(L) of the beams, u(L) of the plate) against the selected
 //! parameter, both laws, with the cursor at the current value. Numbers from
-//! [`crate::curves::response_vs_param`]; axes and series from [`super`].
+//! [`crate::study::curves::response_vs_param`]; axes and series from [`super`].
 
 use super::{Plot, cursor, line, linear_axis, log_axis, max_y, samples};
-use crate::curves::{Spacing, response_vs_param};
-use crate::model::inputs::Model;
-use crate::model::params::{BeamParam, Domain, Param, Step};
+use crate::kernel::params::{Domain, Step};
+use crate::problems::inputs::Model;
+use crate::problems::{BeamParam, Param};
+use crate::study::curves::{Spacing, response_vs_param};
 
 /// The range charted for `param` around its current `value`: the step's natural span (a decade
 /// each way for multiplicative parameters, 0 to 3 F_thre or 1.25 F for the force, the whole range
@@ -89,8 +90,8 @@ pub fn build(model: &Model, param: Param) -> Plot {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::inputs::Inputs;
-    use crate::model::params::ModelKind;
+    use crate::problems::ModelKind;
+    use crate::problems::inputs::Inputs;
 
     #[test]
     fn every_parameter_of_both_models_charts_with_finite_points() {

@@ -4,8 +4,8 @@
 //! so the TUI, `microslip plot --y` and the figures show the same numbers.
 
 use super::{Axis, Plot, PlotSeries, SeriesKind, axis_bounds, cursor, log_axis, tick};
-use crate::curves::Series;
 use crate::report::view::{AnyChart, BeamChart, PlateChart};
+use crate::study::curves::Series;
 
 /// How the y axis shows the data.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
@@ -222,8 +222,8 @@ fn to_relative(mut plot: Plot) -> Plot {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::inputs::{Inputs, Model};
-    use crate::model::params::ModelKind;
+    use crate::problems::ModelKind;
+    use crate::problems::inputs::{Inputs, Model};
     use crate::report::chart::figure;
     use crate::{TipForce, TwinBeams};
 

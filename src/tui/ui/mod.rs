@@ -94,7 +94,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 &format!("{} such that {}", app.selected_param(), input.shown()),
                 &format!(
                     "one of {}; Enter solve, Esc cancel",
-                    crate::model::target::Quantity::names(app.kind())
+                    crate::study::target::Quantity::names(app.kind())
                 ),
             ),
             Mode::Explain { line } => overlay::draw_explanation(frame, app, area, *line),

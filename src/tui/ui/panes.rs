@@ -7,8 +7,8 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
 use crate::Inputs;
-use crate::model::inputs::Model;
-use crate::model::params::Unit;
+use crate::kernel::params::Unit;
+use crate::problems::inputs::Model;
 use crate::report::{number, sanitize};
 use crate::tui::app::{App, Mode};
 use crate::tui::summary::{summary_lines, wrap_words};

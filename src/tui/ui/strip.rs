@@ -2,7 +2,7 @@
 //! drawn to scale for both laws, so that where the interface sticks, slips elastically and slides
 //! is seen at a glance rather than read off X, X_s and X_r. Zones are told apart by their symbols
 //! (`=` stick, `~` microslip, `#` macroslip in ASCII) and, with colour, by colour as well; the
-//! numbers come from [`crate::curves::interface_zones`], the same as the pane's text.
+//! numbers come from [`crate::study::curves::interface_zones`], the same as the pane's text.
 //!
 //! Three sizes, chosen by the pane's spare height: two rows (one per law) on small screens; with a
 //! heading, the boundaries marked and named, and a legend on taller ones; and on the tallest, two
@@ -11,12 +11,12 @@
 
 use ratatui::text::{Line, Span};
 
-use crate::curves::{
+use crate::problems::inputs::Model;
+use crate::report::number_with;
+use crate::study::curves::{
     InterfaceZones, Samples, Series, Spacing, Zone, ZoneSpan, beam_shear_along, interface_zones,
     plate_shear_along,
 };
-use crate::model::inputs::Model;
-use crate::report::number_with;
 use crate::tui::theme::{Role, Theme};
 
 /// How much of the strip is drawn.

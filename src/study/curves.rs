@@ -6,11 +6,13 @@
 
 use thiserror::Error;
 
-use crate::model::code_defaults::CodeDefault;
-use crate::model::cycle::{Cycle, Law};
-use crate::model::inputs::Model;
-use crate::model::params::{BeamParam, Compact, Param, PlateParam};
-use crate::model::validity::{BeamValidity, Validity};
+use crate::kernel::code_defaults::CodeDefault;
+use crate::kernel::params::Compact;
+use crate::kernel::validity::Validity;
+use crate::problems::inputs::Model;
+use crate::problems::twin_beams::cycle::{Cycle, Law};
+use crate::problems::twin_beams::validity::BeamValidity;
+use crate::problems::{BeamParam, Param, PlateParam};
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
 /// Largest number of points a sweep (or a branch of a cycle's loop) accepts: beyond it a request is
@@ -112,7 +114,7 @@ pub enum Spacing {
 ///
 /// # Examples
 /// ```
-/// use microslip::curves::{beam_force_sweep, force_samples};
+/// use microslip::study::curves::{beam_force_sweep, force_samples};
 /// use microslip::{Regime, TwinBeams, TwinBeamsParams};
 /// let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
 /// let forces = force_samples(0.0, 300.0, 4)?; // 0, 100, 200, 300 N
@@ -722,7 +724,7 @@ pub struct ComparedStiffness {
 ///
 /// # Examples
 /// ```
-/// use microslip::curves::{Answer, CandidateSource, compare_stiffnesses};
+/// use microslip::study::curves::{Answer, CandidateSource, compare_stiffnesses};
 /// use microslip::{Inputs, ModelKind};
 /// let model = Inputs::paper(ModelKind::Plate).validate()?;
 /// // Contact elements of 0.1 mm, and K_N = 1e6 MPa/mm at nu = 0.3 for paper eq. 4.
@@ -778,8 +780,8 @@ pub fn compare_stiffnesses(
     element: f64,
     normal: Option<(f64, f64)>,
 ) -> StiffnessComparison {
-    use crate::model::code_defaults::{CODE_DEFAULTS, MEASURED_RATIO_RANGE};
-    use crate::model::stiffness::tangential_from_normal;
+    use crate::kernel::code_defaults::{CODE_DEFAULTS, MEASURED_RATIO_RANGE};
+    use crate::problems::stiffness::tangential_from_normal;
     let data = model.interface();
     let mut candidates = vec![StiffnessCandidate {
         source: CandidateSource::Current,

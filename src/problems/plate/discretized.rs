@@ -11,15 +11,15 @@
 //! history per Gauss point, so the pressure can be raised, lowered and raised again. The mesh is graded
 //! towards the free edge, where the slip zone and the boundary layer sit.
 
-use super::banded::SymmetricBand;
-use super::elements::{GAUSS, lagrange, quadratic_bar};
-use super::error::{NumericError, short};
-use super::interface::{InterfacePoint, Response};
-use super::mesh::MeshDensity;
-use super::mesh::{graded_towards_end, ratio_for_smallest};
-use super::newton::{self, Discretized};
-use crate::PlateParams;
-use crate::model::solve::find_root_in_bracket;
+use super::params::PlateParams;
+use crate::kernel::solve::find_root_in_bracket;
+use crate::numeric::banded::SymmetricBand;
+use crate::numeric::elements::{GAUSS, lagrange, quadratic_bar};
+use crate::numeric::interface::{InterfacePoint, Response};
+use crate::numeric::mesh::MeshDensity;
+use crate::numeric::mesh::{graded_towards_end, ratio_for_smallest};
+use crate::numeric::newton::{self, Discretized};
+use crate::numeric::{NumericError, short};
 
 /// Smallest saturation slip, relative to the free expansion, that the 1-D solver resolves
 /// ([`PlateFe::check_resolvable`]): 1e-6, above every failure measured (5.4e-7).

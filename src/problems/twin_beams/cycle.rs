@@ -12,7 +12,7 @@
 //! reloading from -F_a:  w(F) = -w_a + 2 w_v((F_a + F) / 2)
 //! ```
 
-use super::twin_beams::{TipForce, TwinBeams};
+use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams};
 
 /// Which friction law.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -8,9 +8,10 @@
 //! a force range too, and "within tolerance" holds on one interval [K_T*, infinity): one bracketed
 //! root on ln K_T finds K_T*.
 
-use crate::model::code_defaults::{CODE_DEFAULTS, CodeDefault, DefaultRule};
-use crate::model::params::{BeamParam, Domain, ParamError, PlateParam};
-use crate::model::solve::find_root_in_bracket;
+use crate::kernel::code_defaults::{CODE_DEFAULTS, CodeDefault, DefaultRule};
+use crate::kernel::params::{Domain, ParamError};
+use crate::kernel::solve::find_root_in_bracket;
+use crate::problems::{BeamParam, PlateParam};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// Force samples over a range of the beams' tip force, besides its ends and F_thre: the deviation
@@ -296,7 +297,7 @@ pub fn parse_tolerance(text: &str) -> Result<f64, String> {
         Some(n) => (n.trim(), 0.01),
         None => (trimmed, 1.0),
     };
-    let value = crate::model::params::parse_number(number)
+    let value = crate::kernel::params::parse_number(number)
         .map(|v| v * scale)
         .ok_or_else(|| format!("invalid --tolerance '{text}': a number, e.g. 1% or 0.01"))?;
     check_tolerance(value)

@@ -2,16 +2,17 @@
 //! [`Param`]s) and the validated models the physics accepts ([`Model`]). Presets, `--set` and the
 //! TUI all edit an [`Inputs`] and validate it through the checked constructors.
 
-use super::params::{BeamParam, ModelKind, Param, ParamError, UnknownParam};
-use super::plate::{PlateParams, SqueezedPlate};
-use super::twin_beams::{TipForce, TwinBeams, TwinBeamsParams};
+use crate::kernel::params::ParamError;
+use crate::problems::plate::closed_form::{PlateParams, SqueezedPlate};
+use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams, TwinBeamsParams};
+use crate::problems::{BeamParam, ModelKind, Param, UnknownParam};
 
 /// Unvalidated inputs of one model, as read from a preset, flags or key presses.
 ///
 /// # Examples
 /// ```
-/// use microslip::model::inputs::Inputs;
-/// use microslip::model::params::{BeamParam, ModelKind, Param};
+/// use microslip::problems::inputs::Inputs;
+/// use microslip::problems::{BeamParam, ModelKind, Param};
 /// let mut inputs = Inputs::paper(ModelKind::Beam);
 /// inputs.set(Param::Beam(BeamParam::Stiffness), 120.0)?;
 /// assert!(inputs.validate().is_ok());
@@ -20,7 +21,7 @@ use super::twin_beams::{TipForce, TwinBeams, TwinBeamsParams};
 ///     inputs.validate().unwrap_err().to_string(),
 ///     "invalid L = -1: must be > 0 and finite (mm)"
 /// );
-/// # Ok::<(), microslip::model::params::UnknownParam>(())
+/// # Ok::<(), microslip::problems::UnknownParam>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Inputs {
@@ -87,7 +88,7 @@ impl Model {
     }
 
     /// The same model with `param` set to the accepted value nearest to `value` (see
-    /// [`super::params::Domain::clamp`]): infallible, for sweeps and root finding whose range was
+    /// [`crate::kernel::params::Domain::clamp`]): infallible, for sweeps and root finding whose range was
     /// checked. A parameter of the other model leaves the model as it is.
     pub fn with_clamped(&self, param: Param, value: f64) -> Model {
         let mut inputs = self.inputs();
@@ -230,11 +231,11 @@ mod tests {
     fn all_errors_are_listed_and_agree_with_the_constructors() {
         let mut inputs = Inputs::paper(ModelKind::Plate);
         inputs
-            .set(Param::Plate(super::super::params::PlateParam::Poisson), 0.5)
+            .set(Param::Plate(crate::problems::PlateParam::Poisson), 0.5)
             .unwrap();
         inputs
             .set(
-                Param::Plate(super::super::params::PlateParam::Stiffness),
+                Param::Plate(crate::problems::PlateParam::Stiffness),
                 f64::NAN,
             )
             .unwrap();

@@ -5,56 +5,12 @@
 //! lower face resists. By symmetry only 0 <= x <= L is modelled, with u(0) = 0 and a free end at x = L.
 //! Derivations and the paper's misprints: `docs/theory.md`, "Squeezed plate", equations (P1)...
 
-use super::hyperbolic::{sinh_cosh_ratio, sinh_ratio};
-use super::params::{ParamError, PlateParam};
-use super::regime::Regime;
-use super::solve::find_root_in_bracket;
-
-/// Raw inputs of the squeezed-plate problem (mm, MPa, MPa/mm); validated by [`SqueezedPlate::new`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PlateParams {
-    /// Half-length L (mm).
-    pub half_length: f64,
-    /// Thickness t_p (mm).
-    pub thickness: f64,
-    /// Young's modulus E (MPa).
-    pub youngs_modulus: f64,
-    /// Poisson ratio nu (-), 0 <= nu < 0.5.
-    pub poisson: f64,
-    /// Friction coefficient mu (-).
-    pub friction: f64,
-    /// Applied pressure P (MPa).
-    pub pressure: f64,
-    /// Tangential contact stiffness K_T (MPa/mm).
-    pub tangential_stiffness: f64,
-}
-
-impl PlateParams {
-    /// The paper's data set (section 2.2.3): L=10, t_p=0.2 mm, E=70000 MPa, nu=0.3, mu=0.3, P=10 MPa.
-    /// The paper sweeps K_T; 1e6 MPa/mm (= 1000 MPa/um) is a default that shows both zones.
-    pub const PAPER: PlateParams = PlateParams {
-        half_length: 10.0,
-        thickness: 0.2,
-        youngs_modulus: 70_000.0,
-        poisson: 0.3,
-        friction: 0.3,
-        pressure: 10.0,
-        tangential_stiffness: 1e6,
-    };
-
-    /// The field that holds `param`.
-    pub fn value_mut(&mut self, param: PlateParam) -> &mut f64 {
-        match param {
-            PlateParam::HalfLength => &mut self.half_length,
-            PlateParam::Thickness => &mut self.thickness,
-            PlateParam::Modulus => &mut self.youngs_modulus,
-            PlateParam::Poisson => &mut self.poisson,
-            PlateParam::Friction => &mut self.friction,
-            PlateParam::Pressure => &mut self.pressure,
-            PlateParam::Stiffness => &mut self.tangential_stiffness,
-        }
-    }
-}
+pub use super::params::PlateParams;
+use crate::kernel::hyperbolic::{sinh_cosh_ratio, sinh_ratio};
+use crate::kernel::params::ParamError;
+use crate::kernel::regime::Regime;
+use crate::kernel::solve::find_root_in_bracket;
+use crate::problems::PlateParam;
 
 /// A validated squeezed plate with its derived constants.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -89,15 +45,12 @@ impl SqueezedPlate {
     /// # Ok::<(), microslip::ParamError>(())
     /// ```
     pub fn new(params: PlateParams) -> Result<Self, ParamError> {
-        let mut fields = params;
-        for param in PlateParam::ALL {
-            param.check(*fields.value_mut(param))?;
-        }
+        params.check()?;
         Ok(Self::derive(params))
     }
 
     /// The same plate with `param` set to the accepted value nearest to `value` (see
-    /// [`crate::model::params::Domain::clamp`]): infallible, for sweeps whose range was checked.
+    /// [`crate::kernel::params::Domain::clamp`]): infallible, for sweeps whose range was checked.
     pub fn with_clamped(&self, param: PlateParam, value: f64) -> SqueezedPlate {
         let mut params = self.params;
         *params.value_mut(param) = param.spec().domain.clamp(value);
@@ -144,7 +97,7 @@ impl SqueezedPlate {
     /// nu (1 + nu) P L / E (K_T -> 0) to the Coulomb value (K_T -> infinity), strictly (docs/theory.md,
     /// (P10)), so outside that interval there is no answer, and inside it exactly one.
     pub fn stiffness_for_end_displacement(&self, end_displacement: f64) -> Option<f64> {
-        let domain = crate::model::params::Domain::STIFFNESS;
+        let domain = crate::kernel::params::Domain::STIFFNESS;
         let at = |log_kt: f64| {
             self.with_clamped(PlateParam::Stiffness, log_kt.exp())
                 .regularized()
@@ -661,9 +614,11 @@ mod tests {
         let r = plate.regularized();
         assert_eq!(r.regime(), Regime::Unloaded);
         assert_eq!(r.end_displacement(), 0.0);
-        let continuum =
-            crate::numeric::plate_continuum::solve_plate_continuum(no_poisson, Default::default())
-                .unwrap();
+        let continuum = crate::problems::plate::continuum::solve_plate_continuum(
+            no_poisson,
+            Default::default(),
+        )
+        .unwrap();
         assert_eq!(continuum.end_displacement_mean, 0.0);
         assert_eq!(continuum.micro_zone_end, no_poisson.half_length);
         assert_eq!(plate.validity().expected_error(), Some(0.0));

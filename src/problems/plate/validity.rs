@@ -1,56 +1,11 @@
-//! How far each closed form holds: its expected difference from a continuum model, as numbers.
-//!
-//! "Exact" is not "true": the twin-beam closed form is exact for Euler-Bernoulli beams and the plate's
-//! for a strip whose displacement is uniform through its thickness under a uniform contact pressure.
-//! The envelopes below were measured against continuum finite elements: CalculiX 2.20 (bricks,
-//! penalty friction; `validation/calculix/`) and the project's own plane-strain solver
-//! (`numeric::plate_continuum`, which agrees with CalculiX to 0.2 % on the thickness-mean u(L)).
-//! The calibration, its cases and its tables are in docs/theory.md, "Validity of the closed forms".
+//! How far the plate's strip theory holds (V1): its expected difference from a plane-strain
+//! continuum, as numbers. The strip theory is exact for a strip whose displacement is uniform through
+//! its thickness under a uniform contact pressure; the envelope was measured against the project's
+//! plane-strain solver ([`super::continuum`], within 0.2 % of CalculiX on the thickness-mean u(L))
+//! and CalculiX itself (docs/theory.md, "Validity of the closed forms").
 
-use super::plate::SqueezedPlate;
-use super::twin_beams::{BeamTheory, TipForce, TwinBeams};
-
-/// Where a closed form stands against continuum mechanics.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Validity {
-    /// Expected within 2 % of a continuum model.
-    Holds,
-    /// Expected within 10 %.
-    Approximate,
-    /// Expected off by more than 10 %: use a continuum model.
-    Outside,
-    /// No calibrated bound reaches this case (measured between under 1 % and 540 %): the
-    /// envelope cannot decide; use a continuum model.
-    NotCalibrated,
-}
-
-impl Validity {
-    /// Expected relative error at or below which the closed form [`Validity::Holds`].
-    pub const HOLDS: f64 = 0.02;
-    /// Expected relative error at or below which it is [`Validity::Approximate`].
-    pub const APPROXIMATE: f64 = 0.10;
-
-    /// The level of an expected relative error.
-    pub fn of_error(error: f64) -> Validity {
-        if error <= Self::HOLDS {
-            Validity::Holds
-        } else if error <= Self::APPROXIMATE {
-            Validity::Approximate
-        } else {
-            Validity::Outside
-        }
-    }
-
-    /// A word for reports and CSV.
-    pub fn label(self) -> &'static str {
-        match self {
-            Validity::Holds => "holds",
-            Validity::Approximate => "approximate",
-            Validity::Outside => "outside",
-            Validity::NotCalibrated => "not calibrated",
-        }
-    }
-}
+use super::closed_form::SqueezedPlate;
+use crate::kernel::validity::Validity;
 
 /// The strip theory's envelope for one plate (V1). The strip theory states one u(L) for the whole
 /// thickness; the envelope bounds how far a plane-strain continuum's u(L) is from it as the
@@ -134,60 +89,6 @@ impl PlateValidity {
     }
 }
 
-/// The twin beams' envelope at one force.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BeamValidity {
-    /// The theory the deflection uses.
-    pub theory: BeamTheory,
-    /// Shear deflection over the Euler-Bernoulli w(L): what Euler-Bernoulli leaves out (B13).
-    pub shear_share: f64,
-    /// Bound on |w(L) continuum / w(L) closed form - 1| (V2): 0.2 h/L + 4 w(L)/L for Timoshenko,
-    /// plus the shear share for Euler-Bernoulli.
-    pub expected_error: f64,
-    /// The level of `expected_error`.
-    pub validity: Validity,
-}
-
-/// (V2): what remains between Timoshenko's w(L) and CalculiX, from the clamp (a fixed end face is
-/// stiffer than beam theory's clamp) and the tip load, grows with the beam's stubbiness: 0.2 h/L
-/// (measured 0.13 % at h/L = 1/80 up to 3.0 % at h/L = 1/5) ...
-const BEAM_STUBBINESS_FACTOR: f64 = 0.2;
-/// ... and a part growing with the deflection itself, largest just above F_1 and deep in
-/// macroslip of slender beams (small-displacement beams against contact that follows the deformed
-/// faces): 4 w(L)/L.
-const BEAM_DEFLECTION_FACTOR: f64 = 4.0;
-
-impl TwinBeams {
-    /// Where the closed form stands at `force` under its theory (V2).
-    pub fn validity(&self, force: TipForce) -> BeamValidity {
-        let deflection = self.regularized(force).tip_deflection();
-        self.validity_at(force, deflection)
-    }
-
-    /// [`TwinBeams::validity`] given the regularized w(L) at `force` under this theory (sweeps
-    /// have it already).
-    pub(crate) fn validity_at(&self, force: TipForce, deflection: f64) -> BeamValidity {
-        let p = self.params();
-        let shear = self.shear_deflection(force);
-        let euler = match p.theory {
-            BeamTheory::EulerBernoulli => deflection,
-            BeamTheory::Timoshenko => deflection - shear,
-        };
-        let shear_share = if euler > 0.0 { shear / euler } else { 0.0 };
-        let mut expected_error = BEAM_STUBBINESS_FACTOR * p.half_height / p.length
-            + BEAM_DEFLECTION_FACTOR * (euler + shear) / p.length;
-        if p.theory == BeamTheory::EulerBernoulli {
-            expected_error += shear_share;
-        }
-        BeamValidity {
-            theory: p.theory,
-            shear_share,
-            expected_error,
-            validity: Validity::of_error(expected_error),
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -235,28 +136,5 @@ mod tests {
         let e = v.expected.unwrap();
         assert!((e[0] * v.slip_over_thickness - 0.17).abs() < 1e-12);
         assert_ne!(v.validity, Validity::NotCalibrated);
-    }
-
-    #[test]
-    fn timoshenko_holds_for_the_papers_beams_where_euler_bernoulli_is_approximate_at_low_load() {
-        use crate::TwinBeamsParams;
-        let euler = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
-        let timoshenko = euler.with_theory(BeamTheory::Timoshenko);
-        let low = TipForce::new(40.0).unwrap();
-        // Shear share at 40 N: F L / (kappa G b 2h) / w_EB = 2.97e-4 / 0.011121 = 2.67 %.
-        let v = euler.validity(low);
-        assert!((v.shear_share - 0.0267).abs() < 2e-4, "{}", v.shear_share);
-        assert_eq!(v.validity, Validity::Approximate);
-        assert_eq!(timoshenko.validity(low).validity, Validity::Holds);
-        let high = TipForce::new(200.0).unwrap();
-        assert_eq!(timoshenko.validity(high).validity, Validity::Holds);
-    }
-
-    #[test]
-    fn levels_change_at_their_bounds() {
-        assert_eq!(Validity::of_error(0.02), Validity::Holds);
-        assert_eq!(Validity::of_error(0.0201), Validity::Approximate);
-        assert_eq!(Validity::of_error(0.1), Validity::Approximate);
-        assert_eq!(Validity::of_error(0.1001), Validity::Outside);
     }
 }

@@ -1,6 +1,6 @@
 //! The squeezed plate as a 2-D plane-strain continuum: the answer where the strip theory fails.
 //!
-//! The strip theory (`model::plate`) assumes the displacement uniform through the thickness and the
+//! The strip theory (`problems::plate::closed_form`) assumes the displacement uniform through the thickness and the
 //! contact pressure equal to P. For stiff interfaces the slip zone at the free end is no wider than
 //! about two plate thicknesses, and neither holds (docs/theory.md, "Validity of the closed forms").
 //! This model drops both assumptions: 8-node quadrilaterals (Q8, 3 x 3 Gauss points) in plane strain
@@ -15,12 +15,12 @@
 //! Nodes are numbered column by column from x = 0, so the stiffness is banded (half-bandwidth about
 //! 5 ny + 4 unknowns for ny elements through the thickness).
 
-use super::banded::SymmetricBand;
-use super::error::NumericError;
-use super::interface::{InterfacePoint, Response};
-use super::mesh::graded_toward_end;
-use super::newton::{self, Discretized};
-use crate::PlateParams;
+use super::params::PlateParams;
+use crate::numeric::NumericError;
+use crate::numeric::banded::SymmetricBand;
+use crate::numeric::interface::{InterfacePoint, Response};
+use crate::numeric::mesh::graded_toward_end;
+use crate::numeric::newton::{self, Discretized};
 
 /// How fine the continuum mesh is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -78,7 +78,9 @@ pub fn solve_plate_continuum(
     mesh: ContinuumMesh,
 ) -> Result<ContinuumPlate, NumericError> {
     // Only accepted inputs (every one finite and in its domain) reach the mesh.
-    crate::SqueezedPlate::new(params).map_err(|e| NumericError::OutOfRange(e.to_string()))?;
+    params
+        .check()
+        .map_err(|e| NumericError::OutOfRange(e.to_string()))?;
     let p = &params;
     let ratio = ((1.0 - p.poisson * p.poisson) * p.tangential_stiffness
         / (p.youngs_modulus * p.thickness))
@@ -89,7 +91,7 @@ pub fn solve_plate_continuum(
             "K_T = {} MPa/mm is too stiff for the continuum solver: alpha t_p = {:.3} > {}, where \
              Newton no longer converges; the interface is then Coulomb-like (the continuum u(L) \
              changes by 1.5 % between alpha t_p = 5 and 16)",
-            crate::model::params::Compact(p.tangential_stiffness),
+            crate::kernel::params::Compact(p.tangential_stiffness),
             ratio,
             MAX_THICKNESS_OVER_LAYER
         )));

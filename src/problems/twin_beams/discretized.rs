@@ -15,14 +15,14 @@
 //! consistent tangent (K_T on elastic points, 0 on sliding ones). Nothing here assumes the upper beam
 //! mirrors the lower one: the antisymmetry u_b = -u_a comes out of the solution.
 
-use super::banded::SymmetricBand;
-use super::elements::{GAUSS, lagrange, quadratic_bar};
-use super::error::{NumericError, short};
-use super::interface::{InterfacePoint, Response};
-use super::mesh::{MeshDensity, graded_from_start, ratio_for_smallest};
-use super::newton::{self, Discretized};
-use crate::TwinBeamsParams;
-use crate::model::solve::find_root_in_bracket;
+use super::params::TwinBeamsParams;
+use crate::kernel::solve::find_root_in_bracket;
+use crate::numeric::banded::SymmetricBand;
+use crate::numeric::elements::{GAUSS, lagrange, quadratic_bar};
+use crate::numeric::interface::{InterfacePoint, Response};
+use crate::numeric::mesh::{MeshDensity, graded_from_start, ratio_for_smallest};
+use crate::numeric::newton::{self, Discretized};
+use crate::numeric::{NumericError, short};
 
 /// Smallest saturation slip, relative to the beams' slip scale, that the solver is given
 /// ([`TwinBeamsFe::check_resolvable`]): 1e-9. Loaded in the 40 steps of a chart (100 elements),

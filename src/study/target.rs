@@ -18,10 +18,11 @@ use std::str::FromStr;
 
 use thiserror::Error;
 
-use super::cycle::{Cycle, Law};
-use super::inputs::Model;
-use super::params::{Compact, ModelKind, Param, parse_number, significant};
-use super::solve::find_root_in_bracket;
+use crate::kernel::params::{Compact, parse_number, significant};
+use crate::kernel::solve::find_root_in_bracket;
+use crate::problems::inputs::Model;
+use crate::problems::twin_beams::cycle::{Cycle, Law};
+use crate::problems::{ModelKind, Param};
 
 /// Grid points of the scan for brackets.
 pub const SCAN_POINTS: usize = 400;
@@ -33,7 +34,7 @@ const ROOT_CHECK: f64 = 1e-6;
 /// products loses some digits (measured: the ratio to Coulomb scatters by 6e-16 around 1 once
 /// K_T passes 1e10 MPa/mm on the paper's beams). Misfits within this band are the target to within
 /// rounding, never a sign change: the band is 500 times that scatter, and a million times below
-/// [`ROOT_CHECK`]. Without it, `solve --vary KT --target ratio=1` listed ten "certified" roots
+/// the largest misfit accepted at a root (1e-6). Without it, `solve --vary KT --target ratio=1` listed ten "certified" roots
 /// between 1.6e10 and 7e11 MPa/mm, one achieving 0.9999999999999994 (below 1 is impossible).
 pub const ROUNDING: f64 = 3e-13;
 
@@ -438,9 +439,9 @@ fn edge(holds: &impl Fn(f64) -> bool, mut a: f64, mut b: f64) -> f64 {
 ///
 /// # Examples
 /// ```
-/// use microslip::model::inputs::Inputs;
-/// use microslip::model::params::{BeamParam, ModelKind, Param};
-/// use microslip::model::target::{Target, solve_for_target};
+/// use microslip::problems::inputs::Inputs;
+/// use microslip::problems::{BeamParam, ModelKind, Param};
+/// use microslip::study::target::{Target, solve_for_target};
 /// let model = Inputs::paper(ModelKind::Beam).validate()?;
 /// let target = Target::parse("ratio=1.01", ModelKind::Beam)?;
 /// let solved = solve_for_target(&model, Param::Beam(BeamParam::Stiffness), target, None)?;
@@ -557,11 +558,11 @@ pub fn solve_for_target(
         return Err(TargetError::NoRoot {
             param: param.name(),
             unit: match param.unit() {
-                super::params::Unit::Dimensionless => "",
-                super::params::Unit::Millimetre => " mm",
-                super::params::Unit::Newton => " N",
-                super::params::Unit::Megapascal => " MPa",
-                super::params::Unit::MegapascalPerMillimetre => " MPa/mm",
+                crate::kernel::params::Unit::Dimensionless => "",
+                crate::kernel::params::Unit::Millimetre => " mm",
+                crate::kernel::params::Unit::Newton => " N",
+                crate::kernel::params::Unit::Megapascal => " MPa",
+                crate::kernel::params::Unit::MegapascalPerMillimetre => " MPa/mm",
             },
             quantity: name,
             quantity_unit: match quantity.unit() {
@@ -587,8 +588,8 @@ pub fn solve_for_target(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::inputs::Inputs;
-    use crate::model::params::{BeamParam, PlateParam};
+    use crate::problems::inputs::Inputs;
+    use crate::problems::{BeamParam, PlateParam};
 
     fn beams() -> Model {
         Inputs::paper(ModelKind::Beam).validate().unwrap()

@@ -3,7 +3,8 @@
 //! microslip works in MPa/mm internally; the paper's nomenclature quotes K_T in MPa/um, and so do many
 //! measurements, so the UI may show both.
 
-use super::params::{Domain, ParamError, PlateParam, Unit};
+use crate::kernel::params::{Domain, ParamError, Unit};
+use crate::problems::PlateParam;
 
 /// Number of micrometres in a millimetre.
 const UM_PER_MM: f64 = 1000.0;

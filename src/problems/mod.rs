@@ -1,0 +1,366 @@
+//! The benchmark problems, one folder each, and the list of them. A problem's folder holds what is
+//! its own: parameters, closed forms, validity envelope, its independent discretized solver.
+//! Everything here is built on [`crate::kernel`] and [`crate::numeric`], which know no problem.
+//!
+//! [`ModelKind`] lists the problems; [`Param`] is a parameter of any of them, what the generic
+//! layers (presets, `--set`, the parameter pane, sweeps, solving for a target) iterate over.
+
+use std::fmt;
+use std::str::FromStr;
+
+use thiserror::Error;
+
+use crate::kernel::params::{Compact, ParamSpec, Unit};
+
+pub mod inputs;
+pub mod plate;
+pub mod stiffness;
+pub mod twin_beams;
+
+pub use plate::params::PlateParam;
+pub use twin_beams::params::BeamParam;
+
+/// Which benchmark a parameter set describes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "app", derive(clap::ValueEnum))]
+pub enum ModelKind {
+    /// Twin cantilever beams (paper section 2.1).
+    Beam,
+    /// Squeezed plate (paper section 2.2).
+    Plate,
+}
+
+impl ModelKind {
+    /// Both models, beams first.
+    pub const ALL: [ModelKind; 2] = [ModelKind::Beam, ModelKind::Plate];
+
+    /// The `model = "..."` value in preset files.
+    pub fn name(self) -> &'static str {
+        match self {
+            ModelKind::Beam => "beam",
+            ModelKind::Plate => "plate",
+        }
+    }
+
+    /// The parameters of this model, in display order.
+    pub fn params(self) -> &'static [Param] {
+        match self {
+            ModelKind::Beam => &BEAM_PARAMS,
+            ModelKind::Plate => &PLATE_PARAMS,
+        }
+    }
+
+    /// The other model.
+    pub fn other(self) -> ModelKind {
+        match self {
+            ModelKind::Beam => ModelKind::Plate,
+            ModelKind::Plate => ModelKind::Beam,
+        }
+    }
+
+    /// Parses a model key of this kind (`KT`, `nu`, ...).
+    ///
+    /// # Errors
+    /// [`UnknownParam`] (with the allowed keys) when the model has no such key.
+    pub fn param(self, key: &str) -> Result<Param, UnknownParam> {
+        self.params()
+            .iter()
+            .copied()
+            .find(|p| p.name() == key)
+            .ok_or_else(|| UnknownParam {
+                key: key.to_string(),
+                model: self,
+            })
+    }
+
+    /// The keys, space separated, as error messages list them.
+    pub fn key_list(self) -> String {
+        self.params()
+            .iter()
+            .map(|p| p.name())
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+}
+
+impl fmt::Display for ModelKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.name())
+    }
+}
+
+impl FromStr for ModelKind {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, Self::Err> {
+        ModelKind::ALL
+            .into_iter()
+            .find(|k| k.name() == text)
+            .ok_or_else(|| format!("unknown model '{text}': must be \"beam\" or \"plate\""))
+    }
+}
+
+/// A key the model does not have.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("unknown key '{key}' for the {model} model (allowed: {})", model.key_list())]
+pub struct UnknownParam {
+    /// The key as written.
+    pub key: String,
+    /// The model.
+    pub model: ModelKind,
+}
+
+/// A parameter of either model: what the TUI's parameter pane and presets iterate over.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Param {
+    /// A twin-beam parameter.
+    Beam(BeamParam),
+    /// A squeezed-plate parameter.
+    Plate(PlateParam),
+}
+
+const BEAM_PARAMS: [Param; BeamParam::ALL.len()] = {
+    let mut all = [Param::Beam(BeamParam::Length); BeamParam::ALL.len()];
+    let mut i = 0;
+    while i < all.len() {
+        all[i] = Param::Beam(BeamParam::ALL[i]);
+        i += 1;
+    }
+    all
+};
+
+const PLATE_PARAMS: [Param; 7] = {
+    let mut all = [Param::Plate(PlateParam::HalfLength); 7];
+    let mut i = 0;
+    while i < all.len() {
+        all[i] = Param::Plate(PlateParam::ALL[i]);
+        i += 1;
+    }
+    all
+};
+
+impl Param {
+    /// Key, unit, meaning, domain and step.
+    pub fn spec(self) -> ParamSpec {
+        match self {
+            Param::Beam(p) => p.spec(),
+            Param::Plate(p) => p.spec(),
+        }
+    }
+
+    /// The key (`KT`).
+    pub fn name(self) -> &'static str {
+        self.spec().name
+    }
+
+    /// The unit.
+    pub fn unit(self) -> Unit {
+        self.spec().unit
+    }
+
+    /// The model this parameter belongs to.
+    pub fn model(self) -> ModelKind {
+        match self {
+            Param::Beam(_) => ModelKind::Beam,
+            Param::Plate(_) => ModelKind::Plate,
+        }
+    }
+
+    /// The values engineers usually give this parameter, `[low, high]` in its unit: a value inside
+    /// the accepted domain but outside this range is accepted with a warning (a slip of the
+    /// keyboard, `mu = 4.5` for 0.45, or a unit mix-up, L in um). Wider than any benchmark in the
+    /// literature, narrower than the domain.
+    pub fn usual_range(self) -> (f64, f64) {
+        let length = (0.1, 1e4);
+        match self {
+            Param::Beam(BeamParam::Length | BeamParam::Width | BeamParam::HalfHeight)
+            | Param::Plate(PlateParam::HalfLength | PlateParam::Thickness) => length,
+            Param::Beam(BeamParam::Modulus) | Param::Plate(PlateParam::Modulus) => (1.0, 1.2e6),
+            Param::Beam(BeamParam::Pressure) | Param::Plate(PlateParam::Pressure) => (1e-3, 2e3),
+            Param::Beam(BeamParam::Friction) | Param::Plate(PlateParam::Friction) => (0.01, 2.0),
+            Param::Beam(BeamParam::Stiffness) | Param::Plate(PlateParam::Stiffness) => (0.1, 1e9),
+            Param::Beam(BeamParam::Force) => (0.0, 1e7),
+            Param::Beam(BeamParam::Poisson) | Param::Plate(PlateParam::Poisson) => (0.0, 0.5),
+        }
+    }
+
+    /// A warning when an accepted `value` is outside [`Param::usual_range`], naming the range.
+    pub fn unusual(self, value: f64) -> Option<String> {
+        let (low, high) = self.usual_range();
+        let unit = match self.unit() {
+            Unit::Dimensionless => String::new(),
+            unit => format!(" {unit}"),
+        };
+        (!(low..=high).contains(&value)).then(|| {
+            format!(
+                "{} = {}{unit} is far outside the usual range [{}, {}]{unit}: check the value",
+                self.name(),
+                Compact(value),
+                Compact(low),
+                Compact(high)
+            )
+        })
+    }
+
+    /// True for the tangential stiffness K_T of either model (shown in MPa/um as well).
+    pub fn is_stiffness(self) -> bool {
+        matches!(
+            self,
+            Param::Beam(BeamParam::Stiffness) | Param::Plate(PlateParam::Stiffness)
+        )
+    }
+}
+
+impl fmt::Display for Param {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.name())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::params::*;
+
+    #[test]
+    fn errors_name_field_value_and_range() {
+        let err = BeamParam::Length.check(-3.0).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "invalid L = -3: must be > 0 and finite (mm)"
+        );
+        // Huge and tiny values print as typed, not as hundreds of digits.
+        assert_eq!(
+            BeamParam::Length.check(-1e308).unwrap_err().to_string(),
+            "invalid L = -1e308: must be > 0 and finite (mm)"
+        );
+        assert_eq!(
+            BeamParam::Force.check(-1e-300).unwrap_err().to_string(),
+            "invalid F = -1e-300: must be >= 0 and finite (N)"
+        );
+        assert_eq!(
+            PlateParam::Poisson.check(0.5).unwrap_err().to_string(),
+            "invalid nu = 0.5: must be in [0, 0.5) (dimensionless)"
+        );
+        assert!(BeamParam::Modulus.check(f64::NAN).is_err());
+        assert!(BeamParam::Modulus.check(f64::INFINITY).is_err());
+        assert!(BeamParam::Modulus.check(0.0).is_err());
+        assert_eq!(BeamParam::Force.check(0.0), Ok(0.0));
+        assert!(BeamParam::Force.check(-1e-300).is_err());
+        assert_eq!(PlateParam::Poisson.check(0.0), Ok(0.0));
+        assert!(PlateParam::Poisson.check(0.5).is_err());
+        assert!(PlateParam::Poisson.check(-0.1).is_err());
+        assert_eq!(
+            PlateParam::Poisson.check(0.7).unwrap_err().to_string(),
+            "invalid nu = 0.7: must be in [0, 0.5) (dimensionless)"
+        );
+        assert_eq!(
+            BeamParam::Friction.check(-1.0).unwrap_err().to_string(),
+            "invalid mu = -1: must be > 0 and finite (dimensionless)"
+        );
+    }
+
+    #[test]
+    fn every_domain_is_bounded_and_says_its_range_with_the_unit() {
+        // Above the range, or positive below it: the range with the unit.
+        assert_eq!(
+            BeamParam::Force.check(1e307).unwrap_err().to_string(),
+            "invalid F = 1e307: must be in [0, 1e12] N"
+        );
+        assert_eq!(
+            PlateParam::HalfLength.check(1e-7).unwrap_err().to_string(),
+            "invalid L = 1e-7: must be in [1e-6, 1e6] mm"
+        );
+        assert_eq!(
+            BeamParam::Friction.check(11.0).unwrap_err().to_string(),
+            "invalid mu = 11: must be in [1e-6, 10] (dimensionless)"
+        );
+        assert_eq!(
+            BeamParam::Stiffness.check(2e12).unwrap_err().to_string(),
+            "invalid KT = 2e12: must be in [1e-6, 1e12] MPa/mm"
+        );
+        // Zero, negative, NaN and infinities keep the sign rule.
+        assert_eq!(
+            BeamParam::Modulus.check(0.0).unwrap_err().to_string(),
+            "invalid E = 0: must be > 0 and finite (MPa)"
+        );
+        assert_eq!(
+            BeamParam::Pressure
+                .check(f64::INFINITY)
+                .unwrap_err()
+                .to_string(),
+            "invalid P = (a number beyond 1.8e308): must be in [1e-6, 10000] MPa"
+        );
+        assert_eq!(
+            BeamParam::Force.check(f64::NAN).unwrap_err().to_string(),
+            "invalid F = NaN: must be >= 0 and finite (N)"
+        );
+        // Both ends are accepted, the next f64 beyond them is not.
+        for kind in ModelKind::ALL {
+            for &param in kind.params() {
+                let domain = param.spec().domain;
+                let (min, max) = (domain.min(), domain.max());
+                assert!(min.is_finite() && max.is_finite() && min < max, "{param}");
+                assert!(domain.contains(min), "{param}");
+                assert!(!domain.contains(min.next_down()), "{param}");
+                assert_eq!(
+                    domain.contains(max),
+                    domain != Domain::PoissonRatio,
+                    "{param}"
+                );
+                assert!(!domain.contains(max.next_up()), "{param}");
+                for v in [f64::NAN, -1.0, 0.5 * min, 2.0 * max, 1e300] {
+                    assert!(domain.contains(domain.clamp(v)), "{param} {v}");
+                }
+                assert_eq!(domain.clamp(min), min);
+            }
+        }
+        assert_eq!(Domain::FORCE.clamp(2e12), 1e12);
+        assert_eq!(
+            Domain::LENGTH.describe(Unit::Millimetre),
+            "must be in [1e-6, 1e6] mm"
+        );
+    }
+
+    #[test]
+    fn keys_parse_back_to_their_parameter_and_typos_list_the_keys() {
+        for kind in ModelKind::ALL {
+            for &param in kind.params() {
+                assert_eq!(kind.param(param.name()), Ok(param));
+                assert_eq!(param.model(), kind);
+            }
+        }
+        assert_eq!("KT".parse::<BeamParam>(), Ok(BeamParam::Stiffness));
+        assert_eq!("nu".parse::<PlateParam>(), Ok(PlateParam::Poisson));
+        assert_eq!(
+            "Kt".parse::<BeamParam>().unwrap_err().to_string(),
+            "unknown key 'Kt' for the beam model (allowed: L b h E nu P mu KT F)"
+        );
+        assert_eq!(
+            ModelKind::Plate.param("F").unwrap_err().to_string(),
+            "unknown key 'F' for the plate model (allowed: L tp E nu mu P KT)"
+        );
+    }
+
+    #[test]
+    fn steps_move_both_ways_and_respect_their_bounds() {
+        let kt = BeamParam::Stiffness.spec().step;
+        assert!((kt.apply(600.0, true, true, 0.0) / 600.0 - 10f64.powf(0.25)).abs() < 1e-12);
+        assert!((kt.apply(600.0, false, false, 0.0) - 600.0 / 1.02).abs() < 1e-12);
+        let nu = PlateParam::Poisson.spec().step;
+        assert_eq!(nu.apply(0.49, true, true, 0.0), 0.499);
+        assert_eq!(nu.apply(0.01, false, true, 0.0), 0.0);
+        let force = BeamParam::Force.spec().step;
+        assert!((force.apply(100.0, true, false, 80.0) - 100.8).abs() < 1e-12);
+        assert_eq!(force.apply(1.0, false, true, 80.0), 0.0);
+        for kind in ModelKind::ALL {
+            for &param in kind.params() {
+                let spec = param.spec();
+                assert!(
+                    spec.domain
+                        .contains(spec.step.apply(1e-3, false, true, 1.0))
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,339 @@
+//! The crate's layers, read from its source: every `crate::` path in shipped code (unit-test
+//! modules excluded) must point to a lower layer, never up or sideways; a problem's closed forms
+//! and its discretized solvers never import each other; and no problem imports another. The
+//! layers, lowest first (the crate docs in src/lib.rs say why each sits where it does):
+//!
+//! ```text
+//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- fe <- report <- tui <- cli
+//! ```
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+/// Each top-level module and its layer: a module may use only modules of a strictly lower layer.
+const LAYERS: &[(&str, u8)] = &[
+    ("kernel", 0),
+    ("file", 0),
+    ("numeric", 1),
+    ("problems", 2),
+    ("study", 3),
+    ("fit", 3),
+    ("verify", 3),
+    ("preset", 3),
+    ("fe", 4),
+    ("report", 5),
+    ("tui", 6),
+    ("cli", 7),
+];
+
+/// The files of a problem that hold its closed forms, and those that hold its discretized
+/// solvers: neither side may name the other, so that their agreement proves something.
+const CLOSED_FORM_SIDE: &[&str] = &["closed_form", "cycle", "validity"];
+const DISCRETIZED_SIDE: &[&str] = &["discretized", "continuum"];
+
+/// One source file: its path below `src/` and its code (comments and unit-test modules removed).
+struct Source {
+    path: String,
+    code: String,
+}
+
+fn layer_of(module: &str) -> Option<u8> {
+    LAYERS
+        .iter()
+        .find(|(name, _)| *name == module)
+        .map(|&(_, layer)| layer)
+}
+
+/// The top-level module a file belongs to (`problems/plate/continuum.rs` -> `problems`).
+fn top_module(path: &str) -> &str {
+    let first = path.split('/').next().unwrap_or(path);
+    first.strip_suffix(".rs").unwrap_or(first)
+}
+
+/// The code without comments (doc links are not dependencies) and without `#[cfg(test)]`
+/// modules (a unit test may build its fixture from any layer).
+fn shipped_code(text: &str) -> String {
+    let mut code = String::new();
+    let mut in_tests = false;
+    let mut lines = text.lines().peekable();
+    while let Some(line) = lines.next() {
+        if line.trim() == "#[cfg(test)]"
+            && lines
+                .peek()
+                .is_some_and(|next| next.trim_start().starts_with("mod "))
+        {
+            in_tests = true;
+        }
+        if in_tests {
+            continue;
+        }
+        let without_comment = match line.find("//") {
+            Some(at) => &line[..at],
+            None => line,
+        };
+        code.push_str(without_comment);
+        code.push('\n');
+    }
+    code
+}
+
+/// The items `lib.rs` re-exports at the crate root and the top-level module each comes from, so
+/// that `use crate::{TwinBeams}` counts as an edge to `problems`.
+fn root_reexports(lib: &str) -> BTreeMap<String, String> {
+    let mut items = BTreeMap::new();
+    let code = shipped_code(lib);
+    for statement in code.split(';') {
+        let statement = statement.trim();
+        let Some(path) = statement.strip_prefix("pub use ") else {
+            continue;
+        };
+        let module = path.split("::").next().unwrap_or_default().to_string();
+        let names = match (path.find('{'), path.rfind('}')) {
+            (Some(open), Some(close)) => path[open + 1..close].to_string(),
+            _ => path.rsplit("::").next().unwrap_or_default().to_string(),
+        };
+        for name in names.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+            items.insert(name.to_string(), module.clone());
+        }
+    }
+    items
+}
+
+/// The top-level modules a piece of code names through `crate::`.
+fn modules_used(code: &str, root: &BTreeMap<String, String>) -> BTreeSet<String> {
+    let mut used = BTreeSet::new();
+    for (at, _) in code.match_indices("crate::") {
+        let rest = &code[at + "crate::".len()..];
+        if let Some(group) = rest.strip_prefix('{') {
+            let group = &group[..group.find('}').unwrap_or(group.len())];
+            for item in group.split(',').map(str::trim) {
+                let head = item.split("::").next().unwrap_or_default();
+                match root.get(head) {
+                    Some(module) => used.insert(module.clone()),
+                    None => used.insert(head.to_string()),
+                };
+            }
+        } else {
+            let head: String = rest
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            match root.get(&head) {
+                Some(module) => used.insert(module.clone()),
+                None => used.insert(head),
+            };
+        }
+    }
+    used.retain(|m| !m.is_empty() && m.chars().next().is_some_and(char::is_lowercase));
+    used
+}
+
+/// Every breach of the layering in `sources`, one line each.
+fn breaches(sources: &[Source], root: &BTreeMap<String, String>) -> Vec<String> {
+    let mut found = Vec::new();
+    for source in sources {
+        let from = top_module(&source.path);
+        let Some(from_layer) = layer_of(from) else {
+            found.push(format!("{}: module `{from}` has no layer", source.path));
+            continue;
+        };
+        for to in modules_used(&source.code, root) {
+            if to == from {
+                continue;
+            }
+            match layer_of(&to) {
+                Some(to_layer) if to_layer < from_layer => {}
+                Some(_) => found.push(format!(
+                    "{}: `{from}` uses `{to}`, which is not below it",
+                    source.path
+                )),
+                None => found.push(format!("{}: uses `{to}`, which has no layer", source.path)),
+            }
+        }
+        found.extend(problem_breaches(source, root));
+    }
+    found
+}
+
+/// Inside `problems/`: a problem names no other problem, and its closed-form side and its
+/// discretized side never name each other (directly, through `super::`, or through the root
+/// re-exports of the closed forms).
+fn problem_breaches(source: &Source, root: &BTreeMap<String, String>) -> Vec<String> {
+    let mut found = Vec::new();
+    let parts: Vec<&str> = source.path.split('/').collect();
+    let [problems, problem, file] = parts[..] else {
+        return found;
+    };
+    if problems != "problems" {
+        return found;
+    }
+    let code = &source.code;
+    for (other, _) in code.match_indices("crate::problems::") {
+        let rest = &code[other + "crate::problems::".len()..];
+        let named: String = rest
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        let is_folder = named.chars().next().is_some_and(char::is_lowercase);
+        if is_folder && named != problem && !["inputs", "stiffness"].contains(&named.as_str()) {
+            found.push(format!(
+                "{}: problem `{problem}` uses problem `{named}`",
+                source.path
+            ));
+        }
+    }
+    let name = file.strip_suffix(".rs").unwrap_or(file);
+    let forbidden: &[&str] = if CLOSED_FORM_SIDE.contains(&name) {
+        DISCRETIZED_SIDE
+    } else if DISCRETIZED_SIDE.contains(&name) {
+        CLOSED_FORM_SIDE
+    } else {
+        &[]
+    };
+    for other in forbidden {
+        let local = format!("super::{other}");
+        let absolute = format!("crate::problems::{problem}::{other}");
+        if code.contains(&local) || code.contains(&absolute) {
+            found.push(format!("{}: `{name}` uses `{other}`", source.path));
+        }
+    }
+    // The closed forms' types are re-exported at the root: naming them is using them.
+    if DISCRETIZED_SIDE.contains(&name) {
+        let closed_form_items: Vec<&String> = root
+            .iter()
+            .filter(|(_, module)| module.as_str() == "problems")
+            .map(|(item, _)| item)
+            .collect();
+        for item in closed_form_items {
+            if code.contains(&format!("crate::{item}")) || grouped(code, item) {
+                found.push(format!(
+                    "{}: `{name}` uses the root re-export `{item}`",
+                    source.path
+                ));
+            }
+        }
+    }
+    found
+}
+
+/// True when `item` appears in a `crate::{...}` group.
+fn grouped(code: &str, item: &str) -> bool {
+    code.match_indices("crate::{").any(|(at, _)| {
+        let group = &code[at + "crate::{".len()..];
+        let group = &group[..group.find('}').unwrap_or(group.len())];
+        group.split(',').any(|i| i.trim() == item)
+    })
+}
+
+fn rust_files(dir: &Path, found: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            rust_files(&path, found);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            found.push(path);
+        }
+    }
+}
+
+fn crate_sources() -> (Vec<Source>, BTreeMap<String, String>) {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut paths = Vec::new();
+    rust_files(&src, &mut paths);
+    let mut sources = Vec::new();
+    for path in paths {
+        let relative = path
+            .strip_prefix(&src)
+            .unwrap()
+            .to_string_lossy()
+            .replace('\\', "/");
+        // The crate root lists modules and re-exports; the binary is outside the library.
+        if relative == "lib.rs" || relative == "main.rs" {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        sources.push(Source {
+            path: relative,
+            code: shipped_code(&text),
+        });
+    }
+    let lib = std::fs::read_to_string(src.join("lib.rs")).unwrap();
+    (sources, root_reexports(&lib))
+}
+
+#[test]
+fn every_edge_runs_down_and_the_two_sides_of_a_problem_stay_apart() {
+    let (sources, root) = crate_sources();
+    assert!(sources.len() > 50, "read {} files", sources.len());
+    let found = breaches(&sources, &root);
+    assert!(found.is_empty(), "layering breached:\n{}", found.join("\n"));
+}
+
+#[test]
+fn every_top_level_module_has_a_layer() {
+    let (sources, _) = crate_sources();
+    let modules: BTreeSet<&str> = sources.iter().map(|s| top_module(&s.path)).collect();
+    for module in modules {
+        assert!(layer_of(module).is_some(), "`{module}` has no layer");
+    }
+}
+
+/// The checker itself can fail: each kind of breach, written into a synthetic source, is
+/// reported.
+#[test]
+fn the_checker_reports_each_kind_of_breach() {
+    let lib = "pub use problems::twin_beams::closed_form::{TipForce, TwinBeams};\npub use kernel::regime::Regime;";
+    let root = root_reexports(lib);
+    assert_eq!(root.get("TwinBeams").map(String::as_str), Some("problems"));
+    let source = |path: &str, code: &str| Source {
+        path: path.to_string(),
+        code: shipped_code(code),
+    };
+    let cases = [
+        // Upward: the kernel naming a report, directly and through a root re-export.
+        ("kernel/format.rs", "use crate::report::text;", "not below"),
+        ("numeric/mesh.rs", "use crate::{TwinBeams};", "not below"),
+        // Sideways: two modules of one layer.
+        (
+            "fit/mod.rs",
+            "let x = crate::study::curves::f();",
+            "not below",
+        ),
+        // A cycle needs an upward edge, which the rule above already refuses.
+        ("report/mod.rs", "use crate::tui::app;", "not below"),
+        // The two sides of a problem.
+        (
+            "problems/plate/continuum.rs",
+            "use super::closed_form::SqueezedPlate;",
+            "uses `closed_form`",
+        ),
+        (
+            "problems/twin_beams/closed_form.rs",
+            "use crate::problems::twin_beams::discretized::TwinBeamsFe;",
+            "uses `discretized`",
+        ),
+        (
+            "problems/twin_beams/discretized.rs",
+            "use crate::{TipForce};",
+            "root re-export `TipForce`",
+        ),
+        // One problem naming another.
+        (
+            "problems/plate/closed_form.rs",
+            "use crate::problems::twin_beams::params::BeamParam;",
+            "uses problem `twin_beams`",
+        ),
+        // A module nobody placed.
+        ("newthing/mod.rs", "", "has no layer"),
+    ];
+    for (path, code, expected) in cases {
+        let found = breaches(&[source(path, code)], &root);
+        assert!(
+            found.iter().any(|f| f.contains(expected)),
+            "{path}: {code:?} gave {found:?}"
+        );
+    }
+    // Comments and unit tests are not dependencies; a downward edge is fine.
+    let fine = "// crate::tui\nuse crate::kernel::format::number;\n#[cfg(test)]\nmod tests {\n    use crate::cli;\n}\n";
+    assert!(breaches(&[source("report/text.rs", fine)], &root).is_empty());
+}
