@@ -35,7 +35,7 @@ use crate::study::curves::{self, RangeError, Samples, Spacing};
 use crate::study::target::{Target, TargetError, solve_for_target};
 use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
-use crate::{TipForce, TwinBeams};
+use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// microslip: friction benchmarks under the regularized Coulomb law (Ligier & Bonhote, 2014).
 ///
@@ -700,37 +700,31 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
     match &cli.command {
         None | Some(Command::Report) => out.write_all(report::paper_report().as_bytes())?,
         Some(Command::Beam(args)) => {
-            let (name, model) = load(&args.inputs, ModelKind::Beam, "beam")?;
-            if let Model::Beam { beams, force } = model {
-                match args.format {
-                    ReportFormat::Text => {
-                        out.write_all(text::beam(&name, &beams, force).as_bytes())?
-                    }
-                    ReportFormat::Json => write_json(out, &json::beam(&name, &beams, force))?,
-                }
+            let (name, beams, force) = load_beams(&args.inputs, "beam")?;
+            match args.format {
+                ReportFormat::Text => out.write_all(text::beam(&name, &beams, force).as_bytes())?,
+                ReportFormat::Json => write_json(out, &json::beam(&name, &beams, force))?,
             }
         }
         Some(Command::Plate {
             point: args,
             continuum,
         }) => {
-            let (name, model) = load(&args.inputs, ModelKind::Plate, "plate")?;
-            if let Model::Plate(plate) = model {
-                let solved = (*continuum
-                    || plate.validity().validity != crate::kernel::validity::Validity::Holds)
-                    .then(|| {
-                        crate::problems::plate::solve_plate_continuum(
-                            plate.params(),
-                            crate::problems::plate::ContinuumMesh::default(),
-                        )
-                    });
-                match args.format {
-                    ReportFormat::Text => {
-                        out.write_all(text::plate(&name, &plate, solved.as_ref()).as_bytes())?
-                    }
-                    ReportFormat::Json => {
-                        write_json(out, &json::plate(&name, &plate, solved.as_ref()))?
-                    }
+            let (name, plate) = load_plate(&args.inputs, "plate")?;
+            let solved = (*continuum
+                || plate.validity().validity != crate::kernel::validity::Validity::Holds)
+                .then(|| {
+                    crate::problems::plate::solve_plate_continuum(
+                        plate.params(),
+                        crate::problems::plate::ContinuumMesh::default(),
+                    )
+                });
+            match args.format {
+                ReportFormat::Text => {
+                    out.write_all(text::plate(&name, &plate, solved.as_ref()).as_bytes())?
+                }
+                ReportFormat::Json => {
+                    write_json(out, &json::plate(&name, &plate, solved.as_ref()))?
                 }
             }
         }
@@ -743,27 +737,23 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             format,
         })) => {
-            let param = varied(ModelKind::Beam, vary.as_deref(), "F")?;
+            let varied: BeamParam = vary.as_deref().unwrap_or("F").parse()?;
+            let param = Param::Beam(varied);
             let values = Samples::of_param(param, *from, *to, *points, spacing.spacing(param))
                 .map_err(force_range_error)?;
-            let (_, model) = load(inputs, ModelKind::Beam, "sweep beam")?;
-            match (model, param) {
-                (Model::Beam { beams, .. }, Param::Beam(BeamParam::Force)) => {
-                    let rows =
-                        curves::beam_force_sweep(beams, values).map_err(force_range_error)?;
-                    write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
-                }
-                (Model::Beam { beams, force }, Param::Beam(p)) => {
-                    let rows = curves::beam_param_sweep(beams, force, p, values)
-                        .map_err(force_range_error)?;
-                    write_varied(
-                        out,
-                        *format,
-                        param,
-                        rows.map(|(v, r)| (v, BeamRow::from(&r))),
-                    )?;
-                }
-                _ => {}
+            let (_, beams, force) = load_beams(inputs, "sweep beam")?;
+            if varied == BeamParam::Force {
+                let rows = curves::beam_force_sweep(beams, values).map_err(force_range_error)?;
+                write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
+            } else {
+                let rows = curves::beam_param_sweep(beams, force, varied, values)
+                    .map_err(force_range_error)?;
+                write_varied(
+                    out,
+                    *format,
+                    param,
+                    rows.map(|(v, r)| (v, BeamRow::from(&r))),
+                )?;
             }
         }
         Some(Command::Sweep(SweepCommand::Plate {
@@ -777,15 +767,15 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             format,
         })) => {
-            let (param, lo, hi, flags) = match (kt_from, kt_to, from, to) {
+            let (varied, lo, hi, flags) = match (kt_from, kt_to, from, to) {
                 (Some(a), Some(b), None, None) => (
-                    Param::Plate(PlateParam::Stiffness),
+                    PlateParam::Stiffness,
                     *a,
                     *b,
                     ["--kt-from", "--kt-to", "--points"],
                 ),
                 (None, None, Some(a), Some(b)) => (
-                    varied(ModelKind::Plate, vary.as_deref(), "KT")?,
+                    vary.as_deref().unwrap_or("KT").parse()?,
                     *a,
                     *b,
                     ["--from", "--to", "--points"],
@@ -796,25 +786,22 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                     ));
                 }
             };
+            let param = Param::Plate(varied);
             let range_error = |error| CliError::Range { error, flags };
             let values = Samples::of_param(param, lo, hi, *points, spacing.spacing(param))
                 .map_err(range_error)?;
-            let (_, model) = load(inputs, ModelKind::Plate, "sweep plate")?;
-            match (model, param) {
-                (Model::Plate(plate), Param::Plate(PlateParam::Stiffness)) => {
-                    let rows = curves::plate_kt_sweep(plate, values).map_err(range_error)?;
-                    write_table(out, *format, rows.map(|r| PlateRow::from(&r)))?;
-                }
-                (Model::Plate(plate), Param::Plate(p)) => {
-                    let rows = curves::plate_param_sweep(plate, p, values).map_err(range_error)?;
-                    write_varied(
-                        out,
-                        *format,
-                        param,
-                        rows.map(|(v, r)| (v, PlateRow::from(&r))),
-                    )?;
-                }
-                _ => {}
+            let (_, plate) = load_plate(inputs, "sweep plate")?;
+            if varied == PlateParam::Stiffness {
+                let rows = curves::plate_kt_sweep(plate, values).map_err(range_error)?;
+                write_table(out, *format, rows.map(|r| PlateRow::from(&r)))?;
+            } else {
+                let rows = curves::plate_param_sweep(plate, varied, values).map_err(range_error)?;
+                write_varied(
+                    out,
+                    *format,
+                    param,
+                    rows.map(|(v, r)| (v, PlateRow::from(&r))),
+                )?;
             }
         }
         Some(Command::Solve {
@@ -1005,11 +992,8 @@ fn beams_over_forces(
     command: &'static str,
 ) -> Result<(TwinBeams, Samples), CliError> {
     let forces = curves::force_samples(from, to, points).map_err(force_range_error)?;
-    match load(inputs, ModelKind::Beam, command)? {
-        (_, Model::Beam { beams, .. }) => Ok((beams, forces)),
-        // `load` refuses a preset of the other model with `WrongModel`.
-        (_, Model::Plate(_)) => unreachable!("load(.., Beam) returned a plate"),
-    }
+    let (_, beams, _) = load_beams(inputs, command)?;
+    Ok((beams, forces))
 }
 
 /// A sweep over `param`: its column (named with its unit, `mu`, `L_mm`) first, then the rows.
@@ -1025,11 +1009,6 @@ fn write_varied<R: serde::Serialize + Default>(
         &json::suffixed(param.name(), param.unit()),
         rows,
     )
-}
-
-/// The parameter of `--vary` (or `default` without it) of `kind`.
-fn varied(kind: ModelKind, vary: Option<&str>, default: &str) -> Result<Param, CliError> {
-    Ok(kind.param(vary.unwrap_or(default))?)
 }
 
 /// A force range error, named by the flags `--from`, `--to`, `--points`.
@@ -1089,8 +1068,6 @@ fn run_compare(
     }
     let source: Vec<String> = results.iter().map(|p| p.display().to_string()).collect();
     let source = source.join(", ");
-    // The parameters for CSV results, checked only when a CSV needs them.
-    let from_flags = || load(inputs, model, model_command(model, "compare"));
     match model {
         ModelKind::Beam => {
             let [path] = results else {
@@ -1106,14 +1083,9 @@ fn run_compare(
                 note_flags_the_deck_overrides(inputs);
             }
             let beams = match &loaded.header {
-                Some(header) => match header.model()? {
-                    Model::Beam { beams, .. } => beams,
-                    Model::Plate(_) => unreachable!("beam_results refuses plate decks"),
-                },
-                None => match from_flags()? {
-                    (_, Model::Beam { beams, .. }) => beams,
-                    (_, Model::Plate(_)) => unreachable!("load(.., Beam) returned a plate"),
-                },
+                Some(header) => header.model()?.into_beams().map_err(deck_of_other_model)?.0,
+                // A CSV has no header: the parameters come from the flags.
+                None => load_beams(inputs, "compare beam")?.1,
             };
             let comparison = fe::compare::compare_beams(&beams, &loaded.points);
             let stiffness = beams.params().tangential_stiffness;
@@ -1143,16 +1115,8 @@ fn run_compare(
                     note_flags_the_deck_overrides(inputs);
                 }
                 let plate = match &loaded.header {
-                    Some(header) => match header.model()? {
-                        Model::Plate(plate) => plate,
-                        Model::Beam { .. } => unreachable!("plate_results refuses beam decks"),
-                    },
-                    None => match from_flags()? {
-                        (_, Model::Plate(plate)) => plate,
-                        (_, Model::Beam { .. }) => {
-                            unreachable!("load(.., Plate) returned beams")
-                        }
-                    },
+                    Some(header) => header.model()?.into_plate().map_err(deck_of_other_model)?,
+                    None => load_plate(inputs, "compare plate")?.1,
                 };
                 rows.extend(fe::compare::compare_plate(&plate, &loaded.points));
             }
@@ -1299,15 +1263,55 @@ fn load(
 ) -> Result<(String, Model), CliError> {
     let (name, preset) = resolve_preset(args, wanted)?;
     if preset.inputs.kind() != wanted {
-        let spec = args.preset.clone().unwrap_or_default();
-        return Err(CliError::WrongModel {
-            preset: spec,
-            found: preset.inputs.kind(),
-            wanted,
-            command,
-        });
+        return Err(wrong_model(args, preset.inputs.kind(), wanted, command));
     }
     apply_and_validate(args, name, preset)
+}
+
+/// The twin beams and tip force of `args` (a preset of another problem is refused by name).
+fn load_beams(
+    args: &InputArgs,
+    command: &'static str,
+) -> Result<(String, TwinBeams, TipForce), CliError> {
+    let (name, model) = load(args, ModelKind::Beam, command)?;
+    let (beams, force) = model
+        .into_beams()
+        .map_err(|found| wrong_model(args, found, ModelKind::Beam, command))?;
+    Ok((name, beams, force))
+}
+
+/// The squeezed plate of `args` (a preset of another problem is refused by name).
+fn load_plate(
+    args: &InputArgs,
+    command: &'static str,
+) -> Result<(String, SqueezedPlate), CliError> {
+    let (name, model) = load(args, ModelKind::Plate, command)?;
+    let plate = model
+        .into_plate()
+        .map_err(|found| wrong_model(args, found, ModelKind::Plate, command))?;
+    Ok((name, plate))
+}
+
+/// A preset of the problem `found` given to a command for `wanted`.
+fn wrong_model(
+    args: &InputArgs,
+    found: ModelKind,
+    wanted: ModelKind,
+    command: &'static str,
+) -> CliError {
+    CliError::WrongModel {
+        preset: args.preset.clone().unwrap_or_default(),
+        found,
+        wanted,
+        command,
+    }
+}
+
+/// A deck whose header describes another problem than the results reader was asked for.
+fn deck_of_other_model(found: ModelKind) -> CliError {
+    CliError::Invalid(format!(
+        "the deck's header describes the {found} problem, not the one compared"
+    ))
 }
 
 /// Like [`load`], for commands that accept either model (`default` picks the default preset).
@@ -1378,10 +1382,7 @@ fn run_fit(
     format: ReportFormat,
 ) -> Result<(), CliError> {
     let (fixed_mu, fixed_kt) = parse_fixed(fixed)?;
-    let (name, model) = load(inputs, ModelKind::Beam, "fit beam")?;
-    let Model::Beam { beams, .. } = model else {
-        return Ok(());
-    };
+    let (name, beams, _) = load_beams(inputs, "fit beam")?;
     let data_error = |reason: String| CliError::Data {
         path: path.display().to_string(),
         reason,
@@ -1494,10 +1495,7 @@ fn run_cycle(
         flags: ["", "", "--points"],
     };
     curves::check_points(points).map_err(points_error)?;
-    let (name, model) = load(inputs, ModelKind::Beam, "cycle")?;
-    let Model::Beam { beams, .. } = model else {
-        return Ok(());
-    };
+    let (name, beams, _) = load_beams(inputs, "cycle")?;
     match format {
         CycleFormat::Text => out.write_all(text::cycle(&name, &beams, amplitude).as_bytes())?,
         CycleFormat::Json => write_json(out, &json::cycle(&name, &beams, amplitude))?,

@@ -68,6 +68,23 @@ pub struct InterfaceData {
 }
 
 impl Model {
+    /// The twin beams and their tip force, when this is the twin-beam problem: how a caller that
+    /// asked for beams gets them typed, without a match that could only fail by a bug.
+    pub fn into_beams(self) -> Result<(TwinBeams, TipForce), ModelKind> {
+        match self {
+            Model::Beam { beams, force } => Ok((beams, force)),
+            other => Err(other.kind()),
+        }
+    }
+
+    /// The squeezed plate, when this is the plate problem (see [`Model::into_beams`]).
+    pub fn into_plate(self) -> Result<SqueezedPlate, ModelKind> {
+        match self {
+            Model::Plate(plate) => Ok(plate),
+            other => Err(other.kind()),
+        }
+    }
+
     /// Which model this is.
     pub fn kind(&self) -> ModelKind {
         match self {
