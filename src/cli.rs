@@ -505,10 +505,7 @@ impl ValueEnum for AnyChart {
     }
 
     fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
-        let model = match self.kind() {
-            ModelKind::Beam => "beam",
-            ModelKind::Plate => "plate",
-        };
+        let model = self.kind().name();
         Some(
             clap::builder::PossibleValue::new(self.key())
                 .help(format!("{model}: {}", self.title())),

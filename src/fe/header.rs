@@ -130,17 +130,11 @@ impl DeckHeader {
         let mut text = format!(
             "** microslip {}: CalculiX (ccx 2.20) deck for the {} (Ligier & Bonhote 2014)\n",
             env!("CARGO_PKG_VERSION"),
-            match kind {
-                ModelKind::Beam => "twin cantilever beams",
-                ModelKind::Plate => "squeezed plate",
-            },
+            kind.description().title,
         );
         text.push_str(&self.machine_line());
         text.push('\n');
-        let job = match kind {
-            ModelKind::Beam => "beam",
-            ModelKind::Plate => "plate",
-        };
+        let job = kind.name();
         let _ = writeln!(
             text,
             "** Units: mm, N, MPa; stick slope K_T in MPa/mm.\n\

@@ -367,9 +367,25 @@ pub struct ParamSpec {
     pub domain: Domain,
     /// Arrow-key step.
     pub step: Step,
+    /// The values engineers usually give this parameter, `[low, high]` in its unit: a value inside
+    /// the accepted domain but outside this range is accepted with a warning (a slip of the
+    /// keyboard, `mu = 4.5` for 0.45, or a unit mix-up, L in um). Wider than any benchmark in the
+    /// literature, narrower than the domain. Set with [`ParamSpec::usual`].
+    pub usual: (f64, f64),
 }
 
-/// A [`ParamSpec`] in one line, for the problems' tables of parameters.
+impl ParamSpec {
+    /// The same spec with its usual range set to `[low, high]`.
+    pub const fn usual(self, low: f64, high: f64) -> ParamSpec {
+        ParamSpec {
+            usual: (low, high),
+            ..self
+        }
+    }
+}
+
+/// A [`ParamSpec`] in one line, for the problems' tables of parameters; its usual range is
+/// unbounded until [`ParamSpec::usual`] sets it (a test requires every problem's to be set).
 pub const fn spec(
     name: &'static str,
     unit: Unit,
@@ -383,6 +399,7 @@ pub const fn spec(
         meaning,
         domain,
         step,
+        usual: (f64::NEG_INFINITY, f64::INFINITY),
     }
 }
 
@@ -392,14 +409,16 @@ pub const MODULUS: ParamSpec = spec(
     "Young's modulus",
     Domain::MODULUS,
     FACTOR,
-);
+)
+.usual(1.0, 1.2e6);
 pub const FRICTION: ParamSpec = spec(
     "mu",
     Unit::Dimensionless,
     "friction coefficient",
     Domain::FRICTION,
     FACTOR,
-);
+)
+.usual(0.01, 2.0);
 /// The Poisson ratio; stepping stops just short of the excluded 0.5.
 pub const POISSON: ParamSpec = spec(
     "nu",
@@ -412,7 +431,8 @@ pub const POISSON: ParamSpec = spec(
         min: 0.0,
         max: 0.499,
     },
-);
+)
+.usual(0.0, 0.5);
 /// K_T spans decades: its coarse step is a quarter decade.
 pub const STIFFNESS: ParamSpec = spec(
     "KT",
@@ -423,7 +443,8 @@ pub const STIFFNESS: ParamSpec = spec(
         fine: 1.02,
         coarse: 1.778_279_410_038_922_8, // 10^0.25
     },
-);
+)
+.usual(0.1, 1e9);
 
 /// Parses a number as users type it: `1e6`, `600`, `0.3`; rejects NaN and infinities spelled out.
 pub fn parse_number(text: &str) -> Option<f64> {

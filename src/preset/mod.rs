@@ -169,10 +169,7 @@ pub const BUNDLED: &[(&str, &str)] = &[
 
 /// The bundled preset that opens a model by default (the paper's data set).
 pub fn default_name(kind: ModelKind) -> &'static str {
-    match kind {
-        ModelKind::Beam => "paper-beams",
-        ModelKind::Plate => "paper-plate",
-    }
+    kind.description().paper_preset
 }
 
 /// The bundled presets, parsed.
@@ -287,6 +284,14 @@ pub fn listing(user_dir: Option<&Path>) -> Vec<Listed> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_problem_opens_on_a_bundled_preset_of_its_own() {
+        for kind in ModelKind::ALL {
+            let preset = resolve(default_name(kind)).unwrap();
+            assert_eq!(preset.inputs.kind(), kind, "{}", default_name(kind));
+        }
+    }
     use crate::problems::{BeamParam, Param};
 
     #[test]

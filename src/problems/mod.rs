@@ -12,6 +12,20 @@ use thiserror::Error;
 
 use crate::kernel::params::{Compact, ParamSpec, Unit};
 
+/// The parameters of one problem as [`Param`]s, in the order of `$ty::ALL`: a const array, so
+/// that a problem's [`Description`] is a constant.
+macro_rules! param_list {
+    ($variant:path, $ty:ty) => {{
+        let mut all = [$variant(<$ty>::ALL[0]); <$ty>::ALL.len()];
+        let mut i = 0;
+        while i < all.len() {
+            all[i] = $variant(<$ty>::ALL[i]);
+            i += 1;
+        }
+        all
+    }};
+}
+
 pub mod inputs;
 pub mod plate;
 pub mod stiffness;
@@ -19,6 +33,21 @@ pub mod twin_beams;
 
 pub use plate::params::PlateParam;
 pub use twin_beams::params::BeamParam;
+
+/// What the generic layers (presets, deck headers, commands, the parameter pane) know of a
+/// problem, as data: a new problem writes one in its folder and adds one line to
+/// [`ModelKind::description`].
+#[derive(Debug)]
+pub struct Description {
+    /// The key in presets (`model = "beam"`), commands and JSON.
+    pub key: &'static str,
+    /// The problem for people ("twin cantilever beams").
+    pub title: &'static str,
+    /// The bundled preset that opens it (the paper's data set).
+    pub paper_preset: &'static str,
+    /// Its parameters, in display order.
+    pub params: &'static [Param],
+}
 
 /// Which benchmark a parameter set describes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -34,20 +63,23 @@ impl ModelKind {
     /// Both models, beams first.
     pub const ALL: [ModelKind; 2] = [ModelKind::Beam, ModelKind::Plate];
 
+    /// What the generic layers know of the problem: the one line per problem of this crate
+    /// (besides the variants of the enums that carry a problem's own types).
+    pub fn description(self) -> &'static Description {
+        match self {
+            ModelKind::Beam => &twin_beams::DESCRIPTION,
+            ModelKind::Plate => &plate::DESCRIPTION,
+        }
+    }
+
     /// The `model = "..."` value in preset files.
     pub fn name(self) -> &'static str {
-        match self {
-            ModelKind::Beam => "beam",
-            ModelKind::Plate => "plate",
-        }
+        self.description().key
     }
 
     /// The parameters of this model, in display order.
     pub fn params(self) -> &'static [Param] {
-        match self {
-            ModelKind::Beam => &BEAM_PARAMS,
-            ModelKind::Plate => &PLATE_PARAMS,
-        }
+        self.description().params
     }
 
     /// The other model.
@@ -96,7 +128,13 @@ impl FromStr for ModelKind {
         ModelKind::ALL
             .into_iter()
             .find(|k| k.name() == text)
-            .ok_or_else(|| format!("unknown model '{text}': must be \"beam\" or \"plate\""))
+            .ok_or_else(|| {
+                let names: Vec<String> = ModelKind::ALL
+                    .iter()
+                    .map(|k| format!("\"{}\"", k.name()))
+                    .collect();
+                format!("unknown model '{text}': must be {}", names.join(" or "))
+            })
     }
 }
 
@@ -118,26 +156,6 @@ pub enum Param {
     /// A squeezed-plate parameter.
     Plate(PlateParam),
 }
-
-const BEAM_PARAMS: [Param; BeamParam::ALL.len()] = {
-    let mut all = [Param::Beam(BeamParam::Length); BeamParam::ALL.len()];
-    let mut i = 0;
-    while i < all.len() {
-        all[i] = Param::Beam(BeamParam::ALL[i]);
-        i += 1;
-    }
-    all
-};
-
-const PLATE_PARAMS: [Param; 7] = {
-    let mut all = [Param::Plate(PlateParam::HalfLength); 7];
-    let mut i = 0;
-    while i < all.len() {
-        all[i] = Param::Plate(PlateParam::ALL[i]);
-        i += 1;
-    }
-    all
-};
 
 impl Param {
     /// Key, unit, meaning, domain and step.
@@ -166,22 +184,9 @@ impl Param {
         }
     }
 
-    /// The values engineers usually give this parameter, `[low, high]` in its unit: a value inside
-    /// the accepted domain but outside this range is accepted with a warning (a slip of the
-    /// keyboard, `mu = 4.5` for 0.45, or a unit mix-up, L in um). Wider than any benchmark in the
-    /// literature, narrower than the domain.
+    /// The values engineers usually give this parameter (see [`ParamSpec::usual`]).
     pub fn usual_range(self) -> (f64, f64) {
-        let length = (0.1, 1e4);
-        match self {
-            Param::Beam(BeamParam::Length | BeamParam::Width | BeamParam::HalfHeight)
-            | Param::Plate(PlateParam::HalfLength | PlateParam::Thickness) => length,
-            Param::Beam(BeamParam::Modulus) | Param::Plate(PlateParam::Modulus) => (1.0, 1.2e6),
-            Param::Beam(BeamParam::Pressure) | Param::Plate(PlateParam::Pressure) => (1e-3, 2e3),
-            Param::Beam(BeamParam::Friction) | Param::Plate(PlateParam::Friction) => (0.01, 2.0),
-            Param::Beam(BeamParam::Stiffness) | Param::Plate(PlateParam::Stiffness) => (0.1, 1e9),
-            Param::Beam(BeamParam::Force) => (0.0, 1e7),
-            Param::Beam(BeamParam::Poisson) | Param::Plate(PlateParam::Poisson) => (0.0, 0.5),
-        }
+        self.spec().usual
     }
 
     /// A warning when an accepted `value` is outside [`Param::usual_range`], naming the range.
@@ -202,12 +207,10 @@ impl Param {
         })
     }
 
-    /// True for the tangential stiffness K_T of either model (shown in MPa/um as well).
+    /// True for the tangential stiffness K_T of any problem (shown in MPa/um as well): the one
+    /// parameter in MPa/mm.
     pub fn is_stiffness(self) -> bool {
-        matches!(
-            self,
-            Param::Beam(BeamParam::Stiffness) | Param::Plate(PlateParam::Stiffness)
-        )
+        self.unit() == Unit::MegapascalPerMillimetre
     }
 }
 
@@ -221,6 +224,37 @@ impl fmt::Display for Param {
 mod tests {
     use super::*;
     use crate::kernel::params::*;
+
+    #[test]
+    fn every_parameter_of_every_problem_has_a_usual_range_inside_its_domain() {
+        for kind in ModelKind::ALL {
+            for &param in kind.params() {
+                let (low, high) = param.usual_range();
+                let domain = param.spec().domain;
+                assert!(
+                    low.is_finite() && high.is_finite(),
+                    "{param}: usual range not set"
+                );
+                assert!(low < high, "{param}");
+                // Within the domain's bounds (an open bound, nu < 0.5, may be the range's end).
+                assert!(low >= domain.min() && high <= domain.max(), "{param}");
+            }
+        }
+        // Exactly K_T counts as a stiffness.
+        let stiffnesses: Vec<Param> = ModelKind::ALL
+            .iter()
+            .flat_map(|k| k.params())
+            .copied()
+            .filter(|p| p.is_stiffness())
+            .collect();
+        assert_eq!(
+            stiffnesses,
+            [
+                Param::Beam(BeamParam::Stiffness),
+                Param::Plate(PlateParam::Stiffness)
+            ]
+        );
+    }
 
     #[test]
     fn errors_name_field_value_and_range() {

@@ -11,3 +11,17 @@ pub mod validity;
 
 pub use continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};
 pub use discretized::PlateFe;
+
+use crate::problems::{Description, Param};
+use params::PlateParam;
+
+/// The squeezed plate as the generic layers see it.
+pub const DESCRIPTION: Description = Description {
+    key: "plate",
+    title: "squeezed plate",
+    paper_preset: "paper-plate",
+    params: &PARAMS,
+};
+
+/// Every parameter, in display order.
+const PARAMS: [Param; PlateParam::ALL.len()] = param_list!(Param::Plate, PlateParam);

@@ -48,14 +48,16 @@ impl PlateParam {
                 "half-length of the plate",
                 Domain::LENGTH,
                 FACTOR,
-            ),
+            )
+            .usual(0.1, 1e4),
             PlateParam::Thickness => spec(
                 "tp",
                 Unit::Millimetre,
                 "plate thickness",
                 Domain::LENGTH,
                 FACTOR,
-            ),
+            )
+            .usual(0.1, 1e4),
             PlateParam::Modulus => MODULUS,
             PlateParam::Poisson => POISSON,
             PlateParam::Friction => FRICTION,
@@ -65,7 +67,8 @@ impl PlateParam {
                 "applied pressure",
                 Domain::PRESSURE,
                 FACTOR,
-            ),
+            )
+            .usual(1e-3, 2e3),
             PlateParam::Stiffness => STIFFNESS,
         }
     }

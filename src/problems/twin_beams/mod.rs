@@ -10,3 +10,17 @@ pub mod params;
 pub mod validity;
 
 pub use discretized::{InterfaceSample, TwinBeamsFe};
+
+use crate::problems::{Description, Param};
+use params::BeamParam;
+
+/// The twin beams as the generic layers see them.
+pub const DESCRIPTION: Description = Description {
+    key: "beam",
+    title: "twin cantilever beams",
+    paper_preset: "paper-beams",
+    params: &PARAMS,
+};
+
+/// Every parameter, in display order.
+const PARAMS: [Param; BeamParam::ALL.len()] = param_list!(Param::Beam, BeamParam);

@@ -49,15 +49,20 @@ impl BeamParam {
     pub fn spec(self) -> ParamSpec {
         const LENGTH: Domain = Domain::LENGTH;
         match self {
-            BeamParam::Length => spec("L", Unit::Millimetre, "beam length", LENGTH, FACTOR),
-            BeamParam::Width => spec("b", Unit::Millimetre, "beam width", LENGTH, FACTOR),
+            BeamParam::Length => {
+                spec("L", Unit::Millimetre, "beam length", LENGTH, FACTOR).usual(0.1, 1e4)
+            }
+            BeamParam::Width => {
+                spec("b", Unit::Millimetre, "beam width", LENGTH, FACTOR).usual(0.1, 1e4)
+            }
             BeamParam::HalfHeight => spec(
                 "h",
                 Unit::Millimetre,
                 "half height (each beam is 2h high)",
                 LENGTH,
                 FACTOR,
-            ),
+            )
+            .usual(0.1, 1e4),
             BeamParam::Modulus => MODULUS,
             BeamParam::Pressure => spec(
                 "P",
@@ -65,7 +70,8 @@ impl BeamParam {
                 "interface pressure",
                 Domain::PRESSURE,
                 FACTOR,
-            ),
+            )
+            .usual(1e-3, 2e3),
             BeamParam::Friction => FRICTION,
             BeamParam::Stiffness => STIFFNESS,
             BeamParam::Poisson => POISSON,
@@ -78,7 +84,8 @@ impl BeamParam {
                     fine: 0.01,
                     coarse: 0.1,
                 },
-            ),
+            )
+            .usual(0.0, 1e7),
         }
     }
 
