@@ -499,6 +499,49 @@ pub enum FigureFormat {
     Csv,
 }
 
+/// clap's view of a library enum: each value with the key users type and its help line. The
+/// library's own types carry no clap derive (the library compiles without clap, and what a
+/// command line accepts is this layer's business), so each lists its values here.
+macro_rules! value_enum {
+    ($ty:ty { $($variant:expr => ($key:expr, $help:expr)),+ $(,)? }) => {
+        impl ValueEnum for $ty {
+            fn value_variants<'a>() -> &'a [Self] {
+                &[$($variant),+]
+            }
+
+            fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+                $(
+                    if *self == $variant {
+                        return Some(clap::builder::PossibleValue::new($key).help($help));
+                    }
+                )+
+                None
+            }
+        }
+    };
+}
+
+value_enum!(ModelKind {
+    ModelKind::Beam => ("beam", "Twin cantilever beams (paper section 2.1)"),
+    ModelKind::Plate => ("plate", "Squeezed plate (paper section 2.2)"),
+});
+
+value_enum!(TableFormat {
+    TableFormat::Csv => ("csv", "CSV with a header line"),
+    TableFormat::Json => ("json", "JSON array of row objects"),
+});
+
+value_enum!(YMode {
+    YMode::Linear => ("linear", "The values, on a linear axis"),
+    YMode::Log => ("log", "The values, on a logarithmic axis (decades)"),
+    YMode::Relative => ("relative", "Each curve over the Coulomb curve, minus 1, in %"),
+});
+
+value_enum!(DeckMesh {
+    DeckMesh::Coarse => ("coarse", "About 100 elements along the beam and 2 through each beam's height; 4 through the plate"),
+    DeckMesh::Fine => ("fine", "Every element size halved"),
+});
+
 impl ValueEnum for AnyChart {
     fn value_variants<'a>() -> &'a [Self] {
         AnyChart::ALL

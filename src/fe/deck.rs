@@ -26,7 +26,6 @@ use crate::{SqueezedPlate, TipForce, TwinBeams};
 /// How fine the deck's mesh is. `Fine` halves every element size of `Coarse`: running both is the
 /// mesh-convergence check (README, "Benchmark your FE code").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "app", derive(clap::ValueEnum))]
 pub enum DeckMesh {
     /// About 100 elements along the beam and 2 through each beam's height; 4 through the plate.
     #[default]

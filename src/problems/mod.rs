@@ -51,7 +51,6 @@ pub struct Description {
 
 /// Which benchmark a parameter set describes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "app", derive(clap::ValueEnum))]
 pub enum ModelKind {
     /// Twin cantilever beams (paper section 2.1).
     Beam,

@@ -9,7 +9,6 @@ use super::csv;
 
 /// Formats of a table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "app", derive(clap::ValueEnum))]
 pub enum TableFormat {
     /// CSV with a header line.
     Csv,

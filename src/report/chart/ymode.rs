@@ -9,7 +9,6 @@ use crate::study::curves::Series;
 
 /// How the y axis shows the data.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-#[cfg_attr(feature = "app", derive(clap::ValueEnum))]
 pub enum YMode {
     /// The values, on a linear axis.
     #[default]
