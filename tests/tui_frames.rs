@@ -1,8 +1,8 @@
 //! Snapshot tests of rendered frames: each snapshot is a claim about what users see. Review changes
 //! with `cargo insta review` (or read the `.snap.new` files) before accepting them.
 
-use microslip::curves::Zone;
 use microslip::preset;
+use microslip::study::curves::Zone;
 use microslip::tui::action::Action;
 use microslip::tui::app::{App, AppOptions};
 use microslip::tui::theme::{Charset, Theme};
