@@ -218,30 +218,32 @@ pub enum Command {
         #[arg(value_enum)]
         model: ModelKind,
         #[command(flatten)]
-        inputs: InputArgs,
-        /// Mesh density (fine halves every element size: run both to check convergence).
-        #[arg(long, value_enum, default_value_t = DeckMesh::Coarse)]
-        mesh: DeckMesh,
-        /// Tip forces of the load steps (N, increasing), beams only; default: F_thre x 0.5, 0.75,
-        /// 1, 1.25, 1.875, 2.5.
-        #[arg(
-            long,
-            value_name = "F0,F1,...",
-            value_delimiter = ',',
-            allow_negative_numbers = true
-        )]
-        loads: Option<Vec<f64>>,
-        /// Give the FE code a stiff stick slope (boundary layer a tenth of h or t_p) instead of
-        /// K_T: plain Coulomb to within what the mesh resolves.
-        #[arg(long)]
-        near_coulomb: bool,
-        /// Largest tip-force change per increment (N) in the load steps that end beyond F_1
-        /// (friction is path-dependent once it saturates), beams only; default: F_1 / 20.
-        #[arg(long, value_name = "N")]
-        increment: Option<f64>,
+        deck: DeckArgs,
         /// Write the deck to FILE instead of stdout (replaced atomically if it exists).
         #[arg(short = 'o', long, value_name = "FILE")]
         output: Option<PathBuf>,
+    },
+    /// Benchmark CalculiX in one command: write the deck, run ccx on it (progress on stderr, its
+    /// files and log kept in a work folder) and print the comparison with the closed forms.
+    Bench {
+        /// The FE code (ccx: CalculiX 2.20).
+        #[arg(value_enum)]
+        code: FeCode,
+        /// Which benchmark.
+        #[arg(value_enum)]
+        model: ModelKind,
+        #[command(flatten)]
+        deck: DeckArgs,
+        /// Work folder (made if missing; refused if it holds the job's files already). Default:
+        /// a new folder microslip-ccx-JOB-N in the system's temporary folder.
+        #[arg(long, value_name = "DIR")]
+        workdir: Option<PathBuf>,
+        /// The ccx program to run (default: `ccx` on the PATH).
+        #[arg(long, value_name = "PROGRAM", default_value = "ccx")]
+        ccx: String,
+        /// Output format of the comparison.
+        #[arg(long, value_enum, default_value_t = CompareFormat::Text)]
+        format: CompareFormat,
     },
     /// Compare FE results with the closed forms, point by point, and the K_T they imply.
     Compare {
@@ -470,6 +472,33 @@ pub enum ReportFormat {
     Text,
     /// JSON object with unit-suffixed names.
     Json,
+}
+
+/// What a deck is made of: the parameters, the mesh and the load path (`deck` and `bench`).
+#[derive(Debug, Args)]
+pub struct DeckArgs {
+    #[command(flatten)]
+    inputs: InputArgs,
+    /// Mesh density (fine halves every element size: run both to check convergence).
+    #[arg(long, value_enum, default_value_t = DeckMesh::Coarse)]
+    mesh: DeckMesh,
+    /// Tip forces of the load steps (N, increasing), beams only; default: F_thre x 0.5, 0.75,
+    /// 1, 1.25, 1.875, 2.5.
+    #[arg(
+        long,
+        value_name = "F0,F1,...",
+        value_delimiter = ',',
+        allow_negative_numbers = true
+    )]
+    loads: Option<Vec<f64>>,
+    /// Give the FE code a stiff stick slope (boundary layer a tenth of h or t_p) instead of
+    /// K_T: plain Coulomb to within what the mesh resolves.
+    #[arg(long)]
+    near_coulomb: bool,
+    /// Largest tip-force change per increment (N) in the load steps that end beyond F_1
+    /// (friction is path-dependent once it saturates), beams only; default: F_1 / 20.
+    #[arg(long, value_name = "N")]
+    increment: Option<f64>,
 }
 
 /// External FE codes `deck` writes for.
@@ -975,40 +1004,20 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
         Some(Command::Deck {
             code: FeCode::Ccx,
             model,
-            inputs,
-            mesh,
-            loads,
-            near_coulomb,
-            increment,
+            deck,
             output,
         }) => {
-            let slope = if *near_coulomb {
-                StickSlope::NearCoulomb
-            } else {
-                StickSlope::Model
-            };
-            let deck = match load(inputs, *model, model_command(*model, "deck ccx"))? {
-                (_, Model::Beam { beams, .. }) => {
-                    let loads = deck_loads(&beams, loads.as_deref(), slope)?;
-                    let force_step = increment
-                        .map(|f| check_flag("--increment", f, Domain::FORCE_STEP, Unit::Newton))
-                        .transpose()?;
-                    let path = deck::LoadPath { force_step };
-                    deck::beam_deck_on_path(&beams, &loads, *mesh, slope, path)
-                }
-                (_, Model::Plate(plate)) => {
-                    if loads.is_some() {
-                        return Err(CliError::Usage(
-                            "--loads are the tip forces of a beam deck; the plate deck applies its \
-                             pressure P in one step (set P with --set P=...)",
-                        ));
-                    }
-                    deck::plate_deck(&plate, *mesh, slope)
-                }
-            }
-            .map_err(|e| CliError::Invalid(e.to_string()))?;
+            let deck = build_deck(*model, deck, model_command(*model, "deck ccx"))?;
             write_output(out, output.as_deref(), deck.as_bytes())?
         }
+        Some(Command::Bench {
+            code: FeCode::Ccx,
+            model,
+            deck,
+            workdir,
+            ccx,
+            format,
+        }) => run_bench(out, *model, deck, workdir.as_deref(), ccx, *format)?,
         Some(Command::Verify {
             quick,
             elements,
@@ -1019,6 +1028,91 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
         }
     }
     Ok(())
+}
+
+/// The deck `deck` describes for `model`, as text. `command` names the subcommand in errors.
+fn build_deck(
+    model: ModelKind,
+    deck: &DeckArgs,
+    command: &'static str,
+) -> Result<String, CliError> {
+    let slope = if deck.near_coulomb {
+        StickSlope::NearCoulomb
+    } else {
+        StickSlope::Model
+    };
+    match load(&deck.inputs, model, command)? {
+        (_, Model::Beam { beams, .. }) => {
+            let loads = deck_loads(&beams, deck.loads.as_deref(), slope)?;
+            let force_step = deck
+                .increment
+                .map(|f| check_flag("--increment", f, Domain::FORCE_STEP, Unit::Newton))
+                .transpose()?;
+            let path = deck::LoadPath { force_step };
+            deck::beam_deck_on_path(&beams, &loads, deck.mesh, slope, path)
+        }
+        (_, Model::Plate(plate)) => {
+            if deck.loads.is_some() {
+                return Err(CliError::Usage(
+                    "--loads are the tip forces of a beam deck; the plate deck applies its \
+                     pressure P in one step (set P with --set P=...)",
+                ));
+            }
+            deck::plate_deck(&plate, deck.mesh, slope)
+        }
+    }
+    .map_err(|e| CliError::Invalid(e.to_string()))
+}
+
+/// `microslip bench ccx MODEL`: the deck into a work folder, ccx on it with progress on stderr,
+/// then the comparison as `compare` prints it. The folder is kept and named on stderr.
+fn run_bench(
+    out: &mut impl Write,
+    model: ModelKind,
+    deck: &DeckArgs,
+    workdir: Option<&std::path::Path>,
+    ccx: &str,
+    format: CompareFormat,
+) -> Result<(), CliError> {
+    let text = build_deck(model, deck, model_command(model, "bench ccx"))?;
+    let job = model.name();
+    let run_error = |e: fe::run::RunError| CliError::Invalid(e.to_string());
+    let files = match workdir {
+        Some(folder) => fe::run::claim_folder(folder, job).map_err(run_error)?,
+        None => {
+            let folder = fe::run::fresh_folder(&std::env::temp_dir(), job)?;
+            fe::run::RunFiles::new(&folder, job)
+        }
+    };
+    crate::file::write_new_files(&[(files.deck.as_path(), text.as_bytes())])?;
+    let stderr = io::stderr();
+    let mut progress = ProgressLine::new(stderr.lock(), stderr.is_terminal());
+    let shown = files.folder.display().to_string();
+    let started = Instant::now();
+    let mut announced = false;
+    let result = fe::run::run_ccx(ccx, &files, Duration::from_millis(200), &mut |p| {
+        // Said once ccx runs: a missing ccx is then one line of error, not two.
+        if !announced {
+            eprintln!("microslip: running {ccx} on {}", files.deck.display());
+            announced = true;
+        }
+        progress.update(Instant::now(), || text::ccx_progress(p))
+    });
+    drop(progress);
+    result.map_err(run_error)?;
+    eprintln!(
+        "microslip: ccx took {:.0} s; its files and log ({}) are kept in {shown}",
+        started.elapsed().as_secs_f64(),
+        files.log.display()
+    );
+    run_compare(
+        out,
+        model,
+        std::slice::from_ref(&files.results),
+        Some(&files.deck),
+        &deck.inputs,
+        format,
+    )
 }
 
 /// The twin beams of `inputs` and a force range `--from`, `--to`, `--points` (a sweep over F or
@@ -1185,6 +1279,8 @@ fn model_command(model: ModelKind, command: &'static str) -> &'static str {
         ("deck ccx", ModelKind::Plate) => "deck ccx plate",
         ("compare", ModelKind::Beam) => "compare beam",
         ("compare", ModelKind::Plate) => "compare plate",
+        ("bench ccx", ModelKind::Beam) => "bench ccx beam",
+        ("bench ccx", ModelKind::Plate) => "bench ccx plate",
         ("solve", ModelKind::Beam) => "solve beam",
         ("solve", ModelKind::Plate) => "solve plate",
         _ => command,

@@ -5,6 +5,7 @@
 //! - [`header`]: the header a deck starts with, which `compare` reads back.
 //! - [`results`]: readers of CalculiX's `.dat` output and of plain CSV from any FE code.
 //! - [`compare`]: FE values against both closed forms, point by point, and the K_T they imply.
+//! - [`run`]: running CalculiX on a deck in a work folder of its own, with its log kept.
 //!
 //! Why the decks are built as they are, and how they differ from the paper's Ansys model, is in
 //! docs/theory.md, "Benchmarking an FE code"; the measured agreement is in README.md.
@@ -15,3 +16,4 @@ pub mod header;
 pub mod load;
 mod mesh;
 pub mod results;
+pub mod run;

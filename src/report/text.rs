@@ -477,6 +477,25 @@ pub fn reading_progress(done: usize, total: usize) -> String {
     )
 }
 
+/// One line on how far a running ccx got, from its log: "ccx: 12 s, load step 3 of 5 (41 %)".
+pub fn ccx_progress(progress: &crate::fe::run::Progress) -> String {
+    let elapsed = progress.elapsed.as_secs_f64();
+    match progress.total_time {
+        Some(done) if progress.steps > 0 => {
+            let steps = progress.steps as f64;
+            let done = done.clamp(0.0, steps);
+            // The increment being solved ends at `done`, inside step ceil(done).
+            let step = (done.ceil() as usize).clamp(1, progress.steps);
+            format!(
+                "ccx: {elapsed:.0} s, load step {step} of {} ({:.0} %)",
+                progress.steps,
+                100.0 * done / steps
+            )
+        }
+        _ => format!("ccx: {elapsed:.0} s, setting up"),
+    }
+}
+
 /// One line on how far a running fit got, for a progress display.
 pub fn fit_progress(progress: &crate::fit::Progress) -> String {
     use crate::fit::{Pass, Progress};

@@ -1,0 +1,141 @@
+//! `microslip bench ccx`: one command from parameters to a comparison. These tests run without
+//! CalculiX (it is never required by `cargo test`): a missing ccx, a failing one and a work folder
+//! that holds a job's files. CI runs the real ccx through it (.ci/run).
+
+use assert_cmd::Command;
+
+fn microslip() -> Command {
+    let mut cmd = Command::cargo_bin("microslip").expect("binary built by cargo");
+    cmd.env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"))
+        .env_remove("HOME");
+    cmd
+}
+
+/// Exit code, stdout and stderr of `args`.
+fn run(args: &[&str]) -> (i32, String, String) {
+    let output = microslip().args(args).output().unwrap();
+    (
+        output.status.code().unwrap(),
+        String::from_utf8(output.stdout).unwrap(),
+        String::from_utf8(output.stderr).unwrap(),
+    )
+}
+
+#[test]
+fn a_missing_ccx_says_how_to_install_it_and_how_to_do_without() {
+    let dir = tempfile::tempdir().unwrap();
+    let work = dir.path().join("work");
+    let work = work.to_str().unwrap();
+    let (code, out, err) = run(&[
+        "bench",
+        "ccx",
+        "plate",
+        "--workdir",
+        work,
+        "--ccx",
+        "microslip-test-no-such-ccx",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty());
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("`microslip-test-no-such-ccx` was not found"),
+        "{err}"
+    );
+    assert!(err.contains("apt-get install calculix-ccx"), "{err}");
+    assert!(err.contains("microslip compare"), "{err}");
+    // The deck stays for a run by hand.
+    let deck = std::fs::read_to_string(dir.path().join("work/plate.inp")).unwrap();
+    assert!(deck.contains("squeezed plate"));
+}
+
+#[test]
+fn a_failing_ccx_gives_its_exit_and_the_tail_of_its_log() {
+    let dir = tempfile::tempdir().unwrap();
+    let work = dir.path().join("work");
+    // `false` stands for a ccx that fails without results.
+    let (code, out, err) = run(&[
+        "bench",
+        "ccx",
+        "beam",
+        "--workdir",
+        work.to_str().unwrap(),
+        "--ccx",
+        "false",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(err.contains("ccx failed (exit status: 1)"), "{err}");
+    assert!(err.contains("beam.log"), "{err}");
+    assert!(work.join("beam.log").is_file());
+}
+
+#[test]
+fn a_work_folder_that_holds_the_jobs_files_is_refused_and_left_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("beam.dat"), "a user's results").unwrap();
+    let (code, out, err) = run(&[
+        "bench",
+        "ccx",
+        "beam",
+        "--workdir",
+        dir.path().to_str().unwrap(),
+        "--ccx",
+        "false",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(err.contains("beam.dat exists"), "{err}");
+    assert_eq!(
+        std::fs::read_to_string(dir.path().join("beam.dat")).unwrap(),
+        "a user's results"
+    );
+    assert!(!dir.path().join("beam.inp").exists());
+}
+
+#[test]
+fn a_bench_refuses_what_deck_refuses_before_writing_anything() {
+    let dir = tempfile::tempdir().unwrap();
+    let work = dir.path().join("work");
+    let (code, _, err) = run(&[
+        "bench",
+        "ccx",
+        "plate",
+        "--loads",
+        "1,2",
+        "--workdir",
+        work.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("--loads are the tip forces of a beam deck"),
+        "{err}"
+    );
+    assert!(!work.exists());
+}
+
+#[test]
+fn progress_counts_load_steps_from_ccx_total_time() {
+    use microslip::fe::run::Progress;
+    use microslip::report::text::ccx_progress;
+    use std::time::Duration;
+    let at = |total_time| Progress {
+        elapsed: Duration::from_secs(12),
+        steps: 4,
+        total_time,
+    };
+    assert_eq!(ccx_progress(&at(None)), "ccx: 12 s, setting up");
+    // Every step of the decks lasts 1: total time 1 ends step 1, 2.5 is half of step 3.
+    assert_eq!(
+        ccx_progress(&at(Some(1.0))),
+        "ccx: 12 s, load step 1 of 4 (25 %)"
+    );
+    assert_eq!(
+        ccx_progress(&at(Some(2.5))),
+        "ccx: 12 s, load step 3 of 4 (62 %)"
+    );
+    assert_eq!(
+        ccx_progress(&at(Some(9.0))),
+        "ccx: 12 s, load step 4 of 4 (100 %)"
+    );
+}
