@@ -300,10 +300,11 @@ pub enum Command {
         #[arg(long)]
         no_fe: bool,
     },
-    /// Validate preset files; report every problem; exit 1 if any.
+    /// Validate presets (files, or names as --preset takes them); report every problem; exit 1 if
+    /// any.
     Check {
-        /// Preset files (TOML).
-        #[arg(required = true, value_name = "FILE")]
+        /// Preset files (TOML), or preset names (bundled, or in the user preset folder).
+        #[arg(required = true, value_name = "FILE|NAME")]
         files: Vec<PathBuf>,
     },
 }
@@ -1820,7 +1821,36 @@ fn check(out: &mut impl Write, files: &[PathBuf]) -> Result<(), CliError> {
     // Paths, descriptions and the values quoted in problems come from users: every line is
     // sanitized before it reaches the terminal.
     let mut say = |line: String| writeln!(out, "{}", report::sanitize(&line));
-    for path in files {
+    for given in files {
+        // A name, as --preset takes it: no file of that name here, no folder, no `.toml`.
+        let spec = given.to_string_lossy();
+        let path = if given.exists() || spec.contains('/') || spec.ends_with(".toml") {
+            given.clone()
+        } else if preset::is_bundled(&spec) {
+            let p = preset::resolve(&spec)?;
+            say(format!(
+                "{spec}: ok (bundled {} preset: {})",
+                p.inputs.kind(),
+                p.description
+            ))?;
+            continue;
+        } else {
+            match preset::user_preset_dir().map(|dir| dir.join(format!("{spec}.toml"))) {
+                Some(file) if file.exists() => file,
+                dir => {
+                    failed += 1;
+                    let folder = dir
+                        .and_then(|f| f.parent().map(|d| d.display().to_string()))
+                        .unwrap_or_else(|| "none: no configuration folder".to_string());
+                    say(format!(
+                        "{spec}: no such file, and no preset of that name (bundled: {}; user presets in {folder})",
+                        preset::bundled_names().join(" ")
+                    ))?;
+                    continue;
+                }
+            }
+        };
+        let path = &path;
         match preset::store::load(path) {
             Ok(p) => {
                 let PresetSource::File(path) = &p.source else {

@@ -192,3 +192,46 @@ fn a_folder_name_with_control_characters_is_shown_escaped() {
     assert!(!out.chars().any(|c| c.is_control() && c != '\n'), "{out:?}");
     assert!(out.contains("\\x1b]0;PWNED\\x07"), "{out}");
 }
+
+/// `check` takes names as `--preset` does (issue: `check bench3` said "cannot read bench3", and
+/// `check paper-beams` warned about a file that does not exist).
+#[test]
+fn check_takes_preset_names_as_preset_does() {
+    let (code, out, err) = run(&["check", "paper-beams", "paper-plate"]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        out.contains("paper-beams: ok (bundled beam preset"),
+        "{out}"
+    );
+    assert!(
+        out.contains("paper-plate: ok (bundled plate preset"),
+        "{out}"
+    );
+    assert!(!out.contains("warning"), "{out}");
+    let (code, out, err) = run(&["check", "no-such-preset-here"]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(
+        out.contains(
+            "no-such-preset-here: no such file, and no preset of that name (bundled: paper-beams"
+        ),
+        "{out}"
+    );
+    assert!(err.contains("1 of the files checked has problems"), "{err}");
+    // A user preset by name is the file in the user folder, checked like any file.
+    let config = tempfile::tempdir().unwrap();
+    let folder = config.path().join("microslip/presets");
+    std::fs::create_dir_all(&folder).unwrap();
+    std::fs::write(folder.join("mine.toml"), "model = \"beam\"\nKT = -1\n").unwrap();
+    let output = assert_cmd::Command::cargo_bin("microslip")
+        .unwrap()
+        .env("XDG_CONFIG_HOME", config.path())
+        .args(["check", "mine"])
+        .output()
+        .unwrap();
+    let out = String::from_utf8(output.stdout).unwrap();
+    assert_eq!(output.status.code(), Some(1), "{out}");
+    assert!(
+        out.contains("mine.toml") && out.contains("KT = -1"),
+        "{out}"
+    );
+}

@@ -192,6 +192,11 @@ pub fn paper(kind: ModelKind) -> Preset {
     })
 }
 
+/// The bundled presets' names, as error messages list them.
+pub fn bundled_names() -> Vec<&'static str> {
+    BUNDLED.iter().map(|(name, _)| *name).collect()
+}
+
 /// Whether `name` is a bundled preset's. Bundled names win everywhere: `--preset NAME` and the
 /// TUI's picker load the bundled preset, a user file of that name is listed with a warning
 /// ([`Listed::shadowed`]) and `check` warns about it; saving under such a name is refused.
