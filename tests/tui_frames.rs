@@ -5,6 +5,7 @@ use microslip::preset;
 use microslip::study::curves::Zone;
 use microslip::tui::action::Action;
 use microslip::tui::app::{App, AppOptions};
+use microslip::tui::effects;
 use microslip::tui::theme::{Charset, Theme};
 use microslip::tui::ui;
 use proptest::prelude::*;
@@ -35,9 +36,15 @@ fn screen(app: &App, width: u16, height: u16) -> String {
     render(app, width, height).backend().to_string()
 }
 
+/// A key, and what it asks for done at once (files read and written, the fit run), as the event
+/// loop would before drawing.
+fn press(app: &mut App, action: Action) {
+    effects::update_blocking(app, action);
+}
+
 fn act(app: &mut App, actions: &[Action]) {
     for &action in actions {
-        app.update(action);
+        press(app, action);
     }
 }
 
@@ -54,35 +61,35 @@ fn beam_view_120x40() {
 #[test]
 fn beam_charts() {
     let mut app = app();
-    app.update(Action::NextChart);
+    press(&mut app, Action::NextChart);
     insta::assert_snapshot!("beam_slip_boundary_chart", screen(&app, 100, 30));
-    app.update(Action::NextChart);
+    press(&mut app, Action::NextChart);
     insta::assert_snapshot!("beam_shear_chart", screen(&app, 100, 30));
 }
 
 #[test]
 fn plate_views() {
     let mut app = app();
-    app.update(Action::SwitchModel);
+    press(&mut app, Action::SwitchModel);
     insta::assert_snapshot!("plate_view_80x24", screen(&app, 80, 24));
-    app.update(Action::NextChart);
+    press(&mut app, Action::NextChart);
     insta::assert_snapshot!("plate_slip_boundary_chart", screen(&app, 100, 30));
-    app.update(Action::NextChart);
+    press(&mut app, Action::NextChart);
     insta::assert_snapshot!("plate_contact_pressure_chart", screen(&app, 100, 30));
 }
 
 #[test]
 fn help_overlay() {
     let mut app = app();
-    app.update(Action::ToggleHelp);
+    press(&mut app, Action::ToggleHelp);
     insta::assert_snapshot!(screen(&app, 80, 24));
 }
 
 #[test]
 fn preset_picker() {
     let mut app = app();
-    app.update(Action::OpenPresets);
-    app.update(Action::Next);
+    press(&mut app, Action::OpenPresets);
+    press(&mut app, Action::Next);
     insta::assert_snapshot!(screen(&app, 80, 24));
 }
 
@@ -104,7 +111,7 @@ fn input_error_keeps_the_old_value_and_says_why() {
         ],
     );
     insta::assert_snapshot!("typing_a_value", screen(&app, 80, 24));
-    app.update(Action::Commit);
+    press(&mut app, Action::Commit);
     insta::assert_snapshot!("input_error", screen(&app, 80, 24));
 }
 
@@ -122,7 +129,7 @@ fn ascii_charset_draws_only_ascii() {
         Action::NextChart,
         Action::ToggleHelp,
     ] {
-        app.update(action);
+        press(&mut app, action);
         assert!(screen(&app, 80, 24).is_ascii(), "after {action:?}");
     }
 }
@@ -144,7 +151,7 @@ fn no_color_marks_selection_and_curves_with_characters() {
 #[test]
 fn finite_element_points_over_the_curve() {
     let mut app = app_with("paper-beams", Charset::Ascii, false);
-    app.update(Action::ToggleNumeric);
+    press(&mut app, Action::ToggleNumeric);
     insta::assert_snapshot!(screen(&app, 100, 30));
 }
 
@@ -212,7 +219,7 @@ fn every_size_and_state_shows_what_the_user_needs() {
             MustSee::Main => assert_main_screen(&rows, w, h),
         }
     }
-    app.update(Action::ToggleHelp);
+    press(&mut app, Action::ToggleHelp);
     for (w, h, _) in sizes.into_iter().filter(|s| matches!(s.2, MustSee::Main)) {
         let rows = rows(&app, w, h);
         assert_edges(&rows, w, h);
@@ -285,17 +292,17 @@ fn measured_points_on_the_deflection_chart() {
         }),
     });
     insta::assert_snapshot!("measured_points", screen(&app, 100, 30));
-    app.update(Action::Fit);
+    press(&mut app, Action::Fit);
     insta::assert_snapshot!("after_fit", screen(&app, 100, 30));
 }
 
 #[test]
 fn stiffness_panels() {
     let mut app = app();
-    app.update(Action::PreviousChart);
+    press(&mut app, Action::PreviousChart);
     insta::assert_snapshot!("beam_stiffness_panel", screen(&app, 80, 24));
-    app.update(Action::SwitchModel);
-    app.update(Action::PreviousChart);
+    press(&mut app, Action::SwitchModel);
+    press(&mut app, Action::PreviousChart);
     insta::assert_snapshot!("plate_stiffness_panel", screen(&app, 80, 24));
 }
 
@@ -303,10 +310,10 @@ fn stiffness_panels() {
 fn cyclic_loading_charts() {
     let mut app = app_with("paper-beams-soft", Charset::Unicode, true);
     for _ in 0..3 {
-        app.update(Action::NextChart);
+        press(&mut app, Action::NextChart);
     }
     insta::assert_snapshot!("hysteresis_loop", screen(&app, 100, 30));
-    app.update(Action::NextChart);
+    press(&mut app, Action::NextChart);
     insta::assert_snapshot!("dissipation_vs_amplitude", screen(&app, 100, 30));
 }
 
@@ -320,11 +327,11 @@ fn the_d_key_refuses_a_measurement_file_above_the_cap() {
         .set_len((256 << 20) + 1)
         .unwrap();
     let mut app = app();
-    app.update(Action::LoadData);
+    press(&mut app, Action::LoadData);
     for c in path.to_str().unwrap().chars() {
-        app.update(Action::Input(c));
+        press(&mut app, Action::Input(c));
     }
-    app.update(Action::Commit);
+    press(&mut app, Action::Commit);
     let message = app.message().expect("a message");
     assert!(message.is_error);
     assert!(
@@ -354,7 +361,7 @@ fn the_preset_picker_shows_control_characters_escaped() {
         user_dir: Some(dir.path().to_path_buf()),
         data: None,
     });
-    app.update(Action::OpenPresets);
+    press(&mut app, Action::OpenPresets);
     let text = screen(&app, 100, 30);
     assert!(
         text.contains(r"evil\x1b[2J") && text.contains(r"bell \x07 \x1b]0;title\x07 \u{202e}"),
@@ -380,16 +387,16 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
         user_dir: Some(dir.path().to_path_buf()),
         data: None,
     });
-    app.update(Action::OpenPresets);
+    press(&mut app, Action::OpenPresets);
     // Bundled: paper-beams, paper-beams-soft (selected), paper-plate; then the user's paper-beams.
-    app.update(Action::Next);
-    app.update(Action::Next);
+    press(&mut app, Action::Next);
+    press(&mut app, Action::Next);
     let text = screen(&app, 120, 30);
     assert!(
         text.contains("> paper-beams        ?     user    WARNING: shadowed by the bundled one"),
         "{text}"
     );
-    app.update(Action::Commit);
+    press(&mut app, Action::Commit);
     assert_eq!(app.preset_name(), "paper-beams-soft");
     let message = app.message().unwrap();
     assert!(message.is_error);
@@ -402,9 +409,9 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
     );
     // The picker stays open; picking the bundled one (first row) loads the bundled values.
     for _ in 0..3 {
-        app.update(Action::Previous);
+        press(&mut app, Action::Previous);
     }
-    app.update(Action::Commit);
+    press(&mut app, Action::Commit);
     assert_eq!(app.preset_name(), "paper-beams");
     assert_eq!(
         app.inputs()
@@ -416,14 +423,14 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
 /// Types `text` into the open prompt and presses Enter.
 fn type_and_commit(app: &mut App, text: &str) {
     for c in text.chars() {
-        app.update(Action::Input(c));
+        press(app, Action::Input(c));
     }
-    app.update(Action::Commit);
+    press(app, Action::Commit);
 }
 
 /// Types `path` into the `d` prompt and loads it.
 fn load_data(app: &mut App, path: &str) {
-    app.update(Action::LoadData);
+    press(app, Action::LoadData);
     type_and_commit(app, path);
 }
 
@@ -465,7 +472,7 @@ fn a_long_status_message_wraps_upwards_instead_of_being_cut() {
         "{text}"
     );
     // A short message again: back to one line.
-    app.update(Action::SwitchModel);
+    press(&mut app, Action::SwitchModel);
     let text = screen(&app, 80, 24);
     assert!(!text.contains("very long"), "{text}");
 }
@@ -475,12 +482,12 @@ fn a_long_status_message_wraps_upwards_instead_of_being_cut() {
 fn readme_app() -> App {
     let mut app = app();
     set(&mut app, "mu", "0.2");
-    app.update(Action::Pin);
+    press(&mut app, Action::Pin);
     set(&mut app, "mu", "0.45");
-    app.update(Action::Pin);
+    press(&mut app, Action::Pin);
     set(&mut app, "mu", "0.3");
     for _ in 0..20 {
-        app.update(Action::Previous);
+        press(&mut app, Action::Previous);
     }
     app
 }
@@ -505,10 +512,10 @@ fn the_readme_shows_the_real_main_screen() {
 
 /// Types `path` into the `d` prompt and loads it.
 fn load(app: &mut App, path: &str) {
-    app.update(Action::LoadData);
+    press(app, Action::LoadData);
     // The prompt starts with the previous path: clear it first.
     for _ in 0..200 {
-        app.update(Action::Backspace);
+        press(app, Action::Backspace);
     }
     type_and_commit(app, path);
 }
@@ -643,7 +650,7 @@ fn y_axis_modes_at_80x24_and_120x40() {
     let mut app = log_u.app(Charset::Unicode, true);
     assert!(app.plot().y.log, "u(L) vs K_T opens on a log axis");
     // Back to the beams: the relative mode of w(L) vs F was kept.
-    app.update(Action::SwitchModel);
+    press(&mut app, Action::SwitchModel);
     assert!(relative_title(&app));
 }
 
@@ -787,15 +794,15 @@ proptest! {
 #[test]
 fn pins_in_relative_mode_and_on_the_plate() {
     let mut app = app();
-    app.update(Action::Pin);
+    press(&mut app, Action::Pin);
     set(&mut app, "KT", "2000");
-    app.update(Action::CycleYAxis);
-    app.update(Action::CycleYAxis);
+    press(&mut app, Action::CycleYAxis);
+    press(&mut app, Action::CycleYAxis);
     assert_eq!(app.y_mode(), microslip::report::chart::YMode::Relative);
     insta::assert_snapshot!("pins_relative_120x40", screen(&app, 120, 40));
     // Without colour, on the plate: the pin is told apart by its number.
     let mut app = app_with("paper-plate", Charset::Unicode, false);
-    app.update(Action::Pin);
+    press(&mut app, Action::Pin);
     set(&mut app, "tp", "0.5");
     insta::assert_snapshot!("pins_plate_80x24_no_color", screen(&app, 80, 24));
 }

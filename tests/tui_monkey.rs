@@ -8,6 +8,7 @@ use std::time::{Duration, Instant};
 use microslip::preset;
 use microslip::tui::action::Action;
 use microslip::tui::app::{App, AppOptions};
+use microslip::tui::effects;
 use microslip::tui::theme::{Charset, Theme};
 use microslip::tui::ui;
 use ratatui::Terminal;
@@ -84,6 +85,11 @@ const TYPED: &[&str] = &[
     "\u{1b}[31m",
 ];
 
+/// A key, and what it asks for (the preset list of `p`) done at once, as the event loop would.
+fn press(app: &mut App, action: Action) {
+    effects::update_blocking(app, action);
+}
+
 const PRESETS: [&str; 3] = ["paper-beams", "paper-beams-soft", "paper-plate"];
 
 fn run(seed: u64, steps: usize) {
@@ -108,23 +114,23 @@ fn run(seed: u64, steps: usize) {
             3 | 4 => {
                 // A whole edit: some row, Enter, a hostile value, Enter.
                 for _ in 0..rng.below(9) {
-                    app.update(Action::Next);
+                    press(&mut app, Action::Next);
                 }
-                app.update(Action::StartEdit);
+                press(&mut app, Action::StartEdit);
                 rng.pick(TYPED)
                     .chars()
-                    .for_each(|c| app.update(Action::Input(c)));
-                app.update(Action::Commit);
+                    .for_each(|c| press(&mut app, Action::Input(c)));
+                press(&mut app, Action::Commit);
             }
             1 | 2 => {
                 let text = rng.pick(TYPED);
                 if rng.below(2) == 0 {
                     app.paste(&format!("{text}\nq\n"));
                 } else {
-                    text.chars().for_each(|c| app.update(Action::Input(c)));
+                    text.chars().for_each(|c| press(&mut app, Action::Input(c)));
                 }
             }
-            _ => app.update(*rng.pick(ACTIONS)),
+            _ => press(&mut app, *rng.pick(ACTIONS)),
         }
         if app.should_quit() {
             return;

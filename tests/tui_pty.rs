@@ -106,12 +106,17 @@ fn open_pty() -> portable_pty::PtyPair {
 /// Starts `microslip` in a 100x30 pseudo-terminal under `sh`, which prints the exit code and the
 /// terminal modes (`stty -a`) once microslip has exited.
 fn start() -> (Session, Box<dyn portable_pty::Child + Send + Sync>) {
+    start_with("")
+}
+
+/// [`start`], with `arguments` (quoted for `sh`) after the program's name.
+fn start_with(arguments: &str) -> (Session, Box<dyn portable_pty::Child + Send + Sync>) {
     let binary = env!("CARGO_BIN_EXE_microslip");
     let pty = open_pty();
     let mut command = CommandBuilder::new("sh");
     command.args([
         "-c",
-        &format!("'{binary}'; code=$?; echo; echo EXIT=$code; stty -a"),
+        &format!("'{binary}' {arguments}; code=$?; echo; echo EXIT=$code; stty -a"),
     ]);
     command.env("TERM", "xterm-256color");
     command.env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"));
@@ -252,17 +257,25 @@ fn a_signal_is_acted_on_even_behind_a_storm_of_keys() {
         writer
     });
     std::thread::sleep(Duration::from_millis(300));
-    let sent = Instant::now();
-    kill("TERM", &pid);
-    session.wait_for("EXIT=143");
-    let took = sent.elapsed();
-    eprintln!("SIGTERM behind the key storm: exit seen after {took:?}");
-    // The loop looks at signals between any two keys; 1 s leaves room for a loaded CI machine
-    // (measured here: well under 100 ms).
-    assert!(took < Duration::from_secs(1), "SIGTERM took {took:?}");
+    // The loop looks at signals between any two keys (measured here: well under 100 ms).
+    sigterm_ends_it_within_a_second(&mut session, &pid, "behind the key storm");
     session.writer = typing.join().unwrap();
     session.assert_restored();
     let _ = child.wait();
+}
+
+/// Sends SIGTERM to `pid` and sees the exit code 143 within a second, which leaves room for a
+/// loaded CI machine; `when` says when, in the report of the time taken.
+fn sigterm_ends_it_within_a_second(session: &mut Session, pid: &str, when: &str) {
+    let sent = Instant::now();
+    kill("TERM", pid);
+    session.wait_for("EXIT=143");
+    let took = sent.elapsed();
+    eprintln!("SIGTERM {when}: exit seen after {took:?}");
+    assert!(
+        took < Duration::from_secs(1),
+        "SIGTERM {when} took {took:?}"
+    );
 }
 
 /// Starts an interactive `sh` (with job control, as a user's shell) in a 100x30 pseudo-terminal
@@ -478,6 +491,41 @@ fn a_hung_up_terminal_ends_the_program_within_a_second() {
         );
         std::thread::sleep(Duration::from_millis(10));
     }
+}
+
+/// A fit of a million measurements (seconds) runs off the event loop: its progress shows, Esc
+/// cancels it at once and the keys work again, and SIGTERM during it ends the program as fast as
+/// when it is idle.
+#[test]
+fn a_long_fit_shows_progress_esc_cancels_it_and_sigterm_does_not_wait_for_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("long.csv");
+    let rows = 1_000_000;
+    let mut csv = String::from("F_N,w_mm\n");
+    for i in 1..=rows {
+        let force = 300.0 * f64::from(i) / f64::from(rows);
+        csv.push_str(&format!("{force},{}\n", 4e-4 * force));
+    }
+    std::fs::write(&data, csv).unwrap();
+    let (mut session, mut child) = start_with(&format!("--data '{}'", data.display()));
+    session.wait_for("Twin beams");
+    let pid = microslip_pid(child.as_ref());
+    session.send("f");
+    // The progress line (it may wrap: only its first word is looked for).
+    session.wait_for("fitting: ");
+    let pressed = Instant::now();
+    session.send("\u{1b}");
+    session.wait_for("fit cancelled");
+    eprintln!(
+        "Esc during the fit: cancelled on screen after {:?}",
+        pressed.elapsed()
+    );
+    // The keys work again: the next fit starts, and SIGTERM ends it and the program.
+    session.send("f");
+    session.wait_for("fitting: ");
+    sigterm_ends_it_within_a_second(&mut session, &pid, "during the fit");
+    session.assert_restored();
+    let _ = child.wait();
 }
 
 #[test]

@@ -1,9 +1,13 @@
-//! The TUI's state and its one mutator, [`App::update`]. No drawing and no terminal here: every
-//! behaviour can be tested by feeding actions and looking at the state.
+//! The TUI's state and its mutators: [`App::update`] applies a key's action, [`App::receive`]
+//! what came of an effect. No drawing, no terminal and no file here: what needs the disk or
+//! takes long (export, save, load, the preset list, file-name completion, the fit) is returned
+//! as an [`Effect`] for the event loop to perform (see [`super::effects`]), so every behaviour can
+//! be tested by feeding actions and outcomes and looking at the state.
 
 use std::path::PathBuf;
 
 use super::action::Action;
+use super::effects::{Effect, ExportError, Outcome};
 use super::keymap::Context;
 use super::text_input::TextInput;
 use super::theme::Theme;
@@ -78,6 +82,12 @@ pub enum Mode {
         /// The line explained (0-based).
         line: usize,
     },
+    /// A fit runs on a worker: Esc cancels it, other keys are ignored until it ends (its result is
+    /// adopted into the parameters it started from, which must not change meanwhile).
+    Fitting {
+        /// The fit, as in [`Effect::Fit`].
+        job: u64,
+    },
 }
 
 impl Mode {
@@ -95,6 +105,7 @@ impl Mode {
             Mode::ConfirmOverwrite { .. } | Mode::ConfirmQuit { .. } | Mode::ConfirmReset => {
                 Context::Confirm
             }
+            Mode::Fitting { .. } => Context::Working,
         }
     }
 }
@@ -182,7 +193,11 @@ pub struct App {
     /// Points of an external FE code loaded with `d` (a CalculiX .dat, or a plate CSV), and the
     /// parameters of the deck they came from.
     external: Option<(chart::ExternalPoints, Option<Inputs>)>,
-    check_in: fn(),
+    /// The number of the last fit started (see [`Mode::Fitting`]).
+    jobs: u64,
+    /// The effects asked for by the action or outcome being applied, handed to the caller of
+    /// `update` or `receive` when it is done.
+    asked: Vec<Effect>,
     undo: Vec<Snapshot>,
     redo: Vec<Snapshot>,
     /// The last target typed after `t`, offered again.
@@ -229,7 +244,8 @@ impl App {
             numeric: None,
             measurements: options.data,
             external: None,
-            check_in: || {},
+            jobs: 0,
+            asked: Vec::new(),
             undo: Vec::new(),
             redo: Vec::new(),
             last_target: "ratio=1.01".to_string(),
@@ -288,8 +304,8 @@ impl App {
         format!("microslip-{chart}")
     }
 
-    /// `x`: the chart shown as an SVG figure and its points as CSV, under the first free name
-    /// (`-2`, `-3`, ... appended); never replaces a file.
+    /// `x`: asks to write the chart shown as an SVG figure and its points as CSV, under the first
+    /// free name (`-2`, `-3`, ... appended); never replaces a file ([`Effect::ExportChart`]).
     fn export_chart(&mut self) {
         use crate::report::figure;
         use crate::report::table::{TableFormat, write_table};
@@ -305,41 +321,26 @@ impl App {
         if let Err(e) = write_table(&mut csv, TableFormat::Csv, rows) {
             return self.error(format!("export failed: {e}"));
         }
-        let stem = self.export_stem();
-        for n in 1..=999 {
-            let name = if n == 1 {
-                stem.clone()
-            } else {
-                format!("{stem}-{n}")
-            };
-            let (svg_path, csv_path) = (
-                self.export_dir.join(format!("{name}.svg")),
-                self.export_dir.join(format!("{name}.csv")),
-            );
-            if csv_path.exists() {
-                continue;
+        self.asked.push(Effect::ExportChart {
+            dir: self.export_dir.clone(),
+            stem: self.export_stem(),
+            svg,
+            csv,
+        });
+    }
+
+    /// What `x` wrote, or why nothing.
+    fn exported(&mut self, result: Result<PathBuf, ExportError>) {
+        match result {
+            Ok(svg) => self.info(format!("chart exported: {} (+ .csv data)", svg.display())),
+            Err(ExportError::Failed { path, reason }) => {
+                self.error(format!("cannot export to {}: {reason}", path.display()))
             }
-            // Both or neither: a disk with room for the SVG only must not keep it.
-            let written = crate::file::write_new_files(&[
-                (svg_path.as_path(), svg.as_bytes()),
-                (csv_path.as_path(), csv.as_slice()),
-            ]);
-            match written {
-                Ok(()) => {
-                    return self.info(format!(
-                        "chart exported: {} (+ .csv data)",
-                        svg_path.display()
-                    ));
-                }
-                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
-                Err(e) => {
-                    return self.error(format!("cannot export to {}: {e}", svg_path.display()));
-                }
-            }
+            Err(ExportError::AllTaken { stem }) => self.error(format!(
+                "export: {stem}-2 to -{} all exist; move some away",
+                super::effects::MAX_EXPORT_NUMBER
+            )),
         }
-        self.error(format!(
-            "export: {stem}-2 to -999 all exist; move some away"
-        ));
     }
 
     /// The parameter charted on the x axis, if `v` chose one.
@@ -370,16 +371,14 @@ impl App {
     }
 
     fn state_mut(&mut self) -> &mut ModelState {
-        match self.kind {
+        self.state_of_mut(self.kind)
+    }
+
+    fn state_of_mut(&mut self, kind: ModelKind) -> &mut ModelState {
+        match kind {
             ModelKind::Beam => &mut self.beam,
             ModelKind::Plate => &mut self.plate,
         }
-    }
-
-    /// Sets what long computations call between chunks of work (the event loop's check for a
-    /// terminating signal), so that no signal waits for them.
-    pub fn set_check_in(&mut self, check_in: fn()) {
-        self.check_in = check_in;
     }
 
     /// Colours and characters.
@@ -660,27 +659,94 @@ impl App {
         self.info(format!("y axis: {} (y: next mode)", next.label()));
     }
 
-    /// Applies one action.
-    pub fn update(&mut self, action: Action) {
+    /// Applies one action; returns what the caller must do for it (nothing, for most keys), whose
+    /// outcomes go to [`App::receive`]. Touches no file and never waits.
+    pub fn update(&mut self, action: Action) -> Vec<Effect> {
         match action {
             Action::Quit => {
                 self.quit = true;
-                return;
+                return Vec::new();
             }
             // The event loop suspends the process; nothing in the state changes.
-            Action::Suspend => return,
+            Action::Suspend => return Vec::new(),
             _ => {}
         }
+        let undoable = !matches!(action, Action::Undo | Action::Redo);
+        self.applying(undoable, |app| app.dispatch(action))
+    }
+
+    /// Applies what came of an effect (a file read, a preset saved, a fit's progress or result);
+    /// returns what must be done next, like [`App::update`]. A parameter change it makes (a fit
+    /// adopted, a deck's parameters) is undone by `u` like a key's.
+    pub fn receive(&mut self, outcome: Outcome) -> Vec<Effect> {
+        self.applying(true, |app| app.outcome(outcome))
+    }
+
+    /// Runs `change`, records the parameters before it for `u` when it changed them (and
+    /// `undoable`), and hands over the effects it asked for.
+    fn applying(&mut self, undoable: bool, change: impl FnOnce(&mut App)) -> Vec<Effect> {
         let before = self.snapshot();
-        self.dispatch(action);
+        change(self);
         let after = self.snapshot();
         let changed = before.beam != after.beam || before.plate != after.plate;
-        if changed && !matches!(action, Action::Undo | Action::Redo) {
+        if changed && undoable {
             self.undo.push(before);
             if self.undo.len() > HISTORY {
                 self.undo.remove(0);
             }
             self.redo.clear();
+        }
+        std::mem::take(&mut self.asked)
+    }
+
+    /// Applies what came of an effect (see [`App::receive`]).
+    fn outcome(&mut self, outcome: Outcome) {
+        match outcome {
+            Outcome::Exported(result) => self.exported(result),
+            Outcome::Saved {
+                name,
+                description,
+                inputs,
+                result,
+            } => self.saved(name, description, inputs, result),
+            Outcome::Measurements { path, result } => {
+                self.measurements_read(path, result);
+                self.recompute();
+            }
+            Outcome::FeResults { path, result } => {
+                match result {
+                    Ok(loaded) => self.fe_results_read(&path, &loaded),
+                    Err(reason) => self.error(reason),
+                }
+                self.recompute();
+            }
+            Outcome::Presets(entries) => {
+                let selected = entries
+                    .iter()
+                    .position(|e| e.name == self.preset_name())
+                    .unwrap_or(0);
+                self.mode = Mode::Presets { entries, selected };
+            }
+            Outcome::Completed {
+                text,
+                completed,
+                names,
+            } => self.completed(&text, &completed, &names),
+            Outcome::FitProgress { job, progress } => {
+                if self.mode == (Mode::Fitting { job }) {
+                    self.info(format!(
+                        "{} (Esc cancels)",
+                        crate::report::text::fit_progress(&progress)
+                    ));
+                }
+            }
+            Outcome::Fitted { job, result } => {
+                // A cancelled fit's result comes too late: the user has moved on.
+                if self.mode == (Mode::Fitting { job }) {
+                    self.mode = Mode::Normal;
+                    self.fitted(result);
+                }
+            }
         }
     }
 
@@ -741,7 +807,7 @@ impl App {
                     |input| Mode::SaveName { input },
                     "save cancelled",
                 ) {
-                    self.save(&name, false);
+                    self.save(name, false);
                 }
             }
             Mode::DataPath { input } => {
@@ -751,12 +817,11 @@ impl App {
                     |input| Mode::DataPath { input },
                     "loading cancelled",
                 ) {
-                    self.load_data(&path);
-                    self.recompute();
+                    self.load_data(path);
                 }
             }
             Mode::ConfirmOverwrite { name } => match action {
-                Action::Yes => self.save(&name, true),
+                Action::Yes => self.save(name, true),
                 _ => self.info("save cancelled; the existing preset is unchanged"),
             },
             Mode::ConfirmQuit { unsaved } => match action {
@@ -806,6 +871,13 @@ impl App {
                     _ => self.mode = Mode::Explain { line },
                 }
             }
+            Mode::Fitting { job } => match action {
+                Action::Cancel => {
+                    self.info("fit cancelled; the parameters are unchanged");
+                    self.asked.push(Effect::CancelFit { job });
+                }
+                _ => self.mode = Mode::Fitting { job },
+            },
         }
     }
 
@@ -933,18 +1005,9 @@ impl App {
             Action::CursorEnd => input.jump(true),
             Action::ClearToStart => input.clear_to_start(),
             Action::DeleteWord => input.delete_word(),
-            Action::Complete => {
-                let (text, names) = super::text_input::complete_path(input.as_str());
-                input.set(&text);
-                match names.len() {
-                    0 => self.info("no file name starts so"),
-                    1 => self.message = None,
-                    n => self.info(format!(
-                        "{n} matches: {}",
-                        names.iter().take(8).cloned().collect::<Vec<_>>().join("  ")
-                    )),
-                }
-            }
+            Action::Complete => self.asked.push(Effect::CompletePath {
+                text: input.as_str().to_string(),
+            }),
             Action::Commit => return Some(input.trimmed().to_string()),
             Action::Cancel => {
                 self.info(cancelled);
@@ -954,6 +1017,30 @@ impl App {
         }
         self.mode = mode(input);
         None
+    }
+
+    /// Tab's completion: applied if the prompt still holds the text completed; the status line
+    /// lists the names that match.
+    fn completed(&mut self, text: &str, completed: &str, names: &[String]) {
+        let input = match &mut self.mode {
+            Mode::Editing { input }
+            | Mode::SaveName { input }
+            | Mode::DataPath { input }
+            | Mode::Target { input } => input,
+            _ => return,
+        };
+        if input.as_str() != text {
+            return;
+        }
+        input.set(completed);
+        match names.len() {
+            0 => self.info("no file name starts so"),
+            1 => self.message = None,
+            n => self.info(format!(
+                "{n} matches: {}",
+                names.iter().take(8).cloned().collect::<Vec<_>>().join("  ")
+            )),
+        }
     }
 
     fn update_normal(&mut self, action: Action) {
@@ -1098,30 +1185,31 @@ impl App {
         }
     }
 
-    /// Reads what `d` names: a CalculiX `.dat` (FE results, of the model its deck is), a plate CSV
-    /// `KT_MPa_per_mm,u_mm` on the plate, else a measurement CSV `F_N,w_mm` for the fit. Problems go
-    /// to the status line and keep the previous data.
-    fn load_data(&mut self, path: &str) {
-        let is_dat = std::path::Path::new(path)
+    /// Asks to read what `d` names: a CalculiX `.dat` (FE results, of the model its deck is), a
+    /// plate CSV `KT_MPa_per_mm,u_mm` on the plate, else a measurement CSV `F_N,w_mm` for the fit.
+    fn load_data(&mut self, path: String) {
+        let is_dat = std::path::Path::new(&path)
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("dat"));
-        if is_dat || self.kind == ModelKind::Plate {
-            self.load_fe_results(path);
-            return;
-        }
-        let points = crate::fit::data::read_text(path, crate::file::Kinds::RegularOnly)
-            .map_err(|e| e.to_string())
-            .and_then(|text| crate::fit::data::parse(&text).map_err(|e| e.to_string()));
-        match points {
+        self.asked.push(if is_dat || self.kind == ModelKind::Plate {
+            Effect::ReadFeResults {
+                path,
+                kind: self.kind,
+            }
+        } else {
+            Effect::ReadMeasurements { path }
+        });
+    }
+
+    /// Measurements read for the fit; problems go to the status line and keep the previous data.
+    fn measurements_read(&mut self, path: String, result: Result<Vec<Measurement>, String>) {
+        match result {
             Ok(points) => {
                 self.info(format!(
                     "loaded {} from {path}; f fits mu and K_T",
                     crate::report::count_of(points.len(), "measurement")
                 ));
-                self.measurements = Some(Measurements {
-                    path: path.to_string(),
-                    points,
-                });
+                self.measurements = Some(Measurements { path, points });
             }
             Err(reason) => self.error(format!("{path}: {reason}")),
         }
@@ -1130,13 +1218,9 @@ impl App {
     /// FE results: shown on the w(L) or u(L) chart, labelled with the code's name; a deck's
     /// parameters become the model's (the points mean nothing against others), and the status line
     /// gives the comparison `microslip compare` prints.
-    fn load_fe_results(&mut self, path: &str) {
-        use crate::fe::load::{AnyLoaded, any_results};
-        let loaded = match any_results(std::path::Path::new(path), None, self.kind) {
-            Ok(loaded) => loaded,
-            Err(e) => return self.error(e.to_string()),
-        };
-        let (model, header, points, code) = match &loaded {
+    fn fe_results_read(&mut self, path: &str, loaded: &crate::fe::load::AnyLoaded) {
+        use crate::fe::load::AnyLoaded;
+        let (model, header, points, code) = match loaded {
             AnyLoaded::Beam(l) => (
                 ModelKind::Beam,
                 l.header.as_ref(),
@@ -1181,7 +1265,7 @@ impl App {
         let Some(Model::Beam { .. } | Model::Plate(_)) = self.model() else {
             return self.error(format!("{path}: the deck's parameters are not valid"));
         };
-        let summary = match (&loaded, self.model()) {
+        let summary = match (loaded, self.model()) {
             (AnyLoaded::Beam(l), Some(Model::Beam { beams, .. })) => {
                 let comparison = crate::fe::compare::compare_beams(&beams, &l.points);
                 crate::report::compare::beam_summary(code, &comparison)
@@ -1220,11 +1304,11 @@ impl App {
         };
     }
 
-    /// Fits mu and K_T of the twin beams to the measurements; adopts each estimate the data
-    /// determine (identified or weakly) and says what it did.
+    /// `f`: asks to fit mu and K_T of the twin beams to the measurements ([`Effect::Fit`]), in
+    /// [`Mode::Fitting`] until the result comes (or Esc cancels).
     fn fit(&mut self) {
         let (Some(measurements), Some(Model::Beam { beams, .. })) =
-            (self.measurements.clone(), self.model())
+            (&self.measurements, self.model())
         else {
             self.error(if self.measurements.is_none() {
                 "no measurements: press d to load a CSV with columns F_N,w_mm"
@@ -1233,14 +1317,18 @@ impl App {
             });
             return;
         };
-        let check_in = self.check_in;
-        let fitted = crate::fit::fit_twin_beams_with_progress(
-            beams.params(),
-            &measurements.points,
-            None,
-            None,
-            &mut |_| check_in(),
-        );
+        self.jobs += 1;
+        self.asked.push(Effect::Fit {
+            job: self.jobs,
+            structure: beams.params(),
+            points: measurements.points.clone(),
+        });
+        self.mode = Mode::Fitting { job: self.jobs };
+    }
+
+    /// A fit's result: adopts each estimate the data determine (identified or weakly) and says
+    /// what it did.
+    fn fitted(&mut self, fitted: Result<crate::fit::FitResult, crate::fit::FitError>) {
         match fitted {
             Ok(result) => {
                 let mut inputs = self.state().inputs;
@@ -1334,13 +1422,11 @@ impl App {
         }
     }
 
+    /// `p`: asks for the presets; the picker opens with them ([`Outcome::Presets`]).
     fn open_presets(&mut self) {
-        let entries = preset::listing(self.user_dir.as_deref());
-        let selected = entries
-            .iter()
-            .position(|e| e.name == self.preset_name())
-            .unwrap_or(0);
-        self.mode = Mode::Presets { entries, selected };
+        self.asked.push(Effect::ListPresets {
+            user_dir: self.user_dir.clone(),
+        });
     }
 
     fn update_presets(&mut self, entries: Vec<Listed>, selected: usize, action: Action) {
@@ -1385,23 +1471,42 @@ impl App {
         }
     }
 
-    fn save(&mut self, name: &str, overwrite: bool) {
+    /// Asks to save the parameters as the user preset `name` (replacing one only if `overwrite`).
+    fn save(&mut self, name: String, overwrite: bool) {
         let Some(dir) = self.user_dir.clone() else {
             self.error(SaveError::NoDirectory.to_string());
             return;
         };
         let description = format!("Saved from the microslip TUI ({} model)", self.kind);
-        let text = preset::to_toml(&self.inputs(), &description);
-        match preset::save_atomic(&dir, name, &text, overwrite) {
+        let inputs = self.inputs();
+        self.asked.push(Effect::SavePreset {
+            dir,
+            name,
+            text: preset::to_toml(&inputs, &description),
+            description,
+            inputs,
+            overwrite,
+        });
+    }
+
+    /// A preset saved: the model now comes from it. One of that name exists: asks before
+    /// replacing it.
+    fn saved(
+        &mut self,
+        name: String,
+        description: String,
+        inputs: Inputs,
+        result: Result<PathBuf, SaveError>,
+    ) {
+        match result {
             Ok(path) => {
-                let preset = Preset {
-                    name: name.to_string(),
-                    description,
-                    inputs: self.inputs(),
-                    source: PresetSource::File(path.clone()),
-                };
-                self.state_mut().preset = preset;
                 self.info(format!("saved {}", path.display()));
+                self.state_of_mut(inputs.kind()).preset = Preset {
+                    name,
+                    description,
+                    inputs,
+                    source: PresetSource::File(path),
+                };
             }
             Err(SaveError::Exists(name)) => {
                 self.message = None;
@@ -1437,6 +1542,30 @@ mod tests {
 
     fn app() -> App {
         app_with_dir(None)
+    }
+
+    /// 25 deflections of the paper's beams with mu = 0.35 and K_T = 250 MPa/mm, 12 N to 300 N.
+    fn measured() -> Vec<Measurement> {
+        let beams = crate::TwinBeams::new(crate::TwinBeamsParams {
+            friction: 0.35,
+            tangential_stiffness: 250.0,
+            ..crate::TwinBeamsParams::PAPER
+        })
+        .unwrap();
+        (1..=25)
+            .map(|i| {
+                let force = 12.0 * f64::from(i);
+                let deflection = beams
+                    .regularized(crate::TipForce::new(force).unwrap())
+                    .tip_deflection();
+                Measurement { force, deflection }
+            })
+            .collect()
+    }
+
+    /// A key, and what it asks for done at once (files read and written, the fit run).
+    fn press(app: &mut App, action: Action) {
+        crate::tui::effects::update_blocking(app, action);
     }
 
     /// Selects the row of `name` with j/k.
@@ -1843,7 +1972,7 @@ mod tests {
         )
         .unwrap();
         let mut app = app_with_dir(Some(dir.path().to_path_buf()));
-        app.update(Action::OpenPresets);
+        press(&mut app, Action::OpenPresets);
         let Mode::Presets { entries, .. } = app.mode().clone() else {
             panic!("picker not open")
         };
@@ -1852,41 +1981,41 @@ mod tests {
             names,
             ["paper-beams", "paper-beams-soft", "paper-plate", "broken"]
         );
-        app.update(Action::Next);
-        app.update(Action::Commit);
+        press(&mut app, Action::Next);
+        press(&mut app, Action::Commit);
         assert_eq!(app.preset_name(), "paper-beams-soft");
         assert_eq!(app.inputs().get(KT), Some(120.0));
         // Invalid user file: refused with its problem, picker stays open.
-        app.update(Action::OpenPresets);
+        press(&mut app, Action::OpenPresets);
         for _ in 0..2 {
-            app.update(Action::Next);
+            press(&mut app, Action::Next);
         }
-        app.update(Action::Commit);
+        press(&mut app, Action::Commit);
         assert!(
             app.message()
                 .unwrap()
                 .text
                 .contains("cannot load broken: line 2: invalid KT = -1")
         );
-        app.update(Action::Cancel);
+        press(&mut app, Action::Cancel);
         // Save, then save again under the same name: asked first; "no" keeps the file.
-        app.update(Action::SavePreset);
+        press(&mut app, Action::SavePreset);
         typed(&mut app, "bench");
-        app.update(Action::Commit);
+        press(&mut app, Action::Commit);
         let path = dir.path().join("bench.toml");
         let saved = std::fs::read_to_string(&path).unwrap();
         assert!(saved.contains("KT = 120.0"));
-        app.update(Action::IncreaseCoarse);
-        app.update(Action::SavePreset);
+        press(&mut app, Action::IncreaseCoarse);
+        press(&mut app, Action::SavePreset);
         typed(&mut app, "bench");
-        app.update(Action::Commit);
+        press(&mut app, Action::Commit);
         assert!(matches!(app.mode(), Mode::ConfirmOverwrite { .. }));
-        app.update(Action::Cancel);
+        press(&mut app, Action::Cancel);
         assert_eq!(std::fs::read_to_string(&path).unwrap(), saved);
-        app.update(Action::SavePreset);
+        press(&mut app, Action::SavePreset);
         typed(&mut app, "bench");
-        app.update(Action::Commit);
-        app.update(Action::Yes);
+        press(&mut app, Action::Commit);
+        press(&mut app, Action::Yes);
         assert!(
             std::fs::read_to_string(&path)
                 .unwrap()
@@ -1898,33 +2027,21 @@ mod tests {
     #[test]
     fn measurements_load_fit_and_set_the_parameters() {
         let dir = tempfile::tempdir().unwrap();
-        let beams = crate::TwinBeams::new(crate::TwinBeamsParams {
-            friction: 0.35,
-            tangential_stiffness: 250.0,
-            ..crate::TwinBeamsParams::PAPER
-        })
-        .unwrap();
         let mut csv = String::from("F_N,w_mm\n");
-        for i in 1..=25 {
-            let f = 12.0 * f64::from(i);
-            csv.push_str(&format!(
-                "{f},{}\n",
-                beams
-                    .regularized(crate::TipForce::new(f).unwrap())
-                    .tip_deflection()
-            ));
+        for m in measured() {
+            csv.push_str(&format!("{},{}\n", m.force, m.deflection));
         }
         let path = dir.path().join("m.csv");
         std::fs::write(&path, csv).unwrap();
         let mut app = app();
-        app.update(Action::Fit);
+        press(&mut app, Action::Fit);
         assert!(app.message().unwrap().text.starts_with("no measurements"));
-        app.update(Action::LoadData);
+        press(&mut app, Action::LoadData);
         typed(&mut app, path.to_str().unwrap());
-        app.update(Action::Commit);
+        press(&mut app, Action::Commit);
         assert_eq!(app.measurements().unwrap().points.len(), 25);
         assert!(app.plot().series.iter().any(|s| s.name == "measured"));
-        app.update(Action::Fit);
+        press(&mut app, Action::Fit);
         assert!(
             (app.inputs().get(MU).unwrap() / 0.35 - 1.0).abs() < 1e-6,
             "{:?}",
@@ -1938,12 +2055,12 @@ mod tests {
         );
         // A bad file is refused with its line; the loaded data stay.
         std::fs::write(dir.path().join("bad.csv"), "F_N,w_mm\n1,x\n").unwrap();
-        app.update(Action::LoadData);
+        press(&mut app, Action::LoadData);
         for _ in 0..200 {
-            app.update(Action::Backspace);
+            press(&mut app, Action::Backspace);
         }
         typed(&mut app, dir.path().join("bad.csv").to_str().unwrap());
-        app.update(Action::Commit);
+        press(&mut app, Action::Commit);
         assert!(
             app.message()
                 .unwrap()
@@ -1970,7 +2087,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let mut app = app();
         app.set_export_dir(dir.path().to_path_buf());
-        app.update(Action::ExportChart);
+        press(&mut app, Action::ExportChart);
         let message = app.message().unwrap();
         assert!(!message.is_error, "{}", message.text);
         assert!(
@@ -1986,16 +2103,153 @@ mod tests {
             "{csv}"
         );
         // Again: a new name, the first files untouched.
-        app.update(Action::ExportChart);
+        press(&mut app, Action::ExportChart);
         assert!(dir.path().join("microslip-w-vs-f-2.svg").exists());
         // After v, the file says what is charted; a table is refused with a reason.
-        app.update(Action::Vary);
-        app.update(Action::ExportChart);
+        press(&mut app, Action::Vary);
+        press(&mut app, Action::ExportChart);
         assert!(dir.path().join("microslip-w-vs-l.csv").exists());
-        app.update(Action::Vary);
-        app.update(Action::PreviousChart);
-        app.update(Action::ExportChart);
+        press(&mut app, Action::Vary);
+        press(&mut app, Action::PreviousChart);
+        press(&mut app, Action::ExportChart);
         assert!(app.message().unwrap().is_error);
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 6);
+    }
+
+    #[test]
+    fn keys_that_need_files_return_effects_and_touch_nothing() {
+        let dir = tempfile::tempdir().unwrap();
+        // Neither folder exists: the keys alone must not fail, create or read anything.
+        let missing = dir.path().join("missing");
+        let mut app = app_with_dir(Some(missing.join("presets")));
+        app.set_export_dir(missing.join("charts"));
+        let effects = app.update(Action::ExportChart);
+        let [
+            Effect::ExportChart {
+                dir,
+                stem,
+                svg,
+                csv,
+            },
+        ] = effects.as_slice()
+        else {
+            panic!("{effects:?}")
+        };
+        assert_eq!(dir, &missing.join("charts"));
+        assert_eq!(stem, "microslip-w-vs-f");
+        assert!(svg.contains(&app.plot().title));
+        assert!(csv.starts_with(b"series,x_axis,x,y_axis,y\n"));
+        app.update(Action::SavePreset);
+        typed(&mut app, "bench");
+        let effects = app.update(Action::Commit);
+        assert!(
+            matches!(
+                effects.as_slice(),
+                [Effect::SavePreset { dir, name, text, overwrite: false, .. }]
+                    if *dir == missing.join("presets") && name == "bench" && text.contains("KT = 600.0")
+            ),
+            "{effects:?}"
+        );
+        assert_eq!(
+            app.update(Action::OpenPresets),
+            [Effect::ListPresets {
+                user_dir: Some(missing.join("presets"))
+            }]
+        );
+        assert_eq!(app.mode(), &Mode::Normal, "the picker opens with the list");
+        let path = missing.join("m.csv").display().to_string();
+        app.update(Action::LoadData);
+        typed(&mut app, &path);
+        assert_eq!(
+            app.update(Action::Complete),
+            [Effect::CompletePath { text: path.clone() }]
+        );
+        assert_eq!(
+            app.update(Action::Commit),
+            [Effect::ReadMeasurements { path: path.clone() }]
+        );
+        app.update(Action::LoadData);
+        typed(&mut app, &format!("{path}.dat"));
+        assert_eq!(
+            app.update(Action::Commit),
+            [Effect::ReadFeResults {
+                path: format!("{path}.dat"),
+                kind: ModelKind::Beam
+            }]
+        );
+        // Nothing said, nothing loaded, nothing changed, nothing on the disk.
+        assert_eq!(app.message(), None);
+        assert_eq!(app.measurements(), None);
+        assert_eq!(app.history(), (0, 0));
+        assert!(!missing.exists());
+    }
+
+    #[test]
+    fn f_asks_for_a_fit_that_esc_cancels_leaving_the_parameters_as_they_were() {
+        let mut app = app();
+        app.measurements = Some(Measurements {
+            path: "m.csv".into(),
+            points: measured(),
+        });
+        let before = app.inputs();
+        let effects = app.update(Action::Fit);
+        let [fit @ Effect::Fit { job, points, .. }] = effects.as_slice() else {
+            panic!("{effects:?}")
+        };
+        let job = *job;
+        assert_eq!(points, &measured());
+        assert_eq!(app.mode(), &Mode::Fitting { job });
+        assert_eq!(app.mode().context(), Context::Working);
+        let grid = |done| Outcome::FitProgress {
+            job,
+            progress: crate::fit::Progress::Bracket {
+                done,
+                total: 784,
+                points: 25,
+            },
+        };
+        app.receive(grid(392));
+        assert_eq!(
+            app.message().unwrap().text,
+            "fitting: grid search for a start on 25 measurements, 50% (Esc cancels)"
+        );
+        // Meanwhile other keys do nothing: the result is for these parameters.
+        for action in [
+            Action::Increase,
+            Action::SwitchModel,
+            Action::Fit,
+            Action::RequestQuit,
+        ] {
+            assert!(app.update(action).is_empty());
+        }
+        assert_eq!((app.inputs(), app.kind()), (before, ModelKind::Beam));
+        assert!(!app.should_quit());
+        assert_eq!(app.update(Action::Cancel), [Effect::CancelFit { job }]);
+        assert_eq!(app.mode(), &Mode::Normal);
+        let cancelled = app.message().cloned();
+        assert_eq!(
+            cancelled.as_ref().unwrap().text,
+            "fit cancelled; the parameters are unchanged"
+        );
+        // Its progress and result, should they still come, change nothing.
+        let late = crate::tui::effects::perform_blocking(fit.clone()).unwrap();
+        assert!(matches!(late, Outcome::Fitted { result: Ok(_), .. }));
+        app.receive(grid(784));
+        assert!(app.receive(late).is_empty());
+        assert_eq!(app.inputs(), before);
+        assert_eq!(app.message().cloned(), cancelled);
+        assert_eq!(app.history(), (0, 0));
+        // The next fit is another job; its result is adopted, and u undoes it.
+        let effects = app.update(Action::Fit);
+        let [next @ Effect::Fit { job: second, .. }] = effects.as_slice() else {
+            panic!("{effects:?}")
+        };
+        assert_ne!(*second, job);
+        let result = crate::tui::effects::perform_blocking(next.clone()).unwrap();
+        app.receive(result);
+        assert!((app.inputs().get(MU).unwrap() / 0.35 - 1.0).abs() < 1e-6);
+        assert_eq!(app.mode(), &Mode::Normal);
+        app.update(Action::Undo);
+        assert_eq!(app.inputs(), before);
     }
 }

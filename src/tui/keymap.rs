@@ -21,6 +21,8 @@ pub enum Context {
     Help,
     /// The explanation of the regime pane's lines.
     Explain,
+    /// A fit runs: only Esc (and the global keys) mean anything.
+    Working,
 }
 
 /// One line of the key map.
@@ -439,6 +441,12 @@ pub const BINDINGS: &[Binding] = &[
         Action::Cancel,
         "close",
     ),
+    bind(
+        Context::Working,
+        &[(KeyCode::Esc, NONE)],
+        Action::Cancel,
+        "cancel the fit",
+    ),
 ];
 
 /// Keys that mean the same everywhere, as the help lists them: (key, action, what happens).
@@ -487,6 +495,7 @@ pub fn context_title(context: Context) -> &'static str {
         Context::Confirm => "Yes/no questions",
         Context::Help => "This help",
         Context::Explain => "Explaining the numbers",
+        Context::Working => "While a fit runs",
     }
 }
 
@@ -506,6 +515,7 @@ mod tests {
             Context::TextEntry,
             Context::Confirm,
             Context::Help,
+            Context::Working,
         ] {
             assert_eq!(
                 action_for(context, key(KeyCode::Char('c'), KeyModifiers::CONTROL)),
@@ -553,6 +563,15 @@ mod tests {
         );
         assert_eq!(
             action_for(Context::Main, key(KeyCode::Char('z'), NONE)),
+            None
+        );
+        // While a fit runs, Esc cancels it and q does not quit.
+        assert_eq!(
+            action_for(Context::Working, key(KeyCode::Esc, NONE)),
+            Some(Action::Cancel)
+        );
+        assert_eq!(
+            action_for(Context::Working, key(KeyCode::Char('q'), NONE)),
             None
         );
     }

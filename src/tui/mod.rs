@@ -1,11 +1,14 @@
 //! The terminal UI: the event loop. Everything else lives in [`action`] (what keys ask for),
-//! [`app`] (state), [`keymap`] (keys), [`text_input`] (typed text),
-//! [`terminal`] (entering, leaving, suspending), `signals` and [`ui`] (drawing).
+//! [`app`] (state), [`effects`] (files and the fit, which the loop performs for the app),
+//! [`keymap`] (keys), [`text_input`] (typed text), [`terminal`] (entering, leaving, suspending),
+//! `signals` and [`ui`] (drawing).
 //!
 //! Over SSH (see README, "Limits"):
 //! - The screen is redrawn only after a key, a paste or a resize; there is no frame rate.
 //! - A reader thread turns terminal input into events. The loop applies every queued event, for
 //!   up to [`BATCH`] at a time, then draws once, so a storm of keys costs one frame per batch.
+//! - A fit runs on a worker thread, which reports its progress and result over the same channel
+//!   as the reader: the loop never waits for it (Esc cancels it).
 //! - Signals are looked at between any two events and at least every [`TICK`]. SIGTERM, SIGHUP
 //!   and SIGINT restore the terminal and exit with 128 + the signal; SIGTSTP and Ctrl-Z suspend
 //!   (where a shell with job control can resume the program; see `signals`).
@@ -16,6 +19,7 @@
 
 pub mod action;
 pub mod app;
+pub mod effects;
 pub mod keymap;
 mod signals;
 pub mod summary;
@@ -25,13 +29,14 @@ pub mod theme;
 pub mod ui;
 
 use std::io::{self, IsTerminal};
-use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::time::{Duration, Instant};
 
 use ratatui::DefaultTerminal;
 use ratatui::crossterm::event::{self, Event, KeyEventKind};
 
 use app::{App, AppOptions};
+use effects::{Report, Runner};
 use theme::{Charset, Theme};
 
 use crate::preset::{self, PresetError};
@@ -117,10 +122,11 @@ pub fn run(
         data,
     });
     let signals = signals::Signals::install()?;
-    app.set_check_in(signals::Signals::exit_if_terminating);
     let mut terminal = terminal::enter()?;
-    let events = spawn_reader();
-    let result = event_loop(&mut terminal, &mut app, &signals, &events);
+    let (sender, inputs) = mpsc::channel();
+    spawn_reader(sender.clone());
+    let mut runner = Runner::new(sender);
+    let result = event_loop(&mut terminal, &mut app, &mut runner, &signals, &inputs);
     // A SIGHUP sent by hand leaves a live terminal to restore; a closed one reports POLLHUP.
     let hung_up = terminal::hung_up();
     let gone = hung_up || matches!(result, Ok(Exit::HangUp) | Err(_));
@@ -145,25 +151,36 @@ pub fn run(
     result.map_err(TuiError::from)
 }
 
-/// Reads terminal events on a thread of its own and hands them over a channel, so that the loop
-/// never blocks inside the terminal library and always gets back to its signals. The thread ends
-/// at the first read error (the terminal is gone) or when the loop has gone.
-fn spawn_reader() -> Receiver<io::Result<Event>> {
-    let (sender, receiver) = mpsc::channel();
+/// What the loop waits for: the terminal's events and the workers' reports, on one channel so
+/// that one wait covers both.
+enum Input {
+    Terminal(io::Result<Event>),
+    Work(Report),
+}
+
+impl From<Report> for Input {
+    fn from(report: Report) -> Input {
+        Input::Work(report)
+    }
+}
+
+/// Reads terminal events on a thread of its own and hands them over the loop's channel, so that
+/// the loop never blocks inside the terminal library and always gets back to its signals. The
+/// thread ends at the first read error (the terminal is gone) or when the loop has gone.
+fn spawn_reader(sender: Sender<Input>) {
     std::thread::spawn(move || {
         loop {
             let event = event::read();
             let failed = event.is_err();
-            if sender.send(event).is_err() || failed {
+            if sender.send(Input::Terminal(event)).is_err() || failed {
                 break;
             }
         }
     });
-    receiver
 }
 
-/// Applies one event; true when the screen must be redrawn.
-fn apply(app: &mut App, event: Event) -> bool {
+/// Applies one event, performing what it asks for; true when the screen must be redrawn.
+fn apply(app: &mut App, runner: &mut Runner<Input>, event: Event) -> bool {
     match event {
         Event::Key(key) if key.kind == KeyEventKind::Press => {
             match keymap::action_for(app.mode().context(), key) {
@@ -174,7 +191,7 @@ fn apply(app: &mut App, event: Event) -> bool {
                     false
                 }
                 Some(action) => {
-                    app.update(action);
+                    runner.update(app, action);
                     true
                 }
                 None => false,
@@ -189,8 +206,9 @@ fn apply(app: &mut App, event: Event) -> bool {
 fn event_loop(
     terminal: &mut DefaultTerminal,
     app: &mut App,
+    runner: &mut Runner<Input>,
     signals: &signals::Signals,
-    events: &Receiver<io::Result<Event>>,
+    inputs: &Receiver<Input>,
 ) -> io::Result<Exit> {
     terminal.draw(|frame| ui::draw(frame, app))?;
     loop {
@@ -207,8 +225,8 @@ fn event_loop(
         if terminal::hung_up() {
             return Ok(Exit::HangUp);
         }
-        let first = match events.recv_timeout(TICK) {
-            Ok(event) => event,
+        let first = match inputs.recv_timeout(TICK) {
+            Ok(input) => input,
             Err(RecvTimeoutError::Timeout) => continue,
             Err(RecvTimeoutError::Disconnected) => return Ok(Exit::HangUp),
         };
@@ -216,18 +234,22 @@ fn event_loop(
         let started = Instant::now();
         let mut redraw = false;
         let mut next = Some(first);
-        while let Some(event) = next {
-            let Ok(event) = event else {
-                return Ok(Exit::HangUp);
-            };
-            redraw |= apply(app, event);
+        while let Some(input) = next {
+            match input {
+                Input::Terminal(Ok(event)) => redraw |= apply(app, runner, event),
+                Input::Terminal(Err(_)) => return Ok(Exit::HangUp),
+                Input::Work(report) => {
+                    runner.deliver(app, report);
+                    redraw = true;
+                }
+            }
             if app.should_quit() {
                 return Ok(Exit::Quit);
             }
             if signals.waiting() || started.elapsed() >= BATCH {
                 break;
             }
-            next = events.try_recv().ok();
+            next = inputs.try_recv().ok();
         }
         if redraw && !signals.waiting() {
             terminal.draw(|frame| ui::draw(frame, app))?;

@@ -13,8 +13,8 @@
 //! microslip` froze the session for good.
 
 use std::io;
+use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Arc, OnceLock};
 
 use signal_hook::consts::{SIGCONT, SIGHUP, SIGINT, SIGTERM, SIGTSTP};
 
@@ -29,9 +29,6 @@ pub enum Request {
     /// Restore the terminal and let a pending SIGTSTP act; redraw on continue.
     Suspend,
 }
-
-/// The flag of the installed handlers, for [`Signals::exit_if_terminating`].
-static INSTALLED: OnceLock<Arc<AtomicUsize>> = OnceLock::new();
 
 /// The last terminating signal received and not yet acted on, and the pending SIGTSTP.
 pub struct Signals {
@@ -55,7 +52,6 @@ impl Signals {
             })?;
         }
         stop_signal_mask(libc::SIG_BLOCK)?;
-        let _ = INSTALLED.set(Arc::clone(&pending));
         Ok(Signals { pending })
     }
 
@@ -66,24 +62,6 @@ impl Signals {
             0 if stop_pending() => Some(Request::Suspend),
             0 => None,
             n => Some(Request::Terminate(n as i32)),
-        }
-    }
-
-    /// Ends the process at once if a terminating signal is waiting: for long computations inside
-    /// one key's work (a fit of a million measurements), which check in between chunks so that
-    /// a signal still acts within milliseconds. Restores the terminal first.
-    pub fn exit_if_terminating() {
-        let Some(pending) = INSTALLED.get() else {
-            return;
-        };
-        let signal = pending.load(Ordering::SeqCst);
-        if signal != 0 {
-            super::terminal::leave();
-            std::process::exit(128 + signal as i32);
-        }
-        // A terminal that hung up without a SIGHUP (a closed pane) ends a long computation too.
-        if super::terminal::hung_up() {
-            std::process::exit(129);
         }
     }
 

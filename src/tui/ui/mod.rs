@@ -98,7 +98,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 ),
             ),
             Mode::Explain { line } => overlay::draw_explanation(frame, app, area, *line),
-            Mode::Normal | Mode::Editing { .. } => {}
+            Mode::Normal | Mode::Editing { .. } | Mode::Fitting { .. } => {}
         }
     }
     if app.theme().charset == Charset::Ascii {
