@@ -291,7 +291,8 @@ pub enum Command {
         output: Option<PathBuf>,
     },
     /// Regenerate the paper's figures, the cycle loop and D vs F_a: SVG + CSV each, and an
-    /// index.html that shows them all.
+    /// index.html that shows them all; with --preset or --set, every chart of that bench instead,
+    /// its values in each caption.
     Figures {
         /// The directory to write into (made if missing; files in it are replaced).
         #[arg(long, value_name = "DIR")]
@@ -299,6 +300,9 @@ pub enum Command {
         /// Leave out the finite-element points (faster).
         #[arg(long)]
         no_fe: bool,
+        /// Your bench instead of the paper's (default without them: the paper's figure set).
+        #[command(flatten)]
+        inputs: InputArgs,
     },
     /// Validate presets (files, or names as --preset takes them); report every problem; exit 1 if
     /// any.
@@ -994,7 +998,11 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             };
             write_output(out, output.as_deref(), &bytes)?
         }
-        Some(Command::Figures { out: dir, no_fe }) => run_figures(out, dir, !*no_fe)?,
+        Some(Command::Figures {
+            out: dir,
+            no_fe,
+            inputs,
+        }) => run_figures(out, dir, !*no_fe, inputs)?,
         Some(Command::Compare {
             model,
             results,
@@ -1740,40 +1748,118 @@ fn chart_csv(plot: &report::chart::Plot) -> Result<Vec<u8>, CliError> {
 }
 
 /// `microslip figures`: every figure of [`figure::PAPER_FIGURES`] as SVG and CSV, then the index.
-fn run_figures(out: &mut impl Write, dir: &std::path::Path, fe: bool) -> Result<(), CliError> {
+fn run_figures(
+    out: &mut impl Write,
+    dir: &std::path::Path,
+    fe: bool,
+    inputs: &InputArgs,
+) -> Result<(), CliError> {
     let unwritable = |e: io::Error| CliError::Data {
         path: dir.display().to_string(),
         reason: e.to_string(),
     };
+    let yours = inputs.preset.is_some() || !inputs.assignments.is_empty();
+    // Every model is loaded before the folder is made: a bad preset leaves nothing behind.
+    let mut figures = Vec::new();
+    let intro = if yours {
+        let (name, model) = load_any(inputs, ModelKind::Beam)?;
+        let values = figure::parameter_caption(&model.inputs());
+        for chart in AnyChart::all().filter(|c| c.kind() == model.kind()) {
+            let plot = report::chart::figure(&model, chart, fe, YMode::Linear)?;
+            // Each chart's own default axis, where its data allow it (as `plot` chooses).
+            let y = Some(YMode::default_for(chart))
+                .filter(|m| m.applies_to(&plot))
+                .unwrap_or(YMode::Linear);
+            let entry = figure::IndexEntry {
+                stem: format!("{}-{}", model.kind().name(), chart.key()),
+                title: chart.title(),
+                caption: format!(
+                    "{} (preset <code>{}</code>: {}",
+                    chart.title(),
+                    html_escape(&name),
+                    html_escape(&values)
+                ),
+                command: format!(
+                    "microslip plot {}{}{} --y {}",
+                    chart.key(),
+                    html_escape(&flags_of(inputs)),
+                    if fe { " --fe" } else { "" },
+                    y.key()
+                ),
+            };
+            figures.push((y.apply(plot), entry));
+        }
+        format!(
+            "Your bench, preset <code>{}</code>: {}. Units: mm, N, MPa; K_T in MPa/mm. Closed \
+             forms under both laws{}. Made by <code>microslip figures{}</code>.",
+            html_escape(&name),
+            html_escape(&values),
+            if fe {
+                "; points are the project's own finite-element solutions"
+            } else {
+                ""
+            },
+            html_escape(&flags_of(inputs))
+        )
+    } else {
+        for f in figure::PAPER_FIGURES {
+            let inputs = InputArgs {
+                preset: Some(f.preset.to_string()),
+                assignments: Vec::new(),
+                beam_theory: None,
+            };
+            let (_, model) = load(&inputs, f.chart.kind(), "figures")?;
+            let plot = report::chart::figure(&model, f.chart, fe && f.finite_elements, f.y)?;
+            figures.push((plot, f.entry()));
+        }
+        figure::PAPER_INTRO.to_string()
+    };
     std::fs::create_dir_all(dir).map_err(unwritable)?;
-    for f in figure::PAPER_FIGURES {
-        let inputs = InputArgs {
-            preset: Some(f.preset.to_string()),
-            assignments: Vec::new(),
-            beam_theory: None,
-        };
-        let (_, model) = load(&inputs, f.chart.kind(), "figures")?;
-        let plot = report::chart::figure(&model, f.chart, fe && f.finite_elements, f.y)?;
-        let svg = dir.join(format!("{}.svg", f.stem));
-        write_output(out, Some(&svg), figure::svg(&plot)?.as_bytes())?;
+    for (plot, entry) in &figures {
+        let svg = dir.join(format!("{}.svg", entry.stem));
+        write_output(out, Some(&svg), figure::svg(plot)?.as_bytes())?;
         write_output(
             out,
-            Some(&dir.join(format!("{}.csv", f.stem))),
-            &chart_csv(&plot)?,
+            Some(&dir.join(format!("{}.csv", entry.stem))),
+            &chart_csv(plot)?,
         )?;
         // The folder is the user's text: control characters are shown escaped, never sent.
         let shown = svg.display().to_string();
-        writeln!(out, "{}  {}", report::sanitize(&shown), f.chart.title())?;
+        writeln!(out, "{}  {}", report::sanitize(&shown), entry.title)?;
     }
+    let entries: Vec<figure::IndexEntry> = figures.into_iter().map(|(_, e)| e).collect();
     let index = dir.join("index.html");
     write_output(
         out,
         Some(&index),
-        figure::index_html(figure::PAPER_FIGURES).as_bytes(),
+        figure::index_html(&intro, &entries).as_bytes(),
     )?;
     let shown = index.display().to_string();
     writeln!(out, "{}  open it in a browser", report::sanitize(&shown))?;
     Ok(())
+}
+
+/// The `--preset` and `--set` flags of `inputs`, as a command line repeats them.
+fn flags_of(inputs: &InputArgs) -> String {
+    let mut flags = String::new();
+    if let Some(preset) = &inputs.preset {
+        flags.push_str(&format!(" --preset {preset}"));
+    }
+    for assignment in &inputs.assignments {
+        flags.push_str(&format!(" --set {assignment}"));
+    }
+    if let Some(theory) = &inputs.beam_theory {
+        flags.push_str(&format!(" --beam-theory {theory}"));
+    }
+    flags
+}
+
+/// Text for an HTML page: `&`, `<`, `>` and `"` escaped (preset names and paths are the user's).
+fn html_escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
 
 fn run_verify(

@@ -1,24 +1,8 @@
 //! What a hostile user found accepted, ignored or worded wrongly (issue 21, "Smaller, each seen"),
 //! through the real binary: each case failed before its fix.
 
-use assert_cmd::Command;
-
-fn microslip() -> Command {
-    let mut cmd = Command::cargo_bin("microslip").expect("binary built by cargo");
-    cmd.env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"))
-        .env_remove("HOME");
-    cmd
-}
-
-/// (exit code, stdout, stderr).
-fn run(args: &[&str]) -> (i32, String, String) {
-    let output = microslip().args(args).output().unwrap();
-    (
-        output.status.code().unwrap(),
-        String::from_utf8(output.stdout).unwrap(),
-        String::from_utf8(output.stderr).unwrap(),
-    )
-}
+mod binary;
+use binary::run;
 
 /// A refusal: exit 2, one line on stderr, which is returned.
 fn refused(args: &[&str]) -> String {

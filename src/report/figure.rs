@@ -312,36 +312,84 @@ pub const PAPER_FIGURES: &[PaperFigure] = &[
     },
 ];
 
-/// The page that shows `figures` (written beside them as `index.html`): each SVG with its caption
-/// and a link to its data. Plain HTML, no script, no date.
-pub fn index_html(figures: &[PaperFigure]) -> String {
+/// One figure of an index page: its files, its title and what it shows.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct IndexEntry {
+    /// File name without extension (`.svg` and `.csv` are written).
+    pub stem: String,
+    /// The chart's short title (the image's alt text).
+    pub title: &'static str,
+    /// What it shows.
+    pub caption: String,
+    /// The command that draws it alone.
+    pub command: String,
+}
+
+impl PaperFigure {
+    /// This figure as an entry of the index page.
+    pub fn entry(&self) -> IndexEntry {
+        IndexEntry {
+            stem: self.stem.to_string(),
+            title: self.chart.title(),
+            caption: format!("{} (preset <code>{}</code>", self.caption, self.preset),
+            command: format!(
+                "microslip plot {} --preset {}{} --y {}",
+                self.chart.key(),
+                self.preset,
+                if self.finite_elements { " --fe" } else { "" },
+                self.y.key()
+            ),
+        }
+    }
+}
+
+/// The introduction of the paper's index page.
+pub const PAPER_INTRO: &str = "Ligier &amp; Bonhote (2014), regularized Coulomb friction: the paper's data sets, \
+     both laws, closed forms; points are the project's own finite-element solutions. \
+     Units: mm, N, MPa; K_T in MPa/mm. Made by <code>microslip figures</code>.";
+
+/// The parameters of `inputs` as a caption says them: `L = 200 mm, b = 20 mm, ..., mu = 0.3`.
+pub fn parameter_caption(inputs: &crate::Inputs) -> String {
+    inputs
+        .kind()
+        .params()
+        .iter()
+        .filter_map(|&param| {
+            let value = inputs.get(param)?;
+            let unit = match param.unit() {
+                crate::Unit::Dimensionless => String::new(),
+                unit => format!(" {unit}"),
+            };
+            Some(format!(
+                "{param} = {}{unit}",
+                crate::kernel::params::Compact(value)
+            ))
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// An HTML page showing `entries` (SVG files beside it) after `intro` (HTML), with their captions,
+/// CSV data links and the command that draws each alone.
+pub fn index_html(intro: &str, entries: &[IndexEntry]) -> String {
     let mut page = String::from(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <title>microslip figures</title>\n<style>\n\
          body { font-family: sans-serif; max-width: 860px; margin: 2em auto; }\n\
          figure { margin: 0 0 2.5em 0; } img { width: 100%; border: 1px solid #ddd; }\n\
-         </style>\n</head>\n<body>\n<h1>microslip figures</h1>\n\
-         <p>Ligier &amp; Bonhote (2014), regularized Coulomb friction: the paper's data sets, \
-         both laws, closed forms; points are the project's own finite-element solutions. \
-         Units: mm, N, MPa; K_T in MPa/mm. Made by <code>microslip figures</code>.</p>\n",
+         </style>\n</head>\n<body>\n<h1>microslip figures</h1>\n",
     );
-    for f in figures {
+    page.push_str(&format!("<p>{intro}</p>\n"));
+    for entry in entries {
         page.push_str(&format!(
             "<figure id=\"{stem}\">\n<img src=\"{stem}.svg\" alt=\"{title}\">\n\
-             <figcaption>{caption} (preset <code>{preset}</code>; \
+             <figcaption>{caption}; \
              data: <a href=\"{stem}.csv\">{stem}.csv</a>; \
-             <code>microslip plot {key} --preset {preset}{fe} --y {y}</code>)</figcaption>\n</figure>\n",
-            stem = f.stem,
-            title = f.chart.title(),
-            caption = f.caption,
-            preset = f.preset,
-            key = f.chart.key(),
-            fe = if f.finite_elements { " --fe" } else { "" },
-            y = match f.y {
-                YMode::Linear => "linear",
-                YMode::Log => "log",
-                YMode::Relative => "relative",
-            },
+             <code>{command}</code>)</figcaption>\n</figure>\n",
+            stem = entry.stem,
+            title = entry.title,
+            caption = entry.caption,
+            command = entry.command,
         ));
     }
     page.push_str("</body>\n</html>\n");
@@ -749,7 +797,8 @@ mod tests {
 
     #[test]
     fn the_index_shows_every_figure_with_its_data() {
-        let page = index_html(PAPER_FIGURES);
+        let entries: Vec<IndexEntry> = PAPER_FIGURES.iter().map(PaperFigure::entry).collect();
+        let page = index_html(PAPER_INTRO, &entries);
         for f in PAPER_FIGURES {
             assert!(
                 page.contains(&format!("src=\"{}.svg\"", f.stem)),

@@ -27,6 +27,15 @@ impl YMode {
     /// Every mode, in the order `y` cycles through them.
     pub const ALL: [YMode; 3] = [YMode::Linear, YMode::Log, YMode::Relative];
 
+    /// The mode's key on the command line (`--y`).
+    pub fn key(self) -> &'static str {
+        match self {
+            YMode::Linear => "linear",
+            YMode::Log => "log",
+            YMode::Relative => "relative",
+        }
+    }
+
     /// The mode's name, for the status line and axis titles.
     pub fn label(self) -> &'static str {
         match self {

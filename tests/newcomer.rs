@@ -1,25 +1,10 @@
-//! `microslip bench ccx`: one command from parameters to a comparison. These tests run without
-//! CalculiX (it is never required by `cargo test`): a missing ccx, a failing one and a work folder
-//! that holds a job's files. CI runs the real ccx through it (.ci/run).
+//! What a newcomer stumbled on (issue 25), through the real binary. `microslip bench ccx`: one
+//! command from parameters to a comparison, tested here without CalculiX (it is never required by
+//! `cargo test`): a missing ccx, a failing one and a work folder that holds a job's files; CI runs
+//! the real ccx through it (.ci/run). `figures` for the user's own bench.
 
-use assert_cmd::Command;
-
-fn microslip() -> Command {
-    let mut cmd = Command::cargo_bin("microslip").expect("binary built by cargo");
-    cmd.env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"))
-        .env_remove("HOME");
-    cmd
-}
-
-/// Exit code, stdout and stderr of `args`.
-fn run(args: &[&str]) -> (i32, String, String) {
-    let output = microslip().args(args).output().unwrap();
-    (
-        output.status.code().unwrap(),
-        String::from_utf8(output.stdout).unwrap(),
-        String::from_utf8(output.stderr).unwrap(),
-    )
-}
+mod binary;
+use binary::run;
 
 #[test]
 fn a_missing_ccx_says_how_to_install_it_and_how_to_do_without() {
@@ -138,4 +123,52 @@ fn progress_counts_load_steps_from_ccx_total_time() {
         ccx_progress(&at(Some(9.0))),
         "ccx: 12 s, load step 4 of 4 (100 %)"
     );
+}
+
+/// `figures` for the user's own bench (issue: it only knew the paper): every chart of the
+/// preset's problem, the values in each caption, the command that redraws each.
+#[test]
+fn figures_draw_every_chart_of_your_bench_with_its_values_in_the_captions() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("figs");
+    let (code, stdout, err) = run(&[
+        "figures",
+        "--out",
+        out.to_str().unwrap(),
+        "--no-fe",
+        "--preset",
+        "paper-plate",
+        "--set",
+        "KT=3e5",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    for stem in ["plate-u-vs-kt", "plate-xr-vs-mu", "plate-pressure"] {
+        let svg = std::fs::read_to_string(out.join(format!("{stem}.svg"))).unwrap();
+        assert!(svg.starts_with("<svg"), "{stem}");
+        assert!(out.join(format!("{stem}.csv")).is_file(), "{stem}");
+        assert!(stdout.contains(&format!("{stem}.svg")), "{stdout}");
+    }
+    let page = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert_eq!(page.matches("<figure ").count(), 3, "{page}");
+    assert_eq!(page.matches("KT = 300000 MPa/mm").count(), 4, "{page}");
+    assert!(page.contains("L = 10 mm, tp = 0.2 mm"), "{page}");
+    assert!(
+        page.contains(
+            "<code>microslip plot u-vs-kt --preset paper-plate --set KT=3e5 --y log</code>"
+        ),
+        "{page}"
+    );
+    // A bad value is refused before anything is written.
+    let refused = dir.path().join("refused");
+    let (code, _, err) = run(&[
+        "figures",
+        "--out",
+        refused.to_str().unwrap(),
+        "--preset",
+        "paper-plate",
+        "--set",
+        "KT=-1",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(!refused.exists());
 }
