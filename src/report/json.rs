@@ -6,7 +6,9 @@ use serde_json::Value;
 
 use super::point::beam::BeamReport;
 use super::point::cycle::CycleReport;
+use super::point::fit::FitReport;
 use super::point::plate::{PlateReport, StripTheory};
+use super::point::solve::SolveReport;
 use super::point::to_json;
 
 use crate::kernel::params::Unit;
@@ -43,28 +45,14 @@ pub fn plate(
     to_json(&PlateReport::new(preset, plate, continuum))
 }
 
-fn estimate(e: &crate::fit::Estimate) -> Value {
-    serde_json::json!({
-        "value": e.value,
-        "std_error": e.std_error,
-        "status": e.status.label(),
-        "note": super::text::evidence(&e.evidence),
-    })
-}
-
 /// Fit report.
-pub fn fit(data: &str, preset: &str, result: &crate::fit::FitResult) -> Value {
-    serde_json::json!({
-        "data": data,
-        "preset": preset,
-        "points": result.points,
-        "mu": estimate(&result.mu),
-        "KT_MPa_per_mm": estimate(&result.kt),
-        "rms_mm": result.rms,
-        "F_thre_N": result.threshold_force,
-        "F_1_N": result.first_macroslip_force,
-        "points_above_F_1": result.beyond_first_macroslip,
-    })
+pub fn fit(
+    data: &str,
+    preset: &str,
+    structure: &crate::TwinBeamsParams,
+    result: &crate::fit::FitResult,
+) -> Value {
+    to_json(&FitReport::new(data, preset, structure, result))
 }
 
 /// The K_T comparison.
@@ -125,31 +113,7 @@ pub fn solved(
     kind: crate::ModelKind,
     solved: &crate::study::target::Solved,
 ) -> Value {
-    let quantity = solved.target.quantity;
-    let roots: Vec<Value> = solved
-        .roots
-        .iter()
-        .map(|r| {
-            serde_json::json!({
-                "value": r.value,
-                "achieved": r.achieved,
-                "bracket": [r.bracket.0, r.bracket.1],
-                "certified": r.certified,
-                "plateau": r.plateau,
-                "within_rounding": r.within_rounding,
-            })
-        })
-        .collect();
-    serde_json::json!({
-        "model": kind.name(),
-        "preset": preset,
-        "param": solved.param.name(),
-        "unit": solved.param.unit().symbol(),
-        "quantity": quantity.name(kind),
-        "target": solved.target.value,
-        "range": [solved.range.0, solved.range.1],
-        "roots": roots,
-    })
+    to_json(&SolveReport::new(preset, kind, solved))
 }
 
 /// `microslip kt --tolerance` as JSON.

@@ -5,7 +5,9 @@ use std::fmt::Write;
 
 use super::point::beam::BeamReport;
 use super::point::cycle::CycleReport;
+use super::point::fit::FitReport;
 use super::point::plate::PlateReport;
+use super::point::solve::SolveReport;
 use super::{number, number_with, sanitize};
 use crate::numeric::NumericError;
 use crate::problems::BeamParam;
@@ -35,35 +37,7 @@ pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> String {
 
 pub use super::point::cycle::CYCLE_UNITS_NOTE;
 
-/// The reason behind a fit verdict, in plain words (the text and JSON fit reports' note).
-pub fn evidence(evidence: &crate::fit::Evidence) -> String {
-    use crate::fit::Evidence;
-    match *evidence {
-        Evidence::HeldFixed => "held fixed".to_string(),
-        Evidence::StandardError { relative } => {
-            format!("relative standard error {:.2} %", 100.0 * relative)
-        }
-        Evidence::AtSearchBound => "the best fit sits at the edge of the search range".to_string(),
-        Evidence::NoDependence => "the data do not depend on it".to_string(),
-        Evidence::NoDataAboveFirstMacroslip {
-            first_macroslip_force,
-            mu_at_least,
-        } => format!(
-            "no measurement above F_1 = {} N: below F_1 the deflection does not depend on mu; the data only show mu >= {}",
-            number(first_macroslip_force),
-            number(mu_at_least)
-        ),
-        Evidence::FewPointsAboveFirstMacroslip { relative, points } => format!(
-            "relative standard error {:.2} %; only {points} {} above F_1",
-            100.0 * relative,
-            if points == 1 {
-                "measurement"
-            } else {
-                "measurements"
-            }
-        ),
-    }
-}
+pub use super::point::fit::evidence;
 
 /// Fit report: estimates with standard errors and a plain verdict on identifiability.
 pub fn fit(
@@ -72,49 +46,7 @@ pub fn fit(
     structure: &crate::TwinBeamsParams,
     result: &crate::fit::FitResult,
 ) -> String {
-    let (data, preset) = (sanitize(data), sanitize(preset));
-    let mut out = String::new();
-    let p = structure;
-    let _ = writeln!(
-        out,
-        "Fit of mu and K_T to {data} ({}), twin beams of preset {preset}",
-        super::count_of(result.points, "measurement")
-    );
-    let _ = writeln!(
-        out,
-        "  structure: L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa",
-        number(p.length),
-        number(p.width),
-        number(p.half_height),
-        number(p.youngs_modulus),
-        number(p.pressure)
-    );
-    for (name, unit, estimate) in [("mu ", "", &result.mu), ("K_T", " MPa/mm", &result.kt)] {
-        let error = estimate
-            .std_error
-            .map_or(String::new(), |e| format!(" +- {}", number(e)));
-        // "fixed (held fixed)" said it twice: a held value needs no reason.
-        let reason = match estimate.evidence {
-            crate::fit::Evidence::HeldFixed => String::new(),
-            ref other => format!(" ({})", evidence(other)),
-        };
-        let _ = writeln!(
-            out,
-            "  {name} = {}{error}{unit}: {}{reason}",
-            number(estimate.value),
-            estimate.status.label(),
-        );
-    }
-    let _ = writeln!(out, "  residual RMS = {} mm", number(result.rms));
-    let _ = writeln!(
-        out,
-        "  at the fitted values: F_thre = {} N, F_1 = {} N; {} of {} measurements above F_1",
-        number(result.threshold_force),
-        number(result.first_macroslip_force),
-        result.beyond_first_macroslip,
-        result.points
-    );
-    out
+    FitReport::new(data, preset, structure, result).text()
 }
 
 /// The name of a K_T candidate's source, as reports show it.
@@ -311,91 +243,7 @@ pub fn solved(
     kind: crate::ModelKind,
     solved: &crate::study::target::Solved,
 ) -> String {
-    let preset = sanitize(preset);
-    let mut out = String::new();
-    let param = solved.param;
-    let quantity = solved.target.quantity;
-    let (name, unit) = (quantity.name(kind), quantity.unit());
-    let unit_of = |u: &str| {
-        if u.is_empty() {
-            String::new()
-        } else {
-            format!(" {u}")
-        }
-    };
-    let punit = match param.unit() {
-        crate::Unit::Dimensionless => String::new(),
-        u => format!(" {u}"),
-    };
-    let _ = writeln!(
-        out,
-        "{kind} ({preset}): {param} such that {name} = {}{}",
-        number(solved.target.value),
-        unit_of(unit)
-    );
-    let _ = writeln!(out, "  {name}: {}", quantity.meaning(kind));
-    for root in &solved.roots {
-        if root.plateau && root.within_rounding {
-            let limit = if root.bracket.1 >= solved.range.1 {
-                format!(
-                    "; it tends to {} as {param} grows: reached in the limit, not at a root",
-                    number(solved.target.value)
-                )
-            } else {
-                String::new()
-            };
-            let _ = writeln!(
-                out,
-                "{name} = {}{} to within {:e} relative (the rounding band) for every {param} in [{}, {}]{punit}{limit}",
-                number(solved.target.value),
-                unit_of(unit),
-                crate::study::target::ROUNDING,
-                number(root.bracket.0),
-                number(root.bracket.1)
-            );
-        } else if root.plateau && root.bracket.0 < root.bracket.1 {
-            let _ = writeln!(
-                out,
-                "{name} = {}{} for every {param} in [{}, {}]{punit} (a plateau; its ends found by bisection)",
-                number(root.achieved),
-                unit_of(unit),
-                number(root.bracket.0),
-                number(root.bracket.1)
-            );
-        } else if root.certified {
-            let _ = writeln!(
-                out,
-                "{param} = {}{punit}   ({name} = {}{} there; root bracketed in [{}, {}]{punit})",
-                number(root.value),
-                number(root.achieved),
-                unit_of(unit),
-                number(root.bracket.0),
-                number(root.bracket.1)
-            );
-        } else {
-            let _ = writeln!(
-                out,
-                "{param} = {}{punit}: {name} jumps across the target there ({} on one side): not a root",
-                number(root.value),
-                number(root.achieved)
-            );
-        }
-    }
-    if solved.roots.len() > 1 {
-        let _ = writeln!(
-            out,
-            "more than one {param} gives {name} = {}: narrow the search with --from/--to",
-            number(solved.target.value)
-        );
-    }
-    let _ = writeln!(
-        out,
-        "searched {param} in [{}, {}]{punit} ({}-point scan; each bracket solved to 1e-12 relative)",
-        number(solved.range.0),
-        number(solved.range.1),
-        crate::study::target::SCAN_POINTS
-    );
-    out
+    SolveReport::new(preset, kind, solved).text()
 }
 
 /// A percentage for people: `1 %`, `0.517 %`.

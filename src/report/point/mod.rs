@@ -10,7 +10,9 @@
 
 pub mod beam;
 pub mod cycle;
+pub mod fit;
 pub mod plate;
+pub mod solve;
 
 use std::fmt::Write;
 
