@@ -9,11 +9,11 @@ use super::point::cycle::CycleReport;
 use super::point::fit::FitReport;
 use super::point::plate::{PlateReport, StripTheory};
 use super::point::solve::SolveReport;
+use super::point::stiffness::StiffnessReport;
 use super::point::to_json;
 
 use crate::kernel::params::Unit;
-use crate::problems::BeamParam;
-use crate::study::curves::{Answer, StiffnessComparison};
+use crate::study::curves::StiffnessComparison;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// `KEY_unit` with the unit spelled for identifiers: `L_mm`, `E_MPa`, `KT_MPa_per_mm`, `mu`.
@@ -57,49 +57,7 @@ pub fn fit(
 
 /// The K_T comparison.
 pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> Value {
-    let rows: Vec<Value> = comparison
-        .rows
-        .iter()
-        .map(|row| {
-            let mut object = serde_json::json!({
-                "source": super::text::candidate_name(&row.candidate.source),
-                "basis": super::text::candidate_basis(&row.candidate.source),
-                "KT_MPa_per_mm": row.candidate.kt,
-            });
-            match row.answer {
-                Some(Answer::Beam {
-                    first_macroslip_force,
-                    micro_end,
-                    tip_deflection,
-                    regime,
-                }) => {
-                    object["F_1_N"] = first_macroslip_force.into();
-                    object["X_mm"] = micro_end.into();
-                    object["w_tip_mm"] = tip_deflection.into();
-                    object["regime"] = regime.label().into();
-                }
-                Some(Answer::Plate {
-                    end_displacement,
-                    micro_end,
-                    regime,
-                }) => {
-                    object["u_end_mm"] = end_displacement.into();
-                    object["Xr_mm"] = micro_end.into();
-                    object["regime"] = regime.label().into();
-                }
-                // A K_T the model refuses: say why rather than leave the answer out silently.
-                None => {
-                    if let Some(Err(refused)) =
-                        row.candidate.kt.map(|kt| BeamParam::Stiffness.check(kt))
-                    {
-                        object["not_evaluated"] = refused.to_string().into();
-                    }
-                }
-            }
-            object
-        })
-        .collect();
-    serde_json::json!({ "preset": preset, "element_size_mm": comparison.element, "candidates": rows })
+    to_json(&StiffnessReport::new(preset, comparison))
 }
 
 /// The strip theory's envelope (V1) as JSON: the plate report's `strip_theory`.

@@ -8,12 +8,12 @@ use super::point::cycle::CycleReport;
 use super::point::fit::FitReport;
 use super::point::plate::PlateReport;
 use super::point::solve::SolveReport;
+use super::point::stiffness::StiffnessReport;
 use super::{number, number_with, sanitize};
 use crate::numeric::NumericError;
-use crate::problems::BeamParam;
 use crate::problems::inputs::Model;
 use crate::problems::plate::ContinuumPlate;
-use crate::study::curves::{Answer, CandidateSource, StiffnessComparison};
+use crate::study::curves::StiffnessComparison;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// Twin-beam report at one force.
@@ -49,38 +49,7 @@ pub fn fit(
     FitReport::new(data, preset, structure, result).text()
 }
 
-/// The name of a K_T candidate's source, as reports show it.
-pub fn candidate_name(source: &CandidateSource) -> &'static str {
-    match source {
-        CandidateSource::Current => "current",
-        CandidateSource::NormalLow => "K_N x 0.5",
-        CandidateSource::Equation4 { .. } => "eq. 4",
-        CandidateSource::NormalHigh => "K_N x 0.7",
-        CandidateSource::Code(code) => code.code,
-    }
-}
-
-/// How a K_T candidate was obtained, and how sure we are.
-pub fn candidate_basis(source: &CandidateSource) -> String {
-    match source {
-        CandidateSource::Current => "the model's K_T".into(),
-        CandidateSource::NormalLow => "measured K_T/K_N, low end".into(),
-        CandidateSource::Equation4 { nu } => format!("pi (1 - nu) / (2 (2 - nu)) K_N, nu = {nu}"),
-        CandidateSource::NormalHigh => "measured K_T/K_N, high end".into(),
-        CandidateSource::Code(code) => {
-            format!("{} ({})", code.description, code.confirmation.label())
-        }
-    }
-}
-
-/// The regime column of a candidate without an answer: no K_T at all, or one the model refuses.
-fn unanswered(kt: Option<f64>) -> &'static str {
-    if kt.is_some() {
-        "K_T out of range"
-    } else {
-        "-"
-    }
-}
+pub use super::point::stiffness::{candidate_basis, candidate_name};
 
 /// One line on how far reading a measurement file got, for a progress display.
 pub fn reading_progress(done: usize, total: usize) -> String {
@@ -122,113 +91,7 @@ pub fn fit_progress(progress: &crate::fit::Progress) -> String {
 
 /// The K_T comparison: each candidate and what it does to the answer.
 pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> String {
-    let preset = sanitize(preset);
-    let mut out = String::new();
-    let element = comparison.element;
-    let (mu, pressure) = {
-        let data = comparison.model.interface();
-        (data.friction, data.pressure)
-    };
-    match comparison.model {
-        Model::Beam { force, .. } => {
-            let _ = writeln!(
-                out,
-                "K_T candidates for preset {preset}: twin beams at F = {} N, mu P = {} MPa, contact elements {} mm",
-                number(force.newtons()),
-                number(mu * pressure),
-                number(element)
-            );
-            let _ = writeln!(
-                out,
-                "{:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} basis",
-                "source", "K_T (MPa/mm)", "F_1 (N)", "X (mm)", "w(L) (mm)", "regime"
-            );
-        }
-        Model::Plate(_) => {
-            let _ = writeln!(
-                out,
-                "K_T candidates for preset {preset}: squeezed plate, mu P = {} MPa, contact elements {} mm",
-                number(mu * pressure),
-                number(element)
-            );
-            let _ = writeln!(
-                out,
-                "{:<16} {:>12} {:>12} {:>10}  {:<20} basis",
-                "source", "K_T (MPa/mm)", "u(L) (mm)", "X_r (mm)", "regime"
-            );
-        }
-    }
-    for row in &comparison.rows {
-        let (source, basis) = (
-            candidate_name(&row.candidate.source),
-            candidate_basis(&row.candidate.source),
-        );
-        let kt = row.candidate.kt.map_or("-".to_string(), number);
-        let _ = match (comparison.model, row.answer) {
-            (
-                _,
-                Some(Answer::Beam {
-                    first_macroslip_force,
-                    micro_end,
-                    tip_deflection,
-                    regime,
-                }),
-            ) => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>10} {:>10} {:>11}  {:<20} {basis}",
-                number(first_macroslip_force),
-                number(micro_end),
-                number(tip_deflection),
-                regime.label(),
-            ),
-            (
-                _,
-                Some(Answer::Plate {
-                    end_displacement,
-                    micro_end,
-                    regime,
-                }),
-            ) => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>12} {:>10}  {:<20} {basis}",
-                number(end_displacement),
-                number(micro_end),
-                regime.label(),
-            ),
-            (Model::Beam { .. }, None) => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>10} {:>10} {:>11}  {:<20} {basis}",
-                "-",
-                "-",
-                "-",
-                unanswered(row.candidate.kt)
-            ),
-            (Model::Plate(_), None) => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>12} {:>10}  {:<20} {basis}",
-                "-",
-                "-",
-                unanswered(row.candidate.kt)
-            ),
-        };
-    }
-    if comparison
-        .rows
-        .iter()
-        .any(|row| row.candidate.kt.is_some() && row.answer.is_none())
-    {
-        let stiffness = BeamParam::Stiffness.spec();
-        let _ = writeln!(
-            out,
-            "K_T out of range: not evaluated, K_T {}.",
-            stiffness.domain.describe(stiffness.unit)
-        );
-    }
-    let _ = writeln!(
-        out,
-        "Elastic-slip defaults scale like mu P / element length: halve the elements, double K_T."
-    );
-    out
+    StiffnessReport::new(preset, comparison).text()
 }
 
 /// The plate's K_T at macroslip onset in words (docs/theory.md, (P11)), as the text report and the

@@ -13,6 +13,7 @@ pub mod cycle;
 pub mod fit;
 pub mod plate;
 pub mod solve;
+pub mod stiffness;
 
 use std::fmt::Write;
 
