@@ -596,8 +596,8 @@ const CASES: &[Case] = &[
 /// elements shows the types joined, `null|number`.
 fn key_paths(value: &Value) -> BTreeSet<String> {
     let mut types = std::collections::BTreeMap::<String, BTreeSet<&'static str>>::new();
-    fn walk<'v>(
-        value: &'v Value,
+    fn walk(
+        value: &Value,
         path: String,
         types: &mut std::collections::BTreeMap<String, BTreeSet<&'static str>>,
     ) {

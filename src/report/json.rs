@@ -1,5 +1,6 @@
-//! JSON reports of single points (beam, plate, cycle, fit, K_T comparison): the text reports'
-//! fields, with unit-suffixed names (`w_tip_mm`, `KT_MPa_per_mm`). Tables (sweeps) are serialized
+//! JSON reports of single points, with unit-suffixed names (`w_tip_mm`, `KT_MPa_per_mm`): beam,
+//! plate, cycle, K_T candidates, fit and solve serialize their [`super::point`] types, which the
+//! text reports render too; `kt --tolerance` is still built here. Tables (sweeps) are serialized
 //! from [`super::rows`] instead.
 
 use serde_json::Value;

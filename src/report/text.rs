@@ -1,5 +1,6 @@
-//! Readable single-point reports: inputs with units, thresholds, both laws side by side; the K_T
-//! comparison; the fit. Pure string building from the structured results of the library.
+//! Readable single-point reports. Beam, plate, cycle, K_T candidates, fit and solve render their
+//! [`super::point`] types (the same values their JSON serializes); `kt --tolerance` and the
+//! progress lines are still built here from the library's results.
 
 use std::fmt::Write;
 
