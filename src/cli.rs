@@ -1556,9 +1556,10 @@ fn run_fit(
         ReportFormat::Text => out.write_all(
             text::fit(&path.display().to_string(), &name, &beams.params(), &result).as_bytes(),
         )?,
-        ReportFormat::Json => {
-            write_json(out, &json::fit(&path.display().to_string(), &name, &result))?
-        }
+        ReportFormat::Json => write_json(
+            out,
+            &json::fit(&path.display().to_string(), &name, &beams.params(), &result),
+        )?,
     }
     Ok(())
 }

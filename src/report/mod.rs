@@ -12,6 +12,7 @@ pub mod csv;
 #[cfg(feature = "figures")]
 pub mod figure;
 pub mod json;
+pub mod point;
 pub mod presets;
 pub mod rows;
 pub mod table;
@@ -96,8 +97,12 @@ fn percent_of(error: Option<f64>) -> String {
 /// What the contact-pressure check found, with both measures and which one decides: "holds (mean
 /// deviation 0.6 % <= 3 %, peak 32.3 % <= 50 %)" or "does NOT hold: peak 176 % > 50 %".
 pub fn pressure_verdict(pressure: &crate::ContactPressure) -> String {
+    deviation_verdict(pressure.mean_deviation(), pressure.peak_deviation())
+}
+
+/// [`pressure_verdict`] from the two measures, as the plate report holds them.
+pub(crate) fn deviation_verdict(mean: f64, peak: f64) -> String {
     use crate::problems::plate::closed_form::{PRESSURE_DEVIATION_LIMIT, PRESSURE_PEAK_LIMIT};
-    let (mean, peak) = (pressure.mean_deviation(), pressure.peak_deviation());
     let percent = |x: f64| number_with(100.0 * x, 3);
     let mut failed = Vec::new();
     if mean > PRESSURE_DEVIATION_LIMIT {

@@ -1,157 +1,25 @@
-//! Readable single-point reports: inputs with units, thresholds, both laws side by side; the K_T
-//! comparison; the fit. Pure string building from the structured results of the library.
+//! Readable single-point reports. Beam, plate, cycle, K_T candidates, fit and solve render their
+//! [`super::point`] types (the same values their JSON serializes); `kt --tolerance` and the
+//! progress lines are still built here from the library's results.
 
 use std::fmt::Write;
 
+use super::point::beam::BeamReport;
+use super::point::cycle::CycleReport;
+use super::point::fit::FitReport;
+use super::point::plate::PlateReport;
+use super::point::solve::SolveReport;
+use super::point::stiffness::StiffnessReport;
 use super::{number, number_with, sanitize};
-use crate::kernel::params::Unit;
-use crate::kernel::validity::Validity;
 use crate::numeric::NumericError;
-use crate::problems::BeamParam;
-use crate::problems::inputs::{Inputs, Model};
+use crate::problems::inputs::Model;
 use crate::problems::plate::ContinuumPlate;
-use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
-use crate::problems::twin_beams::closed_form::BeamTheory;
-use crate::study::curves::{Answer, CandidateSource, StiffnessComparison, beam_point, plate_point};
-use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
-
-/// The inputs block: one line per parameter with value, unit and meaning.
-fn write_inputs(out: &mut String, inputs: &Inputs) {
-    let _ = writeln!(out, "Inputs");
-    for &param in inputs.kind().params() {
-        let spec = param.spec();
-        // `get` cannot miss: the parameters come from the inputs' own model.
-        let value = inputs.get(param).unwrap_or(f64::NAN);
-        let unit = match spec.unit {
-            Unit::Dimensionless => String::new(),
-            unit => format!(" {unit}"),
-        };
-        let mut line = format!(
-            "  {:<3} = {:<18} {}",
-            spec.name,
-            format!("{}{unit}", number(value)),
-            spec.meaning
-        );
-        if param.is_stiffness() {
-            line.push_str(&format!(
-                " ({} MPa/um)",
-                number(mpa_per_mm_to_mpa_per_um(value))
-            ));
-        }
-        let _ = writeln!(out, "{line}");
-    }
-}
-
-/// The two laws side by side: regime, response, zone end and the response ratio.
-struct Comparison {
-    response: &'static str,
-    ratio: &'static str,
-    values: (f64, f64),
-    regimes: (Regime, Regime),
-    zone_ends: (String, String),
-}
-
-impl Comparison {
-    fn write(&self, out: &mut String) {
-        let _ = writeln!(
-            out,
-            "  {:<22}{:<22}{}",
-            "regime", self.regimes.0, self.regimes.1
-        );
-        let _ = writeln!(
-            out,
-            "  {:<22}{:<22}{}",
-            self.response,
-            number(self.values.0),
-            number(self.values.1)
-        );
-        let _ = writeln!(
-            out,
-            "  {:<22}{:<22}{}",
-            "zone end (mm)", self.zone_ends.0, self.zone_ends.1
-        );
-        if self.values.0 > 0.0 {
-            let _ = writeln!(
-                out,
-                "  {:<22}{}",
-                self.ratio,
-                number(self.values.1 / self.values.0)
-            );
-        }
-    }
-}
+use crate::study::curves::StiffnessComparison;
+use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// Twin-beam report at one force.
 pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
-    let preset = sanitize(preset);
-    let mut out = String::new();
-    let p = beams.params();
-    let row = beam_point(beams, force);
-    let _ = writeln!(
-        out,
-        "Twin cantilever beams (Ligier & Bonhote 2014, section 2.1) - preset {preset}"
-    );
-    write_inputs(
-        &mut out,
-        &Inputs::Beam {
-            structure: p,
-            force: force.newtons(),
-        },
-    );
-    let _ = writeln!(out, "Thresholds");
-    let _ = writeln!(
-        out,
-        "  F_thre     = {:<14} Coulomb: the whole interface slides above it",
-        format!("{} N", number(beams.threshold_force()))
-    );
-    let _ = writeln!(
-        out,
-        "  F_1        = {:<14} regularized: macroslip starts above it, at x = {} mm (free end)",
-        format!("{} N", number(beams.first_macroslip_force())),
-        number(beams.first_macroslip_position())
-    );
-    let _ = writeln!(
-        out,
-        "  mu P / K_T = {:<14} saturation slip",
-        format!("{} um", number(mm_to_um(beams.saturation_slip())))
-    );
-    let _ = writeln!(
-        out,
-        "{:<24}{:<22}regularized",
-        format!("At F = {} N", number(row.force)),
-        "Coulomb"
-    );
-    let comparison = Comparison {
-        response: "w(L) (mm)",
-        ratio: "w_reg / w_Coulomb",
-        values: (row.w_coulomb, row.w_regularized),
-        regimes: (row.regime_coulomb, row.regime_regularized),
-        zone_ends: (
-            format!("{} (stick end)", number(row.stick_end)),
-            format!("{} (microslip end X)", number(row.micro_end)),
-        ),
-    };
-    comparison.write(&mut out);
-    let v = row.validity;
-    let left_out = match v.theory {
-        BeamTheory::EulerBernoulli => format!(
-            "; it leaves out the shear deflection, {} % of w(L) (--beam-theory timoshenko adds it)",
-            number_with(100.0 * v.shear_share, 3)
-        ),
-        BeamTheory::Timoshenko => String::new(),
-    };
-    let _ = writeln!(
-        out,
-        "Beam theory: {}{}\n  regularized w(L) within {} % of continuum FE (docs/theory.md (V2)): {}{left_out}",
-        v.theory.label(),
-        match v.theory {
-            BeamTheory::EulerBernoulli => " (the paper's)",
-            BeamTheory::Timoshenko => " (Euler-Bernoulli plus each beam's shear deflection)",
-        },
-        number_with(100.0 * v.expected_error, 2),
-        v.validity.label()
-    );
-    out
+    BeamReport::new(preset, beams, force).text()
 }
 
 /// Squeezed-plate report.
@@ -160,229 +28,17 @@ pub fn plate(
     plate: &SqueezedPlate,
     continuum: Option<&Result<ContinuumPlate, NumericError>>,
 ) -> String {
-    let preset = sanitize(preset);
-    let mut out = String::new();
-    let p = plate.params();
-    let row = plate_point(plate);
-    let pressure = plate.contact_pressure();
-    let _ = writeln!(
-        out,
-        "Squeezed plate on a rigid plane (Ligier & Bonhote 2014, section 2.2) - preset {preset}"
-    );
-    write_inputs(&mut out, &Inputs::Plate(p));
-    let _ = writeln!(
-        out,
-        "  saturation slip mu P / K_T = {} um",
-        number(mm_to_um(plate.saturation_slip()))
-    );
-    let _ = writeln!(out, "  {}", plate_onset(plate));
-    let _ = writeln!(out, "{:<24}{:<22}regularized", "Solution", "Coulomb");
-    let comparison = Comparison {
-        response: "u(L) (mm)",
-        ratio: "u_reg / u_Coulomb",
-        values: (row.u_coulomb, row.u_regularized),
-        regimes: (row.regime_coulomb, row.regime_regularized),
-        zone_ends: (
-            format!("X_s = {}", number(row.stick_end)),
-            format!("X_r = {}", number(row.micro_end)),
-        ),
-    };
-    comparison.write(&mut out);
-    let _ = writeln!(
-        out,
-        "Contact pressure (flat Timoshenko plate, saturated friction)"
-    );
-    let _ = writeln!(
-        out,
-        "  P_r/P = {} at the centre, {} at the edge; |P_r/P - 1|: mean {} %, peak {} %",
-        number(pressure.ratio(0.0)),
-        number(pressure.ratio(p.half_length)),
-        number(100.0 * pressure.mean_deviation()),
-        number(100.0 * pressure.peak_deviation())
-    );
-    let _ = writeln!(
-        out,
-        "  constant-pressure assumption {}",
-        super::pressure_verdict(&pressure)
-    );
-    write_strip_validity(&mut out, plate, continuum);
-    out
-}
-
-/// The strip theory's envelope (V1) and, when given, the plane-strain continuum solution.
-fn write_strip_validity(
-    out: &mut String,
-    plate: &SqueezedPlate,
-    continuum: Option<&Result<ContinuumPlate, NumericError>>,
-) {
-    let v = plate.validity();
-    let verdict = match v.validity {
-        Validity::Holds => "holds (within 2 %)",
-        Validity::Approximate => "approximate (within 10 %)",
-        Validity::Outside => "OUTSIDE its envelope: use the continuum values below",
-        Validity::NotCalibrated => {
-            "NOT CALIBRATED here (no bound reaches this plate): use the continuum values below"
-        }
-    };
-    let _ = writeln!(
-        out,
-        "Validity of the strip theory (u uniform through t_p; docs/theory.md (V1))\n  \
-         alpha t_p = t_p / l_s = {}; slip zone L - X_r = {} t_p\n  \
-         u(L) as the thickness mean: {verdict}",
-        number_with(v.thickness_over_layer, 3),
-        number_with(v.slip_over_thickness, 3),
-    );
-    match v.expected {
-        Some(e) => {
-            let _ = writeln!(
-                out,
-                "  expected difference from a plane-strain continuum: thickness mean {} %, \
-                 contact face {} %, mid-thickness {} %; X_r is not bounded (the strip's slip \
-                 zone is too long where the thickness matters)",
-                number_with(100.0 * e[0], 2),
-                number_with(100.0 * e[1], 2),
-                number_with(100.0 * e[2], 2)
-            );
-        }
-        None => {
-            let _ = writeln!(
-                out,
-                "  calibrated for alpha t_p <= {} or a slip zone of at least {} t_p (alpha t_p <= \
-                 {}); measured differences beyond range from under 1 % to 540 %",
-                crate::problems::plate::validity::CALIBRATED_RATIO,
-                crate::problems::plate::validity::CALIBRATED_SLIP,
-                crate::problems::plate::validity::CALIBRATED_RATIO_SLIP
-            );
-        }
-    }
-    match continuum {
-        Some(Ok(c)) => {
-            let u = plate.regularized().end_displacement();
-            let from_strip = crate::fe::compare::relative_difference(c.end_displacement_mean, u)
-                .map_or_else(
-                    || "as the strip theory: nu = 0, nothing squeezes the plate sideways".into(),
-                    |d| format!("{:+.1} % from the strip theory", 100.0 * d),
-                );
-            let _ = writeln!(
-                out,
-                "Plane-strain continuum (2-D finite elements, contact pressure from the solution)\n  \
-                 u(L) = {} mm thickness mean ({from_strip}), {} mm at the contact \
-                 face, {} mm at mid-thickness\n  X_r = {} mm; contact pressure at the free end {} P",
-                number(c.end_displacement_mean),
-                number(c.end_displacement_face),
-                number(c.end_displacement_mid),
-                number(c.micro_zone_end),
-                number_with(c.end_pressure_ratio, 3)
-            );
-        }
-        Some(Err(e)) => {
-            let _ = writeln!(out, "Plane-strain continuum: not solved ({e})");
-        }
-        None => {}
-    }
+    PlateReport::new(preset, plate, continuum).text()
 }
 
 /// Cyclic-loading report: both laws side by side.
 pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> String {
-    use crate::problems::twin_beams::cycle::{Cycle, Law};
-    let preset = sanitize(preset);
-    let (c, r) = (
-        Cycle::new(beams, Law::Coulomb, amplitude),
-        Cycle::new(beams, Law::Regularized, amplitude),
-    );
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        "Twin beams, tip force cycling between +{0} N and -{0} N (Masing branches) - preset {preset}",
-        number(amplitude.newtons())
-    );
-    let p = beams.params();
-    let _ = writeln!(
-        out,
-        "  L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
-        number(p.length),
-        number(p.width),
-        number(p.half_height),
-        number(p.youngs_modulus),
-        number(p.pressure),
-        number(p.friction),
-        number(p.tangential_stiffness)
-    );
-    let _ = writeln!(out, "{:<34}{:<18}regularized", "", "Coulomb");
-    let rows: [(&str, f64, f64); 6] = [
-        ("onset of sliding (N)", c.onset(), r.onset()),
-        (
-            "peak deflection w_a (mm)",
-            c.peak_deflection(),
-            r.peak_deflection(),
-        ),
-        (
-            "D per cycle, both beams (N mm)",
-            c.dissipation(),
-            r.dissipation(),
-        ),
-        (
-            "peak energy U, both (N mm)",
-            c.peak_energy(),
-            r.peak_energy(),
-        ),
-        (
-            "damping ratio D / (4 pi U) (-)",
-            c.damping_ratio(),
-            r.damping_ratio(),
-        ),
-        (
-            "secant F_a/w_a, 1 beam (N/mm)",
-            c.secant_stiffness(),
-            r.secant_stiffness(),
-        ),
-    ];
-    for (label, coulomb, regularized) in rows {
-        let _ = writeln!(
-            out,
-            "  {label:<32}{:<18}{}",
-            number(coulomb),
-            number(regularized)
-        );
-    }
-    let _ = writeln!(out, "  {CYCLE_UNITS_NOTE}");
-    out
+    CycleReport::new(preset, beams, amplitude).text()
 }
 
-/// What D, U and the secant stiffness refer to: said wherever they appear (text, JSON, help, TUI).
-pub const CYCLE_UNITS_NOTE: &str = "D and U are for the pair (both beams' tip forces, the whole \
-     interface; U = 1/2 (2 F_a) w_a); the secant stiffness F_a/w_a and the loop w(F) are one beam's \
-     (the loop's area is D/2).";
+pub use super::point::cycle::CYCLE_UNITS_NOTE;
 
-/// The reason behind a fit verdict, in plain words (the text and JSON fit reports' note).
-pub fn evidence(evidence: &crate::fit::Evidence) -> String {
-    use crate::fit::Evidence;
-    match *evidence {
-        Evidence::HeldFixed => "held fixed".to_string(),
-        Evidence::StandardError { relative } => {
-            format!("relative standard error {:.2} %", 100.0 * relative)
-        }
-        Evidence::AtSearchBound => "the best fit sits at the edge of the search range".to_string(),
-        Evidence::NoDependence => "the data do not depend on it".to_string(),
-        Evidence::NoDataAboveFirstMacroslip {
-            first_macroslip_force,
-            mu_at_least,
-        } => format!(
-            "no measurement above F_1 = {} N: below F_1 the deflection does not depend on mu; the data only show mu >= {}",
-            number(first_macroslip_force),
-            number(mu_at_least)
-        ),
-        Evidence::FewPointsAboveFirstMacroslip { relative, points } => format!(
-            "relative standard error {:.2} %; only {points} {} above F_1",
-            100.0 * relative,
-            if points == 1 {
-                "measurement"
-            } else {
-                "measurements"
-            }
-        ),
-    }
-}
+pub use super::point::fit::evidence;
 
 /// Fit report: estimates with standard errors and a plain verdict on identifiability.
 pub fn fit(
@@ -391,83 +47,10 @@ pub fn fit(
     structure: &crate::TwinBeamsParams,
     result: &crate::fit::FitResult,
 ) -> String {
-    let (data, preset) = (sanitize(data), sanitize(preset));
-    let mut out = String::new();
-    let p = structure;
-    let _ = writeln!(
-        out,
-        "Fit of mu and K_T to {data} ({}), twin beams of preset {preset}",
-        super::count_of(result.points, "measurement")
-    );
-    let _ = writeln!(
-        out,
-        "  structure: L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa",
-        number(p.length),
-        number(p.width),
-        number(p.half_height),
-        number(p.youngs_modulus),
-        number(p.pressure)
-    );
-    for (name, unit, estimate) in [("mu ", "", &result.mu), ("K_T", " MPa/mm", &result.kt)] {
-        let error = estimate
-            .std_error
-            .map_or(String::new(), |e| format!(" +- {}", number(e)));
-        // "fixed (held fixed)" said it twice: a held value needs no reason.
-        let reason = match estimate.evidence {
-            crate::fit::Evidence::HeldFixed => String::new(),
-            ref other => format!(" ({})", evidence(other)),
-        };
-        let _ = writeln!(
-            out,
-            "  {name} = {}{error}{unit}: {}{reason}",
-            number(estimate.value),
-            estimate.status.label(),
-        );
-    }
-    let _ = writeln!(out, "  residual RMS = {} mm", number(result.rms));
-    let _ = writeln!(
-        out,
-        "  at the fitted values: F_thre = {} N, F_1 = {} N; {} of {} measurements above F_1",
-        number(result.threshold_force),
-        number(result.first_macroslip_force),
-        result.beyond_first_macroslip,
-        result.points
-    );
-    out
+    FitReport::new(data, preset, structure, result).text()
 }
 
-/// The name of a K_T candidate's source, as reports show it.
-pub fn candidate_name(source: &CandidateSource) -> &'static str {
-    match source {
-        CandidateSource::Current => "current",
-        CandidateSource::NormalLow => "K_N x 0.5",
-        CandidateSource::Equation4 { .. } => "eq. 4",
-        CandidateSource::NormalHigh => "K_N x 0.7",
-        CandidateSource::Code(code) => code.code,
-    }
-}
-
-/// How a K_T candidate was obtained, and how sure we are.
-pub fn candidate_basis(source: &CandidateSource) -> String {
-    match source {
-        CandidateSource::Current => "the model's K_T".into(),
-        CandidateSource::NormalLow => "measured K_T/K_N, low end".into(),
-        CandidateSource::Equation4 { nu } => format!("pi (1 - nu) / (2 (2 - nu)) K_N, nu = {nu}"),
-        CandidateSource::NormalHigh => "measured K_T/K_N, high end".into(),
-        CandidateSource::Code(code) => {
-            format!("{} ({})", code.description, code.confirmation.label())
-        }
-    }
-}
-
-/// The regime column of a candidate without an answer: no K_T at all, or one the model refuses.
-fn unanswered(kt: Option<f64>) -> &'static str {
-    if kt.is_some() {
-        "K_T out of range"
-    } else {
-        "-"
-    }
-}
+pub use super::point::stiffness::{candidate_basis, candidate_name};
 
 /// One line on how far reading a measurement file got, for a progress display.
 pub fn reading_progress(done: usize, total: usize) -> String {
@@ -528,125 +111,13 @@ pub fn fit_progress(progress: &crate::fit::Progress) -> String {
 
 /// The K_T comparison: each candidate and what it does to the answer.
 pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> String {
-    let preset = sanitize(preset);
-    let mut out = String::new();
-    let element = comparison.element;
-    let (mu, pressure) = {
-        let data = comparison.model.interface();
-        (data.friction, data.pressure)
-    };
-    match comparison.model {
-        Model::Beam { force, .. } => {
-            let _ = writeln!(
-                out,
-                "K_T candidates for preset {preset}: twin beams at F = {} N, mu P = {} MPa, contact elements {} mm",
-                number(force.newtons()),
-                number(mu * pressure),
-                number(element)
-            );
-            let _ = writeln!(
-                out,
-                "{:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} basis",
-                "source", "K_T (MPa/mm)", "F_1 (N)", "X (mm)", "w(L) (mm)", "regime"
-            );
-        }
-        Model::Plate(_) => {
-            let _ = writeln!(
-                out,
-                "K_T candidates for preset {preset}: squeezed plate, mu P = {} MPa, contact elements {} mm",
-                number(mu * pressure),
-                number(element)
-            );
-            let _ = writeln!(
-                out,
-                "{:<16} {:>12} {:>12} {:>10}  {:<20} basis",
-                "source", "K_T (MPa/mm)", "u(L) (mm)", "X_r (mm)", "regime"
-            );
-        }
-    }
-    for row in &comparison.rows {
-        let (source, basis) = (
-            candidate_name(&row.candidate.source),
-            candidate_basis(&row.candidate.source),
-        );
-        let kt = row.candidate.kt.map_or("-".to_string(), number);
-        let _ = match (comparison.model, row.answer) {
-            (
-                _,
-                Some(Answer::Beam {
-                    first_macroslip_force,
-                    micro_end,
-                    tip_deflection,
-                    regime,
-                }),
-            ) => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>10} {:>10} {:>11}  {:<20} {basis}",
-                number(first_macroslip_force),
-                number(micro_end),
-                number(tip_deflection),
-                regime.label(),
-            ),
-            (
-                _,
-                Some(Answer::Plate {
-                    end_displacement,
-                    micro_end,
-                    regime,
-                }),
-            ) => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>12} {:>10}  {:<20} {basis}",
-                number(end_displacement),
-                number(micro_end),
-                regime.label(),
-            ),
-            (Model::Beam { .. }, None) => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>10} {:>10} {:>11}  {:<20} {basis}",
-                "-",
-                "-",
-                "-",
-                unanswered(row.candidate.kt)
-            ),
-            (Model::Plate(_), None) => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>12} {:>10}  {:<20} {basis}",
-                "-",
-                "-",
-                unanswered(row.candidate.kt)
-            ),
-        };
-    }
-    if comparison
-        .rows
-        .iter()
-        .any(|row| row.candidate.kt.is_some() && row.answer.is_none())
-    {
-        let stiffness = BeamParam::Stiffness.spec();
-        let _ = writeln!(
-            out,
-            "K_T out of range: not evaluated, K_T {}.",
-            stiffness.domain.describe(stiffness.unit)
-        );
-    }
-    let _ = writeln!(
-        out,
-        "Elastic-slip defaults scale like mu P / element length: halve the elements, double K_T."
-    );
-    out
+    StiffnessReport::new(preset, comparison).text()
 }
 
 /// The plate's K_T at macroslip onset in words (docs/theory.md, (P11)), as the text report and the
 /// TUI say it.
 pub fn plate_onset(plate: &SqueezedPlate) -> String {
-    match plate.macroslip_onset_stiffness() {
-        Some(kt) => format!(
-            "K_T at macroslip onset = {} MPa/mm: below it all microslip, above it macroslip at the free end",
-            number(kt)
-        ),
-        None => "no macroslip at any K_T (nu = 0: the plate does not expand)".to_string(),
-    }
+    super::point::plate::onset_words(plate.macroslip_onset_stiffness())
 }
 
 /// The answer of `microslip solve`: every root found, or why there is none.
@@ -655,91 +126,7 @@ pub fn solved(
     kind: crate::ModelKind,
     solved: &crate::study::target::Solved,
 ) -> String {
-    let preset = sanitize(preset);
-    let mut out = String::new();
-    let param = solved.param;
-    let quantity = solved.target.quantity;
-    let (name, unit) = (quantity.name(kind), quantity.unit());
-    let unit_of = |u: &str| {
-        if u.is_empty() {
-            String::new()
-        } else {
-            format!(" {u}")
-        }
-    };
-    let punit = match param.unit() {
-        crate::Unit::Dimensionless => String::new(),
-        u => format!(" {u}"),
-    };
-    let _ = writeln!(
-        out,
-        "{kind} ({preset}): {param} such that {name} = {}{}",
-        number(solved.target.value),
-        unit_of(unit)
-    );
-    let _ = writeln!(out, "  {name}: {}", quantity.meaning(kind));
-    for root in &solved.roots {
-        if root.plateau && root.within_rounding {
-            let limit = if root.bracket.1 >= solved.range.1 {
-                format!(
-                    "; it tends to {} as {param} grows: reached in the limit, not at a root",
-                    number(solved.target.value)
-                )
-            } else {
-                String::new()
-            };
-            let _ = writeln!(
-                out,
-                "{name} = {}{} to within {:e} relative (the rounding band) for every {param} in [{}, {}]{punit}{limit}",
-                number(solved.target.value),
-                unit_of(unit),
-                crate::study::target::ROUNDING,
-                number(root.bracket.0),
-                number(root.bracket.1)
-            );
-        } else if root.plateau && root.bracket.0 < root.bracket.1 {
-            let _ = writeln!(
-                out,
-                "{name} = {}{} for every {param} in [{}, {}]{punit} (a plateau; its ends found by bisection)",
-                number(root.achieved),
-                unit_of(unit),
-                number(root.bracket.0),
-                number(root.bracket.1)
-            );
-        } else if root.certified {
-            let _ = writeln!(
-                out,
-                "{param} = {}{punit}   ({name} = {}{} there; root bracketed in [{}, {}]{punit})",
-                number(root.value),
-                number(root.achieved),
-                unit_of(unit),
-                number(root.bracket.0),
-                number(root.bracket.1)
-            );
-        } else {
-            let _ = writeln!(
-                out,
-                "{param} = {}{punit}: {name} jumps across the target there ({} on one side): not a root",
-                number(root.value),
-                number(root.achieved)
-            );
-        }
-    }
-    if solved.roots.len() > 1 {
-        let _ = writeln!(
-            out,
-            "more than one {param} gives {name} = {}: narrow the search with --from/--to",
-            number(solved.target.value)
-        );
-    }
-    let _ = writeln!(
-        out,
-        "searched {param} in [{}, {}]{punit} ({}-point scan; each bracket solved to 1e-12 relative)",
-        number(solved.range.0),
-        number(solved.range.1),
-        crate::study::target::SCAN_POINTS
-    );
-    out
+    SolveReport::new(preset, kind, solved).text()
 }
 
 /// A percentage for people: `1 %`, `0.517 %`.

@@ -1,0 +1,188 @@
+//! `microslip beam`: the twin beams at one tip force, both laws side by side.
+
+use std::fmt::Write;
+
+use serde::{Serialize, Serializer};
+
+use super::{InputsReport, SideBySide, regime_label, validity_label};
+use crate::Regime;
+use crate::kernel::validity::Validity;
+use crate::problems::inputs::Inputs;
+use crate::problems::stiffness::mm_to_um;
+use crate::problems::twin_beams::closed_form::BeamTheory;
+use crate::report::{number, number_with, sanitize};
+use crate::study::curves::beam_point;
+use crate::{TipForce, TwinBeams};
+
+/// The twin-beam report at one force.
+#[derive(Debug, Clone, Serialize)]
+pub struct BeamReport {
+    /// Always `beam`.
+    pub model: &'static str,
+    pub preset: String,
+    pub inputs: InputsReport,
+    /// Tip force of the report (N), also in `inputs`; the text's heading.
+    #[serde(skip)]
+    pub force: f64,
+    /// Coulomb: the whole interface slides above it (N).
+    #[serde(rename = "F_thre_N")]
+    pub threshold_force: f64,
+    /// Regularized: macroslip starts above it (N).
+    #[serde(rename = "F_1_N")]
+    pub first_macroslip_force: f64,
+    /// Where that macroslip starts (mm, the free end).
+    #[serde(rename = "first_macroslip_at_mm")]
+    pub first_macroslip_position: f64,
+    /// mu P / K_T (mm).
+    #[serde(rename = "saturation_slip_mm")]
+    pub saturation_slip: f64,
+    pub coulomb: BeamCoulomb,
+    pub regularized: BeamRegularized,
+    pub beam_theory: BeamTheoryReport,
+}
+
+/// The plain Coulomb law's answer.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct BeamCoulomb {
+    #[serde(serialize_with = "regime_label")]
+    pub regime: Regime,
+    /// w(L) (mm).
+    #[serde(rename = "w_tip_mm")]
+    pub tip_deflection: f64,
+    /// End of the stick zone, from the clamp (mm).
+    #[serde(rename = "stick_end_mm")]
+    pub stick_end: f64,
+}
+
+/// The regularized law's answer.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct BeamRegularized {
+    #[serde(serialize_with = "regime_label")]
+    pub regime: Regime,
+    /// w(L) (mm).
+    #[serde(rename = "w_tip_mm")]
+    pub tip_deflection: f64,
+    /// End of the microslip zone X, from the clamp (mm).
+    #[serde(rename = "X_mm")]
+    pub micro_end: f64,
+}
+
+/// The beam theory and how far its w(L) may be from continuum FE (V2).
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct BeamTheoryReport {
+    /// In JSON its key (`euler-bernoulli`), in text its label.
+    #[serde(serialize_with = "theory_key")]
+    pub theory: BeamTheory,
+    /// Shear deflection over the Euler-Bernoulli w(L).
+    pub shear_deflection_share: f64,
+    /// Bound on the difference from continuum FE, a fraction.
+    #[serde(rename = "vs_continuum_within")]
+    pub expected_error: f64,
+    #[serde(serialize_with = "validity_label")]
+    pub validity: Validity,
+}
+
+fn theory_key<S: Serializer>(theory: &BeamTheory, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(theory.key())
+}
+
+impl BeamReport {
+    pub fn new(preset: &str, beams: &TwinBeams, force: TipForce) -> BeamReport {
+        let row = beam_point(beams, force);
+        BeamReport {
+            model: "beam",
+            preset: preset.to_string(),
+            inputs: InputsReport(Inputs::Beam {
+                structure: beams.params(),
+                force: force.newtons(),
+            }),
+            force: row.force,
+            threshold_force: beams.threshold_force(),
+            first_macroslip_force: beams.first_macroslip_force(),
+            first_macroslip_position: beams.first_macroslip_position(),
+            saturation_slip: beams.saturation_slip(),
+            coulomb: BeamCoulomb {
+                regime: row.regime_coulomb,
+                tip_deflection: row.w_coulomb,
+                stick_end: row.stick_end,
+            },
+            regularized: BeamRegularized {
+                regime: row.regime_regularized,
+                tip_deflection: row.w_regularized,
+                micro_end: row.micro_end,
+            },
+            beam_theory: BeamTheoryReport {
+                theory: row.validity.theory,
+                shear_deflection_share: row.validity.shear_share,
+                expected_error: row.validity.expected_error,
+                validity: row.validity.validity,
+            },
+        }
+    }
+
+    /// The readable report.
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "Twin cantilever beams (Ligier & Bonhote 2014, section 2.1) - preset {}",
+            sanitize(&self.preset)
+        );
+        self.inputs.write(&mut out);
+        let _ = writeln!(out, "Thresholds");
+        let _ = writeln!(
+            out,
+            "  F_thre     = {:<14} Coulomb: the whole interface slides above it",
+            format!("{} N", number(self.threshold_force))
+        );
+        let _ = writeln!(
+            out,
+            "  F_1        = {:<14} regularized: macroslip starts above it, at x = {} mm (free end)",
+            format!("{} N", number(self.first_macroslip_force)),
+            number(self.first_macroslip_position)
+        );
+        let _ = writeln!(
+            out,
+            "  mu P / K_T = {:<14} saturation slip",
+            format!("{} um", number(mm_to_um(self.saturation_slip)))
+        );
+        let _ = writeln!(
+            out,
+            "{:<24}{:<22}regularized",
+            format!("At F = {} N", number(self.force)),
+            "Coulomb"
+        );
+        let (c, r) = (&self.coulomb, &self.regularized);
+        SideBySide {
+            response: "w(L) (mm)",
+            ratio: "w_reg / w_Coulomb",
+            values: (c.tip_deflection, r.tip_deflection),
+            regimes: (c.regime, r.regime),
+            zone_ends: (
+                format!("{} (stick end)", number(c.stick_end)),
+                format!("{} (microslip end X)", number(r.micro_end)),
+            ),
+        }
+        .write(&mut out);
+        let v = &self.beam_theory;
+        let left_out = match v.theory {
+            BeamTheory::EulerBernoulli => format!(
+                "; it leaves out the shear deflection, {} % of w(L) (--beam-theory timoshenko adds it)",
+                number_with(100.0 * v.shear_deflection_share, 3)
+            ),
+            BeamTheory::Timoshenko => String::new(),
+        };
+        let _ = writeln!(
+            out,
+            "Beam theory: {}{}\n  regularized w(L) within {} % of continuum FE (docs/theory.md (V2)): {}{left_out}",
+            v.theory.label(),
+            match v.theory {
+                BeamTheory::EulerBernoulli => " (the paper's)",
+                BeamTheory::Timoshenko => " (Euler-Bernoulli plus each beam's shear deflection)",
+            },
+            number_with(100.0 * v.expected_error, 2),
+            v.validity.label()
+        );
+        out
+    }
+}

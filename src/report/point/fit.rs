@@ -1,0 +1,169 @@
+//! `microslip fit beam`: mu and K_T fitted to a measured curve, with a plain verdict on whether
+//! the data identify each.
+
+use std::fmt::Write;
+
+use serde::{Serialize, Serializer};
+
+use crate::TwinBeamsParams;
+use crate::fit::{Estimate, Evidence, FitResult, Status};
+use crate::report::{count_of, number, sanitize};
+
+/// The fit report.
+#[derive(Debug, Clone, Serialize)]
+pub struct FitReport {
+    /// The measurement file.
+    pub data: String,
+    pub preset: String,
+    /// The structure the fit held (geometry, E, P), for the text.
+    #[serde(skip)]
+    pub structure: TwinBeamsParams,
+    /// How many measurements.
+    pub points: usize,
+    pub mu: EstimateReport,
+    #[serde(rename = "KT_MPa_per_mm")]
+    pub kt: EstimateReport,
+    /// Residual RMS (mm).
+    #[serde(rename = "rms_mm")]
+    pub rms: f64,
+    /// F_thre at the fitted values (N).
+    #[serde(rename = "F_thre_N")]
+    pub threshold_force: f64,
+    /// F_1 at the fitted values (N).
+    #[serde(rename = "F_1_N")]
+    pub first_macroslip_force: f64,
+    /// Measurements above F_1, the only ones that depend on mu.
+    #[serde(rename = "points_above_F_1")]
+    pub beyond_first_macroslip: usize,
+}
+
+/// One fitted (or fixed) parameter.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct EstimateReport {
+    pub value: f64,
+    /// Absent (null) where it could not be computed, or the value was held fixed.
+    pub std_error: Option<f64>,
+    #[serde(serialize_with = "status_label")]
+    pub status: Status,
+    /// In JSON the reason in words ([`evidence`]).
+    #[serde(rename = "note", serialize_with = "evidence_words")]
+    pub evidence: Evidence,
+}
+
+fn status_label<S: Serializer>(status: &Status, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(status.label())
+}
+
+fn evidence_words<S: Serializer>(e: &Evidence, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(&evidence(e))
+}
+
+/// The reason behind a fit verdict, in plain words (the text and JSON fit reports' note).
+pub fn evidence(evidence: &Evidence) -> String {
+    match *evidence {
+        Evidence::HeldFixed => "held fixed".to_string(),
+        Evidence::StandardError { relative } => {
+            format!("relative standard error {:.2} %", 100.0 * relative)
+        }
+        Evidence::AtSearchBound => "the best fit sits at the edge of the search range".to_string(),
+        Evidence::NoDependence => "the data do not depend on it".to_string(),
+        Evidence::NoDataAboveFirstMacroslip {
+            first_macroslip_force,
+            mu_at_least,
+        } => format!(
+            "no measurement above F_1 = {} N: below F_1 the deflection does not depend on mu; the data only show mu >= {}",
+            number(first_macroslip_force),
+            number(mu_at_least)
+        ),
+        Evidence::FewPointsAboveFirstMacroslip { relative, points } => format!(
+            "relative standard error {:.2} %; only {points} {} above F_1",
+            100.0 * relative,
+            if points == 1 {
+                "measurement"
+            } else {
+                "measurements"
+            }
+        ),
+    }
+}
+
+impl From<&Estimate> for EstimateReport {
+    fn from(e: &Estimate) -> Self {
+        EstimateReport {
+            value: e.value,
+            std_error: e.std_error,
+            status: e.status,
+            evidence: e.evidence,
+        }
+    }
+}
+
+impl FitReport {
+    pub fn new(
+        data: &str,
+        preset: &str,
+        structure: &TwinBeamsParams,
+        result: &FitResult,
+    ) -> FitReport {
+        FitReport {
+            data: data.to_string(),
+            preset: preset.to_string(),
+            structure: *structure,
+            points: result.points,
+            mu: EstimateReport::from(&result.mu),
+            kt: EstimateReport::from(&result.kt),
+            rms: result.rms,
+            threshold_force: result.threshold_force,
+            first_macroslip_force: result.first_macroslip_force,
+            beyond_first_macroslip: result.beyond_first_macroslip,
+        }
+    }
+
+    /// The readable report: estimates with standard errors and the verdicts.
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let p = &self.structure;
+        let _ = writeln!(
+            out,
+            "Fit of mu and K_T to {} ({}), twin beams of preset {}",
+            sanitize(&self.data),
+            count_of(self.points, "measurement"),
+            sanitize(&self.preset)
+        );
+        let _ = writeln!(
+            out,
+            "  structure: L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa",
+            number(p.length),
+            number(p.width),
+            number(p.half_height),
+            number(p.youngs_modulus),
+            number(p.pressure)
+        );
+        for (name, unit, estimate) in [("mu ", "", &self.mu), ("K_T", " MPa/mm", &self.kt)] {
+            let error = estimate
+                .std_error
+                .map_or(String::new(), |e| format!(" +- {}", number(e)));
+            // "fixed (held fixed)" said it twice: a held value needs no reason.
+            let reason = match estimate.evidence {
+                Evidence::HeldFixed => String::new(),
+                ref other => format!(" ({})", evidence(other)),
+            };
+            let _ = writeln!(
+                out,
+                "  {name} = {}{error}{unit}: {}{reason}",
+                number(estimate.value),
+                estimate.status.label(),
+            );
+        }
+        let _ = writeln!(out, "  residual RMS = {} mm", number(self.rms));
+        let _ = writeln!(
+            out,
+            "  at the fitted values: F_thre = {} N, F_1 = {} N; {} of {} measurements above F_1",
+            number(self.threshold_force),
+            number(self.first_macroslip_force),
+            self.beyond_first_macroslip,
+            self.points
+        );
+        out
+    }
+}

@@ -1,0 +1,137 @@
+//! Single-point reports as types: one `Serialize` struct per report (beam, plate, cycle, K_T
+//! candidates, K_T tolerance, fit, solve), built once from the physics results. Its JSON is serde
+//! of the struct and its text a renderer of the same struct, so the two forms state the same facts
+//! and cannot drift; the JSON keys are the struct's field names (renamed where a key carries a
+//! unit), pinned by tests/report_contract.rs.
+//!
+//! JSON goes through [`serde_json::Value`], whose maps are sorted: the keys come out in the
+//! alphabetical order scripts have always seen, whatever the order of the fields. Enums the text
+//! needs (regimes, validity levels) stay typed in the structs and serialize as their labels.
+
+pub mod beam;
+pub mod cycle;
+pub mod fit;
+pub mod plate;
+pub mod solve;
+pub mod stiffness;
+
+use std::fmt::Write;
+
+use serde::{Serialize, Serializer};
+use serde_json::Value;
+
+use super::json::suffixed;
+use super::number;
+use crate::Regime;
+use crate::kernel::params::Unit;
+use crate::kernel::validity::Validity;
+use crate::problems::inputs::Inputs;
+use crate::problems::stiffness::mpa_per_mm_to_mpa_per_um;
+
+/// A report as a JSON value (sorted keys). Serializing these structs cannot fail: every map key is
+/// a string.
+pub fn to_json(report: &impl Serialize) -> Value {
+    serde_json::to_value(report).unwrap_or(Value::Null)
+}
+
+/// A regime as its label (`stick+macroslip`), as in the CSV files.
+pub(crate) fn regime_label<S: Serializer>(regime: &Regime, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(regime.label())
+}
+
+/// A validity level as its label (`holds`, `not calibrated`).
+pub(crate) fn validity_label<S: Serializer>(v: &Validity, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(v.label())
+}
+
+/// The model's parameters: in JSON an object `KEY_unit: value` (`L_mm`, `KT_MPa_per_mm`, `mu`);
+/// in text one line per parameter with value, unit and meaning.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InputsReport(pub Inputs);
+
+impl InputsReport {
+    /// Each parameter of the model and its value. `get` cannot miss: the parameters come from the
+    /// inputs' own model.
+    fn values(&self) -> impl Iterator<Item = (crate::problems::Param, f64)> + '_ {
+        let inputs = self.0;
+        inputs
+            .kind()
+            .params()
+            .iter()
+            .map(move |&param| (param, inputs.get(param).unwrap_or(f64::NAN)))
+    }
+
+    /// The inputs block of the text reports.
+    pub fn write(&self, out: &mut String) {
+        let _ = writeln!(out, "Inputs");
+        for (param, value) in self.values() {
+            let spec = param.spec();
+            let unit = match spec.unit {
+                Unit::Dimensionless => String::new(),
+                unit => format!(" {unit}"),
+            };
+            let mut line = format!(
+                "  {:<3} = {:<18} {}",
+                spec.name,
+                format!("{}{unit}", number(value)),
+                spec.meaning
+            );
+            if param.is_stiffness() {
+                line.push_str(&format!(
+                    " ({} MPa/um)",
+                    number(mpa_per_mm_to_mpa_per_um(value))
+                ));
+            }
+            let _ = writeln!(out, "{line}");
+        }
+    }
+}
+
+impl Serialize for InputsReport {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_map(
+            self.values()
+                .map(|(param, value)| (suffixed(param.name(), param.unit()), value)),
+        )
+    }
+}
+
+/// The two laws side by side in the text reports: regime, response, zone end and the ratio of
+/// the responses.
+pub(crate) struct SideBySide {
+    pub response: &'static str,
+    pub ratio: &'static str,
+    pub values: (f64, f64),
+    pub regimes: (Regime, Regime),
+    pub zone_ends: (String, String),
+}
+
+impl SideBySide {
+    pub fn write(&self, out: &mut String) {
+        let _ = writeln!(
+            out,
+            "  {:<22}{:<22}{}",
+            "regime", self.regimes.0, self.regimes.1
+        );
+        let _ = writeln!(
+            out,
+            "  {:<22}{:<22}{}",
+            self.response,
+            number(self.values.0),
+            number(self.values.1)
+        );
+        let _ = writeln!(
+            out,
+            "  {:<22}{:<22}{}",
+            "zone end (mm)", self.zone_ends.0, self.zone_ends.1
+        );
+        if self.values.0 > 0.0 {
+            let _ = writeln!(
+                out,
+                "  {:<22}{}",
+                self.ratio,
+                number(self.values.1 / self.values.0)
+            );
+        }
+    }
+}

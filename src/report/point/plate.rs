@@ -1,0 +1,362 @@
+//! `microslip plate`: the squeezed plate, both laws, the contact-pressure check, the strip
+//! theory's envelope and, when solved, the plane-strain continuum.
+
+use std::fmt::Write;
+
+use serde::Serialize;
+
+use super::{InputsReport, SideBySide, regime_label, validity_label};
+use crate::kernel::validity::Validity;
+use crate::numeric::NumericError;
+use crate::problems::inputs::Inputs;
+use crate::problems::plate::ContinuumPlate;
+use crate::problems::plate::closed_form::{PRESSURE_DEVIATION_LIMIT, PRESSURE_PEAK_LIMIT};
+use crate::problems::plate::validity as v1;
+use crate::problems::stiffness::mm_to_um;
+use crate::report::{number, number_with, sanitize};
+use crate::study::curves::plate_point;
+use crate::{Regime, SqueezedPlate};
+
+/// The squeezed-plate report.
+#[derive(Debug, Clone, Serialize)]
+pub struct PlateReport {
+    /// Always `plate`.
+    pub model: &'static str,
+    pub preset: String,
+    pub inputs: InputsReport,
+    /// mu P / K_T (mm).
+    #[serde(rename = "saturation_slip_mm")]
+    pub saturation_slip: f64,
+    /// K_T at the onset of macroslip (P11); absent when nothing ever slides (nu = 0).
+    #[serde(
+        rename = "KT_macroslip_onset_MPa_per_mm",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub macroslip_onset_stiffness: Option<f64>,
+    pub coulomb: PlateCoulomb,
+    pub regularized: PlateRegularized,
+    pub contact_pressure: ContactPressureReport,
+    pub strip_theory: StripTheory,
+    /// The plane-strain continuum, when it was solved.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub continuum: Option<ContinuumReport>,
+}
+
+/// The plain Coulomb law's answer.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct PlateCoulomb {
+    #[serde(serialize_with = "regime_label")]
+    pub regime: Regime,
+    /// u(L) (mm).
+    #[serde(rename = "u_end_mm")]
+    pub end_displacement: f64,
+    /// End of the stick zone X_s, from the centre (mm).
+    #[serde(rename = "Xs_mm")]
+    pub stick_end: f64,
+}
+
+/// The regularized law's answer.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct PlateRegularized {
+    #[serde(serialize_with = "regime_label")]
+    pub regime: Regime,
+    /// u(L) (mm).
+    #[serde(rename = "u_end_mm")]
+    pub end_displacement: f64,
+    /// End of the microslip zone X_r, from the centre (mm).
+    #[serde(rename = "Xr_mm")]
+    pub micro_end: f64,
+}
+
+/// The contact pressure of a flat Timoshenko plate under saturated friction, against the
+/// constant-pressure assumption.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct ContactPressureReport {
+    /// P_r/P at the centre.
+    pub ratio_centre: f64,
+    /// P_r/P at the edge.
+    pub ratio_edge: f64,
+    /// Mean |P_r/P - 1|.
+    pub mean_deviation: f64,
+    /// Peak |P_r/P - 1|.
+    pub peak_deviation: f64,
+    pub mean_deviation_limit: f64,
+    pub peak_deviation_limit: f64,
+    pub constant_pressure_holds: bool,
+}
+
+/// The strip theory's envelope (V1): the verdict on the thickness-mean u(L) and, where a
+/// calibration reaches, the bound on each quantity; X_r is not bounded.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct StripTheory {
+    #[serde(serialize_with = "validity_label")]
+    pub validity: Validity,
+    /// What the verdict is about.
+    pub validity_covers: &'static str,
+    /// alpha t_p = t_p / l_s.
+    #[serde(rename = "alpha_tp")]
+    pub thickness_over_layer: f64,
+    /// (L - X_r) / t_p.
+    #[serde(rename = "slip_zone_over_tp")]
+    pub slip_over_thickness: f64,
+    pub calibrated_up_to_alpha_tp: f64,
+    pub calibrated_from_slip_zone_over_tp: f64,
+    pub calibrated_slip_zone_up_to_alpha_tp: f64,
+    #[serde(rename = "X_r_bounded")]
+    pub micro_end_bounded: bool,
+    #[serde(flatten)]
+    pub expected: Option<ExpectedDifferences>,
+}
+
+/// Where a calibration reaches: the expected difference from a plane-strain continuum of each
+/// quantity, a fraction.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct ExpectedDifferences {
+    #[serde(rename = "expected_difference_from_continuum")]
+    pub thickness_mean: f64,
+    #[serde(rename = "expected_difference_contact_face")]
+    pub contact_face: f64,
+    #[serde(rename = "expected_difference_mid_thickness")]
+    pub mid_thickness: f64,
+}
+
+/// The plane-strain continuum: its answer, or why it has none.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum ContinuumReport {
+    Solved(ContinuumSolved),
+    Failed { error: String },
+}
+
+/// The continuum's answer.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct ContinuumSolved {
+    /// u(L), thickness mean (mm).
+    #[serde(rename = "u_end_mean_mm")]
+    pub mean: f64,
+    /// u(L) at the contact face (mm).
+    #[serde(rename = "u_end_contact_face_mm")]
+    pub contact_face: f64,
+    /// u(L) at mid-thickness (mm).
+    #[serde(rename = "u_end_mid_thickness_mm")]
+    pub mid_thickness: f64,
+    /// X_r (mm).
+    #[serde(rename = "Xr_mm")]
+    pub micro_end: f64,
+    /// Contact pressure at the free end over P.
+    pub end_pressure_ratio: f64,
+    /// (continuum - strip) / strip for the thickness mean; `None` where the strip's u(L) is 0.
+    #[serde(skip)]
+    pub from_strip: Option<f64>,
+}
+
+impl StripTheory {
+    pub fn new(plate: &SqueezedPlate) -> StripTheory {
+        let v = plate.validity();
+        StripTheory {
+            validity: v.validity,
+            validity_covers: "u(L) thickness mean",
+            thickness_over_layer: v.thickness_over_layer,
+            slip_over_thickness: v.slip_over_thickness,
+            calibrated_up_to_alpha_tp: v1::CALIBRATED_RATIO,
+            calibrated_from_slip_zone_over_tp: v1::CALIBRATED_SLIP,
+            calibrated_slip_zone_up_to_alpha_tp: v1::CALIBRATED_RATIO_SLIP,
+            micro_end_bounded: false,
+            expected: v.expected.map(|e| ExpectedDifferences {
+                thickness_mean: e[0],
+                contact_face: e[1],
+                mid_thickness: e[2],
+            }),
+        }
+    }
+
+    /// The envelope in words.
+    fn write(&self, out: &mut String) {
+        let verdict = match self.validity {
+            Validity::Holds => "holds (within 2 %)",
+            Validity::Approximate => "approximate (within 10 %)",
+            Validity::Outside => "OUTSIDE its envelope: use the continuum values below",
+            Validity::NotCalibrated => {
+                "NOT CALIBRATED here (no bound reaches this plate): use the continuum values below"
+            }
+        };
+        let _ = writeln!(
+            out,
+            "Validity of the strip theory (u uniform through t_p; docs/theory.md (V1))\n  \
+             alpha t_p = t_p / l_s = {}; slip zone L - X_r = {} t_p\n  \
+             u(L) as the thickness mean: {verdict}",
+            number_with(self.thickness_over_layer, 3),
+            number_with(self.slip_over_thickness, 3),
+        );
+        match self.expected {
+            Some(e) => {
+                let _ = writeln!(
+                    out,
+                    "  expected difference from a plane-strain continuum: thickness mean {} %, \
+                     contact face {} %, mid-thickness {} %; X_r is not bounded (the strip's slip \
+                     zone is too long where the thickness matters)",
+                    number_with(100.0 * e.thickness_mean, 2),
+                    number_with(100.0 * e.contact_face, 2),
+                    number_with(100.0 * e.mid_thickness, 2)
+                );
+            }
+            None => {
+                let _ = writeln!(
+                    out,
+                    "  calibrated for alpha t_p <= {} or a slip zone of at least {} t_p (alpha t_p <= \
+                     {}); measured differences beyond range from under 1 % to 540 %",
+                    self.calibrated_up_to_alpha_tp,
+                    self.calibrated_from_slip_zone_over_tp,
+                    self.calibrated_slip_zone_up_to_alpha_tp
+                );
+            }
+        }
+    }
+}
+
+impl ContinuumReport {
+    fn new(solved: &Result<ContinuumPlate, NumericError>, strip: f64) -> ContinuumReport {
+        match solved {
+            Ok(c) => ContinuumReport::Solved(ContinuumSolved {
+                mean: c.end_displacement_mean,
+                contact_face: c.end_displacement_face,
+                mid_thickness: c.end_displacement_mid,
+                micro_end: c.micro_zone_end,
+                end_pressure_ratio: c.end_pressure_ratio,
+                from_strip: crate::fe::compare::relative_difference(c.end_displacement_mean, strip),
+            }),
+            Err(e) => ContinuumReport::Failed {
+                error: e.to_string(),
+            },
+        }
+    }
+
+    fn write(&self, out: &mut String) {
+        match self {
+            ContinuumReport::Solved(c) => {
+                let from_strip = c.from_strip.map_or_else(
+                    || "as the strip theory: nu = 0, nothing squeezes the plate sideways".into(),
+                    |d| format!("{:+.1} % from the strip theory", 100.0 * d),
+                );
+                let _ = writeln!(
+                    out,
+                    "Plane-strain continuum (2-D finite elements, contact pressure from the solution)\n  \
+                     u(L) = {} mm thickness mean ({from_strip}), {} mm at the contact \
+                     face, {} mm at mid-thickness\n  X_r = {} mm; contact pressure at the free end {} P",
+                    number(c.mean),
+                    number(c.contact_face),
+                    number(c.mid_thickness),
+                    number(c.micro_end),
+                    number_with(c.end_pressure_ratio, 3)
+                );
+            }
+            ContinuumReport::Failed { error } => {
+                let _ = writeln!(out, "Plane-strain continuum: not solved ({error})");
+            }
+        }
+    }
+}
+
+/// The plate's K_T at macroslip onset in words (docs/theory.md, (P11)).
+pub fn onset_words(stiffness: Option<f64>) -> String {
+    match stiffness {
+        Some(kt) => format!(
+            "K_T at macroslip onset = {} MPa/mm: below it all microslip, above it macroslip at the free end",
+            number(kt)
+        ),
+        None => "no macroslip at any K_T (nu = 0: the plate does not expand)".to_string(),
+    }
+}
+
+impl PlateReport {
+    /// The report of `plate`, with the continuum's solution when one was asked for.
+    pub fn new(
+        preset: &str,
+        plate: &SqueezedPlate,
+        continuum: Option<&Result<ContinuumPlate, NumericError>>,
+    ) -> PlateReport {
+        let row = plate_point(plate);
+        let pressure = plate.contact_pressure();
+        PlateReport {
+            model: "plate",
+            preset: preset.to_string(),
+            inputs: InputsReport(Inputs::Plate(plate.params())),
+            saturation_slip: plate.saturation_slip(),
+            macroslip_onset_stiffness: plate.macroslip_onset_stiffness(),
+            coulomb: PlateCoulomb {
+                regime: row.regime_coulomb,
+                end_displacement: row.u_coulomb,
+                stick_end: row.stick_end,
+            },
+            regularized: PlateRegularized {
+                regime: row.regime_regularized,
+                end_displacement: row.u_regularized,
+                micro_end: row.micro_end,
+            },
+            contact_pressure: ContactPressureReport {
+                ratio_centre: pressure.ratio(0.0),
+                ratio_edge: pressure.ratio(plate.params().half_length),
+                mean_deviation: pressure.mean_deviation(),
+                peak_deviation: pressure.peak_deviation(),
+                mean_deviation_limit: PRESSURE_DEVIATION_LIMIT,
+                peak_deviation_limit: PRESSURE_PEAK_LIMIT,
+                constant_pressure_holds: pressure.constant_pressure_holds(),
+            },
+            strip_theory: StripTheory::new(plate),
+            continuum: continuum.map(|solved| ContinuumReport::new(solved, row.u_regularized)),
+        }
+    }
+
+    /// The readable report.
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "Squeezed plate on a rigid plane (Ligier & Bonhote 2014, section 2.2) - preset {}",
+            sanitize(&self.preset)
+        );
+        self.inputs.write(&mut out);
+        let _ = writeln!(
+            out,
+            "  saturation slip mu P / K_T = {} um",
+            number(mm_to_um(self.saturation_slip))
+        );
+        let _ = writeln!(out, "  {}", onset_words(self.macroslip_onset_stiffness));
+        let _ = writeln!(out, "{:<24}{:<22}regularized", "Solution", "Coulomb");
+        let (c, r) = (&self.coulomb, &self.regularized);
+        SideBySide {
+            response: "u(L) (mm)",
+            ratio: "u_reg / u_Coulomb",
+            values: (c.end_displacement, r.end_displacement),
+            regimes: (c.regime, r.regime),
+            zone_ends: (
+                format!("X_s = {}", number(c.stick_end)),
+                format!("X_r = {}", number(r.micro_end)),
+            ),
+        }
+        .write(&mut out);
+        let p = &self.contact_pressure;
+        let _ = writeln!(
+            out,
+            "Contact pressure (flat Timoshenko plate, saturated friction)"
+        );
+        let _ = writeln!(
+            out,
+            "  P_r/P = {} at the centre, {} at the edge; |P_r/P - 1|: mean {} %, peak {} %",
+            number(p.ratio_centre),
+            number(p.ratio_edge),
+            number(100.0 * p.mean_deviation),
+            number(100.0 * p.peak_deviation)
+        );
+        let _ = writeln!(
+            out,
+            "  constant-pressure assumption {}",
+            crate::report::deviation_verdict(p.mean_deviation, p.peak_deviation)
+        );
+        self.strip_theory.write(&mut out);
+        if let Some(continuum) = &self.continuum {
+            continuum.write(&mut out);
+        }
+        out
+    }
+}

@@ -1,0 +1,253 @@
+//! `microslip kt`: the K_T candidates (the model's, from K_N, the FE codes' defaults) and what
+//! each does to the answer.
+
+use std::fmt::Write;
+
+use serde::Serialize;
+
+use super::regime_label;
+use crate::Regime;
+use crate::problems::BeamParam;
+use crate::problems::inputs::Model;
+use crate::report::{number, sanitize};
+use crate::study::curves::{Answer, CandidateSource, ComparedStiffness, StiffnessComparison};
+
+/// The K_T comparison.
+#[derive(Debug, Clone, Serialize)]
+pub struct StiffnessReport {
+    pub preset: String,
+    /// Contact element length the codes' defaults scale with (mm).
+    #[serde(rename = "element_size_mm")]
+    pub element: f64,
+    /// The load case, for the text's heading: the beams' tip force (N), or `None` for the plate.
+    #[serde(skip)]
+    pub force: Option<f64>,
+    /// mu P (MPa), for the text's heading.
+    #[serde(skip)]
+    pub friction_stress: f64,
+    pub candidates: Vec<CandidateReport>,
+}
+
+/// One candidate K_T and the answer at it.
+#[derive(Debug, Clone, Serialize)]
+pub struct CandidateReport {
+    /// Where it comes from ([`candidate_name`]).
+    pub source: &'static str,
+    /// How it was obtained ([`candidate_basis`]).
+    pub basis: String,
+    /// `None` (null) where it needs an input not given (eq. 4 without K_N).
+    #[serde(rename = "KT_MPa_per_mm")]
+    pub kt: Option<f64>,
+    /// The answer's fields beside the candidate's; none without a K_T.
+    #[serde(flatten)]
+    pub answer: Option<CandidateAnswer>,
+}
+
+/// What a candidate K_T does to the answer, or why it was not evaluated.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum CandidateAnswer {
+    Beam {
+        #[serde(rename = "F_1_N")]
+        first_macroslip_force: f64,
+        #[serde(rename = "X_mm")]
+        micro_end: f64,
+        #[serde(rename = "w_tip_mm")]
+        tip_deflection: f64,
+        #[serde(serialize_with = "regime_label")]
+        regime: Regime,
+    },
+    Plate {
+        #[serde(rename = "u_end_mm")]
+        end_displacement: f64,
+        #[serde(rename = "Xr_mm")]
+        micro_end: f64,
+        #[serde(serialize_with = "regime_label")]
+        regime: Regime,
+    },
+    /// A K_T the model refuses: said rather than left out silently.
+    Refused { not_evaluated: String },
+}
+
+/// The name of a K_T candidate's source, as reports show it.
+pub fn candidate_name(source: &CandidateSource) -> &'static str {
+    match source {
+        CandidateSource::Current => "current",
+        CandidateSource::NormalLow => "K_N x 0.5",
+        CandidateSource::Equation4 { .. } => "eq. 4",
+        CandidateSource::NormalHigh => "K_N x 0.7",
+        CandidateSource::Code(code) => code.code,
+    }
+}
+
+/// How a K_T candidate was obtained, and how sure we are.
+pub fn candidate_basis(source: &CandidateSource) -> String {
+    match source {
+        CandidateSource::Current => "the model's K_T".into(),
+        CandidateSource::NormalLow => "measured K_T/K_N, low end".into(),
+        CandidateSource::Equation4 { nu } => format!("pi (1 - nu) / (2 (2 - nu)) K_N, nu = {nu}"),
+        CandidateSource::NormalHigh => "measured K_T/K_N, high end".into(),
+        CandidateSource::Code(code) => {
+            format!("{} ({})", code.description, code.confirmation.label())
+        }
+    }
+}
+
+impl From<&ComparedStiffness> for CandidateReport {
+    fn from(row: &ComparedStiffness) -> Self {
+        let kt = row.candidate.kt;
+        let answer = match row.answer {
+            Some(Answer::Beam {
+                first_macroslip_force,
+                micro_end,
+                tip_deflection,
+                regime,
+            }) => Some(CandidateAnswer::Beam {
+                first_macroslip_force,
+                micro_end,
+                tip_deflection,
+                regime,
+            }),
+            Some(Answer::Plate {
+                end_displacement,
+                micro_end,
+                regime,
+            }) => Some(CandidateAnswer::Plate {
+                end_displacement,
+                micro_end,
+                regime,
+            }),
+            None => match kt.map(|kt| BeamParam::Stiffness.check(kt)) {
+                Some(Err(refused)) => Some(CandidateAnswer::Refused {
+                    not_evaluated: refused.to_string(),
+                }),
+                _ => None,
+            },
+        };
+        CandidateReport {
+            source: candidate_name(&row.candidate.source),
+            basis: candidate_basis(&row.candidate.source),
+            kt,
+            answer,
+        }
+    }
+}
+
+impl StiffnessReport {
+    pub fn new(preset: &str, comparison: &StiffnessComparison) -> StiffnessReport {
+        let interface = comparison.model.interface();
+        StiffnessReport {
+            preset: preset.to_string(),
+            element: comparison.element,
+            force: match comparison.model {
+                Model::Beam { force, .. } => Some(force.newtons()),
+                Model::Plate(_) => None,
+            },
+            friction_stress: interface.friction * interface.pressure,
+            candidates: comparison.rows.iter().map(CandidateReport::from).collect(),
+        }
+    }
+
+    /// The readable table: each candidate and what it does to the answer.
+    pub fn text(&self) -> String {
+        let preset = sanitize(&self.preset);
+        let mut out = String::new();
+        let (mu_p, element) = (number(self.friction_stress), number(self.element));
+        match self.force {
+            Some(force) => {
+                let _ = writeln!(
+                    out,
+                    "K_T candidates for preset {preset}: twin beams at F = {} N, mu P = {mu_p} MPa, contact elements {element} mm",
+                    number(force),
+                );
+                let _ = writeln!(
+                    out,
+                    "{:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} basis",
+                    "source", "K_T (MPa/mm)", "F_1 (N)", "X (mm)", "w(L) (mm)", "regime"
+                );
+            }
+            None => {
+                let _ = writeln!(
+                    out,
+                    "K_T candidates for preset {preset}: squeezed plate, mu P = {mu_p} MPa, contact elements {element} mm",
+                );
+                let _ = writeln!(
+                    out,
+                    "{:<16} {:>12} {:>12} {:>10}  {:<20} basis",
+                    "source", "K_T (MPa/mm)", "u(L) (mm)", "X_r (mm)", "regime"
+                );
+            }
+        }
+        for row in &self.candidates {
+            let (source, basis) = (row.source, &row.basis);
+            let kt = row.kt.map_or("-".to_string(), number);
+            // A candidate without an answer: no K_T at all, or one the model refuses.
+            let unanswered = if row.kt.is_some() {
+                "K_T out of range"
+            } else {
+                "-"
+            };
+            let _ = match (&row.answer, self.force) {
+                (
+                    Some(CandidateAnswer::Beam {
+                        first_macroslip_force,
+                        micro_end,
+                        tip_deflection,
+                        regime,
+                    }),
+                    _,
+                ) => writeln!(
+                    out,
+                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11}  {:<20} {basis}",
+                    number(*first_macroslip_force),
+                    number(*micro_end),
+                    number(*tip_deflection),
+                    regime.label(),
+                ),
+                (
+                    Some(CandidateAnswer::Plate {
+                        end_displacement,
+                        micro_end,
+                        regime,
+                    }),
+                    _,
+                ) => writeln!(
+                    out,
+                    "{source:<16} {kt:>12} {:>12} {:>10}  {:<20} {basis}",
+                    number(*end_displacement),
+                    number(*micro_end),
+                    regime.label(),
+                ),
+                (_, Some(_)) => writeln!(
+                    out,
+                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11}  {unanswered:<20} {basis}",
+                    "-", "-", "-",
+                ),
+                (_, None) => writeln!(
+                    out,
+                    "{source:<16} {kt:>12} {:>12} {:>10}  {unanswered:<20} {basis}",
+                    "-", "-",
+                ),
+            };
+        }
+        if self.candidates.iter().any(|row| {
+            row.kt.is_some()
+                && !matches!(
+                    row.answer,
+                    Some(CandidateAnswer::Beam { .. } | CandidateAnswer::Plate { .. })
+                )
+        }) {
+            let stiffness = BeamParam::Stiffness.spec();
+            let _ = writeln!(
+                out,
+                "K_T out of range: not evaluated, K_T {}.",
+                stiffness.domain.describe(stiffness.unit)
+            );
+        }
+        let _ = writeln!(
+            out,
+            "Elastic-slip defaults scale like mu P / element length: halve the elements, double K_T."
+        );
+        out
+    }
+}

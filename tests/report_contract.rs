@@ -1,0 +1,720 @@
+//! The output contract of the single-point reports (`beam`, `plate`, `cycle`, `kt`, `kt
+//! --tolerance`, `fit`, `solve`, `compare`): users' scripts read their JSON keys and CSV columns, so
+//! the full set of JSON key paths of each case (with each value's JSON type) and each CSV header
+//! are pinned here, written out literally from the outputs captured before the reports became
+//! types (tests/data/reports/). A renamed, dropped or retyped key fails this test.
+//!
+//! The captured files also hold the text forms. `outputs_match_the_captured_files` compares every
+//! output byte for byte with them; it is ignored by default because its JSON numbers carry all 17
+//! digits, which another platform's libm may round differently in the last one. Run it with
+//! `cargo test --test report_contract -- --ignored`; `MICROSLIP_CAPTURE=1` rewrites the files.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+use serde_json::Value;
+
+/// An output format of a case, and the extension of its captured file.
+#[derive(Clone, Copy)]
+enum Format {
+    Text,
+    Json,
+    Csv,
+}
+
+impl Format {
+    fn flag(self) -> &'static str {
+        match self {
+            Format::Text => "text",
+            Format::Json => "json",
+            Format::Csv => "csv",
+        }
+    }
+
+    fn extension(self) -> &'static str {
+        match self {
+            Format::Text => "txt",
+            Format::Json => "json",
+            Format::Csv => "csv",
+        }
+    }
+}
+
+/// One command line, run in each of `formats`; `keys` are the JSON key paths it must give.
+struct Case {
+    name: &'static str,
+    args: &'static [&'static str],
+    formats: &'static [Format],
+    keys: &'static [&'static [&'static str]],
+    /// The CSV header, for cases with a CSV form.
+    header: Option<&'static str>,
+}
+
+const TEXT_JSON: &[Format] = &[Format::Text, Format::Json];
+const ALL: &[Format] = &[Format::Text, Format::Json, Format::Csv];
+
+const BEAM: &[&str] = &[
+    "F_1_N: number",
+    "F_thre_N: number",
+    "beam_theory: object",
+    "beam_theory.shear_deflection_share: number",
+    "beam_theory.theory: string",
+    "beam_theory.validity: string",
+    "beam_theory.vs_continuum_within: number",
+    "coulomb: object",
+    "coulomb.regime: string",
+    "coulomb.stick_end_mm: number",
+    "coulomb.w_tip_mm: number",
+    "first_macroslip_at_mm: number",
+    "inputs: object",
+    "inputs.E_MPa: number",
+    "inputs.F_N: number",
+    "inputs.KT_MPa_per_mm: number",
+    "inputs.L_mm: number",
+    "inputs.P_MPa: number",
+    "inputs.b_mm: number",
+    "inputs.h_mm: number",
+    "inputs.mu: number",
+    "inputs.nu: number",
+    "model: string",
+    "preset: string",
+    "regularized: object",
+    "regularized.X_mm: number",
+    "regularized.regime: string",
+    "regularized.w_tip_mm: number",
+    "saturation_slip_mm: number",
+];
+
+const PLATE: &[&str] = &[
+    "contact_pressure: object",
+    "contact_pressure.constant_pressure_holds: bool",
+    "contact_pressure.mean_deviation: number",
+    "contact_pressure.mean_deviation_limit: number",
+    "contact_pressure.peak_deviation: number",
+    "contact_pressure.peak_deviation_limit: number",
+    "contact_pressure.ratio_centre: number",
+    "contact_pressure.ratio_edge: number",
+    "coulomb: object",
+    "coulomb.Xs_mm: number",
+    "coulomb.regime: string",
+    "coulomb.u_end_mm: number",
+    "inputs: object",
+    "inputs.E_MPa: number",
+    "inputs.KT_MPa_per_mm: number",
+    "inputs.L_mm: number",
+    "inputs.P_MPa: number",
+    "inputs.mu: number",
+    "inputs.nu: number",
+    "inputs.tp_mm: number",
+    "model: string",
+    "preset: string",
+    "regularized: object",
+    "regularized.Xr_mm: number",
+    "regularized.regime: string",
+    "regularized.u_end_mm: number",
+    "saturation_slip_mm: number",
+    "strip_theory: object",
+    "strip_theory.X_r_bounded: bool",
+    "strip_theory.alpha_tp: number",
+    "strip_theory.calibrated_from_slip_zone_over_tp: number",
+    "strip_theory.calibrated_slip_zone_up_to_alpha_tp: number",
+    "strip_theory.calibrated_up_to_alpha_tp: number",
+    "strip_theory.slip_zone_over_tp: number",
+    "strip_theory.validity: string",
+    "strip_theory.validity_covers: string",
+];
+
+/// The plate's K_T at macroslip onset: absent when nothing ever slides (nu = 0).
+const PLATE_ONSET: &[&str] = &["KT_macroslip_onset_MPa_per_mm: number"];
+
+/// The strip theory's expected differences: present where a calibration reaches.
+const PLATE_EXPECTED: &[&str] = &[
+    "strip_theory.expected_difference_contact_face: number",
+    "strip_theory.expected_difference_from_continuum: number",
+    "strip_theory.expected_difference_mid_thickness: number",
+];
+
+/// The plane-strain continuum: with --continuum, or when the strip theory is not within 2 %.
+const PLATE_CONTINUUM: &[&str] = &[
+    "continuum: object",
+    "continuum.Xr_mm: number",
+    "continuum.end_pressure_ratio: number",
+    "continuum.u_end_contact_face_mm: number",
+    "continuum.u_end_mean_mm: number",
+    "continuum.u_end_mid_thickness_mm: number",
+];
+
+const CYCLE: &[&str] = &[
+    "Fa_N: number",
+    "coulomb: object",
+    "coulomb.D_Nmm: number",
+    "coulomb.U_Nmm: number",
+    "coulomb.onset_N: number",
+    "coulomb.secant_stiffness_N_per_mm: number",
+    "coulomb.w_peak_mm: number",
+    "coulomb.zeta: number",
+    "inputs: object",
+    "inputs.E_MPa: number",
+    "inputs.F_N: number",
+    "inputs.KT_MPa_per_mm: number",
+    "inputs.L_mm: number",
+    "inputs.P_MPa: number",
+    "inputs.b_mm: number",
+    "inputs.h_mm: number",
+    "inputs.mu: number",
+    "inputs.nu: number",
+    "model: string",
+    "note: string",
+    "preset: string",
+    "regularized: object",
+    "regularized.D_Nmm: number",
+    "regularized.U_Nmm: number",
+    "regularized.onset_N: number",
+    "regularized.secant_stiffness_N_per_mm: number",
+    "regularized.w_peak_mm: number",
+    "regularized.zeta: number",
+];
+
+const KT: &[&str] = &[
+    "candidates: array",
+    "candidates[]: object",
+    "candidates[].KT_MPa_per_mm: null|number",
+    "candidates[].basis: string",
+    "candidates[].source: string",
+    "element_size_mm: number",
+    "preset: string",
+];
+
+/// A beam candidate's answer.
+const KT_BEAM: &[&str] = &[
+    "candidates[].F_1_N: number",
+    "candidates[].X_mm: number",
+    "candidates[].regime: string",
+    "candidates[].w_tip_mm: number",
+];
+
+const KT_PLATE: &[&str] = &[
+    "candidates[].Xr_mm: number",
+    "candidates[].regime: string",
+    "candidates[].u_end_mm: number",
+];
+
+/// A candidate the model refuses (a K_T out of range).
+const KT_REFUSED: &[&str] = &["candidates[].not_evaluated: string"];
+
+const TOLERANCE: &[&str] = &[
+    "codes: array",
+    "current_KT_MPa_per_mm: number",
+    "current_deviation: number",
+    "note: string",
+    "preset: string",
+    "tolerance: number",
+];
+
+/// A K_T within the tolerance, and each code's setting for it.
+const TOLERANCE_FOUND: &[&str] = &[
+    "KT_min_MPa_per_mm: number",
+    "codes[]: object",
+    "codes[].code: string",
+    "codes[].default_KT_MPa_per_mm: null|number",
+    "codes[].default_enough: bool|null",
+    "codes[].element_size_max_mm_with_default: number",
+    "codes[].element_size_mm: number",
+    "codes[].elastic_slip_max_mm: number",
+    "codes[].h_min_max_mm: number",
+    "codes[].slip_tolerance_max: number",
+    "codes[].stick_slope_min_MPa_per_mm: number",
+    "codes[].stiffness_min_MPa_per_mm: number",
+];
+
+/// No accepted K_T is within the tolerance: no minimum, and no code settings.
+const TOLERANCE_NOWHERE: &[&str] = &["KT_min_MPa_per_mm: null"];
+
+const TOLERANCE_BEAM: &[&str] = &["force_range_N: array", "force_range_N[]: number"];
+const TOLERANCE_PLATE: &[&str] = &["force_range_N: null"];
+
+const FIT: &[&str] = &[
+    "F_1_N: number",
+    "F_thre_N: number",
+    "KT_MPa_per_mm: object",
+    "KT_MPa_per_mm.note: string",
+    "KT_MPa_per_mm.status: string",
+    "KT_MPa_per_mm.value: number",
+    "data: string",
+    "mu: object",
+    "mu.note: string",
+    "mu.status: string",
+    "mu.value: number",
+    "points: number",
+    "points_above_F_1: number",
+    "preset: string",
+    "rms_mm: number",
+];
+
+const FIT_ERRORS: &[&str] = &["KT_MPa_per_mm.std_error: number", "mu.std_error: number"];
+
+/// K_T held fixed (`--fix KT=...`): it has no standard error.
+const FIT_FIXED: &[&str] = &["KT_MPa_per_mm.std_error: null", "mu.std_error: number"];
+
+const SOLVE: &[&str] = &[
+    "model: string",
+    "param: string",
+    "preset: string",
+    "quantity: string",
+    "range: array",
+    "range[]: number",
+    "roots: array",
+    "roots[]: object",
+    "roots[].achieved: number",
+    "roots[].bracket: array",
+    "roots[].bracket[]: number",
+    "roots[].certified: bool",
+    "roots[].plateau: bool",
+    "roots[].value: number",
+    "roots[].within_rounding: bool",
+    "target: number",
+    "unit: string",
+];
+
+const COMPARE_BEAM: &[&str] = &[
+    "KT_MPa_per_mm: number",
+    "implied: object",
+    "model: string",
+    "nu: number",
+    "results: string",
+    "rows: array",
+    "rows[]: object",
+    "rows[].F_N: number",
+    "rows[].X_mm: number",
+    "rows[].regime: string",
+    "rows[].shear_corrected_within: number",
+    "rows[].w_euler_mm: number",
+    "rows[].w_fe_mm: number",
+    "rows[].w_shear_corrected_mm: number",
+];
+
+/// CalculiX results: a slip profile (the FE regime and X) and defined differences.
+const COMPARE_BEAM_FE: &[&str] = &[
+    "rows[].X_fe_mm: number",
+    "rows[].diff_euler: number",
+    "rows[].diff_shear_corrected: number",
+    "rows[].regime_fe: string",
+];
+
+/// A CSV with F = 0: no slip profile, and the differences undefined (null) at F = 0.
+const COMPARE_BEAM_CSV: &[&str] = &[
+    "rows[].X_fe_mm: null",
+    "rows[].diff_euler: null|number",
+    "rows[].diff_shear_corrected: null|number",
+    "rows[].regime_fe: null",
+];
+
+/// A CSV of two points, too few for mu and K_T: the reason instead of the implied values.
+const COMPARE_BEAM_TWO: &[&str] = &[
+    "rows[].X_fe_mm: null",
+    "rows[].diff_euler: number",
+    "rows[].diff_shear_corrected: number",
+    "rows[].regime_fe: null",
+    "implied.error: string",
+];
+
+const COMPARE_BEAM_IMPLIED: &[&str] = &[
+    "implied.KT_MPa_per_mm: number",
+    "implied.KT_status: string",
+    "implied.mu: number",
+    "implied.mu_status: string",
+    "implied.rms_mm: number",
+];
+
+const COMPARE_BEAM_HEADER: &str = "F_N,w_fe_mm,w_euler_mm,diff_euler,w_shear_corrected_mm,\
+diff_shear_corrected,shear_corrected_within,regime,regime_fe,X_mm,X_fe_mm";
+
+const COMPARE_PLATE: &[&str] = &[
+    "model: string",
+    "results: string",
+    "rows: array",
+    "rows[]: object",
+    "rows[].KT_MPa_per_mm: number",
+    "rows[].Xr_mm: number",
+    "rows[].regime: string",
+    "rows[].strip_theory: string",
+    "rows[].u_coulomb_mm: number",
+    "rows[].u_fe_mm: number",
+    "rows[].u_mm: number",
+    "rows[].KT_implied_MPa_per_mm: null|number",
+    "rows[].diff: number",
+];
+
+/// CalculiX results: through the thickness, and a slip profile.
+const COMPARE_PLATE_FE: &[&str] = &[
+    "rows[].Xr_fe_mm: number",
+    "rows[].diff_contact_face: number",
+    "rows[].diff_mid_thickness: number",
+    "rows[].regime_fe: string",
+    "rows[].u_fe_contact_face_mm: number",
+    "rows[].u_fe_mid_thickness_mm: number",
+];
+
+/// A CSV: u(L) alone.
+const COMPARE_PLATE_CSV: &[&str] = &[
+    "rows[].Xr_fe_mm: null",
+    "rows[].diff_contact_face: null",
+    "rows[].diff_mid_thickness: null",
+    "rows[].regime_fe: null",
+    "rows[].u_fe_contact_face_mm: null",
+    "rows[].u_fe_mid_thickness_mm: null",
+];
+
+const COMPARE_PLATE_HEADER: &str = "KT_MPa_per_mm,u_fe_mm,u_fe_contact_face_mm,\
+u_fe_mid_thickness_mm,u_mm,diff,diff_contact_face,diff_mid_thickness,u_coulomb_mm,regime,\
+regime_fe,Xr_mm,Xr_fe_mm,KT_implied_MPa_per_mm,strip_theory";
+
+const CASES: &[Case] = &[
+    Case {
+        name: "beam-F120",
+        args: &["beam", "--set", "F=120"],
+        formats: TEXT_JSON,
+        keys: &[BEAM],
+        header: None,
+    },
+    Case {
+        name: "beam-timoshenko",
+        args: &["beam", "--beam-theory", "timoshenko"],
+        formats: TEXT_JSON,
+        keys: &[BEAM],
+        header: None,
+    },
+    Case {
+        name: "plate-KT1e4",
+        args: &["plate", "--set", "KT=1e4"],
+        formats: TEXT_JSON,
+        keys: &[PLATE, PLATE_ONSET, PLATE_EXPECTED],
+        header: None,
+    },
+    Case {
+        name: "plate-KT1e4-continuum",
+        args: &["plate", "--set", "KT=1e4", "--continuum"],
+        formats: TEXT_JSON,
+        keys: &[PLATE, PLATE_ONSET, PLATE_EXPECTED, PLATE_CONTINUUM],
+        header: None,
+    },
+    // The paper's plate: the strip theory is not calibrated there, so the continuum is solved.
+    Case {
+        name: "plate-paper",
+        args: &["plate"],
+        formats: TEXT_JSON,
+        keys: &[PLATE, PLATE_ONSET, PLATE_CONTINUUM],
+        header: None,
+    },
+    Case {
+        name: "plate-nu0",
+        args: &["plate", "--set", "nu=0"],
+        formats: TEXT_JSON,
+        keys: &[PLATE, PLATE_EXPECTED],
+        header: None,
+    },
+    Case {
+        name: "cycle",
+        args: &["cycle", "--amplitude", "150"],
+        formats: TEXT_JSON,
+        keys: &[CYCLE],
+        header: None,
+    },
+    Case {
+        name: "kt-beam",
+        args: &["kt"],
+        formats: TEXT_JSON,
+        keys: &[KT, KT_BEAM],
+        header: None,
+    },
+    Case {
+        name: "kt-beam-kn",
+        args: &["kt", "--element-size", "1", "--kn", "1000"],
+        formats: TEXT_JSON,
+        keys: &[KT, KT_BEAM],
+        header: None,
+    },
+    Case {
+        name: "kt-beam-refused",
+        args: &["kt", "--kn", "1e-6"],
+        formats: TEXT_JSON,
+        keys: &[KT, KT_BEAM, KT_REFUSED],
+        header: None,
+    },
+    Case {
+        name: "kt-plate",
+        args: &["kt", "--preset", "paper-plate", "--kn", "1e6"],
+        formats: TEXT_JSON,
+        keys: &[KT, KT_PLATE],
+        header: None,
+    },
+    Case {
+        name: "kt-tolerance-beam",
+        args: &["kt", "--tolerance", "1%", "--from", "0", "--to", "300"],
+        formats: TEXT_JSON,
+        keys: &[TOLERANCE, TOLERANCE_FOUND, TOLERANCE_BEAM],
+        header: None,
+    },
+    Case {
+        name: "kt-tolerance-everywhere",
+        args: &["kt", "--tolerance", "1000%"],
+        formats: TEXT_JSON,
+        keys: &[TOLERANCE, TOLERANCE_FOUND, TOLERANCE_BEAM],
+        header: None,
+    },
+    Case {
+        name: "kt-tolerance-plate",
+        args: &["kt", "--tolerance", "1%", "--preset", "paper-plate"],
+        formats: TEXT_JSON,
+        keys: &[TOLERANCE, TOLERANCE_FOUND, TOLERANCE_PLATE],
+        header: None,
+    },
+    // No accepted K_T is within: KT_min is null.
+    Case {
+        name: "kt-tolerance-nowhere",
+        args: &["kt", "--tolerance", "1e-7", "--preset", "paper-plate"],
+        formats: TEXT_JSON,
+        keys: &[TOLERANCE, TOLERANCE_NOWHERE, TOLERANCE_PLATE],
+        header: None,
+    },
+    Case {
+        name: "fit",
+        args: &["fit", "beam", "tests/data/reports/inputs/fit-beam.csv"],
+        formats: TEXT_JSON,
+        keys: &[FIT, FIT_ERRORS],
+        header: None,
+    },
+    Case {
+        name: "fit-fixed",
+        args: &[
+            "fit",
+            "beam",
+            "tests/data/reports/inputs/fit-beam.csv",
+            "--fix",
+            "KT=200",
+        ],
+        formats: TEXT_JSON,
+        keys: &[FIT, FIT_FIXED],
+        header: None,
+    },
+    Case {
+        name: "solve-beam",
+        args: &["solve", "beam", "--vary", "KT", "--target", "ratio=1.01"],
+        formats: TEXT_JSON,
+        keys: &[SOLVE],
+        header: None,
+    },
+    Case {
+        name: "solve-beam-plateau",
+        args: &["solve", "beam", "--vary", "F", "--target", "X=200"],
+        formats: TEXT_JSON,
+        keys: &[SOLVE],
+        header: None,
+    },
+    Case {
+        name: "solve-beam-limit",
+        args: &[
+            "solve",
+            "beam",
+            "--vary",
+            "KT",
+            "--target",
+            "ratio=1.0000000000001",
+        ],
+        formats: TEXT_JSON,
+        keys: &[SOLVE],
+        header: None,
+    },
+    Case {
+        name: "solve-plate",
+        args: &["solve", "plate", "--vary", "KT", "--target", "ratio=1.01"],
+        formats: TEXT_JSON,
+        keys: &[SOLVE],
+        header: None,
+    },
+    Case {
+        name: "compare-beam-calculix",
+        args: &["compare", "beam", "tests/data/calculix/paper-beams.dat"],
+        formats: ALL,
+        keys: &[COMPARE_BEAM, COMPARE_BEAM_FE, COMPARE_BEAM_IMPLIED],
+        header: Some(COMPARE_BEAM_HEADER),
+    },
+    // A CSV from another code, with F = 0: no FE slip profile, undefined differences, and too few
+    // points to imply a K_T.
+    Case {
+        name: "compare-beam-csv",
+        args: &[
+            "compare",
+            "beam",
+            "tests/data/reports/inputs/compare-beam.csv",
+        ],
+        formats: ALL,
+        keys: &[COMPARE_BEAM, COMPARE_BEAM_CSV, COMPARE_BEAM_IMPLIED],
+        header: Some(COMPARE_BEAM_HEADER),
+    },
+    Case {
+        name: "compare-beam-two",
+        args: &[
+            "compare",
+            "beam",
+            "tests/data/reports/inputs/compare-beam-two.csv",
+            "--set",
+            "KT=120",
+        ],
+        formats: ALL,
+        keys: &[COMPARE_BEAM, COMPARE_BEAM_TWO],
+        header: Some(COMPARE_BEAM_HEADER),
+    },
+    Case {
+        name: "compare-plate-calculix",
+        args: &[
+            "compare",
+            "plate",
+            "tests/data/calculix/plate-kt1e4.dat",
+            "tests/data/calculix/paper-plate.dat",
+        ],
+        formats: ALL,
+        keys: &[COMPARE_PLATE, COMPARE_PLATE_FE],
+        header: Some(COMPARE_PLATE_HEADER),
+    },
+    Case {
+        name: "compare-plate-csv",
+        args: &[
+            "compare",
+            "plate",
+            "tests/data/reports/inputs/compare-plate.csv",
+        ],
+        formats: ALL,
+        keys: &[COMPARE_PLATE, COMPARE_PLATE_CSV],
+        header: Some(COMPARE_PLATE_HEADER),
+    },
+];
+
+/// Every key path of `value` with its JSON type, `a.b: number`; an array's elements are merged
+/// under `a[]`, so the set says what each element may hold, and a key whose type varies between
+/// elements shows the types joined, `null|number`.
+fn key_paths(value: &Value) -> BTreeSet<String> {
+    let mut types = std::collections::BTreeMap::<String, BTreeSet<&'static str>>::new();
+    fn walk(
+        value: &Value,
+        path: String,
+        types: &mut std::collections::BTreeMap<String, BTreeSet<&'static str>>,
+    ) {
+        let kind = match value {
+            Value::Null => "null",
+            Value::Bool(_) => "bool",
+            Value::Number(_) => "number",
+            Value::String(_) => "string",
+            Value::Array(_) => "array",
+            Value::Object(_) => "object",
+        };
+        if !path.is_empty() {
+            types.entry(path.clone()).or_default().insert(kind);
+        }
+        match value {
+            Value::Object(map) => {
+                for (key, item) in map {
+                    let child = if path.is_empty() {
+                        key.clone()
+                    } else {
+                        format!("{path}.{key}")
+                    };
+                    walk(item, child, types);
+                }
+            }
+            Value::Array(items) => {
+                for item in items {
+                    walk(item, format!("{path}[]"), types);
+                }
+            }
+            _ => {}
+        }
+    }
+    walk(value, String::new(), &mut types);
+    types
+        .into_iter()
+        .map(|(path, kinds)| format!("{path}: {}", Vec::from_iter(kinds).join("|")))
+        .collect()
+}
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The output of `args` in `format`, run from the crate's root (the fixtures' paths are relative,
+/// so they read the same in every output).
+fn output(args: &[&str], format: Format) -> Vec<u8> {
+    let mut cmd = Command::cargo_bin("microslip").expect("binary built by cargo");
+    cmd.current_dir(root())
+        .env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"))
+        .env_remove("HOME")
+        .args(args);
+    if !matches!(format, Format::Text) {
+        cmd.args(["--format", format.flag()]);
+    }
+    let output = cmd.output().unwrap();
+    assert!(
+        output.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    output.stdout
+}
+
+fn captured(case: &Case, format: Format) -> PathBuf {
+    root()
+        .join("tests/data/reports")
+        .join(format!("{}.{}", case.name, format.extension()))
+}
+
+#[test]
+fn json_keys_are_the_pinned_ones() {
+    let mut failures = Vec::new();
+    for case in CASES {
+        let json: Value = serde_json::from_slice(&output(case.args, Format::Json)).unwrap();
+        let got = key_paths(&json);
+        let pinned: BTreeSet<String> = case
+            .keys
+            .iter()
+            .flat_map(|block| block.iter().map(|k| k.to_string()))
+            .collect();
+        if got != pinned {
+            failures.push(format!(
+                "{} ({:?}):\n  missing: {:?}\n  extra: {:?}",
+                case.name,
+                case.args,
+                pinned.difference(&got).collect::<Vec<_>>(),
+                got.difference(&pinned).collect::<Vec<_>>()
+            ));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn csv_headers_are_the_pinned_ones() {
+    for case in CASES {
+        let Some(header) = case.header else { continue };
+        let csv = String::from_utf8(output(case.args, Format::Csv)).unwrap();
+        assert_eq!(csv.lines().next(), Some(header), "{}", case.name);
+    }
+}
+
+#[test]
+#[ignore = "byte-exact numbers may differ in the last digit on another platform's libm"]
+fn outputs_match_the_captured_files() {
+    let capture = std::env::var_os("MICROSLIP_CAPTURE").is_some();
+    let mut differ = Vec::new();
+    for case in CASES {
+        for &format in case.formats {
+            let (path, got) = (captured(case, format), output(case.args, format));
+            if capture {
+                std::fs::write(&path, &got).unwrap();
+            } else if std::fs::read(&path).unwrap() != got {
+                differ.push(path.display().to_string());
+            }
+        }
+    }
+    assert!(differ.is_empty(), "differ from the capture: {differ:?}");
+}
