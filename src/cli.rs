@@ -14,6 +14,8 @@ use std::time::{Duration, Instant};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use thiserror::Error;
 
+use crate::chart::YMode;
+use crate::chart::view::AnyChart;
 use crate::fe;
 use crate::fe::deck::{self, DeckMesh};
 use crate::fe::header::StickSlope;
@@ -25,11 +27,9 @@ use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::twin_beams::closed_form::BeamTheory;
 use crate::problems::{BeamParam, ModelKind, Param, PlateParam, UnknownParam};
-use crate::report::chart::YMode;
 use crate::report::figure::{self, FigureError};
 use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
 use crate::report::table::{TableFormat, write_json, write_table, write_table_after};
-use crate::report::view::AnyChart;
 use crate::report::{self, json, text};
 use crate::study::curves::{self, RangeError, Samples, Spacing};
 use crate::study::target::{Target, TargetError, solve_for_target};
@@ -960,7 +960,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 ModelKind::Plate => "plot (a plate chart)",
             };
             let (_, model) = load(inputs, chart.kind(), command)?;
-            let plot = report::chart::figure(&model, *chart, *fe, YMode::Linear)?;
+            let plot = crate::chart::figure(&model, *chart, *fe, YMode::Linear)?;
             // The chart's own default falls back to linear where it cannot apply (u(L) = 0 at
             // nu = 0 on a log axis); a mode asked for with --y is refused instead.
             let mode = match y {
@@ -977,7 +977,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 )));
             }
             let pinned = pinned_models(&model, pins)?;
-            let plot = report::chart::pins::with_pinned_models(
+            let plot = crate::chart::pins::with_pinned_models(
                 mode.apply(plot),
                 &model,
                 *chart,
@@ -1372,7 +1372,7 @@ fn write_output(
 /// `command` (as typed after `microslip`) names the command when the preset is of the other model.
 /// The models of `plot --pin`: each pin's assignments on top of `model`'s inputs.
 fn pinned_models(model: &Model, pins: &[String]) -> Result<Vec<Model>, CliError> {
-    use crate::report::chart::pins::MAX_PINS;
+    use crate::chart::pins::MAX_PINS;
     if pins.len() > MAX_PINS {
         return Err(CliError::Invalid(format!(
             "--pin: {} pins given, at most {MAX_PINS} (more curves cannot be told apart)",
@@ -1742,7 +1742,7 @@ fn run_kt(
 }
 
 /// A chart's points as CSV (the same rows as the TUI's export).
-fn chart_csv(plot: &report::chart::Plot) -> Result<Vec<u8>, CliError> {
+fn chart_csv(plot: &crate::chart::Plot) -> Result<Vec<u8>, CliError> {
     let mut bytes = Vec::new();
     write_table(&mut bytes, TableFormat::Csv, report::rows::chart_rows(plot))?;
     Ok(bytes)
@@ -1766,7 +1766,7 @@ fn run_figures(
         let (name, model) = load_any(inputs, ModelKind::Beam)?;
         let values = figure::parameter_caption(&model.inputs());
         for chart in AnyChart::all().filter(|c| c.kind() == model.kind()) {
-            let plot = report::chart::figure(&model, chart, fe, YMode::Linear)?;
+            let plot = crate::chart::figure(&model, chart, fe, YMode::Linear)?;
             // Each chart's own default axis, where its data allow it (as `plot` chooses).
             let y = Some(YMode::default_for(chart))
                 .filter(|m| m.applies_to(&plot))
@@ -1810,7 +1810,7 @@ fn run_figures(
                 beam_theory: None,
             };
             let (_, model) = load(&inputs, f.chart.kind(), "figures")?;
-            let plot = report::chart::figure(&model, f.chart, fe && f.finite_elements, f.y)?;
+            let plot = crate::chart::figure(&model, f.chart, fe && f.finite_elements, f.y)?;
             figures.push((plot, f.entry()));
         }
         figure::PAPER_INTRO.to_string()

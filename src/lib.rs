@@ -8,7 +8,7 @@
 //! code and fails on an edge that runs up or sideways:
 //!
 //! ```text
-//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- fe <- report <- tui <- cli
+//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- fe <- chart <- report <- tui <- cli
 //! ```
 //!
 //! - [`kernel`]: what no problem owns: typed parameters (units, domains, the error that names a
@@ -32,17 +32,19 @@
 //! - [`preset`]: TOML parse and write, and the file store (atomic, no clobber).
 //! - [`fe`]: decks for CalculiX (Abaqus keyword syntax), result readers, the comparison of an FE
 //!   code's answer with the closed forms (it uses [`fit`] for the implied K_T, so it sits above it).
-//! - [`report`]: every format, from one serde row per table; what views exist ([`report::view`]);
-//!   the series of every chart ([`report::chart`], drawn by the TUI and by the SVG figures of
-//!   `report::figure`, behind the feature `figures`, on by default through `app`).
+//! - [`chart`]: what every chart shows, as data (title, axes, series), built from the layers
+//!   below; which charts and tables exist ([`chart::view`]); drawn by the TUI and by the SVG
+//!   figures of `report::figure`.
+//! - [`report`]: every format (text, JSON, CSV, SVG), from one serde struct per report and per
+//!   table row; it computes nothing.
 //! - `cli` and `tui` (behind the default feature `app`, hidden from these docs): thin layers that
 //!   parse flags or keys, call the library and hand the results to `report` or the screen. With
 //!   `default-features = false` none of clap, ratatui, crossterm or signal-hook is compiled.
 //!
 //! Beside the plan in `ARCHITECTURE.md` (a design note kept outside this repository): `study`
-//! still holds some per-problem sampling functions (`study::curves`) and `report` still builds the
-//! chart series; `verify` sits at the top level because it calls both sides of every problem and
-//! is neither physics nor I/O; chart and table enums live in `report::view` so that figure exports
+//! still holds per-problem sampling functions (`study::curves`) and `chart` per-problem series, so
+//! a new problem still adds arms there (see [`problems`]); `verify` sits at the top level because it calls both sides of every problem and
+//! is neither physics nor I/O; chart and table enums live in `chart::view` so that figure exports
 //! can name views the way the TUI does; `cli` sits above `tui` because `microslip` with no
 //! command starts the TUI.
 //!
@@ -55,6 +57,7 @@
 //! # Ok::<(), microslip::ParamError>(())
 //! ```
 
+pub mod chart;
 #[cfg(feature = "app")]
 #[doc(hidden)]
 pub mod cli;

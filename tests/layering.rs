@@ -4,7 +4,7 @@
 //! layers, lowest first (the crate docs in src/lib.rs say why each sits where it does):
 //!
 //! ```text
-//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- fe <- report <- tui <- cli
+//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- fe <- chart <- report <- tui <- cli
 //! ```
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -21,9 +21,10 @@ const LAYERS: &[(&str, u8)] = &[
     ("verify", 3),
     ("preset", 3),
     ("fe", 4),
-    ("report", 5),
-    ("tui", 6),
-    ("cli", 7),
+    ("chart", 5),
+    ("report", 6),
+    ("tui", 7),
+    ("cli", 8),
 ];
 
 /// The files of a problem that hold its closed forms, and those that hold its discretized

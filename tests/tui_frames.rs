@@ -798,7 +798,7 @@ fn pins_in_relative_mode_and_on_the_plate() {
     set(&mut app, "KT", "2000");
     press(&mut app, Action::CycleYAxis);
     press(&mut app, Action::CycleYAxis);
-    assert_eq!(app.y_mode(), microslip::report::chart::YMode::Relative);
+    assert_eq!(app.y_mode(), microslip::chart::YMode::Relative);
     insta::assert_snapshot!("pins_relative_120x40", screen(&app, 120, 40));
     // Without colour, on the plate: the pin is told apart by its number.
     let mut app = app_with("paper-plate", Charset::Unicode, false);

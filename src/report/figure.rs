@@ -10,9 +10,9 @@ use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
 use thiserror::Error;
 
-use super::chart::{Plot, PlotSeries, SeriesKind, YMode};
 use super::number_with;
-use super::view::{AnyChart, BeamChart, PlateChart};
+use crate::chart::view::{AnyChart, BeamChart, PlateChart};
+use crate::chart::{Plot, PlotSeries, SeriesKind, YMode};
 
 /// Width and height of a figure, in SVG pixels (a 16:10 frame that prints well at 16 cm).
 pub const SIZE: (u32, u32) = (800, 500);
@@ -127,7 +127,7 @@ where
     // Key points that miss 0 by a rounding error (6.9e-18 on a symmetric axis) are labelled 0.
     let tick =
         |span: f64| move |v: &f64| number_with(if v.abs() < 1e-9 * span { 0.0 } else { *v }, 3);
-    let span = |a: &super::chart::Axis| (a.value(a.bounds[1]) - a.value(a.bounds[0])).abs();
+    let span = |a: &crate::chart::Axis| (a.value(a.bounds[1]) - a.value(a.bounds[0])).abs();
     let (x_tick, y_tick) = (tick(span(&plot.x)), tick(span(&plot.y)));
     chart
         .configure_mesh()
@@ -401,11 +401,10 @@ mod tests {
     use super::*;
     use crate::problems::ModelKind;
     use crate::problems::inputs::Inputs;
-    use crate::report::chart;
 
     fn paper_figure(chart: AnyChart, fe: bool) -> Plot {
         let model = Inputs::paper(chart.kind()).validate().unwrap();
-        chart::figure(&model, chart, fe, chart::YMode::Linear).unwrap()
+        crate::chart::figure(&model, chart, fe, crate::chart::YMode::Linear).unwrap()
     }
 
     #[test]
@@ -438,8 +437,8 @@ mod tests {
     #[test]
     fn a_table_is_not_a_figure() {
         let model = Inputs::paper(ModelKind::Beam).validate().unwrap();
-        let views = chart::Views::default().turn(ModelKind::Beam, false);
-        let table = chart::build(&model, views, None, None, None, None);
+        let views = crate::chart::Views::default().turn(ModelKind::Beam, false);
+        let table = crate::chart::build(&model, views, None, None, None, None);
         assert!(matches!(svg(&table), Err(FigureError::Table(_))));
     }
 

@@ -6,7 +6,6 @@
 //! imports it (tests/layering.rs checks it); the number formatting that decks and reports share
 //! lives in [`crate::kernel::format`] and is re-exported here.
 
-pub mod chart;
 pub mod compare;
 pub mod csv;
 #[cfg(feature = "figures")]
@@ -18,7 +17,6 @@ pub mod rows;
 pub mod table;
 pub mod text;
 pub mod verify;
-pub mod view;
 
 use std::borrow::Cow;
 use std::fmt::Write;

@@ -5,7 +5,7 @@
 
 use serde::Serialize;
 
-use crate::report::chart::{Plot, SeriesKind};
+use crate::chart::{Plot, SeriesKind};
 use crate::study::curves::{BeamPoint, CyclePoint, LoopPoint, PlatePoint};
 
 /// One row of `microslip sweep beam`.

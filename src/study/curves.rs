@@ -676,6 +676,19 @@ pub enum CandidateSource {
     Code(&'static CodeDefault),
 }
 
+impl CandidateSource {
+    /// The candidate's short name in tables and charts ("current", "eq. 4", a code's name).
+    pub fn name(&self) -> &'static str {
+        match self {
+            CandidateSource::Current => "current",
+            CandidateSource::NormalLow => "K_N x 0.5",
+            CandidateSource::Equation4 { .. } => "eq. 4",
+            CandidateSource::NormalHigh => "K_N x 0.7",
+            CandidateSource::Code(code) => code.code,
+        }
+    }
+}
+
 /// A K_T to compare: where it comes from and its value (`None`: that source gives no value).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StiffnessCandidate {

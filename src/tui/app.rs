@@ -12,14 +12,14 @@ use super::keymap::Context;
 use super::text_input::TextInput;
 use super::theme::Theme;
 use crate::PlateParams;
+use crate::chart::view::{AnyChart, BeamChart, PlateChart, View};
+use crate::chart::{self, NumericPoints, Plot, Views, YMode, pins};
 use crate::fit::Measurement;
 use crate::kernel::params::{Compact, parse_number};
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::twin_beams::closed_form::BeamTheory;
 use crate::problems::{BeamParam, ModelKind, Param};
-use crate::report::chart::{self, NumericPoints, Plot, Views, YMode, pins};
-use crate::report::view::{AnyChart, BeamChart, PlateChart, View};
 use crate::report::{number, number_with};
 
 /// A status-line message.

@@ -71,13 +71,7 @@ pub enum CandidateAnswer {
 
 /// The name of a K_T candidate's source, as reports show it.
 pub fn candidate_name(source: &CandidateSource) -> &'static str {
-    match source {
-        CandidateSource::Current => "current",
-        CandidateSource::NormalLow => "K_N x 0.5",
-        CandidateSource::Equation4 { .. } => "eq. 4",
-        CandidateSource::NormalHigh => "K_N x 0.7",
-        CandidateSource::Code(code) => code.code,
-    }
+    source.name()
 }
 
 /// How a K_T candidate was obtained, and how sure we are.

@@ -12,7 +12,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Chart, Dataset, GraphType, Paragraph, Widget};
 
 use super::panes::pane;
-use crate::report::chart::{self as plots, Plot, PlotSeries, SeriesKind, pins};
+use crate::chart::{self as plots, Plot, PlotSeries, SeriesKind, pins};
 use crate::study::curves::Series;
 use crate::tui::app::App;
 use crate::tui::theme::{Role, Theme};

@@ -4,7 +4,7 @@
 //! so the TUI, `microslip plot --y` and the figures show the same numbers.
 
 use super::{Axis, Plot, PlotSeries, SeriesKind, axis_bounds, cursor, log_axis, tick};
-use crate::report::view::{AnyChart, BeamChart, PlateChart};
+use crate::chart::view::{AnyChart, BeamChart, PlateChart};
 use crate::study::curves::Series;
 
 /// How the y axis shows the data.
@@ -230,9 +230,9 @@ fn to_relative(mut plot: Plot) -> Plot {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::chart::figure;
     use crate::problems::ModelKind;
     use crate::problems::inputs::{Inputs, Model};
-    use crate::report::chart::figure;
     use crate::{TipForce, TwinBeams};
 
     fn plot_of(chart: AnyChart) -> Plot {

@@ -1,21 +1,25 @@
-//! What each chart shows, as plain data (title, axes, series), built from [`crate::study::curves`]. The
-//! TUI turns a [`Plot`] into cells, the figure writer (`report::figure`, behind the feature `figures`) into SVG; neither
-//! computes physics itself, so a curve on screen and in a figure are the same numbers.
+//! What each chart shows, as plain data (title, axes, series), built from [`crate::study::curves`]
+//! and the problems' discretized solvers (the finite-element points). The TUI turns a [`Plot`] into
+//! cells, the figure writer (`report::figure`, behind the feature `figures`) into SVG; neither
+//! computes physics itself, so a curve on screen and in a figure are the same numbers. Its own
+//! layer, below `report`: `report` formats (text, JSON, CSV, SVG) and computes nothing; which
+//! charts and tables exist is [`view`].
 
 pub mod pins;
 pub mod vary;
+pub mod view;
 mod ymode;
 
 pub use ymode::YMode;
 
+use crate::chart::view::{AnyChart, BeamChart, PlateChart, Table, View};
 use crate::fit::Measurement;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::inputs::Model;
 use crate::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
 use crate::problems::twin_beams::TwinBeamsFe;
 use crate::problems::{BeamParam, ModelKind, PlateParam};
-use crate::report::view::{AnyChart, BeamChart, PlateChart, Table, View};
-use crate::report::{number, number_with};
+use crate::kernel::format::{number, number_with};
 use crate::study::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
@@ -344,7 +348,7 @@ fn stiffness_table(model: &Model) -> Plot {
     let comparison = curves::compare_stiffnesses(model, element, None);
     let short = |source: &CandidateSource| match source {
         CandidateSource::Code(code) => code.short,
-        other => crate::report::text::candidate_name(other),
+        other => other.name(),
     };
     let mut lines = vec![match model {
         Model::Beam { .. } => format!(

@@ -8,10 +8,10 @@
 //! 0.2 now), so the legend says what the comparison is about.
 
 use super::{Plot, PlotSeries, SeriesKind, Views, YMode, build, linear_axis, log_axis};
+use crate::chart::view::AnyChart;
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::twin_beams::closed_form::BeamTheory;
-use crate::report::number;
-use crate::report::view::AnyChart;
+use crate::kernel::format::number;
 
 /// Pins kept at most: more curves than that cannot be told apart on a terminal chart.
 pub const MAX_PINS: usize = 4;
@@ -173,10 +173,10 @@ pub fn with_pinned_models(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::chart::view::View;
     use crate::problems::{BeamParam, ModelKind, Param, PlateParam};
-    use crate::report::view::View;
 
-    use crate::report::chart::tests::every_view;
+    use crate::chart::tests::every_view;
 
     #[test]
     fn every_chart_has_a_curve_to_pin_and_tables_have_none() {
@@ -198,7 +198,7 @@ mod tests {
     /// legend says so.
     #[test]
     fn values_a_log_axis_cannot_show_are_left_out_and_said() {
-        use crate::report::view::{AnyChart, BeamChart, PlateChart};
+        use crate::chart::view::{AnyChart, BeamChart, PlateChart};
         let cases = [
             (
                 ModelKind::Beam,
