@@ -14,12 +14,12 @@ pub use ymode::YMode;
 
 use crate::chart::view::{AnyChart, BeamChart, PlateChart, Table, View};
 use crate::fit::Measurement;
+use crate::kernel::format::{number, number_with};
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::inputs::Model;
 use crate::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
 use crate::problems::twin_beams::TwinBeamsFe;
 use crate::problems::{BeamParam, ModelKind, PlateParam};
-use crate::kernel::format::{number, number_with};
 use crate::study::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 

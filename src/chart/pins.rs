@@ -9,9 +9,9 @@
 
 use super::{Plot, PlotSeries, SeriesKind, Views, YMode, build, linear_axis, log_axis};
 use crate::chart::view::AnyChart;
+use crate::kernel::format::number;
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::twin_beams::closed_form::BeamTheory;
-use crate::kernel::format::number;
 
 /// Pins kept at most: more curves than that cannot be told apart on a terminal chart.
 pub const MAX_PINS: usize = 4;
