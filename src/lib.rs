@@ -50,10 +50,15 @@
 //!
 //! # Example
 //! ```
-//! use microslip::{TipForce, TwinBeams, TwinBeamsParams};
+//! use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 //! let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
 //! let state = beams.regularized(TipForce::new(100.0)?);
 //! assert_eq!(state.regime().label(), "microslip+macroslip");
+//! // The paper's plate at K_T = 1e6 MPa/mm has both zones (paper section 2.2.3).
+//! let plate = SqueezedPlate::new(PlateParams::PAPER)?;
+//! let squeezed = plate.regularized();
+//! assert_eq!(squeezed.regime().label(), "microslip+macroslip");
+//! assert!(squeezed.micro_zone_end() < 10.0 && squeezed.end_displacement() > 0.0);
 //! # Ok::<(), microslip::ParamError>(())
 //! ```
 
