@@ -126,3 +126,62 @@ fn a_stiff_interface_leaves_k_t_undetermined() {
     assert_ne!(fit.kt.status, Status::Identified, "{:?}", fit.kt);
     assert_eq!(fit.mu.status, Status::Identified, "{:?}", fit.mu);
 }
+
+/// The spread of repeated fits next to the errors they state.
+#[derive(Debug)]
+struct Coverage {
+    /// Per parameter (mu, K_T): sample standard deviation of the estimates.
+    scatter: [f64; 2],
+    /// Per parameter: mean stated standard error.
+    stated: [f64; 2],
+    /// Per parameter: fraction of fits with the truth within +-1 stated standard error.
+    within: [f64; 2],
+}
+
+/// Issue 25 (5): `sweep beam --from 0 --to 300 --points 61 --set mu=0.22 --set KT=300`, each w
+/// multiplied by 1 + `relative` N(0,1) and shifted by `absolute` N(0,1) mm, fitted `repeats` times.
+fn coverage(relative: f64, absolute: f64, repeats: u64) -> Coverage {
+    let (mu, kt) = (0.22, 300.0);
+    let clean = measure(mu, kt, &linspace(0.0, 300.0, 61), 0.0, 1);
+    let mut noise = Noise(0x9e37_79b9_7f4a_7c15);
+    let fits: Vec<_> = (0..repeats)
+        .map(|_| {
+            let data: Vec<Measurement> = clean
+                .iter()
+                .map(|m| Measurement {
+                    force: m.force,
+                    deflection: m.deflection * (1.0 + relative * noise.gaussian())
+                        + absolute * noise.gaussian(),
+                })
+                .collect();
+            fit_twin_beams(TwinBeamsParams::PAPER, &data, None, None).unwrap()
+        })
+        .collect();
+    let n = fits.len() as f64;
+    let per = |pick: &dyn Fn(&microslip::fit::FitResult) -> &microslip::fit::Estimate, truth: f64| {
+        let values: Vec<f64> = fits.iter().map(|f| pick(f).value).collect();
+        let mean = values.iter().sum::<f64>() / n;
+        let scatter = (values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
+        let errors: Vec<f64> = fits.iter().map(|f| pick(f).std_error.unwrap()).collect();
+        let stated = errors.iter().sum::<f64>() / n;
+        let within = values
+            .iter()
+            .zip(&errors)
+            .filter(|(v, e)| (*v - truth).abs() <= **e)
+            .count() as f64
+            / n;
+        (scatter, stated, within)
+    };
+    let (m, k) = (per(&|f| &f.mu, mu), per(&|f| &f.kt, kt));
+    Coverage {
+        scatter: [m.0, k.0],
+        stated: [m.1, k.1],
+        within: [m.2, k.2],
+    }
+}
+
+#[test]
+fn issue_measurement() {
+    eprintln!("relative 1 %: {:?}", coverage(0.01, 0.0, 40));
+    eprintln!("absolute 1e-3 mm: {:?}", coverage(0.0, 1e-3, 40));
+}
