@@ -221,6 +221,9 @@ fn parse_curve_with_progress(
     Ok(read_rows(text, curve, None, progress)?.0)
 }
 
+/// The (abscissa, ordinate) pairs of a curve file, and the values of an optional column.
+type Rows = (Vec<(f64, f64)>, Option<Vec<f64>>);
+
 /// The (abscissa, ordinate) pairs of a curve file and, when the header names the optional column
 /// `spread` (a standard deviation of the ordinate), its values.
 fn read_rows(
@@ -228,7 +231,7 @@ fn read_rows(
     curve: &Curve,
     spread: Option<&str>,
     progress: &mut dyn FnMut(usize, usize),
-) -> Result<(Vec<(f64, f64)>, Option<Vec<f64>>), DataError> {
+) -> Result<Rows, DataError> {
     // The reader would skip the mark as well; removing it here keeps byte offsets and lines aligned.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let bytes = text.as_bytes();
