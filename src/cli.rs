@@ -453,10 +453,23 @@ pub enum FitCommand {
         /// Hold a parameter at a value instead of fitting it: mu=0.3 or KT=600 (repeatable).
         #[arg(long = "fix", value_name = "KEY=VALUE")]
         fixed: Vec<String>,
+        /// What the standard errors assume about the scatter of w [default: relative; a sigma_mm
+        /// column in the data gives each point's own, taken as known].
+        #[arg(long, value_enum)]
+        weights: Option<WeightsArg>,
         /// Output format.
         #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
         format: ReportFormat,
     },
+}
+
+/// `fit beam --weights`: the scatter of the measured w that the standard errors assume.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum WeightsArg {
+    /// The same at every point (a gauge whose error does not grow with the reading).
+    Absolute,
+    /// Proportional to w (gain, calibration): the default.
+    Relative,
 }
 
 /// Formats of `cycle`.
@@ -903,8 +916,9 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             data,
             inputs,
             fixed,
+            weights,
             format,
-        })) => run_fit(out, data, inputs, fixed, *format)?,
+        })) => run_fit(out, data, inputs, fixed, *weights, *format)?,
         Some(Command::Kt {
             inputs,
             element_size,
@@ -1524,6 +1538,7 @@ fn run_fit(
     path: &PathBuf,
     inputs: &InputArgs,
     fixed: &[String],
+    weights: Option<WeightsArg>,
     format: ReportFormat,
 ) -> Result<(), CliError> {
     let (fixed_mu, fixed_kt) = parse_fixed(fixed)?;
@@ -1535,21 +1550,44 @@ fn run_fit(
     let mut progress = ProgressLine::new(io::stderr(), io::stderr().is_terminal());
     let contents = fit::data::read_text(path, crate::file::Kinds::AnyReadable)
         .map_err(|e| data_error(e.to_string()))?;
-    let data = fit::data::parse_with_progress(&contents, &mut |done, total| {
+    let data = fit::data::parse_measured_with_progress(&contents, &mut |done, total| {
         progress.update(Instant::now(), || text::reading_progress(done, total))
     });
     drop(contents);
-    let data = match data {
+    let fit::data::Measured {
+        points: data,
+        sigma,
+    } = match data {
         Ok(data) => data,
         Err(e) => {
             progress.finish();
             return Err(data_error(e.to_string()));
         }
     };
-    let result =
-        fit::fit_twin_beams_with_progress(beams.params(), &data, fixed_mu, fixed_kt, &mut |p| {
-            progress.update(Instant::now(), || text::fit_progress(&p))
-        });
+    let weights = match (sigma.as_deref(), weights) {
+        (Some(sigma), None) => fit::Weights::Sigma(sigma),
+        (Some(_), Some(chosen)) => {
+            progress.finish();
+            return Err(data_error(format!(
+                "has a {} column, which gives each point's own standard deviation, and --weights {} \
+                 asks for another; drop one",
+                fit::data::SIGMA_COLUMN,
+                chosen
+                    .to_possible_value()
+                    .map_or_else(String::new, |v| v.get_name().to_string())
+            )));
+        }
+        (None, Some(WeightsArg::Absolute)) => fit::Weights::Absolute,
+        (None, Some(WeightsArg::Relative) | None) => fit::Weights::default(),
+    };
+    let result = fit::fit_twin_beams_weighted(
+        beams.params(),
+        &data,
+        fixed_mu,
+        fixed_kt,
+        weights,
+        &mut |p| progress.update(Instant::now(), || text::fit_progress(&p)),
+    );
     progress.finish();
     let result = result?;
     match format {

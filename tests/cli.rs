@@ -422,6 +422,94 @@ fn fit_recovers_mu_and_kt_from_a_measured_curve() {
     assert!(text.contains("mu  = 0.4"), "{text}");
 }
 
+/// Issue 25 (5): the weights the errors assume. The issue's curve (`sweep beam --from 0 --to 300
+/// --points 61`, mu = 0.22, K_T = 300) with w alternately 1 % high and low: the default (relative)
+/// weights see 1 % scatter, a sigma_mm column of 1 % of w is taken as known (chi^2/dof near 1),
+/// and the column and `--weights` together are refused.
+#[test]
+fn fit_weights_say_what_the_errors_assume() {
+    let sweep = stdout_of(&[
+        "sweep", "beam", "--from", "0", "--to", "300", "--points", "61", "--set", "mu=0.22",
+        "--set", "KT=300",
+    ]);
+    let (mut plain, mut with_sigma) = (
+        String::from("F_N,w_mm\n"),
+        String::from("F_N,w_mm,sigma_mm\n"),
+    );
+    for (i, line) in sweep.lines().skip(1).enumerate() {
+        let fields: Vec<&str> = line.split(',').collect();
+        let w: f64 = fields[2].parse().unwrap();
+        let noisy = w * if i % 2 == 0 { 1.01 } else { 0.99 };
+        plain.push_str(&format!("{},{noisy}\n", fields[0]));
+        // w = 0 at F = 0 has no relative scatter; any small sigma says so.
+        with_sigma.push_str(&format!("{},{noisy},{}\n", fields[0], (0.01 * w).max(1e-9)));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("plain.csv"), dir.path().join("sigma.csv"));
+    std::fs::write(&a, plain).unwrap();
+    std::fs::write(&b, with_sigma).unwrap();
+    let (a, b) = (a.to_str().unwrap(), b.to_str().unwrap());
+    let json = |args: &[&str]| -> serde_json::Value {
+        let mut all = vec!["fit", "beam"];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--format", "json"]);
+        serde_json::from_str(&stdout_of(&all)).unwrap()
+    };
+    let relative = json(&[a]);
+    assert_eq!(relative["weights"], "relative");
+    let scatter = relative["scatter"].as_f64().unwrap();
+    assert!((scatter - 0.01).abs() < 0.001, "{relative}");
+    let rho = relative["mu_KT_correlation"].as_f64().unwrap();
+    assert!(rho.abs() < 1.0, "{relative}");
+    let absolute = json(&[a, "--weights", "absolute"]);
+    assert_eq!(absolute["weights"], "absolute");
+    let known = json(&[b]);
+    assert_eq!(known["weights"], "sigma_mm");
+    // sqrt(chi^2 / dof): residuals of about 1 % against sigmas of 1 %.
+    let ratio = known["scatter"].as_f64().unwrap();
+    assert!((ratio - 1.0).abs() < 0.1, "{known}");
+    for fit in [&relative, &known] {
+        let kt = &fit["KT_MPa_per_mm"];
+        let (value, error) = (
+            kt["value"].as_f64().unwrap(),
+            kt["std_error"].as_f64().unwrap(),
+        );
+        assert!((value - 300.0).abs() < 3.0 * error, "{fit}");
+    }
+    let text = stdout_of(&["fit", "beam", b]);
+    assert!(
+        text.contains("errors assume the sigma_mm column, taken as known"),
+        "{text}"
+    );
+    assert!(text.contains("correlation of mu and K_T = "), "{text}");
+    let refused = failure(&["fit", "beam", b, "--weights", "relative"], 2);
+    assert!(refused.contains("has a sigma_mm column"), "{refused}");
+}
+
+/// The capture of the default fit (tests/data/reports/fit-relative.*) is checked against the truth
+/// its data were made with (mu = 0.4, K_T = 200, w rounded to 5 significant digits, so a relative
+/// scatter of about 1e-5), not only against itself.
+#[test]
+fn the_default_fit_of_the_report_fixture_finds_its_truth() {
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "fit",
+        "beam",
+        "tests/data/reports/inputs/fit-beam.csv",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    for (key, truth) in [("mu", 0.4), ("KT_MPa_per_mm", 200.0)] {
+        let (value, error) = (
+            json[key]["value"].as_f64().unwrap(),
+            json[key]["std_error"].as_f64().unwrap(),
+        );
+        assert!((value - truth).abs() < 3.0 * error, "{key}: {json}");
+    }
+    let scatter = json["scatter"].as_f64().unwrap();
+    assert!(scatter > 1e-6 && scatter < 3e-5, "{json}");
+}
+
 #[test]
 fn fit_errors_name_the_file_and_line() {
     let dir = tempfile::tempdir().unwrap();

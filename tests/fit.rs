@@ -1,7 +1,9 @@
 //! Identification of mu and K_T from synthetic measurements: known parameters plus noise must be
 //! recovered within the uncertainty the fit reports, and data that cannot show a parameter must say so.
 
-use microslip::fit::{Evidence, Measurement, Status, fit_twin_beams};
+use microslip::fit::{
+    Evidence, FitResult, Measurement, Status, Weights, fit_twin_beams, fit_twin_beams_weighted,
+};
 use microslip::{TipForce, TwinBeams, TwinBeamsParams};
 
 /// Deterministic Gaussian noise (xorshift64 + Box-Muller), so the test is reproducible.
@@ -125,4 +127,168 @@ fn a_stiff_interface_leaves_k_t_undetermined() {
     let fit = fit_twin_beams(TwinBeamsParams::PAPER, &data, None, None).unwrap();
     assert_ne!(fit.kt.status, Status::Identified, "{:?}", fit.kt);
     assert_eq!(fit.mu.status, Status::Identified, "{:?}", fit.mu);
+}
+
+/// The spread of repeated fits next to the errors they state.
+#[derive(Debug)]
+struct Coverage {
+    /// Per parameter (mu, K_T): sample standard deviation of the estimates.
+    scatter: [f64; 2],
+    /// Per parameter: mean stated standard error.
+    stated: [f64; 2],
+    /// Per parameter: fraction of fits with the truth within +-1 stated standard error.
+    within: [f64; 2],
+    /// Mean stated correlation of mu and K_T, and the correlation of the estimates over the fits.
+    correlation: (f64, f64),
+}
+
+/// How the fits of [`coverage`] weigh the points.
+#[derive(Clone, Copy)]
+enum Weighing {
+    Absolute,
+    Relative,
+    /// Each point's true sigma, given.
+    True,
+}
+
+/// Issue 25 (5): `sweep beam --from 0 --to 300 --points 61 --set mu=0.22 --set KT=300`, each w
+/// multiplied by 1 + `relative` N(0,1) and shifted by `absolute` N(0,1) mm (seeded), fitted
+/// `repeats` times.
+fn coverage(relative: f64, absolute: f64, weighing: Weighing, repeats: u64) -> Coverage {
+    let truth = [0.22, 300.0];
+    let clean = measure(truth[0], truth[1], &linspace(0.0, 300.0, 61), 0.0, 1);
+    // The point at F = 0 has w = 0 and no scatter under relative noise: any small sigma will do.
+    let sigma: Vec<f64> = clean
+        .iter()
+        .map(|m| (relative * m.deflection).hypot(absolute).max(1e-9))
+        .collect();
+    let weights = match weighing {
+        Weighing::Absolute => Weights::Absolute,
+        Weighing::Relative => Weights::Relative,
+        Weighing::True => Weights::Sigma(&sigma),
+    };
+    let mut noise = Noise(0x9e37_79b9_7f4a_7c15);
+    let fits: Vec<FitResult> = (0..repeats)
+        .map(|_| {
+            let data: Vec<Measurement> = clean
+                .iter()
+                .map(|m| Measurement {
+                    force: m.force,
+                    deflection: m.deflection * (1.0 + relative * noise.gaussian())
+                        + absolute * noise.gaussian(),
+                })
+                .collect();
+            fit_twin_beams_weighted(
+                TwinBeamsParams::PAPER,
+                &data,
+                None,
+                None,
+                weights,
+                &mut |_| {},
+            )
+            .unwrap()
+        })
+        .collect();
+    let n = fits.len() as f64;
+    let mean = |values: &[f64]| values.iter().sum::<f64>() / n;
+    let values: [Vec<f64>; 2] = [
+        fits.iter().map(|f| f.mu.value).collect(),
+        fits.iter().map(|f| f.kt.value).collect(),
+    ];
+    let errors: [Vec<f64>; 2] = [
+        // NaN where a fit states no error: the check below fails on it.
+        fits.iter()
+            .map(|f| f.mu.std_error.unwrap_or(f64::NAN))
+            .collect(),
+        fits.iter()
+            .map(|f| f.kt.std_error.unwrap_or(f64::NAN))
+            .collect(),
+    ];
+    let centred: Vec<Vec<f64>> = values
+        .iter()
+        .map(|v| {
+            let m = mean(v);
+            v.iter().map(|x| x - m).collect()
+        })
+        .collect();
+    let scatter =
+        [0, 1].map(|p| (centred[p].iter().map(|d| d * d).sum::<f64>() / (n - 1.0)).sqrt());
+    let covariance: f64 = centred[0]
+        .iter()
+        .zip(&centred[1])
+        .map(|(a, b)| a * b)
+        .sum::<f64>()
+        / (n - 1.0);
+    let stated_correlation: Vec<f64> = fits
+        .iter()
+        .map(|f| f.correlation.unwrap_or(f64::NAN))
+        .collect();
+    Coverage {
+        scatter,
+        stated: [0, 1].map(|p| mean(&errors[p])),
+        within: [0, 1].map(|p| {
+            values[p]
+                .iter()
+                .zip(&errors[p])
+                .filter(|(v, e)| (*v - truth[p]).abs() <= **e)
+                .count() as f64
+                / n
+        }),
+        correlation: (
+            mean(&stated_correlation),
+            covariance / (scatter[0] * scatter[1]),
+        ),
+    }
+}
+
+/// Whether the stated errors are honest, for 40 fits.
+///
+/// The sample standard deviation s of N = 40 estimates with true sigma: (N - 1) s^2 / sigma^2 is
+/// chi-square with 39 degrees of freedom, so s / sigma lies in [0.7, 1.4] with probability 99.6 %
+/// (chi^2_39 below 19.1: 0.3 %; above 76.4: 0.05 %). The mean stated error of 40 fits scatters by
+/// about 1.5 % (each by 1 / sqrt(2 (61 - 2)) = 9 %). The count of fits within +-1 stated error is
+/// binomial(40, 0.683): 27.3 +- 2.9, so its fraction lies in [0.45, 0.91] (+-3 sigma).
+fn honest(c: &Coverage) -> Result<(), String> {
+    for (p, name) in ["mu", "K_T"].iter().enumerate() {
+        let ratio = c.scatter[p] / c.stated[p];
+        if !(0.7..=1.4).contains(&ratio) {
+            return Err(format!(
+                "{name}: scatter / stated error = {ratio:.3}: {c:?}"
+            ));
+        }
+        if !(0.45..=0.91).contains(&c.within[p]) {
+            return Err(format!("{name}: {} within 1 sigma: {c:?}", c.within[p]));
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn stated_errors_match_the_scatter_of_repeated_fits() {
+    // The default (relative) on 1 % relative noise: issue 25 (5)'s case.
+    assert!(matches!(Weights::default(), Weights::Relative));
+    let relative = coverage(0.01, 0.0, Weighing::Relative, 40);
+    honest(&relative).unwrap();
+    // Absolute weights on absolute noise (0.5 % of the largest w), and the true sigmas given.
+    honest(&coverage(0.0, 1e-3, Weighing::Absolute, 40)).unwrap();
+    honest(&coverage(0.01, 0.0, Weighing::True, 40)).unwrap();
+    // The stated correlation is the fits' own: 40 pairs give it within +-0.15 or so for |rho| near
+    // 0.8 (Fisher z: 1 / sqrt(37) = 0.16 in z, times 1 - rho^2).
+    let (stated, empirical) = relative.correlation;
+    assert!((stated - empirical).abs() < 0.15, "{relative:?}");
+    eprintln!("relative noise, relative weights: {relative:?}");
+}
+
+/// The check above can fail: equal weights on relative noise state a K_T error several times the
+/// scatter (issue 25 (5): 305 +- 44 against a scatter of 9.5), and relative weights on absolute
+/// noise misjudge it the other way.
+#[test]
+fn mismatched_weights_fail_the_coverage_check() {
+    let absolute_on_relative = coverage(0.01, 0.0, Weighing::Absolute, 40);
+    eprintln!("relative noise, absolute weights: {absolute_on_relative:?}");
+    let message = honest(&absolute_on_relative).unwrap_err();
+    assert!(message.starts_with("K_T"), "{message}");
+    let relative_on_absolute = coverage(0.0, 1e-3, Weighing::Relative, 40);
+    eprintln!("absolute noise, relative weights: {relative_on_absolute:?}");
+    assert!(honest(&relative_on_absolute).is_err());
 }

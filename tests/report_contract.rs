@@ -252,10 +252,22 @@ const FIT: &[&str] = &[
     "rms_mm: number",
 ];
 
-const FIT_ERRORS: &[&str] = &["KT_MPa_per_mm.std_error: number", "mu.std_error: number"];
+/// Added by issue 25 (5): what the errors assume (`weights`, `scatter`).
+const FIT_WEIGHTS: &[&str] = &["scatter: number", "weights: string"];
 
-/// K_T held fixed (`--fix KT=...`): it has no standard error.
-const FIT_FIXED: &[&str] = &["KT_MPa_per_mm.std_error: null", "mu.std_error: number"];
+/// (`mu_KT_correlation` added by issue 25 (5).)
+const FIT_ERRORS: &[&str] = &[
+    "KT_MPa_per_mm.std_error: number",
+    "mu.std_error: number",
+    "mu_KT_correlation: number",
+];
+
+/// K_T held fixed (`--fix KT=...`): it has no standard error, and no correlation with mu.
+const FIT_FIXED: &[&str] = &[
+    "KT_MPa_per_mm.std_error: null",
+    "mu.std_error: number",
+    "mu_KT_correlation: null",
+];
 
 const SOLVE: &[&str] = &[
     "model: string",
@@ -478,11 +490,19 @@ const CASES: &[Case] = &[
         keys: &[TOLERANCE, TOLERANCE_NOWHERE, TOLERANCE_PLATE],
         header: None,
     },
+    // Captured with equal weights, the default before issue 25 (5): `--weights absolute` keeps
+    // their numbers.
     Case {
         name: "fit",
-        args: &["fit", "beam", "tests/data/reports/inputs/fit-beam.csv"],
+        args: &[
+            "fit",
+            "beam",
+            "tests/data/reports/inputs/fit-beam.csv",
+            "--weights",
+            "absolute",
+        ],
         formats: TEXT_JSON,
-        keys: &[FIT, FIT_ERRORS],
+        keys: &[FIT, FIT_ERRORS, FIT_WEIGHTS],
         header: None,
     },
     Case {
@@ -493,9 +513,19 @@ const CASES: &[Case] = &[
             "tests/data/reports/inputs/fit-beam.csv",
             "--fix",
             "KT=200",
+            "--weights",
+            "absolute",
         ],
         formats: TEXT_JSON,
-        keys: &[FIT, FIT_FIXED],
+        keys: &[FIT, FIT_FIXED, FIT_WEIGHTS],
+        header: None,
+    },
+    // The default weights (relative), issue 25 (5).
+    Case {
+        name: "fit-relative",
+        args: &["fit", "beam", "tests/data/reports/inputs/fit-beam.csv"],
+        formats: TEXT_JSON,
+        keys: &[FIT, FIT_ERRORS, FIT_WEIGHTS],
         header: None,
     },
     Case {

@@ -1,5 +1,6 @@
-//! Reads measured twin-beam deflection curves from CSV text (header naming `F_N` and `w_mm`, one
-//! measurement per row, forces strictly increasing) and names the file line of every problem.
+//! Reads measured twin-beam deflection curves from CSV text (header naming `F_N` and `w_mm`, and
+//! optionally `sigma_mm`, the standard deviation of each w; one measurement per row, forces strictly
+//! increasing) and names the file line of every problem.
 //!
 //! The text is read by the `csv` crate, so spreadsheet output works as is: a UTF-8 byte-order mark,
 //! quoted fields, CRLF line ends, blank lines, `#` comment lines (indented or not), spaces
@@ -20,6 +21,19 @@ pub struct Measurement {
     /// Tip deflection (mm).
     pub deflection: f64,
 }
+
+/// A measured curve and, when the file has a `sigma_mm` column, the standard deviation of each
+/// deflection (mm), for [`super::Weights::Sigma`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measured {
+    /// The measurements, in file order.
+    pub points: Vec<Measurement>,
+    /// One standard deviation (mm, > 0) per measurement, or None without the column.
+    pub sigma: Option<Vec<f64>>,
+}
+
+/// Header of the optional column of per-point standard deviations of w (mm).
+pub const SIGMA_COLUMN: &str = "sigma_mm";
 
 /// A problem in a data file, with its 1-based line.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
@@ -142,11 +156,26 @@ pub fn parse_with_progress(
     text: &str,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<Measurement>, DataError> {
-    let points = parse_curve_with_progress(text, &MEASURED_DEFLECTION, progress)?;
-    Ok(points
-        .into_iter()
-        .map(|(force, deflection)| Measurement { force, deflection })
-        .collect())
+    Ok(parse_measured_with_progress(text, progress)?.points)
+}
+
+/// [`parse_with_progress`], keeping the `sigma_mm` column when there is one (each value finite and
+/// > 0, refused with its line otherwise).
+///
+/// # Errors
+/// As [`parse`], and a sigma that is missing, not a finite number or not > 0.
+pub fn parse_measured_with_progress(
+    text: &str,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Measured, DataError> {
+    let (points, sigma) = read_rows(text, &MEASURED_DEFLECTION, Some(SIGMA_COLUMN), progress)?;
+    Ok(Measured {
+        points: points
+            .into_iter()
+            .map(|(force, deflection)| Measurement { force, deflection })
+            .collect(),
+        sigma,
+    })
 }
 
 /// The two columns of a curve file and what the first may hold.
@@ -189,6 +218,20 @@ fn parse_curve_with_progress(
     curve: &Curve,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<(f64, f64)>, DataError> {
+    Ok(read_rows(text, curve, None, progress)?.0)
+}
+
+/// The (abscissa, ordinate) pairs of a curve file, and the values of an optional column.
+type Rows = (Vec<(f64, f64)>, Option<Vec<f64>>);
+
+/// The (abscissa, ordinate) pairs of a curve file and, when the header names the optional column
+/// `spread` (a standard deviation of the ordinate), its values.
+fn read_rows(
+    text: &str,
+    curve: &Curve,
+    spread: Option<&str>,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Rows, DataError> {
     // The reader would skip the mark as well; removing it here keeps byte offsets and lines aligned.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let bytes = text.as_bytes();
@@ -253,8 +296,13 @@ fn parse_curve_with_progress(
         _ => find(curve.y)?,
     };
     let force_column = find(curve.x)?;
+    let spread_column =
+        spread.and_then(|name| Some((columns.iter().position(|c| *c == name)?, name)));
     // A column named twice: which one is meant cannot be known (it used to take the first).
-    for name in [curve.x, curve.y, sweep_column.as_str()] {
+    for name in [curve.x, curve.y, sweep_column.as_str()]
+        .into_iter()
+        .chain(spread)
+    {
         if columns.iter().filter(|c| **c == name).count() > 1 {
             return Err(error(
                 header_line,
@@ -263,6 +311,7 @@ fn parse_curve_with_progress(
         }
     }
     let mut data: Vec<(f64, f64)> = Vec::new();
+    let mut spreads = spread_column.map(|_| Vec::new());
     let mut last_line = header_line;
     for (row, record) in records.enumerate() {
         let (line, fields) = record?;
@@ -328,6 +377,19 @@ fn parse_curve_with_progress(
                 ),
             ));
         }
+        if let (Some((column, name)), Some(spreads)) = (spread_column, spreads.as_mut()) {
+            let sigma = value(column, name)?;
+            if sigma <= 0.0 {
+                return Err(error(
+                    line,
+                    format!(
+                        "{name} = {} is not a standard deviation: must be > 0",
+                        Compact(sigma)
+                    ),
+                ));
+            }
+            spreads.push(sigma);
+        }
         data.push((force, deflection));
     }
     if data.iter().any(|p| p.1 != 0.0) && data.iter().all(|p| p.1 <= 0.0) {
@@ -351,7 +413,7 @@ fn parse_curve_with_progress(
             ),
         ));
     }
-    Ok(data)
+    Ok((data, spreads))
 }
 
 #[cfg(test)]
@@ -370,6 +432,43 @@ mod tests {
         // A measured column wins over the sweep's.
         let both = "F_N,w_regularized_mm,w_mm\n1,9,0.1\n2,9,0.2\n3,9,0.3\n";
         assert_eq!(parse(both).unwrap()[0].deflection, 0.1);
+    }
+
+    #[test]
+    fn a_sigma_column_is_read_and_checked_like_the_others() {
+        let text = "sigma_mm,F_N,w_mm\n0.001,10,0.1\n0.002,20,0.2\n0.003,30,0.3\n";
+        let measured = parse_measured_with_progress(text, &mut |_, _| {}).unwrap();
+        assert_eq!(measured.points, EXPECTED);
+        assert_eq!(measured.sigma, Some(vec![0.001, 0.002, 0.003]));
+        assert_eq!(parse(text).unwrap(), EXPECTED);
+        let without =
+            parse_measured_with_progress("F_N,w_mm\n10,0.1\n20,0.2\n30,0.3\n", &mut |_, _| {});
+        assert_eq!(without.unwrap().sigma, None);
+        for (text, expected) in [
+            (
+                "F_N,w_mm,sigma_mm\n10,0.1,0.001\n20,0.2,0\n30,0.3,1\n",
+                "line 3: sigma_mm = 0 is not a standard deviation: must be > 0",
+            ),
+            (
+                "F_N,w_mm,sigma_mm\n10,0.1,-2e-3\n",
+                "line 2: sigma_mm = -0.002 is not a standard deviation: must be > 0",
+            ),
+            (
+                "F_N,w_mm,sigma_mm\n10,0.1,inf\n",
+                "line 2: 'inf' in column sigma_mm is not a finite number",
+            ),
+            (
+                "F_N,w_mm,sigma_mm\n10,0.1\n",
+                "line 2: no value in column sigma_mm",
+            ),
+            (
+                "F_N,w_mm,sigma_mm,sigma_mm\n10,0.1,1,1\n",
+                "line 1: column 'sigma_mm' appears more than once in the header; keep one",
+            ),
+        ] {
+            // The plain reader checks the column too: a file means the same to every reader.
+            assert_eq!(parse(text).unwrap_err().to_string(), expected);
+        }
     }
 
     #[test]

@@ -6,8 +6,11 @@
 //!
 //! Method: nonlinear least squares on the closed form, in log-parameters (both must stay positive and
 //! span decades). A coarse grid over both (the bracket) gives a start that does not depend on the
-//! user's guess, then Levenberg-Marquardt refines it. Standard errors come from the Jacobian at the
-//! optimum (s^2 (J^T J)^-1, delta method back to linear units).
+//! user's guess, then Levenberg-Marquardt refines it. The residuals are weighted by what the
+//! scatter of each measurement is assumed to be ([`Weights`]: absolute, relative to w, or given per
+//! point); standard errors and the mu-K_T correlation come from the Jacobian at the optimum
+//! ((J^T W J)^-1, times the reduced chi-square unless the sigmas are known; delta method back to
+//! linear units; derived in docs/theory.md).
 //!
 //! Cost: the model takes well under a microsecond per point, and a long curve (a million rows) is
 //! fitted in seconds. Above 1024 rows the grid and the first refinements run on evenly spread
@@ -21,10 +24,12 @@
 //! the words for people are written by the `report` module.
 
 pub mod data;
+pub mod weights;
 
 use thiserror::Error;
 
 pub use data::{DataError, Measurement};
+pub use weights::{Scatter, Weights};
 
 use crate::kernel::params::ParamError;
 use crate::{TipForce, TwinBeams, TwinBeamsParams};
@@ -128,8 +133,13 @@ pub struct FitResult {
     pub mu: Estimate,
     /// Tangential stiffness (MPa/mm).
     pub kt: Estimate,
-    /// Root-mean-square residual (mm).
+    /// Root-mean-square residual (mm), unweighted.
     pub rms: f64,
+    /// The scatter the standard errors assume, as the residuals estimate it.
+    pub scatter: Scatter,
+    /// Correlation coefficient of the mu and K_T estimates, cov_12 / sqrt(cov_11 cov_22), when both
+    /// have a standard error.
+    pub correlation: Option<f64>,
     /// Number of measurements.
     pub points: usize,
     /// Measurements above the fitted F_1.
@@ -155,6 +165,9 @@ pub enum FitError {
         /// Free parameters.
         free: usize,
     },
+    /// Given standard deviations that cannot weigh the measurements.
+    #[error("invalid sigma: {0}")]
+    Sigma(String),
 }
 
 /// Progress of a fit, for a caller that wants to show it (the library prints nothing): reported
@@ -227,6 +240,8 @@ const MAX_ITERATIONS: usize = 200;
 struct Problem<'a> {
     structure: TwinBeamsParams,
     data: &'a [Measurement],
+    /// The sigma of each measurement ([`Weights::sigmas`]): residuals are divided by it.
+    sigma: &'a [f64],
     fixed_mu: Option<f64>,
     fixed_kt: Option<f64>,
 }
@@ -259,17 +274,18 @@ impl Problem<'_> {
         self.beams(mu, kt)
     }
 
-    /// Residuals model - measured (mm); None for parameters outside the valid domain. `tick` gets
-    /// the number of measurements done, at the start and every [`PROGRESS_EVERY`].
+    /// Weighted residuals (model - measured) / sigma; None for parameters outside the valid
+    /// domain. `tick` gets the number of measurements done, at the start and every
+    /// [`PROGRESS_EVERY`].
     fn residuals(&self, theta: &[f64], tick: &mut dyn FnMut(usize)) -> Option<Vec<f64>> {
         let beams = self.beams_at(theta)?;
         let mut residuals = Vec::with_capacity(self.data.len());
-        for (i, m) in self.data.iter().enumerate() {
+        for (i, (m, sigma)) in self.data.iter().zip(self.sigma).enumerate() {
             if i % PROGRESS_EVERY == 0 {
                 tick(i);
             }
             let force = TipForce::new(m.force).ok()?;
-            residuals.push(beams.regularized(force).tip_deflection() - m.deflection);
+            residuals.push((beams.regularized(force).tip_deflection() - m.deflection) / sigma);
         }
         Some(residuals)
     }
@@ -281,11 +297,11 @@ impl Problem<'_> {
             return f64::INFINITY;
         };
         let mut sum = 0.0;
-        for m in self.data {
+        for (m, sigma) in self.data.iter().zip(self.sigma) {
             let Ok(force) = TipForce::new(m.force) else {
                 return f64::INFINITY;
             };
-            let r = beams.regularized(force).tip_deflection() - m.deflection;
+            let r = (beams.regularized(force).tip_deflection() - m.deflection) / sigma;
             sum += r * r;
             if sum >= limit {
                 return sum;
@@ -294,7 +310,8 @@ impl Problem<'_> {
         sum
     }
 
-    /// The normal equations at `theta` from forward differences: J^T J and -J^T r, accumulated
+    /// The weighted normal equations at `theta` from forward differences: J^T W J and -J^T W r
+    /// (J and r of the weighted residuals, so plain J^T J and -J^T r here), accumulated
     /// measurement by measurement (the Jacobian is never stored). `base` holds the residuals at
     /// `theta`. A parameter whose shifted value leaves the valid domain gets a zero column.
     fn normal_equations(
@@ -314,14 +331,14 @@ impl Problem<'_> {
         let mut normal = vec![vec![0.0; free]; free];
         let mut gradient = vec![0.0; free];
         let mut row = vec![0.0; free];
-        for (i, (m, &r)) in self.data.iter().zip(base).enumerate() {
+        for (i, ((m, sigma), &r)) in self.data.iter().zip(self.sigma).zip(base).enumerate() {
             if i % PROGRESS_EVERY == 0 {
                 tick(i);
             }
             for (entry, beams) in row.iter_mut().zip(&shifted) {
                 *entry = match (beams, TipForce::new(m.force)) {
                     (Some(beams), Ok(force)) => {
-                        (beams.regularized(force).tip_deflection() - m.deflection - r)
+                        ((beams.regularized(force).tip_deflection() - m.deflection) / sigma - r)
                             / JACOBIAN_STEP
                     }
                     _ => 0.0,
@@ -348,13 +365,14 @@ impl Problem<'_> {
         b
     }
 
-    /// The sum of squares below which no measurement could tell two fits apart (see
+    /// The (weighted) sum of squares below which no measurement could tell two fits apart (see
     /// [`RESIDUAL_FLOOR`]).
     fn floor(&self) -> f64 {
         let scale = self
             .data
             .iter()
-            .map(|m| m.deflection.abs())
+            .zip(self.sigma)
+            .map(|(m, sigma)| (m.deflection / sigma).abs())
             .fold(0.0, f64::max);
         self.data.len() as f64 * (RESIDUAL_FLOOR * scale).powi(2)
     }
@@ -430,11 +448,13 @@ fn predicted_decrease(normal: &[Vec<f64>], gradient: &[f64], delta: &[f64]) -> f
     decrease
 }
 
-/// Where the refinement ended: the parameters, their sum of squares and the normal matrix there.
+/// Where the refinement ended: the parameters, their (weighted) sum of squares, the normal matrix
+/// and the weighted residuals there (None when the start was outside the valid domain).
 struct Refined {
     theta: Vec<f64>,
     sse: f64,
     normal: Vec<Vec<f64>>,
+    residuals: Option<Vec<f64>>,
 }
 
 /// The best node of a log grid over every free parameter (odometer order; the first of equals).
@@ -506,6 +526,7 @@ fn refine(
             theta,
             sse: f64::INFINITY,
             normal: vec![vec![0.0; free]; free],
+            residuals: None,
         };
     };
     let mut sse: f64 = base.iter().map(|r| r * r).sum();
@@ -566,7 +587,12 @@ fn refine(
         }
         iteration += 1;
     }
-    Refined { theta, sse, normal }
+    Refined {
+        theta,
+        sse,
+        normal,
+        residuals: Some(base),
+    }
 }
 
 /// Every `len / count`-th index, first and last included: `count` rows spread evenly.
@@ -581,7 +607,12 @@ fn spread(len: usize, count: usize) -> impl Iterator<Item = usize> {
 }
 
 /// Fits mu and K_T (each unless fixed) of twin beams with the geometry, E and P of `structure` to
-/// a measured w(L) vs F curve. The structure's own mu and K_T are not used as a start: the grid is.
+/// a w(L) vs F curve, every point weighed alike ([`Weights::Absolute`]). The structure's own mu and
+/// K_T are not used as a start: the grid is.
+///
+/// Equal weights are right for a curve whose error does not grow with w, such as a model's
+/// mismatch to another model; measured curves usually scatter in proportion to w: fit them with
+/// [`fit_twin_beams_weighted`] and [`Weights::default`] (relative), or with their own sigmas.
 ///
 /// # Errors
 ///
@@ -632,6 +663,7 @@ pub fn fit_twin_beams(
 }
 
 /// [`fit_twin_beams`], telling `progress` how far it got (see [`Progress`]); the result is the same.
+/// [`fit_twin_beams_weighted`] with [`Weights::Absolute`].
 ///
 /// A million measurements take a few seconds: the grid search and a first refinement run on an
 /// evenly spread subsample of a few thousand rows, and the refinement finishes on all of them,
@@ -667,15 +699,76 @@ pub fn fit_twin_beams_with_progress(
     fixed_kt: Option<f64>,
     progress: &mut dyn FnMut(Progress),
 ) -> Result<FitResult, FitError> {
+    fit_twin_beams_weighted(
+        structure,
+        data,
+        fixed_mu,
+        fixed_kt,
+        Weights::Absolute,
+        progress,
+    )
+}
+
+/// [`fit_twin_beams_with_progress`] with the measurements weighed by `weights`: what their scatter
+/// is assumed to be, which the standard errors and the correlation depend on (see [`Weights`]).
+///
+/// # Errors
+///
+/// As [`fit_twin_beams`], and [`FitError::Sigma`] when `weights` gives sigmas that are not one
+/// positive finite value per measurement.
+///
+/// # Examples
+///
+/// A curve with 1 % scatter: relative weights state errors that match the scatter of refits (the
+/// `fit` test `stated_errors_match_the_scatter_of_repeated_fits`), and the correlation of the two
+/// estimates.
+///
+/// ```
+/// use microslip::fit::{Measurement, Scatter, Weights, fit_twin_beams_weighted};
+/// use microslip::{TipForce, TwinBeams, TwinBeamsParams};
+///
+/// let truth = TwinBeams::new(TwinBeamsParams {
+///     friction: 0.22,
+///     tangential_stiffness: 300.0,
+///     ..TwinBeamsParams::PAPER
+/// })?;
+/// // Alternately 1 % high and 1 % low.
+/// let data: Vec<Measurement> = (0..=60)
+///     .map(|i| {
+///         let force = 5.0 * f64::from(i);
+///         let w = truth.regularized(TipForce::new(force)?).tip_deflection();
+///         let deflection = w * if i % 2 == 0 { 1.01 } else { 0.99 };
+///         Ok(Measurement { force, deflection })
+///     })
+///     .collect::<Result<_, microslip::ParamError>>()?;
+/// let fit = fit_twin_beams_weighted(
+///     TwinBeamsParams::PAPER, &data, None, None, Weights::Relative, &mut |_| {},
+/// )?;
+/// let Scatter::Relative { fraction } = fit.scatter else { unreachable!() };
+/// assert!((fraction - 0.01).abs() < 0.002);
+/// assert!((fit.kt.value - 300.0).abs() < 3.0 * fit.kt.std_error.unwrap());
+/// assert!(fit.correlation.unwrap().abs() < 1.0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn fit_twin_beams_weighted(
+    structure: TwinBeamsParams,
+    data: &[Measurement],
+    fixed_mu: Option<f64>,
+    fixed_kt: Option<f64>,
+    weights: Weights,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<FitResult, FitError> {
     // Validate the structure and any fixed values through the model's own constructor.
     TwinBeams::new(TwinBeamsParams {
         friction: fixed_mu.unwrap_or(structure.friction),
         tangential_stiffness: fixed_kt.unwrap_or(structure.tangential_stiffness),
         ..structure
     })?;
+    let sigma = weights.sigmas(data)?;
     let problem = Problem {
         structure,
         data,
+        sigma: &sigma,
         fixed_mu,
         fixed_kt,
     };
@@ -698,9 +791,12 @@ pub fn fit_twin_beams_with_progress(
     }
     let mut theta = None;
     for size in sizes {
-        let sample: Vec<Measurement> = spread(data.len(), size).map(|i| data[i]).collect();
+        let (sample, sample_sigma): (Vec<Measurement>, Vec<f64>) = spread(data.len(), size)
+            .map(|i| (data[i], sigma[i]))
+            .unzip();
         let level = Problem {
             data: &sample,
+            sigma: &sample_sigma,
             ..problem
         };
         let start = match theta {
@@ -714,17 +810,41 @@ pub fn fit_twin_beams_with_progress(
         None => bracket(&problem, &bounds, progress),
     };
     let refined = refine(&problem, start, &bounds, progress);
-    Ok(summarize(&problem, &refined))
+    Ok(summarize(&problem, &refined, weights))
 }
 
-/// Estimates, standard errors and identifiability at the optimum.
-fn summarize(problem: &Problem, refined: &Refined) -> FitResult {
-    let Refined { theta, sse, normal } = refined;
+/// The covariance of the informative log-parameters: (J^T W J)^-1 scaled by `variance`, as
+/// columns; None when singular.
+fn covariance(normal: &[Vec<f64>], variance: f64) -> Option<Vec<Vec<f64>>> {
+    (0..normal.len())
+        .map(|k| {
+            let unit: Vec<f64> = (0..normal.len())
+                .map(|j| if j == k { 1.0 } else { 0.0 })
+                .collect();
+            solve_small(normal, &unit).map(|col| col.iter().map(|c| variance * c).collect())
+        })
+        .collect()
+}
+
+/// Estimates, standard errors, their correlation and identifiability at the optimum.
+fn summarize(problem: &Problem, refined: &Refined, weights: Weights) -> FitResult {
+    let Refined {
+        theta,
+        sse,
+        normal,
+        residuals,
+    } = refined;
     let (theta, sse) = (theta.as_slice(), *sse);
     let (mu, kt) = problem.unpack(theta);
     let n = problem.data.len();
     let free = theta.len();
-    let variance = sse / (n - free).max(1) as f64;
+    // The reduced chi-square: the common factor of the sigmas squared, when it is unknown.
+    let reduced_chi_square = sse / (n - free).max(1) as f64;
+    let variance = if weights.known() {
+        1.0
+    } else {
+        reduced_chi_square
+    };
     // A parameter the residuals do not depend on at all (mu when every F is below F_1) has a zero
     // Jacobian column; it is left out so that the other's error is still computed.
     let scale = normal
@@ -739,14 +859,11 @@ fn summarize(problem: &Problem, refined: &Refined) -> FitResult {
         .iter()
         .map(|&i| informative.iter().map(|&j| normal[i][j]).collect())
         .collect();
-    // Diagonal of (J^T J)^-1 by solving for unit vectors.
+    let covariance = covariance(&reduced, variance);
     let log_errors: Vec<Option<f64>> = (0..free)
         .map(|i| {
             let k = informative.iter().position(|&j| j == i)?;
-            let unit: Vec<f64> = (0..informative.len())
-                .map(|j| if j == k { 1.0 } else { 0.0 })
-                .collect();
-            solve_small(&reduced, &unit).map(|col| (variance * col[k]).max(0.0).sqrt())
+            covariance.as_ref().map(|c| c[k][k].max(0.0).sqrt())
         })
         .collect();
     let beams = problem.beams(mu, kt);
@@ -811,10 +928,25 @@ fn summarize(problem: &Problem, refined: &Refined) -> FitResult {
         Some(v) => Estimate::fixed(v),
         None => judge(next.next().flatten(), kt, KT_RANGE),
     };
+    // In log units as in linear ones (the delta method scales each by its value): both fitted,
+    // both with an error.
+    let correlation = match (&covariance, mu_estimate.std_error, kt_estimate.std_error) {
+        (Some(c), Some(_), Some(_)) if c.len() == 2 => Some(c[0][1] / (c[0][0] * c[1][1]).sqrt()),
+        _ => None,
+    };
+    // The RMS in mm, whatever the weights.
+    let unweighted: f64 = residuals.as_ref().map_or(f64::INFINITY, |r| {
+        r.iter()
+            .zip(problem.sigma)
+            .map(|(r, sigma)| (r * sigma).powi(2))
+            .sum()
+    });
     FitResult {
         mu: mu_estimate,
         kt: kt_estimate,
-        rms: (sse / n as f64).sqrt(),
+        rms: (unweighted / n as f64).sqrt(),
+        scatter: weights.scatter(reduced_chi_square),
+        correlation,
         points: n,
         beyond_first_macroslip: beyond,
         threshold_force: f_thre,
@@ -954,9 +1086,11 @@ mod tests {
             let error = estimate.std_error.unwrap();
             assert!((estimate.value - truth).abs() < 5.0 * error, "{fit:?}");
         }
+        let sigma = vec![1.0; data.len()];
         let problem = Problem {
             structure: TwinBeamsParams::PAPER,
             data: &data,
+            sigma: &sigma,
             fixed_mu: None,
             fixed_kt: None,
         };

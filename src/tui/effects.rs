@@ -227,7 +227,14 @@ pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
             points,
         } => Outcome::Fitted {
             job,
-            result: crate::fit::fit_twin_beams(structure, &points, None, None),
+            result: crate::fit::fit_twin_beams_weighted(
+                structure,
+                &points,
+                None,
+                None,
+                crate::fit::Weights::default(),
+                &mut |_| {},
+            ),
         },
         Effect::CancelFit { .. } => return None,
     })
@@ -384,15 +391,23 @@ fn fit_on_worker<M: From<Report>>(
     };
     let mut reported = Instant::now();
     let fitted = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        crate::fit::fit_twin_beams_with_progress(structure, points, None, None, &mut |progress| {
-            if cfg!(panic = "unwind") && cancel.load(Ordering::SeqCst) {
-                std::panic::resume_unwind(Box::new(Cancelled));
-            }
-            if reported.elapsed() >= PROGRESS_EVERY {
-                reported = Instant::now();
-                send(Report::Outcome(Outcome::FitProgress { job, progress }));
-            }
-        })
+        // The command line's default weights (a sigma_mm column is not kept by the terminal UI).
+        crate::fit::fit_twin_beams_weighted(
+            structure,
+            points,
+            None,
+            None,
+            crate::fit::Weights::default(),
+            &mut |progress| {
+                if cfg!(panic = "unwind") && cancel.load(Ordering::SeqCst) {
+                    std::panic::resume_unwind(Box::new(Cancelled));
+                }
+                if reported.elapsed() >= PROGRESS_EVERY {
+                    reported = Instant::now();
+                    send(Report::Outcome(Outcome::FitProgress { job, progress }));
+                }
+            },
+        )
     }));
     match fitted {
         Ok(result) => send(Report::Outcome(Outcome::Fitted { job, result })),

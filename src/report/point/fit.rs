@@ -6,7 +6,7 @@ use std::fmt::Write;
 use serde::{Serialize, Serializer};
 
 use crate::TwinBeamsParams;
-use crate::fit::{Estimate, Evidence, FitResult, Status};
+use crate::fit::{Estimate, Evidence, FitResult, Scatter, Status};
 use crate::report::{count_of, number, sanitize};
 
 /// The fit report.
@@ -35,6 +35,51 @@ pub struct FitReport {
     /// Measurements above F_1, the only ones that depend on mu.
     #[serde(rename = "points_above_F_1")]
     pub beyond_first_macroslip: usize,
+    /// What the standard errors assume: in JSON `weights` ("absolute", "relative" or "sigma_mm")
+    /// and `scatter`, sqrt of the weighted fit's reduced chi-square: the sigma of w in mm, the
+    /// sigma of w as a fraction of w, or the residuals' scatter over the given sigmas (about 1
+    /// when they are right).
+    #[serde(flatten, serialize_with = "scatter_fields")]
+    pub scatter: Scatter,
+    /// Correlation coefficient of the mu and K_T estimates (null unless both have an error).
+    #[serde(rename = "mu_KT_correlation")]
+    pub correlation: Option<f64>,
+}
+
+/// The name of the weights and sqrt of the reduced chi-square (see [`FitReport::scatter`]).
+fn weights_and_scatter(scatter: &Scatter) -> (&'static str, f64) {
+    match *scatter {
+        Scatter::Absolute { sigma } => ("absolute", sigma),
+        Scatter::Relative { fraction } => ("relative", fraction),
+        Scatter::Known { reduced_chi_square } => ("sigma_mm", reduced_chi_square.sqrt()),
+    }
+}
+
+fn scatter_fields<S: Serializer>(scatter: &Scatter, s: S) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let (weights, value) = weights_and_scatter(scatter);
+    let mut map = s.serialize_map(Some(2))?;
+    map.serialize_entry("scatter", &value)?;
+    map.serialize_entry("weights", weights)?;
+    map.end()
+}
+
+/// What the errors assume, in words, with the scatter the residuals show.
+fn assumption(scatter: &Scatter) -> String {
+    match *scatter {
+        Scatter::Absolute { sigma } => format!(
+            "the same scatter at every point (--weights absolute); the residuals show {} mm",
+            number(sigma)
+        ),
+        Scatter::Relative { fraction } => format!(
+            "scatter proportional to w (--weights relative); the residuals show {} % of w",
+            number(100.0 * fraction)
+        ),
+        Scatter::Known { reduced_chi_square } => format!(
+            "the sigma_mm column, taken as known; chi^2/dof = {} (about 1 when it is right)",
+            number(reduced_chi_square)
+        ),
+    }
 }
 
 /// One fitted (or fixed) parameter.
@@ -116,6 +161,8 @@ impl FitReport {
             threshold_force: result.threshold_force,
             first_macroslip_force: result.first_macroslip_force,
             beyond_first_macroslip: result.beyond_first_macroslip,
+            scatter: result.scatter,
+            correlation: result.correlation,
         }
     }
 
@@ -155,6 +202,10 @@ impl FitReport {
                 estimate.status.label(),
             );
         }
+        if let Some(rho) = self.correlation {
+            let _ = writeln!(out, "  correlation of mu and K_T = {}", number(rho));
+        }
+        let _ = writeln!(out, "  errors assume {}", assumption(&self.scatter));
         let _ = writeln!(out, "  residual RMS = {} mm", number(self.rms));
         let _ = writeln!(
             out,
