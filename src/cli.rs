@@ -1244,16 +1244,12 @@ fn run_compare(
                 // A CSV has no header: the parameters come from the flags.
                 None => load_beams(inputs, "compare beam")?.1,
             };
-            let comparison = fe::compare::compare_beams(&beams, &loaded.points);
-            let stiffness = beams.params().tangential_stiffness;
+            let comparison =
+                fe::compare::compare_beams(&beams, &loaded.points, loaded.interface_mesh.as_ref());
+            let report = report::compare::beam::BeamCompareReport::new(&source, &comparison);
             match format {
-                CompareFormat::Text => out.write_all(
-                    report::compare::beam_text(&source, stiffness, &comparison).as_bytes(),
-                )?,
-                CompareFormat::Json => write_json(
-                    out,
-                    &report::compare::beam_json(&source, stiffness, &comparison),
-                )?,
+                CompareFormat::Text => out.write_all(report.text().as_bytes())?,
+                CompareFormat::Json => write_json(out, &report::point::to_json(&report))?,
                 CompareFormat::Csv => write_table(
                     out,
                     TableFormat::Csv,
@@ -1275,15 +1271,16 @@ fn run_compare(
                     Some(header) => header.model()?.into_plate().map_err(deck_of_other_model)?,
                     None => load_plate(inputs, "compare plate")?.1,
                 };
-                rows.extend(fe::compare::compare_plate(&plate, &loaded.points));
+                rows.extend(fe::compare::compare_plate(
+                    &plate,
+                    &loaded.points,
+                    loaded.interface_mesh.as_ref(),
+                ));
             }
+            let report = report::compare::plate::PlateCompareReport::new(&source, &rows);
             match format {
-                CompareFormat::Text => {
-                    out.write_all(report::compare::plate_text(&source, &rows).as_bytes())?
-                }
-                CompareFormat::Json => {
-                    write_json(out, &report::compare::plate_json(&source, &rows))?
-                }
+                CompareFormat::Text => out.write_all(report.text().as_bytes())?,
+                CompareFormat::Json => write_json(out, &report::point::to_json(&report))?,
                 CompareFormat::Csv => write_table(
                     out,
                     TableFormat::Csv,

@@ -378,6 +378,59 @@ const COMPARE_PLATE_CSV: &[&str] = &[
     "rows[].u_fe_mid_thickness_mm: null",
 ];
 
+/// Added with the verdicts (issue 25, item 1): each row's verdict and the closing one.
+const COMPARE_VERDICT: &[&str] = &[
+    "rows[].verdict: object",
+    "rows[].verdict.envelope: string",
+    "rows[].verdict.text: string",
+    "verdict: object",
+    "verdict.agrees: bool",
+    "verdict.summary: string",
+];
+
+/// The fit's standard error of K_T, which the K_T verdict uses.
+const COMPARE_BEAM_IMPLIED_ERROR: &[&str] = &["implied.KT_std_error_MPa_per_mm: number"];
+
+/// CalculiX beams: X in elements of the deck's mesh, and a K_T judged in standard errors.
+const COMPARE_BEAM_VERDICT_FE: &[&str] = &[
+    "rows[].verdict.X_elements: number",
+    "rows[].verdict.X_within_mesh_resolution: bool",
+    "rows[].verdict.envelope_bound: number",
+    "verdict.KT: string",
+    "verdict.KT_z: number",
+];
+
+/// A CSV with F = 0: no mesh, no envelope where the difference is undefined, no z.
+const COMPARE_BEAM_VERDICT_CSV: &[&str] = &[
+    "rows[].verdict.X_elements: null",
+    "rows[].verdict.X_within_mesh_resolution: null",
+    "rows[].verdict.envelope_bound: null|number",
+    "verdict.KT: string",
+    "verdict.KT_z: null",
+];
+
+/// Two CSV points: no mesh, no K_T implied.
+const COMPARE_BEAM_VERDICT_TWO: &[&str] = &[
+    "rows[].verdict.X_elements: null",
+    "rows[].verdict.X_within_mesh_resolution: null",
+    "rows[].verdict.envelope_bound: number",
+    "verdict.KT: string",
+    "verdict.KT_z: null",
+];
+
+/// The plate: (V1) is not calibrated at every K_T, so the bound may be null.
+const COMPARE_PLATE_VERDICT: &[&str] = &["rows[].verdict.envelope_bound: null|number"];
+
+const COMPARE_PLATE_VERDICT_FE: &[&str] = &[
+    "rows[].verdict.Xr_elements: number",
+    "rows[].verdict.Xr_within_mesh_resolution: bool",
+];
+
+const COMPARE_PLATE_VERDICT_CSV: &[&str] = &[
+    "rows[].verdict.Xr_elements: null",
+    "rows[].verdict.Xr_within_mesh_resolution: null",
+];
+
 const COMPARE_PLATE_HEADER: &str = "KT_MPa_per_mm,u_fe_mm,u_fe_contact_face_mm,\
 u_fe_mid_thickness_mm,u_mm,diff,diff_contact_face,diff_mid_thickness,u_coulomb_mm,regime,\
 regime_fe,Xr_mm,Xr_fe_mm,KT_implied_MPa_per_mm,strip_theory";
@@ -567,7 +620,14 @@ const CASES: &[Case] = &[
         name: "compare-beam-calculix",
         args: &["compare", "beam", "tests/data/calculix/paper-beams.dat"],
         formats: ALL,
-        keys: &[COMPARE_BEAM, COMPARE_BEAM_FE, COMPARE_BEAM_IMPLIED],
+        keys: &[
+            COMPARE_BEAM,
+            COMPARE_BEAM_FE,
+            COMPARE_BEAM_IMPLIED,
+            COMPARE_VERDICT,
+            COMPARE_BEAM_IMPLIED_ERROR,
+            COMPARE_BEAM_VERDICT_FE,
+        ],
         header: Some(COMPARE_BEAM_HEADER),
     },
     // A CSV from another code, with F = 0: no FE slip profile, undefined differences, and too few
@@ -580,7 +640,14 @@ const CASES: &[Case] = &[
             "tests/data/reports/inputs/compare-beam.csv",
         ],
         formats: ALL,
-        keys: &[COMPARE_BEAM, COMPARE_BEAM_CSV, COMPARE_BEAM_IMPLIED],
+        keys: &[
+            COMPARE_BEAM,
+            COMPARE_BEAM_CSV,
+            COMPARE_BEAM_IMPLIED,
+            COMPARE_VERDICT,
+            COMPARE_BEAM_IMPLIED_ERROR,
+            COMPARE_BEAM_VERDICT_CSV,
+        ],
         header: Some(COMPARE_BEAM_HEADER),
     },
     Case {
@@ -593,7 +660,12 @@ const CASES: &[Case] = &[
             "KT=120",
         ],
         formats: ALL,
-        keys: &[COMPARE_BEAM, COMPARE_BEAM_TWO],
+        keys: &[
+            COMPARE_BEAM,
+            COMPARE_BEAM_TWO,
+            COMPARE_VERDICT,
+            COMPARE_BEAM_VERDICT_TWO,
+        ],
         header: Some(COMPARE_BEAM_HEADER),
     },
     Case {
@@ -605,7 +677,13 @@ const CASES: &[Case] = &[
             "tests/data/calculix/paper-plate.dat",
         ],
         formats: ALL,
-        keys: &[COMPARE_PLATE, COMPARE_PLATE_FE],
+        keys: &[
+            COMPARE_PLATE,
+            COMPARE_PLATE_FE,
+            COMPARE_VERDICT,
+            COMPARE_PLATE_VERDICT,
+            COMPARE_PLATE_VERDICT_FE,
+        ],
         header: Some(COMPARE_PLATE_HEADER),
     },
     Case {
@@ -616,7 +694,13 @@ const CASES: &[Case] = &[
             "tests/data/reports/inputs/compare-plate.csv",
         ],
         formats: ALL,
-        keys: &[COMPARE_PLATE, COMPARE_PLATE_CSV],
+        keys: &[
+            COMPARE_PLATE,
+            COMPARE_PLATE_CSV,
+            COMPARE_VERDICT,
+            COMPARE_PLATE_VERDICT,
+            COMPARE_PLATE_VERDICT_CSV,
+        ],
         header: Some(COMPARE_PLATE_HEADER),
     },
 ];

@@ -7,6 +7,7 @@
 //! and per point the K_T whose closed-form u(L) equals the FE value.
 
 use super::results::{BeamFePoint, FeInterface, PlateFePoint};
+use super::verdict::{Envelope, InterfaceMesh, MeshDifference, StiffnessMatch};
 use crate::fit::{self, FitError, FitResult, Measurement};
 use crate::kernel::regime::Regime;
 use crate::kernel::validity::Validity;
@@ -29,6 +30,9 @@ pub struct BeamCompared {
     /// The envelope (V2) of the shear-corrected (Timoshenko) value: the stated bound on its
     /// difference from continuum FE.
     pub shear_corrected_within: f64,
+    /// FE X against the closed form's in elements of the FE mesh, when the results have the slip
+    /// and the mesh is known (CalculiX results with their deck).
+    pub macroslip_start_mesh: Option<MeshDifference>,
 }
 
 /// (FE - closed form) / closed form, or `None` where the closed form is 0 (no load, or a plate
@@ -49,6 +53,14 @@ impl BeamCompared {
         relative_difference(self.fe.deflection, self.shear_corrected)
     }
 
+    /// The shear-corrected difference against its envelope (V2).
+    pub fn envelope(&self) -> Envelope {
+        Envelope::judge(
+            self.difference_shear_corrected(),
+            Some(self.shear_corrected_within),
+        )
+    }
+
     /// FE X minus the closed form's (mm), when the FE results have the slip.
     pub fn macroslip_start_difference(&self) -> Option<f64> {
         self.fe
@@ -66,11 +78,37 @@ pub struct BeamComparison {
     pub poisson: f64,
     /// mu and K_T fitted to the FE points less their shear deflection.
     pub implied: Result<FitResult, FitError>,
+    /// The K_T the closed forms used: the deck's stick slope (MPa/mm).
+    pub stiffness: f64,
+}
+
+impl BeamComparison {
+    /// Whether the beam theory holds (V2 within 2 %) at every point, so that a K_T fitted through
+    /// it measures the interface.
+    pub fn closed_form_holds(&self) -> bool {
+        self.rows
+            .iter()
+            .all(|r| Validity::of_error(r.shear_corrected_within) == Validity::Holds)
+    }
+
+    /// The deck's K_T against the implied one.
+    pub fn stiffness_match(&self) -> StiffnessMatch {
+        match &self.implied {
+            Err(_) => StiffnessMatch::NotImplied,
+            Ok(_) if !self.closed_form_holds() => StiffnessMatch::ClosedFormDoesNotHold,
+            Ok(fit) => StiffnessMatch::judge(self.stiffness, fit.kt.value, fit.kt.std_error),
+        }
+    }
 }
 
 /// Compares FE points of the beams with the closed forms of `beams` (the K_T the deck gave the FE
-/// code; its nu for the shear deflection), under both beam theories whichever `beams` has.
-pub fn compare_beams(beams: &TwinBeams, points: &[BeamFePoint]) -> BeamComparison {
+/// code; its nu for the shear deflection), under both beam theories whichever `beams` has. `mesh`:
+/// the FE mesh along the interface, to count the X difference in elements.
+pub fn compare_beams(
+    beams: &TwinBeams,
+    points: &[BeamFePoint],
+    mesh: Option<&InterfaceMesh>,
+) -> BeamComparison {
     let euler_bernoulli = beams.with_theory(BeamTheory::EulerBernoulli);
     let timoshenko = beams.with_theory(BeamTheory::Timoshenko);
     let rows: Vec<BeamCompared> = points
@@ -79,13 +117,15 @@ pub fn compare_beams(beams: &TwinBeams, points: &[BeamFePoint]) -> BeamCompariso
             let force = TipForce::clamped(fe.force);
             let state = euler_bernoulli.regularized(force);
             let euler = state.tip_deflection();
+            let macroslip_start = state.micro_zone_end();
             BeamCompared {
                 fe,
                 euler,
                 shear_corrected: euler + beams.shear_deflection(force),
                 regime: state.regime(),
-                macroslip_start: state.micro_zone_end(),
+                macroslip_start,
                 shear_corrected_within: timoshenko.validity(force).expected_error,
+                macroslip_start_mesh: on_mesh(mesh, fe.interface, macroslip_start),
             }
         })
         .collect();
@@ -101,7 +141,17 @@ pub fn compare_beams(beams: &TwinBeams, points: &[BeamFePoint]) -> BeamCompariso
         rows,
         poisson: beams.params().poisson,
         implied,
+        stiffness: beams.params().tangential_stiffness,
     }
+}
+
+/// The FE zone end against the closed form's on `mesh`, when there are both.
+fn on_mesh(
+    mesh: Option<&InterfaceMesh>,
+    fe: Option<FeInterface>,
+    closed: f64,
+) -> Option<MeshDifference> {
+    Some(MeshDifference::on(mesh?, fe?.macroslip_start, closed))
 }
 
 /// One FE point of the plate beside the closed forms.
@@ -125,12 +175,22 @@ pub struct PlateCompared {
     pub implied_stiffness: Option<f64>,
     /// (V1) for the thickness mean at the run's K_T.
     pub strip_validity: Validity,
+    /// (V1)'s bound on the thickness mean's difference, a fraction; `None` where no calibration
+    /// reaches.
+    pub strip_within: Option<f64>,
+    /// FE X_r against the closed form's in elements of the FE mesh (CalculiX results).
+    pub micro_zone_end_mesh: Option<MeshDifference>,
 }
 
 impl PlateCompared {
     /// (FE - closed form) / closed form for u(L); `None` where the closed form is 0.
     pub fn difference(&self) -> Option<f64> {
         relative_difference(self.fe.end_displacement, self.closed)
+    }
+
+    /// The thickness mean's difference against its envelope (V1).
+    pub fn envelope(&self) -> Envelope {
+        Envelope::judge(self.difference(), self.strip_within)
     }
 
     /// The same at the contact face and at mid-thickness, when the results have them and the
@@ -151,23 +211,32 @@ impl PlateCompared {
 
 /// Compares FE points of the plate (each at its own K_T) with the closed forms of `plate` at that
 /// K_T. Points whose K_T is outside the accepted domain cannot occur: the readers refuse them.
-pub fn compare_plate(plate: &SqueezedPlate, points: &[PlateFePoint]) -> Vec<PlateCompared> {
+/// `mesh`: the FE mesh along the contact face, to count the X_r difference in elements.
+pub fn compare_plate(
+    plate: &SqueezedPlate,
+    points: &[PlateFePoint],
+    mesh: Option<&InterfaceMesh>,
+) -> Vec<PlateCompared> {
     points
         .iter()
         .map(|&fe| {
             let at = plate.with_clamped(crate::PlateParam::Stiffness, fe.stiffness);
             let state = at.regularized();
-            let strip_validity = at.validity().validity;
+            let validity = at.validity();
+            let strip_validity = validity.validity;
+            let micro_zone_end = state.micro_zone_end();
             PlateCompared {
                 fe,
                 closed: state.end_displacement(),
                 coulomb: at.coulomb().end_displacement(),
                 regime: state.regime(),
-                micro_zone_end: state.micro_zone_end(),
+                micro_zone_end,
                 implied_stiffness: (strip_validity == Validity::Holds)
                     .then(|| at.stiffness_for_end_displacement(fe.end_displacement))
                     .flatten(),
                 strip_validity,
+                strip_within: validity.expected_error(),
+                micro_zone_end_mesh: on_mesh(mesh, fe.interface, micro_zone_end),
             }
         })
         .collect()
@@ -198,7 +267,7 @@ mod tests {
                 }
             })
             .to_vec();
-        let same = compare_beams(&truth, &points);
+        let same = compare_beams(&truth, &points, None);
         for row in &same.rows {
             assert!(row.difference_shear_corrected().unwrap().abs() < 1e-12);
             assert!(
@@ -206,7 +275,7 @@ mod tests {
                 "shear adds deflection"
             );
         }
-        let other = compare_beams(&beams, &points);
+        let other = compare_beams(&beams, &points, None);
         let fit = other.implied.unwrap();
         assert!(
             (fit.kt.value / 300.0 - 1.0).abs() < 1e-4,
@@ -259,7 +328,7 @@ mod tests {
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
         let u = paper_u(5.8e5);
         assert!(plate.stiffness_for_end_displacement(u).is_some());
-        let rows = compare_plate(&plate, &[mean_only(1e7, u)]);
+        let rows = compare_plate(&plate, &[mean_only(1e7, u)], None);
         assert_eq!(rows[0].implied_stiffness, None);
         assert_ne!(rows[0].strip_validity, Validity::Holds);
     }
@@ -267,7 +336,7 @@ mod tests {
     #[test]
     fn plate_comparison_uses_each_points_stiffness() {
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
-        let rows = compare_plate(&plate, &[mean_only(1e4, 1.1 * paper_u(1e4))]);
+        let rows = compare_plate(&plate, &[mean_only(1e4, 1.1 * paper_u(1e4))], None);
         assert!((rows[0].difference().unwrap() - 0.1).abs() < 1e-12);
         assert_eq!(rows[0].regime, Regime::Microslip);
         assert_eq!(rows[0].strip_validity, Validity::Holds);

@@ -9,6 +9,7 @@ use super::header::DeckHeader;
 use super::results::{
     BeamFePoint, CcxRun, PlateFePoint, ResultsError, beam_points_from_csv, plate_points_from_csv,
 };
+use super::verdict::InterfaceMesh;
 use crate::file::{Kinds, Size, read_capped};
 use crate::problems::ModelKind;
 
@@ -33,6 +34,9 @@ pub struct Loaded<P> {
     pub header: Option<DeckHeader>,
     /// The points.
     pub points: Vec<P>,
+    /// The FE mesh along the interface, from the deck (CalculiX results; `None` for CSV, which
+    /// does not say).
+    pub interface_mesh: Option<InterfaceMesh>,
 }
 
 fn read(path: &Path, what: &'static str) -> Result<String, LoadError> {
@@ -124,9 +128,14 @@ fn ccx_points<P>(
         dat: &dat,
     };
     let points = from_run(&run).map_err(|e| fail(path, e.to_string()))?;
+    let interface_mesh = Some(
+        run.interface_mesh()
+            .map_err(|e| fail(path, e.to_string()))?,
+    );
     Ok(Loaded {
         header: Some(header),
         points,
+        interface_mesh,
     })
 }
 
@@ -213,6 +222,7 @@ fn results<P>(
         Ok(Loaded {
             header: None,
             points,
+            interface_mesh: None,
         })
     }
 }

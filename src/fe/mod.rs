@@ -5,6 +5,8 @@
 //! - [`header`]: the header a deck starts with, which `compare` reads back.
 //! - [`results`]: readers of CalculiX's `.dat` output and of plain CSV from any FE code.
 //! - [`compare`]: FE values against both closed forms, point by point, and the K_T they imply.
+//! - [`verdict`]: whether they agree: each difference against its stated envelope, X in elements
+//!   of the FE mesh, the implied K_T in standard errors.
 //! - [`run`]: running CalculiX on a deck in a work folder of its own, with its log kept.
 //!
 //! Why the decks are built as they are, and how they differ from the paper's Ansys model, is in
@@ -17,3 +19,4 @@ pub mod load;
 mod mesh;
 pub mod results;
 pub mod run;
+pub mod verdict;

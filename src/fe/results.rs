@@ -10,6 +10,7 @@ use thiserror::Error;
 
 use super::deck::sets;
 use super::header::DeckHeader;
+use super::verdict::InterfaceMesh;
 use crate::fit::data::{self, Curve, MEASURED_DEFLECTION};
 use crate::kernel::params::{Compact, Domain, Unit};
 use crate::kernel::regime::Regime;
@@ -251,6 +252,33 @@ impl CcxRun<'_> {
             end_displacement: mean,
             through_thickness: Some([face, mid]),
             interface: Some(interface_state(&xs, &slips, saturation)),
+        })
+    }
+}
+
+impl CcxRun<'_> {
+    /// The deck's mesh along the interface (the lower beam's face, the plate's contact face), from
+    /// the positions of the nodes of its node set: what an X difference is counted in.
+    ///
+    /// # Errors
+    /// A malformed `*NODE` line, a node of the set the deck does not list, or a set that is not a
+    /// line of quadratic elements.
+    pub fn interface_mesh(&self) -> Result<InterfaceMesh, ResultsError> {
+        let set = match self.header.inputs {
+            Inputs::Beam { .. } => sets::BEAM_LOWER_FACE,
+            Inputs::Plate(_) => sets::PLATE_FACE,
+        };
+        let nodes = parse_nodes(self.deck)?;
+        let ids = parse_node_sets(self.deck).remove(set).unwrap_or_default();
+        let xs: Vec<f64> = ids
+            .iter()
+            .map(|&id| node_coordinate(&nodes, id).map(|c| c[0]))
+            .collect::<Result<_, _>>()?;
+        InterfaceMesh::from_quadratic_nodes(&xs).ok_or_else(|| {
+            ResultsError::Missing(format!(
+                "set {set} of the deck is not a line of quadratic elements ({} nodes)",
+                xs.len()
+            ))
         })
     }
 }

@@ -1267,11 +1267,13 @@ impl App {
         };
         let summary = match (loaded, self.model()) {
             (AnyLoaded::Beam(l), Some(Model::Beam { beams, .. })) => {
-                let comparison = crate::fe::compare::compare_beams(&beams, &l.points);
+                let comparison =
+                    crate::fe::compare::compare_beams(&beams, &l.points, l.interface_mesh.as_ref());
                 crate::report::compare::beam_summary(code, &comparison)
             }
             (AnyLoaded::Plate(l), Some(Model::Plate(plate))) => {
-                let rows = crate::fe::compare::compare_plate(&plate, &l.points);
+                let rows =
+                    crate::fe::compare::compare_plate(&plate, &l.points, l.interface_mesh.as_ref());
                 rows.first()
                     .map(|row| crate::report::compare::plate_summary(code, row))
                     .unwrap_or_default()
