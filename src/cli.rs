@@ -328,6 +328,24 @@ pub struct InputArgs {
     pub beam_theory: Option<String>,
 }
 
+impl InputArgs {
+    /// The parameter flags given, as a command line repeats them (`--preset P`, `--set K=V`, ...).
+    fn flags(&self) -> Vec<String> {
+        let mut given: Vec<String> = self
+            .preset
+            .iter()
+            .map(|p| format!("--preset {p}"))
+            .collect();
+        given.extend(self.assignments.iter().map(|a| format!("--set {a}")));
+        given.extend(
+            self.beam_theory
+                .iter()
+                .map(|t| format!("--beam-theory {t}")),
+        );
+        given
+    }
+}
+
 /// Arguments of `beam` and `plate`.
 #[derive(Debug, Args)]
 pub struct PointArgs {
@@ -569,8 +587,8 @@ macro_rules! value_enum {
 }
 
 value_enum!(ModelKind {
-    ModelKind::Beam => ("beam", "Twin cantilever beams (paper section 2.1)"),
-    ModelKind::Plate => ("plate", "Squeezed plate (paper section 2.2)"),
+    ModelKind::Beam => (ModelKind::Beam.name(), "Twin cantilever beams (paper section 2.1)"),
+    ModelKind::Plate => (ModelKind::Plate.name(), "Squeezed plate (paper section 2.2)"),
 });
 
 value_enum!(TableFormat {
@@ -579,14 +597,14 @@ value_enum!(TableFormat {
 });
 
 value_enum!(YMode {
-    YMode::Linear => ("linear", "The values, on a linear axis"),
-    YMode::Log => ("log", "The values, on a logarithmic axis (decades)"),
-    YMode::Relative => ("relative", "Each curve over the Coulomb curve, minus 1, in %"),
+    YMode::Linear => (YMode::Linear.key(), "The values, on a linear axis"),
+    YMode::Log => (YMode::Log.key(), "The values, on a logarithmic axis (decades)"),
+    YMode::Relative => (YMode::Relative.key(), "Each curve over the Coulomb curve, minus 1, in %"),
 });
 
 value_enum!(DeckMesh {
-    DeckMesh::Coarse => ("coarse", "About 100 elements along the beam and 2 through each beam's height; 4 through the plate"),
-    DeckMesh::Fine => ("fine", "Every element size halved"),
+    DeckMesh::Coarse => (DeckMesh::Coarse.name(), "About 100 elements along the beam and 2 through each beam's height; 4 through the plate"),
+    DeckMesh::Fine => (DeckMesh::Fine.name(), "Every element size halved"),
 });
 
 impl ValueEnum for AnyChart {
@@ -1182,18 +1200,7 @@ fn force_range_error(error: RangeError) -> CliError {
 /// parameters the run was made with, and comparing at others would mean nothing (they used to be
 /// ignored without a word).
 fn note_flags_the_deck_overrides(inputs: &InputArgs) {
-    let mut given: Vec<String> = inputs
-        .preset
-        .iter()
-        .map(|p| format!("--preset {p}"))
-        .collect();
-    given.extend(inputs.assignments.iter().map(|a| format!("--set {a}")));
-    given.extend(
-        inputs
-            .beam_theory
-            .iter()
-            .map(|t| format!("--beam-theory {t}")),
-    );
+    let given = inputs.flags();
     if given.is_empty() {
         return;
     }
@@ -1794,49 +1801,26 @@ fn run_figures(
         path: dir.display().to_string(),
         reason: e.to_string(),
     };
-    let yours = inputs.preset.is_some() || !inputs.assignments.is_empty();
+    let flags = inputs.flags();
     // Every model is loaded before the folder is made: a bad preset leaves nothing behind.
     let mut figures = Vec::new();
-    let intro = if yours {
+    let intro = if !flags.is_empty() {
         let (name, model) = load_any(inputs, ModelKind::Beam)?;
-        let values = figure::parameter_caption(&model.inputs());
+        let bench = figure::Bench {
+            preset: name,
+            values: figure::parameter_caption(&model.inputs()),
+            flags: flags.join(" "),
+            finite_elements: fe,
+        };
         for chart in AnyChart::all().filter(|c| c.kind() == model.kind()) {
             let plot = crate::chart::figure(&model, chart, fe, YMode::Linear)?;
             // Each chart's own default axis, where its data allow it (as `plot` chooses).
             let y = Some(YMode::default_for(chart))
                 .filter(|m| m.applies_to(&plot))
                 .unwrap_or(YMode::Linear);
-            let entry = figure::IndexEntry {
-                stem: format!("{}-{}", model.kind().name(), chart.key()),
-                title: chart.title(),
-                caption: format!(
-                    "{} (preset <code>{}</code>: {}",
-                    chart.title(),
-                    html_escape(&name),
-                    html_escape(&values)
-                ),
-                command: format!(
-                    "microslip plot {}{}{} --y {}",
-                    chart.key(),
-                    html_escape(&flags_of(inputs)),
-                    if fe { " --fe" } else { "" },
-                    y.key()
-                ),
-            };
-            figures.push((y.apply(plot), entry));
+            figures.push((y.apply(plot), bench.entry(chart, y)));
         }
-        format!(
-            "Your bench, preset <code>{}</code>: {}. Units: mm, N, MPa; K_T in MPa/mm. Closed \
-             forms under both laws{}. Made by <code>microslip figures{}</code>.",
-            html_escape(&name),
-            html_escape(&values),
-            if fe {
-                "; points are the project's own finite-element solutions"
-            } else {
-                ""
-            },
-            html_escape(&flags_of(inputs))
-        )
+        bench.intro()
     } else {
         for f in figure::PAPER_FIGURES {
             let inputs = InputArgs {
@@ -1873,29 +1857,6 @@ fn run_figures(
     let shown = index.display().to_string();
     writeln!(out, "{}  open it in a browser", report::sanitize(&shown))?;
     Ok(())
-}
-
-/// The `--preset` and `--set` flags of `inputs`, as a command line repeats them.
-fn flags_of(inputs: &InputArgs) -> String {
-    let mut flags = String::new();
-    if let Some(preset) = &inputs.preset {
-        flags.push_str(&format!(" --preset {preset}"));
-    }
-    for assignment in &inputs.assignments {
-        flags.push_str(&format!(" --set {assignment}"));
-    }
-    if let Some(theory) = &inputs.beam_theory {
-        flags.push_str(&format!(" --beam-theory {theory}"));
-    }
-    flags
-}
-
-/// Text for an HTML page: `&`, `<`, `>` and `"` escaped (preset names and paths are the user's).
-fn html_escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
 }
 
 fn run_verify(

@@ -343,6 +343,66 @@ impl PaperFigure {
     }
 }
 
+/// A user's own bench, as `figures --preset/--set` draws it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Bench {
+    /// The preset's name as shown (`mine (modified by --set)`).
+    pub preset: String,
+    /// Its parameters ([`parameter_caption`]).
+    pub values: String,
+    /// The flags that chose it, as typed (`--preset mine --set KT=3e5`).
+    pub flags: String,
+    /// With the project's finite-element points.
+    pub finite_elements: bool,
+}
+
+impl Bench {
+    /// The index entry of `chart` on the y axis `y`.
+    pub fn entry(&self, chart: AnyChart, y: YMode) -> IndexEntry {
+        IndexEntry {
+            stem: format!("{}-{}", chart.kind().name(), chart.key()),
+            title: chart.title(),
+            caption: format!(
+                "{} (preset <code>{}</code>: {}",
+                chart.title(),
+                html_text(&self.preset),
+                html_text(&self.values)
+            ),
+            command: format!(
+                "microslip plot {} {}{} --y {}",
+                chart.key(),
+                html_text(&self.flags),
+                if self.finite_elements { " --fe" } else { "" },
+                y.key()
+            ),
+        }
+    }
+
+    /// The introduction of its index page.
+    pub fn intro(&self) -> String {
+        format!(
+            "Your bench, preset <code>{}</code>: {}. Units: mm, N, MPa; K_T in MPa/mm. Closed \
+             forms under both laws{}. Made by <code>microslip figures {}</code>.",
+            html_text(&self.preset),
+            html_text(&self.values),
+            if self.finite_elements {
+                "; points are the project's own finite-element solutions"
+            } else {
+                ""
+            },
+            html_text(&self.flags)
+        )
+    }
+}
+
+/// Text for an HTML page: `&`, `<`, `>` and `"` escaped (preset names and paths are the user's).
+fn html_text(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
 /// The introduction of the paper's index page.
 pub const PAPER_INTRO: &str = "Ligier &amp; Bonhote (2014), regularized Coulomb friction: the paper's data sets, \
      both laws, closed forms; points are the project's own finite-element solutions. \
