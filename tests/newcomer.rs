@@ -172,3 +172,27 @@ fn figures_draw_every_chart_of_your_bench_with_its_values_in_the_captions() {
     assert_eq!(code, 2, "{err}");
     assert!(!refused.exists());
 }
+
+/// `--beam-theory` alone chooses a bench too: the figures are the paper beams' under Timoshenko,
+/// not the paper's set without a word.
+#[test]
+fn figures_with_only_a_beam_theory_draw_that_bench() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("figs");
+    let (code, _, err) = run(&[
+        "figures",
+        "--out",
+        out.to_str().unwrap(),
+        "--no-fe",
+        "--beam-theory",
+        "timoshenko",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let page = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert!(
+        page.contains("microslip figures --beam-theory timoshenko"),
+        "{page}"
+    );
+    assert!(out.join("beam-w-vs-f.svg").is_file());
+    assert!(!out.join("plate-u-vs-kt.svg").exists());
+}
