@@ -30,6 +30,7 @@ fn app(preset_name: &str) -> App {
         preset: preset::resolve(preset_name).unwrap(),
         user_dir: None,
         data: None,
+        solve_continuum: false,
     })
 }
 
@@ -134,6 +135,7 @@ fn beams_in(charset: &str) -> App {
         preset: preset::resolve("paper-beams").unwrap(),
         user_dir: None,
         data: None,
+        solve_continuum: false,
     })
 }
 

@@ -19,6 +19,7 @@ fn app_with(preset_name: &str, charset: Charset, color: bool) -> App {
         preset: preset::resolve(preset_name).unwrap(),
         user_dir: None,
         data: None,
+        solve_continuum: false,
     })
 }
 
@@ -290,6 +291,7 @@ fn measured_points_on_the_deflection_chart() {
             path: "bench.csv".into(),
             points,
         }),
+        solve_continuum: false,
     });
     insta::assert_snapshot!("measured_points", screen(&app, 100, 30));
     press(&mut app, Action::Fit);
@@ -360,6 +362,7 @@ fn the_preset_picker_shows_control_characters_escaped() {
         preset: preset::resolve("paper-beams").unwrap(),
         user_dir: Some(dir.path().to_path_buf()),
         data: None,
+        solve_continuum: false,
     });
     press(&mut app, Action::OpenPresets);
     let text = screen(&app, 100, 30);
@@ -386,6 +389,7 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
         preset: preset::resolve("paper-beams-soft").unwrap(),
         user_dir: Some(dir.path().to_path_buf()),
         data: None,
+        solve_continuum: false,
     });
     press(&mut app, Action::OpenPresets);
     // Bundled: paper-beams, paper-beams-soft (selected), paper-plate; then the user's paper-beams.
@@ -435,17 +439,16 @@ fn load_data(app: &mut App, path: &str) {
 }
 
 #[test]
-fn a_long_status_message_wraps_upwards_instead_of_being_cut() {
+fn a_long_status_message_takes_rows_from_the_panes_and_never_covers_the_chart() {
     let mut app = app();
     let path = "/nonexistent/measurements/from the bench in building 7/campaign 2031-04/\
                 specimen 12 of 40, second loading branch after the gauge reset.csv";
     load_data(&mut app, path);
     let text = screen(&app, 80, 24);
+    let rows: Vec<&str> = text.lines().collect();
     // Every word of the message is on screen, in order, across the bottom rows.
-    let bottom: Vec<&str> = text.lines().rev().take(4).collect();
-    let joined: String = bottom
+    let joined: String = rows[21..]
         .iter()
-        .rev()
         .map(|l| l.trim_matches('"').trim())
         .collect::<Vec<_>>()
         .join(" ");
@@ -453,8 +456,29 @@ fn a_long_status_message_wraps_upwards_instead_of_being_cut() {
         joined.contains("specimen 12 of 40, second loading branch after the gauge reset.csv: No such file or directory"),
         "{text}"
     );
+    // Above it, the panes end with their borders and the chart with its x axis title.
+    assert!(
+        rows[20].contains("F (N)") && rows[20].starts_with("\"└"),
+        "{text}"
+    );
     insta::assert_snapshot!("long_status_message", text);
-    // Too long even for four lines: what fits, then `...`.
+    // The same at 100x30 after loading CalculiX results (the issue's case): the chart keeps its
+    // axis, the message its rows.
+    let mut app = app_with("paper-beams-soft", Charset::Ascii, false);
+    load(&mut app, "tests/data/calculix/paper-beams.dat");
+    let text = screen(&app, 100, 30);
+    let rows: Vec<&str> = text.lines().collect();
+    let status_rows = rows
+        .iter()
+        .rev()
+        .take_while(|r| !r.contains("F (N)"))
+        .count();
+    assert!((2..=4).contains(&status_rows), "{text}");
+    assert!(
+        rows[rows.len() - 1 - status_rows].starts_with("\"+---"),
+        "{text}"
+    );
+    // Too long even for three lines: what fits, then how to read it all.
     let mut app = app_with("paper-beams", Charset::Ascii, false);
     load_data(
         &mut app,
@@ -463,14 +487,25 @@ fn a_long_status_message_wraps_upwards_instead_of_being_cut() {
     let text = screen(&app, 80, 24);
     let rows: Vec<&str> = text.lines().collect();
     assert!(
-        rows[23].trim_end_matches('"').trim_end().ends_with("..."),
+        rows[23]
+            .trim_end_matches('"')
+            .trim_end()
+            .ends_with("... M reads all"),
         "{text}"
     );
-    assert!(!rows[19].contains("very long"), "{text}");
+    assert!(rows[20].contains("F (N)"), "{text}");
     assert!(
-        rows[20].contains("beam | paper-beams | /nonexistent/very long"),
+        rows[21].contains("beam | paper-beams | /nonexistent/very long"),
         "{text}"
     );
+    // M shows it whole; Esc closes.
+    press(&mut app, Action::ShowMessage);
+    let text = screen(&app, 80, 24);
+    assert!(
+        text.contains("Message") && text.contains("No such file"),
+        "{text}"
+    );
+    press(&mut app, Action::Cancel);
     // A short message again: back to one line.
     press(&mut app, Action::SwitchModel);
     let text = screen(&app, 80, 24);

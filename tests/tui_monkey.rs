@@ -102,6 +102,7 @@ fn run(seed: u64, steps: usize) {
         preset: preset::resolve(PRESETS[rng.below(PRESETS.len())]).unwrap(),
         user_dir: None,
         data: None,
+        solve_continuum: false,
     });
     let (mut width, mut height) = (100u16, 30u16);
     for step in 0..steps {

@@ -372,9 +372,17 @@ pub struct ParamSpec {
     /// keyboard, `mu = 4.5` for 0.45, or a unit mix-up, L in um). Wider than any benchmark in the
     /// literature, narrower than the domain. Set with [`ParamSpec::usual`].
     pub usual: (f64, f64),
+    /// A word shown beside the value where the key alone misleads (`half` for the plate's `L`,
+    /// which is a half-length where the beams' `L` is a whole length); empty for most.
+    pub note: &'static str,
 }
 
 impl ParamSpec {
+    /// The same spec with `note` shown beside its value.
+    pub const fn noted(self, note: &'static str) -> ParamSpec {
+        ParamSpec { note, ..self }
+    }
+
     /// The same spec with its usual range set to `[low, high]`.
     pub const fn usual(self, low: f64, high: f64) -> ParamSpec {
         ParamSpec {
@@ -400,6 +408,7 @@ pub const fn spec(
         domain,
         step,
         usual: (f64::NEG_INFINITY, f64::INFINITY),
+        note: "",
     }
 }
 

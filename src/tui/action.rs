@@ -79,6 +79,12 @@ pub enum Action {
     ExportChart,
     /// Fit the chart's axes to the data (the force range of the beams' charts follows F_thre again).
     FitAxes,
+    /// Open the command line (`:`): several values at once (`KT=250 mu=0.2`) or a command.
+    CommandLine,
+    /// Forget the loaded measurements and FE results.
+    DropData,
+    /// Show the last status message whole (it is cut on the status line when too long).
+    ShowMessage,
     /// Text entry: cursor one character left.
     CursorLeft,
     /// Text entry: cursor one character right.

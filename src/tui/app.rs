@@ -55,6 +55,20 @@ pub enum Mode {
         /// Text typed so far.
         input: TextInput,
     },
+    /// Typing the one-line description of the preset being saved (prefilled; Enter keeps it).
+    SaveDescription {
+        /// The preset name, typed before.
+        name: String,
+        /// Text typed so far.
+        input: TextInput,
+    },
+    /// The command line (`:`), typed on the status line.
+    Command {
+        /// Text typed so far.
+        input: TextInput,
+    },
+    /// The last status message, whole, in an overlay (`M`).
+    Message,
     /// Typing the path of a measurement file.
     DataPath {
         /// Text typed so far.
@@ -64,6 +78,8 @@ pub enum Mode {
     ConfirmOverwrite {
         /// The preset name.
         name: String,
+        /// The description typed for it.
+        description: String,
     },
     /// Asking before quitting with unsaved edits.
     ConfirmQuit {
@@ -97,9 +113,11 @@ impl Mode {
             Mode::Normal => Context::Main,
             Mode::Editing { .. }
             | Mode::SaveName { .. }
+            | Mode::SaveDescription { .. }
+            | Mode::Command { .. }
             | Mode::DataPath { .. }
             | Mode::Target { .. } => Context::TextEntry,
-            Mode::Help => Context::Help,
+            Mode::Help | Mode::Message => Context::Help,
             Mode::Explain { .. } => Context::Explain,
             Mode::Presets { .. } => Context::Presets,
             Mode::ConfirmOverwrite { .. } | Mode::ConfirmQuit { .. } | Mode::ConfirmReset => {
@@ -163,6 +181,10 @@ pub struct AppOptions {
     pub user_dir: Option<PathBuf>,
     /// Measurements to show on the w(L) chart and fit (`--data`).
     pub data: Option<Measurements>,
+    /// Solve the plate's 2-D continuum at the current values for the regime pane
+    /// ([`Effect::SolveContinuum`]). The program does; tests that do not look at it leave it off,
+    /// since a debug build takes about a second per solve.
+    pub solve_continuum: bool,
 }
 
 /// Measurements loaded from a file.
@@ -211,6 +233,11 @@ pub struct App {
     /// The y-axis modes chosen with `y`, by chart (None: the chart against a parameter of `v`);
     /// a chart not listed shows its default ([`YMode::default_for`]).
     y_modes: Vec<(Option<AnyChart>, YMode)>,
+    /// See [`AppOptions::solve_continuum`].
+    solve_continuum: bool,
+    /// The plate's continuum solution, for the values it was solved at (the last asked for, with
+    /// None until it comes).
+    continuum: Option<(PlateParams, Option<Result<f64, String>>)>,
 }
 
 impl App {
@@ -253,6 +280,8 @@ impl App {
             help_page: 0,
             export_dir: PathBuf::from("."),
             y_modes: Vec::new(),
+            solve_continuum: options.solve_continuum,
+            continuum: None,
         };
         app.fit_axes();
         app.recompute();
@@ -278,6 +307,12 @@ impl App {
         self.beam.inputs = snapshot.beam;
         self.plate.inputs = snapshot.plate;
         self.kind = snapshot.kind;
+    }
+
+    /// The effects asked for outside an action (by [`App::new`]: the continuum of a plate it
+    /// opens on), for the loop to perform before the first key.
+    pub fn take_asked(&mut self) -> Vec<Effect> {
+        std::mem::take(&mut self.asked)
     }
 
     /// Where `x` writes the exported chart (default: the working directory).
@@ -488,8 +523,43 @@ impl App {
         });
     }
 
+    /// What the regime pane shows of the plate's continuum solution.
+    pub fn continuum(&self) -> crate::tui::summary::ContinuumState {
+        use crate::tui::summary::ContinuumState;
+        let current = match self.model() {
+            Some(Model::Plate(plate)) if self.solve_continuum => plate.params(),
+            _ => return ContinuumState::Off,
+        };
+        match &self.continuum {
+            Some((params, Some(Ok(u)))) if *params == current => ContinuumState::Solved(*u),
+            Some((params, Some(Err(e)))) if *params == current => ContinuumState::Failed(e.clone()),
+            _ => ContinuumState::Solving,
+        }
+    }
+
+    /// The lines of the regime pane.
+    pub fn summary_lines(&self) -> Vec<crate::tui::summary::SummaryLine> {
+        self.model().map_or_else(Vec::new, |m| {
+            crate::tui::summary::summary_lines(&m, &self.continuum())
+        })
+    }
+
+    /// Asks for the plate's continuum at the current values when it is shown and not asked yet.
+    fn ask_continuum(&mut self) {
+        let Some(Model::Plate(plate)) = self.model() else {
+            return;
+        };
+        let params = plate.params();
+        if !self.solve_continuum || self.continuum.as_ref().is_some_and(|(p, _)| *p == params) {
+            return;
+        }
+        self.continuum = Some((params, None));
+        self.asked.push(Effect::SolveContinuum { params });
+    }
+
     /// Rebuilds the chart (and the finite-element points when shown) after any change.
     fn recompute(&mut self) {
+        self.ask_continuum();
         let Some(model) = self.model() else { return };
         if self.show_numeric {
             match chart::numeric_points(&model, self.views) {
@@ -720,6 +790,15 @@ impl App {
                 }
                 self.recompute();
             }
+            Outcome::Continuum { params, result } => {
+                if self.continuum.as_ref().is_some_and(|(p, _)| *p == params) {
+                    self.continuum = Some((params, Some(result)));
+                }
+            }
+            Outcome::Preset { name, result } => match result {
+                Ok(preset) => self.adopt_preset(preset),
+                Err(reason) => self.error(format!("cannot load preset {name}: {reason}")),
+            },
             Outcome::Presets(entries) => {
                 let selected = entries
                     .iter()
@@ -807,9 +886,44 @@ impl App {
                     |input| Mode::SaveName { input },
                     "save cancelled",
                 ) {
-                    self.save(name, false);
+                    self.ask_description(name);
                 }
             }
+            Mode::SaveDescription { name, input } => {
+                let prompt = name.clone();
+                if let Some(description) = self.edit(
+                    input,
+                    action,
+                    |input| Mode::SaveDescription {
+                        name: prompt,
+                        input,
+                    },
+                    "save cancelled",
+                ) {
+                    let description = if description.is_empty() {
+                        self.default_description()
+                    } else {
+                        description
+                    };
+                    self.save(name, description, false);
+                }
+            }
+            Mode::Command { input } => {
+                if action == Action::Complete {
+                    self.complete_command(input);
+                } else if let Some(text) = self.edit(
+                    input,
+                    action,
+                    |input| Mode::Command { input },
+                    "command cancelled",
+                ) {
+                    self.run_command(&text);
+                }
+            }
+            Mode::Message => match action {
+                Action::ToggleHelp | Action::Cancel | Action::ShowMessage => {}
+                _ => self.mode = Mode::Message,
+            },
             Mode::DataPath { input } => {
                 if let Some(path) = self.edit(
                     input,
@@ -820,8 +934,8 @@ impl App {
                     self.load_data(path);
                 }
             }
-            Mode::ConfirmOverwrite { name } => match action {
-                Action::Yes => self.save(name, true),
+            Mode::ConfirmOverwrite { name, description } => match action {
+                Action::Yes => self.save(name, description, true),
                 _ => self.info("save cancelled; the existing preset is unchanged"),
             },
             Mode::ConfirmQuit { unsaved } => match action {
@@ -853,9 +967,7 @@ impl App {
                 }
             }
             Mode::Explain { line } => {
-                let count = self
-                    .model()
-                    .map_or(1, |m| super::summary::summary_lines(&m).len());
+                let count = self.summary_lines().len().max(1);
                 match action {
                     Action::Next => {
                         self.mode = Mode::Explain {
@@ -951,7 +1063,11 @@ impl App {
     pub fn paste(&mut self, text: &str) -> bool {
         let line = text.split(['\n', '\r']).next().unwrap_or("");
         let input = match &mut self.mode {
-            Mode::Editing { input } | Mode::SaveName { input } | Mode::DataPath { input } => input,
+            Mode::Editing { input }
+            | Mode::SaveName { input }
+            | Mode::SaveDescription { input, .. }
+            | Mode::Command { input }
+            | Mode::DataPath { input } => input,
             Mode::Normal => {
                 self.info("paste ignored: press Enter to type a value, then paste");
                 return true;
@@ -1025,16 +1141,29 @@ impl App {
         let input = match &mut self.mode {
             Mode::Editing { input }
             | Mode::SaveName { input }
+            | Mode::SaveDescription { input, .. }
             | Mode::DataPath { input }
             | Mode::Target { input } => input,
+            Mode::Command { input } => {
+                if input.as_str() == text {
+                    input.set(completed);
+                    self.completions(names, "no key, command or preset starts so");
+                }
+                return;
+            }
             _ => return,
         };
         if input.as_str() != text {
             return;
         }
         input.set(completed);
+        self.completions(names, "no file name starts so");
+    }
+
+    /// What Tab found, on the status line: nothing, the one match (no message), or the matches.
+    fn completions(&mut self, names: &[String], none: &str) {
         match names.len() {
-            0 => self.info("no file name starts so"),
+            0 => self.info(none),
             1 => self.message = None,
             n => self.info(format!(
                 "{n} matches: {}",
@@ -1156,6 +1285,20 @@ impl App {
                 };
             }
             Action::Fit => self.fit(),
+            Action::CommandLine => {
+                self.message = None;
+                self.mode = Mode::Command {
+                    input: TextInput::default(),
+                };
+            }
+            Action::DropData => self.drop_data(),
+            Action::ShowMessage => {
+                if self.message.is_some() {
+                    self.mode = Mode::Message;
+                } else {
+                    self.info("no message to show");
+                }
+            }
             Action::Reset => {
                 if self.modified() {
                     self.message = None;
@@ -1238,9 +1381,18 @@ impl App {
             ),
         };
         let origin = header.map(|h| h.inputs);
+        // Measurements were taken on the values the deck now replaces: they go (the help's rule).
+        let mut dropped = String::new();
         if let Some(inputs) = origin {
             self.kind = model;
             self.state_mut().inputs = inputs;
+            if let Some(m) = self.measurements.take() {
+                dropped = format!(
+                    "; dropped {} ({}): they were for the previous values",
+                    crate::report::count_of(m.points.len(), "measurement"),
+                    m.path
+                );
+            }
         }
         // Plate runs of the same deck but for K_T add up to a curve; anything else replaces.
         let same_plate = |previous: &Option<Inputs>| match (previous, origin) {
@@ -1285,7 +1437,7 @@ impl App {
         } else {
             ""
         };
-        self.info(format!("{path}{adopted}: {summary}"));
+        self.info(format!("{path}{adopted}: {summary}{dropped}"));
         self.external = Some((
             chart::ExternalPoints {
                 label: code.to_string(),
@@ -1447,16 +1599,7 @@ impl App {
                 }
             }
             Action::Commit => match entries.get(selected).map(|e| &e.preset) {
-                Some(Ok(preset)) => {
-                    let preset = preset.clone();
-                    self.kind = preset.inputs.kind();
-                    let state = self.state_mut();
-                    state.inputs = preset.inputs;
-                    state.preset = preset;
-                    self.info(format!("loaded preset {}", self.preset_name()));
-                    self.fit_axes();
-                    self.recompute();
-                }
+                Some(Ok(preset)) => self.adopt_preset(preset.clone()),
                 Some(Err(problem)) => {
                     self.error(format!("cannot load {}: {problem}", entries[selected].name));
                     self.mode = Mode::Presets { entries, selected };
@@ -1473,13 +1616,182 @@ impl App {
         }
     }
 
+    /// A preset loaded (picked, or named after `:preset`): its model becomes the active one, with
+    /// its values. Loaded data go: measurements and FE results belong to the bench they were
+    /// loaded for (the rule the help states).
+    fn adopt_preset(&mut self, preset: Preset) {
+        self.kind = preset.inputs.kind();
+        let state = self.state_mut();
+        state.inputs = preset.inputs;
+        state.preset = preset;
+        let dropped = self.forget_data();
+        self.fit_axes();
+        self.recompute();
+        let dropped = if dropped.is_empty() {
+            String::new()
+        } else {
+            format!("; dropped {dropped} (they were for the previous values; d loads again)")
+        };
+        self.info(format!("loaded preset {}{dropped}", self.preset_name()));
+    }
+
+    /// Forgets the measurements and FE results; says what went, as `25 measurements and the
+    /// CalculiX points` (empty when nothing was loaded).
+    fn forget_data(&mut self) -> String {
+        let measured = self.measurements.take().map(|m| {
+            format!(
+                "{} ({})",
+                crate::report::count_of(m.points.len(), "measurement"),
+                m.path
+            )
+        });
+        let external = self
+            .external
+            .take()
+            .map(|(points, _)| format!("the {} points", points.label));
+        [measured, external]
+            .into_iter()
+            .flatten()
+            .collect::<Vec<_>>()
+            .join(" and ")
+    }
+
+    /// `D`: drops the loaded measurements and FE results.
+    fn drop_data(&mut self) {
+        let dropped = self.forget_data();
+        if dropped.is_empty() {
+            return self.info("no loaded data to drop (d loads measurements or FE results)");
+        }
+        self.recompute();
+        self.info(format!("dropped {dropped}; d loads again"));
+    }
+
+    /// After the name of `s`: asks for the preset's description, prefilled with the loaded
+    /// preset's own when the name is the one it was loaded from, else with the default one.
+    fn ask_description(&mut self, name: String) {
+        if self.user_dir.is_none() {
+            return self.error(SaveError::NoDirectory.to_string());
+        }
+        let preset = &self.state().preset;
+        let description = if preset.name == name && !preset.description.is_empty() {
+            preset.description.clone()
+        } else {
+            self.default_description()
+        };
+        self.mode = Mode::SaveDescription {
+            name,
+            input: TextInput::prefilled(&description),
+        };
+    }
+
+    /// The description of a preset saved without one.
+    fn default_description(&self) -> String {
+        format!(
+            "Saved from the microslip TUI ({} model, from {})",
+            self.kind,
+            self.preset_name()
+        )
+    }
+
+    /// Tab in the command line: keys and command words at once, preset names through the disk.
+    fn complete_command(&mut self, input: TextInput) {
+        let text = input.as_str().to_string();
+        self.mode = Mode::Command { input };
+        if let Some(prefix) = super::command::completes_preset(&text) {
+            self.asked.push(Effect::CompletePreset {
+                prefix: prefix.to_string(),
+                text,
+                user_dir: self.user_dir.clone(),
+            });
+            return;
+        }
+        let (completed, names) = super::command::complete(&text, self.kind);
+        self.completed(&text, &completed, &names);
+    }
+
+    /// Enter in the command line.
+    fn run_command(&mut self, text: &str) {
+        use super::command::{Command, parse};
+        match parse(text) {
+            Err(e) => self.error(e),
+            Ok(Command::Set(assignments)) => self.set_values(&assignments),
+            Ok(Command::Preset(None)) => self.open_presets(),
+            Ok(Command::Preset(Some(name))) => self.asked.push(Effect::LoadPreset {
+                name,
+                user_dir: self.user_dir.clone(),
+            }),
+            Ok(Command::Save(None)) => {
+                self.mode = Mode::SaveName {
+                    input: TextInput::default(),
+                }
+            }
+            Ok(Command::Save(Some(name))) => self.ask_description(name),
+            Ok(Command::Export) => self.export_chart(),
+            Ok(Command::Drop) => self.drop_data(),
+            Ok(Command::Help) => {
+                self.help_page = 0;
+                self.mode = Mode::Help;
+            }
+            Ok(Command::Quit) => self.update_normal(Action::RequestQuit),
+        }
+    }
+
+    /// `:KT=250 mu=0.2`: every value set, or none (the first refusal is said, as `--set` says
+    /// it); one undo step.
+    fn set_values(&mut self, assignments: &[String]) {
+        let mut candidate = self.state().inputs;
+        for assignment in assignments {
+            if let Err(e) = preset::apply_assignment(&mut candidate, assignment) {
+                return self.error(format!("{assignment}: {e}; nothing changed"));
+            }
+        }
+        if let Err(e) = candidate.validate() {
+            return self.error(format!("{e}; nothing changed"));
+        }
+        let warnings: Vec<String> = self
+            .kind
+            .params()
+            .iter()
+            .filter(|&&p| candidate.get(p) != self.inputs().get(p))
+            .filter_map(|&p| p.unusual(candidate.get(p)?))
+            .collect();
+        let changed = self
+            .kind
+            .params()
+            .iter()
+            .filter(|&&p| candidate.get(p) != self.inputs().get(p))
+            .map(|&p| {
+                let unit = p.unit().symbol();
+                let unit = if unit == "-" || unit.is_empty() {
+                    String::new()
+                } else {
+                    format!(" {unit}")
+                };
+                format!("{p} = {}{unit}", number(candidate.get(p).unwrap_or(0.0)))
+            })
+            .collect::<Vec<_>>();
+        self.state_mut().inputs = candidate;
+        self.recompute();
+        if changed.is_empty() {
+            return self.info("those are the values already; nothing changed");
+        }
+        if warnings.is_empty() {
+            self.info(format!("set {} (u undoes)", changed.join(", ")));
+        } else {
+            self.error(format!(
+                "set {}, but {} (u undoes)",
+                changed.join(", "),
+                warnings.join("; ")
+            ));
+        }
+    }
+
     /// Asks to save the parameters as the user preset `name` (replacing one only if `overwrite`).
-    fn save(&mut self, name: String, overwrite: bool) {
+    fn save(&mut self, name: String, description: String, overwrite: bool) {
         let Some(dir) = self.user_dir.clone() else {
             self.error(SaveError::NoDirectory.to_string());
             return;
         };
-        let description = format!("Saved from the microslip TUI ({} model)", self.kind);
         let inputs = self.inputs();
         self.asked.push(Effect::SavePreset {
             dir,
@@ -1512,7 +1824,7 @@ impl App {
             }
             Err(SaveError::Exists(name)) => {
                 self.message = None;
-                self.mode = Mode::ConfirmOverwrite { name };
+                self.mode = Mode::ConfirmOverwrite { name, description };
             }
             Err(e) => self.error(e.to_string()),
         }
@@ -1539,6 +1851,7 @@ mod tests {
             preset: preset::resolve("paper-beams").unwrap(),
             user_dir: dir,
             data: None,
+            solve_continuum: false,
         })
     }
 
@@ -1864,7 +2177,7 @@ mod tests {
         for _ in 0..50 {
             app.update(Action::Next);
         }
-        let count = crate::tui::summary::summary_lines(&app.model().unwrap()).len();
+        let count = app.summary_lines().len();
         assert_eq!(app.mode(), &Mode::Explain { line: count - 1 });
         app.update(Action::Cancel);
         assert_eq!(app.mode(), &Mode::Normal);
@@ -2001,21 +2314,40 @@ mod tests {
         );
         press(&mut app, Action::Cancel);
         // Save, then save again under the same name: asked first; "no" keeps the file.
+        // Save: the name, then the description (prefilled; typing replaces it).
         press(&mut app, Action::SavePreset);
         typed(&mut app, "bench");
+        press(&mut app, Action::Commit);
+        let Mode::SaveDescription { input, .. } = app.mode() else {
+            panic!("{:?}", app.mode())
+        };
+        assert_eq!(
+            input.as_str(),
+            "Saved from the microslip TUI (beam model, from paper-beams-soft)"
+        );
+        typed(&mut app, "soft joint, \"rig 2\"");
         press(&mut app, Action::Commit);
         let path = dir.path().join("bench.toml");
         let saved = std::fs::read_to_string(&path).unwrap();
         assert!(saved.contains("KT = 120.0"));
+        let read = crate::preset::store::load(&path).unwrap();
+        assert_eq!(read.description, "soft joint, \"rig 2\"");
+        assert_eq!(app.state().preset.description, read.description);
+        // Saved again under its own name, the description offered is its own.
         press(&mut app, Action::IncreaseCoarse);
         press(&mut app, Action::SavePreset);
         typed(&mut app, "bench");
+        press(&mut app, Action::Commit);
+        assert!(
+            matches!(app.mode(), Mode::SaveDescription { input, .. } if input.as_str() == read.description)
+        );
         press(&mut app, Action::Commit);
         assert!(matches!(app.mode(), Mode::ConfirmOverwrite { .. }));
         press(&mut app, Action::Cancel);
         assert_eq!(std::fs::read_to_string(&path).unwrap(), saved);
         press(&mut app, Action::SavePreset);
         typed(&mut app, "bench");
+        press(&mut app, Action::Commit);
         press(&mut app, Action::Commit);
         press(&mut app, Action::Yes);
         assert!(
@@ -2143,6 +2475,7 @@ mod tests {
         assert!(csv.starts_with(b"series,x_axis,x,y_axis,y\n"));
         app.update(Action::SavePreset);
         typed(&mut app, "bench");
+        app.update(Action::Commit);
         let effects = app.update(Action::Commit);
         assert!(
             matches!(
@@ -2253,5 +2586,194 @@ mod tests {
         assert_eq!(app.mode(), &Mode::Normal);
         app.update(Action::Undo);
         assert_eq!(app.inputs(), before);
+    }
+
+    /// Types `text` on the command line and runs it (files read at once).
+    fn command(app: &mut App, text: &str) {
+        press(app, Action::CommandLine);
+        typed(app, text);
+        press(app, Action::Commit);
+    }
+
+    #[test]
+    fn the_command_line_sets_several_values_at_once_and_u_undoes_them_together() {
+        let mut app = app();
+        command(&mut app, "KT=250 mu=0.2,F=90");
+        assert_eq!(
+            (
+                app.inputs().get(KT),
+                app.inputs().get(MU),
+                app.inputs().get(F)
+            ),
+            (Some(250.0), Some(0.2), Some(90.0))
+        );
+        let said = &app.message().unwrap().text;
+        assert!(
+            said.contains("KT = 250 MPa/mm")
+                && said.contains("mu = 0.2")
+                && said.contains("F = 90 N"),
+            "{said}"
+        );
+        assert_eq!(app.history(), (1, 0));
+        press(&mut app, Action::Undo);
+        assert_eq!(app.inputs(), preset::paper(ModelKind::Beam).inputs);
+    }
+
+    #[test]
+    fn the_command_line_refuses_as_set_does_and_changes_nothing() {
+        let mut app = app();
+        let before = app.inputs();
+        for (typed_line, said) in [
+            ("KT=250 mu=abc", "mu=abc"),
+            ("KT=250 mu=-1", "mu"),
+            ("KT=250 tp=1", "unknown key 'tp' for the beam model"),
+            ("KT=250 mu", "'mu' is not KEY=VALUE"),
+            ("frobnicate", "unknown command 'frobnicate'"),
+        ] {
+            command(&mut app, typed_line);
+            let message = app.message().unwrap();
+            assert!(message.is_error, "{typed_line}: {message:?}");
+            assert!(
+                message.text.contains(said),
+                "{typed_line}: {}",
+                message.text
+            );
+            assert_eq!(app.inputs(), before, "{typed_line}");
+            assert_eq!(app.mode(), &Mode::Normal);
+        }
+        assert_eq!(app.history(), (0, 0));
+    }
+
+    #[test]
+    fn the_command_line_loads_presets_by_name_and_completes_keys_and_names() {
+        let mut app = app();
+        press(&mut app, Action::CommandLine);
+        typed(&mut app, "K");
+        press(&mut app, Action::Complete);
+        assert!(matches!(app.mode(), Mode::Command { input } if input.as_str() == "KT="));
+        press(&mut app, Action::Cancel);
+        press(&mut app, Action::CommandLine);
+        typed(&mut app, "preset paper-p");
+        press(&mut app, Action::Complete);
+        assert!(
+            matches!(app.mode(), Mode::Command { input } if input.as_str() == "preset paper-plate")
+        );
+        press(&mut app, Action::Commit);
+        assert_eq!(app.kind(), ModelKind::Plate);
+        assert_eq!(app.preset_name(), "paper-plate");
+        command(&mut app, "preset no-such");
+        let message = app.message().unwrap();
+        assert!(message.is_error && message.text.contains("no preset named 'no-such'"));
+        assert!(message.text.contains("paper-beams"), "{}", message.text);
+        command(&mut app, "help");
+        assert_eq!(app.mode(), &Mode::Help);
+    }
+
+    #[test]
+    fn loaded_data_go_with_d_and_with_another_preset() {
+        let mut app = app();
+        press(&mut app, Action::DropData);
+        assert!(app.message().unwrap().text.starts_with("no loaded data"));
+        let data = Measurements {
+            path: "m.csv".into(),
+            points: measured(),
+        };
+        app.measurements = Some(data.clone());
+        press(&mut app, Action::DropData);
+        assert_eq!(app.measurements(), None);
+        assert!(
+            app.message()
+                .unwrap()
+                .text
+                .contains("dropped 25 measurements (m.csv)"),
+            "{:?}",
+            app.message()
+        );
+        // Another preset: the data belonged to the previous bench.
+        app.measurements = Some(data);
+        command(&mut app, "preset paper-beams-soft");
+        assert_eq!(app.measurements(), None);
+        assert!(
+            app.message()
+                .unwrap()
+                .text
+                .contains("dropped 25 measurements")
+        );
+    }
+
+    #[test]
+    fn a_deck_s_values_adopted_drop_the_measurements_taken_at_other_values() {
+        let mut app = app();
+        app.measurements = Some(Measurements {
+            path: "m.csv".into(),
+            points: measured(),
+        });
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/data/calculix/paper-beams.dat"
+        );
+        press(&mut app, Action::LoadData);
+        typed(&mut app, path);
+        press(&mut app, Action::Commit);
+        assert_eq!(app.measurements(), None);
+        let said = &app.message().unwrap().text;
+        assert!(
+            said.contains("deck parameters adopted") && said.contains("dropped 25"),
+            "{said}"
+        );
+    }
+
+    #[test]
+    fn the_plate_s_continuum_u_is_solved_for_the_values_shown_and_a_late_answer_is_ignored() {
+        use crate::tui::summary::ContinuumState;
+        let mut app = App::new(AppOptions {
+            theme: Theme {
+                charset: Charset::Unicode,
+                color: true,
+            },
+            preset: preset::resolve("paper-plate").unwrap(),
+            user_dir: None,
+            data: None,
+            solve_continuum: true,
+        });
+        let asked = app.take_asked();
+        let [Effect::SolveContinuum { params }] = asked.as_slice() else {
+            panic!("{asked:?}")
+        };
+        assert_eq!(*params, crate::PlateParams::PAPER);
+        assert_eq!(app.continuum(), ContinuumState::Solving);
+        // A value changes before the answer comes: the answer is for values no longer shown.
+        let stale = crate::tui::effects::perform_blocking(asked[0].clone()).unwrap();
+        select(&mut app, "mu");
+        let effects = app.update(Action::IncreaseCoarse);
+        assert!(matches!(
+            effects.as_slice(),
+            [Effect::SolveContinuum { .. }]
+        ));
+        app.receive(stale);
+        assert_eq!(app.continuum(), ContinuumState::Solving);
+        for effect in effects {
+            let outcome = crate::tui::effects::perform_blocking(effect).unwrap();
+            app.receive(outcome);
+        }
+        let Some(Model::Plate(plate)) = app.model() else {
+            panic!()
+        };
+        let expected = crate::problems::plate::solve_plate_continuum(
+            plate.params(),
+            crate::problems::plate::ContinuumMesh::default(),
+        )
+        .unwrap()
+        .end_displacement_mean;
+        assert_eq!(app.continuum(), ContinuumState::Solved(expected));
+        let line = app
+            .summary_lines()
+            .into_iter()
+            .find(|l| l.text.starts_with("u(L) 2-D FE"))
+            .unwrap();
+        assert!(line.text.contains(" mm ("), "{}", line.text);
+        // The beams have none.
+        press(&mut app, Action::SwitchModel);
+        assert_eq!(app.continuum(), ContinuumState::Off);
     }
 }

@@ -75,6 +75,28 @@ pub enum Effect {
         /// The user preset directory, if any.
         user_dir: Option<PathBuf>,
     },
+    /// The plate's 2-D continuum at `params`, for the regime pane (on a worker in the loop: up to
+    /// a tenth of a second; a request made while one runs waits, and only the newest waits).
+    SolveContinuum {
+        /// The plate.
+        params: crate::PlateParams,
+    },
+    /// `:preset NAME`: read the preset `name` (bundled, in `user_dir`, or a path).
+    LoadPreset {
+        /// The name or path, as typed.
+        name: String,
+        /// The user preset directory, if any.
+        user_dir: Option<PathBuf>,
+    },
+    /// Tab after `:preset `: complete `prefix`, the end of `text`, among the preset names.
+    CompletePreset {
+        /// The command line's text.
+        text: String,
+        /// The part of it being completed.
+        prefix: String,
+        /// The user preset directory, if any.
+        user_dir: Option<PathBuf>,
+    },
     /// Tab in a prompt: complete the file name at the end of `text`.
     CompletePath {
         /// The prompt's text.
@@ -128,6 +150,20 @@ pub enum Outcome {
     },
     /// The presets to pick from.
     Presets(Vec<Listed>),
+    /// The continuum's thickness-mean u(L) (mm) at `params`, or why there is none.
+    Continuum {
+        /// The plate solved.
+        params: crate::PlateParams,
+        /// u(L), or the reason.
+        result: Result<f64, String>,
+    },
+    /// The preset of [`Effect::LoadPreset`], or why it cannot be loaded.
+    Preset {
+        /// The name or path, as typed.
+        name: String,
+        /// The preset, or the reason.
+        result: Result<preset::Preset, String>,
+    },
     /// A file name completed.
     Completed {
         /// The text completed (the completion applies only if the prompt still holds it).
@@ -213,6 +249,32 @@ pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
             path,
         },
         Effect::ListPresets { user_dir } => Outcome::Presets(preset::listing(user_dir.as_deref())),
+        Effect::SolveContinuum { params } => solve_continuum(params),
+        Effect::LoadPreset { name, user_dir } => Outcome::Preset {
+            result: load_preset(&name, user_dir.as_deref()),
+            name,
+        },
+        Effect::CompletePreset {
+            text,
+            prefix,
+            user_dir,
+        } => {
+            let mut names: Vec<String> = preset::listing(user_dir.as_deref())
+                .into_iter()
+                .filter(|listed| listed.preset.is_ok() && listed.name.starts_with(&prefix))
+                .map(|listed| listed.name)
+                .collect();
+            names.dedup();
+            let completed = match super::command::common_prefix(&names) {
+                Some(common) => format!("{}{common}", &text[..text.len() - prefix.len()]),
+                None => text.clone(),
+            };
+            Outcome::Completed {
+                text,
+                completed,
+                names,
+            }
+        }
         Effect::CompletePath { text } => {
             let (completed, names) = super::text_input::complete_path(&text);
             Outcome::Completed {
@@ -238,6 +300,38 @@ pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
         },
         Effect::CancelFit { .. } => return None,
     })
+}
+
+/// The outcome of [`Effect::SolveContinuum`].
+fn solve_continuum(params: crate::PlateParams) -> Outcome {
+    let result = crate::problems::plate::solve_plate_continuum(
+        params,
+        crate::problems::plate::ContinuumMesh::default(),
+    )
+    .map(|plate| plate.end_displacement_mean)
+    .map_err(|e| e.to_string());
+    Outcome::Continuum { params, result }
+}
+
+/// The preset `name` as the picker would load it: a path (with a `/` or ending in `.toml`), else a
+/// listed preset of that name (bundled first, then the user's; an invalid or shadowed file gives
+/// its problem).
+fn load_preset(name: &str, user_dir: Option<&std::path::Path>) -> Result<preset::Preset, String> {
+    if name.contains('/') || name.ends_with(".toml") {
+        return preset::store::load(std::path::Path::new(name)).map_err(|problems| {
+            problems
+                .first()
+                .map_or_else(|| "invalid preset".to_string(), ToString::to_string)
+        });
+    }
+    let listing = preset::listing(user_dir);
+    match listing.into_iter().find(|listed| listed.name == name) {
+        Some(listed) => listed.preset,
+        None => Err(format!(
+            "no preset named '{name}' (bundled: {}; p lists the user's too)",
+            preset::bundled_names().join(", ")
+        )),
+    }
 }
 
 /// Applies `action` and performs every effect it leads to before returning, the fit included:
@@ -316,12 +410,25 @@ pub struct Runner<M> {
     reports: Sender<M>,
     /// The fit running, if any, and its cancel flag.
     fit: Option<(u64, Arc<AtomicBool>)>,
+    /// True while a continuum solve runs; the newest request made meanwhile waits here (older
+    /// ones are dropped: a held arrow key asks for many, only the last values matter).
+    continuum: (bool, Option<crate::PlateParams>),
 }
 
 impl<M: From<Report> + Send + 'static> Runner<M> {
     /// A runner whose workers report through `reports`.
     pub fn new(reports: Sender<M>) -> Runner<M> {
-        Runner { reports, fit: None }
+        Runner {
+            reports,
+            fit: None,
+            continuum: (false, None),
+        }
+    }
+
+    /// Performs what the app asked for before any key (the continuum of a plate it opens on).
+    pub fn start(&mut self, app: &mut App) {
+        let effects = app.take_asked();
+        drive(app, effects, |effect| self.perform(effect));
     }
 
     /// Applies `action` and performs what it leads to (see [`Runner::perform`]).
@@ -335,6 +442,12 @@ impl<M: From<Report> + Send + 'static> Runner<M> {
     pub fn deliver(&mut self, app: &mut App, report: Report) {
         match report {
             Report::Outcome(outcome) => {
+                if matches!(outcome, Outcome::Continuum { .. }) {
+                    self.continuum.0 = false;
+                    if let Some(params) = self.continuum.1.take() {
+                        self.start_continuum(params);
+                    }
+                }
                 let effects = app.receive(outcome);
                 drive(app, effects, |effect| self.perform(effect));
             }
@@ -366,6 +479,14 @@ impl<M: From<Report> + Send + 'static> Runner<M> {
                 });
                 None
             }
+            Effect::SolveContinuum { params } => {
+                if self.continuum.0 {
+                    self.continuum.1 = Some(params);
+                } else {
+                    self.start_continuum(params);
+                }
+                None
+            }
             Effect::CancelFit { job } => {
                 if let Some((_, cancel)) = self.fit.take_if(|(running, _)| *running == job) {
                     cancel.store(true, Ordering::SeqCst);
@@ -374,6 +495,22 @@ impl<M: From<Report> + Send + 'static> Runner<M> {
             }
             effect => perform_blocking(effect),
         }
+    }
+}
+
+impl<M: From<Report> + Send + 'static> Runner<M> {
+    /// Solves the continuum on a worker thread, which reports its outcome (or its panic).
+    fn start_continuum(&mut self, params: crate::PlateParams) {
+        self.continuum.0 = true;
+        let reports = self.reports.clone();
+        std::thread::spawn(move || {
+            let report = match std::panic::catch_unwind(|| solve_continuum(params)) {
+                Ok(outcome) => Report::Outcome(outcome),
+                Err(payload) => Report::Panicked(payload),
+            };
+            // The loop has gone (the program is ending): nobody needs the report.
+            let _ = reports.send(M::from(report));
+        });
     }
 }
 
@@ -447,6 +584,7 @@ mod tests {
                 path: "line.csv".into(),
                 points,
             }),
+            solve_continuum: false,
         })
     }
 

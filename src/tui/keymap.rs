@@ -256,6 +256,24 @@ pub const BINDINGS: &[Binding] = &[
     ),
     bind(
         Context::Main,
+        &[(KeyCode::Char(':'), NONE), (KeyCode::Char(':'), SHIFT)],
+        Action::CommandLine,
+        "command line (KT=250)",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('D'), SHIFT), (KeyCode::Char('D'), NONE)],
+        Action::DropData,
+        "drop loaded data (d)",
+    ),
+    bind(
+        Context::Main,
+        &[(KeyCode::Char('M'), SHIFT), (KeyCode::Char('M'), NONE)],
+        Action::ShowMessage,
+        "read the whole message",
+    ),
+    bind(
+        Context::Main,
         &[(KeyCode::Char('x'), NONE)],
         Action::ExportChart,
         "export chart SVG+CSV",
@@ -382,7 +400,7 @@ pub const BINDINGS: &[Binding] = &[
         Context::TextEntry,
         &[(KeyCode::Tab, NONE)],
         Action::Complete,
-        "complete a file name",
+        "complete a name",
     ),
     bind(
         Context::Confirm,

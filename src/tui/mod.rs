@@ -19,6 +19,7 @@
 
 pub mod action;
 pub mod app;
+pub mod command;
 pub mod effects;
 pub mod keymap;
 mod signals;
@@ -120,12 +121,14 @@ pub fn run(
         preset,
         user_dir: preset::user_preset_dir(),
         data,
+        solve_continuum: true,
     });
     let signals = signals::Signals::install()?;
     let mut terminal = terminal::enter()?;
     let (sender, inputs) = mpsc::channel();
     spawn_reader(sender.clone());
     let mut runner = Runner::new(sender);
+    runner.start(&mut app);
     let result = event_loop(&mut terminal, &mut app, &mut runner, &signals, &inputs);
     // A SIGHUP sent by hand leaves a live terminal to restore; a closed one reports POLLHUP.
     let hung_up = terminal::hung_up();

@@ -49,8 +49,22 @@ fn regime_line(label: &str, regime: String, meaning: &'static str) -> SummaryLin
     }
 }
 
-/// The lines of the regime pane for `model`.
-pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
+/// Where the plate's 2-D continuum solution (the regime pane's best answer for u(L)) stands: it is
+/// solved on a worker, since it takes up to a tenth of a second.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ContinuumState {
+    /// Not asked for (the beams, or an app that does not solve it).
+    Off,
+    /// Asked for the current values, not there yet.
+    Solving,
+    /// The thickness-mean u(L) at the current values (mm).
+    Solved(f64),
+    /// Why there is none (out of the solver's range, no convergence).
+    Failed(String),
+}
+
+/// The lines of the regime pane for `model`; `continuum`: the plate's 2-D continuum u(L).
+pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLine> {
     const RATIO: &str =
         "regularized / Coulomb: 1.01 means 1 % more than under the plain Coulomb law";
     const SATURATION: &str = "mu P / K_T: the elastic slip at which the regularized law reaches the \
@@ -153,7 +167,7 @@ pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
                 Some(kt) => format!("macroslip K_T > {} MPa/mm", number(kt)),
                 None => "no macroslip at any K_T".into(),
             };
-            vec![
+            let mut lines = vec![
                 regime_line(
                     "Coulomb",
                     row.regime_coulomb.to_string(),
@@ -189,6 +203,28 @@ pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
                     "displacement of the free end under the regularized law",
                 ),
                 plain(format!("ratio to Coulomb {ratio}"), RATIO),
+            ];
+            let continuum_line = match continuum {
+                ContinuumState::Off => None,
+                ContinuumState::Solving => Some("u(L) 2-D FE: solving...".to_string()),
+                ContinuumState::Solved(u) if row.u_regularized > 0.0 => Some(format!(
+                    "u(L) 2-D FE {} mm ({:+.1} %)",
+                    number(*u),
+                    100.0 * (u / row.u_regularized - 1.0)
+                )),
+                ContinuumState::Solved(u) => Some(format!("u(L) 2-D FE {} mm", number(*u))),
+                ContinuumState::Failed(_) => Some("u(L) 2-D FE: none here (i)".to_string()),
+            };
+            lines.extend(continuum_line.map(|text| {
+                plain(
+                    text,
+                    "the project's plane-strain continuum FE (2-D, 4 layers, contact pressure \
+                     solved): u(L) averaged through the thickness, the best answer here; in % \
+                     against the strip theory's regularized u(L). None when K_T is too stiff \
+                     for it (alpha t_p > 20) or it does not converge",
+                )
+            }));
+            lines.extend([
                 plain(
                     format!(
                         "saturation slip {} um",
@@ -224,7 +260,8 @@ pub fn summary_lines(model: &Model) -> Vec<SummaryLine> {
                      says how far a 2-D continuum's thickness-mean u(L) differs (V1); the contact \
                      face and mid-thickness have their own bounds (microslip plate), X_r none",
                 ),
-            ]
+            ]);
+            lines
         }
     }
 }

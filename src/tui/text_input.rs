@@ -183,18 +183,10 @@ pub fn complete_path(text: &str) -> (String, Vec<String>) {
         })
         .collect();
     names.sort();
-    let Some(first) = names.first() else {
-        return (text.to_string(), names);
-    };
-    let common = names.iter().fold(first.clone(), |common, name| {
-        common
-            .chars()
-            .zip(name.chars())
-            .take_while(|(a, b)| a == b)
-            .map(|(a, _)| a)
-            .collect()
-    });
-    (format!("{dir}{common}"), names)
+    match super::command::common_prefix(&names) {
+        Some(common) => (format!("{dir}{common}"), names),
+        None => (text.to_string(), names),
+    }
 }
 
 #[cfg(test)]

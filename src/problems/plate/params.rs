@@ -49,7 +49,8 @@ impl PlateParam {
                 Domain::LENGTH,
                 FACTOR,
             )
-            .usual(0.1, 1e4),
+            .usual(0.1, 1e4)
+            .noted("half"),
             PlateParam::Thickness => spec(
                 "tp",
                 Unit::Millimetre,

@@ -25,8 +25,11 @@ pub fn draw(frame: &mut Frame, app: &App) {
     if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
         draw_too_small(frame, app, area);
     } else {
+        // The status takes the rows its message needs (up to a few), out of the panes above it,
+        // so that a long message never covers the chart's axes or the pane borders.
+        let status_rows = panes::status_rows(app, area.width, area.height);
         let [main, status] =
-            Layout::vertical([Constraint::Min(0), Constraint::Length(1)]).areas(area);
+            Layout::vertical([Constraint::Min(0), Constraint::Length(status_rows)]).areas(area);
         let left_width = if area.width >= 120 { 44 } else { 34 };
         let [left, right] =
             Layout::horizontal([Constraint::Length(left_width), Constraint::Min(0)]).areas(main);
@@ -59,7 +62,16 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 "CSV F_N,w_mm (a beam sweep's CSV too), KT_MPa_per_mm,u_mm (plate) or a \
                  CalculiX .dat; Tab completes, Enter load, Esc cancel",
             ),
-            Mode::ConfirmOverwrite { name } => overlay::draw_prompt(
+            Mode::SaveDescription { name, input } => overlay::draw_prompt(
+                frame,
+                app,
+                area,
+                &format!("Save preset {name}"),
+                &format!("Description: {}", input.shown()),
+                "one line, shown in the preset list; Enter save, Esc cancel",
+            ),
+            Mode::Message => overlay::draw_message(frame, app, area),
+            Mode::ConfirmOverwrite { name, .. } => overlay::draw_prompt(
                 frame,
                 app,
                 area,
@@ -98,7 +110,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 ),
             ),
             Mode::Explain { line } => overlay::draw_explanation(frame, app, area, *line),
-            Mode::Normal | Mode::Editing { .. } | Mode::Fitting { .. } => {}
+            Mode::Normal | Mode::Editing { .. } | Mode::Command { .. } | Mode::Fitting { .. } => {}
         }
     }
     if app.theme().charset == Charset::Ascii {

@@ -10,7 +10,7 @@ use crate::preset::Listed;
 use crate::report::sanitize;
 use crate::tui::app::App;
 use crate::tui::keymap::{BINDINGS, Context, GLOBAL_KEYS, context_title};
-use crate::tui::summary::{summary_lines, wrap_words};
+use crate::tui::summary::wrap_words;
 use crate::tui::theme::Role;
 
 /// A centred rectangle of at most `width` x `height` inside `area`.
@@ -77,6 +77,8 @@ pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
             key.to_ascii_uppercase()
         )));
     }
+    lines.push(Line::from(""));
+    lines.extend(COMMAND_HELP.iter().map(|l| Line::from(*l)));
     let rows = usize::from(inner.height.saturating_sub(1)).max(1);
     let columns: Vec<Vec<Line>> = lines.chunks(rows).map(<[Line]>::to_vec).collect();
     let pages = columns.len().div_ceil(2).max(1);
@@ -98,6 +100,19 @@ pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
         );
     }
 }
+
+/// The command line's words and the rule for loaded data, after the keys.
+const COMMAND_HELP: [&str; 9] = [
+    " Command line (:)",
+    " KT=250 mu=0.2  set values (one u)",
+    " preset NAME    load a preset",
+    " save NAME      save (asks description)",
+    " export  drop  help  q",
+    " Loaded data (d) stay until D,",
+    " until a preset is loaded, and",
+    " measurements until a deck's values",
+    " are adopted (d with a .dat).",
+];
 
 /// The preset list: bundled first, then the user's; invalid user files are listed with their problem,
 /// and a user file named like a bundled preset (which wins) with a warning.
@@ -160,17 +175,26 @@ pub fn draw_prompt(
     content: &str,
     hint: &str,
 ) {
-    // A long hint wraps onto more lines (the box grows) rather than being cut.
+    // A long hint wraps onto more lines (the box grows) rather than being cut; so does a long
+    // typed text (a path, a description), cut into rows of the box's width, its last rows shown
+    // (where the cursor usually is) when it is longer than the screen allows.
     let hint_lines = wrap_words(hint, 56);
-    let popup = centred(area, 60, 4 + hint_lines.len().max(1) as u16);
+    let content: Vec<char> = sanitize(content).chars().collect();
+    let room = usize::from(area.height.saturating_sub(6)).saturating_sub(hint_lines.len());
+    let content_rows: Vec<String> = content.chunks(57).map(|c| c.iter().collect()).collect();
+    let skip = content_rows.len().saturating_sub(room.max(1));
+    let content_rows = &content_rows[skip..];
+    let height = 3 + content_rows.len().max(1) + hint_lines.len().max(1);
+    let popup = centred(area, 60, height as u16);
     frame.render_widget(Clear, popup);
     let block = pane(app, title);
     let inner = block.inner(popup);
     frame.render_widget(block, popup);
-    let mut lines = vec![
-        Line::from(format!(" {}", sanitize(content))),
-        Line::from(""),
-    ];
+    let mut lines: Vec<Line> = content_rows
+        .iter()
+        .map(|row| Line::from(format!(" {row}")))
+        .collect();
+    lines.push(Line::from(""));
     lines.extend(hint_lines.into_iter().map(|h| {
         Line::from(Span::styled(
             format!(" {h}"),
@@ -180,11 +204,43 @@ pub fn draw_prompt(
     frame.render_widget(Paragraph::new(lines), inner);
 }
 
+/// The last status message, whole (`M`), wrapped in a box over the chart.
+pub fn draw_message(frame: &mut Frame, app: &App, area: Rect) {
+    let Some(message) = app.message() else { return };
+    let width = area.width.saturating_sub(4).min(100);
+    let mut body: Vec<Line> = message
+        .text
+        .split('\n')
+        .flat_map(|paragraph| wrap_words(&sanitize(paragraph), usize::from(width) - 4))
+        .map(|l| Line::from(format!(" {l}")))
+        .collect();
+    let room = usize::from(area.height.saturating_sub(6));
+    body.truncate(room.max(1));
+    body.push(Line::from(""));
+    body.push(Line::from(Span::styled(
+        " Esc closes",
+        app.theme().style(Role::Muted),
+    )));
+    let popup = centred(area, width, body.len() as u16 + 2);
+    frame.render_widget(Clear, popup);
+    let role = if message.is_error {
+        Role::Error
+    } else {
+        Role::Info
+    };
+    let block = pane(app, "Message");
+    let inner = block.inner(popup);
+    frame.render_widget(block, popup);
+    frame.render_widget(Paragraph::new(body).style(app.theme().style(role)), inner);
+}
+
 /// What one line of the regime pane means, in a box over the bottom of the chart; the line itself
 /// is highlighted in the pane.
 pub fn draw_explanation(frame: &mut Frame, app: &App, area: Rect, line: usize) {
-    let Some(model) = app.model() else { return };
-    let lines = summary_lines(&model);
+    if app.model().is_none() {
+        return;
+    }
+    let lines = app.summary_lines();
     let Some(chosen) = lines.get(line.min(lines.len().saturating_sub(1))) else {
         return;
     };

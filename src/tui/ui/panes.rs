@@ -4,14 +4,14 @@ use ratatui::Frame;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Borders, Clear, Paragraph};
+use ratatui::widgets::{Block, Borders, Paragraph};
 
 use crate::Inputs;
 use crate::kernel::params::Unit;
 use crate::problems::inputs::Model;
 use crate::report::{number, sanitize};
 use crate::tui::app::{App, Mode};
-use crate::tui::summary::{summary_lines, wrap_words};
+use crate::tui::summary::wrap_words;
 use crate::tui::theme::Role;
 use crate::tui::ui::strip::{self, StripSize};
 
@@ -51,6 +51,12 @@ pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
                 unit => unit.symbol(),
             };
             // `*`: edited, differs from the loaded preset (shown without colour too).
+            let note = param.spec().note;
+            let unit = if note.is_empty() {
+                unit.to_string()
+            } else {
+                format!("{unit} {note}")
+            };
             let text = format!(
                 "{}{}{:<3} {:>11} {:<7}",
                 if selected { ">" } else { " " },
@@ -80,7 +86,7 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
         frame.render_widget(Paragraph::new(lines).block(pane(app, "Regime")), area);
         return;
     };
-    let summary = summary_lines(&model);
+    let summary = app.summary_lines();
     // The beams' pane is full at 80x24: their envelope (V2) goes in the title.
     let title = match &model {
         Model::Beam { beams, force } => format!(
@@ -159,11 +165,38 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
     frame.render_widget(Paragraph::new(lines), inner);
 }
 
-/// Model, preset (with `*` when modified), the last message or the typing prompt, and the two keys
-/// everyone needs. A message too long for the line is not cut: the status grows upwards, over the
-/// bottom of the panes, to as many as [`STATUS_MAX_LINES`] lines, wrapped at spaces; only a message
-/// longer than that ends in `...`. It shrinks back with the next message.
+/// Model, preset (with `*` when modified), the last message, the command line or the typing
+/// prompt, and the two keys everyone needs. A message too long for one row takes more rows (the
+/// layout gives them, out of the panes above: see [`status_rows`]), wrapped at spaces; one longer
+/// than [`STATUS_MAX_LINES`] rows ends in `... M reads all`.
 pub fn draw_status(frame: &mut Frame, app: &App, area: Rect) {
+    let line = status_line(app);
+    let lines = wrap(
+        &line,
+        usize::from(area.width),
+        usize::from(area.height.max(1)),
+    );
+    frame.render_widget(Paragraph::new(lines), area);
+}
+
+/// The rows the status needs at this terminal size: one, or as many as its message takes when
+/// wrapped, up to [`STATUS_MAX_LINES`] (3 on a terminal of fewer than 30 rows, where the panes
+/// need every row).
+pub fn status_rows(app: &App, width: u16, height: u16) -> u16 {
+    let most = if height < 30 {
+        STATUS_MAX_LINES - 1
+    } else {
+        STATUS_MAX_LINES
+    };
+    let line = status_line(app);
+    if line.width() <= usize::from(width) {
+        return 1;
+    }
+    wrap(&line, usize::from(width), most).len() as u16
+}
+
+/// The status as one line, before wrapping.
+fn status_line(app: &App) -> Line<'static> {
     let theme = app.theme();
     let marker = if app.modified() { "*" } else { "" };
     let mut spans = vec![Span::styled(
@@ -171,6 +204,25 @@ pub fn draw_status(frame: &mut Frame, app: &App, area: Rect) {
         theme.style(Role::Title),
     )];
     match (app.mode(), app.message()) {
+        (Mode::Command { input }, message) => {
+            spans.push(Span::raw(format!(":{}", sanitize(&input.shown()))));
+            let hint = match message {
+                Some(message) => Span::styled(
+                    format!("  {}", sanitize(&message.text)),
+                    theme.style(if message.is_error {
+                        Role::Error
+                    } else {
+                        Role::Info
+                    }),
+                ),
+                None => Span::styled(
+                    "  KEY=VALUE ... | preset NAME | save NAME | export | drop | help | q; Tab \
+                     completes, Enter runs, Esc cancels",
+                    theme.style(Role::Muted),
+                ),
+            };
+            spans.push(hint);
+        }
         (Mode::Editing { .. }, None) => {
             let param = app.selected_param();
             spans.push(Span::raw(format!(
@@ -193,25 +245,14 @@ pub fn draw_status(frame: &mut Frame, app: &App, area: Rect) {
         }
         _ => spans.push(Span::styled("| ? help  q quit", theme.style(Role::Muted))),
     }
-    let line = Line::from(spans);
-    if line.width() <= usize::from(area.width) {
-        frame.render_widget(Paragraph::new(line), area);
-        return;
-    }
-    let room = usize::from(area.y).min(STATUS_MAX_LINES - 1) + 1;
-    let lines = wrap(&line, usize::from(area.width), room);
-    let height = lines.len() as u16;
-    let grown = Rect {
-        y: area.y + 1 - height,
-        height,
-        ..area
-    };
-    frame.render_widget(Clear, grown);
-    frame.render_widget(Paragraph::new(lines), grown);
+    Line::from(spans)
 }
 
 /// Most lines the status may take (the status row and the rows above it).
 pub const STATUS_MAX_LINES: usize = 4;
+
+/// What ends a status cut short.
+const CUT: &str = "... M reads all";
 
 /// `line` wrapped to `width` columns at spaces (a word longer than a line is broken), keeping each
 /// character's style; at most `max_lines` lines, the last ending in `...` when text was left out.
@@ -267,10 +308,12 @@ fn wrap(line: &Line, width: usize, max_lines: usize) -> Vec<Line<'static>> {
         rows.truncate(max_lines);
         if let Some(last) = rows.last_mut() {
             let style = last.last().map_or_else(Style::default, |c| c.1);
-            while !last.is_empty() && last.iter().map(cell_width).sum::<usize>() + 3 > width {
+            let cut = if width > CUT.len() + 8 { CUT } else { "..." };
+            while !last.is_empty() && last.iter().map(cell_width).sum::<usize>() + cut.len() > width
+            {
                 last.pop();
             }
-            last.extend(std::iter::repeat_n((".".to_string(), style), 3));
+            last.extend(cut.chars().map(|c| (c.to_string(), style)));
         }
     }
     rows.into_iter()
