@@ -150,6 +150,10 @@ pub enum Command {
         /// (plate) is within T of Coulomb (1% or 0.01), and each FE code's setting for it.
         #[arg(long, value_name = "T", conflicts_with_all = ["kn", "nu"], allow_hyphen_values = true)]
         tolerance: Option<String>,
+        /// With --tolerance: T of what. coulomb: of the Coulomb answer (K_T -> infinity);
+        /// current: of the current K_T's answer (the K_T interval around it).
+        #[arg(long, value_enum, value_name = "REF", default_value_t = ToleranceOf::Coulomb, requires = "tolerance")]
+        of: ToleranceOf,
         /// With --tolerance, beams: lowest tip force checked (N; default: the preset's F).
         #[arg(
             long,
@@ -564,6 +568,15 @@ pub enum FigureFormat {
     Csv,
 }
 
+/// What `kt --tolerance` is a tolerance of.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ToleranceOf {
+    /// Of the Coulomb answer (the K_T -> infinity limit): the smallest K_T within it.
+    Coulomb,
+    /// Of the current K_T's answer: the K_T interval around it.
+    Current,
+}
+
 /// clap's view of a library enum: each value with the key users type and its help line. The
 /// library's own types carry no clap derive (the library compiles without clap, and what a
 /// command line accepts is this layer's business), so each lists its values here.
@@ -941,11 +954,19 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             element_size,
             tolerance: Some(tolerance),
+            of,
             from,
             to,
             format,
             ..
-        }) => run_kt_tolerance(out, inputs, *element_size, tolerance, [*from, *to], *format)?,
+        }) => run_kt_tolerance(
+            out,
+            inputs,
+            *element_size,
+            (tolerance, *of),
+            [*from, *to],
+            *format,
+        )?,
         Some(Command::Kt {
             inputs,
             element_size,
@@ -1707,7 +1728,7 @@ fn run_kt_tolerance(
     out: &mut impl Write,
     inputs: &InputArgs,
     element: Option<f64>,
-    tolerance: &str,
+    (tolerance, of): (&str, ToleranceOf),
     [from, to]: [Option<f64>; 2],
     format: ReportFormat,
 ) -> Result<(), CliError> {
@@ -1733,8 +1754,15 @@ fn run_kt_tolerance(
                     ),
                 });
             }
-            tolerance::beam_stiffness_for_tolerance(&beams, range, tol, element)
-                .map_err(|e| CliError::Invalid(e.to_string()))?
+            match of {
+                ToleranceOf::Coulomb => {
+                    tolerance::beam_stiffness_for_tolerance(&beams, range, tol, element)
+                }
+                ToleranceOf::Current => {
+                    tolerance::beam_stiffness_near_current(&beams, range, tol, element)
+                }
+            }
+            .map_err(|e| CliError::Invalid(e.to_string()))?
         }
         Model::Plate(plate) => {
             if from.is_some() || to.is_some() {
@@ -1742,8 +1770,15 @@ fn run_kt_tolerance(
                     "--from/--to are tip forces of the twin beams; the plate has none",
                 ));
             }
-            tolerance::plate_stiffness_for_tolerance(&plate, tol, element)
-                .map_err(|e| CliError::Invalid(e.to_string()))?
+            match of {
+                ToleranceOf::Coulomb => {
+                    tolerance::plate_stiffness_for_tolerance(&plate, tol, element)
+                }
+                ToleranceOf::Current => {
+                    tolerance::plate_stiffness_near_current(&plate, tol, element)
+                }
+            }
+            .map_err(|e| CliError::Invalid(e.to_string()))?
         }
     };
     match format {

@@ -1886,3 +1886,37 @@ fn plot_pins_draw_the_chart_at_other_values_over_the_same_range() {
     let error = failure(&[&["plot", "w-vs-f"], five.as_slice()].concat(), 2);
     assert!(error.contains("at most 4"), "{error}");
 }
+
+#[test]
+fn kt_says_what_its_tolerance_is_of_and_offers_the_other_reading() {
+    let text = stdout_of(&["kt", "--tolerance", "1%"]);
+    assert!(
+        text.contains("1 % of the Coulomb answer") && text.contains("--of current"),
+        "{text}"
+    );
+    let text = stdout_of(&["kt", "--tolerance", "0.1%", "--of", "current"]);
+    assert!(
+        text.contains("within 0.1 % of the current K_T's (600 MPa/mm)") && text.contains(" to "),
+        "{text}"
+    );
+    let said = failure(&["kt", "--of", "current"], 2);
+    assert!(said.contains("--tolerance"), "{said}");
+    // The table says how far each candidate's w(L) is from the current K_T's.
+    // Abaqus's default, 30 MPa/mm here, against the paper's 600, from the closed forms:
+    let w = |kt: f64| {
+        microslip::TwinBeams::new(microslip::TwinBeamsParams {
+            tangential_stiffness: kt,
+            ..microslip::TwinBeamsParams::PAPER
+        })
+        .unwrap()
+        .regularized(microslip::TipForce::new(100.0).unwrap())
+        .tip_deflection()
+    };
+    let expected = format!("+{:.1} %", 100.0 * (w(30.0) / w(600.0) - 1.0));
+    let table = stdout_of(&["kt"]);
+    let abaqus = table.lines().find(|l| l.starts_with("Abaqus")).unwrap();
+    assert!(
+        table.contains("vs current") && abaqus.contains(&expected),
+        "{expected}: {table}"
+    );
+}

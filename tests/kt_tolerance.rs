@@ -4,8 +4,8 @@
 
 use microslip::problems::{BeamParam, PlateParam};
 use microslip::study::tolerance::{
-    Threshold, ToleranceError, beam_stiffness_for_tolerance, parse_tolerance,
-    plate_stiffness_for_tolerance,
+    Threshold, ToleranceError, beam_stiffness_for_tolerance, beam_stiffness_near_current,
+    parse_tolerance, plate_stiffness_for_tolerance, plate_stiffness_near_current,
 };
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
@@ -197,4 +197,74 @@ fn limits_and_refusals() {
     for bad in ["", "%", "abc", "0", "-1%", "nan", "2000%"] {
         assert!(parse_tolerance(bad).is_err(), "{bad}");
     }
+}
+
+/// The other reading (`--of current`): the K_T whose answer is within T of the current K_T's form
+/// one interval around it; its ends are checked with the closed forms at both stiffnesses, just
+/// inside and just outside.
+#[test]
+fn within_t_of_the_current_answer_is_an_interval_around_the_current_k_t() {
+    let w = |kt: f64, f: f64| {
+        paper_beams()
+            .with_tangential_stiffness(kt)
+            .unwrap()
+            .regularized(TipForce::new(f).unwrap())
+            .tip_deflection()
+    };
+    // At 100 N Coulomb is 0.515 % below K_T = 600's answer: within 1 %, every stiffer K_T is.
+    let answer = beam_stiffness_near_current(&paper_beams(), [100.0, 100.0], 0.01, 2.0).unwrap();
+    let near = answer.near_current.unwrap();
+    assert_eq!(near.upper, None);
+    let lo = found(answer.threshold);
+    let off = |kt: f64| w(kt, 100.0) / w(600.0, 100.0) - 1.0;
+    assert!((off(lo) - 0.01).abs() < 1e-7, "{lo}: {}", off(lo));
+    assert!(off(lo * 0.999) > 0.01 && off(lo * 1.001) < 0.01);
+    assert!(lo < 423.0, "looser than 1 % of Coulomb: {lo}");
+    assert!((near.coulomb + 0.00515).abs() < 1e-4, "{}", near.coulomb);
+    // Within 0.1 %: bounded above too, and the upper end is where w falls 0.1 % below.
+    let answer = beam_stiffness_near_current(&paper_beams(), [100.0, 100.0], 0.001, 2.0).unwrap();
+    let (lo, hi) = (
+        found(answer.threshold),
+        answer.near_current.unwrap().upper.unwrap(),
+    );
+    assert!(lo < 600.0 && 600.0 < hi, "{lo} {hi}");
+    assert!((off(lo) - 0.001).abs() < 1e-8 && (off(hi) + 0.001).abs() < 1e-8);
+    assert!(off(hi * 1.01) < -0.001 && off(hi * 0.99) > -0.001);
+    // Over a force range, every force must be within: the interval is narrower than at either end.
+    let range = beam_stiffness_near_current(&paper_beams(), [40.0, 200.0], 0.001, 2.0).unwrap();
+    let at = |f: f64| {
+        let a = beam_stiffness_near_current(&paper_beams(), [f, f], 0.001, 2.0).unwrap();
+        (
+            found(a.threshold),
+            a.near_current.unwrap().upper.unwrap_or(f64::INFINITY),
+        )
+    };
+    let (lo_range, hi_range) = (
+        found(range.threshold),
+        range.near_current.unwrap().upper.unwrap_or(f64::INFINITY),
+    );
+    for f in [40.0, 100.0, 200.0] {
+        let (lo_f, hi_f) = at(f);
+        assert!(
+            lo_range >= lo_f * (1.0 - 1e-9) && hi_range <= hi_f * (1.0 + 1e-9),
+            "{f}"
+        );
+    }
+    // The plate: both ends where u(L) is 5 % above and below the current answer.
+    let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
+    let u = |kt: f64| {
+        plate
+            .with_tangential_stiffness(kt)
+            .unwrap()
+            .regularized()
+            .end_displacement()
+    };
+    let answer = plate_stiffness_near_current(&plate, 0.05, 0.1).unwrap();
+    let (lo, hi) = (
+        found(answer.threshold),
+        answer.near_current.unwrap().upper.unwrap(),
+    );
+    let current = u(PlateParams::PAPER.tangential_stiffness);
+    assert!((u(lo) / current - 1.05).abs() < 1e-7, "{lo}");
+    assert!((u(hi) / current - 0.95).abs() < 1e-7, "{hi}");
 }

@@ -192,12 +192,14 @@ const KT_BEAM: &[&str] = &[
     "candidates[].X_mm: number",
     "candidates[].regime: string",
     "candidates[].w_tip_mm: number",
+    "candidates[].vs_current_percent: number",
 ];
 
 const KT_PLATE: &[&str] = &[
     "candidates[].Xr_mm: number",
     "candidates[].regime: string",
     "candidates[].u_end_mm: number",
+    "candidates[].vs_current_percent: number",
 ];
 
 /// A candidate the model refuses (a K_T out of range).
@@ -208,9 +210,16 @@ const TOLERANCE: &[&str] = &[
     "current_KT_MPa_per_mm: number",
     "current_deviation: number",
     "note: string",
+    "of: string",
     "preset: string",
     "tolerance: number",
 ];
+
+/// The tolerance of Coulomb (the default reading): no upper end.
+const TOLERANCE_OF_COULOMB: &[&str] = &["KT_max_MPa_per_mm: null", "coulomb_vs_current: null"];
+
+/// The tolerance of the current K_T's answer (`--of current`): an interval.
+const TOLERANCE_OF_CURRENT: &[&str] = &["KT_max_MPa_per_mm: number", "coulomb_vs_current: number"];
 
 /// A K_T within the tolerance, and each code's setting for it.
 const TOLERANCE_FOUND: &[&str] = &[
@@ -518,21 +527,57 @@ const CASES: &[Case] = &[
         name: "kt-tolerance-beam",
         args: &["kt", "--tolerance", "1%", "--from", "0", "--to", "300"],
         formats: TEXT_JSON,
-        keys: &[TOLERANCE, TOLERANCE_FOUND, TOLERANCE_BEAM],
+        keys: &[
+            TOLERANCE,
+            TOLERANCE_OF_COULOMB,
+            TOLERANCE_FOUND,
+            TOLERANCE_BEAM,
+        ],
         header: None,
     },
     Case {
         name: "kt-tolerance-everywhere",
         args: &["kt", "--tolerance", "1000%"],
         formats: TEXT_JSON,
-        keys: &[TOLERANCE, TOLERANCE_FOUND, TOLERANCE_BEAM],
+        keys: &[
+            TOLERANCE,
+            TOLERANCE_OF_COULOMB,
+            TOLERANCE_FOUND,
+            TOLERANCE_BEAM,
+        ],
         header: None,
     },
     Case {
         name: "kt-tolerance-plate",
         args: &["kt", "--tolerance", "1%", "--preset", "paper-plate"],
         formats: TEXT_JSON,
-        keys: &[TOLERANCE, TOLERANCE_FOUND, TOLERANCE_PLATE],
+        keys: &[
+            TOLERANCE,
+            TOLERANCE_OF_COULOMB,
+            TOLERANCE_FOUND,
+            TOLERANCE_PLATE,
+        ],
+        header: None,
+    },
+    // The other reading: within 5 % of the current K_T's answer, an interval.
+    Case {
+        name: "kt-tolerance-current",
+        args: &[
+            "kt",
+            "--tolerance",
+            "5%",
+            "--of",
+            "current",
+            "--preset",
+            "paper-plate",
+        ],
+        formats: TEXT_JSON,
+        keys: &[
+            TOLERANCE,
+            TOLERANCE_OF_CURRENT,
+            TOLERANCE_FOUND,
+            TOLERANCE_PLATE,
+        ],
         header: None,
     },
     // No accepted K_T is within: KT_min is null.
@@ -540,7 +585,12 @@ const CASES: &[Case] = &[
         name: "kt-tolerance-nowhere",
         args: &["kt", "--tolerance", "1e-7", "--preset", "paper-plate"],
         formats: TEXT_JSON,
-        keys: &[TOLERANCE, TOLERANCE_NOWHERE, TOLERANCE_PLATE],
+        keys: &[
+            TOLERANCE,
+            TOLERANCE_OF_COULOMB,
+            TOLERANCE_NOWHERE,
+            TOLERANCE_PLATE,
+        ],
         header: None,
     },
     // Captured with equal weights, the default before issue 25 (5): `--weights absolute` keeps

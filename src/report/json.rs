@@ -120,6 +120,9 @@ pub fn tolerance(preset: &str, answer: &crate::study::tolerance::ToleranceAnswer
         "current_KT_MPa_per_mm": answer.current.0,
         "current_deviation": answer.current.1,
         "codes": settings,
+        "of": if answer.near_current.is_some() { "current" } else { "coulomb" },
+        "KT_max_MPa_per_mm": answer.near_current.and_then(|n| n.upper),
+        "coulomb_vs_current": answer.near_current.map(|n| n.coulomb),
     })
 }
 

@@ -150,7 +150,7 @@ pub fn tolerance(
     model: &Model,
     answer: &crate::study::tolerance::ToleranceAnswer,
 ) -> String {
-    use crate::study::tolerance::{Setting, Threshold};
+    use crate::study::tolerance::Threshold;
     let preset = sanitize(preset);
     let tol = percent_of(answer.tolerance);
     let mut out = String::new();
@@ -165,11 +165,50 @@ pub fn tolerance(
         ),
         _ => ("u(L)", "at the plate's pressure".to_string(), "(P10)"),
     };
+    let (kt, deviation) = answer.current;
+    if let Some(near) = answer.near_current {
+        let _ = writeln!(
+            out,
+            "K_T for which the regularized {quantity} is within {tol} of the current K_T's ({} MPa/mm) {over}, preset {preset}:",
+            number(kt)
+        );
+        let lower = match answer.threshold {
+            Threshold::Stiffness(k) => format!("from {} MPa/mm", number_with(k, 4)),
+            Threshold::Everywhere(k) => format!("from the softest accepted, {} MPa/mm,", number(k)),
+            // Never: the current K_T itself is within.
+            Threshold::Nowhere { .. } => "from the current K_T".to_string(),
+        };
+        let _ = match near.upper {
+            None => writeln!(
+                out,
+                "  {lower} to any stiffer K_T (Coulomb itself is {} off the current answer)",
+                percent_of(near.coulomb)
+            ),
+            Some(upper) => writeln!(
+                out,
+                "  {lower} to {} MPa/mm (stiffer ones come closer to Coulomb, {} off the current answer)",
+                number_with(upper, 4),
+                percent_of(near.coulomb)
+            ),
+        };
+        let _ = writeln!(
+            out,
+            "  (the answer never grows with K_T, docs/theory.md {why}: every K_T between is within too; \
+             the current K_T is {} off Coulomb)",
+            percent_of(deviation)
+        );
+        code_settings_text(&mut out, answer, "the interval's lower end");
+        return out;
+    }
     let _ = writeln!(
         out,
         "Smallest K_T for which the regularized {quantity} is within {tol} of Coulomb {over}, preset {preset}:"
     );
-    let (kt, deviation) = answer.current;
+    let _ = writeln!(
+        out,
+        "  ({tol} of the Coulomb answer, the K_T -> infinity limit; for {tol} of the current K_T's \
+         answer: --of current)"
+    );
     let verdict = if deviation <= answer.tolerance {
         "within"
     } else {
@@ -208,8 +247,19 @@ pub fn tolerance(
         out,
         "  (the deviation never grows with K_T, docs/theory.md {why}: every stiffer K_T is within too)"
     );
+    code_settings_text(&mut out, answer, "it");
+    out
+}
+
+/// Each FE code's setting for at least the K_T `answer` needs (`what`: the K_T named so).
+fn code_settings_text(
+    out: &mut String,
+    answer: &crate::study::tolerance::ToleranceAnswer,
+    what: &str,
+) {
+    use crate::study::tolerance::Setting;
     let Some(first) = answer.settings.first() else {
-        return out;
+        return;
     };
     let element = match first.needed {
         Setting::SlipTolerance { element, .. } => element,
@@ -217,7 +267,7 @@ pub fn tolerance(
     };
     let _ = writeln!(
         out,
-        "\nIn each FE code's own setting (contact faces {} mm; --element-size sets another):",
+        "\nIn each FE code's own setting for {what} (contact faces {} mm; --element-size sets another):",
         number(element)
     );
     for s in &answer.settings {
@@ -246,12 +296,22 @@ pub fn tolerance(
         };
         let default = match s.default {
             Some((k, true)) => format!("; its default ({} MPa/mm) is enough", number_with(k, 3)),
+            Some((k, false))
+                if answer
+                    .near_current
+                    .and_then(|n| n.upper)
+                    .is_some_and(|upper| k > upper) =>
+            {
+                format!(
+                    "; its default ({} MPa/mm) is NOT: above the interval",
+                    number_with(k, 3)
+                )
+            }
             Some((k, false)) => format!("; its default ({} MPa/mm) is NOT", number_with(k, 3)),
             None => String::new(),
         };
         let _ = writeln!(out, "  {:<16} {needed}{default}", s.code.code);
     }
-    out
 }
 
 #[cfg(test)]

@@ -723,6 +723,18 @@ pub enum Answer {
     },
 }
 
+impl Answer {
+    /// The displacement the benchmark compares: the beams' w(L), the plate's u(L) (mm).
+    pub fn response(&self) -> f64 {
+        match *self {
+            Answer::Beam { tip_deflection, .. } => tip_deflection,
+            Answer::Plate {
+                end_displacement, ..
+            } => end_displacement,
+        }
+    }
+}
+
 /// One row of the K_T comparison: the candidate and, when it has a valid K_T, its answer.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ComparedStiffness {
@@ -730,6 +742,10 @@ pub struct ComparedStiffness {
     pub candidate: StiffnessCandidate,
     /// What it does to the model.
     pub answer: Option<Answer>,
+    /// How far its w(L) (beams) or u(L) (plate) is from the current K_T's (fraction: +0.6 is 60 %
+    /// more): what an FE model with this K_T gets wrong when the model's K_T is the interface's
+    /// true one. None without an answer, or when the current answer is zero (no load).
+    pub off_current: Option<f64>,
 }
 
 /// The K_T values worth comparing for one model and what each does to the answer: computed once,
@@ -821,11 +837,18 @@ pub fn compare_stiffnesses(
         source: CandidateSource::Code(code),
         kt: code.implied_stiffness(data.friction, data.pressure, data.modulus, element),
     }));
+    let current = answer_for_stiffness(model, data.stiffness)
+        .map(|a| a.response())
+        .filter(|r| *r != 0.0);
     let rows = candidates
         .into_iter()
-        .map(|candidate| ComparedStiffness {
-            candidate,
-            answer: candidate.kt.and_then(|kt| answer_for_stiffness(model, kt)),
+        .map(|candidate| {
+            let answer = candidate.kt.and_then(|kt| answer_for_stiffness(model, kt));
+            ComparedStiffness {
+                candidate,
+                answer,
+                off_current: answer.zip(current).map(|(a, c)| a.response() / c - 1.0),
+            }
         })
         .collect();
     StiffnessComparison {
@@ -1207,7 +1230,36 @@ mod tests {
         ));
         for row in &table.rows {
             assert_eq!(row.answer.is_some(), row.candidate.kt.is_some());
+            assert_eq!(row.off_current.is_some(), row.answer.is_some());
         }
+        // How far off each candidate is: its w(L) over the current K_T's, from the beams solved
+        // at both stiffnesses here; 0 for the current row, above for softer, below for stiffer.
+        let Model::Beam { beams, force } = model else {
+            panic!()
+        };
+        let w = |kt: f64| {
+            beams
+                .with_tangential_stiffness(kt)
+                .unwrap()
+                .regularized(force)
+                .tip_deflection()
+        };
+        for row in &table.rows {
+            let (Some(kt), Some(off)) = (row.candidate.kt, row.off_current) else {
+                continue;
+            };
+            let expected = w(kt) / w(600.0) - 1.0;
+            assert!((off - expected).abs() < 1e-12, "{kt}: {off} vs {expected}");
+            assert_eq!(off > 0.0, kt < 600.0, "{kt}: {off}");
+        }
+        assert_eq!(table.rows[0].off_current, Some(0.0));
+        // No load, no displacement to compare against: nothing is said.
+        let unloaded = Model::Beam {
+            beams,
+            force: crate::TipForce::new(0.0).unwrap(),
+        };
+        let table = compare_stiffnesses(&unloaded, 2.0, None);
+        assert!(table.rows.iter().all(|r| r.off_current.is_none()));
     }
 
     #[test]

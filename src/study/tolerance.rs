@@ -64,6 +64,23 @@ pub struct ToleranceAnswer {
     pub current: (f64, f64),
     /// What the threshold means in each FE code's setting.
     pub settings: Vec<CodeSetting>,
+    /// The other reading, when asked for ([`beam_stiffness_near_current`]): the tolerance is of
+    /// the current K_T's answer, not of Coulomb's; `threshold` is then the interval's lower end.
+    pub near_current: Option<NearCurrent>,
+}
+
+/// The K_T interval whose answer stays within the tolerance of the current K_T's (the reading
+/// "within 1 % of what my model gives", beside "within 1 % of Coulomb").
+///
+/// The answer does not increase with K_T (T1, P10), so its ratio to the current K_T's answer,
+/// minus 1, falls through 0 at the current K_T: the K_T within the tolerance form one interval
+/// around it, found by one bracketed root on each side.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NearCurrent {
+    /// The largest K_T within (MPa/mm); None: every stiffer one, up to Coulomb, is within.
+    pub upper: Option<f64>,
+    /// Coulomb's answer against the current K_T's, worst over the forces (fraction, <= 0).
+    pub coulomb: f64,
 }
 
 /// One FE code's setting that gives at least the K_T needed.
@@ -224,7 +241,123 @@ pub fn beam_stiffness_for_tolerance(
             p.youngs_modulus,
             element,
         ),
+        near_current: None,
     })
+}
+
+/// The twin beams, the other reading: the K_T for which the regularized w(L) stays within
+/// `tolerance` (fraction) of the current K_T's at every tip force in `[from, to]` (N). The lower
+/// end is the answer's `threshold` (with the codes' settings for it), the upper end in
+/// `near_current`.
+///
+/// # Errors
+/// As [`beam_stiffness_for_tolerance`].
+pub fn beam_stiffness_near_current(
+    beams: &TwinBeams,
+    range: [f64; 2],
+    tolerance: f64,
+    element: f64,
+) -> Result<ToleranceAnswer, ToleranceError> {
+    let answer = beam_stiffness_for_tolerance(beams, range, tolerance, element)?;
+    let [from, to] = answer.forces.unwrap_or(range);
+    let forces = force_grid(beams, [from, to]);
+    let w = |beams: &TwinBeams, f: TipForce| beams.regularized(f).tip_deflection();
+    let current: Vec<f64> = forces.iter().map(|&f| w(beams, f)).collect();
+    // Each force's w(L) at K_T over the current's, minus 1: (highest, lowest) over the forces.
+    let ratios = |kt: f64| {
+        let at = beams.with_tangential_stiffness(kt).unwrap_or(*beams);
+        forces
+            .iter()
+            .zip(&current)
+            .map(|(&f, c)| w(&at, f) / c - 1.0)
+            .fold((f64::NEG_INFINITY, f64::INFINITY), |(hi, lo), r| {
+                (hi.max(r), lo.min(r))
+            })
+    };
+    let coulomb = forces
+        .iter()
+        .zip(&current)
+        .map(|(&f, c)| beams.coulomb(f).tip_deflection() / c - 1.0)
+        .fold(f64::INFINITY, f64::min);
+    let domain = BeamParam::Stiffness.spec().domain;
+    let p = beams.params();
+    let material = ((p.friction * p.pressure, p.youngs_modulus), element);
+    Ok(near_current(
+        answer,
+        material,
+        domain,
+        coulomb,
+        |kt| ratios(kt).0,
+        |kt| -ratios(kt).1,
+    ))
+}
+
+/// The plate, the other reading (see [`beam_stiffness_near_current`]).
+///
+/// # Errors
+/// As [`plate_stiffness_for_tolerance`].
+pub fn plate_stiffness_near_current(
+    plate: &SqueezedPlate,
+    tolerance: f64,
+    element: f64,
+) -> Result<ToleranceAnswer, ToleranceError> {
+    let answer = plate_stiffness_for_tolerance(plate, tolerance, element)?;
+    let current = plate.regularized().end_displacement();
+    let ratio = |kt: f64| {
+        plate
+            .with_clamped(PlateParam::Stiffness, kt)
+            .regularized()
+            .end_displacement()
+            / current
+            - 1.0
+    };
+    let coulomb = plate.coulomb().end_displacement() / current - 1.0;
+    let domain = PlateParam::Stiffness.spec().domain;
+    let p = plate.params();
+    let material = ((p.friction * p.pressure, p.youngs_modulus), element);
+    Ok(near_current(
+        answer,
+        material,
+        domain,
+        coulomb,
+        ratio,
+        |kt| -ratio(kt),
+    ))
+}
+
+/// `answer` re-read against the current K_T: `above(K)` (non-increasing, 0 at the current K_T)
+/// is how far over the current answer K_T's goes, `below(K)` (non-decreasing) how far under.
+fn near_current(
+    answer: ToleranceAnswer,
+    (material, element): ((f64, f64), f64),
+    domain: Domain,
+    coulomb: f64,
+    above: impl Fn(f64) -> f64,
+    below: impl Fn(f64) -> f64,
+) -> ToleranceAnswer {
+    let tolerance = answer.tolerance;
+    let (kt, hi) = (answer.current.0, domain.max());
+    let threshold = smallest_within(domain, tolerance, above);
+    let upper = if below(hi) <= tolerance {
+        None
+    } else {
+        let misfit = |ln_k: f64| below(ln_k.exp()) / tolerance - 1.0;
+        Some(find_root_in_bracket(misfit, kt.ln(), hi.ln()).exp())
+    };
+    let (mu_p, modulus) = material;
+    let mut settings = code_settings(threshold, mu_p, modulus, element);
+    // A default stiffer than the interval's upper end misses it too.
+    for setting in &mut settings {
+        if let (Some((k, enough)), Some(upper)) = (&mut setting.default, upper) {
+            *enough &= *k <= upper;
+        }
+    }
+    ToleranceAnswer {
+        threshold,
+        settings,
+        near_current: Some(NearCurrent { upper, coulomb }),
+        ..answer
+    }
 }
 
 /// The plate: the smallest K_T for which the regularized u(L) is within `tolerance` (fraction) of
@@ -252,6 +385,7 @@ pub fn plate_stiffness_for_tolerance(
             p.youngs_modulus,
             element,
         ),
+        near_current: None,
     })
 }
 

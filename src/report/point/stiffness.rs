@@ -41,6 +41,10 @@ pub struct CandidateReport {
     /// The answer's fields beside the candidate's; none without a K_T.
     #[serde(flatten)]
     pub answer: Option<CandidateAnswer>,
+    /// Its w(L) or u(L) against the current K_T's, in % (0 for the current row); left out without
+    /// an answer.
+    #[serde(rename = "vs_current_percent", skip_serializing_if = "Option::is_none")]
+    pub vs_current: Option<f64>,
 }
 
 /// What a candidate K_T does to the answer, or why it was not evaluated.
@@ -123,6 +127,7 @@ impl From<&ComparedStiffness> for CandidateReport {
             basis: candidate_basis(&row.candidate.source),
             kt,
             answer,
+            vs_current: row.off_current.map(|f| 100.0 * f),
         }
     }
 }
@@ -156,8 +161,14 @@ impl StiffnessReport {
                 );
                 let _ = writeln!(
                     out,
-                    "{:<16} {:>12} {:>10} {:>10} {:>11}  {:<20} basis",
-                    "source", "K_T (MPa/mm)", "F_1 (N)", "X (mm)", "w(L) (mm)", "regime"
+                    "{:<16} {:>12} {:>10} {:>10} {:>11} {:>10}  {:<20} basis",
+                    "source",
+                    "K_T (MPa/mm)",
+                    "F_1 (N)",
+                    "X (mm)",
+                    "w(L) (mm)",
+                    "vs current",
+                    "regime"
                 );
             }
             None => {
@@ -167,8 +178,8 @@ impl StiffnessReport {
                 );
                 let _ = writeln!(
                     out,
-                    "{:<16} {:>12} {:>12} {:>10}  {:<20} basis",
-                    "source", "K_T (MPa/mm)", "u(L) (mm)", "X_r (mm)", "regime"
+                    "{:<16} {:>12} {:>12} {:>10} {:>10}  {:<20} basis",
+                    "source", "K_T (MPa/mm)", "u(L) (mm)", "vs current", "X_r (mm)", "regime"
                 );
             }
         }
@@ -176,6 +187,14 @@ impl StiffnessReport {
             let (source, basis) = (row.source, &row.basis);
             let kt = row.kt.map_or("-".to_string(), number);
             // A candidate without an answer: no K_T at all, or one the model refuses.
+            let off = row.vs_current.map_or("-".to_string(), |p| {
+                if p == 0.0 {
+                    "0 %".to_string()
+                } else {
+                    let sign = if p > 0.0 { "+" } else { "" };
+                    format!("{sign}{} %", crate::report::number_with(p, 3))
+                }
+            });
             let unanswered = if row.kt.is_some() {
                 "K_T out of range"
             } else {
@@ -192,10 +211,11 @@ impl StiffnessReport {
                     _,
                 ) => writeln!(
                     out,
-                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11}  {:<20} {basis}",
+                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10}  {:<20} {basis}",
                     number(*first_macroslip_force),
                     number(*micro_end),
                     number(*tip_deflection),
+                    off,
                     regime.label(),
                 ),
                 (
@@ -207,20 +227,21 @@ impl StiffnessReport {
                     _,
                 ) => writeln!(
                     out,
-                    "{source:<16} {kt:>12} {:>12} {:>10}  {:<20} {basis}",
+                    "{source:<16} {kt:>12} {:>12} {:>10} {:>10}  {:<20} {basis}",
                     number(*end_displacement),
+                    off,
                     number(*micro_end),
                     regime.label(),
                 ),
                 (_, Some(_)) => writeln!(
                     out,
-                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11}  {unanswered:<20} {basis}",
-                    "-", "-", "-",
+                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10}  {unanswered:<20} {basis}",
+                    "-", "-", "-", "-",
                 ),
                 (_, None) => writeln!(
                     out,
-                    "{source:<16} {kt:>12} {:>12} {:>10}  {unanswered:<20} {basis}",
-                    "-", "-",
+                    "{source:<16} {kt:>12} {:>12} {:>10} {:>10}  {unanswered:<20} {basis}",
+                    "-", "-", "-",
                 ),
             };
         }
@@ -238,6 +259,12 @@ impl StiffnessReport {
                 stiffness.domain.describe(stiffness.unit)
             );
         }
+        let quantity = if self.force.is_some() { "w(L)" } else { "u(L)" };
+        let _ = writeln!(
+            out,
+            "vs current: each K_T's {quantity} against the current K_T's, in % (what an FE model \
+             with that K_T gets wrong if the current K_T is the interface's true one)."
+        );
         let _ = writeln!(
             out,
             "Elastic-slip defaults scale like mu P / element length: halve the elements, double K_T."
