@@ -193,8 +193,8 @@ pub fn tolerance(
         };
         let _ = writeln!(
             out,
-            "  (the answer never grows with K_T, docs/theory.md {why}: every K_T between is within too; \
-             the current K_T is {} off Coulomb)",
+            "  (the answer never grows with K_T, docs/theory.md {why} and (T4): every K_T between is \
+             within too; the current K_T is {} off Coulomb)",
             percent_of(deviation)
         );
         code_settings_text(&mut out, answer, "the interval's lower end");

@@ -235,6 +235,8 @@ pub struct App {
     y_modes: Vec<(Option<AnyChart>, YMode)>,
     /// See [`AppOptions::solve_continuum`].
     solve_continuum: bool,
+    /// Why the force axis was just fitted again, added to the action's message when it is done.
+    axis_note: Option<String>,
     /// The plate's continuum solution, for the values it was solved at (the last asked for, with
     /// None until it comes).
     continuum: Option<(PlateParams, Option<Result<f64, String>>)>,
@@ -282,6 +284,7 @@ impl App {
             y_modes: Vec::new(),
             solve_continuum: options.solve_continuum,
             continuum: None,
+            axis_note: None,
         };
         app.fit_axes();
         app.recompute();
@@ -557,8 +560,40 @@ impl App {
         self.asked.push(Effect::SolveContinuum { params });
     }
 
+    /// The beams' force axis, kept while values change so that the curves can be compared, is
+    /// fitted again (3 F_thre) when F_thre, where the Coulomb regime changes, leaves it or is
+    /// squeezed into its first twelfth (a geometry, mu or P changed by a large factor); the status
+    /// says so. K_T does not move F_thre: dragging it never rescales.
+    fn follow_threshold(&mut self) {
+        let (Some(span), Ok(Model::Beam { beams, .. })) =
+            (self.force_span, self.beam.inputs.validate())
+        else {
+            return;
+        };
+        let threshold = beams.threshold_force();
+        if threshold <= span && threshold >= span / 12.0 {
+            return;
+        }
+        self.force_span = Some(3.0 * threshold);
+        let note = format!(
+            "F axis rescaled to 0-{} N: F_thre = {} N {} the old 0-{} N",
+            number(3.0 * threshold),
+            number(threshold),
+            if threshold > span {
+                "is beyond"
+            } else {
+                "was squeezed into the start of"
+            },
+            number(span)
+        );
+        if self.kind == ModelKind::Beam {
+            self.axis_note = Some(note);
+        }
+    }
+
     /// Rebuilds the chart (and the finite-element points when shown) after any change.
     fn recompute(&mut self) {
+        self.follow_threshold();
         self.ask_continuum();
         let Some(model) = self.model() else { return };
         if self.show_numeric {
@@ -757,6 +792,12 @@ impl App {
     fn applying(&mut self, undoable: bool, change: impl FnOnce(&mut App)) -> Vec<Effect> {
         let before = self.snapshot();
         change(self);
+        if let Some(note) = self.axis_note.take() {
+            match &mut self.message {
+                Some(message) => message.text = format!("{}; {note}", message.text),
+                None => self.info(note),
+            }
+        }
         let after = self.snapshot();
         let changed = before.beam != after.beam || before.plate != after.plate;
         if changed && undoable {
@@ -2775,5 +2816,47 @@ mod tests {
         // The beams have none.
         press(&mut app, Action::SwitchModel);
         assert_eq!(app.continuum(), ContinuumState::Off);
+    }
+
+    #[test]
+    fn the_force_axis_follows_f_thre_when_it_leaves_the_axis_and_says_so() {
+        let mut app = app();
+        let right = |app: &App| app.plot().x.bounds[1];
+        assert!(
+            (right(&app) - 240.0).abs() < 1e-9,
+            "3 F_thre of the paper's beams"
+        );
+        // K_T does not move F_thre: the axis stays while it is dragged.
+        select(&mut app, "KT");
+        for _ in 0..5 {
+            press(&mut app, Action::DecreaseCoarse);
+        }
+        assert!((right(&app) - 240.0).abs() < 1e-9);
+        // P x 8: F_thre = 640 N, beyond the axis: fitted again, and said.
+        command(&mut app, "P=8");
+        let threshold = match app.model() {
+            Some(Model::Beam { beams, .. }) => beams.threshold_force(),
+            _ => panic!(),
+        };
+        assert!((threshold - 640.0).abs() < 1e-9);
+        assert!(
+            (right(&app) - 3.0 * threshold).abs() < 1e-9,
+            "{}",
+            right(&app)
+        );
+        let said = &app.message().unwrap().text;
+        assert!(
+            said.contains("set P = 8 MPa") && said.contains("F axis rescaled to 0-1920 N"),
+            "{said}"
+        );
+        // Down by 40: F_thre = 16 N, squeezed into the start of 0-1920 N (F lowered too: the
+        // axis always reaches 1.25 F to show the current force).
+        command(&mut app, "P=0.2 F=10");
+        assert!((right(&app) - 48.0).abs() < 1e-9, "{}", right(&app));
+        assert!(app.message().unwrap().text.contains("squeezed"));
+        // A factor inside the band keeps the axis (and says nothing of it).
+        command(&mut app, "P=0.3");
+        assert!((right(&app) - 48.0).abs() < 1e-9);
+        assert!(!app.message().unwrap().text.contains("rescaled"));
     }
 }
