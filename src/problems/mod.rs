@@ -199,7 +199,7 @@ impl Param {
             format!(
                 "{} = {}{unit} is far outside the usual range [{}, {}]{unit}: check the value",
                 self.name(),
-                Compact(value),
+                crate::kernel::format::number(value),
                 Compact(low),
                 Compact(high)
             )

@@ -3,7 +3,7 @@
 
 use crate::problems::inputs::Model;
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
-use crate::report::number;
+use crate::report::{number, number_with};
 use crate::study::curves::{beam_point, plate_point};
 
 /// One line of the regime pane: its text (a regime line has a label and a styled value) and what
@@ -207,12 +207,16 @@ pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLi
             let continuum_line = match continuum {
                 ContinuumState::Off => None,
                 ContinuumState::Solving => Some("u(L) 2-D FE: solving...".to_string()),
-                ContinuumState::Solved(u) if row.u_regularized > 0.0 => Some(format!(
-                    "u(L) 2-D FE {} mm ({:+.1} %)",
-                    number(*u),
-                    100.0 * (u / row.u_regularized - 1.0)
-                )),
-                ContinuumState::Solved(u) => Some(format!("u(L) 2-D FE {} mm", number(*u))),
+                // Three digits and a whole percent above 10 %: the line fits the 80-column pane.
+                ContinuumState::Solved(u) if row.u_regularized > 0.0 => {
+                    let off = 100.0 * (u / row.u_regularized - 1.0);
+                    let digits = if off.abs() >= 10.0 { 0 } else { 1 };
+                    Some(format!(
+                        "u(L) 2-D FE {} mm ({off:+.digits$} %)",
+                        number_with(*u, 3)
+                    ))
+                }
+                ContinuumState::Solved(u) => Some(format!("u(L) 2-D FE {} mm", number_with(*u, 3))),
                 ContinuumState::Failed(_) => Some("u(L) 2-D FE: none here (i)".to_string()),
             };
             lines.extend(continuum_line.map(|text| {
