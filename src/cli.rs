@@ -1781,9 +1781,10 @@ fn run_kt_tolerance(
             .map_err(|e| CliError::Invalid(e.to_string()))?
         }
     };
+    let report = crate::report::point::tolerance::ToleranceReport::new(&name, &answer);
     match format {
-        ReportFormat::Text => out.write_all(text::tolerance(&name, &model, &answer).as_bytes())?,
-        ReportFormat::Json => write_json(out, &json::tolerance(&name, &answer))?,
+        ReportFormat::Text => out.write_all(report.text().as_bytes())?,
+        ReportFormat::Json => write_json(out, &crate::report::point::to_json(&report))?,
     }
     Ok(())
 }

@@ -1,6 +1,6 @@
 //! JSON reports of single points, with unit-suffixed names (`w_tip_mm`, `KT_MPa_per_mm`): beam,
 //! plate, cycle, K_T candidates, fit and solve serialize their [`super::point`] types, which the
-//! text reports render too; `kt --tolerance` is still built here. Tables (sweeps) are serialized
+//! text reports render too, `kt --tolerance` too ([`super::point::tolerance`]). Tables (sweeps) are serialized
 //! from [`super::rows`] instead.
 
 use serde_json::Value;
@@ -73,57 +73,6 @@ pub fn solved(
     solved: &crate::study::target::Solved,
 ) -> Value {
     to_json(&SolveReport::new(preset, kind, solved))
-}
-
-/// `microslip kt --tolerance` as JSON.
-pub fn tolerance(preset: &str, answer: &crate::study::tolerance::ToleranceAnswer) -> Value {
-    use crate::study::tolerance::{Setting, Threshold};
-    let (threshold, note) = match answer.threshold {
-        Threshold::Stiffness(k) => (Some(k), "smallest K_T within the tolerance"),
-        Threshold::Everywhere(k) => (Some(k), "every accepted K_T is within the tolerance"),
-        Threshold::Nowhere { .. } => (None, "no accepted K_T is within the tolerance"),
-    };
-    let settings: Vec<Value> = answer
-        .settings
-        .iter()
-        .map(|s| {
-            let mut object = serde_json::json!({
-                "code": s.code.code,
-                "default_KT_MPa_per_mm": s.default.map(|d| d.0),
-                "default_enough": s.default.map(|d| d.1),
-            });
-            match s.needed {
-                Setting::SlipTolerance {
-                    fraction,
-                    element,
-                    slip,
-                    element_max,
-                } => {
-                    object["slip_tolerance_max"] = fraction.into();
-                    object["element_size_mm"] = element.into();
-                    object["elastic_slip_max_mm"] = slip.into();
-                    object["element_size_max_mm_with_default"] = element_max.into();
-                }
-                Setting::StickSlope(k) => object["stick_slope_min_MPa_per_mm"] = k.into(),
-                Setting::ElementSize(h) => object["h_min_max_mm"] = h.into(),
-                Setting::Stiffness(k) => object["stiffness_min_MPa_per_mm"] = k.into(),
-            }
-            object
-        })
-        .collect();
-    serde_json::json!({
-        "preset": preset,
-        "tolerance": answer.tolerance,
-        "force_range_N": answer.forces,
-        "KT_min_MPa_per_mm": threshold,
-        "note": note,
-        "current_KT_MPa_per_mm": answer.current.0,
-        "current_deviation": answer.current.1,
-        "codes": settings,
-        "of": if answer.near_current.is_some() { "current" } else { "coulomb" },
-        "KT_max_MPa_per_mm": answer.near_current.and_then(|n| n.upper),
-        "coulomb_vs_current": answer.near_current.map(|n| n.coulomb),
-    })
 }
 
 #[cfg(test)]

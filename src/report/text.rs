@@ -1,8 +1,6 @@
 //! Readable single-point reports. Beam, plate, cycle, K_T candidates, fit and solve render their
-//! [`super::point`] types (the same values their JSON serializes); `kt --tolerance` and the
-//! progress lines are still built here from the library's results.
-
-use std::fmt::Write;
+//! [`super::point`] types (the same values their JSON serializes), `kt --tolerance` too
+//! ([`super::point::tolerance`]); the progress lines are built here from the library's results.
 
 use super::point::beam::BeamReport;
 use super::point::cycle::CycleReport;
@@ -10,9 +8,7 @@ use super::point::fit::FitReport;
 use super::point::plate::PlateReport;
 use super::point::solve::SolveReport;
 use super::point::stiffness::StiffnessReport;
-use super::{number, number_with, sanitize};
 use crate::numeric::NumericError;
-use crate::problems::inputs::Model;
 use crate::problems::plate::ContinuumPlate;
 use crate::study::curves::StiffnessComparison;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
@@ -127,191 +123,6 @@ pub fn solved(
     solved: &crate::study::target::Solved,
 ) -> String {
     SolveReport::new(preset, kind, solved).text()
-}
-
-/// A percentage for people: `1 %`, `0.517 %`.
-fn percent_of(fraction: f64) -> String {
-    format!("{} %", number_with(100.0 * fraction, 3))
-}
-
-/// The name of a code's slip-tolerance setting, read from its description (`SLIP TOLERANCE`,
-/// `SLTO`): the words before the default's number.
-fn setting_name(description: &str) -> &str {
-    description
-        .split(|c: char| c.is_ascii_digit())
-        .next()
-        .unwrap_or(description)
-        .trim()
-}
-
-/// `microslip kt --tolerance`: the smallest K_T within the tolerance, and each code's setting for it.
-pub fn tolerance(
-    preset: &str,
-    model: &Model,
-    answer: &crate::study::tolerance::ToleranceAnswer,
-) -> String {
-    use crate::study::tolerance::Threshold;
-    let preset = sanitize(preset);
-    let tol = percent_of(answer.tolerance);
-    let mut out = String::new();
-    let (quantity, over, why) = match (model, answer.forces) {
-        (Model::Beam { .. }, Some([from, to])) if from == to => {
-            ("w(L)", format!("at F = {} N", number(to)), "(T1)")
-        }
-        (Model::Beam { .. }, Some([from, to])) => (
-            "w(L)",
-            format!("at every F from {} to {} N", number(from), number(to)),
-            "(T1)",
-        ),
-        _ => ("u(L)", "at the plate's pressure".to_string(), "(P10)"),
-    };
-    let (kt, deviation) = answer.current;
-    if let Some(near) = answer.near_current {
-        let _ = writeln!(
-            out,
-            "K_T for which the regularized {quantity} is within {tol} of the current K_T's ({} MPa/mm) {over}, preset {preset}:",
-            number(kt)
-        );
-        let lower = match answer.threshold {
-            Threshold::Stiffness(k) => format!("from {} MPa/mm", number_with(k, 4)),
-            Threshold::Everywhere(k) => format!("from the softest accepted, {} MPa/mm,", number(k)),
-            // Never: the current K_T itself is within.
-            Threshold::Nowhere { .. } => "from the current K_T".to_string(),
-        };
-        let _ = match near.upper {
-            None => writeln!(
-                out,
-                "  {lower} to any stiffer K_T (Coulomb itself is {} off the current answer)",
-                percent_of(near.coulomb)
-            ),
-            Some(upper) => writeln!(
-                out,
-                "  {lower} to {} MPa/mm (stiffer ones come closer to Coulomb, {} off the current answer)",
-                number_with(upper, 4),
-                percent_of(near.coulomb)
-            ),
-        };
-        let _ = writeln!(
-            out,
-            "  (the answer never grows with K_T, docs/theory.md {why} and (T4): every K_T between is \
-             within too; the current K_T is {} off Coulomb)",
-            percent_of(deviation)
-        );
-        code_settings_text(&mut out, answer, "the interval's lower end");
-        return out;
-    }
-    let _ = writeln!(
-        out,
-        "Smallest K_T for which the regularized {quantity} is within {tol} of Coulomb {over}, preset {preset}:"
-    );
-    let _ = writeln!(
-        out,
-        "  ({tol} of the Coulomb answer, the K_T -> infinity limit; for {tol} of the current K_T's \
-         answer: --of current)"
-    );
-    let verdict = if deviation <= answer.tolerance {
-        "within"
-    } else {
-        "outside"
-    };
-    match answer.threshold {
-        Threshold::Stiffness(k) => {
-            let _ = writeln!(out, "  K_T >= {} MPa/mm", number_with(k, 4));
-        }
-        Threshold::Everywhere(k) => {
-            let _ = writeln!(
-                out,
-                "  any accepted K_T (from {} MPa/mm): even the softest is within {tol}",
-                number(k)
-            );
-        }
-        Threshold::Nowhere {
-            stiffness,
-            deviation,
-        } => {
-            let _ = writeln!(
-                out,
-                "  none: even K_T = {} MPa/mm is {} off Coulomb",
-                number(stiffness),
-                percent_of(deviation)
-            );
-        }
-    }
-    let _ = writeln!(
-        out,
-        "  the current K_T = {} MPa/mm is {} off Coulomb: {verdict}",
-        number(kt),
-        percent_of(deviation)
-    );
-    let _ = writeln!(
-        out,
-        "  (the deviation never grows with K_T, docs/theory.md {why}: every stiffer K_T is within too)"
-    );
-    code_settings_text(&mut out, answer, "it");
-    out
-}
-
-/// Each FE code's setting for at least the K_T `answer` needs (`what`: the K_T named so).
-fn code_settings_text(
-    out: &mut String,
-    answer: &crate::study::tolerance::ToleranceAnswer,
-    what: &str,
-) {
-    use crate::study::tolerance::Setting;
-    let Some(first) = answer.settings.first() else {
-        return;
-    };
-    let element = match first.needed {
-        Setting::SlipTolerance { element, .. } => element,
-        _ => f64::NAN,
-    };
-    let _ = writeln!(
-        out,
-        "\nIn each FE code's own setting for {what} (contact faces {} mm; --element-size sets another):",
-        number(element)
-    );
-    for s in &answer.settings {
-        let needed = match s.needed {
-            Setting::SlipTolerance {
-                fraction,
-                slip,
-                element_max,
-                ..
-            } => format!(
-                "{} <= {} (elastic slip <= {} mm), or faces <= {} mm with the default",
-                setting_name(s.code.description),
-                number_with(fraction, 3),
-                number_with(slip, 3),
-                number_with(element_max, 3)
-            ),
-            Setting::StickSlope(k) => {
-                format!("stick slope lambda >= {} MPa/mm", number_with(k, 3))
-            }
-            Setting::ElementSize(h) => {
-                format!("smallest contact element h_min <= {} mm", number_with(h, 3))
-            }
-            Setting::Stiffness(k) => {
-                format!("give a friction stiffness >= {} MPa/mm", number_with(k, 3))
-            }
-        };
-        let default = match s.default {
-            Some((k, true)) => format!("; its default ({} MPa/mm) is enough", number_with(k, 3)),
-            Some((k, false))
-                if answer
-                    .near_current
-                    .and_then(|n| n.upper)
-                    .is_some_and(|upper| k > upper) =>
-            {
-                format!(
-                    "; its default ({} MPa/mm) is NOT: above the interval",
-                    number_with(k, 3)
-                )
-            }
-            Some((k, false)) => format!("; its default ({} MPa/mm) is NOT", number_with(k, 3)),
-            None => String::new(),
-        };
-        let _ = writeln!(out, "  {:<16} {needed}{default}", s.code.code);
-    }
 }
 
 #[cfg(test)]

@@ -14,6 +14,7 @@ pub mod fit;
 pub mod plate;
 pub mod solve;
 pub mod stiffness;
+pub mod tolerance;
 
 use std::fmt::Write;
 
