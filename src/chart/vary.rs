@@ -3,7 +3,7 @@
 //! [`crate::study::curves::response_vs_param`]; axes and series from [`super`].
 
 use super::{Plot, cursor, line, linear_axis, log_axis, max_y, samples};
-use crate::kernel::params::{Domain, Step};
+use crate::kernel::params::{Domain, Scale};
 use crate::problems::inputs::Model;
 use crate::problems::{BeamParam, Param};
 use crate::study::curves::{Spacing, response_vs_param};
@@ -14,14 +14,14 @@ use crate::study::curves::{Spacing, response_vs_param};
 fn range(model: &Model, param: Param, value: f64) -> (f64, f64, bool) {
     let spec = param.spec();
     let domain = spec.domain;
-    match spec.step {
-        Step::Factor { .. } => {
+    match spec.scale {
+        Scale::Factor { .. } => {
             let lo = domain.clamp(value / 10.0);
             let hi = domain.clamp(value * 10.0);
             (lo, hi, true)
         }
-        Step::Add { min, max, .. } => (min, max, false),
-        Step::FractionOfScale { .. } => {
+        Scale::Add { min, max, .. } => (min, max, false),
+        Scale::FractionOfScale { .. } => {
             let scale = match (model, param) {
                 (Model::Beam { beams, .. }, Param::Beam(BeamParam::Force)) => {
                     beams.threshold_force()

@@ -377,21 +377,21 @@ mod tests {
 
     #[test]
     fn steps_move_both_ways_and_respect_their_bounds() {
-        let kt = BeamParam::Stiffness.spec().step;
-        assert!((kt.apply(600.0, true, true, 0.0) / 600.0 - 10f64.powf(0.25)).abs() < 1e-12);
-        assert!((kt.apply(600.0, false, false, 0.0) - 600.0 / 1.02).abs() < 1e-12);
-        let nu = PlateParam::Poisson.spec().step;
-        assert_eq!(nu.apply(0.49, true, true, 0.0), 0.499);
-        assert_eq!(nu.apply(0.01, false, true, 0.0), 0.0);
-        let force = BeamParam::Force.spec().step;
-        assert!((force.apply(100.0, true, false, 80.0) - 100.8).abs() < 1e-12);
-        assert_eq!(force.apply(1.0, false, true, 80.0), 0.0);
+        let kt = BeamParam::Stiffness.spec().scale;
+        assert!((kt.step(600.0, true, true, 0.0) / 600.0 - 10f64.powf(0.25)).abs() < 1e-12);
+        assert!((kt.step(600.0, false, false, 0.0) - 600.0 / 1.02).abs() < 1e-12);
+        let nu = PlateParam::Poisson.spec().scale;
+        assert_eq!(nu.step(0.49, true, true, 0.0), 0.499);
+        assert_eq!(nu.step(0.01, false, true, 0.0), 0.0);
+        let force = BeamParam::Force.spec().scale;
+        assert!((force.step(100.0, true, false, 80.0) - 100.8).abs() < 1e-12);
+        assert_eq!(force.step(1.0, false, true, 80.0), 0.0);
         for kind in ModelKind::ALL {
             for &param in kind.params() {
                 let spec = param.spec();
                 assert!(
                     spec.domain
-                        .contains(spec.step.apply(1e-3, false, true, 1.0))
+                        .contains(spec.scale.step(1e-3, false, true, 1.0))
                 );
             }
         }

@@ -1575,7 +1575,7 @@ impl App {
         };
         // A step stops at the edge of the accepted domain rather than being refused there.
         let spec = param.spec();
-        let next = spec.domain.clamp(spec.step.apply(value, up, coarse, scale));
+        let next = spec.domain.clamp(spec.scale.step(value, up, coarse, scale));
         self.set_value(param, next);
     }
 

@@ -4,7 +4,7 @@ use std::fmt;
 use std::str::FromStr;
 
 use crate::kernel::params::{
-    Domain, FACTOR, FRICTION, MODULUS, POISSON, ParamError, ParamSpec, STIFFNESS, Step, Unit, spec,
+    Domain, FACTOR, FRICTION, MODULUS, POISSON, ParamError, ParamSpec, STIFFNESS, Scale, Unit, spec,
 };
 use crate::problems::{ModelKind, Param, UnknownParam};
 
@@ -80,7 +80,7 @@ impl BeamParam {
                 Unit::Newton,
                 "tip force on each beam",
                 Domain::FORCE,
-                Step::FractionOfScale {
+                Scale::FractionOfScale {
                     fine: 0.01,
                     coarse: 0.1,
                 },
