@@ -85,6 +85,11 @@ pub fn strip_validity_short(v: &crate::problems::plate::validity::PlateValidity)
         Validity::Approximate => format!("mean approx. (~{} %)", percent_of(e)),
         Validity::Outside => format!("mean OUTSIDE (>{} %)", 100.0 * Validity::APPROXIMATE),
         Validity::NotCalibrated => "not calibrated".to_string(),
+        Validity::MeasuredWrong => format!(
+            "mean WRONG (>{} %)",
+            v.measured_at_least
+                .map_or_else(|| "-".to_string(), |e| number_with(100.0 * e, 2))
+        ),
     }
 }
 
