@@ -6,21 +6,45 @@
 //!
 //! ```text
 //! cargo run --release --example v1_calibration --no-default-features
+//! cargo run --release --example v1_calibration --no-default-features -- --measured-wrong
+//! cargo run --release --example v1_calibration --no-default-features -- --hold-out
 //! ```
+//!
+//! `--measured-wrong` runs the grid that drew the region (V1c) where the strip theory is measured
+//! wrong (alpha t_p from 0.55 to 20, short slip zones); `--hold-out` the plates that test it
+//! (every value off both grids).
 
 use microslip::problems::plate::continuum::{ContinuumMesh, solve_plate_continuum};
 use microslip::{PlateParams, SqueezedPlate};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let ratios = [0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 2.0, 3.5];
-    let poissons = [0.05, 0.2, 0.3, 0.45, 0.49];
-    let frictions = [0.05, 0.1, 0.3, 1.0];
-    let slenderness = [0.005, 0.02, 0.1];
+    let mode = std::env::args().nth(1).unwrap_or_default();
+    let (ratios, poissons, frictions, slenderness): (&[f64], &[f64], &[f64], &[f64]) =
+        match mode.as_str() {
+            "--measured-wrong" => (
+                &[0.55, 0.6, 0.7, 0.85, 1.0, 1.5, 2.0, 3.0, 5.0, 10.0, 20.0],
+                &[0.05, 0.2, 0.3, 0.45, 0.49],
+                &[0.02, 0.05, 0.1, 0.3, 1.0, 3.0, 10.0],
+                &[0.005, 0.02, 0.1, 0.3],
+            ),
+            "--hold-out" => (
+                &[0.58, 0.65, 0.8, 1.3, 2.6, 6.0, 14.0],
+                &[0.15, 0.35, 0.47],
+                &[0.03, 0.2, 0.6, 2.0],
+                &[0.01, 0.05, 0.2],
+            ),
+            _ => (
+                &[0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 2.0, 3.5],
+                &[0.05, 0.2, 0.3, 0.45, 0.49],
+                &[0.05, 0.1, 0.3, 1.0],
+                &[0.005, 0.02, 0.1],
+            ),
+        };
     println!("alpha_tp,nu,mu,tp_over_L,slip_over_tp,err_mean,err_face,err_mid,err_slip_length");
-    for &ratio in &ratios {
-        for &nu in &poissons {
-            for &mu in &frictions {
-                for &t_over_l in &slenderness {
+    for &ratio in ratios {
+        for &nu in poissons {
+            for &mu in frictions {
+                for &t_over_l in slenderness {
                     let thickness = 0.2;
                     let youngs = 70_000.0;
                     // alpha t_p = ratio: K_T = ratio^2 E / ((1 - nu^2) t_p).

@@ -67,7 +67,9 @@ fn beam_report_text_and_json_agree() {
 fn plate_report_text_and_json() {
     let text = stdout_of(&["plate"]);
     assert!(
-        text.contains("X_r = 9.83832") && text.contains("constant-pressure assumption holds"),
+        text.contains("X_r = 9.83832")
+            && text.contains("flat Timoshenko plate")
+            && text.contains("contact pressure (continuum FE): 0.944 to 1 P beyond t_p"),
         "{text}"
     );
     let json: serde_json::Value =
@@ -75,7 +77,15 @@ fn plate_report_text_and_json() {
     assert_eq!(json["regularized"]["regime"], "microslip");
     assert_eq!(json["regularized"]["Xr_mm"], 10.0);
     assert_eq!(json["coulomb"]["regime"], "stick+macroslip");
+    // Deprecated, kept: the flat model's flag.
     assert_eq!(json["contact_pressure"]["constant_pressure_holds"], true);
+    assert_eq!(json["contact_pressure"]["end_layer_ratio_applies"], false);
+    assert!(
+        json["contact_pressure"]["model"]
+            .as_str()
+            .unwrap()
+            .contains("P7-P9")
+    );
 }
 
 #[test]

@@ -725,14 +725,9 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
                 (lo.min(r), hi.max(r))
             });
             let pad = 0.05 * (high - low).max(0.01);
-            let flag = if plate.contact_pressure().constant_pressure_holds() {
-                "holds"
-            } else {
-                "FAILS"
-            };
             Some(Plot {
                 table: None,
-                title: format!("P_r(x)/P; constant-P assumption {flag}"),
+                title: "P_r(x)/P of the flat-plate model (P7-P9), not of the 2-D plate".to_string(),
                 x: linear_axis("x (mm)", 0.0, p.half_length),
                 y: linear_axis("P_r/P (-)", low - pad, high + pad),
                 series: vec![

@@ -16,6 +16,10 @@ pub enum Validity {
     /// No calibrated bound reaches this case (measured between under 1 % and 540 %): the
     /// envelope cannot decide; use a continuum model.
     NotCalibrated,
+    /// No bound from above reaches this case, but every calibration case of its region was
+    /// measured off by more than a stated amount (the plate's (V1c)): wrong, not merely
+    /// uncalibrated; use a continuum model.
+    MeasuredWrong,
 }
 
 impl Validity {
@@ -42,6 +46,7 @@ impl Validity {
             Validity::Approximate => "approximate",
             Validity::Outside => "outside",
             Validity::NotCalibrated => "not calibrated",
+            Validity::MeasuredWrong => "measured wrong",
         }
     }
 }

@@ -290,8 +290,9 @@ pub const PAPER_FIGURES: &[PaperFigure] = &[
         chart: AnyChart::Plate(PlateChart::ContactPressure),
         y: YMode::Linear,
         finite_elements: false,
-        caption: "Squeezed plate: contact pressure P_r(x)/P along the half-plate, against the \
-                  constant-pressure assumption",
+        caption: "Squeezed plate: contact pressure P_r(x)/P along the half-plate of the paper's \
+                  flat-plate model (P7-P9, friction saturated everywhere); the plane-strain \
+                  continuum's is flat away from the free end (docs/theory.md (P12))",
     },
     PaperFigure {
         stem: "beam-loop",

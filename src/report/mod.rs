@@ -85,6 +85,11 @@ pub fn strip_validity_short(v: &crate::problems::plate::validity::PlateValidity)
         Validity::Approximate => format!("mean approx. (~{} %)", percent_of(e)),
         Validity::Outside => format!("mean OUTSIDE (>{} %)", 100.0 * Validity::APPROXIMATE),
         Validity::NotCalibrated => "not calibrated".to_string(),
+        Validity::MeasuredWrong => format!(
+            "mean WRONG (>{} %)",
+            v.measured_at_least
+                .map_or_else(|| "-".to_string(), |e| number_with(100.0 * e, 2))
+        ),
     }
 }
 
@@ -239,10 +244,11 @@ fn write_plate_table(out: &mut String, plate: &SqueezedPlate) {
     );
     let _ = writeln!(
         out,
-        "  contact pressure P_r/P: {} (centre) to {} (edge) -> constant-pressure assumption {}",
+        "  contact pressure P_r/P of the paper's flat-plate model (P7-P9, friction saturated \
+         everywhere): {} (centre) to {} (edge); not the plate's (docs/theory.md (P12)): \
+         `microslip plate` gives the plane-strain continuum's",
         number(pressure.ratio(0.0)),
         number(pressure.ratio(p.half_length)),
-        pressure_verdict(&pressure)
     );
     let _ = writeln!(
         out,

@@ -182,14 +182,19 @@ mod tests {
     }
 
     #[test]
-    fn plate_report_shows_both_zone_ends_and_the_pressure_flag() {
+    fn plate_report_shows_both_zone_ends_and_names_the_pressure_model() {
         let plate_model = SqueezedPlate::new(PlateParams::PAPER).unwrap();
         let text = plate("paper-plate", &plate_model, None);
         for needle in [
             "nu  = 0.3",
             "X_s = 9.71429",
             "X_r = 9.83832",
-            "constant-pressure assumption holds",
+            "flat Timoshenko plate, friction saturated everywhere (P7-P9",
+            // (L - X_r) / t_p = (10 - 9.83832) / 0.2: under one t_p, where the flat model's
+            // end-layer mean was not measured right.
+            "not here (slip zone 0.808 t_p)",
+            "plane-strain continuum (--continuum)",
+            "MEASURED WRONG here (V1c)",
         ] {
             assert!(text.contains(needle), "missing {needle:?} in\n{text}");
         }

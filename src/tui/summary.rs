@@ -162,7 +162,6 @@ pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLi
             } else {
                 "-".into()
             };
-            let pressure = plate.contact_pressure();
             let onset = match plate.macroslip_onset_stiffness() {
                 Some(kt) => format!("macroslip K_T > {} MPa/mm", number(kt)),
                 None => "no macroslip at any K_T".into(),
@@ -238,22 +237,11 @@ pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLi
                 )
                 .dropped(1),
                 plain(
-                    format!(
-                        "P_r/P {} to {}",
-                        number(pressure.ratio(0.0)),
-                        number(pressure.ratio(plate.params().half_length))
-                    ),
-                    "contact pressure over the applied pressure, centre to free end (flat plate, \
-                     saturated friction)",
-                )
-                .dropped(2),
-                plain(
-                    format!(
-                        "constant P: {}",
-                        crate::report::pressure_verdict_short(&pressure)
-                    ),
-                    "the closed forms assume P constant under the plate; fails when P_r deviates \
-                     by more than 3 % on average or 50 % at its peak (centre or free end)",
+                    pressure_words(plate),
+                    "contact pressure: the plane-strain continuum's (microslip plate --continuum) \
+                     is flat away from the free end and peaks at it; the paper's flat-plate model \
+                     (P7-P9, friction saturated everywhere) is right only for the mean over the \
+                     last t_p where the slip zone is at least t_p long (theory (P12))",
                 ),
                 plain(
                     format!(
@@ -268,6 +256,20 @@ pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLi
             lines
         }
     }
+}
+
+/// The regime pane's contact-pressure line: the flat model's mean over the last t_p where it was
+/// measured right (slip zone >= t_p), else where the plate's pressure is found.
+fn pressure_words(plate: &crate::SqueezedPlate) -> String {
+    plate.end_layer_pressure().map_or_else(
+        || "contact P: 2-D only".to_string(),
+        |mean| {
+            format!(
+                "P last t_p ~{} P (flat)",
+                crate::report::number_with(mean, 3)
+            )
+        },
+    )
 }
 
 /// `text` cut into lines of at most `width` characters at spaces.

@@ -222,6 +222,20 @@ impl SqueezedPlate {
     pub fn contact_pressure(&self) -> ContactPressure {
         ContactPressure::new(&self.params)
     }
+
+    /// The flat-plate model's mean contact pressure over the last t_p before the free end, over P
+    /// (the whole half-length when L < t_p), where that model was measured right: a slip zone
+    /// L - X_r of at least [`FLAT_END_LAYER_SLIP`] t_p (within -30 % to +41 % of the plane-strain
+    /// continuum's excess over P, docs/theory.md (P12)); `None` elsewhere, where it is not the
+    /// plate's.
+    pub fn end_layer_pressure(&self) -> Option<f64> {
+        let p = &self.params;
+        let slip = self.regularized().macroslip_length();
+        (p.poisson > 0.0 && slip >= FLAT_END_LAYER_SLIP * p.thickness).then(|| {
+            self.contact_pressure()
+                .mean_ratio_over(p.half_length - p.thickness, p.half_length)
+        })
+    }
 }
 
 /// The squeezed plate under the plain Coulomb law.
@@ -373,6 +387,10 @@ pub const PRESSURE_DEVIATION_LIMIT: f64 = 0.03;
 /// of mu P. The peak does not shrink with L (about mu sqrt(5 (1 - nu)) / 2, (P9)): the mean alone
 /// said "holds" for mu = 1, nu = 0.1, L = 100 mm with P_r = 2.76 P at the edge.
 pub const PRESSURE_PEAK_LIMIT: f64 = 0.5;
+
+/// The slip zone, in thicknesses, from which the flat-plate model's mean pressure over the last t_p
+/// was measured right against the plane-strain continuum (docs/theory.md, (P12)).
+pub const FLAT_END_LAYER_SLIP: f64 = 1.0;
 
 /// Contact pressure P_r(x) under a plate kept flat on the plane with saturated friction (eq. (P8)).
 ///
@@ -527,6 +545,21 @@ impl ContactPressure {
     pub fn ratio(&self, x: f64) -> f64 {
         let x = x.clamp(0.0, self.half_length);
         1.0 + self.lever * self.psi(x)[1]
+    }
+
+    /// Mean of P_r / P over [from, to] (-), 0 <= from < to <= L: 1 + (Q(to) - Q(from)) / (P (to - from)),
+    /// exactly, since P_r - P = Q'. Over the last t_p before the free end it is the one number of this
+    /// model that the plane-strain continuum confirms, where friction is saturated there
+    /// (docs/theory.md, (P12)).
+    pub fn mean_ratio_over(&self, from: f64, to: f64) -> f64 {
+        let (from, to) = (
+            from.clamp(0.0, self.half_length),
+            to.clamp(0.0, self.half_length),
+        );
+        if to <= from {
+            return self.ratio(from);
+        }
+        1.0 + self.lever * (self.psi(to)[0] - self.psi(from)[0]) / (to - from)
     }
 
     /// Mean of |P_r / P - 1| over [0, L] (-). Q is convex with Q(0) = Q(L) = 0, so P_r - P = Q'

@@ -10,7 +10,9 @@ use crate::kernel::validity::Validity;
 use crate::numeric::NumericError;
 use crate::problems::inputs::Inputs;
 use crate::problems::plate::ContinuumPlate;
-use crate::problems::plate::closed_form::{PRESSURE_DEVIATION_LIMIT, PRESSURE_PEAK_LIMIT};
+use crate::problems::plate::closed_form::{
+    FLAT_END_LAYER_SLIP, PRESSURE_DEVIATION_LIMIT, PRESSURE_PEAK_LIMIT,
+};
 use crate::problems::plate::validity as v1;
 use crate::problems::stiffness::mm_to_um;
 use crate::report::{number, number_with, sanitize};
@@ -68,10 +70,21 @@ pub struct PlateRegularized {
     pub micro_end: f64,
 }
 
-/// The contact pressure of a flat Timoshenko plate under saturated friction, against the
-/// constant-pressure assumption.
+/// The contact pressure of a flat Timoshenko plate under saturated friction (P7-P9), the paper's
+/// check of the constant-pressure assumption. Measured against the plane-strain continuum it is
+/// right only for the mean pressure over the last t_p where the strip theory's slip zone is at
+/// least t_p long (docs/theory.md, (P12)); its centre and edge values and its flag are kept for
+/// compatibility, the flag deprecated.
 #[derive(Debug, Clone, Copy, Serialize)]
 pub struct ContactPressureReport {
+    /// Which model these numbers come from.
+    pub model: &'static str,
+    /// Mean P_r/P over the last t_p before the free end: the one number of this model the
+    /// continuum confirms, where `end_layer_ratio_applies`.
+    pub end_layer_ratio: f64,
+    /// Whether the strip theory's slip zone is at least t_p long, where `end_layer_ratio` was
+    /// measured within -30 % to +41 % of the continuum's excess over P.
+    pub end_layer_ratio_applies: bool,
     /// P_r/P at the centre.
     pub ratio_centre: f64,
     /// P_r/P at the edge.
@@ -82,8 +95,16 @@ pub struct ContactPressureReport {
     pub peak_deviation: f64,
     pub mean_deviation_limit: f64,
     pub peak_deviation_limit: f64,
+    /// Deprecated: the flat model's flag, which does not track a continuum (docs/theory.md (P12));
+    /// the continuum's `contact pressure` keys replace it.
     pub constant_pressure_holds: bool,
 }
+
+/// The model behind [`ContactPressureReport`].
+pub const FLAT_PRESSURE_MODEL: &str =
+    "flat Timoshenko plate, friction saturated everywhere (P7-P9, paper section 2.2.1)";
+/// The model behind the continuum's pressure keys.
+pub const CONTINUUM_PRESSURE_MODEL: &str = "plane-strain continuum FE (contact reactions)";
 
 /// The strip theory's envelope (V1): the verdict on the thickness-mean u(L) and, where a
 /// calibration reaches, the bound on each quantity; X_r is not bounded.
@@ -106,6 +127,13 @@ pub struct StripTheory {
     pub micro_end_bounded: bool,
     #[serde(flatten)]
     pub expected: Option<ExpectedDifferences>,
+    /// Where the strip theory is measured wrong (V1c): the least difference of the thickness mean
+    /// from the continuum stated for its region.
+    #[serde(
+        rename = "measured_difference_at_least",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub measured_at_least: Option<f64>,
 }
 
 /// Where a calibration reaches: the expected difference from a plane-strain continuum of each
@@ -143,8 +171,22 @@ pub struct ContinuumSolved {
     /// X_r (mm).
     #[serde(rename = "Xr_mm")]
     pub micro_end: f64,
-    /// Contact pressure at the free end over P.
+    /// Contact pressure at the free end over P: the end node's value, which grows as the mesh is
+    /// refined (the corner is singular); at the resolution `end_element_mm`.
     pub end_pressure_ratio: f64,
+    /// The length of the last element along the face (mm): the resolution of `end_pressure_ratio`.
+    #[serde(rename = "end_element_mm")]
+    pub end_element: f64,
+    /// Which model the pressure keys come from.
+    pub pressure_model: &'static str,
+    /// Mean contact pressure over the last t_p, over P (converged with the mesh).
+    pub end_layer_pressure_ratio: f64,
+    /// Mean contact pressure over the last t_p / 10, over P: the free-end peak at that
+    /// resolution (converged).
+    pub edge_pressure_ratio: f64,
+    /// Smallest and largest P_r/P at least t_p from the free end.
+    pub interior_pressure_min_ratio: f64,
+    pub interior_pressure_max_ratio: f64,
     /// (continuum - strip) / strip for the thickness mean; `None` where the strip's u(L) is 0.
     #[serde(skip)]
     pub from_strip: Option<f64>,
@@ -167,6 +209,7 @@ impl StripTheory {
                 contact_face: e[1],
                 mid_thickness: e[2],
             }),
+            measured_at_least: v.measured_at_least,
         }
     }
 
@@ -179,6 +222,7 @@ impl StripTheory {
             Validity::NotCalibrated => {
                 "NOT CALIBRATED here (no bound reaches this plate): use the continuum values below"
             }
+            Validity::MeasuredWrong => "MEASURED WRONG here (V1c): use the continuum values below",
         };
         let _ = writeln!(
             out,
@@ -198,6 +242,19 @@ impl StripTheory {
                     number_with(100.0 * e.thickness_mean, 2),
                     number_with(100.0 * e.contact_face, 2),
                     number_with(100.0 * e.mid_thickness, 2)
+                );
+            }
+            None if self.measured_at_least.is_some() => {
+                let least = self.measured_at_least.unwrap_or(0.0);
+                let (from, below, _) = v1::MEASURED_WRONG
+                    .into_iter()
+                    .find(|r| r.2 == least)
+                    .unwrap_or(v1::MEASURED_WRONG[0]);
+                let _ = writeln!(
+                    out,
+                    "  measured: every calibration plate with alpha t_p >= {from} and a slip zone \
+                     under {below} t_p was off by more than {} % on the thickness mean (V1c)",
+                    number_with(100.0 * least, 2)
                 );
             }
             None => {
@@ -223,6 +280,14 @@ impl ContinuumReport {
                 mid_thickness: c.end_displacement_mid,
                 micro_end: c.micro_zone_end,
                 end_pressure_ratio: c.end_pressure_ratio,
+                end_element: c.contact_pressure.iter().rev().nth(2).map_or(0.0, |q| {
+                    c.contact_pressure[c.contact_pressure.len() - 1].0 - q.0
+                }),
+                pressure_model: CONTINUUM_PRESSURE_MODEL,
+                end_layer_pressure_ratio: c.end_layer_pressure_ratio,
+                edge_pressure_ratio: c.edge_pressure_ratio,
+                interior_pressure_min_ratio: c.interior_pressure_range.0,
+                interior_pressure_max_ratio: c.interior_pressure_range.1,
                 from_strip: crate::fe::compare::relative_difference(c.end_displacement_mean, strip),
             }),
             Err(e) => ContinuumReport::Failed {
@@ -242,12 +307,24 @@ impl ContinuumReport {
                     out,
                     "Plane-strain continuum (2-D finite elements, contact pressure from the solution)\n  \
                      u(L) = {} mm thickness mean ({from_strip}), {} mm at the contact \
-                     face, {} mm at mid-thickness\n  X_r = {} mm; contact pressure at the free end {} P",
+                     face, {} mm at mid-thickness\n  X_r = {} mm",
                     number(c.mean),
                     number(c.contact_face),
                     number(c.mid_thickness),
                     number(c.micro_end),
-                    number_with(c.end_pressure_ratio, 3)
+                );
+                let _ = writeln!(
+                    out,
+                    "  contact pressure (continuum FE): {} to {} P beyond t_p from the free end; \
+                     mean {} P over the last t_p, {} P over the last t_p/10; {} P at the free-end \
+                     node (element {} mm: the corner is singular, this value grows as the mesh is \
+                     refined)",
+                    number_with(c.interior_pressure_min_ratio, 3),
+                    number_with(c.interior_pressure_max_ratio, 3),
+                    number_with(c.end_layer_pressure_ratio, 3),
+                    number_with(c.edge_pressure_ratio, 3),
+                    number_with(c.end_pressure_ratio, 3),
+                    number(c.end_element)
                 );
             }
             ContinuumReport::Failed { error } => {
@@ -294,6 +371,12 @@ impl PlateReport {
                 micro_end: row.micro_end,
             },
             contact_pressure: ContactPressureReport {
+                model: FLAT_PRESSURE_MODEL,
+                end_layer_ratio: pressure.mean_ratio_over(
+                    plate.params().half_length - plate.params().thickness,
+                    plate.params().half_length,
+                ),
+                end_layer_ratio_applies: plate.end_layer_pressure().is_some(),
                 ratio_centre: pressure.ratio(0.0),
                 ratio_edge: pressure.ratio(plate.params().half_length),
                 mean_deviation: pressure.mean_deviation(),
@@ -304,6 +387,47 @@ impl PlateReport {
             },
             strip_theory: StripTheory::new(plate),
             continuum: continuum.map(|solved| ContinuumReport::new(solved, row.u_regularized)),
+        }
+    }
+
+    /// The contact pressure in words: the flat model for what it predicts, then the continuum's
+    /// where it was solved.
+    fn write_pressure(&self, out: &mut String) {
+        let p = &self.contact_pressure;
+        let _ = writeln!(
+            out,
+            "Contact pressure\n  {}: P_r/P = {} at the centre, {} at the edge (|P_r/P - 1| mean \
+             {} %, peak {} %)",
+            p.model,
+            number(p.ratio_centre),
+            number(p.ratio_edge),
+            number(100.0 * p.mean_deviation),
+            number(100.0 * p.peak_deviation)
+        );
+        let applies = if p.end_layer_ratio_applies {
+            format!(
+                "here {} P (slip zone {} t_p)",
+                number_with(p.end_layer_ratio, 3),
+                number_with(self.strip_theory.slip_over_thickness, 3)
+            )
+        } else {
+            format!(
+                "not here (slip zone {} t_p)",
+                number_with(self.strip_theory.slip_over_thickness, 3)
+            )
+        };
+        let _ = writeln!(
+            out,
+            "  against the plane-strain continuum this model is right only for the mean pressure \
+             over the last t_p where the slip zone is at least {FLAT_END_LAYER_SLIP} t_p long: \
+             {applies}; its centre and edge values and its constant-pressure flag are not the \
+             plate's (docs/theory.md (P12))"
+        );
+        if !matches!(self.continuum, Some(ContinuumReport::Solved(_))) {
+            let _ = writeln!(
+                out,
+                "  the plate's own contact pressure: plane-strain continuum (--continuum)"
+            );
         }
     }
 
@@ -335,24 +459,7 @@ impl PlateReport {
             ),
         }
         .write(&mut out);
-        let p = &self.contact_pressure;
-        let _ = writeln!(
-            out,
-            "Contact pressure (flat Timoshenko plate, saturated friction)"
-        );
-        let _ = writeln!(
-            out,
-            "  P_r/P = {} at the centre, {} at the edge; |P_r/P - 1|: mean {} %, peak {} %",
-            number(p.ratio_centre),
-            number(p.ratio_edge),
-            number(100.0 * p.mean_deviation),
-            number(100.0 * p.peak_deviation)
-        );
-        let _ = writeln!(
-            out,
-            "  constant-pressure assumption {}",
-            crate::report::deviation_verdict(p.mean_deviation, p.peak_deviation)
-        );
+        self.write_pressure(&mut out);
         self.strip_theory.write(&mut out);
         if let Some(continuum) = &self.continuum {
             continuum.write(&mut out);
