@@ -239,7 +239,10 @@ pub struct App {
     axis_note: Option<String>,
     /// The plate's continuum solution, for the values it was solved at (the last asked for, with
     /// None until it comes).
-    continuum: Option<(PlateParams, Option<Result<f64, String>>)>,
+    continuum: Option<(
+        PlateParams,
+        Option<Result<super::effects::ContinuumSummary, String>>,
+    )>,
 }
 
 impl App {
@@ -534,7 +537,9 @@ impl App {
             _ => return ContinuumState::Off,
         };
         match &self.continuum {
-            Some((params, Some(Ok(u)))) if *params == current => ContinuumState::Solved(*u),
+            Some((params, Some(Ok(solved)))) if *params == current => {
+                ContinuumState::Solved(*solved)
+            }
             Some((params, Some(Err(e)))) if *params == current => ContinuumState::Failed(e.clone()),
             _ => ContinuumState::Solving,
         }
@@ -2804,9 +2809,20 @@ mod tests {
             plate.params(),
             crate::problems::plate::ContinuumMesh::default(),
         )
-        .unwrap()
-        .end_displacement_mean;
-        assert_eq!(app.continuum(), ContinuumState::Solved(expected));
+        .unwrap();
+        assert_eq!(
+            app.continuum(),
+            ContinuumState::Solved(crate::tui::effects::ContinuumSummary {
+                end_displacement: expected.end_displacement_mean,
+                edge_pressure: expected.edge_pressure_ratio,
+            })
+        );
+        assert!(
+            app.summary_lines()
+                .iter()
+                .any(|l| l.text.starts_with("contact P 2-D: ") && l.text.ends_with(" P at end")),
+            "the continuum's edge pressure replaces the flat model's line"
+        );
         let line = app
             .summary_lines()
             .into_iter()

@@ -150,12 +150,12 @@ pub enum Outcome {
     },
     /// The presets to pick from.
     Presets(Vec<Listed>),
-    /// The continuum's thickness-mean u(L) (mm) at `params`, or why there is none.
+    /// What the regime pane shows of the continuum at `params`, or why there is none.
     Continuum {
         /// The plate solved.
         params: crate::PlateParams,
-        /// u(L), or the reason.
-        result: Result<f64, String>,
+        /// The solution's summary, or the reason.
+        result: Result<ContinuumSummary, String>,
     },
     /// The preset of [`Effect::LoadPreset`], or why it cannot be loaded.
     Preset {
@@ -302,13 +302,26 @@ pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
     })
 }
 
+/// What the regime pane shows of the plate's continuum solution.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContinuumSummary {
+    /// u(L), thickness mean (mm).
+    pub end_displacement: f64,
+    /// Contact pressure over P, mean over the last t_p / 10: the free-end peak at that resolution
+    /// (the corner node's own value grows with refinement).
+    pub edge_pressure: f64,
+}
+
 /// The outcome of [`Effect::SolveContinuum`].
 fn solve_continuum(params: crate::PlateParams) -> Outcome {
     let result = crate::problems::plate::solve_plate_continuum(
         params,
         crate::problems::plate::ContinuumMesh::default(),
     )
-    .map(|plate| plate.end_displacement_mean)
+    .map(|plate| ContinuumSummary {
+        end_displacement: plate.end_displacement_mean,
+        edge_pressure: plate.edge_pressure_ratio,
+    })
     .map_err(|e| e.to_string());
     Outcome::Continuum { params, result }
 }

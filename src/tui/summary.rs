@@ -57,8 +57,8 @@ pub enum ContinuumState {
     Off,
     /// Asked for the current values, not there yet.
     Solving,
-    /// The thickness-mean u(L) at the current values (mm).
-    Solved(f64),
+    /// Solved at the current values.
+    Solved(crate::tui::effects::ContinuumSummary),
     /// Why there is none (out of the solver's range, no convergence).
     Failed(String),
 }
@@ -207,15 +207,19 @@ pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLi
                 ContinuumState::Off => None,
                 ContinuumState::Solving => Some("u(L) 2-D FE: solving...".to_string()),
                 // Three digits and a whole percent above 10 %: the line fits the 80-column pane.
-                ContinuumState::Solved(u) if row.u_regularized > 0.0 => {
+                ContinuumState::Solved(solved) if row.u_regularized > 0.0 => {
+                    let u = solved.end_displacement;
                     let off = 100.0 * (u / row.u_regularized - 1.0);
                     let digits = if off.abs() >= 10.0 { 0 } else { 1 };
                     Some(format!(
                         "u(L) 2-D FE {} mm ({off:+.digits$} %)",
-                        number_with(*u, 3)
+                        number_with(u, 3)
                     ))
                 }
-                ContinuumState::Solved(u) => Some(format!("u(L) 2-D FE {} mm", number_with(*u, 3))),
+                ContinuumState::Solved(solved) => Some(format!(
+                    "u(L) 2-D FE {} mm",
+                    number_with(solved.end_displacement, 3)
+                )),
                 ContinuumState::Failed(_) => Some("u(L) 2-D FE: none here (i)".to_string()),
             };
             lines.extend(continuum_line.map(|text| {
@@ -237,11 +241,13 @@ pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLi
                 )
                 .dropped(1),
                 plain(
-                    pressure_words(plate),
+                    pressure_words(plate, continuum),
                     "contact pressure: the plane-strain continuum's (microslip plate --continuum) \
-                     is flat away from the free end and peaks at it; the paper's flat-plate model \
-                     (P7-P9, friction saturated everywhere) is right only for the mean over the \
-                     last t_p where the slip zone is at least t_p long (theory (P12))",
+                     is flat away from the free end and peaks at it; once solved, this line gives \
+                     its peak, the mean over the last t_p/10 (the corner node itself grows with \
+                     every refinement). The paper's flat-plate model (P7-P9, friction saturated \
+                     everywhere), shown until then, is right only for the mean over the last t_p \
+                     where the slip zone is at least t_p long (theory (P12))",
                 ),
                 plain(
                     format!(
@@ -258,9 +264,16 @@ pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLi
     }
 }
 
-/// The regime pane's contact-pressure line: the flat model's mean over the last t_p where it was
-/// measured right (slip zone >= t_p), else where the plate's pressure is found.
-fn pressure_words(plate: &crate::SqueezedPlate) -> String {
+/// The regime pane's contact-pressure line: the continuum's free-end peak (mean over the last
+/// t_p / 10) once solved, else the flat model's mean over the last t_p where it was measured right
+/// (slip zone >= t_p), else where the plate's pressure is found.
+fn pressure_words(plate: &crate::SqueezedPlate, continuum: &ContinuumState) -> String {
+    if let ContinuumState::Solved(solved) = continuum {
+        return format!(
+            "contact P 2-D: {} P at end",
+            crate::report::number_with(solved.edge_pressure, 3)
+        );
+    }
     plate.end_layer_pressure().map_or_else(
         || "contact P: 2-D only".to_string(),
         |mean| {
