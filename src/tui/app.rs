@@ -508,11 +508,14 @@ impl App {
             self.plot = plot;
             return;
         }
-        // Each pin: the same chart at its values, in the same y mode, without the overlays.
+        // Each pin: the same chart at its values, in the same y mode, without the overlays, over
+        // the shown chart's x range (the current F or measured points may have widened it beyond
+        // the kept force span: a pin built over that span alone would stop short of the axis).
+        let span = Some(plot.x.bounds[1]);
         let key = PinnedChart {
             views: self.views,
             varied: self.state().varied,
-            force_span: self.force_span,
+            force_span: span,
             y_mode,
         };
         for i in 0..self.state().pins.len() {
@@ -524,7 +527,7 @@ impl App {
                 .inputs
                 .validate()
                 .ok()
-                .map(|m| (key, y_mode.apply(self.chart_of(&m, None, None, None))));
+                .map(|m| (key, y_mode.apply(self.chart_of(&m, None, None, None, span))));
             self.state_mut().pins[i].chart = built;
         }
         let current = self.inputs();
@@ -544,7 +547,13 @@ impl App {
     fn linear_plot(&self, model: &Model) -> Plot {
         let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
         let external = self.external.as_ref().map(|(points, _)| points);
-        self.chart_of(model, self.numeric.as_ref(), measured, external)
+        self.chart_of(
+            model,
+            self.numeric.as_ref(),
+            measured,
+            external,
+            self.force_span,
+        )
     }
 
     /// The chart shown (the view's, or the one against the parameter of `v`) for `model`.
@@ -554,18 +563,12 @@ impl App {
         numeric: Option<&NumericPoints>,
         measured: Option<&[Measurement]>,
         external: Option<&chart::ExternalPoints>,
+        force_span: Option<f64>,
     ) -> Plot {
         if let Some(param) = self.state().varied {
             return chart::vary::build(model, param);
         }
-        chart::build(
-            model,
-            self.views,
-            numeric,
-            measured,
-            external,
-            self.force_span,
-        )
+        chart::build(model, self.views, numeric, measured, external, force_span)
     }
 
     /// `g`: keeps the current parameters as a pin (the oldest goes beyond [`pins::MAX_PINS`]).
@@ -1591,7 +1594,7 @@ mod tests {
         app.plot()
             .series
             .iter()
-            .filter_map(|s| match s.kind {
+            .filter_map(|s| match s.kind() {
                 chart::SeriesKind::Pin(n) => Some((n, s.name.clone())),
                 _ => None,
             })
