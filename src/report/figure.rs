@@ -99,8 +99,9 @@ fn look(role: SeriesRole) -> Look {
         SeriesRole::Current => line(PALETTE[0]),
         SeriesRole::Softer => line(PALETTE[1]),
         SeriesRole::Stiffer => line(PALETTE[2]),
+        // Dotted: apart from Coulomb's dashes where both lie on mu P.
         SeriesRole::Limit => Look {
-            dashes: Some("6 4"),
+            dashes: Some("2 3"),
             ..line(PALETTE[6])
         },
         SeriesRole::Cursor => Look {
