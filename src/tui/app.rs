@@ -1608,6 +1608,23 @@ mod tests {
         app.update(Action::Commit);
     }
 
+    /// A pin kept at F = 100 N, then F raised to 252 N: the force axis grows to 1.25 F = 315 N
+    /// and the pinned curve runs to its end (it stopped at 240 N, 3 F_thre, before).
+    #[test]
+    fn a_pinned_curve_spans_the_whole_force_axis() {
+        let mut app = app();
+        app.update(Action::Pin);
+        set_typed(&mut app, "F", "252");
+        let plot = app.plot();
+        assert_eq!(plot.x.bounds[1], 315.0);
+        let pin = plot
+            .series
+            .iter()
+            .find(|s| s.kind() == chart::SeriesKind::Pin(1));
+        let last = pin.and_then(|s| s.points.last()).expect("a pinned curve");
+        assert_eq!(last.0, 315.0);
+    }
+
     #[test]
     fn pins_keep_values_follow_the_charts_and_are_named_by_what_differs() {
         let mut app = app();
