@@ -178,7 +178,7 @@ pub fn build_family(
                 [lo.min(a), hi.max(b)]
             })
     };
-    let ([x0, x1], [y0, y1]) = (union(|p| p.x.bounds), union(|p| p.y.bounds));
+    let [x0, x1] = union(|p| p.x.bounds);
     let axis = |a: &super::Axis, lo, hi| {
         if a.log {
             log_axis(a.title.clone(), lo, hi)
@@ -187,7 +187,6 @@ pub fn build_family(
         }
     };
     base.x = axis(&first.x, x0, x1);
-    base.y = axis(&first.y, y0, y1);
     for &role in shared.iter().filter(|&&r| r != SeriesRole::Current) {
         let key = role.key().unwrap_or("?");
         let of = |p: &Plot| p.series.iter().find(|s| s.role == role).cloned();
@@ -221,6 +220,24 @@ pub fn build_family(
             return Err(FamilyError::Differs { role: key, param });
         }
         base.series.push(series);
+    }
+    // The y axis from what is drawn (the members' own axes also hold their companions: K_T/5
+    // would set the top of a K_T family's relative chart), 5 % headroom, from 0 where the
+    // members' axes start there.
+    let drawn = plots
+        .iter()
+        .filter_map(main_series)
+        .chain(&base.series)
+        .filter(|s| s.role != SeriesRole::Cursor)
+        .flat_map(|s| s.points.iter().map(|p| p.1));
+    let (lo, hi) = drawn.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), y| {
+        (lo.min(y), hi.max(y))
+    });
+    if lo.is_finite() && hi.is_finite() {
+        let pad = 0.05 * (hi - lo);
+        let from_zero = !first.y.log && plots.iter().all(|p| p.y.bounds[0] == 0.0) && lo >= 0.0;
+        let lo = if from_zero { 0.0 } else { lo - pad };
+        base.y = axis(&first.y, lo, hi + pad);
     }
     super::ymode::stretch_cursors(&mut base.series, base.y.bounds);
     let curves: Vec<Borrowed> = members
@@ -281,6 +298,19 @@ mod tests {
         );
         // P = 2 MPa: F_thre = 160 N, so the axis runs to 480 N and every curve reaches it.
         assert_eq!(plot.x.bounds[1], 480.0);
+        // The y axis from the members drawn, not their companions: 5 % above the highest.
+        let top = plot
+            .series
+            .iter()
+            .flat_map(|s| &s.points)
+            .map(|p| p.1)
+            .fold(0.0, f64::max);
+        assert!(
+            (plot.y.bounds[1] / top - 1.05).abs() < 1e-9,
+            "{:?} {top}",
+            plot.y.bounds
+        );
+        assert_eq!(plot.y.bounds[0], 0.0);
         for s in &plot.series {
             assert_eq!(s.points.first().unwrap().0, 0.0, "{}", s.name);
             assert_eq!(s.points.last().unwrap().0, 480.0, "{}", s.name);
