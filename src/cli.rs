@@ -14,8 +14,8 @@ use std::time::{Duration, Instant};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use thiserror::Error;
 
-use crate::chart::YMode;
 use crate::chart::view::AnyChart;
+use crate::chart::{SeriesRole, YMode};
 use crate::fe;
 use crate::fe::deck::{self, DeckMesh};
 use crate::fe::header::StickSlope;
@@ -287,6 +287,20 @@ pub enum Command {
         /// inputs, several joined by commas (--pin mu=0.2 --pin mu=0.45,KT=1000); at most 4.
         #[arg(long = "pin", value_name = "KEY=VALUE,...")]
         pins: Vec<String>,
+        /// Draw the chart's main curve once per value of one parameter, all of equal rank and
+        /// named with the unit (--family P=0.5,1,2: "P = 0.5 MPa", ...); the other parameters
+        /// go in a caption. At most 6 values; not with --pin or --fe.
+        #[arg(long, value_name = "KEY=V1,V2,...")]
+        family: Option<String>,
+        /// The chart's series to draw, by role, comma-separated: current, coulomb, softer
+        /// (K_T/5, K_T/10), stiffer (K_T*5, K_T*10), limit (mu P, P_r = P), fe, continuum,
+        /// cursor. Default: all the chart has; with --family, only the members (a role added
+        /// to a family must be the same for every member).
+        #[arg(long, value_name = "ROLE,...")]
+        series: Option<String>,
+        /// Leave out the cursor (the vertical line at the current value).
+        #[arg(long)]
+        no_cursor: bool,
         /// Output format (default: csv for a FILE ending in .csv, else svg).
         #[arg(long, value_enum)]
         format: Option<FigureFormat>,
@@ -1005,6 +1019,9 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             fe,
             y,
             pins,
+            family,
+            series,
+            no_cursor,
             format,
             output,
         }) => {
@@ -1013,6 +1030,21 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 ModelKind::Plate => "plot (a plate chart)",
             };
             let (_, model) = load(inputs, chart.kind(), command)?;
+            let shown = shown_roles(series.as_deref(), *no_cursor)?;
+            if let Some(spec) = family {
+                if !pins.is_empty() {
+                    return Err(CliError::Invalid(format!(
+                        "--family {spec} and --pin: a family has no current curve to pin against; \
+                         add the pinned values to the family instead"
+                    )));
+                }
+                if *fe {
+                    return Err(CliError::Invalid(format!(
+                        "--family {spec} and --fe: finite-element points are of one model; draw \
+                         them with one plot per value"
+                    )));
+                }
+            }
             let plot = crate::chart::figure(&model, *chart, *fe, YMode::Linear)?;
             // The chart's own default falls back to linear where it cannot apply (u(L) = 0 at
             // nu = 0 on a log axis); a mode asked for with --y is refused instead.
@@ -1029,14 +1061,34 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                     chart.key()
                 )));
             }
-            let pinned = pinned_models(&model, pins)?;
-            let plot = crate::chart::pins::with_pinned_models(
-                mode.apply(plot),
-                &model,
-                *chart,
-                &pinned,
-                mode,
-            );
+            let plot = match family {
+                Some(spec) => {
+                    let (param, members) = family_models(&model, spec)?;
+                    crate::chart::family::build_family(
+                        *chart,
+                        param,
+                        &members,
+                        mode,
+                        shown.as_deref().unwrap_or_default(),
+                    )
+                    .map_err(|e| CliError::Invalid(format!("--family {spec}: {e}")))?
+                }
+                None => {
+                    let mut plot = mode.apply(plot);
+                    if let Some(roles) = &shown {
+                        keep_roles(&mut plot, roles, chart.key())?;
+                    }
+                    if *no_cursor {
+                        plot.series.retain(|s| s.role != SeriesRole::Cursor);
+                    }
+                    let pinned = pinned_models(&model, pins)?;
+                    let mut plot =
+                        crate::chart::pins::with_pinned_models(plot, &model, *chart, &pinned, mode);
+                    plot.caption =
+                        Some(crate::chart::family::parameter_text(&model.inputs(), None));
+                    plot
+                }
+            };
             let csv = output
                 .as_deref()
                 .and_then(|p| p.extension())
@@ -1409,6 +1461,97 @@ fn write_output(
 
 /// Resolves the preset (default: the paper's data set of `wanted`), applies `--set`, validates.
 /// `command` (as typed after `microslip`) names the command when the preset is of the other model.
+/// The roles of `plot --series` (None: not given), without the cursor under `--no-cursor`.
+fn shown_roles(series: Option<&str>, no_cursor: bool) -> Result<Option<Vec<SeriesRole>>, CliError> {
+    let Some(list) = series else {
+        return Ok(None);
+    };
+    let allowed: Vec<&str> = SeriesRole::CHART_ROLES
+        .iter()
+        .filter_map(|r| r.key())
+        .collect();
+    let mut roles = Vec::new();
+    for key in list.split(',').map(str::trim) {
+        let role = SeriesRole::from_key(key).ok_or_else(|| {
+            CliError::Invalid(format!(
+                "--series {list}: unknown series '{key}' (allowed: {})",
+                allowed.join(", ")
+            ))
+        })?;
+        if role == SeriesRole::Cursor && no_cursor {
+            return Err(CliError::Invalid(format!(
+                "--series {list} and --no-cursor: the one asks for the cursor, the other leaves it out"
+            )));
+        }
+        if !roles.contains(&role) {
+            roles.push(role);
+        }
+    }
+    Ok(Some(roles))
+}
+
+/// `plot` with only the series of `roles` (and any pins); a role the chart does not have is
+/// refused, naming those it has, and so is a selection that leaves nothing but the cursor.
+fn keep_roles(
+    plot: &mut crate::chart::Plot,
+    roles: &[SeriesRole],
+    chart: &str,
+) -> Result<(), CliError> {
+    let present: Vec<SeriesRole> = plot.series.iter().map(|s| s.role).collect();
+    if let Some(missing) = roles.iter().find(|r| !present.contains(r)) {
+        let keys: Vec<&str> = present.iter().filter_map(|r| r.key()).collect();
+        let hint = match missing {
+            SeriesRole::FiniteElements => " (fe needs --fe)",
+            _ => "",
+        };
+        return Err(CliError::Invalid(format!(
+            "--series: chart {chart} has no {} series{hint}; it has: {}",
+            missing.key().unwrap_or("?"),
+            keys.join(", ")
+        )));
+    }
+    if roles.iter().all(|&r| r == SeriesRole::Cursor) {
+        return Err(CliError::Invalid(
+            "--series cursor: nothing to draw but the cursor; add a curve (current, coulomb, ...)"
+                .to_string(),
+        ));
+    }
+    plot.series.retain(|s| roles.contains(&s.role));
+    Ok(())
+}
+
+/// The members of `plot --family KEY=V1,V2,...`: each value set on top of `model`'s inputs and
+/// checked as `--set` checks it (the same messages, after the flag).
+fn family_models(model: &Model, spec: &str) -> Result<(crate::Param, Vec<(f64, Model)>), CliError> {
+    use crate::chart::family::MAX_MEMBERS;
+    let refuse = |why: String| CliError::Invalid(format!("--family {spec}: {why}"));
+    let (key, values) = spec
+        .split_once('=')
+        .ok_or_else(|| refuse("expected KEY=V1,V2,... (e.g. P=0.5,1,2)".to_string()))?;
+    let key = key.trim();
+    let param = model.kind().param(key).map_err(|e| refuse(e.to_string()))?;
+    let values: Vec<&str> = values.split(',').map(str::trim).collect();
+    if values.len() > MAX_MEMBERS {
+        return Err(refuse(format!(
+            "{} values given, at most {MAX_MEMBERS} (more curves cannot be told apart)",
+            values.len()
+        )));
+    }
+    let mut members: Vec<(f64, Model)> = Vec::with_capacity(values.len());
+    for value in values {
+        let mut inputs = model.inputs();
+        preset::apply_assignment(&mut inputs, &format!("{key}={value}"))
+            .map_err(|e| refuse(e.to_string()))?;
+        let member = inputs.validate().map_err(|e| refuse(e.to_string()))?;
+        let number = member.inputs().get(param).unwrap_or(f64::NAN);
+        if members.iter().any(|(v, _)| *v == number) {
+            return Err(refuse(format!("{key} = {value} is given twice")));
+        }
+        members.push((number, member));
+    }
+    Ok((param, members))
+}
+
 /// The models of `plot --pin`: each pin's assignments on top of `model`'s inputs.
 fn pinned_models(model: &Model, pins: &[String]) -> Result<Vec<Model>, CliError> {
     use crate::chart::pins::MAX_PINS;

@@ -34,7 +34,9 @@
 //!   code's answer with the closed forms (it uses [`fit`] for the implied K_T, so it sits above it).
 //! - [`chart`]: what every chart shows, as data (title, axes, series), built from the layers
 //!   below; which charts and tables exist ([`chart::view`]); drawn by the TUI and by the SVG
-//!   figures of `report::figure`.
+//!   figures of `report::figure`, which choose each series' look from its role
+//!   ([`chart::SeriesRole`]: Coulomb, the current K_T, a pin, a family member, ...), set where
+//!   the series is built; families of one chart over a parameter ([`chart::family`]).
 //! - [`report`]: every format (text, JSON, CSV, SVG), from one serde struct per report and per
 //!   table row; it computes nothing.
 //! - `cli` and `tui` (behind the default feature `app`, hidden from these docs): thin layers that

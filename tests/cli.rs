@@ -1930,3 +1930,150 @@ fn kt_says_what_its_tolerance_is_of_and_offers_the_other_reading() {
         "{expected}: {table}"
     );
 }
+
+/// The series of a chart CSV: each name with its number of points and its largest x.
+fn csv_series(data: &str) -> Vec<(String, usize, f64)> {
+    let mut series: Vec<(String, usize, f64)> = Vec::new();
+    for line in data.lines().skip(1) {
+        let cells: Vec<&str> = line.split(',').collect();
+        let (name, x) = (cells[0].to_string(), cells[2].parse::<f64>().unwrap());
+        match series.iter_mut().find(|s| s.0 == name) {
+            Some(s) => {
+                s.1 += 1;
+                s.2 = s.2.max(x);
+            }
+            None => series.push((name, 1, x)),
+        }
+    }
+    series
+}
+
+#[test]
+fn plot_family_draws_one_curve_per_value_over_the_whole_force_axis() {
+    let data = stdout_of(&["plot", "w-vs-f", "--family", "P=0.5,1,2", "--format", "csv"]);
+    assert!(data.starts_with("series,x_axis,x,y_axis,y\n"), "{data}");
+    let series = csv_series(&data);
+    let names: Vec<&str> = series.iter().map(|s| s.0.as_str()).collect();
+    // Equal rank: no Coulomb, no K_T/5 or K_T*5, no cursor; the unit in every name.
+    assert_eq!(names, ["P = 0.5 MPa", "P = 1 MPa", "P = 2 MPa"]);
+    // Each member over the whole axis, which shows P = 2 MPa's regime change (F_thre = 160 N).
+    for (name, points, last) in &series {
+        assert_eq!((*points, *last), (200, 480.0), "{name}");
+    }
+    let svg = stdout_of(&["plot", "w-vs-f", "--family", "P=0.5,1,2"]);
+    for text in [
+        "w(L) vs F, P = 0.5, 1, 2 MPa",
+        "P = 0.5 MPa",
+        "L = 200 mm, b = 20 mm, h = 10 mm, E = 210000 MPa, nu = 0.3, mu = 0.3, KT = 600 MPa/mm",
+    ] {
+        assert!(svg.contains(text), "{text}");
+    }
+    assert!(!svg.contains(">\ncurrent\n<") && !svg.contains("K_T/5"));
+    // A series the same for every member may be added once; one that differs is refused.
+    let names = plotted_names(&[
+        "w-vs-f",
+        "--family",
+        "KT=120,3000",
+        "--series",
+        "coulomb,current",
+    ]);
+    assert_eq!(names, ["Coulomb", "KT = 120 MPa/mm", "KT = 3000 MPa/mm"]);
+    let error = failure(
+        &[
+            "plot", "w-vs-f", "--family", "P=0.5,2", "--series", "coulomb",
+        ],
+        2,
+    );
+    assert!(error.contains("differs between the members"), "{error}");
+}
+
+#[test]
+fn plot_family_refusals_name_the_flag() {
+    for (args, says) in [
+        (
+            &["--family", "P=0.5,-1"][..],
+            "--family P=0.5,-1: invalid P = -1: must be > 0",
+        ),
+        (&["--family", "Q=1,2"], "--family Q=1,2: unknown key 'Q'"),
+        (
+            &["--family", "P=1,x"],
+            "--family P=1,x: invalid value 'x' for P",
+        ),
+        (&["--family", "P"], "--family P: expected KEY=V1,V2"),
+        (&["--family", "P=1,1"], "P = 1 is given twice"),
+        (
+            &["--family", "P=1,2,3,4,5,6,7"],
+            "7 values given, at most 6",
+        ),
+        (&["--family", "P=1,2", "--pin", "mu=0.2"], "--pin"),
+        (&["--family", "P=1,2", "--fe"], "--fe"),
+    ] {
+        let error = failure(&[&["plot", "w-vs-f"], args].concat(), 2);
+        assert!(error.contains(says), "{args:?}: {error}");
+    }
+    // The same messages as --set gives, after the flag.
+    let set = failure(&["plot", "w-vs-f", "--set", "P=-1"], 2);
+    let family = failure(&["plot", "w-vs-f", "--family", "P=-1"], 2);
+    let reason = set.trim_start_matches("microslip: ");
+    assert!(family.ends_with(reason), "{family} vs {set}");
+}
+
+/// The names of the series `plot` writes as CSV with `args`.
+fn plotted_names(args: &[&str]) -> Vec<String> {
+    let data = stdout_of(&[&["plot"], args, &["--format", "csv"]].concat());
+    csv_series(&data).into_iter().map(|s| s.0).collect()
+}
+
+#[test]
+fn plot_series_and_no_cursor_choose_what_is_drawn() {
+    let names = plotted_names(&["w-vs-f", "--series", "current,coulomb"]);
+    assert_eq!(names, ["Coulomb", "K_T"]);
+    let svg = stdout_of(&["plot", "w-vs-f", "--series", "current,coulomb"]);
+    assert!(!svg.contains(">\ncurrent\n<") && !svg.contains("K_T*5"));
+    let with_cursor = stdout_of(&["plot", "w-vs-f"]);
+    assert!(with_cursor.contains(">\ncurrent\n<"));
+    let without = stdout_of(&["plot", "w-vs-f", "--no-cursor"]);
+    assert!(!without.contains(">\ncurrent\n<") && without.contains(">\nK_T/5\n<"));
+    let error = failure(&["plot", "w-vs-f", "--series", "current,nope"], 2);
+    assert!(
+        error.contains(
+            "unknown series 'nope' (allowed: current, coulomb, softer, stiffer, limit, fe, \
+             continuum, measured, external, cursor)"
+        ),
+        "{error}"
+    );
+    let error = failure(&["plot", "w-vs-f", "--series", "limit"], 2);
+    assert!(
+        error.contains("chart w-vs-f has no limit series; it has: "),
+        "{error}"
+    );
+    let error = failure(&["plot", "w-vs-f", "--series", "fe"], 2);
+    assert!(error.contains("fe needs --fe"), "{error}");
+    let error = failure(&["plot", "w-vs-f", "--series", "cursor", "--no-cursor"], 2);
+    assert!(error.contains("--no-cursor"), "{error}");
+    // The mu P line of tau(x) alone with Coulomb.
+    let names = plotted_names(&["tau", "--series", "coulomb,limit"]);
+    assert_eq!(names, ["Coulomb", "mu P"]);
+}
+
+/// Plotters rounds to whole pixels, which makes gentle slopes stairs; curves are written at
+/// fractional pixels.
+#[test]
+fn plot_curves_are_drawn_at_fractional_pixels() {
+    let svg = stdout_of(&["plot", "w-vs-f", "--family", "P=0.5,1,2"]);
+    let curves: Vec<&str> = svg
+        .lines()
+        .filter(|l| l.starts_with("<polyline") && l.matches(',').count() > 100)
+        .collect();
+    assert_eq!(curves.len(), 3, "{svg}");
+    for curve in curves {
+        let points = curve.split("points=\"").nth(1).unwrap();
+        let coordinates: Vec<f64> = points
+            .trim_end_matches("\"/>")
+            .split([' ', ','])
+            .map(|c| c.parse().unwrap())
+            .collect();
+        let fractional = coordinates.iter().filter(|c| c.fract() != 0.0).count();
+        assert!(fractional > coordinates.len() / 2, "{curve}");
+    }
+}

@@ -1,6 +1,7 @@
 //! Snapshot tests of rendered frames: each snapshot is a claim about what users see. Review changes
 //! with `cargo insta review` (or read the `.snap.new` files) before accepting them.
 
+use microslip::chart::SeriesRole;
 use microslip::preset;
 use microslip::study::curves::Zone;
 use microslip::tui::action::Action;
@@ -84,6 +85,29 @@ fn help_overlay() {
     let mut app = app();
     press(&mut app, Action::ToggleHelp);
     insta::assert_snapshot!(screen(&app, 80, 24));
+}
+
+/// At 80x24 the zone strip is two bare rows: its symbols are explained on the regime pane's lower
+/// border, and, with every chart mark, on a page of the help (`j` turns the pages).
+#[test]
+fn the_zone_symbols_are_explained_at_80x24() {
+    let mut app = app_with("paper-beams", Charset::Ascii, false);
+    assert!(screen(&app, 80, 24).contains("+ =stick ~microslip #macroslip --+"));
+    press(&mut app, Action::ToggleHelp);
+    let pages: String = (0..4)
+        .map(|_| {
+            let page = screen(&app, 80, 24);
+            press(&mut app, Action::Next);
+            page
+        })
+        .collect();
+    for text in [
+        "= stick ~ microslip # macroslip",
+        "* Coulomb x K_T o softer + stiffer",
+        "- limit # FE @ continuum % measured",
+    ] {
+        assert!(pages.contains(text), "{text}");
+    }
 }
 
 #[test]
@@ -475,7 +499,7 @@ fn a_long_status_message_takes_rows_from_the_panes_and_never_covers_the_chart() 
         .count();
     assert!((2..=4).contains(&status_rows), "{text}");
     assert!(
-        rows[rows.len() - 1 - status_rows].starts_with("\"+---"),
+        rows[rows.len() - 1 - status_rows].starts_with("\"+"),
         "{text}"
     );
     // Too long even for three lines: what fits, then how to read it all.
@@ -733,7 +757,11 @@ fn ascii_glyphs() -> HashSet<(&'static str, &'static str)> {
     };
     let mut pairs: HashSet<_> = borders(&unicode).into_iter().zip(borders(&ascii)).collect();
     pairs.extend(zones(&unicode).into_iter().zip(zones(&ascii)));
-    pairs.extend((0..6).map(|i| (unicode.series_symbol(i), ascii.series_symbol(i))));
+    let roles = SeriesRole::CHART_ROLES
+        .into_iter()
+        .chain((1..=4).map(SeriesRole::Pin))
+        .chain((1..=6).map(SeriesRole::Family));
+    pairs.extend(roles.map(|r| (unicode.series_symbol(r), ascii.series_symbol(r))));
     pairs.insert((unicode.cursor_symbol(), ascii.cursor_symbol()));
     let (u, a) = (unicode.spark_levels(), ascii.spark_levels());
     let (m, n) = ((u.len() - 1) as f64, (a.len() - 1) as f64);
@@ -840,4 +868,71 @@ fn pins_in_relative_mode_and_on_the_plate() {
     press(&mut app, Action::Pin);
     set(&mut app, "tp", "0.5");
     insta::assert_snapshot!("pins_plate_80x24_no_color", screen(&app, 80, 24));
+}
+
+/// The chart pane's plotting cells of an 80x24 frame (the SSH case): the rows between the legend
+/// and the x axis, right of the y axis, inside the pane's border.
+fn chart_body(text: &str) -> Vec<String> {
+    let rows: Vec<&str> = text.lines().map(|l| l.trim_matches('"')).collect();
+    // The x axis: the pane's row whose chart part is a `+` then dashes.
+    let axis_row = rows
+        .iter()
+        .position(|r| r.chars().skip(34).collect::<String>().contains("+---"))
+        .expect("an x axis");
+    let axis_column = rows[axis_row][34..].find('+').expect("the axis corner") + 34;
+    rows[3..axis_row]
+        .iter()
+        .map(|r| {
+            r.chars()
+                .skip(axis_column + 1)
+                .take(79 - axis_column - 1)
+                .collect()
+        })
+        .collect()
+}
+
+/// Every view the `c` key cycles through, on both models, at 80x24 in ASCII without colour (an SSH
+/// session): a snapshot each, the title whole, and every series' own marker drawn in the chart
+/// (not only in the legend), so that each series can be told apart; the finite-element and
+/// continuum points (`n`) with marks of their own.
+#[test]
+fn every_chart_at_80x24_in_ascii_shows_each_series_by_its_own_marker() {
+    use microslip::chart::SeriesKind;
+    for (preset, name) in [("paper-beams", "beam"), ("paper-plate", "plate")] {
+        let mut app = app_with(preset, Charset::Ascii, false);
+        let theme = Theme {
+            charset: Charset::Ascii,
+            color: false,
+        };
+        let (_, _, count) = app.views().describe(app.kind());
+        for position in 1..=count {
+            let text = screen(&app, 80, 24);
+            insta::assert_snapshot!(format!("ascii_80x24_{name}_{position}"), text);
+            let plot = app.plot().clone();
+            if plot.table.is_none() {
+                assert!(text.contains(&plot.title), "title cut: {}", plot.title);
+                let body = chart_body(&text).concat();
+                for series in &plot.series {
+                    let mark = match series.kind() {
+                        SeriesKind::Cursor => theme.cursor_symbol(),
+                        _ => theme.series_symbol(series.role),
+                    };
+                    assert!(
+                        body.contains(mark),
+                        "{name} {position} ({}): no {mark} for {}\n{text}",
+                        plot.title,
+                        series.name
+                    );
+                }
+            }
+            press(&mut app, Action::NextChart);
+        }
+    }
+    // u(L) vs K_T with the project's finite-element points and the 2-D continuum: two marks.
+    let mut app = app_with("paper-plate", Charset::Ascii, false);
+    press(&mut app, Action::ToggleNumeric);
+    let text = screen(&app, 80, 24);
+    insta::assert_snapshot!("ascii_80x24_plate_fe_and_continuum", text);
+    let body = chart_body(&text).concat();
+    assert!(body.contains('#') && body.contains('@'), "{text}");
 }

@@ -5,6 +5,7 @@
 //! layer, below `report`: `report` formats (text, JSON, CSV, SVG) and computes nothing; which
 //! charts and tables exist is [`view`].
 
+pub mod family;
 pub mod pins;
 pub mod vary;
 pub mod view;
@@ -71,18 +72,122 @@ impl Axis {
     }
 }
 
-/// How a series is drawn.
+/// How a series is drawn: derived from its [`SeriesRole`], never set apart from it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SeriesKind {
     /// A curve.
     Line,
-    /// Isolated markers (finite-element results).
+    /// Isolated markers (finite-element results, measurements).
     Points,
     /// The vertical cursor at the current value.
     Cursor,
     /// A pinned curve (its number, 1 to [`pins::MAX_PINS`]): the same quantity at parameters
     /// kept for comparison.
     Pin(u8),
+}
+
+/// What a series stands for, set where the series is built. The drawing layers choose colour,
+/// marker, line style and draw order from the role alone, never from the series' position or
+/// name, so that one role looks the same on every chart (the K_T curve is `x` in ASCII on w(L)
+/// vs F, X vs F and tau(x) alike) and a legend text can change without changing a style.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum SeriesRole {
+    /// The regularized law at the current parameters: `K_T`, `regularized`, `P_r/P`. The curve a
+    /// pin or a family member keeps.
+    Current,
+    /// The plain Coulomb law: the reference the others are compared with.
+    Coulomb,
+    /// The regularized law at a softer interface (`K_T/5` on the beams, `K_T/10` on the plate).
+    Softer,
+    /// The regularized law at a stiffer interface (`K_T*5`, `K_T*10`).
+    Stiffer,
+    /// A limit or reference line that is not a law: `mu P` under tau(x), `P_r = P`.
+    Limit,
+    /// The project's finite-element points.
+    FiniteElements,
+    /// The plate's 2-D plane-strain continuum points.
+    Continuum,
+    /// Points of a measured curve (`d` in the TUI).
+    Measured,
+    /// Points of an external FE code (a CalculiX .dat, any CSV).
+    External,
+    /// The vertical line at the current value.
+    Cursor,
+    /// A pinned curve, by its number (1 to [`pins::MAX_PINS`]).
+    Pin(u8),
+    /// A member of a family (`plot --family`), by its position (1 to [`family::MAX_MEMBERS`]):
+    /// every member has the same rank, none is the current one.
+    Family(u8),
+}
+
+impl SeriesRole {
+    /// The roles a chart's own series have (not pins or family members), in the order `--series`
+    /// lists them.
+    pub const CHART_ROLES: [SeriesRole; 10] = [
+        SeriesRole::Current,
+        SeriesRole::Coulomb,
+        SeriesRole::Softer,
+        SeriesRole::Stiffer,
+        SeriesRole::Limit,
+        SeriesRole::FiniteElements,
+        SeriesRole::Continuum,
+        SeriesRole::Measured,
+        SeriesRole::External,
+        SeriesRole::Cursor,
+    ];
+
+    /// How the role is drawn.
+    pub fn kind(self) -> SeriesKind {
+        match self {
+            SeriesRole::Current
+            | SeriesRole::Coulomb
+            | SeriesRole::Softer
+            | SeriesRole::Stiffer
+            | SeriesRole::Limit
+            | SeriesRole::Family(_) => SeriesKind::Line,
+            SeriesRole::FiniteElements
+            | SeriesRole::Continuum
+            | SeriesRole::Measured
+            | SeriesRole::External => SeriesKind::Points,
+            SeriesRole::Cursor => SeriesKind::Cursor,
+            SeriesRole::Pin(n) => SeriesKind::Pin(n),
+        }
+    }
+
+    /// The role's key on the command line (`plot --series`); pins and family members have none
+    /// (they are asked for with `--pin` and `--family`).
+    pub fn key(self) -> Option<&'static str> {
+        Some(match self {
+            SeriesRole::Current => "current",
+            SeriesRole::Coulomb => "coulomb",
+            SeriesRole::Softer => "softer",
+            SeriesRole::Stiffer => "stiffer",
+            SeriesRole::Limit => "limit",
+            SeriesRole::FiniteElements => "fe",
+            SeriesRole::Continuum => "continuum",
+            SeriesRole::Measured => "measured",
+            SeriesRole::External => "external",
+            SeriesRole::Cursor => "cursor",
+            SeriesRole::Pin(_) | SeriesRole::Family(_) => return None,
+        })
+    }
+
+    /// The chart role of `key` (`--series`).
+    pub fn from_key(key: &str) -> Option<SeriesRole> {
+        Self::CHART_ROLES.into_iter().find(|r| r.key() == Some(key))
+    }
+
+    /// Draw order, lowest first: the cursor under everything, then limit lines (so that a curve
+    /// lying on `mu P` shows over it), then curves, then points on top (few and sparse, they
+    /// would vanish under a curve).
+    pub fn layer(self) -> u8 {
+        match self.kind() {
+            SeriesKind::Cursor => 0,
+            _ if self == SeriesRole::Limit => 1,
+            SeriesKind::Line | SeriesKind::Pin(_) => 2,
+            SeriesKind::Points => 3,
+        }
+    }
 }
 
 /// One series.
@@ -92,8 +197,15 @@ pub struct PlotSeries {
     pub name: String,
     /// Points in plotted units.
     pub points: Series,
-    /// Line, points or cursor.
-    pub kind: SeriesKind,
+    /// What the series stands for (which sets how it is drawn).
+    pub role: SeriesRole,
+}
+
+impl PlotSeries {
+    /// How the series is drawn.
+    pub fn kind(&self) -> SeriesKind {
+        self.role.kind()
+    }
 }
 
 /// A chart, ready to draw.
@@ -109,6 +221,9 @@ pub struct Plot {
     pub series: Vec<PlotSeries>,
     /// Text lines shown instead of a chart (the K_T comparison table).
     pub table: Option<Vec<String>>,
+    /// What the title leaves out, under it in a figure: the parameters a family or a comparison
+    /// holds fixed (`L = 200 mm, b = 20 mm, ...`). The TUI shows them in its parameter pane.
+    pub caption: Option<String>,
 }
 
 /// Finite-element results for the overlay, in the chart's plotted units.
@@ -192,11 +307,12 @@ impl Views {
     }
 }
 
-pub fn line(name: impl Into<String>, points: Series) -> PlotSeries {
+/// A curve of `role`.
+pub fn line(role: SeriesRole, name: impl Into<String>, points: Series) -> PlotSeries {
     PlotSeries {
         name: name.into(),
         points,
-        kind: SeriesKind::Line,
+        role,
     }
 }
 
@@ -204,7 +320,7 @@ pub fn cursor(x: f64, [y0, y1]: [f64; 2]) -> PlotSeries {
     PlotSeries {
         name: "current".into(),
         points: vec![(x, y0), (x, y1)],
-        kind: SeriesKind::Cursor,
+        role: SeriesRole::Cursor,
     }
 }
 
@@ -430,7 +546,7 @@ pub fn build(
     force_span: Option<f64>,
 ) -> Plot {
     let external = external.filter(|e| e.model == model.kind());
-    let mut overlays: Vec<(&str, Series)> = Vec::new();
+    let mut overlays: Vec<(SeriesRole, &str, Series)> = Vec::new();
     let plot = match *model {
         Model::Beam { beams, force } => match views.beam {
             View::Table(Table::StiffnessComparison) => return stiffness_table(model),
@@ -438,15 +554,15 @@ pub fn build(
                 if chart == BeamChart::Deflection {
                     if let Some(points) = measured {
                         let series = points.iter().map(|m| (m.force, m.deflection)).collect();
-                        overlays.push(("measured", series));
+                        overlays.push((SeriesRole::Measured, "measured", series));
                     }
                     if let Some(e) = external {
-                        overlays.push((e.label.as_str(), e.points.clone()));
+                        overlays.push((SeriesRole::External, e.label.as_str(), e.points.clone()));
                     }
                 }
                 let f_data = overlays
                     .iter()
-                    .flat_map(|(_, s)| s.iter().map(|p| p.0))
+                    .flat_map(|(_, _, s)| s.iter().map(|p| p.0))
                     .fold(0.0, f64::max);
                 beam_plot(&beams, force, chart, f_data, force_span)
             }
@@ -457,7 +573,7 @@ pub fn build(
                 if let (PlateChart::Displacement, Some(e)) = (chart, external) {
                     // The chart's x axis is log10 K_T.
                     let series = e.points.iter().map(|&(k, u)| (k.log10(), u)).collect();
-                    overlays.push((e.label.as_str(), series));
+                    overlays.push((SeriesRole::External, e.label.as_str(), series));
                 }
                 plate_plot(&plate, chart)
             }
@@ -471,14 +587,14 @@ pub fn build(
         y: linear_axis("- (-)", 0.0, 1.0),
         ..Plot::default()
     });
-    for (name, points) in overlays {
+    for (role, name, points) in overlays {
         let top = max_y([&points]) * 1.05;
         plot.y.bounds[1] = plot.y.bounds[1].max(top);
         plot.y = linear_axis(plot.y.title.clone(), plot.y.bounds[0], plot.y.bounds[1]);
         plot.series.push(PlotSeries {
             name: name.into(),
             points,
-            kind: SeriesKind::Points,
+            role,
         });
     }
     if let Some(numeric) = numeric {
@@ -489,13 +605,13 @@ pub fn build(
         plot.series.push(PlotSeries {
             name,
             points: numeric.points.clone(),
-            kind: SeriesKind::Points,
+            role: SeriesRole::FiniteElements,
         });
         if !numeric.continuum.is_empty() {
             plot.series.push(PlotSeries {
                 name: "2-D continuum".into(),
                 points: numeric.continuum.clone(),
-                kind: SeriesKind::Points,
+                role: SeriesRole::Continuum,
             });
         }
     }
@@ -514,27 +630,31 @@ fn beam_plot(
     let forces = samples(0.0, f_max, Spacing::Linear)?;
     let kt = p.tangential_stiffness;
     // The curves at K_T/5 and K_T*5, where those are accepted stiffnesses.
-    let companions: Vec<(&str, TwinBeams)> = [("K_T/5", kt / 5.0), ("K_T*5", kt * 5.0)]
-        .into_iter()
-        .filter(|&(_, k)| BeamParam::Stiffness.check(k).is_ok())
-        .filter_map(|(label, k)| Some((label, beams.with_tangential_stiffness(k).ok()?)))
-        .collect();
+    let companions: Vec<(SeriesRole, &str, TwinBeams)> = [
+        (SeriesRole::Softer, "K_T/5", kt / 5.0),
+        (SeriesRole::Stiffer, "K_T*5", kt * 5.0),
+    ]
+    .into_iter()
+    .filter(|&(_, _, k)| BeamParam::Stiffness.check(k).is_ok())
+    .filter_map(|(role, label, k)| Some((role, label, beams.with_tangential_stiffness(k).ok()?)))
+    .collect();
     let f = force.newtons();
     match chart {
         BeamChart::Deflection => {
             let (coulomb, regularized) = curves::beam_deflection_vs_force(beams, forces).ok()?;
             // The current K_T last, so that it is drawn on top.
-            let mut series = vec![line("Coulomb", coulomb)];
-            for (label, other) in &companions {
+            let mut series = vec![line(SeriesRole::Coulomb, "Coulomb", coulomb)];
+            for (role, label, other) in &companions {
                 let (_, w) = curves::beam_deflection_vs_force(other, forces).ok()?;
-                series.push(line(*label, w));
+                series.push(line(*role, *label, w));
             }
-            series.push(line("K_T", regularized));
+            series.push(line(SeriesRole::Current, "K_T", regularized));
             let top = 1.05 * max_y(series.iter().map(|s| &s.points));
             let y = linear_axis("w(L) (mm)", 0.0, top);
             series.push(cursor(f, y.bounds));
             Some(Plot {
                 table: None,
+                caption: None,
                 title: format!("w(L) vs F, K_T = {} MPa/mm", number(kt)),
                 x: linear_axis("F (N)", 0.0, f_max),
                 y,
@@ -543,19 +663,22 @@ fn beam_plot(
         }
         BeamChart::SlipBoundary => {
             let mut series = Vec::new();
-            for (label, other) in &companions {
+            for (role, label, other) in &companions {
                 series.push(line(
+                    *role,
                     *label,
                     curves::beam_slip_boundary_vs_force(other, forces).ok()?,
                 ));
             }
             series.push(line(
+                SeriesRole::Current,
                 "K_T",
                 curves::beam_slip_boundary_vs_force(beams, forces).ok()?,
             ));
             series.push(cursor(f, [0.0, p.length]));
             Some(Plot {
                 table: None,
+                caption: None,
                 title: format!(
                     "X vs F, K_T = {} MPa/mm, F_1 = {} N",
                     number(kt),
@@ -585,8 +708,11 @@ fn beam_plot(
             let span = f.max(1e-9);
             Some(Plot {
                 table: None,
+                caption: None,
+                // At most 41 characters, the title row of an 80x24 screen's chart pane: D of
+                // both beams, C(oulomb) and R(egularized) as in the zone strip.
                 title: format!(
-                    "1 beam +-{} N; D (2) {} (C), {} (reg.) N mm",
+                    "1 beam +-{} N; D(2) {} C, {} R N mm",
                     number(f),
                     number_with(coulomb.dissipation(), 3),
                     number_with(regularized.dissipation(), 3)
@@ -594,8 +720,8 @@ fn beam_plot(
                 x: linear_axis("F (N)", -span, span),
                 y: linear_axis("w(L) (mm)", -top, top),
                 series: vec![
-                    line("Coulomb", coulomb_loop),
-                    line("regularized", regularized_loop),
+                    line(SeriesRole::Coulomb, "Coulomb", coulomb_loop),
+                    line(SeriesRole::Current, "regularized", regularized_loop),
                 ],
             })
         }
@@ -607,16 +733,18 @@ fn beam_plot(
             let zeta = curves::cycle_point(beams, force);
             Some(Plot {
                 table: None,
+                caption: None,
+                // At most 41 characters, the title row of an 80x24 screen's chart pane.
                 title: format!(
-                    "D per cycle vs F_a; zeta at F: {} (C), {} (reg.)",
+                    "D vs F_a; zeta at F {} C, {} R",
                     number_with(zeta.zeta_coulomb, 3),
                     number_with(zeta.zeta_regularized, 3)
                 ),
                 x: linear_axis("F_a (N)", 0.0, f_max),
                 y: linear_axis("D, 2 beams (N mm)", 0.0, top),
                 series: vec![
-                    line("Coulomb", coulomb),
-                    line("regularized", regularized),
+                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
+                    line(SeriesRole::Current, "regularized", regularized),
                     cursor(f, [0.0, top]),
                 ],
             })
@@ -631,13 +759,14 @@ fn beam_plot(
             ];
             Some(Plot {
                 table: None,
+                caption: None,
                 title: format!("tau(x) at F = {} N, K_T = {} MPa/mm", number(f), number(kt)),
                 x: linear_axis("x (mm)", 0.0, p.length),
                 y: linear_axis("tau (MPa)", 0.0, top),
                 series: vec![
-                    line("Coulomb", coulomb),
-                    line("regularized", regularized),
-                    line("mu P", mu_p),
+                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
+                    line(SeriesRole::Current, "regularized", regularized),
+                    line(SeriesRole::Limit, "mu P", mu_p),
                 ],
             })
         }
@@ -671,12 +800,13 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
             let cursor = cursor(kt.log10(), y.bounds);
             Some(Plot {
                 table: None,
-                title: "u(L) vs K_T (log scale)".into(),
+                caption: None,
+                title: "u(L) vs K_T".into(),
                 x: log_axis("K_T (MPa/mm, log)", from.log10(), to.log10()),
                 y,
                 series: vec![
-                    line("Coulomb", coulomb),
-                    line("regularized", regularized),
+                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
+                    line(SeriesRole::Current, "regularized", regularized),
                     cursor,
                 ],
             })
@@ -691,12 +821,17 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
             );
             let frictions = samples(lo, hi, Spacing::Linear)?;
             let mut series = Vec::new();
-            for (label, factor) in [("K_T/10", 0.1), ("K_T*10", 10.0), ("K_T", 1.0)] {
+            for (role, label, factor) in [
+                (SeriesRole::Softer, "K_T/10", 0.1),
+                (SeriesRole::Stiffer, "K_T*10", 10.0),
+                (SeriesRole::Current, "K_T", 1.0),
+            ] {
                 // Companions only where their K_T is accepted.
                 let Ok(other) = plate.with_tangential_stiffness(kt * factor) else {
                     continue;
                 };
                 series.push(line(
+                    role,
                     label,
                     curves::plate_slip_boundary_vs_friction(&other, frictions).ok()?,
                 ));
@@ -712,6 +847,7 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
             series.push(cursor(mu, y.bounds));
             Some(Plot {
                 table: None,
+                caption: None,
                 title: format!("X_r vs mu, K_T = {} MPa/mm", number(kt)),
                 x: linear_axis("mu (-)", lo, hi),
                 y,
@@ -727,12 +863,17 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
             let pad = 0.05 * (high - low).max(0.01);
             Some(Plot {
                 table: None,
-                title: "P_r(x)/P of the flat-plate model (P7-P9), not of the 2-D plate".to_string(),
+                caption: None,
+                title: "P_r(x)/P: flat-plate model P7-P9 (not 2-D)".to_string(),
                 x: linear_axis("x (mm)", 0.0, p.half_length),
                 y: linear_axis("P_r/P (-)", low - pad, high + pad),
                 series: vec![
-                    line("P_r/P", ratio),
-                    line("P_r = P", vec![(0.0, 1.0), (p.half_length, 1.0)]),
+                    line(SeriesRole::Current, "P_r/P", ratio),
+                    line(
+                        SeriesRole::Limit,
+                        "P_r = P",
+                        vec![(0.0, 1.0), (p.half_length, 1.0)],
+                    ),
                 ],
             })
         }

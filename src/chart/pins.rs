@@ -7,7 +7,7 @@
 //! A pin is labelled by what differs from the current parameters (`mu 0.3->0.2`: 0.3 pinned,
 //! 0.2 now), so the legend says what the comparison is about.
 
-use super::{Plot, PlotSeries, SeriesKind, Views, YMode, build, linear_axis, log_axis};
+use super::{Plot, PlotSeries, SeriesRole, Views, YMode, build, linear_axis, log_axis};
 use crate::chart::view::AnyChart;
 use crate::kernel::format::number;
 use crate::problems::inputs::{Inputs, Model};
@@ -16,17 +16,13 @@ use crate::problems::twin_beams::closed_form::BeamTheory;
 /// Pins kept at most: more curves than that cannot be told apart on a terminal chart.
 pub const MAX_PINS: usize = 4;
 
-/// Names of the series a pin keeps: the regularized law's curve of each chart.
-const MAIN_SERIES: [&str; 3] = ["K_T", "regularized", "P_r/P"];
-
 /// Differences named in a label before the rest are counted (`+2`).
 const NAMED_DIFFERENCES: usize = 2;
 
-/// The regularized law's curve of `plot`, the one a pin keeps (None for tables).
+/// The regularized law's curve of `plot` (role [`SeriesRole::Current`]), the one a pin keeps
+/// (None for tables).
 pub fn main_series(plot: &Plot) -> Option<&PlotSeries> {
-    plot.series
-        .iter()
-        .find(|s| s.kind == SeriesKind::Line && MAIN_SERIES.contains(&s.name.as_str()))
+    plot.series.iter().find(|s| s.role == SeriesRole::Current)
 }
 
 fn theory(theory: BeamTheory) -> &'static str {
@@ -80,56 +76,80 @@ pub fn label_of(name: &str) -> &str {
     name.split_once(": ").map_or(name, |(_, label)| label)
 }
 
-/// `plot` with each pin's main curve added as [`SeriesKind::Pin`] (its number and label), taken
+/// `plot` with each pin's main curve added as [`SeriesRole::Pin`] (its number and label), taken
 /// from `pinned`: the same chart built at the pin's parameters, in the same y-axis mode. Points
 /// beyond the x range are left out (a pin at another K_T has its own K_T range); the y range
 /// grows to show every pinned curve.
-pub fn add_pins(mut plot: Plot, pinned: &[(u8, String, &Plot)]) -> Plot {
+pub fn add_pins(plot: Plot, pinned: &[(u8, String, &Plot)]) -> Plot {
+    let curves: Vec<Borrowed> = pinned
+        .iter()
+        .filter_map(|(number, label, pinned_plot)| {
+            Some(Borrowed {
+                role: SeriesRole::Pin(*number),
+                name: series_name(*number, label),
+                series: main_series(pinned_plot)?,
+                log: pinned_plot.y.log,
+            })
+        })
+        .collect();
+    add_borrowed(plot, &curves)
+}
+
+/// A curve taken from another chart of the same quantity (a pin's, a family member's): the role
+/// and name it gets here, its points, and whether its chart's y axis was logarithmic.
+pub(super) struct Borrowed<'a> {
+    pub role: SeriesRole,
+    pub name: String,
+    pub series: &'a PlotSeries,
+    pub log: bool,
+}
+
+/// `plot` with `curves` added: points beyond the x range left out, the y range grown to show
+/// them all.
+pub(super) fn add_borrowed(mut plot: Plot, curves: &[Borrowed]) -> Plot {
     if plot.table.is_some() {
         return plot;
     }
     let [x0, x1] = plot.x.bounds;
     let [mut lo, mut hi] = plot.y.bounds;
-    for (number, label, pinned_plot) in pinned {
-        let Some(main) = main_series(pinned_plot) else {
-            continue;
-        };
-        let in_range = main
+    for curve in curves {
+        let in_range = curve
+            .series
             .points
             .iter()
             .copied()
             .filter(|&(x, y)| x >= x0 && x <= x1 && y.is_finite());
-        // On a log axis, a pinned chart that could not go log itself (its curve is 0, D at a
+        // On a log axis, a borrowed chart that could not go log itself (its curve is 0, D at a
         // friction that never slips, u(L) at nu = 0) still holds raw values: a 0 there would be
-        // drawn as 10^0 = 1. Values a log axis cannot show are left out and the label says so.
-        let (points, label) = if plot.y.log && !pinned_plot.y.log {
+        // drawn as 10^0 = 1. Values a log axis cannot show are left out and the name says so.
+        let (points, name) = if plot.y.log && !curve.log {
             let all: Vec<(f64, f64)> = in_range.collect();
             let shown: Vec<(f64, f64)> = all
                 .iter()
                 .filter(|p| p.1 > 0.0)
                 .map(|&(x, y)| (x, y.log10()))
                 .collect();
-            let label = match all.len() - shown.len() {
-                0 => label.clone(),
-                n if n == all.len() => format!("{label} (0: not on a log axis)"),
-                n => format!("{label} ({n} values <= 0 left out)"),
+            let name = match all.len() - shown.len() {
+                0 => curve.name.clone(),
+                n if n == all.len() => format!("{} (0: not on a log axis)", curve.name),
+                n => format!("{} ({n} values <= 0 left out)", curve.name),
             };
-            (shown, label)
+            (shown, name)
         } else {
-            (in_range.collect(), label.clone())
+            (in_range.collect(), curve.name.clone())
         };
         for &(_, y) in &points {
             lo = lo.min(y);
             hi = hi.max(y);
         }
         plot.series.push(PlotSeries {
-            name: series_name(*number, &label),
+            name,
             points,
-            kind: SeriesKind::Pin(*number),
+            role: curve.role,
         });
     }
     if [lo, hi] != plot.y.bounds {
-        // A little room where a pin widened the range, so its curve does not run along the frame.
+        // A little room where a curve widened the range, so that it does not run along the frame.
         let pad = 0.03 * (hi - lo);
         let [old_lo, old_hi] = plot.y.bounds;
         let lo = if lo < old_lo { lo - pad } else { lo };
@@ -229,7 +249,7 @@ mod tests {
             let pinned = pinned.validate().unwrap();
             let plot = with_pinned_models(base, &current, chart, &[pinned], YMode::Log);
             let pin = plot.series.last().unwrap();
-            assert_eq!(pin.kind, SeriesKind::Pin(1));
+            assert_eq!(pin.role, SeriesRole::Pin(1));
             assert!(
                 pin.points.is_empty(),
                 "{}: {:?}",
@@ -277,7 +297,7 @@ mod tests {
             &[(1, label(&pinned, &current), &build_at(&pinned))],
         );
         let pin = plot.series.last().unwrap();
-        assert_eq!(pin.kind, SeriesKind::Pin(1));
+        assert_eq!(pin.role, SeriesRole::Pin(1));
         assert_eq!(pin.name, "pin 1: mu 0.6->0.3");
         assert_eq!(label_of(&pin.name), "mu 0.6->0.3");
         // Twice mu: twice F_thre, so at the top of the range the pinned beams deflect less.
@@ -306,7 +326,7 @@ mod tests {
         let cursor = plot
             .series
             .iter()
-            .find(|s| s.kind == SeriesKind::Cursor)
+            .find(|s| s.role == SeriesRole::Cursor)
             .unwrap();
         assert_eq!(cursor.points[1].1, plot.y.bounds[1]);
     }

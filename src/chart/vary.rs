@@ -2,7 +2,7 @@
 //! parameter, both laws, with the cursor at the current value. Numbers from
 //! [`crate::study::curves::response_vs_param`]; axes and series from [`super`].
 
-use super::{Plot, cursor, line, linear_axis, log_axis, max_y, samples};
+use super::{Plot, SeriesRole, cursor, line, linear_axis, log_axis, max_y, samples};
 use crate::kernel::params::{Domain, Scale};
 use crate::problems::inputs::Model;
 use crate::problems::{BeamParam, Param};
@@ -72,8 +72,8 @@ pub fn build(model: &Model, param: Param) -> Plot {
     };
     let y = linear_axis(law, 0.0, y_top);
     let mut series = vec![
-        line("Coulomb", plotted(coulomb)),
-        line("regularized", plotted(regularized)),
+        line(SeriesRole::Coulomb, "Coulomb", plotted(coulomb)),
+        line(SeriesRole::Current, "regularized", plotted(regularized)),
     ];
     if value.is_finite() {
         series.push(cursor(to_x(value), y.bounds));
@@ -84,6 +84,7 @@ pub fn build(model: &Model, param: Param) -> Plot {
         y,
         series,
         table: None,
+        caption: None,
     }
 }
 

@@ -3,7 +3,7 @@
 //! where the regularized family separates clearly). A mode is a transformation of a built [`Plot`],
 //! so the TUI, `microslip plot --y` and the figures show the same numbers.
 
-use super::{Axis, Plot, PlotSeries, SeriesKind, axis_bounds, cursor, log_axis, tick};
+use super::{Axis, Plot, PlotSeries, SeriesKind, SeriesRole, axis_bounds, cursor, log_axis, tick};
 use crate::chart::view::{AnyChart, BeamChart, PlateChart};
 use crate::study::curves::Series;
 
@@ -61,7 +61,11 @@ impl YMode {
         if plot.table.is_some() || plot.y.log {
             return self == YMode::Linear;
         }
-        let data = || plot.series.iter().filter(|s| s.kind != SeriesKind::Cursor);
+        let data = || {
+            plot.series
+                .iter()
+                .filter(|s| s.kind() != SeriesKind::Cursor)
+        };
         match self {
             YMode::Linear => true,
             YMode::Log => {
@@ -72,8 +76,8 @@ impl YMode {
             YMode::Relative => coulomb(plot).is_some_and(|c| {
                 c.windows(2).all(|w| w[0].0 < w[1].0)
                     && data().any(|s| {
-                        s.kind == SeriesKind::Line
-                            && s.name != "Coulomb"
+                        s.kind() == SeriesKind::Line
+                            && s.role != SeriesRole::Coulomb
                             && same_samples(&s.points, c)
                     })
             }),
@@ -105,7 +109,7 @@ impl YMode {
 fn coulomb(plot: &Plot) -> Option<&Series> {
     plot.series
         .iter()
-        .find(|s| s.kind == SeriesKind::Line && s.name == "Coulomb")
+        .find(|s| s.role == SeriesRole::Coulomb)
         .map(|s| &s.points)
 }
 
@@ -120,7 +124,7 @@ fn quantity(title: &str) -> &str {
 
 /// Rebuilds the cursors (vertical lines) of `series` over the new y bounds.
 pub(super) fn stretch_cursors(series: &mut [PlotSeries], bounds: [f64; 2]) {
-    for s in series.iter_mut().filter(|s| s.kind == SeriesKind::Cursor) {
+    for s in series.iter_mut().filter(|s| s.kind() == SeriesKind::Cursor) {
         if let Some(&(x, _)) = s.points.first() {
             *s = cursor(x, bounds);
         }
@@ -131,7 +135,7 @@ pub(super) fn stretch_cursors(series: &mut [PlotSeries], bounds: [f64; 2]) {
 fn data_bounds(series: &[PlotSeries]) -> [f64; 2] {
     let (lo, hi) = series
         .iter()
-        .filter(|s| s.kind != SeriesKind::Cursor)
+        .filter(|s| s.kind() != SeriesKind::Cursor)
         .flat_map(|s| &s.points)
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
             (lo.min(p.1), hi.max(p.1))
@@ -147,7 +151,7 @@ fn to_log(mut plot: Plot) -> Plot {
     let top = plot
         .series
         .iter()
-        .filter(|s| s.kind != SeriesKind::Cursor)
+        .filter(|s| s.kind() != SeriesKind::Cursor)
         .flat_map(|s| &s.points)
         .map(|p| p.1)
         .fold(0.0, f64::max);
@@ -155,7 +159,7 @@ fn to_log(mut plot: Plot) -> Plot {
     for s in plot
         .series
         .iter_mut()
-        .filter(|s| s.kind != SeriesKind::Cursor)
+        .filter(|s| s.kind() != SeriesKind::Cursor)
     {
         s.points = s
             .points
@@ -194,7 +198,7 @@ fn to_relative(mut plot: Plot) -> Plot {
     for s in plot
         .series
         .iter_mut()
-        .filter(|s| s.kind != SeriesKind::Cursor)
+        .filter(|s| s.kind() != SeriesKind::Cursor)
     {
         // Curves on Coulomb's samples point by point, other points (FE) against its interpolant.
         let aligned = same_samples(&s.points, &reference);
@@ -268,7 +272,7 @@ mod tests {
         let plot = YMode::Log.apply(linear.clone());
         assert!(plot.y.log && plot.y.title == "u(L) (mm, log)");
         for (a, b) in linear.series.iter().zip(&plot.series) {
-            if a.kind == SeriesKind::Cursor {
+            if a.kind() == SeriesKind::Cursor {
                 continue;
             }
             for (p, q) in a.points.iter().zip(&b.points) {

@@ -12,7 +12,7 @@ use thiserror::Error;
 
 use super::number_with;
 use crate::chart::view::{AnyChart, BeamChart, PlateChart};
-use crate::chart::{Plot, PlotSeries, SeriesKind, YMode};
+use crate::chart::{Plot, PlotSeries, SeriesKind, SeriesRole, YMode};
 
 /// Width and height of a figure, in SVG pixels (a 16:10 frame that prints well at 16 cm).
 pub const SIZE: (u32, u32) = (800, 500);
@@ -28,8 +28,8 @@ pub enum FigureError {
     Drawing(String),
 }
 
-/// Colours of the series, by position (Okabe-Ito, distinguishable with colour-vision deficiency);
-/// a series named `Coulomb` is always black, the reference the others are compared with.
+/// Okabe-Ito colours (distinguishable with colour-vision deficiency): the laws' curves by role,
+/// family members by position.
 const PALETTE: [RGBColor; 7] = [
     RGBColor(0, 114, 178),
     RGBColor(213, 94, 0),
@@ -48,14 +48,76 @@ const PIN_PALETTE: [RGBColor; 4] = [
     RGBColor(102, 166, 30),
 ];
 
-fn colour(index: usize, series: &PlotSeries) -> RGBColor {
-    if let SeriesKind::Pin(n) = series.kind {
-        return PIN_PALETTE[usize::from(n.saturating_sub(1)) % PIN_PALETTE.len()];
-    }
-    if series.name == "Coulomb" {
-        BLACK
-    } else {
-        PALETTE[index % PALETTE.len()]
+/// The grey of the cursor and of limit lines.
+const GREY: RGBColor = RGBColor(150, 150, 150);
+
+/// How a series of a role looks in a figure: one look per role on every chart, Coulomb always
+/// black (the reference the others are compared with); a family member by its position.
+#[derive(Debug, Clone, Copy)]
+struct Look {
+    colour: RGBColor,
+    width: u32,
+    /// SVG dash pattern (`stroke-dasharray`), solid if none.
+    dashes: Option<&'static str>,
+    /// The marker of a points series.
+    marker: Marker,
+}
+
+/// The marker of a points series.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Marker {
+    /// A line, not points.
+    None,
+    /// An open circle: the finite-element points.
+    Circle,
+    /// An open square: the plate's continuum points.
+    Square,
+    /// An open triangle: measured and external points.
+    Triangle,
+}
+
+fn look(role: SeriesRole) -> Look {
+    let nth =
+        |palette: &[RGBColor], n: u8| palette[usize::from(n.saturating_sub(1)) % palette.len()];
+    let line = |colour| Look {
+        colour,
+        width: 2,
+        dashes: None,
+        marker: Marker::None,
+    };
+    let points = |colour, marker| Look {
+        marker,
+        ..line(colour)
+    };
+    match role {
+        // Drawn over the other curves and dashed: where a regularized curve lies on it (K_T x 5
+        // on w(L) vs F everywhere), both are seen.
+        SeriesRole::Coulomb => Look {
+            dashes: Some("7 4"),
+            ..line(BLACK)
+        },
+        SeriesRole::Current => line(PALETTE[0]),
+        SeriesRole::Softer => line(PALETTE[1]),
+        SeriesRole::Stiffer => line(PALETTE[2]),
+        // Dotted: apart from Coulomb's dashes where both lie on mu P.
+        SeriesRole::Limit => Look {
+            dashes: Some("2 3"),
+            ..line(PALETTE[6])
+        },
+        SeriesRole::Cursor => Look {
+            width: 1,
+            dashes: Some("6 4"),
+            ..line(GREY)
+        },
+        SeriesRole::FiniteElements => points(PALETTE[3], Marker::Circle),
+        SeriesRole::Continuum => points(PALETTE[5], Marker::Square),
+        SeriesRole::Measured => points(PALETTE[4], Marker::Triangle),
+        SeriesRole::External => points(PALETTE[6], Marker::Triangle),
+        SeriesRole::Pin(n) => Look {
+            dashes: Some("10 5"),
+            ..line(nth(&PIN_PALETTE, n))
+        },
+        SeriesRole::Family(n) => line(nth(&PALETTE, n)),
     }
 }
 
@@ -109,6 +171,95 @@ fn emptiest_corner(plot: &Plot) -> SeriesLabelPosition {
 
 type DrawResult = Result<(), Box<dyn std::error::Error>>;
 
+/// Height of the caption row under the plot (the parameters a comparison holds fixed).
+const CAPTION_ROW: u32 = 24;
+
+/// Stands where the series go while plotters draws, then is replaced by them (see [`draw`]).
+const SERIES_HERE: &str = "microslip-series-go-here";
+
+/// `#RRGGBB`, as plotters writes colours.
+fn hex(colour: RGBColor) -> String {
+    format!("#{:02X}{:02X}{:02X}", colour.0, colour.1, colour.2)
+}
+
+/// A pixel coordinate with two decimals (a hundredth of a pixel is below any display's
+/// resolution).
+fn px((x, y): (f64, f64)) -> String {
+    format!("{x:.2},{y:.2}")
+}
+
+/// The series of `plot` as SVG elements, in drawing order (by [`SeriesRole::layer`]: cursor,
+/// limit lines, curves with pins first and Coulomb last, points), at fractional pixel positions
+/// given by `at`.
+fn series_elements(plot: &Plot, at: &dyn Fn(f64, f64) -> (f64, f64)) -> String {
+    let mut order: Vec<&PlotSeries> = plot.series.iter().collect();
+    order.sort_by_key(|s| {
+        (
+            s.role.layer(),
+            !matches!(s.kind(), SeriesKind::Pin(_)),
+            s.role == SeriesRole::Coulomb,
+        )
+    });
+    let mut out = String::new();
+    for series in order {
+        let look = look(series.role);
+        let stroke = format!(
+            "opacity=\"1\" stroke=\"{}\" stroke-width=\"{}\"{}",
+            hex(look.colour),
+            look.width,
+            look.dashes
+                .map(|d| format!(" stroke-dasharray=\"{d}\""))
+                .unwrap_or_default()
+        );
+        let points = series.points.iter().map(|&(x, y)| at(x, y));
+        match look.marker {
+            Marker::None => {
+                if series.points.len() < 2 {
+                    continue;
+                }
+                let path: Vec<String> = points.map(px).collect();
+                out.push_str(&format!(
+                    "<polyline fill=\"none\" {stroke} points=\"{}\"/>\n",
+                    path.join(" ")
+                ));
+            }
+            Marker::Circle => {
+                for (x, y) in points {
+                    out.push_str(&format!(
+                        "<circle cx=\"{x:.2}\" cy=\"{y:.2}\" r=\"4\" fill=\"none\" {stroke}/>\n"
+                    ));
+                }
+            }
+            Marker::Square => {
+                for (x, y) in points {
+                    out.push_str(&format!(
+                        "<rect x=\"{:.2}\" y=\"{:.2}\" width=\"7\" height=\"7\" fill=\"white\" {stroke}/>\n",
+                        x - 3.5,
+                        y - 3.5
+                    ));
+                }
+            }
+            Marker::Triangle => {
+                for (x, y) in points {
+                    let corners = [(x, y - 4.5), (x - 4.0, y + 2.5), (x + 4.0, y + 2.5)];
+                    let path: Vec<String> = corners.into_iter().map(px).collect();
+                    out.push_str(&format!(
+                        "<polygon fill=\"none\" {stroke} points=\"{}\"/>\n",
+                        path.join(" ")
+                    ));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Draws the figure. Plotters' SVG backend rounds every coordinate to a whole pixel, which makes
+/// a gently sloping curve a staircase; so plotters draws the frame, the axes, the title, the
+/// caption and the legend, and the series are written here at fractional pixel positions, with
+/// the same mapping as plotters' axes (the plot area's pixel range, first to last pixel, y
+/// upwards). They replace a placeholder text drawn just before the legend, so that the legend
+/// stays on top of the curves.
 fn draw<X, Y>(out: &mut String, plot: &Plot, x_spec: X, y_spec: Y) -> DrawResult
 where
     X: AsRangedCoord<Value = f64>,
@@ -116,89 +267,131 @@ where
     X::CoordDescType: ValueFormatter<f64>,
     Y::CoordDescType: ValueFormatter<f64>,
 {
-    let root = SVGBackend::with_string(out, SIZE).into_drawing_area();
-    root.fill(&WHITE)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(&plot.title, ("sans-serif", 20))
-        .margin(16)
-        .x_label_area_size(44)
-        .y_label_area_size(72)
-        .build_cartesian_2d(x_spec, y_spec)?;
-    // Key points that miss 0 by a rounding error (6.9e-18 on a symmetric axis) are labelled 0.
-    let tick =
-        |span: f64| move |v: &f64| number_with(if v.abs() < 1e-9 * span { 0.0 } else { *v }, 3);
-    let span = |a: &crate::chart::Axis| (a.value(a.bounds[1]) - a.value(a.bounds[0])).abs();
-    let (x_tick, y_tick) = (tick(span(&plot.x)), tick(span(&plot.y)));
-    chart
-        .configure_mesh()
-        .x_desc(plot.x.title.as_str())
-        .y_desc(plot.y.title.as_str())
-        .x_label_formatter(&x_tick)
-        .y_label_formatter(&y_tick)
-        .x_labels(7)
-        .y_labels(7)
-        .label_style(("sans-serif", 13))
-        .axis_desc_style(("sans-serif", 15))
-        .max_light_lines(0)
-        .bold_line_style(RGBColor(225, 225, 225))
-        .draw()?;
-    let value = |&(x, y): &(f64, f64)| (plot.x.value(x), plot.y.value(y));
-    // The cursor first, under the curves, and points last, on top; the legend in the plot's order
-    // with the cursor last (an empty series carries its label).
-    let grey = ShapeStyle::from(&RGBColor(150, 150, 150)).stroke_width(1);
-    let dashed = |points: Vec<(f64, f64)>| DashedLineSeries::new(points, 6, 4, grey);
-    let cursors = plot.series.iter().filter(|s| s.kind == SeriesKind::Cursor);
-    for series in cursors.clone() {
-        chart.draw_series(dashed(series.points.iter().map(value).collect()))?;
-    }
-    let mut order: Vec<(usize, &PlotSeries)> = plot.series.iter().enumerate().collect();
-    order.sort_by_key(|(_, s)| s.kind == SeriesKind::Points);
-    for (i, series) in order {
-        let points = series.points.iter().map(value);
-        let style = colour(i, series);
-        match series.kind {
-            SeriesKind::Line => {
-                let line = ShapeStyle::from(&style).stroke_width(2);
-                chart
-                    .draw_series(LineSeries::new(points, line))?
-                    .label(series.name.as_str())
-                    .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], line));
+    let area;
+    {
+        let root = SVGBackend::with_string(out, SIZE).into_drawing_area();
+        root.fill(&WHITE)?;
+        let body = match &plot.caption {
+            Some(caption) => {
+                let (body, foot) = root.split_vertically(SIZE.1 - CAPTION_ROW);
+                let style = TextStyle::from(("sans-serif", 13))
+                    .color(&RGBColor(60, 60, 60))
+                    .pos(plotters::style::text_anchor::Pos::new(
+                        plotters::style::text_anchor::HPos::Center,
+                        plotters::style::text_anchor::VPos::Top,
+                    ));
+                foot.draw(&Text::new(
+                    caption.as_str(),
+                    ((SIZE.0 / 2) as i32, 2),
+                    style,
+                ))?;
+                body
             }
-            SeriesKind::Points => {
-                let mark = ShapeStyle::from(&style).stroke_width(2);
-                chart
-                    .draw_series(points.map(|p| Circle::new(p, 4, mark)))?
-                    .label(series.name.as_str())
-                    .legend(move |(x, y)| Circle::new((x + 10, y), 4, mark));
-            }
-            SeriesKind::Pin(_) => {
-                let line = ShapeStyle::from(&style).stroke_width(2);
-                chart
-                    .draw_series(DashedLineSeries::new(points, 10, 5, line))?
-                    .label(series.name.as_str())
-                    .legend(move |(x, y)| {
-                        EmptyElement::at((x, y))
-                            + PathElement::new([(0, 0), (8, 0)], line)
-                            + PathElement::new([(12, 0), (20, 0)], line)
-                    });
-            }
-            SeriesKind::Cursor => {}
-        }
-    }
-    for series in cursors {
+            None => root.clone(),
+        };
+        let mut chart = ChartBuilder::on(&body)
+            .caption(&plot.title, ("sans-serif", 20))
+            .margin(16)
+            .x_label_area_size(44)
+            .y_label_area_size(72)
+            .build_cartesian_2d(x_spec, y_spec)?;
+        // Key points that miss 0 by a rounding error (6.9e-18 on a symmetric axis) are labelled 0.
+        let tick =
+            |span: f64| move |v: &f64| number_with(if v.abs() < 1e-9 * span { 0.0 } else { *v }, 3);
+        let span = |a: &crate::chart::Axis| (a.value(a.bounds[1]) - a.value(a.bounds[0])).abs();
+        let (x_tick, y_tick) = (tick(span(&plot.x)), tick(span(&plot.y)));
         chart
-            .draw_series(dashed(Vec::new()))?
-            .label(series.name.as_str())
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], grey));
+            .configure_mesh()
+            .x_desc(plot.x.title.as_str())
+            .y_desc(plot.y.title.as_str())
+            .x_label_formatter(&x_tick)
+            .y_label_formatter(&y_tick)
+            .x_labels(7)
+            .y_labels(7)
+            .label_style(("sans-serif", 13))
+            .axis_desc_style(("sans-serif", 15))
+            .max_light_lines(0)
+            .bold_line_style(RGBColor(225, 225, 225))
+            .draw()?;
+        area = chart.plotting_area().get_pixel_range();
+        body.draw(&Text::new(SERIES_HERE, (0, 0), ("sans-serif", 1)))?;
+        // The legend in the plot's order with the cursor last, each entry an empty series
+        // carrying its label and mark.
+        let mut entries: Vec<&PlotSeries> = plot.series.iter().collect();
+        entries.sort_by_key(|s| s.kind() == SeriesKind::Cursor);
+        for series in entries {
+            // The legend mark: a line (two dashes for a dashed one) or the marker.
+            let look = look(series.role);
+            let style = ShapeStyle::from(&look.colour).stroke_width(look.width);
+            let entry = chart
+                .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())?
+                .label(series.name.as_str());
+            match (look.marker, look.dashes) {
+                (Marker::Circle, _) => {
+                    entry.legend(move |(x, y)| Circle::new((x + 10, y), 4, style));
+                }
+                (Marker::Square, _) => {
+                    entry.legend(move |(x, y)| {
+                        Rectangle::new([(x + 7, y - 3), (x + 14, y + 4)], style)
+                    });
+                }
+                (Marker::Triangle, _) => {
+                    entry.legend(move |(x, y)| {
+                        PathElement::new(
+                            [
+                                (x + 10, y - 4),
+                                (x + 6, y + 3),
+                                (x + 14, y + 3),
+                                (x + 10, y - 4),
+                            ],
+                            style,
+                        )
+                    });
+                }
+                (Marker::None, Some(_)) => {
+                    entry.legend(move |(x, y)| {
+                        EmptyElement::at((x, y))
+                            + PathElement::new([(0, 0), (8, 0)], style)
+                            + PathElement::new([(12, 0), (20, 0)], style)
+                    });
+                }
+                (Marker::None, None) => {
+                    entry.legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], style));
+                }
+            }
+        }
+        chart
+            .configure_series_labels()
+            .position(emptiest_corner(plot))
+            .label_font(("sans-serif", 13))
+            .background_style(WHITE.mix(0.85))
+            .border_style(RGBColor(180, 180, 180))
+            .draw()?;
+        root.present()?;
     }
-    chart
-        .configure_series_labels()
-        .position(emptiest_corner(plot))
-        .label_font(("sans-serif", 13))
-        .background_style(WHITE.mix(0.85))
-        .border_style(RGBColor(180, 180, 180))
-        .draw()?;
-    root.present()?;
+    // The plot area's first and last pixels, as plotters maps its axes.
+    let (left, right) = (f64::from(area.0.start), f64::from(area.0.end - 1));
+    let (top, bottom) = (f64::from(area.1.start), f64::from(area.1.end - 1));
+    let ([x0, x1], [y0, y1]) = (plot.x.bounds, plot.y.bounds);
+    let at = |x: f64, y: f64| {
+        (
+            left + (x - x0) / (x1 - x0) * (right - left),
+            bottom - (y - y0) / (y1 - y0) * (bottom - top),
+        )
+    };
+    let series = series_elements(plot, &at);
+    let marker = out
+        .find(SERIES_HERE)
+        .ok_or("the series placeholder is missing")?;
+    let start = out[..marker]
+        .rfind("<text")
+        .ok_or("the placeholder is not a text")?;
+    let end = marker
+        + out[marker..]
+            .find("</text>\n")
+            .ok_or("the placeholder is not closed")?
+        + "</text>\n".len();
+    out.replace_range(start..end, &series);
     Ok(())
 }
 
@@ -774,7 +967,7 @@ mod tests {
             assert!(points.iter().all(|&p| area.contains(p)), "{}", entry.text);
             let data = plot.series.iter().find(|s| s.name == entry.text);
             let data = data.expect("a series of the plot");
-            if data.kind == SeriesKind::Cursor {
+            if data.kind() == SeriesKind::Cursor {
                 let x = at(expected.cursor_x, 0.0).0;
                 assert!(
                     points.iter().all(|p| (p.0 - x).abs() <= READING),
@@ -843,7 +1036,7 @@ mod tests {
         assert_figure(
             &paper_figure(AnyChart::Plate(PlateChart::Displacement), false),
             &Expected {
-                title: "u(L) vs K_T (log scale)",
+                title: "u(L) vs K_T",
                 x_title: "K_T (MPa/mm, log)",
                 y_title: "u(L) (mm)",
                 legend: &["Coulomb", "regularized", "current"],

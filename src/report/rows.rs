@@ -196,7 +196,7 @@ pub struct ChartPointRow<'a> {
 pub fn chart_rows(plot: &Plot) -> impl Iterator<Item = ChartPointRow<'_>> {
     plot.series
         .iter()
-        .filter(|s| s.kind != SeriesKind::Cursor)
+        .filter(|s| s.kind() != SeriesKind::Cursor)
         .flat_map(move |s| {
             s.points.iter().map(move |&(x, y)| ChartPointRow {
                 series: &s.name,

@@ -618,11 +618,14 @@ impl App {
             self.plot = plot;
             return;
         }
-        // Each pin: the same chart at its values, in the same y mode, without the overlays.
+        // Each pin: the same chart at its values, in the same y mode, without the overlays, over
+        // the shown chart's x range (the current F or measured points may have widened it beyond
+        // the kept force span: a pin built over that span alone would stop short of the axis).
+        let span = Some(plot.x.bounds[1]);
         let key = PinnedChart {
             views: self.views,
             varied: self.state().varied,
-            force_span: self.force_span,
+            force_span: span,
             y_mode,
         };
         for i in 0..self.state().pins.len() {
@@ -634,7 +637,7 @@ impl App {
                 .inputs
                 .validate()
                 .ok()
-                .map(|m| (key, y_mode.apply(self.chart_of(&m, None, None, None))));
+                .map(|m| (key, y_mode.apply(self.chart_of(&m, None, None, None, span))));
             self.state_mut().pins[i].chart = built;
         }
         let current = self.inputs();
@@ -654,7 +657,13 @@ impl App {
     fn linear_plot(&self, model: &Model) -> Plot {
         let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
         let external = self.external.as_ref().map(|(points, _)| points);
-        self.chart_of(model, self.numeric.as_ref(), measured, external)
+        self.chart_of(
+            model,
+            self.numeric.as_ref(),
+            measured,
+            external,
+            self.force_span,
+        )
     }
 
     /// The chart shown (the view's, or the one against the parameter of `v`) for `model`.
@@ -664,18 +673,12 @@ impl App {
         numeric: Option<&NumericPoints>,
         measured: Option<&[Measurement]>,
         external: Option<&chart::ExternalPoints>,
+        force_span: Option<f64>,
     ) -> Plot {
         if let Some(param) = self.state().varied {
             return chart::vary::build(model, param);
         }
-        chart::build(
-            model,
-            self.views,
-            numeric,
-            measured,
-            external,
-            self.force_span,
-        )
+        chart::build(model, self.views, numeric, measured, external, force_span)
     }
 
     /// `g`: keeps the current parameters as a pin (the oldest goes beyond [`pins::MAX_PINS`]).
@@ -1950,7 +1953,7 @@ mod tests {
         app.plot()
             .series
             .iter()
-            .filter_map(|s| match s.kind {
+            .filter_map(|s| match s.kind() {
                 chart::SeriesKind::Pin(n) => Some((n, s.name.clone())),
                 _ => None,
             })
@@ -1962,6 +1965,23 @@ mod tests {
         app.update(Action::StartEdit);
         typed(app, value);
         app.update(Action::Commit);
+    }
+
+    /// A pin kept at F = 100 N, then F raised to 252 N: the force axis grows to 1.25 F = 315 N
+    /// and the pinned curve runs to its end (it stopped at 240 N, 3 F_thre, before).
+    #[test]
+    fn a_pinned_curve_spans_the_whole_force_axis() {
+        let mut app = app();
+        app.update(Action::Pin);
+        set_typed(&mut app, "F", "252");
+        let plot = app.plot();
+        assert_eq!(plot.x.bounds[1], 315.0);
+        let pin = plot
+            .series
+            .iter()
+            .find(|s| s.kind() == chart::SeriesKind::Pin(1));
+        let last = pin.and_then(|s| s.points.last()).expect("a pinned curve");
+        assert_eq!(last.0, 315.0);
     }
 
     #[test]

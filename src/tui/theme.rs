@@ -4,6 +4,7 @@
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::border;
 
+use crate::chart::SeriesRole;
 use crate::study::curves::Zone;
 
 /// Which characters may be drawn.
@@ -43,8 +44,8 @@ pub struct Theme {
     pub color: bool,
 }
 
-/// Series colours, from the 16-colour palette that every terminal has.
-const SERIES_COLORS: [Color; 6] = [
+/// Family members' colours, from the 16-colour palette that every terminal has.
+const FAMILY_COLORS: [Color; 6] = [
     Color::Yellow,
     Color::Cyan,
     Color::Green,
@@ -60,8 +61,8 @@ const PIN_COLORS: [Color; 4] = [
     Color::LightCyan,
     Color::LightGreen,
 ];
-const SERIES_ASCII: [&str; 6] = ["*", "o", "+", "x", "#", "%"];
-const SERIES_UNICODE: [&str; 6] = ["•", "o", "+", "×", "■", "◆"];
+/// Family members are drawn with a letter (they never share a chart with pins).
+const FAMILY_SYMBOLS: [&str; 6] = ["a", "b", "c", "d", "e", "f"];
 
 impl Theme {
     /// Reads `NO_COLOR` (any non-empty value turns colour off, see no-color.org).
@@ -93,13 +94,27 @@ impl Theme {
         }
     }
 
-    /// Style of the i-th data series.
-    pub fn series_style(&self, index: usize) -> Style {
-        if self.color {
-            Style::default().fg(SERIES_COLORS[index % SERIES_COLORS.len()])
-        } else {
-            Style::default()
+    /// Style of a series of `role`: one colour per role on every chart (none without colour).
+    pub fn series_style(&self, role: SeriesRole) -> Style {
+        if !self.color {
+            return Style::default();
         }
+        let nth =
+            |palette: &[Color], n: u8| palette[usize::from(n.saturating_sub(1)) % palette.len()];
+        let colour = match role {
+            SeriesRole::Current => Color::Cyan,
+            SeriesRole::Coulomb => Color::Yellow,
+            SeriesRole::Softer => Color::Green,
+            SeriesRole::Stiffer => Color::Magenta,
+            SeriesRole::Limit | SeriesRole::Cursor => Color::Gray,
+            SeriesRole::FiniteElements => Color::LightRed,
+            SeriesRole::Continuum => Color::LightBlue,
+            SeriesRole::Measured => Color::LightYellow,
+            SeriesRole::External => Color::Blue,
+            SeriesRole::Pin(n) => nth(&PIN_COLORS, n),
+            SeriesRole::Family(n) => nth(&FAMILY_COLORS, n),
+        };
+        Style::default().fg(colour)
     }
 
     /// True when curves must be told apart by their symbols, not their colours.
@@ -107,27 +122,37 @@ impl Theme {
         self.charset == Charset::Ascii || !self.color
     }
 
-    /// The plotting symbol of the i-th series in symbol mode.
-    pub fn series_symbol(&self, index: usize) -> &'static str {
-        match self.charset {
-            Charset::Ascii => SERIES_ASCII[index % SERIES_ASCII.len()],
-            Charset::Unicode => SERIES_UNICODE[index % SERIES_UNICODE.len()],
-        }
-    }
-
-    /// A pinned curve's symbol: its number, in every charset and colour mode, so the legend's
-    /// `1 mu 0.3->0.2` and the curve's 1s match without colour.
-    pub fn pin_symbol(&self, number: u8) -> &'static str {
-        PIN_SYMBOLS[usize::from(number.saturating_sub(1)) % PIN_SYMBOLS.len()]
-    }
-
-    /// A pinned curve's style (none without colour).
-    pub fn pin_style(&self, number: u8) -> Style {
-        if self.color {
-            Style::default()
-                .fg(PIN_COLORS[usize::from(number.saturating_sub(1)) % PIN_COLORS.len()])
-        } else {
-            Style::default()
+    /// The plotting symbol of a series of `role` in symbol mode: one per role on every chart, so
+    /// that `x` is the current K_T's curve wherever it is drawn and `*` always Coulomb. The
+    /// finite-element points (`#`) and the plate's continuum points (`@`) differ, as do measured
+    /// (`%`) and external (`&`) points. A pinned curve is drawn with its number in every charset
+    /// and colour mode, so the legend's `1 mu 0.3->0.2` and the curve's 1s match; a family
+    /// member with its letter.
+    pub fn series_symbol(&self, role: SeriesRole) -> &'static str {
+        let nth = |symbols: &[&'static str], n: u8| {
+            symbols[usize::from(n.saturating_sub(1)) % symbols.len()]
+        };
+        let ascii = self.charset == Charset::Ascii;
+        match role {
+            SeriesRole::Current if ascii => "x",
+            SeriesRole::Current => "×",
+            SeriesRole::Coulomb if ascii => "*",
+            SeriesRole::Coulomb => "•",
+            SeriesRole::Softer => "o",
+            SeriesRole::Stiffer => "+",
+            SeriesRole::Limit if ascii => "-",
+            SeriesRole::Limit => "╌",
+            SeriesRole::FiniteElements if ascii => "#",
+            SeriesRole::FiniteElements => "■",
+            SeriesRole::Continuum if ascii => "@",
+            SeriesRole::Continuum => "◆",
+            SeriesRole::Measured if ascii => "%",
+            SeriesRole::Measured => "▲",
+            SeriesRole::External if ascii => "&",
+            SeriesRole::External => "▼",
+            SeriesRole::Cursor => self.cursor_symbol(),
+            SeriesRole::Pin(n) => nth(&PIN_SYMBOLS, n),
+            SeriesRole::Family(n) => nth(&FAMILY_SYMBOLS, n),
         }
     }
 
@@ -226,7 +251,16 @@ mod tests {
         ] {
             assert!(s.is_ascii());
         }
-        assert!((0..12).all(|i| theme.series_symbol(i).is_ascii()));
+        let roles = SeriesRole::CHART_ROLES
+            .into_iter()
+            .chain((1..=4).map(SeriesRole::Pin))
+            .chain((1..=6).map(SeriesRole::Family));
+        let mut seen = std::collections::HashSet::new();
+        for role in roles {
+            let symbol = theme.series_symbol(role);
+            assert!(symbol.is_ascii(), "{role:?}");
+            assert!(seen.insert(symbol), "{role:?}: {symbol} taken twice");
+        }
         assert_eq!(ascii_fallback("└"), "+");
         assert_eq!(ascii_fallback("⣿"), "*");
     }

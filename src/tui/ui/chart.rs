@@ -1,7 +1,15 @@
 //! Charts. In colour with Unicode, ratatui's Chart draws Braille curves told apart by colour. Without
 //! colour or with ASCII, curves must be told apart by their symbols: each series is then rendered
 //! alone into a scratch buffer with one dot per cell, and its dots are copied into the frame with the
-//! series' own symbol (`*`, `o`, `+`, ...). The legend line above the chart works in both modes.
+//! symbol of its role (`*` Coulomb, `x` the current K_T, `o` softer, `+` stiffer, ...; see
+//! [`Theme::series_symbol`]). The legend line above the chart works in both modes.
+//!
+//! Where curves share a cell (on w(L) vs F at 80x24, Coulomb, K_T and K_T x 5 are one row of cells
+//! everywhere), one symbol on top would hide the others; the cell instead shows the symbols of the
+//! curves in it in turn along the line (`*x+*x+`), so that every curve is seen and the shared
+//! stretch reads as shared (Coulomb's plateau on the `mu P` line reads `*-x*-x`). Layers still
+//! rank above that: the cursor under everything, points on top. In colour, where Braille dots
+//! cannot take turns, limit lines are drawn first so that Coulomb's colour shows on them.
 
 use ratatui::Frame;
 use ratatui::buffer::Buffer;
@@ -12,7 +20,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Axis, Chart, Dataset, GraphType, Paragraph, Widget};
 
 use super::panes::pane;
-use crate::chart::{self as plots, Plot, PlotSeries, SeriesKind, pins};
+use crate::chart::{self as plots, Plot, PlotSeries, SeriesKind, SeriesRole, pins};
 use crate::study::curves::Series;
 use crate::tui::app::App;
 use crate::tui::theme::{Role, Theme};
@@ -80,31 +88,33 @@ const MAX_LEGEND_ROWS: usize = 3;
 fn legend_lines<'a>(plot: &'a Plot, theme: &Theme, compact: bool, width: usize) -> Vec<Line<'a>> {
     let (gap, after) = if compact { ("", " ") } else { (" ", "  ") };
     let mut entries: Vec<Vec<Span>> = Vec::new();
-    for (i, series) in plot
+    for series in plot
         .series
         .iter()
-        .enumerate()
-        .filter(|(_, s)| !matches!(s.kind, SeriesKind::Cursor | SeriesKind::Pin(_)))
+        .filter(|s| !matches!(s.kind(), SeriesKind::Cursor | SeriesKind::Pin(_)))
     {
         let mark = if theme.symbol_mode() {
-            theme.series_symbol(i).to_string()
+            theme.series_symbol(series.role).to_string()
         } else {
             "--".to_string()
         };
         entries.push(vec![
-            Span::styled(mark, theme.series_style(i)),
+            Span::styled(mark, theme.series_style(series.role)),
             Span::raw(format!("{gap}{}{after}", series.name)),
         ]);
     }
     for series in &plot.series {
-        if let SeriesKind::Pin(n) = series.kind {
+        if let SeriesKind::Pin(_) = series.kind() {
             entries.push(vec![
-                Span::styled(theme.pin_symbol(n), theme.pin_style(n)),
+                Span::styled(
+                    theme.series_symbol(series.role),
+                    theme.series_style(series.role),
+                ),
                 Span::raw(format!(" {}{after}", pins::label_of(&series.name))),
             ]);
         }
     }
-    if plot.series.iter().any(|s| s.kind == SeriesKind::Cursor) {
+    if plot.series.iter().any(|s| s.kind() == SeriesKind::Cursor) {
         entries.push(vec![Span::styled(
             format!("{} current", theme.cursor_symbol()),
             theme.style(Role::Cursor),
@@ -126,23 +136,35 @@ fn legend_lines<'a>(plot: &'a Plot, theme: &Theme, compact: bool, width: usize) 
     lines.into_iter().map(Line::from).collect()
 }
 
-/// Braille datasets told apart by colour (the cursor in the muted style, finite-element points as
-/// blocks, pins first so that the live curves are drawn over them), and last the places where each
-/// pin carries its number, as dots tagged with `Color::Indexed(n)` for [`label_pins`] to replace
-/// (the series' own colours are named colours, never indexed ones).
+/// The series in drawing order: by layer ([`SeriesRole::layer`]: cursor, limit lines, curves,
+/// points), pins first among the curves so that the live curves are drawn over them, the plot's
+/// order otherwise.
+fn drawing_order(plot: &Plot) -> Vec<(usize, &PlotSeries)> {
+    let mut order: Vec<(usize, &PlotSeries)> = plot.series.iter().enumerate().collect();
+    order.sort_by_key(|(_, s)| (s.role.layer(), !matches!(s.kind(), SeriesKind::Pin(_))));
+    order
+}
+
+/// Braille datasets told apart by colour (the cursor in the muted style, points as blocks) in
+/// [`drawing_order`], and last the places where each pin carries its number, as dots tagged with
+/// `Color::Indexed(n)` for [`label_pins`] to replace (the series' own colours are named colours,
+/// never indexed ones).
 fn colour_datasets<'a>(
     plot: &'a Plot,
     theme: &Theme,
     labels: &'a [(u8, Series)],
 ) -> Vec<Dataset<'a>> {
-    let mut order: Vec<(usize, &PlotSeries)> = plot.series.iter().enumerate().collect();
-    order.sort_by_key(|(_, s)| !matches!(s.kind, SeriesKind::Pin(_)));
-    let curves = order.into_iter().map(|(i, s)| {
-        let (graph, style, marker) = match s.kind {
-            SeriesKind::Line => (GraphType::Line, theme.series_style(i), Marker::Braille),
-            SeriesKind::Points => (GraphType::Scatter, theme.series_style(i), Marker::Block),
+    let curves = drawing_order(plot).into_iter().map(|(_, s)| {
+        let (graph, style, marker) = match s.kind() {
+            SeriesKind::Points => (
+                GraphType::Scatter,
+                theme.series_style(s.role),
+                Marker::Block,
+            ),
             SeriesKind::Cursor => (GraphType::Line, theme.style(Role::Cursor), Marker::Braille),
-            SeriesKind::Pin(n) => (GraphType::Line, theme.pin_style(n), Marker::Braille),
+            SeriesKind::Line | SeriesKind::Pin(_) => {
+                (GraphType::Line, theme.series_style(s.role), Marker::Braille)
+            }
         };
         Dataset::default()
             .marker(marker)
@@ -172,7 +194,7 @@ fn pin_label_points(plot: &Plot) -> Vec<(u8, Series)> {
     let [x0, x1] = plot.x.bounds;
     plot.series
         .iter()
-        .filter_map(|s| match s.kind {
+        .filter_map(|s| match s.kind() {
             SeriesKind::Pin(n) if !s.points.is_empty() => {
                 let nearest = |f: f64| {
                     let x = x0 + f * (x1 - x0);
@@ -201,8 +223,9 @@ fn label_pins(buffer: &mut Buffer, theme: &Theme, area: Rect) {
             if cell.symbol() != symbols::DOT {
                 continue;
             }
-            let style = theme.pin_style(n);
-            cell.set_symbol(theme.pin_symbol(n))
+            let role = SeriesRole::Pin(n);
+            let style = theme.series_style(role);
+            cell.set_symbol(theme.series_symbol(role))
                 .set_style(style.fg(style.fg.unwrap_or(Color::Reset)));
         }
     }
@@ -239,49 +262,60 @@ fn chart<'a>(plot: &'a Plot, theme: &Theme, datasets: Vec<Dataset<'a>>, area: Re
         .legend_position(None)
 }
 
-/// Symbol mode: one Chart render with one dot per cell, each series tagged by an indexed colour, then
-/// one pass that turns each tagged dot into its series' symbol and real style. The cursor is drawn
-/// first so that curves stay on top of it.
+/// Symbol mode: the axes, then each series rendered alone into a scratch buffer with one dot per
+/// cell; each cell of the frame then shows a symbol of the highest layer present there (cursor,
+/// lines, points), and where several series of that layer share it, each of them in turn along
+/// the line (the `(x + y)`-th of them), so that a curve under another still shows.
 fn draw_with_symbols(buffer: &mut Buffer, plot: &Plot, theme: &Theme, area: Rect) {
-    let mut order: Vec<(usize, &PlotSeries)> = plot.series.iter().enumerate().collect();
-    // The cursor first, then pins, then the live curves on top.
-    order.sort_by_key(|(_, s)| match s.kind {
-        SeriesKind::Cursor => 0,
-        SeriesKind::Pin(_) => 1,
-        SeriesKind::Line | SeriesKind::Points => 2,
-    });
-    let tag = |i: usize| Style::default().fg(Color::Indexed(i as u8));
-    let datasets = order
-        .iter()
-        .map(|&(i, s)| {
-            let graph = if s.kind == SeriesKind::Points {
-                GraphType::Scatter
-            } else {
-                GraphType::Line
-            };
-            Dataset::default()
-                .marker(Marker::Dot)
-                .graph_type(graph)
-                .style(tag(i))
-                .data(&s.points)
-        })
-        .collect();
-    chart(plot, theme, datasets, area).render(area, buffer);
-    for y in area.top()..area.bottom() {
-        for x in area.left()..area.right() {
-            let cell = &mut buffer[(x, y)];
-            if cell.symbol() != symbols::DOT {
-                continue;
+    chart(plot, theme, Vec::new(), area).render(area, buffer);
+    let width = usize::from(area.width);
+    // The series in each cell, in drawing order.
+    let mut cells: Vec<Vec<&PlotSeries>> = vec![Vec::new(); width * usize::from(area.height)];
+    let tag = Style::default().fg(Color::Indexed(1));
+    for (_, series) in drawing_order(plot) {
+        let graph = if series.kind() == SeriesKind::Points {
+            GraphType::Scatter
+        } else {
+            GraphType::Line
+        };
+        let dataset = Dataset::default()
+            .marker(Marker::Dot)
+            .graph_type(graph)
+            .style(tag)
+            .data(&series.points);
+        let mut scratch = Buffer::empty(area);
+        chart(plot, theme, vec![dataset], area).render(area, &mut scratch);
+        for y in area.top()..area.bottom() {
+            for x in area.left()..area.right() {
+                let cell = &scratch[(x, y)];
+                if cell.symbol() == symbols::DOT && cell.fg == tag.fg.unwrap_or(Color::Reset) {
+                    let at = usize::from(y - area.top()) * width + usize::from(x - area.left());
+                    cells[at].push(series);
+                }
             }
-            let Color::Indexed(i) = cell.fg else { continue };
-            let i = usize::from(i);
-            let (symbol, style) = match plot.series.get(i).map(|s| s.kind) {
-                Some(SeriesKind::Cursor) => (theme.cursor_symbol(), theme.style(Role::Cursor)),
-                Some(SeriesKind::Pin(n)) => (theme.pin_symbol(n), theme.pin_style(n)),
-                _ => (theme.series_symbol(i), theme.series_style(i)),
-            };
-            cell.set_symbol(symbol)
-                .set_style(style.fg(style.fg.unwrap_or(Color::Reset)));
         }
+    }
+    // Limit lines share the curves' layer here: under Coulomb's plateau (tau(x) past F_thre lies
+    // on mu P from end to end) a limit line drawn under would vanish.
+    let layer = |s: &PlotSeries| match s.kind() {
+        SeriesKind::Cursor => 0,
+        SeriesKind::Line | SeriesKind::Pin(_) => 1,
+        SeriesKind::Points => 2,
+    };
+    for (at, here) in cells.iter().enumerate() {
+        let Some(top) = here.iter().map(|s| layer(s)).max() else {
+            continue;
+        };
+        let shown: Vec<&&PlotSeries> = here.iter().filter(|s| layer(s) == top).collect();
+        let (x, y) = (at % width, at / width);
+        let series = shown[(x + y) % shown.len()];
+        let style = match series.kind() {
+            SeriesKind::Cursor => theme.style(Role::Cursor),
+            _ => theme.series_style(series.role),
+        };
+        let position = (area.left() + x as u16, area.top() + y as u16);
+        buffer[position]
+            .set_symbol(theme.series_symbol(series.role))
+            .set_style(style.fg(style.fg.unwrap_or(Color::Reset)));
     }
 }

@@ -52,6 +52,52 @@ fn help_lines(app: &App, contexts: &[Context]) -> Vec<Line<'static>> {
     lines
 }
 
+/// What the symbols on screen mean, in the theme's own characters (each line fits a column of the
+/// 78-column pop-up): the zone strip's, which the compact strip of a small screen explains only on
+/// its border, and the chart marks, one per role on every chart.
+fn symbol_lines(app: &App) -> Vec<Line<'static>> {
+    use crate::chart::SeriesRole as R;
+    use crate::study::curves::Zone;
+    let theme = app.theme();
+    let zone = |z| theme.zone_symbol(z);
+    let marks = |roles: &[(R, &str)]| {
+        let entries: Vec<String> = roles
+            .iter()
+            .map(|&(role, name)| format!("{} {name}", theme.series_symbol(role)))
+            .collect();
+        Line::from(format!("  {}", entries.join(" ")))
+    };
+    vec![
+        Line::from(Span::styled("Symbols", theme.style(Role::Title))),
+        Line::from(" Zones (C Coulomb, R regularized):"),
+        Line::from(format!(
+            "  {} stick {} microslip {} macroslip",
+            zone(Zone::Stick),
+            zone(Zone::Microslip),
+            zone(Zone::Macroslip)
+        )),
+        Line::from(" Chart marks without colour:"),
+        marks(&[
+            (R::Coulomb, "Coulomb"),
+            (R::Current, "K_T"),
+            (R::Softer, "softer"),
+            (R::Stiffer, "stiffer"),
+        ]),
+        marks(&[
+            (R::Limit, "limit"),
+            (R::FiniteElements, "FE"),
+            (R::Continuum, "continuum"),
+            (R::Measured, "measured"),
+        ]),
+        marks(&[
+            (R::External, "external"),
+            (R::Pin(1), "pin 1"),
+            (R::Cursor, "cursor"),
+        ]),
+        Line::from("  marks in turn: curves share cells"),
+    ]
+}
+
 /// The key map, straight from the binding table: the contexts one after the other, flowing down two
 /// columns, on as many pages as the screen needs (`j`/`k` turn them).
 pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
@@ -79,6 +125,8 @@ pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
     }
     lines.push(Line::from(""));
     lines.extend(COMMAND_HELP.iter().map(|l| Line::from(*l)));
+    lines.push(Line::from(""));
+    lines.extend(symbol_lines(app));
     let rows = usize::from(inner.height.saturating_sub(1)).max(1);
     let columns: Vec<Vec<Line>> = lines.chunks(rows).map(<[Line]>::to_vec).collect();
     let pages = columns.len().div_ceil(2).max(1);

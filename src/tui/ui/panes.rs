@@ -95,9 +95,8 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
         ),
         Model::Plate(_) => "Regime (i explains)".to_string(),
     };
-    let block = pane(app, &title);
+    let mut block = pane(app, &title);
     let inner = block.inner(area);
-    frame.render_widget(block, area);
     let height = usize::from(inner.height);
     let width = usize::from(inner.width.saturating_sub(3)).max(10);
     let explained: usize = summary
@@ -119,6 +118,11 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
                 .map(|s| (false, s))
         })
         .unwrap_or((false, StripSize::Compact));
+    if size == StripSize::Compact {
+        // The compact strip has no legend row: its symbols are explained on the pane's border.
+        block = block.title_bottom(strip::legend_of(&model, &theme));
+    }
+    frame.render_widget(block, area);
     let mut keep = vec![true; summary.len()];
     let mut ranks: Vec<(u8, usize)> = summary
         .iter()

@@ -176,6 +176,16 @@ fn marker_row(carets: &[(usize, String)], cells: usize) -> String {
     row.into_iter().collect::<String>().trim_end().to_string()
 }
 
+/// The legend of `model`'s strip, for the compact strip, which has no row for it: the regime
+/// pane puts it on its lower border, so that `=`, `~` and `#` are explained on every screen.
+pub fn legend_of(model: &Model, theme: &Theme) -> Line<'static> {
+    let zones = interface_zones(model);
+    let unloaded = zones.coulomb.iter().any(|z| z.zone == Zone::Unloaded);
+    let mut line = legend(theme, unloaded);
+    line.spans.push(Span::raw(" "));
+    line
+}
+
 /// The symbols' meanings; with no load, what the strip shows instead (one symbol, nothing slips).
 fn legend(theme: &Theme, unloaded: bool) -> Line<'static> {
     let mut spans = vec![Span::raw(" ")];
