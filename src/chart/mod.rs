@@ -600,6 +600,7 @@ pub fn build(
     if let Some(numeric) = numeric {
         let name = match numeric.failed {
             0 => "finite elements".to_string(),
+            1 => "finite elements (1 point did not converge)".to_string(),
             n => format!("finite elements ({n} points did not converge)"),
         };
         plot.series.push(PlotSeries {

@@ -12,6 +12,10 @@ pub struct MeshDensity {
     pub elements: usize,
     /// Smallest element, as a fraction of the interface's shortest length scale.
     pub smallest_fraction: f64,
+    /// Refine around the slip front the solver found, where the grading did not put small elements
+    /// (the plate's microslip end near its centre, [`crate::problems::plate::PlateFe::load_to`]):
+    /// on by default; off to study the convergence of the graded mesh alone.
+    pub refine_at_front: bool,
 }
 
 impl Default for MeshDensity {
@@ -20,6 +24,7 @@ impl Default for MeshDensity {
         MeshDensity {
             elements: 400,
             smallest_fraction: 0.02,
+            refine_at_front: true,
         }
     }
 }
@@ -42,6 +47,7 @@ impl MeshDensity {
             elements,
             smallest_fraction: default.smallest_fraction * default.elements as f64
                 / elements.max(1) as f64,
+            refine_at_front: true,
         }
     }
 }

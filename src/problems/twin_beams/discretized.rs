@@ -430,6 +430,7 @@ mod tests {
             MeshDensity {
                 elements: 60,
                 smallest_fraction: 0.05,
+                refine_at_front: true,
             },
         )
     }
@@ -482,6 +483,7 @@ mod tests {
             MeshDensity {
                 elements: 200,
                 smallest_fraction: 0.05,
+                refine_at_front: true,
             },
         );
         fe.load_to(50.0, 1).unwrap();
