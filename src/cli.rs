@@ -1084,8 +1084,10 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                     let pinned = pinned_models(&model, pins)?;
                     let mut plot =
                         crate::chart::pins::with_pinned_models(plot, &model, *chart, &pinned, mode);
-                    plot.caption =
-                        Some(crate::chart::family::parameter_text(&model.inputs(), None));
+                    plot.caption = Some(crate::chart::family::parameter_text(
+                        &model.inputs(),
+                        &[chart.x_param()],
+                    ));
                     plot
                 }
             };

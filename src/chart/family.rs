@@ -73,14 +73,14 @@ fn unit_suffix(param: Param) -> String {
     }
 }
 
-/// The parameters of `inputs` as a caption says them, `except` one (the varied one):
-/// `L = 200 mm, b = 20 mm, ..., mu = 0.3`.
-pub fn parameter_text(inputs: &Inputs, except: Option<Param>) -> String {
+/// The parameters of `inputs` as a caption says them, `except` those (the varied one, the one the
+/// x axis runs along): `L = 200 mm, b = 20 mm, ..., mu = 0.3`.
+pub fn parameter_text(inputs: &Inputs, except: &[Option<Param>]) -> String {
     inputs
         .kind()
         .params()
         .iter()
-        .filter(|&&param| Some(param) != except)
+        .filter(|&&param| !except.contains(&Some(param)))
         .filter_map(|&param| {
             let value = inputs.get(param)?;
             Some(format!(
@@ -162,7 +162,7 @@ pub fn build_family(
         ),
         caption: members
             .first()
-            .map(|(_, m)| parameter_text(&m.inputs(), Some(param))),
+            .map(|(_, m)| parameter_text(&m.inputs(), &[Some(param), chart.x_param()])),
         x: first.x.clone(),
         y: first.y.clone(),
         series: Vec::new(),
@@ -296,6 +296,8 @@ mod tests {
             caption.contains("KT = 600 MPa/mm") && !caption.contains("P = "),
             "{caption}"
         );
+        // F runs along the x axis: its value would say nothing.
+        assert!(!caption.contains("F = "), "{caption}");
         // P = 2 MPa: F_thre = 160 N, so the axis runs to 480 N and every curve reaches it.
         assert_eq!(plot.x.bounds[1], 480.0);
         // The y axis from the members drawn, not their companions: 5 % above the highest.

@@ -110,6 +110,20 @@ pub enum AnyChart {
 }
 
 impl AnyChart {
+    /// The parameter the chart runs along its x axis (F, K_T, mu), whose value a caption need not
+    /// give; None where the x axis is no parameter (tau(x), the loop, P_r(x)).
+    pub fn x_param(self) -> Option<crate::problems::Param> {
+        use crate::problems::{BeamParam, Param, PlateParam};
+        match self {
+            AnyChart::Beam(BeamChart::Deflection | BeamChart::SlipBoundary) => {
+                Some(Param::Beam(BeamParam::Force))
+            }
+            AnyChart::Plate(PlateChart::Displacement) => Some(Param::Plate(PlateParam::Stiffness)),
+            AnyChart::Plate(PlateChart::SlipBoundary) => Some(Param::Plate(PlateParam::Friction)),
+            _ => None,
+        }
+    }
+
     /// Every chart: the beams', then the plate's (each model's in cycling order).
     pub const ALL: &'static [AnyChart] = &[
         AnyChart::Beam(BeamChart::Deflection),
