@@ -348,6 +348,13 @@ where
                         )
                     });
                 }
+                // A dotted line (the limits) as dots, apart from the dashed ones.
+                (Marker::None, Some(_)) if series.role == SeriesRole::Limit => {
+                    entry.legend(move |(x, y)| {
+                        let dot = |i: i32| PathElement::new([(4 * i, 0), (4 * i + 2, 0)], style);
+                        EmptyElement::at((x, y)) + dot(0) + dot(1) + dot(2) + dot(3) + dot(4)
+                    });
+                }
                 (Marker::None, Some(_)) => {
                     entry.legend(move |(x, y)| {
                         EmptyElement::at((x, y))
