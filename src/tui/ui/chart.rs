@@ -17,6 +17,7 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Style};
 use ratatui::symbols::{self, Marker};
 use ratatui::text::{Line, Span};
+use ratatui::widgets::canvas::{Canvas, Line as CanvasLine, Points};
 use ratatui::widgets::{Axis, Chart, Dataset, GraphType, Paragraph, Widget};
 
 use super::panes::pane;
@@ -268,33 +269,56 @@ fn chart<'a>(plot: &'a Plot, theme: &Theme, datasets: Vec<Dataset<'a>>, area: Re
 /// the line (the `(x + y)`-th of them), so that a curve under another still shows.
 fn draw_with_symbols(buffer: &mut Buffer, plot: &Plot, theme: &Theme, area: Rect) {
     chart(plot, theme, Vec::new(), area).render(area, buffer);
-    let width = usize::from(area.width);
+    // Where the chart put its axes' corner: the graph area is right of the y axis and above the
+    // x axis (ratatui's layout). Each series is then painted alone on a canvas of that area, as
+    // the chart itself paints its datasets, without laying the axes out again for every series.
+    let Some(graph) = graph_area(buffer, area) else {
+        return;
+    };
+    let width = usize::from(graph.width);
     // The series in each cell, in drawing order.
-    let mut cells: Vec<Vec<&PlotSeries>> = vec![Vec::new(); width * usize::from(area.height)];
-    let tag = Style::default().fg(Color::Indexed(1));
+    let mut cells: Vec<Vec<&PlotSeries>> = vec![Vec::new(); width * usize::from(graph.height)];
+    let tag = Color::Indexed(1);
+    let mut scratch = Buffer::empty(graph);
     for (_, series) in drawing_order(plot) {
-        let graph = if series.kind() == SeriesKind::Points {
-            GraphType::Scatter
-        } else {
-            GraphType::Line
-        };
-        let dataset = Dataset::default()
+        let line = series.kind() != SeriesKind::Points;
+        scratch.reset();
+        Canvas::default()
+            .x_bounds(plot.x.bounds)
+            .y_bounds(plot.y.bounds)
             .marker(Marker::Dot)
-            .graph_type(graph)
-            .style(tag)
-            .data(&series.points);
-        let mut scratch = Buffer::empty(area);
-        chart(plot, theme, vec![dataset], area).render(area, &mut scratch);
-        for y in area.top()..area.bottom() {
-            for x in area.left()..area.right() {
+            .paint(|ctx| {
+                ctx.draw(&Points {
+                    coords: &series.points,
+                    color: tag,
+                });
+                if line {
+                    for pair in series.points.windows(2) {
+                        ctx.draw(&CanvasLine {
+                            x1: pair[0].0,
+                            y1: pair[0].1,
+                            x2: pair[1].0,
+                            y2: pair[1].1,
+                            color: tag,
+                        });
+                    }
+                }
+            })
+            .render(graph, &mut scratch);
+        for y in graph.top()..graph.bottom() {
+            for x in graph.left()..graph.right() {
                 let cell = &scratch[(x, y)];
-                if cell.symbol() == symbols::DOT && cell.fg == tag.fg.unwrap_or(Color::Reset) {
-                    let at = usize::from(y - area.top()) * width + usize::from(x - area.left());
+                if cell.symbol() == symbols::DOT && cell.fg == tag {
+                    let at = usize::from(y - graph.top()) * width + usize::from(x - graph.left());
                     cells[at].push(series);
                 }
             }
         }
     }
+    let title_width = Span::raw(plot.y.title.as_str()).width();
+    // Symbols take turns along the line by their cell's place in the chart body.
+    let shift = usize::from(graph.left() - area.left());
+    let area = graph;
     // Limit lines share the curves' layer here: under Coulomb's plateau (tau(x) past F_thre lies
     // on mu P from end to end) a limit line drawn under would vanish.
     let layer = |s: &PlotSeries| match s.kind() {
@@ -308,14 +332,37 @@ fn draw_with_symbols(buffer: &mut Buffer, plot: &Plot, theme: &Theme, area: Rect
         };
         let shown: Vec<&&PlotSeries> = here.iter().filter(|s| layer(s) == top).collect();
         let (x, y) = (at % width, at / width);
-        let series = shown[(x + y) % shown.len()];
+        let series = shown[(x + shift + y) % shown.len()];
         let style = match series.kind() {
             SeriesKind::Cursor => theme.style(Role::Cursor),
             _ => theme.series_style(series.role),
         };
         let position = (area.left() + x as u16, area.top() + y as u16);
+        // The y axis title, which the chart writes over the graph area's first row, stays
+        // readable.
+        if y == 0 && x < title_width {
+            continue;
+        }
         buffer[position]
             .set_symbol(theme.series_symbol(series.role))
             .set_style(style.fg(style.fg.unwrap_or(Color::Reset)));
     }
+}
+
+/// The graph area of a chart drawn into `area` of `buffer`: right of its y axis, above its x axis,
+/// found by the axes' corner; None when the chart had no room for axes.
+fn graph_area(buffer: &Buffer, area: Rect) -> Option<Rect> {
+    (area.top()..area.bottom())
+        .rev()
+        .find_map(|y| {
+            (area.left()..area.right())
+                .find(|&x| buffer[(x, y)].symbol() == symbols::line::BOTTOM_LEFT)
+                .map(|x| Rect {
+                    x: x + 1,
+                    y: area.top(),
+                    width: area.right().saturating_sub(x + 1),
+                    height: y - area.top(),
+                })
+        })
+        .filter(|graph| graph.width > 0 && graph.height > 0)
 }
