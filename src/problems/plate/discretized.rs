@@ -130,7 +130,7 @@ impl PlateFe {
     ///
     /// After a rising load, when the microslip zone ends (X_r, as this solver finds it) inside an
     /// element more than twice the mesh's smallest, the plate is solved again from P = 0 on a mesh
-    /// refined to that size within [`REFINED_LAYERS`] boundary layers of X_r (at most twice): the
+    /// refined to that size within 6 boundary layers of X_r (at most twice): the
     /// mesh is graded towards the free end, where X_r usually is, but with little friction the
     /// macroslip zone covers most of the plate and X_r falls among the coarse elements near the
     /// centre (mu = 0.05, alpha L = 220: X_r 3.6 % off with 200 elements, 9e-7 after). The
