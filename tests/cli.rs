@@ -2077,3 +2077,27 @@ fn plot_curves_are_drawn_at_fractional_pixels() {
         assert!(fractional > coordinates.len() / 2, "{curve}");
     }
 }
+
+#[test]
+fn a_family_along_the_chart_s_own_axis_is_refused() {
+    for (args, param) in [
+        (
+            &["plot", "w-vs-f", "--family", "F=0,100"][..],
+            "F is the x axis of chart w-vs-f",
+        ),
+        (
+            &[
+                "plot",
+                "u-vs-kt",
+                "--preset",
+                "paper-plate",
+                "--family",
+                "KT=1e3,1e6",
+            ][..],
+            "KT is the x axis of chart u-vs-kt",
+        ),
+    ] {
+        let said = failure(args, 2);
+        assert!(said.contains(param), "{said}");
+    }
+}

@@ -268,3 +268,52 @@ fn within_t_of_the_current_answer_is_an_interval_around_the_current_k_t() {
     assert!((u(lo) / current - 1.05).abs() < 1e-7, "{lo}");
     assert!((u(hi) / current - 0.95).abs() < 1e-7, "{hi}");
 }
+
+/// The interval's ends at the edges of the accepted K_T range: unbounded above only when
+/// Coulomb's answer itself is within; when it is not but the stiffest accepted K_T is, the interval
+/// ends there and says so; and the softest accepted K_T may be within while the top is bounded.
+#[test]
+fn the_interval_at_the_edges_of_the_accepted_range() {
+    let stiff = SqueezedPlate::new(PlateParams {
+        tangential_stiffness: 9.99e11,
+        ..PlateParams::PAPER
+    })
+    .unwrap();
+    let u = |kt: f64| {
+        stiff
+            .with_tangential_stiffness(kt)
+            .unwrap()
+            .regularized()
+            .end_displacement()
+    };
+    let current = u(9.99e11);
+    let coulomb = stiff.coulomb().end_displacement() / current - 1.0;
+    // Coulomb is outside 1e-9 of the current answer, the stiffest accepted K_T inside.
+    assert!(-coulomb > 1e-9 && (u(1e12) / current - 1.0).abs() <= 1e-9);
+    let answer = plate_stiffness_near_current(&stiff, 1e-9, 0.1).unwrap();
+    let near = answer.near_current.unwrap();
+    assert_eq!(near.upper, Some(1e12));
+    assert!(near.upper_is_largest_accepted);
+    // With a tolerance Coulomb meets, nothing above.
+    let wide = plate_stiffness_near_current(&stiff, 2.0 * -coulomb, 0.1).unwrap();
+    assert_eq!(wide.near_current.unwrap().upper, None);
+    // The softest accepted K_T within 1 % of its own answer: the lower end is the domain's, the
+    // upper end a root where w(L) falls 1 % below.
+    let soft = TwinBeams::new(TwinBeamsParams {
+        tangential_stiffness: 1e-6,
+        ..TwinBeamsParams::PAPER
+    })
+    .unwrap();
+    let answer = beam_stiffness_near_current(&soft, [100.0, 100.0], 0.01, 2.0).unwrap();
+    assert!(matches!(answer.threshold, Threshold::Everywhere(k) if k == 1e-6));
+    let near = answer.near_current.unwrap();
+    let upper = near.upper.unwrap();
+    assert!(!near.upper_is_largest_accepted);
+    let w = |kt: f64| {
+        soft.with_tangential_stiffness(kt)
+            .unwrap()
+            .regularized(TipForce::new(100.0).unwrap())
+            .tip_deflection()
+    };
+    assert!((w(upper) / w(1e-6) - 0.99).abs() < 1e-7, "{upper}");
+}

@@ -40,6 +40,18 @@ pub enum FamilyError {
         /// The varied parameter.
         param: Param,
     },
+    /// The varied parameter is the one the chart runs along its x axis: every member would draw
+    /// the same curve.
+    #[error(
+        "{param} is the x axis of chart {chart}: every member would draw the same curve; vary \
+         another parameter"
+    )]
+    AlongTheAxis {
+        /// The chart's key.
+        chart: &'static str,
+        /// The varied parameter.
+        param: Param,
+    },
     /// A series asked for is not on this chart.
     #[error("chart {chart} has no {role} series; it has: {present}")]
     Missing {
@@ -129,6 +141,12 @@ pub fn build_family(
     mode: YMode,
     shared: &[SeriesRole],
 ) -> Result<Plot, FamilyError> {
+    if chart.x_param() == Some(param) {
+        return Err(FamilyError::AlongTheAxis {
+            chart: chart.key(),
+            param,
+        });
+    }
     let views = Views::showing(chart);
     let linear = |model: &Model, span: Option<f64>| build(model, views, None, None, None, span);
     // The widest force axis any member needs, then every member over it.
@@ -358,22 +376,29 @@ mod tests {
     }
 
     #[test]
-    fn plate_families_take_the_union_of_the_members_axes() {
+    fn a_family_along_the_chart_s_own_axis_is_refused_and_another_is_drawn() {
+        // mu is the x axis of X_r vs mu: every member would draw the same X_r(mu).
         let mu = Param::Plate(PlateParam::Friction);
-        let plot = build_family(
+        let along = build_family(
             AnyChart::Plate(PlateChart::SlipBoundary),
             mu,
             &members(ModelKind::Plate, mu, &[0.1, 0.3]),
             YMode::Linear,
             &[],
+        );
+        assert!(matches!(along, Err(FamilyError::AlongTheAxis { .. })));
+        // t_p is not (P would be, in effect: the plate's problem is homogeneous in P, X_r does
+        // not move): two curves over the same mu axis, each its own.
+        let tp = Param::Plate(PlateParam::Thickness);
+        let plot = build_family(
+            AnyChart::Plate(PlateChart::SlipBoundary),
+            tp,
+            &members(ModelKind::Plate, tp, &[0.1, 0.4]),
+            YMode::Linear,
+            &[],
         )
         .unwrap();
         assert_eq!(plot.series.len(), 2);
-        // mu/5 of the smaller to 5 mu of the larger.
-        assert!(
-            (plot.x.bounds[0] - 0.02).abs() < 1e-12 && plot.x.bounds[1] >= 1.5,
-            "{:?}",
-            plot.x
-        );
+        assert_ne!(plot.series[0].points, plot.series[1].points);
     }
 }

@@ -204,6 +204,21 @@ impl LoadPath {
             (step / (to - from)).clamp(Self::SMALLEST, 1.0)
         }
     }
+
+    /// A step from `from` to `to` (N) that crosses F_1 (`onset`) and needs several increments goes
+    /// up to F_1 in its first increment: below F_1 the interface law is linear and one increment
+    /// is exact, so the fine increments are spent beyond it only. Returns the step's increment
+    /// `t1` (fraction of the step) and its load amplitude, (step time, tip force / `to`) at
+    /// 0, t1 and 1: F_1 at the end of the first increment, then `to - F_1` over the other
+    /// `(1 - t1) / t1` increments, each at most `step` N. None when the step does not cross F_1
+    /// or one increment does (then [`LoadPath::increment`] alone applies).
+    pub fn ramp(step: f64, onset: f64, from: f64, to: f64) -> Option<(f64, [(f64, f64); 3])> {
+        if !(from < onset && onset < to) || step >= to - from {
+            return None;
+        }
+        let t1 = (step / (to - onset + step)).max(Self::SMALLEST);
+        Some((t1, [(0.0, from / to), (t1, onset / to), (1.0, 1.0)]))
+    }
 }
 
 /// The twin-beam deck: the pressure P in a first step, then one step per tip force in `loads`
@@ -322,10 +337,39 @@ pub fn beam_deck_on_path(
     let _ = writeln!(
         deck,
         "** load path: steps ending beyond F_1 = {} N (at this stick slope) in increments of at most\n\
-         ** {} N of tip force (friction is path-dependent once it saturates); the others in one",
+         ** {} N of tip force beyond F_1 (friction is path-dependent once it saturates), a step that\n\
+         ** crosses F_1 reaching it in its first increment (the law is linear below); the others in one",
         Compact(onset),
         Compact(force_step)
     );
+    // Steps that cross F_1: their loads follow an amplitude that reaches F_1 in one increment
+    // (CalculiX reads amplitudes in the model definition, before the first step).
+    let mut from = 0.0;
+    let mut steps = Vec::with_capacity(loads.len());
+    for (n, force) in loads.iter().enumerate() {
+        let to = force.newtons();
+        let step = match LoadPath::ramp(force_step, onset, from, to) {
+            Some((t1, points)) => {
+                let name = format!("RAMP{}", n + 2);
+                let _ = writeln!(
+                    deck,
+                    "** step {}: up to F_1 in its first increment, then by at most {} N\n\
+                     *AMPLITUDE, NAME={name}",
+                    n + 2,
+                    Compact(force_step)
+                );
+                let row: Vec<String> = points
+                    .iter()
+                    .map(|(t, a)| format!("{}, {}", real(*t), real(*a)))
+                    .collect();
+                let _ = writeln!(deck, "{}", row.join(", "));
+                (t1, Some(name))
+            }
+            None => (LoadPath::increment(force_step, onset, from, to), None),
+        };
+        steps.push(step);
+        from = to;
+    }
     deck.push_str("** step 1: the interface pressure P, pressing the beams together\n");
     start_step(&mut deck, 1.0, Geometry::Nonlinear);
     write_pressure(
@@ -334,10 +378,7 @@ pub fn beam_deck_on_path(
         p.pressure,
     );
     end_beam_step(&mut deck);
-    let mut from = 0.0;
-    for (n, force) in loads.iter().enumerate() {
-        let increment = LoadPath::increment(force_step, onset, from, force.newtons());
-        from = force.newtons();
+    for (n, (force, (increment, amplitude))) in loads.iter().zip(steps).enumerate() {
         let _ = writeln!(
             deck,
             "** step {}: tip force F = {} N on each beam (uniform shear traction on the end face)",
@@ -345,7 +386,12 @@ pub fn beam_deck_on_path(
             Compact(force.newtons())
         );
         start_step(&mut deck, increment, Geometry::Nonlinear);
-        deck.push_str("*CLOAD\n");
+        match amplitude {
+            Some(name) => {
+                let _ = writeln!(deck, "*CLOAD, AMPLITUDE={name}");
+            }
+            None => deck.push_str("*CLOAD\n"),
+        }
         for block in [&lower, &upper] {
             for (id, f) in block.end_face_loads(force.newtons()) {
                 let _ = writeln!(deck, "{id}, 2, {}", real(f));
@@ -768,6 +814,17 @@ mod tests {
         assert!((LoadPath::increment(2.0, 100.0, 80.0, 120.0) - 0.05).abs() < 1e-15);
         assert_eq!(LoadPath::increment(50.0, 100.0, 80.0, 120.0), 1.0);
         assert_eq!(LoadPath::increment(1e-6, 100.0, 80.0, 120.0), 1e-3);
+        // A ramp only for a step that crosses F_1 and needs more than one increment.
+        assert_eq!(LoadPath::ramp(2.0, 100.0, 40.0, 90.0), None);
+        assert_eq!(LoadPath::ramp(2.0, 100.0, 100.0, 120.0), None);
+        assert_eq!(LoadPath::ramp(80.0, 100.0, 40.0, 120.0), None);
+        let (t1, points) = LoadPath::ramp(2.0, 100.0, 40.0, 120.0).unwrap();
+        assert!((t1 - 2.0 / 22.0).abs() < 1e-15);
+        assert_eq!(
+            points,
+            [(0.0, 40.0 / 120.0), (t1, 100.0 / 120.0), (1.0, 1.0)]
+        );
+        assert_eq!(LoadPath::ramp(1e-6, 100.0, 40.0, 120.0).unwrap().0, 1e-3);
         // The paper's beams: F_1 = F_thre / (1 - sech kL) with F_thre = 80 N; the default step is
         // F_1 / 40.
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
@@ -781,10 +838,12 @@ mod tests {
 
     #[test]
     fn beam_steps_are_nonlinear_and_fine_beyond_onset() {
-        // F_1 of the paper's beams is about 80 N: the 40 N step keeps one increment, the step
-        // from 40 to 100 N is cut into increments of at most 2 N, 1/30 of it.
+        // F_1 of the paper's beams is about 80 N: the 40 N step keeps one increment; the step
+        // from 40 to 100 N reaches F_1 in its first increment (an amplitude), then goes on by
+        // at most 2 N; the step from 100 to 120 N starts beyond F_1: 2 N increments, 1/10 of it.
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
-        let loads = [40.0, 100.0].map(|f| TipForce::new(f).unwrap());
+        let onset = beams.first_macroslip_force();
+        let loads = [40.0, 100.0, 120.0].map(|f| TipForce::new(f).unwrap());
         let path = LoadPath {
             force_step: Some(2.0),
         };
@@ -795,8 +854,32 @@ mod tests {
                 .count(),
             2
         );
-        let line = "3.333333333e-2, 1., 3.333333333e-5, 3.333333333e-2";
+        let amplitude = deck
+            .split("*AMPLITUDE, NAME=RAMP3\n")
+            .nth(1)
+            .unwrap()
+            .lines()
+            .next()
+            .unwrap();
+        let points: Vec<f64> = amplitude.split(", ").map(|v| v.parse().unwrap()).collect();
+        let t1 = points[2];
+        assert_eq!([points[0], points[1]], [0.0, 0.4], "{amplitude}");
+        assert!((points[3] - onset / 100.0).abs() < 1e-15, "{amplitude}");
+        assert_eq!([points[4], points[5]], [1.0, 1.0]);
+        // Each later increment of step time t1 adds (100 - F_1) t1 / (1 - t1): 2 N.
+        assert!(((100.0 - onset) * t1 / (1.0 - t1) - 2.0).abs() < 1e-9);
+        let line = format!("{t1:.9e}, 1., {:.9e}, {t1:.9e}", t1 * 1e-3);
         assert_eq!(deck.matches(&line).count(), 1, "{line}");
+        assert_eq!(deck.matches("*CLOAD, AMPLITUDE=RAMP3\n").count(), 1);
+        assert_eq!(
+            deck.matches("AMPLITUDE").count(),
+            2,
+            "one ramp, defined once"
+        );
+        let line = "1.000000000e-1, 1., 1.000000000e-4, 1.000000000e-1";
+        assert_eq!(deck.matches(line).count(), 1, "{line}");
+        // Amplitudes belong to the model definition: before the first step.
+        assert!(deck.find("*AMPLITUDE").unwrap() < deck.find("*STEP").unwrap());
         // The plate keeps one linear increment: its problem scales with P.
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
         let plate = plate_deck(&plate, DeckMesh::Coarse, StickSlope::Model).unwrap();
@@ -807,7 +890,10 @@ mod tests {
     #[test]
     fn tip_loads_add_up_to_the_force_on_each_beam() {
         let deck = paper_beam_deck(DeckMesh::Coarse);
-        let step = deck.split("*CLOAD\n").nth(2).unwrap();
+        // The step of F = 100 N crosses F_1: its loads follow an amplitude, ending at 1.
+        let step = deck.split("*CLOAD").nth(2).unwrap();
+        assert!(step.starts_with(", AMPLITUDE=RAMP"), "{}", &step[..40]);
+        let step = step.split_once('\n').unwrap().1;
         let total: f64 = step
             .lines()
             .take_while(|l| !l.starts_with('*'))

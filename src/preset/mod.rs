@@ -211,6 +211,14 @@ pub fn is_bundled(name: &str) -> bool {
 /// [`PresetError::NotFound`] for an unknown name, [`PresetError::Io`] for an unreadable file, and
 /// the file's first problem (with its line) for an invalid one.
 pub fn resolve(spec: &str) -> Result<Preset, PresetError> {
+    resolve_in(spec, user_preset_dir().as_deref())
+}
+
+/// [`resolve`] with the user presets in `user_dir` (the TUI's, which tests set).
+///
+/// # Errors
+/// As [`resolve`].
+pub fn resolve_in(spec: &str, user_dir: Option<&Path>) -> Result<Preset, PresetError> {
     let first = |mut problems: Vec<Located>| {
         let problem = problems.remove(0);
         match problem.line {
@@ -229,7 +237,7 @@ pub fn resolve(spec: &str) -> Result<Preset, PresetError> {
     if let Some((name, text)) = BUNDLED.iter().find(|(name, _)| *name == spec) {
         return Preset::parse(text, name, PresetSource::Bundled).map_err(first);
     }
-    match user_preset_dir().map(|dir| dir.join(format!("{spec}.toml"))) {
+    match user_dir.map(|dir| dir.join(format!("{spec}.toml"))) {
         Some(path) if path.exists() => store::load(&path).map_err(first),
         _ => Err(PresetError::NotFound {
             name: spec.to_string(),

@@ -77,8 +77,12 @@ pub struct ToleranceAnswer {
 /// around it, found by one bracketed root on each side.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct NearCurrent {
-    /// The largest K_T within (MPa/mm); None: every stiffer one, up to Coulomb, is within.
+    /// The largest K_T within (MPa/mm): a root, or the largest accepted K_T when even that one is
+    /// within while Coulomb is not; None only when Coulomb's answer itself is within, and with it
+    /// every stiffer K_T.
     pub upper: Option<f64>,
+    /// True when `upper` is the largest accepted K_T, not a root (Coulomb itself is outside).
+    pub upper_is_largest_accepted: bool,
     /// Coulomb's answer against the current K_T's, worst over the forces (fraction, <= 0).
     pub coulomb: f64,
 }
@@ -338,8 +342,12 @@ fn near_current(
     let tolerance = answer.tolerance;
     let (kt, hi) = (answer.current.0, domain.max());
     let threshold = smallest_within(domain, tolerance, above);
-    let upper = if below(hi) <= tolerance {
+    // Unbounded only when Coulomb's answer (K_T -> infinity) is itself within; otherwise the
+    // interval ends at the root, or at the largest accepted K_T when even that one is within.
+    let upper = if -coulomb <= tolerance {
         None
+    } else if below(hi) <= tolerance {
+        Some(hi)
     } else {
         let misfit = |ln_k: f64| below(ln_k.exp()) / tolerance - 1.0;
         Some(find_root_in_bracket(misfit, kt.ln(), hi.ln()).exp())
@@ -355,7 +363,11 @@ fn near_current(
     ToleranceAnswer {
         threshold,
         settings,
-        near_current: Some(NearCurrent { upper, coulomb }),
+        near_current: Some(NearCurrent {
+            upper,
+            coulomb,
+            upper_is_largest_accepted: upper == Some(hi),
+        }),
         ..answer
     }
 }

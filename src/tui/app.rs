@@ -2730,7 +2730,7 @@ mod tests {
         command(&mut app, "preset no-such");
         let message = app.message().unwrap();
         assert!(message.is_error && message.text.contains("no preset named 'no-such'"));
-        assert!(message.text.contains("paper-beams"), "{}", message.text);
+        assert!(message.text.contains("p lists them"), "{}", message.text);
         command(&mut app, "help");
         assert_eq!(app.mode(), &Mode::Help);
     }

@@ -251,7 +251,13 @@ pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
         Effect::ListPresets { user_dir } => Outcome::Presets(preset::listing(user_dir.as_deref())),
         Effect::SolveContinuum { params } => solve_continuum(params),
         Effect::LoadPreset { name, user_dir } => Outcome::Preset {
-            result: load_preset(&name, user_dir.as_deref()),
+            // As `--preset` takes it: a path, a bundled name, then a user preset of that name.
+            result: preset::resolve_in(&name, user_dir.as_deref()).map_err(|e| match e {
+                preset::PresetError::NotFound { name } => {
+                    format!("no preset named '{name}' (p lists them; a path must end in .toml)")
+                }
+                other => other.to_string(),
+            }),
             name,
         },
         Effect::CompletePreset {
@@ -324,27 +330,6 @@ fn solve_continuum(params: crate::PlateParams) -> Outcome {
     })
     .map_err(|e| e.to_string());
     Outcome::Continuum { params, result }
-}
-
-/// The preset `name` as the picker would load it: a path (with a `/` or ending in `.toml`), else a
-/// listed preset of that name (bundled first, then the user's; an invalid or shadowed file gives
-/// its problem).
-fn load_preset(name: &str, user_dir: Option<&std::path::Path>) -> Result<preset::Preset, String> {
-    if name.contains('/') || name.ends_with(".toml") {
-        return preset::store::load(std::path::Path::new(name)).map_err(|problems| {
-            problems
-                .first()
-                .map_or_else(|| "invalid preset".to_string(), ToString::to_string)
-        });
-    }
-    let listing = preset::listing(user_dir);
-    match listing.into_iter().find(|listed| listed.name == name) {
-        Some(listed) => listed.preset,
-        None => Err(format!(
-            "no preset named '{name}' (bundled: {}; p lists the user's too)",
-            preset::bundled_names().join(", ")
-        )),
-    }
 }
 
 /// Applies `action` and performs every effect it leads to before returning, the fit included:
@@ -517,6 +502,10 @@ impl<M: From<Report> + Send + 'static> Runner<M> {
         self.continuum.0 = true;
         let reports = self.reports.clone();
         std::thread::spawn(move || {
+            // The solver reports non-convergence and out-of-range plates as errors; a panic is a
+            // bug, and the panic hook has already restored the terminal (on any thread), so the
+            // loop ends the program with it as it does for the fit's, rather than drawing on a
+            // terminal that is no longer in full-screen mode.
             let report = match std::panic::catch_unwind(|| solve_continuum(params)) {
                 Ok(outcome) => Report::Outcome(outcome),
                 Err(payload) => Report::Panicked(payload),

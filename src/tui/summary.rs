@@ -220,7 +220,12 @@ pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLi
                     "u(L) 2-D FE {} mm",
                     number_with(solved.end_displacement, 3)
                 )),
-                ContinuumState::Failed(_) => Some("u(L) 2-D FE: none here (i)".to_string()),
+                // The reason, in the words the line has room for (the whole of it in i's text
+                // would need the pane's lines to own their meanings).
+                ContinuumState::Failed(reason) if reason.contains("too stiff") => {
+                    Some("u(L) 2-D FE: K_T too stiff".to_string())
+                }
+                ContinuumState::Failed(_) => Some("u(L) 2-D FE: not converged".to_string()),
             };
             lines.extend(continuum_line.map(|text| {
                 plain(

@@ -160,8 +160,11 @@ impl PlateFe {
         if x >= p.half_length {
             return None;
         }
-        let lengths = self.nodes.windows(2).map(|w| w[1] - w[0]);
-        let smallest = lengths.clone().fold(f64::INFINITY, f64::min);
+        let smallest = self
+            .nodes
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .fold(f64::INFINITY, f64::min);
         let e = self
             .nodes
             .partition_point(|&n| n <= x)
@@ -173,22 +176,25 @@ impl PlateFe {
         let layer = (p.youngs_modulus * p.thickness
             / ((1.0 - p.poisson * p.poisson) * p.tangential_stiffness))
             .sqrt();
-        let from = (x - REFINED_LAYERS * layer).max(0.0);
-        let to = (x + REFINED_LAYERS * layer).min(p.half_length);
-        let count = ((to - from) / smallest)
-            .ceil()
-            .min(MAX_REFINED_ELEMENTS as f64) as usize;
-        let mut nodes: Vec<f64> = self
+        // The window, widened to the old nodes around it, so that the fine part meets the old
+        // mesh at its own nodes (no sliver element at the junctions).
+        let (lo, hi) = (x - REFINED_LAYERS * layer, x + REFINED_LAYERS * layer);
+        let first = self.nodes.iter().rposition(|&n| n <= lo).unwrap_or(0);
+        let last = self
             .nodes
             .iter()
+            .position(|&n| n >= hi)
+            .unwrap_or(self.nodes.len() - 1);
+        let (from, to) = (self.nodes[first], self.nodes[last]);
+        let count = ((to - from) / smallest)
+            .ceil()
+            .clamp(1.0, MAX_REFINED_ELEMENTS as f64) as usize;
+        let nodes: Vec<f64> = self.nodes[..first]
+            .iter()
             .copied()
-            .filter(|&n| n < from || n > to)
-            .chain((0..=count).map(|i| from + (to - from) * i as f64 / count as f64))
+            .chain((0..count).map(|i| from + (to - from) * i as f64 / count as f64))
+            .chain(self.nodes[last..].iter().copied())
             .collect();
-        nodes.sort_by(f64::total_cmp);
-        // Drop nodes closer than a hundredth of the smallest element (where the fine part meets
-        // the old mesh).
-        nodes.dedup_by(|b, a| (*b - *a).abs() < 0.01 * smallest);
         Some(nodes)
     }
 

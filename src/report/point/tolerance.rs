@@ -104,10 +104,22 @@ impl From<&CodeSetting> for CodeSettingReport {
 
 impl ToleranceReport {
     pub fn new(preset: &str, answer: &ToleranceAnswer) -> ToleranceReport {
-        let (kt_min, note) = match answer.threshold {
-            Threshold::Stiffness(k) => (Some(k), "smallest K_T within the tolerance"),
-            Threshold::Everywhere(k) => (Some(k), "every accepted K_T is within the tolerance"),
-            Threshold::Nowhere { .. } => (None, "no accepted K_T is within the tolerance"),
+        let (kt_min, note) = match (answer.threshold, answer.near_current.is_some()) {
+            (Threshold::Stiffness(k), false) => (Some(k), "smallest K_T within the tolerance"),
+            (Threshold::Everywhere(k), false) => {
+                (Some(k), "every accepted K_T is within the tolerance")
+            }
+            (Threshold::Stiffness(k), true) => (
+                Some(k),
+                "smallest K_T within the tolerance of the current K_T's answer; the largest is \
+                 KT_max_MPa_per_mm (null: every stiffer K_T)",
+            ),
+            (Threshold::Everywhere(k), true) => (
+                Some(k),
+                "the softest accepted K_T is within the tolerance of the current K_T's answer; \
+                 the largest is KT_max_MPa_per_mm (null: every stiffer K_T)",
+            ),
+            (Threshold::Nowhere { .. }, _) => (None, "no accepted K_T is within the tolerance"),
         };
         ToleranceReport {
             preset: preset.to_string(),
@@ -173,8 +185,12 @@ impl ToleranceReport {
                 "K_T for which the regularized {quantity} is within {tol} of the current K_T's ({} MPa/mm) {over}, preset {preset}:",
                 number(kt)
             );
+            // Enough digits to tell the ends apart at a tight tolerance (1e-9: 11 digits).
+            let digits = (4.0_f64)
+                .max((-answer.tolerance.log10()).ceil() + 2.0)
+                .min(15.0) as u32;
             let lower = match answer.threshold {
-                Threshold::Stiffness(k) => format!("from {} MPa/mm", number_with(k, 4)),
+                Threshold::Stiffness(k) => format!("from {} MPa/mm", number_with(k, digits)),
                 Threshold::Everywhere(k) => {
                     format!("from the softest accepted, {} MPa/mm,", number(k))
                 }
@@ -187,10 +203,17 @@ impl ToleranceReport {
                     "  {lower} to any stiffer K_T (Coulomb itself is {} off the current answer)",
                     percent_of(near.coulomb)
                 ),
+                Some(upper) if near.upper_is_largest_accepted => writeln!(
+                    out,
+                    "  {lower} to the largest accepted K_T, {} MPa/mm (Coulomb itself is {} off the \
+                     current answer: outside)",
+                    number_with(upper, digits),
+                    percent_of(near.coulomb)
+                ),
                 Some(upper) => writeln!(
                     out,
                     "  {lower} to {} MPa/mm (stiffer ones come closer to Coulomb, {} off the current answer)",
-                    number_with(upper, 4),
+                    number_with(upper, digits),
                     percent_of(near.coulomb)
                 ),
             };
