@@ -550,7 +550,7 @@ pub struct DeckArgs {
     #[arg(long)]
     near_coulomb: bool,
     /// Largest tip-force change per increment (N) in the load steps that end beyond F_1
-    /// (friction is path-dependent once it saturates), beams only; default: F_1 / 20.
+    /// (friction is path-dependent once it saturates), beams only; default: F_1 / 40.
     #[arg(long, value_name = "N")]
     increment: Option<f64>,
 }
