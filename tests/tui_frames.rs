@@ -936,3 +936,21 @@ fn every_chart_at_80x24_in_ascii_shows_each_series_by_its_own_marker() {
     let body = chart_body(&text).concat();
     assert!(body.contains('#') && body.contains('@'), "{text}");
 }
+
+#[test]
+fn a_deflection_far_beyond_the_measured_range_claims_no_envelope() {
+    let mut app = app();
+    press(&mut app, Action::CommandLine);
+    for c in "F=1e12".chars() {
+        press(&mut app, Action::Input(c));
+    }
+    press(&mut app, Action::Commit);
+    let text = screen(&app, 80, 24);
+    assert!(
+        text.contains("Regime (i), FE: w/L too big") && !text.contains("FE within"),
+        "{text}"
+    );
+    // The paper's force keeps its number.
+    let text = screen(&self::app(), 80, 24);
+    assert!(text.contains("Regime (i), FE within 3 %"), "{text}");
+}
