@@ -219,12 +219,7 @@ pub fn beam_stiffness_for_tolerance(
     element: f64,
 ) -> Result<ToleranceAnswer, ToleranceError> {
     let tolerance = check_tolerance(tolerance)?;
-    let (from, to) = (TipForce::new(from)?.newtons(), TipForce::new(to)?.newtons());
-    let (from, to) = (from.min(to), from.max(to));
-    if to <= 0.0 {
-        return Err(ToleranceError::Unloaded { from, to });
-    }
-    let forces = force_grid(beams, [from, to]);
+    let ([from, to], forces) = checked_forces(beams, [from, to])?;
     let at = |kt: f64| {
         // Every K_T of the domain is accepted; the fallback is never taken.
         let beams = beams.with_tangential_stiffness(kt).unwrap_or(*beams);
@@ -249,6 +244,19 @@ pub fn beam_stiffness_for_tolerance(
     })
 }
 
+/// The force range `[from, to]` (N) checked and ordered, and the forces sampled in it.
+fn checked_forces(
+    beams: &TwinBeams,
+    [from, to]: [f64; 2],
+) -> Result<([f64; 2], Vec<TipForce>), ToleranceError> {
+    let (from, to) = (TipForce::new(from)?.newtons(), TipForce::new(to)?.newtons());
+    let (from, to) = (from.min(to), from.max(to));
+    if to <= 0.0 {
+        return Err(ToleranceError::Unloaded { from, to });
+    }
+    Ok(([from, to], force_grid(beams, [from, to])))
+}
+
 /// The twin beams, the other reading: the K_T for which the regularized w(L) stays within
 /// `tolerance` (fraction) of the current K_T's at every tip force in `[from, to]` (N). The lower
 /// end is the answer's `threshold` (with the codes' settings for it), the upper end in
@@ -262,9 +270,8 @@ pub fn beam_stiffness_near_current(
     tolerance: f64,
     element: f64,
 ) -> Result<ToleranceAnswer, ToleranceError> {
-    let answer = beam_stiffness_for_tolerance(beams, range, tolerance, element)?;
-    let [from, to] = answer.forces.unwrap_or(range);
-    let forces = force_grid(beams, [from, to]);
+    let tolerance = check_tolerance(tolerance)?;
+    let (range, forces) = checked_forces(beams, range)?;
     let w = |beams: &TwinBeams, f: TipForce| beams.regularized(f).tip_deflection();
     let current: Vec<f64> = forces.iter().map(|&f| w(beams, f)).collect();
     // Each force's w(L) at K_T over the current's, minus 1: (highest, lowest) over the forces.
@@ -283,16 +290,26 @@ pub fn beam_stiffness_near_current(
         .zip(&current)
         .map(|(&f, c)| beams.coulomb(f).tip_deflection() / c - 1.0)
         .fold(f64::INFINITY, f64::min);
-    let domain = BeamParam::Stiffness.spec().domain;
     let p = beams.params();
-    let material = ((p.friction * p.pressure, p.youngs_modulus), element);
+    let question = Question {
+        tolerance,
+        forces: Some(range),
+        current: (p.tangential_stiffness, worst(beams, &forces)),
+        domain: BeamParam::Stiffness.spec().domain,
+    };
     Ok(near_current(
-        answer,
-        material,
-        domain,
+        question,
         coulomb,
         |kt| ratios(kt).0,
         |kt| -ratios(kt).1,
+        |threshold| {
+            code_settings(
+                threshold,
+                p.friction * p.pressure,
+                p.youngs_modulus,
+                element,
+            )
+        },
     ))
 }
 
@@ -305,7 +322,7 @@ pub fn plate_stiffness_near_current(
     tolerance: f64,
     element: f64,
 ) -> Result<ToleranceAnswer, ToleranceError> {
-    let answer = plate_stiffness_for_tolerance(plate, tolerance, element)?;
+    let tolerance = check_tolerance(tolerance)?;
     let current = plate.regularized().end_displacement();
     let ratio = |kt: f64| {
         plate
@@ -316,31 +333,58 @@ pub fn plate_stiffness_near_current(
             - 1.0
     };
     let coulomb = plate.coulomb().end_displacement() / current - 1.0;
-    let domain = PlateParam::Stiffness.spec().domain;
     let p = plate.params();
-    let material = ((p.friction * p.pressure, p.youngs_modulus), element);
+    let question = Question {
+        tolerance,
+        forces: None,
+        current: (p.tangential_stiffness, plate_deviation(plate)),
+        domain: PlateParam::Stiffness.spec().domain,
+    };
     Ok(near_current(
-        answer,
-        material,
-        domain,
+        question,
         coulomb,
         ratio,
         |kt| -ratio(kt),
+        |threshold| {
+            code_settings(
+                threshold,
+                p.friction * p.pressure,
+                p.youngs_modulus,
+                element,
+            )
+        },
     ))
 }
 
-/// `answer` re-read against the current K_T: `above(K)` (non-increasing, 0 at the current K_T)
-/// is how far over the current answer K_T's goes, `below(K)` (non-decreasing) how far under.
-fn near_current(
-    answer: ToleranceAnswer,
-    (material, element): ((f64, f64), f64),
+/// What a question of the other reading fixes before any root is searched.
+struct Question {
+    /// The checked tolerance (fraction).
+    tolerance: f64,
+    /// Beams: the force range checked (N); plate: None.
+    forces: Option<[f64; 2]>,
+    /// The current K_T (MPa/mm) and its worst deviation from Coulomb (fraction).
+    current: (f64, f64),
+    /// The accepted K_T.
     domain: Domain,
+}
+
+/// The interval of `question` against the current K_T: `above(K)` (non-increasing, 0 at the
+/// current K_T) is how far over the current answer K_T's goes, `below(K)` (non-decreasing) how far
+/// under; `settings` gives each code's setting for a threshold.
+fn near_current(
+    question: Question,
     coulomb: f64,
     above: impl Fn(f64) -> f64,
     below: impl Fn(f64) -> f64,
+    settings: impl Fn(Threshold) -> Vec<CodeSetting>,
 ) -> ToleranceAnswer {
-    let tolerance = answer.tolerance;
-    let (kt, hi) = (answer.current.0, domain.max());
+    let Question {
+        tolerance,
+        forces,
+        current,
+        domain,
+    } = question;
+    let (kt, hi) = (current.0, domain.max());
     let threshold = smallest_within(domain, tolerance, above);
     // Unbounded only when Coulomb's answer (K_T -> infinity) is itself within; otherwise the
     // interval ends at the root, or at the largest accepted K_T when even that one is within.
@@ -352,8 +396,7 @@ fn near_current(
         let misfit = |ln_k: f64| below(ln_k.exp()) / tolerance - 1.0;
         Some(find_root_in_bracket(misfit, kt.ln(), hi.ln()).exp())
     };
-    let (mu_p, modulus) = material;
-    let mut settings = code_settings(threshold, mu_p, modulus, element);
+    let mut settings = settings(threshold);
     // A default stiffer than the interval's upper end misses it too.
     for setting in &mut settings {
         if let (Some((k, enough)), Some(upper)) = (&mut setting.default, upper) {
@@ -361,14 +404,16 @@ fn near_current(
         }
     }
     ToleranceAnswer {
+        tolerance,
+        forces,
         threshold,
+        current,
         settings,
         near_current: Some(NearCurrent {
             upper,
             coulomb,
             upper_is_largest_accepted: upper == Some(hi),
         }),
-        ..answer
     }
 }
 
