@@ -74,15 +74,7 @@ pub enum FamilyError {
 
 /// A member's legend text: `P = 0.5 MPa`, `mu = 0.2`.
 pub fn member_name(param: Param, value: f64) -> String {
-    format!("{param} = {}{}", Compact(value), unit_suffix(param))
-}
-
-/// ` MPa` after a value of `param`, nothing for a dimensionless one.
-fn unit_suffix(param: Param) -> String {
-    match param.unit() {
-        crate::Unit::Dimensionless => String::new(),
-        unit => format!(" {unit}"),
-    }
+    format!("{param} = {}{}", Compact(value), param.unit_suffix())
 }
 
 /// The parameters of `inputs` as a caption says them, `except` those (the varied one, the one the
@@ -98,7 +90,7 @@ pub fn parameter_text(inputs: &Inputs, except: &[Option<Param>]) -> String {
             Some(format!(
                 "{param} = {}{}",
                 Compact(value),
-                unit_suffix(param)
+                param.unit_suffix()
             ))
         })
         .collect::<Vec<_>>()
@@ -112,7 +104,7 @@ pub fn title(chart: AnyChart, param: Param, values: &[f64]) -> String {
         "{}, {param} = {}{}",
         chart.title(),
         values.join(", "),
-        unit_suffix(param)
+        param.unit_suffix()
     )
 }
 

@@ -188,13 +188,18 @@ impl Param {
         self.spec().usual
     }
 
+    /// What follows a value of this parameter: ` MPa`, nothing for a dimensionless one.
+    pub fn unit_suffix(self) -> String {
+        match self.unit() {
+            Unit::Dimensionless => String::new(),
+            unit => format!(" {unit}"),
+        }
+    }
+
     /// A warning when an accepted `value` is outside [`Param::usual_range`], naming the range.
     pub fn unusual(self, value: f64) -> Option<String> {
         let (low, high) = self.usual_range();
-        let unit = match self.unit() {
-            Unit::Dimensionless => String::new(),
-            unit => format!(" {unit}"),
-        };
+        let unit = self.unit_suffix();
         (!(low..=high).contains(&value)).then(|| {
             format!(
                 "{} = {}{unit} is far outside the usual range [{}, {}]{unit}: check the value",

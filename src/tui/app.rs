@@ -1062,7 +1062,7 @@ impl App {
                 format!(" {u}")
             }
         };
-        let punit = unit(param.unit().symbol()).replace(" -", "");
+        let punit = param.unit_suffix();
         match solve_for_target(&model, param, target, None) {
             Ok(solved) => match solved.roots.as_slice() {
                 [root] if root.plateau => self.info(format!(
@@ -1810,13 +1810,8 @@ impl App {
             .iter()
             .filter(|&&p| candidate.get(p) != self.inputs().get(p))
             .map(|&p| {
-                let unit = p.unit().symbol();
-                let unit = if unit == "-" || unit.is_empty() {
-                    String::new()
-                } else {
-                    format!(" {unit}")
-                };
-                format!("{p} = {}{unit}", number(candidate.get(p).unwrap_or(0.0)))
+                let value = number(candidate.get(p).unwrap_or(0.0));
+                format!("{p} = {value}{}", p.unit_suffix())
             })
             .collect::<Vec<_>>();
         self.state_mut().inputs = candidate;

@@ -92,8 +92,8 @@ fn usage(what: &str) -> String {
     )
 }
 
-/// True when Tab on `text` completes a preset name (the names live on disk, so the app asks for
-/// them as an effect).
+/// The preset name being typed, when Tab on `text` completes one (the names live on disk, so the
+/// app asks for them as an effect); None otherwise.
 pub fn completes_preset(text: &str) -> Option<&str> {
     let text = text.trim_start();
     let rest = text
