@@ -58,6 +58,7 @@ const BEAM: &[&str] = &[
     "F_1_N: number",
     "F_thre_N: number",
     "beam_theory: object",
+    "beam_theory.friction_strain: number",
     "beam_theory.shear_deflection_share: number",
     "beam_theory.theory: string",
     "beam_theory.validity: string",

@@ -954,3 +954,19 @@ fn a_deflection_far_beyond_the_measured_range_claims_no_envelope() {
     let text = screen(&self::app(), 80, 24);
     assert!(text.contains("Regime (i), FE within 3 %"), "{text}");
 }
+
+#[test]
+fn a_friction_strain_beyond_the_calibration_claims_no_envelope() {
+    // mu P = 10 MPa on the paper's beams: mu P L / (2 E h) = 4.8e-4, beyond the 1.2e-4 of (V2).
+    let mut app = app();
+    press(&mut app, Action::CommandLine);
+    for c in "mu=1 P=10".chars() {
+        press(&mut app, Action::Input(c));
+    }
+    press(&mut app, Action::Commit);
+    let text = screen(&app, 80, 24);
+    assert!(
+        text.contains("Regime (i), FE: not calibrated") && !text.contains("FE within"),
+        "{text}"
+    );
+}

@@ -28,8 +28,8 @@ pub struct BeamCompared {
     /// The closed form's start of the macroslip zone X (mm): L when there is none.
     pub macroslip_start: f64,
     /// The envelope (V2) of the shear-corrected (Timoshenko) value: the stated bound on its
-    /// difference from continuum FE.
-    pub shear_corrected_within: f64,
+    /// difference from continuum FE; `None` where (V2) is not calibrated (friction strain).
+    pub shear_corrected_within: Option<f64>,
     /// FE X against the closed form's in elements of the FE mesh, when the results have the slip
     /// and the mesh is known (CalculiX results with their deck).
     pub macroslip_start_mesh: Option<MeshDifference>,
@@ -57,7 +57,7 @@ impl BeamCompared {
     pub fn envelope(&self) -> Envelope {
         Envelope::judge(
             self.difference_shear_corrected(),
-            Some(self.shear_corrected_within),
+            self.shear_corrected_within,
         )
     }
 
@@ -86,9 +86,10 @@ impl BeamComparison {
     /// Whether the beam theory holds (V2 within 2 %) at every point, so that a K_T fitted through
     /// it measures the interface.
     pub fn closed_form_holds(&self) -> bool {
-        self.rows
-            .iter()
-            .all(|r| Validity::of_error(r.shear_corrected_within) == Validity::Holds)
+        self.rows.iter().all(|r| {
+            r.shear_corrected_within
+                .is_some_and(|bound| Validity::of_error(bound) == Validity::Holds)
+        })
     }
 
     /// The deck's K_T against the implied one.

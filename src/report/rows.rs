@@ -28,8 +28,9 @@ pub struct BeamRow {
     /// The deflection's beam theory (`euler-bernoulli` or `timoshenko`). Added after the original
     /// columns, which scripts read by name.
     pub beam_theory: &'static str,
-    /// Bound on |w(L) continuum FE / w(L) here - 1| (V2), a fraction.
-    pub vs_continuum_within: f64,
+    /// Bound on |w(L) continuum FE / w(L) here - 1| (V2), a fraction; empty where (V2) is not
+    /// calibrated (`beam_theory` still names the theory).
+    pub vs_continuum_within: Option<f64>,
 }
 
 impl From<&BeamPoint> for BeamRow {

@@ -29,8 +29,9 @@ pub struct BeamCompareRow {
     pub w_shear_corrected_mm: f64,
     /// (FE - shear corrected) / shear corrected; empty (null) at F = 0.
     pub diff_shear_corrected: Option<f64>,
-    /// The stated bound on that difference (V2), a fraction.
-    pub shear_corrected_within: f64,
+    /// The stated bound on that difference (V2), a fraction; empty (null) where (V2) is not
+    /// calibrated.
+    pub shear_corrected_within: Option<f64>,
     /// The closed form's regime.
     pub regime: &'static str,
     /// The regime the FE slip profile shows (empty without one).

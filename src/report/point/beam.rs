@@ -10,6 +10,7 @@ use crate::kernel::validity::Validity;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
 use crate::problems::twin_beams::closed_form::BeamTheory;
+use crate::problems::twin_beams::validity::CALIBRATED_FRICTION_STRAIN;
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::beam_point;
 use crate::{TipForce, TwinBeams};
@@ -75,9 +76,14 @@ pub struct BeamTheoryReport {
     pub theory: BeamTheory,
     /// Shear deflection over the Euler-Bernoulli w(L).
     pub shear_deflection_share: f64,
-    /// Bound on the difference from continuum FE, a fraction.
-    #[serde(rename = "vs_continuum_within")]
-    pub expected_error: f64,
+    /// Bound on the difference from continuum FE, a fraction; absent where (V2) is not calibrated.
+    #[serde(
+        rename = "vs_continuum_within",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub expected_error: Option<f64>,
+    /// The friction strain mu P L / (2 E h) that decides whether (V2) is calibrated.
+    pub friction_strain: f64,
     #[serde(serialize_with = "validity_label")]
     pub validity: Validity,
 }
@@ -115,6 +121,7 @@ impl BeamReport {
                 theory: row.validity.theory,
                 shear_deflection_share: row.validity.shear_share,
                 expected_error: row.validity.expected_error,
+                friction_strain: row.validity.friction_strain,
                 validity: row.validity.validity,
             },
         }
@@ -172,16 +179,29 @@ impl BeamReport {
             ),
             BeamTheory::Timoshenko => String::new(),
         };
+        let envelope = match v.expected_error {
+            Some(bound) => format!(
+                "regularized w(L) within {} % of continuum FE (docs/theory.md (V2)): {}{left_out}",
+                number_with(100.0 * bound, 2),
+                v.validity.label()
+            ),
+            None => format!(
+                "regularized w(L) against continuum FE: {} (docs/theory.md (V2)){left_out}\n  \
+                 the friction strain mu P L / (2 E h) = {} is beyond the {} up to which (V2) was \
+                 measured to hold: check with a continuum model",
+                v.validity.label(),
+                number_with(v.friction_strain, 3),
+                number_with(CALIBRATED_FRICTION_STRAIN, 2)
+            ),
+        };
         let _ = writeln!(
             out,
-            "Beam theory: {}{}\n  regularized w(L) within {} % of continuum FE (docs/theory.md (V2)): {}{left_out}",
+            "Beam theory: {}{}\n  {envelope}",
             v.theory.label(),
             match v.theory {
                 BeamTheory::EulerBernoulli => " (the paper's)",
                 BeamTheory::Timoshenko => " (Euler-Bernoulli plus each beam's shear deflection)",
             },
-            number_with(100.0 * v.expected_error, 2),
-            v.validity.label()
         );
         out
     }

@@ -92,8 +92,9 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
     // (w/L about 1.3 %, docs/theory.md (V2)): no number is claimed there.
     let title = match &model {
         Model::Beam { beams, force } => match beams.validity(*force).expected_error {
-            error if error > MAX_SHOWN_ENVELOPE => "Regime (i), FE: w/L too big".to_string(),
-            error => format!(
+            None => "Regime (i), FE: not calibrated".to_string(),
+            Some(error) if error > MAX_SHOWN_ENVELOPE => "Regime (i), FE: w/L too big".to_string(),
+            Some(error) => format!(
                 "Regime (i), FE within {} %",
                 crate::report::number_with(100.0 * error, 2)
             ),
