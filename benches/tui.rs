@@ -7,11 +7,8 @@ use std::io::{self, Write};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use divan::{Bencher, black_box};
+use microslip::app::testing::{Action, App, AppOptions, Charset, Theme};
 use microslip::preset;
-use microslip::tui::action::Action;
-use microslip::tui::app::{App, AppOptions};
-use microslip::tui::theme::{Charset, Theme};
-use microslip::tui::ui;
 use ratatui::backend::{CrosstermBackend, TestBackend};
 use ratatui::layout::Rect;
 use ratatui::{Terminal, TerminalOptions, Viewport};
@@ -55,13 +52,19 @@ fn report_bytes_per_change() {
     };
     let mut terminal = Terminal::with_options(CrosstermBackend::new(Counter), options).unwrap();
     let mut app = app("paper-beams");
-    terminal.draw(|f| ui::draw(f, &app)).unwrap();
+    terminal
+        .draw(|f| microslip::app::testing::draw(f, &app))
+        .unwrap();
     let full = WRITTEN.swap(0, Ordering::Relaxed);
     select_last_row(&mut app); // F
-    terminal.draw(|f| ui::draw(f, &app)).unwrap();
+    terminal
+        .draw(|f| microslip::app::testing::draw(f, &app))
+        .unwrap();
     let select = WRITTEN.swap(0, Ordering::Relaxed);
     app.update(Action::Increase); // F + 1 % of F_thre: summary, cursor and curves move
-    terminal.draw(|f| ui::draw(f, &app)).unwrap();
+    terminal
+        .draw(|f| microslip::app::testing::draw(f, &app))
+        .unwrap();
     let change = WRITTEN.swap(0, Ordering::Relaxed);
     eprintln!(
         "bytes at 120x40: full repaint {full}, select a row {select}, one parameter change {change}"
@@ -142,7 +145,9 @@ fn beams_in(charset: &str) -> App {
 fn draw_200x60(bencher: Bencher, app: &App) {
     let mut terminal = Terminal::new(TestBackend::new(200, 60)).unwrap();
     bencher.bench_local(|| {
-        terminal.draw(|f| ui::draw(f, app)).unwrap();
+        terminal
+            .draw(|f| microslip::app::testing::draw(f, app))
+            .unwrap();
     });
 }
 

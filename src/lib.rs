@@ -39,9 +39,12 @@
 //!   the series is built; families of one chart over a parameter ([`chart::family`]).
 //! - [`report`]: every format (text, JSON, CSV, SVG), from one serde struct per report and per
 //!   table row; it computes nothing.
-//! - `cli` and `tui` (behind the default feature `app`, hidden from these docs): thin layers that
-//!   parse flags or keys, call the library and hand the results to `report` or the screen. With
-//!   `default-features = false` none of clap, ratatui, crossterm or signal-hook is compiled.
+//! - `cli` and `tui` (behind the default feature `app`): thin layers that parse flags or keys, call
+//!   the library and hand the results to `report` or the screen. They are private: the binary
+//!   calls `app::main`, and the TUI's frame and monkey tests drive it through `app::testing`
+//!   (state, actions, effects performed in place, themes, drawing), both hidden from these docs
+//!   because they are the program, not a library API. With `default-features = false` none of
+//!   clap, ratatui, crossterm or signal-hook is compiled.
 //!
 //! Beside the plan in `ARCHITECTURE.md` (a design note kept outside this repository): `study`
 //! still holds per-problem sampling functions (`study::curves`) and `chart` per-problem series, so
@@ -66,8 +69,7 @@
 
 pub mod chart;
 #[cfg(feature = "app")]
-#[doc(hidden)]
-pub mod cli;
+mod cli;
 pub mod fe;
 pub mod file;
 pub mod fit;
@@ -78,9 +80,27 @@ pub mod problems;
 pub mod report;
 pub mod study;
 #[cfg(feature = "app")]
-#[doc(hidden)]
-pub mod tui;
+mod tui;
 pub mod verify;
+
+/// The application side (the `cli` and `tui` modules, private): what the `microslip` binary
+/// calls, and the narrow surface the TUI's frame, monkey and benchmark tests drive it through.
+/// Not a library API: it changes with the program.
+#[cfg(feature = "app")]
+#[doc(hidden)]
+pub mod app {
+    pub use crate::cli::main;
+
+    /// What tests and benchmarks need to drive the TUI without a terminal: its state, the
+    /// actions keys map to, the effects performed in place, the themes and the drawing.
+    pub mod testing {
+        pub use crate::tui::action::Action;
+        pub use crate::tui::app::{App, AppOptions, Measurements};
+        pub use crate::tui::effects::update_blocking;
+        pub use crate::tui::theme::{Charset, Theme};
+        pub use crate::tui::ui::draw;
+    }
+}
 
 pub use kernel::params::{ParamError, Unit};
 pub use kernel::regime::Regime;

@@ -1,5 +1,6 @@
-//! The `microslip` binary: everything lives in the library; see `microslip::cli`.
+//! The `microslip` binary: everything lives in the library; see the library's private `cli`
+//! module, reached through `microslip::app`.
 
 fn main() -> std::process::ExitCode {
-    microslip::cli::main()
+    microslip::app::main()
 }

@@ -1,14 +1,10 @@
 //! Snapshot tests of rendered frames: each snapshot is a claim about what users see. Review changes
 //! with `cargo insta review` (or read the `.snap.new` files) before accepting them.
 
+use microslip::app::testing::{Action, App, AppOptions, Charset, Theme};
 use microslip::chart::SeriesRole;
 use microslip::preset;
 use microslip::study::curves::Zone;
-use microslip::tui::action::Action;
-use microslip::tui::app::{App, AppOptions};
-use microslip::tui::effects;
-use microslip::tui::theme::{Charset, Theme};
-use microslip::tui::ui;
 use proptest::prelude::*;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
@@ -30,7 +26,9 @@ fn app() -> App {
 
 fn render(app: &App, width: u16, height: u16) -> Terminal<TestBackend> {
     let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
-    terminal.draw(|frame| ui::draw(frame, app)).unwrap();
+    terminal
+        .draw(|frame| microslip::app::testing::draw(frame, app))
+        .unwrap();
     terminal
 }
 
@@ -41,7 +39,7 @@ fn screen(app: &App, width: u16, height: u16) -> String {
 /// A key, and what it asks for done at once (files read and written, the fit run), as the event
 /// loop would before drawing.
 fn press(app: &mut App, action: Action) {
-    effects::update_blocking(app, action);
+    microslip::app::testing::update_blocking(app, action);
 }
 
 fn act(app: &mut App, actions: &[Action]) {
@@ -311,7 +309,7 @@ fn measured_points_on_the_deflection_chart() {
         },
         preset: preset::resolve("paper-beams").unwrap(),
         user_dir: None,
-        data: Some(microslip::tui::app::Measurements {
+        data: Some(microslip::app::testing::Measurements {
             path: "bench.csv".into(),
             points,
         }),

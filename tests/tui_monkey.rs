@@ -5,12 +5,8 @@
 
 use std::time::{Duration, Instant};
 
+use microslip::app::testing::{Action, App, AppOptions, Charset, Theme};
 use microslip::preset;
-use microslip::tui::action::Action;
-use microslip::tui::app::{App, AppOptions};
-use microslip::tui::effects;
-use microslip::tui::theme::{Charset, Theme};
-use microslip::tui::ui;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 
@@ -87,7 +83,7 @@ const TYPED: &[&str] = &[
 
 /// A key, and what it asks for (the preset list of `p`) done at once, as the event loop would.
 fn press(app: &mut App, action: Action) {
-    effects::update_blocking(app, action);
+    microslip::app::testing::update_blocking(app, action);
 }
 
 const PRESETS: [&str; 3] = ["paper-beams", "paper-beams-soft", "paper-plate"];
@@ -137,7 +133,9 @@ fn run(seed: u64, steps: usize) {
             return;
         }
         let mut terminal = Terminal::new(TestBackend::new(width, height)).unwrap();
-        terminal.draw(|frame| ui::draw(frame, &app)).unwrap();
+        terminal
+            .draw(|frame| microslip::app::testing::draw(frame, &app))
+            .unwrap();
         let took = started.elapsed();
         assert!(
             took < FRAME_BOUND,

@@ -182,7 +182,7 @@ pub struct AppOptions {
     /// Measurements to show on the w(L) chart and fit (`--data`).
     pub data: Option<Measurements>,
     /// Solve the plate's 2-D continuum at the current values for the regime pane
-    /// ([`Effect::SolveContinuum`]). The program does; tests that do not look at it leave it off,
+    /// (`Effect::SolveContinuum`). The program does; tests that do not look at it leave it off,
     /// since a debug build takes about a second per solve.
     pub solve_continuum: bool,
 }
