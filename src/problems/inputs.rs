@@ -238,7 +238,7 @@ mod tests {
             for (i, &param) in kind.params().iter().enumerate() {
                 assert_eq!(inputs.get(param), Some(1000.0 + i as f64), "{param}");
             }
-            let other = kind.other().params()[0];
+            let other = kind.next().params()[0];
             assert_eq!(inputs.get(other), None);
             assert!(inputs.set(other, 1.0).is_err());
         }

@@ -59,8 +59,22 @@ pub enum ModelKind {
 }
 
 impl ModelKind {
-    /// Both models, beams first.
+    /// Every problem, in the order the TUI's `m` cycles through them.
     pub const ALL: [ModelKind; 2] = [ModelKind::Beam, ModelKind::Plate];
+
+    /// How many problems there are.
+    pub const COUNT: usize = Self::ALL.len();
+
+    /// This problem's place in [`ModelKind::ALL`].
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// The problem after this one in [`ModelKind::ALL`], the first after the last: what `m`
+    /// switches to.
+    pub fn next(self) -> ModelKind {
+        Self::ALL[(self.index() + 1) % Self::COUNT]
+    }
 
     /// What the generic layers know of the problem: the one line per problem of this crate
     /// (besides the variants of the enums that carry a problem's own types).
@@ -79,14 +93,6 @@ impl ModelKind {
     /// The parameters of this model, in display order.
     pub fn params(self) -> &'static [Param] {
         self.description().params
-    }
-
-    /// The other model.
-    pub fn other(self) -> ModelKind {
-        match self {
-            ModelKind::Beam => ModelKind::Plate,
-            ModelKind::Plate => ModelKind::Beam,
-        }
     }
 
     /// Parses a model key of this kind (`KT`, `nu`, ...).
@@ -134,6 +140,38 @@ impl FromStr for ModelKind {
                     .collect();
                 format!("unknown model '{text}': must be {}", names.join(" or "))
             })
+    }
+}
+
+/// One value per problem, indexed by [`ModelKind`]: what a layer keeps for every problem at once
+/// (the TUI's parameters, pins and chart of each problem, an undo snapshot of all of them) holds
+/// it here rather than in a field per problem, so that a new problem adds no field and no match.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct ByProblem<T>([T; ModelKind::COUNT]);
+
+impl<T> ByProblem<T> {
+    /// The value `make` gives each problem.
+    pub fn from_fn(mut make: impl FnMut(ModelKind) -> T) -> ByProblem<T> {
+        ByProblem(std::array::from_fn(|i| make(ModelKind::ALL[i])))
+    }
+
+    /// Each problem with its value, in the order of [`ModelKind::ALL`].
+    pub fn iter(&self) -> impl Iterator<Item = (ModelKind, &T)> {
+        ModelKind::ALL.into_iter().zip(self.0.iter())
+    }
+}
+
+impl<T> std::ops::Index<ModelKind> for ByProblem<T> {
+    type Output = T;
+
+    fn index(&self, kind: ModelKind) -> &T {
+        &self.0[kind.index()]
+    }
+}
+
+impl<T> std::ops::IndexMut<ModelKind> for ByProblem<T> {
+    fn index_mut(&mut self, kind: ModelKind) -> &mut T {
+        &mut self.0[kind.index()]
     }
 }
 
@@ -357,6 +395,29 @@ mod tests {
         assert_eq!(
             Domain::LENGTH.describe(Unit::Millimetre),
             "must be in [1e-6, 1e6] mm"
+        );
+    }
+
+    #[test]
+    fn next_visits_every_problem_once_and_by_problem_indexes_them_all() {
+        let mut kind = ModelKind::ALL[0];
+        let mut seen = Vec::new();
+        for _ in 0..ModelKind::COUNT {
+            seen.push(kind);
+            kind = kind.next();
+        }
+        assert_eq!(seen, ModelKind::ALL);
+        assert_eq!(kind, ModelKind::ALL[0]);
+        let mut names = ByProblem::from_fn(ModelKind::name);
+        for kind in ModelKind::ALL {
+            assert_eq!(names[kind], kind.name());
+            assert_eq!(ModelKind::ALL[kind.index()], kind);
+        }
+        names[ModelKind::Plate] = "changed";
+        let listed: Vec<_> = names.iter().map(|(k, v)| (k, *v)).collect();
+        assert_eq!(
+            listed,
+            [(ModelKind::Beam, "beam"), (ModelKind::Plate, "changed")]
         );
     }
 

@@ -19,7 +19,7 @@ use crate::kernel::params::{Compact, parse_number};
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::twin_beams::closed_form::BeamTheory;
-use crate::problems::{BeamParam, ModelKind, Param};
+use crate::problems::{BeamParam, ByProblem, ModelKind, Param};
 use crate::report::{number, number_with};
 
 /// A status-line message.
@@ -162,8 +162,7 @@ struct PinnedChart {
 /// The parameters of both models and which is active: one step of the undo history.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Snapshot {
-    beam: Inputs,
-    plate: Inputs,
+    inputs: ByProblem<Inputs>,
     kind: ModelKind,
 }
 
@@ -200,8 +199,8 @@ pub struct Measurements {
 #[derive(Debug, Clone)]
 pub struct App {
     theme: Theme,
-    beam: ModelState,
-    plate: ModelState,
+    /// Each problem's parameters, preset, selection and pins: `m` switches between them.
+    states: ByProblem<ModelState>,
     kind: ModelKind,
     views: Views,
     mode: Mode,
@@ -256,15 +255,14 @@ impl App {
             pins: Vec::new(),
         };
         let kind = options.preset.inputs.kind();
-        let other = state(preset::paper(kind.other()));
-        let (beam, plate) = match kind {
-            ModelKind::Beam => (state(options.preset), other),
-            ModelKind::Plate => (other, state(options.preset)),
-        };
+        let mut opening = Some(options.preset);
+        let states = ByProblem::from_fn(|k| match opening.take_if(|p| p.inputs.kind() == k) {
+            Some(preset) => state(preset),
+            None => state(preset::paper(k)),
+        });
         let mut app = App {
             theme: options.theme,
-            beam,
-            plate,
+            states,
             kind,
             views: Views::default(),
             mode: Mode::Normal,
@@ -296,22 +294,22 @@ impl App {
 
     /// The force range of the beams' charts: 3 F_thre of the current beams.
     fn fit_axes(&mut self) {
-        if let Ok(Model::Beam { beams, .. }) = self.beam.inputs.validate() {
+        if let Ok(Model::Beam { beams, .. }) = self.states[ModelKind::Beam].inputs.validate() {
             self.force_span = Some(3.0 * beams.threshold_force());
         }
     }
 
     fn snapshot(&self) -> Snapshot {
         Snapshot {
-            beam: self.beam.inputs,
-            plate: self.plate.inputs,
+            inputs: ByProblem::from_fn(|kind| self.states[kind].inputs),
             kind: self.kind,
         }
     }
 
     fn restore(&mut self, snapshot: Snapshot) {
-        self.beam.inputs = snapshot.beam;
-        self.plate.inputs = snapshot.plate;
+        for (kind, inputs) in snapshot.inputs.iter() {
+            self.states[kind].inputs = *inputs;
+        }
         self.kind = snapshot.kind;
     }
 
@@ -405,10 +403,7 @@ impl App {
     }
 
     fn state(&self) -> &ModelState {
-        match self.kind {
-            ModelKind::Beam => &self.beam,
-            ModelKind::Plate => &self.plate,
-        }
+        &self.states[self.kind]
     }
 
     fn state_mut(&mut self) -> &mut ModelState {
@@ -416,10 +411,7 @@ impl App {
     }
 
     fn state_of_mut(&mut self, kind: ModelKind) -> &mut ModelState {
-        match kind {
-            ModelKind::Beam => &mut self.beam,
-            ModelKind::Plate => &mut self.plate,
-        }
+        &mut self.states[kind]
     }
 
     /// Colours and characters.
@@ -454,14 +446,11 @@ impl App {
 
     /// The models whose parameters differ from their loaded preset, as `beam (paper-beams)`.
     fn unsaved(&self) -> Vec<String> {
-        [
-            (ModelKind::Beam, &self.beam),
-            (ModelKind::Plate, &self.plate),
-        ]
-        .into_iter()
-        .filter(|(_, state)| state.inputs != state.preset.inputs)
-        .map(|(kind, state)| format!("{kind} ({})", state.preset.name))
-        .collect()
+        self.states
+            .iter()
+            .filter(|(_, state)| state.inputs != state.preset.inputs)
+            .map(|(kind, state)| format!("{kind} ({})", state.preset.name))
+            .collect()
     }
 
     /// Index of the selected parameter.
@@ -570,9 +559,10 @@ impl App {
     /// squeezed into its first twelfth (a geometry, mu or P changed by a large factor); the status
     /// says so. K_T does not move F_thre: dragging it never rescales.
     fn follow_threshold(&mut self) {
-        let (Some(span), Ok(Model::Beam { beams, .. })) =
-            (self.force_span, self.beam.inputs.validate())
-        else {
+        let (Some(span), Ok(Model::Beam { beams, .. })) = (
+            self.force_span,
+            self.states[ModelKind::Beam].inputs.validate(),
+        ) else {
             return;
         };
         let threshold = beams.threshold_force();
@@ -807,7 +797,7 @@ impl App {
             }
         }
         let after = self.snapshot();
-        let changed = before.beam != after.beam || before.plate != after.plate;
+        let changed = before.inputs != after.inputs;
         if changed && undoable {
             self.undo.push(before);
             if self.undo.len() > HISTORY {
@@ -1268,7 +1258,7 @@ impl App {
                 self.recompute();
             }
             Action::SwitchModel => {
-                self.kind = self.kind.other();
+                self.kind = self.kind.next();
                 self.message = None;
                 self.recompute();
             }
