@@ -5,7 +5,7 @@
 use crate::kernel::params::ParamError;
 use crate::problems::plate::closed_form::{PlateParams, SqueezedPlate};
 use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams, TwinBeamsParams};
-use crate::problems::{BeamParam, ModelKind, Param, UnknownParam};
+use crate::problems::{BeamParam, ModelKind, Param, Quantity, UnknownParam, plate, twin_beams};
 
 /// Unvalidated inputs of one model, as read from a preset, flags or key presses.
 ///
@@ -115,6 +115,15 @@ impl Model {
         // Every other value came from this (valid) model and the new one is in its domain, so
         // validation succeeds; should it not, the model stays as it is rather than panicking.
         inputs.validate().unwrap_or(*self)
+    }
+
+    /// The value of `quantity` for this model, computed by its problem; `None` where the problem
+    /// has no such quantity or it is not defined here (see [`crate::problems::Quantity`]).
+    pub fn quantity(&self, quantity: Quantity) -> Option<f64> {
+        match self {
+            Model::Beam { beams, force } => twin_beams::quantity(beams, *force, quantity),
+            Model::Plate(plate) => plate::quantity(plate, quantity),
+        }
     }
 
     /// The model's interface data.

@@ -11,6 +11,7 @@ use std::str::FromStr;
 use thiserror::Error;
 
 use crate::kernel::params::{Compact, ParamSpec, Unit};
+pub use quantity::{Quantity, QuantityName};
 
 /// The parameters of one problem as [`Param`]s, in the order of `$ty::ALL`: a const array, so
 /// that a problem's [`Description`] is a constant.
@@ -28,6 +29,7 @@ macro_rules! param_list {
 
 pub mod inputs;
 pub mod plate;
+pub mod quantity;
 pub mod stiffness;
 pub mod twin_beams;
 
@@ -47,6 +49,9 @@ pub struct Description {
     pub paper_preset: &'static str,
     /// Its parameters, in display order.
     pub params: &'static [Param],
+    /// The quantities of its solution a target can be set on, in the order error messages list
+    /// them.
+    pub quantities: &'static [QuantityName],
 }
 
 /// Which benchmark a parameter set describes.

@@ -14,15 +14,12 @@
 //! This scan is a loop over a parameter, like those of `curves`; it lives here because it is part of
 //! the root finding (the brackets), and `curves` sits above `model`.
 
-use std::str::FromStr;
-
 use thiserror::Error;
 
 use crate::kernel::params::{Compact, parse_number, significant};
 use crate::kernel::solve::find_root_in_bracket;
 use crate::problems::inputs::Model;
-use crate::problems::twin_beams::cycle::{Cycle, Law};
-use crate::problems::{ModelKind, Param};
+use crate::problems::{ModelKind, Param, QuantityName};
 
 /// Grid points of the scan for brackets.
 pub const SCAN_POINTS: usize = 400;
@@ -38,168 +35,65 @@ const ROOT_CHECK: f64 = 1e-6;
 /// between 1.6e10 and 7e11 MPa/mm, one achieving 0.9999999999999994 (below 1 is impossible).
 pub const ROUNDING: f64 = 3e-13;
 
-/// A quantity of the solution that a target can be set on.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Quantity {
-    /// Twin beams: regularized tip deflection w(L) (mm).
-    Deflection,
-    /// Plate: regularized end displacement u(L) (mm).
-    Displacement,
-    /// End of the microslip zone: X (beams) or X_r (plate) (mm), regularized law.
-    MicroEnd,
-    /// Regularized over Coulomb w(L) (beams) or u(L) (plate) (-).
-    Ratio,
-    /// Twin beams: the force F_1 at which macroslip first appears (N).
-    FirstMacroslipForce,
-    /// Twin beams: dissipation per cycle of amplitude F, regularized law (N mm).
-    Dissipation,
-    /// Twin beams: equivalent damping ratio of a cycle of amplitude F, regularized law (-).
-    DampingRatio,
-}
+pub use crate::problems::Quantity;
 
+/// How the targets see a problem's quantities: the names, meanings and values its description
+/// and its folder give ([`crate::problems::Description::quantities`]).
 impl Quantity {
-    /// Every quantity.
-    pub const ALL: [Quantity; 7] = [
-        Quantity::Deflection,
-        Quantity::Displacement,
-        Quantity::MicroEnd,
-        Quantity::Ratio,
-        Quantity::FirstMacroslipForce,
-        Quantity::Dissipation,
-        Quantity::DampingRatio,
-    ];
-
     /// True when `kind` has this quantity.
     pub fn applies_to(self, kind: ModelKind) -> bool {
-        match self {
-            Quantity::MicroEnd | Quantity::Ratio => true,
-            Quantity::Displacement => kind == ModelKind::Plate,
-            _ => kind == ModelKind::Beam,
-        }
+        Self::named(self, kind).is_some()
     }
 
-    /// The name as targets spell it for `kind` (`w(L)`, `X_r`, `ratio`).
+    fn named(self, kind: ModelKind) -> Option<&'static QuantityName> {
+        kind.description()
+            .quantities
+            .iter()
+            .find(|n| n.quantity == self)
+    }
+
+    /// The name as targets spell it for `kind` (`w(L)`, `X_r`, `ratio`); empty for a quantity
+    /// `kind` does not have.
     pub fn name(self, kind: ModelKind) -> &'static str {
-        match self {
-            Quantity::Deflection => "w(L)",
-            Quantity::Displacement => "u(L)",
-            Quantity::MicroEnd if kind == ModelKind::Plate => "X_r",
-            Quantity::MicroEnd => "X",
-            Quantity::Ratio => "ratio",
-            Quantity::FirstMacroslipForce => "F_1",
-            Quantity::Dissipation => "D",
-            Quantity::DampingRatio => "zeta",
-        }
+        self.named(kind).map_or("", |n| n.name)
     }
 
-    /// The unit (`mm`, `N`, `N mm`, or empty for ratios).
-    pub fn unit(self) -> &'static str {
-        match self {
-            Quantity::Deflection | Quantity::Displacement | Quantity::MicroEnd => "mm",
-            Quantity::FirstMacroslipForce => "N",
-            Quantity::Dissipation => "N mm",
-            Quantity::Ratio | Quantity::DampingRatio => "",
-        }
-    }
-
-    /// What it is, in words.
+    /// What it is, in words, for `kind`.
     pub fn meaning(self, kind: ModelKind) -> &'static str {
-        match (self, kind) {
-            (Quantity::Deflection, _) => "tip deflection, regularized law",
-            (Quantity::Displacement, _) => "end displacement, regularized law",
-            (Quantity::MicroEnd, ModelKind::Beam) => {
-                "end of the microslip zone X, from the clamp (L: no macroslip)"
-            }
-            (Quantity::MicroEnd, ModelKind::Plate) => {
-                "end of the microslip zone X_r, from the centre (L: no macroslip)"
-            }
-            (Quantity::Ratio, ModelKind::Beam) => "w(L) regularized / w(L) Coulomb",
-            (Quantity::Ratio, ModelKind::Plate) => "u(L) regularized / u(L) Coulomb",
-            (Quantity::FirstMacroslipForce, _) => "force at which macroslip first appears",
-            (Quantity::Dissipation, _) => "dissipation per cycle of amplitude F (regularized)",
-            (Quantity::DampingRatio, _) => "equivalent damping ratio at amplitude F (regularized)",
-        }
+        self.named(kind).map_or("", |n| n.meaning)
     }
 
     /// The names targets accept for `kind`, as error messages list them.
     pub fn names(kind: ModelKind) -> String {
-        Quantity::ALL
+        kind.description()
+            .quantities
             .iter()
-            .filter(|q| q.applies_to(kind))
-            .map(|q| q.name(kind))
+            .map(|n| n.name)
             .collect::<Vec<_>>()
             .join(" ")
     }
 
-    /// Parses a quantity name (case-sensitive as written above; `w`, `u`, `Xr`, `F1` also accepted)
-    /// for `kind`.
+    /// Parses a quantity name of `kind` (case-sensitive, as [`Quantity::names`] lists them, or
+    /// an alias: `w`, `u`, `Xr`, `F1`).
     ///
     /// # Errors
-    /// [`TargetError::Quantity`] for a name neither model has, or one of the other model.
+    /// [`TargetError::Quantity`] for a name `kind` does not have.
     pub fn parse(text: &str, kind: ModelKind) -> Result<Quantity, TargetError> {
-        let quantity = match text {
-            "w(L)" | "w" | "wL" => Quantity::Deflection,
-            "u(L)" | "u" | "uL" => Quantity::Displacement,
-            "X" | "X_r" | "Xr" => Quantity::MicroEnd,
-            "ratio" => Quantity::Ratio,
-            "F_1" | "F1" => Quantity::FirstMacroslipForce,
-            "D" => Quantity::Dissipation,
-            "zeta" => Quantity::DampingRatio,
-            _ => {
-                return Err(TargetError::Quantity {
-                    name: text.to_string(),
-                    kind,
-                });
-            }
-        };
-        if quantity.applies_to(kind) {
-            Ok(quantity)
-        } else {
-            Err(TargetError::Quantity {
+        kind.description()
+            .quantities
+            .iter()
+            .find(|n| n.is_named(text))
+            .map(|n| n.quantity)
+            .ok_or_else(|| TargetError::Quantity {
                 name: text.to_string(),
                 kind,
             })
-        }
     }
 
     /// The quantity's value for `model`; `None` where it is not defined (a ratio at zero load, a
-    /// quantity of the other model).
+    /// quantity the problem does not have).
     pub fn evaluate(self, model: &Model) -> Option<f64> {
-        let value = match (self, model) {
-            (Quantity::Deflection, Model::Beam { beams, force }) => {
-                beams.regularized(*force).tip_deflection()
-            }
-            (Quantity::Displacement, Model::Plate(plate)) => plate.regularized().end_displacement(),
-            (Quantity::MicroEnd, Model::Beam { beams, force }) => {
-                beams.regularized(*force).micro_zone_end()
-            }
-            (Quantity::MicroEnd, Model::Plate(plate)) => plate.regularized().micro_zone_end(),
-            (Quantity::Ratio, Model::Beam { beams, force }) => {
-                let coulomb = beams.coulomb(*force).tip_deflection();
-                if coulomb <= 0.0 {
-                    return None;
-                }
-                beams.regularized(*force).tip_deflection() / coulomb
-            }
-            (Quantity::Ratio, Model::Plate(plate)) => {
-                let coulomb = plate.coulomb().end_displacement();
-                if coulomb <= 0.0 {
-                    return None;
-                }
-                plate.regularized().end_displacement() / coulomb
-            }
-            (Quantity::FirstMacroslipForce, Model::Beam { beams, .. }) => {
-                beams.first_macroslip_force()
-            }
-            (Quantity::Dissipation, Model::Beam { beams, force }) => {
-                Cycle::new(beams, Law::Regularized, *force).dissipation()
-            }
-            (Quantity::DampingRatio, Model::Beam { beams, force }) => {
-                Cycle::new(beams, Law::Regularized, *force).damping_ratio()
-            }
-            _ => return None,
-        };
-        value.is_finite().then_some(value)
+        model.quantity(self)
     }
 }
 
@@ -226,15 +120,6 @@ impl Target {
             text: value.trim().to_string(),
         })?;
         Ok(Target { quantity, value })
-    }
-}
-
-impl FromStr for Quantity {
-    type Err = TargetError;
-
-    /// Parses a name of either model (the beams' first).
-    fn from_str(text: &str) -> Result<Self, Self::Err> {
-        Quantity::parse(text, ModelKind::Beam).or_else(|_| Quantity::parse(text, ModelKind::Plate))
     }
 }
 

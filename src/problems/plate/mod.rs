@@ -12,7 +12,9 @@ pub mod validity;
 pub use continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};
 pub use discretized::PlateFe;
 
-use crate::problems::{Description, Param};
+use crate::problems::quantity::ratio_to_coulomb;
+use crate::problems::{Description, Param, Quantity, QuantityName};
+use closed_form::SqueezedPlate;
 use params::PlateParam;
 
 /// The squeezed plate as the generic layers see it.
@@ -21,7 +23,45 @@ pub const DESCRIPTION: Description = Description {
     title: "squeezed plate",
     paper_preset: "paper-plate",
     params: &PARAMS,
+    quantities: &[
+        QuantityName {
+            quantity: Quantity::Response,
+            name: "u(L)",
+            aliases: &["u", "uL"],
+            meaning: "end displacement, regularized law",
+        },
+        QuantityName {
+            quantity: Quantity::MicroEnd,
+            name: "X_r",
+            aliases: &["X", "Xr"],
+            meaning: "end of the microslip zone X_r, from the centre (L: no macroslip)",
+        },
+        QuantityName {
+            quantity: Quantity::Ratio,
+            name: "ratio",
+            aliases: &[],
+            meaning: "u(L) regularized / u(L) Coulomb",
+        },
+    ],
 };
+
+/// The value of `quantity` for `plate` (see [`Quantity`]); `None` for a quantity the plate has
+/// not (it carries no force), where it is not defined (the ratio where nothing slides) or not
+/// finite.
+pub fn quantity(plate: &SqueezedPlate, quantity: Quantity) -> Option<f64> {
+    let value = match quantity {
+        Quantity::Response => plate.regularized().end_displacement(),
+        Quantity::MicroEnd => plate.regularized().micro_zone_end(),
+        Quantity::Ratio => ratio_to_coulomb(
+            plate.regularized().end_displacement(),
+            plate.coulomb().end_displacement(),
+        )?,
+        Quantity::FirstMacroslipForce | Quantity::Dissipation | Quantity::DampingRatio => {
+            return None;
+        }
+    };
+    value.is_finite().then_some(value)
+}
 
 /// Every parameter, in display order.
 const PARAMS: [Param; PlateParam::ALL.len()] = param_list!(Param::Plate, PlateParam);

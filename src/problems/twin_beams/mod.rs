@@ -11,7 +11,10 @@ pub mod validity;
 
 pub use discretized::{InterfaceSample, TwinBeamsFe};
 
-use crate::problems::{Description, Param};
+use crate::problems::quantity::ratio_to_coulomb;
+use crate::problems::{Description, Param, Quantity, QuantityName};
+use closed_form::{TipForce, TwinBeams};
+use cycle::{Cycle, Law};
 use params::BeamParam;
 
 /// The twin beams as the generic layers see them.
@@ -20,7 +23,62 @@ pub const DESCRIPTION: Description = Description {
     title: "twin cantilever beams",
     paper_preset: "paper-beams",
     params: &PARAMS,
+    quantities: &[
+        QuantityName {
+            quantity: Quantity::Response,
+            name: "w(L)",
+            aliases: &["w", "wL"],
+            meaning: "tip deflection, regularized law",
+        },
+        QuantityName {
+            quantity: Quantity::MicroEnd,
+            name: "X",
+            aliases: &["X_r", "Xr"],
+            meaning: "end of the microslip zone X, from the clamp (L: no macroslip)",
+        },
+        QuantityName {
+            quantity: Quantity::Ratio,
+            name: "ratio",
+            aliases: &[],
+            meaning: "w(L) regularized / w(L) Coulomb",
+        },
+        QuantityName {
+            quantity: Quantity::FirstMacroslipForce,
+            name: "F_1",
+            aliases: &["F1"],
+            meaning: "force at which macroslip first appears",
+        },
+        QuantityName {
+            quantity: Quantity::Dissipation,
+            name: "D",
+            aliases: &[],
+            meaning: "dissipation per cycle of amplitude F (regularized)",
+        },
+        QuantityName {
+            quantity: Quantity::DampingRatio,
+            name: "zeta",
+            aliases: &[],
+            meaning: "equivalent damping ratio at amplitude F (regularized)",
+        },
+    ],
 };
+
+/// The value of `quantity` for `beams` at `force` (see [`Quantity`]); `None` where it is not
+/// defined (the ratio at zero load) or not finite.
+pub fn quantity(beams: &TwinBeams, force: TipForce, quantity: Quantity) -> Option<f64> {
+    let value = match quantity {
+        Quantity::Response => beams.regularized(force).tip_deflection(),
+        Quantity::MicroEnd => beams.regularized(force).micro_zone_end(),
+        Quantity::Ratio => ratio_to_coulomb(
+            beams.regularized(force).tip_deflection(),
+            beams.coulomb(force).tip_deflection(),
+        )?,
+        Quantity::FirstMacroslipForce => beams.first_macroslip_force(),
+        Quantity::Dissipation => Cycle::new(beams, Law::Regularized, force).dissipation(),
+        Quantity::DampingRatio => Cycle::new(beams, Law::Regularized, force).damping_ratio(),
+    };
+    value.is_finite().then_some(value)
+}
 
 /// Every parameter, in display order.
 const PARAMS: [Param; BeamParam::ALL.len()] = param_list!(Param::Beam, BeamParam);

@@ -1,0 +1,60 @@
+//! The quantities of a problem's solution that a target can be set on (`solve`, the TUI's `t`):
+//! one idea, one name across problems. Each problem lists the ones it has, with the names users
+//! type and what they mean for it, in its [`Description`](super::Description), and computes them
+//! in its folder; `study::target` works from that list and knows no problem.
+
+/// A quantity of a problem's solution.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Quantity {
+    /// The response the problem is benchmarked on, regularized law (mm): the beams' tip deflection
+    /// w(L), the plate's end displacement u(L).
+    Response,
+    /// End of the microslip zone, regularized law (mm): X (beams), X_r (plate).
+    MicroEnd,
+    /// The response under the regularized law over that under plain Coulomb (-).
+    Ratio,
+    /// The force at which macroslip first appears (N).
+    FirstMacroslipForce,
+    /// Dissipation per load cycle of the current amplitude, regularized law (N mm).
+    Dissipation,
+    /// Equivalent damping ratio of that cycle, regularized law (-).
+    DampingRatio,
+}
+
+impl Quantity {
+    /// The unit (`mm`, `N`, `N mm`, or empty for ratios).
+    pub fn unit(self) -> &'static str {
+        match self {
+            Quantity::Response | Quantity::MicroEnd => "mm",
+            Quantity::FirstMacroslipForce => "N",
+            Quantity::Dissipation => "N mm",
+            Quantity::Ratio | Quantity::DampingRatio => "",
+        }
+    }
+}
+
+/// [`Quantity::Ratio`] from the two responses: `None` where the Coulomb one is not positive (no
+/// load, nothing squeezed), where a ratio means nothing.
+pub fn ratio_to_coulomb(regularized: f64, coulomb: f64) -> Option<f64> {
+    (coulomb > 0.0).then(|| regularized / coulomb)
+}
+
+/// A quantity as one problem names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct QuantityName {
+    /// The quantity.
+    pub quantity: Quantity,
+    /// The name targets use and outputs print (`w(L)`, `X_r`, `ratio`).
+    pub name: &'static str,
+    /// Other spellings accepted when typed (`w`, `Xr`, `F1`).
+    pub aliases: &'static [&'static str],
+    /// What it is for this problem, in words.
+    pub meaning: &'static str,
+}
+
+impl QuantityName {
+    /// True when `text` is this quantity's name or one of its aliases.
+    pub fn is_named(&self, text: &str) -> bool {
+        self.name == text || self.aliases.contains(&text)
+    }
+}
