@@ -70,10 +70,13 @@ pub struct Cli {
 fn after_help() -> String {
     format!(
         "Units: mm, N, MPa; K_T in MPa/mm (1 MPa/um = 1000 MPa/mm).\n\
-         Keys for --set and preset files: beam {}; plate {}.\n\
+         Keys for --set and preset files: {}.\n\
          Without a command, microslip opens the terminal UI (keys: press ? inside).",
-        ModelKind::Beam.key_list(),
-        ModelKind::Plate.key_list()
+        ModelKind::ALL
+            .iter()
+            .map(|k| format!("{k} {}", k.key_list()))
+            .collect::<Vec<_>>()
+            .join("; ")
     )
 }
 
@@ -613,10 +616,16 @@ macro_rules! value_enum {
     };
 }
 
-value_enum!(ModelKind {
-    ModelKind::Beam => (ModelKind::Beam.name(), "Twin cantilever beams (paper section 2.1)"),
-    ModelKind::Plate => (ModelKind::Plate.name(), "Squeezed plate (paper section 2.2)"),
-});
+impl ValueEnum for ModelKind {
+    fn value_variants<'a>() -> &'a [Self] {
+        &ModelKind::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        let d = self.description();
+        Some(clap::builder::PossibleValue::new(d.key).help(d.summary))
+    }
+}
 
 value_enum!(TableFormat {
     TableFormat::Csv => ("csv", "CSV with a header line"),
@@ -685,7 +694,7 @@ pub enum CliError {
         /// The model the command needs.
         wanted: ModelKind,
         /// The command, as typed after `microslip` (e.g. `fit beam`).
-        command: &'static str,
+        command: String,
     },
     /// A parameter name the model does not have.
     #[error("invalid --vary: {0}")]
@@ -948,7 +957,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             let param = model.param(vary)?;
             let target = Target::parse(target, *model)?;
             let range = from.zip(*to);
-            let (name, validated) = load(inputs, *model, model_command(*model, "solve"))?;
+            let (name, validated) = load(inputs, *model, &model_command(*model, "solve"))?;
             let solved = solve_for_target(&validated, param, target, range)?;
             match format {
                 ReportFormat::Text => {
@@ -1025,11 +1034,8 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             format,
             output,
         }) => {
-            let command = match chart.kind() {
-                ModelKind::Beam => "plot (a beam chart)",
-                ModelKind::Plate => "plot (a plate chart)",
-            };
-            let (_, model) = load(inputs, chart.kind(), command)?;
+            let command = format!("plot (a {} chart)", chart.kind());
+            let (_, model) = load(inputs, chart.kind(), &command)?;
             let shown = shown_roles(series.as_deref(), *no_cursor)?;
             if let Some(spec) = family {
                 if !pins.is_empty() {
@@ -1123,7 +1129,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             deck,
             output,
         }) => {
-            let deck = build_deck(*model, deck, model_command(*model, "deck ccx"))?;
+            let deck = build_deck(*model, deck, &model_command(*model, "deck ccx"))?;
             write_output(out, output.as_deref(), deck.as_bytes())?
         }
         Some(Command::Bench {
@@ -1147,11 +1153,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
 }
 
 /// The deck `deck` describes for `model`, as text. `command` names the subcommand in errors.
-fn build_deck(
-    model: ModelKind,
-    deck: &DeckArgs,
-    command: &'static str,
-) -> Result<String, CliError> {
+fn build_deck(model: ModelKind, deck: &DeckArgs, command: &str) -> Result<String, CliError> {
     let slope = if deck.near_coulomb {
         StickSlope::NearCoulomb
     } else {
@@ -1190,7 +1192,7 @@ fn run_bench(
     ccx: &str,
     format: CompareFormat,
 ) -> Result<(), CliError> {
-    let text = build_deck(model, deck, model_command(model, "bench ccx"))?;
+    let text = build_deck(model, deck, &model_command(model, "bench ccx"))?;
     let job = model.name();
     let run_error = |e: fe::run::RunError| CliError::Invalid(e.to_string());
     let files = match workdir {
@@ -1239,7 +1241,7 @@ fn beams_over_forces(
     from: f64,
     to: f64,
     points: u64,
-    command: &'static str,
+    command: &str,
 ) -> Result<(TwinBeams, Samples), CliError> {
     let forces = curves::force_samples(from, to, points).map_err(force_range_error)?;
     let (_, beams, _) = load_beams(inputs, command)?;
@@ -1375,18 +1377,8 @@ fn run_compare(
 }
 
 /// `command` followed by the model's name, for error messages ("deck ccx beam").
-fn model_command(model: ModelKind, command: &'static str) -> &'static str {
-    match (command, model) {
-        ("deck ccx", ModelKind::Beam) => "deck ccx beam",
-        ("deck ccx", ModelKind::Plate) => "deck ccx plate",
-        ("compare", ModelKind::Beam) => "compare beam",
-        ("compare", ModelKind::Plate) => "compare plate",
-        ("bench ccx", ModelKind::Beam) => "bench ccx beam",
-        ("bench ccx", ModelKind::Plate) => "bench ccx plate",
-        ("solve", ModelKind::Beam) => "solve beam",
-        ("solve", ModelKind::Plate) => "solve plate",
-        _ => command,
-    }
+fn model_command(model: ModelKind, command: &str) -> String {
+    format!("{command} {model}")
 }
 
 /// The load steps of a beam deck: `--loads` checked (each a valid force, strictly increasing), or
@@ -1585,11 +1577,7 @@ fn pinned_models(model: &Model, pins: &[String]) -> Result<Vec<Model>, CliError>
         .collect()
 }
 
-fn load(
-    args: &InputArgs,
-    wanted: ModelKind,
-    command: &'static str,
-) -> Result<(String, Model), CliError> {
+fn load(args: &InputArgs, wanted: ModelKind, command: &str) -> Result<(String, Model), CliError> {
     let (name, preset) = resolve_preset(args, wanted)?;
     if preset.inputs.kind() != wanted {
         return Err(wrong_model(args, preset.inputs.kind(), wanted, command));
@@ -1598,10 +1586,7 @@ fn load(
 }
 
 /// The twin beams and tip force of `args` (a preset of another problem is refused by name).
-fn load_beams(
-    args: &InputArgs,
-    command: &'static str,
-) -> Result<(String, TwinBeams, TipForce), CliError> {
+fn load_beams(args: &InputArgs, command: &str) -> Result<(String, TwinBeams, TipForce), CliError> {
     let (name, model) = load(args, ModelKind::Beam, command)?;
     let (beams, force) = model
         .into_beams()
@@ -1610,10 +1595,7 @@ fn load_beams(
 }
 
 /// The squeezed plate of `args` (a preset of another problem is refused by name).
-fn load_plate(
-    args: &InputArgs,
-    command: &'static str,
-) -> Result<(String, SqueezedPlate), CliError> {
+fn load_plate(args: &InputArgs, command: &str) -> Result<(String, SqueezedPlate), CliError> {
     let (name, model) = load(args, ModelKind::Plate, command)?;
     let plate = model
         .into_plate()
@@ -1622,17 +1604,12 @@ fn load_plate(
 }
 
 /// A preset of the problem `found` given to a command for `wanted`.
-fn wrong_model(
-    args: &InputArgs,
-    found: ModelKind,
-    wanted: ModelKind,
-    command: &'static str,
-) -> CliError {
+fn wrong_model(args: &InputArgs, found: ModelKind, wanted: ModelKind, command: &str) -> CliError {
     CliError::WrongModel {
         preset: args.preset.clone().unwrap_or_default(),
         found,
         wanted,
-        command,
+        command: command.to_string(),
     }
 }
 

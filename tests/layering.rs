@@ -175,8 +175,14 @@ fn problem_breaches(source: &Source, root: &BTreeMap<String, String>) -> Vec<Str
             .chars()
             .take_while(|c| c.is_alphanumeric() || *c == '_')
             .collect();
-        let is_folder = named.chars().next().is_some_and(char::is_lowercase);
-        if is_folder && named != problem && !["inputs", "stiffness"].contains(&named.as_str()) {
+        // Another problem is another folder of src/problems; its files (inputs, quantity, ...)
+        // are the shared vocabulary every problem may use.
+        let is_folder = !named.is_empty()
+            && Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("src/problems")
+                .join(&named)
+                .is_dir();
+        if is_folder && named != problem {
             found.push(format!(
                 "{}: problem `{problem}` uses problem `{named}`",
                 source.path

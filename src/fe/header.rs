@@ -265,11 +265,7 @@ impl DeckHeader {
         let number_of = |key: &str, text: &str| {
             parse_number(text).ok_or_else(|| fail(format!("{key} = '{text}' is not a number")))
         };
-        let kind = match take("model")? {
-            "beam" => ModelKind::Beam,
-            "plate" => ModelKind::Plate,
-            other => return Err(fail(format!("model = '{other}': expected beam or plate"))),
-        };
+        let kind: ModelKind = take("model")?.parse().map_err(fail)?;
         let mesh = match take("mesh")? {
             "coarse" => DeckMesh::Coarse,
             "fine" => DeckMesh::Fine,

@@ -94,7 +94,8 @@ impl Preset {
                     return Err(vec![Located {
                         line: line_of(key),
                         error: PresetError::Model(format!(
-                            "invalid model = {found}: must be \"beam\" or \"plate\""
+                            "invalid model = {found}: must be {}",
+                            ModelKind::choices()
                         )),
                     }]);
                 }
@@ -102,9 +103,10 @@ impl Preset {
             None => {
                 return Err(vec![Located {
                     line: None,
-                    error: PresetError::Model(
-                        "missing key 'model': must be \"beam\" or \"plate\"".to_string(),
-                    ),
+                    error: PresetError::Model(format!(
+                        "missing key 'model': must be {}",
+                        ModelKind::choices()
+                    )),
                 }]);
             }
         };

@@ -45,6 +45,9 @@ pub struct Description {
     pub key: &'static str,
     /// The problem for people ("twin cantilever beams").
     pub title: &'static str,
+    /// The problem and where it comes from, for `--help` ("Twin cantilever beams (paper
+    /// section 2.1)").
+    pub summary: &'static str,
     /// The bundled preset that opens it (the paper's data set).
     pub paper_preset: &'static str,
     /// Its parameters, in display order.
@@ -54,19 +57,41 @@ pub struct Description {
     pub quantities: &'static [QuantityName],
 }
 
-/// Which benchmark a parameter set describes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum ModelKind {
+/// Writes [`ModelKind`], its [`ModelKind::ALL`] and [`ModelKind::description`] from one list,
+/// so that the list of problems is spelled once: a variant missing from `ALL` (which would
+/// index past [`ByProblem`]'s slots) or without a description cannot be written.
+macro_rules! problem_list {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident),+ $(,)?) => {
+        /// Which benchmark a parameter set describes.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum ModelKind {
+            $($(#[$doc])* $variant),+
+        }
+
+        impl ModelKind {
+            /// Every problem, in the order of the list (the order the TUI's `m` cycles through).
+            pub const ALL: [ModelKind; [$(ModelKind::$variant),+].len()] =
+                [$(ModelKind::$variant),+];
+
+            /// What the generic layers know of the problem: its [`Description`], from its folder.
+            pub fn description(self) -> &'static Description {
+                match self {
+                    $(ModelKind::$variant => &$folder::DESCRIPTION),+
+                }
+            }
+        }
+    };
+}
+
+// The problems: the one list a new problem is added to (its variant and its folder).
+problem_list! {
     /// Twin cantilever beams (paper section 2.1).
-    Beam,
+    Beam => twin_beams,
     /// Squeezed plate (paper section 2.2).
-    Plate,
+    Plate => plate,
 }
 
 impl ModelKind {
-    /// Every problem, in the order the TUI's `m` cycles through them.
-    pub const ALL: [ModelKind; 2] = [ModelKind::Beam, ModelKind::Plate];
-
     /// How many problems there are.
     pub const COUNT: usize = Self::ALL.len();
 
@@ -79,15 +104,6 @@ impl ModelKind {
     /// switches to.
     pub fn next(self) -> ModelKind {
         Self::ALL[(self.index() + 1) % Self::COUNT]
-    }
-
-    /// What the generic layers know of the problem: the one line per problem of this crate
-    /// (besides the variants of the enums that carry a problem's own types).
-    pub fn description(self) -> &'static Description {
-        match self {
-            ModelKind::Beam => &twin_beams::DESCRIPTION,
-            ModelKind::Plate => &plate::DESCRIPTION,
-        }
     }
 
     /// The `model = "..."` value in preset files.
@@ -115,6 +131,19 @@ impl ModelKind {
             })
     }
 
+    /// Every problem's key, quoted, as error messages offer them: `"beam" or "plate"`.
+    pub fn choices() -> String {
+        let keys: Vec<String> = Self::ALL
+            .iter()
+            .map(|k| format!("\"{}\"", k.name()))
+            .collect();
+        match keys.split_last() {
+            Some((last, [])) => last.clone(),
+            Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+            None => String::new(),
+        }
+    }
+
     /// The keys, space separated, as error messages list them.
     pub fn key_list(self) -> String {
         self.params()
@@ -138,13 +167,7 @@ impl FromStr for ModelKind {
         ModelKind::ALL
             .into_iter()
             .find(|k| k.name() == text)
-            .ok_or_else(|| {
-                let names: Vec<String> = ModelKind::ALL
-                    .iter()
-                    .map(|k| format!("\"{}\"", k.name()))
-                    .collect();
-                format!("unknown model '{text}': must be {}", names.join(" or "))
-            })
+            .ok_or_else(|| format!("unknown model '{text}': must be {}", ModelKind::choices()))
     }
 }
 

@@ -21,6 +21,7 @@ use params::PlateParam;
 pub const DESCRIPTION: Description = Description {
     key: "plate",
     title: "squeezed plate",
+    summary: "Squeezed plate (paper section 2.2)",
     paper_preset: "paper-plate",
     params: &PARAMS,
     quantities: &[

@@ -21,6 +21,7 @@ use params::BeamParam;
 pub const DESCRIPTION: Description = Description {
     key: "beam",
     title: "twin cantilever beams",
+    summary: "Twin cantilever beams (paper section 2.1)",
     paper_preset: "paper-beams",
     params: &PARAMS,
     quantities: &[
