@@ -20,7 +20,7 @@ use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::inputs::Model;
 use crate::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
 use crate::problems::twin_beams::TwinBeamsFe;
-use crate::problems::{BeamParam, ModelKind, PlateParam};
+use crate::problems::{BeamParam, ByProblem, ModelKind, PlateParam};
 use crate::study::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
@@ -250,60 +250,46 @@ pub struct ExternalPoints {
     pub points: Vec<(f64, f64)>,
 }
 
-/// The view shown for each model; each keeps its own when the other model is active.
+/// The view shown for each problem; each keeps its own while another problem is active.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Views {
-    /// The twin beams' view.
-    pub beam: View<BeamChart>,
-    /// The plate's view.
-    pub plate: View<PlateChart>,
-}
+pub struct Views(ByProblem<View>);
 
 impl Default for Views {
     fn default() -> Self {
-        Views {
-            beam: View::first(),
-            plate: View::first(),
-        }
+        Views(ByProblem::from_fn(View::first))
     }
 }
 
 impl Views {
-    /// The views with `kind`'s moved one forward or back.
-    pub fn turn(self, kind: ModelKind, forward: bool) -> Views {
-        match kind {
-            ModelKind::Beam => Views {
-                beam: self.beam.turn(forward),
-                ..self
-            },
-            ModelKind::Plate => Views {
-                plate: self.plate.turn(forward),
-                ..self
-            },
-        }
+    /// The view of `kind`.
+    pub fn of(self, kind: ModelKind) -> View {
+        self.0[kind]
     }
 
-    /// The default views with `chart` shown for its model.
+    /// The views with `kind`'s moved one forward or back.
+    pub fn turn(mut self, kind: ModelKind, forward: bool) -> Views {
+        self.0[kind] = self.0[kind].turn(kind, forward);
+        self
+    }
+
+    /// These views with `view` shown for `kind`.
+    pub fn with(mut self, kind: ModelKind, view: View) -> Views {
+        self.0[kind] = view;
+        self
+    }
+
+    /// The default views with `chart` shown for its problem.
     pub fn showing(chart: AnyChart) -> Views {
-        match chart {
-            AnyChart::Beam(c) => Views {
-                beam: View::Chart(c),
-                ..Views::default()
-            },
-            AnyChart::Plate(c) => Views {
-                plate: View::Chart(c),
-                ..Views::default()
-            },
-        }
+        let mut views = Views::default();
+        views.0[chart.kind()] = View::Chart(chart);
+        views
     }
 
     /// Title, 1-based position and count of `kind`'s view, for the pane title.
     pub fn describe(self, kind: ModelKind) -> (&'static str, usize, usize) {
-        let ((position, count), title) = match kind {
-            ModelKind::Beam => (self.beam.position(), self.beam.title()),
-            ModelKind::Plate => (self.plate.position(), self.plate.title()),
-        };
-        (title, position, count)
+        let view = self.of(kind);
+        let (position, count) = view.position(kind);
+        (view.title(), position, count)
     }
 }
 
@@ -548,9 +534,10 @@ pub fn build(
     let external = external.filter(|e| e.model == model.kind());
     let mut overlays: Vec<(SeriesRole, &str, Series)> = Vec::new();
     let plot = match *model {
-        Model::Beam { beams, force } => match views.beam {
+        Model::Beam { beams, force } => match views.of(ModelKind::Beam) {
             View::Table(Table::StiffnessComparison) => return stiffness_table(model),
-            View::Chart(chart) => {
+            View::Chart(AnyChart::Plate(_)) => None,
+            View::Chart(AnyChart::Beam(chart)) => {
                 if chart == BeamChart::Deflection {
                     if let Some(points) = measured {
                         let series = points.iter().map(|m| (m.force, m.deflection)).collect();
@@ -567,9 +554,10 @@ pub fn build(
                 beam_plot(&beams, force, chart, f_data, force_span)
             }
         },
-        Model::Plate(plate) => match views.plate {
+        Model::Plate(plate) => match views.of(ModelKind::Plate) {
             View::Table(Table::StiffnessComparison) => return stiffness_table(model),
-            View::Chart(chart) => {
+            View::Chart(AnyChart::Beam(_)) => None,
+            View::Chart(AnyChart::Plate(chart)) => {
                 if let (PlateChart::Displacement, Some(e)) = (chart, external) {
                     // The chart's x axis is log10 K_T.
                     let series = e.points.iter().map(|&(k, u)| (k.log10(), u)).collect();
@@ -905,11 +893,10 @@ pub fn figure(
 /// Finite-element points for chart `chart`, where the chart has a finite-element counterpart.
 pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoints>, NumericError> {
     let density = MeshDensity::with_elements(OVERLAY_ELEMENTS);
-    match (*model, views.beam, views.plate) {
+    match (*model, views.of(model.kind()).chart()) {
         (
             Model::Beam { beams, force },
-            View::Chart(chart @ (BeamChart::Deflection | BeamChart::SlipBoundary)),
-            _,
+            Some(AnyChart::Beam(chart @ (BeamChart::Deflection | BeamChart::SlipBoundary))),
         ) => {
             // One model loaded monotonically through the sample forces: one load step per point.
             let f_max = force_range(&beams, force, 0.0, None);
@@ -948,7 +935,7 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
                 })),
             }
         }
-        (Model::Beam { beams, force }, View::Chart(BeamChart::Loop), _) => {
+        (Model::Beam { beams, force }, Some(AnyChart::Beam(BeamChart::Loop))) => {
             // The FE model driven round the same cycle: its own slider histories, no Masing rule.
             let fa = force.newtons();
             let mut fe = TwinBeamsFe::new(beams.params(), density);
@@ -967,7 +954,7 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
                 failed: 0,
             }))
         }
-        (Model::Beam { beams, force }, View::Chart(BeamChart::Shear), _) => {
+        (Model::Beam { beams, force }, Some(AnyChart::Beam(BeamChart::Shear))) => {
             let mut fe = TwinBeamsFe::new(beams.params(), density);
             fe.load_to(force.newtons(), 4)?;
             let samples = fe.interface();
@@ -982,7 +969,7 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
                     .collect(),
             }))
         }
-        (Model::Plate(plate), _, View::Chart(PlateChart::Displacement)) => {
+        (Model::Plate(plate), Some(AnyChart::Plate(PlateChart::Displacement))) => {
             let p = plate.params();
             let (from, to) = stiffness_range(p.tangential_stiffness);
             let (lo, hi) = (from.log10(), to.log10());
@@ -1020,13 +1007,14 @@ pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoint
             }
         }
         // No finite-element counterpart: dissipation (a closed-form integral of the loop), the
-        // contact pressure, X_r vs mu, and the tables.
-        (Model::Beam { .. }, View::Chart(BeamChart::Dissipation) | View::Table(_), _)
+        // contact pressure, X_r vs mu, and the tables (a view is always of the model's problem).
+        (Model::Beam { .. }, Some(AnyChart::Beam(BeamChart::Dissipation)) | None)
         | (
             Model::Plate(_),
-            _,
-            View::Chart(PlateChart::SlipBoundary | PlateChart::ContactPressure) | View::Table(_),
-        ) => Ok(None),
+            Some(AnyChart::Plate(PlateChart::SlipBoundary | PlateChart::ContactPressure)) | None,
+        )
+        | (Model::Beam { .. }, Some(AnyChart::Plate(_)))
+        | (Model::Plate(_), Some(AnyChart::Beam(_))) => Ok(None),
     }
 }
 
@@ -1204,10 +1192,7 @@ mod tests {
         assert!(
             numeric_points(
                 &model(ModelKind::Plate),
-                Views {
-                    plate: View::Chart(PlateChart::ContactPressure),
-                    ..Views::default()
-                }
+                Views::showing(AnyChart::Plate(PlateChart::ContactPressure))
             )
             .unwrap()
             .is_none()

@@ -204,10 +204,7 @@ mod tests {
             let model = Inputs::paper(kind).validate().unwrap();
             for views in every_view(kind) {
                 let plot = build(&model, views, None, None, None, None);
-                let is_table = matches!(
-                    (kind, views.beam, views.plate),
-                    (ModelKind::Beam, View::Table(_), _) | (ModelKind::Plate, _, View::Table(_))
-                );
+                let is_table = matches!(views.of(kind), View::Table(_));
                 assert_eq!(main_series(&plot).is_none(), is_table, "{}", plot.title);
             }
         }

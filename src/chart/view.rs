@@ -137,7 +137,7 @@ impl AnyChart {
     ];
 
     /// Every chart, as [`AnyChart::ALL`].
-    pub fn all() -> impl Iterator<Item = AnyChart> {
+    pub fn all() -> impl Iterator<Item = AnyChart> + Clone {
         Self::ALL.iter().copied()
     }
 
@@ -183,27 +183,27 @@ impl Table {
     }
 }
 
-/// One view of a model: a chart of that model, or a table.
+/// One view of a problem: one of its charts, or a table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum View<C> {
-    /// A chart.
-    Chart(C),
+pub enum View {
+    /// A chart (of the problem the view is for).
+    Chart(AnyChart),
     /// A table.
     Table(Table),
 }
 
-impl<C: ChartSet> View<C> {
-    /// Every view of the model: its charts, then the tables.
-    pub fn all() -> impl Iterator<Item = View<C>> + Clone {
-        C::ALL
-            .iter()
-            .map(|&c| View::Chart(c))
+impl View {
+    /// Every view of `kind`: its charts in [`AnyChart::ALL`]'s order, then the tables.
+    pub fn all(kind: ModelKind) -> impl Iterator<Item = View> + Clone {
+        AnyChart::all()
+            .filter(move |c| c.kind() == kind)
+            .map(View::Chart)
             .chain(Table::ALL.iter().map(|&t| View::Table(t)))
     }
 
-    /// The first view (the model's first chart).
-    pub fn first() -> View<C> {
-        View::Chart(C::ALL[0])
+    /// The view `kind` opens on: its first chart.
+    pub fn first(kind: ModelKind) -> View {
+        Self::all(kind).next().unwrap_or(View::Table(Table::ALL[0]))
     }
 
     /// The short title.
@@ -214,7 +214,7 @@ impl<C: ChartSet> View<C> {
         }
     }
 
-    /// The name in file names: the chart's key, or the table's.
+    /// The name in file names (`w-vs-f`, `kt-table`).
     pub fn key(self) -> &'static str {
         match self {
             View::Chart(chart) => chart.key(),
@@ -222,40 +222,30 @@ impl<C: ChartSet> View<C> {
         }
     }
 
-    /// 1-based position among [`View::all`] and their count, for "2/6" in a pane title.
-    pub fn position(self) -> (usize, usize) {
-        let index = Self::all().position(|v| v == self).unwrap_or(0);
-        (index + 1, Self::all().count())
-    }
-
-    /// The next view (`forward`) or the previous one, wrapping around.
-    pub fn turn(self, forward: bool) -> View<C> {
-        if forward {
-            self.next()
-        } else {
-            self.previous()
+    /// The chart shown, if this view is a chart.
+    pub fn chart(self) -> Option<AnyChart> {
+        match self {
+            View::Chart(chart) => Some(chart),
+            View::Table(_) => None,
         }
     }
 
-    /// The next view, wrapping from the last to the first.
-    pub fn next(self) -> View<C> {
-        Self::all()
-            .cycle()
-            .skip_while(|&v| v != self)
-            .nth(1)
-            .unwrap_or(self)
+    /// 1-based position among `kind`'s views, and their count.
+    pub fn position(self, kind: ModelKind) -> (usize, usize) {
+        let index = Self::all(kind).position(|v| v == self).unwrap_or(0);
+        (index + 1, Self::all(kind).count())
     }
 
-    /// The previous view, wrapping from the first to the last.
-    pub fn previous(self) -> View<C> {
-        let all: Vec<View<C>> = Self::all().collect();
-        all.iter()
-            .rev()
-            .cycle()
-            .skip_while(|&&v| v != self)
-            .nth(1)
-            .copied()
-            .unwrap_or(self)
+    /// The next (`forward`) or previous view of `kind`, cycling.
+    pub fn turn(self, kind: ModelKind, forward: bool) -> View {
+        let all: Vec<View> = Self::all(kind).collect();
+        let at = all.iter().position(|&v| v == self).unwrap_or(0);
+        let n = all.len();
+        if forward {
+            all[(at + 1) % n]
+        } else {
+            all[(at + n - 1) % n]
+        }
     }
 }
 
@@ -263,22 +253,21 @@ impl<C: ChartSet> View<C> {
 mod tests {
     use super::*;
 
-    fn round_trip<C: ChartSet + std::fmt::Debug>() {
-        let all: Vec<View<C>> = View::all().collect();
-        assert_eq!(all.len(), C::ALL.len() + Table::ALL.len());
-        for (i, &view) in all.iter().enumerate() {
-            assert_eq!(view.position(), (i + 1, all.len()));
-            assert_eq!(view.next().previous(), view);
-            assert!(!view.title().is_empty());
-        }
-        assert_eq!(all[all.len() - 1].next(), View::first());
-        assert_eq!(View::<C>::first().previous(), all[all.len() - 1]);
-    }
-
     #[test]
     fn views_cycle_both_ways_through_every_chart_and_table() {
-        round_trip::<BeamChart>();
-        round_trip::<PlateChart>();
+        for kind in ModelKind::ALL {
+            let all: Vec<View> = View::all(kind).collect();
+            let charts = AnyChart::all().filter(|c| c.kind() == kind).count();
+            assert!(charts > 0, "{kind} has no chart");
+            assert_eq!(all.len(), charts + Table::ALL.len());
+            for (i, &view) in all.iter().enumerate() {
+                assert_eq!(view.position(kind), (i + 1, all.len()));
+                assert_eq!(view.turn(kind, true).turn(kind, false), view);
+                assert!(!view.title().is_empty());
+            }
+            assert_eq!(all[all.len() - 1].turn(kind, true), View::first(kind));
+            assert_eq!(View::first(kind).turn(kind, false), all[all.len() - 1]);
+        }
     }
 
     #[test]

@@ -12,7 +12,7 @@ use super::keymap::Context;
 use super::text_input::TextInput;
 use super::theme::Theme;
 use crate::PlateParams;
-use crate::chart::view::{AnyChart, BeamChart, PlateChart, View};
+use crate::chart::view::{AnyChart, View};
 use crate::chart::{self, NumericPoints, Plot, Views, YMode, pins};
 use crate::fit::Measurement;
 use crate::kernel::params::{Compact, parse_number};
@@ -337,8 +337,7 @@ impl App {
                     .collect();
                 format!("{response}-vs-{name}")
             }
-            (None, ModelKind::Beam) => self.views.beam.key().to_string(),
-            (None, ModelKind::Plate) => self.views.plate.key().to_string(),
+            (None, kind) => self.views.of(kind).key().to_string(),
         };
         format!("microslip-{chart}")
     }
@@ -728,11 +727,7 @@ impl App {
         if self.varied().is_some() {
             return Some(None);
         }
-        match (self.kind, self.views.beam, self.views.plate) {
-            (ModelKind::Beam, View::Chart(c), _) => Some(Some(AnyChart::Beam(c))),
-            (ModelKind::Plate, _, View::Chart(c)) => Some(Some(AnyChart::Plate(c))),
-            _ => None,
-        }
+        self.views.of(self.kind).chart().map(Some)
     }
 
     /// The y-axis mode of the chart shown.
@@ -1485,16 +1480,8 @@ impl App {
             },
             origin,
         ));
-        self.views = match model {
-            ModelKind::Beam => Views {
-                beam: View::Chart(BeamChart::Deflection),
-                ..self.views
-            },
-            ModelKind::Plate => Views {
-                plate: View::Chart(PlateChart::Displacement),
-                ..self.views
-            },
-        };
+        // The external points are of the problem's response: its first chart.
+        self.views = self.views.with(model, View::first(model));
     }
 
     /// `f`: asks to fit mu and K_T of the twin beams to the measurements ([`Effect::Fit`]), in
@@ -2186,7 +2173,10 @@ mod tests {
         assert!(app.plot().title.starts_with("w(L) vs mu"));
         app.update(Action::NextChart);
         assert_eq!(app.varied(), None);
-        assert_eq!(app.views().beam.position().0, 1);
+        assert_eq!(
+            app.views().of(ModelKind::Beam).position(ModelKind::Beam).0,
+            1
+        );
         // t on K_T with the offered target ratio=1.01: the smallest K_T within 1 % of Coulomb.
         select(&mut app, "KT");
         app.update(Action::SolveTarget);
@@ -2250,11 +2240,14 @@ mod tests {
     fn charts_cycle_both_ways() {
         let mut app = app();
         app.update(Action::PreviousChart);
-        let (position, count) = app.views().beam.position();
+        let (position, count) = app.views().of(ModelKind::Beam).position(ModelKind::Beam);
         assert_eq!(position, count);
         assert!(count > 1);
         app.update(Action::NextChart);
-        assert_eq!(app.views().beam.position().0, 1);
+        assert_eq!(
+            app.views().of(ModelKind::Beam).position(ModelKind::Beam).0,
+            1
+        );
     }
 
     #[test]
