@@ -5,7 +5,7 @@
 use super::{Plot, SeriesRole, cursor, line, linear_axis, log_axis, max_y, samples};
 use crate::kernel::params::{Domain, Scale};
 use crate::problems::inputs::Model;
-use crate::problems::{BeamParam, Param};
+use crate::problems::{Param, Quantity};
 use crate::study::curves::{Spacing, response_vs_param};
 
 /// The range charted for `param` around its current `value`: the step's natural span (a decade
@@ -22,12 +22,8 @@ fn range(model: &Model, param: Param, value: f64) -> (f64, f64, bool) {
         }
         Scale::Add { min, max, .. } => (min, max, false),
         Scale::FractionOfScale { .. } => {
-            let scale = match (model, param) {
-                (Model::Beam { beams, .. }, Param::Beam(BeamParam::Force)) => {
-                    beams.threshold_force()
-                }
-                _ => value,
-            };
+            // Only a problem's load steps in fractions of a scale: its regime scale.
+            let scale = model.regime_scale().unwrap_or(value);
             let hi = Domain::FORCE.clamp((3.0 * scale).max(1.25 * value));
             (0.0, if hi > 0.0 { hi } else { 1.0 }, false)
         }
@@ -36,10 +32,8 @@ fn range(model: &Model, param: Param, value: f64) -> (f64, f64, bool) {
 
 /// w(L) or u(L) against `param`, Coulomb and regularized, cursor at the current value.
 pub fn build(model: &Model, param: Param) -> Plot {
-    let (response, law) = match model {
-        Model::Beam { .. } => ("w(L)", "w(L) (mm)"),
-        Model::Plate(_) => ("u(L)", "u(L) (mm)"),
-    };
+    let response = Quantity::Response.name(model.kind());
+    let law = format!("{response} ({})", Quantity::Response.unit());
     let value = model.inputs().get(param).unwrap_or(f64::NAN);
     let (lo, hi, log) = range(model, param, value);
     let spacing = if log {
@@ -91,8 +85,8 @@ pub fn build(model: &Model, param: Param) -> Plot {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::problems::ModelKind;
     use crate::problems::inputs::Inputs;
+    use crate::problems::{BeamParam, ModelKind};
 
     #[test]
     fn every_parameter_of_both_models_charts_with_finite_points() {

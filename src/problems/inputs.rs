@@ -126,6 +126,16 @@ impl Model {
         }
     }
 
+    /// The load at which the regimes change, the scale the problem's load parameter steps and
+    /// spans charts in: F_thre for the beams; None for a problem without a load parameter
+    /// ([`crate::problems::Description::load`]).
+    pub fn regime_scale(&self) -> Option<f64> {
+        match self {
+            Model::Beam { beams, .. } => Some(beams.threshold_force()),
+            Model::Plate(_) => None,
+        }
+    }
+
     /// The model's interface data.
     pub fn interface(&self) -> InterfaceData {
         match self {

@@ -55,6 +55,13 @@ pub struct Description {
     /// The quantities of its solution a target can be set on, in the order error messages list
     /// them.
     pub quantities: &'static [QuantityName],
+    /// The response's letter in file names (`microslip-w-vs-mu.svg`).
+    pub response_symbol: &'static str,
+    /// The load the problem is driven by, when it has one (the beams' tip force F): it steps in
+    /// fractions of the force where the regimes change, a force-response curve of it can be
+    /// measured and fitted, and FE decks apply it in load steps. None for the plate, loaded by
+    /// its pressure alone.
+    pub load: Option<Param>,
 }
 
 /// Writes [`ModelKind`], its [`ModelKind::ALL`] and [`ModelKind::description`] from one list,

@@ -329,7 +329,7 @@ impl App {
     fn export_stem(&self) -> String {
         let chart = match (self.varied(), self.kind) {
             (Some(param), kind) => {
-                let response = if kind == ModelKind::Beam { "w" } else { "u" };
+                let response = kind.description().response_symbol;
                 let name = param.to_string().to_ascii_lowercase();
                 let name: String = name
                     .chars()
@@ -1368,7 +1368,9 @@ impl App {
         let is_dat = std::path::Path::new(&path)
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("dat"));
-        self.asked.push(if is_dat || self.kind == ModelKind::Plate {
+        // A problem without a load parameter has no force-response curve to measure and fit.
+        let fittable = self.kind.description().load.is_some();
+        self.asked.push(if is_dat || !fittable {
             Effect::ReadFeResults {
                 path,
                 kind: self.kind,
@@ -1448,23 +1450,25 @@ impl App {
             points.sort_by(|a, b| a.0.total_cmp(&b.0));
             points.dedup_by(|a, b| a.0 == b.0);
         }
-        let Some(Model::Beam { .. } | Model::Plate(_)) = self.model() else {
+        let Some(current) = self.model() else {
             return self.error(format!("{path}: the deck's parameters are not valid"));
         };
-        let summary = match (loaded, self.model()) {
-            (AnyLoaded::Beam(l), Some(Model::Beam { beams, .. })) => {
+        let summary = match (loaded, current) {
+            (AnyLoaded::Beam(l), Model::Beam { beams, .. }) => {
                 let comparison =
                     crate::fe::compare::compare_beams(&beams, &l.points, l.interface_mesh.as_ref());
                 crate::report::compare::beam_summary(code, &comparison)
             }
-            (AnyLoaded::Plate(l), Some(Model::Plate(plate))) => {
+            (AnyLoaded::Plate(l), Model::Plate(plate)) => {
                 let rows =
                     crate::fe::compare::compare_plate(&plate, &l.points, l.interface_mesh.as_ref());
                 rows.first()
                     .map(|row| crate::report::compare::plate_summary(code, row))
                     .unwrap_or_default()
             }
-            _ => format!("{path}: FE results of the other model: press m"),
+            (AnyLoaded::Beam(_), Model::Plate(_)) | (AnyLoaded::Plate(_), Model::Beam { .. }) => {
+                format!("{path}: FE results of another problem: press m")
+            }
         };
         let adopted = if origin.is_some() {
             " (deck parameters adopted)"
@@ -1554,10 +1558,7 @@ impl App {
             return;
         };
         // The force steps in fractions of F_thre, the scale at which the regimes change.
-        let scale = match self.model() {
-            Some(Model::Beam { beams, .. }) => beams.threshold_force(),
-            _ => 1.0,
-        };
+        let scale = self.model().and_then(|m| m.regime_scale()).unwrap_or(1.0);
         // A step stops at the edge of the accepted domain rather than being refused there.
         let spec = param.spec();
         let next = spec.domain.clamp(spec.scale.step(value, up, coarse, scale));

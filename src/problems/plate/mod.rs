@@ -24,6 +24,8 @@ pub const DESCRIPTION: Description = Description {
     summary: "Squeezed plate (paper section 2.2)",
     paper_preset: "paper-plate",
     params: &PARAMS,
+    response_symbol: "u",
+    load: None,
     quantities: &[
         QuantityName {
             quantity: Quantity::Response,

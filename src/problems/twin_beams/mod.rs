@@ -24,6 +24,8 @@ pub const DESCRIPTION: Description = Description {
     summary: "Twin cantilever beams (paper section 2.1)",
     paper_preset: "paper-beams",
     params: &PARAMS,
+    response_symbol: "w",
+    load: Some(Param::Beam(BeamParam::Force)),
     quantities: &[
         QuantityName {
             quantity: Quantity::Response,
