@@ -24,7 +24,8 @@ use crate::problems::inputs::{Inputs, Model};
 
 /// Members of a family at most: more curves than that cannot be told apart in a figure (the
 /// palette has seven colours, one kept for the reference).
-pub const MAX_MEMBERS: usize = 6;
+#[cfg(feature = "app")]
+pub(crate) const MAX_MEMBERS: usize = 6;
 
 /// Why a family cannot be drawn.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -73,13 +74,13 @@ pub enum FamilyError {
 }
 
 /// A member's legend text: `P = 0.5 MPa`, `mu = 0.2`.
-pub fn member_name(param: Param, value: f64) -> String {
+pub(crate) fn member_name(param: Param, value: f64) -> String {
     format!("{param} = {}{}", Compact(value), param.unit_suffix())
 }
 
 /// The parameters of `inputs` as a caption says them, `except` those (the varied one, the one the
 /// x axis runs along): `L = 200 mm, b = 20 mm, ..., mu = 0.3`.
-pub fn parameter_text(inputs: &Inputs, except: &[Option<Param>]) -> String {
+pub(crate) fn parameter_text(inputs: &Inputs, except: &[Option<Param>]) -> String {
     inputs
         .kind()
         .params()
@@ -98,7 +99,7 @@ pub fn parameter_text(inputs: &Inputs, except: &[Option<Param>]) -> String {
 }
 
 /// The title of a family of `chart` over `param` at `values`: `w(L) vs F, P = 0.5, 1, 2 MPa`.
-pub fn title(chart: AnyChart, param: Param, values: &[f64]) -> String {
+pub(crate) fn title(chart: AnyChart, param: Param, values: &[f64]) -> String {
     let values: Vec<String> = values.iter().map(|&v| Compact(v).to_string()).collect();
     format!(
         "{}, {param} = {}{}",
@@ -118,7 +119,7 @@ fn force_axis(chart: AnyChart) -> bool {
 }
 
 /// The chart `chart` of each of `members` (models of `param` at `values`, the rest equal) in y
-/// mode `mode`: one [`SeriesRole::Family`] curve per member, named by [`member_name`], plus the
+/// mode `mode`: one [`SeriesRole::Family`] curve per member, named by `member_name`, plus the
 /// series of `shared` roles that every member has alike (added once, from the first member). The
 /// title names the values, [`Plot::caption`] the parameters held fixed.
 ///

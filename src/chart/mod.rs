@@ -6,7 +6,7 @@
 //! charts and tables exist is [`view`].
 
 pub mod family;
-pub mod pins;
+pub(crate) mod pins;
 pub mod vary;
 pub mod view;
 mod ymode;
@@ -25,7 +25,7 @@ use crate::study::curves::{self, Answer, CandidateSource, Samples, Series, Spaci
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// Points per analytic curve: two per column of a 100-column chart, enough for Braille resolution.
-pub const SAMPLES: u64 = 200;
+pub(crate) const SAMPLES: u64 = 200;
 
 /// Elements of the finite-element overlay: its error (~1e-6) is far below a pixel.
 const OVERLAY_ELEMENTS: usize = 100;
@@ -58,7 +58,8 @@ impl Axis {
 
     /// `count` tick labels evenly spaced from min to max (at least the axis's own three): large
     /// charts get more ticks.
-    pub fn ticks(&self, count: usize) -> Vec<String> {
+    #[cfg(feature = "app")]
+    pub(crate) fn ticks(&self, count: usize) -> Vec<String> {
         if count <= self.labels.len() {
             return self.labels.clone();
         }
@@ -81,7 +82,7 @@ pub enum SeriesKind {
     Points,
     /// The vertical cursor at the current value.
     Cursor,
-    /// A pinned curve (its number, 1 to [`pins::MAX_PINS`]): the same quantity at parameters
+    /// A pinned curve (its number, 1 to 4, `pins::MAX_PINS`): the same quantity at parameters
     /// kept for comparison.
     Pin(u8),
 }
@@ -113,9 +114,9 @@ pub enum SeriesRole {
     External,
     /// The vertical line at the current value.
     Cursor,
-    /// A pinned curve, by its number (1 to [`pins::MAX_PINS`]).
+    /// A pinned curve, by its number (1 to 4, `pins::MAX_PINS`).
     Pin(u8),
-    /// A member of a family (`plot --family`), by its position (1 to [`family::MAX_MEMBERS`]):
+    /// A member of a family (`plot --family`), by its position (1 to 6, `family::MAX_MEMBERS`):
     /// every member has the same rank, none is the current one.
     Family(u8),
 }
@@ -180,7 +181,8 @@ impl SeriesRole {
     /// Draw order, lowest first: the cursor under everything, then limit lines (so that a curve
     /// lying on `mu P` shows over it), then curves, then points on top (few and sparse, they
     /// would vanish under a curve).
-    pub fn layer(self) -> u8 {
+    #[cfg(feature = "figures")]
+    pub(crate) fn layer(self) -> u8 {
         match self.kind() {
             SeriesKind::Cursor => 0,
             _ if self == SeriesRole::Limit => 1,
@@ -294,7 +296,7 @@ impl Views {
 }
 
 /// A curve of `role`.
-pub fn line(role: SeriesRole, name: impl Into<String>, points: Series) -> PlotSeries {
+pub(crate) fn line(role: SeriesRole, name: impl Into<String>, points: Series) -> PlotSeries {
     PlotSeries {
         name: name.into(),
         points,
@@ -302,7 +304,7 @@ pub fn line(role: SeriesRole, name: impl Into<String>, points: Series) -> PlotSe
     }
 }
 
-pub fn cursor(x: f64, [y0, y1]: [f64; 2]) -> PlotSeries {
+pub(crate) fn cursor(x: f64, [y0, y1]: [f64; 2]) -> PlotSeries {
     PlotSeries {
         name: "current".into(),
         points: vec![(x, y0), (x, y1)],
@@ -329,7 +331,7 @@ fn axis_bounds(lo: f64, hi: f64) -> [f64; 2] {
     }
 }
 
-pub fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
+pub(crate) fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
     let [lo, hi] = axis_bounds(lo, hi);
     Axis {
         title: title.into(),
@@ -340,7 +342,7 @@ pub fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
 }
 
 /// An axis in log10 units, labelled with the values themselves.
-pub fn log_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
+pub(crate) fn log_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
     let labels = [lo, 0.5 * (lo + hi), hi]
         .iter()
         .map(|&v| tick(10f64.powf(v)))
@@ -358,7 +360,7 @@ fn tick(value: f64) -> String {
     number_with(value, 3)
 }
 
-pub fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
+pub(crate) fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
     series
         .into_iter()
         .flatten()
@@ -377,7 +379,7 @@ fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64, span: Option<f64
     TipForce::clamped(wanted).newtons()
 }
 
-pub fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
+pub(crate) fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
     Samples::new(from, to, SAMPLES, spacing).ok()
 }
 

@@ -7,24 +7,33 @@
 //! A pin is labelled by what differs from the current parameters (`mu 0.3->0.2`: 0.3 pinned,
 //! 0.2 now), so the legend says what the comparison is about.
 
-use super::{Plot, PlotSeries, SeriesRole, Views, YMode, build, linear_axis, log_axis};
+use super::{Plot, PlotSeries, SeriesRole, linear_axis, log_axis};
+#[cfg(feature = "app")]
+use super::{Views, YMode, build};
+#[cfg(feature = "app")]
 use crate::chart::view::AnyChart;
+#[cfg(feature = "app")]
 use crate::kernel::format::number;
+#[cfg(feature = "app")]
 use crate::problems::inputs::{Inputs, Model};
+#[cfg(feature = "app")]
 use crate::problems::twin_beams::closed_form::BeamTheory;
 
 /// Pins kept at most: more curves than that cannot be told apart on a terminal chart.
-pub const MAX_PINS: usize = 4;
+#[cfg(feature = "app")]
+pub(crate) const MAX_PINS: usize = 4;
 
 /// Differences named in a label before the rest are counted (`+2`).
+#[cfg(feature = "app")]
 const NAMED_DIFFERENCES: usize = 2;
 
 /// The regularized law's curve of `plot` (role [`SeriesRole::Current`]), the one a pin keeps
 /// (None for tables).
-pub fn main_series(plot: &Plot) -> Option<&PlotSeries> {
+pub(crate) fn main_series(plot: &Plot) -> Option<&PlotSeries> {
     plot.series.iter().find(|s| s.role == SeriesRole::Current)
 }
 
+#[cfg(feature = "app")]
 fn theory(theory: BeamTheory) -> &'static str {
     match theory {
         BeamTheory::EulerBernoulli => "EB",
@@ -34,7 +43,8 @@ fn theory(theory: BeamTheory) -> &'static str {
 
 /// What differs between a pin and the current parameters, pinned value first:
 /// `mu 0.3->0.2 KT 600->1e3 +1`; `= current` when nothing does.
-pub fn label(pinned: &Inputs, current: &Inputs) -> String {
+#[cfg(feature = "app")]
+pub(crate) fn label(pinned: &Inputs, current: &Inputs) -> String {
     let mut differences: Vec<String> = pinned
         .kind()
         .params()
@@ -66,13 +76,15 @@ pub fn label(pinned: &Inputs, current: &Inputs) -> String {
 }
 
 /// A pinned series' name in CSV and figures: `pin 1: mu 0.6->0.3`.
-pub fn series_name(number: u8, label: &str) -> String {
+#[cfg(feature = "app")]
+pub(crate) fn series_name(number: u8, label: &str) -> String {
     format!("pin {number}: {label}")
 }
 
 /// The label of a pinned series' name (what follows `pin 1: `), for legends that show the number
 /// as the series' own symbol.
-pub fn label_of(name: &str) -> &str {
+#[cfg(feature = "app")]
+pub(crate) fn label_of(name: &str) -> &str {
     name.split_once(": ").map_or(name, |(_, label)| label)
 }
 
@@ -80,7 +92,8 @@ pub fn label_of(name: &str) -> &str {
 /// from `pinned`: the same chart built at the pin's parameters, in the same y-axis mode. Points
 /// beyond the x range are left out (a pin at another K_T has its own K_T range); the y range
 /// grows to show every pinned curve.
-pub fn add_pins(plot: Plot, pinned: &[(u8, String, &Plot)]) -> Plot {
+#[cfg(feature = "app")]
+pub(crate) fn add_pins(plot: Plot, pinned: &[(u8, String, &Plot)]) -> Plot {
     let curves: Vec<Borrowed> = pinned
         .iter()
         .filter_map(|(number, label, pinned_plot)| {
@@ -168,7 +181,8 @@ pub(super) fn add_borrowed(mut plot: Plot, curves: &[Borrowed]) -> Plot {
 /// `base` (the chart of `chart` at `current`, in y mode `mode`) with the same chart at each of
 /// `pinned` added as pins 1, 2, ...: what `microslip plot --pin` draws. The pins are built over
 /// `base`'s force range (the beams' force axis would otherwise follow each pin's F_thre).
-pub fn with_pinned_models(
+#[cfg(feature = "app")]
+pub(crate) fn with_pinned_models(
     base: Plot,
     current: &Model,
     chart: AnyChart,
@@ -190,7 +204,7 @@ pub fn with_pinned_models(
     add_pins(base, &entries)
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "app"))]
 mod tests {
     use super::*;
     use crate::chart::view::View;

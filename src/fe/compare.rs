@@ -38,7 +38,7 @@ pub struct BeamCompared {
 /// (FE - closed form) / closed form, or `None` where the closed form is 0 (no load, or a plate
 /// with nu = 0 that nothing squeezes sideways): a relative difference is undefined there, and
 /// dividing printed "-inf %" and "NaN %".
-pub fn relative_difference(fe: f64, closed: f64) -> Option<f64> {
+pub(crate) fn relative_difference(fe: f64, closed: f64) -> Option<f64> {
     (closed != 0.0).then(|| fe / closed - 1.0)
 }
 

@@ -53,17 +53,17 @@ impl DeckMesh {
 }
 
 /// Names of the node sets the decks print to the .dat file; [`super::results`] looks them up.
-pub mod sets {
+pub(crate) mod sets {
     /// Tip nodes on the centre line of both beams (w(L) is their mean transverse displacement).
-    pub const BEAM_TIP: &str = "WTIP";
+    pub(crate) const BEAM_TIP: &str = "WTIP";
     /// Lower beam's interface nodes along x (at z = 0).
-    pub const BEAM_LOWER_FACE: &str = "IFLOWER";
+    pub(crate) const BEAM_LOWER_FACE: &str = "IFLOWER";
     /// Upper beam's interface nodes along x (at z = 0); they start where `IFLOWER`'s are.
-    pub const BEAM_UPPER_FACE: &str = "IFUPPER";
+    pub(crate) const BEAM_UPPER_FACE: &str = "IFUPPER";
     /// Plate end nodes through the thickness (x = L, z = 0), from the contact face up.
-    pub const PLATE_END: &str = "UEND";
+    pub(crate) const PLATE_END: &str = "UEND";
     /// Plate contact-face nodes along x (y = 0, z = 0): the slip, since the plane does not move.
-    pub const PLATE_FACE: &str = "IFPLATE";
+    pub(crate) const PLATE_FACE: &str = "IFPLATE";
 }
 
 /// The largest deck written: 20 000 elements. The fine decks have about a thousand (888 for the
@@ -197,7 +197,7 @@ impl LoadPath {
 
     /// The increment of a step from `from` to `to` (N) as a fraction of the step: 1 when the step
     /// ends at or below F_1 (`onset`), else `step / (to - from)`, between 1e-3 and 1.
-    pub fn increment(step: f64, onset: f64, from: f64, to: f64) -> f64 {
+    pub(crate) fn increment(step: f64, onset: f64, from: f64, to: f64) -> f64 {
         if to <= onset || to <= from {
             1.0
         } else {
@@ -212,7 +212,12 @@ impl LoadPath {
     /// 0, t1 and 1: F_1 at the end of the first increment, then `to - F_1` over the other
     /// `(1 - t1) / t1` increments, each at most `step` N. None when the step does not cross F_1
     /// or one increment does (then [`LoadPath::increment`] alone applies).
-    pub fn ramp(step: f64, onset: f64, from: f64, to: f64) -> Option<(f64, [(f64, f64); 3])> {
+    pub(crate) fn ramp(
+        step: f64,
+        onset: f64,
+        from: f64,
+        to: f64,
+    ) -> Option<(f64, [(f64, f64); 3])> {
         if !(from < onset && onset < to) || step >= to - from {
             return None;
         }

@@ -12,7 +12,7 @@ use crate::problems::{BeamParam, ModelKind, Param, PlateParam};
 use crate::{Model, SqueezedPlate, TipForce, TwinBeams};
 
 /// The prefix of the machine-readable header line.
-pub const HEADER_PREFIX: &str = "** microslip-deck:";
+pub(crate) const HEADER_PREFIX: &str = "** microslip-deck:";
 
 /// Which stick slope the deck gives CalculiX.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -28,7 +28,7 @@ pub enum StickSlope {
 
 impl StickSlope {
     /// The stick slope (MPa/mm) for `beams`.
-    pub fn value_for_beams(self, beams: &TwinBeams) -> f64 {
+    pub(crate) fn value_for_beams(self, beams: &TwinBeams) -> f64 {
         let p = beams.params();
         match self {
             StickSlope::Model => p.tangential_stiffness,
@@ -37,7 +37,7 @@ impl StickSlope {
     }
 
     /// The stick slope (MPa/mm) for `plate`.
-    pub fn value_for_plate(self, plate: &SqueezedPlate) -> f64 {
+    pub(crate) fn value_for_plate(self, plate: &SqueezedPlate) -> f64 {
         let p = plate.params();
         match self {
             StickSlope::Model => p.tangential_stiffness,
@@ -125,7 +125,7 @@ impl DeckHeader {
     }
 
     /// The comment block that opens the deck.
-    pub fn to_comment(&self) -> String {
+    pub(crate) fn to_comment(&self) -> String {
         let kind = self.inputs.kind();
         let mut text = format!(
             "** microslip {}: CalculiX (ccx 2.20) deck for the {} (Ligier & Bonhote 2014)\n",

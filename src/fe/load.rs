@@ -14,7 +14,7 @@ use crate::file::{Kinds, Size, read_capped};
 use crate::problems::ModelKind;
 
 /// Largest result file read (256 MiB): a `.dat` of a fine deck is a few MB.
-pub const MAX_RESULT_SIZE: Size = Size(256 << 20);
+pub(crate) const MAX_RESULT_SIZE: Size = Size(256 << 20);
 
 /// A result file that cannot be used, with the file it is about.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]

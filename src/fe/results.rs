@@ -95,7 +95,7 @@ struct DatBlock {
 }
 
 /// The CSV form of the plate curve.
-pub const PLATE_CURVE: Curve = Curve {
+pub(crate) const PLATE_CURVE: Curve = Curve {
     x: "KT_MPa_per_mm",
     y: "u_mm",
     x_what: "stiffnesses",
@@ -105,7 +105,7 @@ pub const PLATE_CURVE: Curve = Curve {
 };
 
 /// The CSV form of the beam curve: the measurement format of `fit`, one row or more.
-pub const BEAM_CURVE: Curve = Curve {
+pub(crate) const BEAM_CURVE: Curve = Curve {
     min_rows: 1,
     ..MEASURED_DEFLECTION
 };

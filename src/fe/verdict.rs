@@ -18,7 +18,7 @@
 pub const STIFFNESS_Z_LIMIT: f64 = 2.0;
 
 /// A difference of X below this many elements is within what the mesh resolves.
-pub const MESH_RESOLUTION_ELEMENTS: f64 = 1.0;
+pub(crate) const MESH_RESOLUTION_ELEMENTS: f64 = 1.0;
 
 /// A relative difference against a stated bound on it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -43,7 +43,7 @@ pub enum Envelope {
 
 impl Envelope {
     /// `difference` judged against `bound` (`None`: not calibrated).
-    pub fn judge(difference: Option<f64>, bound: Option<f64>) -> Envelope {
+    pub(crate) fn judge(difference: Option<f64>, bound: Option<f64>) -> Envelope {
         match (difference, bound) {
             (None, _) => Envelope::Undefined,
             (_, None) => Envelope::NotCalibrated,
@@ -86,7 +86,7 @@ pub struct InterfaceMesh {
 impl InterfaceMesh {
     /// The mesh whose interface nodes (corner and mid-side, any order) are at `xs`; `None` unless
     /// they make at least one quadratic element (an odd count of 3 or more).
-    pub fn from_quadratic_nodes(xs: &[f64]) -> Option<InterfaceMesh> {
+    pub(crate) fn from_quadratic_nodes(xs: &[f64]) -> Option<InterfaceMesh> {
         let mut sorted = xs.to_vec();
         sorted.sort_by(f64::total_cmp);
         if sorted.len() < 3 || sorted.len().is_multiple_of(2) {
@@ -133,7 +133,7 @@ pub struct MeshDifference {
 
 impl MeshDifference {
     /// The difference between the FE position `fe` and the closed form's `closed` on `mesh`.
-    pub fn on(mesh: &InterfaceMesh, fe: f64, closed: f64) -> MeshDifference {
+    pub(crate) fn on(mesh: &InterfaceMesh, fe: f64, closed: f64) -> MeshDifference {
         MeshDifference {
             difference: fe - closed,
             elements: mesh.elements_between(fe, closed),
@@ -172,7 +172,7 @@ pub enum StiffnessMatch {
 
 impl StiffnessMatch {
     /// `deck` against `implied` with its standard error.
-    pub fn judge(deck: f64, implied: f64, std_error: Option<f64>) -> StiffnessMatch {
+    pub(crate) fn judge(deck: f64, implied: f64, std_error: Option<f64>) -> StiffnessMatch {
         match std_error.filter(|s| *s > 0.0 && s.is_finite()) {
             None => StiffnessMatch::NoStandardError,
             Some(s) => {

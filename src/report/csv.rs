@@ -46,7 +46,7 @@ fn unsupported(what: &str) -> Error {
 ///
 /// # Errors
 /// The writer's error, or an error for a row type with a nested field.
-pub fn write_header<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<()> {
+pub(crate) fn write_header<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<()> {
     row.serialize(Line {
         out,
         header: true,
@@ -60,7 +60,7 @@ pub fn write_header<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<(
 ///
 /// # Errors
 /// The writer's error, or an error for a row type with a nested field.
-pub fn write_row<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<()> {
+pub(crate) fn write_row<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<()> {
     row.serialize(Line {
         out,
         header: false,
@@ -75,7 +75,8 @@ pub fn write_row<R: Serialize>(out: &mut impl Write, row: &R) -> io::Result<()> 
 ///
 /// # Errors
 /// As [`write_header`].
-pub fn write_header_after<R: Serialize>(
+#[cfg(feature = "app")]
+pub(crate) fn write_header_after<R: Serialize>(
     out: &mut impl Write,
     first: &str,
     row: &R,
@@ -94,7 +95,12 @@ pub fn write_header_after<R: Serialize>(
 ///
 /// # Errors
 /// As [`write_row`].
-pub fn write_row_after<R: Serialize>(out: &mut impl Write, first: f64, row: &R) -> io::Result<()> {
+#[cfg(feature = "app")]
+pub(crate) fn write_row_after<R: Serialize>(
+    out: &mut impl Write,
+    first: f64,
+    row: &R,
+) -> io::Result<()> {
     Cell { out: &mut *out }.float(first).map_err(|e| e.0)?;
     row.serialize(Line {
         out,

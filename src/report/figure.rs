@@ -11,11 +11,14 @@ use plotters::prelude::*;
 use thiserror::Error;
 
 use super::number_with;
+#[cfg(any(feature = "app", test))]
+use crate::chart::YMode;
+#[cfg(any(feature = "app", test))]
 use crate::chart::view::{AnyChart, BeamChart, PlateChart};
-use crate::chart::{Plot, PlotSeries, SeriesKind, SeriesRole, YMode};
+use crate::chart::{Plot, PlotSeries, SeriesKind, SeriesRole};
 
 /// Width and height of a figure, in SVG pixels (a 16:10 frame that prints well at 16 cm).
-pub const SIZE: (u32, u32) = (800, 500);
+pub(crate) const SIZE: (u32, u32) = (800, 500);
 
 /// Why a figure could not be drawn.
 #[derive(Debug, Error)]
@@ -121,7 +124,7 @@ fn look(role: SeriesRole) -> Look {
     }
 }
 
-/// The plot as an SVG document of [`SIZE`].
+/// The plot as an SVG document of 800 x 500 px (`SIZE`).
 ///
 /// # Errors
 /// [`FigureError::Table`] for a table view; [`FigureError::Drawing`] if plotters fails.
@@ -404,7 +407,8 @@ where
 
 /// One figure of `microslip figures`: a chart of a bundled preset.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct PaperFigure {
+#[cfg(any(feature = "app", test))]
+pub(crate) struct PaperFigure {
     /// File name without extension (`.svg` and `.csv` are written).
     pub stem: &'static str,
     /// The bundled preset charted.
@@ -421,7 +425,8 @@ pub struct PaperFigure {
 
 /// The paper's figures (its two data sets, with the finite-element points of its comparison
 /// figures), then the cyclic loading this project adds.
-pub const PAPER_FIGURES: &[PaperFigure] = &[
+#[cfg(any(feature = "app", test))]
+pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
     PaperFigure {
         stem: "beam-w-vs-f",
         preset: "paper-beams",
@@ -515,7 +520,8 @@ pub const PAPER_FIGURES: &[PaperFigure] = &[
 
 /// One figure of an index page: its files, its title and what it shows.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct IndexEntry {
+#[cfg(any(feature = "app", test))]
+pub(crate) struct IndexEntry {
     /// File name without extension (`.svg` and `.csv` are written).
     pub stem: String,
     /// The chart's short title (the image's alt text).
@@ -526,9 +532,10 @@ pub struct IndexEntry {
     pub command: String,
 }
 
+#[cfg(any(feature = "app", test))]
 impl PaperFigure {
     /// This figure as an entry of the index page.
-    pub fn entry(&self) -> IndexEntry {
+    pub(crate) fn entry(&self) -> IndexEntry {
         IndexEntry {
             stem: self.stem.to_string(),
             title: self.chart.title(),
@@ -546,7 +553,8 @@ impl PaperFigure {
 
 /// A user's own bench, as `figures --preset/--set` draws it.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Bench {
+#[cfg(feature = "app")]
+pub(crate) struct Bench {
     /// The preset's name as shown (`mine (modified by --set)`).
     pub preset: String,
     /// Its parameters ([`parameter_caption`]).
@@ -557,9 +565,10 @@ pub struct Bench {
     pub finite_elements: bool,
 }
 
+#[cfg(feature = "app")]
 impl Bench {
     /// The index entry of `chart` on the y axis `y`.
-    pub fn entry(&self, chart: AnyChart, y: YMode) -> IndexEntry {
+    pub(crate) fn entry(&self, chart: AnyChart, y: YMode) -> IndexEntry {
         IndexEntry {
             stem: format!("{}-{}", chart.kind().name(), chart.key()),
             title: chart.title(),
@@ -580,7 +589,7 @@ impl Bench {
     }
 
     /// The introduction of its index page.
-    pub fn intro(&self) -> String {
+    pub(crate) fn intro(&self) -> String {
         format!(
             "Your bench, preset <code>{}</code>: {}. Units: mm, N, MPa; K_T in MPa/mm. Closed \
              forms under both laws{}. Made by <code>microslip figures {}</code>.",
@@ -597,6 +606,7 @@ impl Bench {
 }
 
 /// Text for an HTML page: `&`, `<`, `>` and `"` escaped (preset names and paths are the user's).
+#[cfg(feature = "app")]
 fn html_text(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
@@ -605,12 +615,14 @@ fn html_text(text: &str) -> String {
 }
 
 /// The introduction of the paper's index page.
-pub const PAPER_INTRO: &str = "Ligier &amp; Bonhote (2014), regularized Coulomb friction: the paper's data sets, \
+#[cfg(any(feature = "app", test))]
+pub(crate) const PAPER_INTRO: &str = "Ligier &amp; Bonhote (2014), regularized Coulomb friction: the paper's data sets, \
      both laws, closed forms; points are the project's own finite-element solutions. \
      Units: mm, N, MPa; K_T in MPa/mm. Made by <code>microslip figures</code>.";
 
 /// The parameters of `inputs` as a caption says them: `L = 200 mm, b = 20 mm, ..., mu = 0.3`.
-pub fn parameter_caption(inputs: &crate::Inputs) -> String {
+#[cfg(feature = "app")]
+pub(crate) fn parameter_caption(inputs: &crate::Inputs) -> String {
     inputs
         .kind()
         .params()
@@ -632,7 +644,8 @@ pub fn parameter_caption(inputs: &crate::Inputs) -> String {
 
 /// An HTML page showing `entries` (SVG files beside it) after `intro` (HTML), with their captions,
 /// CSV data links and the command that draws each alone.
-pub fn index_html(intro: &str, entries: &[IndexEntry]) -> String {
+#[cfg(any(feature = "app", test))]
+pub(crate) fn index_html(intro: &str, entries: &[IndexEntry]) -> String {
     let mut page = String::from(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <title>microslip figures</title>\n<style>\n\

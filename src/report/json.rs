@@ -18,7 +18,7 @@ use crate::study::curves::StiffnessComparison;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// `KEY_unit` with the unit spelled for identifiers: `L_mm`, `E_MPa`, `KT_MPa_per_mm`, `mu`.
-pub fn suffixed(key: &str, unit: Unit) -> String {
+pub(crate) fn suffixed(key: &str, unit: Unit) -> String {
     match unit {
         Unit::Dimensionless => key.to_string(),
         unit => format!("{key}_{}", unit.symbol().replace('/', "_per_")),

@@ -4,7 +4,7 @@
 //! and the binary stays thin. All numbers come from [`crate::study::curves`] and the structured results of
 //! [`crate::fit`] and [`crate::verify`], the same values the TUI shows. Nothing below this module
 //! imports it (tests/layering.rs checks it); the number formatting that decks and reports share
-//! lives in [`crate::kernel::format`] and is re-exported here.
+//! lives in [`crate::kernel::format`] (re-exported here for the rest of the crate).
 
 pub mod compare;
 pub mod csv;
@@ -24,10 +24,10 @@ use std::fmt::Write;
 use crate::study::curves::{beam_point, plate_point};
 use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
-pub use crate::kernel::format::{number, number_with};
+pub(crate) use crate::kernel::format::{number, number_with};
 
 /// `n` and the noun, singular for one: "1 measurement", "3 measurements".
-pub fn count_of(n: usize, noun: &str) -> String {
+pub(crate) fn count_of(n: usize, noun: &str) -> String {
     if n == 1 {
         format!("1 {noun}")
     } else {
@@ -41,15 +41,7 @@ pub fn count_of(n: usize, noun: &str) -> String {
 /// and carriage return become `\t`, `\n` and `\r`, other ASCII controls `\xHH` (ESC is `\x1b`, so
 /// an escape sequence is shown, not obeyed), the rest `\u{HHHH}`. Everything else, including any
 /// other Unicode, is kept. The result is one line.
-///
-/// # Examples
-/// ```
-/// use microslip::report::sanitize;
-/// assert_eq!(sanitize("plain text, déjà vu"), "plain text, déjà vu");
-/// assert_eq!(sanitize("red \u{1b}[31malert\u{7}\nnext"), "red \\x1b[31malert\\x07\\nnext");
-/// assert_eq!(sanitize("\u{9b}2J"), "\\u{9b}2J");
-/// ```
-pub fn sanitize(text: &str) -> Cow<'_, str> {
+pub(crate) fn sanitize(text: &str) -> Cow<'_, str> {
     fn unsafe_char(c: char) -> bool {
         c.is_control() || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
     }
@@ -77,7 +69,8 @@ pub fn sanitize(text: &str) -> Cow<'_, str> {
 /// The strip theory's validity in a few words (TUI regime pane, one line of 30 characters), for
 /// the thickness-mean u(L): "mean holds (~1.6 %)", "mean approx. (~5.2 %)", "mean OUTSIDE",
 /// "not calibrated". The number is the expected difference from a plane-strain continuum, (V1).
-pub fn strip_validity_short(v: &crate::problems::plate::validity::PlateValidity) -> String {
+#[cfg(feature = "app")]
+pub(crate) fn strip_validity_short(v: &crate::problems::plate::validity::PlateValidity) -> String {
     use crate::kernel::validity::Validity;
     let e = v.expected_error();
     match v.validity {
@@ -93,64 +86,9 @@ pub fn strip_validity_short(v: &crate::problems::plate::validity::PlateValidity)
     }
 }
 
+#[cfg(feature = "app")]
 fn percent_of(error: Option<f64>) -> String {
     error.map_or_else(|| "-".to_string(), |e| number_with(100.0 * e, 2))
-}
-
-/// What the contact-pressure check found, with both measures and which one decides: "holds (mean
-/// deviation 0.6 % <= 3 %, peak 32.3 % <= 50 %)" or "does NOT hold: peak 176 % > 50 %".
-pub fn pressure_verdict(pressure: &crate::ContactPressure) -> String {
-    deviation_verdict(pressure.mean_deviation(), pressure.peak_deviation())
-}
-
-/// [`pressure_verdict`] from the two measures, as the plate report holds them.
-pub(crate) fn deviation_verdict(mean: f64, peak: f64) -> String {
-    use crate::problems::plate::closed_form::{PRESSURE_DEVIATION_LIMIT, PRESSURE_PEAK_LIMIT};
-    let percent = |x: f64| number_with(100.0 * x, 3);
-    let mut failed = Vec::new();
-    if mean > PRESSURE_DEVIATION_LIMIT {
-        failed.push(format!(
-            "mean deviation {} % > {} %",
-            percent(mean),
-            percent(PRESSURE_DEVIATION_LIMIT)
-        ));
-    }
-    if peak > PRESSURE_PEAK_LIMIT {
-        failed.push(format!(
-            "peak {} % > {} %",
-            percent(peak),
-            percent(PRESSURE_PEAK_LIMIT)
-        ));
-    }
-    if failed.is_empty() {
-        format!(
-            "holds (mean deviation {} % <= {} %, peak {} % <= {} %)",
-            percent(mean),
-            percent(PRESSURE_DEVIATION_LIMIT),
-            percent(peak),
-            percent(PRESSURE_PEAK_LIMIT)
-        )
-    } else {
-        format!("does NOT hold: {}", failed.join(", "))
-    }
-}
-
-/// The same in a few words for the TUI's regime pane (30 characters): "holds", "FAILS (peak 176 %)".
-pub fn pressure_verdict_short(pressure: &crate::ContactPressure) -> String {
-    use crate::problems::plate::closed_form::PRESSURE_DEVIATION_LIMIT;
-    if pressure.constant_pressure_holds() {
-        "holds".to_string()
-    } else if pressure.mean_deviation() > PRESSURE_DEVIATION_LIMIT {
-        format!(
-            "FAILS (mean {} %)",
-            number_with(100.0 * pressure.mean_deviation(), 2)
-        )
-    } else {
-        format!(
-            "FAILS (peak {} %)",
-            number_with(100.0 * pressure.peak_deviation(), 3)
-        )
-    }
 }
 
 /// Tip forces of the paper report's beam table, as multiples of F_thre: stick, threshold, then slip.
@@ -292,6 +230,16 @@ mod tests {
         assert_eq!(number_with(4.843_42e-4, 3), "4.84e-4");
         assert_eq!(number_with(1e10, 3), "1e10");
         assert_eq!(number_with(240.0, 3), "240");
+    }
+
+    #[test]
+    fn sanitize_shows_controls_as_escapes() {
+        assert_eq!(sanitize("plain text, déjà vu"), "plain text, déjà vu");
+        assert_eq!(
+            sanitize("red \u{1b}[31malert\u{7}\nnext"),
+            "red \\x1b[31malert\\x07\\nnext"
+        );
+        assert_eq!(sanitize("\u{9b}2J"), "\\u{9b}2J");
     }
 
     #[test]

@@ -66,7 +66,8 @@ pub fn write_table<R: Serialize + Default>(
 ///
 /// # Errors
 /// The writer's error.
-pub fn write_table_after<R: Serialize + Default>(
+#[cfg(feature = "app")]
+pub(crate) fn write_table_after<R: Serialize + Default>(
     out: &mut impl Write,
     format: TableFormat,
     column: &str,

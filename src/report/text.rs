@@ -32,8 +32,6 @@ pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> String {
     CycleReport::new(preset, beams, amplitude).text()
 }
 
-pub use super::point::cycle::CYCLE_UNITS_NOTE;
-
 pub use super::point::fit::evidence;
 
 /// Fit report: estimates with standard errors and a plain verdict on identifiability.
@@ -46,10 +44,9 @@ pub fn fit(
     FitReport::new(data, preset, structure, result).text()
 }
 
-pub use super::point::stiffness::{candidate_basis, candidate_name};
-
 /// One line on how far reading a measurement file got, for a progress display.
-pub fn reading_progress(done: usize, total: usize) -> String {
+#[cfg(feature = "app")]
+pub(crate) fn reading_progress(done: usize, total: usize) -> String {
     format!(
         "reading the measurements, {}%",
         (done as f64 / total.max(1) as f64 * 100.0) as u32
@@ -76,7 +73,8 @@ pub fn ccx_progress(progress: &crate::fe::run::Progress) -> String {
 }
 
 /// One line on how far a running fit got, for a progress display.
-pub fn fit_progress(progress: &crate::fit::Progress) -> String {
+#[cfg(feature = "app")]
+pub(crate) fn fit_progress(progress: &crate::fit::Progress) -> String {
     use crate::fit::{Pass, Progress};
     let percent = |done: usize, total: usize| 100 * done / total.max(1);
     match *progress {
@@ -108,12 +106,6 @@ pub fn fit_progress(progress: &crate::fit::Progress) -> String {
 /// The K_T comparison: each candidate and what it does to the answer.
 pub fn stiffness_table(preset: &str, comparison: &StiffnessComparison) -> String {
     StiffnessReport::new(preset, comparison).text()
-}
-
-/// The plate's K_T at macroslip onset in words (docs/theory.md, (P11)), as the text report and the
-/// TUI say it.
-pub fn plate_onset(plate: &SqueezedPlate) -> String {
-    super::point::plate::onset_words(plate.macroslip_onset_stiffness())
 }
 
 /// The answer of `microslip solve`: every root found, or why there is none.

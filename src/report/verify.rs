@@ -7,7 +7,7 @@ use super::number;
 use crate::verify::{Case, Quantity, Worst};
 
 /// What a quantity is, with its unit: the table's first column.
-pub fn quantity(quantity: Quantity) -> &'static str {
+pub(crate) fn quantity(quantity: Quantity) -> &'static str {
     match quantity {
         Quantity::BeamTipDeflection => "beam w(L) (mm)",
         Quantity::BeamMicroslipEnd => "beam X (mm)",
@@ -17,7 +17,7 @@ pub fn quantity(quantity: Quantity) -> &'static str {
 }
 
 /// Every parameter of a case on one line, with units, so that it can be rerun.
-pub fn case(case: &Case) -> String {
+pub(crate) fn case(case: &Case) -> String {
     match case {
         Case::Beam { params: p, force } => format!(
             "K_T={} MPa/mm F={} N L={} b={} h={} mm E={} MPa P={} MPa mu={}",

@@ -11,7 +11,7 @@ pub mod verdict;
 use serde::Serialize;
 
 use super::number;
-use crate::fe::compare::{BeamCompared, BeamComparison, PlateCompared};
+use crate::fe::compare::{BeamCompared, PlateCompared};
 
 /// One row of `microslip compare beam`.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
@@ -150,6 +150,7 @@ fn optional(x: Option<f64>) -> String {
 
 /// The range of the defined `values` as "a to b %", or the one value; "n/a" when none is.
 /// Compact: it goes on the status line.
+#[cfg(feature = "app")]
 fn percent_range(values: impl Iterator<Item = Option<f64>>) -> String {
     let (lo, hi) = values
         .flatten()
@@ -167,7 +168,8 @@ fn percent_range(values: impl Iterator<Item = Option<f64>>) -> String {
 
 /// One line for the TUI's status: the beams' comparison in brief, the verdict first (the line is
 /// cut at the screen's width).
-pub fn beam_summary(code: &str, comparison: &BeamComparison) -> String {
+#[cfg(feature = "app")]
+pub(crate) fn beam_summary(code: &str, comparison: &crate::fe::compare::BeamComparison) -> String {
     let shear = percent_range(
         comparison
             .rows
@@ -183,7 +185,8 @@ pub fn beam_summary(code: &str, comparison: &BeamComparison) -> String {
 }
 
 /// One line for the TUI's status: one plate run in brief, the verdict first.
-pub fn plate_summary(code: &str, row: &PlateCompared) -> String {
+#[cfg(feature = "app")]
+pub(crate) fn plate_summary(code: &str, row: &PlateCompared) -> String {
     let through = row
         .differences_through_thickness()
         .map_or(String::new(), |[face, mid]| {

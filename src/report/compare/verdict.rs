@@ -84,7 +84,7 @@ fn stiffness_option<S: Serializer>(m: &Option<StiffnessMatch>, s: S) -> Result<S
 }
 
 /// "w(L) -0.27 % is within the envelope (bound 1.07 %)", for `what` = "w(L)".
-pub fn envelope_words(what: &str, difference: Option<f64>, envelope: Envelope) -> String {
+pub(crate) fn envelope_words(what: &str, difference: Option<f64>, envelope: Envelope) -> String {
     let d = difference.map_or_else(String::new, |d| format!(" {}", percent(d)));
     match envelope {
         Envelope::Within { bound } => {
@@ -108,7 +108,7 @@ fn bare(x: f64) -> String {
 }
 
 /// "X differs by 0.42 elements (0.26 mm; element 0.62 mm): within the mesh's resolution".
-pub fn mesh_words(what: &str, mesh: &MeshDifference) -> String {
+pub(crate) fn mesh_words(what: &str, mesh: &MeshDifference) -> String {
     if mesh.elements == 0.0 {
         return format!("{what} the same");
     }
@@ -126,7 +126,7 @@ pub fn mesh_words(what: &str, mesh: &MeshDifference) -> String {
 }
 
 /// The row verdict of the beams, from the compared row.
-pub fn beam_row(row: &crate::fe::compare::BeamCompared) -> BeamRowVerdict {
+pub(crate) fn beam_row(row: &crate::fe::compare::BeamCompared) -> BeamRowVerdict {
     let envelope = row.envelope();
     let mut text = format!(
         "F = {} N: {}",
@@ -147,7 +147,7 @@ pub fn beam_row(row: &crate::fe::compare::BeamCompared) -> BeamRowVerdict {
 }
 
 /// The row verdict of the plate, from the compared row.
-pub fn plate_row(row: &crate::fe::compare::PlateCompared) -> PlateRowVerdict {
+pub(crate) fn plate_row(row: &crate::fe::compare::PlateCompared) -> PlateRowVerdict {
     let envelope = row.envelope();
     let mut text = format!(
         "K_T = {} MPa/mm: {}",

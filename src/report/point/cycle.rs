@@ -11,7 +11,7 @@ use crate::report::{number, sanitize};
 use crate::{TipForce, TwinBeams, TwinBeamsParams};
 
 /// What D, U and the secant stiffness refer to: said wherever they appear (text, JSON, help, TUI).
-pub const CYCLE_UNITS_NOTE: &str = "D and U are for the pair (both beams' tip forces, the whole \
+pub(crate) const CYCLE_UNITS_NOTE: &str = "D and U are for the pair (both beams' tip forces, the whole \
      interface; U = 1/2 (2 F_a) w_a); the secant stiffness F_a/w_a and the loop w(F) are one beam's \
      (the loop's area is D/2).";
 
@@ -30,7 +30,7 @@ pub struct CycleReport {
     pub amplitude: f64,
     pub coulomb: LawCycle,
     pub regularized: LawCycle,
-    /// [`CYCLE_UNITS_NOTE`].
+    /// A note on the units: D and U are for the pair of beams (the text of `CYCLE_UNITS_NOTE`).
     pub note: &'static str,
 }
 

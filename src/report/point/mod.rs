@@ -31,7 +31,7 @@ use crate::problems::stiffness::mpa_per_mm_to_mpa_per_um;
 
 /// A report as a JSON value (sorted keys). Serializing these structs cannot fail: every map key is
 /// a string.
-pub fn to_json(report: &impl Serialize) -> Value {
+pub(crate) fn to_json(report: &impl Serialize) -> Value {
     serde_json::to_value(report).unwrap_or(Value::Null)
 }
 
@@ -63,7 +63,7 @@ impl InputsReport {
     }
 
     /// The inputs block of the text reports.
-    pub fn write(&self, out: &mut String) {
+    pub(crate) fn write(&self, out: &mut String) {
         let _ = writeln!(out, "Inputs");
         for (param, value) in self.values() {
             let spec = param.spec();

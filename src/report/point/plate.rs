@@ -101,10 +101,10 @@ pub struct ContactPressureReport {
 }
 
 /// The model behind [`ContactPressureReport`].
-pub const FLAT_PRESSURE_MODEL: &str =
+pub(crate) const FLAT_PRESSURE_MODEL: &str =
     "flat Timoshenko plate, friction saturated everywhere (P7-P9, paper section 2.2.1)";
 /// The model behind the continuum's pressure keys.
-pub const CONTINUUM_PRESSURE_MODEL: &str = "plane-strain continuum FE (contact reactions)";
+pub(crate) const CONTINUUM_PRESSURE_MODEL: &str = "plane-strain continuum FE (contact reactions)";
 
 /// The strip theory's envelope (V1): the verdict on the thickness-mean u(L) and, where a
 /// calibration reaches, the bound on each quantity; X_r is not bounded.
@@ -335,7 +335,7 @@ impl ContinuumReport {
 }
 
 /// The plate's K_T at macroslip onset in words (docs/theory.md, (P11)).
-pub fn onset_words(stiffness: Option<f64>) -> String {
+pub(crate) fn onset_words(stiffness: Option<f64>) -> String {
     match stiffness {
         Some(kt) => format!(
             "K_T at macroslip onset = {} MPa/mm: below it all microslip, above it macroslip at the free end",

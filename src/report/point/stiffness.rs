@@ -31,9 +31,9 @@ pub struct StiffnessReport {
 /// One candidate K_T and the answer at it.
 #[derive(Debug, Clone, Serialize)]
 pub struct CandidateReport {
-    /// Where it comes from ([`candidate_name`]).
+    /// Where it comes from (`candidate_name`).
     pub source: &'static str,
-    /// How it was obtained ([`candidate_basis`]).
+    /// How it was obtained (`candidate_basis`).
     pub basis: String,
     /// `None` (null) where it needs an input not given (eq. 4 without K_N).
     #[serde(rename = "KT_MPa_per_mm")]
@@ -74,12 +74,12 @@ pub enum CandidateAnswer {
 }
 
 /// The name of a K_T candidate's source, as reports show it.
-pub fn candidate_name(source: &CandidateSource) -> &'static str {
+pub(crate) fn candidate_name(source: &CandidateSource) -> &'static str {
     source.name()
 }
 
 /// How a K_T candidate was obtained, and how sure we are.
-pub fn candidate_basis(source: &CandidateSource) -> String {
+pub(crate) fn candidate_basis(source: &CandidateSource) -> String {
     match source {
         CandidateSource::Current => "the model's K_T".into(),
         CandidateSource::NormalLow => "measured K_T/K_N, low end".into(),
