@@ -4,6 +4,7 @@
 //! quantity); the table for people is written by the `report` module.
 
 use crate::numeric::{MeshDensity, NumericError};
+use crate::problems::ModelKind;
 use crate::problems::plate::PlateFe;
 use crate::problems::twin_beams::TwinBeamsFe;
 use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
@@ -160,6 +161,19 @@ const PLATE_STIFFNESSES: [f64; 6] = [1.0, 1e3, 1e5, 1e6, 1e7, 1e8];
 ///
 /// The [`NumericError`] of the first finite-element solve that fails.
 pub fn run(grid: Grid, density: MeshDensity) -> Result<Vec<Worst>, NumericError> {
+    let mut worst = Vec::new();
+    // Every problem, so that none is left out of `verify` without the compiler saying so.
+    for kind in ModelKind::ALL {
+        worst.extend(match kind {
+            ModelKind::Beam => run_beams(grid, density)?,
+            ModelKind::Plate => run_plates(grid, density)?,
+        });
+    }
+    Ok(worst)
+}
+
+/// The twin beams over the grid: w(L) and X.
+fn run_beams(grid: Grid, density: MeshDensity) -> Result<[Worst; 2], NumericError> {
     let mut w = Worst::new(Quantity::BeamTipDeflection);
     let mut x = Worst::new(Quantity::BeamMicroslipEnd);
     for shape in beam_shapes(grid) {
@@ -192,6 +206,11 @@ pub fn run(grid: Grid, density: MeshDensity) -> Result<Vec<Worst>, NumericError>
             }
         }
     }
+    Ok([w, x])
+}
+
+/// The plate over the grid: u(L) and X_r.
+fn run_plates(grid: Grid, density: MeshDensity) -> Result<[Worst; 2], NumericError> {
     let mut u = Worst::new(Quantity::PlateEndDisplacement);
     let mut xr = Worst::new(Quantity::PlateMicroslipEnd);
     for shape in plate_shapes(grid) {
@@ -211,7 +230,7 @@ pub fn run(grid: Grid, density: MeshDensity) -> Result<Vec<Worst>, NumericError>
             xr.record(fe.micro_zone_end(), exact.micro_zone_end(), case);
         }
     }
-    Ok(vec![w, x, u, xr])
+    Ok([u, xr])
 }
 
 #[cfg(test)]

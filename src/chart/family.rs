@@ -109,13 +109,9 @@ pub(crate) fn title(chart: AnyChart, param: Param, values: &[f64]) -> String {
     )
 }
 
-/// Whether a chart's x axis is the beams' force, which a family widens to its widest member.
+/// Whether a chart's x axis is the problem's load, which a family widens to its widest member.
 fn force_axis(chart: AnyChart) -> bool {
-    use crate::chart::view::BeamChart;
-    matches!(
-        chart,
-        AnyChart::Beam(BeamChart::Deflection | BeamChart::SlipBoundary | BeamChart::Dissipation)
-    )
+    chart.load_axis()
 }
 
 /// The chart `chart` of each of `members` (models of `param` at `values`, the rest equal) in y

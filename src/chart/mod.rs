@@ -495,7 +495,7 @@ fn stiffness_table(model: &Model) -> Plot {
                 cell(micro_end, 8)
             ),
             (Some(k), None) => format!("{:>7} out of range", cell(k, 7)),
-            _ => format!("{:>7}", "none"),
+            (None, _) => format!("{:>7}", "none"),
         };
         lines.push(format!("{:<10} {cells}", short(&row.candidate.source)));
     }

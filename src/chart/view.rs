@@ -1,7 +1,7 @@
 //! What a view shows: the charts of each model and the tables, as enums. The TUI cycles through
 //! them and draws them; figure and table exports name them the same way. A chart is never an index.
 
-use crate::problems::ModelKind;
+use crate::problems::{BeamParam, ModelKind, Param, PlateParam};
 
 /// The twin beams' charts, in the order the TUI cycles through them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -44,6 +44,14 @@ pub trait ChartSet: Copy + Eq + 'static {
     fn title(self) -> &'static str;
     /// The chart's name on the command line and in file names (`w-vs-f`).
     fn key(self) -> &'static str;
+    /// The parameter the chart runs along its x axis (F, K_T, mu), whose value a caption need
+    /// not give; None where the x axis is no parameter (tau(x), the loop, P_r(x), D vs F_a).
+    fn x_param(self) -> Option<Param>;
+    /// True where the x axis is the problem's load (F, or the amplitude F_a), which a family of
+    /// curves widens to the span its widest member needs.
+    fn load_axis(self) -> bool;
+    /// True where the chart's quantity spans decades: it opens on a log y axis.
+    fn spans_decades(self) -> bool;
 }
 
 impl ChartSet for BeamChart {
@@ -74,6 +82,30 @@ impl ChartSet for BeamChart {
             BeamChart::Dissipation => "d-vs-fa",
         }
     }
+
+    fn x_param(self) -> Option<Param> {
+        match self {
+            BeamChart::Deflection | BeamChart::SlipBoundary => Some(Param::Beam(BeamParam::Force)),
+            BeamChart::Shear | BeamChart::Loop | BeamChart::Dissipation => None,
+        }
+    }
+
+    fn load_axis(self) -> bool {
+        match self {
+            BeamChart::Deflection | BeamChart::SlipBoundary | BeamChart::Dissipation => true,
+            BeamChart::Shear | BeamChart::Loop => false,
+        }
+    }
+
+    fn spans_decades(self) -> bool {
+        match self {
+            BeamChart::Dissipation => true,
+            BeamChart::Deflection
+            | BeamChart::SlipBoundary
+            | BeamChart::Shear
+            | BeamChart::Loop => false,
+        }
+    }
 }
 
 impl ChartSet for PlateChart {
@@ -98,6 +130,26 @@ impl ChartSet for PlateChart {
             PlateChart::ContactPressure => "pressure",
         }
     }
+
+    fn x_param(self) -> Option<Param> {
+        match self {
+            PlateChart::Displacement => Some(Param::Plate(PlateParam::Stiffness)),
+            PlateChart::SlipBoundary => Some(Param::Plate(PlateParam::Friction)),
+            PlateChart::ContactPressure => None,
+        }
+    }
+
+    fn load_axis(self) -> bool {
+        // The plate has no load parameter: its pressure is fixed.
+        false
+    }
+
+    fn spans_decades(self) -> bool {
+        match self {
+            PlateChart::Displacement => true,
+            PlateChart::SlipBoundary | PlateChart::ContactPressure => false,
+        }
+    }
 }
 
 /// A chart of either model, as `microslip plot CHART` names it.
@@ -112,15 +164,26 @@ pub enum AnyChart {
 impl AnyChart {
     /// The parameter the chart runs along its x axis (F, K_T, mu), whose value a caption need not
     /// give; None where the x axis is no parameter (tau(x), the loop, P_r(x)).
-    pub fn x_param(self) -> Option<crate::problems::Param> {
-        use crate::problems::{BeamParam, Param, PlateParam};
+    pub fn x_param(self) -> Option<Param> {
         match self {
-            AnyChart::Beam(BeamChart::Deflection | BeamChart::SlipBoundary) => {
-                Some(Param::Beam(BeamParam::Force))
-            }
-            AnyChart::Plate(PlateChart::Displacement) => Some(Param::Plate(PlateParam::Stiffness)),
-            AnyChart::Plate(PlateChart::SlipBoundary) => Some(Param::Plate(PlateParam::Friction)),
-            _ => None,
+            AnyChart::Beam(c) => c.x_param(),
+            AnyChart::Plate(c) => c.x_param(),
+        }
+    }
+
+    /// See [`ChartSet::load_axis`].
+    pub fn load_axis(self) -> bool {
+        match self {
+            AnyChart::Beam(c) => c.load_axis(),
+            AnyChart::Plate(c) => c.load_axis(),
+        }
+    }
+
+    /// See [`ChartSet::spans_decades`].
+    pub fn spans_decades(self) -> bool {
+        match self {
+            AnyChart::Beam(c) => c.spans_decades(),
+            AnyChart::Plate(c) => c.spans_decades(),
         }
     }
 

@@ -4,7 +4,7 @@
 //! so the TUI, `microslip plot --y` and the figures show the same numbers.
 
 use super::{Axis, Plot, PlotSeries, SeriesKind, SeriesRole, axis_bounds, cursor, log_axis, tick};
-use crate::chart::view::{AnyChart, BeamChart, PlateChart};
+use crate::chart::view::AnyChart;
 use crate::study::curves::Series;
 
 /// How the y axis shows the data.
@@ -47,11 +47,10 @@ impl YMode {
 
     /// The mode a chart opens in: log where its quantity spans decades.
     pub fn default_for(chart: AnyChart) -> YMode {
-        match chart {
-            AnyChart::Plate(PlateChart::Displacement) | AnyChart::Beam(BeamChart::Dissipation) => {
-                YMode::Log
-            }
-            _ => YMode::Linear,
+        if chart.spans_decades() {
+            YMode::Log
+        } else {
+            YMode::Linear
         }
     }
 
@@ -235,6 +234,7 @@ fn to_relative(mut plot: Plot) -> Plot {
 mod tests {
     use super::*;
     use crate::chart::figure;
+    use crate::chart::view::{BeamChart, PlateChart};
     use crate::problems::ModelKind;
     use crate::problems::inputs::{Inputs, Model};
     use crate::{TipForce, TwinBeams};

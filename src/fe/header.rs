@@ -6,9 +6,9 @@ use std::fmt::Write as _;
 
 use super::deck::DeckMesh;
 use crate::kernel::format::number;
-use crate::kernel::params::{Compact, Domain, Unit, parse_number};
+use crate::kernel::params::{Compact, parse_number};
 use crate::problems::inputs::Inputs;
-use crate::problems::{BeamParam, ModelKind, Param, PlateParam};
+use crate::problems::{ModelKind, Param};
 use crate::{Model, SqueezedPlate, TipForce, TwinBeams};
 
 /// The prefix of the machine-readable header line.
@@ -158,22 +158,19 @@ impl DeckHeader {
             self.stick_slope.name(),
             self.poisson
         );
+        let load = kind.description().load;
         for &param in kind.params() {
-            // F is the list of loads; nu is `nu=` above.
-            if matches!(
-                param,
-                Param::Beam(BeamParam::Force | BeamParam::Poisson)
-                    | Param::Plate(PlateParam::Poisson)
-            ) {
+            // The load is the list of load steps below; nu is `nu=` above.
+            if Some(param) == load || is_poisson(param) {
                 continue;
             }
             if let Some(value) = self.inputs.get(param) {
                 let _ = write!(line, " {}={value:?}", param.name());
             }
         }
-        if kind == ModelKind::Beam {
+        if let Some(load) = load {
             let loads: Vec<String> = self.loads.iter().map(|f| format!("{f:?}")).collect();
-            let _ = write!(line, " F={}", loads.join(","));
+            let _ = write!(line, " {}={}", load.name(), loads.join(","));
         }
         line
     }
@@ -293,14 +290,12 @@ impl DeckHeader {
         }
         let poisson = number_of("nu", take("nu")?)?;
         let mut inputs = Inputs::paper(kind);
+        let load = kind.description().load;
         for &param in kind.params() {
-            if param == Param::Beam(BeamParam::Force) {
+            if Some(param) == load {
                 continue;
             }
-            let value = if matches!(
-                param,
-                Param::Plate(PlateParam::Poisson) | Param::Beam(BeamParam::Poisson)
-            ) {
+            let value = if is_poisson(param) {
                 poisson
             } else {
                 number_of(param.name(), take(param.name())?)?
@@ -308,11 +303,13 @@ impl DeckHeader {
             inputs.set(param, value).map_err(|e| fail(e.to_string()))?;
         }
         let mut loads: Vec<f64> = Vec::new();
-        if kind == ModelKind::Beam {
-            for text in take("F")?.split(',') {
-                let force = number_of("F", text)?;
-                Domain::FORCE
-                    .check("F", force, Unit::Newton)
+        if let Some(load) = load {
+            let key = load.name();
+            for text in take(key)?.split(',') {
+                let force = number_of(key, text)?;
+                let spec = load.spec();
+                spec.domain
+                    .check(key, force, spec.unit)
                     .map_err(|e| fail(e.to_string()))?;
                 if let Some(&previous) = loads.last()
                     && force <= previous
@@ -326,7 +323,7 @@ impl DeckHeader {
                 loads.push(force);
             }
             inputs
-                .set(Param::Beam(BeamParam::Force), *loads.last().unwrap_or(&0.0))
+                .set(load, *loads.last().unwrap_or(&0.0))
                 .map_err(|e| fail(e.to_string()))?;
         }
         let header = DeckHeader {
@@ -339,6 +336,12 @@ impl DeckHeader {
         header.model().map_err(|e| fail(e.to_string()))?;
         Ok(Some(header))
     }
+}
+
+/// True for a problem's Poisson ratio: the header writes it once as `nu=` (a deck needs one for
+/// its continuum elements even where the problem has none of its own).
+fn is_poisson(param: Param) -> bool {
+    param.name() == "nu"
 }
 
 #[cfg(test)]

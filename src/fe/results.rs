@@ -142,6 +142,14 @@ pub fn plate_points_from_csv(text: &str) -> Result<Vec<PlateFePoint>, ResultsErr
 }
 
 impl CcxRun<'_> {
+    /// Results asked for as one problem's of a deck of another: the command that reads them.
+    fn other_deck(&self) -> ResultsError {
+        let kind = self.header.inputs.kind();
+        ResultsError::Missing(format!(
+            "the deck is a {kind} deck; use `microslip compare {kind}`"
+        ))
+    }
+
     /// The beam points of a beam deck's run: one per load step that CalculiX finished.
     ///
     /// # Errors
@@ -149,9 +157,7 @@ impl CcxRun<'_> {
     /// before it, or the `.dat` of another deck).
     pub fn beam_points(&self) -> Result<Vec<BeamFePoint>, ResultsError> {
         let Inputs::Beam { structure, .. } = self.header.inputs else {
-            return Err(ResultsError::Missing(
-                "the deck is a plate deck; use `microslip compare plate`".into(),
-            ));
+            return Err(self.other_deck());
         };
         let blocks = parse_dat(self.dat)?;
         let nodes = parse_nodes(self.deck)?;
@@ -205,9 +211,7 @@ impl CcxRun<'_> {
     /// A malformed `.dat` line, or no result at the end of the step.
     pub fn plate_point(&self) -> Result<PlateFePoint, ResultsError> {
         let Inputs::Plate(plate) = self.header.inputs else {
-            return Err(ResultsError::Missing(
-                "the deck is a beam deck; use `microslip compare beam`".into(),
-            ));
+            return Err(self.other_deck());
         };
         let blocks = parse_dat(self.dat)?;
         let nodes = parse_nodes(self.deck)?;

@@ -190,7 +190,8 @@ impl Inputs {
             (Inputs::Beam { force, .. }, Param::Beam(BeamParam::Force)) => Some(force),
             (Inputs::Beam { structure, .. }, Param::Beam(p)) => structure.value_mut(p),
             (Inputs::Plate(s), Param::Plate(p)) => Some(s.value_mut(p)),
-            _ => None,
+            // A parameter of another problem.
+            (Inputs::Beam { .. }, Param::Plate(_)) | (Inputs::Plate(_), Param::Beam(_)) => None,
         }
     }
 

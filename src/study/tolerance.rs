@@ -11,7 +11,7 @@
 use crate::kernel::code_defaults::{CODE_DEFAULTS, CodeDefault, DefaultRule};
 use crate::kernel::params::{Domain, ParamError};
 use crate::kernel::solve::find_root_in_bracket;
-use crate::problems::{BeamParam, PlateParam};
+use crate::problems::{BeamParam, ModelKind, PlateParam};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// Force samples over a range of the beams' tip force, besides its ends and F_thre: the deviation
@@ -54,6 +54,8 @@ impl Threshold {
 /// What the tolerance asks of K_T, for one model and range.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ToleranceAnswer {
+    /// The problem answered.
+    pub kind: ModelKind,
     /// The tolerance (fraction: 0.01 for 1 %).
     pub tolerance: f64,
     /// Beams: the tip-force range checked [from, to] (N); plate: None.
@@ -230,6 +232,7 @@ pub fn beam_stiffness_for_tolerance(
     let p = beams.params();
     let current = (p.tangential_stiffness, worst(beams, &forces));
     Ok(ToleranceAnswer {
+        kind: ModelKind::Beam,
         tolerance,
         forces: Some([from, to]),
         threshold,
@@ -292,6 +295,7 @@ pub fn beam_stiffness_near_current(
         .fold(f64::INFINITY, f64::min);
     let p = beams.params();
     let question = Question {
+        kind: ModelKind::Beam,
         tolerance,
         forces: Some(range),
         current: (p.tangential_stiffness, worst(beams, &forces)),
@@ -335,6 +339,7 @@ pub fn plate_stiffness_near_current(
     let coulomb = plate.coulomb().end_displacement() / current - 1.0;
     let p = plate.params();
     let question = Question {
+        kind: ModelKind::Plate,
         tolerance,
         forces: None,
         current: (p.tangential_stiffness, plate_deviation(plate)),
@@ -358,6 +363,8 @@ pub fn plate_stiffness_near_current(
 
 /// What a question of the other reading fixes before any root is searched.
 struct Question {
+    /// The problem asked about.
+    kind: ModelKind,
     /// The checked tolerance (fraction).
     tolerance: f64,
     /// Beams: the force range checked (N); plate: None.
@@ -379,6 +386,7 @@ fn near_current(
     settings: impl Fn(Threshold) -> Vec<CodeSetting>,
 ) -> ToleranceAnswer {
     let Question {
+        kind,
         tolerance,
         forces,
         current,
@@ -404,6 +412,7 @@ fn near_current(
         }
     }
     ToleranceAnswer {
+        kind,
         tolerance,
         forces,
         threshold,
@@ -432,6 +441,7 @@ pub fn plate_stiffness_for_tolerance(
     let threshold = smallest_within(PlateParam::Stiffness.spec().domain, tolerance, at);
     let p = plate.params();
     Ok(ToleranceAnswer {
+        kind: ModelKind::Plate,
         tolerance,
         forces: None,
         threshold,

@@ -233,12 +233,13 @@ impl StiffnessReport {
                     number(*micro_end),
                     regime.label(),
                 ),
-                (_, Some(_)) => writeln!(
+                // No answer: the columns of the beams' table (a force given) or the plate's.
+                (None | Some(CandidateAnswer::Refused { .. }), Some(_)) => writeln!(
                     out,
                     "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10}  {unanswered:<20} {basis}",
                     "-", "-", "-", "-",
                 ),
-                (_, None) => writeln!(
+                (None | Some(CandidateAnswer::Refused { .. }), None) => writeln!(
                     out,
                     "{source:<16} {kt:>12} {:>12} {:>10} {:>10}  {unanswered:<20} {basis}",
                     "-", "-", "-",
@@ -246,11 +247,7 @@ impl StiffnessReport {
             };
         }
         if self.candidates.iter().any(|row| {
-            row.kt.is_some()
-                && !matches!(
-                    row.answer,
-                    Some(CandidateAnswer::Beam { .. } | CandidateAnswer::Plate { .. })
-                )
+            row.kt.is_some() && matches!(row.answer, None | Some(CandidateAnswer::Refused { .. }))
         }) {
             let stiffness = BeamParam::Stiffness.spec();
             let _ = writeln!(

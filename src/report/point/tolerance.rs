@@ -6,6 +6,7 @@ use std::fmt::Write;
 
 use serde::Serialize;
 
+use crate::problems::{ModelKind, Quantity};
 use crate::report::{number, number_with, sanitize};
 use crate::study::tolerance::{CodeSetting, Setting, Threshold, ToleranceAnswer};
 
@@ -169,14 +170,16 @@ impl ToleranceReport {
         let preset = sanitize(&self.preset);
         let tol = percent_of(answer.tolerance);
         let mut out = String::new();
-        let (quantity, over, why) = match answer.forces {
-            Some([from, to]) if from == to => ("w(L)", format!("at F = {} N", number(to)), "(T1)"),
-            Some([from, to]) => (
-                "w(L)",
-                format!("at every F from {} to {} N", number(from), number(to)),
-                "(T1)",
-            ),
-            None => ("u(L)", "at the plate's pressure".to_string(), "(P10)"),
+        let quantity = Quantity::Response.name(answer.kind);
+        // Where docs/theory.md shows the response never grows with K_T, for this problem.
+        let why = match answer.kind {
+            ModelKind::Beam => "(T1)",
+            ModelKind::Plate => "(P10)",
+        };
+        let over = match answer.forces {
+            Some([from, to]) if from == to => format!("at F = {} N", number(to)),
+            Some([from, to]) => format!("at every F from {} to {} N", number(from), number(to)),
+            None => format!("at the {}'s pressure", answer.kind),
         };
         let (kt, deviation) = answer.current;
         if let Some(near) = answer.near_current {
