@@ -16,7 +16,8 @@
 use thiserror::Error;
 
 use super::pins::{Borrowed, add_borrowed, main_series};
-use super::{Plot, SeriesRole, Views, YMode, build, linear_axis, log_axis};
+use super::view::View;
+use super::{Plot, SeriesRole, YMode, build, linear_axis, log_axis};
 use crate::chart::view::AnyChart;
 use crate::kernel::params::Compact;
 use crate::problems::Param;
@@ -136,8 +137,8 @@ pub fn build_family(
             param,
         });
     }
-    let views = Views::showing(chart);
-    let linear = |model: &Model, span: Option<f64>| build(model, views, None, None, None, span);
+    let view = View::Chart(chart);
+    let linear = |model: &Model, span: Option<f64>| build(model, view, None, None, None, span);
     // The widest force axis any member needs, then every member over it.
     let span = force_axis(chart)
         .then(|| {

@@ -20,7 +20,7 @@ use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::inputs::Model;
 use crate::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
 use crate::problems::twin_beams::TwinBeamsFe;
-use crate::problems::{BeamParam, ByProblem, ModelKind, PlateParam};
+use crate::problems::{BeamParam, ModelKind, PlateParam};
 use crate::study::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
@@ -252,49 +252,6 @@ pub struct ExternalPoints {
     pub points: Vec<(f64, f64)>,
 }
 
-/// The view shown for each problem; each keeps its own while another problem is active.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Views(ByProblem<View>);
-
-impl Default for Views {
-    fn default() -> Self {
-        Views(ByProblem::from_fn(View::first))
-    }
-}
-
-impl Views {
-    /// The view of `kind`.
-    pub fn of(self, kind: ModelKind) -> View {
-        self.0[kind]
-    }
-
-    /// The views with `kind`'s moved one forward or back.
-    pub fn turn(mut self, kind: ModelKind, forward: bool) -> Views {
-        self.0[kind] = self.0[kind].turn(kind, forward);
-        self
-    }
-
-    /// These views with `view` shown for `kind`.
-    pub fn with(mut self, kind: ModelKind, view: View) -> Views {
-        self.0[kind] = view;
-        self
-    }
-
-    /// The default views with `chart` shown for its problem.
-    pub fn showing(chart: AnyChart) -> Views {
-        let mut views = Views::default();
-        views.0[chart.kind()] = View::Chart(chart);
-        views
-    }
-
-    /// Title, 1-based position and count of `kind`'s view, for the pane title.
-    pub fn describe(self, kind: ModelKind) -> (&'static str, usize, usize) {
-        let view = self.of(kind);
-        let (position, count) = view.position(kind);
-        (view.title(), position, count)
-    }
-}
-
 /// A curve of `role`.
 pub(crate) fn line(role: SeriesRole, name: impl Into<String>, points: Series) -> PlotSeries {
     PlotSeries {
@@ -522,12 +479,12 @@ fn stiffness_table(model: &Model) -> Plot {
     }
 }
 
-/// Builds the view of `model` chosen in `views`, with finite-element points, measurements and an
+/// Builds `view` of `model` (a view of the model's problem), with finite-element points, measurements and an
 /// external code's points if given (measurements show on the twin beams' w(L) vs F chart, external
 /// points on the chart of their quantity).
 pub fn build(
     model: &Model,
-    views: Views,
+    view: View,
     numeric: Option<&NumericPoints>,
     measured: Option<&[Measurement]>,
     external: Option<&ExternalPoints>,
@@ -536,7 +493,7 @@ pub fn build(
     let external = external.filter(|e| e.model == model.kind());
     let mut overlays: Vec<(SeriesRole, &str, Series)> = Vec::new();
     let plot = match *model {
-        Model::Beam { beams, force } => match views.of(ModelKind::Beam) {
+        Model::Beam { beams, force } => match view {
             View::Table(Table::StiffnessComparison) => return stiffness_table(model),
             View::Chart(AnyChart::Plate(_)) => None,
             View::Chart(AnyChart::Beam(chart)) => {
@@ -556,7 +513,7 @@ pub fn build(
                 beam_plot(&beams, force, chart, f_data, force_span)
             }
         },
-        Model::Plate(plate) => match views.of(ModelKind::Plate) {
+        Model::Plate(plate) => match view {
             View::Table(Table::StiffnessComparison) => return stiffness_table(model),
             View::Chart(AnyChart::Beam(_)) => None,
             View::Chart(AnyChart::Plate(chart)) => {
@@ -883,19 +840,19 @@ pub fn figure(
     finite_elements: bool,
     y: YMode,
 ) -> Result<Plot, NumericError> {
-    let views = Views::showing(chart);
+    let view = View::Chart(chart);
     let numeric = if finite_elements {
-        numeric_points(model, views)?
+        numeric_points(model, view)?
     } else {
         None
     };
-    Ok(y.apply(build(model, views, numeric.as_ref(), None, None, None)))
+    Ok(y.apply(build(model, view, numeric.as_ref(), None, None, None)))
 }
 
 /// Finite-element points for chart `chart`, where the chart has a finite-element counterpart.
-pub fn numeric_points(model: &Model, views: Views) -> Result<Option<NumericPoints>, NumericError> {
+pub fn numeric_points(model: &Model, view: View) -> Result<Option<NumericPoints>, NumericError> {
     let density = MeshDensity::with_elements(OVERLAY_ELEMENTS);
-    match (*model, views.of(model.kind()).chart()) {
+    match (*model, view.chart()) {
         (
             Model::Beam { beams, force },
             Some(AnyChart::Beam(chart @ (BeamChart::Deflection | BeamChart::SlipBoundary))),
@@ -1026,11 +983,8 @@ mod tests {
     use crate::problems::inputs::Inputs;
 
     /// Every view of `kind`, as the `c` key reaches them.
-    pub(super) fn every_view(kind: ModelKind) -> Vec<Views> {
-        let (_, _, count) = Views::default().describe(kind);
-        std::iter::successors(Some(Views::default()), |v| Some(v.turn(kind, true)))
-            .take(count)
-            .collect()
+    pub(super) fn every_view(kind: ModelKind) -> Vec<View> {
+        View::all(kind).collect()
     }
 
     fn model(kind: ModelKind) -> Model {
@@ -1041,7 +995,7 @@ mod tests {
     fn every_chart_has_titles_units_bounds_and_finite_points() {
         for kind in [ModelKind::Beam, ModelKind::Plate] {
             for views in every_view(kind) {
-                let chart = views.describe(kind).0;
+                let chart = views.title();
                 let plot = build(&model(kind), views, None, None, None, None);
                 assert!(!plot.title.is_empty());
                 if let Some(table) = &plot.table {
@@ -1181,7 +1135,9 @@ mod tests {
     #[test]
     fn finite_element_points_sit_on_the_analytic_curve() {
         let m = model(ModelKind::Beam);
-        let numeric = numeric_points(&m, Views::default()).unwrap().unwrap();
+        let numeric = numeric_points(&m, View::first(ModelKind::Beam))
+            .unwrap()
+            .unwrap();
         let Model::Beam { beams, .. } = m else {
             unreachable!()
         };
@@ -1194,7 +1150,7 @@ mod tests {
         assert!(
             numeric_points(
                 &model(ModelKind::Plate),
-                Views::showing(AnyChart::Plate(PlateChart::ContactPressure))
+                View::Chart(AnyChart::Plate(PlateChart::ContactPressure))
             )
             .unwrap()
             .is_none()

@@ -7,9 +7,11 @@
 //! A pin is labelled by what differs from the current parameters (`mu 0.3->0.2`: 0.3 pinned,
 //! 0.2 now), so the legend says what the comparison is about.
 
+#[cfg(feature = "app")]
+use super::view::View;
 use super::{Plot, PlotSeries, SeriesRole, linear_axis, log_axis};
 #[cfg(feature = "app")]
-use super::{Views, YMode, build};
+use super::{YMode, build};
 #[cfg(feature = "app")]
 use crate::chart::view::AnyChart;
 #[cfg(feature = "app")]
@@ -192,7 +194,7 @@ pub(crate) fn with_pinned_models(
     let span = Some(base.x.bounds[1]);
     let plots: Vec<Plot> = pinned
         .iter()
-        .map(|m| mode.apply(build(m, Views::showing(chart), None, None, None, span)))
+        .map(|m| mode.apply(build(m, View::Chart(chart), None, None, None, span)))
         .collect();
     let now = current.inputs();
     let entries: Vec<(u8, String, &Plot)> = pinned
@@ -218,7 +220,7 @@ mod tests {
             let model = Inputs::paper(kind).validate().unwrap();
             for views in every_view(kind) {
                 let plot = build(&model, views, None, None, None, None);
-                let is_table = matches!(views.of(kind), View::Table(_));
+                let is_table = matches!(views, View::Table(_));
                 assert_eq!(main_series(&plot).is_none(), is_table, "{}", plot.title);
             }
         }
@@ -246,14 +248,8 @@ mod tests {
         ];
         for (kind, chart, param, value) in cases {
             let current = Inputs::paper(kind).validate().unwrap();
-            let base = YMode::Log.apply(build(
-                &current,
-                Views::showing(chart),
-                None,
-                None,
-                None,
-                None,
-            ));
+            let base =
+                YMode::Log.apply(build(&current, View::Chart(chart), None, None, None, None));
             assert!(base.y.log, "{}", base.title);
             let mut pinned = Inputs::paper(kind);
             pinned.set(param, value).unwrap();
@@ -295,7 +291,14 @@ mod tests {
     /// pins are built over the current chart's force range.
     fn build_at(inputs: &Inputs) -> Plot {
         let model = inputs.validate().unwrap();
-        build(&model, Views::default(), None, None, None, Some(240.0))
+        build(
+            &model,
+            View::first(ModelKind::Beam),
+            None,
+            None,
+            None,
+            Some(240.0),
+        )
     }
 
     #[test]

@@ -711,8 +711,8 @@ mod tests {
     #[test]
     fn a_table_is_not_a_figure() {
         let model = Inputs::paper(ModelKind::Beam).validate().unwrap();
-        let views = crate::chart::Views::default().turn(ModelKind::Beam, false);
-        let table = crate::chart::build(&model, views, None, None, None, None);
+        let view = crate::chart::view::View::first(ModelKind::Beam).turn(ModelKind::Beam, false);
+        let table = crate::chart::build(&model, view, None, None, None, None);
         assert!(matches!(svg(&table), Err(FigureError::Table(_))));
     }
 

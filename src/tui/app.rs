@@ -11,9 +11,10 @@ use super::effects::{Effect, ExportError, Outcome};
 use super::keymap::Context;
 use super::text_input::TextInput;
 use super::theme::Theme;
+use super::views::Views;
 use crate::PlateParams;
 use crate::chart::view::{AnyChart, View};
-use crate::chart::{self, NumericPoints, Plot, Views, YMode, pins};
+use crate::chart::{self, NumericPoints, Plot, YMode, pins};
 use crate::fit::Measurement;
 use crate::kernel::params::{Compact, parse_number};
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
@@ -591,7 +592,7 @@ impl App {
         self.ask_continuum();
         let Some(model) = self.model() else { return };
         if self.show_numeric {
-            match chart::numeric_points(&model, self.views) {
+            match chart::numeric_points(&model, self.views.of(self.kind)) {
                 Ok(points) => self.numeric = points,
                 Err(e) => {
                     self.numeric = None;
@@ -667,7 +668,14 @@ impl App {
         if let Some(param) = self.state().varied {
             return chart::vary::build(model, param);
         }
-        chart::build(model, self.views, numeric, measured, external, force_span)
+        chart::build(
+            model,
+            self.views.of(model.kind()),
+            numeric,
+            measured,
+            external,
+            force_span,
+        )
     }
 
     /// `g`: keeps the current parameters as a pin (the oldest goes beyond [`pins::MAX_PINS`]).

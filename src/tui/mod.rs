@@ -28,6 +28,7 @@ pub mod terminal;
 pub mod text_input;
 pub mod theme;
 pub mod ui;
+pub mod views;
 
 use std::io::{self, IsTerminal};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
