@@ -17,7 +17,8 @@ use thiserror::Error;
 mod read;
 mod write;
 
-pub use read::{Kinds, kind_of, read_capped, require_regular};
+pub use read::{Kinds, read_capped};
+pub(crate) use read::{kind_of, require_regular};
 pub use write::{write_atomic, write_new_files};
 
 /// Why a capped read failed.

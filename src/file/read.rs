@@ -28,7 +28,7 @@ pub enum Kinds {
 
 /// What a file that is not a regular file is, in words ("a FIFO (named pipe)").
 #[must_use]
-pub fn kind_of(metadata: &Metadata) -> &'static str {
+pub(crate) fn kind_of(metadata: &Metadata) -> &'static str {
     let kind = metadata.file_type();
     if kind.is_dir() {
         return "a folder";
@@ -63,7 +63,7 @@ pub fn kind_of(metadata: &Metadata) -> &'static str {
 ///
 /// # Errors
 /// [`ReadError::Io`] when `path` cannot be examined, [`ReadError::NotRegular`] otherwise.
-pub fn require_regular(path: &Path) -> Result<Metadata, ReadError> {
+pub(crate) fn require_regular(path: &Path) -> Result<Metadata, ReadError> {
     let metadata = std::fs::metadata(path)?;
     if metadata.is_file() {
         Ok(metadata)

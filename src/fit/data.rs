@@ -33,7 +33,7 @@ pub struct Measured {
 }
 
 /// Header of the optional column of per-point standard deviations of w (mm).
-pub const SIGMA_COLUMN: &str = "sigma_mm";
+pub(crate) const SIGMA_COLUMN: &str = "sigma_mm";
 
 /// A problem in a data file, with its 1-based line.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
@@ -46,15 +46,15 @@ pub struct DataError {
 }
 
 /// Fewest rows a fit accepts: two parameters need at least one more point than parameters.
-pub const MIN_ROWS: usize = 3;
+pub(crate) const MIN_ROWS: usize = 3;
 
 /// Largest measurement file read: 256 MiB. A million rows written with full precision take about
 /// 40 MB, so this allows six million or more (a long, finely sampled test) while keeping the text and
 /// the parsed points (16 bytes a row) well under a gigabyte; anything bigger is almost certainly not
 /// a measured curve, and an endless stream (`/dev/zero`, a FIFO) stops here.
-pub const MAX_DATA_SIZE: Size = Size(256 << 20);
+pub(crate) const MAX_DATA_SIZE: Size = Size(256 << 20);
 
-/// Reads the text of a measurement file, refusing one larger than [`MAX_DATA_SIZE`]; give the text
+/// Reads the text of a measurement file, refusing one larger than 256 MiB (`MAX_DATA_SIZE`); give the text
 /// to [`parse`]. `kinds` says whether a stream (a FIFO, `<(...)`) is read ([`Kinds::AnyReadable`],
 /// the command line) or refused ([`Kinds::RegularOnly`], the terminal UI, which must not wait).
 ///
@@ -138,8 +138,8 @@ impl<'a> LineCounter<'a> {
 ///
 /// A [`DataError`] with the 1-based line of the file when the text has no header, the header lacks
 /// `F_N` or `w_mm`, a value is missing or not a finite number, a force is negative, beyond the
-/// accepted tip forces or not above the previous one, or there are fewer than [`MIN_ROWS`]
-/// measurements.
+/// accepted tip forces or not above the previous one, or there are fewer than 3
+/// measurements (`MIN_ROWS`).
 pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
     parse_with_progress(text, &mut |_, _| {})
 }
@@ -152,15 +152,16 @@ const PROGRESS_ROWS: usize = 1 << 16;
 ///
 /// # Errors
 /// As [`parse`].
-pub fn parse_with_progress(
+fn parse_with_progress(
     text: &str,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<Measurement>, DataError> {
     Ok(parse_measured_with_progress(text, progress)?.points)
 }
 
-/// [`parse_with_progress`], keeping the `sigma_mm` column when there is one (each value finite and
-/// > 0, refused with its line otherwise).
+/// [`parse`], telling `progress` (bytes read, bytes in all) every few ten thousand rows (a file of
+/// several million rows takes seconds), and keeping the `sigma_mm` column when there is one (each
+/// value finite and > 0, refused with its line otherwise).
 ///
 /// # Errors
 /// As [`parse`], and a sigma that is missing, not a finite number or not > 0.
@@ -196,7 +197,7 @@ pub struct Curve {
 }
 
 /// A measured twin-beam curve for the fit: `F_N,w_mm`, at least [`MIN_ROWS`] rows.
-pub const MEASURED_DEFLECTION: Curve = Curve {
+pub(crate) const MEASURED_DEFLECTION: Curve = Curve {
     x: "F_N",
     y: "w_mm",
     x_what: "forces",

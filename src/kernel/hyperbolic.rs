@@ -27,7 +27,7 @@ fn even_series(z: f64, first: u32) -> f64 {
 }
 
 /// `sinh(z) / z`, equal to 1 at z = 0.
-pub fn sinhc(z: f64) -> f64 {
+pub(crate) fn sinhc(z: f64) -> f64 {
     if z.abs() < SERIES_LIMIT {
         even_series(z, 1)
     } else {
@@ -36,7 +36,7 @@ pub fn sinhc(z: f64) -> f64 {
 }
 
 /// `(cosh z - 1) / z^2`, equal to 1/2 at z = 0.
-pub fn cosh_rem0(z: f64) -> f64 {
+pub(crate) fn cosh_rem0(z: f64) -> f64 {
     if z.abs() < SERIES_LIMIT {
         even_series(z, 2)
     } else {
@@ -45,7 +45,7 @@ pub fn cosh_rem0(z: f64) -> f64 {
 }
 
 /// `(sinh z - z) / z^3`, equal to 1/6 at z = 0.
-pub fn sinh_rem1(z: f64) -> f64 {
+pub(crate) fn sinh_rem1(z: f64) -> f64 {
     if z.abs() < SERIES_LIMIT {
         even_series(z, 3)
     } else {
@@ -54,7 +54,7 @@ pub fn sinh_rem1(z: f64) -> f64 {
 }
 
 /// `(cosh z - 1 - z^2/2) / z^4`, equal to 1/24 at z = 0.
-pub fn cosh_rem2(z: f64) -> f64 {
+pub(crate) fn cosh_rem2(z: f64) -> f64 {
     if z.abs() < SERIES_LIMIT {
         even_series(z, 4)
     } else {
@@ -63,7 +63,7 @@ pub fn cosh_rem2(z: f64) -> f64 {
 }
 
 /// `(sinh z - z - z^3/6) / z^5`, equal to 1/120 at z = 0.
-pub fn sinh_rem3(z: f64) -> f64 {
+pub(crate) fn sinh_rem3(z: f64) -> f64 {
     if z.abs() < SERIES_LIMIT {
         even_series(z, 5)
     } else {
@@ -72,27 +72,27 @@ pub fn sinh_rem3(z: f64) -> f64 {
 }
 
 /// `1 / sinh(b)` for `b > 0`, without overflow for large `b`.
-pub fn inv_sinh(b: f64) -> f64 {
+pub(crate) fn inv_sinh(b: f64) -> f64 {
     2.0 * (-b).exp() / -(-2.0 * b).exp_m1()
 }
 
 /// `sinh(a) / sinh(b)` for `0 <= a <= b`, `b > 0`: at most 1, finite for any `b`.
-pub fn sinh_ratio(a: f64, b: f64) -> f64 {
+pub(crate) fn sinh_ratio(a: f64, b: f64) -> f64 {
     (a - b).exp() * (-2.0 * a).exp_m1() / (-2.0 * b).exp_m1()
 }
 
 /// `cosh(a) / sinh(b)` for `0 <= a <= b`, `b > 0`: finite for any `b`.
-pub fn cosh_sinh_ratio(a: f64, b: f64) -> f64 {
+pub(crate) fn cosh_sinh_ratio(a: f64, b: f64) -> f64 {
     (a - b).exp() * (1.0 + (-2.0 * a).exp()) / -(-2.0 * b).exp_m1()
 }
 
 /// `sinh(a) / cosh(b)` for `0 <= a <= b`: below 1, finite for any `b`.
-pub fn sinh_cosh_ratio(a: f64, b: f64) -> f64 {
+pub(crate) fn sinh_cosh_ratio(a: f64, b: f64) -> f64 {
     (a - b).exp() * -(-2.0 * a).exp_m1() / (1.0 + (-2.0 * b).exp())
 }
 
 /// `1 - 1/cosh(z)`, accurate for small `z` (where it is ~ z^2/2) and finite for large `z`.
-pub fn one_minus_sech(z: f64) -> f64 {
+pub(crate) fn one_minus_sech(z: f64) -> f64 {
     let e = (-z.abs()).exp();
     // 1 - sech z = (cosh z - 1)/cosh z = (1 - e)^2 / (1 + e^2) with e = exp(-|z|).
     let one_minus_e = -(-z.abs()).exp_m1();

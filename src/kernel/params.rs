@@ -356,7 +356,7 @@ impl Scale {
 }
 
 /// Relative fine and coarse steps of multiplicative parameters.
-pub const FACTOR: Scale = Scale::Factor {
+pub(crate) const FACTOR: Scale = Scale::Factor {
     fine: 1.02,
     coarse: 1.25,
 };
@@ -386,7 +386,7 @@ pub struct ParamSpec {
 
 impl ParamSpec {
     /// The same spec with `note` shown beside its value.
-    pub const fn noted(self, note: &'static str) -> ParamSpec {
+    pub(crate) const fn noted(self, note: &'static str) -> ParamSpec {
         ParamSpec { note, ..self }
     }
 
@@ -401,7 +401,7 @@ impl ParamSpec {
 
 /// A [`ParamSpec`] in one line, for the problems' tables of parameters; its usual range is
 /// unbounded until [`ParamSpec::usual`] sets it (a test requires every problem's to be set).
-pub const fn spec(
+pub(crate) const fn spec(
     name: &'static str,
     unit: Unit,
     meaning: &'static str,
@@ -419,7 +419,7 @@ pub const fn spec(
     }
 }
 
-pub const MODULUS: ParamSpec = spec(
+pub(crate) const MODULUS: ParamSpec = spec(
     "E",
     Unit::Megapascal,
     "Young's modulus",
@@ -427,7 +427,7 @@ pub const MODULUS: ParamSpec = spec(
     FACTOR,
 )
 .usual(1.0, 1.2e6);
-pub const FRICTION: ParamSpec = spec(
+pub(crate) const FRICTION: ParamSpec = spec(
     "mu",
     Unit::Dimensionless,
     "friction coefficient",
@@ -436,7 +436,7 @@ pub const FRICTION: ParamSpec = spec(
 )
 .usual(0.01, 2.0);
 /// The Poisson ratio; stepping stops just short of the excluded 0.5.
-pub const POISSON: ParamSpec = spec(
+pub(crate) const POISSON: ParamSpec = spec(
     "nu",
     Unit::Dimensionless,
     "Poisson ratio",
@@ -450,7 +450,7 @@ pub const POISSON: ParamSpec = spec(
 )
 .usual(0.0, 0.5);
 /// K_T spans decades: its coarse step is a quarter decade.
-pub const STIFFNESS: ParamSpec = spec(
+pub(crate) const STIFFNESS: ParamSpec = spec(
     "KT",
     Unit::MegapascalPerMillimetre,
     "tangential contact stiffness",
@@ -463,7 +463,7 @@ pub const STIFFNESS: ParamSpec = spec(
 .usual(0.1, 1e9);
 
 /// Parses a number as users type it: `1e6`, `600`, `0.3`; rejects NaN and infinities spelled out.
-pub fn parse_number(text: &str) -> Option<f64> {
+pub(crate) fn parse_number(text: &str) -> Option<f64> {
     let value: f64 = text.parse().ok()?;
     // "nan" and "inf" parse in Rust; they are never what a user means. Range checks catch the rest.
     if value.is_nan() || text.to_ascii_lowercase().contains("inf") {

@@ -7,7 +7,7 @@
 
 /// Lower half of a symmetric n x n matrix with half-bandwidth `bandwidth`, stored row by row.
 #[derive(Debug, Clone)]
-pub struct SymmetricBand {
+pub(crate) struct SymmetricBand {
     n: usize,
     bandwidth: usize,
     values: Vec<f64>,
@@ -15,14 +15,14 @@ pub struct SymmetricBand {
 
 /// The matrix is not positive definite (a mechanism: a constraint is missing).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct NotPositiveDefinite {
+pub(crate) struct NotPositiveDefinite {
     /// Row where factorization broke down.
     pub row: usize,
 }
 
 impl SymmetricBand {
     /// A zero matrix.
-    pub fn zeros(n: usize, bandwidth: usize) -> Self {
+    pub(crate) fn zeros(n: usize, bandwidth: usize) -> Self {
         SymmetricBand {
             n,
             bandwidth,
@@ -38,7 +38,7 @@ impl SymmetricBand {
 
     /// Entry (i, j) (tests read the assembled matrix through it).
     #[cfg(test)]
-    pub fn get(&self, i: usize, j: usize) -> f64 {
+    pub(crate) fn get(&self, i: usize, j: usize) -> f64 {
         let (hi, lo) = if i >= j { (i, j) } else { (j, i) };
         if hi - lo > self.bandwidth {
             0.0
@@ -48,13 +48,13 @@ impl SymmetricBand {
     }
 
     /// Adds `value` to entry (i, j) and, by symmetry, (j, i).
-    pub fn add(&mut self, i: usize, j: usize, value: f64) {
+    pub(crate) fn add(&mut self, i: usize, j: usize, value: f64) {
         let k = self.index(i, j);
         self.values[k] += value;
     }
 
     /// Replaces row and column `i` by those of the identity (an essential boundary condition).
-    pub fn fix(&mut self, i: usize) {
+    pub(crate) fn fix(&mut self, i: usize) {
         for j in i.saturating_sub(self.bandwidth)..=(i + self.bandwidth).min(self.n - 1) {
             let k = self.index(i, j);
             self.values[k] = 0.0;
@@ -65,7 +65,7 @@ impl SymmetricBand {
 
     /// Plain matrix-vector product: the tests' yardstick for [`SymmetricBand::mul_accurate`].
     #[cfg(test)]
-    pub fn mul(&self, x: &[f64]) -> Vec<f64> {
+    pub(crate) fn mul(&self, x: &[f64]) -> Vec<f64> {
         let mut y = vec![0.0; self.n];
         for i in 0..self.n {
             for j in i.saturating_sub(self.bandwidth)..=i {
@@ -85,7 +85,7 @@ impl SymmetricBand {
     /// n elements, K d cancels terms n^3 times larger than the result, and a plainly rounded residual
     /// would cap the solution's accuracy at cond(K) x 1e-16 ~ n^4 x 1e-16 instead of letting Newton
     /// refine it to full precision.
-    pub fn mul_accurate(&self, x: &[f64]) -> Vec<f64> {
+    pub(crate) fn mul_accurate(&self, x: &[f64]) -> Vec<f64> {
         let mut sum = vec![0.0; self.n];
         let mut compensation = vec![0.0; self.n];
         let mut accumulate = |row: usize, a: f64, b: f64| {
@@ -110,7 +110,7 @@ impl SymmetricBand {
     }
 
     /// Solves A x = b by Cholesky factorization (consumes the matrix).
-    pub fn solve(mut self, b: &[f64]) -> Result<Vec<f64>, NotPositiveDefinite> {
+    pub(crate) fn solve(mut self, b: &[f64]) -> Result<Vec<f64>, NotPositiveDefinite> {
         let bw = self.bandwidth;
         for i in 0..self.n {
             for j in i.saturating_sub(bw)..=i {

@@ -3,7 +3,7 @@
 
 /// Gauss-Legendre points and weights on [0, 1]: 4 points, exact for polynomials of degree 7, so the
 /// elastic interface terms (slip quadratic, stress times test function quartic) are integrated exactly.
-pub const GAUSS: [(f64, f64); 4] = [
+pub(crate) const GAUSS: [(f64, f64); 4] = [
     (0.069_431_844_202_973_71, 0.173_927_422_568_726_93),
     (0.330_009_478_207_571_9, 0.326_072_577_431_273_07),
     (0.669_990_521_792_428_1, 0.326_072_577_431_273_07),
@@ -11,7 +11,7 @@ pub const GAUSS: [(f64, f64); 4] = [
 ];
 
 /// Quadratic Lagrange functions at local coordinate r in [0, 1], for (end 1, midside, end 2).
-pub fn lagrange(r: f64) -> [f64; 3] {
+pub(crate) fn lagrange(r: f64) -> [f64; 3] {
     [
         (1.0 - r) * (1.0 - 2.0 * r),
         4.0 * r * (1.0 - r),
@@ -21,7 +21,7 @@ pub fn lagrange(r: f64) -> [f64; 3] {
 
 /// Lower-triangle entries (i, j, value) of a quadratic bar's stiffness, (end 1, midside, end 2),
 /// for axial rigidity `rigidity` (N) over length `length`: rigidity / (3 l) [7 -8 1; -8 16 -8; 1 -8 7].
-pub fn quadratic_bar(rigidity: f64, length: f64) -> [(usize, usize, f64); 6] {
+pub(crate) fn quadratic_bar(rigidity: f64, length: f64) -> [(usize, usize, f64); 6] {
     let c = rigidity / (3.0 * length);
     [
         (0, 0, 7.0 * c),

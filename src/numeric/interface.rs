@@ -5,18 +5,18 @@
 //! go up, down and up again, and what makes an unloading branch differ from the loading one.
 
 /// Relative overshoot of the yield limit still treated as elastic.
-pub const YIELD_TOLERANCE: f64 = 1e-9;
+pub(crate) const YIELD_TOLERANCE: f64 = 1e-9;
 
 /// The committed state of one point.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct InterfacePoint {
+pub(crate) struct InterfacePoint {
     /// Plastic slip: the slider's displacement (mm).
     pub plastic_slip: f64,
 }
 
 /// Stress and consistent tangent of a trial slip.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Response {
+pub(crate) struct Response {
     /// Shear stress (MPa).
     pub stress: f64,
     /// d stress / d slip (MPa/mm): K_T while elastic, 0 while sliding.
@@ -33,7 +33,7 @@ impl InterfacePoint {
     /// A trial stress within [`YIELD_TOLERANCE`] (relative) of the strength stays elastic: points that
     /// sit on the yield limit to round-off (the whole interface does at F = F_thre when K_T is large)
     /// would otherwise flip between elastic and sliding from one Newton iteration to the next.
-    pub fn respond(&self, slip: f64, stiffness: f64, strength: f64) -> Response {
+    pub(crate) fn respond(&self, slip: f64, stiffness: f64, strength: f64) -> Response {
         let trial = stiffness * (slip - self.plastic_slip);
         if trial.abs() <= strength * (1.0 + YIELD_TOLERANCE) {
             Response {

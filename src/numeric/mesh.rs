@@ -54,7 +54,7 @@ impl MeshDensity {
 
 /// Node positions on [0, length] with `elements` elements, geometrically graded so that the element
 /// next to x = 0 is about `ratio` times smaller than the last one (ratio 1: uniform).
-pub fn graded_from_start(length: f64, elements: usize, ratio: f64) -> Vec<f64> {
+pub(crate) fn graded_from_start(length: f64, elements: usize, ratio: f64) -> Vec<f64> {
     let elements = elements.max(1);
     let ratio = ratio.max(1.0);
     if ratio == 1.0 {
@@ -73,7 +73,7 @@ pub fn graded_from_start(length: f64, elements: usize, ratio: f64) -> Vec<f64> {
 }
 
 /// The mirror image: small elements next to x = length.
-pub fn graded_towards_end(length: f64, elements: usize, ratio: f64) -> Vec<f64> {
+pub(crate) fn graded_towards_end(length: f64, elements: usize, ratio: f64) -> Vec<f64> {
     graded_from_start(length, elements, ratio)
         .iter()
         .rev()
@@ -82,7 +82,7 @@ pub fn graded_towards_end(length: f64, elements: usize, ratio: f64) -> Vec<f64> 
 }
 
 /// Grading ratio that makes the smallest of `elements` elements about `smallest` long (>= 1).
-pub fn ratio_for_smallest(length: f64, elements: usize, smallest: f64) -> f64 {
+pub(crate) fn ratio_for_smallest(length: f64, elements: usize, smallest: f64) -> f64 {
     let uniform = length / elements.max(1) as f64;
     if smallest >= uniform {
         return 1.0;

@@ -19,8 +19,10 @@ use std::path::{Path, PathBuf};
 use thiserror::Error;
 
 use crate::kernel::params::ParamError;
+#[cfg(any(test, feature = "app"))]
+use crate::problems::ModelKind;
+use crate::problems::UnknownParam;
 use crate::problems::inputs::Inputs;
-use crate::problems::{ModelKind, UnknownParam};
 
 pub use parse::apply_assignment;
 pub use store::{SaveError, save_atomic, user_preset_dir, user_presets};
@@ -152,7 +154,7 @@ impl fmt::Display for Located {
 }
 
 /// Presets embedded in the binary: (name, TOML text).
-pub const BUNDLED: &[(&str, &str)] = &[
+const BUNDLED: &[(&str, &str)] = &[
     (
         "paper-beams",
         include_str!("../../presets/paper-beams.toml"),
@@ -168,7 +170,8 @@ pub const BUNDLED: &[(&str, &str)] = &[
 ];
 
 /// The bundled preset that opens a model by default (the paper's data set).
-pub fn default_name(kind: ModelKind) -> &'static str {
+#[cfg(any(test, feature = "app"))]
+pub(crate) fn default_name(kind: ModelKind) -> &'static str {
     kind.description().paper_preset
 }
 
@@ -182,7 +185,8 @@ pub fn bundled() -> Vec<Preset> {
 
 /// The paper's preset for `kind`; falls back to the paper's inputs should the bundled file ever
 /// fail to parse (a test guards against that).
-pub fn paper(kind: ModelKind) -> Preset {
+#[cfg(any(test, feature = "app"))]
+pub(crate) fn paper(kind: ModelKind) -> Preset {
     let name = default_name(kind);
     resolve(name).unwrap_or_else(|_| Preset {
         name: name.to_string(),
@@ -193,19 +197,20 @@ pub fn paper(kind: ModelKind) -> Preset {
 }
 
 /// The bundled presets' names, as error messages list them.
-pub fn bundled_names() -> Vec<&'static str> {
+#[cfg(feature = "app")]
+pub(crate) fn bundled_names() -> Vec<&'static str> {
     BUNDLED.iter().map(|(name, _)| *name).collect()
 }
 
 /// Whether `name` is a bundled preset's. Bundled names win everywhere: `--preset NAME` and the
 /// TUI's picker load the bundled preset, a user file of that name is listed with a warning
 /// ([`Listed::shadowed`]) and `check` warns about it; saving under such a name is refused.
-pub fn is_bundled(name: &str) -> bool {
+pub(crate) fn is_bundled(name: &str) -> bool {
     BUNDLED.iter().any(|(bundled, _)| *bundled == name)
 }
 
 /// Resolves `--preset`: a path when it contains a path separator or ends in `.toml`, else a bundled
-/// name, else a user preset of that name (bundled names win: see [`is_bundled`]).
+/// name, else a user preset of that name (bundled names win: see `is_bundled`).
 ///
 /// # Errors
 /// [`PresetError::NotFound`] for an unknown name, [`PresetError::Io`] for an unreadable file, and
@@ -256,7 +261,7 @@ pub struct Listed {
     /// The preset, or the first problem of an invalid file; for a shadowed file, the warning
     /// ([`PresetError::Shadowed`]), so that it cannot be loaded by picking it either.
     pub preset: Result<Preset, String>,
-    /// A user file named like a bundled preset, which wins ([`is_bundled`]): listed with a
+    /// A user file named like a bundled preset, which wins (`is_bundled`): listed with a
     /// warning rather than as invalid.
     pub shadowed: bool,
 }

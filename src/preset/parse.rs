@@ -35,7 +35,7 @@ pub fn apply_assignment(inputs: &mut Inputs, assignment: &str) -> Result<(), Pre
 }
 
 /// The preset key of the twin beams' [`BeamTheory`].
-pub const THEORY_KEY: &str = "beam_theory";
+pub(crate) const THEORY_KEY: &str = "beam_theory";
 
 /// 1-based line of a byte offset.
 fn line_at(text: &str, offset: usize) -> usize {

@@ -38,12 +38,12 @@ pub enum SaveError {
 /// Largest preset file read: 64 KiB. A preset is a dozen lines (under 1 KiB); the cap leaves room
 /// for long comments and refuses a wrong file (a log, a device such as `/dev/zero`) at once instead of
 /// reading it into memory.
-pub const MAX_PRESET_SIZE: Size = Size(64 * 1024);
+pub(crate) const MAX_PRESET_SIZE: Size = Size(64 * 1024);
 
 /// Reads and parses a preset file; the name is the file stem.
 ///
 /// # Errors
-/// [`PresetError::Io`] when the file cannot be read or is larger than [`MAX_PRESET_SIZE`], else
+/// [`PresetError::Io`] when the file cannot be read or is larger than 64 KiB (`MAX_PRESET_SIZE`), else
 /// every problem of its text (see [`Preset::parse`]).
 pub fn load(path: &Path) -> Result<Preset, Vec<Located>> {
     let text = read_capped(path, MAX_PRESET_SIZE, "a preset", Kinds::RegularOnly).map_err(|e| {
