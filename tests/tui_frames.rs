@@ -907,7 +907,7 @@ fn every_chart_at_80x24_in_ascii_shows_each_series_by_its_own_marker() {
             let text = screen(&app, 80, 24);
             insta::assert_snapshot!(format!("ascii_80x24_{name}_{position}"), text);
             let plot = app.plot().clone();
-            if plot.table.is_none() {
+            if app.table().is_none() {
                 assert!(text.contains(&plot.title), "title cut: {}", plot.title);
                 let body = chart_body(&text).concat();
                 for series in &plot.series {

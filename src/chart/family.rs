@@ -16,7 +16,6 @@
 use thiserror::Error;
 
 use super::pins::{Borrowed, add_borrowed, main_series};
-use super::view::View;
 use super::{Plot, SeriesRole, YMode, build, linear_axis, log_axis};
 use crate::chart::view::AnyChart;
 use crate::kernel::params::Compact;
@@ -137,8 +136,7 @@ pub fn build_family(
             param,
         });
     }
-    let view = View::Chart(chart);
-    let linear = |model: &Model, span: Option<f64>| build(model, view, None, None, None, span);
+    let linear = |model: &Model, span: Option<f64>| build(model, chart, None, None, None, span);
     // The widest force axis any member needs, then every member over it.
     let span = force_axis(chart)
         .then(|| {
@@ -174,7 +172,6 @@ pub fn build_family(
         x: first.x.clone(),
         y: first.y.clone(),
         series: Vec::new(),
-        table: first.table.clone(),
     };
     // The union of the members' axes (their x ranges differ where the chart's range follows the
     // varied parameter: X_r vs mu over mu, u(L) vs K_T over K_T).

@@ -13,7 +13,7 @@ mod ymode;
 
 pub use ymode::YMode;
 
-use crate::chart::view::{AnyChart, BeamChart, PlateChart, Table, View};
+use crate::chart::view::{AnyChart, BeamChart, PlateChart};
 use crate::fit::Measurement;
 use crate::kernel::format::{number, number_with};
 use crate::numeric::{MeshDensity, NumericError};
@@ -21,7 +21,7 @@ use crate::problems::inputs::Model;
 use crate::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
 use crate::problems::twin_beams::TwinBeamsFe;
 use crate::problems::{BeamParam, ModelKind, PlateParam};
-use crate::study::curves::{self, Answer, CandidateSource, Samples, Series, Spacing};
+use crate::study::curves::{self, Samples, Series, Spacing};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// Points per analytic curve: two per column of a 100-column chart, enough for Braille resolution.
@@ -221,8 +221,6 @@ pub struct Plot {
     pub y: Axis,
     /// Curves, points and the cursor.
     pub series: Vec<PlotSeries>,
-    /// Text lines shown instead of a chart (the K_T comparison table).
-    pub table: Option<Vec<String>>,
     /// What the title leaves out, under it in a figure: the parameters a family or a comparison
     /// holds fixed (`L = 200 mm, b = 20 mm, ...`). The TUI shows them in its parameter pane.
     pub caption: Option<String>,
@@ -343,148 +341,12 @@ pub(crate) fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
 /// Loop points per branch: one per column of a 100-column chart.
 const LOOP_POINTS: u64 = SAMPLES / 2 + 1;
 
-/// Contact elements assumed by the K_T table: L/100, a typical benchmark mesh (the command line's
-/// `microslip kt --element-size` sets any other).
-const TABLE_ELEMENTS_PER_LENGTH: f64 = 100.0;
-
-/// A table cell of at most `width` characters: 3 significant digits, fewer for the long exponent
-/// forms of extreme values (`6.67e-17` becomes `6.7e-17`).
-fn cell(value: f64, width: usize) -> String {
-    (1..=3)
-        .rev()
-        .map(|digits| number_with(value, digits))
-        .find(|text| text.len() <= width)
-        .unwrap_or_else(|| number_with(value, 1))
-}
-
-/// The tolerance the K_T table answers for: 1 % of Coulomb (`microslip kt --tolerance` takes any).
-const TABLE_TOLERANCE: f64 = 0.01;
-
-/// The K_T table's answer to "how stiff for Coulomb within 1 %": the beams at F and over 0..F, the
-/// plate at its pressure.
-fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
-    use crate::study::tolerance::{
-        Threshold, beam_stiffness_for_tolerance, plate_stiffness_for_tolerance,
-    };
-    let shown = |answer: Result<_, _>| match answer
-        .map(|a: crate::study::tolerance::ToleranceAnswer| a.threshold)
-    {
-        Ok(Threshold::Stiffness(k) | Threshold::Everywhere(k)) => format!(">= {}", cell(k, 7)),
-        Ok(Threshold::Nowhere { stiffness, .. }) => format!("> {}", cell(stiffness, 7)),
-        Err(_) => "-".to_string(),
-    };
-    let within = format!(
-        "within {} % of Coulomb: K_T",
-        number(100.0 * TABLE_TOLERANCE)
-    );
-    let heading = format!("W{}", &within[1..]);
-    match model {
-        Model::Beam { beams, force } => {
-            let f = force.newtons();
-            if f <= 0.0 {
-                return vec![format!("{heading}: any, at F = 0")];
-            }
-            let at = beam_stiffness_for_tolerance(beams, [f, f], TABLE_TOLERANCE, element);
-            let upto = beam_stiffness_for_tolerance(beams, [0.0, f], TABLE_TOLERANCE, element);
-            vec![
-                format!("{heading} {} at F,", shown(at)),
-                format!("  {} at all F up to F", shown(upto)),
-            ]
-        }
-        Model::Plate(plate) => vec![format!(
-            "u(L) {within} {}",
-            shown(plate_stiffness_for_tolerance(
-                plate,
-                TABLE_TOLERANCE,
-                element
-            ))
-        )],
-    }
-}
-
-/// The K_T comparison as a narrow table (fits the 44-column chart pane of an 80x24 screen).
-fn stiffness_table(model: &Model) -> Plot {
-    use crate::kernel::code_defaults::{CODE_DEFAULTS, Confirmation, DefaultRule};
-    let element = model.interface().length / TABLE_ELEMENTS_PER_LENGTH;
-    let comparison = curves::compare_stiffnesses(model, element, None);
-    let short = |source: &CandidateSource| match source {
-        CandidateSource::Code(code) => code.short,
-        other => other.name(),
-    };
-    let mut lines = vec![match model {
-        Model::Beam { .. } => format!(
-            "{:<10} {:>7} {:>7} {:>7} {:>8}",
-            "source", "K_T", "F_1 N", "X mm", "w(L) mm"
-        ),
-        Model::Plate(_) => format!(
-            "{:<10} {:>7} {:>9} {:>8}",
-            "source", "K_T", "u(L) mm", "X_r mm"
-        ),
-    }];
-    for row in &comparison.rows {
-        let cells = match (row.candidate.kt, row.answer) {
-            (
-                Some(k),
-                Some(Answer::Beam {
-                    first_macroslip_force,
-                    micro_end,
-                    tip_deflection,
-                    ..
-                }),
-            ) => format!(
-                "{:>7} {:>7} {:>7} {:>8}",
-                cell(k, 7),
-                cell(first_macroslip_force, 7),
-                cell(micro_end, 7),
-                cell(tip_deflection, 8)
-            ),
-            (
-                Some(k),
-                Some(Answer::Plate {
-                    end_displacement,
-                    micro_end,
-                    ..
-                }),
-            ) => format!(
-                "{:>7} {:>9} {:>8}",
-                cell(k, 7),
-                cell(end_displacement, 9),
-                cell(micro_end, 8)
-            ),
-            (Some(k), None) => format!("{:>7} out of range", cell(k, 7)),
-            (None, _) => format!("{:>7}", "none"),
-        };
-        lines.push(format!("{:<10} {cells}", short(&row.candidate.source)));
-    }
-    lines.push(String::new());
-    lines.extend(tolerance_lines(model, element));
-    lines.push(format!(
-        "K_T MPa/mm; FE elements {} mm (L/100)",
-        number(element)
-    ));
-    for code in CODE_DEFAULTS {
-        let how = match (code.rule, code.confirmation) {
-            (DefaultRule::UserSupplied, _) => "no default: user input",
-            (_, Confirmation::Confirmed) => "default confirmed",
-            (_, Confirmation::Indirect) => "seen in solver output only",
-            (_, Confirmation::NotConfirmed) => "default NOT confirmed",
-        };
-        lines.push(format!("{}: {how}", code.short));
-    }
-    lines.push("Other sizes, K_N, tolerances: microslip kt".into());
-    Plot {
-        title: "K_T that FE codes assume by default".into(),
-        table: Some(lines),
-        ..Plot::default()
-    }
-}
-
-/// Builds `view` of `model` (a view of the model's problem), with finite-element points, measurements and an
-/// external code's points if given (measurements show on the twin beams' w(L) vs F chart, external
-/// points on the chart of their quantity).
+/// Builds `chart` of `model` (a chart of the model's problem), with finite-element points,
+/// measurements and an external code's points if given (measurements show on the twin beams' w(L)
+/// vs F chart, external points on the chart of their quantity).
 pub fn build(
     model: &Model,
-    view: View,
+    chart: AnyChart,
     numeric: Option<&NumericPoints>,
     measured: Option<&[Measurement]>,
     external: Option<&ExternalPoints>,
@@ -493,10 +355,9 @@ pub fn build(
     let external = external.filter(|e| e.model == model.kind());
     let mut overlays: Vec<(SeriesRole, &str, Series)> = Vec::new();
     let plot = match *model {
-        Model::Beam { beams, force } => match view {
-            View::Table(Table::StiffnessComparison) => return stiffness_table(model),
-            View::Chart(AnyChart::Plate(_)) => None,
-            View::Chart(AnyChart::Beam(chart)) => {
+        Model::Beam { beams, force } => match chart {
+            AnyChart::Plate(_) => None,
+            AnyChart::Beam(chart) => {
                 if chart == BeamChart::Deflection {
                     if let Some(points) = measured {
                         let series = points.iter().map(|m| (m.force, m.deflection)).collect();
@@ -513,10 +374,9 @@ pub fn build(
                 beam_plot(&beams, force, chart, f_data, force_span)
             }
         },
-        Model::Plate(plate) => match view {
-            View::Table(Table::StiffnessComparison) => return stiffness_table(model),
-            View::Chart(AnyChart::Beam(_)) => None,
-            View::Chart(AnyChart::Plate(chart)) => {
+        Model::Plate(plate) => match chart {
+            AnyChart::Beam(_) => None,
+            AnyChart::Plate(chart) => {
                 if let (PlateChart::Displacement, Some(e)) = (chart, external) {
                     // The chart's x axis is log10 K_T.
                     let series = e.points.iter().map(|&(k, u)| (k.log10(), u)).collect();
@@ -601,7 +461,6 @@ fn beam_plot(
             let y = linear_axis("w(L) (mm)", 0.0, top);
             series.push(cursor(f, y.bounds));
             Some(Plot {
-                table: None,
                 caption: None,
                 title: format!("w(L) vs F, K_T = {} MPa/mm", number(kt)),
                 x: linear_axis("F (N)", 0.0, f_max),
@@ -625,7 +484,6 @@ fn beam_plot(
             ));
             series.push(cursor(f, [0.0, p.length]));
             Some(Plot {
-                table: None,
                 caption: None,
                 title: format!(
                     "X vs F, K_T = {} MPa/mm, F_1 = {} N",
@@ -655,7 +513,6 @@ fn beam_plot(
                     .max(f64::MIN_POSITIVE);
             let span = f.max(1e-9);
             Some(Plot {
-                table: None,
                 caption: None,
                 // At most 41 characters, the title row of an 80x24 screen's chart pane: D of
                 // both beams, C(oulomb) and R(egularized) as in the zone strip.
@@ -680,7 +537,6 @@ fn beam_plot(
             let top = 1.05 * max_y([&coulomb, &regularized]).max(f64::MIN_POSITIVE);
             let zeta = curves::cycle_point(beams, force);
             Some(Plot {
-                table: None,
                 caption: None,
                 // At most 41 characters, the title row of an 80x24 screen's chart pane.
                 title: format!(
@@ -706,7 +562,6 @@ fn beam_plot(
                 (p.length, beams.coulomb_stress()),
             ];
             Some(Plot {
-                table: None,
                 caption: None,
                 title: format!("tau(x) at F = {} N, K_T = {} MPa/mm", number(f), number(kt)),
                 x: linear_axis("x (mm)", 0.0, p.length),
@@ -747,7 +602,6 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
             let y = linear_axis("u(L) (mm)", 0.0, top);
             let cursor = cursor(kt.log10(), y.bounds);
             Some(Plot {
-                table: None,
                 caption: None,
                 title: "u(L) vs K_T".into(),
                 x: log_axis("K_T (MPa/mm, log)", from.log10(), to.log10()),
@@ -794,7 +648,6 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
             let y = linear_axis("X_r (mm)", bottom, p.half_length);
             series.push(cursor(mu, y.bounds));
             Some(Plot {
-                table: None,
                 caption: None,
                 title: format!("X_r vs mu, K_T = {} MPa/mm", number(kt)),
                 x: linear_axis("mu (-)", lo, hi),
@@ -810,7 +663,6 @@ fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
             });
             let pad = 0.05 * (high - low).max(0.01);
             Some(Plot {
-                table: None,
                 caption: None,
                 title: "P_r(x)/P: flat-plate model P7-P9 (not 2-D)".to_string(),
                 x: linear_axis("x (mm)", 0.0, p.half_length),
@@ -840,19 +692,21 @@ pub fn figure(
     finite_elements: bool,
     y: YMode,
 ) -> Result<Plot, NumericError> {
-    let view = View::Chart(chart);
     let numeric = if finite_elements {
-        numeric_points(model, view)?
+        numeric_points(model, chart)?
     } else {
         None
     };
-    Ok(y.apply(build(model, view, numeric.as_ref(), None, None, None)))
+    Ok(y.apply(build(model, chart, numeric.as_ref(), None, None, None)))
 }
 
 /// Finite-element points for chart `chart`, where the chart has a finite-element counterpart.
-pub fn numeric_points(model: &Model, view: View) -> Result<Option<NumericPoints>, NumericError> {
+pub fn numeric_points(
+    model: &Model,
+    chart: AnyChart,
+) -> Result<Option<NumericPoints>, NumericError> {
     let density = MeshDensity::with_elements(OVERLAY_ELEMENTS);
-    match (*model, view.chart()) {
+    match (*model, Some(chart)) {
         (
             Model::Beam { beams, force },
             Some(AnyChart::Beam(chart @ (BeamChart::Deflection | BeamChart::SlipBoundary))),
@@ -978,13 +832,13 @@ pub fn numeric_points(model: &Model, view: View) -> Result<Option<NumericPoints>
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::problems::inputs::Inputs;
 
-    /// Every view of `kind`, as the `c` key reaches them.
-    pub(super) fn every_view(kind: ModelKind) -> Vec<View> {
-        View::all(kind).collect()
+    /// Every chart of `kind`, in the order the `c` key reaches them.
+    pub(crate) fn every_chart(kind: ModelKind) -> Vec<AnyChart> {
+        AnyChart::all().filter(|c| c.kind() == kind).collect()
     }
 
     fn model(kind: ModelKind) -> Model {
@@ -994,18 +848,10 @@ mod tests {
     #[test]
     fn every_chart_has_titles_units_bounds_and_finite_points() {
         for kind in [ModelKind::Beam, ModelKind::Plate] {
-            for views in every_view(kind) {
-                let chart = views.title();
-                let plot = build(&model(kind), views, None, None, None, None);
+            for shown in every_chart(kind) {
+                let chart = shown.title();
+                let plot = build(&model(kind), shown, None, None, None, None);
                 assert!(!plot.title.is_empty());
-                if let Some(table) = &plot.table {
-                    // The K_T table: every line fits the 44-column pane of an 80x24 screen, no NaN.
-                    assert!(
-                        table.iter().all(|l| l.len() <= 43 && !l.contains("NaN")),
-                        "{table:#?}"
-                    );
-                    continue;
-                }
                 assert!(
                     plot.x.title.contains('(') && plot.y.title.contains('('),
                     "{kind} {chart}: units"
@@ -1025,16 +871,6 @@ mod tests {
 
     /// Axes finite and strictly increasing, every point finite and on the chart.
     fn check_plot(plot: &Plot, what: &str) {
-        if let Some(table) = &plot.table {
-            for line in table {
-                assert!(line.len() <= 43, "{what}: {line}");
-                assert!(
-                    !line.contains("n/a") && !line.contains("NaN") && !line.contains("inf"),
-                    "{what}: {line}"
-                );
-            }
-            return;
-        }
         for axis in [&plot.x, &plot.y] {
             let [lo, hi] = axis.bounds;
             assert!(
@@ -1062,12 +898,12 @@ mod tests {
         }
     }
 
-    #[test]
-    fn every_chart_at_every_corner_of_the_domain_has_valid_axes() {
+    /// Every corner of each model's domain (the beam force at 0, at the largest accepted force
+    /// or at F_thre, in turn), with a name for messages. nu (half-open domain, and only in the
+    /// beams' shear deflection) keeps its value there.
+    pub(crate) fn corner_models() -> Vec<(String, Model)> {
         use crate::problems::BeamParam;
-        // Every corner of each model's domain (the beam force at 0, at the largest accepted force
-        // or at F_thre, in turn), every view.
-        // nu (half-open domain, and only in the shear deflection) keeps its value.
+        let mut models = Vec::new();
         let beam_params: Vec<BeamParam> = BeamParam::ALL
             .into_iter()
             .filter(|p| !matches!(p, BeamParam::Force | BeamParam::Poisson))
@@ -1094,11 +930,10 @@ mod tests {
             inputs
                 .set(crate::Param::Beam(BeamParam::Force), force)
                 .unwrap();
-            let model = inputs.validate().unwrap();
-            for views in every_view(ModelKind::Beam) {
-                let plot = build(&model, views, None, None, None, None);
-                check_plot(&plot, &format!("beam corner {mask} F={force} {views:?}"));
-            }
+            models.push((
+                format!("beam corner {mask} F={force}"),
+                inputs.validate().unwrap(),
+            ));
         }
         let plate_params = crate::PlateParam::ALL;
         for mask in 0..1_u32 << 7 {
@@ -1112,10 +947,17 @@ mod tests {
                 };
                 inputs.set(crate::Param::Plate(*param), value).unwrap();
             }
-            let model = inputs.validate().unwrap();
-            for views in every_view(ModelKind::Plate) {
-                let plot = build(&model, views, None, None, None, None);
-                check_plot(&plot, &format!("plate corner {mask} {views:?}"));
+            models.push((format!("plate corner {mask}"), inputs.validate().unwrap()));
+        }
+        models
+    }
+
+    #[test]
+    fn every_chart_at_every_corner_of_the_domain_has_valid_axes() {
+        for (what, model) in corner_models() {
+            for chart in every_chart(model.kind()) {
+                let plot = build(&model, chart, None, None, None, None);
+                check_plot(&plot, &format!("{what} {chart:?}"));
             }
         }
     }
@@ -1135,7 +977,7 @@ mod tests {
     #[test]
     fn finite_element_points_sit_on_the_analytic_curve() {
         let m = model(ModelKind::Beam);
-        let numeric = numeric_points(&m, View::first(ModelKind::Beam))
+        let numeric = numeric_points(&m, AnyChart::Beam(BeamChart::Deflection))
             .unwrap()
             .unwrap();
         let Model::Beam { beams, .. } = m else {
@@ -1150,7 +992,7 @@ mod tests {
         assert!(
             numeric_points(
                 &model(ModelKind::Plate),
-                View::Chart(AnyChart::Plate(PlateChart::ContactPressure))
+                AnyChart::Plate(PlateChart::ContactPressure)
             )
             .unwrap()
             .is_none()

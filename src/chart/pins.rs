@@ -7,8 +7,6 @@
 //! A pin is labelled by what differs from the current parameters (`mu 0.3->0.2`: 0.3 pinned,
 //! 0.2 now), so the legend says what the comparison is about.
 
-#[cfg(feature = "app")]
-use super::view::View;
 use super::{Plot, PlotSeries, SeriesRole, linear_axis, log_axis};
 #[cfg(feature = "app")]
 use super::{YMode, build};
@@ -122,9 +120,6 @@ pub(super) struct Borrowed<'a> {
 /// `plot` with `curves` added: points beyond the x range left out, the y range grown to show
 /// them all.
 pub(super) fn add_borrowed(mut plot: Plot, curves: &[Borrowed]) -> Plot {
-    if plot.table.is_some() {
-        return plot;
-    }
     let [x0, x1] = plot.x.bounds;
     let [mut lo, mut hi] = plot.y.bounds;
     for curve in curves {
@@ -194,7 +189,7 @@ pub(crate) fn with_pinned_models(
     let span = Some(base.x.bounds[1]);
     let plots: Vec<Plot> = pinned
         .iter()
-        .map(|m| mode.apply(build(m, View::Chart(chart), None, None, None, span)))
+        .map(|m| mode.apply(build(m, chart, None, None, None, span)))
         .collect();
     let now = current.inputs();
     let entries: Vec<(u8, String, &Plot)> = pinned
@@ -209,19 +204,17 @@ pub(crate) fn with_pinned_models(
 #[cfg(all(test, feature = "app"))]
 mod tests {
     use super::*;
-    use crate::chart::view::View;
     use crate::problems::{BeamParam, ModelKind, Param, PlateParam};
 
-    use crate::chart::tests::every_view;
+    use crate::chart::tests::every_chart;
 
     #[test]
-    fn every_chart_has_a_curve_to_pin_and_tables_have_none() {
+    fn every_chart_has_a_curve_to_pin() {
         for kind in ModelKind::ALL {
             let model = Inputs::paper(kind).validate().unwrap();
-            for views in every_view(kind) {
-                let plot = build(&model, views, None, None, None, None);
-                let is_table = matches!(views, View::Table(_));
-                assert_eq!(main_series(&plot).is_none(), is_table, "{}", plot.title);
+            for chart in every_chart(kind) {
+                let plot = build(&model, chart, None, None, None, None);
+                assert!(main_series(&plot).is_some(), "{}", plot.title);
             }
         }
     }
@@ -248,8 +241,7 @@ mod tests {
         ];
         for (kind, chart, param, value) in cases {
             let current = Inputs::paper(kind).validate().unwrap();
-            let base =
-                YMode::Log.apply(build(&current, View::Chart(chart), None, None, None, None));
+            let base = YMode::Log.apply(build(&current, chart, None, None, None, None));
             assert!(base.y.log, "{}", base.title);
             let mut pinned = Inputs::paper(kind);
             pinned.set(param, value).unwrap();
@@ -293,7 +285,7 @@ mod tests {
         let model = inputs.validate().unwrap();
         build(
             &model,
-            View::first(ModelKind::Beam),
+            AnyChart::Beam(crate::chart::view::BeamChart::Deflection),
             None,
             None,
             None,

@@ -77,7 +77,6 @@ pub fn build(model: &Model, param: Param) -> Plot {
         x,
         y,
         series,
-        table: None,
         caption: None,
     }
 }

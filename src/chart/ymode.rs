@@ -57,7 +57,7 @@ impl YMode {
     /// Whether `plot` can be shown in this mode: log needs positive values and no negative ones
     /// (the loop has both signs), relative a Coulomb curve and another curve on its samples.
     pub fn applies_to(self, plot: &Plot) -> bool {
-        if plot.table.is_some() || plot.y.log {
+        if plot.y.log {
             return self == YMode::Linear;
         }
         let data = || {

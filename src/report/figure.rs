@@ -23,9 +23,6 @@ pub(crate) const SIZE: (u32, u32) = (800, 500);
 /// Why a figure could not be drawn.
 #[derive(Debug, Error)]
 pub enum FigureError {
-    /// The view is a table (the K_T comparison), not a chart.
-    #[error("'{0}' is a table, not a chart: `microslip kt` prints it")]
-    Table(String),
     /// The drawing backend failed (a programming error: the SVG goes to a string).
     #[error("drawing the figure failed: {0}")]
     Drawing(String),
@@ -127,11 +124,8 @@ fn look(role: SeriesRole) -> Look {
 /// The plot as an SVG document of 800 x 500 px (`SIZE`).
 ///
 /// # Errors
-/// [`FigureError::Table`] for a table view; [`FigureError::Drawing`] if plotters fails.
+/// [`FigureError::Drawing`] if plotters fails.
 pub fn svg(plot: &Plot) -> Result<String, FigureError> {
-    if plot.table.is_some() {
-        return Err(FigureError::Table(plot.title.clone()));
-    }
     let mut out = String::new();
     let decade = |[lo, hi]: [f64; 2]| (10f64.powf(lo)..10f64.powf(hi)).log_scale();
     let linear = |[lo, hi]: [f64; 2]| lo..hi;
@@ -673,7 +667,6 @@ pub(crate) fn index_html(intro: &str, entries: &[IndexEntry]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::problems::ModelKind;
     use crate::problems::inputs::Inputs;
 
     fn paper_figure(chart: AnyChart, fe: bool) -> Plot {
@@ -706,14 +699,6 @@ mod tests {
                 chart.key()
             );
         }
-    }
-
-    #[test]
-    fn a_table_is_not_a_figure() {
-        let model = Inputs::paper(ModelKind::Beam).validate().unwrap();
-        let view = crate::chart::view::View::first(ModelKind::Beam).turn(ModelKind::Beam, false);
-        let table = crate::chart::build(&model, view, None, None, None, None);
-        assert!(matches!(svg(&table), Err(FigureError::Table(_))));
     }
 
     #[test]

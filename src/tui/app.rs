@@ -9,6 +9,7 @@ use std::path::PathBuf;
 use super::action::Action;
 use super::effects::{Effect, ExportError, Outcome};
 use super::keymap::Context;
+use super::kt_table;
 use super::text_input::TextInput;
 use super::theme::Theme;
 use super::views::Views;
@@ -210,6 +211,8 @@ pub struct App {
     user_dir: Option<PathBuf>,
     quit: bool,
     plot: Plot,
+    /// The K_T table (title and lines) when the view is the table; `plot` is empty then.
+    table: Option<(&'static str, Vec<String>)>,
     numeric: Option<NumericPoints>,
     measurements: Option<Measurements>,
     /// Points of an external FE code loaded with `d` (a CalculiX .dat, or a plate CSV), and the
@@ -272,6 +275,7 @@ impl App {
             user_dir: options.user_dir,
             quit: false,
             plot: Plot::default(),
+            table: None,
             numeric: None,
             measurements: options.data,
             external: None,
@@ -348,7 +352,7 @@ impl App {
     fn export_chart(&mut self) {
         use crate::report::figure;
         use crate::report::table::{TableFormat, write_table};
-        if self.plot.table.is_some() {
+        if self.table.is_some() {
             return self.error("x exports charts; this is a table (microslip kt prints it)");
         }
         let svg = match figure::svg(&self.plot) {
@@ -498,6 +502,12 @@ impl App {
         &self.plot
     }
 
+    /// The table shown in the chart pane in place of a chart (title and lines), if the view is
+    /// one.
+    pub fn table(&self) -> Option<&(&'static str, Vec<String>)> {
+        self.table.as_ref()
+    }
+
     /// Says why Ctrl-Z did nothing: the kernel discards a stop in a process group that no
     /// job-control shell leads (`ssh host microslip`, `sh -c`), since nothing could resume it.
     pub fn suspend_ignored(&mut self) {
@@ -591,20 +601,26 @@ impl App {
         self.follow_threshold();
         self.ask_continuum();
         let Some(model) = self.model() else { return };
-        if self.show_numeric {
-            match chart::numeric_points(&model, self.views.of(self.kind)) {
+        match (self.show_numeric, self.views.of(self.kind).chart()) {
+            (true, Some(shown)) => match chart::numeric_points(&model, shown) {
                 Ok(points) => self.numeric = points,
                 Err(e) => {
                     self.numeric = None;
                     self.error(format!("finite elements failed: {e}"));
                 }
-            }
-        } else {
-            self.numeric = None;
+            },
+            _ => self.numeric = None,
         }
         let y_mode = self.y_mode();
-        let plot = y_mode.apply(self.linear_plot(&model));
-        if plot.table.is_some() || self.state().pins.is_empty() {
+        let Some(plot) = self.linear_plot(&model) else {
+            // The view is the K_T table: text in the chart pane.
+            self.table = Some(kt_table::stiffness_table(&model));
+            self.plot = Plot::default();
+            return;
+        };
+        self.table = None;
+        let plot = y_mode.apply(plot);
+        if self.state().pins.is_empty() {
             self.plot = plot;
             return;
         }
@@ -627,7 +643,8 @@ impl App {
                 .inputs
                 .validate()
                 .ok()
-                .map(|m| (key, y_mode.apply(self.chart_of(&m, None, None, None, span))));
+                .and_then(|m| self.chart_of(&m, None, None, None, span))
+                .map(|plot| (key, y_mode.apply(plot)));
             self.state_mut().pins[i].chart = built;
         }
         let current = self.inputs();
@@ -643,8 +660,8 @@ impl App {
         self.plot = pins::add_pins(plot, &pinned);
     }
 
-    /// The chart shown, with its y axis linear.
-    fn linear_plot(&self, model: &Model) -> Plot {
+    /// The chart shown, with its y axis linear; None where the view is a table.
+    fn linear_plot(&self, model: &Model) -> Option<Plot> {
         let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
         let external = self.external.as_ref().map(|(points, _)| points);
         self.chart_of(
@@ -656,7 +673,8 @@ impl App {
         )
     }
 
-    /// The chart shown (the view's, or the one against the parameter of `v`) for `model`.
+    /// The chart shown (the view's, or the one against the parameter of `v`) for `model`; None
+    /// where the view is a table (the v chart takes its place too).
     fn chart_of(
         &self,
         model: &Model,
@@ -664,18 +682,14 @@ impl App {
         measured: Option<&[Measurement]>,
         external: Option<&chart::ExternalPoints>,
         force_span: Option<f64>,
-    ) -> Plot {
+    ) -> Option<Plot> {
         if let Some(param) = self.state().varied {
-            return chart::vary::build(model, param);
+            return Some(chart::vary::build(model, param));
         }
-        chart::build(
-            model,
-            self.views.of(model.kind()),
-            numeric,
-            measured,
-            external,
-            force_span,
-        )
+        let shown = self.views.of(model.kind()).chart()?;
+        Some(chart::build(
+            model, shown, numeric, measured, external, force_span,
+        ))
     }
 
     /// `g`: keeps the current parameters as a pin (the oldest goes beyond [`pins::MAX_PINS`]).
@@ -754,8 +768,11 @@ impl App {
         let (Some(key), Some(model)) = (self.y_key(), self.model()) else {
             return self.error("y: a table has no y axis");
         };
+        let Some(plot) = self.linear_plot(&model) else {
+            return self.error("y: a table has no y axis");
+        };
         let current = self.y_mode();
-        let next = current.next_for(&self.linear_plot(&model));
+        let next = current.next_for(&plot);
         if next == current {
             return self.info(format!("y axis: only {} for this chart", current.label()));
         }
@@ -1983,7 +2000,7 @@ mod tests {
             assert_eq!(pinned(&app).len(), 2, "{}", app.plot().title);
         }
         app.update(Action::NextChart);
-        assert!(app.plot().table.is_some());
+        assert!(app.table().is_some());
         app.update(Action::Pin);
         assert!(app.message().unwrap().is_error);
         app.update(Action::NextChart);

@@ -22,6 +22,7 @@ pub mod app;
 pub mod command;
 pub mod effects;
 pub mod keymap;
+pub mod kt_table;
 mod signals;
 pub mod summary;
 pub mod terminal;

@@ -36,15 +36,15 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
         None => format!("{name} ({position}/{count}, c cycles)"),
     };
     let mut block = pane(app, &title);
-    if plot.table.is_none() {
+    if app.table().is_none() {
         // The x axis's title on the pane's lower border, not on the chart's bottom row, where it
         // would hide a curve lying along y = 0 (u(L) under Coulomb on the plate's K_T axis).
         block = block.title_bottom(Line::from(format!(" {} ", plot.x.title)).right_aligned());
     }
     let inner = block.inner(area);
     frame.render_widget(block, area);
-    if let Some(table) = &plot.table {
-        let mut lines = vec![Line::from(format!(" {}", plot.title)), Line::from("")];
+    if let Some((table_title, table)) = app.table() {
+        let mut lines = vec![Line::from(format!(" {table_title}")), Line::from("")];
         lines.extend(table.iter().map(|l| Line::from(format!(" {l}"))));
         frame.render_widget(Paragraph::new(lines), inner);
         return;
