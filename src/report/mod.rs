@@ -66,31 +66,6 @@ pub(crate) fn sanitize(text: &str) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
-/// The strip theory's validity in a few words (TUI regime pane, one line of 30 characters), for
-/// the thickness-mean u(L): "mean holds (~1.6 %)", "mean approx. (~5.2 %)", "mean OUTSIDE",
-/// "not calibrated". The number is the expected difference from a plane-strain continuum, (V1).
-#[cfg(feature = "app")]
-pub(crate) fn strip_validity_short(v: &crate::problems::plate::validity::PlateValidity) -> String {
-    use crate::kernel::validity::Validity;
-    let e = v.expected_error();
-    match v.validity {
-        Validity::Holds => format!("mean holds (~{} %)", percent_of(e)),
-        Validity::Approximate => format!("mean approx. (~{} %)", percent_of(e)),
-        Validity::Outside => format!("mean OUTSIDE (>{} %)", 100.0 * Validity::APPROXIMATE),
-        Validity::NotCalibrated => "not calibrated".to_string(),
-        Validity::MeasuredWrong => format!(
-            "mean WRONG (>{} %)",
-            v.measured_at_least
-                .map_or_else(|| "-".to_string(), |e| number_with(100.0 * e, 2))
-        ),
-    }
-}
-
-#[cfg(feature = "app")]
-fn percent_of(error: Option<f64>) -> String {
-    error.map_or_else(|| "-".to_string(), |e| number_with(100.0 * e, 2))
-}
-
 /// Tip forces of the paper report's beam table, as multiples of F_thre: stick, threshold, then slip.
 const BEAM_FORCE_FACTORS: [f64; 7] = [0.5, 1.0, 1.125, 1.25, 1.5, 2.5, 3.75];
 

@@ -1482,13 +1482,13 @@ impl App {
             (AnyLoaded::Beam(l), Model::Beam { beams, .. }) => {
                 let comparison =
                     crate::fe::compare::compare_beams(&beams, &l.points, l.interface_mesh.as_ref());
-                crate::report::compare::beam_summary(code, &comparison)
+                super::brief::beam_summary(code, &comparison)
             }
             (AnyLoaded::Plate(l), Model::Plate(plate)) => {
                 let rows =
                     crate::fe::compare::compare_plate(&plate, &l.points, l.interface_mesh.as_ref());
                 rows.first()
-                    .map(|row| crate::report::compare::plate_summary(code, row))
+                    .map(|row| super::brief::plate_summary(code, row))
                     .unwrap_or_default()
             }
             (AnyLoaded::Beam(_), Model::Plate(_)) | (AnyLoaded::Plate(_), Model::Beam { .. }) => {

@@ -19,6 +19,7 @@
 
 pub mod action;
 pub mod app;
+pub mod brief;
 pub mod command;
 pub mod effects;
 pub mod keymap;

@@ -257,7 +257,7 @@ pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLi
                 plain(
                     format!(
                         "strip theory {}",
-                        crate::report::strip_validity_short(&plate.validity())
+                        super::brief::strip_validity_short(&plate.validity())
                     ),
                     "the closed forms treat the plate as a strip (u uniform through t_p); this \
                      says how far a 2-D continuum's thickness-mean u(L) differs (V1); the contact \

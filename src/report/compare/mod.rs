@@ -127,7 +127,7 @@ impl From<&PlateCompared> for PlateCompareRow {
 
 /// A relative difference in percent: two decimals, or the exponent form beyond 1e5 % (a number of
 /// 200 digits helps nobody), "n/a" where it is undefined (a closed form of 0).
-fn percent(x: f64) -> String {
+pub(crate) fn percent(x: f64) -> String {
     let p = 100.0 * x;
     if p.abs() < 1e5 {
         format!("{p:+.2} %")
@@ -136,7 +136,7 @@ fn percent(x: f64) -> String {
     }
 }
 
-fn percent_or_na(x: Option<f64>) -> String {
+pub(crate) fn percent_or_na(x: Option<f64>) -> String {
     x.map_or_else(|| "n/a".to_string(), percent)
 }
 
@@ -146,58 +146,4 @@ plate sideways), so a relative difference is undefined; compare the values thems
 
 fn optional(x: Option<f64>) -> String {
     x.map_or_else(|| "-".to_string(), number)
-}
-
-/// The range of the defined `values` as "a to b %", or the one value; "n/a" when none is.
-/// Compact: it goes on the status line.
-#[cfg(feature = "app")]
-fn percent_range(values: impl Iterator<Item = Option<f64>>) -> String {
-    let (lo, hi) = values
-        .flatten()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
-        });
-    if lo > hi {
-        "n/a".to_string()
-    } else if lo == hi {
-        percent(lo)
-    } else {
-        format!("{:+.2} to {}", 100.0 * lo, percent(hi))
-    }
-}
-
-/// One line for the TUI's status: the beams' comparison in brief, the verdict first (the line is
-/// cut at the screen's width).
-#[cfg(feature = "app")]
-pub(crate) fn beam_summary(code: &str, comparison: &crate::fe::compare::BeamComparison) -> String {
-    let shear = percent_range(
-        comparison
-            .rows
-            .iter()
-            .map(|r| r.difference_shear_corrected()),
-    );
-    let euler = percent_range(comparison.rows.iter().map(|r| r.difference_euler()));
-    format!(
-        "{code}, {} points: {}; w(L) {shear} vs Timoshenko (E-B {euler})",
-        comparison.rows.len(),
-        verdict::beam_summary(comparison).short
-    )
-}
-
-/// One line for the TUI's status: one plate run in brief, the verdict first.
-#[cfg(feature = "app")]
-pub(crate) fn plate_summary(code: &str, row: &PlateCompared) -> String {
-    let through = row
-        .differences_through_thickness()
-        .map_or(String::new(), |[face, mid]| {
-            format!("; face {}, mid {}", percent(face), percent(mid))
-        });
-    format!(
-        "{code} at K_T = {} MPa/mm: {}; u(L) {} mm, strip theory {} mm ({}{through})",
-        number(row.fe.stiffness),
-        verdict::plate_summary(std::slice::from_ref(row)).short,
-        number(row.fe.end_displacement),
-        number(row.closed),
-        percent_or_na(row.difference())
-    )
 }
