@@ -11,7 +11,7 @@ use std::str::FromStr;
 use thiserror::Error;
 
 use crate::kernel::params::{Compact, ParamSpec, Unit};
-pub use quantity::{Quantity, QuantityName};
+pub use quantity::{Quantity, QuantityName, Solution};
 
 /// The parameters of one problem as [`Param`]s, in the order of `$ty::ALL`: a const array, so
 /// that a problem's [`Description`] is a constant.

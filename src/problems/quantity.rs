@@ -33,6 +33,20 @@ impl Quantity {
     }
 }
 
+/// One law's solution of any problem, under names that mean the same in every problem. Each
+/// problem keeps its own names beside them, as its physics says them (the beams'
+/// `tip_deflection`, the plate's `end_displacement`); these are what code written for any problem
+/// calls.
+pub trait Solution {
+    /// The response the problem is benchmarked on (mm): [`Quantity::Response`].
+    fn response(&self) -> f64;
+    /// The regime: which zones the interface has.
+    fn regime(&self) -> crate::Regime;
+    /// Where the zone this law is about ends, from the problem's origin (mm): the stick zone under
+    /// plain Coulomb, the microslip zone under the regularized law ([`Quantity::MicroEnd`]).
+    fn zone_end(&self) -> f64;
+}
+
 /// [`Quantity::Ratio`] from the two responses: `None` where the Coulomb one is not positive (no
 /// load, nothing squeezed), where a ratio means nothing.
 pub fn ratio_to_coulomb(regularized: f64, coulomb: f64) -> Option<f64> {

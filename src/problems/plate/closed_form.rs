@@ -10,7 +10,7 @@ use crate::kernel::hyperbolic::{sinh_cosh_ratio, sinh_ratio};
 use crate::kernel::params::ParamError;
 use crate::kernel::regime::Regime;
 use crate::kernel::solve::find_root_in_bracket;
-use crate::problems::PlateParam;
+use crate::problems::{PlateParam, Solution};
 
 /// A validated squeezed plate with its derived constants.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -606,6 +606,34 @@ impl ContactPressure {
     pub fn constant_pressure_holds(&self) -> bool {
         self.mean_deviation() <= PRESSURE_DEVIATION_LIMIT
             && self.peak_deviation() <= PRESSURE_PEAK_LIMIT
+    }
+}
+
+impl Solution for CoulombPlate {
+    fn response(&self) -> f64 {
+        self.end_displacement()
+    }
+
+    fn regime(&self) -> Regime {
+        CoulombPlate::regime(self)
+    }
+
+    fn zone_end(&self) -> f64 {
+        self.stick_end()
+    }
+}
+
+impl Solution for RegularizedPlate {
+    fn response(&self) -> f64 {
+        self.end_displacement()
+    }
+
+    fn regime(&self) -> Regime {
+        RegularizedPlate::regime(self)
+    }
+
+    fn zone_end(&self) -> f64 {
+        self.micro_zone_end()
     }
 }
 

@@ -13,7 +13,7 @@ pub use continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};
 pub use discretized::PlateFe;
 
 use crate::problems::quantity::ratio_to_coulomb;
-use crate::problems::{Description, Param, Quantity, QuantityName};
+use crate::problems::{Description, Param, Quantity, QuantityName, Solution};
 use closed_form::SqueezedPlate;
 use params::PlateParam;
 
@@ -53,12 +53,11 @@ pub const DESCRIPTION: Description = Description {
 /// finite.
 pub fn quantity(plate: &SqueezedPlate, quantity: Quantity) -> Option<f64> {
     let value = match quantity {
-        Quantity::Response => plate.regularized().end_displacement(),
-        Quantity::MicroEnd => plate.regularized().micro_zone_end(),
-        Quantity::Ratio => ratio_to_coulomb(
-            plate.regularized().end_displacement(),
-            plate.coulomb().end_displacement(),
-        )?,
+        Quantity::Response => plate.regularized().response(),
+        Quantity::MicroEnd => plate.regularized().zone_end(),
+        Quantity::Ratio => {
+            ratio_to_coulomb(plate.regularized().response(), plate.coulomb().response())?
+        }
         Quantity::FirstMacroslipForce | Quantity::Dissipation | Quantity::DampingRatio => {
             return None;
         }

@@ -16,7 +16,7 @@ use crate::kernel::hyperbolic::{
 use crate::kernel::params::ParamError;
 use crate::kernel::regime::Regime;
 use crate::kernel::solve::{find_root_in_bracket, find_root_newton};
-use crate::problems::BeamParam;
+use crate::problems::{BeamParam, Solution};
 
 /// Timoshenko's shear coefficient of a rectangular section, kappa = 5/6 (B13).
 pub const SHEAR_COEFFICIENT: f64 = 5.0 / 6.0;
@@ -517,6 +517,34 @@ impl RegularizedBeams {
     /// Tip deflection w(L) (mm).
     pub fn tip_deflection(&self) -> f64 {
         self.deflection(self.beams.params.length)
+    }
+}
+
+impl Solution for CoulombBeams {
+    fn response(&self) -> f64 {
+        self.tip_deflection()
+    }
+
+    fn regime(&self) -> Regime {
+        CoulombBeams::regime(self)
+    }
+
+    fn zone_end(&self) -> f64 {
+        self.stick_end()
+    }
+}
+
+impl Solution for RegularizedBeams {
+    fn response(&self) -> f64 {
+        self.tip_deflection()
+    }
+
+    fn regime(&self) -> Regime {
+        RegularizedBeams::regime(self)
+    }
+
+    fn zone_end(&self) -> f64 {
+        self.micro_zone_end()
     }
 }
 

@@ -12,7 +12,7 @@ pub mod validity;
 pub use discretized::{InterfaceSample, TwinBeamsFe};
 
 use crate::problems::quantity::ratio_to_coulomb;
-use crate::problems::{Description, Param, Quantity, QuantityName};
+use crate::problems::{Description, Param, Quantity, QuantityName, Solution};
 use closed_form::{TipForce, TwinBeams};
 use cycle::{Cycle, Law};
 use params::BeamParam;
@@ -70,11 +70,11 @@ pub const DESCRIPTION: Description = Description {
 /// defined (the ratio at zero load) or not finite.
 pub fn quantity(beams: &TwinBeams, force: TipForce, quantity: Quantity) -> Option<f64> {
     let value = match quantity {
-        Quantity::Response => beams.regularized(force).tip_deflection(),
-        Quantity::MicroEnd => beams.regularized(force).micro_zone_end(),
+        Quantity::Response => beams.regularized(force).response(),
+        Quantity::MicroEnd => beams.regularized(force).zone_end(),
         Quantity::Ratio => ratio_to_coulomb(
-            beams.regularized(force).tip_deflection(),
-            beams.coulomb(force).tip_deflection(),
+            beams.regularized(force).response(),
+            beams.coulomb(force).response(),
         )?,
         Quantity::FirstMacroslipForce => beams.first_macroslip_force(),
         Quantity::Dissipation => Cycle::new(beams, Law::Regularized, force).dissipation(),
