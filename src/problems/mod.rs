@@ -10,7 +10,7 @@ use std::str::FromStr;
 
 use thiserror::Error;
 
-use crate::kernel::params::{Compact, ParamSpec, Unit};
+use crate::kernel::params::{ParamSpec, Unit};
 pub use quantity::{Quantity, QuantityName, Solution};
 
 /// The parameters of one problem as [`Param`]s, in the order of `$ty::ALL`: a const array, so
@@ -100,16 +100,17 @@ problem_list! {
 
 impl ModelKind {
     /// How many problems there are.
-    pub const COUNT: usize = Self::ALL.len();
+    pub(crate) const COUNT: usize = Self::ALL.len();
 
     /// This problem's place in [`ModelKind::ALL`].
-    pub fn index(self) -> usize {
+    pub(crate) fn index(self) -> usize {
         self as usize
     }
 
     /// The problem after this one in [`ModelKind::ALL`], the first after the last: what `m`
     /// switches to.
-    pub fn next(self) -> ModelKind {
+    #[cfg(any(test, feature = "app"))]
+    pub(crate) fn next(self) -> ModelKind {
         Self::ALL[(self.index() + 1) % Self::COUNT]
     }
 
@@ -139,7 +140,7 @@ impl ModelKind {
     }
 
     /// Every problem's key, quoted, as error messages offer them: `"beam" or "plate"`.
-    pub fn choices() -> String {
+    pub(crate) fn choices() -> String {
         let keys: Vec<String> = Self::ALL
             .iter()
             .map(|k| format!("\"{}\"", k.name()))
@@ -152,7 +153,7 @@ impl ModelKind {
     }
 
     /// The keys, space separated, as error messages list them.
-    pub fn key_list(self) -> String {
+    pub(crate) fn key_list(self) -> String {
         self.params()
             .iter()
             .map(|p| p.name())
@@ -262,7 +263,7 @@ impl Param {
     }
 
     /// What follows a value of this parameter: ` MPa`, nothing for a dimensionless one.
-    pub fn unit_suffix(self) -> String {
+    pub(crate) fn unit_suffix(self) -> String {
         match self.unit() {
             Unit::Dimensionless => String::new(),
             unit => format!(" {unit}"),
@@ -270,7 +271,8 @@ impl Param {
     }
 
     /// A warning when an accepted `value` is outside [`Param::usual_range`], naming the range.
-    pub fn unusual(self, value: f64) -> Option<String> {
+    #[cfg(feature = "app")]
+    pub(crate) fn unusual(self, value: f64) -> Option<String> {
         let (low, high) = self.usual_range();
         let unit = self.unit_suffix();
         (!(low..=high).contains(&value)).then(|| {
@@ -278,15 +280,15 @@ impl Param {
                 "{} = {}{unit} is far outside the usual range [{}, {}]{unit}: check the value",
                 self.name(),
                 crate::kernel::format::number(value),
-                Compact(low),
-                Compact(high)
+                crate::kernel::params::Compact(low),
+                crate::kernel::params::Compact(high)
             )
         })
     }
 
     /// True for the tangential stiffness K_T of any problem (shown in MPa/um as well): the one
     /// parameter in MPa/mm.
-    pub fn is_stiffness(self) -> bool {
+    pub(crate) fn is_stiffness(self) -> bool {
         self.unit() == Unit::MegapascalPerMillimetre
     }
 }

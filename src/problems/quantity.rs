@@ -49,7 +49,7 @@ pub trait Solution {
 
 /// [`Quantity::Ratio`] from the two responses: `None` where the Coulomb one is not positive (no
 /// load, nothing squeezed), where a ratio means nothing.
-pub fn ratio_to_coulomb(regularized: f64, coulomb: f64) -> Option<f64> {
+pub(crate) fn ratio_to_coulomb(regularized: f64, coulomb: f64) -> Option<f64> {
     (coulomb > 0.0).then(|| regularized / coulomb)
 }
 
@@ -68,7 +68,7 @@ pub struct QuantityName {
 
 impl QuantityName {
     /// True when `text` is this quantity's name or one of its aliases.
-    pub fn is_named(&self, text: &str) -> bool {
+    pub(crate) fn is_named(&self, text: &str) -> bool {
         self.name == text || self.aliases.contains(&text)
     }
 }

@@ -93,7 +93,7 @@ impl RangeError {
 ///
 /// # Errors
 /// [`RangeError::Points`] outside that range.
-pub fn check_points(points: u64) -> Result<u64, RangeError> {
+pub(crate) fn check_points(points: u64) -> Result<u64, RangeError> {
     if (2..=MAX_POINTS).contains(&points) {
         Ok(points)
     } else {
@@ -197,7 +197,7 @@ impl Samples {
     ///
     /// # Errors
     /// [`RangeError::Bound`] for the first end outside the domain.
-    pub fn check_within(&self, param: Param) -> Result<(), RangeError> {
+    pub(crate) fn check_within(&self, param: Param) -> Result<(), RangeError> {
         let spec = param.spec();
         for (end, value) in [(RangeEnd::Start, self.from), (RangeEnd::End, self.to)] {
             if !spec.domain.contains(value) {
@@ -268,7 +268,7 @@ pub struct BeamPoint {
 }
 
 /// The twin beams at one force.
-pub fn beam_point(beams: &TwinBeams, force: TipForce) -> BeamPoint {
+pub(crate) fn beam_point(beams: &TwinBeams, force: TipForce) -> BeamPoint {
     let (coulomb, regularized) = (beams.coulomb(force), beams.regularized(force));
     let w_regularized = regularized.tip_deflection();
     BeamPoint {
@@ -336,7 +336,7 @@ pub struct PlatePoint {
 }
 
 /// The plate as it is.
-pub fn plate_point(plate: &SqueezedPlate) -> PlatePoint {
+pub(crate) fn plate_point(plate: &SqueezedPlate) -> PlatePoint {
     let (coulomb, regularized) = (plate.coulomb(), plate.regularized());
     PlatePoint {
         kt: plate.params().tangential_stiffness,
@@ -460,7 +460,7 @@ pub type Series = Vec<(f64, f64)>;
 ///
 /// # Errors
 /// As [`beam_force_sweep`].
-pub fn beam_deflection_vs_force(
+pub(crate) fn beam_deflection_vs_force(
     beams: &TwinBeams,
     forces: Samples,
 ) -> Result<(Series, Series), RangeError> {
@@ -473,7 +473,7 @@ pub fn beam_deflection_vs_force(
 ///
 /// # Errors
 /// As [`beam_force_sweep`].
-pub fn beam_slip_boundary_vs_force(
+pub(crate) fn beam_slip_boundary_vs_force(
     beams: &TwinBeams,
     forces: Samples,
 ) -> Result<Series, RangeError> {
@@ -483,7 +483,7 @@ pub fn beam_slip_boundary_vs_force(
 }
 
 /// Interface shear tau (MPa) along the beams at one force: (Coulomb, regularized).
-pub fn beam_shear_along(
+pub(crate) fn beam_shear_along(
     beams: &TwinBeams,
     force: TipForce,
     positions: Samples,
@@ -512,7 +512,7 @@ fn both_along(
 ///
 /// # Errors
 /// As [`plate_kt_sweep`].
-pub fn plate_end_displacement_vs_stiffness(
+pub(crate) fn plate_end_displacement_vs_stiffness(
     plate: &SqueezedPlate,
     stiffnesses: Samples,
 ) -> Result<(Series, Series), RangeError> {
@@ -525,7 +525,7 @@ pub fn plate_end_displacement_vs_stiffness(
 ///
 /// # Errors
 /// [`RangeError::Bound`] when an end of `frictions` is not an accepted friction coefficient.
-pub fn plate_slip_boundary_vs_friction(
+pub(crate) fn plate_slip_boundary_vs_friction(
     plate: &SqueezedPlate,
     frictions: Samples,
 ) -> Result<Series, RangeError> {
@@ -538,13 +538,14 @@ pub fn plate_slip_boundary_vs_friction(
 }
 
 /// Contact pressure ratio P_r / P along the half-plate.
-pub fn plate_contact_pressure_along(plate: &SqueezedPlate, positions: Samples) -> Series {
+pub(crate) fn plate_contact_pressure_along(plate: &SqueezedPlate, positions: Samples) -> Series {
     let pressure = plate.contact_pressure();
     positions.values().map(|x| (x, pressure.ratio(x))).collect()
 }
 
 /// Interface shear tau (MPa) along the half-plate: (Coulomb, regularized).
-pub fn plate_shear_along(plate: &SqueezedPlate, positions: Samples) -> (Series, Series) {
+#[cfg(feature = "app")]
+pub(crate) fn plate_shear_along(plate: &SqueezedPlate, positions: Samples) -> (Series, Series) {
     let (coulomb, regularized) = (plate.coulomb(), plate.regularized());
     both_along(
         positions,
@@ -611,7 +612,7 @@ fn split_at(length: f64, at: f64, inner: Zone, outer: Zone) -> Vec<ZoneSpan> {
 
 /// The zones of both laws at the model's state: Coulomb sticks up to its stick end and slides
 /// beyond; the regularized law slips elastically up to X (X_r) and slides beyond. From the same
-/// [`beam_point`] / [`plate_point`] as the regime pane, so strip and text cannot disagree.
+/// `beam_point` / `plate_point` as the regime pane, so strip and text cannot disagree.
 pub fn interface_zones(model: &Model) -> InterfaceZones {
     let (length, stick_end, micro_end, coulomb, regularized, names) = match model {
         Model::Beam { beams, force } => {
@@ -778,7 +779,7 @@ pub struct StiffnessComparison {
 }
 
 /// What `kt` does to `model` (at the model's force for the beams); `None` for an invalid K_T.
-pub fn answer_for_stiffness(model: &Model, kt: f64) -> Option<Answer> {
+fn answer_for_stiffness(model: &Model, kt: f64) -> Option<Answer> {
     Some(match model {
         Model::Beam { beams, force } => {
             let beams = beams.with_tangential_stiffness(kt).ok()?;
@@ -874,7 +875,7 @@ pub struct CyclePoint {
 }
 
 /// The twin beams cycled at one amplitude.
-pub fn cycle_point(beams: &TwinBeams, amplitude: TipForce) -> CyclePoint {
+pub(crate) fn cycle_point(beams: &TwinBeams, amplitude: TipForce) -> CyclePoint {
     let (c, r) = (
         Cycle::new(beams, Law::Coulomb, amplitude),
         Cycle::new(beams, Law::Regularized, amplitude),
@@ -980,7 +981,7 @@ pub fn cycle_loop(
 ///
 /// # Errors
 /// As [`cycle_sweep`].
-pub fn dissipation_vs_amplitude(
+pub(crate) fn dissipation_vs_amplitude(
     beams: &TwinBeams,
     amplitudes: Samples,
 ) -> Result<(Series, Series), RangeError> {

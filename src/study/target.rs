@@ -35,7 +35,7 @@ const ROOT_CHECK: f64 = 1e-6;
 /// between 1.6e10 and 7e11 MPa/mm, one achieving 0.9999999999999994 (below 1 is impossible).
 pub const ROUNDING: f64 = 3e-13;
 
-pub use crate::problems::Quantity;
+pub(crate) use crate::problems::Quantity;
 
 /// How the targets see a problem's quantities: the names, meanings and values its description
 /// and its folder give ([`crate::problems::Description::quantities`]).
@@ -64,7 +64,7 @@ impl Quantity {
     }
 
     /// The names targets accept for `kind`, as error messages list them.
-    pub fn names(kind: ModelKind) -> String {
+    pub(crate) fn names(kind: ModelKind) -> String {
         kind.description()
             .quantities
             .iter()
@@ -73,7 +73,8 @@ impl Quantity {
             .join(" ")
     }
 
-    /// Parses a quantity name of `kind` (case-sensitive, as [`Quantity::names`] lists them, or
+    /// Parses a quantity name of `kind` (case-sensitive, as
+    /// [`Description::quantities`](crate::problems::Description::quantities) names them, or
     /// an alias: `w`, `u`, `Xr`, `F1`).
     ///
     /// # Errors
@@ -92,7 +93,7 @@ impl Quantity {
 
     /// The quantity's value for `model`; `None` where it is not defined (a ratio at zero load, a
     /// quantity the problem does not have).
-    pub fn evaluate(self, model: &Model) -> Option<f64> {
+    pub(crate) fn evaluate(self, model: &Model) -> Option<f64> {
         model.quantity(self)
     }
 }

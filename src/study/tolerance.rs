@@ -20,7 +20,7 @@ const FORCE_SAMPLES: usize = 64;
 
 /// The accepted tolerances (fractions): from 1e-9 (round-off of the closed forms is ~1e-12) to 10
 /// (1000 %).
-pub const TOLERANCE: Domain = Domain::Positive {
+const TOLERANCE: Domain = Domain::Positive {
     min: 1e-9,
     max: 10.0,
 };
@@ -155,13 +155,13 @@ fn check_tolerance(tolerance: f64) -> Result<f64, ToleranceError> {
 }
 
 /// The twin beams' regularized w(L) over Coulomb's, minus 1, at `force` (> 0).
-pub fn beam_deviation(beams: &TwinBeams, force: TipForce) -> f64 {
+fn beam_deviation(beams: &TwinBeams, force: TipForce) -> f64 {
     let coulomb = beams.coulomb(force).tip_deflection();
     beams.regularized(force).tip_deflection() / coulomb - 1.0
 }
 
 /// The plate's regularized u(L) over Coulomb's, minus 1.
-pub fn plate_deviation(plate: &SqueezedPlate) -> f64 {
+fn plate_deviation(plate: &SqueezedPlate) -> f64 {
     plate.regularized().end_displacement() / plate.coulomb().end_displacement() - 1.0
 }
 

@@ -80,7 +80,7 @@ pub struct ContinuumPlate {
 const MAX_THICKNESS_OVER_LAYER: f64 = 20.0;
 
 /// The window, in thicknesses, over which [`ContinuumPlate::edge_pressure_ratio`] averages.
-pub const EDGE_WINDOW: f64 = 0.1;
+const EDGE_WINDOW: f64 = 0.1;
 
 /// Fixed-point iterations allowed on the contact forces.
 const MAX_PRESSURE_ITERATIONS: usize = 60;

@@ -18,7 +18,7 @@ use closed_form::SqueezedPlate;
 use params::PlateParam;
 
 /// The squeezed plate as the generic layers see it.
-pub const DESCRIPTION: Description = Description {
+pub(crate) const DESCRIPTION: Description = Description {
     key: "plate",
     title: "squeezed plate",
     summary: "Squeezed plate (paper section 2.2)",
@@ -51,7 +51,7 @@ pub const DESCRIPTION: Description = Description {
 /// The value of `quantity` for `plate` (see [`Quantity`]); `None` for a quantity the plate has
 /// not (it carries no force), where it is not defined (the ratio where nothing slides) or not
 /// finite.
-pub fn quantity(plate: &SqueezedPlate, quantity: Quantity) -> Option<f64> {
+pub(crate) fn quantity(plate: &SqueezedPlate, quantity: Quantity) -> Option<f64> {
     let value = match quantity {
         Quantity::Response => plate.regularized().response(),
         Quantity::MicroEnd => plate.regularized().zone_end(),

@@ -147,7 +147,7 @@ impl PlateParams {
     }
 
     /// The field that holds `param`.
-    pub fn value_mut(&mut self, param: PlateParam) -> &mut f64 {
+    pub(crate) fn value_mut(&mut self, param: PlateParam) -> &mut f64 {
         match param {
             PlateParam::HalfLength => &mut self.half_length,
             PlateParam::Thickness => &mut self.thickness,

@@ -19,7 +19,7 @@ use crate::kernel::solve::{find_root_in_bracket, find_root_newton};
 use crate::problems::{BeamParam, Solution};
 
 /// Timoshenko's shear coefficient of a rectangular section, kappa = 5/6 (B13).
-pub const SHEAR_COEFFICIENT: f64 = 5.0 / 6.0;
+const SHEAR_COEFFICIENT: f64 = 5.0 / 6.0;
 
 /// A validated twin-beam system with its load-independent derived constants.
 #[derive(Debug, Clone, Copy, PartialEq)]

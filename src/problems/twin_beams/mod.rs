@@ -18,7 +18,7 @@ use cycle::{Cycle, Law};
 use params::BeamParam;
 
 /// The twin beams as the generic layers see them.
-pub const DESCRIPTION: Description = Description {
+pub(crate) const DESCRIPTION: Description = Description {
     key: "beam",
     title: "twin cantilever beams",
     summary: "Twin cantilever beams (paper section 2.1)",
@@ -68,7 +68,7 @@ pub const DESCRIPTION: Description = Description {
 
 /// The value of `quantity` for `beams` at `force` (see [`Quantity`]); `None` where it is not
 /// defined (the ratio at zero load) or not finite.
-pub fn quantity(beams: &TwinBeams, force: TipForce, quantity: Quantity) -> Option<f64> {
+pub(crate) fn quantity(beams: &TwinBeams, force: TipForce, quantity: Quantity) -> Option<f64> {
     let value = match quantity {
         Quantity::Response => beams.regularized(force).response(),
         Quantity::MicroEnd => beams.regularized(force).zone_end(),

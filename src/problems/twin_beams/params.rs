@@ -164,7 +164,8 @@ impl BeamTheory {
     }
 
     /// The other theory.
-    pub fn other(self) -> BeamTheory {
+    #[cfg(feature = "app")]
+    pub(crate) fn other(self) -> BeamTheory {
         match self {
             BeamTheory::EulerBernoulli => BeamTheory::Timoshenko,
             BeamTheory::Timoshenko => BeamTheory::EulerBernoulli,
@@ -213,7 +214,7 @@ impl TwinBeamsParams {
 
     /// The field that holds `param`, or `None` for the tip force, which is not a property of the
     /// structure (see [`TipForce`](crate::problems::twin_beams::closed_form::TipForce)).
-    pub fn value_mut(&mut self, param: BeamParam) -> Option<&mut f64> {
+    pub(crate) fn value_mut(&mut self, param: BeamParam) -> Option<&mut f64> {
         Some(match param {
             BeamParam::Length => &mut self.length,
             BeamParam::Width => &mut self.width,

@@ -27,7 +27,7 @@ pub struct BeamValidity {
 /// CalculiX decks (1.19e-4: L 250, h 10, mu P = 2 MPa, steel). At 4.8e-4 (mu P = 10 MPa, h/L =
 /// 1/20) the fine-mesh CalculiX w(L) was +4.3 % off at 1.3 F_1 against a bound of 3.8 %, so the
 /// bound is not claimed beyond the calibrated range (docs/theory.md (V2)).
-pub const CALIBRATED_FRICTION_STRAIN: f64 = 1.2e-4;
+pub(crate) const CALIBRATED_FRICTION_STRAIN: f64 = 1.2e-4;
 
 /// (V2): what remains between Timoshenko's w(L) and CalculiX, from the clamp (a fixed end face is
 /// stiffer than beam theory's clamp) and the tip load, grows with the beam's stubbiness: 0.2 h/L
