@@ -531,9 +531,10 @@ impl App {
     /// What the regime pane shows of the plate's continuum solution.
     pub fn continuum(&self) -> crate::tui::summary::ContinuumState {
         use crate::tui::summary::ContinuumState;
+        // Only the plate has a continuum solver of its own.
         let current = match self.model() {
             Some(Model::Plate(plate)) if self.solve_continuum => plate.params(),
-            _ => return ContinuumState::Off,
+            Some(Model::Plate(_) | Model::Beam { .. }) | None => return ContinuumState::Off,
         };
         match &self.continuum {
             Some((params, Some(Ok(solved)))) if *params == current => {
@@ -553,8 +554,9 @@ impl App {
 
     /// Asks for the plate's continuum at the current values when it is shown and not asked yet.
     fn ask_continuum(&mut self) {
-        let Some(Model::Plate(plate)) = self.model() else {
-            return;
+        let plate = match self.model() {
+            Some(Model::Plate(plate)) => plate,
+            Some(Model::Beam { .. }) | None => return,
         };
         let params = plate.params();
         if !self.solve_continuum || self.continuum.as_ref().is_some_and(|(p, _)| *p == params) {
@@ -1516,15 +1518,16 @@ impl App {
     /// `f`: asks to fit mu and K_T of the twin beams to the measurements ([`Effect::Fit`]), in
     /// [`Mode::Fitting`] until the result comes (or Esc cancels).
     fn fit(&mut self) {
-        let (Some(measurements), Some(Model::Beam { beams, .. })) =
-            (&self.measurements, self.model())
-        else {
-            self.error(if self.measurements.is_none() {
-                "no measurements: press d to load a CSV with columns F_N,w_mm"
-            } else {
-                "fitting needs the twin-beam model: press m"
-            });
-            return;
+        let Some(measurements) = &self.measurements else {
+            return self.error("no measurements: press d to load a CSV with columns F_N,w_mm");
+        };
+        // The fit identifies mu and K_T from a force-deflection curve: the beams'.
+        let beams = match self.model() {
+            Some(Model::Beam { beams, .. }) => beams,
+            Some(Model::Plate(_)) => {
+                return self.error("fitting needs the twin-beam model: press m");
+            }
+            None => return self.error("the parameters are not valid: nothing to fit"),
         };
         self.jobs += 1;
         self.asked.push(Effect::Fit {
