@@ -46,12 +46,32 @@
 //!   because they are the program, not a library API. With `default-features = false` none of
 //!   clap, ratatui, crossterm or signal-hook is compiled.
 //!
-//! Beside the plan in `ARCHITECTURE.md` (a design note kept outside this repository): `study`
-//! still holds per-problem sampling functions (`study::curves`) and `chart` per-problem series, so
-//! a new problem still adds arms there (see [`problems`]); `verify` sits at the top level because it calls both sides of every problem and
-//! is neither physics nor I/O; chart and table enums live in `chart::view` so that figure exports
-//! can name views the way the TUI does; `cli` sits above `tui` because `microslip` with no
-//! command starts the TUI.
+//! # What a problem is, and what adding one touches
+//! A problem is a folder of [`problems`] (its parameters, closed forms, cycle, validity envelope,
+//! discretized solver and its [`problems::Description`]) and one line of the list in
+//! `problems/mod.rs` (`problem_list!`: the variant and its folder). What the generic layers need
+//! to know of it is data they read, not a match they make: its parameters with their domains,
+//! units and scales, the quantities a target can be set on ([`problems::Quantity`], named and
+//! computed by the problem), its response symbol and its load parameter, its charts with their x
+//! parameter, load axis and default y scale ([`chart::view::ChartSet`]); presets, `--set`, the
+//! parameter pane, undo, pins, `v`, `t`, `solve` and the deck header work from those. What every
+//! problem's solution answers has one name in every problem ([`problems::Solution`]: `response`,
+//! `regime`, `zone_end`).
+//!
+//! This differs from the plan in `ARCHITECTURE.md` (a design note kept outside this repository)
+//! in one way, for a reason: the plan puts a problem's deck, report type and chart series in its
+//! folder, but those sit in layers above `problems` (a chart is built from `study`'s sampling, a
+//! report renders `fe`'s comparison), and a folder that held them would make the layering test
+//! meaningless. So a problem's code above the physics lives in one file per layer, named after the
+//! problem (`report/point/beam.rs`, `report/compare/plate.rs`, ...), and the enums that carry a
+//! problem's own types through those layers (`Param`, `Inputs`, `Model`, `AnyChart`, `AnyLoaded`,
+//! `Answer`) have one variant per problem: the compiler then lists every place a new problem must
+//! answer (exhaustive matches; no `_ =>` default over problems remains in `cli` or `tui`). Other
+//! choices: `verify` sits at the top level because it calls both sides of every problem and is
+//! neither physics nor I/O; the charts that exist live in `chart::view` so that figure exports
+//! name them as the TUI does, while which one is shown (`Views`) and the text table shown in the
+//! chart pane are the TUI's; `cli` sits above `tui` because `microslip` with no command starts the
+//! TUI.
 //!
 //! # Example
 //! ```

@@ -2,8 +2,11 @@
 //! its own: parameters, closed forms, validity envelope, its independent discretized solver.
 //! Everything here is built on [`crate::kernel`] and [`crate::numeric`], which know no problem.
 //!
-//! [`ModelKind`] lists the problems; [`Param`] is a parameter of any of them, what the generic
-//! layers (presets, `--set`, the parameter pane, sweeps, solving for a target) iterate over.
+//! [`ModelKind`] lists the problems (spelled once, in `problem_list!`); each folder's
+//! [`Description`] is what the generic layers know of its problem; [`Param`] is a parameter of any
+//! of them, what presets, `--set`, the parameter pane, sweeps and solving for a target iterate
+//! over; [`ByProblem`] keeps one value per problem; [`Quantity`] and [`Solution`] name what every
+//! problem's solution answers.
 
 use std::fmt;
 use std::str::FromStr;
