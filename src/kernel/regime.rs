@@ -1,4 +1,5 @@
-//! The friction regime of an interface: which zones exist, listed from x = 0 outward.
+//! The friction regime of an interface (which zones exist, listed from x = 0 outward), and the
+//! law that decides it.
 
 use std::fmt;
 
@@ -49,6 +50,15 @@ impl fmt::Display for Regime {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.pad(self.label())
     }
+}
+
+/// Which friction law: every problem is solved under both, and its loops are built for each.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Law {
+    /// Plain Coulomb.
+    Coulomb,
+    /// Regularized Coulomb (tau = K_T slip up to mu P).
+    Regularized,
 }
 
 #[cfg(test)]

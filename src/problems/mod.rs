@@ -65,6 +65,9 @@ pub struct Description {
     /// measured and fitted, and FE decks apply it in load steps. None for the plate, loaded by
     /// its pressure alone.
     pub load: Option<Param>,
+    /// The name of [`crate::problems::inputs::Model::regime_scale`] as messages say it (`F_thre`);
+    /// empty without a load.
+    pub regime_scale_name: &'static str,
 }
 
 /// Writes [`ModelKind`], its [`ModelKind::ALL`] and [`ModelKind::description`] from one list,

@@ -445,11 +445,13 @@ pub fn response_vs_param(
         (Model::Plate(plate), Param::Plate(p)) => Ok(plate_param_sweep(plate, p, values)?
             .map(|(v, r)| ((v, r.u_coulomb), (v, r.u_regularized)))
             .unzip()),
-        _ => Err(RangeError::Bound {
-            end: RangeEnd::Start,
-            value: f64::NAN,
-            allowed: format!("{param} is a parameter of the other model"),
-        }),
+        (Model::Beam { .. }, Param::Plate(_)) | (Model::Plate(_), Param::Beam(_)) => {
+            Err(RangeError::Bound {
+                end: RangeEnd::Start,
+                value: f64::NAN,
+                allowed: format!("{param} is a parameter of another problem"),
+            })
+        }
     }
 }
 

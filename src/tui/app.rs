@@ -227,9 +227,10 @@ pub struct App {
     redo: Vec<Snapshot>,
     /// The last target typed after `t`, offered again.
     last_target: String,
-    /// The force range (N) of the beams' charts over F, kept while parameters change so that the
-    /// axes do not jump; `a` fits it to the current F_thre again.
-    force_span: Option<f64>,
+    /// The load range (N) of each problem's charts over its load (the beams' F), kept while
+    /// parameters change so that the axes do not jump; `a` fits it to the current regime scale
+    /// (F_thre) again. None for a problem without a load.
+    force_span: ByProblem<Option<f64>>,
     help_page: usize,
     /// Where `x` writes the chart's SVG and CSV (the working directory unless set).
     export_dir: PathBuf,
@@ -284,7 +285,7 @@ impl App {
             undo: Vec::new(),
             redo: Vec::new(),
             last_target: "ratio=1.01".to_string(),
-            force_span: None,
+            force_span: ByProblem::from_fn(|_| None),
             help_page: 0,
             export_dir: PathBuf::from("."),
             y_modes: Vec::new(),
@@ -297,10 +298,12 @@ impl App {
         app
     }
 
-    /// The force range of the beams' charts: 3 F_thre of the current beams.
+    /// The load axis of each problem's charts that run along its load: 3 times its regime scale
+    /// (3 F_thre for the beams); none for a problem without a load.
     fn fit_axes(&mut self) {
-        if let Ok(Model::Beam { beams, .. }) = self.states[ModelKind::Beam].inputs.validate() {
-            self.force_span = Some(3.0 * beams.threshold_force());
+        for kind in ModelKind::ALL {
+            let model = self.states[kind].inputs.validate().ok();
+            self.force_span[kind] = model.and_then(|m| m.regime_scale()).map(|s| 3.0 * s);
         }
     }
 
@@ -566,35 +569,38 @@ impl App {
         self.asked.push(Effect::SolveContinuum { params });
     }
 
-    /// The beams' force axis, kept while values change so that the curves can be compared, is
-    /// fitted again (3 F_thre) when F_thre, where the Coulomb regime changes, leaves it or is
-    /// squeezed into its first twelfth (a geometry, mu or P changed by a large factor); the status
-    /// says so. K_T does not move F_thre: dragging it never rescales.
+    /// A problem's load axis (the beams' F), kept while values change so that the curves can be
+    /// compared, is fitted again (3 times the regime scale, F_thre) when the regime scale leaves it
+    /// or is squeezed into its first twelfth (a geometry, mu or P changed by a large factor); the
+    /// status says so for the problem shown. K_T does not move F_thre: dragging it never rescales.
     fn follow_threshold(&mut self) {
-        let (Some(span), Ok(Model::Beam { beams, .. })) = (
-            self.force_span,
-            self.states[ModelKind::Beam].inputs.validate(),
-        ) else {
-            return;
-        };
-        let threshold = beams.threshold_force();
-        if threshold <= span && threshold >= span / 12.0 {
-            return;
-        }
-        self.force_span = Some(3.0 * threshold);
-        let note = format!(
-            "F axis rescaled to 0-{} N: F_thre = {} N {} the old 0-{} N",
-            number(3.0 * threshold),
-            number(threshold),
-            if threshold > span {
-                "is beyond"
-            } else {
-                "was squeezed into the start of"
-            },
-            number(span)
-        );
-        if self.kind == ModelKind::Beam {
-            self.axis_note = Some(note);
+        for kind in ModelKind::ALL {
+            let (Some(span), Some(threshold)) = (
+                self.force_span[kind],
+                (self.states[kind].inputs.validate().ok()).and_then(|m| m.regime_scale()),
+            ) else {
+                continue;
+            };
+            if threshold <= span && threshold >= span / 12.0 {
+                continue;
+            }
+            self.force_span[kind] = Some(3.0 * threshold);
+            let note = format!(
+                "{} axis rescaled to 0-{} N: {} = {} N {} the old 0-{} N",
+                kind.description().load.map_or("", |p| p.name()),
+                number(3.0 * threshold),
+                kind.description().regime_scale_name,
+                number(threshold),
+                if threshold > span {
+                    "is beyond"
+                } else {
+                    "was squeezed into the start of"
+                },
+                number(span)
+            );
+            if self.kind == kind {
+                self.axis_note = Some(note);
+            }
         }
     }
 
@@ -671,7 +677,7 @@ impl App {
             self.numeric.as_ref(),
             measured,
             external,
-            self.force_span,
+            self.force_span[model.kind()],
         )
     }
 

@@ -26,6 +26,7 @@ pub(crate) const DESCRIPTION: Description = Description {
     params: &PARAMS,
     response_symbol: "u",
     load: None,
+    regime_scale_name: "",
     quantities: &[
         QuantityName {
             quantity: Quantity::Response,

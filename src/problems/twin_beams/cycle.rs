@@ -12,16 +12,8 @@
 //! reloading from -F_a:  w(F) = -w_a + 2 w_v((F_a + F) / 2)
 //! ```
 
+pub use crate::kernel::regime::Law;
 use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams};
-
-/// Which friction law.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Law {
-    /// Plain Coulomb.
-    Coulomb,
-    /// Regularized Coulomb (tau = K_T slip up to mu P).
-    Regularized,
-}
 
 /// One cycle of amplitude F_a for one law.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -26,6 +26,7 @@ pub(crate) const DESCRIPTION: Description = Description {
     params: &PARAMS,
     response_symbol: "w",
     load: Some(Param::Beam(BeamParam::Force)),
+    regime_scale_name: "F_thre",
     quantities: &[
         QuantityName {
             quantity: Quantity::Response,

@@ -7,8 +7,8 @@ use serde::Serialize;
 
 use super::regime_label;
 use crate::Regime;
-use crate::problems::BeamParam;
 use crate::problems::inputs::Model;
+use crate::problems::{BeamParam, ModelKind, Quantity};
 use crate::report::{number, sanitize};
 use crate::study::curves::{Answer, CandidateSource, ComparedStiffness, StiffnessComparison};
 
@@ -19,6 +19,9 @@ pub struct StiffnessReport {
     /// Contact element length the codes' defaults scale with (mm).
     #[serde(rename = "element_size_mm")]
     pub element: f64,
+    /// The problem, for the text's layout.
+    #[serde(skip)]
+    pub kind: ModelKind,
     /// The load case, for the text's heading: the beams' tip force (N), or `None` for the plate.
     #[serde(skip)]
     pub force: Option<f64>,
@@ -138,6 +141,7 @@ impl StiffnessReport {
         StiffnessReport {
             preset: preset.to_string(),
             element: comparison.element,
+            kind: comparison.model.kind(),
             force: match comparison.model {
                 Model::Beam { force, .. } => Some(force.newtons()),
                 Model::Plate(_) => None,
@@ -152,12 +156,12 @@ impl StiffnessReport {
         let preset = sanitize(&self.preset);
         let mut out = String::new();
         let (mu_p, element) = (number(self.friction_stress), number(self.element));
-        match self.force {
-            Some(force) => {
+        match self.kind {
+            ModelKind::Beam => {
                 let _ = writeln!(
                     out,
                     "K_T candidates for preset {preset}: twin beams at F = {} N, mu P = {mu_p} MPa, contact elements {element} mm",
-                    number(force),
+                    self.force.map_or_else(|| "-".to_string(), number),
                 );
                 let _ = writeln!(
                     out,
@@ -171,7 +175,7 @@ impl StiffnessReport {
                     "regime"
                 );
             }
-            None => {
+            ModelKind::Plate => {
                 let _ = writeln!(
                     out,
                     "K_T candidates for preset {preset}: squeezed plate, mu P = {mu_p} MPa, contact elements {element} mm",
@@ -200,7 +204,7 @@ impl StiffnessReport {
             } else {
                 "-"
             };
-            let _ = match (&row.answer, self.force) {
+            let _ = match (&row.answer, self.kind) {
                 (
                     Some(CandidateAnswer::Beam {
                         first_macroslip_force,
@@ -234,12 +238,12 @@ impl StiffnessReport {
                     regime.label(),
                 ),
                 // No answer: the columns of the beams' table (a force given) or the plate's.
-                (None | Some(CandidateAnswer::Refused { .. }), Some(_)) => writeln!(
+                (None | Some(CandidateAnswer::Refused { .. }), ModelKind::Beam) => writeln!(
                     out,
                     "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10}  {unanswered:<20} {basis}",
                     "-", "-", "-", "-",
                 ),
-                (None | Some(CandidateAnswer::Refused { .. }), None) => writeln!(
+                (None | Some(CandidateAnswer::Refused { .. }), ModelKind::Plate) => writeln!(
                     out,
                     "{source:<16} {kt:>12} {:>12} {:>10} {:>10}  {unanswered:<20} {basis}",
                     "-", "-", "-",
@@ -256,7 +260,7 @@ impl StiffnessReport {
                 stiffness.domain.describe(stiffness.unit)
             );
         }
-        let quantity = if self.force.is_some() { "w(L)" } else { "u(L)" };
+        let quantity = Quantity::Response.name(self.kind);
         let _ = writeln!(
             out,
             "vs current: each K_T's {quantity} against the current K_T's, in % (what an FE model \
