@@ -2101,3 +2101,44 @@ fn a_family_along_the_chart_s_own_axis_is_refused() {
         assert!(said.contains(param), "{said}");
     }
 }
+
+/// Beyond the friction strain (V2) was measured at (mu P = 10 MPa on the paper's beams:
+/// mu P L / (2 E h) = 10 x 200 / (2 x 210000 x 10) = 4.76e-4 > 1.2e-4), every output says "not
+/// calibrated" instead of a bound, and `compare` does not judge the implied K_T by it.
+#[test]
+fn beams_beyond_the_calibrated_friction_strain_get_no_bound() {
+    let set = ["--set", "mu=1", "--set", "P=10", "--set", "KT=3000"];
+    let args = |command: &[&'static str]| -> Vec<&'static str> {
+        command.iter().copied().chain(set).collect()
+    };
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_of(&args(&["beam", "--format", "json"]))).unwrap();
+    let theory = &json["beam_theory"];
+    assert_eq!(theory["validity"], "not calibrated", "{json}");
+    assert!(theory.get("vs_continuum_within").is_none(), "{json}");
+    let strain = theory["friction_strain"].as_f64().unwrap();
+    assert!((strain / (10.0 * 200.0 / (2.0 * 210_000.0 * 10.0)) - 1.0).abs() < 1e-12);
+    let text = stdout_of(&args(&["beam"]));
+    assert!(
+        text.contains("not calibrated") && text.contains("4.76e-4"),
+        "{text}"
+    );
+    let csv = stdout_of(&args(&[
+        "sweep", "beam", "--from", "0", "--to", "60000", "--points", "2",
+    ]));
+    assert!(
+        csv.lines().nth(2).unwrap().ends_with(",euler-bernoulli,"),
+        "{csv}"
+    );
+    // Any FE points (these are made up): the implied K_T is not judged through (V2).
+    let dir = tempfile::tempdir().unwrap();
+    let fe = dir.path().join("fe.csv");
+    std::fs::write(&fe, "F_N,w_mm\n20000,1.5\n30000,3.0\n40000,4.5\n").unwrap();
+    let mut compare = vec!["compare", "beam", fe.to_str().unwrap()];
+    compare.extend(set);
+    let text = stdout_of(&compare);
+    assert!(
+        text.contains("implied K_T not judged (the beam theory's envelope is not calibrated"),
+        "{text}"
+    );
+}

@@ -171,22 +171,40 @@ fn problem_breaches(source: &Source, root: &BTreeMap<String, String>) -> Vec<Str
     let code = &source.code;
     for (other, _) in code.match_indices("crate::problems::") {
         let rest = &code[other + "crate::problems::".len()..];
-        let named: String = rest
-            .chars()
-            .take_while(|c| c.is_alphanumeric() || *c == '_')
-            .collect();
-        // Another problem is another folder of src/problems; its files (inputs, quantity, ...)
-        // are the shared vocabulary every problem may use.
-        let is_folder = !named.is_empty()
-            && Path::new(env!("CARGO_MANIFEST_DIR"))
-                .join("src/problems")
-                .join(&named)
-                .is_dir();
-        if is_folder && named != problem {
-            found.push(format!(
-                "{}: problem `{problem}` uses problem `{named}`",
-                source.path
-            ));
+        // `crate::problems::plate::...` names one module; `crate::problems::{plate, inputs}`
+        // names each one in the braces (nested paths inside are that module's own).
+        let names: Vec<String> = match rest.strip_prefix('{') {
+            Some(list) => {
+                let list = &list[..list.find('}').unwrap_or(list.len())];
+                list.split(',')
+                    .map(|item| {
+                        item.trim()
+                            .chars()
+                            .take_while(|c| c.is_alphanumeric() || *c == '_')
+                            .collect()
+                    })
+                    .collect()
+            }
+            None => vec![
+                rest.chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect(),
+            ],
+        };
+        for named in names {
+            // Another problem is another folder of src/problems; its files (inputs, quantity,
+            // ...) are the shared vocabulary every problem may use.
+            let is_folder = !named.is_empty()
+                && Path::new(env!("CARGO_MANIFEST_DIR"))
+                    .join("src/problems")
+                    .join(&named)
+                    .is_dir();
+            if is_folder && named != problem {
+                found.push(format!(
+                    "{}: problem `{problem}` uses problem `{named}`",
+                    source.path
+                ));
+            }
         }
     }
     let name = file.strip_suffix(".rs").unwrap_or(file);
@@ -330,6 +348,11 @@ fn the_checker_reports_each_kind_of_breach() {
             "use crate::problems::twin_beams::params::BeamParam;",
             "uses problem `twin_beams`",
         ),
+        (
+            "problems/plate/closed_form.rs",
+            "use crate::problems::{PlateParam, twin_beams::params::BeamParam};",
+            "uses problem `twin_beams`",
+        ),
         // A module nobody placed.
         ("newthing/mod.rs", "", "has no layer"),
     ];
@@ -343,4 +366,7 @@ fn the_checker_reports_each_kind_of_breach() {
     // Comments and unit tests are not dependencies; a downward edge is fine.
     let fine = "// crate::tui\nuse crate::kernel::format::number;\n#[cfg(test)]\nmod tests {\n    use crate::cli;\n}\n";
     assert!(breaches(&[source("report/text.rs", fine)], &root).is_empty());
+    // A problem's shared vocabulary (inputs, quantity, ...) is not another problem.
+    let shared = "use crate::problems::{Description, Param, Quantity, QuantityName, Solution};\n";
+    assert!(breaches(&[source("problems/plate/mod.rs", shared)], &root).is_empty());
 }

@@ -3,7 +3,7 @@
 //! cells, the figure writer (`report::figure`, behind the feature `figures`) into SVG; neither
 //! computes physics itself, so a curve on screen and in a figure are the same numbers. Its own
 //! layer, below `report`: `report` formats (text, JSON, CSV, SVG) and computes nothing; which
-//! charts and tables exist is [`view`].
+//! charts exist is [`view`].
 
 pub mod family;
 pub(crate) mod pins;
@@ -352,6 +352,7 @@ pub fn build(
     external: Option<&ExternalPoints>,
     force_span: Option<f64>,
 ) -> Plot {
+    debug_assert_eq!(chart.kind(), model.kind(), "a chart of another problem");
     let external = external.filter(|e| e.model == model.kind());
     let mut overlays: Vec<(SeriesRole, &str, Series)> = Vec::new();
     let plot = match *model {
@@ -706,10 +707,10 @@ pub fn numeric_points(
     chart: AnyChart,
 ) -> Result<Option<NumericPoints>, NumericError> {
     let density = MeshDensity::with_elements(OVERLAY_ELEMENTS);
-    match (*model, Some(chart)) {
+    match (*model, chart) {
         (
             Model::Beam { beams, force },
-            Some(AnyChart::Beam(chart @ (BeamChart::Deflection | BeamChart::SlipBoundary))),
+            AnyChart::Beam(chart @ (BeamChart::Deflection | BeamChart::SlipBoundary)),
         ) => {
             // One model loaded monotonically through the sample forces: one load step per point.
             let f_max = force_range(&beams, force, 0.0, None);
@@ -748,7 +749,7 @@ pub fn numeric_points(
                 })),
             }
         }
-        (Model::Beam { beams, force }, Some(AnyChart::Beam(BeamChart::Loop))) => {
+        (Model::Beam { beams, force }, AnyChart::Beam(BeamChart::Loop)) => {
             // The FE model driven round the same cycle: its own slider histories, no Masing rule.
             let fa = force.newtons();
             let mut fe = TwinBeamsFe::new(beams.params(), density);
@@ -767,7 +768,7 @@ pub fn numeric_points(
                 failed: 0,
             }))
         }
-        (Model::Beam { beams, force }, Some(AnyChart::Beam(BeamChart::Shear))) => {
+        (Model::Beam { beams, force }, AnyChart::Beam(BeamChart::Shear)) => {
             let mut fe = TwinBeamsFe::new(beams.params(), density);
             fe.load_to(force.newtons(), 4)?;
             let samples = fe.interface();
@@ -782,7 +783,7 @@ pub fn numeric_points(
                     .collect(),
             }))
         }
-        (Model::Plate(plate), Some(AnyChart::Plate(PlateChart::Displacement))) => {
+        (Model::Plate(plate), AnyChart::Plate(PlateChart::Displacement)) => {
             let p = plate.params();
             let (from, to) = stiffness_range(p.tangential_stiffness);
             let (lo, hi) = (from.log10(), to.log10());
@@ -820,14 +821,14 @@ pub fn numeric_points(
             }
         }
         // No finite-element counterpart: dissipation (a closed-form integral of the loop), the
-        // contact pressure, X_r vs mu, and the tables (a view is always of the model's problem).
-        (Model::Beam { .. }, Some(AnyChart::Beam(BeamChart::Dissipation)) | None)
+        // contact pressure, X_r vs mu; and a chart of another problem.
+        (Model::Beam { .. }, AnyChart::Beam(BeamChart::Dissipation))
         | (
             Model::Plate(_),
-            Some(AnyChart::Plate(PlateChart::SlipBoundary | PlateChart::ContactPressure)) | None,
+            AnyChart::Plate(PlateChart::SlipBoundary | PlateChart::ContactPressure),
         )
-        | (Model::Beam { .. }, Some(AnyChart::Plate(_)))
-        | (Model::Plate(_), Some(AnyChart::Beam(_))) => Ok(None),
+        | (Model::Beam { .. }, AnyChart::Plate(_))
+        | (Model::Plate(_), AnyChart::Beam(_)) => Ok(None),
     }
 }
 

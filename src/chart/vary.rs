@@ -3,7 +3,7 @@
 //! [`crate::study::curves::response_vs_param`]; axes and series from [`super`].
 
 use super::{Plot, SeriesRole, cursor, line, linear_axis, log_axis, max_y, samples};
-use crate::kernel::params::{Domain, Scale};
+use crate::kernel::params::Scale;
 use crate::problems::inputs::Model;
 use crate::problems::{Param, Quantity};
 use crate::study::curves::{Spacing, response_vs_param};
@@ -24,8 +24,12 @@ fn range(model: &Model, param: Param, value: f64) -> (f64, f64, bool) {
         Scale::FractionOfScale { .. } => {
             // Only a problem's load steps in fractions of a scale: its regime scale.
             let scale = model.regime_scale().unwrap_or(value);
-            let hi = Domain::FORCE.clamp((3.0 * scale).max(1.25 * value));
-            (0.0, if hi > 0.0 { hi } else { 1.0 }, false)
+            let hi = domain.clamp((3.0 * scale).max(1.25 * value));
+            (
+                domain.min(),
+                if hi > domain.min() { hi } else { 1.0 },
+                false,
+            )
         }
     }
 }
@@ -33,7 +37,7 @@ fn range(model: &Model, param: Param, value: f64) -> (f64, f64, bool) {
 /// w(L) or u(L) against `param`, Coulomb and regularized, cursor at the current value.
 pub fn build(model: &Model, param: Param) -> Plot {
     let response = Quantity::Response.name(model.kind());
-    let law = format!("{response} ({})", Quantity::Response.unit());
+    let law = format!("{response} ({})", Quantity::Response.unit(model.kind()));
     let value = model.inputs().get(param).unwrap_or(f64::NAN);
     let (lo, hi, log) = range(model, param, value);
     let spacing = if log {

@@ -84,7 +84,7 @@ pub struct BeamComparison {
 
 impl BeamComparison {
     /// Whether the beam theory holds (V2 within 2 %) at every point, so that a K_T fitted through
-    /// it measures the interface.
+    /// it measures the interface; false too where (V2) is not calibrated.
     pub fn closed_form_holds(&self) -> bool {
         self.rows.iter().all(|r| {
             r.shear_corrected_within
@@ -92,10 +92,16 @@ impl BeamComparison {
         })
     }
 
+    /// Whether (V2) has a bound at every point (the friction strain within its calibration).
+    pub fn closed_form_calibrated(&self) -> bool {
+        self.rows.iter().all(|r| r.shear_corrected_within.is_some())
+    }
+
     /// The deck's K_T against the implied one.
     pub fn stiffness_match(&self) -> StiffnessMatch {
         match &self.implied {
             Err(_) => StiffnessMatch::NotImplied,
+            Ok(_) if !self.closed_form_calibrated() => StiffnessMatch::ClosedFormNotCalibrated,
             Ok(_) if !self.closed_form_holds() => StiffnessMatch::ClosedFormDoesNotHold,
             Ok(fit) => StiffnessMatch::judge(self.stiffness, fit.kt.value, fit.kt.std_error),
         }

@@ -166,6 +166,9 @@ pub enum StiffnessMatch {
     /// The beam theory does not hold at every point (its envelope exceeds 2 %): the fit would
     /// measure the theory, not the interface.
     ClosedFormDoesNotHold,
+    /// The beam theory's envelope is not calibrated at some point (its friction strain is beyond
+    /// the measured range, (V2)): nothing says the fit would measure the interface.
+    ClosedFormNotCalibrated,
     /// No K_T was implied (too few points).
     NotImplied,
 }
@@ -193,6 +196,9 @@ impl StiffnessMatch {
             StiffnessMatch::DoesNotMatch { .. } => "does not match",
             StiffnessMatch::NoStandardError => "no standard error",
             StiffnessMatch::ClosedFormDoesNotHold => "not judged: the beam theory does not hold",
+            StiffnessMatch::ClosedFormNotCalibrated => {
+                "not judged: the beam theory's envelope is not calibrated"
+            }
             StiffnessMatch::NotImplied => "not implied",
         }
     }

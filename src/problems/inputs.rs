@@ -248,6 +248,43 @@ impl Inputs {
 mod tests {
     use super::*;
 
+    /// What each problem's description says of it agrees with its code: it names its response,
+    /// its names and aliases are unique, every quantity it lists is computed (finite, on the
+    /// paper's data), and it has a load exactly where its model has a regime scale.
+    #[test]
+    fn every_description_agrees_with_its_problem() {
+        use crate::problems::Quantity;
+        for kind in ModelKind::ALL {
+            let d = kind.description();
+            assert_eq!(d.key, kind.name());
+            assert!(
+                d.quantities
+                    .iter()
+                    .any(|q| q.quantity == Quantity::Response),
+                "{kind}: no response"
+            );
+            let mut spellings: Vec<&str> = d
+                .quantities
+                .iter()
+                .flat_map(|q| std::iter::once(q.name).chain(q.aliases.iter().copied()))
+                .collect();
+            let count = spellings.len();
+            spellings.sort_unstable();
+            spellings.dedup();
+            assert_eq!(spellings.len(), count, "{kind}: a name or alias twice");
+            let model = Inputs::paper(kind).validate().unwrap();
+            for q in d.quantities {
+                let value = model.quantity(q.quantity);
+                assert!(value.is_some_and(f64::is_finite), "{kind}: {}", q.name);
+            }
+            assert_eq!(d.load.is_some(), model.regime_scale().is_some(), "{kind}");
+            assert_eq!(d.load.is_some(), !d.regime_scale_name.is_empty(), "{kind}");
+            if let Some(load) = d.load {
+                assert_eq!(load.model(), kind);
+            }
+        }
+    }
+
     #[test]
     fn every_parameter_has_its_own_slot() {
         for kind in ModelKind::ALL {

@@ -39,9 +39,9 @@ pub mod twin_beams;
 pub use plate::params::PlateParam;
 pub use twin_beams::params::BeamParam;
 
-/// What the generic layers (presets, deck headers, commands, the parameter pane) know of a
-/// problem, as data: a new problem writes one in its folder and adds one line to
-/// [`ModelKind::description`].
+/// What the generic layers (presets, deck headers, commands, the parameter pane, targets) know
+/// of a problem, as data: a new problem writes one in its folder and adds its line to
+/// `problem_list!`, which hands it out through [`ModelKind::description`].
 #[derive(Debug)]
 pub struct Description {
     /// The key in presets (`model = "beam"`), commands and JSON.

@@ -21,18 +21,6 @@ pub enum Quantity {
     DampingRatio,
 }
 
-impl Quantity {
-    /// The unit (`mm`, `N`, `N mm`, or empty for ratios).
-    pub fn unit(self) -> &'static str {
-        match self {
-            Quantity::Response | Quantity::MicroEnd => "mm",
-            Quantity::FirstMacroslipForce => "N",
-            Quantity::Dissipation => "N mm",
-            Quantity::Ratio | Quantity::DampingRatio => "",
-        }
-    }
-}
-
 /// One law's solution of any problem, under names that mean the same in every problem. Each
 /// problem keeps its own names beside them, as its physics says them (the beams'
 /// `tip_deflection`, the plate's `end_displacement`); these are what code written for any problem
@@ -64,6 +52,8 @@ pub struct QuantityName {
     pub aliases: &'static [&'static str],
     /// What it is for this problem, in words.
     pub meaning: &'static str,
+    /// Its unit for this problem (`mm`, `N`, `N mm`; empty for a ratio).
+    pub unit: &'static str,
 }
 
 impl QuantityName {

@@ -7,7 +7,7 @@
 //! lives in [`crate::kernel::format`] (re-exported here for the rest of the crate).
 
 pub mod compare;
-pub mod csv;
+pub(crate) mod csv;
 #[cfg(feature = "figures")]
 pub mod figure;
 pub mod json;

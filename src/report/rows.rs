@@ -1,5 +1,5 @@
 //! One serde row type per table: the single definition of a table's columns, their order and their
-//! names (units in the names: `w_coulomb_mm`, `KT_MPa_per_mm`). [`super::csv`] writes them as CSV
+//! names (units in the names: `w_coulomb_mm`, `KT_MPa_per_mm`). `report::csv` writes them as CSV
 //! (the field names are the header), serde_json as JSON objects. The column names are a contract
 //! with users' scripts: do not rename them.
 

@@ -63,6 +63,11 @@ impl Quantity {
         self.named(kind).map_or("", |n| n.meaning)
     }
 
+    /// Its unit for `kind` (`mm`, `N`, `N mm`; empty for a ratio).
+    pub fn unit(self, kind: ModelKind) -> &'static str {
+        self.named(kind).map_or("", |n| n.unit)
+    }
+
     /// The names targets accept for `kind`, as error messages list them.
     pub(crate) fn names(kind: ModelKind) -> String {
         kind.description()
@@ -451,7 +456,7 @@ pub fn solve_for_target(
                 crate::kernel::params::Unit::MegapascalPerMillimetre => " MPa/mm",
             },
             quantity: name,
-            quantity_unit: match quantity.unit() {
+            quantity_unit: match quantity.unit(kind) {
                 "mm" => " mm",
                 "N" => " N",
                 "N mm" => " N mm",

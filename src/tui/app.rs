@@ -12,9 +12,9 @@ use super::keymap::Context;
 use super::kt_table;
 use super::text_input::TextInput;
 use super::theme::Theme;
-use super::views::Views;
+use super::views::{View, Views};
 use crate::PlateParams;
-use crate::chart::view::{AnyChart, View};
+use crate::chart::view::AnyChart;
 use crate::chart::{self, NumericPoints, Plot, YMode, pins};
 use crate::fit::Measurement;
 use crate::kernel::params::{Compact, parse_number};
@@ -585,9 +585,11 @@ impl App {
                 continue;
             }
             self.force_span[kind] = Some(3.0 * threshold);
+            let load = kind.description().load;
+            let unit = load.map(Param::unit_suffix).unwrap_or_default();
             let note = format!(
-                "{} axis rescaled to 0-{} N: {} = {} N {} the old 0-{} N",
-                kind.description().load.map_or("", |p| p.name()),
+                "{} axis rescaled to 0-{}{unit}: {} = {}{unit} {} the old 0-{}{unit}",
+                load.map_or("", |p| p.name()),
                 number(3.0 * threshold),
                 kind.description().regime_scale_name,
                 number(threshold),
@@ -1105,7 +1107,7 @@ impl App {
                             "{param} = {}{punit} gives {name} = {}{} (certified root; u undoes)",
                             number(root.value),
                             number(root.achieved),
-                            unit(target.quantity.unit())
+                            unit(target.quantity.unit(self.kind))
                         ));
                     }
                 }
@@ -1401,9 +1403,13 @@ impl App {
         let is_dat = std::path::Path::new(&path)
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("dat"));
-        // A problem without a load parameter has no force-response curve to measure and fit.
-        let fittable = self.kind.description().load.is_some();
-        self.asked.push(if is_dat || !fittable {
+        // A CSV is a measured force-deflection curve to fit for the beams, FE results (K_T, u(L))
+        // for the plate.
+        let measurements = match self.kind {
+            ModelKind::Beam => !is_dat,
+            ModelKind::Plate => false,
+        };
+        self.asked.push(if !measurements {
             Effect::ReadFeResults {
                 path,
                 kind: self.kind,
@@ -1471,7 +1477,12 @@ impl App {
                     ..*a
                 } == b
             }
-            _ => false,
+            // A CSV's points (no deck), or a run of the beams: they replace.
+            (
+                None | Some(Inputs::Beam { .. } | Inputs::Plate(_)),
+                None | Some(Inputs::Beam { .. }),
+            )
+            | (None | Some(Inputs::Beam { .. }), Some(Inputs::Plate(_))) => false,
         };
         let mut points: Vec<(f64, f64)> = points;
         if let Some((previous, previous_origin)) = &self.external

@@ -33,18 +33,21 @@ pub(crate) const DESCRIPTION: Description = Description {
             name: "u(L)",
             aliases: &["u", "uL"],
             meaning: "end displacement, regularized law",
+            unit: "mm",
         },
         QuantityName {
             quantity: Quantity::MicroEnd,
             name: "X_r",
             aliases: &["X", "Xr"],
             meaning: "end of the microslip zone X_r, from the centre (L: no macroslip)",
+            unit: "mm",
         },
         QuantityName {
             quantity: Quantity::Ratio,
             name: "ratio",
             aliases: &[],
             meaning: "u(L) regularized / u(L) Coulomb",
+            unit: "",
         },
     ],
 };

@@ -348,6 +348,10 @@ pub fn beam_summary(comparison: &BeamComparison) -> Summary {
         StiffnessMatch::ClosedFormDoesNotHold => "implied K_T not judged (the beam theory's \
             envelope exceeds 2 % at some step: the fit would measure the theory)"
             .to_string(),
+        StiffnessMatch::ClosedFormNotCalibrated => "implied K_T not judged (the beam theory's \
+            envelope is not calibrated at some step: its friction strain mu P L / (2 E h) is beyond \
+            the measured range, docs/theory.md (V2))"
+            .to_string(),
         StiffnessMatch::NotImplied => "no K_T implied".to_string(),
     };
     let (opening, agrees) = opening(

@@ -85,7 +85,7 @@ impl SolveReport {
             unit: solved.param.unit(),
             quantity: quantity.name(kind),
             quantity_meaning: quantity.meaning(kind),
-            quantity_unit: quantity.unit(),
+            quantity_unit: quantity.unit(kind),
             target: solved.target.value,
             range: solved.range,
             roots: solved.roots.iter().map(RootReport::from).collect(),
