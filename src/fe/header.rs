@@ -304,10 +304,9 @@ impl DeckHeader {
         }
         let mut loads: Vec<f64> = Vec::new();
         if let Some(load) = load {
-            let key = load.name();
+            let (key, spec) = (load.name(), load.spec());
             for text in take(key)?.split(',') {
                 let force = number_of(key, text)?;
-                let spec = load.spec();
                 spec.domain
                     .check(key, force, spec.unit)
                     .map_err(|e| fail(e.to_string()))?;
@@ -315,7 +314,7 @@ impl DeckHeader {
                     && force <= previous
                 {
                     return Err(fail(format!(
-                        "F = {}: the loads must increase from one step to the next (after {})",
+                        "{key} = {}: the loads must increase from one step to the next (after {})",
                         Compact(force),
                         Compact(previous)
                     )));

@@ -95,12 +95,6 @@ impl Quantity {
                 kind,
             })
     }
-
-    /// The quantity's value for `model`; `None` where it is not defined (a ratio at zero load, a
-    /// quantity the problem does not have).
-    pub(crate) fn evaluate(self, model: &Model) -> Option<f64> {
-        model.quantity(self)
-    }
 }
 
 /// A target: a quantity and the value it should take, as typed `ratio=1.01`.
@@ -356,7 +350,7 @@ pub fn solve_for_target(
         });
     }
     let range = search_range(param, range)?;
-    let at = |x: f64| quantity.evaluate(&model.with_clamped(param, x));
+    let at = |x: f64| model.with_clamped(param, x).quantity(quantity);
     // The misfit, relative where the target is not zero so that Brent sees numbers near 1.
     let misfit = |y: f64| {
         if target.value != 0.0 {
@@ -501,8 +495,9 @@ mod tests {
         // Where the band starts, the ratio is above 1 by no more than the band, and below it by
         // more: the band is the ratio's approach to 1, not noise around a crossing.
         let at = |kt: f64| {
-            Quantity::Ratio
-                .evaluate(&beams().with_clamped(Param::Beam(BeamParam::Stiffness), kt))
+            beams()
+                .with_clamped(Param::Beam(BeamParam::Stiffness), kt)
+                .quantity(Quantity::Ratio)
                 .unwrap()
         };
         assert!(at(1.01 * root.bracket.0) - 1.0 <= ROUNDING);

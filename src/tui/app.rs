@@ -302,9 +302,13 @@ impl App {
     /// (3 F_thre for the beams); none for a problem without a load.
     fn fit_axes(&mut self) {
         for kind in ModelKind::ALL {
-            let model = self.states[kind].inputs.validate().ok();
-            self.force_span[kind] = model.and_then(|m| m.regime_scale()).map(|s| 3.0 * s);
+            self.force_span[kind] = self.regime_scale_of(kind).map(|s| 3.0 * s);
         }
+    }
+
+    /// `kind`'s regime scale at its current values (F_thre for the beams), where it has one.
+    fn regime_scale_of(&self, kind: ModelKind) -> Option<f64> {
+        self.states[kind].inputs.validate().ok()?.regime_scale()
     }
 
     fn snapshot(&self) -> Snapshot {
@@ -575,10 +579,8 @@ impl App {
     /// status says so for the problem shown. K_T does not move F_thre: dragging it never rescales.
     fn follow_threshold(&mut self) {
         for kind in ModelKind::ALL {
-            let (Some(span), Some(threshold)) = (
-                self.force_span[kind],
-                (self.states[kind].inputs.validate().ok()).and_then(|m| m.regime_scale()),
-            ) else {
+            let (Some(span), Some(threshold)) = (self.force_span[kind], self.regime_scale_of(kind))
+            else {
                 continue;
             };
             if threshold <= span && threshold >= span / 12.0 {
@@ -1603,7 +1605,7 @@ impl App {
             return;
         };
         // The force steps in fractions of F_thre, the scale at which the regimes change.
-        let scale = self.model().and_then(|m| m.regime_scale()).unwrap_or(1.0);
+        let scale = self.regime_scale_of(self.kind).unwrap_or(1.0);
         // A step stops at the edge of the accepted domain rather than being refused there.
         let spec = param.spec();
         let next = spec.domain.clamp(spec.scale.step(value, up, coarse, scale));
