@@ -207,6 +207,7 @@ impl Domain {
                 value,
                 domain: self,
                 unit,
+                reason: "",
             })
         }
     }
@@ -283,7 +284,12 @@ impl fmt::Display for Echo {
 
 /// A rejected input value: the field as users write it, the value and the allowed range.
 #[derive(Debug, Clone, PartialEq, Error)]
-#[error("invalid {field} = {}: {}", Echo(*value), domain.refusal(*value, *unit))]
+#[error(
+    "invalid {field} = {}: {}{}",
+    Echo(*value),
+    domain.refusal(*value, *unit),
+    if reason.is_empty() { String::new() } else { format!(" ({reason})") }
+)]
 pub struct ParamError {
     /// Field name as the user writes it (preset key), e.g. `KT`.
     pub field: &'static str,
@@ -293,6 +299,16 @@ pub struct ParamError {
     pub domain: Domain,
     /// The field's unit.
     pub unit: Unit,
+    /// Why the range is what it is, where the domain alone does not say it (the lap joint's
+    /// force bound F_gross); empty for a parameter's own domain.
+    pub reason: &'static str,
+}
+
+impl ParamError {
+    /// The same error, saying why the range is what it is.
+    pub fn because(self, reason: &'static str) -> ParamError {
+        ParamError { reason, ..self }
+    }
 }
 
 /// A parameter's natural scale: whether it varies by factors (it spans decades and stays

@@ -3,7 +3,8 @@
 
 use std::fmt;
 
-/// Zones present along the interface, from x = 0 (clamp or plate centre) outward.
+/// Zones present along the interface, from x = 0 (clamp, plate centre, or the lap joint's inner
+/// plate end) outward.
 ///
 /// The labels are part of the CLI's CSV contract (`stick+macroslip`, ...), so they live here, next to
 /// the enum, rather than in each output format.
@@ -19,6 +20,14 @@ pub enum Regime {
     StickMacroslip,
     /// Regularized law: an elastic microslip zone near x = 0, a sliding zone beyond.
     MicroslipMacroslip,
+    /// Coulomb law, the lap joint: sliding zones at both ends, sticking between them.
+    MacroslipStickMacroslip,
+    /// Coulomb law, the lap joint: a sliding zone at x = 0 only, sticking beyond.
+    MacroslipStick,
+    /// Regularized law, the lap joint: sliding zones at both ends, elastic between them.
+    MacroslipMicroslipMacroslip,
+    /// Regularized law, the lap joint: a sliding zone at x = 0 only, elastic beyond.
+    MacroslipMicroslip,
     /// No tangential load (the twin beams at F = 0, the plate at nu = 0, which the pressure does
     /// not squeeze sideways): the interface carries no shear and nothing slips, whatever the law.
     Unloaded,
@@ -33,6 +42,10 @@ impl Regime {
             Regime::Macroslip => "macroslip",
             Regime::StickMacroslip => "stick+macroslip",
             Regime::MicroslipMacroslip => "microslip+macroslip",
+            Regime::MacroslipStickMacroslip => "macroslip+stick+macroslip",
+            Regime::MacroslipStick => "macroslip+stick",
+            Regime::MacroslipMicroslipMacroslip => "macroslip+microslip+macroslip",
+            Regime::MacroslipMicroslip => "macroslip+microslip",
             Regime::Unloaded => "unloaded",
         }
     }
@@ -41,7 +54,13 @@ impl Regime {
     pub fn has_macroslip(self) -> bool {
         matches!(
             self,
-            Regime::Macroslip | Regime::StickMacroslip | Regime::MicroslipMacroslip
+            Regime::Macroslip
+                | Regime::StickMacroslip
+                | Regime::MicroslipMacroslip
+                | Regime::MacroslipStickMacroslip
+                | Regime::MacroslipStick
+                | Regime::MacroslipMicroslipMacroslip
+                | Regime::MacroslipMicroslip
         )
     }
 }

@@ -31,6 +31,7 @@ macro_rules! param_list {
 }
 
 pub mod inputs;
+pub mod lap;
 pub mod plate;
 pub mod quantity;
 pub mod stiffness;
