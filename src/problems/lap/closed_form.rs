@@ -509,7 +509,8 @@ mod tests {
     fn matches_the_independent_check_in_every_regime() {
         // (t1, t2, E2, K_T, F1, F2, [(F, a, d, Delta)]).
         type Row = (f64, f64, f64, f64);
-        let cases: [(f64, f64, f64, f64, f64, f64, &[Row]); 4] = [
+        type Case = (f64, f64, f64, f64, f64, f64, &'static [Row]);
+        let cases: [Case; 4] = [
             (
                 4.0,
                 2.0,
