@@ -4,4 +4,5 @@
 //! discretized solver never import each other (tests/layering.rs checks it).
 
 pub mod closed_form;
+pub mod cycle;
 pub mod params;
