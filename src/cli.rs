@@ -25,10 +25,11 @@ use crate::kernel::params::{Compact, Domain, ParamError, Unit, parse_number};
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::problems::inputs::{Inputs, Model};
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::twin_beams::closed_form::BeamTheory;
-use crate::problems::{BeamParam, ModelKind, Param, PlateParam, UnknownParam};
+use crate::problems::{BeamParam, LapParam, ModelKind, Param, PlateParam, UnknownParam};
 use crate::report::figure::{self, FigureError};
-use crate::report::rows::{BeamRow, CycleRow, LoopRow, PlateRow};
+use crate::report::rows::{BeamRow, CycleRow, LapLoopRow, LapRow, LoopRow, PlateRow};
 use crate::report::table::{TableFormat, write_json, write_table, write_table_after};
 use crate::report::{self, json, text};
 use crate::study::curves::{self, RangeError, Samples, Spacing};
@@ -96,19 +97,23 @@ pub enum Command {
         #[arg(long)]
         continuum: bool,
     },
+    /// Clamped double-lap joint at one force: F_1 (and where), F_2, F_gross, Delta and both
+    /// sliding zones for both laws, regimes.
+    Lap(PointArgs),
     /// Tables over a parameter range, as CSV or JSON.
     #[command(subcommand)]
     Sweep(SweepCommand),
     /// The value of one parameter at which a quantity takes a target value (a certified root).
     ///
-    /// Quantities: beam w(L) X ratio F_1 D zeta; plate u(L) X_r ratio (ratio: regularized over
-    /// Coulomb, e.g. ratio=1.01 for "within 1 % of Coulomb"). The parameter's whole accepted range
+    /// Quantities: beam w(L) X ratio F_1 D zeta; plate u(L) X_r ratio; lap Delta a d ratio F_1 D
+    /// zeta (ratio: regularized over Coulomb, e.g. ratio=1.01 for "within 1 % of Coulomb"). The parameter's whole accepted range
     /// is searched unless --from/--to narrow it; every root is listed, and none is an error.
     Solve {
         /// Which benchmark.
         #[arg(value_enum)]
         model: ModelKind,
-        /// The parameter to solve for (beam: L b h E P mu KT F; plate: L tp E nu mu P KT).
+        /// The parameter to solve for (beam: L b h E P mu KT F; plate: L tp E nu mu P KT; lap: L b
+        /// t1 t2 E1 E2 P mu KT F).
         #[arg(long, value_name = "NAME")]
         vary: String,
         /// The target, QUANTITY=VALUE (e.g. ratio=1.01, w(L)=0.05, X_r=9.5).
@@ -149,15 +154,16 @@ pub enum Command {
             requires = "kn"
         )]
         nu: Option<f64>,
-        /// Instead of the table: the smallest K_T for which the regularized w(L) (beams) or u(L)
-        /// (plate) is within T of Coulomb (1% or 0.01), and each FE code's setting for it.
+        /// Instead of the table: the smallest K_T for which the regularized w(L) (beams), u(L)
+        /// (plate) or Delta (lap) is within T of Coulomb (1% or 0.01), and each FE code's setting
+        /// for it.
         #[arg(long, value_name = "T", conflicts_with_all = ["kn", "nu"], allow_hyphen_values = true)]
         tolerance: Option<String>,
         /// With --tolerance: T of what. coulomb: of the Coulomb answer (K_T -> infinity);
         /// current: of the current K_T's answer (the K_T interval around it).
         #[arg(long, value_enum, value_name = "REF", default_value_t = ToleranceOf::Coulomb, requires = "tolerance")]
         of: ToleranceOf,
-        /// With --tolerance, beams: lowest tip force checked (N; default: the preset's F).
+        /// With --tolerance, beams and lap: lowest force checked (N; default: the preset's F).
         #[arg(
             long,
             value_name = "A",
@@ -165,7 +171,7 @@ pub enum Command {
             requires = "tolerance"
         )]
         from: Option<f64>,
-        /// With --tolerance, beams: highest tip force checked (N; default: the preset's F).
+        /// With --tolerance, beams and lap: highest force checked (N; default: the preset's F).
         #[arg(
             long,
             value_name = "B",
@@ -177,7 +183,8 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
         format: ReportFormat,
     },
-    /// Twin beams cycled between +FA and -FA: loop (one beam), dissipation (both beams), damping.
+    /// Twin beams (default) or the lap joint (a lap preset) cycled between +FA and -FA: loop,
+    /// dissipation, damping.
     Cycle {
         /// Amplitude F_a (N).
         #[arg(long, value_name = "FA", allow_negative_numbers = true)]
@@ -340,7 +347,8 @@ pub struct InputArgs {
     /// Bundled or user preset name, or a path to a TOML file.
     #[arg(long, value_name = "P")]
     pub preset: Option<String>,
-    /// Set a parameter, e.g. KT=120 (beam: L b h E nu P mu KT F; plate: L tp E nu mu P KT).
+    /// Set a parameter, e.g. KT=120 (beam: L b h E nu P mu KT F; plate: L tp E nu mu P KT; lap:
+    /// L b t1 t2 E1 E2 P mu KT F).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub assignments: Vec<String>,
     /// Beam theory of the twin beams' deflection (default: the preset's, else the paper's
@@ -404,8 +412,8 @@ pub enum SweepCommand {
         #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
         format: TableFormat,
     },
-    /// Twin beams cycled at amplitudes F_a from F0 to F1 (N): dissipation (both beams) and damping
-    /// per cycle.
+    /// Twin beams (default) or the lap joint (a lap preset) cycled at amplitudes F_a from F0 to F1
+    /// (N): dissipation and damping per cycle.
     Cycle {
         /// First amplitude (N).
         #[arg(long, value_name = "F0", allow_negative_numbers = true)]
@@ -422,6 +430,9 @@ pub enum SweepCommand {
         #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
         format: TableFormat,
     },
+    /// Double-lap joint over a range of forces F (N, up to F_gross), linearly spaced (replaces the
+    /// preset's F), or of any parameter with --vary.
+    Lap(LapSweepArgs),
     /// Squeezed plate over a range of K_T (MPa/mm), logarithmically spaced unless --linear, or of
     /// any parameter with --vary NAME --from A --to B.
     Plate {
@@ -452,6 +463,31 @@ pub enum SweepCommand {
         #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
         format: TableFormat,
     },
+}
+
+/// How sweep values are spaced; the default is logarithmic for K_T, linear for the others.
+#[derive(Debug, Args)]
+pub struct LapSweepArgs {
+    /// The parameter to vary: L b t1 t2 E1 E2 P mu KT F (default F). Columns: the parameter's
+    /// then those of the F sweep; for F, the F sweep's own.
+    #[arg(long, value_name = "NAME")]
+    vary: Option<String>,
+    /// First value of the varied parameter (F: N, at most F_gross).
+    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    from: f64,
+    /// Last value.
+    #[arg(long, value_name = "B", allow_negative_numbers = true)]
+    to: f64,
+    /// Number of rows, both ends included (2 to 100000000; 1 when --from = --to).
+    #[arg(long, value_name = "N", value_parser = parse_count, allow_negative_numbers = true)]
+    points: u64,
+    #[command(flatten)]
+    spacing: SpacingArgs,
+    #[command(flatten)]
+    inputs: InputArgs,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
+    format: TableFormat,
 }
 
 /// How sweep values are spaced; the default is logarithmic for K_T, linear for the others.
@@ -897,6 +933,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 )?;
             }
         }
+        Some(Command::Lap(args)) => {
+            let (name, joint, force) = load_lap(&args.inputs, "lap")?;
+            match args.format {
+                ReportFormat::Text => out.write_all(text::lap(&name, &joint, force).as_bytes())?,
+                ReportFormat::Json => write_json(out, &json::lap(&name, &joint, force))?,
+            }
+        }
+        Some(Command::Sweep(SweepCommand::Lap(args))) => run_lap_sweep(out, args)?,
         Some(Command::Sweep(SweepCommand::Plate {
             kt_from,
             kt_to,
@@ -1011,10 +1055,20 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             inputs,
             format,
         })) => {
-            let (beams, amplitudes) =
-                beams_over_forces(inputs, *from, *to, *points, "sweep cycle")?;
-            let rows = curves::cycle_sweep(beams, amplitudes).map_err(force_range_error)?;
-            write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
+            let amplitudes =
+                curves::force_samples(*from, *to, *points).map_err(force_range_error)?;
+            match load_any(inputs, ModelKind::Beam)?.1 {
+                Model::Beam { beams, .. } => {
+                    let rows = curves::cycle_sweep(beams, amplitudes).map_err(force_range_error)?;
+                    write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
+                }
+                Model::Lap { joint, .. } => {
+                    let rows = crate::study::lap::lap_cycle_sweep(joint, amplitudes)
+                        .map_err(force_range_error)?;
+                    write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
+                }
+                Model::Plate(_) => return Err(plate_has_no_cycle("sweep cycle")),
+            }
         }
         Some(Command::Presets) => {
             let dir = preset::user_preset_dir();
@@ -1169,6 +1223,13 @@ fn build_deck(model: ModelKind, deck: &DeckArgs, command: &str) -> Result<String
             let path = deck::LoadPath { force_step };
             deck::beam_deck_on_path(&beams, &loads, deck.mesh, slope, path)
         }
+        (_, Model::Lap { .. }) => {
+            return Err(CliError::Invalid(
+                "deck ccx lap: the lap joint's CalculiX deck is not built yet (issue 24); \
+                 `microslip lap` gives the closed forms to compare an FE run with"
+                    .to_string(),
+            ));
+        }
         (_, Model::Plate(plate)) => {
             if deck.loads.is_some() {
                 return Err(CliError::Usage(
@@ -1233,21 +1294,6 @@ fn run_bench(
     )
 }
 
-/// The twin beams of `inputs` and a force range `--from`, `--to`, `--points` (a sweep over F or
-/// over the cycle amplitude F_a): the range is checked before the preset is read. `command` names
-/// the subcommand in errors.
-fn beams_over_forces(
-    inputs: &InputArgs,
-    from: f64,
-    to: f64,
-    points: u64,
-    command: &str,
-) -> Result<(TwinBeams, Samples), CliError> {
-    let forces = curves::force_samples(from, to, points).map_err(force_range_error)?;
-    let (_, beams, _) = load_beams(inputs, command)?;
-    Ok((beams, forces))
-}
-
 /// A sweep over `param`: its column (named with its unit, `mu`, `L_mm`) first, then the rows.
 fn write_varied<R: serde::Serialize + Default>(
     out: &mut impl Write,
@@ -1310,6 +1356,13 @@ fn run_compare(
     let source: Vec<String> = results.iter().map(|p| p.display().to_string()).collect();
     let source = source.join(", ");
     match model {
+        ModelKind::Lap => {
+            return Err(CliError::Invalid(
+                "compare lap: reading FE results of the lap joint is not built yet (issue 24); \
+                 compare Delta with `microslip lap` by hand"
+                    .to_string(),
+            ));
+        }
         ModelKind::Beam => {
             let [path] = results else {
                 return Err(CliError::Flag {
@@ -1603,6 +1656,52 @@ fn load_plate(args: &InputArgs, command: &str) -> Result<(String, SqueezedPlate)
     Ok((name, plate))
 }
 
+/// The lap joint and force of `args` (a preset of another problem is refused by name).
+fn load_lap(args: &InputArgs, command: &str) -> Result<(String, LapJoint, JointForce), CliError> {
+    let (name, model) = load(args, ModelKind::Lap, command)?;
+    let (joint, force) = model
+        .into_lap()
+        .map_err(|found| wrong_model(args, found, ModelKind::Lap, command))?;
+    Ok((name, joint, force))
+}
+
+/// `cycle` or `sweep cycle` given the plate, which has no load to cycle.
+fn plate_has_no_cycle(command: &str) -> CliError {
+    CliError::Invalid(format!(
+        "{command}: the squeezed plate has no load to cycle (its pressure is fixed); use a beam or \
+         lap preset"
+    ))
+}
+
+/// `microslip sweep lap`: over F (rows of the F sweep) or any other parameter.
+fn run_lap_sweep(out: &mut impl Write, args: &LapSweepArgs) -> Result<(), CliError> {
+    use crate::study::lap::{lap_force_sweep, lap_param_sweep};
+    let varied: LapParam = args.vary.as_deref().unwrap_or("F").parse()?;
+    let param = Param::Lap(varied);
+    let values = Samples::of_param(
+        param,
+        args.from,
+        args.to,
+        args.points,
+        args.spacing.spacing(param),
+    )
+    .map_err(force_range_error)?;
+    let (_, joint, force) = load_lap(&args.inputs, "sweep lap")?;
+    if varied == LapParam::Force {
+        let rows = lap_force_sweep(joint, values).map_err(force_range_error)?;
+        write_table(out, args.format, rows.map(|r| LapRow::from(&r)))?;
+    } else {
+        let rows = lap_param_sweep(joint, force, varied, values).map_err(force_range_error)?;
+        write_varied(
+            out,
+            args.format,
+            param,
+            rows.map(|(v, r)| (v, LapRow::from(&r))),
+        )?;
+    }
+    Ok(())
+}
+
 /// A preset of the problem `found` given to a command for `wanted`.
 fn wrong_model(args: &InputArgs, found: ModelKind, wanted: ModelKind, command: &str) -> CliError {
     CliError::WrongModel {
@@ -1651,6 +1750,11 @@ fn apply_and_validate(
             Inputs::Plate(_) => {
                 return Err(CliError::Theory(
                     "--beam-theory applies to the twin beams, not the plate".to_string(),
+                ));
+            }
+            Inputs::Lap { .. } => {
+                return Err(CliError::Theory(
+                    "--beam-theory applies to the twin beams, not the lap joint".to_string(),
                 ));
             }
         }
@@ -1820,13 +1924,39 @@ fn run_cycle(
     format: CycleFormat,
 ) -> Result<(), CliError> {
     let amplitude = check_flag("--amplitude", amplitude, Domain::FORCE, Unit::Newton)?;
-    let amplitude = TipForce::new(amplitude)?;
     let points_error = |error| CliError::Range {
         error,
         flags: ["", "", "--points"],
     };
     curves::check_points(points).map_err(points_error)?;
-    let (name, beams, _) = load_beams(inputs, "cycle")?;
+    let (name, model) = load_any(inputs, ModelKind::Beam)?;
+    let beams = match model {
+        Model::Beam { beams, .. } => beams,
+        Model::Lap { joint, .. } => {
+            let amplitude = joint.force(amplitude).map_err(|e| CliError::Flag {
+                flag: "--amplitude",
+                value: amplitude,
+                allowed: e
+                    .to_string()
+                    .split_once(": ")
+                    .map_or(String::new(), |(_, why)| why.to_string()),
+            })?;
+            match format {
+                CycleFormat::Text => {
+                    out.write_all(text::lap_cycle(&name, &joint, amplitude).as_bytes())?
+                }
+                CycleFormat::Json => write_json(out, &json::lap_cycle(&name, &joint, amplitude))?,
+                CycleFormat::Csv => {
+                    let points = crate::study::lap::lap_cycle_loop(&joint, amplitude, points)
+                        .map_err(points_error)?;
+                    write_table(out, TableFormat::Csv, points.map(|p| LapLoopRow::from(&p)))?;
+                }
+            }
+            return Ok(());
+        }
+        Model::Plate(_) => return Err(plate_has_no_cycle("cycle")),
+    };
+    let amplitude = TipForce::new(amplitude)?;
     match format {
         CycleFormat::Text => out.write_all(text::cycle(&name, &beams, amplitude).as_bytes())?,
         CycleFormat::Json => write_json(out, &json::cycle(&name, &beams, amplitude))?,
@@ -1886,10 +2016,36 @@ fn run_kt_tolerance(
             }
             .map_err(|e| CliError::Invalid(e.to_string()))?
         }
+        Model::Lap { joint, force } => {
+            let f = force.newtons();
+            let range = [
+                check_flag("--from", from.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
+                check_flag("--to", to.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
+            ];
+            if range[0] > range[1] {
+                return Err(CliError::Flag {
+                    flag: "--to",
+                    value: range[1],
+                    allowed: format!(
+                        "must not be below --from = {} N (the forces checked run from --from up to --to)",
+                        Compact(range[0])
+                    ),
+                });
+            }
+            match of {
+                ToleranceOf::Coulomb => {
+                    tolerance::lap_stiffness_for_tolerance(&joint, range, tol, element)
+                }
+                ToleranceOf::Current => {
+                    tolerance::lap_stiffness_near_current(&joint, range, tol, element)
+                }
+            }
+            .map_err(|e| CliError::Invalid(e.to_string()))?
+        }
         Model::Plate(plate) => {
             if from.is_some() || to.is_some() {
                 return Err(CliError::Usage(
-                    "--from/--to are tip forces of the twin beams; the plate has none",
+                    "--from/--to are forces of the twin beams and the lap joint; the plate has none",
                 ));
             }
             match of {

@@ -6,6 +6,7 @@
 //! charts exist is [`view`].
 
 pub mod family;
+mod lap;
 pub(crate) mod pins;
 pub mod vary;
 pub mod view;
@@ -357,7 +358,7 @@ pub fn build(
     let mut overlays: Vec<(SeriesRole, &str, Series)> = Vec::new();
     let plot = match *model {
         Model::Beam { beams, force } => match chart {
-            AnyChart::Plate(_) => None,
+            AnyChart::Plate(_) | AnyChart::Lap(_) => None,
             AnyChart::Beam(chart) => {
                 if chart == BeamChart::Deflection {
                     if let Some(points) = measured {
@@ -376,7 +377,7 @@ pub fn build(
             }
         },
         Model::Plate(plate) => match chart {
-            AnyChart::Beam(_) => None,
+            AnyChart::Beam(_) | AnyChart::Lap(_) => None,
             AnyChart::Plate(chart) => {
                 if let (PlateChart::Displacement, Some(e)) = (chart, external) {
                     // The chart's x axis is log10 K_T.
@@ -385,6 +386,10 @@ pub fn build(
                 }
                 plate_plot(&plate, chart)
             }
+        },
+        Model::Lap { joint, force } => match chart {
+            AnyChart::Beam(_) | AnyChart::Plate(_) => None,
+            AnyChart::Lap(chart) => lap::lap_plot(&joint, force, chart, force_span),
         },
     };
     // Every range above lies in the accepted domain, so a chart is always built; should one not be,
@@ -827,8 +832,11 @@ pub fn numeric_points(
             Model::Plate(_),
             AnyChart::Plate(PlateChart::SlipBoundary | PlateChart::ContactPressure),
         )
-        | (Model::Beam { .. }, AnyChart::Plate(_))
-        | (Model::Plate(_), AnyChart::Beam(_)) => Ok(None),
+        | (Model::Beam { .. }, AnyChart::Plate(_) | AnyChart::Lap(_))
+        | (Model::Plate(_), AnyChart::Beam(_) | AnyChart::Lap(_))
+        | (Model::Lap { .. }, AnyChart::Beam(_) | AnyChart::Plate(_)) => Ok(None),
+        // The lap joint's finite-element overlays come with its discretized solver.
+        (Model::Lap { .. }, AnyChart::Lap(_)) => Ok(None),
     }
 }
 

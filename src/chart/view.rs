@@ -3,7 +3,7 @@
 //! name them the same way. A chart is never an index. Which one the TUI shows, and the table it
 //! can show instead, are the TUI's (`tui/views.rs`).
 
-use crate::problems::{BeamParam, ModelKind, Param, PlateParam};
+use crate::problems::{BeamParam, LapParam, ModelKind, Param, PlateParam};
 
 /// The twin beams' charts, in the order the TUI cycles through them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -29,6 +29,21 @@ pub enum PlateChart {
     SlipBoundary,
     /// Contact pressure ratio P_r(x)/P along the half-plate.
     ContactPressure,
+}
+
+/// The double-lap joint's charts, in the order the TUI cycles through them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum LapChart {
+    /// Joint displacement Delta against F, for K_T/5, K_T, 5 K_T and Coulomb.
+    Displacement,
+    /// The sliding zones a (from x = 0) and d (from x = L) against F.
+    Zones,
+    /// Interface shear tau(x) along the overlap at F.
+    Shear,
+    /// The hysteresis loop of Delta for a force cycling between +F and -F.
+    Loop,
+    /// Dissipation per cycle D against the amplitude F_a.
+    Dissipation,
 }
 
 /// The charts of one model.
@@ -147,13 +162,66 @@ impl ChartSet for PlateChart {
     }
 }
 
-/// A chart of either model, as `microslip plot CHART` names it.
+impl ChartSet for LapChart {
+    const ALL: &'static [Self] = &[
+        LapChart::Displacement,
+        LapChart::Zones,
+        LapChart::Shear,
+        LapChart::Loop,
+        LapChart::Dissipation,
+    ];
+
+    fn title(self) -> &'static str {
+        match self {
+            LapChart::Displacement => "Delta vs F",
+            LapChart::Zones => "a, d vs F",
+            LapChart::Shear => "tau(x) at F",
+            LapChart::Loop => "loop +-F",
+            LapChart::Dissipation => "D vs F_a",
+        }
+    }
+
+    fn key(self) -> &'static str {
+        match self {
+            LapChart::Displacement => "delta-vs-f",
+            LapChart::Zones => "zones-vs-f",
+            LapChart::Shear => "lap-tau",
+            LapChart::Loop => "lap-loop",
+            LapChart::Dissipation => "lap-d-vs-fa",
+        }
+    }
+
+    fn x_param(self) -> Option<Param> {
+        match self {
+            LapChart::Displacement | LapChart::Zones => Some(Param::Lap(LapParam::Force)),
+            LapChart::Shear | LapChart::Loop | LapChart::Dissipation => None,
+        }
+    }
+
+    fn load_axis(self) -> bool {
+        match self {
+            LapChart::Displacement | LapChart::Zones | LapChart::Dissipation => true,
+            LapChart::Shear | LapChart::Loop => false,
+        }
+    }
+
+    fn spans_decades(self) -> bool {
+        match self {
+            LapChart::Dissipation => true,
+            LapChart::Displacement | LapChart::Zones | LapChart::Shear | LapChart::Loop => false,
+        }
+    }
+}
+
+/// A chart of any model, as `microslip plot CHART` names it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum AnyChart {
     /// A chart of the twin beams.
     Beam(BeamChart),
     /// A chart of the plate.
     Plate(PlateChart),
+    /// A chart of the lap joint.
+    Lap(LapChart),
 }
 
 impl AnyChart {
@@ -163,6 +231,7 @@ impl AnyChart {
         match self {
             AnyChart::Beam(c) => c.x_param(),
             AnyChart::Plate(c) => c.x_param(),
+            AnyChart::Lap(c) => c.x_param(),
         }
     }
 
@@ -171,6 +240,7 @@ impl AnyChart {
         match self {
             AnyChart::Beam(c) => c.load_axis(),
             AnyChart::Plate(c) => c.load_axis(),
+            AnyChart::Lap(c) => c.load_axis(),
         }
     }
 
@@ -179,10 +249,12 @@ impl AnyChart {
         match self {
             AnyChart::Beam(c) => c.spans_decades(),
             AnyChart::Plate(c) => c.spans_decades(),
+            AnyChart::Lap(c) => c.spans_decades(),
         }
     }
 
-    /// Every chart: the beams', then the plate's (each model's in cycling order).
+    /// Every chart: the beams', the plate's, then the lap joint's (each model's in cycling
+    /// order).
     pub const ALL: &'static [AnyChart] = &[
         AnyChart::Beam(BeamChart::Deflection),
         AnyChart::Beam(BeamChart::SlipBoundary),
@@ -192,6 +264,11 @@ impl AnyChart {
         AnyChart::Plate(PlateChart::Displacement),
         AnyChart::Plate(PlateChart::SlipBoundary),
         AnyChart::Plate(PlateChart::ContactPressure),
+        AnyChart::Lap(LapChart::Displacement),
+        AnyChart::Lap(LapChart::Zones),
+        AnyChart::Lap(LapChart::Shear),
+        AnyChart::Lap(LapChart::Loop),
+        AnyChart::Lap(LapChart::Dissipation),
     ];
 
     /// Every chart, as [`AnyChart::ALL`].
@@ -204,6 +281,7 @@ impl AnyChart {
         match self {
             AnyChart::Beam(c) => c.key(),
             AnyChart::Plate(c) => c.key(),
+            AnyChart::Lap(c) => c.key(),
         }
     }
 
@@ -212,6 +290,7 @@ impl AnyChart {
         match self {
             AnyChart::Beam(c) => c.title(),
             AnyChart::Plate(c) => c.title(),
+            AnyChart::Lap(c) => c.title(),
         }
     }
 
@@ -225,6 +304,7 @@ impl AnyChart {
         match self {
             AnyChart::Beam(_) => ModelKind::Beam,
             AnyChart::Plate(_) => ModelKind::Plate,
+            AnyChart::Lap(_) => ModelKind::Lap,
         }
     }
 }
@@ -258,13 +338,18 @@ mod tests {
         // ALL holds each model's charts in their own order.
         let beams = AnyChart::all().filter_map(|c| match c {
             AnyChart::Beam(b) => Some(b),
-            AnyChart::Plate(_) => None,
+            AnyChart::Plate(_) | AnyChart::Lap(_) => None,
         });
         assert!(beams.eq(BeamChart::ALL.iter().copied()));
         let plates = AnyChart::all().filter_map(|c| match c {
             AnyChart::Plate(p) => Some(p),
-            AnyChart::Beam(_) => None,
+            AnyChart::Beam(_) | AnyChart::Lap(_) => None,
         });
         assert!(plates.eq(PlateChart::ALL.iter().copied()));
+        let laps = AnyChart::all().filter_map(|c| match c {
+            AnyChart::Lap(p) => Some(p),
+            AnyChart::Beam(_) | AnyChart::Plate(_) => None,
+        });
+        assert!(laps.eq(LapChart::ALL.iter().copied()));
     }
 }

@@ -222,6 +222,27 @@ impl DeckHeader {
                     state.regime().label()
                 );
             }
+            Model::Lap { joint, .. } => {
+                let _ = writeln!(
+                    text,
+                    "** Expected from the closed forms (shear lag):\n\
+                     **   F (N) | Delta Coulomb (mm) | Delta regularized (mm) | a (mm) | d (mm) | regime"
+                );
+                for &f in &self.loads {
+                    let force = joint.clamped_force(f);
+                    let state = joint.regularized(force);
+                    let _ = writeln!(
+                        text,
+                        "**   {} | {} | {} | {} | {} | {}",
+                        number(f),
+                        number(joint.coulomb(force).joint_displacement()),
+                        number(state.joint_displacement()),
+                        number(state.slide_at_inner_end()),
+                        number(state.slide_at_cover_ends()),
+                        state.regime().label()
+                    );
+                }
+            }
         }
         text
     }

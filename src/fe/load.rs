@@ -147,7 +147,12 @@ fn plate_run(run: &CcxRun) -> Result<Vec<PlateFePoint>, ResultsError> {
     run.plate_point().map(|p| vec![p])
 }
 
-/// FE points of either model.
+/// Why FE results of the lap joint are refused: its decks and their reader are issue 24's next
+/// step, and a file read as another problem's points would compare nonsense.
+const LAP_NOT_YET: &str = "FE results of the lap joint cannot be read yet (its CalculiX decks \
+                           are not built): compare Delta against `microslip lap` by hand";
+
+/// FE points of any model.
 #[derive(Debug, Clone, PartialEq)]
 pub enum AnyLoaded {
     /// Twin-beam points.
@@ -174,11 +179,13 @@ pub fn any_results(
             ModelKind::Plate => {
                 ccx_points(path, header, &deck_text, plate_run).map(AnyLoaded::Plate)
             }
+            ModelKind::Lap => Err(fail(path, LAP_NOT_YET)),
         };
     }
     match csv_model {
         ModelKind::Beam => beam_results(path, deck).map(AnyLoaded::Beam),
         ModelKind::Plate => plate_results(path, deck).map(AnyLoaded::Plate),
+        ModelKind::Lap => Err(fail(path, LAP_NOT_YET)),
     }
 }
 

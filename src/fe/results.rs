@@ -271,6 +271,11 @@ impl CcxRun<'_> {
         let set = match self.header.inputs {
             Inputs::Beam { .. } => sets::BEAM_LOWER_FACE,
             Inputs::Plate(_) => sets::PLATE_FACE,
+            Inputs::Lap { .. } => {
+                return Err(ResultsError::Missing(
+                    "no interface set: lap joint decks are not built yet".into(),
+                ));
+            }
         };
         let nodes = parse_nodes(self.deck)?;
         let ids = parse_node_sets(self.deck).remove(set).unwrap_or_default();

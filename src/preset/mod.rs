@@ -167,6 +167,10 @@ const BUNDLED: &[(&str, &str)] = &[
         "paper-plate",
         include_str!("../../presets/paper-plate.toml"),
     ),
+    (
+        "lap-aluminium",
+        include_str!("../../presets/lap-aluminium.toml"),
+    ),
 ];
 
 /// The bundled preset that opens a model by default (the paper's data set).

@@ -134,6 +134,10 @@ impl Preset {
                     (Inputs::Plate(_), _) => Err(PresetError::Theory(format!(
                         "{THEORY_KEY} applies to the twin beams, not the plate"
                     ))),
+                    (Inputs::Lap { .. }, _) => Err(PresetError::Theory(format!(
+                        "{THEORY_KEY} applies to the twin beams, not the lap joint (its plates \
+                         are bars: no bending)"
+                    ))),
                 },
                 "description" => match value.as_str() {
                     Some(text) => {

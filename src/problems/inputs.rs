@@ -3,9 +3,12 @@
 //! TUI all edit an [`Inputs`] and validate it through the checked constructors.
 
 use crate::kernel::params::ParamError;
+use crate::problems::lap::closed_form::{JointForce, LapJoint, LapParams};
 use crate::problems::plate::closed_form::{PlateParams, SqueezedPlate};
 use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams, TwinBeamsParams};
-use crate::problems::{BeamParam, ModelKind, Param, Quantity, UnknownParam, plate, twin_beams};
+use crate::problems::{
+    BeamParam, LapParam, ModelKind, Param, Quantity, UnknownParam, lap, plate, twin_beams,
+};
 
 /// Unvalidated inputs of one model, as read from a preset, flags or key presses.
 ///
@@ -34,6 +37,13 @@ pub enum Inputs {
     },
     /// Squeezed plate.
     Plate(PlateParams),
+    /// Double-lap joint and the force through it F (N).
+    Lap {
+        /// Structure and interface.
+        structure: LapParams,
+        /// Force through the joint (N).
+        force: f64,
+    },
 }
 
 /// Validated inputs: what the physics core accepts.
@@ -48,6 +58,13 @@ pub enum Model {
     },
     /// Squeezed plate.
     Plate(SqueezedPlate),
+    /// Double-lap joint at a force.
+    Lap {
+        /// The joint.
+        joint: LapJoint,
+        /// The force through it.
+        force: JointForce,
+    },
 }
 
 /// The interface data common to both models: what the K_T comparisons need.
@@ -85,11 +102,21 @@ impl Model {
         }
     }
 
+    /// The lap joint and its force, when this is the lap-joint problem (see
+    /// [`Model::into_beams`]).
+    pub fn into_lap(self) -> Result<(LapJoint, JointForce), ModelKind> {
+        match self {
+            Model::Lap { joint, force } => Ok((joint, force)),
+            other => Err(other.kind()),
+        }
+    }
+
     /// Which model this is.
     pub fn kind(&self) -> ModelKind {
         match self {
             Model::Beam { .. } => ModelKind::Beam,
             Model::Plate(_) => ModelKind::Plate,
+            Model::Lap { .. } => ModelKind::Lap,
         }
     }
 
@@ -101,6 +128,10 @@ impl Model {
                 force: force.newtons(),
             },
             Model::Plate(plate) => Inputs::Plate(plate.params()),
+            Model::Lap { joint, force } => Inputs::Lap {
+                structure: joint.params(),
+                force: force.newtons(),
+            },
         }
     }
 
@@ -123,16 +154,19 @@ impl Model {
         match self {
             Model::Beam { beams, force } => twin_beams::quantity(beams, *force, quantity),
             Model::Plate(plate) => plate::quantity(plate, quantity),
+            Model::Lap { joint, force } => lap::quantity(joint, *force, quantity),
         }
     }
 
     /// The load at which the regimes change, the scale the problem's load parameter steps and
-    /// spans charts in: F_thre for the beams; None for a problem without a load parameter
+    /// spans charts in: F_thre for the beams, F_gross for the lap joint (also its force's upper
+    /// bound); None for a problem without a load parameter
     /// ([`crate::problems::Description::load`]).
     pub fn regime_scale(&self) -> Option<f64> {
         match self {
             Model::Beam { beams, .. } => Some(beams.threshold_force()),
             Model::Plate(_) => None,
+            Model::Lap { joint, .. } => Some(joint.gross_slip_force()),
         }
     }
 
@@ -161,12 +195,25 @@ impl Model {
                     poisson: Some(p.poisson),
                 }
             }
+            Model::Lap { joint, .. } => {
+                let p = joint.params();
+                // The inner plate's modulus: the member every FE model of the joint meshes.
+                InterfaceData {
+                    length: p.length,
+                    friction: p.friction,
+                    pressure: p.pressure,
+                    modulus: p.inner_modulus,
+                    stiffness: p.tangential_stiffness,
+                    poisson: None,
+                }
+            }
         }
     }
 }
 
 impl Inputs {
-    /// The paper's data set for `kind` (beams at F = 100 N).
+    /// The paper's data set for `kind` (beams at F = 100 N), the bundled aluminium joint at F =
+    /// 3000 N for the lap joint (both ends sliding).
     pub fn paper(kind: ModelKind) -> Inputs {
         match kind {
             ModelKind::Beam => Inputs::Beam {
@@ -174,6 +221,10 @@ impl Inputs {
                 force: 100.0,
             },
             ModelKind::Plate => Inputs::Plate(PlateParams::PAPER),
+            ModelKind::Lap => Inputs::Lap {
+                structure: LapParams::ALUMINIUM,
+                force: 3000.0,
+            },
         }
     }
 
@@ -182,6 +233,7 @@ impl Inputs {
         match self {
             Inputs::Beam { .. } => ModelKind::Beam,
             Inputs::Plate(_) => ModelKind::Plate,
+            Inputs::Lap { .. } => ModelKind::Lap,
         }
     }
 
@@ -190,8 +242,12 @@ impl Inputs {
             (Inputs::Beam { force, .. }, Param::Beam(BeamParam::Force)) => Some(force),
             (Inputs::Beam { structure, .. }, Param::Beam(p)) => structure.value_mut(p),
             (Inputs::Plate(s), Param::Plate(p)) => Some(s.value_mut(p)),
+            (Inputs::Lap { force, .. }, Param::Lap(LapParam::Force)) => Some(force),
+            (Inputs::Lap { structure, .. }, Param::Lap(p)) => structure.value_mut(p),
             // A parameter of another problem.
-            (Inputs::Beam { .. }, Param::Plate(_)) | (Inputs::Plate(_), Param::Beam(_)) => None,
+            (Inputs::Beam { .. }, Param::Plate(_) | Param::Lap(_))
+            | (Inputs::Plate(_), Param::Beam(_) | Param::Lap(_))
+            | (Inputs::Lap { .. }, Param::Beam(_) | Param::Plate(_)) => None,
         }
     }
 
@@ -226,6 +282,13 @@ impl Inputs {
                 force: TipForce::new(force)?,
             },
             Inputs::Plate(params) => Model::Plate(SqueezedPlate::new(params)?),
+            Inputs::Lap { structure, force } => {
+                let joint = LapJoint::new(structure)?;
+                Model::Lap {
+                    joint,
+                    force: joint.force(force)?,
+                }
+            }
         })
     }
 

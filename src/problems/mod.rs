@@ -37,6 +37,7 @@ pub mod quantity;
 pub mod stiffness;
 pub mod twin_beams;
 
+pub use lap::params::LapParam;
 pub use plate::params::PlateParam;
 pub use twin_beams::params::BeamParam;
 
@@ -103,6 +104,8 @@ problem_list! {
     Beam => twin_beams,
     /// Squeezed plate (paper section 2.2).
     Plate => plate,
+    /// Clamped double-lap joint (issue 24).
+    Lap => lap,
 }
 
 impl ModelKind {
@@ -235,6 +238,8 @@ pub enum Param {
     Beam(BeamParam),
     /// A squeezed-plate parameter.
     Plate(PlateParam),
+    /// A double-lap joint parameter.
+    Lap(LapParam),
 }
 
 impl Param {
@@ -243,6 +248,7 @@ impl Param {
         match self {
             Param::Beam(p) => p.spec(),
             Param::Plate(p) => p.spec(),
+            Param::Lap(p) => p.spec(),
         }
     }
 
@@ -261,6 +267,7 @@ impl Param {
         match self {
             Param::Beam(_) => ModelKind::Beam,
             Param::Plate(_) => ModelKind::Plate,
+            Param::Lap(_) => ModelKind::Lap,
         }
     }
 

@@ -13,6 +13,10 @@ pub enum Quantity {
     MicroEnd,
     /// The response under the regularized law over that under plain Coulomb (-).
     Ratio,
+    /// Length of the sliding zone from x = 0 (mm): the lap joint's a, from the inner plate's end.
+    SlideFromStart,
+    /// Length of the sliding zone from x = L (mm): the lap joint's d, from the covers' ends.
+    SlideFromEnd,
     /// The force at which macroslip first appears (N).
     FirstMacroslipForce,
     /// Dissipation per load cycle of the current amplitude, regularized law (N mm).

@@ -8,12 +8,14 @@ use serde_json::Value;
 use super::point::beam::BeamReport;
 use super::point::cycle::CycleReport;
 use super::point::fit::FitReport;
+use super::point::lap::{LapCycleReport, LapReport};
 use super::point::plate::{PlateReport, StripTheory};
 use super::point::solve::SolveReport;
 use super::point::stiffness::StiffnessReport;
 use super::point::to_json;
 
 use crate::kernel::params::Unit;
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::study::curves::StiffnessComparison;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
@@ -28,6 +30,16 @@ pub(crate) fn suffixed(key: &str, unit: Unit) -> String {
 /// One cycle's summary for both laws.
 pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> Value {
     to_json(&CycleReport::new(preset, beams, amplitude))
+}
+
+/// Lap-joint report at one force.
+pub fn lap(preset: &str, joint: &LapJoint, force: JointForce) -> Value {
+    to_json(&LapReport::new(preset, joint, force))
+}
+
+/// One cycle of the lap joint, both laws.
+pub fn lap_cycle(preset: &str, joint: &LapJoint, amplitude: JointForce) -> Value {
+    to_json(&LapCycleReport::new(preset, joint, amplitude))
 }
 
 /// Twin-beam report at one force.

@@ -7,6 +7,7 @@ use serde::Serialize;
 
 use crate::chart::{Plot, SeriesKind};
 use crate::study::curves::{BeamPoint, CyclePoint, LoopPoint, PlatePoint};
+use crate::study::lap::LapPoint;
 
 /// One row of `microslip sweep beam`.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
@@ -139,6 +140,79 @@ impl From<&LoopPoint> for LoopRow {
             force: p.force,
             w_coulomb_mm: p.w_coulomb,
             w_regularized_mm: p.w_regularized,
+        }
+    }
+}
+
+/// One row of `microslip sweep lap`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct LapRow {
+    /// Force through the joint (N).
+    #[serde(rename = "F_N")]
+    pub force: f64,
+    /// Coulomb joint displacement (mm).
+    #[serde(rename = "Delta_coulomb_mm")]
+    pub delta_coulomb: f64,
+    /// Regularized joint displacement (mm).
+    #[serde(rename = "Delta_regularized_mm")]
+    pub delta_regularized: f64,
+    /// Regularized sliding zone from x = 0 (mm).
+    #[serde(rename = "a_mm")]
+    pub slide_at_inner_end: f64,
+    /// Regularized sliding zone from x = L (mm).
+    #[serde(rename = "d_mm")]
+    pub slide_at_cover_ends: f64,
+    /// Coulomb sliding zone from x = 0 (mm).
+    #[serde(rename = "a_coulomb_mm")]
+    pub slide_at_inner_end_coulomb: f64,
+    /// Coulomb sliding zone from x = L (mm).
+    #[serde(rename = "d_coulomb_mm")]
+    pub slide_at_cover_ends_coulomb: f64,
+    /// Coulomb regime.
+    pub regime_coulomb: &'static str,
+    /// Regularized regime.
+    pub regime_regularized: &'static str,
+}
+
+impl From<&LapPoint> for LapRow {
+    fn from(p: &LapPoint) -> Self {
+        LapRow {
+            force: p.force,
+            delta_coulomb: p.delta_coulomb,
+            delta_regularized: p.delta_regularized,
+            slide_at_inner_end: p.zones_regularized.0,
+            slide_at_cover_ends: p.zones_regularized.1,
+            slide_at_inner_end_coulomb: p.zones_coulomb.0,
+            slide_at_cover_ends_coulomb: p.zones_coulomb.1,
+            regime_coulomb: p.regime_coulomb.label(),
+            regime_regularized: p.regime_regularized.label(),
+        }
+    }
+}
+
+/// One point of the lap joint's `microslip cycle --format csv` (the loop of Delta, both laws).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct LapLoopRow {
+    /// `unloading` or `reloading`.
+    pub branch: &'static str,
+    /// Force through the joint (N).
+    #[serde(rename = "F_N")]
+    pub force: f64,
+    /// Coulomb joint displacement (mm).
+    #[serde(rename = "Delta_coulomb_mm")]
+    pub delta_coulomb: f64,
+    /// Regularized joint displacement (mm).
+    #[serde(rename = "Delta_regularized_mm")]
+    pub delta_regularized: f64,
+}
+
+impl From<&LoopPoint> for LapLoopRow {
+    fn from(p: &LoopPoint) -> Self {
+        LapLoopRow {
+            branch: p.branch.label(),
+            force: p.force,
+            delta_coulomb: p.w_coulomb,
+            delta_regularized: p.w_regularized,
         }
     }
 }

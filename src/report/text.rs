@@ -5,10 +5,12 @@
 use super::point::beam::BeamReport;
 use super::point::cycle::CycleReport;
 use super::point::fit::FitReport;
+use super::point::lap::{LapCycleReport, LapReport};
 use super::point::plate::PlateReport;
 use super::point::solve::SolveReport;
 use super::point::stiffness::StiffnessReport;
 use crate::numeric::NumericError;
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::plate::ContinuumPlate;
 use crate::study::curves::StiffnessComparison;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
@@ -16,6 +18,16 @@ use crate::{SqueezedPlate, TipForce, TwinBeams};
 /// Twin-beam report at one force.
 pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
     BeamReport::new(preset, beams, force).text()
+}
+
+/// Lap-joint report at one force.
+pub fn lap(preset: &str, joint: &LapJoint, force: JointForce) -> String {
+    LapReport::new(preset, joint, force).text()
+}
+
+/// One cycle of the lap joint, both laws.
+pub fn lap_cycle(preset: &str, joint: &LapJoint, amplitude: JointForce) -> String {
+    LapCycleReport::new(preset, joint, amplitude).text()
 }
 
 /// Squeezed-plate report.

@@ -10,6 +10,7 @@ use crate::kernel::code_defaults::CodeDefault;
 use crate::kernel::params::Compact;
 use crate::kernel::validity::Validity;
 use crate::problems::inputs::Model;
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::twin_beams::cycle::{Cycle, Law};
 use crate::problems::twin_beams::validity::BeamValidity;
 use crate::problems::{BeamParam, Param, PlateParam};
@@ -403,7 +404,7 @@ pub fn beam_param_sweep(
         let point = match model.with_clamped(param, v) {
             Model::Beam { beams, force } => beam_point(&beams, force),
             // `with_clamped` keeps the model's kind.
-            Model::Plate(_) => unreachable!("a beam model changed kind"),
+            Model::Plate(_) | Model::Lap { .. } => unreachable!("a beam model changed kind"),
         };
         (v, point)
     }))
@@ -425,7 +426,7 @@ pub fn plate_param_sweep(
         .map(move |v| (v, plate_point(&plate.with_clamped(param, v)))))
 }
 
-/// The response of `model` (w(L) of the beams, u(L) of the plate, mm) against any one of its
+/// The response of `model` (w(L) of the beams, u(L) of the plate, Delta of the lap joint, mm) against any one of its
 /// parameters: (Coulomb, regularized). The chart "w(L) vs this parameter".
 ///
 /// # Errors
@@ -445,13 +446,18 @@ pub fn response_vs_param(
         (Model::Plate(plate), Param::Plate(p)) => Ok(plate_param_sweep(plate, p, values)?
             .map(|(v, r)| ((v, r.u_coulomb), (v, r.u_regularized)))
             .unzip()),
-        (Model::Beam { .. }, Param::Plate(_)) | (Model::Plate(_), Param::Beam(_)) => {
-            Err(RangeError::Bound {
-                end: RangeEnd::Start,
-                value: f64::NAN,
-                allowed: format!("{param} is a parameter of another problem"),
-            })
+        (Model::Lap { joint, force }, Param::Lap(p)) => {
+            Ok(crate::study::lap::lap_param_sweep(joint, force, p, values)?
+                .map(|(v, r)| ((v, r.delta_coulomb), (v, r.delta_regularized)))
+                .unzip())
         }
+        (Model::Beam { .. }, Param::Plate(_) | Param::Lap(_))
+        | (Model::Plate(_), Param::Beam(_) | Param::Lap(_))
+        | (Model::Lap { .. }, Param::Beam(_) | Param::Plate(_)) => Err(RangeError::Bound {
+            end: RangeEnd::Start,
+            value: f64::NAN,
+            allowed: format!("{param} is a parameter of another problem"),
+        }),
     }
 }
 
@@ -636,6 +642,7 @@ pub fn interface_zones(model: &Model) -> InterfaceZones {
                 ("X_s", "X_r"),
             )
         }
+        Model::Lap { joint, force } => return lap_zones(joint, *force),
     };
     let zones = |regime: Regime, end: f64, inner: Zone| {
         if regime == Regime::Unloaded {
@@ -657,6 +664,51 @@ pub fn interface_zones(model: &Model) -> InterfaceZones {
         length,
         coulomb: zones(coulomb, stick_end, Zone::Stick),
         regularized: zones(regularized, micro_end, Zone::Microslip),
+        boundaries,
+    }
+}
+
+/// The lap joint's zones: sliding from both ends, [0, a] and [L - d, L], sticking (Coulomb) or
+/// elastic (regularized) between; boundaries named `a`, `L-d` (regularized) and `a_C`, `L-d_C`
+/// (Coulomb).
+fn lap_zones(joint: &LapJoint, force: JointForce) -> InterfaceZones {
+    let length = joint.params().length;
+    let row = crate::study::lap::lap_point(joint, force);
+    let spans = |regime: Regime, (a, d): (f64, f64), middle: Zone| {
+        if regime == Regime::Unloaded {
+            return split_at(length, length, Zone::Unloaded, Zone::Unloaded);
+        }
+        [
+            (0.0, a, Zone::Macroslip),
+            (a, length - d, middle),
+            (length - d, length, Zone::Macroslip),
+        ]
+        .into_iter()
+        .filter(|(from, to, _)| to > from)
+        .map(|(from, to, zone)| ZoneSpan { from, to, zone })
+        .collect()
+    };
+    let inside = |at: f64| at > 0.0 && at < length;
+    let (ac, dc) = row.zones_coulomb;
+    let (ar, dr) = row.zones_regularized;
+    let boundaries = [
+        ("a_C", ac, row.regime_coulomb),
+        ("L-d_C", length - dc, row.regime_coulomb),
+        ("a", ar, row.regime_regularized),
+        ("L-d", length - dr, row.regime_regularized),
+    ]
+    .into_iter()
+    .filter(|&(_, at, regime)| regime != Regime::Unloaded && inside(at))
+    .map(|(name, at, _)| ZoneBoundary { name, at })
+    .collect();
+    InterfaceZones {
+        length,
+        coulomb: spans(row.regime_coulomb, row.zones_coulomb, Zone::Stick),
+        regularized: spans(
+            row.regime_regularized,
+            row.zones_regularized,
+            Zone::Microslip,
+        ),
         boundaries,
     }
 }
@@ -724,16 +776,31 @@ pub enum Answer {
         /// Regime.
         regime: Regime,
     },
+    /// The lap joint at the model's force.
+    Lap {
+        /// Force of first sliding F_1 (N).
+        first_slip_force: f64,
+        /// Sliding zones a (from x = 0) and d (from x = L) (mm).
+        zones: (f64, f64),
+        /// Joint displacement Delta (mm).
+        joint_displacement: f64,
+        /// Regime.
+        regime: Regime,
+    },
 }
 
 impl Answer {
-    /// The displacement the benchmark compares: the beams' w(L), the plate's u(L) (mm).
+    /// The displacement the benchmark compares: the beams' w(L), the plate's u(L), the lap
+    /// joint's Delta (mm).
     pub fn response(&self) -> f64 {
         match *self {
             Answer::Beam { tip_deflection, .. } => tip_deflection,
             Answer::Plate {
                 end_displacement, ..
             } => end_displacement,
+            Answer::Lap {
+                joint_displacement, ..
+            } => joint_displacement,
         }
     }
 }
@@ -798,6 +865,16 @@ fn answer_for_stiffness(model: &Model, kt: f64) -> Option<Answer> {
             Answer::Plate {
                 end_displacement: state.end_displacement(),
                 micro_end: state.micro_zone_end(),
+                regime: state.regime(),
+            }
+        }
+        Model::Lap { joint, force } => {
+            let joint = joint.with_tangential_stiffness(kt).ok()?;
+            let state = joint.regularized(*force);
+            Answer::Lap {
+                first_slip_force: joint.first_slip_force(),
+                zones: (state.slide_at_inner_end(), state.slide_at_cover_ends()),
+                joint_displacement: state.joint_displacement(),
                 regime: state.regime(),
             }
         }

@@ -3,5 +3,6 @@
 //! ([`tolerance`]). Above the problems, below charts and reports.
 
 pub mod curves;
+pub mod lap;
 pub mod target;
 pub mod tolerance;

@@ -3,15 +3,16 @@
 //! own setting (docs/theory.md, (T1)-(T3)).
 //!
 //! Both answers rest on monotonicity, derived in docs/theory.md: at a fixed tip force the twin beams'
-//! regularized w(L) does not increase with K_T (T1), and the plate's u(L) falls strictly with K_T
-//! (P10). The deviation from Coulomb is then a non-increasing function of K_T, its worst value over
+//! regularized w(L) does not increase with K_T (T1), the plate's u(L) falls strictly with K_T
+//! (P10), and at a fixed force the lap joint's Delta does not increase with K_T (L11). The deviation from Coulomb is then a non-increasing function of K_T, its worst value over
 //! a force range too, and "within tolerance" holds on one interval [K_T*, infinity): one bracketed
 //! root on ln K_T finds K_T*.
 
 use crate::kernel::code_defaults::{CODE_DEFAULTS, CodeDefault, DefaultRule};
 use crate::kernel::params::{Domain, ParamError};
 use crate::kernel::solve::find_root_in_bracket;
-use crate::problems::{BeamParam, ModelKind, PlateParam};
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
+use crate::problems::{BeamParam, LapParam, ModelKind, PlateParam};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// Force samples over a range of the beams' tip force, besides its ends and F_thre: the deviation
@@ -454,6 +455,126 @@ pub fn plate_stiffness_for_tolerance(
         ),
         near_current: None,
     })
+}
+
+/// The lap joint's forces at which the deviation is checked: the ends of [from, to], F_1 and F_2
+/// when inside (where the regime changes), and [`FORCE_SAMPLES`] between; zero left out.
+fn lap_force_grid(joint: &LapJoint, [from, to]: [f64; 2]) -> Vec<JointForce> {
+    let mut forces: Vec<f64> = (0..=FORCE_SAMPLES)
+        .map(|i| from + (to - from) * i as f64 / FORCE_SAMPLES as f64)
+        .collect();
+    for change in [joint.first_slip_force(), joint.second_slip_force()] {
+        if (from..=to).contains(&change) {
+            forces.push(change);
+        }
+    }
+    forces.retain(|&f| f > 0.0);
+    forces.sort_by(f64::total_cmp);
+    forces.dedup();
+    forces.into_iter().map(|f| joint.clamped_force(f)).collect()
+}
+
+/// The force range `[from, to]` (N) checked against the joint (each in [0, F_gross]) and
+/// ordered, and the forces sampled in it.
+fn checked_lap_forces(
+    joint: &LapJoint,
+    [from, to]: [f64; 2],
+) -> Result<([f64; 2], Vec<JointForce>), ToleranceError> {
+    let (from, to) = (joint.force(from)?.newtons(), joint.force(to)?.newtons());
+    let (from, to) = (from.min(to), from.max(to));
+    if to <= 0.0 {
+        return Err(ToleranceError::Unloaded { from, to });
+    }
+    Ok(([from, to], lap_force_grid(joint, [from, to])))
+}
+
+/// The worst, over `forces`, of the lap joint's regularized Delta over Coulomb's, minus 1.
+fn lap_worst(joint: &LapJoint, forces: &[JointForce]) -> f64 {
+    forces
+        .iter()
+        .map(|&f| {
+            joint.regularized(f).joint_displacement() / joint.coulomb(f).joint_displacement() - 1.0
+        })
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// The lap joint: the smallest K_T for which the regularized Delta stays within `tolerance`
+/// (fraction) of Coulomb's at every force in `[from, to]` (N), all else as in `joint` (L11).
+///
+/// # Errors
+/// A tolerance outside (0, 10], forces outside [0, F_gross], or no positive force.
+pub fn lap_stiffness_for_tolerance(
+    joint: &LapJoint,
+    range: [f64; 2],
+    tolerance: f64,
+    element: f64,
+) -> Result<ToleranceAnswer, ToleranceError> {
+    let tolerance = check_tolerance(tolerance)?;
+    let (range, forces) = checked_lap_forces(joint, range)?;
+    // F_gross does not depend on K_T, so every force stays accepted as K_T moves.
+    let at = |kt: f64| {
+        lap_worst(
+            &joint.with_tangential_stiffness(kt).unwrap_or(*joint),
+            &forces,
+        )
+    };
+    let threshold = smallest_within(LapParam::Stiffness.spec().domain, tolerance, at);
+    let p = joint.params();
+    Ok(ToleranceAnswer {
+        kind: ModelKind::Lap,
+        tolerance,
+        forces: Some(range),
+        threshold,
+        current: (p.tangential_stiffness, lap_worst(joint, &forces)),
+        settings: code_settings(threshold, p.friction * p.pressure, p.inner_modulus, element),
+        near_current: None,
+    })
+}
+
+/// The lap joint, the other reading (see [`beam_stiffness_near_current`]).
+///
+/// # Errors
+/// As [`lap_stiffness_for_tolerance`].
+pub fn lap_stiffness_near_current(
+    joint: &LapJoint,
+    range: [f64; 2],
+    tolerance: f64,
+    element: f64,
+) -> Result<ToleranceAnswer, ToleranceError> {
+    let tolerance = check_tolerance(tolerance)?;
+    let (range, forces) = checked_lap_forces(joint, range)?;
+    let delta = |joint: &LapJoint, f: JointForce| joint.regularized(f).joint_displacement();
+    let current: Vec<f64> = forces.iter().map(|&f| delta(joint, f)).collect();
+    let ratios = |kt: f64| {
+        let at = joint.with_tangential_stiffness(kt).unwrap_or(*joint);
+        forces
+            .iter()
+            .zip(&current)
+            .map(|(&f, c)| delta(&at, f) / c - 1.0)
+            .fold((f64::NEG_INFINITY, f64::INFINITY), |(hi, lo), r| {
+                (hi.max(r), lo.min(r))
+            })
+    };
+    let coulomb = forces
+        .iter()
+        .zip(&current)
+        .map(|(&f, c)| joint.coulomb(f).joint_displacement() / c - 1.0)
+        .fold(f64::INFINITY, f64::min);
+    let p = joint.params();
+    let question = Question {
+        kind: ModelKind::Lap,
+        tolerance,
+        forces: Some(range),
+        current: (p.tangential_stiffness, lap_worst(joint, &forces)),
+        domain: LapParam::Stiffness.spec().domain,
+    };
+    Ok(near_current(
+        question,
+        coulomb,
+        |kt| ratios(kt).0,
+        |kt| -ratios(kt).1,
+        |threshold| code_settings(threshold, p.friction * p.pressure, p.inner_modulus, element),
+    ))
 }
 
 /// Each code's setting for a penalty of at least the threshold (T3). `mu_p` is mu P (MPa),

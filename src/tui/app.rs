@@ -541,7 +541,9 @@ impl App {
         // Only the plate has a continuum solver of its own.
         let current = match self.model() {
             Some(Model::Plate(plate)) if self.solve_continuum => plate.params(),
-            Some(Model::Plate(_) | Model::Beam { .. }) | None => return ContinuumState::Off,
+            Some(Model::Plate(_) | Model::Beam { .. } | Model::Lap { .. }) | None => {
+                return ContinuumState::Off;
+            }
         };
         match &self.continuum {
             Some((params, Some(Ok(solved)))) if *params == current => {
@@ -563,7 +565,7 @@ impl App {
     fn ask_continuum(&mut self) {
         let plate = match self.model() {
             Some(Model::Plate(plate)) => plate,
-            Some(Model::Beam { .. }) | None => return,
+            Some(Model::Beam { .. } | Model::Lap { .. }) | None => return,
         };
         let params = plate.params();
         if !self.solve_continuum || self.continuum.as_ref().is_some_and(|(p, _)| *p == params) {
@@ -1324,7 +1326,7 @@ impl App {
                     self.info(text);
                     self.recompute();
                 }
-                Inputs::Plate(_) => {
+                Inputs::Plate(_) | Inputs::Lap { .. } => {
                     self.error("the beam theory is a twin-beam setting: press m for the beams")
                 }
             },
@@ -1409,7 +1411,7 @@ impl App {
         // for the plate.
         let measurements = match self.kind {
             ModelKind::Beam => !is_dat,
-            ModelKind::Plate => false,
+            ModelKind::Plate | ModelKind::Lap => false,
         };
         self.asked.push(if !measurements {
             Effect::ReadFeResults {
@@ -1481,10 +1483,12 @@ impl App {
             }
             // A CSV's points (no deck), or a run of the beams: they replace.
             (
-                None | Some(Inputs::Beam { .. } | Inputs::Plate(_)),
-                None | Some(Inputs::Beam { .. }),
+                None | Some(Inputs::Beam { .. } | Inputs::Plate(_) | Inputs::Lap { .. }),
+                None | Some(Inputs::Beam { .. } | Inputs::Lap { .. }),
             )
-            | (None | Some(Inputs::Beam { .. }), Some(Inputs::Plate(_))) => false,
+            | (None | Some(Inputs::Beam { .. } | Inputs::Lap { .. }), Some(Inputs::Plate(_))) => {
+                false
+            }
         };
         let mut points: Vec<(f64, f64)> = points;
         if let Some((previous, previous_origin)) = &self.external
@@ -1512,7 +1516,8 @@ impl App {
                     .map(|row| super::brief::plate_summary(code, row))
                     .unwrap_or_default()
             }
-            (AnyLoaded::Beam(_), Model::Plate(_)) | (AnyLoaded::Plate(_), Model::Beam { .. }) => {
+            (AnyLoaded::Beam(_), Model::Plate(_) | Model::Lap { .. })
+            | (AnyLoaded::Plate(_), Model::Beam { .. } | Model::Lap { .. }) => {
                 format!("{path}: FE results of another problem: press m")
             }
         };
@@ -1543,7 +1548,7 @@ impl App {
         // The fit identifies mu and K_T from a force-deflection curve: the beams'.
         let beams = match self.model() {
             Some(Model::Beam { beams, .. }) => beams,
-            Some(Model::Plate(_)) => {
+            Some(Model::Plate(_) | Model::Lap { .. }) => {
                 return self.error("fitting needs the twin-beam model: press m");
             }
             None => return self.error("the parameters are not valid: nothing to fit"),

@@ -31,7 +31,8 @@ const TABLE_TOLERANCE: f64 = 0.01;
 /// plate at its pressure.
 fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
     use crate::study::tolerance::{
-        Threshold, beam_stiffness_for_tolerance, plate_stiffness_for_tolerance,
+        Threshold, beam_stiffness_for_tolerance, lap_stiffness_for_tolerance,
+        plate_stiffness_for_tolerance,
     };
     let shown = |answer: Result<_, _>| match answer
         .map(|a: crate::study::tolerance::ToleranceAnswer| a.threshold)
@@ -53,6 +54,18 @@ fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
             }
             let at = beam_stiffness_for_tolerance(beams, [f, f], TABLE_TOLERANCE, element);
             let upto = beam_stiffness_for_tolerance(beams, [0.0, f], TABLE_TOLERANCE, element);
+            vec![
+                format!("{heading} {} at F,", shown(at)),
+                format!("  {} at all F up to F", shown(upto)),
+            ]
+        }
+        Model::Lap { joint, force } => {
+            let f = force.newtons();
+            if f <= 0.0 {
+                return vec![format!("{heading}: any, at F = 0")];
+            }
+            let at = lap_stiffness_for_tolerance(joint, [f, f], TABLE_TOLERANCE, element);
+            let upto = lap_stiffness_for_tolerance(joint, [0.0, f], TABLE_TOLERANCE, element);
             vec![
                 format!("{heading} {} at F,", shown(at)),
                 format!("  {} at all F up to F", shown(upto)),
@@ -88,6 +101,10 @@ pub fn stiffness_table(model: &Model) -> (&'static str, Vec<String>) {
             "{:<10} {:>7} {:>9} {:>8}",
             "source", "K_T", "u(L) mm", "X_r mm"
         ),
+        Model::Lap { .. } => format!(
+            "{:<10} {:>7} {:>7} {:>7} {:>8}",
+            "source", "K_T", "F_1 N", "a+d mm", "Delta mm"
+        ),
     }];
     for row in &comparison.rows {
         let cells = match (row.candidate.kt, row.answer) {
@@ -118,6 +135,21 @@ pub fn stiffness_table(model: &Model) -> (&'static str, Vec<String>) {
                 cell(k, 7),
                 cell(end_displacement, 9),
                 cell(micro_end, 8)
+            ),
+            (
+                Some(k),
+                Some(Answer::Lap {
+                    first_slip_force,
+                    zones: (a, d),
+                    joint_displacement,
+                    ..
+                }),
+            ) => format!(
+                "{:>7} {:>7} {:>7} {:>8}",
+                cell(k, 7),
+                cell(first_slip_force, 7),
+                cell(a + d, 7),
+                cell(joint_displacement, 8)
             ),
             (Some(k), None) => format!("{:>7} out of range", cell(k, 7)),
             (None, _) => format!("{:>7}", "none"),

@@ -1,10 +1,14 @@
 //! The lines of the regime pane and what each means: shared by the pane, the explanation of `i`
 //! and the app (which moves through them). Text only, no drawing.
 
+use crate::kernel::regime::Law;
 use crate::problems::inputs::Model;
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
+use crate::problems::lap::cycle::LapCycle;
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::report::{number, number_with};
 use crate::study::curves::{beam_point, plate_point};
+use crate::study::lap::lap_point;
 
 /// One line of the regime pane: its text (a regime line has a label and a styled value) and what
 /// it means, in words for someone who has not read the paper (`i`, and the spare height of tall
@@ -61,6 +65,118 @@ pub enum ContinuumState {
     Solved(crate::tui::effects::ContinuumSummary),
     /// Why there is none (out of the solver's range, no convergence).
     Failed(String),
+}
+
+/// The lap joint's lines of the regime pane.
+fn lap_lines(
+    joint: &LapJoint,
+    force: JointForce,
+    ratio_meaning: &'static str,
+    saturation_meaning: &'static str,
+) -> Vec<SummaryLine> {
+    let row = lap_point(joint, force);
+    let ratio = if row.delta_coulomb > 0.0 {
+        number(row.delta_regularized / row.delta_coulomb)
+    } else {
+        "- (no load)".into()
+    };
+    let (coulomb, regularized, heading) = if row.force == 0.0 {
+        (
+            "unloaded".to_string(),
+            "unloaded".to_string(),
+            "At F = 0 N: no load, no slip".to_string(),
+        )
+    } else {
+        (
+            row.regime_coulomb.to_string(),
+            row.regime_regularized.to_string(),
+            format!("At F = {} N (joint force)", number(row.force)),
+        )
+    };
+    let cycle = LapCycle::new(joint, Law::Regularized, force);
+    let (a, d) = row.zones_regularized;
+    let end = match joint.first_slip() {
+        crate::problems::lap::closed_form::FirstSlip::InnerEnd => "x=0",
+        crate::problems::lap::closed_form::FirstSlip::CoverEnds => "x=L",
+        crate::problems::lap::closed_form::FirstSlip::BothEnds => "both ends",
+    };
+    vec![
+        plain(
+            heading,
+            "the force through the joint (each interface carries half); every line below is at \
+             this force",
+        ),
+        regime_line(
+            "Coulomb",
+            coulomb,
+            "plain Coulomb law: both ends slide from the first newton (macroslip), the middle \
+             sticks and carries no shear",
+        ),
+        regime_line(
+            "regularized",
+            regularized,
+            "regularized law, zones from x = 0 (the inner plate's end) to x = L (the covers' \
+             ends): microslip = elastic slip below mu P; macroslip = sliding at mu P",
+        ),
+        plain(
+            format!("F_1 {} N: {end} slides", number(joint.first_slip_force())),
+            "regularized law: sliding starts above F_1 at the end where the more compliant \
+             member carries the load (x = L: the inner plate, x = 0: the covers)",
+        ),
+        plain(
+            format!("F_2 {} N: both slide", number(joint.second_slip_force())),
+            "regularized law: above F_2 the other end slides too",
+        )
+        .dropped(4),
+        plain(
+            format!("F_gross {} N: all slides", number(joint.gross_slip_force())),
+            "2 b mu P L: both interfaces slide over the whole overlap; the joint carries no more \
+             (F is refused above it)",
+        ),
+        plain(
+            format!("a {} d {} mm sliding", number_with(a, 3), number_with(d, 3)),
+            "regularized law: the sliding zones, a from x = 0 (inner plate's end), d from x = L \
+             (covers' ends)",
+        ),
+        plain(
+            format!("Delta Coulomb {} mm", number(row.delta_coulomb)),
+            "joint displacement u_inner(L) - u_cover(0) under the plain Coulomb law",
+        )
+        .dropped(3),
+        plain(
+            format!("Delta regularized {} mm", number(row.delta_regularized)),
+            "joint displacement u_inner(L) - u_cover(0) under the regularized law: what an \
+             extensometer across the overlap reads",
+        ),
+        plain(format!("ratio to Coulomb {ratio}"), ratio_meaning),
+        plain(
+            format!(
+                "D {} N mm zeta {}",
+                number_with(cycle.dissipation(), 3),
+                number_with(cycle.damping_ratio(), 3)
+            ),
+            "a force cycling between +F and -F (regularized law): energy dissipated per cycle D \
+             and the equivalent damping ratio D / (4 pi U), U = F Delta / 2",
+        ),
+        plain(
+            format!(
+                "saturation slip {} um",
+                number(mm_to_um(joint.saturation_slip()))
+            ),
+            saturation_meaning,
+        )
+        .dropped(2),
+        plain(
+            format!(
+                "K_T = {} MPa/um",
+                number(mpa_per_mm_to_mpa_per_um(
+                    joint.params().tangential_stiffness
+                ))
+            ),
+            "K_T in the unit some FE codes use: 1 MPa/um = 1000 MPa/mm",
+        )
+        .dropped(1),
+    ]
 }
 
 /// The lines of the regime pane for `model`; `continuum`: the plate's 2-D continuum u(L).
@@ -155,6 +271,7 @@ pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLi
                 .dropped(1),
             ]
         }
+        Model::Lap { joint, force } => lap_lines(joint, *force, RATIO, SATURATION),
         Model::Plate(plate) => {
             let row = plate_point(plate);
             let ratio = if row.u_coulomb > 0.0 {

@@ -1,10 +1,12 @@
 //! The inputs of the clamped double-lap joint: keys, units, meanings, domains and steps.
 
 use std::fmt;
+use std::str::FromStr;
 
 use crate::kernel::params::{
     Domain, FACTOR, FRICTION, ParamError, ParamSpec, STIFFNESS, Scale, Unit, spec,
 };
+use crate::problems::{ModelKind, Param, UnknownParam};
 
 /// The inputs of the double-lap joint.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -127,6 +129,19 @@ impl LapParam {
 impl fmt::Display for LapParam {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.pad(self.spec().name)
+    }
+}
+
+impl FromStr for LapParam {
+    type Err = UnknownParam;
+
+    fn from_str(key: &str) -> Result<Self, Self::Err> {
+        match ModelKind::Lap.param(key)? {
+            Param::Lap(p) => Ok(p),
+            Param::Beam(_) | Param::Plate(_) => {
+                unreachable!("the lap model lists only lap parameters")
+            }
+        }
     }
 }
 

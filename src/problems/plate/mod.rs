@@ -62,7 +62,11 @@ pub(crate) fn quantity(plate: &SqueezedPlate, quantity: Quantity) -> Option<f64>
         Quantity::Ratio => {
             ratio_to_coulomb(plate.regularized().response(), plate.coulomb().response())?
         }
-        Quantity::FirstMacroslipForce | Quantity::Dissipation | Quantity::DampingRatio => {
+        Quantity::FirstMacroslipForce
+        | Quantity::Dissipation
+        | Quantity::DampingRatio
+        | Quantity::SlideFromStart
+        | Quantity::SlideFromEnd => {
             return None;
         }
     };

@@ -96,7 +96,9 @@ impl FromStr for PlateParam {
     fn from_str(key: &str) -> Result<Self, Self::Err> {
         match ModelKind::Plate.param(key)? {
             Param::Plate(p) => Ok(p),
-            Param::Beam(_) => unreachable!("the plate model lists only plate parameters"),
+            Param::Beam(_) | Param::Lap(_) => {
+                unreachable!("the plate model lists only plate parameters")
+            }
         }
     }
 }

@@ -85,6 +85,7 @@ pub(crate) fn quantity(beams: &TwinBeams, force: TipForce, quantity: Quantity) -
         )?,
         Quantity::FirstMacroslipForce => beams.first_macroslip_force(),
         Quantity::Dissipation => Cycle::new(beams, Law::Regularized, force).dissipation(),
+        Quantity::SlideFromStart | Quantity::SlideFromEnd => return None,
         Quantity::DampingRatio => Cycle::new(beams, Law::Regularized, force).damping_ratio(),
     };
     value.is_finite().then_some(value)

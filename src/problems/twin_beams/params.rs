@@ -111,7 +111,9 @@ impl FromStr for BeamParam {
     fn from_str(key: &str) -> Result<Self, Self::Err> {
         match ModelKind::Beam.param(key)? {
             Param::Beam(p) => Ok(p),
-            Param::Plate(_) => unreachable!("the beam model lists only beam parameters"),
+            Param::Plate(_) | Param::Lap(_) => {
+                unreachable!("the beam model lists only beam parameters")
+            }
         }
     }
 }

@@ -11,6 +11,7 @@
 pub mod beam;
 pub mod cycle;
 pub mod fit;
+pub mod lap;
 pub mod plate;
 pub mod solve;
 pub mod stiffness;

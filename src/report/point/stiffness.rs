@@ -72,6 +72,18 @@ pub enum CandidateAnswer {
         #[serde(serialize_with = "regime_label")]
         regime: Regime,
     },
+    Lap {
+        #[serde(rename = "F_1_N")]
+        first_slip_force: f64,
+        #[serde(rename = "a_mm")]
+        slide_at_inner_end: f64,
+        #[serde(rename = "d_mm")]
+        slide_at_cover_ends: f64,
+        #[serde(rename = "Delta_mm")]
+        joint_displacement: f64,
+        #[serde(serialize_with = "regime_label")]
+        regime: Regime,
+    },
     /// A K_T the model refuses: said rather than left out silently.
     Refused { not_evaluated: String },
 }
@@ -118,6 +130,18 @@ impl From<&ComparedStiffness> for CandidateReport {
                 micro_end,
                 regime,
             }),
+            Some(Answer::Lap {
+                first_slip_force,
+                zones: (slide_at_inner_end, slide_at_cover_ends),
+                joint_displacement,
+                regime,
+            }) => Some(CandidateAnswer::Lap {
+                first_slip_force,
+                slide_at_inner_end,
+                slide_at_cover_ends,
+                joint_displacement,
+                regime,
+            }),
             None => match kt.map(|kt| BeamParam::Stiffness.check(kt)) {
                 Some(Err(refused)) => Some(CandidateAnswer::Refused {
                     not_evaluated: refused.to_string(),
@@ -145,6 +169,7 @@ impl StiffnessReport {
             force: match comparison.model {
                 Model::Beam { force, .. } => Some(force.newtons()),
                 Model::Plate(_) => None,
+                Model::Lap { force, .. } => Some(force.newtons()),
             },
             friction_stress: interface.friction * interface.pressure,
             candidates: comparison.rows.iter().map(CandidateReport::from).collect(),
@@ -171,6 +196,25 @@ impl StiffnessReport {
                     "F_1 (N)",
                     "X (mm)",
                     "w(L) (mm)",
+                    "vs current",
+                    "regime"
+                );
+            }
+            ModelKind::Lap => {
+                let _ = writeln!(
+                    out,
+                    "K_T candidates for preset {preset}: double-lap joint at F = {} N, mu P = {mu_p} MPa, contact elements {element} mm",
+                    self.force.map_or_else(|| "-".to_string(), number),
+                );
+                let _ = writeln!(
+                    out,
+                    "{:<16} {:>12} {:>10} {:>8} {:>8} {:>12} {:>10}  {:<29} basis",
+                    "source",
+                    "K_T (MPa/mm)",
+                    "F_1 (N)",
+                    "a (mm)",
+                    "d (mm)",
+                    "Delta (mm)",
                     "vs current",
                     "regime"
                 );
@@ -237,11 +281,35 @@ impl StiffnessReport {
                     number(*micro_end),
                     regime.label(),
                 ),
-                // No answer: the columns of the beams' table (a force given) or the plate's.
+                (
+                    Some(CandidateAnswer::Lap {
+                        first_slip_force,
+                        slide_at_inner_end,
+                        slide_at_cover_ends,
+                        joint_displacement,
+                        regime,
+                    }),
+                    _,
+                ) => writeln!(
+                    out,
+                    "{source:<16} {kt:>12} {:>10} {:>8} {:>8} {:>12} {:>10}  {:<29} {basis}",
+                    number(*first_slip_force),
+                    number(*slide_at_inner_end),
+                    number(*slide_at_cover_ends),
+                    number(*joint_displacement),
+                    off,
+                    regime.label(),
+                ),
+                // No answer: the columns of the problem's table.
                 (None | Some(CandidateAnswer::Refused { .. }), ModelKind::Beam) => writeln!(
                     out,
                     "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10}  {unanswered:<20} {basis}",
                     "-", "-", "-", "-",
+                ),
+                (None | Some(CandidateAnswer::Refused { .. }), ModelKind::Lap) => writeln!(
+                    out,
+                    "{source:<16} {kt:>12} {:>10} {:>8} {:>8} {:>12} {:>10}  {unanswered:<29} {basis}",
+                    "-", "-", "-", "-", "-",
                 ),
                 (None | Some(CandidateAnswer::Refused { .. }), ModelKind::Plate) => writeln!(
                     out,

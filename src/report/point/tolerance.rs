@@ -175,6 +175,7 @@ impl ToleranceReport {
         let why = match answer.kind {
             ModelKind::Beam => "(T1)",
             ModelKind::Plate => "(P10)",
+            ModelKind::Lap => "(L11)",
         };
         let over = match answer.forces {
             Some([from, to]) if from == to => format!("at F = {} N", number(to)),

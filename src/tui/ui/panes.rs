@@ -32,6 +32,7 @@ pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
     let title = match inputs {
         Inputs::Beam { structure, .. } => format!("Twin beams, {}", structure.theory.label()),
         Inputs::Plate(_) => "Squeezed plate".to_string(),
+        Inputs::Lap { .. } => "Double-lap joint".to_string(),
     };
     let lines: Vec<Line> = app
         .kind()
@@ -100,6 +101,8 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
             ),
         },
         Model::Plate(_) => "Regime (i explains)".to_string(),
+        // The shear-lag envelope is not measured yet (issue 24, item 6): said, not hidden.
+        Model::Lap { .. } => "Regime (i), FE: not calibrated".to_string(),
     };
     let mut block = pane(app, &title);
     let inner = block.inner(area);

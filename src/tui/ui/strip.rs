@@ -1,4 +1,5 @@
-//! The zone strip under the regime summary: the interface from x = 0 (clamp, plate centre) to L,
+//! The zone strip under the regime summary: the interface from x = 0 (clamp, plate centre, the lap
+//! joint's inner plate end) to L,
 //! drawn to scale for both laws, so that where the interface sticks, slips elastically and slides
 //! is seen at a glance rather than read off X, X_s and X_r. Zones are told apart by their symbols
 //! (`=` stick, `~` microslip, `#` macroslip in ASCII) and, with colour, by colour as well; the
@@ -60,6 +61,7 @@ pub fn lines(model: &Model, theme: &Theme, width: u16, size: StripSize) -> Vec<L
         let origin = match model {
             Model::Beam { .. } => "clamp",
             Model::Plate(_) => "centre",
+            Model::Lap { .. } => "inner end",
         };
         lines.push(Line::from(Span::styled(
             format!(
@@ -227,6 +229,10 @@ fn shear_ratios(model: &Model, zones: &InterfaceZones, cells: usize) -> (Vec<f64
             let p = plate.params();
             (plate_shear_along(plate, positions), p.friction * p.pressure)
         }
+        Model::Lap { joint, force } => (
+            crate::study::lap::lap_shear_along(joint, *force, positions),
+            joint.coulomb_stress(),
+        ),
     };
     let ratio = |s: Series| -> Vec<f64> {
         s.into_iter()

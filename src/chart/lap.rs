@@ -1,0 +1,159 @@
+//! The double-lap joint's charts as data: Delta vs F with Coulomb and the K_T family, the sliding
+//! zones vs F, tau(x), the loop and D vs F_a. Built from [`crate::study::lap`].
+
+use crate::chart::view::LapChart;
+use crate::chart::{Plot, SeriesRole, cursor, line, linear_axis, max_y, samples};
+use crate::kernel::format::{number, number_with};
+use crate::kernel::regime::Law;
+use crate::problems::LapParam;
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
+use crate::problems::lap::cycle::LapCycle;
+use crate::study::curves::{Series, Spacing};
+use crate::study::lap as curves;
+
+/// Loop points per branch: one per column of a 100-column chart.
+const LOOP_POINTS: u64 = super::SAMPLES / 2 + 1;
+
+/// The force axis: the whole range the joint carries, 0 to F_gross (N), or `span` when a family
+/// asks for a wider one (never beyond F_gross: there is no state there).
+pub(crate) fn force_range(joint: &LapJoint, span: Option<f64>) -> f64 {
+    let gross = joint.gross_slip_force();
+    span.map_or(gross, |s| s.min(gross)).max(f64::MIN_POSITIVE)
+}
+
+pub(crate) fn lap_plot(
+    joint: &LapJoint,
+    force: JointForce,
+    chart: LapChart,
+    span: Option<f64>,
+) -> Option<Plot> {
+    let p = joint.params();
+    let f_max = force_range(joint, span);
+    let forces = samples(0.0, f_max, Spacing::Linear)?;
+    let kt = p.tangential_stiffness;
+    let companions: Vec<(SeriesRole, &str, LapJoint)> = [
+        (SeriesRole::Softer, "K_T/5", kt / 5.0),
+        (SeriesRole::Stiffer, "K_T*5", kt * 5.0),
+    ]
+    .into_iter()
+    .filter(|&(_, _, k)| LapParam::Stiffness.check(k).is_ok())
+    .filter_map(|(role, label, k)| Some((role, label, joint.with_tangential_stiffness(k).ok()?)))
+    .collect();
+    let f = force.newtons();
+    match chart {
+        LapChart::Displacement => {
+            let (coulomb, regularized) = curves::lap_displacement_vs_force(joint, forces).ok()?;
+            let mut series = vec![line(SeriesRole::Coulomb, "Coulomb", coulomb)];
+            for (role, label, other) in &companions {
+                let (_, delta) = curves::lap_displacement_vs_force(other, forces).ok()?;
+                series.push(line(*role, *label, delta));
+            }
+            series.push(line(SeriesRole::Current, "K_T", regularized));
+            let top = 1.05 * max_y(series.iter().map(|s| &s.points)).max(f64::MIN_POSITIVE);
+            let y = linear_axis("Delta (mm)", 0.0, top);
+            series.push(cursor(f, y.bounds));
+            Some(Plot {
+                caption: None,
+                title: format!("Delta vs F, K_T = {} MPa/mm", number(kt)),
+                x: linear_axis("F (N)", 0.0, f_max),
+                y,
+                series,
+            })
+        }
+        LapChart::Zones => {
+            let (a, d) = curves::lap_zones_vs_force(joint, forces).ok()?;
+            let series = vec![
+                line(SeriesRole::Coulomb, "a, from x = 0", a),
+                line(SeriesRole::Current, "d, from x = L", d),
+                cursor(f, [0.0, p.length]),
+            ];
+            Some(Plot {
+                caption: None,
+                title: format!(
+                    "a, d vs F, F_1 = {} N at {}",
+                    number(joint.first_slip_force()),
+                    joint.first_slip().key()
+                ),
+                x: linear_axis("F (N)", 0.0, f_max),
+                y: linear_axis("sliding zone (mm)", 0.0, p.length),
+                series,
+            })
+        }
+        LapChart::Shear => {
+            let positions = samples(0.0, p.length, Spacing::Linear)?;
+            let (coulomb, regularized) = curves::lap_shear_along(joint, force, positions);
+            let mu_p = joint.coulomb_stress();
+            let top = 1.1 * max_y([&coulomb, &regularized]).max(mu_p);
+            Some(Plot {
+                caption: None,
+                title: format!("tau(x) at F = {} N, K_T = {} MPa/mm", number(f), number(kt)),
+                x: linear_axis("x (mm)", 0.0, p.length),
+                y: linear_axis("tau (MPa)", 0.0, top),
+                series: vec![
+                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
+                    line(SeriesRole::Current, "regularized", regularized),
+                    line(
+                        SeriesRole::Limit,
+                        "mu P",
+                        vec![(0.0, mu_p), (p.length, mu_p)],
+                    ),
+                ],
+            })
+        }
+        LapChart::Loop => {
+            let (coulomb, regularized) = (
+                LapCycle::new(joint, Law::Coulomb, force),
+                LapCycle::new(joint, Law::Regularized, force),
+            );
+            let (coulomb_loop, regularized_loop): (Series, Series) =
+                curves::lap_cycle_loop(joint, force, LOOP_POINTS)
+                    .ok()?
+                    .map(|p| ((p.force, p.w_coulomb), (p.force, p.w_regularized)))
+                    .unzip();
+            let top = 1.05
+                * coulomb
+                    .peak_displacement()
+                    .max(regularized.peak_displacement())
+                    .max(f64::MIN_POSITIVE);
+            let span = f.max(1e-9);
+            Some(Plot {
+                caption: None,
+                // At most 41 characters (the title row of an 80x24 screen's chart pane).
+                title: format!(
+                    "+-{} N; D {} C, {} R N mm",
+                    number(f),
+                    number_with(coulomb.dissipation(), 3),
+                    number_with(regularized.dissipation(), 3)
+                ),
+                x: linear_axis("F (N)", -span, span),
+                y: linear_axis("Delta (mm)", -top, top),
+                series: vec![
+                    line(SeriesRole::Coulomb, "Coulomb", coulomb_loop),
+                    line(SeriesRole::Current, "regularized", regularized_loop),
+                ],
+            })
+        }
+        LapChart::Dissipation => {
+            let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
+            let (coulomb, regularized) =
+                curves::lap_dissipation_vs_amplitude(joint, amplitudes).ok()?;
+            let top = 1.05 * max_y([&coulomb, &regularized]).max(f64::MIN_POSITIVE);
+            let zeta = curves::lap_cycle_point(joint, force);
+            Some(Plot {
+                caption: None,
+                title: format!(
+                    "D vs F_a; zeta at F {} C, {} R",
+                    number_with(zeta.zeta_coulomb, 3),
+                    number_with(zeta.zeta_regularized, 3)
+                ),
+                x: linear_axis("F_a (N)", 0.0, f_max),
+                y: linear_axis("D (N mm)", 0.0, top),
+                series: vec![
+                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
+                    line(SeriesRole::Current, "regularized", regularized),
+                    cursor(f, [0.0, top]),
+                ],
+            })
+        }
+    }
+}

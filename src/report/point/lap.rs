@@ -1,0 +1,364 @@
+//! `microslip lap` and `microslip cycle` of the lap joint: the joint at one force, both laws side
+//! by side, and one load cycle.
+
+use std::fmt::Write;
+
+use serde::Serialize;
+
+use super::{InputsReport, regime_label, validity_label};
+use crate::Regime;
+use crate::kernel::regime::Law;
+use crate::kernel::validity::Validity;
+use crate::problems::inputs::Inputs;
+use crate::problems::lap::closed_form::{JointForce, LapJoint, LapParams};
+use crate::problems::lap::cycle::LapCycle;
+use crate::problems::stiffness::mm_to_um;
+use crate::report::{number, number_with, sanitize};
+use crate::study::lap::lap_point;
+
+/// What the shear-lag theory's numbers can be trusted for, said wherever they are shown until
+/// its envelope against a continuum model is measured (issue 24, item 6).
+pub(crate) const SHEAR_LAG_NOTE: &str = "shear-lag theory (each plate strained uniformly through \
+     its thickness): its envelope against a continuum model is not measured yet; it fails when \
+     the decay length 1/lambda is comparable to t1 or t2";
+
+/// The lap-joint report at one force.
+#[derive(Debug, Clone, Serialize)]
+pub struct LapReport {
+    /// Always `lap`.
+    pub model: &'static str,
+    pub preset: String,
+    pub inputs: InputsReport,
+    /// Force of the report (N), also in `inputs`.
+    #[serde(skip)]
+    pub force: f64,
+    /// Regularized: sliding starts above it (N).
+    #[serde(rename = "F_1_N")]
+    pub first_slip_force: f64,
+    /// Where: `x=0`, `x=L` or `both`.
+    pub first_slip_at: &'static str,
+    /// In words, for the text.
+    #[serde(skip)]
+    pub first_slip_words: &'static str,
+    /// Regularized: the other end starts sliding above it (N).
+    #[serde(rename = "F_2_N")]
+    pub second_slip_force: f64,
+    /// Both laws: the whole overlap slides at it; no larger force is carried (N).
+    #[serde(rename = "F_gross_N")]
+    pub gross_slip_force: f64,
+    /// mu P / K_T (mm).
+    #[serde(rename = "saturation_slip_mm")]
+    pub saturation_slip: f64,
+    /// 1/lambda, the elastic slip's decay length (mm).
+    #[serde(rename = "decay_length_mm")]
+    pub decay_length: f64,
+    /// k1 = E1 t1 and K2 = 2 E2 t2 (N/mm).
+    #[serde(rename = "inner_stiffness_N_per_mm")]
+    pub inner_stiffness: f64,
+    #[serde(rename = "covers_stiffness_N_per_mm")]
+    pub covers_stiffness: f64,
+    pub coulomb: LapLaw,
+    pub regularized: LapLaw,
+    pub shear_lag: ShearLagReport,
+}
+
+/// One law's answer.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct LapLaw {
+    #[serde(serialize_with = "regime_label")]
+    pub regime: Regime,
+    /// Delta = u_inner(L) - u_cover(0) (mm).
+    #[serde(rename = "Delta_mm")]
+    pub joint_displacement: f64,
+    /// Sliding zone from x = 0 (mm).
+    #[serde(rename = "a_mm")]
+    pub slide_at_inner_end: f64,
+    /// Sliding zone from x = L (mm).
+    #[serde(rename = "d_mm")]
+    pub slide_at_cover_ends: f64,
+}
+
+/// The theory and what is known of its domain.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct ShearLagReport {
+    /// The decay length over the thicker plate's thickness, (1/lambda) / max(t1, t2): small
+    /// values are where uniform strain through the thickness is doubtful.
+    pub decay_length_over_thickness: f64,
+    #[serde(serialize_with = "validity_label")]
+    pub validity: Validity,
+    pub note: &'static str,
+}
+
+impl LapReport {
+    pub fn new(preset: &str, joint: &LapJoint, force: JointForce) -> LapReport {
+        let row = lap_point(joint, force);
+        let p = joint.params();
+        let decay_length = 1.0 / joint.decay_rate();
+        let law = |regime, delta, (a, d): (f64, f64)| LapLaw {
+            regime,
+            joint_displacement: delta,
+            slide_at_inner_end: a,
+            slide_at_cover_ends: d,
+        };
+        LapReport {
+            model: "lap",
+            preset: preset.to_string(),
+            inputs: InputsReport(Inputs::Lap {
+                structure: p,
+                force: force.newtons(),
+            }),
+            force: row.force,
+            first_slip_force: joint.first_slip_force(),
+            first_slip_at: joint.first_slip().key(),
+            first_slip_words: joint.first_slip().label(),
+            second_slip_force: joint.second_slip_force(),
+            gross_slip_force: joint.gross_slip_force(),
+            saturation_slip: joint.saturation_slip(),
+            decay_length,
+            inner_stiffness: p.inner_stiffness(),
+            covers_stiffness: p.covers_stiffness(),
+            coulomb: law(row.regime_coulomb, row.delta_coulomb, row.zones_coulomb),
+            regularized: law(
+                row.regime_regularized,
+                row.delta_regularized,
+                row.zones_regularized,
+            ),
+            shear_lag: ShearLagReport {
+                decay_length_over_thickness: decay_length
+                    / p.inner_thickness.max(p.cover_thickness),
+                validity: Validity::NotCalibrated,
+                note: SHEAR_LAG_NOTE,
+            },
+        }
+    }
+
+    /// The readable report.
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "Clamped double-lap joint (shear lag, docs/theory.md section 9) - preset {}",
+            sanitize(&self.preset)
+        );
+        self.inputs.write(&mut out);
+        let _ = writeln!(
+            out,
+            "Members: inner plate E1 t1 = {} N/mm, both covers 2 E2 t2 = {} N/mm",
+            number(self.inner_stiffness),
+            number(self.covers_stiffness)
+        );
+        let _ = writeln!(out, "Thresholds");
+        let _ = writeln!(
+            out,
+            "  F_1        = {:<14} regularized: sliding starts above it, at {}",
+            format!("{} N", number(self.first_slip_force)),
+            self.first_slip_words
+        );
+        let _ = writeln!(
+            out,
+            "  F_2        = {:<14} regularized: both ends slide above it",
+            format!("{} N", number(self.second_slip_force)),
+        );
+        let _ = writeln!(
+            out,
+            "  F_gross    = {:<14} both laws: the whole overlap slides (2 b mu P L); no more is carried",
+            format!("{} N", number(self.gross_slip_force)),
+        );
+        let _ = writeln!(
+            out,
+            "  mu P / K_T = {:<14} saturation slip; 1/lambda = {} mm, the elastic slip's decay length",
+            format!("{} um", number(mm_to_um(self.saturation_slip))),
+            number(self.decay_length)
+        );
+        // Wider than the other problems' columns: the lap joint's regimes have three zones.
+        let (c, r) = (&self.coulomb, &self.regularized);
+        let row = |out: &mut String, label: &str, coulomb: String, regularized: String| {
+            let _ = writeln!(out, "  {label:<26}{coulomb:<31}{regularized}");
+        };
+        let _ = writeln!(
+            out,
+            "{:<28}{:<31}regularized",
+            format!("At F = {} N", number(self.force)),
+            "Coulomb"
+        );
+        row(
+            &mut out,
+            "regime",
+            c.regime.to_string(),
+            r.regime.to_string(),
+        );
+        row(
+            &mut out,
+            "Delta (mm)",
+            number(c.joint_displacement),
+            number(r.joint_displacement),
+        );
+        row(
+            &mut out,
+            "a, from x = 0 (mm)",
+            number(c.slide_at_inner_end),
+            number(r.slide_at_inner_end),
+        );
+        row(
+            &mut out,
+            "d, from x = L (mm)",
+            number(c.slide_at_cover_ends),
+            number(r.slide_at_cover_ends),
+        );
+        if c.joint_displacement > 0.0 {
+            let _ = writeln!(
+                out,
+                "  {:<26}{}",
+                "Delta_reg / Delta_Coulomb",
+                number(r.joint_displacement / c.joint_displacement)
+            );
+        }
+        let _ = writeln!(
+            out,
+            "  (a: sliding zone from x = 0, the inner plate's end; d: from x = L, the covers' ends; \
+             Delta = u_inner(L) - u_cover(0))"
+        );
+        let v = &self.shear_lag;
+        let _ = writeln!(
+            out,
+            "Theory: {}\n  here 1/lambda = {} x the thicker plate: {}",
+            v.note,
+            number_with(v.decay_length_over_thickness, 3),
+            v.validity.label()
+        );
+        out
+    }
+}
+
+/// What D, U and the secant stiffness of the lap joint refer to.
+pub(crate) const LAP_CYCLE_NOTE: &str = "D is the whole joint's (both interfaces); U = 1/2 F_a \
+     Delta_a; the secant stiffness is F_a / Delta_a of the joint.";
+
+/// The lap joint cycled between +F_a and -F_a.
+#[derive(Debug, Clone, Serialize)]
+pub struct LapCycleReport {
+    /// Always `lap`.
+    pub model: &'static str,
+    pub preset: String,
+    pub inputs: InputsReport,
+    #[serde(skip)]
+    pub structure: LapParams,
+    /// Amplitude F_a (N).
+    #[serde(rename = "Fa_N")]
+    pub amplitude: f64,
+    pub coulomb: LapLawCycle,
+    pub regularized: LapLawCycle,
+    pub note: &'static str,
+}
+
+/// One law's cycle.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct LapLawCycle {
+    /// Force at which sliding starts (N): 0 under Coulomb.
+    #[serde(rename = "onset_N")]
+    pub onset: f64,
+    /// Peak displacement Delta_a (mm).
+    #[serde(rename = "Delta_peak_mm")]
+    pub peak_displacement: f64,
+    /// Dissipation per cycle (N mm).
+    #[serde(rename = "D_Nmm")]
+    pub dissipation: f64,
+    /// Peak energy (N mm).
+    #[serde(rename = "U_Nmm")]
+    pub peak_energy: f64,
+    /// D / (4 pi U).
+    #[serde(rename = "zeta")]
+    pub damping_ratio: f64,
+    /// F_a / Delta_a (N/mm).
+    #[serde(rename = "secant_stiffness_N_per_mm")]
+    pub secant_stiffness: f64,
+}
+
+impl LapLawCycle {
+    fn new(joint: &LapJoint, law: Law, amplitude: JointForce) -> LapLawCycle {
+        let c = LapCycle::new(joint, law, amplitude);
+        LapLawCycle {
+            onset: c.onset(),
+            peak_displacement: c.peak_displacement(),
+            dissipation: c.dissipation(),
+            peak_energy: c.peak_energy(),
+            damping_ratio: c.damping_ratio(),
+            secant_stiffness: c.secant_stiffness(),
+        }
+    }
+}
+
+impl LapCycleReport {
+    pub fn new(preset: &str, joint: &LapJoint, amplitude: JointForce) -> LapCycleReport {
+        LapCycleReport {
+            model: "lap",
+            preset: preset.to_string(),
+            inputs: InputsReport(Inputs::Lap {
+                structure: joint.params(),
+                force: amplitude.newtons(),
+            }),
+            structure: joint.params(),
+            amplitude: amplitude.newtons(),
+            coulomb: LapLawCycle::new(joint, Law::Coulomb, amplitude),
+            regularized: LapLawCycle::new(joint, Law::Regularized, amplitude),
+            note: LAP_CYCLE_NOTE,
+        }
+    }
+
+    /// The readable summary: both laws side by side.
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "Double-lap joint, force cycling between +{0} N and -{0} N (Masing branches) - preset {1}",
+            number(self.amplitude),
+            sanitize(&self.preset)
+        );
+        let p = &self.structure;
+        let _ = writeln!(
+            out,
+            "  L = {} mm, b = {} mm, t1 = {} mm, t2 = {} mm, E1 = {} MPa, E2 = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
+            number(p.length),
+            number(p.width),
+            number(p.inner_thickness),
+            number(p.cover_thickness),
+            number(p.inner_modulus),
+            number(p.cover_modulus),
+            number(p.pressure),
+            number(p.friction),
+            number(p.tangential_stiffness)
+        );
+        let _ = writeln!(out, "{:<34}{:<18}regularized", "", "Coulomb");
+        let (c, r) = (&self.coulomb, &self.regularized);
+        let rows: [(&str, f64, f64); 6] = [
+            ("onset of sliding (N)", c.onset, r.onset),
+            (
+                "peak displacement Delta_a (mm)",
+                c.peak_displacement,
+                r.peak_displacement,
+            ),
+            ("D per cycle (N mm)", c.dissipation, r.dissipation),
+            ("peak energy U (N mm)", c.peak_energy, r.peak_energy),
+            (
+                "damping ratio D / (4 pi U) (-)",
+                c.damping_ratio,
+                r.damping_ratio,
+            ),
+            (
+                "secant F_a/Delta_a (N/mm)",
+                c.secant_stiffness,
+                r.secant_stiffness,
+            ),
+        ];
+        for (label, coulomb, regularized) in rows {
+            let _ = writeln!(
+                out,
+                "  {label:<32}{:<18}{}",
+                number(coulomb),
+                number(regularized)
+            );
+        }
+        let _ = writeln!(out, "  {}", self.note);
+        out
+    }
+}
