@@ -1067,7 +1067,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                         .map_err(force_range_error)?;
                     write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
                 }
-                Model::Plate(_) => return Err(plate_has_no_cycle("sweep cycle")),
+                Model::Plate(_) => return Err(plate_has_no_cycle(inputs, "sweep cycle")),
             }
         }
         Some(Command::Presets) => {
@@ -1666,10 +1666,11 @@ fn load_lap(args: &InputArgs, command: &str) -> Result<(String, LapJoint, JointF
 }
 
 /// `cycle` or `sweep cycle` given the plate, which has no load to cycle.
-fn plate_has_no_cycle(command: &str) -> CliError {
+fn plate_has_no_cycle(args: &InputArgs, command: &str) -> CliError {
     CliError::Invalid(format!(
-        "{command}: the squeezed plate has no load to cycle (its pressure is fixed); use a beam or \
-         lap preset"
+        "preset '{}' is a plate preset; `microslip {command}` needs a beam or lap preset (the \
+         squeezed plate has no load to cycle: its pressure is fixed)",
+        args.preset.as_deref().unwrap_or_default()
     ))
 }
 
@@ -1954,7 +1955,7 @@ fn run_cycle(
             }
             return Ok(());
         }
-        Model::Plate(_) => return Err(plate_has_no_cycle("cycle")),
+        Model::Plate(_) => return Err(plate_has_no_cycle(inputs, "cycle")),
     };
     let amplitude = TipForce::new(amplitude)?;
     match format {

@@ -1305,6 +1305,8 @@ fn a_preset_of_the_other_model_names_the_command_that_was_run() {
         let stderr = failure(args, 2);
         let wanted = if command.contains("plate") {
             "plate"
+        } else if command.contains("cycle") {
+            "beam or lap"
         } else {
             "beam"
         };

@@ -1,4 +1,5 @@
-//! The chart of `v`: the response (w(L) of the beams, u(L) of the plate) against the selected
+//! The chart of `v`: the response (w(L) of the beams, u(L) of the plate, Delta of the lap joint)
+//! against the selected
 //! parameter, both laws, with the cursor at the current value. Numbers from
 //! [`crate::study::curves::response_vs_param`]; axes and series from [`super`].
 
@@ -13,23 +14,17 @@ use crate::study::curves::{Spacing, response_vs_param};
 /// of nu), inside the domain; and whether the axis is logarithmic.
 fn range(model: &Model, param: Param, value: f64) -> (f64, f64, bool) {
     let spec = param.spec();
-    let domain = spec.domain;
+    // The domain, narrowed where the other inputs bound this one (the lap joint's F <= F_gross).
+    let (min, max) = model.accepted_range(param);
+    let clamp = |v: f64| v.clamp(min, max);
     match spec.scale {
-        Scale::Factor { .. } => {
-            let lo = domain.clamp(value / 10.0);
-            let hi = domain.clamp(value * 10.0);
-            (lo, hi, true)
-        }
+        Scale::Factor { .. } => (clamp(value / 10.0), clamp(value * 10.0), true),
         Scale::Add { min, max, .. } => (min, max, false),
         Scale::FractionOfScale { .. } => {
             // Only a problem's load steps in fractions of a scale: its regime scale.
             let scale = model.regime_scale().unwrap_or(value);
-            let hi = domain.clamp((3.0 * scale).max(1.25 * value));
-            (
-                domain.min(),
-                if hi > domain.min() { hi } else { 1.0 },
-                false,
-            )
+            let hi = clamp((3.0 * scale).max(1.25 * value));
+            (min, if hi > min { hi } else { 1.0 }, false)
         }
     }
 }

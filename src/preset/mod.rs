@@ -344,9 +344,16 @@ mod tests {
         let names: Vec<&str> = rows.iter().map(|r| r.name.as_str()).collect();
         assert_eq!(
             names,
-            ["paper-beams", "paper-beams-soft", "paper-plate", "a", "b"]
+            [
+                "paper-beams",
+                "paper-beams-soft",
+                "paper-plate",
+                "lap-aluminium",
+                "a",
+                "b"
+            ]
         );
-        assert!(rows[4].preset.as_ref().unwrap_err().contains("line 2"));
+        assert!(rows[5].preset.as_ref().unwrap_err().contains("line 2"));
         assert_eq!(listing(None).len(), BUNDLED.len());
     }
 

@@ -136,11 +136,15 @@ impl Model {
     }
 
     /// The same model with `param` set to the accepted value nearest to `value` (see
-    /// [`crate::kernel::params::Domain::clamp`]): infallible, for sweeps and root finding whose range was
+    /// [`crate::kernel::params::Domain::clamp`] and [`Model::accepted_range`]): infallible, for sweeps and root finding whose range was
     /// checked. A parameter of the other model leaves the model as it is.
     pub fn with_clamped(&self, param: Param, value: f64) -> Model {
         let mut inputs = self.inputs();
-        if inputs.set(param, param.spec().domain.clamp(value)).is_err() {
+        let (lo, hi) = self.accepted_range(param);
+        if inputs
+            .set(param, param.spec().domain.clamp(value).clamp(lo, hi))
+            .is_err()
+        {
             return *self;
         }
         // Every other value came from this (valid) model and the new one is in its domain, so
@@ -167,6 +171,40 @@ impl Model {
             Model::Beam { beams, .. } => Some(beams.threshold_force()),
             Model::Plate(_) => None,
             Model::Lap { joint, .. } => Some(joint.gross_slip_force()),
+        }
+    }
+
+    /// The values `param` may take with every other input as in this model: its domain, and for
+    /// the lap joint also F <= F_gross = 2 b mu P L, which bounds F from above and L, b, P and mu
+    /// from below (F_gross is proportional to each of them). What a chart or sweep over `param`
+    /// keeps inside, so that every point of it has a state.
+    pub fn accepted_range(&self, param: Param) -> (f64, f64) {
+        let domain = param.spec().domain;
+        let (min, max) = (domain.min(), domain.max());
+        let Model::Lap { joint, force } = self else {
+            return (min, max);
+        };
+        let Param::Lap(lap_param) = param else {
+            return (min, max);
+        };
+        let gross = joint.gross_slip_force();
+        match lap_param {
+            LapParam::Force => (min, max.min(gross)),
+            LapParam::Length | LapParam::Width | LapParam::Pressure | LapParam::Friction => {
+                let value = self.inputs().get(param).unwrap_or(min);
+                // The value at which F_gross falls to F, moved up past round-off until the
+                // force is accepted there (a few ulps at most).
+                let mut lowest = min.max(value * force.newtons() / gross).min(max);
+                let mut inputs = self.inputs();
+                for _ in 0..8 {
+                    if inputs.set(param, lowest).is_ok() && inputs.validate().is_ok() {
+                        break;
+                    }
+                    lowest = lowest.next_up().min(max);
+                }
+                (lowest, max)
+            }
+            _ => (min, max),
         }
     }
 

@@ -344,7 +344,8 @@ mod tests {
             stiffnesses,
             [
                 Param::Beam(BeamParam::Stiffness),
-                Param::Plate(PlateParam::Stiffness)
+                Param::Plate(PlateParam::Stiffness),
+                Param::Lap(LapParam::Stiffness)
             ]
         );
     }
@@ -468,7 +469,11 @@ mod tests {
         let listed: Vec<_> = names.iter().map(|(k, v)| (k, *v)).collect();
         assert_eq!(
             listed,
-            [(ModelKind::Beam, "beam"), (ModelKind::Plate, "changed")]
+            [
+                (ModelKind::Beam, "beam"),
+                (ModelKind::Plate, "changed"),
+                (ModelKind::Lap, "lap")
+            ]
         );
     }
 

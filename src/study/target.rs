@@ -274,18 +274,37 @@ fn scan_grid(lo: f64, hi: f64, points: usize) -> Vec<f64> {
 
 /// The range a search covers: `range` checked against the parameter's domain, or the whole domain
 /// (for the Poisson ratio, up to the largest value below 0.5).
-fn search_range(param: Param, range: Option<(f64, f64)>) -> Result<(f64, f64), TargetError> {
+fn search_range(
+    model: &Model,
+    param: Param,
+    range: Option<(f64, f64)>,
+) -> Result<(f64, f64), TargetError> {
     let spec = param.spec();
     let domain = spec.domain;
+    // Where the other inputs bound the parameter (the lap joint's F <= F_gross): only there has
+    // the model a state.
+    let (least, most) = model.accepted_range(param);
     let (lo, hi) = match range {
         Some(r) => r,
-        None => (domain.min(), domain.clamp(domain.max())),
+        None => (least, domain.clamp(most)),
     };
     for value in [lo, hi] {
         if !domain.contains(value) {
             return Err(TargetError::Range {
                 param: spec.name,
                 reason: format!("{} {}", Compact(value), domain.refusal(value, spec.unit)),
+            });
+        }
+        if !(least..=most).contains(&value) {
+            return Err(TargetError::Range {
+                param: spec.name,
+                reason: format!(
+                    "{} leaves no state with the other values: the accepted range is [{}, {}] \
+                     (the lap joint's force must not exceed F_gross = 2 b mu P L)",
+                    Compact(value),
+                    Compact(least),
+                    Compact(most)
+                ),
             });
         }
     }
@@ -349,7 +368,7 @@ pub fn solve_for_target(
             kind,
         });
     }
-    let range = search_range(param, range)?;
+    let range = search_range(model, param, range)?;
     let at = |x: f64| model.with_clamped(param, x).quantity(quantity);
     // The misfit, relative where the target is not zero so that Brent sees numbers near 1.
     let misfit = |y: f64| {

@@ -1609,11 +1609,20 @@ impl App {
         let Some(value) = self.inputs().get(param) else {
             return;
         };
-        // The force steps in fractions of F_thre, the scale at which the regimes change.
+        // The force steps in fractions of its regime scale (F_thre, F_gross).
         let scale = self.regime_scale_of(self.kind).unwrap_or(1.0);
         // A step stops at the edge of the accepted domain rather than being refused there.
+        // The lap joint's F stops at F_gross, and L, b, P, mu where F_gross falls to F.
         let spec = param.spec();
-        let next = spec.domain.clamp(spec.scale.step(value, up, coarse, scale));
+        let (lo, hi) = self
+            .model()
+            .map_or((spec.domain.min(), spec.domain.max()), |m| {
+                m.accepted_range(param)
+            });
+        let next = spec
+            .domain
+            .clamp(spec.scale.step(value, up, coarse, scale))
+            .clamp(lo, hi);
         self.set_value(param, next);
     }
 
@@ -2034,6 +2043,9 @@ mod tests {
         app.update(Action::SwitchModel);
         assert!(pinned(&app).is_empty());
         app.update(Action::SwitchModel);
+        assert_eq!(app.kind(), ModelKind::Lap);
+        assert!(pinned(&app).is_empty());
+        app.update(Action::SwitchModel);
         assert_eq!(pinned(&app).len(), 2);
         // A fifth pin replaces the oldest, and its number is free again.
         for mu in ["0.25", "0.35"] {
@@ -2165,6 +2177,7 @@ mod tests {
         app.update(Action::IncreaseCoarse); // L 250
         app.update(Action::SwitchModel);
         app.update(Action::IncreaseCoarse); // plate L 12.5
+        app.update(Action::SwitchModel); // the lap joint, unchanged
         app.update(Action::SwitchModel);
         app.update(Action::IncreaseCoarse); // L 312.5
         assert_eq!(app.history(), (3, 0));
@@ -2286,6 +2299,9 @@ mod tests {
         assert_eq!(app.preset_name(), "paper-plate");
         assert_eq!(app.selected_param().name(), "L");
         app.update(Action::SwitchModel);
+        assert_eq!(app.kind(), ModelKind::Lap);
+        assert_eq!(app.preset_name(), "lap-aluminium");
+        app.update(Action::SwitchModel);
         assert_eq!(app.inputs().get(L), Some(250.0));
     }
 
@@ -2391,7 +2407,13 @@ mod tests {
         let names: Vec<&str> = entries.iter().map(|e| e.name.as_str()).collect();
         assert_eq!(
             names,
-            ["paper-beams", "paper-beams-soft", "paper-plate", "broken"]
+            [
+                "paper-beams",
+                "paper-beams-soft",
+                "paper-plate",
+                "lap-aluminium",
+                "broken"
+            ]
         );
         press(&mut app, Action::Next);
         press(&mut app, Action::Commit);
@@ -2399,7 +2421,7 @@ mod tests {
         assert_eq!(app.inputs().get(KT), Some(120.0));
         // Invalid user file: refused with its problem, picker stays open.
         press(&mut app, Action::OpenPresets);
-        for _ in 0..2 {
+        for _ in 0..3 {
             press(&mut app, Action::Next);
         }
         press(&mut app, Action::Commit);

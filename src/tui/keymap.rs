@@ -156,7 +156,7 @@ pub const BINDINGS: &[Binding] = &[
         Context::Main,
         &[(KeyCode::Char('m'), NONE), (KeyCode::Tab, NONE)],
         Action::SwitchModel,
-        "switch beams / plate",
+        "beams>plate>lap joint",
     ),
     bind(
         Context::Main,
@@ -216,7 +216,7 @@ pub const BINDINGS: &[Binding] = &[
         Context::Main,
         &[(KeyCode::Char('v'), NONE)],
         Action::Vary,
-        "chart w(L)|u(L) vs row",
+        "chart response vs row",
     ),
     bind(
         Context::Main,
