@@ -78,6 +78,36 @@ fn plate_views() {
     insta::assert_snapshot!("plate_contact_pressure_chart", screen(&app, 100, 30));
 }
 
+/// The lap joint, as a newcomer meets it: `m` twice from the beams, at 80x24 in ASCII (regime,
+/// both sliding zones, Delta, D and zeta must show), at 120x40 in Unicode, and each of its charts.
+#[test]
+fn lap_views() {
+    let mut ascii = app_with("paper-beams", Charset::Ascii, false);
+    press(&mut ascii, Action::SwitchModel);
+    press(&mut ascii, Action::SwitchModel);
+    let small = screen(&ascii, 80, 24);
+    for needed in [
+        "macro+micro+macro",
+        "a 0.989 d 3.85 mm sliding",
+        "Delta regularized 0.0140117 mm",
+        "D 2.08 N mm zeta 0.00789",
+        "FE: not calibrated",
+    ] {
+        assert!(small.contains(needed), "{needed}\n{small}");
+    }
+    insta::assert_snapshot!("lap_view_80x24_ascii", small);
+    let mut app = app();
+    press(&mut app, Action::SwitchModel);
+    press(&mut app, Action::SwitchModel);
+    insta::assert_snapshot!("lap_view_120x40", screen(&app, 120, 40));
+    for name in ["lap_zones_chart", "lap_shear_chart", "lap_loop_chart", "lap_dissipation_chart"] {
+        press(&mut app, Action::NextChart);
+        insta::assert_snapshot!(name, screen(&app, 100, 30));
+    }
+    press(&mut app, Action::NextChart);
+    insta::assert_snapshot!("lap_kt_table", screen(&app, 80, 24));
+}
+
 #[test]
 fn help_overlay() {
     let mut app = app();

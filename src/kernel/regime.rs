@@ -50,6 +50,17 @@ impl Regime {
         }
     }
 
+    /// The label where a screen has room for 19 characters (the TUI's regime pane at 80x24):
+    /// the three-zone regimes of the lap joint as `macro+stick+macro`, `macro+micro+macro`;
+    /// every other regime as [`Regime::label`].
+    pub fn short_label(self) -> &'static str {
+        match self {
+            Regime::MacroslipStickMacroslip => "macro+stick+macro",
+            Regime::MacroslipMicroslipMacroslip => "macro+micro+macro",
+            other => other.label(),
+        }
+    }
+
     /// True when some part of the interface slides at the Coulomb stress mu P.
     pub fn has_macroslip(self) -> bool {
         matches!(
@@ -91,5 +102,19 @@ mod tests {
         assert!(!Regime::Microslip.has_macroslip());
         assert!(!Regime::Stick.has_macroslip());
         assert!(Regime::Macroslip.has_macroslip());
+        for regime in [
+            Regime::Stick,
+            Regime::Microslip,
+            Regime::Macroslip,
+            Regime::StickMacroslip,
+            Regime::MicroslipMacroslip,
+            Regime::MacroslipStickMacroslip,
+            Regime::MacroslipStick,
+            Regime::MacroslipMicroslipMacroslip,
+            Regime::MacroslipMicroslip,
+            Regime::Unloaded,
+        ] {
+            assert!(regime.short_label().len() <= 19, "{regime}");
+        }
     }
 }

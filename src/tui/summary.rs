@@ -88,8 +88,8 @@ fn lap_lines(
         )
     } else {
         (
-            row.regime_coulomb.to_string(),
-            row.regime_regularized.to_string(),
+            row.regime_coulomb.short_label().to_string(),
+            row.regime_regularized.short_label().to_string(),
             format!("At F = {} N (joint force)", number(row.force)),
         )
     };
@@ -116,7 +116,7 @@ fn lap_lines(
             "regularized",
             regularized,
             "regularized law, zones from x = 0 (the inner plate's end) to x = L (the covers' \
-             ends): microslip = elastic slip below mu P; macroslip = sliding at mu P",
+             ends): micro(slip) = elastic slip below mu P; macro(slip) = sliding at mu P",
         ),
         plain(
             format!("F_1 {} N: {end} slides", number(joint.first_slip_force())),
@@ -132,7 +132,8 @@ fn lap_lines(
             format!("F_gross {} N: all slides", number(joint.gross_slip_force())),
             "2 b mu P L: both interfaces slide over the whole overlap; the joint carries no more \
              (F is refused above it)",
-        ),
+        )
+        .dropped(6),
         plain(
             format!("a {} d {} mm sliding", number_with(a, 3), number_with(d, 3)),
             "regularized law: the sliding zones, a from x = 0 (inner plate's end), d from x = L \
@@ -148,7 +149,7 @@ fn lap_lines(
             "joint displacement u_inner(L) - u_cover(0) under the regularized law: what an \
              extensometer across the overlap reads",
         ),
-        plain(format!("ratio to Coulomb {ratio}"), ratio_meaning),
+        plain(format!("ratio to Coulomb {ratio}"), ratio_meaning).dropped(5),
         plain(
             format!(
                 "D {} N mm zeta {}",
