@@ -100,7 +100,12 @@ fn lap_views() {
     press(&mut app, Action::SwitchModel);
     press(&mut app, Action::SwitchModel);
     insta::assert_snapshot!("lap_view_120x40", screen(&app, 120, 40));
-    for name in ["lap_zones_chart", "lap_shear_chart", "lap_loop_chart", "lap_dissipation_chart"] {
+    for name in [
+        "lap_zones_chart",
+        "lap_shear_chart",
+        "lap_loop_chart",
+        "lap_dissipation_chart",
+    ] {
         press(&mut app, Action::NextChart);
         insta::assert_snapshot!(name, screen(&app, 100, 30));
     }

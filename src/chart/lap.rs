@@ -61,21 +61,21 @@ pub(crate) fn lap_plot(
             })
         }
         LapChart::Zones => {
-            let (a, d) = curves::lap_zones_vs_force(joint, forces).ok()?;
+            let (coulomb, regularized) = curves::lap_zone_outline_vs_force(joint, forces).ok()?;
             let series = vec![
-                line(SeriesRole::Coulomb, "a, from x = 0", a),
-                line(SeriesRole::Current, "d, from x = L", d),
+                line(SeriesRole::Coulomb, "Coulomb: a, L-d", coulomb),
+                line(SeriesRole::Current, "regularized: a, L-d", regularized),
                 cursor(f, [0.0, p.length]),
             ];
             Some(Plot {
                 caption: None,
+                // At most 41 characters (the title row of an 80x24 screen's chart pane).
                 title: format!(
-                    "a, d vs F, F_1 = {} N at {}",
-                    number(joint.first_slip_force()),
-                    joint.first_slip().key()
+                    "zones: slide below a, above L-d; F_1 {} N",
+                    number_with(joint.first_slip_force(), 4)
                 ),
                 x: linear_axis("F (N)", 0.0, f_max),
-                y: linear_axis("sliding zone (mm)", 0.0, p.length),
+                y: linear_axis("x (mm)", 0.0, p.length),
                 series,
             })
         }

@@ -36,7 +36,8 @@ pub enum PlateChart {
 pub enum LapChart {
     /// Joint displacement Delta against F, for K_T/5, K_T, 5 K_T and Coulomb.
     Displacement,
-    /// The sliding zones a (from x = 0) and d (from x = L) against F.
+    /// The zones against F: the sliding zones [0, a] and [L - d, L] outside the outline of the
+    /// middle zone, for both laws.
     Zones,
     /// Interface shear tau(x) along the overlap at F.
     Shear,
@@ -174,7 +175,7 @@ impl ChartSet for LapChart {
     fn title(self) -> &'static str {
         match self {
             LapChart::Displacement => "Delta vs F",
-            LapChart::Zones => "a, d vs F",
+            LapChart::Zones => "zones vs F",
             LapChart::Shear => "tau(x) at F",
             LapChart::Loop => "loop +-F",
             LapChart::Dissipation => "D vs F_a",

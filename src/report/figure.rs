@@ -564,7 +564,18 @@ impl Bench {
     /// The index entry of `chart` on the y axis `y`.
     pub(crate) fn entry(&self, chart: AnyChart, y: YMode) -> IndexEntry {
         IndexEntry {
-            stem: format!("{}-{}", chart.kind().name(), chart.key()),
+            // A chart key that already names its problem (`lap-tau`) is not named twice.
+            stem: {
+                let model = chart.kind().name();
+                match chart
+                    .key()
+                    .strip_prefix(model)
+                    .and_then(|k| k.strip_prefix('-'))
+                {
+                    Some(rest) => format!("{model}-{rest}"),
+                    None => format!("{model}-{}", chart.key()),
+                }
+            },
             title: chart.title(),
             caption: format!(
                 "{} (preset <code>{}</code>: {}",

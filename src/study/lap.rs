@@ -143,20 +143,28 @@ pub(crate) fn lap_displacement_vs_force(
         .unzip())
 }
 
-/// The regularized sliding zones a (from x = 0) and d (from x = L) (mm) against F (N).
+/// The middle zone's edges against F, one closed outline per law: x = a (mm) from F = 0 up to
+/// the last force, then x = L - d back down to F = 0. The two meet where a + d = L (F_gross), so
+/// the outline encloses the zone that sticks (Coulomb) or slips elastically (regularized), and
+/// the sliding zones lie outside it: (Coulomb, regularized).
 ///
 /// # Errors
 /// As [`lap_force_sweep`].
-pub(crate) fn lap_zones_vs_force(
+pub(crate) fn lap_zone_outline_vs_force(
     joint: &LapJoint,
     forces: Samples,
 ) -> Result<(Series, Series), RangeError> {
-    Ok(lap_force_sweep(*joint, forces)?
-        .map(|p| {
-            let (a, d) = p.zones_regularized;
-            ((p.force, a), (p.force, d))
-        })
-        .unzip())
+    let length = joint.params().length;
+    let rows: Vec<LapPoint> = lap_force_sweep(*joint, forces)?.collect();
+    let outline = |zones: fn(&LapPoint) -> (f64, f64)| -> Series {
+        let up = rows.iter().map(|p| (p.force, zones(p).0));
+        let down = rows.iter().rev().map(|p| (p.force, length - zones(p).1));
+        up.chain(down).collect()
+    };
+    Ok((
+        outline(|p| p.zones_coulomb),
+        outline(|p| p.zones_regularized),
+    ))
 }
 
 /// Interface shear tau (MPa) on the inner plate along the overlap at one force: (Coulomb,
