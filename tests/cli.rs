@@ -2144,3 +2144,129 @@ fn beams_beyond_the_calibrated_friction_strain_get_no_bound() {
         "{text}"
     );
 }
+
+/// The lap joint from the command line (issue 24): every command that has it, what it refuses and
+/// why, and the commands not built for it yet refusing by name rather than misreading a file.
+#[test]
+fn the_lap_joint_from_the_command_line() {
+    let text = stdout_of(&["lap"]);
+    for needed in [
+        "Clamped double-lap joint",
+        "F_1        = 2015.89 N",
+        "at x = L (covers' ends)",
+        "macroslip+microslip+macroslip",
+        "not calibrated",
+    ] {
+        assert!(text.contains(needed), "{needed}\n{text}");
+    }
+    // F beyond F_gross: refused with the bound and why, exit 2.
+    let refused = failure(&["lap", "--set", "F=6001"], 2);
+    assert!(
+        refused.contains(
+            "invalid F = 6001: must be in [0, 6000] N (F_gross = 2 b mu P L: the joint slides \
+             through beyond it)"
+        ),
+        "{refused}"
+    );
+    // Sweeps over F (up to F_gross) and over any parameter, refusing an end with no state.
+    let csv = stdout_of(&[
+        "sweep", "lap", "--from", "0", "--to", "6000", "--points", "7",
+    ]);
+    assert!(
+        csv.starts_with("F_N,Delta_coulomb_mm,Delta_regularized_mm,a_mm,d_mm,"),
+        "{csv}"
+    );
+    assert_eq!(csv.lines().count(), 8);
+    assert!(
+        csv.lines().last().unwrap().ends_with("macroslip,macroslip"),
+        "{csv}"
+    );
+    let beyond = failure(
+        &[
+            "sweep", "lap", "--from", "0", "--to", "7000", "--points", "3",
+        ],
+        2,
+    );
+    assert!(beyond.contains("F_gross"), "{beyond}");
+    let varied = stdout_of(&[
+        "sweep", "lap", "--vary", "KT", "--from", "100", "--to", "1e5", "--points", "4",
+    ]);
+    assert!(
+        varied.starts_with("KT_MPa_per_mm,F_N,Delta_coulomb_mm"),
+        "{varied}"
+    );
+    let low_mu = failure(
+        &[
+            "sweep", "lap", "--vary", "mu", "--from", "0.1", "--to", "0.5", "--points", "3",
+        ],
+        2,
+    );
+    assert!(low_mu.contains("at mu = 0.1, invalid F = 3000"), "{low_mu}");
+    // Cycles of a lap preset; the loop's columns name Delta.
+    let cycle = stdout_of(&["cycle", "--preset", "lap-aluminium", "--amplitude", "4000"]);
+    assert!(cycle.contains("Double-lap joint, force cycling"), "{cycle}");
+    let loop_csv = stdout_of(&[
+        "cycle",
+        "--preset",
+        "lap-aluminium",
+        "--amplitude",
+        "4000",
+        "--format",
+        "csv",
+        "--points",
+        "3",
+    ]);
+    assert!(loop_csv.starts_with("branch,F_N,Delta_coulomb_mm,Delta_regularized_mm"));
+    let too_big = failure(
+        &["cycle", "--preset", "lap-aluminium", "--amplitude", "9000"],
+        2,
+    );
+    assert!(
+        too_big.contains("--amplitude = 9000") && too_big.contains("F_gross"),
+        "{too_big}"
+    );
+    let sweep_cycle = stdout_of(&[
+        "sweep",
+        "cycle",
+        "--from",
+        "0",
+        "--to",
+        "6000",
+        "--points",
+        "4",
+        "--preset",
+        "lap-aluminium",
+    ]);
+    assert_eq!(sweep_cycle.lines().count(), 5, "{sweep_cycle}");
+    // Solve searches only where F <= F_gross; kt --tolerance answers for Delta.
+    let solved = stdout_of(&["solve", "lap", "--vary", "mu", "--target", "Delta=0.015"]);
+    assert!(solved.contains("searched mu in [0.15, 10]"), "{solved}");
+    let tolerance = stdout_of(&["kt", "--preset", "lap-aluminium", "--tolerance", "1%"]);
+    assert!(tolerance.contains("(L11)"), "{tolerance}");
+    assert!(failure(&["lap", "--beam-theory", "timoshenko"], 2).contains("not the lap joint"));
+    // Not built yet: said by name, nothing written.
+    let deck = failure(&["deck", "ccx", "lap"], 2);
+    assert!(
+        deck.contains("lap joint's CalculiX deck is not built yet"),
+        "{deck}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("r.csv");
+    std::fs::write(&data, "F_N,w_mm\n1,0.001\n").unwrap();
+    let compare = failure(&["compare", "lap", data.to_str().unwrap()], 2);
+    assert!(compare.contains("compare lap"), "{compare}");
+    let fit = failure(
+        &[
+            "fit",
+            "beam",
+            data.to_str().unwrap(),
+            "--preset",
+            "lap-aluminium",
+        ],
+        2,
+    );
+    assert!(fit.contains("needs a beam preset"), "{fit}");
+    // The plate has no load to cycle.
+    let plate = failure(&["cycle", "--amplitude", "1", "--preset", "paper-plate"], 2);
+    assert!(plate.contains("needs a beam or lap preset"), "{plate}");
+}

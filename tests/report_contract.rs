@@ -1,4 +1,4 @@
-//! The output contract of the single-point reports (`beam`, `plate`, `cycle`, `kt`, `kt
+//! The output contract of the single-point reports (`beam`, `plate`, `lap`, `cycle`, `kt`, `kt
 //! --tolerance`, `fit`, `solve`, `compare`): users' scripts read their JSON keys and CSV columns, so
 //! the full set of JSON key paths of each case (with each value's JSON type) and each CSV header
 //! are pinned here, written out literally from the outputs captured before the reports became
@@ -457,6 +457,78 @@ const COMPARE_PLATE_HEADER: &str = "KT_MPa_per_mm,u_fe_mm,u_fe_contact_face_mm,\
 u_fe_mid_thickness_mm,u_mm,diff,diff_contact_face,diff_mid_thickness,u_coulomb_mm,regime,\
 regime_fe,Xr_mm,Xr_fe_mm,KT_implied_MPa_per_mm,strip_theory";
 
+/// The lap joint's report (issue 24): pinned when it was first published.
+const LAP: &[&str] = &[
+    "F_1_N: number",
+    "F_2_N: number",
+    "F_gross_N: number",
+    "coulomb: object",
+    "coulomb.Delta_mm: number",
+    "coulomb.a_mm: number",
+    "coulomb.d_mm: number",
+    "coulomb.regime: string",
+    "covers_stiffness_N_per_mm: number",
+    "decay_length_mm: number",
+    "first_slip_at: string",
+    "inner_stiffness_N_per_mm: number",
+    "inputs: object",
+    "inputs.E1_MPa: number",
+    "inputs.E2_MPa: number",
+    "inputs.F_N: number",
+    "inputs.KT_MPa_per_mm: number",
+    "inputs.L_mm: number",
+    "inputs.P_MPa: number",
+    "inputs.b_mm: number",
+    "inputs.mu: number",
+    "inputs.t1_mm: number",
+    "inputs.t2_mm: number",
+    "model: string",
+    "preset: string",
+    "regularized: object",
+    "regularized.Delta_mm: number",
+    "regularized.a_mm: number",
+    "regularized.d_mm: number",
+    "regularized.regime: string",
+    "saturation_slip_mm: number",
+    "shear_lag: object",
+    "shear_lag.decay_length_over_thickness: number",
+    "shear_lag.note: string",
+    "shear_lag.validity: string",
+];
+
+/// The lap joint's cycle report (issue 24).
+const LAP_CYCLE: &[&str] = &[
+    "Fa_N: number",
+    "coulomb: object",
+    "coulomb.D_Nmm: number",
+    "coulomb.Delta_peak_mm: number",
+    "coulomb.U_Nmm: number",
+    "coulomb.onset_N: number",
+    "coulomb.secant_stiffness_N_per_mm: number",
+    "coulomb.zeta: number",
+    "inputs: object",
+    "inputs.E1_MPa: number",
+    "inputs.E2_MPa: number",
+    "inputs.F_N: number",
+    "inputs.KT_MPa_per_mm: number",
+    "inputs.L_mm: number",
+    "inputs.P_MPa: number",
+    "inputs.b_mm: number",
+    "inputs.mu: number",
+    "inputs.t1_mm: number",
+    "inputs.t2_mm: number",
+    "model: string",
+    "note: string",
+    "preset: string",
+    "regularized: object",
+    "regularized.D_Nmm: number",
+    "regularized.Delta_peak_mm: number",
+    "regularized.U_Nmm: number",
+    "regularized.onset_N: number",
+    "regularized.secant_stiffness_N_per_mm: number",
+    "regularized.zeta: number",
+];
+
 const CASES: &[Case] = &[
     Case {
         name: "beam-F120",
@@ -507,6 +579,20 @@ const CASES: &[Case] = &[
         args: &["cycle", "--amplitude", "150"],
         formats: TEXT_JSON,
         keys: &[CYCLE],
+        header: None,
+    },
+    Case {
+        name: "lap",
+        args: &["lap"],
+        formats: TEXT_JSON,
+        keys: &[LAP],
+        header: None,
+    },
+    Case {
+        name: "lap-cycle",
+        args: &["cycle", "--preset", "lap-aluminium", "--amplitude", "4000"],
+        formats: TEXT_JSON,
+        keys: &[LAP_CYCLE],
         header: None,
     },
     Case {
