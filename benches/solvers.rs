@@ -3,6 +3,7 @@
 use divan::{Bencher, black_box};
 use microslip::fit::{Measurement, fit_twin_beams};
 use microslip::numeric::MeshDensity;
+use microslip::problems::lap::closed_form::{LapJoint, LapParams};
 use microslip::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
 use microslip::problems::twin_beams::TwinBeamsFe;
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
@@ -19,6 +20,18 @@ fn beam_closed_form(bencher: Bencher, force: f64) {
     bencher.bench_local(|| {
         let state = black_box(&beams).regularized(black_box(force));
         (state.micro_zone_end(), state.tip_deflection())
+    });
+}
+
+/// Closed form, regularized lap joint at one force (the bundled joint): all microslip (1000 N),
+/// one end sliding (2400 N: a root for e), both ends (4000 N: a root for l), then Delta.
+#[divan::bench(args = [1000.0, 2400.0, 4000.0])]
+fn lap_closed_form(bencher: Bencher, force: f64) {
+    let joint = LapJoint::new(LapParams::ALUMINIUM).unwrap();
+    let force = joint.force(force).unwrap();
+    bencher.bench_local(|| {
+        let state = black_box(&joint).regularized(black_box(force));
+        (state.slide_at_cover_ends(), state.joint_displacement())
     });
 }
 

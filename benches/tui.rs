@@ -117,6 +117,12 @@ fn recompute_plate_view(bencher: Bencher, chart: usize) {
     recompute(bencher, "paper-plate", chart);
 }
 
+/// The lap joint's charts 0-4, and 5: the K_T table with its two tolerance solves.
+#[divan::bench(args = [0, 1, 2, 3, 4, 5])]
+fn recompute_lap_view(bencher: Bencher, chart: usize) {
+    recompute(bencher, "lap-aluminium", chart);
+}
+
 /// Drawing one frame (all panes, chart included) into a 200x60 TestBackend.
 #[divan::bench(args = ["unicode", "ascii"])]
 fn render_200x60(bencher: Bencher, charset: &str) {

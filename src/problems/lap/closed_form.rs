@@ -16,7 +16,7 @@ pub use super::params::LapParams;
 use crate::kernel::hyperbolic::{cosh_sinh_ratio, one_minus_tanhc, sech, tanhc};
 use crate::kernel::params::{Domain, ParamError};
 use crate::kernel::regime::{Law, Regime};
-use crate::kernel::solve::find_root_in_bracket;
+use crate::kernel::solve::{find_root_in_bracket, find_root_newton};
 use crate::problems::Solution;
 use crate::problems::lap::params::LapParam;
 
@@ -32,6 +32,11 @@ pub struct LapJoint {
     c: f64,
     /// lambda = sqrt(2 c K_T) (1/mm): inverse length of the elastic slip's decay (L2).
     lambda: f64,
+    /// F_1 and F_2 (N), (L3) and (L4'): load-independent, so solved once here rather than at
+    /// every force (F_2 is a root).
+    slip_forces: (f64, f64),
+    /// The elastic length at F_2 (mm): with L at F_1, where (L4)'s root starts from.
+    second_elastic: f64,
 }
 
 /// A validated force through the joint, 0 <= F <= F_gross (N).
@@ -103,13 +108,19 @@ impl LapJoint {
         let k2 = params.covers_stiffness();
         let c = 1.0 / k1 + 1.0 / k2;
         let lambda = (2.0 * c * params.tangential_stiffness).sqrt();
-        Ok(LapJoint {
+        let mut joint = LapJoint {
             params,
             k1,
             k2,
             c,
             lambda,
-        })
+            slip_forces: (0.0, 0.0),
+            second_elastic: 0.0,
+        };
+        let (second, elastic) = joint.solve_second_slip_force();
+        joint.slip_forces = (joint.solve_first_slip_force(), second);
+        joint.second_elastic = elastic;
+        Ok(joint)
     }
 
     /// The inputs this joint was built from.
@@ -199,6 +210,10 @@ impl LapJoint {
     /// 2 c mu P b L tanhc(lambda L) / (1/k_s + sech(lambda L)/k_o), k_s the stiffness of the
     /// member loaded at the sliding end (the more compliant one).
     pub fn first_slip_force(&self) -> f64 {
+        self.slip_forces.0
+    }
+
+    fn solve_first_slip_force(&self) -> f64 {
         let (soft, stiff) = (self.k1.min(self.k2), self.k1.max(self.k2));
         let z = self.lambda * self.params.length;
         2.0 * self.c * self.coulomb_stress() * self.params.width * self.params.length * tanhc(z)
@@ -209,6 +224,11 @@ impl LapJoint {
     /// with the elastic zone l solving l + (l/2) tanhc(lambda l/2) (k_o - k_s)/k_s = L,
     /// F_2 = b k_o c mu P l tanhc(lambda l/2).
     pub fn second_slip_force(&self) -> f64 {
+        self.slip_forces.1
+    }
+
+    /// F_2 (N) and the elastic length there (mm).
+    fn solve_second_slip_force(&self) -> (f64, f64) {
         let (soft, stiff) = (self.k1.min(self.k2), self.k1.max(self.k2));
         let lambda = self.lambda;
         let length = self.params.length;
@@ -218,12 +238,13 @@ impl LapJoint {
             0.0,
             length,
         );
-        self.params.width
+        let force = self.params.width
             * stiff
             * self.c
             * self.coulomb_stress()
             * elastic
-            * tanhc(0.5 * lambda * elastic)
+            * tanhc(0.5 * lambda * elastic);
+        (force, elastic)
     }
 
     /// The slopes of the slip at the two ends that the force sets (L1), in units of 2 c mu P, so
@@ -257,8 +278,18 @@ impl LapJoint {
                 FirstSlip::InnerEnd => (g0, gl),
                 FirstSlip::CoverEnds | FirstSlip::BothEnds => (gl, g0),
             };
-            let elastic = find_root_in_bracket(
+            // d/de [e (1 - tanhc(lambda e))] = tanh^2(lambda e); Newton from e interpolated
+            // between L at F_1 and the elastic length at F_2, certified and bracketed (it falls
+            // back to Brent's method on [0, L]).
+            let (f1, f2) = self.slip_forces;
+            let start = length + (self.second_elastic - length) * (f - f1) / (f2 - f1);
+            let elastic = find_root_newton(
                 |e| length - e * one_minus_tanhc(lambda * e) - sliding - other * sech(lambda * e),
+                |e| {
+                    let t = (lambda * e).tanh();
+                    -t * t + other * lambda * sech(lambda * e) * t
+                },
+                start,
                 0.0,
                 length,
             );
@@ -269,8 +300,20 @@ impl LapJoint {
         } else {
             // (L5): l (1 - tanhc(lambda l/2)) = L (1 - F/F_gross).
             let remaining = (length - g0 - gl).max(0.0);
-            let elastic = find_root_in_bracket(
+            // phi(l) = l (1 - tanhc(lambda l/2)) grows with slope tanh^2(lambda l/2): like
+            // lambda^2 l^3 / 12 for short zones, like l - 2/lambda for long ones; Newton starts
+            // from the larger of the two estimates (phi is convex, so it then never overshoots
+            // below the root) and is certified and bracketed.
+            let start = (remaining + 2.0 / lambda)
+                .max((12.0 * remaining / (lambda * lambda)).cbrt())
+                .min(length);
+            let elastic = find_root_newton(
                 |l| l * one_minus_tanhc(0.5 * lambda * l) - remaining,
+                |l| {
+                    let t = (0.5 * lambda * l).tanh();
+                    t * t
+                },
+                start,
                 0.0,
                 length,
             );
