@@ -536,6 +536,25 @@ pub enum FitCommand {
         #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
         format: ReportFormat,
     },
+    /// Lap joint: fit mu and K_T to measured Delta vs F (CSV with columns F_N,Delta_mm); the
+    /// geometry, moduli and P come from the preset (default lap-aluminium).
+    Lap {
+        /// Measurements: CSV with a header naming F_N and Delta_mm (other columns are ignored).
+        #[arg(value_name = "DATA.csv")]
+        data: PathBuf,
+        #[command(flatten)]
+        inputs: InputArgs,
+        /// Hold a parameter at a value instead of fitting it: mu=0.3 or KT=1000 (repeatable).
+        #[arg(long = "fix", value_name = "KEY=VALUE")]
+        fixed: Vec<String>,
+        /// What the standard errors assume about the scatter of Delta [default: relative; a
+        /// sigma_mm column in the data gives each point's own, taken as known].
+        #[arg(long, value_enum)]
+        weights: Option<WeightsArg>,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+        format: ReportFormat,
+    },
 }
 
 /// `fit beam --weights`: the scatter of the measured w that the standard errors assume.
@@ -1016,7 +1035,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             fixed,
             weights,
             format,
-        })) => run_fit(out, data, inputs, fixed, *weights, *format)?,
+        })) => run_fit(out, ModelKind::Beam, data, inputs, fixed, *weights, *format)?,
+        Some(Command::Fit(FitCommand::Lap {
+            data,
+            inputs,
+            fixed,
+            weights,
+            format,
+        })) => run_fit(out, ModelKind::Lap, data, inputs, fixed, *weights, *format)?,
         Some(Command::Kt {
             inputs,
             element_size,
@@ -1787,6 +1813,7 @@ fn parse_fixed(fixed: &[String]) -> Result<(Option<f64>, Option<f64>), CliError>
 
 fn run_fit(
     out: &mut impl Write,
+    kind: ModelKind,
     path: &PathBuf,
     inputs: &InputArgs,
     fixed: &[String],
@@ -1794,7 +1821,16 @@ fn run_fit(
     format: ReportFormat,
 ) -> Result<(), CliError> {
     let (fixed_mu, fixed_kt) = parse_fixed(fixed)?;
-    let (name, beams, _) = load_beams(inputs, "fit beam")?;
+    let (name, structure) = match kind {
+        ModelKind::Lap => {
+            let (name, joint, _) = load_lap(inputs, "fit lap")?;
+            (name, fit::Structure::Lap(joint.params()))
+        }
+        ModelKind::Beam | ModelKind::Plate => {
+            let (name, beams, _) = load_beams(inputs, "fit beam")?;
+            (name, fit::Structure::Beam(beams.params()))
+        }
+    };
     let data_error = |reason: String| CliError::Data {
         path: path.display().to_string(),
         reason,
@@ -1802,9 +1838,14 @@ fn run_fit(
     let mut progress = ProgressLine::new(io::stderr(), io::stderr().is_terminal());
     let contents = fit::data::read_text(path, crate::file::Kinds::AnyReadable)
         .map_err(|e| data_error(e.to_string()))?;
-    let data = fit::data::parse_measured_with_progress(&contents, &mut |done, total| {
-        progress.update(Instant::now(), || text::reading_progress(done, total))
-    });
+    let mut reading =
+        |done, total| progress.update(Instant::now(), || text::reading_progress(done, total));
+    let data = match structure {
+        fit::Structure::Beam(_) => fit::data::parse_measured_with_progress(&contents, &mut reading),
+        fit::Structure::Lap(_) => {
+            fit::data::parse_measured_joint_with_progress(&contents, &mut reading)
+        }
+    };
     drop(contents);
     let fit::data::Measured {
         points: data,
@@ -1832,23 +1873,18 @@ fn run_fit(
         (None, Some(WeightsArg::Absolute)) => fit::Weights::Absolute,
         (None, Some(WeightsArg::Relative) | None) => fit::Weights::default(),
     };
-    let result = fit::fit_twin_beams_weighted(
-        beams.params(),
-        &data,
-        fixed_mu,
-        fixed_kt,
-        weights,
-        &mut |p| progress.update(Instant::now(), || text::fit_progress(&p)),
-    );
+    let result = fit::fit_weighted(structure, &data, (fixed_mu, fixed_kt), weights, &mut |p| {
+        progress.update(Instant::now(), || text::fit_progress(&p))
+    });
     progress.finish();
     let result = result?;
     match format {
         ReportFormat::Text => out.write_all(
-            text::fit(&path.display().to_string(), &name, &beams.params(), &result).as_bytes(),
+            text::fit(&path.display().to_string(), &name, &structure, &result).as_bytes(),
         )?,
         ReportFormat::Json => write_json(
             out,
-            &json::fit(&path.display().to_string(), &name, &beams.params(), &result),
+            &json::fit(&path.display().to_string(), &name, &structure, &result),
         )?,
     }
     Ok(())

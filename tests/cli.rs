@@ -2266,6 +2266,34 @@ fn the_lap_joint_from_the_command_line() {
         2,
     );
     assert!(fit.contains("needs a beam preset"), "{fit}");
+    // fit lap: a sweep of a joint with mu 0.4, K_T 2500 gives both back.
+    let measured = dir.path().join("joint.csv");
+    std::fs::write(
+        &measured,
+        stdout_of(&[
+            "sweep", "lap", "--from", "100", "--to", "5500", "--points", "30", "--set", "mu=0.4",
+            "--set", "KT=2500",
+        ]),
+    )
+    .unwrap();
+    let fitted = stdout_of(&["fit", "lap", measured.to_str().unwrap()]);
+    assert!(fitted.contains("  mu  = 0.4 +- "), "{fitted}");
+    assert!(fitted.contains("F_gross = 8000 N"), "{fitted}");
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "fit",
+        "lap",
+        measured.to_str().unwrap(),
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert!((json["KT_MPa_per_mm"]["value"].as_f64().unwrap() / 2500.0 - 1.0).abs() < 1e-9);
+    assert!(json.get("F_thre_N").is_none() && json.get("F_gross_N").is_some());
+    let too_low = failure(
+        &["fit", "lap", measured.to_str().unwrap(), "--fix", "mu=0.05"],
+        2,
+    );
+    assert!(too_low.contains("F_gross"), "{too_low}");
     // The plate has no load to cycle.
     let plate = failure(&["cycle", "--amplitude", "1", "--preset", "paper-plate"], 2);
     assert!(plate.contains("needs a beam or lap preset"), "{plate}");

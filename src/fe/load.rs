@@ -150,7 +150,8 @@ fn plate_run(run: &CcxRun) -> Result<Vec<PlateFePoint>, ResultsError> {
 /// Why FE results of the lap joint are refused: its decks and their reader are issue 24's next
 /// step, and a file read as another problem's points would compare nonsense.
 const LAP_NOT_YET: &str = "FE results of the lap joint cannot be read yet (its CalculiX decks \
-                           are not built): compare Delta against `microslip lap` by hand";
+                           are not built): compare Delta against `microslip lap` by hand; a \
+                           measured F_N,Delta_mm curve is fitted by `microslip fit lap FILE`";
 
 /// FE points of any model.
 #[derive(Debug, Clone, PartialEq)]

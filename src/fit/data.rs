@@ -13,12 +13,13 @@ use thiserror::Error;
 use crate::file::{Kinds, ReadError, Size, read_capped};
 use crate::kernel::params::{Compact, Domain, Unit};
 
-/// One measurement: tip force (N) and tip deflection (mm).
+/// One measurement: the load (N) and the response (mm): the beams' tip force and tip
+/// deflection, or the lap joint's force and joint displacement Delta.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Measurement {
-    /// Tip force on each beam (N).
+    /// The load: tip force on each beam, or the force through the joint (N).
     pub force: f64,
-    /// Tip deflection (mm).
+    /// The response: tip deflection w(L), or joint displacement Delta (mm).
     pub deflection: f64,
 }
 
@@ -169,7 +170,27 @@ pub fn parse_measured_with_progress(
     text: &str,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Measured, DataError> {
-    let (points, sigma) = read_rows(text, &MEASURED_DEFLECTION, Some(SIGMA_COLUMN), progress)?;
+    parse_measured_curve(text, &MEASURED_DEFLECTION, progress)
+}
+
+/// [`parse_measured_with_progress`] for a measured lap joint: `F_N,Delta_mm` (or a `sweep lap`
+/// table's `Delta_regularized_mm`), with an optional `sigma_mm`.
+///
+/// # Errors
+/// As [`parse_measured_with_progress`], with the joint's column names.
+pub fn parse_measured_joint_with_progress(
+    text: &str,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Measured, DataError> {
+    parse_measured_curve(text, &MEASURED_JOINT_DISPLACEMENT, progress)
+}
+
+fn parse_measured_curve(
+    text: &str,
+    curve: &Curve,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Measured, DataError> {
+    let (points, sigma) = read_rows(text, curve, Some(SIGMA_COLUMN), progress)?;
     Ok(Measured {
         points: points
             .into_iter()
@@ -204,6 +225,13 @@ pub(crate) const MEASURED_DEFLECTION: Curve = Curve {
     x_domain: Domain::FORCE,
     x_unit: Unit::Newton,
     min_rows: MIN_ROWS,
+};
+
+/// A measured lap-joint curve for the fit: `F_N,Delta_mm` (the force through the joint, the
+/// joint displacement), at least [`MIN_ROWS`] rows.
+pub(crate) const MEASURED_JOINT_DISPLACEMENT: Curve = Curve {
+    y: "Delta_mm",
+    ..MEASURED_DEFLECTION
 };
 
 /// [`parse`] for any [`Curve`]: (abscissa, ordinate) pairs, abscissae strictly increasing.

@@ -32,6 +32,7 @@ pub use data::{DataError, Measurement};
 pub use weights::{Scatter, Weights};
 
 use crate::kernel::params::ParamError;
+use crate::problems::lap::closed_form::{LapJoint, LapParams};
 use crate::{TipForce, TwinBeams, TwinBeamsParams};
 
 /// Search range of mu (-) and K_T (MPa/mm): wide enough for any real interface.
@@ -144,7 +145,8 @@ pub struct FitResult {
     pub points: usize,
     /// Measurements above the fitted F_1.
     pub beyond_first_macroslip: usize,
-    /// F_thre at the fitted mu (N).
+    /// F_thre (beams) or F_gross (lap joint) at the fitted mu (N): where everything slides under
+    /// Coulomb.
     pub threshold_force: f64,
     /// F_1 at the fitted mu and K_T (N).
     pub first_macroslip_force: f64,
@@ -236,9 +238,84 @@ const RESIDUAL_FLOOR: f64 = 1e-12;
 /// Most Levenberg-Marquardt iterations.
 const MAX_ITERATIONS: usize = 200;
 
+/// What is fitted: a problem with a load-response curve, its structure (all but mu and K_T) fixed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Structure {
+    /// Twin beams: w(L) against the tip force.
+    Beam(TwinBeamsParams),
+    /// The lap joint: Delta against the force through it (a force beyond F_gross at a trial mu
+    /// has no state there: that mu is outside the fit's domain).
+    Lap(LapParams),
+}
+
+/// The structure at one (mu, K_T): its response at a force, and the forces where it changes
+/// regime.
+#[derive(Debug, Clone, Copy)]
+enum Curve {
+    Beam(TwinBeams),
+    Lap(LapJoint),
+}
+
+impl Structure {
+    /// The structure at `mu`, `kt`; None where they (or the structure) are not accepted.
+    fn at(&self, mu: f64, kt: f64) -> Option<Curve> {
+        match *self {
+            Structure::Beam(structure) => TwinBeams::new(TwinBeamsParams {
+                friction: mu,
+                tangential_stiffness: kt,
+                ..structure
+            })
+            .ok()
+            .map(Curve::Beam),
+            Structure::Lap(structure) => LapJoint::new(LapParams {
+                friction: mu,
+                tangential_stiffness: kt,
+                ..structure
+            })
+            .ok()
+            .map(Curve::Lap),
+        }
+    }
+
+    /// The structure's own mu and K_T.
+    fn own(&self) -> (f64, f64) {
+        match self {
+            Structure::Beam(p) => (p.friction, p.tangential_stiffness),
+            Structure::Lap(p) => (p.friction, p.tangential_stiffness),
+        }
+    }
+}
+
+impl Curve {
+    /// The regularized response at `force` (mm); None for a force the structure does not accept.
+    fn response(&self, force: f64) -> Option<f64> {
+        match self {
+            Curve::Beam(beams) => Some(
+                beams
+                    .regularized(TipForce::new(force).ok()?)
+                    .tip_deflection(),
+            ),
+            Curve::Lap(joint) => Some(
+                joint
+                    .regularized(joint.force(force).ok()?)
+                    .joint_displacement(),
+            ),
+        }
+    }
+
+    /// (the force above which all slides under Coulomb, F_1) (N): F_thre and F_1 of the beams,
+    /// F_gross and F_1 of the joint.
+    fn regime_forces(&self) -> (f64, f64) {
+        match self {
+            Curve::Beam(beams) => (beams.threshold_force(), beams.first_macroslip_force()),
+            Curve::Lap(joint) => (joint.gross_slip_force(), joint.first_slip_force()),
+        }
+    }
+}
+
 /// The fit problem: structure fixed, mu and K_T free unless fixed, in log units.
 struct Problem<'a> {
-    structure: TwinBeamsParams,
+    structure: Structure,
     data: &'a [Measurement],
     /// The sigma of each measurement ([`Weights::sigmas`]): residuals are divided by it.
     sigma: &'a [f64],
@@ -259,33 +336,23 @@ impl Problem<'_> {
         (mu, kt)
     }
 
-    fn beams(&self, mu: f64, kt: f64) -> Option<TwinBeams> {
-        TwinBeams::new(TwinBeamsParams {
-            friction: mu,
-            tangential_stiffness: kt,
-            ..self.structure
-        })
-        .ok()
-    }
-
-    /// The beams at the log-parameters `theta`.
-    fn beams_at(&self, theta: &[f64]) -> Option<TwinBeams> {
+    /// The structure at the log-parameters `theta`.
+    fn curve_at(&self, theta: &[f64]) -> Option<Curve> {
         let (mu, kt) = self.unpack(theta);
-        self.beams(mu, kt)
+        self.structure.at(mu, kt)
     }
 
     /// Weighted residuals (model - measured) / sigma; None for parameters outside the valid
     /// domain. `tick` gets the number of measurements done, at the start and every
     /// [`PROGRESS_EVERY`].
     fn residuals(&self, theta: &[f64], tick: &mut dyn FnMut(usize)) -> Option<Vec<f64>> {
-        let beams = self.beams_at(theta)?;
+        let curve = self.curve_at(theta)?;
         let mut residuals = Vec::with_capacity(self.data.len());
         for (i, (m, sigma)) in self.data.iter().zip(self.sigma).enumerate() {
             if i % PROGRESS_EVERY == 0 {
                 tick(i);
             }
-            let force = TipForce::new(m.force).ok()?;
-            residuals.push((beams.regularized(force).tip_deflection() - m.deflection) / sigma);
+            residuals.push((curve.response(m.force)? - m.deflection) / sigma);
         }
         Some(residuals)
     }
@@ -293,15 +360,15 @@ impl Problem<'_> {
     /// The sum of squared residuals, or a partial sum of at least `limit` as soon as it gets
     /// there: the grid only asks whether a node beats the best so far, and most nodes are far off.
     fn sse_below(&self, theta: &[f64], limit: f64) -> f64 {
-        let Some(beams) = self.beams_at(theta) else {
+        let Some(curve) = self.curve_at(theta) else {
             return f64::INFINITY;
         };
         let mut sum = 0.0;
         for (m, sigma) in self.data.iter().zip(self.sigma) {
-            let Ok(force) = TipForce::new(m.force) else {
+            let Some(response) = curve.response(m.force) else {
                 return f64::INFINITY;
             };
-            let r = (beams.regularized(force).tip_deflection() - m.deflection) / sigma;
+            let r = (response - m.deflection) / sigma;
             sum += r * r;
             if sum >= limit {
                 return sum;
@@ -321,11 +388,11 @@ impl Problem<'_> {
         tick: &mut dyn FnMut(usize),
     ) -> (Vec<Vec<f64>>, Vec<f64>) {
         let free = theta.len();
-        let shifted: Vec<Option<TwinBeams>> = (0..free)
+        let shifted: Vec<Option<Curve>> = (0..free)
             .map(|j| {
                 let mut moved = theta.to_vec();
                 moved[j] += JACOBIAN_STEP;
-                self.beams_at(&moved)
+                self.curve_at(&moved)
             })
             .collect();
         let mut normal = vec![vec![0.0; free]; free];
@@ -335,13 +402,10 @@ impl Problem<'_> {
             if i % PROGRESS_EVERY == 0 {
                 tick(i);
             }
-            for (entry, beams) in row.iter_mut().zip(&shifted) {
-                *entry = match (beams, TipForce::new(m.force)) {
-                    (Some(beams), Ok(force)) => {
-                        ((beams.regularized(force).tip_deflection() - m.deflection) / sigma - r)
-                            / JACOBIAN_STEP
-                    }
-                    _ => 0.0,
+            for (entry, curve) in row.iter_mut().zip(&shifted) {
+                *entry = match curve.and_then(|c| c.response(m.force)) {
+                    Some(response) => ((response - m.deflection) / sigma - r) / JACOBIAN_STEP,
+                    None => 0.0,
                 };
             }
             for a in 0..free {
@@ -758,12 +822,54 @@ pub fn fit_twin_beams_weighted(
     weights: Weights,
     progress: &mut dyn FnMut(Progress),
 ) -> Result<FitResult, FitError> {
+    fit_weighted(
+        Structure::Beam(structure),
+        data,
+        (fixed_mu, fixed_kt),
+        weights,
+        progress,
+    )
+}
+
+/// Fits mu and K_T (each unless `fixed`, (mu, K_T)) of any [`Structure`] to its measured
+/// load-response curve, as [`fit_twin_beams_weighted`] does for the beams: the lap joint's Delta
+/// against F (docs/theory.md (L11) and section 3b).
+///
+/// # Errors
+/// As [`fit_twin_beams_weighted`]; for the joint also a fixed mu or the structure's own at which
+/// the largest measured force exceeds F_gross.
+pub fn fit_weighted(
+    structure: Structure,
+    data: &[Measurement],
+    (fixed_mu, fixed_kt): (Option<f64>, Option<f64>),
+    weights: Weights,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<FitResult, FitError> {
     // Validate the structure and any fixed values through the model's own constructor.
-    TwinBeams::new(TwinBeamsParams {
-        friction: fixed_mu.unwrap_or(structure.friction),
-        tangential_stiffness: fixed_kt.unwrap_or(structure.tangential_stiffness),
-        ..structure
-    })?;
+    let (own_mu, own_kt) = structure.own();
+    let (mu, kt) = (fixed_mu.unwrap_or(own_mu), fixed_kt.unwrap_or(own_kt));
+    match structure {
+        Structure::Beam(p) => {
+            TwinBeams::new(TwinBeamsParams {
+                friction: mu,
+                tangential_stiffness: kt,
+                ..p
+            })?;
+        }
+        Structure::Lap(p) => {
+            let joint = LapJoint::new(LapParams {
+                friction: mu,
+                tangential_stiffness: kt,
+                ..p
+            })?;
+            // A fixed mu must carry every measured force.
+            if fixed_mu.is_some()
+                && let Some(largest) = data.iter().map(|m| m.force).reduce(f64::max)
+            {
+                joint.force(largest)?;
+            }
+        }
+    }
     let sigma = weights.sigmas(data)?;
     let problem = Problem {
         structure,
@@ -866,10 +972,10 @@ fn summarize(problem: &Problem, refined: &Refined, weights: Weights) -> FitResul
             covariance.as_ref().map(|c| c[k][k].max(0.0).sqrt())
         })
         .collect();
-    let beams = problem.beams(mu, kt);
-    let (f_thre, f_1) = beams.map_or((f64::NAN, f64::NAN), |b| {
-        (b.threshold_force(), b.first_macroslip_force())
-    });
+    let (f_thre, f_1) = problem
+        .structure
+        .at(mu, kt)
+        .map_or((f64::NAN, f64::NAN), |c| c.regime_forces());
     let beyond = problem.data.iter().filter(|m| m.force > f_1).count();
     let f_max = problem.data.last().map_or(0.0, |m| m.force);
     let judge = |log_error: Option<f64>, value: f64, bound: (f64, f64)| -> Estimate {
@@ -989,6 +1095,70 @@ mod tests {
         );
     }
 
+    /// The lap joint's Delta against F, measured on a joint with mu 0.4 and K_T 2500 MPa/mm up to
+    /// 0.9 F_gross: both come back from the bundled joint's wrong guesses (mu 0.3, K_T 1000), and
+    /// below F_1 mu is not seen.
+    #[test]
+    fn a_lap_joint_curve_gives_back_its_mu_and_k_t() {
+        let truth = LapJoint::new(LapParams {
+            friction: 0.4,
+            tangential_stiffness: 2500.0,
+            ..LapParams::ALUMINIUM
+        })
+        .unwrap();
+        let gross = truth.gross_slip_force();
+        let curve = |top: f64| -> Vec<Measurement> {
+            (1..=30)
+                .map(|i| {
+                    let force = top * f64::from(i) / 30.0;
+                    let f = truth.force(force).unwrap();
+                    Measurement {
+                        force,
+                        deflection: truth.regularized(f).joint_displacement(),
+                    }
+                })
+                .collect()
+        };
+        let fit = fit_weighted(
+            Structure::Lap(LapParams::ALUMINIUM),
+            &curve(0.9 * gross),
+            (None, None),
+            Weights::Absolute,
+            &mut |_| {},
+        )
+        .unwrap();
+        assert!((fit.mu.value / 0.4 - 1.0).abs() < 1e-6, "{fit:?}");
+        assert!((fit.kt.value / 2500.0 - 1.0).abs() < 1e-6, "{fit:?}");
+        assert_eq!(
+            (fit.mu.status, fit.kt.status),
+            (Status::Identified, Status::Identified)
+        );
+        assert!((fit.threshold_force / gross - 1.0).abs() < 1e-6);
+        // Only microslip: K_T is seen, mu only bounded from below.
+        let below = fit_weighted(
+            Structure::Lap(LapParams::ALUMINIUM),
+            &curve(0.9 * truth.first_slip_force()),
+            (None, None),
+            Weights::Absolute,
+            &mut |_| {},
+        )
+        .unwrap();
+        assert!((below.kt.value / 2500.0 - 1.0).abs() < 1e-6, "{below:?}");
+        assert!(matches!(
+            below.mu.evidence,
+            Evidence::NoDataAboveFirstMacroslip { .. }
+        ));
+        // A fixed mu that cannot carry the largest force is refused by name.
+        let refused = fit_weighted(
+            Structure::Lap(LapParams::ALUMINIUM),
+            &curve(0.9 * gross),
+            (Some(0.1), None),
+            Weights::Absolute,
+            &mut |_| {},
+        );
+        assert!(refused.unwrap_err().to_string().contains("F_gross"));
+    }
+
     #[test]
     fn fixing_one_parameter_fits_the_other() {
         let data = synthetic(0.3, 600.0, (1..=20).map(|i| 15.0 * f64::from(i)));
@@ -1088,7 +1258,7 @@ mod tests {
         }
         let sigma = vec![1.0; data.len()];
         let problem = Problem {
-            structure: TwinBeamsParams::PAPER,
+            structure: Structure::Beam(TwinBeamsParams::PAPER),
             data: &data,
             sigma: &sigma,
             fixed_mu: None,

@@ -62,7 +62,7 @@ pub fn plate(
 pub fn fit(
     data: &str,
     preset: &str,
-    structure: &crate::TwinBeamsParams,
+    structure: &crate::fit::Structure,
     result: &crate::fit::FitResult,
 ) -> Value {
     to_json(&FitReport::new(data, preset, structure, result))

@@ -50,7 +50,7 @@ pub use super::point::fit::evidence;
 pub fn fit(
     data: &str,
     preset: &str,
-    structure: &crate::TwinBeamsParams,
+    structure: &crate::fit::Structure,
     result: &crate::fit::FitResult,
 ) -> String {
     FitReport::new(data, preset, structure, result).text()

@@ -1,12 +1,11 @@
-//! `microslip fit beam`: mu and K_T fitted to a measured curve, with a plain verdict on whether
+//! `microslip fit beam|lap`: mu and K_T fitted to a measured curve, with a plain verdict on whether
 //! the data identify each.
 
 use std::fmt::Write;
 
 use serde::{Serialize, Serializer};
 
-use crate::TwinBeamsParams;
-use crate::fit::{Estimate, Evidence, FitResult, Scatter, Status};
+use crate::fit::{Estimate, Evidence, FitResult, Scatter, Status, Structure};
 use crate::report::{count_of, number, sanitize};
 
 /// The fit report.
@@ -15,9 +14,9 @@ pub struct FitReport {
     /// The measurement file.
     pub data: String,
     pub preset: String,
-    /// The structure the fit held (geometry, E, P), for the text.
+    /// The structure the fit held (geometry, moduli, P), for the text.
     #[serde(skip)]
-    pub structure: TwinBeamsParams,
+    pub structure: Structure,
     /// How many measurements.
     pub points: usize,
     pub mu: EstimateReport,
@@ -26,9 +25,12 @@ pub struct FitReport {
     /// Residual RMS (mm).
     #[serde(rename = "rms_mm")]
     pub rms: f64,
-    /// F_thre at the fitted values (N).
-    #[serde(rename = "F_thre_N")]
-    pub threshold_force: f64,
+    /// The beams' F_thre at the fitted values (N); absent for the lap joint.
+    #[serde(rename = "F_thre_N", skip_serializing_if = "Option::is_none")]
+    pub threshold_force: Option<f64>,
+    /// The lap joint's F_gross at the fitted values (N); absent for the beams.
+    #[serde(rename = "F_gross_N", skip_serializing_if = "Option::is_none")]
+    pub gross_slip_force: Option<f64>,
     /// F_1 at the fitted values (N).
     #[serde(rename = "F_1_N")]
     pub first_macroslip_force: f64,
@@ -65,14 +67,14 @@ fn scatter_fields<S: Serializer>(scatter: &Scatter, s: S) -> Result<S::Ok, S::Er
 }
 
 /// What the errors assume, in words, with the scatter the residuals show.
-fn assumption(scatter: &Scatter) -> String {
+fn assumption(scatter: &Scatter, response: &str) -> String {
     match *scatter {
         Scatter::Absolute { sigma } => format!(
             "the same scatter at every point (--weights absolute); the residuals show {} mm",
             number(sigma)
         ),
         Scatter::Relative { fraction } => format!(
-            "scatter proportional to w (--weights relative); the residuals show {} % of w",
+            "scatter proportional to {response} (--weights relative); the residuals show {} % of {response}",
             number(100.0 * fraction)
         ),
         Scatter::Known { reduced_chi_square } => format!(
@@ -144,12 +146,11 @@ impl From<&Estimate> for EstimateReport {
 }
 
 impl FitReport {
-    pub fn new(
-        data: &str,
-        preset: &str,
-        structure: &TwinBeamsParams,
-        result: &FitResult,
-    ) -> FitReport {
+    pub fn new(data: &str, preset: &str, structure: &Structure, result: &FitResult) -> FitReport {
+        let (threshold_force, gross_slip_force) = match structure {
+            Structure::Beam(_) => (Some(result.threshold_force), None),
+            Structure::Lap(_) => (None, Some(result.threshold_force)),
+        };
         FitReport {
             data: data.to_string(),
             preset: preset.to_string(),
@@ -158,7 +159,8 @@ impl FitReport {
             mu: EstimateReport::from(&result.mu),
             kt: EstimateReport::from(&result.kt),
             rms: result.rms,
-            threshold_force: result.threshold_force,
+            threshold_force,
+            gross_slip_force,
             first_macroslip_force: result.first_macroslip_force,
             beyond_first_macroslip: result.beyond_first_macroslip,
             scatter: result.scatter,
@@ -169,23 +171,39 @@ impl FitReport {
     /// The readable report: estimates with standard errors and the verdicts.
     pub fn text(&self) -> String {
         let mut out = String::new();
-        let p = &self.structure;
+        let what = match self.structure {
+            Structure::Beam(_) => "twin beams",
+            Structure::Lap(_) => "double-lap joint",
+        };
         let _ = writeln!(
             out,
-            "Fit of mu and K_T to {} ({}), twin beams of preset {}",
+            "Fit of mu and K_T to {} ({}), {what} of preset {}",
             sanitize(&self.data),
             count_of(self.points, "measurement"),
             sanitize(&self.preset)
         );
-        let _ = writeln!(
-            out,
-            "  structure: L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa",
-            number(p.length),
-            number(p.width),
-            number(p.half_height),
-            number(p.youngs_modulus),
-            number(p.pressure)
-        );
+        let _ = match &self.structure {
+            Structure::Beam(p) => writeln!(
+                out,
+                "  structure: L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa",
+                number(p.length),
+                number(p.width),
+                number(p.half_height),
+                number(p.youngs_modulus),
+                number(p.pressure)
+            ),
+            Structure::Lap(p) => writeln!(
+                out,
+                "  structure: L = {} mm, b = {} mm, t1 = {} mm, t2 = {} mm, E1 = {} MPa, E2 = {} MPa, P = {} MPa",
+                number(p.length),
+                number(p.width),
+                number(p.inner_thickness),
+                number(p.cover_thickness),
+                number(p.inner_modulus),
+                number(p.cover_modulus),
+                number(p.pressure)
+            ),
+        };
         for (name, unit, estimate) in [("mu ", "", &self.mu), ("K_T", " MPa/mm", &self.kt)] {
             let error = estimate
                 .std_error
@@ -205,12 +223,24 @@ impl FitReport {
         if let Some(rho) = self.correlation {
             let _ = writeln!(out, "  correlation of mu and K_T = {}", number(rho));
         }
-        let _ = writeln!(out, "  errors assume {}", assumption(&self.scatter));
-        let _ = writeln!(out, "  residual RMS = {} mm", number(self.rms));
+        let response = match self.structure {
+            Structure::Beam(_) => "w",
+            Structure::Lap(_) => "Delta",
+        };
         let _ = writeln!(
             out,
-            "  at the fitted values: F_thre = {} N, F_1 = {} N; {} of {} measurements above F_1",
-            number(self.threshold_force),
+            "  errors assume {}",
+            assumption(&self.scatter, response)
+        );
+        let _ = writeln!(out, "  residual RMS = {} mm", number(self.rms));
+        let (name, all_slide) = match (self.threshold_force, self.gross_slip_force) {
+            (_, Some(gross)) => ("F_gross", gross),
+            (threshold, None) => ("F_thre", threshold.unwrap_or(f64::NAN)),
+        };
+        let _ = writeln!(
+            out,
+            "  at the fitted values: {name} = {} N, F_1 = {} N; {} of {} measurements above F_1",
+            number(all_slide),
             number(self.first_macroslip_force),
             self.beyond_first_macroslip,
             self.points
