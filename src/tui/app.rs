@@ -1619,10 +1619,16 @@ impl App {
             .map_or((spec.domain.min(), spec.domain.max()), |m| {
                 m.accepted_range(param)
             });
-        let next = spec
-            .domain
-            .clamp(spec.scale.step(value, up, coarse, scale))
-            .clamp(lo, hi);
+        let stepped = spec.domain.clamp(spec.scale.step(value, up, coarse, scale));
+        let next = stepped.clamp(lo, hi);
+        if next == value && stepped != value {
+            // Held by the other values, not by its own domain: say so rather than do nothing.
+            return self.info(format!(
+                "{param} stops at {}{}: beyond it the force F would exceed F_gross = 2 b mu P L",
+                number(value),
+                param.unit_suffix()
+            ));
+        }
         self.set_value(param, next);
     }
 
@@ -2288,6 +2294,35 @@ mod tests {
         assert_eq!(app.mode(), &Mode::Explain { line: count - 1 });
         app.update(Action::Cancel);
         assert_eq!(app.mode(), &Mode::Normal);
+    }
+
+    /// The lap joint's F stops at F_gross and its mu where F_gross falls to F, and says why.
+    #[test]
+    fn lap_steps_stop_where_the_joint_would_slide_through() {
+        let mut app = app();
+        app.update(Action::SwitchModel);
+        app.update(Action::SwitchModel);
+        assert_eq!(app.kind(), ModelKind::Lap);
+        let force = Param::Lap(crate::problems::LapParam::Force);
+        let mu = Param::Lap(crate::problems::LapParam::Friction);
+        while app.selected_param() != force {
+            app.update(Action::Next);
+        }
+        for _ in 0..20 {
+            app.update(Action::IncreaseCoarse);
+        }
+        assert_eq!(app.inputs().get(force), Some(6000.0));
+        assert!(app.message().unwrap().text.starts_with("F stops at 6000 N"));
+        while app.selected_param() != mu {
+            app.update(Action::Previous);
+        }
+        for _ in 0..20 {
+            app.update(Action::DecreaseCoarse);
+        }
+        let lowest = app.inputs().get(mu).unwrap();
+        assert!((lowest - 0.3).abs() < 1e-12, "{lowest}");
+        assert!(app.message().unwrap().text.starts_with("mu stops at 0.3"));
+        assert!(app.model().is_some());
     }
 
     #[test]
