@@ -146,6 +146,11 @@ fn zone_row(label: &str, zones: &[Zone], theme: &Theme) -> Line<'static> {
 /// right has no room; a name that would cover a caret or an earlier name is left out (the text
 /// above gives them all).
 fn marker_row(carets: &[(usize, String)], cells: usize) -> String {
+    // Names are placed left to right: the lap joint's boundaries come as Coulomb's pair then the
+    // regularized pair, interleaved along the strip.
+    let mut carets = carets.to_vec();
+    carets.sort_by_key(|(cell, _)| *cell);
+    let carets = carets.as_slice();
     let mut row = vec![' '; LABEL + cells];
     let columns: Vec<usize> = carets
         .iter()
