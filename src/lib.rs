@@ -1,5 +1,6 @@
 //! microslip: closed-form solutions of friction benchmarks (the two of Ligier & Bonhote, 2014:
-//! twin beams and a squeezed plate) under the plain and the regularized Coulomb law.
+//! twin beams and a squeezed plate; and the clamped double-lap joint) under the plain and the
+//! regularized Coulomb law.
 //!
 //! Units everywhere: mm, N, MPa; tangential stiffness K_T in MPa/mm.
 //!
@@ -19,10 +20,10 @@
 //!   clobbering it; the lowest layer beside the kernel.
 //! - [`numeric`]: problem-agnostic finite-element kernels (meshes, elements, banded Cholesky, the
 //!   Jenkins interface point, Newton with load stepping).
-//! - [`problems`]: one folder per benchmark ([`problems::twin_beams`], [`problems::plate`]) with its
-//!   parameters, closed forms, validity envelope and independent discretized solver; the closed
-//!   forms and the discretized solvers never import each other (the layering test checks it), so
-//!   their agreement proves something. [`problems::ModelKind`] lists the problems and
+//! - [`problems`]: one folder per benchmark ([`problems::twin_beams`], [`problems::plate`],
+//!   [`problems::lap`]) with its parameters, closed forms, validity envelope and independent
+//!   discretized solver; the closed forms and the discretized solvers never import each other
+//!   (the layering test checks it), so their agreement proves something. [`problems::ModelKind`] lists the problems and
 //!   [`problems::inputs`] holds the inputs and validated models of any of them.
 //! - [`study`]: sweeps, families and loops over any parameter, solving for a target value, the
 //!   smallest K_T within a tolerance of Coulomb.

@@ -116,7 +116,7 @@ impl LapParam {
 
     /// Checks `value` against this parameter's domain (the force's bound F_gross, which depends
     /// on the other parameters, is checked by
-    /// [`JointForce::new`](crate::problems::lap::closed_form::JointForce::new)).
+    /// [`LapJoint::force`](crate::problems::lap::closed_form::LapJoint::force)).
     ///
     /// # Errors
     /// [`ParamError`] naming the key, the value and the allowed range.
