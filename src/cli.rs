@@ -2013,6 +2013,27 @@ fn element_size(element: Option<f64>, model: &Model) -> Result<f64, CliError> {
     }
 }
 
+/// The force range of `kt --tolerance`: `--from` and `--to` (each the model's force when not
+/// given), accepted forces, in order.
+fn tolerance_forces([from, to]: [Option<f64>; 2], force: f64) -> Result<[f64; 2], CliError> {
+    let range = [
+        check_flag("--from", from.unwrap_or(force), Domain::FORCE, Unit::Newton)?,
+        check_flag("--to", to.unwrap_or(force), Domain::FORCE, Unit::Newton)?,
+    ];
+    // As `solve` and `sweep`: a reversed range is a typo, not a range.
+    if range[0] > range[1] {
+        return Err(CliError::Flag {
+            flag: "--to",
+            value: range[1],
+            allowed: format!(
+                "must not be below --from = {} N (the forces checked run from --from up to --to)",
+                Compact(range[0])
+            ),
+        });
+    }
+    Ok(range)
+}
+
 fn run_kt_tolerance(
     out: &mut impl Write,
     inputs: &InputArgs,
@@ -2027,22 +2048,7 @@ fn run_kt_tolerance(
     let element = element_size(element, &model)?;
     let answer = match model {
         Model::Beam { beams, force } => {
-            let f = force.newtons();
-            let range = [
-                check_flag("--from", from.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
-                check_flag("--to", to.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
-            ];
-            // As `solve` and `sweep`: a reversed range is a typo, not a range.
-            if range[0] > range[1] {
-                return Err(CliError::Flag {
-                    flag: "--to",
-                    value: range[1],
-                    allowed: format!(
-                        "must not be below --from = {} N (the forces checked run from --from up to --to)",
-                        Compact(range[0])
-                    ),
-                });
-            }
+            let range = tolerance_forces([from, to], force.newtons())?;
             match of {
                 ToleranceOf::Coulomb => {
                     tolerance::beam_stiffness_for_tolerance(&beams, range, tol, element)
@@ -2054,21 +2060,7 @@ fn run_kt_tolerance(
             .map_err(|e| CliError::Invalid(e.to_string()))?
         }
         Model::Lap { joint, force } => {
-            let f = force.newtons();
-            let range = [
-                check_flag("--from", from.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
-                check_flag("--to", to.unwrap_or(f), Domain::FORCE, Unit::Newton)?,
-            ];
-            if range[0] > range[1] {
-                return Err(CliError::Flag {
-                    flag: "--to",
-                    value: range[1],
-                    allowed: format!(
-                        "must not be below --from = {} N (the forces checked run from --from up to --to)",
-                        Compact(range[0])
-                    ),
-                });
-            }
+            let range = tolerance_forces([from, to], force.newtons())?;
             match of {
                 ToleranceOf::Coulomb => {
                     tolerance::lap_stiffness_for_tolerance(&joint, range, tol, element)

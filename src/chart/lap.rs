@@ -2,13 +2,15 @@
 //! zones vs F, tau(x), the loop and D vs F_a. Built from [`crate::study::lap`].
 
 use crate::chart::view::LapChart;
-use crate::chart::{Plot, SeriesRole, cursor, line, linear_axis, max_y, samples};
+use crate::chart::{
+    Plot, SeriesRole, cursor, dissipation_plot, line, linear_axis, loop_plot, max_y, samples,
+};
 use crate::kernel::format::{number, number_with};
 use crate::kernel::regime::Law;
 use crate::problems::LapParam;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::lap::cycle::LapCycle;
-use crate::study::curves::{Series, Spacing};
+use crate::study::curves::Spacing;
 use crate::study::lap as curves;
 
 /// Loop points per branch: one per column of a 100-column chart.
@@ -105,55 +107,33 @@ pub(crate) fn lap_plot(
                 LapCycle::new(joint, Law::Coulomb, force),
                 LapCycle::new(joint, Law::Regularized, force),
             );
-            let (coulomb_loop, regularized_loop): (Series, Series) =
-                curves::lap_cycle_loop(joint, force, LOOP_POINTS)
-                    .ok()?
-                    .map(|p| ((p.force, p.w_coulomb), (p.force, p.w_regularized)))
-                    .unzip();
-            let top = 1.05
-                * coulomb
-                    .peak_displacement()
-                    .max(regularized.peak_displacement())
-                    .max(f64::MIN_POSITIVE);
-            let span = f.max(1e-9);
-            Some(Plot {
-                caption: None,
+            let loops = curves::lap_cycle_loop(joint, force, LOOP_POINTS).ok()?;
+            Some(loop_plot(
                 // At most 41 characters (the title row of an 80x24 screen's chart pane).
-                title: format!(
+                format!(
                     "+-{} N; D {} C, {} R N mm",
                     number(f),
                     number_with(coulomb.dissipation(), 3),
                     number_with(regularized.dissipation(), 3)
                 ),
-                x: linear_axis("F (N)", -span, span),
-                y: linear_axis("Delta (mm)", -top, top),
-                series: vec![
-                    line(SeriesRole::Coulomb, "Coulomb", coulomb_loop),
-                    line(SeriesRole::Current, "regularized", regularized_loop),
-                ],
-            })
+                loops,
+                coulomb
+                    .peak_displacement()
+                    .max(regularized.peak_displacement()),
+                f,
+                "Delta (mm)",
+            ))
         }
         LapChart::Dissipation => {
             let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
             let (coulomb, regularized) =
                 curves::lap_dissipation_vs_amplitude(joint, amplitudes).ok()?;
-            let top = 1.05 * max_y([&coulomb, &regularized]).max(f64::MIN_POSITIVE);
-            let zeta = curves::lap_cycle_point(joint, force);
-            Some(Plot {
-                caption: None,
-                title: format!(
-                    "D vs F_a; zeta at F {} C, {} R",
-                    number_with(zeta.zeta_coulomb, 3),
-                    number_with(zeta.zeta_regularized, 3)
-                ),
-                x: linear_axis("F_a (N)", 0.0, f_max),
-                y: linear_axis("D (N mm)", 0.0, top),
-                series: vec![
-                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
-                    line(SeriesRole::Current, "regularized", regularized),
-                    cursor(f, [0.0, top]),
-                ],
-            })
+            Some(dissipation_plot(
+                &curves::lap_cycle_point(joint, force),
+                (coulomb, regularized),
+                (f, f_max),
+                "D (N mm)",
+            ))
         }
     }
 }

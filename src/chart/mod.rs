@@ -507,57 +507,32 @@ fn beam_plot(
                 Cycle::new(beams, Law::Coulomb, force),
                 Cycle::new(beams, Law::Regularized, force),
             );
-            let (coulomb_loop, regularized_loop): (Series, Series) =
-                curves::cycle_loop(beams, force, LOOP_POINTS)
-                    .ok()?
-                    .map(|p| ((p.force, p.w_coulomb), (p.force, p.w_regularized)))
-                    .unzip();
-            let top = 1.05
-                * coulomb
-                    .peak_deflection()
-                    .max(regularized.peak_deflection())
-                    .max(f64::MIN_POSITIVE);
-            let span = f.max(1e-9);
-            Some(Plot {
-                caption: None,
+            let loops = curves::cycle_loop(beams, force, LOOP_POINTS).ok()?;
+            Some(loop_plot(
                 // At most 41 characters, the title row of an 80x24 screen's chart pane: D of
                 // both beams, C(oulomb) and R(egularized) as in the zone strip.
-                title: format!(
+                format!(
                     "1 beam +-{} N; D(2) {} C, {} R N mm",
                     number(f),
                     number_with(coulomb.dissipation(), 3),
                     number_with(regularized.dissipation(), 3)
                 ),
-                x: linear_axis("F (N)", -span, span),
-                y: linear_axis("w(L) (mm)", -top, top),
-                series: vec![
-                    line(SeriesRole::Coulomb, "Coulomb", coulomb_loop),
-                    line(SeriesRole::Current, "regularized", regularized_loop),
-                ],
-            })
+                loops,
+                coulomb.peak_deflection().max(regularized.peak_deflection()),
+                f,
+                "w(L) (mm)",
+            ))
         }
         BeamChart::Dissipation => {
             let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
             let (coulomb, regularized) =
                 curves::dissipation_vs_amplitude(beams, amplitudes).ok()?;
-            let top = 1.05 * max_y([&coulomb, &regularized]).max(f64::MIN_POSITIVE);
-            let zeta = curves::cycle_point(beams, force);
-            Some(Plot {
-                caption: None,
-                // At most 41 characters, the title row of an 80x24 screen's chart pane.
-                title: format!(
-                    "D vs F_a; zeta at F {} C, {} R",
-                    number_with(zeta.zeta_coulomb, 3),
-                    number_with(zeta.zeta_regularized, 3)
-                ),
-                x: linear_axis("F_a (N)", 0.0, f_max),
-                y: linear_axis("D, 2 beams (N mm)", 0.0, top),
-                series: vec![
-                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
-                    line(SeriesRole::Current, "regularized", regularized),
-                    cursor(f, [0.0, top]),
-                ],
-            })
+            Some(dissipation_plot(
+                &curves::cycle_point(beams, force),
+                (coulomb, regularized),
+                (f, f_max),
+                "D, 2 beams (N mm)",
+            ))
         }
         BeamChart::Shear => {
             let positions = samples(0.0, p.length, Spacing::Linear)?;
@@ -579,6 +554,58 @@ fn beam_plot(
                 ],
             })
         }
+    }
+}
+
+/// The hysteresis loop chart of either law's loop points: the response (`y_title`) against the
+/// force, between -`f` and `f`, its y range from the larger `peak`.
+pub(crate) fn loop_plot(
+    title: String,
+    loops: impl Iterator<Item = crate::study::curves::LoopPoint>,
+    peak: f64,
+    f: f64,
+    y_title: &str,
+) -> Plot {
+    let (coulomb, regularized): (Series, Series) = loops
+        .map(|p| ((p.force, p.w_coulomb), (p.force, p.w_regularized)))
+        .unzip();
+    let top = 1.05 * peak.max(f64::MIN_POSITIVE);
+    let span = f.max(1e-9);
+    Plot {
+        caption: None,
+        title,
+        x: linear_axis("F (N)", -span, span),
+        y: linear_axis(y_title, -top, top),
+        series: vec![
+            line(SeriesRole::Coulomb, "Coulomb", coulomb),
+            line(SeriesRole::Current, "regularized", regularized),
+        ],
+    }
+}
+
+/// D against the amplitude, both laws, the cursor at the current force `f` of the axis to
+/// `f_max`; the title gives zeta at `f` (at most 41 characters, an 80x24 chart pane's title row).
+pub(crate) fn dissipation_plot(
+    at: &crate::study::curves::CyclePoint,
+    (coulomb, regularized): (Series, Series),
+    (f, f_max): (f64, f64),
+    y_title: &str,
+) -> Plot {
+    let top = 1.05 * max_y([&coulomb, &regularized]).max(f64::MIN_POSITIVE);
+    Plot {
+        caption: None,
+        title: format!(
+            "D vs F_a; zeta at F {} C, {} R",
+            number_with(at.zeta_coulomb, 3),
+            number_with(at.zeta_regularized, 3)
+        ),
+        x: linear_axis("F_a (N)", 0.0, f_max),
+        y: linear_axis(y_title, 0.0, top),
+        series: vec![
+            line(SeriesRole::Coulomb, "Coulomb", coulomb),
+            line(SeriesRole::Current, "regularized", regularized),
+            cursor(f, [0.0, top]),
+        ],
     }
 }
 

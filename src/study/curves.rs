@@ -1029,31 +1029,40 @@ pub fn cycle_loop(
         Cycle::new(beams, Law::Coulomb, amplitude),
         Cycle::new(beams, Law::Regularized, amplitude),
     );
-    let fa = amplitude.newtons();
+    Ok(loop_points(
+        amplitude.newtons(),
+        points,
+        move |f| (coulomb.unloading(f), regularized.unloading(f)),
+        move |f| (coulomb.reloading(f), regularized.reloading(f)),
+    ))
+}
+
+/// The closed loop of a cycle at amplitude `fa` (N) from its branches, each giving (Coulomb,
+/// regularized) at a force: `points` evenly spaced forces per branch (checked, >= 2), both ends
+/// included.
+pub(crate) fn loop_points(
+    fa: f64,
+    points: u64,
+    unloading: impl Fn(f64) -> (f64, f64) + Copy,
+    reloading: impl Fn(f64) -> (f64, f64) + Copy,
+) -> impl Iterator<Item = LoopPoint> {
     let last = (points - 1) as f64;
     let branch = move |branch: Branch| {
         (0..points).map(move |i| {
             let t = 2.0 * fa * i as f64 / last;
-            match branch {
-                Branch::Unloading => {
-                    let f = fa - t;
-                    (branch, f, coulomb.unloading(f), regularized.unloading(f))
-                }
-                Branch::Reloading => {
-                    let f = -fa + t;
-                    (branch, f, coulomb.reloading(f), regularized.reloading(f))
-                }
+            let (force, (w_coulomb, w_regularized)) = match branch {
+                Branch::Unloading => (fa - t, unloading(fa - t)),
+                Branch::Reloading => (t - fa, reloading(t - fa)),
+            };
+            LoopPoint {
+                branch,
+                force,
+                w_coulomb,
+                w_regularized,
             }
         })
     };
-    Ok(branch(Branch::Unloading)
-        .chain(branch(Branch::Reloading))
-        .map(|(branch, force, w_coulomb, w_regularized)| LoopPoint {
-            branch,
-            force,
-            w_coulomb,
-            w_regularized,
-        }))
+    branch(Branch::Unloading).chain(branch(Branch::Reloading))
 }
 
 /// Dissipation per cycle D (N mm) against F_a (N): (Coulomb, regularized).

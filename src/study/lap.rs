@@ -7,7 +7,7 @@ use crate::problems::lap::closed_form::{JointForce, LapJoint, LapState};
 use crate::problems::lap::cycle::LapCycle;
 use crate::problems::{LapParam, Param};
 use crate::study::curves::{
-    Branch, CyclePoint, LoopPoint, RangeEnd, RangeError, Samples, Series, check_points,
+    CyclePoint, LoopPoint, RangeEnd, RangeError, Samples, Series, check_points, loop_points,
 };
 
 /// Everything the reports show about the joint at one force, for both laws.
@@ -225,32 +225,12 @@ pub fn lap_cycle_loop(
         LapCycle::new(joint, Law::Coulomb, amplitude),
         LapCycle::new(joint, Law::Regularized, amplitude),
     );
-    let fa = amplitude.newtons();
-    let last = (points - 1) as f64;
-    let branch = move |branch: Branch| {
-        (0..points).map(move |i| {
-            let t = 2.0 * fa * i as f64 / last;
-            let (force, c, r) = match branch {
-                Branch::Unloading => (
-                    fa - t,
-                    coulomb.unloading(fa - t),
-                    regularized.unloading(fa - t),
-                ),
-                Branch::Reloading => (
-                    t - fa,
-                    coulomb.reloading(t - fa),
-                    regularized.reloading(t - fa),
-                ),
-            };
-            LoopPoint {
-                branch,
-                force,
-                w_coulomb: c,
-                w_regularized: r,
-            }
-        })
-    };
-    Ok(branch(Branch::Unloading).chain(branch(Branch::Reloading)))
+    Ok(loop_points(
+        amplitude.newtons(),
+        points,
+        move |f| (coulomb.unloading(f), regularized.unloading(f)),
+        move |f| (coulomb.reloading(f), regularized.reloading(f)),
+    ))
 }
 
 /// Dissipation per cycle D (N mm) against F_a (N): (Coulomb, regularized).

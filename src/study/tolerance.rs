@@ -276,24 +276,6 @@ pub fn beam_stiffness_near_current(
 ) -> Result<ToleranceAnswer, ToleranceError> {
     let tolerance = check_tolerance(tolerance)?;
     let (range, forces) = checked_forces(beams, range)?;
-    let w = |beams: &TwinBeams, f: TipForce| beams.regularized(f).tip_deflection();
-    let current: Vec<f64> = forces.iter().map(|&f| w(beams, f)).collect();
-    // Each force's w(L) at K_T over the current's, minus 1: (highest, lowest) over the forces.
-    let ratios = |kt: f64| {
-        let at = beams.with_tangential_stiffness(kt).unwrap_or(*beams);
-        forces
-            .iter()
-            .zip(&current)
-            .map(|(&f, c)| w(&at, f) / c - 1.0)
-            .fold((f64::NEG_INFINITY, f64::INFINITY), |(hi, lo), r| {
-                (hi.max(r), lo.min(r))
-            })
-    };
-    let coulomb = forces
-        .iter()
-        .zip(&current)
-        .map(|(&f, c)| beams.coulomb(f).tip_deflection() / c - 1.0)
-        .fold(f64::INFINITY, f64::min);
     let p = beams.params();
     let question = Question {
         kind: ModelKind::Beam,
@@ -302,11 +284,14 @@ pub fn beam_stiffness_near_current(
         current: (p.tangential_stiffness, worst(beams, &forces)),
         domain: BeamParam::Stiffness.spec().domain,
     };
-    Ok(near_current(
+    Ok(near_current_over_forces(
         question,
-        coulomb,
-        |kt| ratios(kt).0,
-        |kt| -ratios(kt).1,
+        &forces,
+        |kt, f| {
+            let at = beams.with_tangential_stiffness(kt).unwrap_or(*beams);
+            at.regularized(f).tip_deflection()
+        },
+        |f| beams.coulomb(f).tip_deflection(),
         |threshold| {
             code_settings(
                 threshold,
@@ -316,6 +301,41 @@ pub fn beam_stiffness_near_current(
             )
         },
     ))
+}
+
+/// [`near_current`] over a force range: `response(K_T, F)` is the regularized answer at each
+/// force, `coulomb(F)` Coulomb's; the current K_T is the question's.
+fn near_current_over_forces<F: Copy>(
+    question: Question,
+    forces: &[F],
+    response: impl Fn(f64, F) -> f64,
+    coulomb: impl Fn(F) -> f64,
+    settings: impl Fn(Threshold) -> Vec<CodeSetting>,
+) -> ToleranceAnswer {
+    let kt = question.current.0;
+    let current: Vec<f64> = forces.iter().map(|&f| response(kt, f)).collect();
+    // Each force's answer at K_T over the current's, minus 1: (highest, lowest) over the forces.
+    let ratios = |kt: f64| {
+        forces
+            .iter()
+            .zip(&current)
+            .map(|(&f, c)| response(kt, f) / c - 1.0)
+            .fold((f64::NEG_INFINITY, f64::INFINITY), |(hi, lo), r| {
+                (hi.max(r), lo.min(r))
+            })
+    };
+    let coulomb = forces
+        .iter()
+        .zip(&current)
+        .map(|(&f, c)| coulomb(f) / c - 1.0)
+        .fold(f64::INFINITY, f64::min);
+    near_current(
+        question,
+        coulomb,
+        |kt| ratios(kt).0,
+        |kt| -ratios(kt).1,
+        settings,
+    )
 }
 
 /// The plate, the other reading (see [`beam_stiffness_near_current`]).
@@ -543,23 +563,6 @@ pub fn lap_stiffness_near_current(
 ) -> Result<ToleranceAnswer, ToleranceError> {
     let tolerance = check_tolerance(tolerance)?;
     let (range, forces) = checked_lap_forces(joint, range)?;
-    let delta = |joint: &LapJoint, f: JointForce| joint.regularized(f).joint_displacement();
-    let current: Vec<f64> = forces.iter().map(|&f| delta(joint, f)).collect();
-    let ratios = |kt: f64| {
-        let at = joint.with_tangential_stiffness(kt).unwrap_or(*joint);
-        forces
-            .iter()
-            .zip(&current)
-            .map(|(&f, c)| delta(&at, f) / c - 1.0)
-            .fold((f64::NEG_INFINITY, f64::INFINITY), |(hi, lo), r| {
-                (hi.max(r), lo.min(r))
-            })
-    };
-    let coulomb = forces
-        .iter()
-        .zip(&current)
-        .map(|(&f, c)| joint.coulomb(f).joint_displacement() / c - 1.0)
-        .fold(f64::INFINITY, f64::min);
     let p = joint.params();
     let question = Question {
         kind: ModelKind::Lap,
@@ -568,11 +571,14 @@ pub fn lap_stiffness_near_current(
         current: (p.tangential_stiffness, lap_worst(joint, &forces)),
         domain: LapParam::Stiffness.spec().domain,
     };
-    Ok(near_current(
+    Ok(near_current_over_forces(
         question,
-        coulomb,
-        |kt| ratios(kt).0,
-        |kt| -ratios(kt).1,
+        &forces,
+        |kt, f| {
+            let at = joint.with_tangential_stiffness(kt).unwrap_or(*joint);
+            at.regularized(f).joint_displacement()
+        },
+        |f| joint.coulomb(f).joint_displacement(),
         |threshold| code_settings(threshold, p.friction * p.pressure, p.inner_modulus, element),
     ))
 }

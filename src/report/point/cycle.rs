@@ -135,15 +135,21 @@ impl CycleReport {
                 r.secant_stiffness,
             ),
         ];
-        for (label, coulomb, regularized) in rows {
-            let _ = writeln!(
-                out,
-                "  {label:<32}{:<18}{}",
-                number(coulomb),
-                number(regularized)
-            );
-        }
+        write_law_rows(&mut out, &rows);
         let _ = writeln!(out, "  {}", self.note);
         out
+    }
+}
+
+/// A cycle summary's table: its heading, then a label and the Coulomb and regularized values per
+/// row.
+pub(crate) fn write_law_rows(out: &mut String, rows: &[(&str, f64, f64)]) {
+    for (label, coulomb, regularized) in rows {
+        let _ = writeln!(
+            out,
+            "  {label:<32}{:<18}{}",
+            number(*coulomb),
+            number(*regularized)
+        );
     }
 }

@@ -350,14 +350,7 @@ impl LapCycleReport {
                 r.secant_stiffness,
             ),
         ];
-        for (label, coulomb, regularized) in rows {
-            let _ = writeln!(
-                out,
-                "  {label:<32}{:<18}{}",
-                number(coulomb),
-                number(regularized)
-            );
-        }
+        super::cycle::write_law_rows(&mut out, &rows);
         let _ = writeln!(out, "  {}", self.note);
         out
     }
