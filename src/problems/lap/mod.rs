@@ -4,4 +4,7 @@
 //! discretized solver never import each other (tests/layering.rs checks it).
 
 pub mod closed_form;
+pub mod discretized;
 pub mod params;
+
+pub use discretized::LapFe;
