@@ -5,7 +5,10 @@
 
 pub mod closed_form;
 pub mod cycle;
+pub mod discretized;
 pub mod params;
+
+pub use discretized::LapFe;
 
 use crate::kernel::regime::Law;
 use crate::problems::quantity::ratio_to_coulomb;
