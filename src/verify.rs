@@ -5,6 +5,8 @@
 
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::ModelKind;
+use crate::problems::lap::LapFe;
+use crate::problems::lap::closed_form::{LapJoint, LapParams};
 use crate::problems::plate::PlateFe;
 use crate::problems::twin_beams::TwinBeamsFe;
 use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
@@ -33,6 +35,11 @@ pub enum Quantity {
     PlateEndDisplacement,
     /// Plate: end X_r of the microslip zone (mm).
     PlateMicroslipEnd,
+    /// Lap joint: joint displacement Delta (mm).
+    LapJointDisplacement,
+    /// Lap joint: the sliding zones a and d (mm), their error over the overlap L (a zone of zero
+    /// length has no relative error).
+    LapSlidingZones,
 }
 
 /// One compared case: the full parameters, so that it can be rerun.
@@ -48,6 +55,13 @@ pub enum Case {
     },
     /// A plate at its own pressure.
     Plate(PlateParams),
+    /// A lap joint at a force.
+    Lap {
+        /// The joint.
+        params: LapParams,
+        /// Force through it (N).
+        force: f64,
+    },
 }
 
 /// The worst disagreement found for one quantity.
@@ -74,8 +88,11 @@ impl Worst {
     }
 
     fn record(&mut self, numeric: f64, exact: f64, case: Case) {
+        self.record_error(relative_error(numeric, exact), case);
+    }
+
+    fn record_error(&mut self, error: f64, case: Case) {
         self.cases += 1;
-        let error = relative_error(numeric, exact);
         if error > self.error || self.case.is_none() {
             self.error = error;
             self.case = Some(case);
@@ -167,7 +184,7 @@ pub fn run(grid: Grid, density: MeshDensity) -> Result<Vec<Worst>, NumericError>
         match kind {
             ModelKind::Beam => worst.extend(run_beams(grid, density)?),
             ModelKind::Plate => worst.extend(run_plates(grid, density)?),
-            ModelKind::Lap => {} // LAP-FE-PENDING
+            ModelKind::Lap => worst.extend(run_laps(grid, density)?),
         }
     }
     Ok(worst)
@@ -208,6 +225,68 @@ fn run_beams(grid: Grid, density: MeshDensity) -> Result<[Worst; 2], NumericErro
         }
     }
     Ok([w, x])
+}
+
+/// Lap joints of the grid: the bundled one (x = L slides first), and on the full grid a balanced
+/// one (both ends at once) and one whose inner plate is stiffer (x = 0 first).
+fn lap_shapes(grid: Grid) -> Vec<LapParams> {
+    let aluminium = LapParams::ALUMINIUM;
+    let mut shapes = vec![aluminium];
+    if grid == Grid::Full {
+        shapes.push(LapParams {
+            inner_thickness: 4.0,
+            ..aluminium
+        });
+        shapes.push(LapParams {
+            inner_thickness: 6.0,
+            friction: 0.6,
+            pressure: 5.0,
+            ..aluminium
+        });
+    }
+    shapes
+}
+
+/// K_T values (MPa/mm) of the lap grid: 1/lambda from 25 mm to 0.25 mm on the bundled joint.
+const LAP_STIFFNESSES: [f64; 4] = [100.0, 1e3, 1e4, 1e5];
+
+/// The lap joints over the grid: Delta, and a and d over L, in every regime (all microslip, one
+/// end sliding, both, nearly gross slip).
+fn run_laps(grid: Grid, density: MeshDensity) -> Result<[Worst; 2], NumericError> {
+    let mut delta = Worst::new(Quantity::LapJointDisplacement);
+    let mut zones = Worst::new(Quantity::LapSlidingZones);
+    for shape in lap_shapes(grid) {
+        for kt in LAP_STIFFNESSES {
+            let params = LapParams {
+                tangential_stiffness: kt,
+                ..shape
+            };
+            let Ok(joint) = LapJoint::new(params) else {
+                continue;
+            };
+            let (f1, f2, gross) = (
+                joint.first_slip_force(),
+                joint.second_slip_force(),
+                joint.gross_slip_force(),
+            );
+            for f in [0.5 * f1, 0.5 * (f1 + f2), 0.5 * (f2 + gross), 0.95 * gross] {
+                let Ok(force) = joint.force(f) else {
+                    continue;
+                };
+                let exact = joint.regularized(force);
+                let mut fe = LapFe::new(params, density);
+                fe.load_to(f, 4)?;
+                let case = Case::Lap { params, force: f };
+                delta.record(fe.joint_displacement(), exact.joint_displacement(), case);
+                let (a, d) = fe.sliding_zones();
+                let off = (a - exact.slide_at_inner_end())
+                    .abs()
+                    .max((d - exact.slide_at_cover_ends()).abs());
+                zones.record_error(off / params.length, case);
+            }
+        }
+    }
+    Ok([delta, zones])
 }
 
 /// The plate over the grid: u(L) and X_r.

@@ -1,13 +1,16 @@
 //! The double-lap joint's charts as data: Delta vs F with Coulomb and the K_T family, the sliding
 //! zones vs F, tau(x), the loop and D vs F_a. Built from [`crate::study::lap`].
 
+use crate::chart::NumericPoints;
 use crate::chart::view::LapChart;
 use crate::chart::{
     Plot, SeriesRole, cursor, dissipation_plot, line, linear_axis, loop_plot, max_y, samples,
 };
 use crate::kernel::format::{number, number_with};
 use crate::kernel::regime::Law;
+use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::LapParam;
+use crate::problems::lap::LapFe;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::lap::cycle::LapCycle;
 use crate::study::curves::Spacing;
@@ -135,5 +138,71 @@ pub(crate) fn lap_plot(
                 "D (N mm)",
             ))
         }
+    }
+}
+
+/// The project's finite-element points for a lap chart: the discretized solver (`LapFe`, which
+/// never calls the closed forms) loaded monotonically through the chart's forces, round the same
+/// cycle as the loop, or to the current force for tau(x); None for D vs F_a (a closed-form
+/// integral of the loop).
+pub(crate) fn lap_numeric_points(
+    joint: &LapJoint,
+    force: JointForce,
+    chart: LapChart,
+    density: MeshDensity,
+    count: usize,
+) -> Result<Option<NumericPoints>, NumericError> {
+    let points = |points: Vec<(f64, f64)>| {
+        Ok(Some(NumericPoints {
+            points,
+            continuum: Vec::new(),
+            failed: 0,
+        }))
+    };
+    let mut fe = LapFe::new(joint.params(), density);
+    let length = joint.params().length;
+    match chart {
+        LapChart::Displacement | LapChart::Zones => {
+            // Up to just below F_gross, where the solver (and the joint) stops.
+            let top = 0.98 * force_range(joint, None);
+            let mut found = Vec::with_capacity(2 * count);
+            for i in 1..=count {
+                let f = top * i as f64 / count as f64;
+                fe.load_to(f, 2)?;
+                if chart == LapChart::Displacement {
+                    found.push((f, fe.joint_displacement()));
+                } else {
+                    let (a, d) = fe.sliding_zones();
+                    found.extend([(f, a), (f, length - d)]);
+                }
+            }
+            points(found)
+        }
+        LapChart::Shear => {
+            fe.load_to(force.newtons().min(0.98 * joint.gross_slip_force()), 4)?;
+            points(
+                (0..=40)
+                    .map(|i| {
+                        let x = length * f64::from(i) / 40.0;
+                        (x, fe.shear_at(x))
+                    })
+                    .collect(),
+            )
+        }
+        LapChart::Loop => {
+            // Its own slider histories round a real reversal, no Masing rule.
+            let fa = force.newtons().min(0.98 * joint.gross_slip_force());
+            fe.load_to(fa, 4)?;
+            let mut found = Vec::with_capacity(2 * count);
+            for (from, sign) in [(fa, -1.0), (-fa, 1.0)] {
+                for i in 1..=count {
+                    let f = from + sign * 2.0 * fa * i as f64 / count as f64;
+                    fe.load_to(f, 2)?;
+                    found.push((f, fe.joint_displacement()));
+                }
+            }
+            points(found)
+        }
+        LapChart::Dissipation => Ok(None),
     }
 }

@@ -862,8 +862,9 @@ pub fn numeric_points(
         | (Model::Beam { .. }, AnyChart::Plate(_) | AnyChart::Lap(_))
         | (Model::Plate(_), AnyChart::Beam(_) | AnyChart::Lap(_))
         | (Model::Lap { .. }, AnyChart::Beam(_) | AnyChart::Plate(_)) => Ok(None),
-        // The lap joint's finite-element overlays come with its discretized solver.
-        (Model::Lap { .. }, AnyChart::Lap(_)) => Ok(None),
+        (Model::Lap { joint, force }, AnyChart::Lap(chart)) => {
+            lap::lap_numeric_points(&joint, force, chart, density, OVERLAY_POINTS)
+        }
     }
 }
 

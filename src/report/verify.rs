@@ -13,6 +13,8 @@ pub(crate) fn quantity(quantity: Quantity) -> &'static str {
         Quantity::BeamMicroslipEnd => "beam X (mm)",
         Quantity::PlateEndDisplacement => "plate u(L) (mm)",
         Quantity::PlateMicroslipEnd => "plate X_r (mm)",
+        Quantity::LapJointDisplacement => "lap Delta (mm)",
+        Quantity::LapSlidingZones => "lap a, d (/L)",
     }
 }
 
@@ -39,6 +41,19 @@ pub(crate) fn case(case: &Case) -> String {
             number(p.poisson),
             number(p.friction),
             number(p.pressure)
+        ),
+        Case::Lap { params: p, force } => format!(
+            "K_T={} MPa/mm F={} N L={} b={} t1={} t2={} mm E1={} E2={} MPa P={} MPa mu={}",
+            number(p.tangential_stiffness),
+            number(*force),
+            number(p.length),
+            number(p.width),
+            number(p.inner_thickness),
+            number(p.cover_thickness),
+            number(p.inner_modulus),
+            number(p.cover_modulus),
+            number(p.pressure),
+            number(p.friction)
         ),
     }
 }

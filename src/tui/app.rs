@@ -1308,7 +1308,7 @@ impl App {
                 self.show_numeric = !self.show_numeric;
                 self.recompute();
                 if self.show_numeric && self.numeric.is_none() && self.message.is_none() {
-                    self.info("no finite-element points for this chart (they show on w(L), X and u(L) charts)");
+                    self.info("no finite-element points for this chart (D vs F_a, P_r/P, X_r vs mu and the table have none)");
                 }
             }
             Action::ToggleBeamTheory => match &mut self.state_mut().inputs {
