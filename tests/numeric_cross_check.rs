@@ -13,10 +13,16 @@ use proptest::prelude::*;
 
 #[test]
 fn quick_grid_agrees_far_below_the_target() {
-    // Target of the issue: 1e-3 at the default mesh. Measured worst case: ~1e-6.
+    // Target of the issue: 1e-3 at the default mesh. Measured worst case: ~1e-6 for the beams
+    // and the plate; 3.4e-5 (Delta) and 1.6e-5 L (zones) for the lap joint at K_T = 1e5 MPa/mm,
+    // where its mesh is the 12 elements per 1/lambda of `LapFe` (docs/theory.md section 5).
     for worst in verify::run(Grid::Quick, MeshDensity::default()).unwrap() {
         assert!(worst.cases >= 6, "{worst:?}");
-        assert!(worst.error < 2e-5, "{worst:?}");
+        let bound = match worst.quantity {
+            verify::Quantity::LapJointDisplacement | verify::Quantity::LapSlidingZones => 1e-4,
+            _ => 2e-5,
+        };
+        assert!(worst.error < bound, "{worst:?}");
     }
 }
 
