@@ -175,6 +175,16 @@ impl Preset {
                 error: PresetError::Param(error),
             });
         }
+        // Every value in its own domain may still leave no state: the lap joint's F beyond
+        // F_gross = 2 b mu P L. Said at the line of the value refused (F), or at none.
+        if problems.is_empty()
+            && let Err(error) = inputs.validate()
+        {
+            problems.push(Located {
+                line: lines.get(error.field).copied().flatten(),
+                error: PresetError::Param(error),
+            });
+        }
         if problems.is_empty() {
             Ok(Preset {
                 name: name.to_string(),
@@ -226,6 +236,21 @@ mod tests {
         assert_eq!(
             problems[0].to_string(),
             "line 2: invalid model = a non-string value: must be \"beam\", \"plate\" or \"lap\""
+        );
+    }
+
+    #[test]
+    fn a_lap_force_beyond_gross_slip_is_refused_at_its_line() {
+        let problems = Preset::parse(
+            "model = \"lap\"\nmu = 0.1\nF = 3000\n",
+            "x",
+            PresetSource::Bundled,
+        )
+        .unwrap_err();
+        assert_eq!(
+            problems[0].to_string(),
+            "line 3: invalid F = 3000: must be in [0, 2000] N (F_gross = 2 b mu P L: the joint \
+             slides through beyond it)"
         );
     }
 

@@ -45,6 +45,13 @@ mod tests {
                 let value = inputs.get(param).unwrap() * (1.0 + 0.01 * i as f64) / 3.0;
                 inputs.set(param, value).unwrap();
             }
+            // The lap joint's force must stay within its (now smaller) F_gross: 37 % of it, an
+            // odd number that still round-trips.
+            if let Some(load) = kind.description().load {
+                inputs.set(load, 0.0).unwrap();
+                let scale = inputs.validate().unwrap().regime_scale().unwrap();
+                inputs.set(load, 0.37 * scale).unwrap();
+            }
             let text = to_toml(&inputs, "a \"quoted\" description");
             let back = Preset::parse(&text, "x", PresetSource::Bundled).unwrap();
             assert_eq!(back.inputs, inputs);
