@@ -385,6 +385,8 @@ fn verify_prints_a_table_and_fails_above_tolerance() {
         "beam X (mm)",
         "plate u(L) (mm)",
         "plate X_r (mm)",
+        "lap Delta (mm)",
+        "lap a, d (/L)",
         "ok",
     ] {
         assert!(text.contains(needle), "missing {needle} in\n{text}");
