@@ -287,7 +287,7 @@ pub enum Command {
         #[command(flatten)]
         inputs: InputArgs,
         /// Add the project's finite-element points (w-vs-f, x-vs-f, tau, loop, u-vs-kt, delta-vs-f,
-        /// zones-vs-f, lap-tau, lap-loop).
+        /// zones-vs-f, lap-tau, lap-slip, lap-loop).
         #[arg(long)]
         fe: bool,
         /// The y axis: linear, log, or relative (each curve / Coulomb - 1, in %); default: log for

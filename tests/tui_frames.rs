@@ -103,6 +103,7 @@ fn lap_views() {
     for name in [
         "lap_zones_chart",
         "lap_shear_chart",
+        "lap_slip_chart",
         "lap_loop_chart",
         "lap_dissipation_chart",
     ] {

@@ -105,6 +105,27 @@ pub(crate) fn lap_plot(
                 ],
             })
         }
+        LapChart::Slip => {
+            let positions = samples(0.0, p.length, Spacing::Linear)?;
+            let (coulomb, regularized) = curves::lap_slip_along(joint, force, positions);
+            let saturation = joint.saturation_slip();
+            let top = 1.1 * max_y([&coulomb, &regularized]).max(saturation);
+            Some(Plot {
+                caption: None,
+                title: format!("s(x) at F = {} N, K_T = {} MPa/mm", number(f), number(kt)),
+                x: linear_axis("x (mm)", 0.0, p.length),
+                y: linear_axis("s (mm)", 0.0, top),
+                series: vec![
+                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
+                    line(SeriesRole::Current, "regularized", regularized),
+                    line(
+                        SeriesRole::Limit,
+                        "mu P / K_T",
+                        vec![(0.0, saturation), (p.length, saturation)],
+                    ),
+                ],
+            })
+        }
         LapChart::Loop => {
             let (coulomb, regularized) = (
                 LapCycle::new(joint, Law::Coulomb, force),
@@ -178,13 +199,18 @@ pub(crate) fn lap_numeric_points(
             }
             points(found)
         }
-        LapChart::Shear => {
+        LapChart::Shear | LapChart::Slip => {
             fe.load_to(force.newtons().min(0.98 * joint.gross_slip_force()), 4)?;
             points(
                 (0..=40)
                     .map(|i| {
                         let x = length * f64::from(i) / 40.0;
-                        (x, fe.shear_at(x))
+                        let y = if chart == LapChart::Shear {
+                            fe.shear_at(x)
+                        } else {
+                            fe.slip_at(x)
+                        };
+                        (x, y)
                     })
                     .collect(),
             )

@@ -41,6 +41,8 @@ pub enum LapChart {
     Zones,
     /// Interface shear tau(x) along the overlap at F.
     Shear,
+    /// Interface slip s(x) = u_inner - u_cover along the overlap at F.
+    Slip,
     /// The hysteresis loop of Delta for a force cycling between +F and -F.
     Loop,
     /// Dissipation per cycle D against the amplitude F_a.
@@ -168,6 +170,7 @@ impl ChartSet for LapChart {
         LapChart::Displacement,
         LapChart::Zones,
         LapChart::Shear,
+        LapChart::Slip,
         LapChart::Loop,
         LapChart::Dissipation,
     ];
@@ -175,6 +178,7 @@ impl ChartSet for LapChart {
     fn title(self) -> &'static str {
         match self {
             LapChart::Displacement => "Delta vs F",
+            LapChart::Slip => "s(x) at F",
             LapChart::Zones => "zones vs F",
             LapChart::Shear => "tau(x) at F",
             LapChart::Loop => "loop +-F",
@@ -187,6 +191,7 @@ impl ChartSet for LapChart {
             LapChart::Displacement => "delta-vs-f",
             LapChart::Zones => "zones-vs-f",
             LapChart::Shear => "lap-tau",
+            LapChart::Slip => "lap-slip",
             LapChart::Loop => "lap-loop",
             LapChart::Dissipation => "lap-d-vs-fa",
         }
@@ -195,21 +200,25 @@ impl ChartSet for LapChart {
     fn x_param(self) -> Option<Param> {
         match self {
             LapChart::Displacement | LapChart::Zones => Some(Param::Lap(LapParam::Force)),
-            LapChart::Shear | LapChart::Loop | LapChart::Dissipation => None,
+            LapChart::Shear | LapChart::Slip | LapChart::Loop | LapChart::Dissipation => None,
         }
     }
 
     fn load_axis(self) -> bool {
         match self {
             LapChart::Displacement | LapChart::Zones | LapChart::Dissipation => true,
-            LapChart::Shear | LapChart::Loop => false,
+            LapChart::Shear | LapChart::Slip | LapChart::Loop => false,
         }
     }
 
     fn spans_decades(self) -> bool {
         match self {
             LapChart::Dissipation => true,
-            LapChart::Displacement | LapChart::Zones | LapChart::Shear | LapChart::Loop => false,
+            LapChart::Displacement
+            | LapChart::Zones
+            | LapChart::Shear
+            | LapChart::Slip
+            | LapChart::Loop => false,
         }
     }
 }
@@ -268,6 +277,7 @@ impl AnyChart {
         AnyChart::Lap(LapChart::Displacement),
         AnyChart::Lap(LapChart::Zones),
         AnyChart::Lap(LapChart::Shear),
+        AnyChart::Lap(LapChart::Slip),
         AnyChart::Lap(LapChart::Loop),
         AnyChart::Lap(LapChart::Dissipation),
     ];

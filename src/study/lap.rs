@@ -181,6 +181,20 @@ pub(crate) fn lap_shear_along(
         .unzip()
 }
 
+/// Interface slip s(x) = u_inner - u_cover (mm) along the overlap at one force: (Coulomb,
+/// regularized).
+pub(crate) fn lap_slip_along(
+    joint: &LapJoint,
+    force: JointForce,
+    positions: Samples,
+) -> (Series, Series) {
+    let (coulomb, regularized) = (joint.coulomb(force), joint.regularized(force));
+    positions
+        .values()
+        .map(|x| ((x, coulomb.slip_at(x)), (x, regularized.slip_at(x))))
+        .unzip()
+}
+
 /// The joint cycled at one amplitude.
 pub(crate) fn lap_cycle_point(joint: &LapJoint, amplitude: JointForce) -> CyclePoint {
     let (c, r) = (
