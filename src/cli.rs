@@ -563,7 +563,7 @@ pub enum FitCommand {
 pub enum WeightsArg {
     /// The same at every point (a gauge whose error does not grow with the reading).
     Absolute,
-    /// Proportional to w (gain, calibration): the default.
+    /// Proportional to the response, w or Delta (gain, calibration): the default.
     Relative,
 }
 
@@ -1143,7 +1143,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             };
             if !mode.applies_to(&plot) {
                 return Err(CliError::Invalid(format!(
-                    "--y {}: chart {} cannot show it (log needs values > 0, none negative; relative needs a Coulomb curve over increasing x)",
+                    "--y {}: chart {} cannot show it (log needs values > 0, none negative; relative needs a Coulomb curve over increasing x, nowhere zero past its start)",
                     mode.label(),
                     chart.key()
                 )));
@@ -2062,6 +2062,20 @@ fn run_kt_tolerance(
         }
         Model::Lap { joint, force } => {
             let range = tolerance_forces([from, to], force.newtons())?;
+            // The joint carries nothing beyond F_gross: said of the flag that asks for more.
+            let gross = joint.gross_slip_force();
+            if range[1] > gross {
+                let flag = if to.is_some() { "--to" } else { "--from" };
+                return Err(CliError::Flag {
+                    flag,
+                    value: range[1],
+                    allowed: format!(
+                        "must be at most F_gross = 2 b mu P L = {} N (the joint slides through \
+                         beyond it)",
+                        Compact(gross)
+                    ),
+                });
+            }
             match of {
                 ToleranceOf::Coulomb => {
                     tolerance::lap_stiffness_for_tolerance(&joint, range, tol, element)
@@ -2157,7 +2171,13 @@ fn run_figures(
             finite_elements: fe,
         };
         for chart in AnyChart::all().filter(|c| c.kind() == model.kind()) {
-            let plot = crate::chart::figure(&model, chart, fe, YMode::Linear)?;
+            let plot = crate::chart::figure(&model, chart, fe, YMode::Linear).map_err(|e| {
+                CliError::Invalid(format!(
+                    "the finite-element points of chart {}: {e} (--no-fe draws the figures \
+                     without them)",
+                    chart.key()
+                ))
+            })?;
             // Each chart's own default axis, where its data allow it (as `plot` chooses).
             let y = Some(YMode::default_for(chart))
                 .filter(|m| m.applies_to(&plot))
@@ -2288,11 +2308,22 @@ fn check(out: &mut impl Write, files: &[PathBuf]) -> Result<(), CliError> {
                 } else {
                     &p.description
                 };
-                say(format!(
-                    "{}: ok ({} preset: {description})",
-                    path.display(),
-                    p.inputs.kind()
-                ))?;
+                match p.inputs.validate() {
+                    Ok(_) => say(format!(
+                        "{}: ok ({} preset: {description})",
+                        path.display(),
+                        p.inputs.kind()
+                    ))?,
+                    // A value the file leaves at its default is refused with the others.
+                    Err(error) => {
+                        failed += 1;
+                        say(format!(
+                            "{}: {error}; {} is not in the file, so its default was used: give it",
+                            path.display(),
+                            error.field
+                        ))?;
+                    }
+                }
             }
             Err(problems) => {
                 failed += 1;

@@ -317,3 +317,27 @@ fn the_interval_at_the_edges_of_the_accepted_range() {
     };
     assert!((w(upper) / w(1e-6) - 0.99).abs() < 1e-7, "{upper}");
 }
+
+/// The lap joint over [0, F_gross]: the worst deviation is the limit F -> 0+ (elastic against
+/// bonded compliance), which a brute force over a grid that reaches down to 1e-6 N finds; the
+/// answer (about 1.63e6 MPa/mm on the bundled joint, an independent 60-digit solver's value in
+/// the review of issue 24) must match it, not the 1 % reached near 93 N.
+#[test]
+fn the_lap_joints_worst_force_near_zero_decides() {
+    use microslip::problems::lap::closed_form::{LapJoint, LapParams};
+    use microslip::study::tolerance::lap_stiffness_for_tolerance;
+    let joint = LapJoint::new(LapParams::ALUMINIUM).unwrap();
+    let ratio = |kt: f64, f: f64| {
+        let joint = joint.with_tangential_stiffness(kt).unwrap();
+        let force = joint.force(f).unwrap();
+        joint.regularized(force).joint_displacement() / joint.coulomb(force).joint_displacement()
+            - 1.0
+    };
+    let forces: Vec<f64> = [1e-6, 1e-3, 1.0, 10.0, 93.0, 500.0, 2000.0, 4000.0, 5999.0].to_vec();
+    let brute = brute_force(&forces, 0.01, ratio);
+    let answer = lap_stiffness_for_tolerance(&joint, [0.0, 6000.0], 0.01, 0.4).unwrap();
+    let k = found(answer.threshold);
+    assert!((k / brute - 1.0).abs() < 1e-3, "{k} vs {brute}");
+    assert!((k / 1.63e6 - 1.0).abs() < 0.01, "{k}");
+    assert!(ratio(k, 1e-3) <= 0.01 * (1.0 + 1e-6));
+}

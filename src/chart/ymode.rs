@@ -71,9 +71,12 @@ impl YMode {
                 let ys = || data().flat_map(|s| s.points.iter().map(|p| p.1));
                 ys().any(|y| y > 0.0) && ys().all(|y| y >= 0.0)
             }
-            // A Coulomb curve over increasing x (not the loop, whose branches return).
+            // A Coulomb curve over increasing x (not the loop, whose branches return), nonzero
+            // past its first point (the lap joint's Coulomb tau and slip vanish where it sticks:
+            // a ratio to nothing would be drawn across the gap as if it were one).
             YMode::Relative => coulomb(plot).is_some_and(|c| {
                 c.windows(2).all(|w| w[0].0 < w[1].0)
+                    && c.iter().skip(1).all(|p| p.1 != 0.0)
                     && data().any(|s| {
                         s.kind() == SeriesKind::Line
                             && s.role != SeriesRole::Coulomb

@@ -426,7 +426,8 @@ fn read_rows(
             header_line,
             format!(
                 "every {} is negative or zero: microslip counts displacements positive in the \
-                 direction of the load (F pushes the tip, P squeezes the plate outward); many FE \
+                 direction of the load (F pushes the tip, P squeezes the plate outward, F pulls \
+                 the lap joint's inner plate out); many FE \
                  codes report them along -y: flip the sign of the column",
                 curve.y
             ),

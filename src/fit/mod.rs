@@ -170,6 +170,19 @@ pub enum FitError {
     /// Given standard deviations that cannot weigh the measurements.
     #[error("invalid sigma: {0}")]
     Sigma(String),
+    /// (Lap joint) A measured force beyond the gross-slip force of every mu searched: no state
+    /// of the joint carries it.
+    #[error(
+        "invalid F_N = {force}: beyond the gross-slip force 2 b mu P L of every mu up to {} \
+         ({largest} N): the joint slides through, so no mu fits it",
+        MU_RANGE.1
+    )]
+    BeyondGrossSlip {
+        /// The largest measured force (N).
+        force: f64,
+        /// F_gross at the largest mu searched (N).
+        largest: f64,
+    },
 }
 
 /// Progress of a fit, for a caller that wants to show it (the library prints nothing): reported
@@ -316,6 +329,9 @@ impl Curve {
 /// The fit problem: structure fixed, mu and K_T free unless fixed, in log units.
 struct Problem<'a> {
     structure: Structure,
+    /// The mu searched: [`MU_RANGE`], from above the smallest mu that carries every measured force
+    /// for the lap joint (its F_gross = 2 b mu P L grows with mu).
+    mu_range: (f64, f64),
     data: &'a [Measurement],
     /// The sigma of each measurement ([`Weights::sigmas`]): residuals are divided by it.
     sigma: &'a [f64],
@@ -421,7 +437,7 @@ impl Problem<'_> {
     fn bounds(&self) -> Vec<(f64, f64)> {
         let mut b = Vec::new();
         if self.fixed_mu.is_none() {
-            b.push((MU_RANGE.0.ln(), MU_RANGE.1.ln()));
+            b.push((self.mu_range.0.ln(), self.mu_range.1.ln()));
         }
         if self.fixed_kt.is_none() {
             b.push((KT_RANGE.0.ln(), KT_RANGE.1.ln()));
@@ -870,9 +886,26 @@ pub fn fit_weighted(
             }
         }
     }
+    // The lap joint carries no force beyond F_gross = 2 b mu P L: mu is searched only where it
+    // carries every measured force (a fit on that bound is reported as at the search bound).
+    let mut mu_range = MU_RANGE;
+    if let Structure::Lap(p) = structure
+        && let Some(largest) = data.iter().map(|m| m.force).reduce(f64::max)
+    {
+        let per_mu = p.gross_slip_force() / p.friction;
+        let least = largest / per_mu * (1.0 + 1e-9);
+        if least > MU_RANGE.1 {
+            return Err(FitError::BeyondGrossSlip {
+                force: largest,
+                largest: per_mu * MU_RANGE.1,
+            });
+        }
+        mu_range.0 = mu_range.0.max(least);
+    }
     let sigma = weights.sigmas(data)?;
     let problem = Problem {
         structure,
+        mu_range,
         data,
         sigma: &sigma,
         fixed_mu,
@@ -1009,7 +1042,7 @@ fn summarize(problem: &Problem, refined: &Refined, weights: Weights) -> FitResul
     let mu_estimate = match problem.fixed_mu {
         Some(v) => Estimate::fixed(v),
         None => {
-            let mut estimate = judge(next.next().flatten(), mu, MU_RANGE);
+            let mut estimate = judge(next.next().flatten(), mu, problem.mu_range);
             if beyond == 0 {
                 estimate.std_error = None;
                 estimate.status = Status::NotIdentifiable;
@@ -1148,6 +1181,25 @@ mod tests {
             below.mu.evidence,
             Evidence::NoDataAboveFirstMacroslip { .. }
         ));
+        // Forces no mu of the search carries: refused, naming the force and the largest F_gross.
+        let over = [1e5, 2e5, 2.5e5].map(|force| Measurement {
+            force,
+            deflection: force * 1e-5,
+        });
+        let refused = fit_weighted(
+            Structure::Lap(LapParams::ALUMINIUM),
+            &over,
+            (None, None),
+            Weights::Absolute,
+            &mut |_| {},
+        );
+        assert_eq!(
+            refused,
+            Err(FitError::BeyondGrossSlip {
+                force: 2.5e5,
+                largest: 1e5
+            })
+        );
         // A fixed mu that cannot carry the largest force is refused by name.
         let refused = fit_weighted(
             Structure::Lap(LapParams::ALUMINIUM),
@@ -1259,6 +1311,7 @@ mod tests {
         let sigma = vec![1.0; data.len()];
         let problem = Problem {
             structure: Structure::Beam(TwinBeamsParams::PAPER),
+            mu_range: MU_RANGE,
             data: &data,
             sigma: &sigma,
             fixed_mu: None,

@@ -176,12 +176,15 @@ impl Preset {
             });
         }
         // Every value in its own domain may still leave no state: the lap joint's F beyond
-        // F_gross = 2 b mu P L. Said at the line of the value refused (F), or at none.
+        // F_gross = 2 b mu P L. Said at the line of the value refused, when the file gives it; a
+        // value the file leaves at its default is not the file's fault (`--set F=...` may give
+        // it), so the preset is refused only when it is used without one.
         if problems.is_empty()
             && let Err(error) = inputs.validate()
+            && let Some(line) = lines.get(error.field).copied().flatten()
         {
             problems.push(Located {
-                line: lines.get(error.field).copied().flatten(),
+                line: Some(line),
                 error: PresetError::Param(error),
             });
         }

@@ -70,6 +70,10 @@ pub struct Description {
     /// The name of [`crate::problems::inputs::Model::regime_scale`] as messages say it (`F_thre`);
     /// empty without a load.
     pub regime_scale_name: &'static str,
+    /// How many regime scales the load axis of its charts spans by default: 3 F_thre for the
+    /// beams (macroslip well past F_1), 1 F_gross for the lap joint (no state beyond it); 0
+    /// without a load.
+    pub load_span: f64,
 }
 
 /// Writes [`ModelKind`], its [`ModelKind::ALL`] and [`ModelKind::description`] from one list,

@@ -138,7 +138,7 @@ pub enum ToleranceError {
     #[error(transparent)]
     Force(#[from] ParamError),
     /// Only zero force: no deflection to compare.
-    #[error("the force range [{from}, {to}] N holds no positive force: nothing deflects")]
+    #[error("the force range [{from}, {to}] N holds no positive force: nothing moves")]
     Unloaded {
         /// Start (N).
         from: f64,
@@ -167,7 +167,7 @@ fn plate_deviation(plate: &SqueezedPlate) -> f64 {
 }
 
 /// The forces at which the deviation is checked: the ends of [from, to], F_thre when inside, and
-/// [`FORCE_SAMPLES`] between; zero left out (nothing deflects).
+/// [`FORCE_SAMPLES`] between; zero left out (nothing moves).
 fn force_grid(beams: &TwinBeams, [from, to]: [f64; 2]) -> Vec<TipForce> {
     let threshold = beams.threshold_force();
     let mut forces: Vec<f64> = (0..=FORCE_SAMPLES)
@@ -478,11 +478,18 @@ pub fn plate_stiffness_for_tolerance(
 }
 
 /// The lap joint's forces at which the deviation is checked: the ends of [from, to], F_1 and F_2
-/// when inside (where the regime changes), and [`FORCE_SAMPLES`] between; zero left out.
+/// when inside (where the regime changes), and [`FORCE_SAMPLES`] between. Zero itself is left out
+/// (nothing moves), but not its neighbourhood: there the regularized joint is elastic and
+/// Coulomb's is bonded (its slip grows as F^2), so their ratio tends to the elastic compliance
+/// over the bonded one, the largest deviation of a range that starts at zero. A force of 1e-9 of
+/// the range's end stands for that limit (the F^2 term is then 1e-9 of the bonded one).
 fn lap_force_grid(joint: &LapJoint, [from, to]: [f64; 2]) -> Vec<JointForce> {
     let mut forces: Vec<f64> = (0..=FORCE_SAMPLES)
         .map(|i| from + (to - from) * i as f64 / FORCE_SAMPLES as f64)
         .collect();
+    if from == 0.0 {
+        forces.push(1e-9 * to);
+    }
     for change in [joint.first_slip_force(), joint.second_slip_force()] {
         if (from..=to).contains(&change) {
             forces.push(change);

@@ -302,7 +302,8 @@ impl App {
     /// (3 F_thre for the beams); none for a problem without a load.
     fn fit_axes(&mut self) {
         for kind in ModelKind::ALL {
-            self.force_span[kind] = self.regime_scale_of(kind).map(|s| 3.0 * s);
+            let span = kind.description().load_span;
+            self.force_span[kind] = self.regime_scale_of(kind).map(|s| span * s);
         }
     }
 
@@ -576,9 +577,9 @@ impl App {
     }
 
     /// A problem's load axis (the beams' F), kept while values change so that the curves can be
-    /// compared, is fitted again (3 times the regime scale, F_thre) when the regime scale leaves it
-    /// or is squeezed into its first twelfth (a geometry, mu or P changed by a large factor); the
-    /// status says so for the problem shown. K_T does not move F_thre: dragging it never rescales.
+    /// compared, is fitted again (`load_span` times the regime scale: 3 F_thre, 1 F_gross) when
+    /// the regime scale leaves it or is squeezed into its first twelfth (a geometry, mu or P
+    /// changed by a large factor); the status says so for the problem shown. K_T does not move F_thre: dragging it never rescales.
     fn follow_threshold(&mut self) {
         for kind in ModelKind::ALL {
             let (Some(span), Some(threshold)) = (self.force_span[kind], self.regime_scale_of(kind))
@@ -588,13 +589,14 @@ impl App {
             if threshold <= span && threshold >= span / 12.0 {
                 continue;
             }
-            self.force_span[kind] = Some(3.0 * threshold);
+            let wanted = kind.description().load_span * threshold;
+            self.force_span[kind] = Some(wanted);
             let load = kind.description().load;
             let unit = load.map(Param::unit_suffix).unwrap_or_default();
             let note = format!(
                 "{} axis rescaled to 0-{}{unit}: {} = {}{unit} {} the old 0-{}{unit}",
                 load.map_or("", |p| p.name()),
-                number(3.0 * threshold),
+                number(wanted),
                 kind.description().regime_scale_name,
                 number(threshold),
                 if threshold > span {
@@ -1542,6 +1544,12 @@ impl App {
     /// `f`: asks to fit mu and K_T of the twin beams to the measurements ([`Effect::Fit`]), in
     /// [`Mode::Fitting`] until the result comes (or Esc cancels).
     fn fit(&mut self) {
+        if self.kind == ModelKind::Lap {
+            return self.error(
+                "the terminal UI fits the twin beams; for the lap joint run `microslip fit lap \
+                 DATA.csv` (columns F_N,Delta_mm)",
+            );
+        }
         let Some(measurements) = &self.measurements else {
             return self.error("no measurements: press d to load a CSV with columns F_N,w_mm");
         };
@@ -1624,7 +1632,7 @@ impl App {
         if next == value && stepped != value {
             // Held by the other values, not by its own domain: say so rather than do nothing.
             return self.info(format!(
-                "{param} stops at {}{}: beyond it the force F would exceed F_gross = 2 b mu P L",
+                "{param} stops at {}{}: F must not exceed F_gross = 2 b mu P L",
                 number(value),
                 param.unit_suffix()
             ));

@@ -425,7 +425,9 @@ impl LapState {
             return parabola(start - x, p);
         }
         if x > end {
-            return parabola(x - end, q);
+            // d - (L - x), not x - (L - d): a zone far shorter than the overlap would lose its
+            // digits to L in the difference (exact at x = L).
+            return parabola((self.d - (joint.params.length - x)).max(0.0), q);
         }
         match self.law {
             Law::Coulomb => 0.0,

@@ -188,6 +188,27 @@ impl LapFe {
             .map_err(|e| NumericError::OutOfRange(e.to_string()))?;
         let decays = decay_rate(params) * params.length;
         let most = MAX_ELEMENTS as f64 / ELEMENTS_PER_DECAY;
+        // Conditioning: the inner plate is held only by the interface, so the stiffness matrix's
+        // smallest eigenvalue is about the interface's total stiffness 2 K_T b L and its largest
+        // 4 k b / h (k the stiffer member's E t): their ratio costs its digits to the solve, so
+        // beyond 1e13 fewer than three are left (an overlap of 1e-5 mm at the default mesh: 2e15,
+        // a singular matrix).
+        let elements = (MeshDensity::default().elements as f64)
+            .max((ELEMENTS_PER_DECAY * decays).ceil())
+            .min(MAX_ELEMENTS as f64);
+        let stiffer = params.inner_stiffness().max(params.covers_stiffness());
+        let condition = 2.0 * stiffer * elements
+            / (params.tangential_stiffness * params.length * params.length);
+        if condition > 1e13 {
+            return Err(NumericError::OutOfRange(format!(
+                "the bars' elements are {} times stiffer than the whole interface (at most 1e13, \
+                 where the solve keeps three digits): lengthen the overlap L = {} mm or raise \
+                 K_T = {} MPa/mm",
+                short(condition),
+                short(params.length),
+                short(params.tangential_stiffness)
+            )));
+        }
         if decays <= most {
             return Ok(());
         }

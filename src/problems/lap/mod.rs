@@ -27,6 +27,7 @@ pub(crate) const DESCRIPTION: Description = Description {
     response_symbol: "Delta",
     load: Some(Param::Lap(LapParam::Force)),
     regime_scale_name: "F_gross",
+    load_span: 1.0,
     quantities: &[
         QuantityName {
             quantity: Quantity::Response,

@@ -27,6 +27,7 @@ pub(crate) const DESCRIPTION: Description = Description {
     response_symbol: "u",
     load: None,
     regime_scale_name: "",
+    load_span: 0.0,
     quantities: &[
         QuantityName {
             quantity: Quantity::Response,
