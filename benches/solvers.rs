@@ -3,6 +3,7 @@
 use divan::{Bencher, black_box};
 use microslip::fit::{Measurement, fit_twin_beams};
 use microslip::numeric::MeshDensity;
+use microslip::problems::lap::LapFe;
 use microslip::problems::lap::closed_form::{LapJoint, LapParams};
 use microslip::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
 use microslip::problems::twin_beams::TwinBeamsFe;
@@ -32,6 +33,17 @@ fn lap_closed_form(bencher: Bencher, force: f64) {
     bencher.bench_local(|| {
         let state = black_box(&joint).regularized(black_box(force));
         (state.slide_at_cover_ends(), state.joint_displacement())
+    });
+}
+
+/// The lap joint's discretized solver (`LapFe`), the default 400 elements, loaded from rest to
+/// 4000 N (both ends sliding) in 4 steps: what `n` and `verify` run per point.
+#[divan::bench(sample_count = 30)]
+fn lap_finite_elements(bencher: Bencher) {
+    bencher.bench_local(|| {
+        let mut fe = LapFe::new(LapParams::ALUMINIUM, MeshDensity::default());
+        fe.load_to(black_box(4000.0), 4).unwrap();
+        fe.joint_displacement()
     });
 }
 
