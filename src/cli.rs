@@ -740,7 +740,7 @@ pub enum CliError {
         /// What is allowed.
         allowed: String,
     },
-    /// A preset of the other model.
+    /// A preset of another problem.
     #[error("preset '{preset}' is a {found} preset; `microslip {command}` needs a {wanted} preset")]
     WrongModel {
         /// The preset.
@@ -1534,7 +1534,7 @@ fn write_output(
 }
 
 /// Resolves the preset (default: the paper's data set of `wanted`), applies `--set`, validates.
-/// `command` (as typed after `microslip`) names the command when the preset is of the other model.
+/// `command` (as typed after `microslip`) names the command when the preset is of another problem.
 /// The roles of `plot --series` (None: not given), without the cursor under `--no-cursor`.
 fn shown_roles(series: Option<&str>, no_cursor: bool) -> Result<Option<Vec<SeriesRole>>, CliError> {
     let Some(list) = series else {
@@ -1747,7 +1747,7 @@ fn deck_of_other_model(found: ModelKind) -> CliError {
     ))
 }
 
-/// Like [`load`], for commands that accept either model (`default` picks the default preset).
+/// Like [`load`], for commands that accept any problem (`default` picks the default preset).
 fn load_any(args: &InputArgs, default: ModelKind) -> Result<(String, Model), CliError> {
     let (name, preset) = resolve_preset(args, default)?;
     apply_and_validate(args, name, preset)

@@ -287,7 +287,7 @@ impl AnyChart {
         Self::ALL.iter().copied()
     }
 
-    /// The name on the command line (unique over both models).
+    /// The name on the command line (unique over every problem).
     pub fn key(self) -> &'static str {
         match self {
             AnyChart::Beam(c) => c.key(),

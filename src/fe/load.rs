@@ -93,7 +93,7 @@ fn read_deck(path: &Path, deck: Option<&Path>) -> Result<(DeckHeader, String), L
     Ok((header, deck_text))
 }
 
-/// Refuses a deck of the other model, naming the command that reads it.
+/// Refuses a deck of another problem, naming the command that reads it.
 fn check_kind(
     header: &DeckHeader,
     path: &Path,

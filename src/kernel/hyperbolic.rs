@@ -1,6 +1,6 @@
 //! Overflow-free, cancellation-free hyperbolic building blocks.
 //!
-//! The closed forms of both models are made of `sinh`, `cosh` and their Taylor remainders evaluated at
+//! The closed forms of every problem are made of `sinh`, `cosh` and their Taylor remainders evaluated at
 //! `k x`, where `k` ranges over many decades (over the accepted domain `k L` runs from ~6e-16 to
 //! ~2e17, docs/theory.md). Evaluated naively, `cosh(k L)` overflows above 710 and `cosh(k x) - 1 - (k x)^2 / 2`
 //! loses every digit for small arguments. Every function here stays finite and accurate to a few ulps

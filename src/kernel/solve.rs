@@ -1,4 +1,4 @@
-//! Root finding for the transcendental equations of both models, on top of the `roots` crate.
+//! Root finding for the transcendental equations of every problem, on top of the `roots` crate.
 //!
 //! Why a wrapper: `roots`' convergence test is absolute (`|x1 - x2| < eps`), but the slip boundary X
 //! spans many decades (micrometres when F is a thousand times the threshold, hundreds of mm otherwise)

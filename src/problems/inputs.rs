@@ -1,4 +1,4 @@
-//! The inputs of either model as users set them ([`Inputs`], unvalidated, addressed by typed
+//! The inputs of any problem as users set them ([`Inputs`], unvalidated, addressed by typed
 //! [`Param`]s) and the validated models the physics accepts ([`Model`]). Presets, `--set` and the
 //! TUI all edit an [`Inputs`] and validate it through the checked constructors.
 
@@ -67,7 +67,7 @@ pub enum Model {
     },
 }
 
-/// The interface data common to both models: what the K_T comparisons need.
+/// The interface data common to every problem: what the K_T comparisons need.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct InterfaceData {
     /// Length L (beam length or plate half-length) (mm).
@@ -137,7 +137,7 @@ impl Model {
 
     /// The same model with `param` set to the accepted value nearest to `value` (see
     /// [`crate::kernel::params::Domain::clamp`] and [`Model::accepted_range`]): infallible, for sweeps and root finding whose range was
-    /// checked. A parameter of the other model leaves the model as it is.
+    /// checked. A parameter of another problem leaves the model as it is.
     pub fn with_clamped(&self, param: Param, value: f64) -> Model {
         let mut inputs = self.inputs();
         let (lo, hi) = self.accepted_range(param);
@@ -289,7 +289,7 @@ impl Inputs {
         }
     }
 
-    /// The value of a parameter, or `None` for a parameter of the other model.
+    /// The value of a parameter, or `None` for a parameter of another problem.
     pub fn get(&self, param: Param) -> Option<f64> {
         let mut copy = *self;
         copy.slot(param).map(|v| *v)
@@ -298,7 +298,7 @@ impl Inputs {
     /// Sets one parameter without validating its range (see [`Inputs::validate`]).
     ///
     /// # Errors
-    /// [`UnknownParam`] when `param` belongs to the other model.
+    /// [`UnknownParam`] when `param` belongs to another problem.
     pub fn set(&mut self, param: Param, value: f64) -> Result<(), UnknownParam> {
         let model = self.kind();
         let slot = self.slot(param).ok_or_else(|| UnknownParam {

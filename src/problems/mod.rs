@@ -235,7 +235,7 @@ pub struct UnknownParam {
     pub model: ModelKind,
 }
 
-/// A parameter of either model: what the TUI's parameter pane and presets iterate over.
+/// A parameter of any problem: what the TUI's parameter pane and presets iterate over.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Param {
     /// A twin-beam parameter.

@@ -431,7 +431,7 @@ pub fn plate_param_sweep(
 ///
 /// # Errors
 /// [`RangeError::Bound`] when an end of `values` is not an accepted value of `param` (or `param`
-/// belongs to the other model).
+/// belongs to another problem).
 pub fn response_vs_param(
     model: &Model,
     param: Param,

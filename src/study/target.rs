@@ -338,7 +338,7 @@ fn edge(holds: &impl Fn(f64) -> bool, mut a: f64, mut b: f64) -> f64 {
 /// quantity equals the target value, all other inputs as in `model`.
 ///
 /// # Errors
-/// A quantity of the other model, a range outside the domain, no crossing in the range, or a
+/// A quantity of another problem, a range outside the domain, no crossing in the range, or a
 /// quantity undefined everywhere.
 ///
 /// # Examples

@@ -161,7 +161,7 @@ struct PinnedChart {
     y_mode: YMode,
 }
 
-/// The parameters of both models and which is active: one step of the undo history.
+/// The parameters of every problem and which is active: one step of the undo history.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Snapshot {
     inputs: ByProblem<Inputs>,
@@ -250,7 +250,7 @@ pub struct App {
 }
 
 impl App {
-    /// The app on `options.preset`; the other model starts on its paper preset.
+    /// The app on `options.preset`; every other problem starts on its own bundled preset.
     pub fn new(options: AppOptions) -> App {
         let state = |preset: Preset| ModelState {
             inputs: preset.inputs,
@@ -904,7 +904,7 @@ impl App {
         }
     }
 
-    /// Undoes (`redo` false) or redoes the last change of either model's parameters.
+    /// Undoes (`redo` false) or redoes the last change of any problem's parameters.
     fn travel(&mut self, redo: bool) {
         let now = self.snapshot();
         let (from, to) = if redo {
