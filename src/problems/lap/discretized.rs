@@ -265,7 +265,7 @@ impl LapFe {
     /// The shear integrated over both interfaces, sum of 2 b w_i tau_i (N): equal to F at every
     /// converged step (the inner plate's equilibrium; the interface, not the support, carries the
     /// load), to the Newton tolerance: 1e-12 of F_gross on a few hundred elements, up to 2e-7 at
-    /// 16000, where the residual's round-off floor decides ([`Discretized::load_scale`]).
+    /// 16000, where the residual's round-off floor decides (the solver's load scale).
     pub fn transferred_force(&self) -> f64 {
         self.converged
             .iter()
