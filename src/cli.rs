@@ -1250,12 +1250,19 @@ fn build_deck(model: ModelKind, deck: &DeckArgs, command: &str) -> Result<String
             let path = deck::LoadPath { force_step };
             deck::beam_deck_on_path(&beams, &loads, deck.mesh, slope, path)
         }
-        (_, Model::Lap { .. }) => {
-            return Err(CliError::Invalid(
-                "deck ccx lap: the lap joint's CalculiX deck is not built yet (issue 24); \
-                 `microslip lap` gives the closed forms to compare an FE run with"
-                    .to_string(),
-            ));
+        (_, Model::Lap { joint, .. }) => {
+            let loads = lap_deck_loads(&joint, deck.loads.as_deref(), slope)?;
+            let force_step = deck
+                .increment
+                .map(|f| check_flag("--increment", f, Domain::FORCE_STEP, Unit::Newton))
+                .transpose()?;
+            crate::fe::lap_deck::lap_deck(
+                &joint,
+                &loads,
+                deck.mesh,
+                slope,
+                deck::LoadPath { force_step },
+            )
         }
         (_, Model::Plate(plate)) => {
             if deck.loads.is_some() {
@@ -1280,6 +1287,14 @@ fn run_bench(
     ccx: &str,
     format: CompareFormat,
 ) -> Result<(), CliError> {
+    if model == ModelKind::Lap {
+        return Err(CliError::Invalid(
+            "bench ccx lap: reading the lap joint's CalculiX results (`compare lap`) is not built \
+             yet; `microslip deck ccx lap -o joint.inp` writes the deck, and its header lists the \
+             closed-form values to compare by hand"
+                .to_string(),
+        ));
+    }
     let text = build_deck(model, deck, &model_command(model, "bench ccx"))?;
     let job = model.name();
     let run_error = |e: fe::run::RunError| CliError::Invalid(e.to_string());
@@ -1494,6 +1509,49 @@ fn deck_loads(
             });
         }
         forces.push(TipForce::clamped(force));
+    }
+    Ok(forces)
+}
+
+/// The forces of a lap deck's steps: `--loads` (increasing, each at most F_gross), or one in each
+/// regime: all microslip (F_1/2), one end sliding, both ends, and 0.9 F_gross (at the deck's
+/// stick slope).
+fn lap_deck_loads(
+    joint: &LapJoint,
+    loads: Option<&[f64]>,
+    slope: StickSlope,
+) -> Result<Vec<JointForce>, CliError> {
+    let at_slope = joint
+        .with_tangential_stiffness(slope.value_for_lap(joint))
+        .unwrap_or(*joint);
+    let Some(loads) = loads else {
+        let (f1, f2, gross) = (
+            at_slope.first_slip_force(),
+            at_slope.second_slip_force(),
+            at_slope.gross_slip_force(),
+        );
+        let mut forces: Vec<f64> = vec![0.5 * f1, 0.5 * (f1 + f2), 0.5 * (f2 + gross), 0.9 * gross];
+        forces.dedup_by(|a, b| *a <= *b);
+        return Ok(forces.into_iter().map(|f| joint.clamped_force(f)).collect());
+    };
+    let mut forces: Vec<JointForce> = Vec::with_capacity(loads.len());
+    for &f in loads {
+        let force = joint.force(f).map_err(|e| CliError::Flag {
+            flag: "--loads",
+            value: f,
+            allowed: e
+                .to_string()
+                .split_once(": ")
+                .map_or(String::new(), |(_, why)| why.to_string()),
+        })?;
+        if forces.last().is_some_and(|last| *last >= force) {
+            return Err(CliError::Flag {
+                flag: "--loads",
+                value: f,
+                allowed: "the loads must increase from one step to the next".to_string(),
+            });
+        }
+        forces.push(force);
     }
     Ok(forces)
 }

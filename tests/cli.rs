@@ -2246,12 +2246,19 @@ fn the_lap_joint_from_the_command_line() {
     let tolerance = stdout_of(&["kt", "--preset", "lap-aluminium", "--tolerance", "1%"]);
     assert!(tolerance.contains("(L11)"), "{tolerance}");
     assert!(failure(&["lap", "--beam-theory", "timoshenko"], 2).contains("not the lap joint"));
-    // Not built yet: said by name, nothing written.
-    let deck = failure(&["deck", "ccx", "lap"], 2);
+    // The deck is written (its header lists the closed forms to compare with); reading its
+    // results is not built yet, so `bench` refuses before running anything.
+    let deck = stdout_of(&["deck", "ccx", "lap", "--loads", "1000,3000"]);
+    assert!(deck.contains("** microslip-deck: model=lap"), "{deck}");
+    assert!(deck.contains("** Compare it:  by hand"), "{deck}");
+    let beyond = failure(&["deck", "ccx", "lap", "--loads", "1000,7000"], 2);
     assert!(
-        deck.contains("lap joint's CalculiX deck is not built yet"),
-        "{deck}"
+        beyond.contains("--loads = 7000") && beyond.contains("F_gross"),
+        "{beyond}"
     );
+    let bench = failure(&["bench", "ccx", "lap"], 2);
+    assert!(bench.contains("`compare lap`) is not built yet"), "{bench}");
+    // Not built yet: said by name.
     let dir = tempfile::tempdir().unwrap();
     let data = dir.path().join("r.csv");
     std::fs::write(&data, "F_N,w_mm\n1,0.001\n").unwrap();

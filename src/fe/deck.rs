@@ -44,7 +44,7 @@ impl DeckMesh {
     }
 
     /// 1 for coarse, 2 for fine: the number of elements per coarse element along each direction.
-    fn refinement(self) -> usize {
+    pub(crate) fn refinement(self) -> usize {
         match self {
             DeckMesh::Coarse => 1,
             DeckMesh::Fine => 2,
@@ -564,13 +564,13 @@ pub fn plate_deck(
 
 /// The normal penalty K_N (MPa/mm): stiff against the elements it connects (100 E over an element's
 /// height), and at least 10 K_T, as CalculiX's manual advises for the stick slope.
-fn normal_stiffness(modulus: f64, element_height: f64, stick_slope: f64) -> f64 {
+pub(crate) fn normal_stiffness(modulus: f64, element_height: f64, stick_slope: f64) -> f64 {
     (100.0 * modulus / element_height).max(10.0 * stick_slope)
 }
 
 /// How a deck's steps treat geometry.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Geometry {
+pub(crate) enum Geometry {
     /// Small displacements throughout (the plate: its faces do not rotate).
     Linear,
     /// `NLGEOM`: the pressure follows the faces as they rotate (the beams; see [`beam_deck`]).
@@ -579,7 +579,7 @@ enum Geometry {
 
 /// A step of unit time whose increments are at most `increment` (CalculiX cuts them further when
 /// an increment does not converge, and grows them back up to `increment`).
-fn start_step(deck: &mut String, increment: f64, geometry: Geometry) {
+pub(crate) fn start_step(deck: &mut String, increment: f64, geometry: Geometry) {
     let nlgeom = match geometry {
         Geometry::Linear => "",
         Geometry::Nonlinear => " NLGEOM,",
@@ -603,7 +603,7 @@ fn end_beam_step(deck: &mut String) {
     deck.push_str("*NODE FILE\nU\n*CONTACT FILE\nCDIS, CSTR\n*END STEP\n");
 }
 
-fn write_nodes(deck: &mut String, blocks: &[&Block]) {
+pub(crate) fn write_nodes(deck: &mut String, blocks: &[&Block]) {
     deck.push_str("*NODE, NSET=NALL\n");
     for block in blocks {
         for (id, [x, y, z]) in block.nodes() {
@@ -612,7 +612,7 @@ fn write_nodes(deck: &mut String, blocks: &[&Block]) {
     }
 }
 
-fn write_elements(deck: &mut String, set: &str, block: &Block) {
+pub(crate) fn write_elements(deck: &mut String, set: &str, block: &Block) {
     let _ = writeln!(deck, "*ELEMENT, TYPE=C3D20R, ELSET={set}");
     for (id, nodes) in block.elements() {
         // At most 16 entries on a line: the id and 15 nodes, then the last 5.
@@ -624,7 +624,7 @@ fn write_elements(deck: &mut String, set: &str, block: &Block) {
     }
 }
 
-fn write_nset(deck: &mut String, name: &str, nodes: &[usize]) {
+pub(crate) fn write_nset(deck: &mut String, name: &str, nodes: &[usize]) {
     let _ = writeln!(deck, "*NSET, NSET={name}");
     for line in nodes.chunks(10) {
         let text: Vec<String> = line.iter().map(usize::to_string).collect();
@@ -632,7 +632,7 @@ fn write_nset(deck: &mut String, name: &str, nodes: &[usize]) {
     }
 }
 
-fn write_surface(deck: &mut String, name: &str, elements: &[usize], face: Face) {
+pub(crate) fn write_surface(deck: &mut String, name: &str, elements: &[usize], face: Face) {
     let _ = writeln!(deck, "*SURFACE, NAME={name}, TYPE=ELEMENT");
     for id in elements {
         let _ = writeln!(deck, "{id}, S{}", face.number());
@@ -663,7 +663,12 @@ fn write_material(deck: &mut String, modulus: f64, poisson: f64, sets: &[&str]) 
 
 /// The contact pair `[slave, master]` with the `JENKINS` interaction, and a comment saying which
 /// faces they are.
-fn write_contact_pair(deck: &mut String, slave: &str, master: &str, surfaces: [&str; 2]) {
+pub(crate) fn write_contact_pair(
+    deck: &mut String,
+    slave: &str,
+    master: &str,
+    surfaces: [&str; 2],
+) {
     let _ = writeln!(
         deck,
         "** slave: {slave}; master: {master}\n\
@@ -672,7 +677,12 @@ fn write_contact_pair(deck: &mut String, slave: &str, master: &str, surfaces: [&
     );
 }
 
-fn write_interaction(deck: &mut String, normal_slope: f64, friction: f64, stick_slope: f64) {
+pub(crate) fn write_interaction(
+    deck: &mut String,
+    normal_slope: f64,
+    friction: f64,
+    stick_slope: f64,
+) {
     let _ = writeln!(
         deck,
         "** the regularized Coulomb law: tau = K_T s up to mu p (stick slope = K_T, MPa/mm)\n\

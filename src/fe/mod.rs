@@ -1,7 +1,7 @@
 //! Benchmarking an external FE code: input decks for CalculiX (Abaqus keyword syntax) and the
 //! comparison of its results with the closed forms.
 //!
-//! - [`deck`]: the decks, as text (deterministic; no I/O).
+//! - [`deck`]: the decks, as text (deterministic; no I/O); the lap joint's in [`lap_deck`].
 //! - [`header`]: the header a deck starts with, which `compare` reads back.
 //! - [`results`]: readers of CalculiX's `.dat` output and of plain CSV from any FE code.
 //! - [`compare`]: FE values against both closed forms, point by point, and the K_T they imply.
@@ -15,6 +15,7 @@
 pub mod compare;
 pub mod deck;
 pub mod header;
+pub mod lap_deck;
 pub mod load;
 mod mesh;
 pub mod results;
