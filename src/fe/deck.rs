@@ -349,10 +349,47 @@ pub fn beam_deck_on_path(
     );
     // Steps that cross F_1: their loads follow an amplitude that reaches F_1 in one increment
     // (CalculiX reads amplitudes in the model definition, before the first step).
+    let newtons: Vec<f64> = loads.iter().map(|f| f.newtons()).collect();
+    let steps = load_steps(&mut deck, &newtons, force_step, onset);
+    deck.push_str("** step 1: the interface pressure P, pressing the beams together\n");
+    start_step(&mut deck, 1.0, Geometry::Nonlinear);
+    write_pressure(
+        &mut deck,
+        &[(&lower, Face::YMin), (&upper, Face::YMax)],
+        p.pressure,
+    );
+    end_beam_step(&mut deck);
+    for (n, (force, (increment, amplitude))) in loads.iter().zip(steps).enumerate() {
+        let _ = writeln!(
+            deck,
+            "** step {}: tip force F = {} N on each beam (uniform shear traction on the end face)",
+            n + 2,
+            Compact(force.newtons())
+        );
+        start_step(&mut deck, increment, Geometry::Nonlinear);
+        write_cload(&mut deck, amplitude.as_deref());
+        for block in [&lower, &upper] {
+            for (id, f) in block.end_face_loads(force.newtons()) {
+                let _ = writeln!(deck, "{id}, 2, {}", real(f));
+            }
+        }
+        end_beam_step(&mut deck);
+    }
+    Ok(deck)
+}
+
+/// Each load step's increment (fraction of the step) and, for a step that crosses F_1 (`onset`)
+/// in several increments, the name of its `*AMPLITUDE`, written into `deck` here: CalculiX reads
+/// amplitudes in the model definition, before the first step. `loads` (N) increase from 0.
+pub(crate) fn load_steps(
+    deck: &mut String,
+    loads: &[f64],
+    force_step: f64,
+    onset: f64,
+) -> Vec<(f64, Option<String>)> {
     let mut from = 0.0;
     let mut steps = Vec::with_capacity(loads.len());
-    for (n, force) in loads.iter().enumerate() {
-        let to = force.newtons();
+    for (n, &to) in loads.iter().enumerate() {
         let step = match LoadPath::ramp(force_step, onset, from, to) {
             Some((t1, points)) => {
                 let name = format!("RAMP{}", n + 2);
@@ -375,36 +412,17 @@ pub fn beam_deck_on_path(
         steps.push(step);
         from = to;
     }
-    deck.push_str("** step 1: the interface pressure P, pressing the beams together\n");
-    start_step(&mut deck, 1.0, Geometry::Nonlinear);
-    write_pressure(
-        &mut deck,
-        &[(&lower, Face::YMin), (&upper, Face::YMax)],
-        p.pressure,
-    );
-    end_beam_step(&mut deck);
-    for (n, (force, (increment, amplitude))) in loads.iter().zip(steps).enumerate() {
-        let _ = writeln!(
-            deck,
-            "** step {}: tip force F = {} N on each beam (uniform shear traction on the end face)",
-            n + 2,
-            Compact(force.newtons())
-        );
-        start_step(&mut deck, increment, Geometry::Nonlinear);
-        match amplitude {
-            Some(name) => {
-                let _ = writeln!(deck, "*CLOAD, AMPLITUDE={name}");
-            }
-            None => deck.push_str("*CLOAD\n"),
+    steps
+}
+
+/// The `*CLOAD` card of a load step, following its amplitude when it has one.
+pub(crate) fn write_cload(deck: &mut String, amplitude: Option<&str>) {
+    match amplitude {
+        Some(name) => {
+            let _ = writeln!(deck, "*CLOAD, AMPLITUDE={name}");
         }
-        for block in [&lower, &upper] {
-            for (id, f) in block.end_face_loads(force.newtons()) {
-                let _ = writeln!(deck, "{id}, 2, {}", real(f));
-            }
-        }
-        end_beam_step(&mut deck);
+        None => deck.push_str("*CLOAD\n"),
     }
-    Ok(deck)
 }
 
 /// The grading along the plate: (finest at the free end, coarsest, growth ratio), mm.

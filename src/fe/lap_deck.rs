@@ -25,9 +25,9 @@
 use std::fmt::Write as _;
 
 use super::deck::{
-    DeckMesh, DeckTooLarge, Geometry, LoadPath, MAX_DECK_ELEMENTS, normal_stiffness, real,
-    start_step, write_contact_pair, write_elements, write_interaction, write_nodes, write_nset,
-    write_surface,
+    DeckMesh, DeckTooLarge, Geometry, LoadPath, MAX_DECK_ELEMENTS, load_steps, normal_stiffness,
+    real, start_step, write_cload, write_contact_pair, write_elements, write_interaction,
+    write_nodes, write_nset, write_surface,
 };
 use super::header::{DeckHeader, StickSlope};
 use super::mesh::{Block, Face, graded_toward_end, uniform};
@@ -239,26 +239,8 @@ pub fn lap_deck(
         Compact(onset),
         Compact(force_step)
     );
-    let mut from = 0.0;
-    let mut steps = Vec::with_capacity(loads.len());
-    for (n, force) in loads.iter().enumerate() {
-        let to = force.newtons();
-        let step = match LoadPath::ramp(force_step, onset, from, to) {
-            Some((t1, points)) => {
-                let name = format!("RAMP{}", n + 2);
-                let _ = writeln!(deck, "*AMPLITUDE, NAME={name}");
-                let row: Vec<String> = points
-                    .iter()
-                    .map(|(t, a)| format!("{}, {}", real(*t), real(*a)))
-                    .collect();
-                let _ = writeln!(deck, "{}", row.join(", "));
-                (t1, Some(name))
-            }
-            None => (LoadPath::increment(force_step, onset, from, to), None),
-        };
-        steps.push(step);
-        from = to;
-    }
+    let newtons: Vec<f64> = loads.iter().map(|f| f.newtons()).collect();
+    let steps = load_steps(&mut deck, &newtons, force_step, onset);
     let outputs = |deck: &mut String| {
         for set in [
             sets::LAP_INNER_END,
@@ -289,12 +271,7 @@ pub fn lap_deck(
             Compact(force.newtons())
         );
         start_step(&mut deck, increment, Geometry::Linear);
-        match amplitude {
-            Some(name) => {
-                let _ = writeln!(deck, "*CLOAD, AMPLITUDE={name}");
-            }
-            None => deck.push_str("*CLOAD\n"),
-        }
+        write_cload(&mut deck, amplitude.as_deref());
         for (id, f) in inner.end_face_loads(share * force.newtons()) {
             let _ = writeln!(deck, "{id}, 1, {}", real(f));
         }
