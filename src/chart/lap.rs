@@ -4,12 +4,12 @@
 use crate::chart::NumericPoints;
 use crate::chart::view::LapChart;
 use crate::chart::{
-    Plot, SeriesRole, cursor, dissipation_plot, line, linear_axis, loop_plot, max_y, samples,
+    Plot, SeriesRole, companions, cursor, dissipation_plot, line, linear_axis, loop_plot, max_y,
+    samples,
 };
 use crate::kernel::format::{number, number_with};
 use crate::kernel::regime::Law;
 use crate::numeric::{MeshDensity, NumericError};
-use crate::problems::LapParam;
 use crate::problems::lap::LapFe;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::lap::cycle::LapCycle;
@@ -36,14 +36,7 @@ pub(crate) fn lap_plot(
     let f_max = force_range(joint, span);
     let forces = samples(0.0, f_max, Spacing::Linear)?;
     let kt = p.tangential_stiffness;
-    let companions: Vec<(SeriesRole, &str, LapJoint)> = [
-        (SeriesRole::Softer, "K_T/5", kt / 5.0),
-        (SeriesRole::Stiffer, "K_T*5", kt * 5.0),
-    ]
-    .into_iter()
-    .filter(|&(_, _, k)| LapParam::Stiffness.check(k).is_ok())
-    .filter_map(|(role, label, k)| Some((role, label, joint.with_tangential_stiffness(k).ok()?)))
-    .collect();
+    let companions = companions(kt, |k| joint.with_tangential_stiffness(k).ok());
     let f = force.newtons();
     match chart {
         LapChart::Displacement => {

@@ -21,7 +21,7 @@ use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::inputs::Model;
 use crate::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
 use crate::problems::twin_beams::TwinBeamsFe;
-use crate::problems::{BeamParam, ModelKind, PlateParam};
+use crate::problems::{ModelKind, PlateParam};
 use crate::study::curves::{self, Samples, Series, Spacing};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
@@ -443,15 +443,7 @@ fn beam_plot(
     let f_max = force_range(beams, force, f_data, span);
     let forces = samples(0.0, f_max, Spacing::Linear)?;
     let kt = p.tangential_stiffness;
-    // The curves at K_T/5 and K_T*5, where those are accepted stiffnesses.
-    let companions: Vec<(SeriesRole, &str, TwinBeams)> = [
-        (SeriesRole::Softer, "K_T/5", kt / 5.0),
-        (SeriesRole::Stiffer, "K_T*5", kt * 5.0),
-    ]
-    .into_iter()
-    .filter(|&(_, _, k)| BeamParam::Stiffness.check(k).is_ok())
-    .filter_map(|(role, label, k)| Some((role, label, beams.with_tangential_stiffness(k).ok()?)))
-    .collect();
+    let companions = companions(kt, |k| beams.with_tangential_stiffness(k).ok());
     let f = force.newtons();
     match chart {
         BeamChart::Deflection => {
@@ -555,6 +547,21 @@ fn beam_plot(
             })
         }
     }
+}
+
+/// The curves drawn beside a load chart's current one: the model at K_T/5 and K_T*5, as `at`
+/// builds it, where that K_T is accepted (`at` gives None otherwise).
+pub(crate) fn companions<T>(
+    kt: f64,
+    at: impl Fn(f64) -> Option<T>,
+) -> Vec<(SeriesRole, &'static str, T)> {
+    [
+        (SeriesRole::Softer, "K_T/5", kt / 5.0),
+        (SeriesRole::Stiffer, "K_T*5", kt * 5.0),
+    ]
+    .into_iter()
+    .filter_map(|(role, label, k)| Some((role, label, at(k)?)))
+    .collect()
 }
 
 /// The hysteresis loop chart of either law's loop points: the response (`y_title`) against the
