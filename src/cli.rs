@@ -1539,10 +1539,7 @@ fn lap_deck_loads(
         let force = joint.force(f).map_err(|e| CliError::Flag {
             flag: "--loads",
             value: f,
-            allowed: e
-                .to_string()
-                .split_once(": ")
-                .map_or(String::new(), |(_, why)| why.to_string()),
+            allowed: e.allowed(),
         })?;
         if forces.last().is_some_and(|last| *last >= force) {
             return Err(CliError::Flag {
@@ -2032,10 +2029,7 @@ fn run_cycle(
             let amplitude = joint.force(amplitude).map_err(|e| CliError::Flag {
                 flag: "--amplitude",
                 value: amplitude,
-                allowed: e
-                    .to_string()
-                    .split_once(": ")
-                    .map_or(String::new(), |(_, why)| why.to_string()),
+                allowed: e.allowed(),
             })?;
             match format {
                 CycleFormat::Text => {

@@ -284,12 +284,7 @@ impl fmt::Display for Echo {
 
 /// A rejected input value: the field as users write it, the value and the allowed range.
 #[derive(Debug, Clone, PartialEq, Error)]
-#[error(
-    "invalid {field} = {}: {}{}",
-    Echo(*value),
-    domain.refusal(*value, *unit),
-    if reason.is_empty() { String::new() } else { format!(" ({reason})") }
-)]
+#[error("invalid {field} = {}: {}", Echo(*value), self.allowed())]
 pub struct ParamError {
     /// Field name as the user writes it (preset key), e.g. `KT`.
     pub field: &'static str,
@@ -305,6 +300,17 @@ pub struct ParamError {
 }
 
 impl ParamError {
+    /// What is allowed, and why where the error says it: the message after `invalid F = 7000: `,
+    /// for a caller that names the value its own way (a flag, a sweep's end).
+    pub fn allowed(&self) -> String {
+        let refusal = self.domain.refusal(self.value, self.unit);
+        if self.reason.is_empty() {
+            refusal
+        } else {
+            format!("{refusal} ({})", self.reason)
+        }
+    }
+
     /// The same error, saying why the range is what it is.
     pub fn because(self, reason: &'static str) -> ParamError {
         ParamError { reason, ..self }

@@ -55,14 +55,10 @@ pub(crate) fn check_forces(joint: &LapJoint, forces: &Samples) -> Result<(), Ran
         (RangeEnd::End, forces.value(forces.len() - 1)),
     ] {
         if let Err(error) = joint.force(value) {
-            let full = error.to_string();
-            let allowed = full
-                .split_once(": ")
-                .map_or(full.clone(), |(_, why)| why.to_string());
             return Err(RangeError::Bound {
                 end,
                 value,
-                allowed,
+                allowed: error.allowed(),
             });
         }
     }
