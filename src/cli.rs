@@ -595,8 +595,9 @@ pub struct DeckArgs {
     /// Mesh density (fine halves every element size: run both to check convergence).
     #[arg(long, value_enum, default_value_t = DeckMesh::Coarse)]
     mesh: DeckMesh,
-    /// Tip forces of the load steps (N, increasing), beams only; default: F_thre x 0.5, 0.75,
-    /// 1, 1.25, 1.875, 2.5.
+    /// Forces of the load steps (N, increasing): the beams' tip force (default F_thre x 0.5,
+    /// 0.75, 1, 1.25, 1.875, 2.5) or the lap joint's F (default 0.5 F_1, (F_1 + F_2)/2,
+    /// (F_2 + F_gross)/2, 0.9 F_gross); not the plate's.
     #[arg(
         long,
         value_name = "F0,F1,...",
@@ -608,8 +609,8 @@ pub struct DeckArgs {
     /// K_T: plain Coulomb to within what the mesh resolves.
     #[arg(long)]
     near_coulomb: bool,
-    /// Largest tip-force change per increment (N) in the load steps that end beyond F_1
-    /// (friction is path-dependent once it saturates), beams only; default: F_1 / 40.
+    /// Largest force change per increment (N) in the load steps that end beyond F_1 (friction
+    /// is path-dependent once it saturates), beams and lap joint; default: F_1 / 40.
     #[arg(long, value_name = "N")]
     increment: Option<f64>,
 }
@@ -695,7 +696,7 @@ value_enum!(YMode {
 });
 
 value_enum!(DeckMesh {
-    DeckMesh::Coarse => (DeckMesh::Coarse.name(), "About 100 elements along the beam and 2 through each beam's height; 4 through the plate"),
+    DeckMesh::Coarse => (DeckMesh::Coarse.name(), "About 100 elements along the beam and 2 through each beam's height; 4 through the plate, the lap joint's inner half plate and cover"),
     DeckMesh::Fine => (DeckMesh::Fine.name(), "Every element size halved"),
 });
 
@@ -1287,14 +1288,6 @@ fn run_bench(
     ccx: &str,
     format: CompareFormat,
 ) -> Result<(), CliError> {
-    if model == ModelKind::Lap {
-        return Err(CliError::Invalid(
-            "bench ccx lap: reading the lap joint's CalculiX results (`compare lap`) is not built \
-             yet; `microslip deck ccx lap -o joint.inp` writes the deck, and its header lists the \
-             closed-form values to compare by hand"
-                .to_string(),
-        ));
-    }
     let text = build_deck(model, deck, &model_command(model, "bench ccx"))?;
     let job = model.name();
     let run_error = |e: fe::run::RunError| CliError::Invalid(e.to_string());
@@ -1399,11 +1392,30 @@ fn run_compare(
     let source = source.join(", ");
     match model {
         ModelKind::Lap => {
-            return Err(CliError::Invalid(
-                "compare lap: reading FE results of the lap joint is not built yet (issue 24); \
-                 compare Delta with `microslip lap` by hand"
-                    .to_string(),
-            ));
+            let mut rows = Vec::new();
+            for path in results {
+                let loaded = fe::load::lap_results(path, deck).map_err(data_error)?;
+                if loaded.header.is_some() && rows.is_empty() {
+                    note_flags_the_deck_overrides(inputs);
+                }
+                let joint = match &loaded.header {
+                    Some(header) => header.model()?.into_lap().map_err(deck_of_other_model)?.0,
+                    None => load_lap(inputs, "compare lap")?.1,
+                };
+                let compared = fe::compare::compare_lap(
+                    &joint,
+                    &loaded.points,
+                    loaded.interface_mesh.as_ref(),
+                )
+                .map_err(|e| CliError::Data {
+                    path: path.display().to_string(),
+                    reason: e.to_string(),
+                })?;
+                rows.extend(compared);
+            }
+            let report = report::compare::lap::LapCompareReport::new(&source, &rows);
+            let csv = rows.iter().map(report::compare::LapCompareRow::from);
+            write_comparison(out, format, &report.text(), &report, csv)?;
         }
         ModelKind::Beam => {
             let [path] = results else {
@@ -1426,18 +1438,11 @@ fn run_compare(
             let comparison =
                 fe::compare::compare_beams(&beams, &loaded.points, loaded.interface_mesh.as_ref());
             let report = report::compare::beam::BeamCompareReport::new(&source, &comparison);
-            match format {
-                CompareFormat::Text => out.write_all(report.text().as_bytes())?,
-                CompareFormat::Json => write_json(out, &report::point::to_json(&report))?,
-                CompareFormat::Csv => write_table(
-                    out,
-                    TableFormat::Csv,
-                    comparison
-                        .rows
-                        .iter()
-                        .map(report::compare::BeamCompareRow::from),
-                )?,
-            }
+            let csv = comparison
+                .rows
+                .iter()
+                .map(report::compare::BeamCompareRow::from);
+            write_comparison(out, format, &report.text(), &report, csv)?;
         }
         ModelKind::Plate => {
             let mut rows = Vec::new();
@@ -1457,16 +1462,25 @@ fn run_compare(
                 ));
             }
             let report = report::compare::plate::PlateCompareReport::new(&source, &rows);
-            match format {
-                CompareFormat::Text => out.write_all(report.text().as_bytes())?,
-                CompareFormat::Json => write_json(out, &report::point::to_json(&report))?,
-                CompareFormat::Csv => write_table(
-                    out,
-                    TableFormat::Csv,
-                    rows.iter().map(report::compare::PlateCompareRow::from),
-                )?,
-            }
+            let csv = rows.iter().map(report::compare::PlateCompareRow::from);
+            write_comparison(out, format, &report.text(), &report, csv)?;
         }
+    }
+    Ok(())
+}
+
+/// A comparison in the format asked for: its text, its report as JSON, or its rows as CSV.
+fn write_comparison<R: serde::Serialize + Default>(
+    out: &mut impl Write,
+    format: CompareFormat,
+    text: &str,
+    report: &impl serde::Serialize,
+    rows: impl Iterator<Item = R>,
+) -> Result<(), CliError> {
+    match format {
+        CompareFormat::Text => out.write_all(text.as_bytes())?,
+        CompareFormat::Json => write_json(out, &report::point::to_json(report))?,
+        CompareFormat::Csv => write_table(out, TableFormat::Csv, rows)?,
     }
     Ok(())
 }

@@ -1502,6 +1502,37 @@ fn compare_reads_csv_from_any_code_with_the_parameters_given() {
     assert!(json["implied"]["error"].is_string(), "{json}");
 }
 
+#[test]
+fn compare_lap_reads_calculix_results_and_csv() {
+    let dat = calculix_fixture("lap-aluminium.dat");
+    let text = stdout_of(&["compare", "lap", &dat]);
+    assert!(text.contains("clamped double-lap joint"), "{text}");
+    assert!(text.contains("Verdict:"), "{text}");
+    let csv = stdout_of(&["compare", "lap", &dat, "--format", "csv"]);
+    assert!(csv.starts_with("F_N,Delta_fe_mm,Delta_mm,diff,"), "{csv}");
+    assert_eq!(csv.lines().count(), 5, "{csv}");
+    // A CSV from any code, at the bundled joint's parameters; a force beyond F_gross = 6000 N
+    // has no static state and is refused, naming the file and the range.
+    let dir = tempfile::tempdir().unwrap();
+    let points = dir.path().join("abaqus.csv");
+    std::fs::write(&points, "F_N,Delta_mm\n1000,0.0047\n3000,0.0143\n").unwrap();
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "compare",
+        "lap",
+        points.to_str().unwrap(),
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(json["rows"].as_array().unwrap().len(), 2, "{json}");
+    assert!(json["rows"][0]["diff"].as_f64().unwrap() > 0.0, "{json}");
+    std::fs::write(&points, "F_N,Delta_mm\n7000,0.05\n").unwrap();
+    let stderr = failure(&["compare", "lap", points.to_str().unwrap()], 2);
+    assert!(stderr.contains("abaqus.csv"), "{stderr}");
+    assert!(stderr.contains("F = 7000"), "{stderr}");
+    assert!(stderr.contains("[0, 6000] N"), "{stderr}");
+}
+
 /// `--set` beside a deck's results used to be ignored without a word.
 #[test]
 fn compare_says_which_flags_the_deck_overrides() {
@@ -2147,8 +2178,8 @@ fn beams_beyond_the_calibrated_friction_strain_get_no_bound() {
     );
 }
 
-/// The lap joint from the command line (issue 24): every command that has it, what it refuses and
-/// why, and the commands not built for it yet refusing by name rather than misreading a file.
+/// The lap joint from the command line (issue 24): every command that has it, and what it refuses
+/// and why.
 #[test]
 fn the_lap_joint_from_the_command_line() {
     let text = stdout_of(&["lap"]);
@@ -2246,24 +2277,24 @@ fn the_lap_joint_from_the_command_line() {
     let tolerance = stdout_of(&["kt", "--preset", "lap-aluminium", "--tolerance", "1%"]);
     assert!(tolerance.contains("(L11)"), "{tolerance}");
     assert!(failure(&["lap", "--beam-theory", "timoshenko"], 2).contains("not the lap joint"));
-    // The deck is written (its header lists the closed forms to compare with); reading its
-    // results is not built yet, so `bench` refuses before running anything.
+    // The deck is written, its header naming the command that reads its results.
     let deck = stdout_of(&["deck", "ccx", "lap", "--loads", "1000,3000"]);
     assert!(deck.contains("** microslip-deck: model=lap"), "{deck}");
-    assert!(deck.contains("** Compare it:  by hand"), "{deck}");
+    assert!(
+        deck.contains("** Compare it:  microslip compare lap JOB.dat"),
+        "{deck}"
+    );
     let beyond = failure(&["deck", "ccx", "lap", "--loads", "1000,7000"], 2);
     assert!(
         beyond.contains("--loads = 7000") && beyond.contains("F_gross"),
         "{beyond}"
     );
-    let bench = failure(&["bench", "ccx", "lap"], 2);
-    assert!(bench.contains("`compare lap`) is not built yet"), "{bench}");
-    // Not built yet: said by name.
+    // A beam curve is not a lap curve: its columns are named.
     let dir = tempfile::tempdir().unwrap();
     let data = dir.path().join("r.csv");
     std::fs::write(&data, "F_N,w_mm\n1,0.001\n").unwrap();
     let compare = failure(&["compare", "lap", data.to_str().unwrap()], 2);
-    assert!(compare.contains("compare lap"), "{compare}");
+    assert!(compare.contains("Delta_mm"), "{compare}");
     let fit = failure(
         &[
             "fit",

@@ -457,6 +457,34 @@ const COMPARE_PLATE_HEADER: &str = "KT_MPa_per_mm,u_fe_mm,u_fe_contact_face_mm,\
 u_fe_mid_thickness_mm,u_mm,diff,diff_contact_face,diff_mid_thickness,u_coulomb_mm,regime,\
 regime_fe,Xr_mm,Xr_fe_mm,KT_implied_MPa_per_mm,strip_theory";
 
+/// `compare lap` (issue 24) of CalculiX results: pinned when it was first published.
+const COMPARE_LAP: &[&str] = &[
+    "model: string",
+    "results: string",
+    "rows: array",
+    "rows[]: object",
+    "rows[].F_N: number",
+    "rows[].Delta_fe_mm: number",
+    "rows[].Delta_mm: number",
+    "rows[].diff: number",
+    "rows[].shear_lag_within: null",
+    "rows[].Delta_coulomb_mm: number",
+    "rows[].regime: string",
+    "rows[].regime_fe: string",
+    "rows[].a_mm: number",
+    "rows[].a_fe_mm: number",
+    "rows[].d_mm: number",
+    "rows[].d_fe_mm: number",
+    "rows[].KT_implied_MPa_per_mm: null",
+    "rows[].shear_lag: string",
+    "rows[].verdict.envelope_bound: null",
+    "rows[].verdict.a_elements: number",
+    "rows[].verdict.d_elements: number",
+];
+
+const COMPARE_LAP_HEADER: &str = "F_N,Delta_fe_mm,Delta_mm,diff,shear_lag_within,\
+Delta_coulomb_mm,regime,regime_fe,a_mm,a_fe_mm,d_mm,d_fe_mm,KT_implied_MPa_per_mm,shear_lag";
+
 /// The lap joint's report (issue 24): pinned when it was first published.
 const LAP: &[&str] = &[
     "F_1_N: number",
@@ -835,6 +863,13 @@ const CASES: &[Case] = &[
             COMPARE_PLATE_VERDICT_FE,
         ],
         header: Some(COMPARE_PLATE_HEADER),
+    },
+    Case {
+        name: "compare-lap-calculix",
+        args: &["compare", "lap", "tests/data/calculix/lap-aluminium.dat"],
+        formats: ALL,
+        keys: &[COMPARE_LAP, COMPARE_VERDICT],
+        header: Some(COMPARE_LAP_HEADER),
     },
     Case {
         name: "compare-plate-csv",

@@ -14,7 +14,7 @@ mod ymode;
 
 pub use ymode::YMode;
 
-use crate::chart::view::{AnyChart, BeamChart, PlateChart};
+use crate::chart::view::{AnyChart, BeamChart, LapChart, PlateChart};
 use crate::fit::Measurement;
 use crate::kernel::format::{number, number_with};
 use crate::numeric::{MeshDensity, NumericError};
@@ -389,7 +389,12 @@ pub fn build(
         },
         Model::Lap { joint, force } => match chart {
             AnyChart::Beam(_) | AnyChart::Plate(_) => None,
-            AnyChart::Lap(chart) => lap::lap_plot(&joint, force, chart, force_span),
+            AnyChart::Lap(chart) => {
+                if let (LapChart::Displacement, Some(e)) = (chart, external) {
+                    overlays.push((SeriesRole::External, e.label.as_str(), e.points.clone()));
+                }
+                lap::lap_plot(&joint, force, chart, force_span)
+            }
         },
     };
     // Every range above lies in the accepted domain, so a chart is always built; should one not be,

@@ -6,11 +6,13 @@
 //! so that it measures the interface, not the beam theory. Plate: u(L) against the strip theory,
 //! and per point the K_T whose closed-form u(L) equals the FE value.
 
-use super::results::{BeamFePoint, FeInterface, PlateFePoint};
+use super::results::{BeamFePoint, FeInterface, LapFePoint, PlateFePoint};
 use super::verdict::{Envelope, InterfaceMesh, MeshDifference, StiffnessMatch};
 use crate::fit::{self, FitError, FitResult, Measurement};
+use crate::kernel::params::ParamError;
 use crate::kernel::regime::Regime;
 use crate::kernel::validity::Validity;
+use crate::problems::lap::closed_form::LapJoint;
 use crate::problems::twin_beams::closed_form::BeamTheory;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
@@ -245,6 +247,98 @@ pub fn compare_plate(
                 strip_within: validity.expected_error(),
                 micro_zone_end_mesh: on_mesh(mesh, fe.interface, micro_zone_end),
             }
+        })
+        .collect()
+}
+
+/// One FE point of the double-lap joint beside the closed forms.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LapCompared {
+    /// The FE point.
+    pub fe: LapFePoint,
+    /// The shear-lag Delta under the regularized law at the deck's K_T (mm).
+    pub closed: f64,
+    /// Under the plain Coulomb law (mm).
+    pub coulomb: f64,
+    /// The closed form's regime.
+    pub regime: Regime,
+    /// The closed form's sliding zones from x = 0 and from x = L (mm).
+    pub zones: (f64, f64),
+    /// The K_T (MPa/mm) whose closed-form Delta equals the FE value at this force; `None` where
+    /// none does, or where the shear-lag theory does not hold (the difference would be the
+    /// theory's, not the interface's).
+    pub implied_stiffness: Option<f64>,
+    /// The shear-lag theory's level at this force ((L13)).
+    pub theory_validity: Validity,
+    /// Its bound on Delta's difference from a continuum, a fraction; `None` where not calibrated.
+    pub theory_within: Option<f64>,
+    /// FE a and d against the closed form's in elements of the FE mesh (CalculiX results).
+    pub zones_mesh: Option<[MeshDifference; 2]>,
+}
+
+impl LapCompared {
+    /// (FE - closed form) / closed form for Delta; `None` at F = 0.
+    pub fn difference(&self) -> Option<f64> {
+        relative_difference(self.fe.joint_displacement, self.closed)
+    }
+
+    /// Delta's difference against the theory's envelope (L13).
+    pub fn envelope(&self) -> Envelope {
+        Envelope::judge(self.difference(), self.theory_within)
+    }
+
+    /// Of a and d, the one farther from the closed form in elements of the mesh.
+    pub fn worse_zone_mesh(&self) -> Option<MeshDifference> {
+        self.zones_mesh
+            .map(|[a, d]| if a.elements >= d.elements { a } else { d })
+    }
+}
+
+/// Compares FE points of the lap joint with the closed forms of `joint` (the K_T the deck gave
+/// the FE code). `mesh`: the FE mesh along the interface, to count the zone differences in
+/// elements.
+///
+/// # Errors
+/// A point's force beyond the joint's gross-slip force (a CSV of another joint, or of a joint
+/// that slid through): the closed forms have no static state there.
+pub fn compare_lap(
+    joint: &LapJoint,
+    points: &[LapFePoint],
+    mesh: Option<&InterfaceMesh>,
+) -> Result<Vec<LapCompared>, ParamError> {
+    let length = joint.params().length;
+    points
+        .iter()
+        .map(|&fe| {
+            let force = joint.force(fe.force)?;
+            let state = joint.regularized(force);
+            let zones = (state.slide_at_inner_end(), state.slide_at_cover_ends());
+            let validity = joint.validity(force);
+            let theory_validity = validity.validity;
+            let zones_mesh = mesh.zip(fe.interface).map(|(mesh, i)| {
+                [
+                    MeshDifference::on(mesh, i.slide_from_start, zones.0),
+                    // d counts from x = L: its elements are counted between the positions
+                    // L - d, its difference is d's own.
+                    MeshDifference {
+                        difference: i.slide_from_end - zones.1,
+                        ..MeshDifference::on(mesh, length - i.slide_from_end, length - zones.1)
+                    },
+                ]
+            });
+            Ok(LapCompared {
+                fe,
+                closed: state.joint_displacement(),
+                coulomb: joint.coulomb(force).joint_displacement(),
+                regime: state.regime(),
+                zones,
+                implied_stiffness: (theory_validity == Validity::Holds)
+                    .then(|| joint.stiffness_for_joint_displacement(force, fe.joint_displacement))
+                    .flatten(),
+                theory_validity,
+                theory_within: validity.expected_error,
+                zones_mesh,
+            })
         })
         .collect()
 }

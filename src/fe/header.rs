@@ -175,14 +175,7 @@ impl DeckHeader {
         text.push_str(&self.machine_line());
         text.push('\n');
         let job = kind.name();
-        let compare = match kind {
-            ModelKind::Beam | ModelKind::Plate => format!("microslip compare {job} JOB.dat"),
-            // Its reader is not built yet (issue 24): the expected values below, by hand.
-            ModelKind::Lap => "by hand, against the values below: Delta = the thickness mean of \
-                u_x over set DINNERL minus that over DCOVER0, each minus its value at the end of \
-                step 1 (P alone stretches the plates)"
-                .to_string(),
-        };
+        let compare = format!("microslip compare {job} JOB.dat");
         let _ = writeln!(
             text,
             "** Units: mm, N, MPa; stick slope K_T in MPa/mm.\n\

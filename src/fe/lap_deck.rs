@@ -19,8 +19,7 @@
 //!   of force (`--increment`), a step that crosses F_1 reaching it in its first increment, as the
 //!   beam decks do.
 //!
-//! The reader of its results (`compare lap`) is not built yet: until then the header's expected
-//! values are compared by hand.
+//! `compare lap` reads its results ([`crate::fe::results::CcxRun::lap_points`]).
 
 use std::fmt::Write as _;
 
@@ -317,7 +316,7 @@ mod tests {
         assert_eq!(text.matches("*STEP").count(), 4);
         assert_eq!(text.matches("*STATIC\n1., 1.\n").count(), 2);
         assert!(text.contains("*CLOAD, AMPLITUDE=RAMP3"));
-        assert!(text.contains("** Compare it:  by hand"));
+        assert!(text.contains("** Compare it:  microslip compare lap JOB.dat"));
         assert!(!text.contains("Ligier"));
     }
 

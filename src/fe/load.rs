@@ -7,7 +7,8 @@ use thiserror::Error;
 
 use super::header::DeckHeader;
 use super::results::{
-    BeamFePoint, CcxRun, PlateFePoint, ResultsError, beam_points_from_csv, plate_points_from_csv,
+    BeamFePoint, CcxRun, LapFePoint, PlateFePoint, ResultsError, beam_points_from_csv,
+    lap_points_from_csv, plate_points_from_csv,
 };
 use super::verdict::InterfaceMesh;
 use crate::file::{Kinds, Size, read_capped};
@@ -147,11 +148,9 @@ fn plate_run(run: &CcxRun) -> Result<Vec<PlateFePoint>, ResultsError> {
     run.plate_point().map(|p| vec![p])
 }
 
-/// Why FE results of the lap joint are refused: its decks and their reader are issue 24's next
-/// step, and a file read as another problem's points would compare nonsense.
-const LAP_NOT_YET: &str = "FE results of the lap joint cannot be read yet (its CalculiX decks \
-                           are not built): compare Delta against `microslip lap` by hand; a \
-                           measured F_N,Delta_mm curve is fitted by `microslip fit lap FILE`";
+fn lap_run(run: &CcxRun) -> Result<Vec<LapFePoint>, ResultsError> {
+    run.lap_points()
+}
 
 /// FE points of any model.
 #[derive(Debug, Clone, PartialEq)]
@@ -160,6 +159,8 @@ pub enum AnyLoaded {
     Beam(Loaded<BeamFePoint>),
     /// Squeezed-plate points.
     Plate(Loaded<PlateFePoint>),
+    /// Double-lap joint points.
+    Lap(Loaded<LapFePoint>),
 }
 
 /// The points of `path`, of whichever model its deck is (CalculiX), or of `csv_model` (CSV: the
@@ -180,13 +181,13 @@ pub fn any_results(
             ModelKind::Plate => {
                 ccx_points(path, header, &deck_text, plate_run).map(AnyLoaded::Plate)
             }
-            ModelKind::Lap => Err(fail(path, LAP_NOT_YET)),
+            ModelKind::Lap => ccx_points(path, header, &deck_text, lap_run).map(AnyLoaded::Lap),
         };
     }
     match csv_model {
         ModelKind::Beam => beam_results(path, deck).map(AnyLoaded::Beam),
         ModelKind::Plate => plate_results(path, deck).map(AnyLoaded::Plate),
-        ModelKind::Lap => Err(fail(path, LAP_NOT_YET)),
+        ModelKind::Lap => lap_results(path, deck).map(AnyLoaded::Lap),
     }
 }
 
@@ -210,6 +211,14 @@ pub fn plate_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<PlateFeP
         plate_run,
         plate_points_from_csv,
     )
+}
+
+/// Lap-joint points from a `.dat` (with its deck) or a CSV `F_N,Delta_mm`.
+///
+/// # Errors
+/// [`LoadError`] naming the file and, where there is one, the line.
+pub fn lap_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<LapFePoint>, LoadError> {
+    results(path, deck, ModelKind::Lap, lap_run, lap_points_from_csv)
 }
 
 /// The points of `path`: from CalculiX output (with its deck, which must be of `kind`) or a CSV.

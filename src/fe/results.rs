@@ -10,11 +10,13 @@ use thiserror::Error;
 
 use super::deck::sets;
 use super::header::DeckHeader;
+use super::lap_deck::sets as lap_sets;
 use super::verdict::InterfaceMesh;
-use crate::fit::data::{self, Curve, MEASURED_DEFLECTION};
+use crate::fit::data::{self, Curve, MEASURED_DEFLECTION, MEASURED_JOINT_DISPLACEMENT};
 use crate::kernel::params::{Compact, Domain, Unit};
-use crate::kernel::regime::Regime;
+use crate::kernel::regime::{Law, Regime};
 use crate::problems::inputs::Inputs;
+use crate::problems::lap::closed_form::zones_regime;
 
 /// What is wrong with an FE result file.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
@@ -66,6 +68,32 @@ pub struct PlateFePoint {
     pub interface: Option<FeInterface>,
 }
 
+/// One FE point of the double-lap joint.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LapFePoint {
+    /// The force through the joint (N).
+    pub force: f64,
+    /// The joint displacement Delta (mm): for CalculiX results the thickness mean of the inner
+    /// plate's u_x at x = L minus the cover's at x = 0, each from the end of the clamping step
+    /// (P alone stretches both plates through Poisson, which the 1-D theory does not have); the
+    /// given value for CSV.
+    pub joint_displacement: f64,
+    /// The sliding zones the slip profile shows, when the results have it.
+    pub interface: Option<LapFeInterface>,
+}
+
+/// The lap joint's interface state read from the slip profile: sliding where K_T |s| >= mu P
+/// (nominal P: the closed form's definition), contiguous from each end.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LapFeInterface {
+    /// Length a of the sliding zone from x = 0 (mm).
+    pub slide_from_start: f64,
+    /// Length d of the sliding zone from x = L (mm).
+    pub slide_from_end: f64,
+    /// The regime of the regularized law the profile shows.
+    pub regime: Regime,
+}
+
 /// The interface state read from the slip profile: macroslip where K_T |s| >= mu P.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FeInterface {
@@ -110,19 +138,46 @@ pub(crate) const BEAM_CURVE: Curve = Curve {
     ..MEASURED_DEFLECTION
 };
 
+/// The points of a CSV curve, each made of its (abscissa, ordinate) by `point`.
+fn points_from_csv<P>(
+    text: &str,
+    curve: &Curve,
+    point: impl Fn(f64, f64) -> P,
+) -> Result<Vec<P>, ResultsError> {
+    Ok(data::parse_curve(text, curve)?
+        .into_iter()
+        .map(|(x, y)| point(x, y))
+        .collect())
+}
+
+/// The CSV form of the lap joint's curve: the measurement format of `fit lap`, one row or more.
+pub(crate) const LAP_CURVE: Curve = Curve {
+    min_rows: 1,
+    ..MEASURED_JOINT_DISPLACEMENT
+};
+
+/// Lap-joint points from a CSV `F_N,Delta_mm`.
+///
+/// # Errors
+/// As [`data::parse_curve`].
+pub fn lap_points_from_csv(text: &str) -> Result<Vec<LapFePoint>, ResultsError> {
+    points_from_csv(text, &LAP_CURVE, |force, joint_displacement| LapFePoint {
+        force,
+        joint_displacement,
+        interface: None,
+    })
+}
+
 /// Beam points from a CSV `F_N,w_mm`.
 ///
 /// # Errors
 /// As [`data::parse_curve`].
 pub fn beam_points_from_csv(text: &str) -> Result<Vec<BeamFePoint>, ResultsError> {
-    Ok(data::parse_curve(text, &BEAM_CURVE)?
-        .into_iter()
-        .map(|(force, deflection)| BeamFePoint {
-            force,
-            deflection,
-            interface: None,
-        })
-        .collect())
+    points_from_csv(text, &BEAM_CURVE, |force, deflection| BeamFePoint {
+        force,
+        deflection,
+        interface: None,
+    })
 }
 
 /// Plate points from a CSV `KT_MPa_per_mm,u_mm`.
@@ -130,15 +185,14 @@ pub fn beam_points_from_csv(text: &str) -> Result<Vec<BeamFePoint>, ResultsError
 /// # Errors
 /// As [`data::parse_curve`].
 pub fn plate_points_from_csv(text: &str) -> Result<Vec<PlateFePoint>, ResultsError> {
-    Ok(data::parse_curve(text, &PLATE_CURVE)?
-        .into_iter()
-        .map(|(stiffness, end_displacement)| PlateFePoint {
+    points_from_csv(text, &PLATE_CURVE, |stiffness, end_displacement| {
+        PlateFePoint {
             stiffness,
             end_displacement,
             through_thickness: None,
             interface: None,
-        })
-        .collect())
+        }
+    })
 }
 
 impl CcxRun<'_> {
@@ -165,18 +219,9 @@ impl CcxRun<'_> {
         let saturation = structure.friction * structure.pressure / structure.tangential_stiffness;
         let loads = &self.header.loads;
         let mut points = Vec::with_capacity(loads.len());
-        for (n, &force) in loads.iter().enumerate() {
-            // Step 1 applies the pressure; load n ends step n + 2, at total time n + 2.
-            let time = (n + 2) as f64;
-            let step = || {
-                format!(
-                    "load step {} of {} (F = {} N, time {})",
-                    n + 1,
-                    loads.len(),
-                    Compact(force),
-                    time
-                )
-            };
+        for n in 0..loads.len() {
+            let (force, time) = (loads[n], load_step_time(n));
+            let step = || load_step_label(n, loads);
             let [tip, lower, upper] =
                 [sets::BEAM_TIP, sets::BEAM_LOWER_FACE, sets::BEAM_UPPER_FACE].map(|set| {
                     complete_block(&blocks, &deck_sets, set, time).map_err(|why| {
@@ -225,28 +270,8 @@ impl CcxRun<'_> {
             })
         });
         let (end, face_nodes) = (end?, face_nodes?);
-        // The end nodes from the contact face up, at every half element: Simpson's rule over
-        // each quadratic element gives the thickness mean exactly for the element's field.
-        let mut column: Vec<(f64, f64)> = end
-            .rows
-            .iter()
-            .map(|(id, u)| node_coordinate(&nodes, *id).map(|c| (c[1], u[0])))
-            .collect::<Result<_, _>>()?;
-        column.sort_by(|a, b| a.0.total_cmp(&b.0));
-        if column.len() < 3 || column.len().is_multiple_of(2) {
-            return Err(ResultsError::Missing(format!(
-                "set {} has {} nodes; a column of quadratic elements has an odd number, 3 or more",
-                sets::PLATE_END,
-                column.len()
-            )));
-        }
-        let thickness = column[column.len() - 1].0 - column[0].0;
-        let mean = column
-            .windows(3)
-            .step_by(2)
-            .map(|w| (w[2].0 - w[0].0) * (w[0].1 + 4.0 * w[1].1 + w[2].1) / 6.0)
-            .sum::<f64>()
-            / thickness;
+        let column = column_of(&nodes, end)?;
+        let mean = simpson_mean(&column);
         let face = column[0].1;
         let mid = column[column.len() / 2].1;
         let (xs, slips) = relative_slip(&nodes, face_nodes, None)?;
@@ -258,6 +283,84 @@ impl CcxRun<'_> {
             interface: Some(interface_state(&xs, &slips, saturation)),
         })
     }
+    /// The lap-joint points of a lap deck's run: one per load step that CalculiX finished, each
+    /// measured from the end of the clamping step (step 1, time 1), as the deck's header says.
+    ///
+    /// # Errors
+    /// A malformed `.dat` line, no result at the end of the clamping step or of the deck's first
+    /// load step (a run that failed before it, or the `.dat` of another deck).
+    pub fn lap_points(&self) -> Result<Vec<LapFePoint>, ResultsError> {
+        let Inputs::Lap { structure, .. } = self.header.inputs else {
+            return Err(self.other_deck());
+        };
+        let blocks = parse_dat(self.dat)?;
+        let nodes = parse_nodes(self.deck)?;
+        let deck_sets = parse_node_sets(self.deck);
+        let state_at = |time: f64, what: &dyn Fn() -> String| -> Result<LapState, String> {
+            let [inner, cover, inner_face, cover_face] = [
+                lap_sets::LAP_INNER_END,
+                lap_sets::LAP_COVER_END,
+                lap_sets::LAP_INNER_FACE,
+                lap_sets::LAP_COVER_FACE,
+            ]
+            .map(|set| {
+                complete_block(&blocks, &deck_sets, set, time)
+                    .map_err(|why| format!("{}: {why}", what()))
+            });
+            let mean = |block: &DatBlock| {
+                thickness_mean(&nodes, block).map_err(|e| format!("{}: {e}", what()))
+            };
+            let (xs, slips) = facing_slip(&nodes, inner_face?, cover_face?)
+                .map_err(|e| format!("{}: {e}", what()))?;
+            Ok(LapState {
+                joint_displacement: mean(inner?)? - mean(cover?)?,
+                xs,
+                slips,
+            })
+        };
+        let clamped = state_at(1.0, &|| {
+            "at the end of the clamping step (time 1)".to_string()
+        })
+        .map_err(|why| {
+            ResultsError::Missing(format!(
+                "{why} (did ccx finish, and is this the .dat of this deck?)"
+            ))
+        })?;
+        let saturation = structure.friction * structure.pressure / structure.tangential_stiffness;
+        let loads = &self.header.loads;
+        let mut points = Vec::with_capacity(loads.len());
+        for n in 0..loads.len() {
+            let (force, time) = (loads[n], load_step_time(n));
+            let step = || load_step_label(n, loads);
+            let state = state_at(time, &step).map_err(|why| {
+                ResultsError::Missing(format!(
+                    "{why}; the .dat holds {} of the deck's {} load steps (did ccx finish, and is \
+                     this the .dat of this deck?)",
+                    points.len(),
+                    loads.len()
+                ))
+            })?;
+            let slips: Vec<f64> = state
+                .slips
+                .iter()
+                .zip(&clamped.slips)
+                .map(|(s, s0)| s - s0)
+                .collect();
+            points.push(LapFePoint {
+                force,
+                joint_displacement: state.joint_displacement - clamped.joint_displacement,
+                interface: Some(lap_interface_state(&state.xs, &slips, saturation)),
+            });
+        }
+        Ok(points)
+    }
+}
+
+/// What a lap run's `.dat` gives at one time: Delta (not yet zeroed) and the slip profile.
+struct LapState {
+    joint_displacement: f64,
+    xs: Vec<f64>,
+    slips: Vec<f64>,
 }
 
 impl CcxRun<'_> {
@@ -271,11 +374,7 @@ impl CcxRun<'_> {
         let set = match self.header.inputs {
             Inputs::Beam { .. } => sets::BEAM_LOWER_FACE,
             Inputs::Plate(_) => sets::PLATE_FACE,
-            Inputs::Lap { .. } => {
-                return Err(ResultsError::Missing(
-                    "no interface set: lap joint decks are not built yet".into(),
-                ));
-            }
+            Inputs::Lap { .. } => lap_sets::LAP_INNER_FACE,
         };
         let nodes = parse_nodes(self.deck)?;
         let ids = parse_node_sets(self.deck).remove(set).unwrap_or_default();
@@ -290,6 +389,23 @@ impl CcxRun<'_> {
             ))
         })
     }
+}
+
+/// The total time at the end of load `n` (from 0) of a deck: step 1 applies the pressure, load n
+/// ends step n + 2, at total time n + 2.
+fn load_step_time(n: usize) -> f64 {
+    (n + 2) as f64
+}
+
+/// "load step 2 of 4 (F = 100 N, time 3)": load `n` (from 0) of `loads`, for error messages.
+fn load_step_label(n: usize, loads: &[f64]) -> String {
+    format!(
+        "load step {} of {} (F = {} N, time {})",
+        n + 1,
+        loads.len(),
+        Compact(loads[n]),
+        load_step_time(n)
+    )
 }
 
 fn find<'a>(blocks: &'a [DatBlock], set: &str, time: f64) -> Option<&'a DatBlock> {
@@ -471,6 +587,139 @@ fn interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> FeInterface {
     }
 }
 
+/// The (y, u_x) of a block's nodes, which make one column through a thickness (x fixed), sorted
+/// by y: the corner and mid-side nodes of a column of quadratic elements, an odd number, 3 or
+/// more.
+fn column_of(
+    nodes: &HashMap<usize, [f64; 3]>,
+    block: &DatBlock,
+) -> Result<Vec<(f64, f64)>, ResultsError> {
+    let mut column: Vec<(f64, f64)> = block
+        .rows
+        .iter()
+        .map(|(id, u)| node_coordinate(nodes, *id).map(|c| (c[1], u[0])))
+        .collect::<Result<_, _>>()?;
+    column.sort_by(|a, b| a.0.total_cmp(&b.0));
+    if column.len() < 3 || column.len().is_multiple_of(2) {
+        return Err(ResultsError::Missing(format!(
+            "set {} has {} nodes; a column of quadratic elements has an odd number, 3 or more",
+            block.set,
+            column.len()
+        )));
+    }
+    Ok(column)
+}
+
+/// The thickness mean of u_x over a column ([`column_of`]): Simpson's rule over each quadratic
+/// element gives it exactly for the element's field.
+fn simpson_mean(column: &[(f64, f64)]) -> f64 {
+    let thickness = column[column.len() - 1].0 - column[0].0;
+    column
+        .windows(3)
+        .step_by(2)
+        .map(|w| (w[2].0 - w[0].0) * (w[0].1 + 4.0 * w[1].1 + w[2].1) / 6.0)
+        .sum::<f64>()
+        / thickness
+}
+
+/// The thickness mean of u_x over a block's column of nodes.
+fn thickness_mean(nodes: &HashMap<usize, [f64; 3]>, block: &DatBlock) -> Result<f64, ResultsError> {
+    column_of(nodes, block).map(|c| simpson_mean(&c))
+}
+
+/// Positions x (mm) and slips u_inner - u_cover (mm, signed) along the lap joint's interface, in
+/// x order: the two sets' nodes paired by position (the `.dat` lists them by node number, which
+/// need not follow x in both bodies the same way).
+fn facing_slip(
+    nodes: &HashMap<usize, [f64; 3]>,
+    inner: &DatBlock,
+    cover: &DatBlock,
+) -> Result<(Vec<f64>, Vec<f64>), ResultsError> {
+    let along = |block: &DatBlock| -> Result<Vec<(f64, usize, f64)>, ResultsError> {
+        let mut line: Vec<(f64, usize, f64)> = block
+            .rows
+            .iter()
+            .map(|(id, u)| node_coordinate(nodes, *id).map(|c| (c[0], *id, u[0])))
+            .collect::<Result<_, _>>()?;
+        line.sort_by(|a, b| a.0.total_cmp(&b.0));
+        Ok(line)
+    };
+    let (inner_line, cover_line) = (along(inner)?, along(cover)?);
+    if inner_line.len() != cover_line.len() {
+        return Err(ResultsError::Missing(format!(
+            "sets {} and {} differ in length",
+            inner.set, cover.set
+        )));
+    }
+    let mut xs = Vec::with_capacity(inner_line.len());
+    let mut slips = Vec::with_capacity(inner_line.len());
+    for (&(x, id, u), &(other_x, other_id, v)) in inner_line.iter().zip(&cover_line) {
+        if (other_x - x).abs() > 1e-9 * x.abs().max(1.0) {
+            return Err(ResultsError::Missing(format!(
+                "nodes {id} and {other_id} do not face each other (x = {x} and {other_x})"
+            )));
+        }
+        xs.push(x);
+        slips.push(u - v);
+    }
+    Ok((xs, slips))
+}
+
+/// The sliding zones of a lap joint's slip profile: where K_T |s| >= mu P (|s| >= `saturation`),
+/// contiguous from x = 0 and from x = L, each end interpolated linearly between the last sliding
+/// node and the first that does not.
+fn lap_interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> LapFeInterface {
+    let n = xs.len();
+    let sliding = |i: usize| slips[i].abs() >= saturation;
+    let crossing = |inside: usize, outside: usize| {
+        let (s0, s1) = (slips[inside].abs(), slips[outside].abs());
+        xs[inside] + (xs[outside] - xs[inside]) * (s0 - saturation) / (s0 - s1)
+    };
+    let (start, end) = (
+        xs.first().copied().unwrap_or(0.0),
+        xs.last().copied().unwrap_or(0.0),
+    );
+    let length = end - start;
+    let mut from_start = 0.0;
+    if n > 0 && sliding(0) {
+        let mut i = 0;
+        while i + 1 < n && sliding(i + 1) {
+            i += 1;
+        }
+        from_start = if i + 1 == n {
+            length
+        } else {
+            crossing(i, i + 1) - start
+        };
+    }
+    let mut from_end = 0.0;
+    if n > 0 && sliding(n - 1) {
+        let mut i = n - 1;
+        while i > 0 && sliding(i - 1) {
+            i -= 1;
+        }
+        from_end = if i == 0 {
+            length
+        } else {
+            end - crossing(i, i - 1)
+        };
+    }
+    let (a, d) = if from_start + from_end >= length {
+        (from_start.min(length), (length - from_start).max(0.0))
+    } else {
+        (from_start, from_end)
+    };
+    LapFeInterface {
+        slide_from_start: a,
+        slide_from_end: d,
+        regime: if n == 0 {
+            Regime::Microslip
+        } else {
+            zones_regime(Law::Regularized, a, d, length)
+        },
+    }
+}
+
 /// The displacement blocks of a `.dat` file. A block starts with a line like
 /// ` displacements (vx,vy,vz) for set WTIP and time  0.2000000E+01` and holds rows
 /// `node vx vy vz`; blocks of other quantities are skipped.
@@ -642,6 +891,76 @@ mod tests {
     }
 
     #[test]
+    fn lap_zones_are_read_from_both_ends() {
+        let xs = [0.0, 1.0, 2.0, 3.0, 4.0];
+        // Sliding from x = 0 to between nodes 1 and 2 (interpolated at |s| = 1), and at x = L
+        // over the last node only, to between nodes 3 and 4; the signs of the slip do not matter.
+        let state = lap_interface_state(&xs, &[-3.0, -2.0, 0.5, 0.0, 2.0], 1.0);
+        assert!((state.slide_from_start - (1.0 + 1.0 / 1.5)).abs() < 1e-12);
+        assert!((state.slide_from_end - 0.5).abs() < 1e-12);
+        assert_eq!(state.regime, Regime::MacroslipMicroslipMacroslip);
+        let elastic = lap_interface_state(&xs, &[0.9, 0.5, 0.1, 0.5, 0.9], 1.0);
+        assert_eq!(
+            (elastic.slide_from_start, elastic.slide_from_end),
+            (0.0, 0.0)
+        );
+        assert_eq!(elastic.regime, Regime::Microslip);
+        let one_end = lap_interface_state(&xs, &[0.9, 0.5, 0.1, 0.5, 1.5], 1.0);
+        assert_eq!(one_end.regime, Regime::MicroslipMacroslip);
+        // Sliding everywhere: the whole overlap, counted once.
+        let through = lap_interface_state(&xs, &[2.0; 5], 1.0);
+        assert_eq!(
+            (through.slide_from_start, through.slide_from_end),
+            (4.0, 0.0)
+        );
+        assert_eq!(through.regime, Regime::Macroslip);
+    }
+
+    #[test]
+    fn lap_faces_pair_by_position_not_by_node_number() {
+        let mut nodes = HashMap::new();
+        for (id, x) in [
+            (1, 0.0),
+            (2, 1.0),
+            (3, 2.0),
+            (10, 2.0),
+            (11, 1.0),
+            (12, 0.0),
+        ] {
+            nodes.insert(id, [x, 0.0, 0.0]);
+        }
+        let block = |set: &str, rows: &[(usize, f64)]| DatBlock {
+            set: set.into(),
+            time: 1.0,
+            rows: rows.iter().map(|&(id, u)| (id, [u, 0.0, 0.0])).collect(),
+        };
+        let inner = block("IFINNER", &[(1, 0.5), (2, 0.6), (3, 0.7)]);
+        let cover = block("IFCOVER", &[(10, 0.1), (11, 0.2), (12, 0.3)]);
+        let (xs, slips) = facing_slip(&nodes, &inner, &cover).unwrap();
+        assert_eq!(xs, [0.0, 1.0, 2.0]);
+        let expected = [0.5 - 0.3, 0.6 - 0.2, 0.7 - 0.1];
+        assert!(
+            slips
+                .iter()
+                .zip(expected)
+                .all(|(s, e)| (s - e).abs() < 1e-15)
+        );
+        nodes.insert(12, [0.5, 0.0, 0.0]);
+        let error = facing_slip(&nodes, &inner, &cover).unwrap_err();
+        assert!(
+            error.to_string().contains("do not face each other"),
+            "{error}"
+        );
+    }
+
+    #[test]
+    fn a_column_mean_is_simpsons_rule() {
+        // u = y^2 over [0, 2] in two quadratic elements: the mean of y^2 is 4/3, exactly.
+        let column = [(0.0, 0.0), (0.5, 0.25), (1.0, 1.0), (1.5, 2.25), (2.0, 4.0)];
+        assert!((simpson_mean(&column) - 4.0 / 3.0).abs() < 1e-15);
+    }
+
+    #[test]
     fn deck_nodes_are_read() {
         let deck = "** c\n*NODE, NSET=NALL\n1, 0.0, -20.0, 0.0\n2, 2.5e-1, 1., 3\n*ELEMENT, TYPE=C3D20R\n1, 2, 3\n";
         let nodes = parse_nodes(deck).unwrap();
@@ -661,6 +980,8 @@ mod tests {
         assert_eq!(beams[0].deflection, 0.039);
         let plate = plate_points_from_csv("KT_MPa_per_mm,u_mm\n1e4,6.8e-5\n1e6,1.48e-5\n").unwrap();
         assert_eq!(plate.len(), 2);
+        let lap = lap_points_from_csv("F_N,Delta_mm\n3000,0.0141\n").unwrap();
+        assert_eq!((lap[0].force, lap[0].joint_displacement), (3000.0, 0.0141));
         let error = plate_points_from_csv("KT_MPa_per_mm,u_mm\n0,1\n").unwrap_err();
         assert!(
             error

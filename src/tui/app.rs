@@ -1460,6 +1460,15 @@ impl App {
                     .collect::<Vec<_>>(),
                 l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
             ),
+            AnyLoaded::Lap(l) => (
+                ModelKind::Lap,
+                l.header.as_ref(),
+                l.points
+                    .iter()
+                    .map(|p| (p.force, p.joint_displacement))
+                    .collect(),
+                l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
+            ),
         };
         let origin = header.map(|h| h.inputs);
         // Measurements were taken on the values the deck now replaces: they go (the help's rule).
@@ -1518,8 +1527,16 @@ impl App {
                     .map(|row| super::brief::plate_summary(code, row))
                     .unwrap_or_default()
             }
+            (AnyLoaded::Lap(l), Model::Lap { joint, .. }) => {
+                match crate::fe::compare::compare_lap(&joint, &l.points, l.interface_mesh.as_ref())
+                {
+                    Ok(rows) => super::brief::lap_summary(code, &rows),
+                    Err(e) => return self.error(format!("{path}: {e}")),
+                }
+            }
             (AnyLoaded::Beam(_), Model::Plate(_) | Model::Lap { .. })
-            | (AnyLoaded::Plate(_), Model::Beam { .. } | Model::Lap { .. }) => {
+            | (AnyLoaded::Plate(_), Model::Beam { .. } | Model::Lap { .. })
+            | (AnyLoaded::Lap(_), Model::Beam { .. } | Model::Plate(_)) => {
                 format!("{path}: FE results of another problem: press m")
             }
         };

@@ -2,7 +2,7 @@
 //! FE results, and the plate's strip-theory verdict in the regime pane (30 characters). Sized
 //! for the screen, so they live with it; the full reports are `report::compare`'s.
 
-use crate::fe::compare::{BeamComparison, PlateCompared};
+use crate::fe::compare::{BeamComparison, LapCompared, PlateCompared};
 use crate::kernel::format::{number, number_with};
 use crate::kernel::validity::Validity;
 use crate::problems::plate::validity::PlateValidity;
@@ -56,6 +56,16 @@ pub fn plate_summary(code: &str, row: &PlateCompared) -> String {
         number(row.fe.end_displacement),
         number(row.closed),
         percent_or_na(row.difference())
+    )
+}
+
+/// One line for the TUI's status: the lap joint's comparison in brief, the verdict first.
+pub fn lap_summary(code: &str, rows: &[LapCompared]) -> String {
+    format!(
+        "{code}, {} points: {}; Delta {} vs shear lag",
+        rows.len(),
+        verdict::lap_summary(rows).short,
+        percent_range(rows.iter().map(LapCompared::difference))
     )
 }
 

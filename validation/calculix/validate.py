@@ -101,6 +101,20 @@ PLATE_CASES = [
     (1e6, (4.482e-06, 1.482e-05), (0.05, 0.01)),
 ]
 
+# Lap joint: the bundled joint (lap-aluminium) at the deck's default loads (0.5 F_1, (F_1 + F_2)/2,
+# (F_2 + F_gross)/2, 0.9 F_gross: every regime). Delta (thickness means, zeroed after clamping)
+# must be within the shear-lag theory's stated envelope (L13), or, where the envelope gives no
+# bound, within LAP_TOLERANCE (the first converged look, (L12), measured +0.6 to +1.2 %); the
+# sliding zones a and d within X_ELEMENTS elements of the deck's mesh, and the regimes the same.
+LAP_TOLERANCE = 0.02
+LAP_CASE = ("bundled joint, K_T = 1000", ["--preset", "lap-aluminium"])
+# Mesh convergence: one increment per step on both meshes (the same load path), at 0.5 F_1 and
+# (F_1 + F_2)/2; the coarse mesh's Delta within LAP_MESH_TOLERANCE of the fine mesh's.
+LAP_MESH_TOLERANCE = 0.002
+# Load-path convergence: the default force step (F_1/40 beyond F_1) against half of it, up to
+# (F_2 + F_gross)/2; Delta may move by at most INCREMENT_TOLERANCE.
+LAP_INCREMENT_LOADS = 3
+
 
 def find_microslip(given):
     for candidate in [given, ROOT / "target/debug/microslip", ROOT / "target/release/microslip"]:
@@ -152,8 +166,9 @@ def load_arguments(microslip, args, loads):
     return ["--loads", ",".join(f"{f:.6g}" for f in forces)]
 
 
-def interface_breaks(deck_text):
-    """x of the element boundaries along the beams' interface (every other IFLOWER node)."""
+def interface_breaks(deck_text, face="IFLOWER"):
+    """x of the element boundaries along an interface (every other node of its set: the beams'
+    IFLOWER, the lap joint's IFINNER)."""
     nodes = {}
     section = None
     sets = {}
@@ -171,7 +186,7 @@ def interface_breaks(deck_text):
         elif section.startswith("*NSET, NSET="):
             name = section.split("=", 1)[1].strip()
             sets[name].extend(int(n) for n in line.split(","))
-    xs = sorted(nodes[n] for n in sets["IFLOWER"])
+    xs = sorted(nodes[n] for n in sets[face])
     return xs[::2]
 
 
@@ -182,9 +197,10 @@ def element_length_at(breaks, x):
     return breaks[-1] - breaks[-2]
 
 
-def converged(coarse, fine, tolerance, what, failures):
-    """The largest relative change of w(L) from `fine` to `coarse`; a failure beyond `tolerance`."""
-    changes = [c["w_fe_mm"] / f["w_fe_mm"] - 1 for c, f in zip(coarse["rows"], fine["rows"])]
+def converged(coarse, fine, tolerance, what, failures, key="w_fe_mm"):
+    """The largest relative change of `key` (the beams' w(L), the lap joint's Delta) from `fine`
+    to `coarse`; a failure beyond `tolerance`."""
+    changes = [c[key] / f[key] - 1 for c, f in zip(coarse["rows"], fine["rows"])]
     worst = max(changes, key=abs)
     if abs(worst) > tolerance:
         failures.append(f"{what} differ by {pct(worst)} (tolerance {100 * tolerance:g} %)")
@@ -193,6 +209,86 @@ def converged(coarse, fine, tolerance, what, failures):
 
 def pct(x):
     return f"{100 * x:+.2f} %"
+
+
+def lap_default_loads(microslip, args):
+    """The deck's default loads of the lap joint (N), read back from its header."""
+    deck = subprocess.run([microslip, "deck", "ccx", "lap", *args], check=True,
+                          capture_output=True, text=True).stdout
+    header = next(line for line in deck.splitlines() if line.startswith("** microslip-deck:"))
+    return [float(f) for f in re.search(r" F=(\S+)", header).group(1).split(",")]
+
+
+def lap_rows(microslip, workdir, lines, timings, failures):
+    """The lap joint's case, its mesh and load-path checks, and their table."""
+    name, args = LAP_CASE
+    lines.append("\n**Clamped double-lap joint**: Delta of CalculiX (thickness means, zeroed after "
+                 "the clamping step) against the shear-lag closed form; a, d = sliding zones from "
+                 "x = 0 and x = L (mm). Tolerance: within the stated envelope (L13), or "
+                 f"{100 * LAP_TOLERANCE:g} % where it gives no bound; a and d within "
+                 f"{X_ELEMENTS:g} elements; the same regime.\n")
+    lines.append("| case | F (N) | Delta ccx (mm) | Delta closed (mm) | diff | envelope | a ccx | "
+                 "a closed | d ccx | d closed | regime |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    data, deck, wall, cpu = run_case(microslip, workdir, "lap", "lap", args)
+    timings.append((f"lap, {name}", wall, cpu))
+    breaks = interface_breaks(deck, "IFINNER")
+    length = breaks[-1]
+    for row in data["rows"]:
+        diff = row["diff"]
+        bound = row["shear_lag_within"]
+        tolerance = LAP_TOLERANCE if bound is None else bound
+        if abs(diff) > tolerance:
+            failures.append(f"lap {name}, F = {row['F_N']:g} N: Delta differs by {pct(diff)} "
+                            f"(tolerance {100 * tolerance:.2g} %)")
+        if row["regime"] != row["regime_fe"]:
+            failures.append(f"lap {name}, F = {row['F_N']:g} N: regime {row['regime_fe']} in "
+                            f"CalculiX, {row['regime']} in the closed form")
+        for zone, fe, closed, at in [("a", row["a_fe_mm"], row["a_mm"], lambda z: z),
+                                     ("d", row["d_fe_mm"], row["d_mm"], lambda z: length - z)]:
+            allowed = X_ELEMENTS * max(element_length_at(breaks, at(fe)),
+                                       element_length_at(breaks, at(closed)))
+            if abs(fe - closed) > allowed:
+                failures.append(f"lap {name}, F = {row['F_N']:g} N: {zone} = {fe:.3f} mm in "
+                                f"CalculiX, {closed:.3f} mm closed form (allowed {allowed:.3f} mm)")
+        lines.append(f"| {name} | {row['F_N']:.4g} | {row['Delta_fe_mm']:.6g} | "
+                     f"{row['Delta_mm']:.6g} | {pct(diff)} | "
+                     + ("not calibrated | " if bound is None else f"{100 * bound:.2g} % | ")
+                     + f"{row['a_fe_mm']:.3g} | {row['a_mm']:.3g} | {row['d_fe_mm']:.3g} | "
+                     f"{row['d_mm']:.3g} | {row['regime']} |")
+
+    loads = lap_default_loads(microslip, args)
+    # Load-path convergence: the first LAP_INCREMENT_LOADS loads at half the default step.
+    path_loads = ["--loads", ",".join(f"{f:.10g}" for f in loads[:LAP_INCREMENT_LOADS])]
+    default, _, wall, cpu = run_case(microslip, workdir, "lapinc1", "lap", [*args, *path_loads])
+    joint = json.loads(subprocess.run([microslip, "lap", *args, "--format", "json"], check=True,
+                                      capture_output=True, text=True).stdout)
+    step = joint["F_1_N"] / 40  # the decks' default force step beyond F_1
+    timings.append((f"lap, {name}, {LAP_INCREMENT_LOADS} loads, default force step", wall, cpu))
+    half, _, wall, cpu = run_case(microslip, workdir, "lapinc2", "lap",
+                                  [*args, *path_loads, "--increment", f"{step / 2:.10g}"])
+    timings.append((f"lap, {name}, {LAP_INCREMENT_LOADS} loads, half the force step", wall, cpu))
+    worst = converged(default, half, INCREMENT_TOLERANCE,
+                      f"lap {name}: force steps {step:.4g} N and {step / 2:.4g} N", failures,
+                      "Delta_fe_mm")
+    lines.append(f"\nLoad-path convergence ({name}, F = "
+                 + ", ".join(f"{f:.4g}" for f in loads[:LAP_INCREMENT_LOADS])
+                 + f" N): halving the force step per increment beyond F_1 ({step:.3g} N, the "
+                 f"default, to {step / 2:.3g} N) moves Delta by at most {100 * worst:+.3f} % "
+                 f"(tolerance {100 * INCREMENT_TOLERANCE:g} %).")
+
+    # Mesh convergence, one increment per step on both meshes.
+    mesh_loads = ["--loads", ",".join(f"{f:.10g}" for f in loads[:2]), "--increment", "1e9"]
+    coarse, _, wall, cpu = run_case(microslip, workdir, "lapmc", "lap", [*args, *mesh_loads])
+    timings.append((f"lap, {name}, coarse mesh, one increment per step", wall, cpu))
+    fine, _, wall, cpu = run_case(microslip, workdir, "lapmf", "lap",
+                                  [*args, *mesh_loads, "--mesh", "fine"])
+    timings.append((f"lap, {name}, fine mesh, one increment per step", wall, cpu))
+    worst = converged(coarse, fine, LAP_MESH_TOLERANCE, f"lap {name}: coarse and fine meshes",
+                      failures, "Delta_fe_mm")
+    lines.append(f"\nMesh convergence ({name}, F = {loads[0]:.4g} and {loads[1]:.4g} N, one "
+                 f"increment per step on both): the coarse mesh's Delta is within {pct(worst)} of "
+                 "the fine mesh's (every element size halved).\n")
 
 
 def main():
@@ -357,6 +453,8 @@ def main():
                          f"{row['Xr_fe_mm']:.4g} | {row['Xr_mm']:.4g} | "
                          f"{'none' if implied is None else f'{implied:.4g}'} | "
                          f"{continuum['u_end_mean_mm']:.4g} ({pct(continuum['u_end_mean_mm'] / row['u_fe_mm'] - 1)}) |")
+
+    lap_rows(microslip, workdir, lines, timings, failures)
 
     lines.append("\nRun times (ccx wall / CPU seconds, OMP_NUM_THREADS="
                  f"{os.environ.get('OMP_NUM_THREADS', '2')}): "

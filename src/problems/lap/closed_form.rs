@@ -168,6 +168,36 @@ impl LapJoint {
         JointForce(newtons.clamp(0.0, self.gross_slip_force()))
     }
 
+    /// The K_T (MPa/mm) at which this joint's regularized Delta at `force` equals
+    /// `joint_displacement` (mm), all else as in this joint: what an FE result of Delta says about
+    /// the stiffness its code really used. Delta falls with K_T at every force (L11), from large
+    /// values at the softest accepted K_T to nearly Coulomb's at the stiffest, so there is at most
+    /// one answer; `None` when no K_T in the accepted domain gives it.
+    pub fn stiffness_for_joint_displacement(
+        &self,
+        force: JointForce,
+        joint_displacement: f64,
+    ) -> Option<f64> {
+        // K_T = min e^k, k in [0, ln(max / min)]: the root finder's bracket starts at 0.
+        let min = Domain::STIFFNESS.min();
+        let at = |k: f64| {
+            self.with_tangential_stiffness(min * k.exp())
+                .map(|j| j.regularized(force).joint_displacement())
+        };
+        let span = (Domain::STIFFNESS.max() / min).ln();
+        let (soft, stiff) = (at(0.0).ok()?, at(span).ok()?);
+        if !(joint_displacement > 0.0 && (stiff..=soft).contains(&joint_displacement)) {
+            return None;
+        }
+        // Relative misfit, so that the root finder sees numbers near 1 whatever the scale.
+        let k = find_root_in_bracket(
+            |k| at(k).map_or(f64::NAN, |d| d / joint_displacement - 1.0),
+            0.0,
+            span,
+        );
+        Some(min * k.exp())
+    }
+
     /// lambda = sqrt(2 c K_T) (1/mm), (L2): 1/lambda is the length over which the elastic slip
     /// decays from a loaded end.
     pub fn decay_rate(&self) -> f64 {
@@ -475,24 +505,14 @@ impl LapState {
 
     /// The zones from x = 0 outward.
     pub fn regime(&self) -> Regime {
-        let length = self.joint.params.length;
-        let (start, end) = self.middle_zone();
         if self.force == 0.0 {
             return Regime::Unloaded;
         }
-        if end - start <= 0.0 || self.a + self.d >= length {
+        let (start, end) = self.middle_zone();
+        if end - start <= 0.0 {
             return Regime::Macroslip;
         }
-        match (self.law, self.a > 0.0, self.d > 0.0) {
-            (Law::Coulomb, true, true) => Regime::MacroslipStickMacroslip,
-            (Law::Coulomb, false, true) => Regime::StickMacroslip,
-            (Law::Coulomb, true, false) => Regime::MacroslipStick,
-            (Law::Coulomb, false, false) => Regime::Stick,
-            (Law::Regularized, true, true) => Regime::MacroslipMicroslipMacroslip,
-            (Law::Regularized, false, true) => Regime::MicroslipMacroslip,
-            (Law::Regularized, true, false) => Regime::MacroslipMicroslip,
-            (Law::Regularized, false, false) => Regime::Microslip,
-        }
+        zones_regime(self.law, self.a, self.d, self.joint.params.length)
     }
 
     /// (L10): energy dissipated per cycle between +F and -F (N mm), from the friction work of
@@ -506,6 +526,25 @@ impl LapState {
         let (p, q) = self.middle_slope_lengths();
         let zone = |u: f64, slope: f64| u * u * (slope + u / 3.0);
         8.0 * joint.params.width * mu_p * joint.c * mu_p * (zone(self.a, p) + zone(self.d, q))
+    }
+}
+
+/// The regime of a loaded joint whose sliding zones from x = 0 and from x = L are `a` and `d` (mm)
+/// over an overlap `length`: shared by the closed forms and the reader of FE slip profiles, so
+/// that both name the same zones the same way.
+pub(crate) fn zones_regime(law: Law, a: f64, d: f64, length: f64) -> Regime {
+    if a + d >= length {
+        return Regime::Macroslip;
+    }
+    match (law, a > 0.0, d > 0.0) {
+        (Law::Coulomb, true, true) => Regime::MacroslipStickMacroslip,
+        (Law::Coulomb, false, true) => Regime::StickMacroslip,
+        (Law::Coulomb, true, false) => Regime::MacroslipStick,
+        (Law::Coulomb, false, false) => Regime::Stick,
+        (Law::Regularized, true, true) => Regime::MacroslipMicroslipMacroslip,
+        (Law::Regularized, false, true) => Regime::MicroslipMacroslip,
+        (Law::Regularized, true, false) => Regime::MacroslipMicroslip,
+        (Law::Regularized, false, false) => Regime::Microslip,
     }
 }
 
@@ -548,6 +587,32 @@ mod tests {
 
     fn rel(a: f64, b: f64) -> f64 {
         ((a - b) / b).abs()
+    }
+
+    #[test]
+    fn a_joint_displacement_gives_back_the_stiffness_that_made_it() {
+        let soft = joint(3.0, 2.0, 70_000.0, 1000.0);
+        for kt in [1.0, 100.0, 1e3, 1e4, 1e6] {
+            let at = soft.with_tangential_stiffness(kt).unwrap();
+            // Every regime: elastic, one end sliding, both ends, near gross slip.
+            for newtons in [300.0, 1500.0, 3000.0, 4500.0, 4790.0] {
+                let force = soft.force(newtons).unwrap();
+                let delta = at.regularized(force).joint_displacement();
+                let found = soft.stiffness_for_joint_displacement(force, delta).unwrap();
+                assert!(
+                    rel(found, kt) < 1e-6,
+                    "K_T {kt}, F {newtons}: found {found}"
+                );
+            }
+        }
+        // Below Coulomb's Delta (stiffer than any interface) no K_T gives it.
+        let force = soft.force(3000.0).unwrap();
+        let coulomb = soft.coulomb(force).joint_displacement();
+        assert_eq!(
+            soft.stiffness_for_joint_displacement(force, 0.99 * coulomb),
+            None
+        );
+        assert_eq!(soft.stiffness_for_joint_displacement(force, -1.0), None);
     }
 
     #[test]

@@ -7,8 +7,10 @@ pub mod closed_form;
 pub mod cycle;
 pub mod discretized;
 pub mod params;
+pub mod validity;
 
 pub use discretized::LapFe;
+pub use validity::LapValidity;
 
 use crate::kernel::regime::Law;
 use crate::problems::quantity::ratio_to_coulomb;

@@ -5,13 +5,14 @@
 //! rows' table columns ([`BeamCompareRow`], [`PlateCompareRow`]) without the verdict.
 
 pub mod beam;
+pub mod lap;
 pub mod plate;
 pub mod verdict;
 
 use serde::Serialize;
 
 use super::number;
-use crate::fe::compare::{BeamCompared, PlateCompared};
+use crate::fe::compare::{BeamCompared, LapCompared, PlateCompared};
 
 /// One row of `microslip compare beam`.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
@@ -121,6 +122,72 @@ impl From<&PlateCompared> for PlateCompareRow {
             micro_zone_end_fe: r.fe_interface().map(|i| i.macroslip_start),
             implied_stiffness: r.implied_stiffness,
             strip_theory: r.strip_validity.label(),
+        }
+    }
+}
+
+/// One row of `microslip compare lap`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct LapCompareRow {
+    /// The force through the joint (N).
+    #[serde(rename = "F_N")]
+    pub force: f64,
+    /// FE Delta (mm): thickness means, zeroed after clamping, for CalculiX; the given value for
+    /// CSV.
+    #[serde(rename = "Delta_fe_mm")]
+    pub delta_fe: f64,
+    /// Shear-lag closed form, regularized law (mm).
+    #[serde(rename = "Delta_mm")]
+    pub delta: f64,
+    /// (FE - closed form) / closed form; empty (null) at F = 0.
+    pub diff: Option<f64>,
+    /// The shear-lag envelope's bound on that difference (L13), a fraction; empty (null) where
+    /// not calibrated.
+    pub shear_lag_within: Option<f64>,
+    /// Plain Coulomb law (mm).
+    #[serde(rename = "Delta_coulomb_mm")]
+    pub delta_coulomb: f64,
+    /// The closed form's regime.
+    pub regime: &'static str,
+    /// The regime the FE slip profile shows.
+    pub regime_fe: Option<&'static str>,
+    /// Closed-form sliding zone from x = 0 (mm).
+    #[serde(rename = "a_mm")]
+    pub slide_from_start: f64,
+    /// FE a (mm), from K_T |slip| = mu P.
+    #[serde(rename = "a_fe_mm")]
+    pub slide_from_start_fe: Option<f64>,
+    /// Closed-form sliding zone from x = L (mm).
+    #[serde(rename = "d_mm")]
+    pub slide_from_end: f64,
+    /// FE d (mm).
+    #[serde(rename = "d_fe_mm")]
+    pub slide_from_end_fe: Option<f64>,
+    /// The K_T whose closed-form Delta equals the FE value (MPa/mm), given only where the
+    /// shear-lag theory holds.
+    #[serde(rename = "KT_implied_MPa_per_mm")]
+    pub implied_stiffness: Option<f64>,
+    /// The shear-lag theory's level at this force (L13).
+    pub shear_lag: &'static str,
+}
+
+impl From<&LapCompared> for LapCompareRow {
+    fn from(r: &LapCompared) -> Self {
+        LapCompareRow {
+            force: r.fe.force,
+            delta_fe: r.fe.joint_displacement,
+            delta: r.closed,
+            diff: r.difference(),
+            shear_lag_within: r.theory_within,
+            delta_coulomb: r.coulomb,
+            regime: r.regime.label(),
+            regime_fe: r.fe.interface.map(|i| i.regime.label()),
+            slide_from_start: r.zones.0,
+            slide_from_start_fe: r.fe.interface.map(|i| i.slide_from_start),
+            slide_from_end: r.zones.1,
+            slide_from_end_fe: r.fe.interface.map(|i| i.slide_from_end),
+            implied_stiffness: r.implied_stiffness,
+            shear_lag: r.theory_validity.label(),
         }
     }
 }

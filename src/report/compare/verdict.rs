@@ -54,6 +54,23 @@ pub struct PlateRowVerdict {
     pub text: String,
 }
 
+/// The verdict on one load step of the lap joint: Delta against the shear-lag envelope (L13), a
+/// and d in elements of the mesh (not bounded by the envelope).
+#[derive(Debug, Clone, Serialize)]
+pub struct LapRowVerdict {
+    /// Delta against its envelope: `within`, `outside`, `not calibrated`, `undefined`.
+    #[serde(serialize_with = "envelope_label")]
+    pub envelope: Envelope,
+    /// The envelope's bound, a fraction; null where not calibrated.
+    pub envelope_bound: Option<f64>,
+    /// |FE a - closed-form a| in elements of the FE mesh (CalculiX results only).
+    pub a_elements: Option<f64>,
+    /// |FE d - closed-form d| in elements of the FE mesh (CalculiX results only).
+    pub d_elements: Option<f64>,
+    /// The verdict in words.
+    pub text: String,
+}
+
 /// The closing verdict of a comparison.
 #[derive(Debug, Clone, Serialize)]
 pub struct Summary {
@@ -163,6 +180,29 @@ pub(crate) fn plate_row(row: &crate::fe::compare::PlateCompared) -> PlateRowVerd
         envelope_bound: envelope.bound(),
         zone_end_elements: row.micro_zone_end_mesh.map(|m| m.elements),
         zone_end_within_resolution: row.micro_zone_end_mesh.map(|m| m.within_resolution()),
+        text,
+    }
+}
+
+/// The row verdict of the lap joint, from the compared row.
+pub(crate) fn lap_row(row: &crate::fe::compare::LapCompared) -> LapRowVerdict {
+    let envelope = row.envelope();
+    let mut text = format!(
+        "F = {} N: {}",
+        number(row.fe.force),
+        envelope_words("Delta", row.difference(), envelope)
+    );
+    if let Some([a, d]) = &row.zones_mesh {
+        text.push_str("; ");
+        text.push_str(&mesh_words("a", a));
+        text.push_str("; ");
+        text.push_str(&mesh_words("d", d));
+    }
+    LapRowVerdict {
+        envelope,
+        envelope_bound: envelope.bound(),
+        a_elements: row.zones_mesh.map(|[a, _]| a.elements),
+        d_elements: row.zones_mesh.map(|[_, d]| d.elements),
         text,
     }
 }
@@ -390,13 +430,35 @@ pub fn plate_summary(rows: &[crate::fe::compare::PlateCompared]) -> Summary {
         unit: "MPa/mm",
         steps: "runs",
     };
-    let (opening, agrees) = opening(tally.disagrees(&names), &tally);
+    summary_without_stiffness(&tally, &names)
+}
+
+/// The closing verdict of the lap joint.
+pub fn lap_summary(rows: &[crate::fe::compare::LapCompared]) -> Summary {
+    let tally = Tally::of(
+        rows.iter()
+            .map(|r| (number(r.fe.force), r.envelope(), r.worse_zone_mesh())),
+    );
+    let names = Names {
+        what: "Delta",
+        zone: "a or d",
+        zone_bounded: false,
+        at: "F =",
+        unit: "N",
+        steps: "load steps",
+    };
+    summary_without_stiffness(&tally, &names)
+}
+
+/// The closing verdict of a comparison that implies no K_T of its own (the plate, the lap joint).
+fn summary_without_stiffness(tally: &Tally, names: &Names) -> Summary {
+    let (opening, agrees) = opening(tally.disagrees(names), tally);
     Summary {
         agrees,
-        summary: format!("Verdict: {opening}. {}.", tally.clauses(&names).join("; ")),
+        summary: format!("Verdict: {opening}. {}.", tally.clauses(names).join("; ")),
         stiffness: None,
         stiffness_z: None,
-        short: format!("{opening} ({})", tally.short(&names)),
+        short: format!("{opening} ({})", tally.short(names)),
     }
 }
 
