@@ -1404,13 +1404,14 @@ impl App {
     }
 
     /// Asks to read what `d` names: a CalculiX `.dat` (FE results, of the model its deck is), a
-    /// plate CSV `KT_MPa_per_mm,u_mm` on the plate, else a measurement CSV `F_N,w_mm` for the fit.
+    /// plate CSV `KT_MPa_per_mm,u_mm` on the plate, a lap CSV `F_N,Delta_mm` on the lap joint
+    /// (FE results: the TUI fits only the beams), else a measurement CSV `F_N,w_mm` for the fit.
     fn load_data(&mut self, path: String) {
         let is_dat = std::path::Path::new(&path)
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("dat"));
         // A CSV is a measured force-deflection curve to fit for the beams, FE results (K_T, u(L))
-        // for the plate.
+        // for the plate, (F, Delta) for the lap joint.
         let measurements = match self.kind {
             ModelKind::Beam => !is_dat,
             ModelKind::Plate | ModelKind::Lap => false,

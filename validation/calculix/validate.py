@@ -274,7 +274,7 @@ def lap_rows(microslip, workdir, lines, timings, failures):
     lines.append(f"\nLoad-path convergence ({name}, F = "
                  + ", ".join(f"{f:.4g}" for f in loads[:LAP_INCREMENT_LOADS])
                  + f" N): halving the force step per increment beyond F_1 ({step:.3g} N, the "
-                 f"default, to {step / 2:.3g} N) moves Delta by at most {100 * worst:+.3f} % "
+                 f"default, to {step / 2:.3g} N) moves Delta by at most {100 * worst:+.4f} % "
                  f"(tolerance {100 * INCREMENT_TOLERANCE:g} %).")
 
     # Mesh convergence, one increment per step on both meshes.
@@ -287,7 +287,8 @@ def lap_rows(microslip, workdir, lines, timings, failures):
     worst = converged(coarse, fine, LAP_MESH_TOLERANCE, f"lap {name}: coarse and fine meshes",
                       failures, "Delta_fe_mm")
     lines.append(f"\nMesh convergence ({name}, F = {loads[0]:.4g} and {loads[1]:.4g} N, one "
-                 f"increment per step on both): the coarse mesh's Delta is within {pct(worst)} of "
+                 f"increment per step on both): the coarse mesh's Delta is within "
+                 f"{100 * worst:+.4f} % of "
                  "the fine mesh's (every element size halved).\n")
 
 
