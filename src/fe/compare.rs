@@ -268,7 +268,7 @@ pub struct LapCompared {
     /// none does, or where the shear-lag theory does not hold (the difference would be the
     /// theory's, not the interface's).
     pub implied_stiffness: Option<f64>,
-    /// The shear-lag theory's level at this force ((L13)).
+    /// The shear-lag theory's level at this force ((L14)).
     pub theory_validity: Validity,
     /// Its bound on Delta's difference from a continuum, a fraction; `None` where not calibrated.
     pub theory_within: Option<f64>,
@@ -282,7 +282,7 @@ impl LapCompared {
         relative_difference(self.fe.joint_displacement, self.closed)
     }
 
-    /// Delta's difference against the theory's envelope (L13).
+    /// Delta's difference against the theory's envelope (L14).
     pub fn envelope(&self) -> Envelope {
         Envelope::judge(self.difference(), self.theory_within)
     }

@@ -5,6 +5,7 @@
 use crate::fe::compare::{BeamComparison, LapCompared, PlateCompared};
 use crate::kernel::format::{number, number_with};
 use crate::kernel::validity::Validity;
+use crate::problems::lap::LapValidity;
 use crate::problems::plate::validity::PlateValidity;
 use crate::report::compare::{percent, percent_or_na, verdict};
 
@@ -67,6 +68,20 @@ pub fn lap_summary(code: &str, rows: &[LapCompared]) -> String {
         verdict::lap_summary(rows).short,
         percent_range(rows.iter().map(LapCompared::difference))
     )
+}
+
+/// The shear-lag theory's envelope in the lap joint's regime-pane title (about 20 characters):
+/// "FE within 1.5 %", "FE: approx. 6.2 %", "FE: OUTSIDE, see n", "FE: not calibrated". The number
+/// is the expected difference of Delta from a plane-stress continuum, (L14).
+pub fn lap_validity_title(v: &LapValidity) -> String {
+    match (v.validity, v.expected_error) {
+        (Validity::Holds, Some(e)) => format!("FE within {} %", number_with(100.0 * e, 2)),
+        (Validity::Approximate, Some(e)) => format!("FE: ~{} % off", number_with(100.0 * e, 2)),
+        (Validity::Outside | Validity::MeasuredWrong, _) => "FE: OUTSIDE, n solves".to_string(),
+        (Validity::Holds | Validity::Approximate | Validity::NotCalibrated, _) => {
+            "FE: not calibrated".to_string()
+        }
+    }
 }
 
 /// The strip theory's validity in a few words (TUI regime pane, one line of 30 characters), for

@@ -103,7 +103,7 @@ PLATE_CASES = [
 
 # Lap joint: the bundled joint (lap-aluminium) at the deck's default loads (0.5 F_1, (F_1 + F_2)/2,
 # (F_2 + F_gross)/2, 0.9 F_gross: every regime). Delta (thickness means, zeroed after clamping)
-# must be within the shear-lag theory's stated envelope (L13), or, where the envelope gives no
+# must be within the shear-lag theory's stated envelope (L14), or, where the envelope gives no
 # bound, within LAP_TOLERANCE (the first converged look, (L12), measured +0.6 to +1.2 %); the
 # sliding zones a and d within X_ELEMENTS elements of the deck's mesh, and the regimes the same.
 LAP_TOLERANCE = 0.02
@@ -224,7 +224,7 @@ def lap_rows(microslip, workdir, lines, timings, failures):
     name, args = LAP_CASE
     lines.append("\n**Clamped double-lap joint**: Delta of CalculiX (thickness means, zeroed after "
                  "the clamping step) against the shear-lag closed form; a, d = sliding zones from "
-                 "x = 0 and x = L (mm). Tolerance: within the stated envelope (L13), or "
+                 "x = 0 and x = L (mm). Tolerance: within the stated envelope (L14), or "
                  f"{100 * LAP_TOLERANCE:g} % where it gives no bound; a and d within "
                  f"{X_ELEMENTS:g} elements; the same regime.\n")
     lines.append("| case | F (N) | Delta ccx (mm) | Delta closed (mm) | diff | envelope | a ccx | "

@@ -2,7 +2,7 @@
 //! continuum, as numbers. The theory assumes each plate's axial strain uniform through its
 //! thickness and the contact pressure equal to P; both fail when the interface shear decays over
 //! a length comparable to the thicknesses (stiff interfaces, thick plates) and where the covers
-//! bend (docs/theory.md, (L12) and (L13)).
+//! bend (docs/theory.md, (L12) and (L14)).
 
 use super::closed_form::{JointForce, LapJoint};
 use crate::kernel::validity::Validity;
@@ -21,7 +21,7 @@ pub struct LapValidity {
 }
 
 impl LapJoint {
-    /// Where the shear-lag theory stands for this joint at `force` (L13).
+    /// Where the shear-lag theory stands for this joint at `force` (L14).
     pub fn validity(&self, force: JointForce) -> LapValidity {
         let _ = force;
         let p = self.params();

@@ -27,7 +27,7 @@ pub struct LapCompareReport {
 pub struct LapRowReport {
     #[serde(flatten)]
     pub row: LapCompareRow,
-    /// (L13) at this force, for the text (the JSON has its label in `shear_lag`).
+    /// (L14) at this force, for the text (the JSON has its label in `shear_lag`).
     #[serde(skip)]
     pub theory_validity: Validity,
     pub verdict: LapRowVerdict,
@@ -61,7 +61,7 @@ impl LapCompareReport {
              clamping step); closed form: shear lag, regularized law (docs/theory.md section 9);\n\
              a, d (mm): sliding zones from x = 0 and from x = L (FE: where K_T |slip| >= mu P);\n\
              implied K_T (MPa/mm): the K_T whose closed-form Delta equals the FE value, given only\n\
-             where the shear-lag theory holds (docs/theory.md (L13)); elsewhere the difference is\n\
+             where the shear-lag theory holds (docs/theory.md (L14)); elsewhere the difference is\n\
              the theory's, not the interface's.\n",
             sanitize(&self.results)
         );
@@ -103,13 +103,13 @@ impl LapCompareReport {
         }
         let zone = if self.rows.iter().any(|r| r.verdict.a_elements.is_some()) {
             "a and d against the closed form's in elements of the deck's mesh along the interface\n\
-             (under one: within what the mesh resolves; (L13) does not bound them)."
+             (under one: within what the mesh resolves; (L14) does not bound them)."
         } else {
             "a and d are not judged (the results carry no slip profile and no mesh)."
         };
         let _ = writeln!(
             out,
-            "\nPer load step: Delta against the shear-lag theory's envelope (docs/theory.md (L13));\n\
+            "\nPer load step: Delta against the shear-lag theory's envelope (docs/theory.md (L14));\n\
              {zone}"
         );
         for r in &self.rows {

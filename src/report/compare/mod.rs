@@ -141,7 +141,7 @@ pub struct LapCompareRow {
     pub delta: f64,
     /// (FE - closed form) / closed form; empty (null) at F = 0.
     pub diff: Option<f64>,
-    /// The shear-lag envelope's bound on that difference (L13), a fraction; empty (null) where
+    /// The shear-lag envelope's bound on that difference (L14), a fraction; empty (null) where
     /// not calibrated.
     pub shear_lag_within: Option<f64>,
     /// Plain Coulomb law (mm).
@@ -167,7 +167,7 @@ pub struct LapCompareRow {
     /// shear-lag theory holds.
     #[serde(rename = "KT_implied_MPa_per_mm")]
     pub implied_stiffness: Option<f64>,
-    /// The shear-lag theory's level at this force (L13).
+    /// The shear-lag theory's level at this force (L14).
     pub shear_lag: &'static str,
 }
 

@@ -54,7 +54,7 @@ pub struct PlateRowVerdict {
     pub text: String,
 }
 
-/// The verdict on one load step of the lap joint: Delta against the shear-lag envelope (L13), a
+/// The verdict on one load step of the lap joint: Delta against the shear-lag envelope (L14), a
 /// and d in elements of the mesh (not bounded by the envelope).
 #[derive(Debug, Clone, Serialize)]
 pub struct LapRowVerdict {
