@@ -4,10 +4,15 @@
 //! discretized solver never import each other (tests/layering.rs checks it).
 
 pub mod closed_form;
+pub mod continuum;
 pub mod cycle;
 pub mod discretized;
 pub mod params;
 
+pub use continuum::{
+    ContinuumLap, LAP_POISSON, LapContinuumMesh, SlidingZones, solve_lap_continuum,
+    solve_lap_continuum_path,
+};
 pub use discretized::LapFe;
 
 use crate::kernel::regime::Law;
