@@ -52,7 +52,9 @@
 use super::params::{LapParam, LapParams};
 use crate::kernel::params::Compact;
 use crate::numeric::NumericError;
-use crate::numeric::banded::SymmetricBand;
+use std::cell::RefCell;
+
+use crate::numeric::banded::{BandCholesky, NotPositiveDefinite, SymmetricBand};
 use crate::numeric::interface::{InterfacePoint, Response};
 use crate::numeric::mesh::graded_toward_end;
 use crate::numeric::newton::{self, Discretized};
@@ -541,8 +543,12 @@ struct Condensed {
     pairs: usize,
     /// Jenkins stiffness of each pair, K_T times its share of the face (N/mm per mm of width).
     stiffness: Vec<f64>,
-    /// The condensed stiffness S = (B K0^-1 B^T)^-1 (dense, in a full band).
+    /// The condensed stiffness S = (B K0^-1 B^T)^-1 (dense, in a full band), the Newton
+    /// tangent's elastic part.
     condensed: SymmetricBand,
+    /// The same, row major, for the residual's products (plain sums: the residual's terms are
+    /// interface forces of the same size, so nothing cancels to below the tolerance).
+    condensed_rows: Vec<f64>,
     /// Slip, contact force and Delta reading per unit pressure (MPa) and per newton of F, with
     /// every pair elastic and no plastic slip.
     slip_p: Vec<f64>,
@@ -679,9 +685,13 @@ impl Condensed {
         }
         flexibility.solve_many(&mut inverse, m);
         let mut condensed = SymmetricBand::zeros(m, m.saturating_sub(1));
+        let mut condensed_rows = vec![0.0; m * m];
         for i in 0..m {
             for j in 0..=i {
-                condensed.add(i, j, 0.5 * (inverse[i * m + j] + inverse[j * m + i]));
+                let value = 0.5 * (inverse[i * m + j] + inverse[j * m + i]);
+                condensed.add(i, j, value);
+                condensed_rows[i * m + j] = value;
+                condensed_rows[j * m + i] = value;
             }
         }
         let mut contact_per_pair = vec![0.0; m * m];
@@ -694,6 +704,7 @@ impl Condensed {
             pairs: m,
             stiffness,
             condensed,
+            condensed_rows,
             slip_p: slip(m),
             slip_f: slip(m + 1),
             contact_p: contact(m),
@@ -730,6 +741,9 @@ struct Reduced<'a> {
     width: f64,
     /// Delta's reading at the end of the clamping step (mm).
     clamping_delta: f64,
+    /// The factored tangent and the sliding set it belongs to: the tangent S + diag(k_t - k)
+    /// depends on nothing else, and the fixed point's solves mostly repeat the set.
+    factor: RefCell<Option<(Vec<bool>, BandCholesky)>>,
 }
 
 /// A committed state of [`Reduced`], to restart an increment from.
@@ -761,6 +775,7 @@ impl<'a> Reduced<'a> {
             scale,
             width: p.width,
             clamping_delta: 0.0,
+            factor: RefCell::new(None),
         }
     }
 
@@ -988,7 +1003,12 @@ impl Discretized for Reduced<'_> {
         let offset: Vec<f64> = (0..m)
             .map(|i| slip[i] - self.base[i] - load * self.unit[i])
             .collect();
-        let mut residual = self.c.condensed.mul_accurate(&offset);
+        let mut residual: Vec<f64> = self
+            .c
+            .condensed_rows
+            .chunks_exact(m.max(1))
+            .map(|row| row.iter().zip(&offset).map(|(a, b)| a * b).sum())
+            .collect();
         let mut tangent = self.c.condensed.clone();
         for (i, r) in responses.iter().enumerate() {
             let k = self.c.stiffness[i];
@@ -1004,6 +1024,25 @@ impl Discretized for Reduced<'_> {
         }
         self.slip = slip;
         self.load = load;
+    }
+
+    fn solve_step(
+        &self,
+        tangent: SymmetricBand,
+        rhs: &[f64],
+        responses: &[Response],
+    ) -> Result<Vec<f64>, NotPositiveDefinite> {
+        let sliding: Vec<bool> = responses.iter().map(|r| r.sliding).collect();
+        let mut cache = self.factor.borrow_mut();
+        if let Some((set, factor)) = cache.as_ref()
+            && *set == sliding
+        {
+            return Ok(factor.solve(rhs));
+        }
+        let factor = tangent.factor()?;
+        let step = factor.solve(rhs);
+        *cache = Some((sliding, factor));
+        Ok(step)
     }
 }
 
