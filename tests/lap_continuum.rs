@@ -103,6 +103,11 @@ fn path(kt: f64, mesh: LapContinuumMesh) -> Vec<ContinuumLap> {
     solve_lap_continuum_path(joint(kt), &FORCES, mesh).unwrap()
 }
 
+/// One force per regime of the bundled joint: all microslip, one end sliding, both.
+fn regimes(kt: f64, mesh: LapContinuumMesh) -> Vec<ContinuumLap> {
+    solve_lap_continuum_path(joint(kt), &[1000.0, 2400.0, 5500.0], mesh).unwrap()
+}
+
 #[test]
 fn delta_and_sliding_zones_agree_with_calculix() {
     // Measured: within 0.014 % on Delta (the deck models the same continuum; the rest is
@@ -118,7 +123,7 @@ fn delta_and_sliding_zones_agree_with_calculix() {
             );
             let zones = state.nominal_zones;
             assert!(
-                (zones.from_inner_end - a).abs() < 0.1 && (zones.from_cover_ends - d).abs() < 0.1,
+                (zones.from_inner_end - a).abs() < 0.05 && (zones.from_cover_ends - d).abs() < 0.05,
                 "K_T {kt} F {f}: {zones:?} vs CalculiX ({a}, {d})"
             );
             assert!(state.separated.is_empty());
@@ -128,20 +133,20 @@ fn delta_and_sliding_zones_agree_with_calculix() {
 
 #[test]
 fn the_mesh_and_the_load_increments_are_converged() {
-    // 4 -> 8 layers (every size halved): measured at most 0.004 %; 16 -> 32 increments over
-    // F_gross: below 1e-8.
-    let coarse = path(1e3, LapContinuumMesh::default());
-    let fine = path(
+    // 4 -> 8 layers (every size halved): measured at most 0.004 %; 8 -> 16 increments over
+    // F_gross (each halved): below 1e-10.
+    let coarse = regimes(1e3, LapContinuumMesh::default());
+    let fine = regimes(
         1e3,
         LapContinuumMesh {
             layers: 8,
             ..LapContinuumMesh::default()
         },
     );
-    let halved = path(
+    let halved = regimes(
         1e3,
         LapContinuumMesh {
-            force_increments: 32,
+            force_increments: 16,
             ..LapContinuumMesh::default()
         },
     );
