@@ -80,6 +80,16 @@ const MAX_PAIRS: usize = 801;
 /// grows like lambda and the solve takes seconds.
 const MAX_LAMBDA_T1: f64 = 12.5;
 
+/// Right-hand sides solved together with the banded factor: enough to read each factor entry
+/// once for many, few enough to keep the block small (n x 64).
+const CHUNK: usize = 64;
+
+/// Most elements in both bodies together (the mesh is counted before it is built).
+const MAX_ELEMENTS: usize = 50_000;
+
+/// Most entries of the banded stiffness (128 MB).
+const MAX_BAND_ENTRIES: f64 = 1.6e7;
+
 /// Most elements through each body's thickness.
 const MAX_LAYERS: usize = 32;
 
@@ -239,7 +249,19 @@ pub fn solve_lap_continuum_path(
             MAX_LAMBDA_T1
         )));
     }
-    let pairs = Grid::pair_count(&params, mesh);
+    let (pairs, elements) = Grid::counts(&params, mesh);
+    if elements > MAX_ELEMENTS {
+        return Err(NumericError::OutOfRange(format!(
+            "the continuum mesh would have {elements} elements (more than {MAX_ELEMENTS}): at \
+             {} layers the elements are {} mm high, and the plates' extensions of 2 (t1 + t2) = \
+             {} mm are meshed at that scale; use fewer layers or plates of closer thicknesses",
+            mesh.layers,
+            Compact(
+                (0.5 * params.inner_thickness).min(params.cover_thickness) / mesh.layers as f64
+            ),
+            Compact(2.0 * (params.inner_thickness + params.cover_thickness)),
+        )));
+    }
     if pairs > MAX_PAIRS {
         return Err(NumericError::OutOfRange(format!(
             "K_T = {} MPa/mm over L = {} mm needs {} interface node pairs at {} layers (1/lambda \
@@ -253,6 +275,17 @@ pub fn solve_lap_continuum_path(
         )));
     }
     let grid = Grid::new(&params, mesh);
+    let band = grid.unknowns as f64 * (grid.bandwidth + 1) as f64;
+    if band > MAX_BAND_ENTRIES {
+        return Err(NumericError::OutOfRange(format!(
+            "the continuum mesh's stiffness would hold {} entries ({} unknowns, half-bandwidth \
+             {}), more than {}: use fewer layers",
+            Compact(band),
+            grid.unknowns,
+            grid.bandwidth,
+            Compact(MAX_BAND_ENTRIES)
+        )));
+    }
     let condensed = Condensed::new(&grid, &params)?;
     let top = forces.iter().fold(0.0_f64, |m, f| m.max(*f));
     let mut model = Reduced::new(&condensed, &params, top);
@@ -269,7 +302,12 @@ pub fn solve_lap_continuum_path(
         let steps =
             (((force - from) / gross * mesh.force_increments as f64).ceil() as usize).max(1);
         for i in 1..=steps {
-            iterations += model.step(from + (force - from) * i as f64 / steps as f64)?;
+            let target = if i == steps {
+                force
+            } else {
+                from + (force - from) * i as f64 / steps as f64
+            };
+            iterations += model.step(target)?;
         }
         increments += steps;
         let result = model.result(&grid, &clamped, increments, iterations);
@@ -407,27 +445,29 @@ impl Grid {
         (overlap, cover_extension, inner_extension)
     }
 
-    /// The number of interface pairs the mesh would have, without building it.
-    fn pair_count(p: &LapParams, mesh: LapContinuumMesh) -> usize {
+    /// The number of interface pairs and of elements the mesh would have, without building it.
+    fn counts(p: &LapParams, mesh: LapContinuumMesh) -> (usize, usize) {
+        use crate::numeric::mesh::graded_toward_end_count as count;
         let layer = (0.5 * p.inner_thickness / mesh.layers as f64)
             .min(p.cover_thickness / mesh.layers as f64);
         let decay = 1.0 / decay_rate(p);
         let finest = (2.0 / 3.0 * layer).min(0.25 * decay);
         let coarsest = (8.0 / 3.0 * layer).min(0.5 * decay).max(finest);
-        let half = crate::numeric::mesh::graded_toward_end_count(
-            0.5 * p.length,
-            p.length,
-            finest,
-            coarsest,
-            GROWTH,
-        );
-        // 2 half overlaps of `half` elements, 2 pairs per element and one more.
-        let count = 4.0 * half + 1.0;
-        if count.is_finite() && count < usize::MAX as f64 {
-            count as usize
-        } else {
-            usize::MAX
-        }
+        let extension = 2.0 * (p.inner_thickness + p.cover_thickness);
+        let half = count(0.5 * p.length, p.length, finest, coarsest, GROWTH);
+        let beyond = count(0.0, extension, finest, 4.0 * coarsest, GROWTH);
+        // 2 half overlaps of `half` elements, 2 pairs per element and one more; each body has
+        // the overlap and one extension, `layers` elements deep.
+        let pairs = 4.0 * half + 1.0;
+        let elements = 2.0 * (2.0 * half + beyond) * mesh.layers as f64;
+        let whole = |x: f64| {
+            if x.is_finite() && x < usize::MAX as f64 {
+                x as usize
+            } else {
+                usize::MAX
+            }
+        };
+        (whole(pairs), whole(elements))
     }
 
     fn new(p: &LapParams, mesh: LapContinuumMesh) -> Grid {
@@ -618,64 +658,80 @@ impl Condensed {
         let factor = k0.factor().map_err(|e| NumericError::Singular(e.row))?;
 
         // Right-hand sides: the m unit pair loads (+1 on the inner plate's u, -1 on the cover's),
-        // then P = 1 on the cover's outer face over the overlap, then F = 1 N.
-        let columns = m + 2;
-        let mut rhs = vec![0.0; n * columns];
-        for i in 0..m {
-            let (a, b) = grid.pair_dofs(i);
-            rhs[a * columns + i] = 1.0;
-            rhs[b * columns + i] = -1.0;
-        }
+        // then P = 1 on the cover's outer face over the overlap, then F = 1 N; solved in blocks
+        // of CHUNK columns (the block is n x CHUNK), each solution kept only through its
+        // readings: the pair slips, the contact forces, Delta.
+        let total = m + 2;
         let cover_top = grid.cover.rows() - 1;
-        for (i, w) in grid.pair_weights.iter().enumerate() {
-            let [_, v] = grid.cover.dof(grid.inner.first_column + i, cover_top);
-            rhs[v * columns + m] -= w;
-        }
         let end = grid.inner.columns() - 1;
         let traction = 1.0 / (p.width * p.inner_thickness);
-        for (j, w) in Body::edge_weights(&grid.inner.ys).iter().enumerate() {
-            let [u, _] = grid.inner.dof(end, j);
-            rhs[u * columns + m + 1] += traction * w;
-        }
-        factor.solve_many(&mut rhs, columns);
-        let at = |dof: usize, column: usize| rhs[dof * columns + column];
-
-        // The readings of each solution column: slips, contact forces, Delta.
-        let slip = |column: usize| -> Vec<f64> {
-            (0..m)
-                .map(|i| {
-                    let (a, b) = grid.pair_dofs(i);
-                    at(a, column) - at(b, column)
-                })
-                .collect()
-        };
-        let contact = |column: usize| -> Vec<f64> {
-            contact_rows
-                .iter()
-                .map(|row| row.iter().map(|&(d, k)| k * at(d, column)).sum())
-                .collect()
-        };
         let inner_end = 2 * grid.overlap_elements;
         let inner_mean = Body::edge_weights(&grid.inner.ys);
         let cover_mean = Body::edge_weights(&grid.cover.ys);
         let (h1, h2) = (0.5 * p.inner_thickness, p.cover_thickness);
-        let delta = |column: usize| -> f64 {
-            let inner: f64 = inner_mean
-                .iter()
-                .enumerate()
-                .map(|(j, w)| w * at(grid.inner.dof(inner_end, j)[0], column))
-                .sum();
-            let cover: f64 = cover_mean
-                .iter()
-                .enumerate()
-                .map(|(j, w)| w * at(grid.cover.dof(grid.inner.first_column, j)[0], column))
-                .sum();
-            inner / h1 - cover / h2
-        };
+        let mut slips: Vec<Vec<f64>> = Vec::with_capacity(total);
+        let mut contacts: Vec<Vec<f64>> = Vec::with_capacity(total);
+        let mut deltas: Vec<f64> = Vec::with_capacity(total);
+        for first in (0..total).step_by(CHUNK) {
+            let columns = CHUNK.min(total - first);
+            let mut rhs = vec![0.0; n * columns];
+            for c in 0..columns {
+                let column = first + c;
+                if column < m {
+                    let (a, b) = grid.pair_dofs(column);
+                    rhs[a * columns + c] = 1.0;
+                    rhs[b * columns + c] = -1.0;
+                } else if column == m {
+                    for (i, w) in grid.pair_weights.iter().enumerate() {
+                        let [_, v] = grid.cover.dof(grid.inner.first_column + i, cover_top);
+                        rhs[v * columns + c] -= w;
+                    }
+                } else {
+                    for (j, w) in inner_mean.iter().enumerate() {
+                        let [u, _] = grid.inner.dof(end, j);
+                        rhs[u * columns + c] += traction * w;
+                    }
+                }
+            }
+            factor.solve_many(&mut rhs, columns);
+            let at = |dof: usize, c: usize| rhs[dof * columns + c];
+            for c in 0..columns {
+                slips.push(
+                    (0..m)
+                        .map(|i| {
+                            let (a, b) = grid.pair_dofs(i);
+                            at(a, c) - at(b, c)
+                        })
+                        .collect(),
+                );
+                contacts.push(
+                    contact_rows
+                        .iter()
+                        .map(|row| row.iter().map(|&(d, k)| k * at(d, c)).sum())
+                        .collect(),
+                );
+                let inner: f64 = inner_mean
+                    .iter()
+                    .enumerate()
+                    .map(|(j, w)| w * at(grid.inner.dof(inner_end, j)[0], c))
+                    .sum();
+                let cover: f64 = cover_mean
+                    .iter()
+                    .enumerate()
+                    .map(|(j, w)| w * at(grid.cover.dof(grid.inner.first_column, j)[0], c))
+                    .sum();
+                deltas.push(inner / h1 - cover / h2);
+            }
+        }
+        let slip_f = slips.pop().unwrap_or_default();
+        let slip_p = slips.pop().unwrap_or_default();
+        let contact_f = contacts.pop().unwrap_or_default();
+        let contact_p = contacts.pop().unwrap_or_default();
+        let delta_f = deltas.pop().unwrap_or_default();
+        let delta_p = deltas.pop().unwrap_or_default();
 
         // C = B K0^-1 B^T, symmetrized against round-off, and its inverse.
         let mut flexibility = SymmetricBand::zeros(m, m.saturating_sub(1));
-        let slips: Vec<Vec<f64>> = (0..m).map(slip).collect();
         for (i, row) in slips.iter().enumerate() {
             for (j, column) in slips.iter().enumerate().take(i + 1) {
                 flexibility.add(i, j, 0.5 * (column[i] + row[j]));
@@ -700,9 +756,9 @@ impl Condensed {
             }
         }
         let mut contact_per_pair = vec![0.0; m * m];
-        for j in 0..m {
-            for (i, c) in contact(j).into_iter().enumerate() {
-                contact_per_pair[i * m + j] = c;
+        for (j, column) in contacts.iter().enumerate() {
+            for (i, c) in column.iter().enumerate() {
+                contact_per_pair[i * m + j] = *c;
             }
         }
         Ok(Condensed {
@@ -710,14 +766,14 @@ impl Condensed {
             stiffness,
             condensed,
             condensed_rows,
-            slip_p: slip(m),
-            slip_f: slip(m + 1),
-            contact_p: contact(m),
-            contact_f: contact(m + 1),
-            delta_p: delta(m),
-            delta_f: delta(m + 1),
+            slip_p,
+            slip_f,
+            contact_p,
+            contact_f,
+            delta_p,
+            delta_f,
             contact_per_pair,
-            delta_per_pair: (0..m).map(delta).collect(),
+            delta_per_pair: deltas,
         })
     }
 }
@@ -1073,7 +1129,10 @@ mod tests {
                 ..LapContinuumMesh::default()
             };
             let grid = Grid::new(&params, mesh);
-            assert_eq!(Grid::pair_count(&params, mesh), grid.pairs());
+            let (pairs, elements) = Grid::counts(&params, mesh);
+            assert_eq!(pairs, grid.pairs());
+            let built = layers * (grid.inner.xs.len() + grid.cover.xs.len() - 2);
+            assert_eq!(elements, built);
             let mut seen = vec![0; grid.unknowns];
             for body in [&grid.inner, &grid.cover] {
                 for dofs in body.dofs.iter().flatten() {
@@ -1205,6 +1264,19 @@ mod tests {
         ] {
             assert!(solve_lap_continuum(JOINT, 100.0, bad_mesh).is_err());
         }
+        // Plates of very different thicknesses: the thin one sets the element size, the thick
+        // one the extensions' length.
+        let lopsided = LapParams {
+            inner_thickness: 0.02,
+            cover_thickness: 500.0,
+            length: 1.0,
+            ..JOINT
+        };
+        let lopsided = message(lopsided, 1.0, mesh);
+        assert!(
+            lopsided.contains("elements (more than 50000)"),
+            "{lopsided}"
+        );
         let path = solve_lap_continuum_path(JOINT, &[2000.0, 1000.0], mesh).unwrap_err();
         assert!(path.to_string().contains("must not decrease"), "{path}");
         // Just inside the stiffness limit it solves (lambda t1 = 12.2; a short overlap keeps
