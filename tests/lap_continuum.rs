@@ -151,8 +151,8 @@ fn delta_agrees_with_calculix_on_a_joint_it_was_not_calibrated_on() {
     };
     let forces = [
         330.698_652_047_826_44,
-        1180.474_920_633_964,
-        3099.776_268_586_137_6,
+        1_180.474_920_633_964,
+        3_099.776_268_586_137_6,
         4050.0,
     ];
     let calculix = [
