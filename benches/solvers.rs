@@ -3,8 +3,8 @@
 use divan::{Bencher, black_box};
 use microslip::fit::{Measurement, fit_twin_beams};
 use microslip::numeric::MeshDensity;
-use microslip::problems::lap::LapFe;
 use microslip::problems::lap::closed_form::{LapJoint, LapParams};
+use microslip::problems::lap::{LapContinuumMesh, LapFe, solve_lap_continuum};
 use microslip::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
 use microslip::problems::twin_beams::TwinBeamsFe;
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
@@ -93,6 +93,22 @@ fn plate_continuum(bencher: Bencher, kt: f64) {
         solve_plate_continuum(black_box(params), ContinuumMesh::default())
             .unwrap()
             .end_displacement_mean
+    });
+}
+
+/// The lap joint's plane-stress continuum (two Q8 bodies, 4 layers, the interface condensed onto
+/// its node pairs, 8 force increments over F_gross), the bundled joint clamped then loaded to
+/// 4000 N (both ends sliding) at K_T = 1e3 (the bundled), 1e4 and 1e5 MPa/mm.
+#[divan::bench(args = [1e3, 1e4, 1e5], sample_count = 10)]
+fn lap_continuum(bencher: Bencher, kt: f64) {
+    let params = LapParams {
+        tangential_stiffness: kt,
+        ..LapParams::ALUMINIUM
+    };
+    bencher.bench_local(|| {
+        solve_lap_continuum(black_box(params), 4000.0, LapContinuumMesh::default())
+            .unwrap()
+            .delta
     });
 }
 

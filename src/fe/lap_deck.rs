@@ -35,7 +35,7 @@ use crate::problems::lap::closed_form::{JointForce, LapJoint};
 
 /// The Poisson ratio the deck gives both materials: the shear-lag closed forms do not use one,
 /// and nu = 0 instead of 0.3 moved CalculiX's Delta by at most 0.06 % (docs/theory.md (L12)).
-pub(crate) const LAP_POISSON: f64 = 0.3;
+pub(crate) const LAP_POISSON: f64 = crate::problems::lap::continuum::LAP_POISSON;
 
 /// Node sets the deck prints and a reader will read.
 pub(crate) mod sets {

@@ -110,46 +110,149 @@ impl SymmetricBand {
     }
 
     /// Solves A x = b by Cholesky factorization (consumes the matrix).
-    pub(crate) fn solve(mut self, b: &[f64]) -> Result<Vec<f64>, NotPositiveDefinite> {
+    pub(crate) fn solve(self, b: &[f64]) -> Result<Vec<f64>, NotPositiveDefinite> {
+        Ok(self.factor()?.solve(b))
+    }
+
+    /// The Cholesky factor L (A = L L^T), in place (consumes the matrix): for solving with many
+    /// right-hand sides at the cost of one factorization.
+    pub(crate) fn factor(mut self) -> Result<BandCholesky, NotPositiveDefinite> {
+        // Entry (i, k), k in [i - bw, i], sits at (i + 1) bw + k: a row's entries are contiguous,
+        // so the inner products run over slices (the same operations, in the same order, as
+        // through `index`).
         let bw = self.bandwidth;
         for i in 0..self.n {
-            for j in i.saturating_sub(bw)..=i {
-                let start = i.saturating_sub(bw).max(j.saturating_sub(bw));
-                let mut sum = self.values[self.index(i, j)];
-                for k in start..j {
-                    sum -= self.values[self.index(i, k)] * self.values[self.index(j, k)];
+            let row_i = (i + 1) * bw;
+            let start = i.saturating_sub(bw);
+            for j in start..=i {
+                let row_j = (j + 1) * bw;
+                let mut sum = self.values[row_i + j];
+                for (a, b) in self.values[row_i + start..row_i + j]
+                    .iter()
+                    .zip(&self.values[row_j + start..row_j + j])
+                {
+                    sum -= a * b;
                 }
-                let k = self.index(i, j);
                 if i == j {
                     if sum <= 0.0 || !sum.is_finite() {
                         return Err(NotPositiveDefinite { row: i });
                     }
-                    self.values[k] = sum.sqrt();
+                    self.values[row_i + j] = sum.sqrt();
                 } else {
-                    self.values[k] = sum / self.values[self.index(j, j)];
+                    self.values[row_i + j] = sum / self.values[row_j + j];
                 }
             }
         }
+        Ok(BandCholesky(self))
+    }
+}
+
+/// A factored [`SymmetricBand`]: its lower Cholesky factor in the same storage.
+#[derive(Debug, Clone)]
+pub(crate) struct BandCholesky(SymmetricBand);
+
+impl BandCholesky {
+    /// Solves A x = b by forward and back substitution.
+    pub(crate) fn solve(&self, b: &[f64]) -> Vec<f64> {
+        let f = &self.0;
+        let bw = f.bandwidth;
         let mut y = b.to_vec();
-        for i in 0..self.n {
+        for i in 0..f.n {
+            let row = (i + 1) * bw;
+            let start = i.saturating_sub(bw);
+            let mut sum = y[i];
+            for (a, x) in f.values[row + start..row + i].iter().zip(&y[start..i]) {
+                sum -= a * x;
+            }
+            y[i] = sum / f.values[row + i];
+        }
+        for i in (0..f.n).rev() {
+            let mut sum = y[i];
+            let end = (i + bw).min(f.n - 1);
+            for (k, x) in y.iter().enumerate().take(end + 1).skip(i + 1) {
+                sum -= f.values[(k + 1) * bw + i] * x;
+            }
+            y[i] = sum / f.values[(i + 1) * bw + i];
+        }
+        y
+    }
+
+    /// Solves A X = B for `columns` right-hand sides at once, in place: `b` holds B row by row
+    /// (entry (i, r) at `b[i * columns + r]`). The same operations as [`BandCholesky::solve`] per
+    /// column, each factor entry read once for all of them.
+    pub(crate) fn solve_many(&self, b: &mut [f64], columns: usize) {
+        let f = &self.0;
+        let bw = f.bandwidth;
+        let n = f.n;
+        debug_assert_eq!(b.len(), n * columns);
+        for i in 0..n {
             for k in i.saturating_sub(bw)..i {
-                y[i] -= self.values[self.index(i, k)] * y[k];
+                let l = f.values[(i + 1) * bw + k];
+                let (head, tail) = b.split_at_mut(i * columns);
+                let source = &head[k * columns..(k + 1) * columns];
+                for (y, x) in tail[..columns].iter_mut().zip(source) {
+                    *y -= l * x;
+                }
             }
-            y[i] /= self.values[self.index(i, i)];
-        }
-        for i in (0..self.n).rev() {
-            for k in (i + 1)..=(i + bw).min(self.n - 1) {
-                y[i] -= self.values[self.index(k, i)] * y[k];
+            let d = f.values[(i + 1) * bw + i];
+            for y in &mut b[i * columns..(i + 1) * columns] {
+                *y /= d;
             }
-            y[i] /= self.values[self.index(i, i)];
         }
-        Ok(y)
+        for i in (0..n).rev() {
+            for k in (i + 1)..=(i + bw).min(n - 1) {
+                let l = f.values[(k + 1) * bw + i];
+                let (head, tail) = b.split_at_mut(k * columns);
+                let source = &tail[..columns];
+                for (y, x) in head[i * columns..(i + 1) * columns].iter_mut().zip(source) {
+                    *y -= l * x;
+                }
+            }
+            let d = f.values[(i + 1) * bw + i];
+            for y in &mut b[i * columns..(i + 1) * columns] {
+                *y /= d;
+            }
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn many_right_hand_sides_solve_as_one_each() {
+        let n = 30;
+        let mut a = SymmetricBand::zeros(n, 3);
+        for i in 0..n {
+            a.add(i, i, 10.0 + i as f64);
+            for k in 1..=3.min(i) {
+                a.add(i, i - k, 1.0 / (1.0 + k as f64));
+            }
+        }
+        let factor = a.factor().unwrap();
+        let columns = 4;
+        let rhs: Vec<Vec<f64>> = (0..columns)
+            .map(|r| {
+                (0..n)
+                    .map(|i| ((i * 7 + r * 3) % 11) as f64 - 5.0)
+                    .collect()
+            })
+            .collect();
+        let mut block = vec![0.0; n * columns];
+        for (r, column) in rhs.iter().enumerate() {
+            for (i, v) in column.iter().enumerate() {
+                block[i * columns + r] = *v;
+            }
+        }
+        factor.solve_many(&mut block, columns);
+        for (r, column) in rhs.iter().enumerate() {
+            let one = factor.solve(column);
+            for i in 0..n {
+                assert_eq!(block[i * columns + r], one[i]);
+            }
+        }
+    }
 
     #[test]
     fn solves_a_tridiagonal_system_exactly() {

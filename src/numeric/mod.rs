@@ -10,6 +10,7 @@ mod error;
 pub(crate) mod interface;
 pub(crate) mod mesh;
 pub(crate) mod newton;
+pub(crate) mod q8;
 
 pub use error::NumericError;
 pub(crate) use error::short;

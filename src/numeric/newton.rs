@@ -4,7 +4,7 @@
 //! tangent, interface responses) and how to commit a converged state; the iteration, its
 //! convergence test and the step cutting live here once.
 
-use super::banded::SymmetricBand;
+use super::banded::{NotPositiveDefinite, SymmetricBand};
 use super::error::NumericError;
 use super::interface::Response;
 
@@ -42,6 +42,17 @@ pub(crate) trait Discretized {
 
     /// Adopts a converged state and its interface history.
     fn commit(&mut self, displacement: Vec<f64>, responses: Vec<Response>, load: f64);
+
+    /// Solves tangent x = rhs for a Newton step. A model whose tangent is fixed by the set of
+    /// sliding points (and repeats across solves) may keep its factor instead of refactoring.
+    fn solve_step(
+        &self,
+        tangent: SymmetricBand,
+        rhs: &[f64],
+        _responses: &[Response],
+    ) -> Result<Vec<f64>, NotPositiveDefinite> {
+        tangent.solve(rhs)
+    }
 }
 
 /// Moves the load from its committed value to `target` in `steps` equal increments, halving an
@@ -108,8 +119,8 @@ fn solve<M: Discretized>(model: &mut M, load: f64) -> Result<(), NumericError> {
         previous_set = Some(sliding);
         previous_norm = norm;
         let rhs: Vec<f64> = residual.iter().map(|r| -r).collect();
-        let step = tangent
-            .solve(&rhs)
+        let step = model
+            .solve_step(tangent, &rhs, &responses)
             .map_err(|e| NumericError::Singular(e.row))?;
         for (d, s) in displacement.iter_mut().zip(step) {
             *d += s;

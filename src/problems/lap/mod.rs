@@ -4,11 +4,16 @@
 //! discretized solver never import each other (tests/layering.rs checks it).
 
 pub mod closed_form;
+pub mod continuum;
 pub mod cycle;
 pub mod discretized;
 pub mod params;
 pub mod validity;
 
+pub use continuum::{
+    ContinuumLap, LAP_POISSON, LapContinuumMesh, SlidingZones, solve_lap_continuum,
+    solve_lap_continuum_path,
+};
 pub use discretized::LapFe;
 pub use validity::LapValidity;
 

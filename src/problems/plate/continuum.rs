@@ -21,6 +21,7 @@ use crate::numeric::banded::SymmetricBand;
 use crate::numeric::interface::{InterfacePoint, Response};
 use crate::numeric::mesh::graded_toward_end;
 use crate::numeric::newton::{self, Discretized};
+use crate::numeric::q8::{Q8, plane_strain, q8_stiffness};
 
 /// How fine the continuum mesh is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -180,35 +181,6 @@ struct Grid {
     bandwidth: usize,
 }
 
-/// Half-grid offsets of the Q8 nodes: corners counter-clockwise from (x-, y-), then midsides.
-const Q8: [(usize, usize); 8] = [
-    (0, 0),
-    (2, 0),
-    (2, 2),
-    (0, 2),
-    (1, 0),
-    (2, 1),
-    (1, 2),
-    (0, 1),
-];
-/// Natural coordinates of the same nodes.
-const Q8_NATURAL: [(f64, f64); 8] = [
-    (-1.0, -1.0),
-    (1.0, -1.0),
-    (1.0, 1.0),
-    (-1.0, 1.0),
-    (0.0, -1.0),
-    (1.0, 0.0),
-    (0.0, 1.0),
-    (-1.0, 0.0),
-];
-/// 3-point Gauss-Legendre rule on [-1, 1].
-const GAUSS3: [(f64, f64); 3] = [
-    (-0.774_596_669_241_483_4, 5.0 / 9.0),
-    (0.0, 8.0 / 9.0),
-    (0.774_596_669_241_483_4, 5.0 / 9.0),
-];
-
 impl Grid {
     /// x (mm) of the i-th node along the contact face (corners at even i, midsides at odd i).
     fn face_x(&self, i: usize) -> f64 {
@@ -338,62 +310,6 @@ impl Grid {
     }
 }
 
-/// Q8 shape functions and their derivatives (d/dxi, d/deta) at (xi, eta).
-fn q8(xi: f64, eta: f64) -> ([f64; 8], [[f64; 2]; 8]) {
-    let mut n = [0.0; 8];
-    let mut d = [[0.0; 2]; 8];
-    for (k, &(a, b)) in Q8_NATURAL.iter().enumerate() {
-        if a != 0.0 && b != 0.0 {
-            n[k] = 0.25 * (1.0 + a * xi) * (1.0 + b * eta) * (a * xi + b * eta - 1.0);
-            d[k][0] = 0.25 * a * (1.0 + b * eta) * (2.0 * a * xi + b * eta);
-            d[k][1] = 0.25 * b * (1.0 + a * xi) * (a * xi + 2.0 * b * eta);
-        } else if a == 0.0 {
-            n[k] = 0.5 * (1.0 - xi * xi) * (1.0 + b * eta);
-            d[k][0] = -xi * (1.0 + b * eta);
-            d[k][1] = 0.5 * b * (1.0 - xi * xi);
-        } else {
-            n[k] = 0.5 * (1.0 + a * xi) * (1.0 - eta * eta);
-            d[k][0] = 0.5 * a * (1.0 - eta * eta);
-            d[k][1] = -eta * (1.0 + a * xi);
-        }
-    }
-    (n, d)
-}
-
-/// Plane-strain stiffness of a rectangular Q8 element, width * height, per unit depth.
-fn q8_stiffness(width: f64, height: f64, modulus: f64, poisson: f64) -> [[f64; 16]; 16] {
-    let c = modulus / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
-    let d = [
-        [c * (1.0 - poisson), c * poisson, 0.0],
-        [c * poisson, c * (1.0 - poisson), 0.0],
-        [0.0, 0.0, c * (1.0 - 2.0 * poisson) / 2.0],
-    ];
-    let (jx, jy) = (2.0 / width, 2.0 / height);
-    let det = width * height / 4.0;
-    let mut k = [[0.0; 16]; 16];
-    for &(xi, wx) in &GAUSS3 {
-        for &(eta, wy) in &GAUSS3 {
-            let (_, dn) = q8(xi, eta);
-            let mut b = [[0.0; 16]; 3];
-            for n in 0..8 {
-                let (dx, dy) = (dn[n][0] * jx, dn[n][1] * jy);
-                b[0][2 * n] = dx;
-                b[1][2 * n + 1] = dy;
-                b[2][2 * n] = dy;
-                b[2][2 * n + 1] = dx;
-            }
-            let weight = wx * wy * det;
-            for r in 0..16 {
-                let db = [0, 1, 2].map(|i| (0..3).map(|j| d[i][j] * b[j][r]).sum::<f64>());
-                for s in 0..16 {
-                    k[s][r] += weight * (b[0][s] * db[0] + b[1][s] * db[1] + b[2][s] * db[2]);
-                }
-            }
-        }
-    }
-    k
-}
-
 /// One solve with given contact forces (the strengths are mu times them).
 struct Continuum<'a> {
     grid: &'a Grid,
@@ -414,11 +330,12 @@ impl<'a> Continuum<'a> {
     fn new(grid: &'a Grid, params: &'a PlateParams, contact: &[f64]) -> Continuum<'a> {
         let n = 2 * grid.nodes;
         let mut stiffness = SymmetricBand::zeros(n, grid.bandwidth);
+        let elasticity = plane_strain(params.youngs_modulus, params.poisson);
         for ex in 0..grid.elements_x() {
             let width = grid.xs[ex + 1] - grid.xs[ex];
             for ey in 0..grid.elements_y() {
                 let height = grid.ys[ey + 1] - grid.ys[ey];
-                let k = q8_stiffness(width, height, params.youngs_modulus, params.poisson);
+                let k = q8_stiffness(width, height, &elasticity);
                 let dofs = grid.element_dofs(ex, ey);
                 for a in 0..16 {
                     for b in 0..16 {
@@ -585,40 +502,6 @@ impl Discretized for Continuum<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn shape_functions_interpolate_and_sum_to_one() {
-        for (k, &(a, b)) in Q8_NATURAL.iter().enumerate() {
-            let (n, _) = q8(a, b);
-            for (m, value) in n.iter().enumerate() {
-                assert!((value - if m == k { 1.0 } else { 0.0 }).abs() < 1e-14);
-            }
-        }
-        let (n, d) = q8(0.3, -0.7);
-        assert!((n.iter().sum::<f64>() - 1.0).abs() < 1e-14);
-        assert!(d.iter().map(|g| g[0]).sum::<f64>().abs() < 1e-14);
-    }
-
-    #[test]
-    fn element_stiffness_has_three_rigid_modes() {
-        let k = q8_stiffness(2.0, 0.5, 1000.0, 0.3);
-        let nodes: Vec<(f64, f64)> = Q8_NATURAL.iter().map(|&(a, b)| (a, 0.25 * b)).collect();
-        // Translations along x and y, and a small rotation about the element's centre.
-        for mode in 0..3 {
-            let u: Vec<f64> = nodes
-                .iter()
-                .flat_map(|&(x, y)| match mode {
-                    0 => [1.0, 0.0],
-                    1 => [0.0, 1.0],
-                    _ => [-y, x],
-                })
-                .collect();
-            for row in &k {
-                let f: f64 = row.iter().zip(&u).map(|(a, b)| a * b).sum();
-                assert!(f.abs() < 1e-9, "{f}");
-            }
-        }
-    }
 
     #[test]
     fn frictionless_plate_expands_as_plane_strain_predicts() {
