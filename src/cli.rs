@@ -98,8 +98,15 @@ pub enum Command {
         continuum: bool,
     },
     /// Clamped double-lap joint at one force: F_1 (and where), F_2, F_gross, Delta and both
-    /// sliding zones for both laws, regimes.
-    Lap(PointArgs),
+    /// sliding zones for both laws, regimes, the shear-lag theory's envelope.
+    Lap {
+        #[command(flatten)]
+        point: PointArgs,
+        /// Also solve the 2-D plane-stress continuum (done anyway when the shear-lag theory is
+        /// not expected within 2 %).
+        #[arg(long)]
+        continuum: bool,
+    },
     /// Tables over a parameter range, as CSV or JSON.
     #[command(subcommand)]
     Sweep(SweepCommand),
@@ -954,11 +961,27 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 )?;
             }
         }
-        Some(Command::Lap(args)) => {
+        Some(Command::Lap {
+            point: args,
+            continuum,
+        }) => {
             let (name, joint, force) = load_lap(&args.inputs, "lap")?;
+            let solved = (*continuum
+                || joint.validity(force).validity != crate::kernel::validity::Validity::Holds)
+                .then(|| {
+                    crate::problems::lap::solve_lap_continuum(
+                        joint.params(),
+                        force.newtons(),
+                        crate::problems::lap::LapContinuumMesh::default(),
+                    )
+                });
             match args.format {
-                ReportFormat::Text => out.write_all(text::lap(&name, &joint, force).as_bytes())?,
-                ReportFormat::Json => write_json(out, &json::lap(&name, &joint, force))?,
+                ReportFormat::Text => {
+                    out.write_all(text::lap(&name, &joint, force, solved.as_ref()).as_bytes())?
+                }
+                ReportFormat::Json => {
+                    write_json(out, &json::lap(&name, &joint, force, solved.as_ref()))?
+                }
             }
         }
         Some(Command::Sweep(SweepCommand::Lap(args))) => run_lap_sweep(out, args)?,

@@ -10,9 +10,9 @@ use crate::chart::{
 use crate::kernel::format::{number, number_with};
 use crate::kernel::regime::Law;
 use crate::numeric::{MeshDensity, NumericError};
-use crate::problems::lap::LapFe;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::lap::cycle::LapCycle;
+use crate::problems::lap::{LapContinuumMesh, LapFe, solve_lap_continuum_path};
 use crate::study::curves::Spacing;
 use crate::study::lap as curves;
 
@@ -158,7 +158,10 @@ pub(crate) fn lap_plot(
 /// The project's finite-element points for a lap chart: the discretized solver (`LapFe`, which
 /// never calls the closed forms) loaded monotonically through the chart's forces, round the same
 /// cycle as the loop, or to the current force for tau(x); None for D vs F_a (a closed-form
-/// integral of the loop).
+/// integral of the loop). Beside them, on Delta, the zones, tau(x) and s(x), the 2-D
+/// plane-stress continuum ([`solve_lap_continuum_path`], (L13)): the answer without the
+/// shear-lag theory's assumptions, where its envelope (L14) says they fail. Where the continuum
+/// refuses the joint (an interface too stiff for it) its series is empty: a gap, not an error.
 pub(crate) fn lap_numeric_points(
     joint: &LapJoint,
     force: JointForce,
@@ -166,12 +169,16 @@ pub(crate) fn lap_numeric_points(
     density: MeshDensity,
     count: usize,
 ) -> Result<Option<NumericPoints>, NumericError> {
-    let points = |points: Vec<(f64, f64)>| {
+    let with_continuum = |points: Vec<(f64, f64)>, continuum: Vec<(f64, f64)>| {
         Ok(Some(NumericPoints {
             points,
-            continuum: Vec::new(),
+            continuum,
             failed: 0,
         }))
+    };
+    let points = |points: Vec<(f64, f64)>| with_continuum(points, Vec::new());
+    let continuum_at = |forces: &[f64]| {
+        solve_lap_continuum_path(joint.params(), forces, LapContinuumMesh::default())
     };
     let mut fe = LapFe::new(joint.params(), density);
     let length = joint.params().length;
@@ -179,9 +186,9 @@ pub(crate) fn lap_numeric_points(
         LapChart::Displacement | LapChart::Zones => {
             // Up to just below F_gross, where the solver (and the joint) stops.
             let top = 0.98 * force_range(joint, None);
+            let forces: Vec<f64> = (1..=count).map(|i| top * i as f64 / count as f64).collect();
             let mut found = Vec::with_capacity(2 * count);
-            for i in 1..=count {
-                let f = top * i as f64 / count as f64;
+            for &f in &forces {
                 fe.load_to(f, 2)?;
                 if chart == LapChart::Displacement {
                     found.push((f, fe.joint_displacement()));
@@ -190,11 +197,39 @@ pub(crate) fn lap_numeric_points(
                     found.extend([(f, a), (f, length - d)]);
                 }
             }
-            points(found)
+            let continuum = continuum_at(&forces).map_or_else(
+                |_| Vec::new(),
+                |states| {
+                    states
+                        .iter()
+                        .flat_map(|c| {
+                            if chart == LapChart::Displacement {
+                                vec![(c.force, c.delta)]
+                            } else {
+                                let zones = c.nominal_zones;
+                                vec![
+                                    (c.force, zones.from_inner_end),
+                                    (c.force, length - zones.from_cover_ends),
+                                ]
+                            }
+                        })
+                        .collect()
+                },
+            );
+            with_continuum(found, continuum)
         }
         LapChart::Shear | LapChart::Slip => {
-            fe.load_to(force.newtons().min(0.98 * joint.gross_slip_force()), 4)?;
-            points(
+            let at = force.newtons().min(0.98 * joint.gross_slip_force());
+            fe.load_to(at, 4)?;
+            let continuum = continuum_at(&[at]).map_or_else(
+                |_| Vec::new(),
+                |mut states| match states.pop() {
+                    Some(state) if chart == LapChart::Shear => state.shear,
+                    Some(state) => state.slip,
+                    None => Vec::new(),
+                },
+            );
+            with_continuum(
                 (0..=40)
                     .map(|i| {
                         let x = length * f64::from(i) / 40.0;
@@ -206,6 +241,7 @@ pub(crate) fn lap_numeric_points(
                         (x, y)
                     })
                     .collect(),
+                continuum,
             )
         }
         LapChart::Loop => {

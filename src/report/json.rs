@@ -33,8 +33,13 @@ pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> Value {
 }
 
 /// Lap-joint report at one force.
-pub fn lap(preset: &str, joint: &LapJoint, force: JointForce) -> Value {
-    to_json(&LapReport::new(preset, joint, force))
+pub fn lap(
+    preset: &str,
+    joint: &LapJoint,
+    force: JointForce,
+    continuum: Option<&Result<crate::problems::lap::ContinuumLap, crate::numeric::NumericError>>,
+) -> Value {
+    to_json(&LapReport::new(preset, joint, force, continuum))
 }
 
 /// One cycle of the lap joint, both laws.

@@ -10,6 +10,7 @@ use super::point::plate::PlateReport;
 use super::point::solve::SolveReport;
 use super::point::stiffness::StiffnessReport;
 use crate::numeric::NumericError;
+use crate::problems::lap::ContinuumLap;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::plate::ContinuumPlate;
 use crate::study::curves::StiffnessComparison;
@@ -21,8 +22,13 @@ pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
 }
 
 /// Lap-joint report at one force.
-pub fn lap(preset: &str, joint: &LapJoint, force: JointForce) -> String {
-    LapReport::new(preset, joint, force).text()
+pub fn lap(
+    preset: &str,
+    joint: &LapJoint,
+    force: JointForce,
+    continuum: Option<&Result<ContinuumLap, NumericError>>,
+) -> String {
+    LapReport::new(preset, joint, force, continuum).text()
 }
 
 /// One cycle of the lap joint, both laws.

@@ -9,7 +9,9 @@ use super::{InputsReport, regime_label, validity_label};
 use crate::Regime;
 use crate::kernel::regime::Law;
 use crate::kernel::validity::Validity;
+use crate::numeric::NumericError;
 use crate::problems::inputs::Inputs;
+use crate::problems::lap::ContinuumLap;
 use crate::problems::lap::closed_form::{JointForce, LapJoint, LapParams};
 use crate::problems::lap::cycle::LapCycle;
 use crate::problems::stiffness::mm_to_um;
@@ -60,6 +62,70 @@ pub struct LapReport {
     pub coulomb: LapLaw,
     pub regularized: LapLaw,
     pub shear_lag: ShearLagReport,
+    /// The 2-D plane-stress continuum at the same force (L13), when it was solved (asked for, or
+    /// where the shear-lag theory is not expected within 2 %).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub continuum: Option<LapContinuumReport>,
+}
+
+/// The 2-D plane-stress continuum's answer (L13), or why there is none.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum LapContinuumReport {
+    Solved(LapContinuumSolved),
+    Failed {
+        /// Why the continuum solver gave no answer.
+        error: String,
+    },
+}
+
+/// What the continuum gives where the shear-lag theory assumes.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct LapContinuumSolved {
+    /// Delta (mm): thickness means, from the clamped state, as the closed form's.
+    #[serde(rename = "Delta_mm")]
+    pub joint_displacement: f64,
+    /// (continuum - shear lag) / shear lag for Delta.
+    pub diff_vs_shear_lag: Option<f64>,
+    /// The sliding zones where K_T |s| >= mu P (the closed form's definition) (mm).
+    #[serde(rename = "a_mm")]
+    pub slide_at_inner_end: f64,
+    #[serde(rename = "d_mm")]
+    pub slide_at_cover_ends: f64,
+    /// The least and largest contact pressure over the overlap (MPa): P in the theory.
+    #[serde(rename = "contact_pressure_min_MPa")]
+    pub pressure_min: f64,
+    #[serde(rename = "contact_pressure_max_MPa")]
+    pub pressure_max: f64,
+    /// Node pairs whose faces would open (held by the tie, without friction).
+    pub separated_pairs: usize,
+}
+
+impl LapContinuumReport {
+    fn new(solved: &Result<ContinuumLap, NumericError>, shear_lag: f64) -> LapContinuumReport {
+        match solved {
+            Err(e) => LapContinuumReport::Failed {
+                error: e.to_string(),
+            },
+            Ok(c) => {
+                let (pressure_min, pressure_max) = c
+                    .contact_pressure
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(_, p)| {
+                        (lo.min(p), hi.max(p))
+                    });
+                LapContinuumReport::Solved(LapContinuumSolved {
+                    joint_displacement: c.delta,
+                    diff_vs_shear_lag: (shear_lag != 0.0).then(|| c.delta / shear_lag - 1.0),
+                    slide_at_inner_end: c.nominal_zones.from_inner_end,
+                    slide_at_cover_ends: c.nominal_zones.from_cover_ends,
+                    pressure_min,
+                    pressure_max,
+                    separated_pairs: c.separated.len(),
+                })
+            }
+        }
+    }
 }
 
 /// One law's answer.
@@ -90,7 +156,13 @@ pub struct ShearLagReport {
 }
 
 impl LapReport {
-    pub fn new(preset: &str, joint: &LapJoint, force: JointForce) -> LapReport {
+    /// The report of `joint` at `force`, with the continuum's answer when it was solved.
+    pub fn new(
+        preset: &str,
+        joint: &LapJoint,
+        force: JointForce,
+        continuum: Option<&Result<ContinuumLap, NumericError>>,
+    ) -> LapReport {
         let row = lap_point(joint, force);
         let p = joint.params();
         let decay_length = 1.0 / joint.decay_rate();
@@ -129,6 +201,7 @@ impl LapReport {
                 validity: Validity::NotCalibrated,
                 note: SHEAR_LAG_NOTE,
             },
+            continuum: continuum.map(|c| LapContinuumReport::new(c, row.delta_regularized)),
         }
     }
 
@@ -226,6 +299,39 @@ impl LapReport {
             number_with(v.decay_length_over_thickness, 3),
             v.validity.label()
         );
+        match &self.continuum {
+            None => {}
+            Some(LapContinuumReport::Failed { error }) => {
+                let _ = writeln!(out, "2-D continuum (L13): no answer: {}", sanitize(error));
+            }
+            Some(LapContinuumReport::Solved(c)) => {
+                let pressure = match self.inputs.0 {
+                    Inputs::Lap { structure, .. } => structure.pressure,
+                    Inputs::Beam { .. } | Inputs::Plate(_) => f64::NAN,
+                };
+                let _ = writeln!(
+                    out,
+                    "2-D continuum (plane stress, nu = 0.3, docs/theory.md (L13); within 0.02 % of CalculiX)\n  \
+                     Delta = {} mm ({} vs shear lag); a = {} mm, d = {} mm (K_T |s| >= mu P)\n  \
+                     contact pressure {} to {} MPa over the overlap (the theory's P: {} MPa)",
+                    number(c.joint_displacement),
+                    c.diff_vs_shear_lag
+                        .map_or_else(|| "n/a".to_string(), crate::report::compare::percent),
+                    number(c.slide_at_inner_end),
+                    number(c.slide_at_cover_ends),
+                    number_with(c.pressure_min, 3),
+                    number_with(c.pressure_max, 3),
+                    number(pressure)
+                );
+                if c.separated_pairs > 0 {
+                    let _ = writeln!(
+                        out,
+                        "  {} interface node pairs would open: held by the tie, without friction",
+                        c.separated_pairs
+                    );
+                }
+            }
+        }
         out
     }
 }

@@ -103,7 +103,10 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
         Model::Plate(_) => "Regime (i explains)".to_string(),
         // The shear-lag envelope (L14): the expected difference from a plane-stress continuum.
         Model::Lap { joint, force } => {
-            format!("Regime (i), {}", super::super::brief::lap_validity_title(&joint.validity(*force)))
+            format!(
+                "Regime (i), {}",
+                super::super::brief::lap_validity_title(&joint.validity(*force))
+            )
         }
     };
     let mut block = pane(app, &title);
