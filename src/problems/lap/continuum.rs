@@ -15,7 +15,7 @@
 //!   (u_x = u_y = 0); the inner plate runs over [0, L + H] and is pulled at x = L + H by the
 //!   uniform traction F / (b t1) (consistent nodal loads); the pressure P acts on the cover's
 //!   outer face over [0, L] only;
-//! - 8-node quadrilaterals (Q8, 3 x 3 Gauss points, [`crate::numeric::q8`]) in both bodies,
+//! - 8-node quadrilaterals (Q8, 3 x 3 Gauss points, `numeric::q8`) in both bodies,
 //!   `layers` of them through the inner half thickness and as many through the cover, graded
 //!   along x toward both overlap ends exactly as the deck grades its mesh (finest min(2/3 layer,
 //!   1/(4 lambda)), coarsest min(8/3 layer, 1/(2 lambda)), growth 1.15);
@@ -45,7 +45,7 @@
 //! about 6 MPa at x = L and rises to 11-14 MPa at x = 0 on the bundled joint), so each increment
 //! is solved at its own contact forces: a fixed point on them (solve with given strengths, take
 //! the contact forces, repeat), each solve a Newton iteration with the shared driver
-//! ([`crate::numeric::newton`]), from the history committed at the end of the previous
+//! (`numeric::newton`), from the history committed at the end of the previous
 //! increment.
 //!
 //! **Speed.** The only nonlinearity sits on the interface, so the elastic bodies are condensed
