@@ -228,8 +228,8 @@ def lap_rows(microslip, workdir, lines, timings, failures):
                  f"{100 * LAP_TOLERANCE:g} % where it gives no bound; a and d within "
                  f"{X_ELEMENTS:g} elements; the same regime.\n")
     lines.append("| case | F (N) | Delta ccx (mm) | Delta closed (mm) | diff | envelope | a ccx | "
-                 "a closed | d ccx | d closed | regime |")
-    lines.append("|---|---|---|---|---|---|---|---|---|---|---|")
+                 "a closed | d ccx | d closed | regime | microslip 2-D continuum (vs ccx) |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
     data, deck, wall, cpu = run_case(microslip, workdir, "lap", "lap", args)
     timings.append((f"lap, {name}", wall, cpu))
     breaks = interface_breaks(deck, "IFINNER")
@@ -251,11 +251,20 @@ def lap_rows(microslip, workdir, lines, timings, failures):
             if abs(fe - closed) > allowed:
                 failures.append(f"lap {name}, F = {row['F_N']:g} N: {zone} = {fe:.3f} mm in "
                                 f"CalculiX, {closed:.3f} mm closed form (allowed {allowed:.3f} mm)")
+        # The project's own plane-stress continuum (L13) against CalculiX: within 1 %.
+        continuum = json.loads(subprocess.run(
+            [microslip, "lap", *args, "--set", f"F={row['F_N']!r}", "--continuum", "--format",
+             "json"], check=True, capture_output=True, text=True).stdout)["continuum"]
+        against = continuum["Delta_mm"] / row["Delta_fe_mm"] - 1
+        if abs(against) > CONTINUUM_TOLERANCE:
+            failures.append(f"lap {name}, F = {row['F_N']:g} N: continuum Delta "
+                            f"{continuum['Delta_mm']:.5g} vs CalculiX {row['Delta_fe_mm']:.5g}")
         lines.append(f"| {name} | {row['F_N']:.4g} | {row['Delta_fe_mm']:.6g} | "
                      f"{row['Delta_mm']:.6g} | {pct(diff)} | "
                      + ("not calibrated | " if bound is None else f"{100 * bound:.2g} % | ")
                      + f"{row['a_fe_mm']:.3g} | {row['a_mm']:.3g} | {row['d_fe_mm']:.3g} | "
-                     f"{row['d_mm']:.3g} | {row['regime']} |")
+                     f"{row['d_mm']:.3g} | {row['regime']} | {continuum['Delta_mm']:.6g} "
+                     f"({100 * against:+.3f} %) |")
 
     loads = lap_default_loads(microslip, args)
     # Load-path convergence: the first LAP_INCREMENT_LOADS loads at half the default step.
