@@ -91,7 +91,7 @@ fn lap_views() {
         "a 0.989 d 3.85 mm sliding",
         "Delta regularized 0.0140117 mm",
         "D 2.08 N mm zeta 0.00789",
-        "FE: not calibrated",
+        "FE within 3.4 %",
     ] {
         assert!(small.contains(needed), "{needed}\n{small}");
     }

@@ -1,10 +1,24 @@
-//! How far the joint's 1-D shear-lag theory holds: its expected difference from a plane-stress
-//! continuum, as numbers. The theory assumes each plate's axial strain uniform through its
-//! thickness and the contact pressure equal to P; both fail when the interface shear decays over
-//! a length comparable to the thicknesses (stiff interfaces, thick plates) and where the covers
-//! bend (docs/theory.md, (L12) and (L14)).
+//! How far the joint's 1-D shear-lag theory holds (L14): its expected difference from a
+//! plane-stress continuum, as numbers. The theory assumes each plate's axial strain uniform
+//! through its thickness and the contact pressure equal to P. A CalculiX grid of 22 joints (16 to
+//! fit, 6 held out, 74 states; docs/theory.md (L14), `validation/calculix/lap/ENVELOPE.md`) found
+//! three ways that fails, each with a size computable from the inputs:
+//!
+//! - the plates' through-thickness shear compliance, in series with the interface's: r, the
+//!   change of the closed form's Delta when K_T is replaced by K_eff,
+//!   1/K_eff = 1/K_T + t1/(6 G1) + t2/(3 G2) (L12);
+//! - the clamping prestress of dissimilar plates: P alone stretches them by nu P/E1 and nu P/E2,
+//!   and the mismatch locks in an interface shear before any F. q_p = min(m, 1) min(1, 1/(lambda
+//!   L)), with m = nu K_T |1/E1 - 1/E2| tanh(lambda L/2) / (lambda mu) the slip the mismatch
+//!   demands at an end over the saturation slip;
+//! - the covers bending under the eccentric interface shear, so that the contact pressure is not
+//!   P: beta = mu (t1/2 + t2) / L.
+//!
+//! The joint's keys have no Poisson ratio; the envelope, like the deck and the continuum solver,
+//! takes nu = [`LAP_POISSON`] = 0.3.
 
 use super::closed_form::{JointForce, LapJoint};
+use super::continuum::LAP_POISSON;
 use crate::kernel::validity::Validity;
 
 /// The shear-lag theory's envelope for one joint at one force.
@@ -13,23 +27,193 @@ pub struct LapValidity {
     /// The decay length of the interface shear over the thicker plate, (1/lambda) / max(t1, t2):
     /// small values are where uniform strain through the thickness is doubtful.
     pub decay_over_thickness: f64,
-    /// The bound on |Delta continuum / Delta closed form - 1|, a fraction; `None` where no
-    /// calibration reaches.
+    /// r = |Delta(K_eff) / Delta(K_T) - 1|: the plates' shear compliance.
+    pub shear_compliance: f64,
+    /// q_p: the clamping prestress of dissimilar plates (0 for equal moduli).
+    pub clamping_prestress: f64,
+    /// beta = mu (t1/2 + t2) / L: the covers' bending.
+    pub cover_bending: f64,
+    /// The bound on |Delta continuum / Delta closed form - 1|, a fraction; `None` where the
+    /// calibration does not reach ([`LapValidity::outside_calibration`] says why).
     pub expected_error: Option<f64>,
     /// The level of that bound.
     pub validity: Validity,
+    /// Which calibrated range the joint leaves, when it does.
+    pub outside_calibration: Option<&'static str>,
+}
+
+/// The bound's coefficients on (r, q_p, beta, 1), fitted by a linear programme to the 54
+/// in-domain calibration states (each bound at or above its measured |error|) and rounded up:
+/// `ENVELOPE.md`, section 7.
+const COEFFICIENTS: [f64; 4] = [1.0, 2.0, 0.36, 0.013];
+/// The margin over the fitted bound: the hold-out joints exceeded it by up to 2.5 % of itself
+/// (an E2 = 3 E1 joint in a sliding state) and the shortest joint by 8 %; with the margin every
+/// hold-out state is under it (largest ratio 0.82 in the domain). The margin was chosen after
+/// seeing the hold-outs, so it is not independently tested (docs/theory.md (L14)).
+const MARGIN: f64 = 1.25;
+
+/// The calibrated ranges, each with what a joint outside it is told. `lambda L`: shorter
+/// overlaps (a thick cover on a short joint) were measured off by up to 236 %, the contact
+/// opening at x = 0; `beta`: the same corner.
+const MIN_LAMBDA_L: f64 = 1.4;
+const MAX_BETA: f64 = 0.30;
+const LAMBDA_T1: (f64, f64) = (0.09, 4.7);
+const COVER_OVER_INNER_THICKNESS: (f64, f64) = (0.3, 2.0);
+const COVER_OVER_INNER_MODULUS: (f64, f64) = (1.0, 3.0);
+/// The highest load level of the grid: 0.9 F_gross.
+const MAX_LOAD_FRACTION: f64 = 0.9;
+
+/// Relative slack on each range's ends, so that a joint on a grid node is inside.
+const SLACK: f64 = 1e-9;
+
+fn within((lo, hi): (f64, f64), x: f64) -> bool {
+    x >= lo * (1.0 - SLACK) && x <= hi * (1.0 + SLACK)
 }
 
 impl LapJoint {
-    /// Where the shear-lag theory stands for this joint at `force` (L14).
+    /// Where the shear-lag theory stands for this joint at `force` (L14): the bound
+    /// 1.25 (r + 2.0 q_p + 0.36 beta + 0.013) on Delta's difference from a continuum, inside
+    /// the calibrated ranges.
     pub fn validity(&self, force: JointForce) -> LapValidity {
-        let _ = force;
         let p = self.params();
+        let lambda = self.decay_rate();
+        let shear_modulus = |e: f64| e / (2.0 * (1.0 + LAP_POISSON));
+        let shear_compliance = p.inner_thickness / (6.0 * shear_modulus(p.inner_modulus))
+            + p.cover_thickness / (3.0 * shear_modulus(p.cover_modulus));
+        let k_eff = 1.0 / (1.0 / p.tangential_stiffness + shear_compliance);
+        let delta = self.regularized(force).joint_displacement();
+        let r = match self.with_tangential_stiffness(k_eff) {
+            Ok(softer) if delta > 0.0 => {
+                (softer.regularized(force).joint_displacement() / delta - 1.0).abs()
+            }
+            // At F = 0 there is no Delta to be off; K_eff in range whenever K_T is.
+            _ => 0.0,
+        };
+        let lambda_l = lambda * p.length;
+        let mismatch = LAP_POISSON
+            * p.tangential_stiffness
+            * (1.0 / p.inner_modulus - 1.0 / p.cover_modulus).abs()
+            * (0.5 * lambda_l).tanh()
+            / (lambda * p.friction);
+        let q_p = mismatch.min(1.0) * (1.0 / lambda_l).min(1.0);
+        let beta = p.friction * (0.5 * p.inner_thickness + p.cover_thickness) / p.length;
+        let outside_calibration = if lambda_l < MIN_LAMBDA_L * (1.0 - SLACK) {
+            Some("lambda L below 1.4 (a short overlap: the covers lift off)")
+        } else if beta > MAX_BETA * (1.0 + SLACK) {
+            Some("mu (t1/2 + t2) / L above 0.3 (the covers bend)")
+        } else if !within(LAMBDA_T1, lambda * p.inner_thickness) {
+            Some("lambda t1 outside 0.09 to 4.7")
+        } else if !within(
+            COVER_OVER_INNER_THICKNESS,
+            p.cover_thickness / p.inner_thickness,
+        ) {
+            Some("t2/t1 outside 0.3 to 2")
+        } else if !within(COVER_OVER_INNER_MODULUS, p.cover_modulus / p.inner_modulus) {
+            Some("E2/E1 outside 1 to 3")
+        } else if force.newtons() > MAX_LOAD_FRACTION * self.gross_slip_force() * (1.0 + SLACK) {
+            Some("F above 0.9 F_gross")
+        } else {
+            None
+        };
+        let [c_r, c_p, c_b, c_0] = COEFFICIENTS;
+        let expected_error = outside_calibration
+            .is_none()
+            .then_some(MARGIN * (c_r * r + c_p * q_p + c_b * beta + c_0));
         LapValidity {
-            decay_over_thickness: 1.0
-                / (self.decay_rate() * p.inner_thickness.max(p.cover_thickness)),
-            expected_error: None,
-            validity: Validity::NotCalibrated,
+            decay_over_thickness: 1.0 / (lambda * p.inner_thickness.max(p.cover_thickness)),
+            shear_compliance: r,
+            clamping_prestress: q_p,
+            cover_bending: beta,
+            expected_error,
+            validity: expected_error.map_or(Validity::NotCalibrated, Validity::of_error),
+            outside_calibration,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::problems::lap::params::LapParams;
+
+    fn joint(change: impl Fn(&mut LapParams)) -> LapJoint {
+        let mut p = LapParams::ALUMINIUM;
+        change(&mut p);
+        LapJoint::new(p).unwrap()
+    }
+
+    #[test]
+    fn the_bundled_joint_is_approximate_and_its_terms_are_the_calibrations() {
+        // ENVELOPE.md's joint C05 (the bundled joint): r = 0.61 % at 2342 N, q_p = 0 (equal
+        // moduli), beta = 0.3 x 3.5 / 40 = 0.02625.
+        let j = joint(|_| {});
+        let v = j.validity(j.force(2342.1342).unwrap());
+        assert!((v.shear_compliance - 0.0061).abs() < 0.0002, "{v:?}");
+        assert_eq!(v.clamping_prestress, 0.0);
+        assert!((v.cover_bending - 0.02625).abs() < 1e-12);
+        let bound = v.expected_error.unwrap();
+        assert!(
+            (bound - 1.25 * (v.shear_compliance + 0.36 * 0.02625 + 0.013)).abs() < 1e-12,
+            "{bound}"
+        );
+        // CalculiX measured +1.18 % there: under the bound, which is above 2 %.
+        assert!(bound > Validity::HOLDS, "{bound}");
+        assert_eq!(v.validity, Validity::Approximate);
+    }
+
+    #[test]
+    fn each_calibrated_range_is_enforced() {
+        let at = |j: &LapJoint, f: f64| j.validity(j.force(f).unwrap());
+        let bundled = joint(|_| {});
+        assert!(at(&bundled, 5400.0).expected_error.is_some());
+        assert_eq!(
+            at(&bundled, 5500.0).outside_calibration,
+            Some("F above 0.9 F_gross")
+        );
+        let short = joint(|p| p.length = 5.0);
+        assert!(at(&short, 100.0).outside_calibration.is_some());
+        let soft_covers = joint(|p| p.cover_modulus = 35_000.0);
+        assert_eq!(
+            at(&soft_covers, 1000.0).outside_calibration,
+            Some("E2/E1 outside 1 to 3")
+        );
+        let stiff = joint(|p| p.tangential_stiffness = 1e7);
+        assert_eq!(
+            at(&stiff, 1000.0).validity,
+            Validity::NotCalibrated,
+            "lambda t1 = 39"
+        );
+    }
+
+    #[test]
+    fn dissimilar_plates_pay_for_the_clamping_prestress() {
+        // Steel covers (E2 = 3 E1): m = nu K_T (1/E1 - 1/E2) tanh(lambda L / 2) / (lambda mu).
+        let steel = joint(|p| p.cover_modulus = 210_000.0);
+        let force = steel.force(1000.0).unwrap();
+        let v = steel.validity(force);
+        let p = steel.params();
+        let lambda = steel.decay_rate();
+        let m = 0.3
+            * p.tangential_stiffness
+            * (1.0 / 70_000.0 - 1.0 / 210_000.0)
+            * (0.5 * lambda * p.length).tanh()
+            / (lambda * p.friction);
+        let expected = m.min(1.0) * (1.0 / (lambda * p.length)).min(1.0);
+        assert!((v.clamping_prestress - expected).abs() < 1e-12);
+        assert!(v.clamping_prestress > 0.0);
+        let same = joint(|_| {}).validity(force);
+        assert!(v.expected_error.unwrap() > same.expected_error.unwrap());
+    }
+
+    #[test]
+    fn stiffer_interfaces_are_expected_further_off() {
+        // r grows with K_T: the plates' shear compliance is a larger share of the interface's.
+        let mut last = 0.0;
+        for kt in [100.0, 1e3, 1e4, 1e5] {
+            let j = joint(|p| p.tangential_stiffness = kt);
+            let v = j.validity(j.force(500.0).unwrap());
+            assert!(v.shear_compliance > last, "K_T {kt}: {v:?}");
+            last = v.shear_compliance;
         }
     }
 }

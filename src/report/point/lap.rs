@@ -18,11 +18,11 @@ use crate::problems::stiffness::mm_to_um;
 use crate::report::{number, number_with, sanitize};
 use crate::study::lap::lap_point;
 
-/// What the shear-lag theory's numbers can be trusted for, said wherever they are shown until
-/// its envelope against a continuum model is measured (issue 24, item 6).
+/// What the shear-lag theory assumes and where its envelope comes from, said wherever its
+/// numbers are shown.
 pub(crate) const SHEAR_LAG_NOTE: &str = "shear-lag theory (each plate strained uniformly through \
-     its thickness): its envelope against a continuum model is not measured yet; it fails when \
-     the decay length 1/lambda is comparable to t1 or t2";
+     its thickness, contact pressure P); its envelope (docs/theory.md (L14)) bounds Delta's \
+     difference from a plane-stress continuum (nu = 0.3), measured against CalculiX on 22 joints";
 
 /// The lap-joint report at one force.
 #[derive(Debug, Clone, Serialize)]
@@ -152,6 +152,16 @@ pub struct ShearLagReport {
     pub decay_length_over_thickness: f64,
     #[serde(serialize_with = "validity_label")]
     pub validity: Validity,
+    /// The envelope's bound on Delta's difference from a continuum, a fraction; null where the
+    /// calibration does not reach.
+    pub expected_error: Option<f64>,
+    /// Which calibrated range the joint leaves (null inside them).
+    pub outside_calibration: Option<&'static str>,
+    /// The envelope's three terms: the plates' shear compliance r, the clamping prestress q_p
+    /// of dissimilar plates, the covers' bending beta (L14).
+    pub shear_compliance: f64,
+    pub clamping_prestress: f64,
+    pub cover_bending: f64,
     pub note: &'static str,
 }
 
@@ -195,11 +205,18 @@ impl LapReport {
                 row.delta_regularized,
                 row.zones_regularized,
             ),
-            shear_lag: ShearLagReport {
-                decay_length_over_thickness: decay_length
-                    / p.inner_thickness.max(p.cover_thickness),
-                validity: Validity::NotCalibrated,
-                note: SHEAR_LAG_NOTE,
+            shear_lag: {
+                let v = joint.validity(force);
+                ShearLagReport {
+                    decay_length_over_thickness: v.decay_over_thickness,
+                    validity: v.validity,
+                    expected_error: v.expected_error,
+                    outside_calibration: v.outside_calibration,
+                    shear_compliance: v.shear_compliance,
+                    clamping_prestress: v.clamping_prestress,
+                    cover_bending: v.cover_bending,
+                    note: SHEAR_LAG_NOTE,
+                }
             },
             continuum: continuum.map(|c| LapContinuumReport::new(c, row.delta_regularized)),
         }
@@ -292,12 +309,26 @@ impl LapReport {
              Delta = u_inner(L) - u_cover(0))"
         );
         let v = &self.shear_lag;
+        let verdict = match (v.expected_error, v.outside_calibration) {
+            (Some(e), _) => format!(
+                "Delta within {} % of a continuum ({})",
+                number_with(100.0 * e, 2),
+                v.validity.label()
+            ),
+            (None, why) => format!(
+                "not calibrated here ({}): use the 2-D continuum",
+                why.unwrap_or("no calibration reaches")
+            ),
+        };
         let _ = writeln!(
             out,
-            "Theory: {}\n  here 1/lambda = {} x the thicker plate: {}",
+            "Theory: {}\n  here: {verdict}; terms: plates' shear r = {} %, clamping prestress q_p = \
+             {}, cover bending beta = {}; 1/lambda = {} x the thicker plate",
             v.note,
+            number_with(100.0 * v.shear_compliance, 2),
+            number_with(v.clamping_prestress, 2),
+            number_with(v.cover_bending, 2),
             number_with(v.decay_length_over_thickness, 3),
-            v.validity.label()
         );
         match &self.continuum {
             None => {}
