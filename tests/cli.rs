@@ -2188,7 +2188,8 @@ fn the_lap_joint_from_the_command_line() {
         "F_1        = 2015.89 N",
         "at x = L (covers' ends)",
         "macroslip+microslip+macroslip",
-        "not calibrated",
+        "Delta within 3.4 % of a continuum (approximate)",
+        "2-D continuum (plane stress, nu = 0.3",
     ] {
         assert!(text.contains(needed), "{needed}\n{text}");
     }

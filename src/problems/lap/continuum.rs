@@ -66,9 +66,7 @@ use crate::numeric::mesh::graded_toward_end;
 use crate::numeric::newton::{self, Discretized};
 use crate::numeric::q8::{EDGE_WEIGHTS, Elasticity, Q8, plane_stress, q8_stiffness};
 
-/// Poisson's ratio of both plates (the deck's, `microslip deck ccx lap`): the joint's keys have
-/// none, as the 1-D theory needs none.
-pub const LAP_POISSON: f64 = 0.3;
+pub use super::params::LAP_POISSON;
 
 /// Growth ratio of neighbouring elements along x (the deck's).
 const GROWTH: f64 = 1.15;

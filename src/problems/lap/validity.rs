@@ -18,7 +18,7 @@
 //! takes nu = [`LAP_POISSON`] = 0.3.
 
 use super::closed_form::{JointForce, LapJoint};
-use super::continuum::LAP_POISSON;
+use super::params::LAP_POISSON;
 use crate::kernel::validity::Validity;
 
 /// The shear-lag theory's envelope for one joint at one force.
