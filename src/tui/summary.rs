@@ -177,7 +177,23 @@ fn lap_lines(
             "K_T in the unit some FE codes use: 1 MPa/um = 1000 MPa/mm",
         )
         .dropped(1),
+        plain(
+            format!("shear lag {}", lap_validity_words(&joint.validity(force))),
+            "the closed forms strain each plate uniformly through its thickness under a contact \
+             pressure P; this bounds how far a 2-D continuum's Delta differs (docs/theory.md \
+             (L14), measured against CalculiX on 22 joints; the title gives the bound); where \
+             it fails, n draws the continuum (microslip lap --continuum)",
+        )
+        .dropped(1),
     ]
+}
+
+/// The envelope's level in a few words, for the regime pane's line.
+fn lap_validity_words(v: &crate::problems::lap::LapValidity) -> String {
+    match v.outside_calibration {
+        Some(_) => "not calibrated".to_string(),
+        None => v.validity.label().to_string(),
+    }
 }
 
 /// The lines of the regime pane for `model`; `continuum`: the plate's 2-D continuum u(L).
