@@ -1,6 +1,6 @@
 //! The shear-lag theory's envelope (docs/theory.md (L14)) against the CalculiX measurements it was
 //! fitted on and held out from (`tests/data/calculix/lap-envelope.csv`: 22 joints, 74 states,
-//! measured by `validation/calculix/lap/`). The closed form is recomputed here, so a change to it
+//! measured by `validation/calculix/lap/envelope/`). The closed form is recomputed here, so a change to it
 //! that moves Delta shows as a changed difference; the bound must stay above every measured
 //! difference inside its calibrated ranges, and the joints measured far off must stay outside
 //! them.

@@ -1,7 +1,7 @@
 //! How far the joint's 1-D shear-lag theory holds (L14): its expected difference from a
 //! plane-stress continuum, as numbers. The theory assumes each plate's axial strain uniform
 //! through its thickness and the contact pressure equal to P. A CalculiX grid of 22 joints (16 to
-//! fit, 6 held out, 74 states; docs/theory.md (L14), `validation/calculix/lap/ENVELOPE.md`) found
+//! fit, 6 held out, 74 states; docs/theory.md (L14), `validation/calculix/lap/envelope/ENVELOPE.md`) found
 //! three ways that fails, each with a size computable from the inputs:
 //!
 //! - the plates' through-thickness shear compliance, in series with the interface's: r, the
@@ -57,9 +57,13 @@ const MARGIN: f64 = 1.25;
 /// opening at x = 0; `beta`: the same corner.
 const MIN_LAMBDA_L: f64 = 1.4;
 const MAX_BETA: f64 = 0.30;
-const LAMBDA_T1: (f64, f64) = (0.09, 4.7);
+const LAMBDA_T1: (f64, f64) = (0.09, 4.65);
+const LAMBDA_SHEAR_DEPTH: (f64, f64) = (0.12, 6.7);
 const COVER_OVER_INNER_THICKNESS: (f64, f64) = (0.3, 2.0);
 const COVER_OVER_INNER_MODULUS: (f64, f64) = (1.0, 3.0);
+const COVERS_OVER_INNER_STIFFNESS: (f64, f64) = (0.3, 6.0);
+const LENGTH_OVER_T1: (f64, f64) = (3.0, 30.0);
+const FRICTION: (f64, f64) = (0.1, 0.6);
 /// The highest load level of the grid: 0.9 F_gross.
 const MAX_LOAD_FRACTION: f64 = 0.9;
 
@@ -102,7 +106,21 @@ impl LapJoint {
         } else if beta > MAX_BETA * (1.0 + SLACK) {
             Some("mu (t1/2 + t2) / L above 0.3 (the covers bend)")
         } else if !within(LAMBDA_T1, lambda * p.inner_thickness) {
-            Some("lambda t1 outside 0.09 to 4.7")
+            Some("lambda t1 outside 0.09 to 4.65")
+        } else if !within(
+            LAMBDA_SHEAR_DEPTH,
+            lambda * (0.5 * p.inner_thickness + p.cover_thickness),
+        ) {
+            Some("lambda (t1/2 + t2) outside 0.12 to 6.7")
+        } else if !within(
+            COVERS_OVER_INNER_STIFFNESS,
+            p.cover_modulus * p.cover_thickness / (p.inner_modulus * p.inner_thickness),
+        ) {
+            Some("E2 t2 / (E1 t1) outside 0.3 to 6")
+        } else if !within(LENGTH_OVER_T1, p.length / p.inner_thickness) {
+            Some("L/t1 outside 3 to 30")
+        } else if !within(FRICTION, p.friction) {
+            Some("mu outside 0.1 to 0.6")
         } else if !within(
             COVER_OVER_INNER_THICKNESS,
             p.cover_thickness / p.inner_thickness,
