@@ -16,7 +16,7 @@ Usage: gen.py NAME key=value ...   (writes NAME.inp and NAME.json with the node 
 import json
 import sys
 
-P = dict(L=40.0, b=25.0, t1=3.0, t2=2.0, E=70000.0, nu=0.3, Pr=10.0, mu=0.3, KT=1000.0,
+P = dict(L=40.0, b=25.0, t1=3.0, t2=2.0, E=70000.0, E2=0.0, nu=0.3, Pr=10.0, mu=0.3, KT=1000.0,
          Lc=10.0, Li=10.0, W=0.5,
          n1=4, n2=4,          # elements through the inner half thickness / the cover
          he=0.25, hm=1.0,     # element length at the overlap ends / largest in the overlap
@@ -24,6 +24,7 @@ P = dict(L=40.0, b=25.0, t1=3.0, t2=2.0, E=70000.0, nu=0.3, Pr=10.0, mu=0.3, KT=
          growth=1.15,
          dF=100.0,            # force step (N, on the whole joint)
          forces="1000,2000,2400,3000,4500,5500",
+         incs="",             # increments per force step, comma list (overrides dF when given)
          tol=0.0,             # *CONTROLS residual and correction tolerance (0: CalculiX defaults)
          KN=0.0,              # normal penalty (0: max(100 E / smallest element height, 10 KT))
          )
@@ -115,7 +116,8 @@ def main():
 
     KT = P["KT"]
     hmin = min(h1 / P["n1"], t2 / P["n2"])
-    KN = P["KN"] if P["KN"] > 0 else max(100 * P["E"] / hmin, 10 * KT)
+    E2 = P["E2"] if P["E2"] > 0 else P["E"]
+    KN = P["KN"] if P["KN"] > 0 else max(100 * max(P["E"], E2) / hmin, 10 * KT)
     sigma = lambda F: F / (P["b"] * t1)
 
     o = out.append
@@ -166,7 +168,8 @@ def main():
         if ey == 0 and ex >= off_c:
             o(f"{eid}, S3")
     o(f"*MATERIAL, NAME=AL\n*ELASTIC\n{P['E']}, {P['nu']}")
-    o("*SOLID SECTION, ELSET=EINNER, MATERIAL=AL\n*SOLID SECTION, ELSET=ECOVER, MATERIAL=AL")
+    o(f"*MATERIAL, NAME=COV\n*ELASTIC\n{E2}, {P['nu']}")
+    o("*SOLID SECTION, ELSET=EINNER, MATERIAL=AL\n*SOLID SECTION, ELSET=ECOVER, MATERIAL=COV")
     o("*SURFACE INTERACTION, NAME=JENKINS\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR")
     o(f"{KN:.6e}\n*FRICTION\n{P['mu']}, {KT:.6e}")
     o("*CONTACT PAIR, INTERACTION=JENKINS, TYPE=SURFACE TO SURFACE\nSCOVERBOT, SINNERTOP")
@@ -196,8 +199,9 @@ def main():
     o("*END STEP")
     forces = [float(f) for f in P["forces"].split(",")]
     prev = 0.0
+    incs = [int(q) for q in P["incs"].split(",")] if P["incs"] else None
     for n, F in enumerate(forces):
-        inc = P["dF"] / (F - prev)
+        inc = P["dF"] / (F - prev) if incs is None else 1.0 / incs[n]
         inc = min(inc, 1.0)
         o(f"** step {n + 2}: F = {F} N (traction {sigma(F):.6g} MPa on the inner end face), "
           f"increments of {P['dF']} N")

@@ -146,7 +146,7 @@ def analyse(name):
         a_s = zone_interp(xs, g, False)
         d_s = zone_interp(xs, g, True)
         c = frd.get(t, {})
-        a_tau = d_tau = a_p = d_p = p0 = pL = float("nan")
+        a_tau = d_tau = a_p = d_p = p0 = pL = pint = float("nan")
         if c:
             xc = [x for _, x in cface]
             press = np.array([c[n][3] for n, _ in cface])
@@ -158,9 +158,10 @@ def analyse(name):
             a_p = zone_interp(xs, gp, False)
             d_p = zone_interp(xs, gp, True)
             p0, pL = press[0], press[-1]
+            pint = float(np.trapezoid(press, xc) / (P["Pr"] * P["L"]))
         rows.append(dict(F=F, Delta_mean=dp[0], Delta_mid=dp[1], Delta_face=dp[2],
                          Delta_raw_mean=(dp + base)[0], a_s=a_s, d_s=d_s, a_tau=a_tau, d_tau=d_tau,
-                         a_p=a_p, d_p=d_p, p0=p0, pL=pL))
+                         a_p=a_p, d_p=d_p, p0=p0, pL=pL, pint=pint))
     return dict(name=name, params=P, n_elements=meta["n_elements"], step1_Delta=base.tolist(),
                 rows=rows)
 
@@ -174,7 +175,7 @@ if __name__ == "__main__":
               ["%.4g" % v for v in r["step1_Delta"]])
         for row in r["rows"]:
             print("F %6.0f  Delta mean %.6e mid %.6e face %.6e  a_s %.3f d_s %.3f  a_p %.3f d_p %.3f"
-                  "  a_tau %.3f d_tau %.3f  p(0) %.2f p(L) %.2f"
+                  "  a_tau %.3f d_tau %.3f  p(0) %.2f p(L) %.2f  int(p)/(P L) %.4f"
                   % (row["F"], row["Delta_mean"], row["Delta_mid"], row["Delta_face"],
                      row["a_s"], row["d_s"], row["a_p"], row["d_p"], row["a_tau"], row["d_tau"],
-                     row["p0"], row["pL"]))
+                     row["p0"], row["pL"], row["pint"]))
