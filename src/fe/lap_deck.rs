@@ -29,9 +29,10 @@ use super::deck::{
     write_nodes, write_nset, write_surface,
 };
 use super::header::{DeckHeader, StickSlope};
-use super::mesh::{Block, Face, graded_toward_end, uniform};
+use super::mesh::{Block, Face, uniform};
 use crate::kernel::params::Compact;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
+use crate::problems::lap::continuum::{LapBreaks, lap_breaks};
 
 /// The Poisson ratio the deck gives both materials: the shear-lag closed forms do not use one,
 /// and nu = 0 instead of 0.3 moved CalculiX's Delta by at most 0.06 % (docs/theory.md (L12)).
@@ -48,9 +49,6 @@ pub(crate) mod sets {
     /// The cover's interface nodes over the overlap (z = 0).
     pub(crate) const LAP_COVER_FACE: &str = "IFCOVER";
 }
-
-/// Growth ratio of neighbouring elements along x.
-const GROWTH: f64 = 1.15;
 
 /// The deck of `joint` with one load step per force of `loads` (N, increasing).
 ///
@@ -71,25 +69,18 @@ pub fn lap_deck(
     let r = mesh.refinement();
     let (n1, n2) = (4 * r, 4 * r);
     let half = 0.5 * p.inner_thickness;
-    let layer = (half / n1 as f64).min(p.cover_thickness / n2 as f64);
     let decay = 1.0 / at_slope.decay_rate();
-    // Finest at the overlap's ends, where the shear peaks: two thirds of a layer, or a quarter
-    // of the decay length; the coarsest half a decay length, at most 8/3 layers.
-    let finest = (2.0 / 3.0 * layer).min(0.25 * decay);
-    let coarsest = (8.0 / 3.0 * layer).min(0.5 * decay).max(finest);
-    let extension = 2.0 * (p.inner_thickness + p.cover_thickness);
+    // The continuum solver's mesh (its 4 r layers through each body): the two judges of the
+    // shear-lag theory mesh the joint the same way.
+    let LapBreaks {
+        overlap,
+        cover_extension,
+        inner_extension,
+        layer,
+        finest,
+    } = lap_breaks(&at_slope.params(), n1);
     let length = p.length;
-    let right = graded_toward_end(0.5 * length, length, finest, coarsest, GROWTH);
-    let mut overlap: Vec<f64> = right.iter().rev().map(|x| length - x).collect();
-    overlap.pop();
-    overlap.extend(&right);
-    let cover_extension = graded_toward_end(-extension, 0.0, finest, 4.0 * coarsest, GROWTH);
-    let inner_extension: Vec<f64> =
-        graded_toward_end(length, length + extension, finest, 4.0 * coarsest, GROWTH)
-            .iter()
-            .rev()
-            .map(|x| 2.0 * length + extension - x)
-            .collect();
+    let extension = 2.0 * (p.inner_thickness + p.cover_thickness);
     let mut xs_cover = cover_extension.clone();
     xs_cover.pop();
     xs_cover.extend(&overlap);

@@ -368,6 +368,53 @@ fn decay_rate(p: &LapParams) -> f64 {
     (2.0 * c * p.tangential_stiffness).sqrt()
 }
 
+/// The element boundaries along x of the joint's continuum model, shared by this solver and the
+/// CalculiX deck (`fe::lap_deck`) so that the two mesh the joint the same way.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct LapBreaks {
+    /// Over the overlap [0, L], finest at both ends.
+    pub(crate) overlap: Vec<f64>,
+    /// The cover's extension [-H, 0], finest at x = 0 (H = 2 (t1 + t2)).
+    pub(crate) cover_extension: Vec<f64>,
+    /// The inner plate's extension [L, L + H], finest at x = L.
+    pub(crate) inner_extension: Vec<f64>,
+    /// The layer height: the thinner of t1/2 and t2 over `layers` (mm).
+    pub(crate) layer: f64,
+    /// The element size at the overlap's ends (mm).
+    pub(crate) finest: f64,
+}
+
+/// The boundaries of `layers` elements through each body of the joint `p` (its K_T sets the
+/// decay length): finest at the overlap's ends, where the shear peaks, two thirds of a layer or a
+/// quarter of the decay length; the coarsest half a decay length, at most 8/3 layers; the
+/// extensions up to four times that, all growing by [`GROWTH`].
+pub(crate) fn lap_breaks(p: &LapParams, layers: usize) -> LapBreaks {
+    let layer = (0.5 * p.inner_thickness / layers as f64).min(p.cover_thickness / layers as f64);
+    let decay = 1.0 / decay_rate(p);
+    let finest = (2.0 / 3.0 * layer).min(0.25 * decay);
+    let coarsest = (8.0 / 3.0 * layer).min(0.5 * decay).max(finest);
+    let extension = 2.0 * (p.inner_thickness + p.cover_thickness);
+    let length = p.length;
+    let right = graded_toward_end(0.5 * length, length, finest, coarsest, GROWTH);
+    let mut overlap: Vec<f64> = right.iter().rev().map(|x| length - x).collect();
+    overlap.pop();
+    overlap.extend(&right);
+    let cover_extension = graded_toward_end(-extension, 0.0, finest, 4.0 * coarsest, GROWTH);
+    let inner_extension: Vec<f64> =
+        graded_toward_end(length, length + extension, finest, 4.0 * coarsest, GROWTH)
+            .iter()
+            .rev()
+            .map(|x| 2.0 * length + extension - x)
+            .collect();
+    LapBreaks {
+        overlap,
+        cover_extension,
+        inner_extension,
+        layer,
+        finest,
+    }
+}
+
 /// One body's mesh: element boundaries and the unknowns of its half-grid points.
 #[derive(Debug, Clone)]
 struct Body {
@@ -455,29 +502,6 @@ struct Grid {
 }
 
 impl Grid {
-    /// The boundaries along x of the overlap and of both extensions (the deck's grading).
-    fn breaks(p: &LapParams, layers: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
-        let layer =
-            (0.5 * p.inner_thickness / layers as f64).min(p.cover_thickness / layers as f64);
-        let decay = 1.0 / decay_rate(p);
-        let finest = (2.0 / 3.0 * layer).min(0.25 * decay);
-        let coarsest = (8.0 / 3.0 * layer).min(0.5 * decay).max(finest);
-        let extension = 2.0 * (p.inner_thickness + p.cover_thickness);
-        let length = p.length;
-        let right = graded_toward_end(0.5 * length, length, finest, coarsest, GROWTH);
-        let mut overlap: Vec<f64> = right.iter().rev().map(|x| length - x).collect();
-        overlap.pop();
-        overlap.extend(&right);
-        let cover_extension = graded_toward_end(-extension, 0.0, finest, 4.0 * coarsest, GROWTH);
-        let inner_extension: Vec<f64> =
-            graded_toward_end(length, length + extension, finest, 4.0 * coarsest, GROWTH)
-                .iter()
-                .rev()
-                .map(|x| 2.0 * length + extension - x)
-                .collect();
-        (overlap, cover_extension, inner_extension)
-    }
-
     /// The number of interface pairs and of elements the mesh would have, without building it.
     fn counts(p: &LapParams, mesh: LapContinuumMesh) -> (usize, usize) {
         use crate::numeric::mesh::graded_toward_end_count as count;
@@ -505,7 +529,12 @@ impl Grid {
 
     fn new(p: &LapParams, mesh: LapContinuumMesh) -> Grid {
         let layers = mesh.layers;
-        let (overlap, cover_extension, inner_extension) = Grid::breaks(p, layers);
+        let LapBreaks {
+            overlap,
+            cover_extension,
+            inner_extension,
+            ..
+        } = lap_breaks(p, layers);
         let half = 0.5 * p.inner_thickness;
         let ys_inner: Vec<f64> = (0..=layers)
             .map(|j| half * j as f64 / layers as f64)
