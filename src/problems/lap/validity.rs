@@ -102,9 +102,9 @@ impl LapJoint {
         let q_p = mismatch.min(1.0) * (1.0 / lambda_l).min(1.0);
         let beta = p.friction * (0.5 * p.inner_thickness + p.cover_thickness) / p.length;
         let outside_calibration = if lambda_l < MIN_LAMBDA_L * (1.0 - SLACK) {
-            Some("lambda L below 1.4 (a short overlap: the covers lift off)")
+            Some("lambda L below 1.4, a short overlap where the covers lift off")
         } else if beta > MAX_BETA * (1.0 + SLACK) {
-            Some("mu (t1/2 + t2) / L above 0.3 (the covers bend)")
+            Some("mu (t1/2 + t2) / L above 0.3, where the covers bend")
         } else if !within(LAMBDA_T1, lambda * p.inner_thickness) {
             Some("lambda t1 outside 0.09 to 4.65")
         } else if !within(

@@ -342,7 +342,7 @@ impl LapReport {
                 };
                 let _ = writeln!(
                     out,
-                    "2-D continuum (plane stress, nu = 0.3, docs/theory.md (L13); within 0.02 % of CalculiX)\n  \
+                    "2-D continuum (plane stress, nu = 0.3, docs/theory.md (L13): within 0.02 % of CalculiX where compared)\n  \
                      Delta = {} mm ({} vs shear lag); a = {} mm, d = {} mm (K_T |s| >= mu P)\n  \
                      contact pressure {} to {} MPa over the overlap (the theory's P: {} MPa)",
                     number(c.joint_displacement),
