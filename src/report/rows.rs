@@ -172,6 +172,9 @@ pub struct LapRow {
     pub regime_coulomb: &'static str,
     /// Regularized regime.
     pub regime_regularized: &'static str,
+    /// The shear-lag envelope's bound on Delta's difference from a continuum (L14), a fraction;
+    /// empty (null) where it is not calibrated.
+    pub shear_lag_within: Option<f64>,
 }
 
 impl From<&LapPoint> for LapRow {
@@ -186,6 +189,7 @@ impl From<&LapPoint> for LapRow {
             slide_at_cover_ends_coulomb: p.zones_coulomb.1,
             regime_coulomb: p.regime_coulomb.label(),
             regime_regularized: p.regime_regularized.label(),
+            shear_lag_within: p.shear_lag_within,
         }
     }
 }
@@ -234,6 +238,11 @@ mod tests {
             header::<BeamRow>(),
             "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized,beam_theory,\
              vs_continuum_within"
+        );
+        assert_eq!(
+            header::<LapRow>(),
+            "F_N,Delta_coulomb_mm,Delta_regularized_mm,a_mm,d_mm,a_coulomb_mm,d_coulomb_mm,\
+             regime_coulomb,regime_regularized,shear_lag_within"
         );
         assert_eq!(
             header::<PlateRow>(),

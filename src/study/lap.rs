@@ -27,6 +27,9 @@ pub struct LapPoint {
     pub regime_coulomb: Regime,
     /// Regularized regime.
     pub regime_regularized: Regime,
+    /// The shear-lag envelope's bound on Delta's difference from a continuum (L14), a fraction;
+    /// `None` where it is not calibrated.
+    pub shear_lag_within: Option<f64>,
 }
 
 /// The joint at one force.
@@ -41,6 +44,7 @@ pub(crate) fn lap_point(joint: &LapJoint, force: JointForce) -> LapPoint {
         zones_regularized: zones(&regularized),
         regime_coulomb: coulomb.regime(),
         regime_regularized: regularized.regime(),
+        shear_lag_within: joint.validity(force).expected_error,
     }
 }
 
