@@ -298,7 +298,7 @@ def lap_rows(microslip, workdir, lines, timings, failures):
     lines.append(f"\nMesh convergence ({name}, F = {loads[0]:.4g} and {loads[1]:.4g} N, one "
                  f"increment per step on both): the coarse mesh's Delta is within "
                  f"{100 * worst:+.4f} % of "
-                 "the fine mesh's (every element size halved).\n")
+                 "the fine mesh's (every element size halved).")
 
 
 def main():
