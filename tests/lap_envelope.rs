@@ -57,7 +57,7 @@ fn judged(s: &State) -> (f64, microslip::problems::lap::LapValidity) {
 #[test]
 fn every_measured_state_inside_the_calibration_is_under_the_bound() {
     let all = states();
-    assert_eq!(all.len(), 74);
+    assert_eq!(all.len(), 86);
     let mut inside = 0;
     let mut worst: f64 = 0.0;
     for s in &all {
@@ -74,16 +74,17 @@ fn every_measured_state_inside_the_calibration_is_under_the_bound() {
             s.force
         );
     }
-    // 70 states lie in the domain (C02 and H5 do not); the margin leaves room.
-    assert_eq!(inside, 70);
+    // 82 states lie in the domain (C02 and H5 do not); the margin leaves room.
+    assert_eq!(inside, 82);
     assert!(worst < 0.85, "largest measured / bound {worst}");
 }
 
 #[test]
 fn the_fitted_bound_covers_its_calibration_and_the_margin_covers_the_hold_outs() {
     // Without the 1.25 margin, the linear programme's bound (rounded up) is above every
-    // calibration state it was fitted on; two hold-out states exceed it (by 2.5 % of itself at
-    // most), which is why the margin is there.
+    // calibration state it was fitted on; one state of the first hold-outs exceeded it (by 2.5 %
+    // of itself), which is why the margin is there, and one of the fresh joints, run after the
+    // margin was set, exceeds it too (by 4 %): the margin is needed, not decoration.
     let mut exceeded = Vec::new();
     for s in states() {
         let (error, v) = judged(&s);
@@ -99,11 +100,11 @@ fn the_fitted_bound_covers_its_calibration_and_the_margin_covers_the_hold_outs()
                 s.force
             );
         } else if error > fitted {
-            assert!(error <= 1.03 * fitted, "{} at {} N", s.joint, s.force);
+            assert!(error <= 1.05 * fitted, "{} at {} N", s.joint, s.force);
             exceeded.push(s.joint.clone());
         }
     }
-    assert_eq!(exceeded, ["H4"], "hold-out states over the fitted bound");
+    assert_eq!(exceeded, ["H4", "J2"], "hold-out states over the fitted bound");
 }
 
 #[test]
