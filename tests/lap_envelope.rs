@@ -104,7 +104,11 @@ fn the_fitted_bound_covers_its_calibration_and_the_margin_covers_the_hold_outs()
             exceeded.push(s.joint.clone());
         }
     }
-    assert_eq!(exceeded, ["H4", "J2"], "hold-out states over the fitted bound");
+    assert_eq!(
+        exceeded,
+        ["H4", "J2"],
+        "hold-out states over the fitted bound"
+    );
 }
 
 #[test]
