@@ -174,11 +174,7 @@ pub(crate) fn lap_shear_along(
     force: JointForce,
     positions: Samples,
 ) -> (Series, Series) {
-    let (coulomb, regularized) = (joint.coulomb(force), joint.regularized(force));
-    positions
-        .values()
-        .map(|x| ((x, coulomb.shear_at(x)), (x, regularized.shear_at(x))))
-        .unzip()
+    along(joint, force, positions, LapState::shear_at)
 }
 
 /// Interface slip s(x) = u_inner - u_cover (mm) along the overlap at one force: (Coulomb,
@@ -188,10 +184,20 @@ pub(crate) fn lap_slip_along(
     force: JointForce,
     positions: Samples,
 ) -> (Series, Series) {
+    along(joint, force, positions, LapState::slip_at)
+}
+
+/// A profile `at` of both laws' states at `force`, sampled at `positions`: (Coulomb, regularized).
+fn along(
+    joint: &LapJoint,
+    force: JointForce,
+    positions: Samples,
+    at: fn(&LapState, f64) -> f64,
+) -> (Series, Series) {
     let (coulomb, regularized) = (joint.coulomb(force), joint.regularized(force));
     positions
         .values()
-        .map(|x| ((x, coulomb.slip_at(x)), (x, regularized.slip_at(x))))
+        .map(|x| ((x, at(&coulomb, x)), (x, at(&regularized, x))))
         .unzip()
 }
 
