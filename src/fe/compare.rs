@@ -313,7 +313,7 @@ pub fn compare_lap(
             let force = joint.force(fe.force)?;
             let state = joint.regularized(force);
             let zones = (state.slide_at_inner_end(), state.slide_at_cover_ends());
-            let validity = joint.validity(force);
+            let validity = joint.validity_at(force, state.joint_displacement());
             let theory_validity = validity.validity;
             let zones_mesh = mesh.zip(fe.interface).map(|(mesh, i)| {
                 [

@@ -44,7 +44,9 @@ pub(crate) fn lap_point(joint: &LapJoint, force: JointForce) -> LapPoint {
         zones_regularized: zones(&regularized),
         regime_coulomb: coulomb.regime(),
         regime_regularized: regularized.regime(),
-        shear_lag_within: joint.validity(force).expected_error,
+        shear_lag_within: joint
+            .validity_at(force, regularized.joint_displacement())
+            .expected_error,
     }
 }
 

@@ -178,7 +178,10 @@ fn lap_lines(
         )
         .dropped(1),
         plain(
-            format!("shear lag {}", lap_validity_words(&joint.validity(force))),
+            format!(
+                "shear lag {}",
+                lap_validity_words(&joint.validity_at(force, row.delta_regularized))
+            ),
             "the closed forms strain each plate uniformly through its thickness under a contact \
              pressure P; this bounds how far a 2-D continuum's Delta differs (docs/theory.md \
              (L14), measured against CalculiX on 22 joints; the title gives the bound); where \

@@ -79,13 +79,17 @@ impl LapJoint {
     /// 1.25 (r + 2.0 q_p + 0.36 beta + 0.013) on Delta's difference from a continuum, inside
     /// the calibrated ranges.
     pub fn validity(&self, force: JointForce) -> LapValidity {
+        self.validity_at(force, self.regularized(force).joint_displacement())
+    }
+
+    /// [`LapJoint::validity`] given the regularized Delta at `force` (sweeps have it already).
+    pub(crate) fn validity_at(&self, force: JointForce, delta: f64) -> LapValidity {
         let p = self.params();
         let lambda = self.decay_rate();
         let shear_modulus = |e: f64| e / (2.0 * (1.0 + LAP_POISSON));
         let shear_compliance = p.inner_thickness / (6.0 * shear_modulus(p.inner_modulus))
             + p.cover_thickness / (3.0 * shear_modulus(p.cover_modulus));
         let k_eff = 1.0 / (1.0 / p.tangential_stiffness + shear_compliance);
-        let delta = self.regularized(force).joint_displacement();
         let r = match self.with_tangential_stiffness(k_eff) {
             Ok(softer) if delta > 0.0 => {
                 (softer.regularized(force).joint_displacement() / delta - 1.0).abs()

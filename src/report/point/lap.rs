@@ -206,7 +206,7 @@ impl LapReport {
                 row.zones_regularized,
             ),
             shear_lag: {
-                let v = joint.validity(force);
+                let v = joint.validity_at(force, row.delta_regularized);
                 ShearLagReport {
                     decay_length_over_thickness: v.decay_over_thickness,
                     validity: v.validity,
