@@ -804,6 +804,10 @@ pub enum CliError {
     /// Writing the output failed.
     #[error("cannot write output: {0}")]
     Output(#[from] io::Error),
+    /// `bench`: the solver could not be run, failed, or was stopped by a signal; or its work
+    /// folder or program was refused.
+    #[error(transparent)]
+    Solver(#[from] fe::run::RunError),
 }
 
 impl From<TargetError> for CliError {
@@ -813,7 +817,11 @@ impl From<TargetError> for CliError {
 }
 
 impl CliError {
+    /// The exit code, by the one table users read (README, "Exit codes"): 1 when the command ran
+    /// and its answer is "no" or could not be computed, 2 when the input was refused before
+    /// anything ran, 3 when the external solver failed, 128 + N when signal N stopped it.
     fn exit_code(&self) -> u8 {
+        use fe::run::RunError;
         match self {
             CliError::Target(e)
                 if matches!(
@@ -823,11 +831,34 @@ impl CliError {
             {
                 1
             }
+            // Inputs the built-in solvers do not take (a K_T too stiff for double precision):
+            // refused with the largest value that works, before any solve.
+            CliError::Numeric(NumericError::OutOfRange(_) | NumericError::BadLoad(_)) => 2,
             CliError::CheckFailed(_)
             | CliError::VerifyFailed(_)
             | CliError::Output(_)
             | CliError::Numeric(_) => 1,
+            CliError::Solver(RunError::Stopped { signal, .. }) => {
+                u8::try_from(128 + signal).unwrap_or(u8::MAX)
+            }
+            CliError::Solver(e) if e.is_solver_failure() => 3,
             _ => 2,
+        }
+    }
+
+    /// Writes the error on stderr: one line, but for a failed solver the lines of its log
+    /// follow, each as a line of its own (each sanitized, as every line shown is).
+    fn print(&self) {
+        if let CliError::Solver(fe::run::RunError::Failed { status, log, tail }) = self {
+            print_error(&format!(
+                "ccx failed ({status}); the last lines of its log, {log}:"
+            ));
+            let mut stderr = io::stderr().lock();
+            for line in tail.lines() {
+                let _ = writeln!(stderr, "  {}", report::sanitize(line));
+            }
+        } else {
+            print_error(&self.to_string());
         }
     }
 }
@@ -854,7 +885,7 @@ pub fn main() -> ExitCode {
         // `microslip sweep ... | head`: the reader left; that is not an error.
         Err(CliError::Output(e)) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
         Err(error) => {
-            print_error(&error.to_string());
+            error.print();
             ExitCode::from(error.exit_code())
         }
     }
@@ -1312,31 +1343,58 @@ fn run_bench(
     format: CompareFormat,
 ) -> Result<(), CliError> {
     let text = build_deck(model, deck, &model_command(model, "bench ccx"))?;
+    // Before the folder is made: a refused --ccx leaves nothing behind.
+    let program = fe::run::resolve_program(ccx)?;
     let job = model.name();
-    let run_error = |e: fe::run::RunError| CliError::Invalid(e.to_string());
     let files = match workdir {
-        Some(folder) => fe::run::claim_folder(folder, job).map_err(run_error)?,
+        Some(folder) => fe::run::claim_folder(folder, job)?,
         None => {
             let folder = fe::run::fresh_folder(&std::env::temp_dir(), job)?;
             fe::run::RunFiles::new(&folder, job)
         }
     };
     crate::file::write_new_files(&[(files.deck.as_path(), text.as_bytes())])?;
+    let stop = StopSignals::install()?;
     let stderr = io::stderr();
-    let mut progress = ProgressLine::new(stderr.lock(), stderr.is_terminal());
+    let terminal = stderr.is_terminal();
+    let mut progress = ProgressLine::new(stderr.lock(), terminal);
     let shown = files.folder.display().to_string();
     let started = Instant::now();
     let mut announced = false;
-    let result = fe::run::run_ccx(ccx, &files, Duration::from_millis(200), &mut |p| {
-        // Said once ccx runs: a missing ccx is then one line of error, not two.
-        if !announced {
-            eprintln!("microslip: running {ccx} on {}", files.deck.display());
-            announced = true;
-        }
-        progress.update(Instant::now(), || text::ccx_progress(p))
-    });
+    let mut increments_said = 0;
+    let result = fe::run::run_ccx(
+        &program,
+        &files,
+        Duration::from_millis(50),
+        &mut |p| {
+            // Said once ccx runs: a missing ccx is then one line of error, not two.
+            if !announced {
+                eprintln!("microslip: running {ccx} on {}", files.deck.display());
+                announced = true;
+            }
+            if terminal {
+                progress.update(Instant::now(), || text::ccx_progress(p));
+            } else if p.increments > increments_said {
+                // A log or a CI job sees a line per increment, not minutes of silence.
+                increments_said = p.increments;
+                eprintln!(
+                    "microslip: {}, increment {}",
+                    text::ccx_progress(p),
+                    p.increments
+                );
+            }
+        },
+        &|| stop.received(),
+    );
     drop(progress);
-    result.map_err(run_error)?;
+    result?;
+    if let Some(signal) = stop.received() {
+        return Err(fe::run::RunError::Stopped {
+            signal,
+            folder: shown,
+        }
+        .into());
+    }
     eprintln!(
         "microslip: ccx took {:.0} s; its files and log ({}) are kept in {shown}",
         started.elapsed().as_secs_f64(),
@@ -1365,6 +1423,37 @@ fn write_varied<R: serde::Serialize + Default>(
         &json::suffixed(param.name(), param.unit()),
         rows,
     )
+}
+
+/// SIGTERM, SIGINT and SIGHUP while `bench` runs the solver: recorded instead of ending
+/// microslip at once, so that the solver (in a process group of its own, out of the terminal's
+/// reach) is ended first; microslip then exits with 128 + the signal, as the default action
+/// would have.
+struct StopSignals {
+    received: std::sync::Arc<std::sync::atomic::AtomicUsize>,
+}
+
+impl StopSignals {
+    fn install() -> io::Result<StopSignals> {
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+        let received = std::sync::Arc::new(std::sync::atomic::AtomicUsize::new(0));
+        for signal in [SIGTERM, SIGINT, SIGHUP] {
+            signal_hook::flag::register_usize(
+                signal,
+                std::sync::Arc::clone(&received),
+                signal as usize,
+            )?;
+        }
+        Ok(StopSignals { received })
+    }
+
+    /// The last signal received, if any.
+    fn received(&self) -> Option<i32> {
+        match self.received.load(std::sync::atomic::Ordering::SeqCst) {
+            0 => None,
+            n => i32::try_from(n).ok(),
+        }
+    }
 }
 
 /// A force range error, named by the flags `--from`, `--to`, `--points`.

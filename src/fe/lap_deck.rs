@@ -32,7 +32,7 @@ use super::header::{DeckHeader, StickSlope};
 use super::mesh::{Block, Face, uniform};
 use crate::kernel::params::Compact;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
-use crate::problems::lap::continuum::{LapBreaks, lap_breaks};
+use crate::problems::lap::continuum::{LapBreaks, lap_breaks, lap_counts};
 
 /// The Poisson ratio the deck gives both materials: the shear-lag closed forms do not use one,
 /// and nu = 0 instead of 0.3 moved CalculiX's Delta by at most 0.06 % (docs/theory.md (L12)).
@@ -70,6 +70,20 @@ pub fn lap_deck(
     let (n1, n2) = (4 * r, 4 * r);
     let half = 0.5 * p.inner_thickness;
     let decay = 1.0 / at_slope.decay_rate();
+    // Counted from the parameters before any break is made: a stiff interface over a long
+    // overlap asks for 1e13 elements, whose breaks alone would not fit in memory.
+    let elements = lap_counts(&at_slope.params(), n1).elements(n1);
+    if elements > MAX_DECK_ELEMENTS as f64 {
+        return Err(DeckTooLarge {
+            elements,
+            advice: format!(
+                "the interface's decay length 1/lambda = {} mm is resolved over an overlap of {} \
+                 mm; use the coarse mesh, or a smaller K_T",
+                Compact(decay),
+                Compact(p.length)
+            ),
+        });
+    }
     // The continuum solver's mesh (its 4 r layers through each body): the two judges of the
     // shear-lag theory mesh the joint the same way.
     let LapBreaks {
@@ -88,18 +102,10 @@ pub fn lap_deck(
     xs_inner.extend(&inner_extension[1..]);
     let width = 2.0 * finest;
     let zs = uniform(0.0, width, 1);
-    let elements = (xs_inner.len() - 1) * n1 + (xs_cover.len() - 1) * n2;
-    if elements > MAX_DECK_ELEMENTS {
-        return Err(DeckTooLarge {
-            elements: elements as f64,
-            advice: format!(
-                "the interface's decay length 1/lambda = {} mm is resolved over an overlap of {} \
-                 mm; use the coarse mesh, or a smaller K_T",
-                Compact(decay),
-                Compact(length)
-            ),
-        });
-    }
+    debug_assert_eq!(
+        ((xs_inner.len() - 1) * n1 + (xs_cover.len() - 1) * n2) as f64,
+        elements
+    );
     let inner = Block::new([xs_inner, uniform(0.0, half, n1), zs.clone()], 1, 1);
     let cover = Block::new(
         [xs_cover, uniform(half, half + p.cover_thickness, n2), zs],

@@ -10,7 +10,7 @@
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, Read};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 /// The files of one run, all in its work folder.
@@ -49,11 +49,27 @@ pub enum RunError {
         /// The program as given.
         program: String,
     },
+    /// `--ccx` names a path that is not a program that can be run.
+    #[error("--ccx {path}: {reason}")]
+    NotAProgram {
+        /// The path as given.
+        path: String,
+        /// What stands there instead ("a character device, not a program").
+        reason: String,
+    },
     /// The work folder already holds this job's files.
     #[error("{path} exists: the run would replace it; name an empty or new folder with --workdir")]
     Occupied {
         /// The file found.
         path: String,
+    },
+    /// The work folder cannot be used: something else stands at its path, or it cannot be made.
+    #[error("--workdir {path}: {reason}")]
+    Folder {
+        /// The folder as given.
+        path: String,
+        /// What is wrong.
+        reason: String,
     },
     /// ccx ended with an error, or without writing results.
     #[error("ccx failed ({status}); the last lines of its log, {log}:\n{tail}")]
@@ -65,9 +81,28 @@ pub enum RunError {
         /// The log's last lines.
         tail: String,
     },
+    /// The run was stopped from outside (a signal to microslip); ccx and every process it
+    /// started were ended with it.
+    #[error(
+        "stopped by signal {signal} while ccx ran; ccx was ended too, its files are kept in {folder}"
+    )]
+    Stopped {
+        /// The signal's number.
+        signal: i32,
+        /// The work folder.
+        folder: String,
+    },
     /// The folder, the log or the process could not be set up.
     #[error("{0}")]
     Io(#[from] io::Error),
+}
+
+impl RunError {
+    /// True when the solver itself could not be run or failed (not found, ended with an error,
+    /// wrote no results), as opposed to a request refused before it started.
+    pub fn is_solver_failure(&self) -> bool {
+        matches!(self, RunError::Missing { .. } | RunError::Failed { .. })
+    }
 }
 
 /// What the progress callback is told while ccx runs.
@@ -80,6 +115,8 @@ pub struct Progress {
     /// The total (pseudo-)time ccx last reported as converged: every step of microslip's decks
     /// lasts 1, so this counts the load steps done, fractions included.
     pub total_time: Option<f64>,
+    /// Increments ccx has started so far (the previous ones are finished).
+    pub increments: usize,
 }
 
 /// A fresh work folder for job `job` under `parent`: `microslip-ccx-JOB-N`, the first N that
@@ -100,9 +137,23 @@ pub fn fresh_folder(parent: &Path, job: &str) -> io::Result<PathBuf> {
 }
 
 /// Makes `folder` (and its parents) if missing, and refuses it when it holds a file of `job`
-/// already (the deck, the results or the log).
+/// already (the deck, the results or the log), or when something other than a folder stands at
+/// its path (a file, `/dev/null`): the message names the path and what is there.
 pub fn claim_folder(folder: &Path, job: &str) -> Result<RunFiles, RunError> {
-    fs::create_dir_all(folder)?;
+    let refused = |reason: String| RunError::Folder {
+        path: folder.display().to_string(),
+        reason,
+    };
+    match fs::metadata(folder) {
+        Ok(m) if !m.is_dir() => {
+            return Err(refused(format!(
+                "{}, not a folder; name a new or empty folder",
+                crate::file::kind_of(&m)
+            )));
+        }
+        _ => {}
+    }
+    fs::create_dir_all(folder).map_err(|e| refused(format!("cannot make the folder: {e}")))?;
     let files = RunFiles::new(folder, job);
     for path in [&files.deck, &files.results, &files.log] {
         if fs::symlink_metadata(path).is_ok() {
@@ -114,52 +165,116 @@ pub fn claim_folder(folder: &Path, job: &str) -> Result<RunFiles, RunError> {
     Ok(files)
 }
 
+/// The program `--ccx` names, as it will be run. A bare name (`ccx`) is looked up on the PATH
+/// when started; a path (`./fakeccx.sh`, `bin/ccx`) is taken from the current folder, since the
+/// solver runs inside the work folder, where a relative path would name another file; and it
+/// must be an executable regular file, refused otherwise with what stands there.
+pub fn resolve_program(program: &str) -> Result<PathBuf, RunError> {
+    if !program.contains('/') {
+        return Ok(PathBuf::from(program));
+    }
+    let refused = |reason: String| RunError::NotAProgram {
+        path: program.to_string(),
+        reason,
+    };
+    let path = std::path::absolute(program).map_err(|e| refused(e.to_string()))?;
+    let metadata = match fs::metadata(&path) {
+        Ok(m) => m,
+        Err(e) if e.kind() == io::ErrorKind::NotFound => {
+            return Err(refused(format!(
+                "no such file ({}, from the current folder)",
+                path.display()
+            )));
+        }
+        Err(e) => return Err(refused(e.to_string())),
+    };
+    if !metadata.is_file() {
+        return Err(refused(format!(
+            "{}, not a program; name the ccx executable",
+            crate::file::kind_of(&metadata)
+        )));
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        if metadata.permissions().mode() & 0o111 == 0 {
+            return Err(refused(
+                "a file without execute permission; make it executable (chmod +x) or name the \
+                 ccx executable"
+                    .to_string(),
+            ));
+        }
+    }
+    Ok(path)
+}
+
 /// Runs `program -i JOB` in the work folder of `files` (whose deck must be written), with its
-/// output in the log, calling `progress` about every `every` while it runs.
+/// output in the log. Every `every` it calls `progress` and asks `stop` whether the run must end
+/// (a signal to microslip: `Some(signal)`); then the solver and everything it started are ended
+/// at once.
+///
+/// The solver runs in a process group of its own, ended as a whole when the run stops for any
+/// reason other than the solver's own exit: a stop, an error, a panic (the [`Solver`] guard's
+/// `Drop`). On Linux the kernel also ends it if microslip dies without a chance to (SIGKILL).
+/// Its own group also keeps the terminal's Ctrl-C from reaching it directly: microslip decides.
 ///
 /// # Errors
 /// [`RunError::Missing`] when the program cannot be found, [`RunError::Failed`] (with the log's
-/// tail) when it exits with an error or writes no results.
+/// tail) when it exits with an error or writes no results, [`RunError::Stopped`] when `stop`
+/// asked for it.
 pub fn run_ccx(
-    program: &str,
+    program: &Path,
     files: &RunFiles,
     every: Duration,
     progress: &mut dyn FnMut(&Progress),
+    stop: &dyn Fn() -> Option<i32>,
 ) -> Result<(), RunError> {
     let job = files
         .deck
         .file_stem()
         .and_then(|s| s.to_str())
         .ok_or_else(|| io::Error::other("the deck has no job name"))?;
-    let log = OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(&files.log)?;
-    let mut child = match Command::new(program)
-        .args(["-i", job])
-        .current_dir(&files.folder)
-        .stdin(Stdio::null())
-        .stdout(log.try_clone()?)
-        .stderr(log)
-        .spawn()
-    {
-        Ok(child) => child,
-        Err(e) if e.kind() == io::ErrorKind::NotFound => {
-            return Err(RunError::Missing {
-                program: program.to_string(),
-            });
-        }
-        Err(e) => return Err(e.into()),
-    };
-    let started = Instant::now();
     let steps = fs::read_to_string(&files.deck)?
         .lines()
         .filter(|l| l.trim_start().to_ascii_uppercase().starts_with("*STEP"))
         .count();
+    let log = OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(&files.log)?;
+    let mut command = Command::new(program);
+    command
+        .args(["-i", job])
+        .current_dir(&files.folder)
+        .stdin(Stdio::null())
+        .stdout(log.try_clone()?)
+        .stderr(log);
+    let mut solver = match Solver::spawn(&mut command) {
+        Ok(solver) => solver,
+        Err(e) if e.kind() == io::ErrorKind::NotFound => {
+            return Err(RunError::Missing {
+                program: program.display().to_string(),
+            });
+        }
+        Err(e) => {
+            return Err(RunError::NotAProgram {
+                path: program.display().to_string(),
+                reason: format!("cannot be started: {e}"),
+            });
+        }
+    };
+    let started = Instant::now();
     let mut reader = LogReader::open(&files.log)?;
     let status = loop {
-        if let Some(status) = child.try_wait()? {
+        if let Some(status) = solver.try_wait()? {
             break status;
+        }
+        if let Some(signal) = stop() {
+            solver.end();
+            return Err(RunError::Stopped {
+                signal,
+                folder: files.folder.display().to_string(),
+            });
         }
         std::thread::sleep(every);
         reader.read_new()?;
@@ -167,15 +282,13 @@ pub fn run_ccx(
             elapsed: started.elapsed(),
             steps,
             total_time: reader.total_time,
+            increments: reader.increments,
         });
     };
+    reader.read_to_end()?;
     let has_results = fs::metadata(&files.results).is_ok_and(|m| m.len() > 0);
     // ccx 2.20 exits 0 after some errors ("*ERROR ..." in its output): the log decides too.
-    let log_text = fs::read_to_string(&files.log).unwrap_or_default();
-    let reported_error = log_text
-        .lines()
-        .any(|l| l.trim_start().starts_with("*ERROR"));
-    if status.success() && has_results && !reported_error {
+    if status.success() && has_results && !reader.reported_error {
         Ok(())
     } else {
         Err(RunError::Failed {
@@ -185,51 +298,167 @@ pub fn run_ccx(
                 status.to_string()
             },
             log: files.log.display().to_string(),
-            tail: tail(&log_text, 12),
+            tail: reader.tail(),
         })
     }
 }
 
-/// The last `lines` lines of `text`.
-fn tail(text: &str, lines: usize) -> String {
-    let all: Vec<&str> = text.lines().collect();
-    all[all.len().saturating_sub(lines)..].join("\n")
+/// A running solver, in a process group of its own, that never outlives its handle: dropping
+/// it before the solver exited ends the whole group (the solver and anything it started).
+struct Solver {
+    child: Child,
+    /// Set once the solver's exit was collected: its group is then no longer ours to signal.
+    done: bool,
+}
+
+impl Solver {
+    fn spawn(command: &mut Command) -> io::Result<Solver> {
+        #[cfg(unix)]
+        {
+            use std::os::unix::process::CommandExt;
+            command.process_group(0);
+            #[cfg(target_os = "linux")]
+            // SAFETY: runs in the child between fork and exec; prctl is async-signal-safe and
+            // touches no memory of the parent. The solver gets SIGKILL when microslip dies.
+            unsafe {
+                command.pre_exec(|| {
+                    if libc::prctl(libc::PR_SET_PDEATHSIG, libc::SIGKILL) != 0 {
+                        return Err(io::Error::last_os_error());
+                    }
+                    Ok(())
+                });
+            }
+        }
+        Ok(Solver {
+            child: command.spawn()?,
+            done: false,
+        })
+    }
+
+    fn try_wait(&mut self) -> io::Result<Option<std::process::ExitStatus>> {
+        let status = self.child.try_wait()?;
+        self.done = status.is_some();
+        Ok(status)
+    }
+
+    /// Ends the solver's whole process group: SIGTERM, then SIGKILL for what is left after a
+    /// moment, and collects the solver's exit.
+    fn end(&mut self) {
+        if self.done {
+            return;
+        }
+        #[cfg(unix)]
+        {
+            let group = -(self.child.id() as i32);
+            // SAFETY: kill has no memory effects; the group is the solver's own (process_group(0)
+            // made its id the solver's pid, which stays ours until its exit is collected below).
+            unsafe { libc::kill(group, libc::SIGTERM) };
+            let deadline = Instant::now() + Duration::from_millis(200);
+            while Instant::now() < deadline && matches!(self.child.try_wait(), Ok(None)) {
+                std::thread::sleep(Duration::from_millis(10));
+            }
+            // SAFETY: as above; the solver's exit has not been collected with `wait` yet when it
+            // is still running, and a zombie keeps its pid and group reserved.
+            unsafe { libc::kill(group, libc::SIGKILL) };
+        }
+        #[cfg(not(unix))]
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+        self.done = true;
+    }
+}
+
+impl Drop for Solver {
+    fn drop(&mut self) {
+        self.end();
+    }
 }
 
 /// Follows a growing log, remembering the total time ccx last printed. (Its `STEP n` lines come
 /// from a part of ccx whose output is buffered apart and reach a log file only at the end.)
+///
+/// Linear in the log: each call reads what was appended, scans it once for whole lines and keeps
+/// only the unfinished last line for the next call. (An earlier version drained a `String` from
+/// its front once per line, quadratic in the chunk: a solver that wrote 50 MB of log kept it busy
+/// for minutes after the solver had ended.)
 struct LogReader {
     file: File,
-    pending: String,
+    /// The bytes of the last line, not yet ended by a newline.
+    pending: Vec<u8>,
     total_time: Option<f64>,
+    /// Increments whose total time was read so far (each ` actual total time=` line).
+    increments: usize,
+    /// Whether ccx printed an `*ERROR` line (ccx 2.20 exits 0 after some errors).
+    reported_error: bool,
+    /// The last [`LogReader::TAIL`] lines, for the message when ccx fails: kept as read, so
+    /// that a log of hundreds of megabytes is never read whole again.
+    last_lines: std::collections::VecDeque<String>,
 }
 
 impl LogReader {
     fn open(path: &Path) -> io::Result<LogReader> {
         Ok(LogReader {
             file: File::open(path)?,
-            pending: String::new(),
+            pending: Vec::new(),
             total_time: None,
+            increments: 0,
+            reported_error: false,
+            last_lines: std::collections::VecDeque::with_capacity(Self::TAIL),
         })
     }
 
-    /// Reads what was appended since the last call and updates the total time.
+    /// Lines of the log a failure shows.
+    const TAIL: usize = 12;
+
+    /// Reads the rest of the log once the solver ended: its last line may lack a newline.
+    fn read_to_end(&mut self) -> io::Result<()> {
+        self.read_new()?;
+        if !self.pending.is_empty() {
+            let last = std::mem::take(&mut self.pending);
+            self.read_line(&last);
+        }
+        Ok(())
+    }
+
+    /// The last lines read, one per line.
+    fn tail(&self) -> String {
+        let lines: Vec<&str> = self.last_lines.iter().map(String::as_str).collect();
+        lines.join("\n")
+    }
+
+    /// Reads what was appended since the last call and updates the total time. Lines are split
+    /// on bytes, before any decoding, so a character cut between two reads is never mangled.
     fn read_new(&mut self) -> io::Result<()> {
-        let mut bytes = Vec::new();
-        self.file.read_to_end(&mut bytes)?;
-        self.pending.push_str(&String::from_utf8_lossy(&bytes));
-        while let Some(end) = self.pending.find('\n') {
-            let line: String = self.pending.drain(..=end).collect();
-            self.read_line(&line);
+        self.file.read_to_end(&mut self.pending)?;
+        let Some(last_newline) = self.pending.iter().rposition(|&b| b == b'\n') else {
+            return Ok(());
+        };
+        let rest = self.pending.split_off(last_newline + 1);
+        let whole = std::mem::replace(&mut self.pending, rest);
+        // The chunk ends with a newline: the empty piece after it is no line.
+        for line in whole[..whole.len() - 1].split(|&b| b == b'\n') {
+            self.read_line(line);
         }
         Ok(())
     }
 
     /// ccx 2.20 prints ` actual total time=2.5e+00` at each increment it starts.
-    fn read_line(&mut self, line: &str) {
-        let time = line.trim().strip_prefix("actual total time=");
+    fn read_line(&mut self, line: &[u8]) {
+        let trimmed = line.trim_ascii();
+        self.reported_error |= trimmed.starts_with(b"*ERROR");
+        if self.last_lines.len() == Self::TAIL {
+            self.last_lines.pop_front();
+        }
+        let text = String::from_utf8_lossy(line);
+        self.last_lines
+            .push_back(text.strip_suffix('\r').unwrap_or(&text).to_string());
+        let Some(time) = trimmed.strip_prefix(b"actual total time=") else {
+            return;
+        };
+        let time = std::str::from_utf8(time).ok();
         if let Some(time) = time.and_then(|t| t.trim().parse::<f64>().ok()) {
             self.total_time = Some(time);
+            self.increments += 1;
         }
     }
 }
@@ -267,10 +496,11 @@ mod tests {
         let files = claim_folder(dir.path(), "beam").unwrap();
         fs::write(&files.deck, "*HEADING\n").unwrap();
         let error = run_ccx(
-            "microslip-no-such-ccx",
+            Path::new("microslip-no-such-ccx"),
             &files,
             Duration::from_millis(10),
             &mut |_| {},
+            &|| None,
         )
         .unwrap_err();
         assert!(matches!(error, RunError::Missing { .. }), "{error}");
@@ -283,7 +513,14 @@ mod tests {
         let files = claim_folder(dir.path(), "beam").unwrap();
         fs::write(&files.deck, "*HEADING\n").unwrap();
         // `false` stands for a ccx that fails: it exits 1 and writes no results.
-        let error = run_ccx("false", &files, Duration::from_millis(10), &mut |_| {}).unwrap_err();
+        let error = run_ccx(
+            Path::new("false"),
+            &files,
+            Duration::from_millis(10),
+            &mut |_| {},
+            &|| None,
+        )
+        .unwrap_err();
         assert!(matches!(error, RunError::Failed { .. }), "{error}");
         assert!(error.to_string().contains("beam.log"), "{error}");
     }

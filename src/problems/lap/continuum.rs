@@ -384,16 +384,86 @@ pub(crate) struct LapBreaks {
     pub(crate) finest: f64,
 }
 
-/// The boundaries of `layers` elements through each body of the joint `p` (its K_T sets the
+/// The sizes behind the joint's mesh of `layers` elements through each body (its K_T sets the
 /// decay length): finest at the overlap's ends, where the shear peaks, two thirds of a layer or a
 /// quarter of the decay length; the coarsest half a decay length, at most 8/3 layers; the
-/// extensions up to four times that, all growing by [`GROWTH`].
-pub(crate) fn lap_breaks(p: &LapParams, layers: usize) -> LapBreaks {
+/// extensions up to four times that, all growing by [`GROWTH`]. One function for the breaks and
+/// their count, so that a mesh is counted exactly as it would be built.
+struct LapSizing {
+    layer: f64,
+    finest: f64,
+    coarsest: f64,
+    extension: f64,
+}
+
+fn lap_sizing(p: &LapParams, layers: usize) -> LapSizing {
     let layer = (0.5 * p.inner_thickness / layers as f64).min(p.cover_thickness / layers as f64);
     let decay = 1.0 / decay_rate(p);
     let finest = (2.0 / 3.0 * layer).min(0.25 * decay);
-    let coarsest = (8.0 / 3.0 * layer).min(0.5 * decay).max(finest);
-    let extension = 2.0 * (p.inner_thickness + p.cover_thickness);
+    LapSizing {
+        layer,
+        finest,
+        coarsest: (8.0 / 3.0 * layer).min(0.5 * decay).max(finest),
+        extension: 2.0 * (p.inner_thickness + p.cover_thickness),
+    }
+}
+
+/// The number of elements along x of the joint's mesh ([`lap_breaks`]), counted without making
+/// it: a stiff interface over a long overlap asks for 1e13 of them, which must be refused by
+/// their count before anything of that size is allocated.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct LapCounts {
+    /// Elements over half the overlap.
+    pub(crate) half_overlap: f64,
+    /// Elements over the cover's extension.
+    pub(crate) cover_extension: f64,
+    /// Elements over the inner plate's extension.
+    pub(crate) inner_extension: f64,
+}
+
+impl LapCounts {
+    /// Elements along the inner plate (the overlap and its extension).
+    pub(crate) fn inner(&self) -> f64 {
+        2.0 * self.half_overlap + self.inner_extension
+    }
+
+    /// Elements along the cover (its extension and the overlap).
+    pub(crate) fn cover(&self) -> f64 {
+        self.cover_extension + 2.0 * self.half_overlap
+    }
+
+    /// Elements of both bodies, `layers` deep each.
+    pub(crate) fn elements(&self, layers: usize) -> f64 {
+        (self.inner() + self.cover()) * layers as f64
+    }
+}
+
+/// The counts of [`lap_breaks`]`(p, layers)`, with no allocation that grows with them.
+pub(crate) fn lap_counts(p: &LapParams, layers: usize) -> LapCounts {
+    use crate::numeric::mesh::graded_toward_end_count as count;
+    let LapSizing {
+        finest,
+        coarsest,
+        extension,
+        ..
+    } = lap_sizing(p, layers);
+    let length = p.length;
+    LapCounts {
+        half_overlap: count(0.5 * length, length, finest, coarsest, GROWTH),
+        cover_extension: count(-extension, 0.0, finest, 4.0 * coarsest, GROWTH),
+        inner_extension: count(length, length + extension, finest, 4.0 * coarsest, GROWTH),
+    }
+}
+
+/// The element boundaries of the joint `p` with `layers` elements through each body, sized by
+/// [`lap_sizing`]. Count them first ([`lap_counts`]): nothing here bounds their number.
+pub(crate) fn lap_breaks(p: &LapParams, layers: usize) -> LapBreaks {
+    let LapSizing {
+        layer,
+        finest,
+        coarsest,
+        extension,
+    } = lap_sizing(p, layers);
     let length = p.length;
     let right = graded_toward_end(0.5 * length, length, finest, coarsest, GROWTH);
     let mut overlap: Vec<f64> = right.iter().rev().map(|x| length - x).collect();
@@ -504,19 +574,10 @@ struct Grid {
 impl Grid {
     /// The number of interface pairs and of elements the mesh would have, without building it.
     fn counts(p: &LapParams, mesh: LapContinuumMesh) -> (usize, usize) {
-        use crate::numeric::mesh::graded_toward_end_count as count;
-        let layer = (0.5 * p.inner_thickness / mesh.layers as f64)
-            .min(p.cover_thickness / mesh.layers as f64);
-        let decay = 1.0 / decay_rate(p);
-        let finest = (2.0 / 3.0 * layer).min(0.25 * decay);
-        let coarsest = (8.0 / 3.0 * layer).min(0.5 * decay).max(finest);
-        let extension = 2.0 * (p.inner_thickness + p.cover_thickness);
-        let half = count(0.5 * p.length, p.length, finest, coarsest, GROWTH);
-        let beyond = count(0.0, extension, finest, 4.0 * coarsest, GROWTH);
-        // 2 half overlaps of `half` elements, 2 pairs per element and one more; each body has
-        // the overlap and one extension, `layers` elements deep.
-        let pairs = 4.0 * half + 1.0;
-        let elements = 2.0 * (2.0 * half + beyond) * mesh.layers as f64;
+        let counts = lap_counts(p, mesh.layers);
+        // 2 half overlaps, 2 pairs per element and one more.
+        let pairs = 4.0 * counts.half_overlap + 1.0;
+        let elements = counts.elements(mesh.layers);
         let whole = |x: f64| {
             if x.is_finite() && x < usize::MAX as f64 {
                 x as usize
