@@ -129,7 +129,8 @@ fn fe_solvers_refuse_what_they_cannot_solve_and_say_what_to_change() {
             "-o",
             svg.to_str().unwrap(),
         ]);
-        assert_eq!(code, 1, "{set}: {err}");
+        // Refused input (issue 36, item 19: it exited 1, the code of "no answer").
+        assert_eq!(code, 2, "{set}: {err}");
         assert!(err.contains("lower K_T to at most"), "{set}: {err}");
     }
     let err = refused(&["verify", "--quick", "--elements", "10"]);

@@ -43,6 +43,15 @@ pub enum ReadError {
         /// What it is, in words ("a FIFO (named pipe)").
         kind: &'static str,
     },
+    /// A stream whose writer holds it open and sent nothing for this long.
+    #[error(
+        "nothing came through for {seconds} s while a process holds it open for writing: write \
+         the data to a regular file, or let its writer finish sooner"
+    )]
+    Silent {
+        /// The silence waited for (s).
+        seconds: u64,
+    },
     /// A FIFO that no process writes to: nothing to read.
     #[error("nothing to read: a FIFO (named pipe) that no process writes to")]
     NoWriter,

@@ -130,8 +130,12 @@ pub fn read_capped(
         0
     };
     let mut bytes = Vec::with_capacity(usize::try_from(expected).unwrap_or(0).saturating_add(1));
-    file.take(limit.0.saturating_add(1))
-        .read_to_end(&mut bytes)?;
+    if metadata.is_file() {
+        file.take(limit.0.saturating_add(1))
+            .read_to_end(&mut bytes)?;
+    } else {
+        read_stream(file, limit.0.saturating_add(1), &mut bytes)?;
+    }
     if bytes.len() as u64 > limit.0 {
         return Err(too_large());
     }
@@ -156,20 +160,83 @@ fn is_fifo(metadata: &Metadata) -> bool {
     }
 }
 
+/// How long a stream may stay silent while a process holds it open for writing: the read
+/// gives up then, instead of waiting for the writer's whole life (`fit lap f.csv` on a FIFO whose
+/// writer never wrote used to wait as long as it lived). A process substitution `<(...)` that
+/// computes its data for longer than this is refused: writing the data to a file first works.
+pub(crate) const STREAM_SILENCE: std::time::Duration = std::time::Duration::from_secs(5);
+
+/// Reads a stream (a FIFO, a device, `/dev/stdin`) opened without blocking, up to `limit`
+/// bytes, waiting for data at most [`STREAM_SILENCE`] at a time: no read here ever blocks.
+///
+/// Why a deadline rather than refusing streams: `fit lap <(script)` is a documented way to fit
+/// a curve a program writes; a deadline keeps it, and bounds the wait for a silent writer.
+fn read_stream(file: File, limit: u64, bytes: &mut Vec<u8>) -> Result<(), ReadError> {
+    let mut file = file.take(limit);
+    let mut buffer = [0_u8; 1 << 16];
+    loop {
+        match file.read(&mut buffer) {
+            Ok(0) => return Ok(()),
+            Ok(n) => bytes.extend_from_slice(&buffer[..n]),
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+            Err(e) if e.kind() == io::ErrorKind::WouldBlock => {
+                if !wait_readable(file.get_ref(), STREAM_SILENCE)? {
+                    return Err(ReadError::Silent {
+                        seconds: STREAM_SILENCE.as_secs(),
+                    });
+                }
+            }
+            Err(e) => return Err(e.into()),
+        }
+    }
+}
+
+/// Waits until `file` has data or its writer closed it, at most `timeout`; false on timeout.
+#[cfg(unix)]
+fn wait_readable(file: &File, timeout: std::time::Duration) -> io::Result<bool> {
+    use std::os::unix::io::AsRawFd;
+    let deadline = std::time::Instant::now() + timeout;
+    loop {
+        let left = deadline.saturating_duration_since(std::time::Instant::now());
+        if left.is_zero() {
+            return Ok(false);
+        }
+        let mut poll = libc::pollfd {
+            fd: file.as_raw_fd(),
+            events: libc::POLLIN,
+            revents: 0,
+        };
+        let millis = libc::c_int::try_from(left.as_millis().max(1)).unwrap_or(libc::c_int::MAX);
+        // SAFETY: one valid pollfd for a descriptor `file` owns, for the duration of the call.
+        match unsafe { libc::poll(&mut poll, 1, millis) } {
+            0 => return Ok(false),
+            n if n > 0 => return Ok(true),
+            _ => {
+                let e = io::Error::last_os_error();
+                if e.kind() != io::ErrorKind::Interrupted {
+                    return Err(e);
+                }
+            }
+        }
+    }
+}
+
+#[cfg(not(unix))]
+fn wait_readable(_file: &File, _timeout: std::time::Duration) -> io::Result<bool> {
+    Ok(true)
+}
+
 /// Opens `path` for reading with `O_NONBLOCK`, so that a FIFO without a writer does not wait in
-/// `open`, then clears the flag, so that reads of a stream whose writer is still at work wait for
-/// its data instead of failing with `EAGAIN`. A FIFO with no writer at all reads as empty.
+/// `open`, and keeps the flag: a stream is read by [`read_stream`], which waits for data with a
+/// deadline. A FIFO with no writer at all reads as empty.
 fn open_without_blocking(path: &Path) -> io::Result<File> {
     #[cfg(unix)]
     {
         use std::os::unix::fs::OpenOptionsExt;
-        use std::os::unix::io::AsRawFd;
-        let file = std::fs::OpenOptions::new()
+        std::fs::OpenOptions::new()
             .read(true)
             .custom_flags(libc::O_NONBLOCK)
-            .open(path)?;
-        super::set_blocking(file.as_raw_fd())?;
-        Ok(file)
+            .open(path)
     }
     #[cfg(not(unix))]
     {
