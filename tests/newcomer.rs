@@ -108,6 +108,7 @@ fn progress_counts_load_steps_from_ccx_total_time() {
         elapsed: Duration::from_secs(12),
         steps: 4,
         total_time,
+        increments: 0,
     };
     assert_eq!(ccx_progress(&at(None)), "ccx: 12 s, setting up");
     // Every step of the decks lasts 1: total time 1 ends step 1, 2.5 is half of step 3.

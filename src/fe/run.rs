@@ -525,6 +525,45 @@ mod tests {
         assert!(error.to_string().contains("beam.log"), "{error}");
     }
 
+    /// A solver handle dropped while the solver runs (an error or a panic between spawn and
+    /// exit) ends it and the processes it started: none outlives the handle.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn a_dropped_solver_handle_ends_its_whole_process_group() {
+        let dir = tempfile::tempdir().unwrap();
+        let pids = dir.path().join("pids");
+        let mut command = Command::new("sh");
+        command
+            .arg("-c")
+            .arg("sleep 60 & echo $$ $! > \"$0.tmp\"; mv \"$0.tmp\" \"$0\"; wait")
+            .arg(&pids);
+        let solver = Solver::spawn(&mut command).unwrap();
+        let started = Instant::now();
+        while !pids.exists() {
+            assert!(started.elapsed() < Duration::from_secs(10));
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        let pids: Vec<u32> = fs::read_to_string(&pids)
+            .unwrap()
+            .split_whitespace()
+            .map(|p| p.parse().unwrap())
+            .collect();
+        drop(solver);
+        // The solver was reaped by the drop; its orphaned child may linger as a zombie until
+        // init collects it, which is ended all the same.
+        let running = |pid: u32| {
+            fs::read_to_string(format!("/proc/{pid}/stat")).is_ok_and(|stat| {
+                stat.rsplit_once(')')
+                    .is_some_and(|(_, rest)| !rest.trim_start().starts_with('Z'))
+            })
+        };
+        let deadline = Instant::now() + Duration::from_secs(1);
+        while pids.iter().any(|&p| running(p)) && Instant::now() < deadline {
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        assert!(!pids.iter().any(|&p| running(p)), "{pids:?}");
+    }
+
     #[test]
     fn a_folder_holding_the_jobs_files_is_refused_and_fresh_folders_never_repeat() {
         let dir = tempfile::tempdir().unwrap();
