@@ -2,8 +2,10 @@
 //!
 //! A thin layer: presets and `--set` come from [`crate::preset`], numbers from [`crate::study::curves`],
 //! formats from [`crate::report`]; this file only parses flags, checks the flags that are not model
-//! parameters, and names flags in error messages. Errors are one line on stderr with exit code 2 (usage or input
-//! problems); `check` exits with 1 when a file has problems. Nothing goes to stdout before the inputs
+//! parameters, and names flags in error messages. Errors are one line on stderr; the exit codes
+//! follow one table ([`CliError::exit_code`]): 1 when a command ran and its answer is "no" (`check`,
+//! `verify`, a `solve` with no root) or could not be computed, 2 for usage or input problems, 3
+//! when the external solver failed, 128 + N after signal N. Nothing goes to stdout before the inputs
 //! are known to be valid, so a failed run never leaves half a table behind.
 
 use std::io::{self, BufWriter, IsTerminal, Write};
@@ -246,6 +248,11 @@ pub enum Command {
     },
     /// Benchmark CalculiX in one command: write the deck, run ccx on it (progress on stderr, its
     /// files and log kept in a work folder) and print the comparison with the closed forms.
+    ///
+    /// When stderr is not a terminal, one progress line per increment ccx starts. Exit 3 when
+    /// ccx is not found, fails or writes no results (the last lines of its log follow); on
+    /// SIGTERM, SIGINT or SIGHUP, ccx and what it started are ended first, then exit 128 + the
+    /// signal.
     Bench {
         /// The FE code (ccx: CalculiX 2.20).
         #[arg(value_enum)]
@@ -259,7 +266,8 @@ pub enum Command {
         /// a new folder microslip-ccx-JOB-N in the system's temporary folder.
         #[arg(long, value_name = "DIR")]
         workdir: Option<PathBuf>,
-        /// The ccx program to run (default: `ccx` on the PATH).
+        /// The ccx program to run: a name is looked up on the PATH, a path (`./ccx_2.20`) is
+        /// taken from the current folder.
         #[arg(long, value_name = "PROGRAM", default_value = "ccx")]
         ccx: String,
         /// Output format of the comparison.
