@@ -73,12 +73,13 @@ fn after_help() -> String {
         "Units: mm, N, MPa; K_T in MPa/mm (1 MPa/um = 1000 MPa/mm).\n\
          Keys for --set and preset files: {}.\n\
          Without a command, microslip opens the terminal UI (keys: press ? inside).",
-        ModelKind::ALL
-            .iter()
-            .map(|k| format!("{k} {}", k.key_list()))
-            .collect::<Vec<_>>()
-            .join("; ")
+        ModelKind::key_docs()
     )
+}
+
+/// The help of `--set`: every model's keys as the specs define them.
+fn set_help() -> String {
+    format!("Set a parameter, e.g. KT=120 ({})", ModelKind::key_docs())
 }
 
 /// Subcommands.
@@ -355,9 +356,8 @@ pub struct InputArgs {
     /// Bundled or user preset name, or a path to a TOML file.
     #[arg(long, value_name = "P")]
     pub preset: Option<String>,
-    /// Set a parameter, e.g. KT=120 (beam: L b h E nu P mu KT F; plate: L tp E nu mu P KT; lap:
-    /// L b t1 t2 E1 E2 P mu KT F).
-    #[arg(long = "set", value_name = "KEY=VALUE")]
+    // The help names each model's keys from the specs (`set_help`), half sizes marked.
+    #[arg(long = "set", value_name = "KEY=VALUE", help = set_help())]
     pub assignments: Vec<String>,
     /// Beam theory of the twin beams' deflection (default: the preset's, else the paper's
     /// Euler-Bernoulli); timoshenko adds each beam's shear deflection.

@@ -174,6 +174,26 @@ fn input_error_keeps_the_old_value_and_says_why() {
     insta::assert_snapshot!("input_error", screen(&app, 80, 24));
 }
 
+/// The beams' `h` is half of each beam's height: its row says `half` (as the plate's `L` row does)
+/// and its prompt says what it is, so nobody types the whole 20 mm height.
+#[test]
+fn the_beams_half_height_says_half_in_its_row_and_its_prompt() {
+    let mut app = app();
+    act(&mut app, &[Action::Next, Action::Next]);
+    let text = screen(&app, 120, 40);
+    let row = text
+        .lines()
+        .find(|l| l.contains(">  h") || l.contains("> h"))
+        .unwrap_or_else(|| panic!("no selected h row:\n{text}"));
+    assert!(row.contains("mm half"), "{row}");
+    press(&mut app, Action::StartEdit);
+    let text = screen(&app, 120, 40);
+    assert!(
+        text.contains("h (mm, half height (each beam is 2h high))"),
+        "{text}"
+    );
+}
+
 #[test]
 fn ascii_charset_draws_only_ascii() {
     let mut app = app_with("paper-beams", Charset::Ascii, true);

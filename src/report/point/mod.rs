@@ -47,7 +47,9 @@ pub(crate) fn validity_label<S: Serializer>(v: &Validity, s: S) -> Result<S::Ok,
 }
 
 /// The model's parameters: in JSON an object `KEY_unit: value` (`L_mm`, `KT_MPa_per_mm`, `mu`);
-/// in text one line per parameter with value, unit and meaning.
+/// in text one line per parameter with value, unit and meaning. The keys are the `--set` keys, so
+/// two are half sizes: the beams' `h_mm` is the half height (each beam is 2 h_mm high) and the
+/// plate's `L_mm` the half-length, where the beams' and the lap joint's `L_mm` are whole lengths.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct InputsReport(pub Inputs);
 

@@ -245,11 +245,16 @@ fn status_line(app: &App) -> Line<'static> {
             spans.push(hint);
         }
         (Mode::Editing { .. }, None) => {
-            let param = app.selected_param();
+            let spec = app.selected_param().spec();
+            // A half size says so where it is typed (`h (mm, half height ...)`), as its row does.
+            let meaning = if spec.note.is_empty() {
+                String::new()
+            } else {
+                format!(", {}", spec.meaning)
+            };
             spans.push(Span::raw(format!(
-                "| {} ({}): type a value (replaces), Enter accept, Esc cancel",
-                param.name(),
-                param.unit()
+                "| {} ({}{meaning}): type a value (replaces), Enter accept, Esc cancel",
+                spec.name, spec.unit
             )));
         }
         (_, Some(message)) => {
