@@ -2347,3 +2347,67 @@ fn the_lap_joint_from_the_command_line() {
     let plate = failure(&["cycle", "--amplitude", "1", "--preset", "paper-plate"], 2);
     assert!(plate.contains("needs a beam or lap preset"), "{plate}");
 }
+
+/// Issue 36 (10): a ratio has one name in every output, its unit in the name, beside the old
+/// name (kept one release); the lap report gives D and zeta as the TUI and `cycle` do.
+#[test]
+fn ratios_have_one_name_with_their_unit_in_every_output() {
+    let json =
+        |args: &[&str]| -> serde_json::Value { serde_json::from_str(&stdout_of(args)).unwrap() };
+    let lap = json(&["lap", "--preset", "lap-aluminium", "--format", "json"]);
+    let bound = &lap["shear_lag"]["shear_lag_within_fraction"];
+    assert!(bound.as_f64().is_some(), "{lap}");
+    assert_eq!(bound, &lap["shear_lag"]["expected_error"]);
+    // The same bound in the sweep's CSV at the same force, under the same name.
+    let csv = stdout_of(&[
+        "sweep",
+        "lap",
+        "--preset",
+        "lap-aluminium",
+        "--from",
+        "3000",
+        "--to",
+        "3000",
+        "--points",
+        "1",
+    ]);
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let column = |name: &str| {
+        let i = header
+            .iter()
+            .position(|h| *h == name)
+            .unwrap_or_else(|| panic!("{name}: {csv}"));
+        row[i].parse::<f64>().unwrap()
+    };
+    assert_eq!(column("shear_lag_within_fraction"), bound.as_f64().unwrap());
+    assert_eq!(column("shear_lag_within"), bound.as_f64().unwrap());
+    // D and zeta: those of `cycle` at amplitude F, for both laws.
+    let cycle = json(&[
+        "cycle",
+        "--preset",
+        "lap-aluminium",
+        "--amplitude",
+        "3000",
+        "--format",
+        "json",
+    ]);
+    for law in ["coulomb", "regularized"] {
+        for key in ["D_Nmm", "zeta"] {
+            let value = lap[law][key]
+                .as_f64()
+                .unwrap_or_else(|| panic!("{law}.{key}: {lap}"));
+            let expected = cycle[law][key].as_f64().unwrap();
+            assert!(
+                (value - expected).abs() <= 1e-12 * expected.abs(),
+                "{law}.{key}"
+            );
+        }
+    }
+    let beam = json(&["beam", "--format", "json"]);
+    assert_eq!(
+        beam["beam_theory"]["vs_continuum_within_fraction"],
+        beam["beam_theory"]["vs_continuum_within"]
+    );
+}

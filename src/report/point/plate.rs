@@ -129,23 +129,44 @@ pub struct StripTheory {
     pub expected: Option<ExpectedDifferences>,
     /// Where the strip theory is measured wrong (V1c): the least difference of the thickness mean
     /// from the continuum stated for its region.
+    /// In JSON under its old name (deprecated, kept one release) and under the name that says
+    /// its unit, `measured_difference_at_least_fraction`.
     #[serde(
         rename = "measured_difference_at_least",
         skip_serializing_if = "Option::is_none"
     )]
     pub measured_at_least: Option<f64>,
+    #[serde(
+        rename = "measured_difference_at_least_fraction",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub measured_at_least_fraction: Option<f64>,
 }
 
 /// Where a calibration reaches: the expected difference from a plane-strain continuum of each
-/// quantity, a fraction.
-#[derive(Debug, Clone, Copy, Serialize)]
+/// quantity, a fraction. Each is written twice in JSON: under its old name (deprecated, kept one
+/// release) and under that name with `_fraction`, the unit every ratio's name now carries.
+#[derive(Debug, Clone, Copy)]
 pub struct ExpectedDifferences {
-    #[serde(rename = "expected_difference_from_continuum")]
     pub thickness_mean: f64,
-    #[serde(rename = "expected_difference_contact_face")]
     pub contact_face: f64,
-    #[serde(rename = "expected_difference_mid_thickness")]
     pub mid_thickness: f64,
+}
+
+impl Serialize for ExpectedDifferences {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = s.serialize_map(Some(6))?;
+        for (key, value) in [
+            ("expected_difference_from_continuum", self.thickness_mean),
+            ("expected_difference_contact_face", self.contact_face),
+            ("expected_difference_mid_thickness", self.mid_thickness),
+        ] {
+            map.serialize_entry(key, &value)?;
+            map.serialize_entry(&format!("{key}_fraction"), &value)?;
+        }
+        map.end()
+    }
 }
 
 /// The plane-strain continuum: its answer, or why it has none.
@@ -210,6 +231,7 @@ impl StripTheory {
                 mid_thickness: e[2],
             }),
             measured_at_least: v.measured_at_least,
+            measured_at_least_fraction: v.measured_at_least,
         }
     }
 
