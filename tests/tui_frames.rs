@@ -194,6 +194,27 @@ fn the_beams_half_height_says_half_in_its_row_and_its_prompt() {
     );
 }
 
+/// The regime title's "FE within 3.02 %" is explained by `i` (its first line) and by `?`.
+#[test]
+fn the_regime_titles_envelope_is_explained_by_i_and_by_the_help() {
+    for preset in ["paper-beams", "lap-aluminium"] {
+        let mut app = app_with(preset, Charset::Unicode, true);
+        press(&mut app, Action::Explain);
+        let text = screen(&app, 100, 30);
+        assert!(text.contains("┌ FE within"), "{preset}:\n{text}");
+        assert!(text.contains("continuum"), "{preset}:\n{text}");
+        assert!(text.contains("line 1/"), "{preset}:\n{text}");
+    }
+    let mut app = app();
+    press(&mut app, Action::ToggleHelp);
+    let mut help = String::new();
+    for _ in 0..4 {
+        help.push_str(&screen(&app, 120, 40));
+        press(&mut app, Action::Next);
+    }
+    assert!(help.contains("Regime title \"FE within 3 %\""), "{help}");
+}
+
 #[test]
 fn ascii_charset_draws_only_ascii() {
     let mut app = app_with("paper-beams", Charset::Ascii, true);
@@ -704,7 +725,8 @@ fn workbench_screens() -> [Screen; 5] {
     let explain = [
         &vary[..],
         &[Action::Vary, Action::Explain],
-        &[Action::Next; 4],
+        // The title's envelope first, then the pane's lines down to F_1.
+        &[Action::Next; 5],
     ]
     .concat();
     let prompt = [

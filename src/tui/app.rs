@@ -562,6 +562,14 @@ impl App {
         })
     }
 
+    /// The lines `i` walks through: the regime pane's title where it states an envelope, then
+    /// its lines.
+    pub fn explained_lines(&self) -> Vec<crate::tui::summary::SummaryLine> {
+        self.model().map_or_else(Vec::new, |m| {
+            crate::tui::summary::explained_lines(&m, &self.continuum())
+        })
+    }
+
     /// Asks for the plate's continuum at the current values when it is shown and not asked yet.
     fn ask_continuum(&mut self) {
         let plate = match self.model() {
@@ -1042,7 +1050,7 @@ impl App {
                 }
             }
             Mode::Explain { line } => {
-                let count = self.summary_lines().len().max(1);
+                let count = self.explained_lines().len().max(1);
                 match action {
                     Action::Next => {
                         self.mode = Mode::Explain {
@@ -2316,7 +2324,8 @@ mod tests {
         for _ in 0..50 {
             app.update(Action::Next);
         }
-        let count = app.summary_lines().len();
+        let count = app.explained_lines().len();
+        assert_eq!(app.summary_lines().len() + 1, count, "the title first");
         assert_eq!(app.mode(), &Mode::Explain { line: count - 1 });
         app.update(Action::Cancel);
         assert_eq!(app.mode(), &Mode::Normal);
