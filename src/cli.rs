@@ -90,6 +90,8 @@ pub enum Command {
     /// Twin cantilever beams at one tip force: thresholds, X, w(L) for both laws, regimes.
     Beam(PointArgs),
     /// Squeezed plate: X_s, X_r, u(L) for both laws, regimes, contact-pressure check, validity.
+    // --beam-theory has no effect here: hidden from the help (and refused if given).
+    #[command(mut_arg("beam_theory", |a| a.hide(true)))]
     Plate {
         #[command(flatten)]
         point: PointArgs,
@@ -100,6 +102,8 @@ pub enum Command {
     },
     /// Clamped double-lap joint at one force: F_1 (and where), F_2, F_gross, Delta and both
     /// sliding zones for both laws, regimes, the shear-lag theory's envelope.
+    // --beam-theory has no effect here: hidden from the help (and refused if given).
+    #[command(mut_arg("beam_theory", |a| a.hide(true)))]
     Lap {
         #[command(flatten)]
         point: PointArgs,
@@ -440,9 +444,13 @@ pub enum SweepCommand {
     },
     /// Double-lap joint over a range of forces F (N, up to F_gross), linearly spaced (replaces the
     /// preset's F), or of any parameter with --vary.
+    // --beam-theory has no effect here: hidden from the help (and refused if given).
+    #[command(mut_arg("beam_theory", |a| a.hide(true)))]
     Lap(LapSweepArgs),
     /// Squeezed plate over a range of K_T (MPa/mm), logarithmically spaced unless --linear, or of
     /// any parameter with --vary NAME --from A --to B.
+    // --beam-theory has no effect here: hidden from the help (and refused if given).
+    #[command(mut_arg("beam_theory", |a| a.hide(true)))]
     Plate {
         /// First K_T (MPa/mm).
         #[arg(long, value_name = "A", allow_negative_numbers = true, conflicts_with_all = ["vary", "from"])]
@@ -1863,6 +1871,10 @@ fn apply_and_validate(
     for assignment in &args.assignments {
         preset::apply_assignment(&mut inputs, assignment)?;
     }
+    // "modified" only where a value differs from the preset's: `--set F=3000` on a preset whose F
+    // is 3000 leaves the preset as it is, and saying otherwise sends users looking for a change.
+    let set_changed = inputs != preset.inputs;
+    let before_theory = inputs;
     if let Some(theory) = &args.beam_theory {
         let theory = BeamTheory::parse(theory).map_err(CliError::Theory)?;
         match &mut inputs {
@@ -1879,11 +1891,12 @@ fn apply_and_validate(
             }
         }
     }
-    let name = match (args.assignments.is_empty(), args.beam_theory.is_none()) {
-        (true, true) => name,
-        (false, true) => format!("{name} (modified by --set)"),
-        (true, false) => format!("{name} (modified by --beam-theory)"),
-        (false, false) => format!("{name} (modified by --set and --beam-theory)"),
+    let theory_changed = inputs != before_theory;
+    let name = match (set_changed, theory_changed) {
+        (false, false) => name,
+        (true, false) => format!("{name} (modified by --set)"),
+        (false, true) => format!("{name} (modified by --beam-theory)"),
+        (true, true) => format!("{name} (modified by --set and --beam-theory)"),
     };
     Ok((name, inputs.validate()?))
 }

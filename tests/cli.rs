@@ -2411,3 +2411,20 @@ fn ratios_have_one_name_with_their_unit_in_every_output() {
         beam["beam_theory"]["vs_continuum_within"]
     );
 }
+
+/// Issue 36 (12): "modified by --set" only where a value differs from the preset's.
+#[test]
+fn a_set_that_repeats_the_presets_value_does_not_modify_it() {
+    let same = stdout_of(&["lap", "--set", "F=3000"]);
+    assert!(!same.contains("modified"), "{same}");
+    let other = stdout_of(&["lap", "--set", "F=3001"]);
+    assert!(other.contains("(modified by --set)"), "{other}");
+    let json = stdout_of(&[
+        "beam",
+        "--beam-theory",
+        "euler-bernoulli",
+        "--format",
+        "json",
+    ]);
+    assert!(json.contains("\"preset\": \"paper-beams\""), "{json}");
+}

@@ -1320,6 +1320,15 @@ impl App {
                 if self.show_numeric && self.numeric.is_none() && self.message.is_none() {
                     self.info("no finite-element points for this chart (D vs F_a, P_r/P, X_r vs mu and the table have none)");
                 }
+                // The legend says where the first gap is; the status says why.
+                if let Some(words) = self
+                    .numeric
+                    .as_ref()
+                    .filter(|_| self.show_numeric)
+                    .and_then(NumericPoints::failure_words)
+                {
+                    self.info(format!("finite elements: {words}"));
+                }
             }
             Action::ToggleBeamTheory => match &mut self.state_mut().inputs {
                 Inputs::Beam { structure, .. } => {
