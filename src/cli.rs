@@ -277,8 +277,8 @@ pub enum Command {
         #[arg(value_enum)]
         model: ModelKind,
         /// Result files: the .dat of a `microslip deck ccx` run (its deck JOB.inp beside it), or a
-        /// CSV from any FE code: F_N,w_mm (beam) or KT_MPa_per_mm,u_mm (plate). Several plate
-        /// runs (one per K_T) may be given.
+        /// CSV from any FE code: F_N,w_mm (beam), KT_MPa_per_mm,u_mm (plate) or F_N,Delta_mm (lap).
+        /// Several plate or lap runs may be given.
         #[arg(required = true, value_name = "RESULT")]
         results: Vec<PathBuf>,
         /// The deck of a .dat result (default: the result's name with .inp).
@@ -1388,16 +1388,26 @@ fn force_range_error(error: RangeError) -> CliError {
 /// Says on stderr which parameter flags a CalculiX run's deck overrides: its header gives the
 /// parameters the run was made with, and comparing at others would mean nothing (they used to be
 /// ignored without a word).
-fn note_flags_the_deck_overrides(inputs: &InputArgs) {
+fn note_flags_the_deck_overrides(inputs: &InputArgs, model: ModelKind) {
     let given = inputs.flags();
     if given.is_empty() {
         return;
     }
-    eprintln!(
-        "microslip: note: {} not used: the deck's header gives the parameters of the run (compare \
-         shows both beam theories); to compare FE points at other parameters, give them as CSV",
+    eprintln!("microslip: note: {}", deck_overrides_words(&given, model));
+}
+
+/// The words of [`note_flags_the_deck_overrides`]: only the beams have two beam theories, so
+/// only their note says that both are shown.
+fn deck_overrides_words(given: &[String], model: ModelKind) -> String {
+    let theories = match model {
+        ModelKind::Beam => " (compare shows both beam theories)",
+        ModelKind::Plate | ModelKind::Lap => "",
+    };
+    format!(
+        "{} not used: the deck's header gives the parameters of the run{theories}; to compare FE \
+         points at other parameters, give them as CSV",
         report::sanitize(&given.join(" "))
-    );
+    )
 }
 
 fn run_compare(
@@ -1427,7 +1437,7 @@ fn run_compare(
             for path in results {
                 let loaded = fe::load::lap_results(path, deck).map_err(data_error)?;
                 if loaded.header.is_some() && rows.is_empty() {
-                    note_flags_the_deck_overrides(inputs);
+                    note_flags_the_deck_overrides(inputs, model);
                 }
                 let joint = match &loaded.header {
                     Some(header) => header.model()?.into_lap().map_err(deck_of_other_model)?.0,
@@ -1459,7 +1469,7 @@ fn run_compare(
             };
             let loaded = fe::load::beam_results(path, deck).map_err(data_error)?;
             if loaded.header.is_some() {
-                note_flags_the_deck_overrides(inputs);
+                note_flags_the_deck_overrides(inputs, model);
             }
             let beams = match &loaded.header {
                 Some(header) => header.model()?.into_beams().map_err(deck_of_other_model)?.0,
@@ -1480,7 +1490,7 @@ fn run_compare(
             for path in results {
                 let loaded = fe::load::plate_results(path, deck).map_err(data_error)?;
                 if loaded.header.is_some() && rows.is_empty() {
-                    note_flags_the_deck_overrides(inputs);
+                    note_flags_the_deck_overrides(inputs, model);
                 }
                 let plate = match &loaded.header {
                     Some(header) => header.model()?.into_plate().map_err(deck_of_other_model)?,

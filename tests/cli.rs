@@ -2428,3 +2428,81 @@ fn a_set_that_repeats_the_presets_value_does_not_modify_it() {
     ]);
     assert!(json.contains("\"preset\": \"paper-beams\""), "{json}");
 }
+
+/// Issue 36 (12): the words users read: no issue numbers in help, no flag offered where it does
+/// nothing, the lap CSV columns named, and the beam-theory note only for the beams.
+#[test]
+fn help_and_notes_say_only_what_applies() {
+    let commands: &[&[&str]] = &[
+        &[],
+        &["beam"],
+        &["plate"],
+        &["lap"],
+        &["sweep", "beam"],
+        &["sweep", "plate"],
+        &["sweep", "lap"],
+        &["solve"],
+        &["kt"],
+        &["cycle"],
+        &["fit"],
+        &["deck", "ccx"],
+        &["bench", "ccx"],
+        &["compare"],
+        &["plot"],
+        &["figures"],
+        &["check"],
+        &["verify"],
+    ];
+    for command in commands {
+        let help = stdout_of(&[*command, &["--help"][..]].concat());
+        assert!(
+            !help.to_lowercase().contains("issue"),
+            "{command:?}: {help}"
+        );
+    }
+    for command in [
+        &["plate"][..],
+        &["lap"],
+        &["sweep", "plate"],
+        &["sweep", "lap"],
+    ] {
+        let help = stdout_of(&[command, &["--help"][..]].concat());
+        assert!(!help.contains("--beam-theory"), "{command:?}: {help}");
+    }
+    let stderr = failure(
+        &[
+            "sweep",
+            "lap",
+            "--from",
+            "0",
+            "--to",
+            "1",
+            "--points",
+            "2",
+            "--beam-theory",
+            "timoshenko",
+        ],
+        2,
+    );
+    assert!(
+        stderr.contains("--beam-theory applies to the twin beams"),
+        "{stderr}"
+    );
+    let help = stdout_of(&["compare", "--help"]);
+    assert!(help.contains("F_N,Delta_mm (lap)"), "{help}");
+    let note = |model: &str, dat: &str| {
+        let output = microslip()
+            .args(["compare", model, dat, "--set", "KT=500"])
+            .output()
+            .unwrap();
+        assert!(output.status.success(), "{model}");
+        String::from_utf8(output.stderr).unwrap()
+    };
+    let lap = note("lap", "tests/data/calculix/lap-aluminium.dat");
+    assert!(
+        lap.contains("not used") && !lap.contains("beam theor"),
+        "{lap}"
+    );
+    let beam = note("beam", "tests/data/calculix/paper-beams.dat");
+    assert!(beam.contains("compare shows both beam theories"), "{beam}");
+}
