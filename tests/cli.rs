@@ -2506,3 +2506,28 @@ fn help_and_notes_say_only_what_applies() {
     let beam = note("beam", "tests/data/calculix/paper-beams.dat");
     assert!(beam.contains("compare shows both beam theories"), "{beam}");
 }
+
+/// Issue 36 (20): a refusal keeps what the user needs: the range for a value that is no number,
+/// the text typed for one that rounds to 0, invisible characters escaped.
+#[test]
+fn refusals_keep_the_range_the_text_typed_and_show_invisible_characters() {
+    for text in ["nan", "", "abc"] {
+        let stderr = failure(&["beam", "--set", &format!("KT={text}")], 2);
+        assert!(
+            stderr.contains(&format!(
+                "invalid value '{text}' for KT: not a finite number; must be in [1e-6, 1e12] MPa/mm"
+            )),
+            "{stderr}"
+        );
+    }
+    let stderr = failure(&["beam", "--set", "KT=1e-400"], 2);
+    assert!(
+        stderr.contains("invalid KT = 1e-400: must be in [1e-6, 1e12] MPa/mm"),
+        "{stderr}"
+    );
+    let stderr = failure(&["beam", "--set", "KT=\u{200b}1000"], 2);
+    assert!(stderr.contains("'\\u{200b}1000'"), "{stderr}");
+    // Where 0 is accepted, a number that rounds to it is 0.
+    let text = stdout_of(&["beam", "--set", "F=1e-400"]);
+    assert!(text.contains("At F = 0 N"), "{text}");
+}

@@ -215,6 +215,31 @@ fn the_regime_titles_envelope_is_explained_by_i_and_by_the_help() {
     assert!(help.contains("Regime title \"FE within 3 %\""), "{help}");
 }
 
+/// Issue 36 (20): a refused value shows what was typed, invisible characters escaped and the
+/// range given, in the value field and on the `:` line.
+#[test]
+fn refused_values_show_invisible_characters_and_the_range() {
+    let mut app = app();
+    press(&mut app, Action::CommandLine);
+    type_and_commit(&mut app, "KT=\u{200b}1000");
+    let text = screen(&app, 120, 40);
+    assert!(
+        text.contains(
+            "invalid value '\\u{200b}1000' for KT: not a finite number; must be in [1e-6"
+        ),
+        "{text}"
+    );
+    let mut app = self::app();
+    act(&mut app, &[Action::Next; 7]);
+    press(&mut app, Action::StartEdit);
+    type_and_commit(&mut app, "1e-400");
+    let text = screen(&app, 120, 40);
+    assert!(
+        text.contains("invalid KT = 1e-400: must be in [1e-6, 1e12] MPa/mm"),
+        "{text}"
+    );
+}
+
 #[test]
 fn ascii_charset_draws_only_ascii() {
     let mut app = app_with("paper-beams", Charset::Ascii, true);

@@ -17,7 +17,7 @@ use crate::PlateParams;
 use crate::chart::view::AnyChart;
 use crate::chart::{self, NumericPoints, Plot, YMode, pins};
 use crate::fit::Measurement;
-use crate::kernel::params::{Compact, parse_number};
+use crate::kernel::params::Compact;
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::twin_beams::closed_form::BeamTheory;
@@ -1704,12 +1704,9 @@ impl App {
     /// Enter in the value field: parse, then set like a step.
     fn commit_value(&mut self, text: &str) {
         let param = self.selected_param();
-        match parse_number(text) {
-            Some(value) => self.set_value(param, value),
-            None => self.error(format!(
-                "invalid value '{text}' for {param}: not a finite number; kept {}",
-                self.current_value(param)
-            )),
+        match crate::preset::parse_value(param, text) {
+            Ok(value) => self.set_value(param, value),
+            Err(e) => self.error(format!("{e}; kept {}", self.current_value(param))),
         }
     }
 

@@ -43,7 +43,8 @@ pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
             // `get` cannot miss: the parameters come from the active model.
             let value = inputs.get(param).unwrap_or(f64::NAN);
             let shown = match app.mode() {
-                Mode::Editing { input } if selected => input.shown(),
+                // What is typed, invisible characters escaped (a zero-width space shows).
+                Mode::Editing { input } if selected => sanitize(&input.shown()).into_owned(),
                 _ => number(value),
             };
             let unit = match param.unit() {
