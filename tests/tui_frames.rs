@@ -333,7 +333,7 @@ fn every_size_and_state_shows_what_the_user_needs() {
         let shown = words(&rows);
         let message = format!(
             "Terminal too small: {w}x{h}. microslip needs at least 80x24. \
-             Enlarge the window, or press q to quit."
+             Enlarge the window, or press q (Ctrl-C) to quit."
         );
         match must_see {
             MustSee::StartOfTooSmall => assert!(

@@ -26,7 +26,7 @@ use crate::problems::inputs::Inputs;
 
 pub use parse::apply_assignment;
 pub(crate) use parse::parse_value;
-pub use store::{SaveError, save_atomic, user_preset_dir, user_presets};
+pub use store::{SaveError, check_name, save_atomic, user_preset_dir, user_presets};
 pub use write::to_toml;
 
 /// A parsed preset.

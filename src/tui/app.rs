@@ -806,6 +806,14 @@ impl App {
         self.info(format!("y axis: {} (y: next mode)", next.label()));
     }
 
+    /// Whether `action` may act while the terminal is too small to draw the app: only quitting
+    /// (q, Esc, Ctrl-C), answering the quit question, and suspending. Anything else would act
+    /// unseen: at 1x1, `x` exported a file nobody saw.
+    pub fn acts_when_too_small(&self, action: Action) -> bool {
+        matches!(action, Action::Quit | Action::RequestQuit | Action::Suspend)
+            || matches!(self.mode, Mode::ConfirmQuit { .. })
+    }
+
     /// Applies one action; returns what the caller must do for it (nothing, for most keys), whose
     /// outcomes go to [`App::receive`]. Touches no file and never waits.
     pub fn update(&mut self, action: Action) -> Vec<Effect> {
@@ -1806,6 +1814,10 @@ impl App {
         if self.user_dir.is_none() {
             return self.error(SaveError::NoDirectory.to_string());
         }
+        // The name first: refused after the description, it would throw the description away.
+        if let Err(e) = preset::check_name(&name) {
+            return self.error(e.to_string());
+        }
         let preset = &self.state().preset;
         let description = if preset.name == name && !preset.description.is_empty() {
             preset.description.clone()
@@ -2465,6 +2477,30 @@ mod tests {
         assert_eq!(app.mode(), &Mode::Normal);
         app.update(Action::Quit);
         assert!(app.should_quit());
+    }
+
+    #[test]
+    fn a_refused_preset_name_is_refused_before_the_description_is_asked() {
+        let dir = tempfile::tempdir().unwrap();
+        for via_command in [true, false] {
+            let mut app = app_with_dir(Some(dir.path().to_path_buf()));
+            if via_command {
+                press(&mut app, Action::CommandLine);
+                typed(&mut app, "save ../x");
+            } else {
+                press(&mut app, Action::SavePreset);
+                typed(&mut app, "paper-beams");
+            }
+            press(&mut app, Action::Commit);
+            assert!(
+                !matches!(app.mode(), Mode::SaveDescription { .. }),
+                "{:?}",
+                app.mode()
+            );
+            let message = app.message().unwrap();
+            assert!(message.is_error, "{}", message.text);
+        }
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
     }
 
     #[test]
