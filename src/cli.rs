@@ -371,6 +371,19 @@ pub struct InputArgs {
 
 impl InputArgs {
     /// The parameter flags given, as a command line repeats them (`--preset P`, `--set K=V`, ...).
+    /// The files these flags read, with the flag that names each: the preset's file, given as a
+    /// path or as the name of a user preset (bundled presets are no files). A preset that does
+    /// not resolve reads nothing: loading it reports why.
+    fn read_files(&self) -> Vec<(&'static str, PathBuf)> {
+        let Some(name) = &self.preset else {
+            return Vec::new();
+        };
+        match preset::resolve(name).map(|p| p.source) {
+            Ok(preset::PresetSource::File(path)) => vec![("--preset", path)],
+            _ => Vec::new(),
+        }
+    }
+
     fn flags(&self) -> Vec<String> {
         let mut given: Vec<String> = self
             .preset
@@ -1147,6 +1160,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             format,
             output,
         }) => {
+            refuse_overwriting_an_input(output.as_deref(), &inputs.read_files())?;
             let command = format!("plot (a {} chart)", chart.kind());
             let (_, model) = load(inputs, chart.kind(), &command)?;
             let shown = shown_roles(series.as_deref(), *no_cursor)?;
@@ -1242,6 +1256,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             deck,
             output,
         }) => {
+            refuse_overwriting_an_input(output.as_deref(), &deck.inputs.read_files())?;
             let deck = build_deck(*model, deck, &model_command(*model, "deck ccx"))?;
             write_output(out, output.as_deref(), deck.as_bytes())?
         }
@@ -1618,6 +1633,29 @@ fn parse_count(text: &str) -> Result<u64, String> {
         return Err(refuse());
     }
     Ok(value as u64)
+}
+
+/// Refuses an output file that is one this command reads (`deck ccx lap --preset p.toml -o
+/// p.toml` replaced the preset it was reading with the deck): `reads` are the command's input
+/// files, `-o` is compared with each as a file ([`crate::file::same_file`]), not as text. Checked
+/// before anything is computed or written.
+fn refuse_overwriting_an_input(
+    output: Option<&std::path::Path>,
+    reads: &[(&str, PathBuf)],
+) -> Result<(), CliError> {
+    let Some(output) = output else {
+        return Ok(());
+    };
+    for (flag, read) in reads {
+        if crate::file::same_file(output, read) {
+            return Err(CliError::Invalid(format!(
+                "-o {}: that is the file this command reads ({flag} {}); write to another file",
+                output.display(),
+                read.display()
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// Writes `bytes` to `path` ([`crate::file::write_atomic`]: a regular file replaced atomically with

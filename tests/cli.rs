@@ -2531,3 +2531,87 @@ fn refusals_keep_the_range_the_text_typed_and_show_invisible_characters() {
     let text = stdout_of(&["beam", "--set", "F=1e-400"]);
     assert!(text.contains("At F = 0 N"), "{text}");
 }
+
+/// Issue 36 (16): a command never writes over a file it reads: `-o` naming the preset, however
+/// spelt (another relative form, an absolute path, a link, a user preset by name), is refused
+/// before anything is written, and the preset is intact.
+#[test]
+fn output_never_overwrites_the_preset_the_command_reads() {
+    let dir = tempfile::tempdir().unwrap();
+    let presets = dir.path().join("microslip").join("presets");
+    std::fs::create_dir_all(&presets).unwrap();
+    let text = std::fs::read_to_string("presets/lap-aluminium.toml").unwrap();
+    let preset = dir.path().join("p.toml");
+    std::fs::write(&preset, &text).unwrap();
+    std::fs::write(presets.join("mine.toml"), &text).unwrap();
+    let link = dir.path().join("link.toml");
+    std::os::unix::fs::symlink(&preset, &link).unwrap();
+    let p = preset.to_str().unwrap();
+    let dotted = format!("{}/./p.toml", dir.path().display());
+    let mine = presets.join("mine.toml");
+    let cases: [Vec<&str>; 5] = [
+        vec!["deck", "ccx", "lap", "--preset", p, "-o", &dotted],
+        vec!["plot", "delta-vs-f", "--preset", p, "-o", p],
+        vec![
+            "plot",
+            "delta-vs-f",
+            "--preset",
+            link.to_str().unwrap(),
+            "-o",
+            p,
+        ],
+        vec![
+            "deck",
+            "ccx",
+            "lap",
+            "--preset",
+            p,
+            "-o",
+            link.to_str().unwrap(),
+        ],
+        vec![
+            "deck",
+            "ccx",
+            "lap",
+            "--preset",
+            "mine",
+            "-o",
+            mine.to_str().unwrap(),
+        ],
+    ];
+    for args in cases {
+        let output = microslip()
+            .env("XDG_CONFIG_HOME", dir.path())
+            .args(&args)
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        let stderr = String::from_utf8(output.stderr).unwrap();
+        assert!(
+            stderr.contains("that is the file this command reads (--preset"),
+            "{args:?}: {stderr}"
+        );
+        assert_eq!(std::fs::read_to_string(&preset).unwrap(), text, "{args:?}");
+        assert_eq!(std::fs::read_to_string(&mine).unwrap(), text, "{args:?}");
+    }
+    // Another file is written as before.
+    let other = dir.path().join("deck.inp");
+    let output = microslip()
+        .args([
+            "deck",
+            "ccx",
+            "lap",
+            "--preset",
+            p,
+            "-o",
+            other.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(output.status.success());
+    assert!(
+        std::fs::read_to_string(&other)
+            .unwrap()
+            .contains("*HEADING")
+    );
+}
