@@ -74,8 +74,11 @@ pub struct BeamTheoryReport {
     /// In JSON its key (`euler-bernoulli`), in text its label.
     #[serde(serialize_with = "theory_key")]
     pub theory: BeamTheory,
-    /// Shear deflection over the Euler-Bernoulli w(L).
+    /// Shear deflection over the Euler-Bernoulli w(L), a fraction. Deprecated: the same value
+    /// as `shear_deflection_share_fraction`, kept one release.
     pub shear_deflection_share: f64,
+    /// The same share under the name that says its unit (0.019 is 1.9 %).
+    pub shear_deflection_share_fraction: f64,
     /// Bound on the difference from continuum FE, a fraction; absent where (V2) is not calibrated.
     /// Deprecated: the same value as `vs_continuum_within_fraction`, kept one release.
     #[serde(
@@ -125,6 +128,7 @@ impl BeamReport {
             beam_theory: BeamTheoryReport {
                 theory: row.validity.theory,
                 shear_deflection_share: row.validity.shear_share,
+                shear_deflection_share_fraction: row.validity.shear_share,
                 expected_error: row.validity.expected_error,
                 vs_continuum_within_fraction: row.validity.expected_error,
                 friction_strain: row.validity.friction_strain,
