@@ -113,7 +113,7 @@ fn beam_sweep_csv_has_the_contract_header_and_round_trip_numbers() {
         lines.next(),
         Some(
             "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized,beam_theory,\
-             vs_continuum_within"
+             vs_continuum_within,vs_continuum_within_fraction"
         )
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
@@ -1459,7 +1459,8 @@ fn compare_reads_calculix_results_with_their_deck() {
     assert_eq!(
         lines.next().unwrap(),
         "F_N,w_fe_mm,w_euler_mm,diff_euler,w_shear_corrected_mm,diff_shear_corrected,\
-         shear_corrected_within,regime,regime_fe,X_mm,X_fe_mm"
+         shear_corrected_within,regime,regime_fe,X_mm,X_fe_mm,diff_euler_fraction,\
+         diff_shear_corrected_fraction,shear_corrected_within_fraction"
     );
     assert_eq!(lines.count(), 6);
     let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
@@ -2162,7 +2163,7 @@ fn beams_beyond_the_calibrated_friction_strain_get_no_bound() {
         "sweep", "beam", "--from", "0", "--to", "60000", "--points", "2",
     ]));
     assert!(
-        csv.lines().nth(2).unwrap().ends_with(",euler-bernoulli,"),
+        csv.lines().nth(2).unwrap().ends_with(",euler-bernoulli,,"),
         "{csv}"
     );
     // Any FE points (these are made up): the implied K_T is not judged through (V2).
@@ -2212,7 +2213,10 @@ fn the_lap_joint_from_the_command_line() {
     );
     assert_eq!(csv.lines().count(), 8);
     assert!(
-        csv.lines().next().unwrap().ends_with(",shear_lag_within"),
+        csv.lines()
+            .next()
+            .unwrap()
+            .ends_with(",shear_lag_within,shear_lag_within_fraction"),
         "{csv}"
     );
     // At F_gross the envelope (calibrated up to 0.9 F_gross) gives no bound: an empty cell.
@@ -2220,7 +2224,7 @@ fn the_lap_joint_from_the_command_line() {
         csv.lines()
             .last()
             .unwrap()
-            .ends_with("macroslip,macroslip,"),
+            .ends_with("macroslip,macroslip,,"),
         "{csv}"
     );
     let beyond = failure(
