@@ -75,12 +75,13 @@ fn after_help() -> String {
         "Units: mm, N, MPa; K_T in MPa/mm (1 MPa/um = 1000 MPa/mm).\n\
          Keys for --set and preset files: {}.\n\
          Without a command, microslip opens the terminal UI (keys: press ? inside).",
-        ModelKind::ALL
-            .iter()
-            .map(|k| format!("{k} {}", k.key_list()))
-            .collect::<Vec<_>>()
-            .join("; ")
+        ModelKind::key_docs()
     )
+}
+
+/// The help of `--set`: every model's keys as the specs define them.
+fn set_help() -> String {
+    format!("Set a parameter, e.g. KT=120 ({})", ModelKind::key_docs())
 }
 
 /// Subcommands.
@@ -91,6 +92,8 @@ pub enum Command {
     /// Twin cantilever beams at one tip force: thresholds, X, w(L) for both laws, regimes.
     Beam(PointArgs),
     /// Squeezed plate: X_s, X_r, u(L) for both laws, regimes, contact-pressure check, validity.
+    // --beam-theory has no effect here: hidden from the help (and refused if given).
+    #[command(mut_arg("beam_theory", |a| a.hide(true)))]
     Plate {
         #[command(flatten)]
         point: PointArgs,
@@ -101,6 +104,8 @@ pub enum Command {
     },
     /// Clamped double-lap joint at one force: F_1 (and where), F_2, F_gross, Delta and both
     /// sliding zones for both laws, regimes, the shear-lag theory's envelope.
+    // --beam-theory has no effect here: hidden from the help (and refused if given).
+    #[command(mut_arg("beam_theory", |a| a.hide(true)))]
     Lap {
         #[command(flatten)]
         point: PointArgs,
@@ -280,8 +285,8 @@ pub enum Command {
         #[arg(value_enum)]
         model: ModelKind,
         /// Result files: the .dat of a `microslip deck ccx` run (its deck JOB.inp beside it), or a
-        /// CSV from any FE code: F_N,w_mm (beam) or KT_MPa_per_mm,u_mm (plate). Several plate
-        /// runs (one per K_T) may be given.
+        /// CSV from any FE code: F_N,w_mm (beam), KT_MPa_per_mm,u_mm (plate) or F_N,Delta_mm (lap).
+        /// Several plate or lap runs may be given.
         #[arg(required = true, value_name = "RESULT")]
         results: Vec<PathBuf>,
         /// The deck of a .dat result (default: the result's name with .inp).
@@ -363,9 +368,8 @@ pub struct InputArgs {
     /// Bundled or user preset name, or a path to a TOML file.
     #[arg(long, value_name = "P")]
     pub preset: Option<String>,
-    /// Set a parameter, e.g. KT=120 (beam: L b h E nu P mu KT F; plate: L tp E nu mu P KT; lap:
-    /// L b t1 t2 E1 E2 P mu KT F).
-    #[arg(long = "set", value_name = "KEY=VALUE")]
+    // The help names each model's keys from the specs (`set_help`), half sizes marked.
+    #[arg(long = "set", value_name = "KEY=VALUE", help = set_help())]
     pub assignments: Vec<String>,
     /// Beam theory of the twin beams' deflection (default: the preset's, else the paper's
     /// Euler-Bernoulli); timoshenko adds each beam's shear deflection.
@@ -375,6 +379,19 @@ pub struct InputArgs {
 
 impl InputArgs {
     /// The parameter flags given, as a command line repeats them (`--preset P`, `--set K=V`, ...).
+    /// The files these flags read, with the flag that names each: the preset's file, given as a
+    /// path or as the name of a user preset (bundled presets are no files). A preset that does
+    /// not resolve reads nothing: loading it reports why.
+    fn read_files(&self) -> Vec<(&'static str, PathBuf)> {
+        let Some(name) = &self.preset else {
+            return Vec::new();
+        };
+        match preset::resolve(name).map(|p| p.source) {
+            Ok(preset::PresetSource::File(path)) => vec![("--preset", path)],
+            _ => Vec::new(),
+        }
+    }
+
     fn flags(&self) -> Vec<String> {
         let mut given: Vec<String> = self
             .preset
@@ -448,9 +465,13 @@ pub enum SweepCommand {
     },
     /// Double-lap joint over a range of forces F (N, up to F_gross), linearly spaced (replaces the
     /// preset's F), or of any parameter with --vary.
+    // --beam-theory has no effect here: hidden from the help (and refused if given).
+    #[command(mut_arg("beam_theory", |a| a.hide(true)))]
     Lap(LapSweepArgs),
     /// Squeezed plate over a range of K_T (MPa/mm), logarithmically spaced unless --linear, or of
     /// any parameter with --vary NAME --from A --to B.
+    // --beam-theory has no effect here: hidden from the help (and refused if given).
+    #[command(mut_arg("beam_theory", |a| a.hide(true)))]
     Plate {
         /// First K_T (MPa/mm).
         #[arg(long, value_name = "A", allow_negative_numbers = true, conflicts_with_all = ["vary", "from"])]
@@ -1178,6 +1199,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             format,
             output,
         }) => {
+            refuse_overwriting_an_input(output.as_deref(), &inputs.read_files())?;
             let command = format!("plot (a {} chart)", chart.kind());
             let (_, model) = load(inputs, chart.kind(), &command)?;
             let shown = shown_roles(series.as_deref(), *no_cursor)?;
@@ -1273,6 +1295,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             deck,
             output,
         }) => {
+            refuse_overwriting_an_input(output.as_deref(), &deck.inputs.read_files())?;
             let deck = build_deck(*model, deck, &model_command(*model, "deck ccx"))?;
             write_output(out, output.as_deref(), deck.as_bytes())?
         }
@@ -1477,16 +1500,26 @@ fn force_range_error(error: RangeError) -> CliError {
 /// Says on stderr which parameter flags a CalculiX run's deck overrides: its header gives the
 /// parameters the run was made with, and comparing at others would mean nothing (they used to be
 /// ignored without a word).
-fn note_flags_the_deck_overrides(inputs: &InputArgs) {
+fn note_flags_the_deck_overrides(inputs: &InputArgs, model: ModelKind) {
     let given = inputs.flags();
     if given.is_empty() {
         return;
     }
-    eprintln!(
-        "microslip: note: {} not used: the deck's header gives the parameters of the run (compare \
-         shows both beam theories); to compare FE points at other parameters, give them as CSV",
+    eprintln!("microslip: note: {}", deck_overrides_words(&given, model));
+}
+
+/// The words of [`note_flags_the_deck_overrides`]: only the beams have two beam theories, so
+/// only their note says that both are shown.
+fn deck_overrides_words(given: &[String], model: ModelKind) -> String {
+    let theories = match model {
+        ModelKind::Beam => " (compare shows both beam theories)",
+        ModelKind::Plate | ModelKind::Lap => "",
+    };
+    format!(
+        "{} not used: the deck's header gives the parameters of the run{theories}; to compare FE \
+         points at other parameters, give them as CSV",
         report::sanitize(&given.join(" "))
-    );
+    )
 }
 
 fn run_compare(
@@ -1516,7 +1549,7 @@ fn run_compare(
             for path in results {
                 let loaded = fe::load::lap_results(path, deck).map_err(data_error)?;
                 if loaded.header.is_some() && rows.is_empty() {
-                    note_flags_the_deck_overrides(inputs);
+                    note_flags_the_deck_overrides(inputs, model);
                 }
                 let joint = match &loaded.header {
                     Some(header) => header.model()?.into_lap().map_err(deck_of_other_model)?.0,
@@ -1548,7 +1581,7 @@ fn run_compare(
             };
             let loaded = fe::load::beam_results(path, deck).map_err(data_error)?;
             if loaded.header.is_some() {
-                note_flags_the_deck_overrides(inputs);
+                note_flags_the_deck_overrides(inputs, model);
             }
             let beams = match &loaded.header {
                 Some(header) => header.model()?.into_beams().map_err(deck_of_other_model)?.0,
@@ -1569,7 +1602,7 @@ fn run_compare(
             for path in results {
                 let loaded = fe::load::plate_results(path, deck).map_err(data_error)?;
                 if loaded.header.is_some() && rows.is_empty() {
-                    note_flags_the_deck_overrides(inputs);
+                    note_flags_the_deck_overrides(inputs, model);
                 }
                 let plate = match &loaded.header {
                     Some(header) => header.model()?.into_plate().map_err(deck_of_other_model)?,
@@ -1697,6 +1730,29 @@ fn parse_count(text: &str) -> Result<u64, String> {
         return Err(refuse());
     }
     Ok(value as u64)
+}
+
+/// Refuses an output file that is one this command reads (`deck ccx lap --preset p.toml -o
+/// p.toml` replaced the preset it was reading with the deck): `reads` are the command's input
+/// files, `-o` is compared with each as a file ([`crate::file::same_file`]), not as text. Checked
+/// before anything is computed or written.
+fn refuse_overwriting_an_input(
+    output: Option<&std::path::Path>,
+    reads: &[(&str, PathBuf)],
+) -> Result<(), CliError> {
+    let Some(output) = output else {
+        return Ok(());
+    };
+    for (flag, read) in reads {
+        if crate::file::same_file(output, read) {
+            return Err(CliError::Invalid(format!(
+                "-o {}: that is the file this command reads ({flag} {}); write to another file",
+                output.display(),
+                read.display()
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// Writes `bytes` to `path` ([`crate::file::write_atomic`]: a regular file replaced atomically with
@@ -1960,6 +2016,10 @@ fn apply_and_validate(
     for assignment in &args.assignments {
         preset::apply_assignment(&mut inputs, assignment)?;
     }
+    // "modified" only where a value differs from the preset's: `--set F=3000` on a preset whose F
+    // is 3000 leaves the preset as it is, and saying otherwise sends users looking for a change.
+    let set_changed = inputs != preset.inputs;
+    let before_theory = inputs;
     if let Some(theory) = &args.beam_theory {
         let theory = BeamTheory::parse(theory).map_err(CliError::Theory)?;
         match &mut inputs {
@@ -1976,11 +2036,12 @@ fn apply_and_validate(
             }
         }
     }
-    let name = match (args.assignments.is_empty(), args.beam_theory.is_none()) {
-        (true, true) => name,
-        (false, true) => format!("{name} (modified by --set)"),
-        (true, false) => format!("{name} (modified by --beam-theory)"),
-        (false, false) => format!("{name} (modified by --set and --beam-theory)"),
+    let theory_changed = inputs != before_theory;
+    let name = match (set_changed, theory_changed) {
+        (false, false) => name,
+        (true, false) => format!("{name} (modified by --set)"),
+        (false, true) => format!("{name} (modified by --beam-theory)"),
+        (true, true) => format!("{name} (modified by --set and --beam-theory)"),
     };
     Ok((name, inputs.validate()?))
 }

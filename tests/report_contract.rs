@@ -60,9 +60,11 @@ const BEAM: &[&str] = &[
     "beam_theory: object",
     "beam_theory.friction_strain: number",
     "beam_theory.shear_deflection_share: number",
+    "beam_theory.shear_deflection_share_fraction: number",
     "beam_theory.theory: string",
     "beam_theory.validity: string",
     "beam_theory.vs_continuum_within: number",
+    "beam_theory.vs_continuum_within_fraction: number",
     "coulomb: object",
     "coulomb.regime: string",
     "coulomb.stick_end_mm: number",
@@ -93,10 +95,14 @@ const PLATE: &[&str] = &[
     "contact_pressure.end_layer_ratio: number",
     "contact_pressure.end_layer_ratio_applies: bool",
     "contact_pressure.mean_deviation: number",
+    "contact_pressure.mean_deviation_fraction: number",
     "contact_pressure.mean_deviation_limit: number",
+    "contact_pressure.mean_deviation_limit_fraction: number",
     "contact_pressure.model: string",
     "contact_pressure.peak_deviation: number",
+    "contact_pressure.peak_deviation_fraction: number",
     "contact_pressure.peak_deviation_limit: number",
+    "contact_pressure.peak_deviation_limit_fraction: number",
     "contact_pressure.ratio_centre: number",
     "contact_pressure.ratio_edge: number",
     "coulomb: object",
@@ -135,12 +141,18 @@ const PLATE_ONSET: &[&str] = &["KT_macroslip_onset_MPa_per_mm: number"];
 /// The strip theory's expected differences: present where a calibration reaches.
 const PLATE_EXPECTED: &[&str] = &[
     "strip_theory.expected_difference_contact_face: number",
+    "strip_theory.expected_difference_contact_face_fraction: number",
     "strip_theory.expected_difference_from_continuum: number",
+    "strip_theory.expected_difference_from_continuum_fraction: number",
     "strip_theory.expected_difference_mid_thickness: number",
+    "strip_theory.expected_difference_mid_thickness_fraction: number",
 ];
 
 /// Where the strip theory is measured wrong (V1c): the least difference stated for its region.
-const PLATE_WRONG: &[&str] = &["strip_theory.measured_difference_at_least: number"];
+const PLATE_WRONG: &[&str] = &[
+    "strip_theory.measured_difference_at_least: number",
+    "strip_theory.measured_difference_at_least_fraction: number",
+];
 
 /// The plane-strain continuum: with --continuum, or when the strip theory is not within 2 %.
 const PLATE_CONTINUUM: &[&str] = &[
@@ -277,6 +289,10 @@ const FIT: &[&str] = &[
 /// Added by issue 25 (5): what the errors assume (`weights`, `scatter`).
 const FIT_WEIGHTS: &[&str] = &["scatter: number", "weights: string"];
 
+/// Issue 36: the scatter again under a name that says its unit, which the weights decide.
+const FIT_SCATTER_MM: &[&str] = &["scatter_mm: number"];
+const FIT_SCATTER_FRACTION: &[&str] = &["scatter_fraction: number"];
+
 /// (`mu_KT_correlation` added by issue 25 (5).)
 const FIT_ERRORS: &[&str] = &[
     "KT_MPa_per_mm.std_error: number",
@@ -323,6 +339,7 @@ const COMPARE_BEAM: &[&str] = &[
     "rows[].X_mm: number",
     "rows[].regime: string",
     "rows[].shear_corrected_within: number",
+    "rows[].shear_corrected_within_fraction: number",
     "rows[].w_euler_mm: number",
     "rows[].w_fe_mm: number",
     "rows[].w_shear_corrected_mm: number",
@@ -332,7 +349,9 @@ const COMPARE_BEAM: &[&str] = &[
 const COMPARE_BEAM_FE: &[&str] = &[
     "rows[].X_fe_mm: number",
     "rows[].diff_euler: number",
+    "rows[].diff_euler_fraction: number",
     "rows[].diff_shear_corrected: number",
+    "rows[].diff_shear_corrected_fraction: number",
     "rows[].regime_fe: string",
 ];
 
@@ -340,7 +359,9 @@ const COMPARE_BEAM_FE: &[&str] = &[
 const COMPARE_BEAM_CSV: &[&str] = &[
     "rows[].X_fe_mm: null",
     "rows[].diff_euler: null|number",
+    "rows[].diff_euler_fraction: null|number",
     "rows[].diff_shear_corrected: null|number",
+    "rows[].diff_shear_corrected_fraction: null|number",
     "rows[].regime_fe: null",
 ];
 
@@ -348,7 +369,9 @@ const COMPARE_BEAM_CSV: &[&str] = &[
 const COMPARE_BEAM_TWO: &[&str] = &[
     "rows[].X_fe_mm: null",
     "rows[].diff_euler: number",
+    "rows[].diff_euler_fraction: number",
     "rows[].diff_shear_corrected: number",
+    "rows[].diff_shear_corrected_fraction: number",
     "rows[].regime_fe: null",
     "implied.error: string",
 ];
@@ -362,7 +385,8 @@ const COMPARE_BEAM_IMPLIED: &[&str] = &[
 ];
 
 const COMPARE_BEAM_HEADER: &str = "F_N,w_fe_mm,w_euler_mm,diff_euler,w_shear_corrected_mm,\
-diff_shear_corrected,shear_corrected_within,regime,regime_fe,X_mm,X_fe_mm";
+diff_shear_corrected,shear_corrected_within,regime,regime_fe,X_mm,X_fe_mm,diff_euler_fraction,\
+diff_shear_corrected_fraction,shear_corrected_within_fraction";
 
 const COMPARE_PLATE: &[&str] = &[
     "model: string",
@@ -378,13 +402,16 @@ const COMPARE_PLATE: &[&str] = &[
     "rows[].u_mm: number",
     "rows[].KT_implied_MPa_per_mm: null|number",
     "rows[].diff: number",
+    "rows[].diff_fraction: number",
 ];
 
 /// CalculiX results: through the thickness, and a slip profile.
 const COMPARE_PLATE_FE: &[&str] = &[
     "rows[].Xr_fe_mm: number",
     "rows[].diff_contact_face: number",
+    "rows[].diff_contact_face_fraction: number",
     "rows[].diff_mid_thickness: number",
+    "rows[].diff_mid_thickness_fraction: number",
     "rows[].regime_fe: string",
     "rows[].u_fe_contact_face_mm: number",
     "rows[].u_fe_mid_thickness_mm: number",
@@ -394,7 +421,9 @@ const COMPARE_PLATE_FE: &[&str] = &[
 const COMPARE_PLATE_CSV: &[&str] = &[
     "rows[].Xr_fe_mm: null",
     "rows[].diff_contact_face: null",
+    "rows[].diff_contact_face_fraction: null",
     "rows[].diff_mid_thickness: null",
+    "rows[].diff_mid_thickness_fraction: null",
     "rows[].regime_fe: null",
     "rows[].u_fe_contact_face_mm: null",
     "rows[].u_fe_mid_thickness_mm: null",
@@ -418,6 +447,7 @@ const COMPARE_BEAM_VERDICT_FE: &[&str] = &[
     "rows[].verdict.X_elements: number",
     "rows[].verdict.X_within_mesh_resolution: bool",
     "rows[].verdict.envelope_bound: number",
+    "rows[].verdict.envelope_bound_fraction: number",
     "verdict.KT: string",
     "verdict.KT_z: number",
 ];
@@ -427,6 +457,7 @@ const COMPARE_BEAM_VERDICT_CSV: &[&str] = &[
     "rows[].verdict.X_elements: null",
     "rows[].verdict.X_within_mesh_resolution: null",
     "rows[].verdict.envelope_bound: null|number",
+    "rows[].verdict.envelope_bound_fraction: null|number",
     "verdict.KT: string",
     "verdict.KT_z: null",
 ];
@@ -436,12 +467,16 @@ const COMPARE_BEAM_VERDICT_TWO: &[&str] = &[
     "rows[].verdict.X_elements: null",
     "rows[].verdict.X_within_mesh_resolution: null",
     "rows[].verdict.envelope_bound: number",
+    "rows[].verdict.envelope_bound_fraction: number",
     "verdict.KT: string",
     "verdict.KT_z: null",
 ];
 
 /// The plate: (V1) is not calibrated at every K_T, so the bound may be null.
-const COMPARE_PLATE_VERDICT: &[&str] = &["rows[].verdict.envelope_bound: null|number"];
+const COMPARE_PLATE_VERDICT: &[&str] = &[
+    "rows[].verdict.envelope_bound: null|number",
+    "rows[].verdict.envelope_bound_fraction: null|number",
+];
 
 const COMPARE_PLATE_VERDICT_FE: &[&str] = &[
     "rows[].verdict.Xr_elements: number",
@@ -455,7 +490,8 @@ const COMPARE_PLATE_VERDICT_CSV: &[&str] = &[
 
 const COMPARE_PLATE_HEADER: &str = "KT_MPa_per_mm,u_fe_mm,u_fe_contact_face_mm,\
 u_fe_mid_thickness_mm,u_mm,diff,diff_contact_face,diff_mid_thickness,u_coulomb_mm,regime,\
-regime_fe,Xr_mm,Xr_fe_mm,KT_implied_MPa_per_mm,strip_theory";
+regime_fe,Xr_mm,Xr_fe_mm,KT_implied_MPa_per_mm,strip_theory,diff_fraction,diff_contact_face_fraction,\
+diff_mid_thickness_fraction";
 
 /// `compare lap` (issue 24) of CalculiX results: pinned when it was first published.
 const COMPARE_LAP: &[&str] = &[
@@ -467,7 +503,9 @@ const COMPARE_LAP: &[&str] = &[
     "rows[].Delta_fe_mm: number",
     "rows[].Delta_mm: number",
     "rows[].diff: number",
+    "rows[].diff_fraction: number",
     "rows[].shear_lag_within: number",
+    "rows[].shear_lag_within_fraction: number",
     "rows[].Delta_coulomb_mm: number",
     "rows[].regime: string",
     "rows[].regime_fe: string",
@@ -478,12 +516,14 @@ const COMPARE_LAP: &[&str] = &[
     "rows[].KT_implied_MPa_per_mm: null",
     "rows[].shear_lag: string",
     "rows[].verdict.envelope_bound: number",
+    "rows[].verdict.envelope_bound_fraction: number",
     "rows[].verdict.a_elements: number",
     "rows[].verdict.d_elements: number",
 ];
 
 const COMPARE_LAP_HEADER: &str = "F_N,Delta_fe_mm,Delta_mm,diff,shear_lag_within,\
-Delta_coulomb_mm,regime,regime_fe,a_mm,a_fe_mm,d_mm,d_fe_mm,KT_implied_MPa_per_mm,shear_lag";
+Delta_coulomb_mm,regime,regime_fe,a_mm,a_fe_mm,d_mm,d_fe_mm,KT_implied_MPa_per_mm,shear_lag,\
+diff_fraction,shear_lag_within_fraction";
 
 /// The lap joint's report (issue 24): pinned when it was first published.
 const LAP: &[&str] = &[
@@ -493,8 +533,11 @@ const LAP: &[&str] = &[
     "coulomb: object",
     "coulomb.Delta_mm: number",
     "coulomb.a_mm: number",
+    // Issue 36: D and zeta of a cycle between +F and -F, as the TUI shows them.
+    "coulomb.D_Nmm: number",
     "coulomb.d_mm: number",
     "coulomb.regime: string",
+    "coulomb.zeta: number",
     "covers_stiffness_N_per_mm: number",
     "decay_length_mm: number",
     "first_slip_at: string",
@@ -515,8 +558,10 @@ const LAP: &[&str] = &[
     "regularized: object",
     "regularized.Delta_mm: number",
     "regularized.a_mm: number",
+    "regularized.D_Nmm: number",
     "regularized.d_mm: number",
     "regularized.regime: string",
+    "regularized.zeta: number",
     "saturation_slip_mm: number",
     "shear_lag: object",
     "shear_lag.decay_length_over_thickness: number",
@@ -526,6 +571,8 @@ const LAP: &[&str] = &[
     "shear_lag.clamping_prestress: number",
     "shear_lag.cover_bending: number",
     "shear_lag.expected_error: number",
+    // Issue 36: the bound under its one name in every output (sweep lap, compare lap).
+    "shear_lag.shear_lag_within_fraction: number",
     "shear_lag.outside_calibration: null",
     "shear_lag.shear_compliance: number",
     "continuum: object",
@@ -535,6 +582,7 @@ const LAP: &[&str] = &[
     "continuum.contact_pressure_min_MPa: number",
     "continuum.d_mm: number",
     "continuum.diff_vs_shear_lag: number",
+    "continuum.diff_vs_shear_lag_fraction: number",
     "continuum.separated_pairs: number",
 ];
 
@@ -747,7 +795,7 @@ const CASES: &[Case] = &[
             "absolute",
         ],
         formats: TEXT_JSON,
-        keys: &[FIT, FIT_ERRORS, FIT_WEIGHTS],
+        keys: &[FIT, FIT_ERRORS, FIT_WEIGHTS, FIT_SCATTER_MM],
         header: None,
     },
     Case {
@@ -762,7 +810,7 @@ const CASES: &[Case] = &[
             "absolute",
         ],
         formats: TEXT_JSON,
-        keys: &[FIT, FIT_FIXED, FIT_WEIGHTS],
+        keys: &[FIT, FIT_FIXED, FIT_WEIGHTS, FIT_SCATTER_MM],
         header: None,
     },
     // The default weights (relative), issue 25 (5).
@@ -770,7 +818,7 @@ const CASES: &[Case] = &[
         name: "fit-relative",
         args: &["fit", "beam", "tests/data/reports/inputs/fit-beam.csv"],
         formats: TEXT_JSON,
-        keys: &[FIT, FIT_ERRORS, FIT_WEIGHTS],
+        keys: &[FIT, FIT_ERRORS, FIT_WEIGHTS, FIT_SCATTER_FRACTION],
         header: None,
     },
     Case {

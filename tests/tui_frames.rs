@@ -174,6 +174,72 @@ fn input_error_keeps_the_old_value_and_says_why() {
     insta::assert_snapshot!("input_error", screen(&app, 80, 24));
 }
 
+/// The beams' `h` is half of each beam's height: its row says `half` (as the plate's `L` row does)
+/// and its prompt says what it is, so nobody types the whole 20 mm height.
+#[test]
+fn the_beams_half_height_says_half_in_its_row_and_its_prompt() {
+    let mut app = app();
+    act(&mut app, &[Action::Next, Action::Next]);
+    let text = screen(&app, 120, 40);
+    let row = text
+        .lines()
+        .find(|l| l.contains(">  h") || l.contains("> h"))
+        .unwrap_or_else(|| panic!("no selected h row:\n{text}"));
+    assert!(row.contains("mm half"), "{row}");
+    press(&mut app, Action::StartEdit);
+    let text = screen(&app, 120, 40);
+    assert!(
+        text.contains("h (mm, half height (each beam is 2h high))"),
+        "{text}"
+    );
+}
+
+/// The regime title's "FE within 3.02 %" is explained by `i` (its first line) and by `?`.
+#[test]
+fn the_regime_titles_envelope_is_explained_by_i_and_by_the_help() {
+    for preset in ["paper-beams", "lap-aluminium"] {
+        let mut app = app_with(preset, Charset::Unicode, true);
+        press(&mut app, Action::Explain);
+        let text = screen(&app, 100, 30);
+        assert!(text.contains("┌ FE within"), "{preset}:\n{text}");
+        assert!(text.contains("continuum"), "{preset}:\n{text}");
+        assert!(text.contains("line 1/"), "{preset}:\n{text}");
+    }
+    let mut app = app();
+    press(&mut app, Action::ToggleHelp);
+    let mut help = String::new();
+    for _ in 0..4 {
+        help.push_str(&screen(&app, 120, 40));
+        press(&mut app, Action::Next);
+    }
+    assert!(help.contains("Regime title \"FE within 3 %\""), "{help}");
+}
+
+/// Issue 36 (20): a refused value shows what was typed, invisible characters escaped and the
+/// range given, in the value field and on the `:` line.
+#[test]
+fn refused_values_show_invisible_characters_and_the_range() {
+    let mut app = app();
+    press(&mut app, Action::CommandLine);
+    type_and_commit(&mut app, "KT=\u{200b}1000");
+    let text = screen(&app, 120, 40);
+    assert!(
+        text.contains(
+            "invalid value '\\u{200b}1000' for KT: not a finite number; must be in [1e-6"
+        ),
+        "{text}"
+    );
+    let mut app = self::app();
+    act(&mut app, &[Action::Next; 7]);
+    press(&mut app, Action::StartEdit);
+    type_and_commit(&mut app, "1e-400");
+    let text = screen(&app, 120, 40);
+    assert!(
+        text.contains("invalid KT = 1e-400: must be in [1e-6, 1e12] MPa/mm"),
+        "{text}"
+    );
+}
+
 #[test]
 fn ascii_charset_draws_only_ascii() {
     let mut app = app_with("paper-beams", Charset::Ascii, true);
@@ -267,7 +333,7 @@ fn every_size_and_state_shows_what_the_user_needs() {
         let shown = words(&rows);
         let message = format!(
             "Terminal too small: {w}x{h}. microslip needs at least 80x24. \
-             Enlarge the window, or press q to quit."
+             Enlarge the window, or press q (Ctrl-C) to quit."
         );
         match must_see {
             MustSee::StartOfTooSmall => assert!(
@@ -684,7 +750,8 @@ fn workbench_screens() -> [Screen; 5] {
     let explain = [
         &vary[..],
         &[Action::Vary, Action::Explain],
-        &[Action::Next; 4],
+        // The title's envelope first, then the pane's lines down to F_1.
+        &[Action::Next; 5],
     ]
     .concat();
     let prompt = [

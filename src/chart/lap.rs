@@ -174,6 +174,7 @@ pub(crate) fn lap_numeric_points(
             points,
             continuum,
             failed: 0,
+            failure: None,
         }))
     };
     let points = |points: Vec<(f64, f64)>| with_continuum(points, Vec::new());

@@ -237,6 +237,40 @@ pub struct NumericPoints {
     pub continuum: Series,
     /// Sample points whose solve did not converge (left as gaps; the legend says how many).
     pub failed: usize,
+    /// Where the first of them failed and why: the legend says where, the TUI's status why, so a
+    /// gap is not a mystery.
+    pub failure: Option<PointFailure>,
+}
+
+/// The first overlay point that was not solved.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointFailure {
+    /// Where, with its unit: "F = 120 N", "K_T = 1e10 MPa/mm".
+    pub at: String,
+    /// The solver's reason (a [`NumericError`]'s message).
+    pub why: String,
+}
+
+impl NumericPoints {
+    /// The unsolved points in words, where and why ("2 points not solved; the first, at K_T =
+    /// 1e10 MPa/mm: the saturation slip ..."); None when every point was solved.
+    pub fn failure_words(&self) -> Option<String> {
+        let failure = self.failure.as_ref()?;
+        Some(format!(
+            "{}; the first, at {}: {}",
+            unsolved(self.failed),
+            failure.at,
+            failure.why
+        ))
+    }
+}
+
+/// "1 point not solved", "3 points not solved".
+fn unsolved(count: usize) -> String {
+    match count {
+        1 => "1 point not solved".to_string(),
+        n => format!("{n} points not solved"),
+    }
 }
 
 /// Points from an external FE code (or a CSV of any code), drawn on the chart of their quantity:
@@ -416,10 +450,11 @@ pub fn build(
         });
     }
     if let Some(numeric) = numeric {
-        let name = match numeric.failed {
-            0 => "finite elements".to_string(),
-            1 => "finite elements (1 point did not converge)".to_string(),
-            n => format!("finite elements ({n} points did not converge)"),
+        // Where the first gap is; why is too long for a legend (the TUI's status says it).
+        let name = match (numeric.failed, &numeric.failure) {
+            (0, _) => "finite elements".to_string(),
+            (n, Some(first)) => format!("finite elements ({}, from {})", unsolved(n), first.at),
+            (n, None) => format!("finite elements ({})", unsolved(n)),
         };
         plot.series.push(PlotSeries {
             name,
@@ -761,6 +796,7 @@ pub fn numeric_points(
             let mut fe = TwinBeamsFe::new(beams.params(), density);
             let mut points = Vec::with_capacity(OVERLAY_POINTS);
             let (mut failed, mut failure) = (0, None);
+            let mut first_failure = None;
             for i in 1..=OVERLAY_POINTS {
                 let f = f_max * i as f64 / OVERLAY_POINTS as f64;
                 // A very stiff interface can make Newton cycle at one load (the whole interface
@@ -770,6 +806,10 @@ pub fn numeric_points(
                     Ok(()) => {}
                     Err(e @ NumericError::NoConvergence { .. }) => {
                         failed += 1;
+                        first_failure.get_or_insert_with(|| PointFailure {
+                            at: format!("F = {} N", number(f)),
+                            why: e.to_string(),
+                        });
                         failure = Some(e);
                         continue;
                     }
@@ -790,6 +830,7 @@ pub fn numeric_points(
                     points,
                     continuum: Vec::new(),
                     failed,
+                    failure: first_failure,
                 })),
             }
         }
@@ -810,6 +851,7 @@ pub fn numeric_points(
                 points,
                 continuum: Vec::new(),
                 failed: 0,
+                failure: None,
             }))
         }
         (Model::Beam { beams, force }, AnyChart::Beam(BeamChart::Shear)) => {
@@ -820,6 +862,7 @@ pub fn numeric_points(
             Ok(Some(NumericPoints {
                 continuum: Vec::new(),
                 failed: 0,
+                failure: None,
                 points: samples
                     .iter()
                     .step_by(stride)
@@ -833,7 +876,7 @@ pub fn numeric_points(
             let (lo, hi) = (from.log10(), to.log10());
             let mut points = Vec::with_capacity(OVERLAY_POINTS + 1);
             let mut continuum = Vec::with_capacity(OVERLAY_POINTS + 1);
-            let mut failure = None;
+            let (mut failure, mut first_failure) = (None, None);
             for i in 0..=OVERLAY_POINTS {
                 let log_kt = lo + (hi - lo) * i as f64 / OVERLAY_POINTS as f64;
                 let params = crate::PlateParams {
@@ -849,7 +892,13 @@ pub fn numeric_points(
                 let mut fe = PlateFe::new(params, density);
                 match fe.load_to(p.pressure, 2) {
                     Ok(()) => points.push((log_kt, fe.end_displacement())),
-                    Err(e) => failure = Some(e),
+                    Err(e) => {
+                        first_failure.get_or_insert_with(|| PointFailure {
+                            at: format!("K_T = {} MPa/mm", number(params.tangential_stiffness)),
+                            why: e.to_string(),
+                        });
+                        failure = Some(e);
+                    }
                 }
                 if let Ok(solution) = solve_plate_continuum(params, ContinuumMesh::default()) {
                     continuum.push((log_kt, solution.end_displacement_mean));
@@ -859,6 +908,7 @@ pub fn numeric_points(
                 Some(e) if points.is_empty() => Err(e),
                 _ => Ok(Some(NumericPoints {
                     failed: OVERLAY_POINTS + 1 - points.len(),
+                    failure: first_failure,
                     points,
                     continuum,
                 })),
@@ -1021,6 +1071,33 @@ pub(crate) mod tests {
         assert_eq!(axis_bounds(2.0, 5.0), [2.0, 5.0]);
         let [lo, hi] = axis_bounds(f64::NAN, f64::INFINITY);
         assert!(lo.is_finite() && hi.is_finite() && lo < hi);
+    }
+
+    /// Issue 36 (12): a point of the overlay that did not converge is a gap, and the legend says
+    /// where and why, not only how many.
+    #[test]
+    fn the_overlay_says_why_a_point_did_not_converge() {
+        // K_T up to 1e4 times 1e7 MPa/mm: the top points are beyond the 1-D solver's resolution.
+        let mut inputs = Inputs::paper(ModelKind::Plate);
+        let kt = crate::problems::Param::Plate(PlateParam::Stiffness);
+        inputs.set(kt, 1e7).unwrap();
+        let model = inputs.validate().unwrap();
+        let chart = AnyChart::Plate(PlateChart::Displacement);
+        let numeric = numeric_points(&model, chart).unwrap().unwrap();
+        assert!(numeric.failed > 0);
+        let words = numeric.failure_words().unwrap();
+        assert!(
+            words.contains("not solved; the first, at K_T = 1e10 MPa/mm: the saturation slip"),
+            "{words}"
+        );
+        let plot = build(&model, chart, Some(&numeric), None, None, None);
+        assert!(
+            plot.series.iter().any(|s| s
+                .name
+                .ends_with("points not solved, from K_T = 1e10 MPa/mm)")),
+            "{:?}",
+            plot.series.iter().map(|s| &s.name).collect::<Vec<_>>()
+        );
     }
 
     #[test]

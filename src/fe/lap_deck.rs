@@ -76,12 +76,7 @@ pub fn lap_deck(
     if elements > MAX_DECK_ELEMENTS as f64 {
         return Err(DeckTooLarge {
             elements,
-            advice: format!(
-                "the interface's decay length 1/lambda = {} mm is resolved over an overlap of {} \
-                 mm; use the coarse mesh, or a smaller K_T",
-                Compact(decay),
-                Compact(p.length)
-            ),
+            advice: too_large_advice(mesh, decay, p.length),
         });
     }
     // The continuum solver's mesh (its 4 r layers through each body): the two judges of the
@@ -276,6 +271,22 @@ pub fn lap_deck(
     Ok(deck)
 }
 
+/// Why a lap deck is too large and what makes it smaller: the coarse mesh only where it is not
+/// the mesh already (advising the mesh the user has sends them in a circle), then a smaller K_T
+/// (a longer decay length) or a shorter overlap.
+fn too_large_advice(mesh: DeckMesh, decay: f64, length: f64) -> String {
+    let coarse = match mesh {
+        DeckMesh::Fine => "the coarse mesh, ",
+        DeckMesh::Coarse => "",
+    };
+    format!(
+        "the interface's decay length 1/lambda = {} mm is resolved over an overlap of {} mm; \
+         use {coarse}a smaller K_T or a shorter overlap L",
+        crate::numeric::short(decay),
+        Compact(length)
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -289,6 +300,30 @@ mod tests {
         let joint = aluminium();
         let loads: Vec<JointForce> = loads.iter().map(|&f| joint.force(f).unwrap()).collect();
         lap_deck(&joint, &loads, mesh, StickSlope::Model, LoadPath::default()).unwrap()
+    }
+
+    /// Issue 36 (20): a deck too large on the coarse mesh does not advise the coarse mesh.
+    #[test]
+    fn a_deck_too_large_advises_only_what_the_user_can_change() {
+        let joint = aluminium().with_tangential_stiffness(1e8).unwrap();
+        let loads = [joint.force(3000.0).unwrap()];
+        for (mesh, advises_coarse) in [(DeckMesh::Coarse, false), (DeckMesh::Fine, true)] {
+            let result = lap_deck(&joint, &loads, mesh, StickSlope::Model, LoadPath::default());
+            let Err(e) = result else {
+                panic!("{mesh:?} not refused")
+            };
+            assert_eq!(
+                e.advice.contains("coarse mesh"),
+                advises_coarse,
+                "{}",
+                e.advice
+            );
+            assert!(
+                e.advice.contains("a smaller K_T or a shorter overlap L"),
+                "{}",
+                e.advice
+            );
+        }
     }
 
     #[test]

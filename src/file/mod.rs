@@ -21,6 +21,28 @@ pub use read::{Kinds, read_capped};
 pub(crate) use read::{kind_of, require_regular};
 pub use write::{write_atomic, write_new_files};
 
+/// True when `a` and `b` name one existing file, however written (`p.toml`, `./p.toml`, an
+/// absolute path, a symbolic or hard link): the same device and inode where the platform has
+/// them, else the same canonical path. False when either does not exist: a file not there yet
+/// cannot be one that is read.
+pub fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        match (std::fs::metadata(a), std::fs::metadata(b)) {
+            (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+            _ => false,
+        }
+    }
+    #[cfg(not(unix))]
+    {
+        match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+            (Ok(a), Ok(b)) => a == b,
+            _ => false,
+        }
+    }
+}
+
 /// Why a capped read failed.
 #[derive(Debug, Error)]
 #[non_exhaustive]

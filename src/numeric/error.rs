@@ -26,6 +26,25 @@ pub enum NumericError {
     OutOfRange(String),
 }
 
+/// The advice of a refusal whose cure is a softer interface: "lower K_T to at most X MPa/mm" (or
+/// `other`, e.g. "raise E") where X is a K_T the door accepts; where even the least accepted K_T
+/// is too stiff, that no accepted K_T works (and `other`, the only cure left). Advising a value the
+/// door then refuses sends users in a circle.
+pub(crate) fn stiffness_advice(largest: f64, other: Option<&str>) -> String {
+    let least = crate::kernel::params::Domain::STIFFNESS.min();
+    if largest >= least {
+        let other = other.map_or(String::new(), |o| format!(" or {o}"));
+        return format!("lower K_T to at most {} MPa/mm{other}", short(largest));
+    }
+    let other = other.map_or(String::new(), |o| format!(": {o}"));
+    format!(
+        "no accepted K_T is small enough (this needs at most {} MPa/mm, the least accepted is {} \
+         MPa/mm){other}",
+        short(largest),
+        short(least)
+    )
+}
+
 /// A number in a message, to four significant digits ("1.714", "1.75e10", "5.385e-7").
 pub(crate) fn short(x: f64) -> String {
     crate::kernel::params::significant(x, 4)

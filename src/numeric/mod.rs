@@ -13,5 +13,5 @@ pub(crate) mod newton;
 pub(crate) mod q8;
 
 pub use error::NumericError;
-pub(crate) use error::short;
+pub(crate) use error::{short, stiffness_advice};
 pub use mesh::MeshDensity;

@@ -25,7 +25,8 @@ use crate::problems::UnknownParam;
 use crate::problems::inputs::Inputs;
 
 pub use parse::apply_assignment;
-pub use store::{SaveError, save_atomic, user_preset_dir, user_presets};
+pub(crate) use parse::parse_value;
+pub use store::{SaveError, check_name, save_atomic, user_preset_dir, user_presets};
 pub use write::to_toml;
 
 /// A parsed preset.
@@ -78,12 +79,25 @@ pub enum PresetError {
     #[error(transparent)]
     UnknownKey(#[from] UnknownParam),
     /// A value that is not a finite number.
-    #[error("invalid value '{text}' for {key}: not a finite number")]
+    #[error("invalid value '{text}' for {key}: not a finite number; {allowed}")]
     NotANumber {
         /// The key.
         key: String,
         /// The text found.
         text: String,
+        /// The allowed range, with the unit (`must be in [1e-6, 1e12] MPa/mm`).
+        allowed: String,
+    },
+    /// A number too small for a double (`1e-400`), which would read as 0, where 0 is refused:
+    /// the message quotes the text typed, not the 0 it became.
+    #[error("invalid {key} = {text}: {allowed}")]
+    Underflow {
+        /// The key.
+        key: String,
+        /// The text found.
+        text: String,
+        /// The allowed range, with the unit.
+        allowed: String,
     },
     /// A value that is not a string where text is expected (`description`).
     #[error("invalid value '{text}' for {key}: must be a string, in double quotes")]

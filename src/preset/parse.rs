@@ -8,9 +8,9 @@ use toml::Spanned;
 
 use super::{Located, Preset, PresetError, PresetSource};
 use crate::kernel::params::parse_number;
-use crate::problems::ModelKind;
 use crate::problems::inputs::Inputs;
 use crate::problems::twin_beams::closed_form::BeamTheory;
+use crate::problems::{ModelKind, Param};
 
 /// Applies `KEY=VALUE` as typed on the command line.
 ///
@@ -26,12 +26,36 @@ pub fn apply_assignment(inputs: &mut Inputs, assignment: &str) -> Result<(), Pre
         })?;
     let (key, value) = (key.trim(), value.trim());
     let param = inputs.kind().param(key)?;
-    let number = parse_number(value).ok_or_else(|| PresetError::NotANumber {
-        key: key.to_string(),
-        text: value.to_string(),
-    })?;
-    inputs.set(param, number)?;
+    inputs.set(param, parse_value(param, value)?)?;
     Ok(())
+}
+
+/// A parameter's value from the text a user typed (`--set`, the TUI's value field and `:` line).
+/// The range checks come after; this refuses what is no number, with the range it must be in,
+/// and a nonzero number that rounds to 0 (`1e-400`) where 0 is refused, quoting the text typed
+/// rather than the 0 it became.
+///
+/// # Errors
+/// [`PresetError::NotANumber`] or [`PresetError::Underflow`], with the allowed range.
+pub(crate) fn parse_value(param: Param, text: &str) -> Result<f64, PresetError> {
+    let spec = param.spec();
+    let allowed = || spec.domain.describe(spec.unit);
+    let number = parse_number(text).ok_or_else(|| PresetError::NotANumber {
+        key: spec.name.to_string(),
+        text: text.to_string(),
+        allowed: allowed(),
+    })?;
+    // The digits before the exponent: any of 1-9 makes a nonzero number.
+    let mantissa = text.split(['e', 'E']).next().unwrap_or(text);
+    let nonzero = mantissa.chars().any(|c| matches!(c, '1'..='9'));
+    if number == 0.0 && nonzero && !spec.domain.contains(0.0) {
+        return Err(PresetError::Underflow {
+            key: spec.name.to_string(),
+            text: text.to_string(),
+            allowed: allowed(),
+        });
+    }
+    Ok(number)
 }
 
 /// The preset key of the twin beams' [`BeamTheory`].
@@ -116,9 +140,10 @@ impl Preset {
         let mut description = String::new();
         for (key, value) in &table {
             let (name_of_key, value) = (key.get_ref().as_str(), value.get_ref());
-            let not_a_number = || PresetError::NotANumber {
+            let not_a_number = |allowed: String| PresetError::NotANumber {
                 key: name_of_key.to_string(),
                 text: value.to_string(),
+                allowed,
             };
             let result = match name_of_key {
                 "model" => Ok(()),
@@ -158,7 +183,10 @@ impl Preset {
                             .as_float()
                             .or_else(|| value.as_integer().map(|i| i as f64))
                             .filter(|n| !n.is_nan())
-                            .ok_or_else(not_a_number)?;
+                            .ok_or_else(|| {
+                                let spec = param.spec();
+                                not_a_number(spec.domain.describe(spec.unit))
+                            })?;
                         inputs.set(param, number).map_err(PresetError::from)
                     }),
             };
@@ -309,7 +337,10 @@ mod tests {
         let err = apply_assignment(&mut inputs, "E=abc")
             .unwrap_err()
             .to_string();
-        assert_eq!(err, "invalid value 'abc' for E: not a finite number");
+        assert_eq!(
+            err,
+            "invalid value 'abc' for E: not a finite number; must be in [1e-4, 1e7] MPa"
+        );
         assert!(apply_assignment(&mut inputs, "E=NaN").is_err());
         assert!(apply_assignment(&mut inputs, "E=inf").is_err());
         assert!(apply_assignment(&mut inputs, "E").is_err());

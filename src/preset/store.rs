@@ -61,6 +61,27 @@ pub fn load(path: &Path) -> Result<Preset, Vec<Located>> {
     Preset::parse(&text, &name, PresetSource::File(path.to_path_buf()))
 }
 
+/// Checks a user preset's name before anything is asked or written: the TUI checks it before it
+/// asks for the description, which a refused name would otherwise throw away.
+///
+/// # Errors
+/// [`SaveError::BadName`] unless 1 to 64 ASCII letters, digits, `-` or `_` (no path: `../x` is
+/// refused); [`SaveError::Bundled`] for a bundled preset's name.
+pub fn check_name(name: &str) -> Result<(), SaveError> {
+    let valid = !name.is_empty()
+        && name.len() <= 64
+        && name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_');
+    if !valid {
+        return Err(SaveError::BadName(name.to_string()));
+    }
+    if super::is_bundled(name) {
+        return Err(SaveError::Bundled(name.to_string()));
+    }
+    Ok(())
+}
+
 /// Saves `text` as `<dir>/<name>.toml` atomically: written to a temporary file in the same
 /// directory, flushed to disk, then moved into place, and the directory entry flushed too, so a
 /// crash never leaves a half-written or lost preset.
@@ -78,17 +99,7 @@ pub fn save_atomic(
     text: &str,
     overwrite: bool,
 ) -> Result<PathBuf, SaveError> {
-    let valid = !name.is_empty()
-        && name.len() <= 64
-        && name
-            .chars()
-            .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_');
-    if !valid {
-        return Err(SaveError::BadName(name.to_string()));
-    }
-    if super::is_bundled(name) {
-        return Err(SaveError::Bundled(name.to_string()));
-    }
+    check_name(name)?;
     let target = dir.join(format!("{name}.toml"));
     if !overwrite && target.exists() {
         return Err(SaveError::Exists(name.to_string()));

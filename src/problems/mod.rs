@@ -166,6 +166,31 @@ impl ModelKind {
         }
     }
 
+    /// Every model's keys, as `--help` lists them: `beam: L b h E nu P mu KT F, where h is the
+    /// half height (each beam is 2h high); plate: ...`. A key whose spec carries a note (a half size where the
+    /// key alone reads as a whole one) is followed by its meaning, so a user reading the help
+    /// does not type the beams' whole height for `h`.
+    pub fn key_docs() -> String {
+        Self::ALL
+            .iter()
+            .map(|&kind| {
+                let noted: Vec<String> = kind
+                    .params()
+                    .iter()
+                    .map(|p| p.spec())
+                    .filter(|spec| !spec.note.is_empty())
+                    .map(|spec| format!("{} is the {}", spec.name, spec.meaning))
+                    .collect();
+                if noted.is_empty() {
+                    format!("{kind}: {}", kind.key_list())
+                } else {
+                    format!("{kind}: {}, where {}", kind.key_list(), noted.join(" and "))
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("; ")
+    }
+
     /// The keys, space separated, as error messages list them.
     pub(crate) fn key_list(self) -> String {
         self.params()

@@ -39,11 +39,36 @@ pub(crate) fn count_of(n: usize, noun: &str) -> String {
 /// error) made safe for a terminal: control characters (C0, DEL, C1) and the invisible bidirectional
 /// controls that reorder text are shown as escapes instead of acting on the terminal. Tab, line feed
 /// and carriage return become `\t`, `\n` and `\r`, other ASCII controls `\xHH` (ESC is `\x1b`, so
-/// an escape sequence is shown, not obeyed), the rest `\u{HHHH}`. Everything else, including any
-/// other Unicode, is kept. The result is one line.
+/// an escape sequence is shown, not obeyed), the rest `\u{HHHH}`. Characters that take no
+/// room on screen (zero-width spaces and joiners, the word joiner, the byte-order mark, the soft
+/// hyphen, variation selectors) are escaped too: `--set KT=\u{200b}1000` is refused, and the
+/// message must show why, not a `1000` that seems refused. Everything else, including any other
+/// Unicode (no-break spaces, which show as spaces), is kept. The result is one line.
 pub(crate) fn sanitize(text: &str) -> Cow<'_, str> {
     fn unsafe_char(c: char) -> bool {
-        c.is_control() || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+        c.is_control()
+            || matches!(
+                c,
+                '\u{202a}'..='\u{202e}'
+                    | '\u{2066}'..='\u{2069}'
+                    | '\u{00ad}'
+                    | '\u{034f}'
+                    | '\u{061c}'
+                    | '\u{115f}'
+                    | '\u{1160}'
+                    | '\u{17b4}'
+                    | '\u{17b5}'
+                    | '\u{180b}'..='\u{180e}'
+                    | '\u{200b}'..='\u{200f}'
+                    | '\u{2060}'..='\u{2064}'
+                    | '\u{206a}'..='\u{206f}'
+                    | '\u{3164}'
+                    | '\u{fe00}'..='\u{fe0f}'
+                    | '\u{feff}'
+                    | '\u{ffa0}'
+                    | '\u{fff9}'..='\u{fffb}'
+                    | '\u{e0000}'..='\u{e007f}'
+            )
     }
     if !text.chars().any(unsafe_char) {
         return Cow::Borrowed(text);

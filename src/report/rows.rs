@@ -30,8 +30,12 @@ pub struct BeamRow {
     /// columns, which scripts read by name.
     pub beam_theory: &'static str,
     /// Bound on |w(L) continuum FE / w(L) here - 1| (V2), a fraction; empty where (V2) is not
-    /// calibrated (`beam_theory` still names the theory).
+    /// calibrated (`beam_theory` still names the theory). Deprecated: the same value as
+    /// `vs_continuum_within_fraction`, kept one release for scripts that read it.
     pub vs_continuum_within: Option<f64>,
+    /// The same bound under the name that says its unit (a fraction: 0.034 is 3.4 %). Added
+    /// last, so no column moves.
+    pub vs_continuum_within_fraction: Option<f64>,
 }
 
 impl From<&BeamPoint> for BeamRow {
@@ -45,6 +49,7 @@ impl From<&BeamPoint> for BeamRow {
             regime_regularized: p.regime_regularized.label(),
             beam_theory: p.validity.theory.key(),
             vs_continuum_within: p.validity.expected_error,
+            vs_continuum_within_fraction: p.validity.expected_error,
         }
     }
 }
@@ -173,8 +178,12 @@ pub struct LapRow {
     /// Regularized regime.
     pub regime_regularized: &'static str,
     /// The shear-lag envelope's bound on Delta's difference from a continuum (L14), a fraction;
-    /// empty (null) where it is not calibrated.
+    /// empty (null) where it is not calibrated. Deprecated: the same value as
+    /// `shear_lag_within_fraction`, kept one release.
     pub shear_lag_within: Option<f64>,
+    /// The same bound under its one name in every output (`lap --format json`'s
+    /// `shear_lag.shear_lag_within_fraction`, `compare lap`'s column): a fraction.
+    pub shear_lag_within_fraction: Option<f64>,
 }
 
 impl From<&LapPoint> for LapRow {
@@ -190,6 +199,7 @@ impl From<&LapPoint> for LapRow {
             regime_coulomb: p.regime_coulomb.label(),
             regime_regularized: p.regime_regularized.label(),
             shear_lag_within: p.shear_lag_within,
+            shear_lag_within_fraction: p.shear_lag_within,
         }
     }
 }
@@ -237,12 +247,12 @@ mod tests {
         assert_eq!(
             header::<BeamRow>(),
             "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized,beam_theory,\
-             vs_continuum_within"
+             vs_continuum_within,vs_continuum_within_fraction"
         );
         assert_eq!(
             header::<LapRow>(),
             "F_N,Delta_coulomb_mm,Delta_regularized_mm,a_mm,d_mm,a_coulomb_mm,d_coulomb_mm,\
-             regime_coulomb,regime_regularized,shear_lag_within"
+             regime_coulomb,regime_regularized,shear_lag_within,shear_lag_within_fraction"
         );
         assert_eq!(
             header::<PlateRow>(),

@@ -17,7 +17,7 @@ use crate::PlateParams;
 use crate::chart::view::AnyChart;
 use crate::chart::{self, NumericPoints, Plot, YMode, pins};
 use crate::fit::Measurement;
-use crate::kernel::params::{Compact, parse_number};
+use crate::kernel::params::Compact;
 use crate::preset::{self, Listed, Preset, PresetSource, SaveError};
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::twin_beams::closed_form::BeamTheory;
@@ -562,6 +562,14 @@ impl App {
         })
     }
 
+    /// The lines `i` walks through: the regime pane's title where it states an envelope, then
+    /// its lines.
+    pub fn explained_lines(&self) -> Vec<crate::tui::summary::SummaryLine> {
+        self.model().map_or_else(Vec::new, |m| {
+            crate::tui::summary::explained_lines(&m, &self.continuum())
+        })
+    }
+
     /// Asks for the plate's continuum at the current values when it is shown and not asked yet.
     fn ask_continuum(&mut self) {
         let plate = match self.model() {
@@ -796,6 +804,14 @@ impl App {
         self.y_modes.push((key, next));
         self.recompute();
         self.info(format!("y axis: {} (y: next mode)", next.label()));
+    }
+
+    /// Whether `action` may act while the terminal is too small to draw the app: only quitting
+    /// (q, Esc, Ctrl-C), answering the quit question, and suspending. Anything else would act
+    /// unseen: at 1x1, `x` exported a file nobody saw.
+    pub fn acts_when_too_small(&self, action: Action) -> bool {
+        matches!(action, Action::Quit | Action::RequestQuit | Action::Suspend)
+            || matches!(self.mode, Mode::ConfirmQuit { .. })
     }
 
     /// Applies one action; returns what the caller must do for it (nothing, for most keys), whose
@@ -1042,7 +1058,7 @@ impl App {
                 }
             }
             Mode::Explain { line } => {
-                let count = self.summary_lines().len().max(1);
+                let count = self.explained_lines().len().max(1);
                 match action {
                     Action::Next => {
                         self.mode = Mode::Explain {
@@ -1311,6 +1327,15 @@ impl App {
                 self.recompute();
                 if self.show_numeric && self.numeric.is_none() && self.message.is_none() {
                     self.info("no finite-element points for this chart (D vs F_a, P_r/P, X_r vs mu and the table have none)");
+                }
+                // The legend says where the first gap is; the status says why.
+                if let Some(words) = self
+                    .numeric
+                    .as_ref()
+                    .filter(|_| self.show_numeric)
+                    .and_then(NumericPoints::failure_words)
+                {
+                    self.info(format!("finite elements: {words}"));
                 }
             }
             Action::ToggleBeamTheory => match &mut self.state_mut().inputs {
@@ -1687,12 +1712,9 @@ impl App {
     /// Enter in the value field: parse, then set like a step.
     fn commit_value(&mut self, text: &str) {
         let param = self.selected_param();
-        match parse_number(text) {
-            Some(value) => self.set_value(param, value),
-            None => self.error(format!(
-                "invalid value '{text}' for {param}: not a finite number; kept {}",
-                self.current_value(param)
-            )),
+        match crate::preset::parse_value(param, text) {
+            Ok(value) => self.set_value(param, value),
+            Err(e) => self.error(format!("{e}; kept {}", self.current_value(param))),
         }
     }
 
@@ -1791,6 +1813,10 @@ impl App {
     fn ask_description(&mut self, name: String) {
         if self.user_dir.is_none() {
             return self.error(SaveError::NoDirectory.to_string());
+        }
+        // The name first: refused after the description, it would throw the description away.
+        if let Err(e) = preset::check_name(&name) {
+            return self.error(e.to_string());
         }
         let preset = &self.state().preset;
         let description = if preset.name == name && !preset.description.is_empty() {
@@ -2316,7 +2342,8 @@ mod tests {
         for _ in 0..50 {
             app.update(Action::Next);
         }
-        let count = app.summary_lines().len();
+        let count = app.explained_lines().len();
+        assert_eq!(app.summary_lines().len() + 1, count, "the title first");
         assert_eq!(app.mode(), &Mode::Explain { line: count - 1 });
         app.update(Action::Cancel);
         assert_eq!(app.mode(), &Mode::Normal);
@@ -2450,6 +2477,30 @@ mod tests {
         assert_eq!(app.mode(), &Mode::Normal);
         app.update(Action::Quit);
         assert!(app.should_quit());
+    }
+
+    #[test]
+    fn a_refused_preset_name_is_refused_before_the_description_is_asked() {
+        let dir = tempfile::tempdir().unwrap();
+        for via_command in [true, false] {
+            let mut app = app_with_dir(Some(dir.path().to_path_buf()));
+            if via_command {
+                press(&mut app, Action::CommandLine);
+                typed(&mut app, "save ../x");
+            } else {
+                press(&mut app, Action::SavePreset);
+                typed(&mut app, "paper-beams");
+            }
+            press(&mut app, Action::Commit);
+            assert!(
+                !matches!(app.mode(), Mode::SaveDescription { .. }),
+                "{:?}",
+                app.mode()
+            );
+            let message = app.message().unwrap();
+            assert!(message.is_error, "{}", message.text);
+        }
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
     }
 
     #[test]

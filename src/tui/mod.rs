@@ -185,11 +185,15 @@ fn spawn_reader(sender: Sender<Input>) {
     });
 }
 
-/// Applies one event, performing what it asks for; true when the screen must be redrawn.
-fn apply(app: &mut App, runner: &mut Runner<Input>, event: Event) -> bool {
+/// Applies one event, performing what it asks for; true when the screen must be redrawn. While
+/// the terminal is `too_small` to draw the app, only the keys that quit act (and a paste types
+/// nothing): the user sees none of what the others would do.
+fn apply(app: &mut App, runner: &mut Runner<Input>, event: Event, too_small: bool) -> bool {
     match event {
         Event::Key(key) if key.kind == KeyEventKind::Press => {
-            match keymap::action_for(app.mode().context(), key) {
+            let action = keymap::action_for(app.mode().context(), key)
+                .filter(|&action| !too_small || app.acts_when_too_small(action));
+            match action {
                 // Like the terminal's own Ctrl-Z: the loop acts on the SIGTSTP once this batch
                 // is over.
                 Some(action::Action::Suspend) => {
@@ -203,6 +207,7 @@ fn apply(app: &mut App, runner: &mut Runner<Input>, event: Event) -> bool {
                 None => false,
             }
         }
+        Event::Paste(_) if too_small => false,
         Event::Paste(text) => app.paste(&text),
         Event::Resize(..) => true,
         _ => false,
@@ -242,7 +247,13 @@ fn event_loop(
         let mut next = Some(first);
         while let Some(input) = next {
             match input {
-                Input::Terminal(Ok(event)) => redraw |= apply(app, runner, event),
+                Input::Terminal(Ok(event)) => {
+                    // The size now, not at the last draw: a resize may be in this batch.
+                    let too_small = terminal
+                        .size()
+                        .is_ok_and(|size| ui::is_too_small(size.width, size.height));
+                    redraw |= apply(app, runner, event, too_small);
+                }
                 Input::Terminal(Err(_)) => return Ok(Exit::HangUp),
                 Input::Work(report) => {
                     runner.deliver(app, report);
@@ -260,5 +271,63 @@ fn event_loop(
         if redraw && !signals.waiting() {
             terminal.draw(|frame| ui::draw(frame, app))?;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+
+    use super::*;
+
+    fn app() -> App {
+        App::new(AppOptions {
+            theme: Theme {
+                charset: Charset::Unicode,
+                color: true,
+            },
+            preset: preset::resolve("paper-beams").unwrap(),
+            user_dir: None,
+            data: None,
+            solve_continuum: false,
+        })
+    }
+
+    fn key(c: char) -> Event {
+        Event::Key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::NONE))
+    }
+
+    /// Issue 36 (21): under "Terminal too small" only the keys that quit act: at 1x1, `x`
+    /// exported a file nobody saw. The same keys act once the terminal is large enough.
+    #[test]
+    fn only_quitting_acts_while_the_terminal_is_too_small() {
+        let (sender, _reports) = mpsc::channel::<Input>();
+        let mut runner = Runner::new(sender);
+        let mut app = app();
+        let kind = app.kind();
+        // `m` switches the model, `j` the row, `x` exports, `:` opens the command line.
+        for c in ['m', 'j', 'L', 'x', ':', 's'] {
+            apply(&mut app, &mut runner, key(c), true);
+        }
+        assert_eq!(app.kind(), kind);
+        assert_eq!(app.selected(), 0);
+        assert!(
+            app.message().is_none(),
+            "{:?}",
+            app.message().map(|m| &m.text)
+        );
+        let inputs = app.inputs();
+        assert!(inputs.kind().params().iter().all(|&p| !app.is_edited(p)));
+        assert!(!apply(
+            &mut app,
+            &mut runner,
+            Event::Paste("7".into()),
+            true
+        ));
+        apply(&mut app, &mut runner, key('m'), false);
+        assert_ne!(app.kind(), kind);
+        // Quitting still works, and asks first where edits would be lost.
+        apply(&mut app, &mut runner, key('q'), true);
+        assert!(app.should_quit());
     }
 }

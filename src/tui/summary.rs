@@ -200,6 +200,44 @@ fn lap_validity_words(v: &crate::problems::lap::LapValidity) -> String {
 }
 
 /// The lines of the regime pane for `model`; `continuum`: the plate's 2-D continuum u(L).
+/// The largest beam-theory envelope (V2) the regime pane's title states (10 %): past it the
+/// bound's 4 w(L)/L term speaks of deflections far beyond the largest measured (w/L about 1.3 %,
+/// docs/theory.md (V2)), so no number is claimed there.
+const MAX_SHOWN_ENVELOPE: f64 = 0.1;
+
+/// The regime pane's title after "Regime (i), " ("FE within 3.02 %") and what it means: the beams'
+/// and the lap joint's pane are full at 80x24, so their envelope goes in the title, and `i`
+/// explains it as the first of the pane's lines. None for the plate, whose validity is a line.
+pub fn title_line(model: &Model) -> Option<SummaryLine> {
+    match model {
+        Model::Beam { beams, force } => {
+            let text = match beams.validity(*force).expected_error {
+                None => "FE: not calibrated".to_string(),
+                Some(error) if error > MAX_SHOWN_ENVELOPE => "FE: w/L too big".to_string(),
+                Some(error) => format!("FE within {} %", number_with(100.0 * error, 2)),
+            };
+            Some(plain(
+                text,
+                "how far continuum FE of these beams (plane stress, fine mesh) is expected from                  the w(L) shown: the beam theory's envelope at this force (docs/theory.md (V2)).                  'not calibrated': mu P L / (2 E h) beyond the measured range; 'w/L too big':                  the bound passes 10 %, deflections far beyond those measured",
+            ))
+        }
+        Model::Plate(_) => None,
+        Model::Lap { joint, force } => Some(plain(
+            crate::tui::brief::lap_validity_title(&joint.validity(*force)),
+            "how far a 2-D plane-stress continuum (FE) of this joint is expected from the Delta              shown: the shear-lag theory's envelope at this force (docs/theory.md (L14)).              'FE: >10 %, n solves': the theory is outside its envelope, n draws the continuum;              'not calibrated': no measured joint is like this one",
+        )),
+    }
+}
+
+/// The lines `i` walks through: the pane's title where it states an envelope, then the pane's
+/// lines.
+pub fn explained_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLine> {
+    title_line(model)
+        .into_iter()
+        .chain(summary_lines(model, continuum))
+        .collect()
+}
+
 pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLine> {
     const RATIO: &str =
         "regularized / Coulomb: 1.01 means 1 % more than under the plain Coulomb law";

@@ -274,7 +274,11 @@ impl LapJoint {
             * self.coulomb_stress()
             * elastic
             * tanhc(0.5 * lambda * elastic);
-        (force, elastic)
+        // F_2 <= F_gross = 2 b mu P L exactly (F_2 tends to it as one member's stiffness or
+        // lambda L tends to 0), but the product above rounds: a member a hundred million times
+        // the other's stiffness gave F_2 = 6000.000000000001 N over F_gross = 6000 N. A joint
+        // whose second end slides after the whole interface does is no joint: clamp.
+        (force.min(self.params.gross_slip_force()), elastic)
     }
 
     /// The slopes of the slip at the two ends that the force sets (L1), in units of 2 c mu P, so
@@ -566,6 +570,27 @@ impl Solution for LapState {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 36 (20): F_2 never above F_gross, where they are equal but for rounding (covers
+    /// 1e-4 MPa against a 70 GPa inner plate, K_T = 1e-6 MPa/mm: F_2 was 6000.000000000001 N).
+    #[test]
+    fn the_second_slip_force_never_exceeds_the_gross_slip_force() {
+        for (modulus, kt) in [(1e-4, 1e-6), (1e-4, 1e3), (1e7, 1e-6)] {
+            let joint = LapJoint::new(LapParams {
+                cover_modulus: modulus,
+                tangential_stiffness: kt,
+                ..LapParams::ALUMINIUM
+            })
+            .unwrap();
+            assert!(
+                joint.second_slip_force() <= joint.gross_slip_force(),
+                "E2 {modulus} K_T {kt}: F_2 {} F_gross {}",
+                joint.second_slip_force(),
+                joint.gross_slip_force()
+            );
+            assert!(joint.first_slip_force() <= joint.gross_slip_force());
+        }
+    }
 
     /// The joints of the derivation's independent check (docs/theory.md section 9): b 20, L 40,
     /// P 10, mu 0.3, all E 70000 but `e2`; values computed by a separate Python implementation of

@@ -27,7 +27,7 @@ use crate::numeric::banded::SymmetricBand;
 use crate::numeric::interface::{InterfacePoint, Response};
 use crate::numeric::mesh::MeshDensity;
 use crate::numeric::newton::{self, Discretized};
-use crate::numeric::{NumericError, short};
+use crate::numeric::{NumericError, short, stiffness_advice};
 
 /// Fewest elements per decay length 1/lambda of the elastic slip (lambda^2 = 2 K_T (1/(E1 t1) +
 /// 1/(2 E2 t2))): [`LapFe::new`] refines the requested mesh to at least this. The onset of
@@ -218,12 +218,12 @@ impl LapFe {
         Err(NumericError::OutOfRange(format!(
             "the elastic slip decays over 1/lambda = {} mm, lambda L = {}: resolving it with \
              {ELEMENTS_PER_DECAY} elements per 1/lambda needs more than the {MAX_ELEMENTS} \
-             elements the solver builds (lambda L <= {}); lower K_T to at most {} MPa/mm (the \
-             interface is then plain Coulomb to within mu P / K_T in Delta)",
+             elements the solver builds (lambda L <= {}); {} (the interface is then plain \
+             Coulomb to within mu P / K_T in Delta)",
             short(params.length / decays),
             short(decays),
             short(most),
-            short(largest)
+            stiffness_advice(largest, Some("shorten the overlap L"))
         )))
     }
 

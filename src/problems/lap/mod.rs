@@ -28,7 +28,7 @@ use params::LapParam;
 pub(crate) const DESCRIPTION: Description = Description {
     key: "lap",
     title: "clamped double-lap joint",
-    summary: "Clamped double-lap joint (shear lag, issue 24)",
+    summary: "Clamped double-lap joint (shear lag, docs/theory.md section 9)",
     paper_preset: "lap-aluminium",
     params: &PARAMS,
     response_symbol: "Delta",

@@ -19,7 +19,7 @@ use crate::numeric::interface::{InterfacePoint, Response};
 use crate::numeric::mesh::MeshDensity;
 use crate::numeric::mesh::{graded_towards_end, ratio_for_smallest};
 use crate::numeric::newton::{self, Discretized};
-use crate::numeric::{NumericError, short};
+use crate::numeric::{NumericError, short, stiffness_advice};
 
 /// Smallest saturation slip, relative to the free expansion, that the 1-D solver resolves
 /// ([`PlateFe::check_resolvable`]): 1e-6, above every failure measured (5.4e-7).
@@ -219,11 +219,11 @@ impl PlateFe {
         Err(NumericError::OutOfRange(format!(
             "the saturation slip mu P / K_T = {} mm is {} of the plate's free expansion \
              nu (1 + nu) P L / E = {} mm, below the {MIN_RESOLVED_SLIP:e} the 1-D solver's mesh \
-             resolves: lower K_T to at most {} MPa/mm or raise E",
+             resolves: {}",
             short(saturation),
             short(saturation / scale),
             short(scale),
-            short(largest)
+            stiffness_advice(largest, Some("raise E"))
         )))
     }
 
@@ -336,6 +336,28 @@ mod tests {
     /// A plate whose saturation slip is below 1e-6 of its free expansion failed to converge
     /// (E = 1e-4 MPa at any K_T of the u(L) chart); refused at once now, and the plate just
     /// inside the bound converges.
+    /// Issue 36 (20): where even the least accepted K_T (1e-6 MPa/mm) is too stiff, the refusal
+    /// says no K_T works, never "lower K_T to at most 2.6e-7 MPa/mm", a value the door refuses.
+    #[test]
+    fn no_advice_below_the_accepted_stiffness() {
+        let hopeless = PlateParams {
+            youngs_modulus: 1e-4,
+            half_length: 1e3,
+            friction: 1e-6,
+            tangential_stiffness: 1e-6,
+            ..PlateParams::PAPER
+        };
+        let Err(NumericError::OutOfRange(message)) = PlateFe::check_resolvable(&hopeless) else {
+            panic!("refused")
+        };
+        assert!(!message.contains("lower K_T"), "{message}");
+        assert!(
+            message.contains("no accepted K_T is small enough (this needs at most")
+                && message.contains("the least accepted is 1e-6 MPa/mm): raise E"),
+            "{message}"
+        );
+    }
+
     #[test]
     fn an_interface_too_stiff_for_the_mesh_is_refused_with_the_largest_that_is() {
         let soft = PlateParams {

@@ -22,7 +22,7 @@ use crate::numeric::elements::{GAUSS, lagrange, quadratic_bar};
 use crate::numeric::interface::{InterfacePoint, Response};
 use crate::numeric::mesh::{MeshDensity, graded_from_start, ratio_for_smallest};
 use crate::numeric::newton::{self, Discretized};
-use crate::numeric::{NumericError, short};
+use crate::numeric::{NumericError, short, stiffness_advice};
 
 /// Smallest saturation slip, relative to the beams' slip scale, that the solver is given
 /// ([`TwinBeamsFe::check_resolvable`]): 1e-9. Loaded in the 40 steps of a chart (100 elements),
@@ -285,13 +285,12 @@ impl TwinBeamsFe {
         let largest = p.friction * p.pressure / (MIN_RESOLVED_SLIP * scale);
         Err(NumericError::OutOfRange(format!(
             "the saturation slip mu P / K_T = {} mm is {} of the beams' slip scale 2 h w / L \
-             ({} mm), below the {MIN_RESOLVED_SLIP:e} double precision resolves: lower K_T to at \
-             most {} MPa/mm or raise E (the interface is then plain Coulomb to within what a chart \
-             shows)",
+             ({} mm), below the {MIN_RESOLVED_SLIP:e} double precision resolves: {} (the \
+             interface is then plain Coulomb to within what a chart shows)",
             short(saturation),
             short(ratio),
             short(scale),
-            short(largest)
+            stiffness_advice(largest, Some("raise E"))
         )))
     }
 

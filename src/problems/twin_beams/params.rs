@@ -62,7 +62,9 @@ impl BeamParam {
                 LENGTH,
                 FACTOR,
             )
-            .usual(0.1, 1e4),
+            .usual(0.1, 1e4)
+            // A user who types the whole 20 mm height gets beams twice too thick (w(L) 8x small).
+            .noted("half"),
             BeamParam::Modulus => MODULUS,
             BeamParam::Pressure => spec(
                 "P",

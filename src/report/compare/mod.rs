@@ -43,6 +43,11 @@ pub struct BeamCompareRow {
     /// FE X (mm), from K_T |slip| = mu P (empty without a slip profile).
     #[serde(rename = "X_fe_mm")]
     pub macroslip_start_fe: Option<f64>,
+    /// Deprecated names above (kept one release): the same values under names that say their
+    /// unit, a fraction (0.034 is 3.4 %). Added last, so no column moves.
+    pub diff_euler_fraction: Option<f64>,
+    pub diff_shear_corrected_fraction: Option<f64>,
+    pub shear_corrected_within_fraction: Option<f64>,
 }
 
 impl From<&BeamCompared> for BeamCompareRow {
@@ -59,6 +64,9 @@ impl From<&BeamCompared> for BeamCompareRow {
             regime_fe: r.fe.interface.map(|i| i.regime.label()),
             macroslip_start: r.macroslip_start,
             macroslip_start_fe: r.fe.interface.map(|i| i.macroslip_start),
+            diff_euler_fraction: r.difference_euler(),
+            diff_shear_corrected_fraction: r.difference_shear_corrected(),
+            shear_corrected_within_fraction: r.shear_corrected_within,
         }
     }
 }
@@ -100,6 +108,11 @@ pub struct PlateCompareRow {
     pub implied_stiffness: Option<f64>,
     /// (V1) for the thickness mean at the run's K_T; the implied K_T is given only where it holds.
     pub strip_theory: &'static str,
+    /// Deprecated names above (kept one release): the same values under names that say their
+    /// unit, a fraction (0.034 is 3.4 %). Added last, so no column moves.
+    pub diff_fraction: Option<f64>,
+    pub diff_contact_face_fraction: Option<f64>,
+    pub diff_mid_thickness_fraction: Option<f64>,
 }
 
 impl From<&PlateCompared> for PlateCompareRow {
@@ -122,6 +135,9 @@ impl From<&PlateCompared> for PlateCompareRow {
             micro_zone_end_fe: r.fe_interface().map(|i| i.macroslip_start),
             implied_stiffness: r.implied_stiffness,
             strip_theory: r.strip_validity.label(),
+            diff_fraction: r.difference(),
+            diff_contact_face_fraction: diffs.map(|d| d[0]),
+            diff_mid_thickness_fraction: diffs.map(|d| d[1]),
         }
     }
 }
@@ -169,6 +185,10 @@ pub struct LapCompareRow {
     pub implied_stiffness: Option<f64>,
     /// The shear-lag theory's level at this force (L14).
     pub shear_lag: &'static str,
+    /// Deprecated names above (kept one release): the same values under names that say their
+    /// unit, a fraction (0.034 is 3.4 %). Added last, so no column moves.
+    pub diff_fraction: Option<f64>,
+    pub shear_lag_within_fraction: Option<f64>,
 }
 
 impl From<&LapCompared> for LapCompareRow {
@@ -188,6 +208,8 @@ impl From<&LapCompared> for LapCompareRow {
             slide_from_end_fe: r.fe.interface.map(|i| i.slide_from_end),
             implied_stiffness: r.implied_stiffness,
             shear_lag: r.theory_validity.label(),
+            diff_fraction: r.difference(),
+            shear_lag_within_fraction: r.theory_within,
         }
     }
 }

@@ -25,6 +25,9 @@ pub struct BeamRowVerdict {
     pub envelope: Envelope,
     /// The envelope's bound, a fraction.
     pub envelope_bound: Option<f64>,
+    /// The same bound under the name that says its unit (a fraction); `envelope_bound` is
+    /// deprecated, kept one release.
+    pub envelope_bound_fraction: Option<f64>,
     /// |FE X - closed-form X| in elements of the FE mesh (CalculiX results only).
     #[serde(rename = "X_elements")]
     pub zone_end_elements: Option<f64>,
@@ -44,6 +47,9 @@ pub struct PlateRowVerdict {
     pub envelope: Envelope,
     /// The envelope's bound, a fraction; null where not calibrated.
     pub envelope_bound: Option<f64>,
+    /// The same bound under the name that says its unit (a fraction); `envelope_bound` is
+    /// deprecated, kept one release.
+    pub envelope_bound_fraction: Option<f64>,
     /// |FE X_r - closed-form X_r| in elements of the FE mesh (CalculiX results only).
     #[serde(rename = "Xr_elements")]
     pub zone_end_elements: Option<f64>,
@@ -63,6 +69,9 @@ pub struct LapRowVerdict {
     pub envelope: Envelope,
     /// The envelope's bound, a fraction; null where not calibrated.
     pub envelope_bound: Option<f64>,
+    /// The same bound under the name that says its unit (a fraction); `envelope_bound` is
+    /// deprecated, kept one release.
+    pub envelope_bound_fraction: Option<f64>,
     /// |FE a - closed-form a| in elements of the FE mesh (CalculiX results only).
     pub a_elements: Option<f64>,
     /// |FE d - closed-form d| in elements of the FE mesh (CalculiX results only).
@@ -157,6 +166,7 @@ pub(crate) fn beam_row(row: &crate::fe::compare::BeamCompared) -> BeamRowVerdict
     BeamRowVerdict {
         envelope,
         envelope_bound: envelope.bound(),
+        envelope_bound_fraction: envelope.bound(),
         zone_end_elements: row.macroslip_start_mesh.map(|m| m.elements),
         zone_end_within_resolution: row.macroslip_start_mesh.map(|m| m.within_resolution()),
         text,
@@ -178,6 +188,7 @@ pub(crate) fn plate_row(row: &crate::fe::compare::PlateCompared) -> PlateRowVerd
     PlateRowVerdict {
         envelope,
         envelope_bound: envelope.bound(),
+        envelope_bound_fraction: envelope.bound(),
         zone_end_elements: row.micro_zone_end_mesh.map(|m| m.elements),
         zone_end_within_resolution: row.micro_zone_end_mesh.map(|m| m.within_resolution()),
         text,
@@ -201,6 +212,7 @@ pub(crate) fn lap_row(row: &crate::fe::compare::LapCompared) -> LapRowVerdict {
     LapRowVerdict {
         envelope,
         envelope_bound: envelope.bound(),
+        envelope_bound_fraction: envelope.bound(),
         a_elements: row.zones_mesh.map(|[a, _]| a.elements),
         d_elements: row.zones_mesh.map(|[_, d]| d.elements),
         text,

@@ -74,14 +74,22 @@ pub struct BeamTheoryReport {
     /// In JSON its key (`euler-bernoulli`), in text its label.
     #[serde(serialize_with = "theory_key")]
     pub theory: BeamTheory,
-    /// Shear deflection over the Euler-Bernoulli w(L).
+    /// Shear deflection over the Euler-Bernoulli w(L), a fraction. Deprecated: the same value
+    /// as `shear_deflection_share_fraction`, kept one release.
     pub shear_deflection_share: f64,
+    /// The same share under the name that says its unit (0.019 is 1.9 %).
+    pub shear_deflection_share_fraction: f64,
     /// Bound on the difference from continuum FE, a fraction; absent where (V2) is not calibrated.
+    /// Deprecated: the same value as `vs_continuum_within_fraction`, kept one release.
     #[serde(
         rename = "vs_continuum_within",
         skip_serializing_if = "Option::is_none"
     )]
     pub expected_error: Option<f64>,
+    /// The same bound under the name that says its unit, as `sweep beam`'s column: a fraction
+    /// (0.03 is 3 %); absent where (V2) is not calibrated.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vs_continuum_within_fraction: Option<f64>,
     /// The friction strain mu P L / (2 E h) that decides whether (V2) is calibrated.
     pub friction_strain: f64,
     #[serde(serialize_with = "validity_label")]
@@ -120,7 +128,9 @@ impl BeamReport {
             beam_theory: BeamTheoryReport {
                 theory: row.validity.theory,
                 shear_deflection_share: row.validity.shear_share,
+                shear_deflection_share_fraction: row.validity.shear_share,
                 expected_error: row.validity.expected_error,
+                vs_continuum_within_fraction: row.validity.expected_error,
                 friction_strain: row.validity.friction_strain,
                 validity: row.validity.validity,
             },

@@ -48,20 +48,28 @@ pub struct FitReport {
     pub correlation: Option<f64>,
 }
 
-/// The name of the weights and sqrt of the reduced chi-square (see [`FitReport::scatter`]).
-fn weights_and_scatter(scatter: &Scatter) -> (&'static str, f64) {
+/// The name of the weights, sqrt of the reduced chi-square (see [`FitReport::scatter`]) and the
+/// key that names its unit: `scatter_mm` (absolute weights: the sigma of w), `scatter_fraction`
+/// (relative: sigma over w) or `scatter_over_sigma` (given sigmas: a ratio, about 1 when they are
+/// right).
+fn weights_and_scatter(scatter: &Scatter) -> (&'static str, f64, &'static str) {
     match *scatter {
-        Scatter::Absolute { sigma } => ("absolute", sigma),
-        Scatter::Relative { fraction } => ("relative", fraction),
-        Scatter::Known { reduced_chi_square } => ("sigma_mm", reduced_chi_square.sqrt()),
+        Scatter::Absolute { sigma } => ("absolute", sigma, "scatter_mm"),
+        Scatter::Relative { fraction } => ("relative", fraction, "scatter_fraction"),
+        Scatter::Known { reduced_chi_square } => {
+            ("sigma_mm", reduced_chi_square.sqrt(), "scatter_over_sigma")
+        }
     }
 }
 
+/// `weights`, the scatter under its unit's name and, deprecated (kept one release), the same
+/// value as `scatter`, whose unit depended on `weights`.
 fn scatter_fields<S: Serializer>(scatter: &Scatter, s: S) -> Result<S::Ok, S::Error> {
     use serde::ser::SerializeMap;
-    let (weights, value) = weights_and_scatter(scatter);
-    let mut map = s.serialize_map(Some(2))?;
+    let (weights, value, key) = weights_and_scatter(scatter);
+    let mut map = s.serialize_map(Some(3))?;
     map.serialize_entry("scatter", &value)?;
+    map.serialize_entry(key, &value)?;
     map.serialize_entry("weights", weights)?;
     map.end()
 }

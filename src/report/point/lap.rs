@@ -85,8 +85,11 @@ pub struct LapContinuumSolved {
     /// Delta (mm): thickness means, from the clamped state, as the closed form's.
     #[serde(rename = "Delta_mm")]
     pub joint_displacement: f64,
-    /// (continuum - shear lag) / shear lag for Delta.
+    /// (continuum - shear lag) / shear lag for Delta, a fraction. Deprecated: the same value as
+    /// `diff_vs_shear_lag_fraction`, kept one release.
     pub diff_vs_shear_lag: Option<f64>,
+    /// (continuum - shear lag) / shear lag for Delta, a fraction (0.011 is 1.1 %).
+    pub diff_vs_shear_lag_fraction: Option<f64>,
     /// The sliding zones where K_T |s| >= mu P (the closed form's definition) (mm).
     #[serde(rename = "a_mm")]
     pub slide_at_inner_end: f64,
@@ -114,9 +117,11 @@ impl LapContinuumReport {
                     .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(_, p)| {
                         (lo.min(p), hi.max(p))
                     });
+                let diff = (shear_lag != 0.0).then(|| c.delta / shear_lag - 1.0);
                 LapContinuumReport::Solved(LapContinuumSolved {
                     joint_displacement: c.delta,
-                    diff_vs_shear_lag: (shear_lag != 0.0).then(|| c.delta / shear_lag - 1.0),
+                    diff_vs_shear_lag: diff,
+                    diff_vs_shear_lag_fraction: diff,
                     slide_at_inner_end: c.nominal_zones.from_inner_end,
                     slide_at_cover_ends: c.nominal_zones.from_cover_ends,
                     pressure_min,
@@ -142,6 +147,13 @@ pub struct LapLaw {
     /// Sliding zone from x = L (mm).
     #[serde(rename = "d_mm")]
     pub slide_at_cover_ends: f64,
+    /// Energy dissipated per cycle of the force between +F and -F (N mm), as the TUI's regime
+    /// pane shows it; the same key as `cycle`'s.
+    #[serde(rename = "D_Nmm")]
+    pub dissipation: f64,
+    /// The equivalent damping ratio D / (4 pi U), U = F Delta / 2 (dimensionless).
+    #[serde(rename = "zeta")]
+    pub damping_ratio: f64,
 }
 
 /// The theory and what is known of its domain.
@@ -153,8 +165,12 @@ pub struct ShearLagReport {
     #[serde(serialize_with = "validity_label")]
     pub validity: Validity,
     /// The envelope's bound on Delta's difference from a continuum, a fraction; null where the
-    /// calibration does not reach.
+    /// calibration does not reach. Deprecated: the same value as `shear_lag_within_fraction`,
+    /// kept one release.
     pub expected_error: Option<f64>,
+    /// The same bound under its one name in every output (`sweep lap`'s and `compare lap`'s
+    /// column): a fraction (0.034 is 3.4 %).
+    pub shear_lag_within_fraction: Option<f64>,
     /// Which calibrated range the joint leaves (null inside them).
     pub outside_calibration: Option<&'static str>,
     /// The envelope's three terms: the plates' shear compliance r, the clamping prestress q_p
@@ -176,11 +192,16 @@ impl LapReport {
         let row = lap_point(joint, force);
         let p = joint.params();
         let decay_length = 1.0 / joint.decay_rate();
-        let law = |regime, delta, (a, d): (f64, f64)| LapLaw {
-            regime,
-            joint_displacement: delta,
-            slide_at_inner_end: a,
-            slide_at_cover_ends: d,
+        let law = |law, regime, delta, (a, d): (f64, f64)| {
+            let cycle = LapCycle::new(joint, law, force);
+            LapLaw {
+                regime,
+                joint_displacement: delta,
+                slide_at_inner_end: a,
+                slide_at_cover_ends: d,
+                dissipation: cycle.dissipation(),
+                damping_ratio: cycle.damping_ratio(),
+            }
         };
         LapReport {
             model: "lap",
@@ -199,8 +220,14 @@ impl LapReport {
             decay_length,
             inner_stiffness: p.inner_stiffness(),
             covers_stiffness: p.covers_stiffness(),
-            coulomb: law(row.regime_coulomb, row.delta_coulomb, row.zones_coulomb),
+            coulomb: law(
+                Law::Coulomb,
+                row.regime_coulomb,
+                row.delta_coulomb,
+                row.zones_coulomb,
+            ),
             regularized: law(
+                Law::Regularized,
                 row.regime_regularized,
                 row.delta_regularized,
                 row.zones_regularized,
@@ -211,6 +238,7 @@ impl LapReport {
                     decay_length_over_thickness: v.decay_over_thickness,
                     validity: v.validity,
                     expected_error: v.expected_error,
+                    shear_lag_within_fraction: v.expected_error,
                     outside_calibration: v.outside_calibration,
                     shear_compliance: v.shear_compliance,
                     clamping_prestress: v.clamping_prestress,

@@ -46,8 +46,26 @@ pub(crate) fn validity_label<S: Serializer>(v: &Validity, s: S) -> Result<S::Ok,
     s.serialize_str(v.label())
 }
 
+/// Ratios written twice in a JSON object: under the key they always had (deprecated, kept one
+/// release) and under that key with `_fraction`, the unit every ratio's name now carries (0.034
+/// is 3.4 %), so that no ratio reads as a percentage or a length.
+pub(crate) fn serialize_fractions<S: Serializer>(
+    entries: &[(&str, f64)],
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let mut map = s.serialize_map(Some(2 * entries.len()))?;
+    for (key, value) in entries {
+        map.serialize_entry(key, value)?;
+        map.serialize_entry(&format!("{key}_fraction"), value)?;
+    }
+    map.end()
+}
+
 /// The model's parameters: in JSON an object `KEY_unit: value` (`L_mm`, `KT_MPa_per_mm`, `mu`);
-/// in text one line per parameter with value, unit and meaning.
+/// in text one line per parameter with value, unit and meaning. The keys are the `--set` keys, so
+/// two are half sizes: the beams' `h_mm` is the half height (each beam is 2 h_mm high) and the
+/// plate's `L_mm` the half-length, where the beams' and the lap joint's `L_mm` are whole lengths.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct InputsReport(pub Inputs);
 

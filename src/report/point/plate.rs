@@ -89,12 +89,8 @@ pub struct ContactPressureReport {
     pub ratio_centre: f64,
     /// P_r/P at the edge.
     pub ratio_edge: f64,
-    /// Mean |P_r/P - 1|.
-    pub mean_deviation: f64,
-    /// Peak |P_r/P - 1|.
-    pub peak_deviation: f64,
-    pub mean_deviation_limit: f64,
-    pub peak_deviation_limit: f64,
+    #[serde(flatten)]
+    pub deviations: PressureDeviations,
     /// Deprecated: the flat model's flag, which does not track a continuum (docs/theory.md (P12));
     /// the continuum's `contact pressure` keys replace it.
     pub constant_pressure_holds: bool,
@@ -129,23 +125,67 @@ pub struct StripTheory {
     pub expected: Option<ExpectedDifferences>,
     /// Where the strip theory is measured wrong (V1c): the least difference of the thickness mean
     /// from the continuum stated for its region.
+    /// In JSON under its old name (deprecated, kept one release) and under the name that says
+    /// its unit, `measured_difference_at_least_fraction`.
     #[serde(
         rename = "measured_difference_at_least",
         skip_serializing_if = "Option::is_none"
     )]
     pub measured_at_least: Option<f64>,
+    #[serde(
+        rename = "measured_difference_at_least_fraction",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub measured_at_least_fraction: Option<f64>,
 }
 
 /// Where a calibration reaches: the expected difference from a plane-strain continuum of each
-/// quantity, a fraction.
-#[derive(Debug, Clone, Copy, Serialize)]
+/// quantity, a fraction. Each is written twice in JSON: under its old name (deprecated, kept one
+/// release) and under that name with `_fraction`, the unit every ratio's name now carries.
+#[derive(Debug, Clone, Copy)]
 pub struct ExpectedDifferences {
-    #[serde(rename = "expected_difference_from_continuum")]
     pub thickness_mean: f64,
-    #[serde(rename = "expected_difference_contact_face")]
     pub contact_face: f64,
-    #[serde(rename = "expected_difference_mid_thickness")]
     pub mid_thickness: f64,
+}
+
+impl Serialize for ExpectedDifferences {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        super::serialize_fractions(
+            &[
+                ("expected_difference_from_continuum", self.thickness_mean),
+                ("expected_difference_contact_face", self.contact_face),
+                ("expected_difference_mid_thickness", self.mid_thickness),
+            ],
+            s,
+        )
+    }
+}
+
+/// How far the flat model's P_r/P strays from 1, and the limits of "constant pressure", as
+/// fractions: in JSON under their old keys and with `_fraction` ([`super::serialize_fractions`]).
+#[derive(Debug, Clone, Copy)]
+pub struct PressureDeviations {
+    /// Mean |P_r/P - 1|.
+    pub mean: f64,
+    /// Peak |P_r/P - 1|.
+    pub peak: f64,
+    pub mean_limit: f64,
+    pub peak_limit: f64,
+}
+
+impl Serialize for PressureDeviations {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        super::serialize_fractions(
+            &[
+                ("mean_deviation", self.mean),
+                ("peak_deviation", self.peak),
+                ("mean_deviation_limit", self.mean_limit),
+                ("peak_deviation_limit", self.peak_limit),
+            ],
+            s,
+        )
+    }
 }
 
 /// The plane-strain continuum: its answer, or why it has none.
@@ -210,6 +250,7 @@ impl StripTheory {
                 mid_thickness: e[2],
             }),
             measured_at_least: v.measured_at_least,
+            measured_at_least_fraction: v.measured_at_least,
         }
     }
 
@@ -379,10 +420,12 @@ impl PlateReport {
                 end_layer_ratio_applies: plate.end_layer_pressure().is_some(),
                 ratio_centre: pressure.ratio(0.0),
                 ratio_edge: pressure.ratio(plate.params().half_length),
-                mean_deviation: pressure.mean_deviation(),
-                peak_deviation: pressure.peak_deviation(),
-                mean_deviation_limit: PRESSURE_DEVIATION_LIMIT,
-                peak_deviation_limit: PRESSURE_PEAK_LIMIT,
+                deviations: PressureDeviations {
+                    mean: pressure.mean_deviation(),
+                    peak: pressure.peak_deviation(),
+                    mean_limit: PRESSURE_DEVIATION_LIMIT,
+                    peak_limit: PRESSURE_PEAK_LIMIT,
+                },
                 constant_pressure_holds: pressure.constant_pressure_holds(),
             },
             strip_theory: StripTheory::new(plate),
@@ -401,8 +444,8 @@ impl PlateReport {
             p.model,
             number(p.ratio_centre),
             number(p.ratio_edge),
-            number(100.0 * p.mean_deviation),
-            number(100.0 * p.peak_deviation)
+            number(100.0 * p.deviations.mean),
+            number(100.0 * p.deviations.peak)
         );
         let applies = if p.end_layer_ratio_applies {
             format!(

@@ -19,10 +19,16 @@ pub const MIN_WIDTH: u16 = 80;
 /// Smallest terminal height.
 pub const MIN_HEIGHT: u16 = 24;
 
+/// True when a terminal of `width` x `height` cells is too small for the layout: the screen then
+/// only says so, and only the keys that quit act (see [`App::acts_when_too_small`]).
+pub fn is_too_small(width: u16, height: u16) -> bool {
+    width < MIN_WIDTH || height < MIN_HEIGHT
+}
+
 /// Draws the whole screen.
 pub fn draw(frame: &mut Frame, app: &App) {
     let area = frame.area();
-    if area.width < MIN_WIDTH || area.height < MIN_HEIGHT {
+    if is_too_small(area.width, area.height) {
         draw_too_small(frame, app, area);
     } else {
         // The status takes the rows its message needs (up to a few), out of the panes above it,
@@ -119,8 +125,14 @@ pub fn draw(frame: &mut Frame, app: &App) {
 }
 
 fn draw_too_small(frame: &mut Frame, app: &App, area: Rect) {
+    // Only quitting acts here (App::acts_when_too_small): say how, and the question it asks.
+    let quit = if matches!(app.mode(), Mode::ConfirmQuit { .. }) {
+        "Quit with unsaved edits? y quits, n or Esc stays."
+    } else {
+        "Enlarge the window, or press q (Ctrl-C) to quit."
+    };
     let text = format!(
-        "Terminal too small: {}x{}.\nmicroslip needs at least {MIN_WIDTH}x{MIN_HEIGHT}.\nEnlarge the window, or press q to quit.",
+        "Terminal too small: {}x{}.\nmicroslip needs at least {MIN_WIDTH}x{MIN_HEIGHT}.\n{quit}",
         area.width, area.height
     );
     let paragraph = Paragraph::new(text)

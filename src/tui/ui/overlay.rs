@@ -126,6 +126,8 @@ pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
     lines.push(Line::from(""));
     lines.extend(COMMAND_HELP.iter().map(|l| Line::from(*l)));
     lines.push(Line::from(""));
+    lines.extend(TITLE_HELP.iter().map(|l| Line::from(*l)));
+    lines.push(Line::from(""));
     lines.extend(symbol_lines(app));
     let rows = usize::from(inner.height.saturating_sub(1)).max(1);
     let columns: Vec<Vec<Line>> = lines.chunks(rows).map(<[Line]>::to_vec).collect();
@@ -148,6 +150,15 @@ pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
         );
     }
 }
+
+/// What the regime pane's title states (the beams' and the lap joint's), in words: `i` says more.
+const TITLE_HELP: [&str; 5] = [
+    " Regime title \"FE within 3 %\":",
+    "  how far continuum FE is expected",
+    "  from w(L) (lap: Delta) at this F,",
+    "  the theory's envelope (theory.md);",
+    "  i explains it first",
+];
 
 /// The command line's words and the rule for loaded data, after the keys.
 const COMMAND_HELP: [&str; 9] = [
@@ -288,7 +299,7 @@ pub fn draw_explanation(frame: &mut Frame, app: &App, area: Rect, line: usize) {
     if app.model().is_none() {
         return;
     }
-    let lines = app.summary_lines();
+    let lines = app.explained_lines();
     let Some(chosen) = lines.get(line.min(lines.len().saturating_sub(1))) else {
         return;
     };

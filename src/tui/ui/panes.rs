@@ -8,7 +8,6 @@ use ratatui::widgets::{Block, Borders, Paragraph};
 
 use crate::Inputs;
 use crate::kernel::params::Unit;
-use crate::problems::inputs::Model;
 use crate::report::{number, sanitize};
 use crate::tui::app::{App, Mode};
 use crate::tui::summary::wrap_words;
@@ -44,7 +43,8 @@ pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
             // `get` cannot miss: the parameters come from the active model.
             let value = inputs.get(param).unwrap_or(f64::NAN);
             let shown = match app.mode() {
-                Mode::Editing { input } if selected => input.shown(),
+                // What is typed, invisible characters escaped (a zero-width space shows).
+                Mode::Editing { input } if selected => sanitize(&input.shown()).into_owned(),
                 _ => number(value),
             };
             let unit = match param.unit() {
@@ -88,27 +88,13 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
         return;
     };
     let summary = app.summary_lines();
-    // The beams' pane is full at 80x24: their envelope (V2) goes in the title.
-    // Past 10 % the bound's 4 w(L)/L term speaks of deflections far beyond the largest measured
-    // (w/L about 1.3 %, docs/theory.md (V2)): no number is claimed there.
-    let title = match &model {
-        Model::Beam { beams, force } => match beams.validity(*force).expected_error {
-            None => "Regime (i), FE: not calibrated".to_string(),
-            Some(error) if error > MAX_SHOWN_ENVELOPE => "Regime (i), FE: w/L too big".to_string(),
-            Some(error) => format!(
-                "Regime (i), FE within {} %",
-                crate::report::number_with(100.0 * error, 2)
-            ),
-        },
-        Model::Plate(_) => "Regime (i explains)".to_string(),
-        // The shear-lag envelope (L14): the expected difference from a plane-stress continuum.
-        Model::Lap { joint, force } => {
-            format!(
-                "Regime (i), {}",
-                super::super::brief::lap_validity_title(&joint.validity(*force))
-            )
-        }
-    };
+    // The beams' and the lap joint's pane are full at 80x24: their envelope goes in the title,
+    // which `i` explains first.
+    let title_line = crate::tui::summary::title_line(&model);
+    let title = title_line.as_ref().map_or_else(
+        || "Regime (i explains)".to_string(),
+        |t| format!("Regime (i), {}", t.text),
+    );
     let mut block = pane(app, &title);
     let inner = block.inner(area);
     let height = usize::from(inner.height);
@@ -151,8 +137,9 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
         }
         keep[i] = false;
     }
+    // `i` counts the title first where it states an envelope.
     let highlighted = match app.mode() {
-        Mode::Explain { line } => Some(*line),
+        Mode::Explain { line } => line.checked_sub(usize::from(title_line.is_some())),
         _ => None,
     };
     let mut lines = Vec::new();
@@ -182,9 +169,6 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
     lines.extend(strip::lines(&model, &theme, inner.width, size));
     frame.render_widget(Paragraph::new(lines), inner);
 }
-
-/// The largest beam-theory envelope (V2) the regime pane's title states (10 %).
-const MAX_SHOWN_ENVELOPE: f64 = 0.1;
 
 /// Model, preset (with `*` when modified), the last message, the command line or the typing
 /// prompt, and the two keys everyone needs. A message too long for one row takes more rows (the
@@ -245,11 +229,16 @@ fn status_line(app: &App) -> Line<'static> {
             spans.push(hint);
         }
         (Mode::Editing { .. }, None) => {
-            let param = app.selected_param();
+            let spec = app.selected_param().spec();
+            // A half size says so where it is typed (`h (mm, half height ...)`), as its row does.
+            let meaning = if spec.note.is_empty() {
+                String::new()
+            } else {
+                format!(", {}", spec.meaning)
+            };
             spans.push(Span::raw(format!(
-                "| {} ({}): type a value (replaces), Enter accept, Esc cancel",
-                param.name(),
-                param.unit()
+                "| {} ({}{meaning}): type a value (replaces), Enter accept, Esc cancel",
+                spec.name, spec.unit
             )));
         }
         (_, Some(message)) => {
