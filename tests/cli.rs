@@ -576,6 +576,56 @@ fn kt_compares_physical_and_code_default_stiffnesses() {
     assert!(failure(&["kt", "--kn", "5", "--nu", "0.5"], 2).contains("invalid --nu = 0.5"));
 }
 
+/// Issue 36 item 14: each candidate against Coulomb too, the figure users computed by hand
+/// (lap-aluminium: Abaqus +8.2 %, Ansys +17.0 % of Coulomb's Delta), with the element size named.
+#[test]
+fn kt_shows_each_candidate_against_coulomb_and_the_element_size() {
+    let args = ["kt", "--preset", "lap-aluminium", "--format", "json"];
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&args)).unwrap();
+    let rows = json["candidates"].as_array().unwrap();
+    let vs_coulomb = |source: &str| {
+        rows.iter().find(|r| r["source"] == source).unwrap()["vs_coulomb_percent"]
+            .as_f64()
+            .unwrap()
+    };
+    assert!((vs_coulomb("Abaqus/Standard") - 8.2).abs() < 0.05, "{json}");
+    assert!((vs_coulomb("Ansys MAPDL") - 17.0).abs() < 0.05, "{json}");
+    // Every answered row against the Coulomb Delta that `lap` reports on its own.
+    let lap: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "lap",
+        "--preset",
+        "lap-aluminium",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    let coulomb = lap["coulomb"]["Delta_mm"].as_f64().unwrap();
+    for row in rows.iter().filter(|r| r["Delta_mm"].is_f64()) {
+        let expected = 100.0 * (row["Delta_mm"].as_f64().unwrap() / coulomb - 1.0);
+        let got = row["vs_coulomb_percent"].as_f64().unwrap();
+        assert!((got - expected).abs() < 1e-9, "{row}");
+        // The old key stays beside the new one.
+        assert!(row["vs_current_percent"].is_f64(), "{row}");
+    }
+    assert_eq!(json["element_size_mm"], 0.4);
+    let text = stdout_of(&["kt", "--preset", "lap-aluminium", "--element-size", "0.2"]);
+    assert!(text.contains("vs current vs Coulomb"), "{text}");
+    let abaqus = text.lines().find(|l| l.starts_with("Abaqus")).unwrap();
+    // Half the elements, twice mu P / (0.005 x 0.2 mm) = 3000 MPa/mm.
+    assert!(abaqus.contains(" 3000 "), "{abaqus}");
+    assert!(
+        text.contains("contact elements of 0.2 mm (L/100 unless --element-size"),
+        "{text}"
+    );
+    // Unloaded: nothing to be off by, nothing said.
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_of(&["kt", "--set", "F=0", "--format", "json"])).unwrap();
+    assert!(
+        json["candidates"][0].get("vs_coulomb_percent").is_none(),
+        "{json}"
+    );
+}
+
 #[test]
 fn cycle_reports_and_sweeps() {
     let text = stdout_of(&["cycle", "--amplitude", "150"]);
