@@ -206,6 +206,7 @@ const KT_BEAM: &[&str] = &[
     "candidates[].regime: string",
     "candidates[].w_tip_mm: number",
     "candidates[].vs_current_percent: number",
+    "candidates[].vs_coulomb_percent: number",
 ];
 
 const KT_PLATE: &[&str] = &[
@@ -213,6 +214,7 @@ const KT_PLATE: &[&str] = &[
     "candidates[].regime: string",
     "candidates[].u_end_mm: number",
     "candidates[].vs_current_percent: number",
+    "candidates[].vs_coulomb_percent: number",
 ];
 
 /// A candidate the model refuses (a K_T out of range).
