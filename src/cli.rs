@@ -1970,7 +1970,11 @@ fn run_fit(
         progress.update(Instant::now(), || text::fit_progress(&p))
     });
     progress.finish();
-    let result = result?;
+    // A column of zeros is the file's fault: said with its path.
+    let result = result.map_err(|e| match e {
+        FitError::NothingToFit { .. } => data_error(e.to_string()),
+        e => CliError::Fit(e),
+    })?;
     match format {
         ReportFormat::Text => out.write_all(
             text::fit(&path.display().to_string(), &name, &structure, &result).as_bytes(),

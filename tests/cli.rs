@@ -1634,6 +1634,75 @@ fn compare_at_zero_load_says_the_relative_difference_is_undefined() {
     assert!(first.starts_with("0.0,0.0,0.0,,"), "{first}");
 }
 
+/// Issue 36 item 15: three FE rows, one at F = 0, fit two parameters through two points. It
+/// used to print `K_T = 751.576 +- 2.6e-12 MPa/mm` and judge the deck's K_T by `z = -5.8e13`.
+#[test]
+fn compare_beam_without_a_degree_of_freedom_judges_nothing_by_the_fit_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("fe.csv");
+    std::fs::write(&csv, "F_N,w_mm\n0,0\n50,0.0135317\n100,0.0382238\n").unwrap();
+    let path = csv.to_str().unwrap();
+    let text = stdout_of(&["compare", "beam", path]);
+    assert!(!text.contains("+-") && !text.contains("z ="), "{text}");
+    assert!(
+        text.contains(
+            "implied K_T not judged (uncertainty unknown: 2 loaded points = 2 parameters)"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("RMS") && text.contains("0 by construction"),
+        "{text}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_of(&["compare", "beam", path, "--format", "json"])).unwrap();
+    assert!(json["verdict"]["KT_z"].is_null(), "{json}");
+    assert_eq!(json["verdict"]["KT"], "not judged: uncertainty unknown");
+    assert!(
+        json["implied"]["KT_std_error_MPa_per_mm"].is_null(),
+        "{json}"
+    );
+    assert_eq!(json["implied"]["KT_status"], "uncertainty unknown");
+    assert_eq!(json["implied"]["degrees_of_freedom"], 0);
+}
+
+/// Issue 36 item 15: `fit` on a curve without a degree of freedom says its uncertainty is
+/// unknown, and refuses a response column of zeros, naming the file and the column.
+#[test]
+fn fit_says_when_its_uncertainty_is_unknown_and_refuses_a_zero_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let exact = dir.path().join("exact.csv");
+    std::fs::write(&exact, "F_N,w_mm\n0,0\n50,0.0135317\n100,0.0382238\n").unwrap();
+    let path = exact.to_str().unwrap();
+    let text = stdout_of(&["fit", "beam", path]);
+    assert!(
+        !text.contains("+-") && !text.contains("identified"),
+        "{text}"
+    );
+    assert!(
+        text.contains("K_T = ")
+            && text.contains("uncertainty unknown (2 loaded points = 2 parameters"),
+        "{text}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_of(&["fit", "beam", path, "--format", "json"])).unwrap();
+    assert!(json["KT_MPa_per_mm"]["std_error"].is_null(), "{json}");
+    assert!(json["scatter"].is_null(), "{json}");
+    assert_eq!(json["degrees_of_freedom"], 0);
+    for (kind, header) in [("lap", "F_N,Delta_mm"), ("beam", "F_N,w_mm")] {
+        let zeros = dir.path().join(format!("zeros-{kind}.csv"));
+        std::fs::write(&zeros, format!("{header}\n500,0\n1000,0\n1500,0\n2000,0\n")).unwrap();
+        let stderr = failure(&["fit", kind, zeros.to_str().unwrap()], 2);
+        let column = header.split(',').nth(1).unwrap();
+        assert!(
+            stderr.contains(&format!(
+                "zeros-{kind}.csv: every {column} is 0 mm: nothing to fit"
+            )),
+            "{stderr}"
+        );
+    }
+}
+
 /// `compare plate`'s text table stays in columns when the implied K_T is replaced by the reason
 /// it is not given: the regime column starts at the same place on every row.
 #[test]
