@@ -1703,6 +1703,162 @@ fn fit_says_when_its_uncertainty_is_unknown_and_refuses_a_zero_column() {
     }
 }
 
+/// Issue 36 item 13: F_1 does not depend on F, so the preset's F = 3000 N (which needs
+/// P >= 5 MPa to stay below F_gross) must not cut the search; it used to say "no P in [5, 10000]
+/// MPa gives F_1 = 1000 N" although P = 4.96 MPa does.
+#[test]
+fn solve_for_a_load_independent_quantity_searches_the_whole_domain() {
+    let args = [
+        "solve",
+        "lap",
+        "--preset",
+        "lap-aluminium",
+        "--vary",
+        "P",
+        "--target",
+        "F_1=1000",
+        "--format",
+        "json",
+    ];
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&args)).unwrap();
+    let roots = json["roots"].as_array().unwrap();
+    assert_eq!(roots.len(), 1, "{json}");
+    let p = roots[0]["value"].as_f64().unwrap();
+    assert!(p < 5.0 && (p - 4.96).abs() < 0.01, "{json}");
+    assert!(json.get("range_cut").is_none(), "{json}");
+    // The lap report at that P, at a force it carries, gives F_1 = 1000 N on its own.
+    let p = format!("P={p}");
+    let lap: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "lap",
+        "--preset",
+        "lap-aluminium",
+        "--set",
+        &p,
+        "--set",
+        "F=100",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert!(
+        (lap["F_1_N"].as_f64().unwrap() - 1000.0).abs() < 1e-6,
+        "{lap}"
+    );
+}
+
+/// Issue 36 item 13: where the load does cut the range (Delta depends on F), the answer says by
+/// what, found or not.
+#[test]
+fn solve_says_what_cut_its_range() {
+    let base = ["solve", "lap", "--preset", "lap-aluminium", "--vary", "P"];
+    let cut = "P >= 5 MPa only: below it the given F = 3000 N exceeds F_gross = 2 b mu P L";
+    let found = stdout_of(&[&base[..], &["--target", "Delta=0.015"]].concat());
+    assert!(found.contains(cut), "{found}");
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(
+        &[&base[..], &["--target", "Delta=0.015", "--format", "json"]].concat(),
+    ))
+    .unwrap();
+    assert_eq!(json["range_cut"]["least"], 5.0, "{json}");
+    assert_eq!(json["range_cut"]["F_N"], 3000.0, "{json}");
+    let refused = failure(&[&base[..], &["--target", "Delta=0.5"]].concat(), 1);
+    assert!(
+        refused.contains("no P in [5, 10000] MPa") && refused.contains(cut),
+        "{refused}"
+    );
+}
+
+/// Issue 36 item 13: Delta = 0 only at F = 0; it used to say "for every F in [0, 7.6e-319] N"
+/// (forces whose Delta underflows).
+#[test]
+fn solve_reports_a_plateau_narrower_than_its_resolution_as_a_point() {
+    let text = stdout_of(&["solve", "lap", "--vary", "F", "--target", "Delta=0"]);
+    assert!(text.contains("Delta = 0 mm only at F = 0 N"), "{text}");
+    assert!(!text.contains("for every F"), "{text}");
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "solve", "lap", "--vary", "F", "--target", "Delta=0", "--format", "json",
+    ]))
+    .unwrap();
+    assert_eq!(
+        json["roots"][0]["bracket"],
+        serde_json::json!([0.0, 0.0]),
+        "{json}"
+    );
+    assert_eq!(json["roots"][0]["value"], 0.0);
+}
+
+/// Issue 36 item 13: `cycle`, `sweep cycle`, `fit lap` and `compare lap` do not use the preset's
+/// F, so an F above F_gross (here 3000 N at L = 1 mm or P = 1 MPa) must not refuse them; an F
+/// outside its own domain still does.
+#[test]
+fn commands_that_do_not_use_the_force_are_not_refused_over_it() {
+    let cycle = stdout_of(&[
+        "cycle",
+        "--preset",
+        "lap-aluminium",
+        "--set",
+        "L=1",
+        "--amplitude",
+        "100",
+    ]);
+    assert!(cycle.contains("+100 N and -100 N"), "{cycle}");
+    stdout_of(&[
+        "sweep",
+        "cycle",
+        "--preset",
+        "lap-aluminium",
+        "--set",
+        "L=1",
+        "--from",
+        "10",
+        "--to",
+        "100",
+        "--points",
+        "3",
+    ]);
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("lap.csv");
+    // Delta of lap-aluminium at P = 1 MPa (F_gross = 600 N), mu = 0.3, K_T = 1000 MPa/mm.
+    std::fs::write(
+        &csv,
+        "F_N,Delta_mm\n100,4.5972e-4\n200,9.1944e-4\n300,0.00140117\n400,0.00194307\n500,0.00255895\n",
+    )
+    .unwrap();
+    let path = csv.to_str().unwrap();
+    let fit = stdout_of(&[
+        "fit",
+        "lap",
+        path,
+        "--preset",
+        "lap-aluminium",
+        "--set",
+        "P=1",
+    ]);
+    assert!(fit.contains("P = 1 MPa"), "{fit}");
+    let compare = stdout_of(&[
+        "compare",
+        "lap",
+        path,
+        "--preset",
+        "lap-aluminium",
+        "--set",
+        "P=1",
+    ]);
+    assert!(compare.contains("+0.00 %"), "{compare}");
+    let refused = failure(
+        &[
+            "fit",
+            "lap",
+            path,
+            "--preset",
+            "lap-aluminium",
+            "--set",
+            "F=-1",
+        ],
+        2,
+    );
+    assert!(refused.contains("invalid F = -1"), "{refused}");
+}
+
 /// `compare plate`'s text table stays in columns when the implied K_T is replaced by the reason
 /// it is not given: the regime column starts at the same place on every row.
 #[test]
