@@ -162,9 +162,10 @@ pub enum TargetError {
     #[error(
         "no {param} in [{}, {}]{unit} gives {quantity} = {}{quantity_unit}: over that range \
          {quantity} goes from {}{quantity_unit} to {}{quantity_unit} (min {}{quantity_unit}, max {}{quantity_unit}){}",
-        Compact(range.0), Compact(range.1), Compact(*target), significant(ends.0, 6),
-        significant(ends.1, 6), significant(extremes.0, 6), significant(extremes.1, 6),
-        cut.as_ref().map_or_else(String::new, |c| format!("; {}", c.words(param, unit)))
+        Compact(range.0), Compact(range.1), Compact(*target), significant(scan.ends.0, 6),
+        significant(scan.ends.1, 6), significant(scan.extremes.0, 6),
+        significant(scan.extremes.1, 6),
+        scan.cut.as_ref().map_or_else(String::new, |c| format!("; {}", c.words(param, unit)))
     )]
     NoRoot {
         /// The parameter's key.
@@ -179,12 +180,8 @@ pub enum TargetError {
         target: f64,
         /// The range scanned.
         range: (f64, f64),
-        /// The quantity at both ends of the range.
-        ends: (f64, f64),
-        /// Its smallest and largest value found on the scan.
-        extremes: (f64, f64),
-        /// Where the load cut the range's lower end, if it did.
-        cut: Option<RangeCut>,
+        /// What the scan found (boxed: the error stays small).
+        scan: Box<Scan>,
     },
     /// The quantity is not defined anywhere in the range.
     #[error("{quantity} is not defined for any {param} in the range (zero load?)")]
@@ -229,6 +226,17 @@ impl Root {
             within_rounding: !exact,
         }
     }
+}
+
+/// What a scan without a root found: the quantity over the range, and what cut the range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scan {
+    /// The quantity at both ends of the range.
+    pub ends: (f64, f64),
+    /// Its smallest and largest value found on the scan.
+    pub extremes: (f64, f64),
+    /// Where the load cut the range's lower end, if it did.
+    pub cut: Option<RangeCut>,
 }
 
 /// Where the searched range was cut short of the parameter's domain by the load: the lap
@@ -528,9 +536,11 @@ pub fn solve_for_target(
             },
             target: target.value,
             range,
-            ends: (first.1, last.1),
-            extremes: (min, max),
-            cut,
+            scan: Box::new(Scan {
+                ends: (first.1, last.1),
+                extremes: (min, max),
+                cut,
+            }),
         });
     }
     // A plateau narrower than the search resolves (the bisection's 1e-12 of the range) is a
