@@ -358,8 +358,8 @@ impl StiffnessReport {
         );
         let _ = writeln!(
             out,
-            "vs Coulomb: each K_T's {quantity} against Coulomb's (K_T -> infinity), in % (what it \
-             gets wrong if the interface is rigid until it slides)."
+            "vs Coulomb: each K_T's {quantity} against Coulomb's (the limit of an infinitely \
+             stiff K_T), in % (what it gets wrong if the interface is rigid until it slides)."
         );
         let _ = writeln!(
             out,
