@@ -144,10 +144,14 @@ pub enum Command {
         format: ReportFormat,
     },
     /// K_T from K_N and the K_T that FE codes assume, with what each does to the answer.
+    ///
+    /// Each answer is given against the current K_T's and against Coulomb's (`vs current`,
+    /// `vs Coulomb`, in %).
     Kt {
         #[command(flatten)]
         inputs: InputArgs,
-        /// Contact element length of the FE model (mm); default: L/100.
+        /// Contact element length of your FE model (mm, in [1e-8, 1e6]), which the codes' default
+        /// K_T scale with; default: L/100 (0.4 mm on lap-aluminium, 2 mm on paper-beams).
         #[arg(long, value_name = "LE", allow_negative_numbers = true)]
         element_size: Option<f64>,
         /// Normal contact stiffness K_N (MPa/mm), for paper eq. 4 and the measured K_T/K_N range.
