@@ -151,10 +151,14 @@ pub enum Command {
         format: ReportFormat,
     },
     /// K_T from K_N and the K_T that FE codes assume, with what each does to the answer.
+    ///
+    /// Each answer is given against the current K_T's and against Coulomb's (`vs current`,
+    /// `vs Coulomb`, in %).
     Kt {
         #[command(flatten)]
         inputs: InputArgs,
-        /// Contact element length of the FE model (mm); default: L/100.
+        /// Contact element length of your FE model (mm, in [1e-8, 1e6]), which the codes' default
+        /// K_T scale with; default: L/100 (0.4 mm on lap-aluminium, 2 mm on paper-beams).
         #[arg(long, value_name = "LE", allow_negative_numbers = true)]
         element_size: Option<f64>,
         /// Normal contact stiffness K_N (MPa/mm), for paper eq. 4 and the measured K_T/K_N range.
@@ -1168,7 +1172,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
         })) => {
             let amplitudes =
                 curves::force_samples(*from, *to, *points).map_err(force_range_error)?;
-            match load_any(inputs, ModelKind::Beam)?.1 {
+            match load_any_structure(inputs, ModelKind::Beam)?.1 {
                 Model::Beam { beams, .. } => {
                     let rows = curves::cycle_sweep(beams, amplitudes).map_err(force_range_error)?;
                     write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
@@ -1553,7 +1557,8 @@ fn run_compare(
                 }
                 let joint = match &loaded.header {
                     Some(header) => header.model()?.into_lap().map_err(deck_of_other_model)?.0,
-                    None => load_lap(inputs, "compare lap")?.1,
+                    // The FE forces are compared, not the preset's F.
+                    None => load_lap_structure(inputs, "compare lap")?.1,
                 };
                 let compared = fe::compare::compare_lap(
                     &joint,
@@ -1586,7 +1591,7 @@ fn run_compare(
             let beams = match &loaded.header {
                 Some(header) => header.model()?.into_beams().map_err(deck_of_other_model)?.0,
                 // A CSV has no header: the parameters come from the flags.
-                None => load_beams(inputs, "compare beam")?.1,
+                None => load_beams_structure(inputs, "compare beam")?.1,
             };
             let comparison =
                 fe::compare::compare_beams(&beams, &loaded.points, loaded.interface_mesh.as_ref());
@@ -1903,11 +1908,30 @@ fn pinned_models(model: &Model, pins: &[String]) -> Result<Vec<Model>, CliError>
 }
 
 fn load(args: &InputArgs, wanted: ModelKind, command: &str) -> Result<(String, Model), CliError> {
+    load_for(args, wanted, command, Load::Used)
+}
+
+/// Whether a command reads the model's load (F): one that does not (a cycle's amplitude, a fit's
+/// or a comparison's own forces) must not be refused over it (issue 36).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Load {
+    /// The command uses F: validated against everything (the lap joint's F <= F_gross).
+    Used,
+    /// The command does not: F checked against its own domain only, the model unloaded.
+    Unused,
+}
+
+fn load_for(
+    args: &InputArgs,
+    wanted: ModelKind,
+    command: &str,
+    load: Load,
+) -> Result<(String, Model), CliError> {
     let (name, preset) = resolve_preset(args, wanted)?;
     if preset.inputs.kind() != wanted {
         return Err(wrong_model(args, preset.inputs.kind(), wanted, command));
     }
-    apply_and_validate(args, name, preset)
+    apply_and_validate(args, name, preset, load)
 }
 
 /// The twin beams and tip force of `args` (a preset of another problem is refused by name).
@@ -1935,6 +1959,24 @@ fn load_lap(args: &InputArgs, command: &str) -> Result<(String, LapJoint, JointF
         .into_lap()
         .map_err(|found| wrong_model(args, found, ModelKind::Lap, command))?;
     Ok((name, joint, force))
+}
+
+/// The lap joint of `args` for a command that does not use its F ([`Load::Unused`]).
+fn load_lap_structure(args: &InputArgs, command: &str) -> Result<(String, LapJoint), CliError> {
+    let (name, model) = load_for(args, ModelKind::Lap, command, Load::Unused)?;
+    let (joint, _) = model
+        .into_lap()
+        .map_err(|found| wrong_model(args, found, ModelKind::Lap, command))?;
+    Ok((name, joint))
+}
+
+/// The twin beams of `args` for a command that does not use their F ([`Load::Unused`]).
+fn load_beams_structure(args: &InputArgs, command: &str) -> Result<(String, TwinBeams), CliError> {
+    let (name, model) = load_for(args, ModelKind::Beam, command, Load::Unused)?;
+    let (beams, _) = model
+        .into_beams()
+        .map_err(|found| wrong_model(args, found, ModelKind::Beam, command))?;
+    Ok((name, beams))
 }
 
 /// `cycle` or `sweep cycle` given the plate, which has no load to cycle.
@@ -1995,7 +2037,13 @@ fn deck_of_other_model(found: ModelKind) -> CliError {
 /// Like [`load`], for commands that accept any problem (`default` picks the default preset).
 fn load_any(args: &InputArgs, default: ModelKind) -> Result<(String, Model), CliError> {
     let (name, preset) = resolve_preset(args, default)?;
-    apply_and_validate(args, name, preset)
+    apply_and_validate(args, name, preset, Load::Used)
+}
+
+/// As [`load_any`] for a command that does not use the load ([`Load::Unused`]).
+fn load_any_structure(args: &InputArgs, default: ModelKind) -> Result<(String, Model), CliError> {
+    let (name, preset) = resolve_preset(args, default)?;
+    apply_and_validate(args, name, preset, Load::Unused)
 }
 
 fn resolve_preset(args: &InputArgs, default: ModelKind) -> Result<(String, Preset), CliError> {
@@ -2011,6 +2059,7 @@ fn apply_and_validate(
     args: &InputArgs,
     name: String,
     preset: Preset,
+    load: Load,
 ) -> Result<(String, Model), CliError> {
     let mut inputs: Inputs = preset.inputs;
     for assignment in &args.assignments {
@@ -2043,7 +2092,11 @@ fn apply_and_validate(
         (false, true) => format!("{name} (modified by --beam-theory)"),
         (true, true) => format!("{name} (modified by --set and --beam-theory)"),
     };
-    Ok((name, inputs.validate()?))
+    let model = match load {
+        Load::Used => inputs.validate()?,
+        Load::Unused => inputs.validate_without_load()?,
+    };
+    Ok((name, model))
 }
 
 /// `--fix` values: (mu, K_T). Only those two are fitted, so only they can be held.
@@ -2074,11 +2127,12 @@ fn run_fit(
     let (fixed_mu, fixed_kt) = parse_fixed(fixed)?;
     let (name, structure) = match kind {
         ModelKind::Lap => {
-            let (name, joint, _) = load_lap(inputs, "fit lap")?;
+            // The measured forces are fitted, not the preset's F.
+            let (name, joint) = load_lap_structure(inputs, "fit lap")?;
             (name, fit::Structure::Lap(joint.params()))
         }
         ModelKind::Beam | ModelKind::Plate => {
-            let (name, beams, _) = load_beams(inputs, "fit beam")?;
+            let (name, beams) = load_beams_structure(inputs, "fit beam")?;
             (name, fit::Structure::Beam(beams.params()))
         }
     };
@@ -2128,7 +2182,11 @@ fn run_fit(
         progress.update(Instant::now(), || text::fit_progress(&p))
     });
     progress.finish();
-    let result = result?;
+    // A column of zeros is the file's fault: said with its path.
+    let result = result.map_err(|e| match e {
+        FitError::NothingToFit { .. } => data_error(e.to_string()),
+        e => CliError::Fit(e),
+    })?;
     match format {
         ReportFormat::Text => out.write_all(
             text::fit(&path.display().to_string(), &name, &structure, &result).as_bytes(),
@@ -2217,7 +2275,8 @@ fn run_cycle(
         flags: ["", "", "--points"],
     };
     curves::check_points(points).map_err(points_error)?;
-    let (name, model) = load_any(inputs, ModelKind::Beam)?;
+    // The amplitude is cycled, not the preset's F.
+    let (name, model) = load_any_structure(inputs, ModelKind::Beam)?;
     let beams = match model {
         Model::Beam { beams, .. } => beams,
         Model::Lap { joint, .. } => {

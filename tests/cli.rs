@@ -576,6 +576,56 @@ fn kt_compares_physical_and_code_default_stiffnesses() {
     assert!(failure(&["kt", "--kn", "5", "--nu", "0.5"], 2).contains("invalid --nu = 0.5"));
 }
 
+/// Issue 36 item 14: each candidate against Coulomb too, the figure users computed by hand
+/// (lap-aluminium: Abaqus +8.2 %, Ansys +17.0 % of Coulomb's Delta), with the element size named.
+#[test]
+fn kt_shows_each_candidate_against_coulomb_and_the_element_size() {
+    let args = ["kt", "--preset", "lap-aluminium", "--format", "json"];
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&args)).unwrap();
+    let rows = json["candidates"].as_array().unwrap();
+    let vs_coulomb = |source: &str| {
+        rows.iter().find(|r| r["source"] == source).unwrap()["vs_coulomb_percent"]
+            .as_f64()
+            .unwrap()
+    };
+    assert!((vs_coulomb("Abaqus/Standard") - 8.2).abs() < 0.05, "{json}");
+    assert!((vs_coulomb("Ansys MAPDL") - 17.0).abs() < 0.05, "{json}");
+    // Every answered row against the Coulomb Delta that `lap` reports on its own.
+    let lap: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "lap",
+        "--preset",
+        "lap-aluminium",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    let coulomb = lap["coulomb"]["Delta_mm"].as_f64().unwrap();
+    for row in rows.iter().filter(|r| r["Delta_mm"].is_f64()) {
+        let expected = 100.0 * (row["Delta_mm"].as_f64().unwrap() / coulomb - 1.0);
+        let got = row["vs_coulomb_percent"].as_f64().unwrap();
+        assert!((got - expected).abs() < 1e-9, "{row}");
+        // The old key stays beside the new one.
+        assert!(row["vs_current_percent"].is_f64(), "{row}");
+    }
+    assert_eq!(json["element_size_mm"], 0.4);
+    let text = stdout_of(&["kt", "--preset", "lap-aluminium", "--element-size", "0.2"]);
+    assert!(text.contains("vs current vs Coulomb"), "{text}");
+    let abaqus = text.lines().find(|l| l.starts_with("Abaqus")).unwrap();
+    // Half the elements, twice mu P / (0.005 x 0.2 mm) = 3000 MPa/mm.
+    assert!(abaqus.contains(" 3000 "), "{abaqus}");
+    assert!(
+        text.contains("contact elements of 0.2 mm (L/100 unless --element-size"),
+        "{text}"
+    );
+    // Unloaded: nothing to be off by, nothing said.
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_of(&["kt", "--set", "F=0", "--format", "json"])).unwrap();
+    assert!(
+        json["candidates"][0].get("vs_coulomb_percent").is_none(),
+        "{json}"
+    );
+}
+
 #[test]
 fn cycle_reports_and_sweeps() {
     let text = stdout_of(&["cycle", "--amplitude", "150"]);
@@ -1583,6 +1633,231 @@ fn compare_at_zero_load_says_the_relative_difference_is_undefined() {
     let csv = stdout_of(&["compare", "beam", path, "--format", "csv"]);
     let first = csv.lines().nth(1).unwrap();
     assert!(first.starts_with("0.0,0.0,0.0,,"), "{first}");
+}
+
+/// Issue 36 item 15: three FE rows, one at F = 0, fit two parameters through two points. It
+/// used to print `K_T = 751.576 +- 2.6e-12 MPa/mm` and judge the deck's K_T by `z = -5.8e13`.
+#[test]
+fn compare_beam_without_a_degree_of_freedom_judges_nothing_by_the_fit_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("fe.csv");
+    std::fs::write(&csv, "F_N,w_mm\n0,0\n50,0.0135317\n100,0.0382238\n").unwrap();
+    let path = csv.to_str().unwrap();
+    let text = stdout_of(&["compare", "beam", path]);
+    assert!(!text.contains("+-") && !text.contains("z ="), "{text}");
+    assert!(
+        text.contains(
+            "implied K_T not judged (uncertainty unknown: 2 loaded points = 2 parameters)"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("RMS") && text.contains("0 by construction"),
+        "{text}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_of(&["compare", "beam", path, "--format", "json"])).unwrap();
+    assert!(json["verdict"]["KT_z"].is_null(), "{json}");
+    assert_eq!(json["verdict"]["KT"], "not judged: uncertainty unknown");
+    assert!(
+        json["implied"]["KT_std_error_MPa_per_mm"].is_null(),
+        "{json}"
+    );
+    assert_eq!(json["implied"]["KT_status"], "uncertainty unknown");
+    assert_eq!(json["implied"]["degrees_of_freedom"], 0);
+}
+
+/// Issue 36 item 15: `fit` on a curve without a degree of freedom says its uncertainty is
+/// unknown, and refuses a response column of zeros, naming the file and the column.
+#[test]
+fn fit_says_when_its_uncertainty_is_unknown_and_refuses_a_zero_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let exact = dir.path().join("exact.csv");
+    std::fs::write(&exact, "F_N,w_mm\n0,0\n50,0.0135317\n100,0.0382238\n").unwrap();
+    let path = exact.to_str().unwrap();
+    let text = stdout_of(&["fit", "beam", path]);
+    assert!(
+        !text.contains("+-") && !text.contains("identified"),
+        "{text}"
+    );
+    assert!(
+        text.contains("K_T = ")
+            && text.contains("uncertainty unknown (2 loaded points = 2 parameters"),
+        "{text}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout_of(&["fit", "beam", path, "--format", "json"])).unwrap();
+    assert!(json["KT_MPa_per_mm"]["std_error"].is_null(), "{json}");
+    assert!(json["scatter"].is_null(), "{json}");
+    assert_eq!(json["degrees_of_freedom"], 0);
+    for (kind, header) in [("lap", "F_N,Delta_mm"), ("beam", "F_N,w_mm")] {
+        let zeros = dir.path().join(format!("zeros-{kind}.csv"));
+        std::fs::write(&zeros, format!("{header}\n500,0\n1000,0\n1500,0\n2000,0\n")).unwrap();
+        let stderr = failure(&["fit", kind, zeros.to_str().unwrap()], 2);
+        let column = header.split(',').nth(1).unwrap();
+        assert!(
+            stderr.contains(&format!(
+                "zeros-{kind}.csv: every {column} is 0 mm: nothing to fit"
+            )),
+            "{stderr}"
+        );
+    }
+}
+
+/// Issue 36 item 13: F_1 does not depend on F, so the preset's F = 3000 N (which needs
+/// P >= 5 MPa to stay below F_gross) must not cut the search; it used to say "no P in [5, 10000]
+/// MPa gives F_1 = 1000 N" although P = 4.96 MPa does.
+#[test]
+fn solve_for_a_load_independent_quantity_searches_the_whole_domain() {
+    let args = [
+        "solve",
+        "lap",
+        "--preset",
+        "lap-aluminium",
+        "--vary",
+        "P",
+        "--target",
+        "F_1=1000",
+        "--format",
+        "json",
+    ];
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&args)).unwrap();
+    let roots = json["roots"].as_array().unwrap();
+    assert_eq!(roots.len(), 1, "{json}");
+    let p = roots[0]["value"].as_f64().unwrap();
+    assert!(p < 5.0 && (p - 4.96).abs() < 0.01, "{json}");
+    assert!(json.get("range_cut").is_none(), "{json}");
+    // The lap report at that P, at a force it carries, gives F_1 = 1000 N on its own.
+    let p = format!("P={p}");
+    let lap: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "lap",
+        "--preset",
+        "lap-aluminium",
+        "--set",
+        &p,
+        "--set",
+        "F=100",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert!(
+        (lap["F_1_N"].as_f64().unwrap() - 1000.0).abs() < 1e-6,
+        "{lap}"
+    );
+}
+
+/// Issue 36 item 13: where the load does cut the range (Delta depends on F), the answer says by
+/// what, found or not.
+#[test]
+fn solve_says_what_cut_its_range() {
+    let base = ["solve", "lap", "--preset", "lap-aluminium", "--vary", "P"];
+    let cut = "P >= 5 MPa only: below it the given F = 3000 N exceeds F_gross = 2 b mu P L";
+    let found = stdout_of(&[&base[..], &["--target", "Delta=0.015"]].concat());
+    assert!(found.contains(cut), "{found}");
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(
+        &[&base[..], &["--target", "Delta=0.015", "--format", "json"]].concat(),
+    ))
+    .unwrap();
+    assert_eq!(json["range_cut"]["least"], 5.0, "{json}");
+    assert_eq!(json["range_cut"]["F_N"], 3000.0, "{json}");
+    let refused = failure(&[&base[..], &["--target", "Delta=0.5"]].concat(), 1);
+    assert!(
+        refused.contains("no P in [5, 10000] MPa") && refused.contains(cut),
+        "{refused}"
+    );
+}
+
+/// Issue 36 item 13: Delta = 0 only at F = 0; it used to say "for every F in [0, 7.6e-319] N"
+/// (forces whose Delta underflows).
+#[test]
+fn solve_reports_a_plateau_narrower_than_its_resolution_as_a_point() {
+    let text = stdout_of(&["solve", "lap", "--vary", "F", "--target", "Delta=0"]);
+    assert!(text.contains("Delta = 0 mm only at F = 0 N"), "{text}");
+    assert!(!text.contains("for every F"), "{text}");
+    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+        "solve", "lap", "--vary", "F", "--target", "Delta=0", "--format", "json",
+    ]))
+    .unwrap();
+    assert_eq!(
+        json["roots"][0]["bracket"],
+        serde_json::json!([0.0, 0.0]),
+        "{json}"
+    );
+    assert_eq!(json["roots"][0]["value"], 0.0);
+}
+
+/// Issue 36 item 13: `cycle`, `sweep cycle`, `fit lap` and `compare lap` do not use the preset's
+/// F, so an F above F_gross (here 3000 N at L = 1 mm or P = 1 MPa) must not refuse them; an F
+/// outside its own domain still does.
+#[test]
+fn commands_that_do_not_use_the_force_are_not_refused_over_it() {
+    let cycle = stdout_of(&[
+        "cycle",
+        "--preset",
+        "lap-aluminium",
+        "--set",
+        "L=1",
+        "--amplitude",
+        "100",
+    ]);
+    assert!(cycle.contains("+100 N and -100 N"), "{cycle}");
+    stdout_of(&[
+        "sweep",
+        "cycle",
+        "--preset",
+        "lap-aluminium",
+        "--set",
+        "L=1",
+        "--from",
+        "10",
+        "--to",
+        "100",
+        "--points",
+        "3",
+    ]);
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("lap.csv");
+    // Delta of lap-aluminium at P = 1 MPa (F_gross = 600 N), mu = 0.3, K_T = 1000 MPa/mm.
+    std::fs::write(
+        &csv,
+        "F_N,Delta_mm\n100,4.5972e-4\n200,9.1944e-4\n300,0.00140117\n400,0.00194307\n500,0.00255895\n",
+    )
+    .unwrap();
+    let path = csv.to_str().unwrap();
+    let fit = stdout_of(&[
+        "fit",
+        "lap",
+        path,
+        "--preset",
+        "lap-aluminium",
+        "--set",
+        "P=1",
+    ]);
+    assert!(fit.contains("P = 1 MPa"), "{fit}");
+    let compare = stdout_of(&[
+        "compare",
+        "lap",
+        path,
+        "--preset",
+        "lap-aluminium",
+        "--set",
+        "P=1",
+    ]);
+    assert!(compare.contains("+0.00 %"), "{compare}");
+    let refused = failure(
+        &[
+            "fit",
+            "lap",
+            path,
+            "--preset",
+            "lap-aluminium",
+            "--set",
+            "F=-1",
+        ],
+        2,
+    );
+    assert!(refused.contains("invalid F = -1"), "{refused}");
 }
 
 /// `compare plate`'s text table stays in columns when the implied K_T is replaced by the reason

@@ -2,7 +2,8 @@
 //! recovered within the uncertainty the fit reports, and data that cannot show a parameter must say so.
 
 use microslip::fit::{
-    Evidence, FitResult, Measurement, Status, Weights, fit_twin_beams, fit_twin_beams_weighted,
+    Evidence, FitError, FitResult, Measurement, Scatter, Status, Weights, fit_twin_beams,
+    fit_twin_beams_weighted,
 };
 use microslip::{TipForce, TwinBeams, TwinBeamsParams};
 
@@ -291,4 +292,82 @@ fn mismatched_weights_fail_the_coverage_check() {
     let relative_on_absolute = coverage(0.0, 1e-3, Weighing::Relative, 40);
     eprintln!("absolute noise, relative weights: {relative_on_absolute:?}");
     assert!(honest(&relative_on_absolute).is_err());
+}
+
+/// Issue 36 item 15: two loaded points (and one at F = 0, which every mu and K_T give 0) fix
+/// two parameters exactly; with the scatter estimated from the residuals (0 by construction),
+/// no standard error can be known. It used to say K_T = 750 +- 3.7e-12 MPa/mm, "identified".
+#[test]
+fn a_fit_without_a_degree_of_freedom_says_its_uncertainty_is_unknown() {
+    let data = measure(0.3, 750.0, &[0.0, 50.0, 100.0], 0.0, 1);
+    for weights in [Weights::Relative, Weights::Absolute] {
+        let fit = fit_twin_beams_weighted(
+            TwinBeamsParams::PAPER,
+            &data,
+            None,
+            None,
+            weights,
+            &mut |_| {},
+        )
+        .unwrap();
+        assert_eq!(fit.degrees_of_freedom, 0, "{fit:?}");
+        for estimate in [&fit.mu, &fit.kt] {
+            assert_eq!(estimate.status, Status::UncertaintyUnknown, "{fit:?}");
+            assert_eq!(estimate.std_error, None, "{fit:?}");
+            assert_eq!(
+                estimate.evidence,
+                Evidence::NoDegreesOfFreedom {
+                    points: 2,
+                    parameters: 2
+                }
+            );
+        }
+        assert_eq!(fit.correlation, None);
+        assert!(matches!(
+            fit.scatter,
+            Scatter::Relative { fraction: None } | Scatter::Absolute { sigma: None }
+        ));
+        // The values themselves are still the curve through the points.
+        assert!((fit.kt.value / 750.0 - 1.0).abs() < 1e-6, "{fit:?}");
+    }
+    // Known sigmas carry the error themselves: a standard error without residuals.
+    let sigma = [1e-4; 3];
+    let known = fit_twin_beams_weighted(
+        TwinBeamsParams::PAPER,
+        &data,
+        None,
+        None,
+        Weights::Sigma(&sigma),
+        &mut |_| {},
+    )
+    .unwrap();
+    assert!(known.kt.std_error.is_some_and(|e| e > 0.0), "{known:?}");
+    assert_eq!(
+        known.scatter,
+        Scatter::Known {
+            reduced_chi_square: None
+        }
+    );
+    // One loaded point more: one degree of freedom, and the error is back.
+    let more = measure(0.3, 750.0, &[0.0, 50.0, 75.0, 100.0], 0.0, 1);
+    let fit = fit_twin_beams(TwinBeamsParams::PAPER, &more, None, None).unwrap();
+    assert_eq!(fit.degrees_of_freedom, 1);
+    assert!(fit.kt.std_error.is_some(), "{fit:?}");
+    assert_ne!(fit.kt.status, Status::UncertaintyUnknown);
+}
+
+/// Issue 36 item 15: a column of zeros used to be fitted ("residuals 1.24 % of Delta").
+#[test]
+fn an_all_zero_response_is_refused_as_nothing_to_fit() {
+    let flat: Vec<Measurement> = [10.0, 20.0, 30.0, 40.0]
+        .iter()
+        .map(|&force| Measurement {
+            force,
+            deflection: 0.0,
+        })
+        .collect();
+    assert_eq!(
+        fit_twin_beams(TwinBeamsParams::PAPER, &flat, None, None),
+        Err(FitError::NothingToFit { column: "w_mm" })
+    );
 }

@@ -218,6 +218,7 @@ const KT_BEAM: &[&str] = &[
     "candidates[].regime: string",
     "candidates[].w_tip_mm: number",
     "candidates[].vs_current_percent: number",
+    "candidates[].vs_coulomb_percent: number",
 ];
 
 const KT_PLATE: &[&str] = &[
@@ -225,6 +226,7 @@ const KT_PLATE: &[&str] = &[
     "candidates[].regime: string",
     "candidates[].u_end_mm: number",
     "candidates[].vs_current_percent: number",
+    "candidates[].vs_coulomb_percent: number",
 ];
 
 /// A candidate the model refuses (a K_T out of range).
@@ -284,6 +286,8 @@ const FIT: &[&str] = &[
     "points_above_F_1: number",
     "preset: string",
     "rms_mm: number",
+    // Added by issue 36 (15): 0 when the curve passes through every loaded point.
+    "degrees_of_freedom: number",
 ];
 
 /// Added by issue 25 (5): what the errors assume (`weights`, `scatter`).
@@ -382,6 +386,8 @@ const COMPARE_BEAM_IMPLIED: &[&str] = &[
     "implied.mu: number",
     "implied.mu_status: string",
     "implied.rms_mm: number",
+    // Added by issue 36 (15).
+    "implied.degrees_of_freedom: number",
 ];
 
 const COMPARE_BEAM_HEADER: &str = "F_N,w_fe_mm,w_euler_mm,diff_euler,w_shear_corrected_mm,\
@@ -441,6 +447,10 @@ const COMPARE_VERDICT: &[&str] = &[
 
 /// The fit's standard error of K_T, which the K_T verdict uses.
 const COMPARE_BEAM_IMPLIED_ERROR: &[&str] = &["implied.KT_std_error_MPa_per_mm: number"];
+
+/// The same key where the fit has no degree of freedom (as many loaded points as parameters):
+/// its error is unknown, null (issue 36 (15); it used to be a meaningless 0).
+const COMPARE_BEAM_IMPLIED_UNKNOWN_ERROR: &[&str] = &["implied.KT_std_error_MPa_per_mm: null"];
 
 /// CalculiX beams: X in elements of the deck's mesh, and a K_T judged in standard errors.
 const COMPARE_BEAM_VERDICT_FE: &[&str] = &[
@@ -870,8 +880,8 @@ const CASES: &[Case] = &[
         ],
         header: Some(COMPARE_BEAM_HEADER),
     },
-    // A CSV from another code, with F = 0: no FE slip profile, undefined differences, and too few
-    // points to imply a K_T.
+    // A CSV from another code, with F = 0: no FE slip profile, undefined differences, and two
+    // loaded points for two parameters: a K_T implied, its uncertainty unknown.
     Case {
         name: "compare-beam-csv",
         args: &[
@@ -885,7 +895,7 @@ const CASES: &[Case] = &[
             COMPARE_BEAM_CSV,
             COMPARE_BEAM_IMPLIED,
             COMPARE_VERDICT,
-            COMPARE_BEAM_IMPLIED_ERROR,
+            COMPARE_BEAM_IMPLIED_UNKNOWN_ERROR,
             COMPARE_BEAM_VERDICT_CSV,
         ],
         header: Some(COMPARE_BEAM_HEADER),

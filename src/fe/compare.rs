@@ -105,7 +105,12 @@ impl BeamComparison {
             Err(_) => StiffnessMatch::NotImplied,
             Ok(_) if !self.closed_form_calibrated() => StiffnessMatch::ClosedFormNotCalibrated,
             Ok(_) if !self.closed_form_holds() => StiffnessMatch::ClosedFormDoesNotHold,
-            Ok(fit) => StiffnessMatch::judge(self.stiffness, fit.kt.value, fit.kt.std_error),
+            Ok(fit) => match fit.kt.evidence {
+                fit::Evidence::NoDegreesOfFreedom { points, parameters } => {
+                    StiffnessMatch::UncertaintyUnknown { points, parameters }
+                }
+                _ => StiffnessMatch::judge(self.stiffness, fit.kt.value, fit.kt.std_error),
+            },
         }
     }
 }

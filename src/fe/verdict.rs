@@ -163,6 +163,14 @@ pub enum StiffnessMatch {
     },
     /// The fit gave no positive standard error (none, or 0: points on a closed form exactly).
     NoStandardError,
+    /// The fit went through as many loaded points as parameters: no degree of freedom is left to
+    /// estimate the scatter, so no z can be computed and nothing is judged by one.
+    UncertaintyUnknown {
+        /// Loaded FE points (F > 0).
+        points: usize,
+        /// Parameters fitted through them.
+        parameters: usize,
+    },
     /// The beam theory does not hold at every point (its envelope exceeds 2 %): the fit would
     /// measure the theory, not the interface.
     ClosedFormDoesNotHold,
@@ -195,6 +203,7 @@ impl StiffnessMatch {
             StiffnessMatch::Matches { .. } => "matches",
             StiffnessMatch::DoesNotMatch { .. } => "does not match",
             StiffnessMatch::NoStandardError => "no standard error",
+            StiffnessMatch::UncertaintyUnknown { .. } => "not judged: uncertainty unknown",
             StiffnessMatch::ClosedFormDoesNotHold => "not judged: the beam theory does not hold",
             StiffnessMatch::ClosedFormNotCalibrated => {
                 "not judged: the beam theory's envelope is not calibrated"

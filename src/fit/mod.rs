@@ -54,6 +54,9 @@ pub enum Status {
     Identified,
     /// Between 25 % and 100 %, or too few points in the informative range.
     Weak,
+    /// Fitted through as many loaded measurements as parameters, with the scatter unknown: the
+    /// curve passes through every point, so nothing is left to say how far off the value may be.
+    UncertaintyUnknown,
     /// The data do not determine it.
     NotIdentifiable,
 }
@@ -65,6 +68,7 @@ impl Status {
             Status::Fixed => "fixed",
             Status::Identified => "identified",
             Status::Weak => "weakly identified",
+            Status::UncertaintyUnknown => "uncertainty unknown",
             Status::NotIdentifiable => "NOT identifiable",
         }
     }
@@ -85,6 +89,15 @@ pub enum Evidence {
     AtSearchBound,
     /// The residuals do not depend on the parameter at all.
     NoDependence,
+    /// As many loaded measurements (F > 0; every mu and K_T give 0 at F = 0) as parameters
+    /// fitted, and the scatter estimated from the residuals: the residuals are 0 by construction,
+    /// so a standard error from them would be 0 too, a certainty the data do not have.
+    NoDegreesOfFreedom {
+        /// Loaded measurements.
+        points: usize,
+        /// Parameters fitted through them.
+        parameters: usize,
+    },
     /// (mu only) Every measurement is at or below F_1, where the deflection does not depend on mu:
     /// the data only bound mu from below.
     NoDataAboveFirstMacroslip {
@@ -138,6 +151,9 @@ pub struct FitResult {
     pub rms: f64,
     /// The scatter the standard errors assume, as the residuals estimate it.
     pub scatter: Scatter,
+    /// Loaded measurements (F > 0) less the parameters the residuals depend on: 0 when the
+    /// curve passes through every point, and then the scatter is unknown.
+    pub degrees_of_freedom: usize,
     /// Correlation coefficient of the mu and K_T estimates, cov_12 / sqrt(cov_11 cov_22), when both
     /// have a standard error.
     pub correlation: Option<f64>,
@@ -170,6 +186,16 @@ pub enum FitError {
     /// Given standard deviations that cannot weigh the measurements.
     #[error("invalid sigma: {0}")]
     Sigma(String),
+    /// Every measured response is 0: no displacement under load, which no finite K_T gives, so
+    /// there is nothing to fit (a column of zeros is a file or unit mistake, not a measurement).
+    #[error(
+        "every {column} is 0 mm: nothing to fit (a curve without displacement under load has no \
+         finite K_T and shows no mu; check the column and its unit)"
+    )]
+    NothingToFit {
+        /// The response column (`w_mm`, `Delta_mm`).
+        column: &'static str,
+    },
     /// (Lap joint) A measured force beyond the gross-slip force of every mu searched: no state
     /// of the joint carries it.
     #[error(
@@ -287,6 +313,14 @@ impl Structure {
             })
             .ok()
             .map(Curve::Lap),
+        }
+    }
+
+    /// The header of its response column in a measurement file.
+    fn response_column(&self) -> &'static str {
+        match self {
+            Structure::Beam(_) => "w_mm",
+            Structure::Lap(_) => "Delta_mm",
         }
     }
 
@@ -824,7 +858,7 @@ pub fn fit_twin_beams_with_progress(
 /// let fit = fit_twin_beams_weighted(
 ///     TwinBeamsParams::PAPER, &data, None, None, Weights::Relative, &mut |_| {},
 /// )?;
-/// let Scatter::Relative { fraction } = fit.scatter else { unreachable!() };
+/// let Scatter::Relative { fraction: Some(fraction) } = fit.scatter else { unreachable!() };
 /// assert!((fraction - 0.01).abs() < 0.002);
 /// assert!((fit.kt.value - 300.0).abs() < 3.0 * fit.kt.std_error.unwrap());
 /// assert!(fit.correlation.unwrap().abs() < 1.0);
@@ -919,6 +953,12 @@ pub fn fit_weighted(
             free,
         });
     }
+    // Relative weights would make any curve through zeros look perfect: refuse a flat zero curve.
+    if data.iter().all(|m| m.deflection == 0.0) {
+        return Err(FitError::NothingToFit {
+            column: structure.response_column(),
+        });
+    }
     // Many measurements: the grid search on an evenly spread subsample (whose sum of squares is
     // the whole curve's in miniature), then refinements on ever larger ones, each starting from the
     // previous one's fit.
@@ -977,13 +1017,6 @@ fn summarize(problem: &Problem, refined: &Refined, weights: Weights) -> FitResul
     let (mu, kt) = problem.unpack(theta);
     let n = problem.data.len();
     let free = theta.len();
-    // The reduced chi-square: the common factor of the sigmas squared, when it is unknown.
-    let reduced_chi_square = sse / (n - free).max(1) as f64;
-    let variance = if weights.known() {
-        1.0
-    } else {
-        reduced_chi_square
-    };
     // A parameter the residuals do not depend on at all (mu when every F is below F_1) has a zero
     // Jacobian column; it is left out so that the other's error is still computed.
     let scale = normal
@@ -994,6 +1027,19 @@ fn summarize(problem: &Problem, refined: &Refined, weights: Weights) -> FitResul
     let informative: Vec<usize> = (0..free)
         .filter(|&i| normal[i][i] > 1e-20 * scale && normal[i][i] > 0.0)
         .collect();
+    // The degrees of freedom: loaded measurements (at F = 0 every mu and K_T give 0, so such a
+    // row constrains nothing) less the parameters the residuals depend on.
+    let loaded = problem.data.iter().filter(|m| m.force > 0.0).count();
+    let dof = loaded.saturating_sub(informative.len());
+    // The reduced chi-square: the common factor of the sigmas squared, when it is unknown; with
+    // no degree of freedom it is unknown too (None), not 0.
+    let reduced_chi_square = (dof > 0).then(|| sse / dof as f64);
+    let exact = !weights.known() && reduced_chi_square.is_none();
+    let variance = if weights.known() {
+        1.0
+    } else {
+        reduced_chi_square.unwrap_or(f64::NAN)
+    };
     let reduced: Vec<Vec<f64>> = informative
         .iter()
         .map(|&i| informative.iter().map(|&j| normal[i][j]).collect())
@@ -1014,6 +1060,14 @@ fn summarize(problem: &Problem, refined: &Refined, weights: Weights) -> FitResul
     let judge = |log_error: Option<f64>, value: f64, bound: (f64, f64)| -> Estimate {
         let at_bound = value <= bound.0 * 1.0001 || value >= bound.1 / 1.0001;
         let (std_error, status, evidence) = match log_error {
+            Some(_) if exact && !at_bound => (
+                None,
+                Status::UncertaintyUnknown,
+                Evidence::NoDegreesOfFreedom {
+                    points: loaded,
+                    parameters: informative.len(),
+                },
+            ),
             Some(e) if e.is_finite() && !at_bound => {
                 let status = if e <= IDENTIFIED {
                     Status::Identified
@@ -1085,6 +1139,7 @@ fn summarize(problem: &Problem, refined: &Refined, weights: Weights) -> FitResul
         kt: kt_estimate,
         rms: (unweighted / n as f64).sqrt(),
         scatter: weights.scatter(reduced_chi_square),
+        degrees_of_freedom: dof,
         correlation,
         points: n,
         beyond_first_macroslip: beyond,

@@ -33,23 +33,25 @@ pub enum Weights<'a> {
     Sigma(&'a [f64]),
 }
 
-/// The scatter the fit assumed, with what the residuals say about it.
+/// The scatter the fit assumed, with what the residuals say about it: None when no degree of
+/// freedom is left (as many loaded points as parameters), where the residuals are 0 by
+/// construction and say nothing.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Scatter {
     /// [`Weights::Absolute`]: the sigma of every w estimated from the residuals (mm).
     Absolute {
         /// sqrt(sum r_i^2 / (n - p)) (mm).
-        sigma: f64,
+        sigma: Option<f64>,
     },
     /// [`Weights::Relative`]: the sigma of w as a fraction of w, estimated from the residuals.
     Relative {
         /// sqrt(sum (r_i / w_i)^2 / (n - p)) (-).
-        fraction: f64,
+        fraction: Option<f64>,
     },
     /// [`Weights::Sigma`]: the given sigmas taken as known; about 1 when they fit the residuals.
     Known {
         /// sum (r_i / sigma_i)^2 / (n - p) (-).
-        reduced_chi_square: f64,
+        reduced_chi_square: Option<f64>,
     },
 }
 
@@ -97,14 +99,15 @@ impl Weights<'_> {
         matches!(self, Weights::Sigma(_))
     }
 
-    /// What the residuals say about the scatter, from the reduced chi-square of the weighted fit.
-    pub(super) fn scatter(&self, reduced_chi_square: f64) -> Scatter {
+    /// What the residuals say about the scatter, from the reduced chi-square of the weighted fit
+    /// (None without a degree of freedom).
+    pub(super) fn scatter(&self, reduced_chi_square: Option<f64>) -> Scatter {
         match self {
             Weights::Absolute => Scatter::Absolute {
-                sigma: reduced_chi_square.sqrt(),
+                sigma: reduced_chi_square.map(f64::sqrt),
             },
             Weights::Relative => Scatter::Relative {
-                fraction: reduced_chi_square.sqrt(),
+                fraction: reduced_chi_square.map(f64::sqrt),
             },
             Weights::Sigma(_) => Scatter::Known { reduced_chi_square },
         }

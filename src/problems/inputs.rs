@@ -152,6 +152,22 @@ impl Model {
         inputs.validate().unwrap_or(*self)
     }
 
+    /// This model at zero load (the plate has none): for what does not depend on the load, so
+    /// that the load's own limit (the lap joint's F <= F_gross) cannot constrain it.
+    pub fn unloaded(&self) -> Model {
+        match *self {
+            Model::Beam { beams, .. } => Model::Beam {
+                beams,
+                force: TipForce::clamped(0.0),
+            },
+            Model::Plate(plate) => Model::Plate(plate),
+            Model::Lap { joint, .. } => Model::Lap {
+                joint,
+                force: joint.clamped_force(0.0),
+            },
+        }
+    }
+
     /// The value of `quantity` for this model, computed by its problem; `None` where the problem
     /// has no such quantity or it is not defined here (see [`crate::problems::Quantity`]).
     pub fn quantity(&self, quantity: Quantity) -> Option<f64> {
@@ -325,6 +341,34 @@ impl Inputs {
                 Model::Lap {
                     joint,
                     force: joint.force(force)?,
+                }
+            }
+        })
+    }
+
+    /// As [`Inputs::validate`] for a command that does not use the load (a cycle's amplitude,
+    /// a fit's or a comparison's own forces): the load is checked against its own domain only,
+    /// not against what the structure carries (the lap joint's F_gross), and the model returned
+    /// is unloaded ([`Model::unloaded`]), so a value the command never reads cannot refuse it.
+    ///
+    /// # Errors
+    /// As [`Inputs::validate`], except the lap joint's F above F_gross.
+    pub fn validate_without_load(&self) -> Result<Model, ParamError> {
+        Ok(match *self {
+            Inputs::Beam { structure, force } => {
+                TipForce::new(force)?;
+                Model::Beam {
+                    beams: TwinBeams::new(structure)?,
+                    force: TipForce::clamped(0.0),
+                }
+            }
+            Inputs::Plate(params) => Model::Plate(SqueezedPlate::new(params)?),
+            Inputs::Lap { structure, force } => {
+                let joint = LapJoint::new(structure)?;
+                LapParam::Force.check(force)?;
+                Model::Lap {
+                    joint,
+                    force: joint.clamped_force(0.0),
                 }
             }
         })

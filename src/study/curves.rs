@@ -816,6 +816,11 @@ pub struct ComparedStiffness {
     /// more): what an FE model with this K_T gets wrong when the model's K_T is the interface's
     /// true one. None without an answer, or when the current answer is zero (no load).
     pub off_current: Option<f64>,
+    /// How far its w(L), u(L) or Delta is from Coulomb's (K_T -> infinity), as a fraction: what
+    /// an FE model with this K_T gets wrong when the interface is rigid until it slides (the
+    /// figure users otherwise compute by hand). None without an answer, or when Coulomb's answer
+    /// is zero (no load).
+    pub off_coulomb: Option<f64>,
 }
 
 /// The K_T values worth comparing for one model and what each does to the answer: computed once,
@@ -845,6 +850,16 @@ pub struct StiffnessComparison {
     pub element: f64,
     /// The rows: current, those from K_N (when given), then each code.
     pub rows: Vec<ComparedStiffness>,
+}
+
+/// Coulomb's w(L) (beams), u(L) (plate) or Delta (lap) for `model` at its force: the K_T ->
+/// infinity limit the `vs Coulomb` column divides by.
+fn coulomb_response(model: &Model) -> f64 {
+    match model {
+        Model::Beam { beams, force } => beams.coulomb(*force).tip_deflection(),
+        Model::Plate(plate) => plate.coulomb().end_displacement(),
+        Model::Lap { joint, force } => joint.coulomb(*force).joint_displacement(),
+    }
 }
 
 /// What `kt` does to `model` (at the model's force for the beams); `None` for an invalid K_T.
@@ -920,6 +935,7 @@ pub fn compare_stiffnesses(
     let current = answer_for_stiffness(model, data.stiffness)
         .map(|a| a.response())
         .filter(|r| *r != 0.0);
+    let coulomb = Some(coulomb_response(model)).filter(|r| *r != 0.0 && r.is_finite());
     let rows = candidates
         .into_iter()
         .map(|candidate| {
@@ -928,6 +944,7 @@ pub fn compare_stiffnesses(
                 candidate,
                 answer,
                 off_current: answer.zip(current).map(|(a, c)| a.response() / c - 1.0),
+                off_coulomb: answer.zip(coulomb).map(|(a, c)| a.response() / c - 1.0),
             }
         })
         .collect();

@@ -40,6 +40,13 @@ pub(crate) use crate::problems::Quantity;
 /// How the targets see a problem's quantities: the names, meanings and values its description
 /// and its folder give ([`crate::problems::Description::quantities`]).
 impl Quantity {
+    /// True when the quantity depends on the load (the beams' tip force, the joint's force):
+    /// F_1 is a property of the structure alone, so a search for it must not be cut by the
+    /// load's own limit (the lap joint's F <= F_gross).
+    pub fn depends_on_load(self) -> bool {
+        !matches!(self, Quantity::FirstMacroslipForce)
+    }
+
     /// True when `kind` has this quantity.
     pub fn applies_to(self, kind: ModelKind) -> bool {
         Self::named(self, kind).is_some()
@@ -154,9 +161,11 @@ pub enum TargetError {
     /// The quantity does not reach the target anywhere in the range.
     #[error(
         "no {param} in [{}, {}]{unit} gives {quantity} = {}{quantity_unit}: over that range \
-         {quantity} goes from {}{quantity_unit} to {}{quantity_unit} (min {}{quantity_unit}, max {}{quantity_unit})",
-        Compact(range.0), Compact(range.1), Compact(*target), significant(ends.0, 6),
-        significant(ends.1, 6), significant(extremes.0, 6), significant(extremes.1, 6)
+         {quantity} goes from {}{quantity_unit} to {}{quantity_unit} (min {}{quantity_unit}, max {}{quantity_unit}){}",
+        Compact(range.0), Compact(range.1), Compact(*target), significant(scan.ends.0, 6),
+        significant(scan.ends.1, 6), significant(scan.extremes.0, 6),
+        significant(scan.extremes.1, 6),
+        scan.cut.as_ref().map_or_else(String::new, |c| format!("; {}", c.words(param, unit)))
     )]
     NoRoot {
         /// The parameter's key.
@@ -171,10 +180,8 @@ pub enum TargetError {
         target: f64,
         /// The range scanned.
         range: (f64, f64),
-        /// The quantity at both ends of the range.
-        ends: (f64, f64),
-        /// Its smallest and largest value found on the scan.
-        extremes: (f64, f64),
+        /// What the scan found (boxed: the error stays small).
+        scan: Box<Scan>,
     },
     /// The quantity is not defined anywhere in the range.
     #[error("{quantity} is not defined for any {param} in the range (zero load?)")]
@@ -221,6 +228,40 @@ impl Root {
     }
 }
 
+/// What a scan without a root found: the quantity over the range, and what cut the range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scan {
+    /// The quantity at both ends of the range.
+    pub ends: (f64, f64),
+    /// Its smallest and largest value found on the scan.
+    pub extremes: (f64, f64),
+    /// Where the load cut the range's lower end, if it did.
+    pub cut: Option<RangeCut>,
+}
+
+/// Where the searched range was cut short of the parameter's domain by the load: the lap
+/// joint's F must not exceed F_gross = 2 b mu P L, so L, b, P and mu cannot go below the value at
+/// which F_gross falls to F.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RangeCut {
+    /// The least value searched (the parameter's unit).
+    pub least: f64,
+    /// The load that cut it (N).
+    pub force: f64,
+}
+
+impl RangeCut {
+    /// In words, for `param` in `unit` (with its leading space): "P >= 5 MPa: below it ...".
+    pub fn words(&self, param: &str, unit: &str) -> String {
+        format!(
+            "{param} >= {}{unit} only: below it the given F = {} N exceeds F_gross = 2 b mu P L \
+             (lower F to search further)",
+            Compact(self.least),
+            Compact(self.force)
+        )
+    }
+}
+
 /// The answer: every crossing found, in increasing order of the parameter.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Solved {
@@ -230,6 +271,8 @@ pub struct Solved {
     pub target: Target,
     /// The range scanned.
     pub range: (f64, f64),
+    /// Where the load cut the range, if it did.
+    pub cut: Option<RangeCut>,
     /// The roots.
     pub roots: Vec<Root>,
 }
@@ -278,7 +321,7 @@ fn search_range(
     model: &Model,
     param: Param,
     range: Option<(f64, f64)>,
-) -> Result<(f64, f64), TargetError> {
+) -> Result<((f64, f64), Option<RangeCut>), TargetError> {
     let spec = param.spec();
     let domain = spec.domain;
     // Where the other inputs bound the parameter (the lap joint's F <= F_gross): only there has
@@ -288,6 +331,12 @@ fn search_range(
         Some(r) => r,
         None => (least, domain.clamp(most)),
     };
+    let force = match model {
+        Model::Lap { force, .. } => force.newtons(),
+        Model::Beam { force, .. } => force.newtons(),
+        Model::Plate(_) => 0.0,
+    };
+    let cut = (range.is_none() && least > domain.min()).then_some(RangeCut { least, force });
     for value in [lo, hi] {
         if !domain.contains(value) {
             return Err(TargetError::Range {
@@ -300,10 +349,11 @@ fn search_range(
                 param: spec.name,
                 reason: format!(
                     "{} leaves no state with the other values: the accepted range is [{}, {}] \
-                     (the lap joint's force must not exceed F_gross = 2 b mu P L)",
+                     (the lap joint's F = {} N must not exceed F_gross = 2 b mu P L)",
                     Compact(value),
                     Compact(least),
-                    Compact(most)
+                    Compact(most),
+                    Compact(force)
                 ),
             });
         }
@@ -314,7 +364,7 @@ fn search_range(
             reason: format!("from = {} must be below to = {}", Compact(lo), Compact(hi)),
         });
     }
-    Ok((lo, hi))
+    Ok(((lo, hi), cut))
 }
 
 /// The last point of [a, b] where `holds` (true at `a`, false at `b`), by bisection to 1e-12
@@ -368,7 +418,16 @@ pub fn solve_for_target(
             kind,
         });
     }
-    let range = search_range(model, param, range)?;
+    // A quantity the load does not change (F_1) is searched unloaded: the load's own limit
+    // (the lap joint's F <= F_gross) must not cut the range of a value it does not use.
+    let unloaded;
+    let model = if quantity.depends_on_load() {
+        model
+    } else {
+        unloaded = model.unloaded();
+        &unloaded
+    };
+    let (range, cut) = search_range(model, param, range)?;
     let at = |x: f64| model.with_clamped(param, x).quantity(quantity);
     // The misfit, relative where the target is not zero so that Brent sees numbers near 1.
     let misfit = |y: f64| {
@@ -477,14 +536,35 @@ pub fn solve_for_target(
             },
             target: target.value,
             range,
-            ends: (first.1, last.1),
-            extremes: (min, max),
+            scan: Box::new(Scan {
+                ends: (first.1, last.1),
+                extremes: (min, max),
+                cut,
+            }),
         });
+    }
+    // A plateau narrower than the search resolves (the bisection's 1e-12 of the range) is a
+    // point: "Delta = 0 for every F in [0, 7.6e-319] N" was F = 0 and the subnormal forces whose
+    // Delta underflows to 0.
+    let resolution = 1e-12 * range.0.abs().max(range.1.abs());
+    for root in &mut roots {
+        if root.plateau && root.bracket.1 - root.bracket.0 <= resolution {
+            let point = root.bracket.0;
+            *root = Root {
+                value: point,
+                bracket: (point, point),
+                achieved: at(point).unwrap_or(root.achieved),
+                certified: true,
+                plateau: false,
+                within_rounding: root.within_rounding,
+            };
+        }
     }
     Ok(Solved {
         param,
         target,
         range,
+        cut,
         roots,
     })
 }

@@ -52,6 +52,9 @@ pub enum ImpliedReport {
         mu: f64,
         mu_status: &'static str,
         rms_mm: f64,
+        /// Loaded points less fitted parameters: at 0 the fit passes through every point and
+        /// its error is unknown (the RMS is 0 by construction).
+        degrees_of_freedom: usize,
     },
     /// Why no fit ran.
     Error { error: String },
@@ -68,6 +71,7 @@ impl BeamCompareReport {
                 mu: fit.mu.value,
                 mu_status: fit.mu.status.label(),
                 rms_mm: fit.rms,
+                degrees_of_freedom: fit.degrees_of_freedom,
             },
             Err(e) => ImpliedReport::Error {
                 error: e.to_string(),
@@ -158,14 +162,20 @@ impl BeamCompareReport {
                 mu,
                 mu_status,
                 rms_mm,
+                degrees_of_freedom,
             } => {
+                let exact = if *degrees_of_freedom == 0 {
+                    " (0 by construction: no degree of freedom left)"
+                } else {
+                    ""
+                };
                 let error =
                     stiffness_std_error.map_or_else(String::new, |e| format!(" +- {}", number(e)));
                 let _ = writeln!(
                     out,
                     "What the FE points imply (fit of mu and K_T to w(L) less the shear deflection):\n  \
                      K_T = {}{error} MPa/mm ({stiffness_status}; the closed forms used {}), mu = {} \
-                     ({mu_status}), RMS {} mm",
+                     ({mu_status}), RMS {} mm{exact}",
                     number(*stiffness),
                     number(self.stiffness),
                     number(*mu),

@@ -6,7 +6,7 @@ use serde::{Serialize, Serializer};
 use super::percent;
 use crate::fe::compare::BeamComparison;
 use crate::fe::verdict::{Envelope, MeshDifference, StiffnessMatch};
-use crate::report::{number, number_with};
+use crate::report::{count_of, number, number_with};
 
 /// A verdict as its label in JSON.
 fn envelope_label<S: Serializer>(e: &Envelope, s: S) -> Result<S::Ok, S::Error> {
@@ -397,6 +397,11 @@ pub fn beam_summary(comparison: &BeamComparison) -> Summary {
         StiffnessMatch::NoStandardError => {
             "implied K_T not judged (the fit has no positive standard error)".to_string()
         }
+        StiffnessMatch::UncertaintyUnknown { points, parameters } => format!(
+            "implied K_T not judged (uncertainty unknown: {} = {})",
+            count_of(points, "loaded point"),
+            count_of(parameters, "parameter")
+        ),
         StiffnessMatch::ClosedFormDoesNotHold => "implied K_T not judged (the beam theory's \
             envelope exceeds 2 % at some step: the fit would measure the theory)"
             .to_string(),

@@ -46,19 +46,23 @@ pub struct FitReport {
     /// Correlation coefficient of the mu and K_T estimates (null unless both have an error).
     #[serde(rename = "mu_KT_correlation")]
     pub correlation: Option<f64>,
+    /// Loaded measurements less fitted parameters; at 0 the scatter and errors are unknown.
+    pub degrees_of_freedom: usize,
 }
 
-/// The name of the weights, sqrt of the reduced chi-square (see [`FitReport::scatter`]) and the
-/// key that names its unit: `scatter_mm` (absolute weights: the sigma of w), `scatter_fraction`
-/// (relative: sigma over w) or `scatter_over_sigma` (given sigmas: a ratio, about 1 when they are
-/// right).
-fn weights_and_scatter(scatter: &Scatter) -> (&'static str, f64, &'static str) {
+/// The name of the weights, sqrt of the reduced chi-square (see [`FitReport::scatter`]; None
+/// without a degree of freedom) and the key that names its unit: `scatter_mm` (absolute weights:
+/// the sigma of w), `scatter_fraction` (relative: sigma over w) or `scatter_over_sigma` (given
+/// sigmas: a ratio, about 1 when they are right).
+fn weights_and_scatter(scatter: &Scatter) -> (&'static str, Option<f64>, &'static str) {
     match *scatter {
         Scatter::Absolute { sigma } => ("absolute", sigma, "scatter_mm"),
         Scatter::Relative { fraction } => ("relative", fraction, "scatter_fraction"),
-        Scatter::Known { reduced_chi_square } => {
-            ("sigma_mm", reduced_chi_square.sqrt(), "scatter_over_sigma")
-        }
+        Scatter::Known { reduced_chi_square } => (
+            "sigma_mm",
+            reduced_chi_square.map(f64::sqrt),
+            "scatter_over_sigma",
+        ),
     }
 }
 
@@ -74,20 +78,35 @@ fn scatter_fields<S: Serializer>(scatter: &Scatter, s: S) -> Result<S::Ok, S::Er
     map.end()
 }
 
-/// What the errors assume, in words, with the scatter the residuals show.
-fn assumption(scatter: &Scatter, response: &str) -> String {
+/// What the errors assume, in words, with the scatter the residuals show (or that they cannot
+/// show it: `points` loaded measurements through as many parameters).
+fn assumption(scatter: &Scatter, response: &str, (points, parameters): (usize, usize)) -> String {
+    let unknown = || {
+        format!(
+            "the residuals cannot show the scatter: uncertainty unknown, {} = {} (the curve \
+             passes through every loaded point)",
+            count_of(points, "loaded point"),
+            count_of(parameters, "parameter")
+        )
+    };
     match *scatter {
         Scatter::Absolute { sigma } => format!(
-            "the same scatter at every point (--weights absolute); the residuals show {} mm",
-            number(sigma)
+            "the same scatter at every point (--weights absolute); {}",
+            sigma.map_or_else(unknown, |s| format!("the residuals show {} mm", number(s)))
         ),
         Scatter::Relative { fraction } => format!(
-            "scatter proportional to {response} (--weights relative); the residuals show {} % of {response}",
-            number(100.0 * fraction)
+            "scatter proportional to {response} (--weights relative); {}",
+            fraction.map_or_else(unknown, |f| format!(
+                "the residuals show {} % of {response}",
+                number(100.0 * f)
+            ))
         ),
         Scatter::Known { reduced_chi_square } => format!(
-            "the sigma_mm column, taken as known; chi^2/dof = {} (about 1 when it is right)",
-            number(reduced_chi_square)
+            "the sigma_mm column, taken as known; {}",
+            reduced_chi_square.map_or_else(
+                || "chi^2/dof undefined (no degree of freedom left)".to_string(),
+                |c| format!("chi^2/dof = {} (about 1 when it is right)", number(c))
+            )
         ),
     }
 }
@@ -122,6 +141,12 @@ pub fn evidence(evidence: &Evidence) -> String {
         }
         Evidence::AtSearchBound => "the best fit sits at the edge of the search range".to_string(),
         Evidence::NoDependence => "the data do not depend on it".to_string(),
+        Evidence::NoDegreesOfFreedom { points, parameters } => format!(
+            "{} = {}: the fit passes through every one, so its residuals (0 by construction) \
+             cannot show an error",
+            count_of(points, "loaded point"),
+            count_of(parameters, "parameter")
+        ),
         Evidence::NoDataAboveFirstMacroslip {
             first_macroslip_force,
             mu_at_least,
@@ -173,7 +198,26 @@ impl FitReport {
             beyond_first_macroslip: result.beyond_first_macroslip,
             scatter: result.scatter,
             correlation: result.correlation,
+            degrees_of_freedom: result.degrees_of_freedom,
         }
+    }
+
+    /// (loaded points, parameters fitted through them) when no degree of freedom is left, as
+    /// the estimates' evidence says; else the parameters not held by `--fix`, twice.
+    fn no_freedom(&self) -> (usize, usize) {
+        [&self.mu, &self.kt]
+            .iter()
+            .find_map(|e| match e.evidence {
+                Evidence::NoDegreesOfFreedom { points, parameters } => Some((points, parameters)),
+                _ => None,
+            })
+            .unwrap_or_else(|| {
+                let free = [&self.mu, &self.kt]
+                    .iter()
+                    .filter(|e| e.status != Status::Fixed)
+                    .count();
+                (free, free)
+            })
     }
 
     /// The readable report: estimates with standard errors and the verdicts.
@@ -238,9 +282,14 @@ impl FitReport {
         let _ = writeln!(
             out,
             "  errors assume {}",
-            assumption(&self.scatter, response)
+            assumption(&self.scatter, response, self.no_freedom())
         );
-        let _ = writeln!(out, "  residual RMS = {} mm", number(self.rms));
+        let exact = if self.degrees_of_freedom == 0 {
+            " (0 by construction: no degree of freedom left)"
+        } else {
+            ""
+        };
+        let _ = writeln!(out, "  residual RMS = {} mm{exact}", number(self.rms));
         let (name, all_slide) = match (self.threshold_force, self.gross_slip_force) {
             (_, Some(gross)) => ("F_gross", gross),
             (threshold, None) => ("F_thre", threshold.unwrap_or(f64::NAN)),

@@ -9,7 +9,7 @@ use crate::ModelKind;
 use crate::kernel::params::Unit;
 use crate::problems::Param;
 use crate::report::{number, sanitize};
-use crate::study::target::{ROUNDING, Root, SCAN_POINTS, Solved};
+use crate::study::target::{ROUNDING, RangeCut, Root, SCAN_POINTS, Solved};
 
 /// The answer of `solve`.
 #[derive(Debug, Clone, Serialize)]
@@ -36,7 +36,24 @@ pub struct SolveReport {
     pub target: f64,
     /// The range of the parameter searched.
     pub range: (f64, f64),
+    /// Where the load cut the range's lower end short of the parameter's domain (absent when it
+    /// did not): `least`, in the parameter's unit, and the force that cut it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub range_cut: Option<RangeCutReport>,
     pub roots: Vec<RootReport>,
+}
+
+/// [`RangeCut`] for JSON.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct RangeCutReport {
+    /// The least value searched, in the parameter's unit.
+    pub least: f64,
+    /// The load that cut it: below `least`, F_gross would fall under it (N).
+    #[serde(rename = "F_N")]
+    pub force: f64,
+    /// Why, in words.
+    #[serde(skip)]
+    cut: RangeCut,
 }
 
 /// One root, or a plateau of roots.
@@ -88,6 +105,11 @@ impl SolveReport {
             quantity_unit: quantity.unit(kind),
             target: solved.target.value,
             range: solved.range,
+            range_cut: solved.cut.map(|cut| RangeCutReport {
+                least: cut.least,
+                force: cut.force,
+                cut,
+            }),
             roots: solved.roots.iter().map(RootReport::from).collect(),
         }
     }
@@ -135,6 +157,15 @@ impl SolveReport {
                     "{name} = {}{unit} for every {param} in [{from}, {to}]{punit} (a plateau; its ends found by bisection)",
                     number(root.achieved),
                 );
+            } else if root.certified && root.bracket.0 == root.bracket.1 {
+                // A point, not a bracket: the quantity is on the target there and at no
+                // neighbouring value the search resolves.
+                let _ = writeln!(
+                    out,
+                    "{name} = {}{unit} only at {param} = {}{punit}",
+                    number(root.achieved),
+                    number(root.value),
+                );
             } else if root.certified {
                 let _ = writeln!(
                     out,
@@ -163,6 +194,9 @@ impl SolveReport {
             number(self.range.0),
             number(self.range.1),
         );
+        if let Some(cut) = &self.range_cut {
+            let _ = writeln!(out, "  {}", cut.cut.words(&param.to_string(), &punit));
+        }
         out
     }
 }

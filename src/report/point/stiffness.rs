@@ -48,6 +48,10 @@ pub struct CandidateReport {
     /// an answer.
     #[serde(rename = "vs_current_percent", skip_serializing_if = "Option::is_none")]
     pub vs_current: Option<f64>,
+    /// Its w(L), u(L) or Delta against Coulomb's (K_T -> infinity), in %; left out without an
+    /// answer or at no load.
+    #[serde(rename = "vs_coulomb_percent", skip_serializing_if = "Option::is_none")]
+    pub vs_coulomb: Option<f64>,
 }
 
 /// What a candidate K_T does to the answer, or why it was not evaluated.
@@ -155,8 +159,21 @@ impl From<&ComparedStiffness> for CandidateReport {
             kt,
             answer,
             vs_current: row.off_current.map(|f| 100.0 * f),
+            vs_coulomb: row.off_coulomb.map(|f| 100.0 * f),
         }
     }
+}
+
+/// A deviation in % with its sign ("+3.97 %", "0 %"), "-" without one.
+fn signed_percent(percent: Option<f64>) -> String {
+    percent.map_or("-".to_string(), |p| {
+        if p == 0.0 {
+            "0 %".to_string()
+        } else {
+            let sign = if p > 0.0 { "+" } else { "" };
+            format!("{sign}{} %", crate::report::number_with(p, 3))
+        }
+    })
 }
 
 impl StiffnessReport {
@@ -190,13 +207,14 @@ impl StiffnessReport {
                 );
                 let _ = writeln!(
                     out,
-                    "{:<16} {:>12} {:>10} {:>10} {:>11} {:>10}  {:<20} basis",
+                    "{:<16} {:>12} {:>10} {:>10} {:>11} {:>10} {:>10}  {:<20} basis",
                     "source",
                     "K_T (MPa/mm)",
                     "F_1 (N)",
                     "X (mm)",
                     "w(L) (mm)",
                     "vs current",
+                    "vs Coulomb",
                     "regime"
                 );
             }
@@ -208,7 +226,7 @@ impl StiffnessReport {
                 );
                 let _ = writeln!(
                     out,
-                    "{:<16} {:>12} {:>10} {:>8} {:>8} {:>12} {:>10}  {:<29} basis",
+                    "{:<16} {:>12} {:>10} {:>8} {:>8} {:>12} {:>10} {:>10}  {:<29} basis",
                     "source",
                     "K_T (MPa/mm)",
                     "F_1 (N)",
@@ -216,6 +234,7 @@ impl StiffnessReport {
                     "d (mm)",
                     "Delta (mm)",
                     "vs current",
+                    "vs Coulomb",
                     "regime"
                 );
             }
@@ -226,8 +245,14 @@ impl StiffnessReport {
                 );
                 let _ = writeln!(
                     out,
-                    "{:<16} {:>12} {:>12} {:>10} {:>10}  {:<20} basis",
-                    "source", "K_T (MPa/mm)", "u(L) (mm)", "vs current", "X_r (mm)", "regime"
+                    "{:<16} {:>12} {:>12} {:>10} {:>10} {:>10}  {:<20} basis",
+                    "source",
+                    "K_T (MPa/mm)",
+                    "u(L) (mm)",
+                    "vs current",
+                    "vs Coulomb",
+                    "X_r (mm)",
+                    "regime"
                 );
             }
         }
@@ -235,14 +260,8 @@ impl StiffnessReport {
             let (source, basis) = (row.source, &row.basis);
             let kt = row.kt.map_or("-".to_string(), number);
             // A candidate without an answer: no K_T at all, or one the model refuses.
-            let off = row.vs_current.map_or("-".to_string(), |p| {
-                if p == 0.0 {
-                    "0 %".to_string()
-                } else {
-                    let sign = if p > 0.0 { "+" } else { "" };
-                    format!("{sign}{} %", crate::report::number_with(p, 3))
-                }
-            });
+            let off = signed_percent(row.vs_current);
+            let off_coulomb = signed_percent(row.vs_coulomb);
             let unanswered = if row.kt.is_some() {
                 "K_T out of range"
             } else {
@@ -259,11 +278,12 @@ impl StiffnessReport {
                     _,
                 ) => writeln!(
                     out,
-                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10}  {:<20} {basis}",
+                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10} {:>10}  {:<20} {basis}",
                     number(*first_macroslip_force),
                     number(*micro_end),
                     number(*tip_deflection),
                     off,
+                    off_coulomb,
                     regime.label(),
                 ),
                 (
@@ -275,9 +295,10 @@ impl StiffnessReport {
                     _,
                 ) => writeln!(
                     out,
-                    "{source:<16} {kt:>12} {:>12} {:>10} {:>10}  {:<20} {basis}",
+                    "{source:<16} {kt:>12} {:>12} {:>10} {:>10} {:>10}  {:<20} {basis}",
                     number(*end_displacement),
                     off,
+                    off_coulomb,
                     number(*micro_end),
                     regime.label(),
                 ),
@@ -292,29 +313,30 @@ impl StiffnessReport {
                     _,
                 ) => writeln!(
                     out,
-                    "{source:<16} {kt:>12} {:>10} {:>8} {:>8} {:>12} {:>10}  {:<29} {basis}",
+                    "{source:<16} {kt:>12} {:>10} {:>8} {:>8} {:>12} {:>10} {:>10}  {:<29} {basis}",
                     number(*first_slip_force),
                     number(*slide_at_inner_end),
                     number(*slide_at_cover_ends),
                     number(*joint_displacement),
                     off,
+                    off_coulomb,
                     regime.label(),
                 ),
                 // No answer: the columns of the problem's table.
                 (None | Some(CandidateAnswer::Refused { .. }), ModelKind::Beam) => writeln!(
                     out,
-                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10}  {unanswered:<20} {basis}",
-                    "-", "-", "-", "-",
+                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10} {:>10}  {unanswered:<20} {basis}",
+                    "-", "-", "-", "-", "-",
                 ),
                 (None | Some(CandidateAnswer::Refused { .. }), ModelKind::Lap) => writeln!(
                     out,
-                    "{source:<16} {kt:>12} {:>10} {:>8} {:>8} {:>12} {:>10}  {unanswered:<29} {basis}",
-                    "-", "-", "-", "-", "-",
+                    "{source:<16} {kt:>12} {:>10} {:>8} {:>8} {:>12} {:>10} {:>10}  {unanswered:<29} {basis}",
+                    "-", "-", "-", "-", "-", "-",
                 ),
                 (None | Some(CandidateAnswer::Refused { .. }), ModelKind::Plate) => writeln!(
                     out,
-                    "{source:<16} {kt:>12} {:>12} {:>10} {:>10}  {unanswered:<20} {basis}",
-                    "-", "-", "-",
+                    "{source:<16} {kt:>12} {:>12} {:>10} {:>10} {:>10}  {unanswered:<20} {basis}",
+                    "-", "-", "-", "-",
                 ),
             };
         }
@@ -336,7 +358,14 @@ impl StiffnessReport {
         );
         let _ = writeln!(
             out,
-            "Elastic-slip defaults scale like mu P / element length: halve the elements, double K_T."
+            "vs Coulomb: each K_T's {quantity} against Coulomb's (the limit of an infinitely \
+             stiff K_T), in % (what it gets wrong if the interface is rigid until it slides)."
+        );
+        let _ = writeln!(
+            out,
+            "Elastic-slip defaults scale like mu P / element length, here contact elements of \
+             {element} mm (L/100 unless --element-size MM gives your mesh's): halve the elements, \
+             double K_T."
         );
         out
     }
