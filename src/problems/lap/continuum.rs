@@ -309,22 +309,36 @@ pub fn solve_lap_continuum_path(
     // Step 2: F from 0 in equal increments between the requested forces (the load parameter
     // is F in N).
     model.start_force_step();
+    let stick = model.stick_limit();
     let mut states = Vec::with_capacity(forces.len());
     let mut increments = 0;
     for &force in forces {
         let from = model.load;
-        let steps =
-            (((force - from) / gross * mesh.force_increments as f64).ceil() as usize).max(1);
-        for i in 1..=steps {
-            let target = if i == steps {
-                force
-            } else {
-                from + (force - from) * i as f64 / steps as f64
-            };
-            iterations += model.step(target)?;
-        }
-        increments += steps;
-        let result = model.result(&grid, &clamped, increments, iterations);
+        let slip_from_clamp = if force <= stick {
+            // Below first slip the answer is the clamped state plus F times the unit-force
+            // solution, exactly: no increment can lose F's digits against the clamping state.
+            increments += 1;
+            model.stick_at(&clamped, force)
+        } else {
+            let steps =
+                (((force - from) / gross * mesh.force_increments as f64).ceil() as usize).max(1);
+            for i in 1..=steps {
+                let target = if i == steps {
+                    force
+                } else {
+                    from + (force - from) * i as f64 / steps as f64
+                };
+                iterations += model.step(target)?;
+            }
+            increments += steps;
+            model
+                .slip
+                .iter()
+                .zip(&clamped.slip)
+                .map(|(s, s0)| s - s0)
+                .collect()
+        };
+        let result = model.result(&grid, &clamped, &slip_from_clamp, increments, iterations);
         let finite = result.delta.is_finite()
             && result.clamping_delta.is_finite()
             && [&result.slip, &result.shear, &result.contact_pressure]
@@ -1002,10 +1016,58 @@ impl<'a> Reduced<'a> {
         Err(NumericError::NoConvergence { load, cuts: 0 })
     }
 
+    /// The largest force F (N) up to which, from the clamped state, every pair sticks: the
+    /// plastic slips stay those of the clamping step, and the answer is linear in F. With them
+    /// fixed, the condensed equilibrium S (s - s_P - F s_F) = k q has the solution
+    /// s = s_clamped + F s_F, so each pair's Jenkins force is t_c + F k s_F and its contact force
+    /// c_c + F c_F: the pair sticks while |t_c + F k s_F| <= mu (c_c + F c_F), two inequalities
+    /// linear in F. A pair already at its strength and loaded further gives 0.
+    fn stick_limit(&self) -> f64 {
+        let contact = self.contact_forces();
+        let mut limit = f64::INFINITY;
+        for i in 0..self.c.pairs {
+            let k = self.c.stiffness[i];
+            let shear = k * (self.slip[i] - self.points[i].plastic_slip);
+            let rate = k * self.unit[i];
+            let (strength, strength_rate) = (
+                self.friction * contact[i],
+                self.friction * self.contact_unit[i],
+            );
+            // g(F) = g0 + F g1 <= 0 for tau - strength and -tau - strength.
+            for (g0, g1) in [
+                (shear - strength, rate - strength_rate),
+                (-shear - strength, -rate - strength_rate),
+            ] {
+                if g1 > 0.0 {
+                    limit = limit.min((-g0).max(0.0) / g1);
+                }
+            }
+        }
+        limit
+    }
+
+    /// Commits the stick state at `force` (N, at most [`Reduced::stick_limit`]) after the
+    /// clamping state `clamped`; returns the slips from the clamped state, F s_F, computed as
+    /// such rather than as a difference of two nearly equal totals.
+    fn stick_at(&mut self, clamped: &State, force: f64) -> Vec<f64> {
+        let increment: Vec<f64> = self.unit.iter().map(|u| force * u).collect();
+        self.restore(clamped);
+        self.slip = clamped
+            .slip
+            .iter()
+            .zip(&increment)
+            .map(|(s, ds)| s + ds)
+            .collect();
+        self.load = force;
+        increment
+    }
+
+    /// The state's answer; `slip_from_clamp` is s - s_clamped at each pair (mm).
     fn result(
         &self,
         grid: &Grid,
         clamped: &State,
+        slip_from_clamp: &[f64],
         increments: usize,
         iterations: usize,
     ) -> ContinuumLap {
@@ -1015,8 +1077,8 @@ impl<'a> Reduced<'a> {
         let xs = &grid.pair_x;
         let slip: Vec<(f64, f64)> = xs
             .iter()
-            .zip(self.slip.iter().zip(&clamped.slip))
-            .map(|(&x, (s, s0))| (x, s - s0))
+            .zip(slip_from_clamp)
+            .map(|(&x, ds)| (x, *ds))
             .collect();
         let forces: Vec<f64> = self
             .slip
@@ -1078,9 +1140,20 @@ impl<'a> Reduced<'a> {
             from_inner_end: last_of_run(&mut (0..xs.len())).map_or(0.0, |i| xs[i]),
             from_cover_ends: last_of_run(&mut (0..xs.len()).rev()).map_or(0.0, |i| length - xs[i]),
         };
+        // Delta from the clamped state as F s_F's reading plus the plastic slips' change, not as
+        // a difference of totals: P alone gives about 1.7e-3 mm on the bundled joint, whose
+        // round-off (4e-19 mm) swallowed Delta at F = 1e-14 N (issue 36).
+        let delta = self.load * self.delta_unit
+            + self
+                .plastic()
+                .zip(clamped.points.iter())
+                .zip(&c.stiffness)
+                .zip(&c.delta_per_pair)
+                .map(|(((q, q0), k), d)| d * k * (q - q0.plastic_slip))
+                .sum::<f64>();
         ContinuumLap {
             force: self.load,
-            delta: self.delta() - self.clamping_delta,
+            delta,
             clamping_delta: self.clamping_delta,
             separated: contact
                 .iter()
