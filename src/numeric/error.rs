@@ -24,6 +24,9 @@ pub enum NumericError {
     /// Inputs the solver does not handle (the message says which and why).
     #[error("{0}")]
     OutOfRange(String),
+    /// A solve that was attempted and failed (the message says where and why).
+    #[error("{0}")]
+    Unsolved(String),
 }
 
 /// A number in a message, to four significant digits ("1.714", "1.75e10", "5.385e-7").

@@ -57,7 +57,7 @@
 
 use super::params::{LapParam, LapParams};
 use crate::kernel::params::Compact;
-use crate::numeric::NumericError;
+use crate::numeric::{NumericError, short};
 use std::cell::RefCell;
 
 use crate::numeric::banded::{BandCholesky, NotPositiveDefinite, SymmetricBand};
@@ -97,8 +97,22 @@ const MAX_BAND_ENTRIES: f64 = 1.6e7;
 /// Most elements through each body's thickness.
 const MAX_LAYERS: usize = 32;
 
-/// Fixed-point iterations allowed on the contact forces per increment.
-const MAX_CONTACT_ITERATIONS: usize = 60;
+/// Fixed-point iterations allowed on the contact forces per increment. The iteration contracts
+/// at a rate set by how much the strengths move the contact forces, which grows with mu: on the
+/// bundled joint a few iterations at mu = 0.3, but about 0.85 per iteration at mu = 2 near
+/// F = 10 kN with the covers lifting at x = 0 (about 130 iterations; 60 failed there, issue
+/// 36). Each iteration is one Newton solve on the pairs, mostly with a kept factor.
+const MAX_CONTACT_ITERATIONS: usize = 400;
+/// Times a load increment whose fixed point fails may be halved.
+const MAX_CUTS: u32 = 6;
+/// Most height over length of the overlap's elements: L = 1e-3 mm on the bundled joint (375)
+/// solves, 1e-4 mm (3750) loses precision and 1e-6 mm gives a singular stiffness.
+const MAX_ASPECT: f64 = 500.0;
+/// Largest [`clamping_slide`] accepted (measured: solved at 210, failed at 332).
+const MAX_CLAMPING_SLIDE: f64 = 200.0;
+/// The bounds of the contact forces' relaxation (Aitken's factor is clamped to them).
+const MIN_RELAXATION: f64 = 1.0 / 64.0;
+const MAX_RELAXATION: f64 = 2.0;
 /// Change of the contact forces, relative to the largest, that ends the fixed point.
 const CONTACT_TOLERANCE: f64 = 1e-10;
 /// Largest imbalance of the inner plate's half accepted, relative to F/2 + F_gross/2: measured
@@ -288,6 +302,38 @@ pub fn solve_lap_continuum_path(
             Compact(1.0 / decay_rate(&params)),
         )));
     }
+    let breaks = lap_breaks(&params, mesh.layers);
+    let shortest = breaks
+        .overlap
+        .windows(2)
+        .fold(f64::INFINITY, |m, w| m.min(w[1] - w[0]));
+    let aspect = breaks.layer / shortest;
+    if !(aspect <= MAX_ASPECT) {
+        return Err(NumericError::OutOfRange(format!(
+            "L = {} mm is too short for the continuum solver against plates this thick: the \
+             overlap's elements would be {} times shorter than their height of {} mm (at most \
+             {MAX_ASPECT}, beyond which the plane-stress stiffness loses its digits); L must be \
+             at least {} mm here",
+            Compact(params.length),
+            short(aspect),
+            short(breaks.layer),
+            short(round_up(2.0 * breaks.layer / MAX_ASPECT)),
+        )));
+    }
+    let clamp_sliding = clamping_slide(&params);
+    if clamp_sliding > MAX_CLAMPING_SLIDE {
+        return Err(NumericError::OutOfRange(format!(
+            "mu = {} is too small for the continuum solver on this joint: the clamping \
+             pressure's Poisson expansion alone would make the interface slide over nearly all \
+             the overlap (nu K_T / (E lambda mu) = {} > {MAX_CLAMPING_SLIDE}), leaving the inner \
+             plate no stuck point to hold it; mu must be at least {} here (or K_T lower)",
+            Compact(params.friction),
+            short(clamp_sliding),
+            short(round_up(
+                params.friction * clamp_sliding / MAX_CLAMPING_SLIDE
+            )),
+        )));
+    }
     let grid = Grid::new(&params, mesh);
     let band = grid.unknowns as f64 * (grid.bandwidth + 1) as f64;
     if band > MAX_BAND_ENTRIES {
@@ -304,7 +350,13 @@ pub fn solve_lap_continuum_path(
     let top = forces.iter().fold(0.0_f64, |m, f| m.max(*f));
     let mut model = Reduced::new(&condensed, &params, top);
     // Step 1: P alone (the load parameter scales P from 0 to 1), one increment.
-    let mut iterations = model.step(1.0)?;
+    let mut iterations = model.step(1.0).map_err(|e| {
+        NumericError::Unsolved(format!(
+            "the continuum's clamping step (P = {} MPa alone) could not be solved: {}",
+            Compact(params.pressure),
+            why(&e)
+        ))
+    })?;
     let clamped = model.state();
     // Step 2: F from 0 in equal increments between the requested forces (the load parameter
     // is F in N).
@@ -328,7 +380,23 @@ pub fn solve_lap_continuum_path(
                 } else {
                     from + (force - from) * i as f64 / steps as f64
                 };
-                iterations += model.step(target)?;
+                iterations += model.step_with_cuts(target, MAX_CUTS).map_err(|e| {
+                    NumericError::Unsolved(format!(
+                        "the continuum could not be solved beyond F = {} N on the way to {} N \
+                         ({}; {} of {} pairs would open there, held by the tie: the covers lift \
+                         off as mu (t1/2 + t2) / L = {} grows)",
+                        Compact(model.load),
+                        Compact(force),
+                        why(&e),
+                        model.contact_forces().iter().filter(|c| **c < 0.0).count(),
+                        condensed.pairs,
+                        Compact(
+                            params.friction
+                                * (0.5 * params.inner_thickness + params.cover_thickness)
+                                / params.length
+                        ),
+                    ))
+                })?;
             }
             increments += steps;
             model
@@ -372,6 +440,38 @@ pub fn solve_lap_continuum_path(
         states.push(result);
     }
     Ok(states)
+}
+
+/// `x` rounded up to three significant digits: a least value to advise, which the advice
+/// must not undercut.
+fn round_up(x: f64) -> f64 {
+    let unit = 10f64.powf(x.abs().log10().floor() - 2.0);
+    (x / unit).ceil() * unit
+}
+
+/// What a failed increment means, in the solver's own terms (the shared error's "load" is the
+/// clamping step's fraction of P or F in N, and its cuts are this solver's halvings).
+fn why(e: &NumericError) -> String {
+    match e {
+        NumericError::NoConvergence { cuts, .. } => format!(
+            "the contact forces did not settle, even after {cuts} halvings of the load increment"
+        ),
+        NumericError::Singular(row) => {
+            format!("the interface's tangent stiffness was singular (row {row})")
+        }
+        other => other.to_string(),
+    }
+}
+
+/// nu K_T / (E lambda mu), E the softer plate's modulus: the slip the clamping pressure's
+/// Poisson strain nu P / E demands over the shear-lag length 1/lambda, over the saturation slip
+/// mu P / K_T (P cancels). Where it is large, P alone makes nearly every pair slide; the inner
+/// plate, held only by the interface, then has no stuck pair to fix its position and the
+/// condensed tangent is singular along its rigid sliding. Measured on the bundled joint (K_T =
+/// 1e2, 1e3, 1e4 MPa/mm): solved up to 166 to 210, failed from 332 to 350 on.
+fn clamping_slide(p: &LapParams) -> f64 {
+    let modulus = p.inner_modulus.min(p.cover_modulus);
+    LAP_POISSON * p.tangential_stiffness / (modulus * decay_rate(p) * p.friction)
 }
 
 /// lambda = sqrt(2 K_T (1/(E1 t1) + 1/(2 E2 t2))) (1/mm): the rate at which the elastic slip
@@ -979,6 +1079,29 @@ impl<'a> Reduced<'a> {
                 .sum::<f64>()
     }
 
+    /// One increment to `load`; when its fixed point fails (nothing is committed then), two
+    /// half increments, down to `cuts_left` halvings: a closer start is what the fixed point
+    /// needs where the covers lift off (mu = 4 near 0.5 F_gross on the bundled joint, issue 36).
+    fn step_with_cuts(&mut self, load: f64, cuts_left: u32) -> Result<usize, NumericError> {
+        let start = self.state();
+        match self.step(load) {
+            Err(NumericError::NoConvergence { .. }) if cuts_left > 0 => {
+                self.restore(&start);
+                let middle = 0.5 * (self.load + load);
+                let first = self.step_with_cuts(middle, cuts_left - 1)?;
+                Ok(first + self.step_with_cuts(load, cuts_left - 1)?)
+            }
+            Err(NumericError::NoConvergence { .. }) => {
+                self.restore(&start);
+                Err(NumericError::NoConvergence {
+                    load,
+                    cuts: MAX_CUTS,
+                })
+            }
+            other => other,
+        }
+    }
+
     /// One increment to `load`: the fixed point on the contact forces, each iterate solved by
     /// Newton from the state committed at the previous increment. Returns the iterations.
     fn step(&mut self, load: f64) -> Result<usize, NumericError> {
@@ -991,6 +1114,14 @@ impl<'a> Reduced<'a> {
             .map(|(c, u)| c + (load - self.load) * u)
             .collect();
         let mut guess: Option<Vec<f64>> = None;
+        // Aitken's relaxation of the contact forces (Irons and Tuck): each update moves by
+        // omega times the change, omega from the last two changes r: omega_n = -omega_(n-1)
+        // r_(n-1).(r_n - r_(n-1)) / |r_n - r_(n-1)|^2, the secant estimate of the best step along
+        // them. The plain iteration (omega = 1) contracts slowly where mu is large (0.85 per
+        // iteration at mu = 2) and falls into a two-state cycle with wide lift-off (mu = 5 on
+        // the bundled joint), issue 36.
+        let mut relaxation: f64 = 1.0;
+        let mut previous: Option<Vec<f64>> = None;
         for iteration in 1..=MAX_CONTACT_ITERATIONS {
             self.restore(&start);
             // Newton starts from the last iterate's slips (the history is the increment's start).
@@ -1005,7 +1136,21 @@ impl<'a> Reduced<'a> {
                 .iter()
                 .zip(&contact)
                 .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
-            contact = next;
+            let residual: Vec<f64> = next.iter().zip(&contact).map(|(n, c)| n - c).collect();
+            if let Some(last) = &previous {
+                let (mut along, mut norm) = (0.0, 0.0);
+                for (r, l) in residual.iter().zip(last) {
+                    along += l * (r - l);
+                    norm += (r - l) * (r - l);
+                }
+                if norm > 0.0 {
+                    relaxation = (-relaxation * along / norm).clamp(MIN_RELAXATION, MAX_RELAXATION);
+                }
+            }
+            for (c, r) in contact.iter_mut().zip(&residual) {
+                *c += relaxation * r;
+            }
+            previous = Some(residual);
             guess = Some(self.slip.clone());
             if change <= CONTACT_TOLERANCE * scale {
                 // The strengths of the converged contact forces (a last Newton solve would move
