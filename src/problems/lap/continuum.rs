@@ -205,13 +205,16 @@ pub struct ContinuumLap {
 /// [`NumericError::OutOfRange`] for inputs outside their domains (the parameters, a force
 /// beyond F_gross = 2 b mu P L, layers outside 1..=32, no force increment), an interface too
 /// stiff for the solver (lambda t1 > 12.5) or a mesh too large (more than 801 interface pairs);
-/// [`NumericError::NoConvergence`] or [`NumericError::Singular`] when the solve fails: at or
-/// within a few tenths of a percent of F_gross (the continuum's own gross-slip force differs
-/// from 2 b mu P L: the held cover end carries part of the clamping force), when the contact
-/// forces do not settle (mu = 1e-6, or covers lifting off over a wide zone at mu = 10), or for
-/// an overlap too short for its plates (L = 1e-6 mm); [`NumericError::OutOfRange`] also when
-/// the answer fails its equilibrium check (an interface too soft for the condensed solve, K_T =
-/// 1e-6 MPa/mm on the bundled joint).
+/// [`NumericError::OutOfRange`] also for an overlap too short for its plates (elements more
+/// than 500 times shorter than high: L < 0.0015 mm on the bundled joint) and for a friction so
+/// low that P alone slides nearly the whole interface (nu K_T / (E lambda mu) > 200: mu <
+/// 1.66e-4 on the bundled joint), both with the least value accepted;
+/// [`NumericError::Unsolved`] when the solve fails, saying where: at or within a few tenths of a
+/// percent of F_gross (the continuum's own gross-slip force differs from 2 b mu P L: the held
+/// cover end carries part of the clamping force), or when the contact forces do not settle even
+/// on halved increments (covers lifting off over a wide zone: mu = 10 beyond 28 kN on the
+/// bundled joint); [`NumericError::OutOfRange`] also when the answer fails its equilibrium check
+/// (an interface too soft for the condensed solve, K_T = 1e-6 MPa/mm on the bundled joint).
 pub fn solve_lap_continuum(
     params: LapParams,
     force: f64,
@@ -1505,6 +1508,41 @@ mod tests {
             (n.from_cover_ends - l.from_cover_ends).abs() < 0.5,
             "{n:?} {l:?}"
         );
+    }
+
+    /// Issue 36: across the friction coefficients the tool sends users to the continuum for
+    /// (mu outside the envelope's 0.1 to 0.6), up to 0.99 F_gross, the solver answers, in
+    /// equilibrium, with Delta growing along the path; a coarse mesh keeps it to seconds.
+    #[test]
+    fn it_answers_across_the_friction_range_up_to_gross_slip() {
+        let mesh = LapContinuumMesh {
+            layers: 2,
+            force_increments: 8,
+        };
+        for mu in [2e-3, 0.05, 1.0, 2.0, 5.0] {
+            let params = LapParams {
+                friction: mu,
+                ..JOINT
+            };
+            let gross = params.gross_slip_force();
+            let forces = [0.0, 1e-9 * gross, 0.3 * gross, 0.9 * gross, 0.99 * gross];
+            let states = solve_lap_continuum_path(params, &forces, mesh)
+                .unwrap_or_else(|e| panic!("mu = {mu}: {e}"));
+            let mut last = 0.0;
+            for (state, force) in states.iter().zip(forces) {
+                assert!(
+                    state.delta.is_finite() && state.delta >= last,
+                    "mu {mu} F {force}"
+                );
+                last = state.delta;
+                let half = 0.5 * force;
+                assert!(
+                    (state.transferred_force - half).abs() <= 1e-6 * (half + 0.5 * gross),
+                    "mu {mu} F {force}: {}",
+                    state.transferred_force
+                );
+            }
+        }
     }
 
     #[test]
