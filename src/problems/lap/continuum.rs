@@ -311,7 +311,8 @@ pub fn solve_lap_continuum_path(
         .windows(2)
         .fold(f64::INFINITY, |m, w| m.min(w[1] - w[0]));
     let aspect = breaks.layer / shortest;
-    if !(aspect <= MAX_ASPECT) {
+    // Also refuses a NaN aspect (no overlap element at all).
+    if aspect.is_nan() || aspect > MAX_ASPECT {
         return Err(NumericError::OutOfRange(format!(
             "L = {} mm is too short for the continuum solver against plates this thick: the \
              overlap's elements would be {} times shorter than their height of {} mm (at most \
@@ -383,23 +384,9 @@ pub fn solve_lap_continuum_path(
                 } else {
                     from + (force - from) * i as f64 / steps as f64
                 };
-                iterations += model.step_with_cuts(target, MAX_CUTS).map_err(|e| {
-                    NumericError::Unsolved(format!(
-                        "the continuum could not be solved beyond F = {} N on the way to {} N \
-                         ({}; {} of {} pairs would open there, held by the tie: the covers lift \
-                         off as mu (t1/2 + t2) / L = {} grows)",
-                        Compact(model.load),
-                        Compact(force),
-                        why(&e),
-                        model.contact_forces().iter().filter(|c| **c < 0.0).count(),
-                        condensed.pairs,
-                        Compact(
-                            params.friction
-                                * (0.5 * params.inner_thickness + params.cover_thickness)
-                                / params.length
-                        ),
-                    ))
-                })?;
+                iterations += model
+                    .step_with_cuts(target, MAX_CUTS)
+                    .map_err(|e| unsolved_force_step(&params, &model, force, &e))?;
             }
             increments += steps;
             model
@@ -443,6 +430,42 @@ pub fn solve_lap_continuum_path(
         states.push(result);
     }
     Ok(states)
+}
+
+/// Why the force step failed beyond the committed state of `model`, on the way to `force` (N).
+fn unsolved_force_step(
+    params: &LapParams,
+    model: &Reduced<'_>,
+    force: f64,
+    e: &NumericError,
+) -> NumericError {
+    let open = model.contact_forces().iter().filter(|c| **c < 0.0).count();
+    let gross = params.gross_slip_force();
+    let cause = if open > 0 {
+        format!(
+            "{open} of {} pairs would open there, held by the tie: the covers lift off as mu \
+             (t1/2 + t2) / L = {} grows",
+            model.c.pairs,
+            short(
+                params.friction * (0.5 * params.inner_thickness + params.cover_thickness)
+                    / params.length
+            )
+        )
+    } else {
+        format!(
+            "{} N is {} % below F_gross = 2 b mu P L = {} N, but the continuum's own \
+             gross-slip force is lower: the held cover end carries part of the clamping force",
+            short(model.load),
+            short(100.0 * (1.0 - model.load / gross)),
+            Compact(gross)
+        )
+    };
+    NumericError::Unsolved(format!(
+        "the continuum could not be solved beyond F = {} N on the way to {} N ({}; {cause})",
+        short(model.load),
+        Compact(force),
+        why(e)
+    ))
 }
 
 /// `x` rounded up to three significant digits: a least value to advise, which the advice
@@ -1173,14 +1196,12 @@ impl<'a> Reduced<'a> {
     fn stick_limit(&self) -> f64 {
         let contact = self.contact_forces();
         let mut limit = f64::INFINITY;
-        for i in 0..self.c.pairs {
+        for (i, c) in contact.iter().enumerate() {
             let k = self.c.stiffness[i];
             let shear = k * (self.slip[i] - self.points[i].plastic_slip);
             let rate = k * self.unit[i];
-            let (strength, strength_rate) = (
-                self.friction * contact[i],
-                self.friction * self.contact_unit[i],
-            );
+            let (strength, strength_rate) =
+                (self.friction * c, self.friction * self.contact_unit[i]);
             // g(F) = g0 + F g1 <= 0 for tau - strength and -tau - strength.
             for (g0, g1) in [
                 (shear - strength, rate - strength_rate),
