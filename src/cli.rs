@@ -825,7 +825,7 @@ pub enum CliError {
     /// The fit could not run.
     #[error(transparent)]
     Fit(#[from] FitError),
-    /// A numerical solve failed.
+    /// A numerical solve failed, or refused its inputs.
     #[error("numerical solver: {0}")]
     Numeric(#[from] NumericError),
     /// A figure that cannot be drawn.
@@ -988,6 +988,9 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                         crate::problems::plate::ContinuumMesh::default(),
                     )
                 });
+            if *continuum && let Some(Err(e)) = &solved {
+                return Err(CliError::Numeric(e.clone()));
+            }
             match args.format {
                 ReportFormat::Text => {
                     out.write_all(text::plate(&name, &plate, solved.as_ref()).as_bytes())?
@@ -1039,6 +1042,11 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                         crate::problems::lap::LapContinuumMesh::default(),
                     )
                 });
+            // An answer asked for with --continuum that could not be computed is an error (exit
+            // 1, nothing on stdout); the automatic one is reported as failed in the output.
+            if *continuum && let Some(Err(e)) = &solved {
+                return Err(CliError::Numeric(e.clone()));
+            }
             match args.format {
                 ReportFormat::Text => {
                     out.write_all(text::lap(&name, &joint, force, solved.as_ref()).as_bytes())?

@@ -2894,3 +2894,48 @@ fn output_never_overwrites_the_preset_the_command_reads() {
             .contains("*HEADING")
     );
 }
+
+/// Issue 36: the lap continuum asked for with --continuum either answers with a finite, checked
+/// Delta or exits 1 with the reason on one line; the automatic one says it failed.
+#[test]
+fn the_lap_continuum_answers_or_says_why_not() {
+    // mu = 2 at F = 20 kN: the contact forces' fixed point contracted too slowly (failed after
+    // 60 iterations); it is solved now, within the envelope-free distance of the shear lag that
+    // cover bending gives (beta = 0.175).
+    let text = stdout_of(&["lap", "--continuum", "--set", "mu=2", "--set", "F=20000"]);
+    let line = text
+        .lines()
+        .find(|l| l.contains("vs shear lag"))
+        .expect("the continuum's Delta");
+    let percent: f64 = line
+        .split('(')
+        .nth(1)
+        .and_then(|r| r.split(" %").next())
+        .and_then(|v| v.trim_start_matches('+').parse().ok())
+        .expect("a percentage");
+    assert!((0.0..10.0).contains(&percent), "{line}");
+    // A friction so low that P alone slides the whole interface: refused with mu's least value.
+    for force in ["F=1", "F=0"] {
+        let error = failure(
+            &["lap", "--continuum", "--set", "mu=1e-4", "--set", force],
+            1,
+        );
+        assert!(
+            error.contains("mu = 0.0001 is too small")
+                && error.contains("mu must be at least 0.000166"),
+            "{error}"
+        );
+    }
+    // An overlap far shorter than the plates are thick: refused with L's least value.
+    let error = failure(
+        &["lap", "--continuum", "--set", "L=1e-6", "--set", "F=1e-4"],
+        1,
+    );
+    assert!(
+        error.contains("L = 1e-6 mm is too short") && error.contains("at least 0.0015 mm"),
+        "{error}"
+    );
+    // Not asked for: the report is written (exit 0) and says the continuum failed.
+    let text = stdout_of(&["lap", "--set", "L=1e-6", "--set", "F=1e-4"]);
+    assert!(text.contains("2-D continuum (L13): FAILED"), "{text}");
+}

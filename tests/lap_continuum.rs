@@ -265,3 +265,42 @@ fn bad_inputs_are_refused_without_a_panic() {
         assert!(solve_lap_continuum(params, force, mesh).is_err());
     }
 }
+
+/// Issue 36: `lap --set F=1e-14` printed Delta = 0 mm (-100 % vs shear lag), 1e-13 N -5.66 %,
+/// against +0.70 % at ordinary loads. Below first slip both models are linear in F from their
+/// reference states: the shear-lag Delta by (L2), the continuum's because with the clamping
+/// step's plastic slips held its condensed equilibrium S (s - s_P - F s_F) = k q is linear
+/// (s = s_clamped + F s_F), and Delta's reading is linear in s and q. So Delta / F, and the
+/// difference from the shear lag, are the same at every such F, to round-off.
+#[test]
+fn below_first_slip_delta_is_proportional_to_f_down_to_the_smallest_loads() {
+    for (kt, elastic) in [(1e3, 1000.0), (1e4, 300.0)] {
+        let params = joint(kt);
+        let forces = [1e-14, 1e-13, 1e-10, elastic];
+        let states =
+            solve_lap_continuum_path(params, &forces, LapContinuumMesh::default()).unwrap();
+        let reference = states[3].delta / elastic;
+        let difference = states[3].delta / closed(params, elastic) - 1.0;
+        assert!(difference > 0.005, "K_T {kt}: {difference}");
+        for (state, force) in states.iter().zip(forces) {
+            assert!(
+                (state.delta / force / reference - 1.0).abs() < 1e-9,
+                "K_T {kt}, F = {force} N: Delta = {} mm",
+                state.delta
+            );
+            let here = state.delta / closed(params, force) - 1.0;
+            assert!(
+                (here - difference).abs() < 1e-9,
+                "K_T {kt}, F = {force} N: {here} vs {difference}"
+            );
+            // The slips grow with F too, from the clamped state, with nothing sliding.
+            let (_, end) = *state.slip.last().unwrap();
+            let (_, end_ref) = *states[3].slip.last().unwrap();
+            assert!((end / force / (end_ref / elastic) - 1.0).abs() < 1e-9);
+            assert_eq!(state.nominal_zones.from_cover_ends, 0.0);
+        }
+        // The same states, solved one by one.
+        let alone = solve_lap_continuum(params, 1e-14, LapContinuumMesh::default()).unwrap();
+        assert!((alone.delta / states[0].delta - 1.0).abs() < 1e-12);
+    }
+}

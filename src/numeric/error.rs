@@ -24,6 +24,9 @@ pub enum NumericError {
     /// Inputs the solver does not handle (the message says which and why).
     #[error("{0}")]
     OutOfRange(String),
+    /// A solve that was attempted and failed (the message says where and why).
+    #[error("{0}")]
+    Unsolved(String),
 }
 
 /// The advice of a refusal whose cure is a softer interface: "lower K_T to at most X MPa/mm" (or

@@ -57,7 +57,7 @@
 
 use super::params::{LapParam, LapParams};
 use crate::kernel::params::Compact;
-use crate::numeric::NumericError;
+use crate::numeric::{NumericError, short};
 use std::cell::RefCell;
 
 use crate::numeric::banded::{BandCholesky, NotPositiveDefinite, SymmetricBand};
@@ -97,8 +97,22 @@ const MAX_BAND_ENTRIES: f64 = 1.6e7;
 /// Most elements through each body's thickness.
 const MAX_LAYERS: usize = 32;
 
-/// Fixed-point iterations allowed on the contact forces per increment.
-const MAX_CONTACT_ITERATIONS: usize = 60;
+/// Fixed-point iterations allowed on the contact forces per increment. The iteration contracts
+/// at a rate set by how much the strengths move the contact forces, which grows with mu: on the
+/// bundled joint a few iterations at mu = 0.3, but about 0.85 per iteration at mu = 2 near
+/// F = 10 kN with the covers lifting at x = 0 (about 130 iterations; 60 failed there, issue
+/// 36). Each iteration is one Newton solve on the pairs, mostly with a kept factor.
+const MAX_CONTACT_ITERATIONS: usize = 400;
+/// Times a load increment whose fixed point fails may be halved.
+const MAX_CUTS: u32 = 6;
+/// Most height over length of the overlap's elements: L = 1e-3 mm on the bundled joint (375)
+/// solves, 1e-4 mm (3750) loses precision and 1e-6 mm gives a singular stiffness.
+const MAX_ASPECT: f64 = 500.0;
+/// Largest [`clamping_slide`] accepted (measured: solved at 210, failed at 332).
+const MAX_CLAMPING_SLIDE: f64 = 200.0;
+/// The bounds of the contact forces' relaxation (Aitken's factor is clamped to them).
+const MIN_RELAXATION: f64 = 1.0 / 64.0;
+const MAX_RELAXATION: f64 = 2.0;
 /// Change of the contact forces, relative to the largest, that ends the fixed point.
 const CONTACT_TOLERANCE: f64 = 1e-10;
 /// Largest imbalance of the inner plate's half accepted, relative to F/2 + F_gross/2: measured
@@ -191,13 +205,16 @@ pub struct ContinuumLap {
 /// [`NumericError::OutOfRange`] for inputs outside their domains (the parameters, a force
 /// beyond F_gross = 2 b mu P L, layers outside 1..=32, no force increment), an interface too
 /// stiff for the solver (lambda t1 > 12.5) or a mesh too large (more than 801 interface pairs);
-/// [`NumericError::NoConvergence`] or [`NumericError::Singular`] when the solve fails: at or
-/// within a few tenths of a percent of F_gross (the continuum's own gross-slip force differs
-/// from 2 b mu P L: the held cover end carries part of the clamping force), when the contact
-/// forces do not settle (mu = 1e-6, or covers lifting off over a wide zone at mu = 10), or for
-/// an overlap too short for its plates (L = 1e-6 mm); [`NumericError::OutOfRange`] also when
-/// the answer fails its equilibrium check (an interface too soft for the condensed solve, K_T =
-/// 1e-6 MPa/mm on the bundled joint).
+/// [`NumericError::OutOfRange`] also for an overlap too short for its plates (elements more
+/// than 500 times shorter than high: L < 0.0015 mm on the bundled joint) and for a friction so
+/// low that P alone slides nearly the whole interface (nu K_T / (E lambda mu) > 200: mu <
+/// 1.66e-4 on the bundled joint), both with the least value accepted;
+/// [`NumericError::Unsolved`] when the solve fails, saying where: at or within a few tenths of a
+/// percent of F_gross (the continuum's own gross-slip force differs from 2 b mu P L: the held
+/// cover end carries part of the clamping force), or when the contact forces do not settle even
+/// on halved increments (covers lifting off over a wide zone: mu = 10 beyond 28 kN on the
+/// bundled joint); [`NumericError::OutOfRange`] also when the answer fails its equilibrium check
+/// (an interface too soft for the condensed solve, K_T = 1e-6 MPa/mm on the bundled joint).
 pub fn solve_lap_continuum(
     params: LapParams,
     force: f64,
@@ -288,6 +305,39 @@ pub fn solve_lap_continuum_path(
             Compact(1.0 / decay_rate(&params)),
         )));
     }
+    let breaks = lap_breaks(&params, mesh.layers);
+    let shortest = breaks
+        .overlap
+        .windows(2)
+        .fold(f64::INFINITY, |m, w| m.min(w[1] - w[0]));
+    let aspect = breaks.layer / shortest;
+    // Also refuses a NaN aspect (no overlap element at all).
+    if aspect.is_nan() || aspect > MAX_ASPECT {
+        return Err(NumericError::OutOfRange(format!(
+            "L = {} mm is too short for the continuum solver against plates this thick: the \
+             overlap's elements would be {} times shorter than their height of {} mm (at most \
+             {MAX_ASPECT}, beyond which the plane-stress stiffness loses its digits); L must be \
+             at least {} mm here",
+            Compact(params.length),
+            short(aspect),
+            short(breaks.layer),
+            short(round_up(2.0 * breaks.layer / MAX_ASPECT)),
+        )));
+    }
+    let clamp_sliding = clamping_slide(&params);
+    if clamp_sliding > MAX_CLAMPING_SLIDE {
+        return Err(NumericError::OutOfRange(format!(
+            "mu = {} is too small for the continuum solver on this joint: the clamping \
+             pressure's Poisson expansion alone would make the interface slide over nearly all \
+             the overlap (nu K_T / (E lambda mu) = {} > {MAX_CLAMPING_SLIDE}), leaving the inner \
+             plate no stuck point to hold it; mu must be at least {} here (or K_T lower)",
+            Compact(params.friction),
+            short(clamp_sliding),
+            short(round_up(
+                params.friction * clamp_sliding / MAX_CLAMPING_SLIDE
+            )),
+        )));
+    }
     let grid = Grid::new(&params, mesh);
     let band = grid.unknowns as f64 * (grid.bandwidth + 1) as f64;
     if band > MAX_BAND_ENTRIES {
@@ -304,27 +354,49 @@ pub fn solve_lap_continuum_path(
     let top = forces.iter().fold(0.0_f64, |m, f| m.max(*f));
     let mut model = Reduced::new(&condensed, &params, top);
     // Step 1: P alone (the load parameter scales P from 0 to 1), one increment.
-    let mut iterations = model.step(1.0)?;
+    let mut iterations = model.step(1.0).map_err(|e| {
+        NumericError::Unsolved(format!(
+            "the continuum's clamping step (P = {} MPa alone) could not be solved: {}",
+            Compact(params.pressure),
+            why(&e)
+        ))
+    })?;
     let clamped = model.state();
     // Step 2: F from 0 in equal increments between the requested forces (the load parameter
     // is F in N).
     model.start_force_step();
+    let stick = model.stick_limit();
     let mut states = Vec::with_capacity(forces.len());
     let mut increments = 0;
     for &force in forces {
         let from = model.load;
-        let steps =
-            (((force - from) / gross * mesh.force_increments as f64).ceil() as usize).max(1);
-        for i in 1..=steps {
-            let target = if i == steps {
-                force
-            } else {
-                from + (force - from) * i as f64 / steps as f64
-            };
-            iterations += model.step(target)?;
-        }
-        increments += steps;
-        let result = model.result(&grid, &clamped, increments, iterations);
+        let slip_from_clamp = if force <= stick {
+            // Below first slip the answer is the clamped state plus F times the unit-force
+            // solution, exactly: no increment can lose F's digits against the clamping state.
+            increments += 1;
+            model.stick_at(&clamped, force)
+        } else {
+            let steps =
+                (((force - from) / gross * mesh.force_increments as f64).ceil() as usize).max(1);
+            for i in 1..=steps {
+                let target = if i == steps {
+                    force
+                } else {
+                    from + (force - from) * i as f64 / steps as f64
+                };
+                iterations += model
+                    .step_with_cuts(target, MAX_CUTS)
+                    .map_err(|e| unsolved_force_step(&params, &model, force, &e))?;
+            }
+            increments += steps;
+            model
+                .slip
+                .iter()
+                .zip(&clamped.slip)
+                .map(|(s, s0)| s - s0)
+                .collect()
+        };
+        let result = model.result(&grid, &clamped, &slip_from_clamp, increments, iterations);
         let finite = result.delta.is_finite()
             && result.clamping_delta.is_finite()
             && [&result.slip, &result.shear, &result.contact_pressure]
@@ -358,6 +430,74 @@ pub fn solve_lap_continuum_path(
         states.push(result);
     }
     Ok(states)
+}
+
+/// Why the force step failed beyond the committed state of `model`, on the way to `force` (N).
+fn unsolved_force_step(
+    params: &LapParams,
+    model: &Reduced<'_>,
+    force: f64,
+    e: &NumericError,
+) -> NumericError {
+    let open = model.contact_forces().iter().filter(|c| **c < 0.0).count();
+    let gross = params.gross_slip_force();
+    let cause = if open > 0 {
+        format!(
+            "{open} of {} pairs would open there, held by the tie: the covers lift off as mu \
+             (t1/2 + t2) / L = {} grows",
+            model.c.pairs,
+            short(
+                params.friction * (0.5 * params.inner_thickness + params.cover_thickness)
+                    / params.length
+            )
+        )
+    } else {
+        format!(
+            "{} N is {} % below F_gross = 2 b mu P L = {} N, but the continuum's own \
+             gross-slip force is lower: the held cover end carries part of the clamping force",
+            short(model.load),
+            short(100.0 * (1.0 - model.load / gross)),
+            Compact(gross)
+        )
+    };
+    NumericError::Unsolved(format!(
+        "the continuum could not be solved beyond F = {} N on the way to {} N ({}; {cause})",
+        short(model.load),
+        Compact(force),
+        why(e)
+    ))
+}
+
+/// `x` rounded up to three significant digits: a least value to advise, which the advice
+/// must not undercut.
+fn round_up(x: f64) -> f64 {
+    let unit = 10f64.powf(x.abs().log10().floor() - 2.0);
+    (x / unit).ceil() * unit
+}
+
+/// What a failed increment means, in the solver's own terms (the shared error's "load" is the
+/// clamping step's fraction of P or F in N, and its cuts are this solver's halvings).
+fn why(e: &NumericError) -> String {
+    match e {
+        NumericError::NoConvergence { cuts, .. } => format!(
+            "the contact forces did not settle, even after {cuts} halvings of the load increment"
+        ),
+        NumericError::Singular(row) => {
+            format!("the interface's tangent stiffness was singular (row {row})")
+        }
+        other => other.to_string(),
+    }
+}
+
+/// nu K_T / (E lambda mu), E the softer plate's modulus: the slip the clamping pressure's
+/// Poisson strain nu P / E demands over the shear-lag length 1/lambda, over the saturation slip
+/// mu P / K_T (P cancels). Where it is large, P alone makes nearly every pair slide; the inner
+/// plate, held only by the interface, then has no stuck pair to fix its position and the
+/// condensed tangent is singular along its rigid sliding. Measured on the bundled joint (K_T =
+/// 1e2, 1e3, 1e4 MPa/mm): solved up to 166 to 210, failed from 332 to 350 on.
+fn clamping_slide(p: &LapParams) -> f64 {
+    let modulus = p.inner_modulus.min(p.cover_modulus);
+    LAP_POISSON * p.tangential_stiffness / (modulus * decay_rate(p) * p.friction)
 }
 
 /// lambda = sqrt(2 K_T (1/(E1 t1) + 1/(2 E2 t2))) (1/mm): the rate at which the elastic slip
@@ -1026,6 +1166,29 @@ impl<'a> Reduced<'a> {
                 .sum::<f64>()
     }
 
+    /// One increment to `load`; when its fixed point fails (nothing is committed then), two
+    /// half increments, down to `cuts_left` halvings: a closer start is what the fixed point
+    /// needs where the covers lift off (mu = 4 near 0.5 F_gross on the bundled joint, issue 36).
+    fn step_with_cuts(&mut self, load: f64, cuts_left: u32) -> Result<usize, NumericError> {
+        let start = self.state();
+        match self.step(load) {
+            Err(NumericError::NoConvergence { .. }) if cuts_left > 0 => {
+                self.restore(&start);
+                let middle = 0.5 * (self.load + load);
+                let first = self.step_with_cuts(middle, cuts_left - 1)?;
+                Ok(first + self.step_with_cuts(load, cuts_left - 1)?)
+            }
+            Err(NumericError::NoConvergence { .. }) => {
+                self.restore(&start);
+                Err(NumericError::NoConvergence {
+                    load,
+                    cuts: MAX_CUTS,
+                })
+            }
+            other => other,
+        }
+    }
+
     /// One increment to `load`: the fixed point on the contact forces, each iterate solved by
     /// Newton from the state committed at the previous increment. Returns the iterations.
     fn step(&mut self, load: f64) -> Result<usize, NumericError> {
@@ -1038,6 +1201,14 @@ impl<'a> Reduced<'a> {
             .map(|(c, u)| c + (load - self.load) * u)
             .collect();
         let mut guess: Option<Vec<f64>> = None;
+        // Aitken's relaxation of the contact forces (Irons and Tuck): each update moves by
+        // omega times the change, omega from the last two changes r: omega_n = -omega_(n-1)
+        // r_(n-1).(r_n - r_(n-1)) / |r_n - r_(n-1)|^2, the secant estimate of the best step along
+        // them. The plain iteration (omega = 1) contracts slowly where mu is large (0.85 per
+        // iteration at mu = 2) and falls into a two-state cycle with wide lift-off (mu = 5 on
+        // the bundled joint), issue 36.
+        let mut relaxation: f64 = 1.0;
+        let mut previous: Option<Vec<f64>> = None;
         for iteration in 1..=MAX_CONTACT_ITERATIONS {
             self.restore(&start);
             // Newton starts from the last iterate's slips (the history is the increment's start).
@@ -1052,7 +1223,21 @@ impl<'a> Reduced<'a> {
                 .iter()
                 .zip(&contact)
                 .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
-            contact = next;
+            let residual: Vec<f64> = next.iter().zip(&contact).map(|(n, c)| n - c).collect();
+            if let Some(last) = &previous {
+                let (mut along, mut norm) = (0.0, 0.0);
+                for (r, l) in residual.iter().zip(last) {
+                    along += l * (r - l);
+                    norm += (r - l) * (r - l);
+                }
+                if norm > 0.0 {
+                    relaxation = (-relaxation * along / norm).clamp(MIN_RELAXATION, MAX_RELAXATION);
+                }
+            }
+            for (c, r) in contact.iter_mut().zip(&residual) {
+                *c += relaxation * r;
+            }
+            previous = Some(residual);
             guess = Some(self.slip.clone());
             if change <= CONTACT_TOLERANCE * scale {
                 // The strengths of the converged contact forces (a last Newton solve would move
@@ -1063,10 +1248,56 @@ impl<'a> Reduced<'a> {
         Err(NumericError::NoConvergence { load, cuts: 0 })
     }
 
+    /// The largest force F (N) up to which, from the clamped state, every pair sticks: the
+    /// plastic slips stay those of the clamping step, and the answer is linear in F. With them
+    /// fixed, the condensed equilibrium S (s - s_P - F s_F) = k q has the solution
+    /// s = s_clamped + F s_F, so each pair's Jenkins force is t_c + F k s_F and its contact force
+    /// c_c + F c_F: the pair sticks while |t_c + F k s_F| <= mu (c_c + F c_F), two inequalities
+    /// linear in F. A pair already at its strength and loaded further gives 0.
+    fn stick_limit(&self) -> f64 {
+        let contact = self.contact_forces();
+        let mut limit = f64::INFINITY;
+        for (i, c) in contact.iter().enumerate() {
+            let k = self.c.stiffness[i];
+            let shear = k * (self.slip[i] - self.points[i].plastic_slip);
+            let rate = k * self.unit[i];
+            let (strength, strength_rate) =
+                (self.friction * c, self.friction * self.contact_unit[i]);
+            // g(F) = g0 + F g1 <= 0 for tau - strength and -tau - strength.
+            for (g0, g1) in [
+                (shear - strength, rate - strength_rate),
+                (-shear - strength, -rate - strength_rate),
+            ] {
+                if g1 > 0.0 {
+                    limit = limit.min((-g0).max(0.0) / g1);
+                }
+            }
+        }
+        limit
+    }
+
+    /// Commits the stick state at `force` (N, at most [`Reduced::stick_limit`]) after the
+    /// clamping state `clamped`; returns the slips from the clamped state, F s_F, computed as
+    /// such rather than as a difference of two nearly equal totals.
+    fn stick_at(&mut self, clamped: &State, force: f64) -> Vec<f64> {
+        let increment: Vec<f64> = self.unit.iter().map(|u| force * u).collect();
+        self.restore(clamped);
+        self.slip = clamped
+            .slip
+            .iter()
+            .zip(&increment)
+            .map(|(s, ds)| s + ds)
+            .collect();
+        self.load = force;
+        increment
+    }
+
+    /// The state's answer; `slip_from_clamp` is s - s_clamped at each pair (mm).
     fn result(
         &self,
         grid: &Grid,
         clamped: &State,
+        slip_from_clamp: &[f64],
         increments: usize,
         iterations: usize,
     ) -> ContinuumLap {
@@ -1076,8 +1307,8 @@ impl<'a> Reduced<'a> {
         let xs = &grid.pair_x;
         let slip: Vec<(f64, f64)> = xs
             .iter()
-            .zip(self.slip.iter().zip(&clamped.slip))
-            .map(|(&x, (s, s0))| (x, s - s0))
+            .zip(slip_from_clamp)
+            .map(|(&x, ds)| (x, *ds))
             .collect();
         let forces: Vec<f64> = self
             .slip
@@ -1139,9 +1370,20 @@ impl<'a> Reduced<'a> {
             from_inner_end: last_of_run(&mut (0..xs.len())).map_or(0.0, |i| xs[i]),
             from_cover_ends: last_of_run(&mut (0..xs.len()).rev()).map_or(0.0, |i| length - xs[i]),
         };
+        // Delta from the clamped state as F s_F's reading plus the plastic slips' change, not as
+        // a difference of totals: P alone gives about 1.7e-3 mm on the bundled joint, whose
+        // round-off (4e-19 mm) swallowed Delta at F = 1e-14 N (issue 36).
+        let delta = self.load * self.delta_unit
+            + self
+                .plastic()
+                .zip(clamped.points.iter())
+                .zip(&c.stiffness)
+                .zip(&c.delta_per_pair)
+                .map(|(((q, q0), k), d)| d * k * (q - q0.plastic_slip))
+                .sum::<f64>();
         ContinuumLap {
             force: self.load,
-            delta: self.delta() - self.clamping_delta,
+            delta,
             clamping_delta: self.clamping_delta,
             separated: contact
                 .iter()
@@ -1348,6 +1590,41 @@ mod tests {
             (n.from_cover_ends - l.from_cover_ends).abs() < 0.5,
             "{n:?} {l:?}"
         );
+    }
+
+    /// Issue 36: across the friction coefficients the tool sends users to the continuum for
+    /// (mu outside the envelope's 0.1 to 0.6), up to 0.99 F_gross, the solver answers, in
+    /// equilibrium, with Delta growing along the path; a coarse mesh keeps it to seconds.
+    #[test]
+    fn it_answers_across_the_friction_range_up_to_gross_slip() {
+        let mesh = LapContinuumMesh {
+            layers: 2,
+            force_increments: 8,
+        };
+        for mu in [2e-3, 0.05, 1.0, 2.0, 5.0] {
+            let params = LapParams {
+                friction: mu,
+                ..JOINT
+            };
+            let gross = params.gross_slip_force();
+            let forces = [0.0, 1e-9 * gross, 0.3 * gross, 0.9 * gross, 0.99 * gross];
+            let states = solve_lap_continuum_path(params, &forces, mesh)
+                .unwrap_or_else(|e| panic!("mu = {mu}: {e}"));
+            let mut last = 0.0;
+            for (state, force) in states.iter().zip(forces) {
+                assert!(
+                    state.delta.is_finite() && state.delta >= last,
+                    "mu {mu} F {force}"
+                );
+                last = state.delta;
+                let half = 0.5 * force;
+                assert!(
+                    (state.transferred_force - half).abs() <= 1e-6 * (half + 0.5 * gross),
+                    "mu {mu} F {force}: {}",
+                    state.transferred_force
+                );
+            }
+        }
     }
 
     #[test]

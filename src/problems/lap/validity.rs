@@ -94,8 +94,23 @@ impl LapJoint {
             Ok(softer) if delta > 0.0 => {
                 (softer.regularized(force).joint_displacement() / delta - 1.0).abs()
             }
-            // At F = 0 there is no Delta to be off; K_eff in range whenever K_T is.
-            _ => 0.0,
+            // At F = 0 both Deltas vanish: r is its limit as F -> 0+. Below first slip each
+            // joint is linear in F (every interface point elastic, (L2)), so the ratio of the
+            // two Deltas is the same at every force up to the smaller F_1: take it at half of
+            // that (issue 36: r = 0 here made the bound jump at zero load).
+            Ok(softer) => {
+                let linear = 0.5 * self.first_slip_force().min(softer.first_slip_force());
+                let stiff = self.regularized(self.clamped_force(linear));
+                let soft = softer.regularized(softer.clamped_force(linear));
+                let stiff = stiff.joint_displacement();
+                if stiff > 0.0 {
+                    (soft.joint_displacement() / stiff - 1.0).abs()
+                } else {
+                    0.0
+                }
+            }
+            // K_eff is in range whenever K_T is.
+            Err(_) => 0.0,
         };
         let lambda_l = lambda * p.length;
         let mismatch = LAP_POISSON
@@ -225,6 +240,21 @@ mod tests {
         assert!(v.clamping_prestress > 0.0);
         let same = joint(|_| {}).validity(force);
         assert!(v.expected_error.unwrap() > same.expected_error.unwrap());
+    }
+
+    #[test]
+    fn the_bound_at_zero_load_is_the_limit_of_its_neighbours() {
+        // Issue 36: 0.0281 at F = 0 against 0.0363 at F = 1e-9 N. Below first slip both Deltas
+        // are linear in F, so r (and the bound) is the same at every small force, and F = 0
+        // must give that value. Steel covers too: q_p > 0 does not depend on F.
+        for j in [joint(|_| {}), joint(|p| p.cover_modulus = 210_000.0)] {
+            let at = |f: f64| j.validity(j.force(f).unwrap()).expected_error.unwrap();
+            let zero = at(0.0);
+            for f in [1e-9, 1e-6 * j.first_slip_force()] {
+                assert!((at(f) / zero - 1.0).abs() < 1e-9, "{f}: {} {zero}", at(f));
+            }
+            assert!(j.validity(j.force(0.0).unwrap()).shear_compliance > 0.005);
+        }
     }
 
     #[test]

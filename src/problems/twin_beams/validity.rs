@@ -55,7 +55,11 @@ impl TwinBeams {
             BeamTheory::EulerBernoulli => deflection,
             BeamTheory::Timoshenko => deflection - shear,
         };
-        let shear_share = if euler > 0.0 { shear / euler } else { 0.0 };
+        let shear_share = if euler > 0.0 {
+            shear / euler
+        } else {
+            self.unloaded_shear_share()
+        };
         let mut bound = BEAM_STUBBINESS_FACTOR * p.half_height / p.length
             + BEAM_DEFLECTION_FACTOR * (euler + shear) / p.length;
         if p.theory == BeamTheory::EulerBernoulli {
@@ -69,6 +73,22 @@ impl TwinBeams {
             expected_error,
             friction_strain,
             validity: expected_error.map_or(Validity::NotCalibrated, Validity::of_error),
+        }
+    }
+
+    /// The shear share at F = 0, where both deflections vanish: its limit as F -> 0+. Below F_1
+    /// the whole interface is in microslip and the regularized w(L) is linear in F (B6), as the
+    /// shear deflection is at every force (B13), so their ratio is the same at every force in
+    /// (0, F_1]: it is taken at F_1 / 2, and the bound is continuous at zero load instead of
+    /// dropping the share there (issue 36).
+    fn unloaded_shear_share(&self) -> f64 {
+        let force = TipForce::clamped(0.5 * self.first_macroslip_force());
+        let euler = self.with_theory(BeamTheory::EulerBernoulli);
+        let deflection = euler.regularized(force).tip_deflection();
+        if deflection > 0.0 {
+            self.shear_deflection(force) / deflection
+        } else {
+            0.0
         }
     }
 
@@ -98,6 +118,27 @@ mod tests {
         assert_eq!(timoshenko.validity(low).validity, Validity::Holds);
         let high = TipForce::new(200.0).unwrap();
         assert_eq!(timoshenko.validity(high).validity, Validity::Holds);
+    }
+
+    #[test]
+    fn the_bound_at_zero_load_is_the_limit_of_its_neighbours() {
+        // Issue 36: Euler-Bernoulli's bound was 0.01 at F = 0 and 0.0367 at F = 1e-9 N (the
+        // shear share, constant below F_1, was dropped at zero load).
+        use crate::TwinBeamsParams;
+        let euler = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        for beams in [euler, euler.with_theory(BeamTheory::Timoshenko)] {
+            let at = |f: f64| {
+                let v = beams.validity(TipForce::new(f).unwrap());
+                (v.expected_error.unwrap(), v.shear_share)
+            };
+            let (zero, share) = at(0.0);
+            assert!((share - 0.0267).abs() < 2e-4, "{share}");
+            for f in [1e-9, 1e-6 * beams.first_macroslip_force()] {
+                let (bound, near) = at(f);
+                assert!((near / share - 1.0).abs() < 1e-9, "{f}: {near} {share}");
+                assert!((bound - zero).abs() < 1e-6 * zero, "{f}: {bound} {zero}");
+            }
+        }
     }
 
     /// The calibration's edge: every CalculiX case (V2) was measured to hold on lies inside the

@@ -361,7 +361,12 @@ impl LapReport {
         match &self.continuum {
             None => {}
             Some(LapContinuumReport::Failed { error }) => {
-                let _ = writeln!(out, "2-D continuum (L13): no answer: {}", sanitize(error));
+                let _ = writeln!(
+                    out,
+                    "2-D continuum (L13): FAILED, no answer (the shear-lag numbers above are \
+                     unchecked): {}",
+                    sanitize(error)
+                );
             }
             Some(LapContinuumReport::Solved(c)) => {
                 let pressure = match self.inputs.0 {
