@@ -2896,7 +2896,8 @@ fn output_never_overwrites_the_preset_the_command_reads() {
 }
 
 /// Issue 36: the lap continuum asked for with --continuum either answers with a finite, checked
-/// Delta or exits 1 with the reason on one line; the automatic one says it failed.
+/// Delta or exits non-zero with the reason on one line (2 for inputs it refuses at the door, as
+/// every refusal; 1 for a solve that failed); the automatic one says it failed.
 #[test]
 fn the_lap_continuum_answers_or_says_why_not() {
     // mu = 2 at F = 20 kN: the contact forces' fixed point contracted too slowly (failed after
@@ -2918,7 +2919,7 @@ fn the_lap_continuum_answers_or_says_why_not() {
     for force in ["F=1", "F=0"] {
         let error = failure(
             &["lap", "--continuum", "--set", "mu=1e-4", "--set", force],
-            1,
+            2,
         );
         assert!(
             error.contains("mu = 0.0001 is too small")
@@ -2929,7 +2930,7 @@ fn the_lap_continuum_answers_or_says_why_not() {
     // An overlap far shorter than the plates are thick: refused with L's least value.
     let error = failure(
         &["lap", "--continuum", "--set", "L=1e-6", "--set", "F=1e-4"],
-        1,
+        2,
     );
     assert!(
         error.contains("L = 1e-6 mm is too short") && error.contains("at least 0.0015 mm"),
