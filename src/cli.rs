@@ -241,9 +241,9 @@ pub enum Command {
         #[arg(long, value_name = "T", default_value_t = verify::DEFAULT_TOLERANCE)]
         tolerance: f64,
     },
-    /// Write a CalculiX input deck for these parameters (README: "Benchmark your FE code").
+    /// Write a CalculiX input deck for these parameters (see docs/guide.md).
     Deck {
-        /// The FE code (ccx: CalculiX 2.20; Abaqus reads the same keywords, see README).
+        /// The FE code (ccx: CalculiX 2.20; Abaqus reads the same keywords, see docs/guide.md).
         #[arg(value_enum)]
         code: FeCode,
         /// Which benchmark.

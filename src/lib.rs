@@ -120,6 +120,17 @@ pub mod app {
         pub use crate::tui::effects::update_blocking;
         pub use crate::tui::theme::{Charset, Theme};
         pub use crate::tui::ui::draw;
+
+        /// What the user guide's generated tables are rendered from (tests/guide_tables.rs):
+        /// the key map the `?` overlay prints, and the command line's clap definition.
+        pub mod guide {
+            pub use crate::tui::keymap::{BINDINGS, Binding, Context, GLOBAL_KEYS, context_title};
+
+            /// The command line as clap defines it: every subcommand with its about and flags.
+            pub fn command() -> clap::Command {
+                <crate::cli::Cli as clap::CommandFactory>::command()
+            }
+        }
     }
 }
 

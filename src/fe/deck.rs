@@ -24,7 +24,7 @@ use crate::kernel::params::Compact;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// How fine the deck's mesh is. `Fine` halves every element size of `Coarse`: running both is the
-/// mesh-convergence check (README, "Benchmark your FE code").
+/// mesh-convergence check (docs/guide.md, "Benchmark your FE code").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum DeckMesh {
     /// About 100 elements along the beam and 2 through each beam's height; 4 through the plate.

@@ -10,7 +10,7 @@
 //! - [`run`]: running CalculiX on a deck in a work folder of its own, with its log kept.
 //!
 //! Why the decks are built as they are, and how they differ from the paper's Ansys model, is in
-//! docs/theory.md, "Benchmarking an FE code"; the measured agreement is in README.md.
+//! docs/theory.md, "Benchmarking an FE code"; the measured agreement is in docs/guide.md.
 
 pub mod compare;
 pub mod deck;

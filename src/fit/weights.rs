@@ -8,7 +8,7 @@
 //!   a gauge whose error does not grow with the reading (resolution, electrical noise).
 //! - [`Weights::Relative`]: sigma proportional to |w|, the factor estimated from the residuals.
 //!   Right for errors that scale with the reading (gain, calibration, a displacement read off a
-//!   strain); the default for measured curves, see the README's fit section for the measurement.
+//!   strain); the default for measured curves, see docs/guide.md, "Fit measurements", for the measurement.
 //! - [`Weights::Sigma`]: each point's sigma given in mm and taken as known: no factor is estimated,
 //!   and the reduced chi-square says whether the given sigmas fit the residuals.
 

@@ -1165,7 +1165,7 @@ impl App {
             }
             _ => return false,
         };
-        // All or nothing: a paste longer than the input takes is refused whole (as the README
+        // All or nothing: a paste longer than the input takes is refused whole (as the user guide
         // says), never cut, so that a value is never entered half pasted.
         let mut trial = input.clone();
         let complete = line

@@ -3,7 +3,7 @@
 //! [`keymap`] (keys), [`text_input`] (typed text), [`terminal`] (entering, leaving, suspending),
 //! `signals` and [`ui`] (drawing).
 //!
-//! Over SSH (see README, "Limits"):
+//! Over SSH (see docs/guide.md, "Limits"):
 //! - The screen is redrawn only after a key, a paste or a resize; there is no frame rate.
 //! - A reader thread turns terminal input into events. The loop applies every queued event, for
 //!   up to [`BATCH`] at a time, then draws once, so a storm of keys costs one frame per batch.
