@@ -214,7 +214,7 @@ pub fn resolve_program(program: &str) -> Result<PathBuf, RunError> {
 /// at once.
 ///
 /// The solver runs in a process group of its own, ended as a whole when the run stops for any
-/// reason other than the solver's own exit: a stop, an error, a panic (the [`Solver`] guard's
+/// reason other than the solver's own exit: a stop, an error, a panic (the `Solver` guard's
 /// `Drop`). On Linux the kernel also ends it if microslip dies without a chance to (SIGKILL).
 /// Its own group also keeps the terminal's Ctrl-C from reaching it directly: microslip decides.
 ///

@@ -25,6 +25,8 @@ use crate::problems::UnknownParam;
 use crate::problems::inputs::Inputs;
 
 pub use parse::apply_assignment;
+/// The TUI's value field parses as `--set` and `:` do (the same refusals, the same range).
+#[cfg(feature = "app")]
 pub(crate) use parse::parse_value;
 pub use store::{SaveError, check_name, save_atomic, user_preset_dir, user_presets};
 pub use write::to_toml;

@@ -163,7 +163,7 @@ impl Serialize for ExpectedDifferences {
 }
 
 /// How far the flat model's P_r/P strays from 1, and the limits of "constant pressure", as
-/// fractions: in JSON under their old keys and with `_fraction` ([`super::serialize_fractions`]).
+/// fractions: in JSON under their old keys and with `_fraction` (`serialize_fractions`).
 #[derive(Debug, Clone, Copy)]
 pub struct PressureDeviations {
     /// Mean |P_r/P - 1|.
