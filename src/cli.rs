@@ -1215,6 +1215,19 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             format,
             output,
         }) => {
+            // Before any work: a file name that no format has is refused at once.
+            let format = FigureFormat::choose(
+                *format,
+                output.as_deref(),
+                "-o/--output",
+                &[
+                    FigureFormat::Svg,
+                    FigureFormat::Png,
+                    FigureFormat::Pdf,
+                    FigureFormat::Csv,
+                ],
+                FigureFormat::Svg,
+            )?;
             let command = format!("plot (a {} chart)", chart.kind());
             let (_, model) = load(inputs, chart.kind(), &command)?;
             let shown = shown_roles(series.as_deref(), *no_cursor)?;
@@ -1269,8 +1282,16 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                         plot.series.retain(|s| s.role != SeriesRole::Cursor);
                     }
                     let pinned = pinned_models(&model, pins)?;
-                    let mut plot =
+                    let plot =
                         crate::chart::pins::with_pinned_models(plot, &model, *chart, &pinned, mode);
+                    // A figure names each curve by its own values (the terminal's `mu 0.2->0.3`
+                    // reads as a change on paper); CSV keeps its series names.
+                    let own: Vec<(u8, crate::Inputs)> =
+                        (1u8..).zip(pinned.iter().map(|m| m.inputs())).collect();
+                    let mut plot = match format.figure() {
+                        Some(_) => crate::chart::pins::named_by_values(plot, &model.inputs(), &own),
+                        None => plot,
+                    };
                     plot.caption = Some(crate::chart::family::parameter_text(
                         &model.inputs(),
                         &[chart.x_param()],
@@ -1278,18 +1299,6 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                     plot
                 }
             };
-            let format = FigureFormat::choose(
-                *format,
-                output.as_deref(),
-                "-o/--output",
-                &[
-                    FigureFormat::Svg,
-                    FigureFormat::Png,
-                    FigureFormat::Pdf,
-                    FigureFormat::Csv,
-                ],
-                FigureFormat::Svg,
-            )?;
             let bytes = match format.figure() {
                 Some(figure_format) => figure::render(&plot, figure_format)?,
                 None => chart_csv(&plot)?,

@@ -167,10 +167,11 @@ const PALETTE: [RGBColor; 7] = [
     RGBColor(120, 120, 120),
 ];
 
-/// Colours of pinned curves (drawn dashed), by pin number: set apart from [`PALETTE`].
+/// Colours of pinned curves (drawn dash-dotted), by pin number: set apart from [`PALETTE`] and from
+/// Coulomb's black (a dark grey pin 1 was taken for Coulomb on paper).
 const PIN_PALETTE: [RGBColor; 4] = [
-    RGBColor(80, 80, 80),
     RGBColor(117, 112, 179),
+    RGBColor(231, 41, 138),
     RGBColor(166, 118, 29),
     RGBColor(102, 166, 30),
 ];
@@ -240,8 +241,9 @@ fn look(role: SeriesRole) -> Look {
         SeriesRole::Continuum => points(PALETTE[5], Marker::Square),
         SeriesRole::Measured => points(PALETTE[4], Marker::Triangle),
         SeriesRole::External => points(PALETTE[6], Marker::Triangle),
+        // Dash-dot: neither Coulomb's even dashes nor the limit's dots.
         SeriesRole::Pin(n) => Look {
-            dashes: Some("10 5"),
+            dashes: Some("10 4 2 4"),
             ..line(nth(&PIN_PALETTE, n))
         },
         SeriesRole::Family(n) => line(nth(&PALETTE, n)),
