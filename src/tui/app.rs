@@ -398,7 +398,10 @@ impl App {
     /// What `x` wrote, or why nothing.
     fn exported(&mut self, result: Result<PathBuf, ExportError>) {
         match result {
-            Ok(svg) => self.info(format!("chart exported: {} (+ .csv data)", svg.display())),
+            Ok(svg) => self.info(format!(
+                "chart exported: {} (+ .png, .pdf, .csv data)",
+                svg.display()
+            )),
             Err(ExportError::Failed { path, reason }) => {
                 self.error(format!("cannot export to {}: {reason}", path.display()))
             }
@@ -2623,7 +2626,14 @@ mod tests {
         set_typed(&mut app, "mu", "0.2");
         set_typed(&mut app, "KT", "1000");
         press(&mut app, Action::ExportChart);
-        let svg = std::fs::read_to_string(dir.path().join("microslip-w-vs-f.svg")).unwrap();
+        let file = |extension: &str| dir.path().join(format!("microslip-w-vs-f.{extension}"));
+        assert!(
+            std::fs::read(file("png"))
+                .unwrap()
+                .starts_with(b"\x89PNG\r\n\x1a\n")
+        );
+        assert!(std::fs::read(file("pdf")).unwrap().starts_with(b"%PDF-"));
+        let svg = std::fs::read_to_string(file("svg")).unwrap();
         for text in [
             "L = 200 mm, b = 20 mm",
             // F is the x axis: not in the caption.
@@ -2681,7 +2691,8 @@ mod tests {
         press(&mut app, Action::PreviousChart);
         press(&mut app, Action::ExportChart);
         assert!(app.message().unwrap().is_error);
-        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 6);
+        // Three exports of four files each (SVG, PNG, PDF, CSV).
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 12);
     }
 
     #[test]
