@@ -370,7 +370,7 @@ impl App {
             .state()
             .pins
             .iter()
-            .map(|pin| (pin.number, pin.inputs.clone()))
+            .map(|pin| (pin.number, pin.inputs))
             .collect();
         let mut plot = pins::named_by_values(self.plot.clone(), &current, &pinned);
         let x_param = match self.varied() {
