@@ -336,11 +336,12 @@ pub enum Command {
         /// Leave out the cursor (the vertical line at the current value).
         #[arg(long)]
         no_cursor: bool,
-        /// Output format (default: csv for a FILE ending in .csv, else svg).
+        /// Output format; default: the FILE's extension (.svg, .png, .pdf or .csv; another
+        /// extension is refused), else svg.
         #[arg(long, value_enum)]
         format: Option<FigureFormat>,
         /// Write to FILE instead of stdout (replaced atomically if it exists).
-        #[arg(short = 'o', long, value_name = "FILE.svg")]
+        #[arg(short = 'o', long, value_name = "FILE.svg|png|pdf|csv")]
         output: Option<PathBuf>,
     },
     /// Regenerate the paper's figures, the cycle loop and D vs F_a: SVG + CSV each, and an
@@ -353,6 +354,9 @@ pub enum Command {
         /// Leave out the finite-element points (faster).
         #[arg(long)]
         no_fe: bool,
+        /// The figures' format: svg, png (1600 x 1000 px) or pdf; each with its CSV data.
+        #[arg(long, value_enum, default_value = "svg")]
+        format: FigureFormat,
         /// Your bench instead of the paper's (default without them: the paper's figure set).
         #[command(flatten)]
         inputs: InputArgs,
@@ -678,8 +682,80 @@ pub enum CompareFormat {
 pub enum FigureFormat {
     /// An SVG figure: axes with units, legend, the chart's curves and points.
     Svg,
+    /// The same figure as a PNG image of 1600 x 1000 px.
+    Png,
+    /// The same figure as a one-page PDF (vector, font embedded).
+    Pdf,
     /// The chart's points: series, x, y (with the axis titles).
     Csv,
+}
+
+impl FigureFormat {
+    /// The figure format, or `None` for CSV.
+    fn figure(self) -> Option<figure::Format> {
+        match self {
+            FigureFormat::Svg => Some(figure::Format::Svg),
+            FigureFormat::Png => Some(figure::Format::Png),
+            FigureFormat::Pdf => Some(figure::Format::Pdf),
+            FigureFormat::Csv => None,
+        }
+    }
+
+    /// The extension, also the name `--format` takes.
+    fn extension(self) -> &'static str {
+        self.figure().map_or("csv", figure::Format::extension)
+    }
+
+    /// The format of `output`'s extension and `--format`, which must agree: a file named `w.png`
+    /// holds a PNG. No extension (or stdout) takes `--format`, else `default`. An extension no
+    /// format has is refused, so a figure is never written under a name that lies about it.
+    fn choose(
+        format: Option<FigureFormat>,
+        output: Option<&std::path::Path>,
+        flag: &str,
+        accepted: &[FigureFormat],
+        default: FigureFormat,
+    ) -> Result<FigureFormat, CliError> {
+        let list = accepted
+            .iter()
+            .map(|f| format!(".{}", f.extension()))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let shown = || {
+            report::sanitize(&output.map(|p| p.display().to_string()).unwrap_or_default())
+                .into_owned()
+        };
+        let by_name = match output.and_then(|p| p.extension()) {
+            None => None,
+            Some(extension) => Some(
+                accepted
+                    .iter()
+                    .copied()
+                    .find(|f| extension.eq_ignore_ascii_case(f.extension()))
+                    .ok_or_else(|| {
+                        CliError::Invalid(format!(
+                            "invalid {flag} = '{}': microslip writes {list} (the extension chooses the format)",
+                            shown()
+                        ))
+                    })?,
+            ),
+        };
+        match (format, by_name) {
+            (Some(asked), _) if !accepted.contains(&asked) => Err(CliError::Invalid(format!(
+                "invalid --format = {}: accepted here: {}",
+                asked.extension(),
+                list.replace('.', "")
+            ))),
+            (Some(asked), Some(named)) if asked != named => Err(CliError::Invalid(format!(
+                "invalid --format = {} with {flag} = '{}': the file's extension says .{}; name the file .{} or leave out --format",
+                asked.extension(),
+                shown(),
+                named.extension(),
+                asked.extension()
+            ))),
+            (asked, named) => Ok(named.or(asked).unwrap_or(default)),
+        }
+    }
 }
 
 /// What `kt --tolerance` is a tolerance of.
@@ -1212,6 +1288,19 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             output,
         }) => {
             refuse_overwriting_an_input(output.as_deref(), &inputs.read_files())?;
+            // Before any work: a file name that no format has is refused at once.
+            let format = FigureFormat::choose(
+                *format,
+                output.as_deref(),
+                "-o/--output",
+                &[
+                    FigureFormat::Svg,
+                    FigureFormat::Png,
+                    FigureFormat::Pdf,
+                    FigureFormat::Csv,
+                ],
+                FigureFormat::Svg,
+            )?;
             let command = format!("plot (a {} chart)", chart.kind());
             let (_, model) = load(inputs, chart.kind(), &command)?;
             let shown = shown_roles(series.as_deref(), *no_cursor)?;
@@ -1266,8 +1355,16 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                         plot.series.retain(|s| s.role != SeriesRole::Cursor);
                     }
                     let pinned = pinned_models(&model, pins)?;
-                    let mut plot =
+                    let plot =
                         crate::chart::pins::with_pinned_models(plot, &model, *chart, &pinned, mode);
+                    // A figure names each curve by its own values (the terminal's `mu 0.2->0.3`
+                    // reads as a change on paper); CSV keeps its series names.
+                    let own: Vec<(u8, crate::Inputs)> =
+                        (1u8..).zip(pinned.iter().map(|m| m.inputs())).collect();
+                    let mut plot = match format.figure() {
+                        Some(_) => crate::chart::pins::named_by_values(plot, &model.inputs(), &own),
+                        None => plot,
+                    };
                     plot.caption = Some(crate::chart::family::parameter_text(
                         &model.inputs(),
                         &[chart.x_param()],
@@ -1275,25 +1372,29 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                     plot
                 }
             };
-            let csv = output
-                .as_deref()
-                .and_then(|p| p.extension())
-                .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
-            let bytes = match format.unwrap_or(if csv {
-                FigureFormat::Csv
-            } else {
-                FigureFormat::Svg
-            }) {
-                FigureFormat::Svg => figure::svg(&plot)?.into_bytes(),
-                FigureFormat::Csv => chart_csv(&plot)?,
+            let bytes = match format.figure() {
+                Some(figure_format) => figure::render(&plot, figure_format)?,
+                None => chart_csv(&plot)?,
             };
             write_output(out, output.as_deref(), &bytes)?
         }
         Some(Command::Figures {
             out: dir,
             no_fe,
+            format,
             inputs,
-        }) => run_figures(out, dir, !*no_fe, inputs)?,
+        }) => {
+            let format = FigureFormat::choose(
+                Some(*format),
+                None,
+                "--format",
+                &[FigureFormat::Svg, FigureFormat::Png, FigureFormat::Pdf],
+                FigureFormat::Svg,
+            )?
+            .figure()
+            .unwrap_or(figure::Format::Svg);
+            run_figures(out, dir, !*no_fe, format, inputs)?
+        }
         Some(Command::Compare {
             model,
             results,
@@ -2462,11 +2563,13 @@ fn chart_csv(plot: &crate::chart::Plot) -> Result<Vec<u8>, CliError> {
     Ok(bytes)
 }
 
-/// `microslip figures`: every figure of [`figure::PAPER_FIGURES`] as SVG and CSV, then the index.
+/// `microslip figures`: every figure of [`figure::PAPER_FIGURES`] in `format` and as CSV, then the
+/// index.
 fn run_figures(
     out: &mut impl Write,
     dir: &std::path::Path,
     fe: bool,
+    format: figure::Format,
     inputs: &InputArgs,
 ) -> Result<(), CliError> {
     let unwritable = |e: io::Error| CliError::Data {
@@ -2514,15 +2617,15 @@ fn run_figures(
     };
     std::fs::create_dir_all(dir).map_err(unwritable)?;
     for (plot, entry) in &figures {
-        let svg = dir.join(format!("{}.svg", entry.stem));
-        write_output(out, Some(&svg), figure::svg(plot)?.as_bytes())?;
+        let file = dir.join(format!("{}.{format}", entry.stem));
+        write_output(out, Some(&file), &figure::render(plot, format)?)?;
         write_output(
             out,
             Some(&dir.join(format!("{}.csv", entry.stem))),
             &chart_csv(plot)?,
         )?;
         // The folder is the user's text: control characters are shown escaped, never sent.
-        let shown = svg.display().to_string();
+        let shown = file.display().to_string();
         writeln!(out, "{}  {}", report::sanitize(&shown), entry.title)?;
     }
     let entries: Vec<figure::IndexEntry> = figures.into_iter().map(|(_, e)| e).collect();
@@ -2530,7 +2633,7 @@ fn run_figures(
     write_output(
         out,
         Some(&index),
-        figure::index_html(&intro, &entries).as_bytes(),
+        figure::index_html(&intro, &entries, format).as_bytes(),
     )?;
     let shown = index.display().to_string();
     writeln!(out, "{}  open it in a browser", report::sanitize(&shown))?;

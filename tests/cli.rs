@@ -2033,6 +2033,102 @@ fn plot_writes_an_svg_figure_or_its_data_and_refuses_the_other_models_preset() {
     assert!(error.contains("w-vs-f"), "{error}");
 }
 
+/// Pixels of `png` (RGBA) darker than mid-grey within the rows `rows` (PNG pixels).
+fn dark_pixels(png: &resvg::tiny_skia::Pixmap, rows: std::ops::Range<u32>) -> usize {
+    png.pixels()
+        .chunks(png.width() as usize)
+        .skip(rows.start as usize)
+        .take((rows.end - rows.start) as usize)
+        .flatten()
+        .filter(|p| u32::from(p.red()) + u32::from(p.green()) + u32::from(p.blue()) < 3 * 100)
+        .count()
+}
+
+#[test]
+fn plot_writes_png_and_pdf_by_the_extension_and_refuses_one_it_cannot_write() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
+    for name in ["w.png", "W.PDF", "w.svg"] {
+        stdout_of(&["plot", "w-vs-f", "--fe", "-o", &file(name)]);
+    }
+    let png = std::fs::read(file("w.png")).unwrap();
+    assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"), "not a PNG");
+    let image = resvg::tiny_skia::Pixmap::decode_png(&png).unwrap();
+    assert_eq!((image.width(), image.height()), (1600, 1000));
+    // The title (the top 80 px, text alone: the built-in font, not the system's), the axes and
+    // curves (the rest) are drawn in dark ink on white.
+    let title = dark_pixels(&image, 0..80);
+    let body = dark_pixels(&image, 80..1000);
+    assert!(title > 500, "{title} dark pixels in the title band");
+    assert!(body > 5000, "{body} dark pixels under the title");
+    assert!(
+        image.pixels()[0].red() == 255,
+        "the background is opaque white"
+    );
+    let pdf = std::fs::read(file("W.PDF")).unwrap();
+    assert!(pdf.starts_with(b"%PDF-"), "not a PDF");
+    assert!(
+        pdf.windows(b"DejaVu".len()).any(|w| w == b"DejaVu"),
+        "the PDF embeds its font"
+    );
+    assert!(
+        std::fs::read_to_string(file("w.svg"))
+            .unwrap()
+            .starts_with("<svg")
+    );
+    // `--format` on stdout; an extension that no format has, or one that contradicts --format,
+    // is refused before anything is written.
+    let output = microslip()
+        .args(["plot", "w-vs-f", "--format", "png"])
+        .output()
+        .unwrap();
+    assert!(output.status.success() && output.stdout.starts_with(b"\x89PNG"));
+    let error = failure(&["plot", "w-vs-f", "-o", &file("w.jpg")], 2);
+    assert!(
+        error.contains("-o/--output") && error.contains("w.jpg") && error.contains(".png, .pdf"),
+        "{error}"
+    );
+    let error = failure(
+        &["plot", "w-vs-f", "--format", "pdf", "-o", &file("x.svg")],
+        2,
+    );
+    assert!(
+        error.contains("--format = pdf") && error.contains(".svg"),
+        "{error}"
+    );
+    assert!(!dir.path().join("w.jpg").exists() && !dir.path().join("x.svg").exists());
+}
+
+#[test]
+fn figures_writes_png_or_pdf_when_asked_and_refuses_csv() {
+    let dir = tempfile::tempdir().unwrap();
+    for (format, magic) in [("png", &b"\x89PNG"[..]), ("pdf", &b"%PDF-"[..])] {
+        let out = dir.path().join(format);
+        let args = [
+            "figures",
+            "--out",
+            out.to_str().unwrap(),
+            "--no-fe",
+            "--format",
+            format,
+        ];
+        stdout_of(&args);
+        let index = std::fs::read_to_string(out.join("index.html")).unwrap();
+        let file = out.join(format!("beam-w-vs-f.{format}"));
+        assert!(
+            index.contains(&format!("beam-w-vs-f.{format}\"")),
+            "{index}"
+        );
+        assert!(std::fs::read(&file).unwrap().starts_with(magic), "{file:?}");
+        assert!(!out.join("beam-w-vs-f.svg").exists());
+    }
+    let error = failure(&["figures", "--out", "x", "--format", "csv"], 2);
+    assert!(
+        error.contains("--format = csv") && error.contains("svg, png, pdf"),
+        "{error}"
+    );
+}
+
 #[test]
 fn figures_writes_every_figure_its_data_and_an_index() {
     let dir = tempfile::tempdir().unwrap();

@@ -1076,3 +1076,72 @@ fn a_friction_strain_beyond_the_calibration_claims_no_envelope() {
         "{text}"
     );
 }
+
+/// The x tick labels between the ends on the chart drawn at `width` x `height`, each as (the
+/// column of its centre, in cells from the graph's left edge, and its value), and the graph's width
+/// in cells. The graph is found by the axes' corner `└` and the x axis drawn from
+/// it; the labels are on the row under the axis.
+fn x_tick_labels(app: &App, width: u16, height: u16) -> (Vec<(f64, f64)>, usize) {
+    let rows = rows(app, width, height);
+    let (axis_row, corner) = rows
+        .iter()
+        .enumerate()
+        .rev()
+        .find_map(|(r, row)| {
+            // The axes' corner has the y labels' blanks on its left; a pane's has a border.
+            let row: Vec<char> = row.chars().collect();
+            (1..row.len())
+                .find(|&c| row[c] == '└' && row[c - 1] == ' ')
+                .map(|c| (r, c))
+        })
+        .expect("the chart's axes");
+    let axis: Vec<char> = rows[axis_row].chars().collect();
+    let graph = axis[corner + 1..].iter().take_while(|&&c| c == '─').count();
+    let labels: Vec<char> = rows[axis_row + 1].chars().collect();
+    let mut found = Vec::new();
+    let mut column = corner + 1;
+    while column < corner + 1 + graph {
+        if labels[column] == ' ' {
+            column += 1;
+            continue;
+        }
+        let start = column;
+        while column < corner + 1 + graph && labels[column] != ' ' {
+            column += 1;
+        }
+        let text: String = labels[start..column].iter().collect();
+        let centre = (start - corner - 1) as f64 + (column - start) as f64 / 2.0;
+        found.push((centre, text.parse::<f64>().expect(&text)));
+    }
+    // The first and last labels are aligned to the axis ends, not centred on their values.
+    found.pop();
+    if found.first().is_some_and(|&(centre, _)| centre < 4.0) {
+        found.remove(0);
+    }
+    (found, graph)
+}
+
+#[test]
+fn x_tick_labels_sit_at_their_values_at_every_width() {
+    let beams = app();
+    let mut lap = app();
+    press(&mut lap, Action::SwitchModel);
+    press(&mut lap, Action::SwitchModel);
+    for (name, app) in [("beams", &beams), ("lap joint", &lap)] {
+        let [lo, hi] = app.plot().x.bounds;
+        for width in [80, 120, 200, 300] {
+            let height = if width == 80 { 24 } else { 60 };
+            let (labels, graph) = x_tick_labels(app, width, height);
+            assert!(!labels.is_empty(), "{name} at {width}: no middle labels");
+            for (centre, value) in labels {
+                // The value's place on the axis, in cells: [c, c + 1) holds column c's values.
+                let at = (value - lo) / (hi - lo) * graph as f64;
+                assert!(
+                    (centre - at).abs() <= 0.5,
+                    "{name} at {width}x{height}: label {value} centred at cell {centre}, its \
+                     value is at {at:.2} (graph {graph} cells, x from {lo} to {hi})"
+                );
+            }
+        }
+    }
+}

@@ -88,6 +88,50 @@ pub(crate) fn label_of(name: &str) -> &str {
     name.split_once(": ").map_or(name, |(_, label)| label)
 }
 
+/// `plot` named for a figure someone reads without the terminal beside it: the current curve and
+/// each pin by their own values of the parameters the pins change (`K_T (mu = 0.3)`,
+/// `pin 1: mu = 0.2`), with units. The terminal's legend says `mu 0.2->0.3` (pinned, then now),
+/// which on paper reads as a change from 0.2 to 0.3 on one curve.
+#[cfg(feature = "app")]
+pub(crate) fn named_by_values(mut plot: Plot, current: &Inputs, pinned: &[(u8, Inputs)]) -> Plot {
+    let changed: Vec<Option<crate::problems::Param>> = current
+        .kind()
+        .params()
+        .iter()
+        .filter(|&&param| {
+            pinned
+                .iter()
+                .any(|(_, p)| p.get(param) != current.get(param))
+        })
+        .map(|&param| Some(param))
+        .collect();
+    let unchanged: Vec<Option<crate::problems::Param>> = current
+        .kind()
+        .params()
+        .iter()
+        .map(|&param| Some(param))
+        .filter(|param| !changed.contains(param))
+        .collect();
+    let values = |inputs: &Inputs| super::family::parameter_text(inputs, &unchanged);
+    for series in &mut plot.series {
+        let own = match series.role {
+            SeriesRole::Current if !changed.is_empty() => {
+                format!("{} ({})", series.name, values(current))
+            }
+            SeriesRole::Pin(n) => match pinned.iter().find(|(m, _)| *m == n) {
+                // A pin that differs only in the beam theory keeps its label (`theory EB->Timo`).
+                Some((_, inputs)) if !changed.is_empty() && inputs != current => {
+                    format!("pin {n}: {}", values(inputs))
+                }
+                _ => continue,
+            },
+            _ => continue,
+        };
+        series.name = own;
+    }
+    plot
+}
+
 /// `plot` with each pin's main curve added as [`SeriesRole::Pin`] (its number and label), taken
 /// from `pinned`: the same chart built at the pin's parameters, in the same y-axis mode. Points
 /// beyond the x range are left out (a pin at another K_T has its own K_T range); the y range

@@ -1,7 +1,11 @@
-//! SVG figures of the charts: the same [`Plot`] the terminal draws (series, axes, legend, finite-
+//! Figures of the charts: the same [`Plot`] the terminal draws (series, axes, legend, finite-
 //! element points), drawn by plotters' SVG backend. Text is written as `<text>` elements in a generic
-//! `sans-serif` family, so no font file is read or needed; the output depends on the plot alone (no
-//! date, no random identifier), so equal inputs give byte-identical files.
+//! `sans-serif` family; the output depends on the plot alone (no date, no random identifier), so
+//! equal inputs give byte-identical files.
+//!
+//! PNG and PDF are that same SVG rendered (resvg for PNG, svg2pdf for PDF, both on one usvg tree), so
+//! the three formats cannot disagree. Their text uses a font built into the binary ([`FONT`]), not
+//! the system's: a figure looks the same on a server with no fonts installed.
 //!
 //! A log axis of the plot (plotted in log10 units) becomes a real logarithmic axis here, with
 //! ticks at decades.
@@ -26,6 +30,129 @@ pub enum FigureError {
     /// The drawing backend failed (a programming error: the SVG goes to a string).
     #[error("drawing the figure failed: {0}")]
     Drawing(String),
+    /// The SVG could not be rendered to PNG or PDF (a programming error: the SVG is our own).
+    #[error("rendering the figure as {format} failed: {reason}")]
+    Render {
+        /// The format asked for.
+        format: Format,
+        /// What failed.
+        reason: String,
+    },
+}
+
+/// The file formats a figure can be written in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// Vector, for the web and for editing (the index page shows it).
+    Svg,
+    /// Raster at twice [`SIZE`] (1600 x 1000 px), for slides, mail and word processors.
+    Png,
+    /// Vector, with the font embedded, for papers and printing.
+    Pdf,
+}
+
+impl Format {
+    /// Every format, in the order help texts list them.
+    pub const ALL: [Format; 3] = [Format::Svg, Format::Png, Format::Pdf];
+
+    /// The file extension (without the dot), also the name `--format` takes.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Format::Svg => "svg",
+            Format::Png => "png",
+            Format::Pdf => "pdf",
+        }
+    }
+
+    /// The format an extension names (any letter case), if it is one.
+    pub fn from_extension(extension: &str) -> Option<Format> {
+        Format::ALL
+            .into_iter()
+            .find(|f| f.extension().eq_ignore_ascii_case(extension))
+    }
+}
+
+impl std::fmt::Display for Format {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.extension())
+    }
+}
+
+/// The font of PNG and PDF text: DejaVu Sans cut to Latin-1, Greek, punctuation, arrows and math
+/// operators (70 kB; Bitstream Vera license, `fonts/LICENSE-DejaVu.txt`). Built in because a
+/// machine without fonts (a CI runner, a container) would otherwise render every label blank.
+pub(crate) const FONT: &[u8] = include_bytes!("fonts/DejaVuSans-subset.ttf");
+
+/// How many PNG pixels per SVG pixel: 2 keeps 13 px labels sharp on slides and when printed.
+pub(crate) const PNG_SCALE: u32 = 2;
+
+/// The SVG parsed with [`FONT`] as its only font (the generic `sans-serif` resolves to it).
+fn svg_tree(svg: &str, format: Format) -> Result<resvg::usvg::Tree, FigureError> {
+    let mut options = resvg::usvg::Options::default();
+    let fonts = options.fontdb_mut();
+    fonts.load_font_data(FONT.to_vec());
+    fonts.set_sans_serif_family("DejaVu Sans");
+    resvg::usvg::Tree::from_str(svg, &options).map_err(|e| FigureError::Render {
+        format,
+        reason: e.to_string(),
+    })
+}
+
+/// An SVG document (as [`svg`] writes it) as a PNG of [`PNG_SCALE`] times its size.
+///
+/// # Errors
+/// [`FigureError::Render`] if the SVG cannot be parsed or encoded.
+pub fn png_from_svg(svg: &str) -> Result<Vec<u8>, FigureError> {
+    let failed = |reason: String| FigureError::Render {
+        format: Format::Png,
+        reason,
+    };
+    let tree = svg_tree(svg, Format::Png)?;
+    let size = tree.size().to_int_size();
+    let (width, height) = (size.width() * PNG_SCALE, size.height() * PNG_SCALE);
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(width, height)
+        .ok_or_else(|| failed(format!("no {width} x {height} px image")))?;
+    // Opaque white under the figure: a transparent PNG shows black text on a dark viewer as
+    // nothing.
+    pixmap.fill(resvg::tiny_skia::Color::WHITE);
+    let scale = PNG_SCALE as f32;
+    resvg::render(
+        &tree,
+        resvg::tiny_skia::Transform::from_scale(scale, scale),
+        &mut pixmap.as_mut(),
+    );
+    pixmap.encode_png().map_err(|e| failed(e.to_string()))
+}
+
+/// An SVG document (as [`svg`] writes it) as a one-page PDF of its size (1 SVG px = 0.75 pt),
+/// its text as text in the embedded [`FONT`].
+///
+/// # Errors
+/// [`FigureError::Render`] if the SVG cannot be parsed or converted.
+pub fn pdf_from_svg(svg: &str) -> Result<Vec<u8>, FigureError> {
+    let tree = svg_tree(svg, Format::Pdf)?;
+    svg2pdf::to_pdf(
+        &tree,
+        svg2pdf::ConversionOptions::default(),
+        svg2pdf::PageOptions::default(),
+    )
+    .map_err(|e| FigureError::Render {
+        format: Format::Pdf,
+        reason: e.to_string(),
+    })
+}
+
+/// The plot as a file of `format`: the SVG of [`svg`], rendered for PNG and PDF.
+///
+/// # Errors
+/// [`FigureError`] if drawing or rendering fails.
+pub fn render(plot: &Plot, format: Format) -> Result<Vec<u8>, FigureError> {
+    let svg = svg(plot)?;
+    match format {
+        Format::Svg => Ok(svg.into_bytes()),
+        Format::Png => png_from_svg(&svg),
+        Format::Pdf => pdf_from_svg(&svg),
+    }
 }
 
 /// Okabe-Ito colours (distinguishable with colour-vision deficiency): the laws' curves by role,
@@ -40,10 +167,11 @@ const PALETTE: [RGBColor; 7] = [
     RGBColor(120, 120, 120),
 ];
 
-/// Colours of pinned curves (drawn dashed), by pin number: set apart from [`PALETTE`].
+/// Colours of pinned curves (drawn dash-dotted), by pin number: set apart from [`PALETTE`] and from
+/// Coulomb's black (a dark grey pin 1 was taken for Coulomb on paper).
 const PIN_PALETTE: [RGBColor; 4] = [
-    RGBColor(80, 80, 80),
     RGBColor(117, 112, 179),
+    RGBColor(231, 41, 138),
     RGBColor(166, 118, 29),
     RGBColor(102, 166, 30),
 ];
@@ -113,8 +241,9 @@ fn look(role: SeriesRole) -> Look {
         SeriesRole::Continuum => points(PALETTE[5], Marker::Square),
         SeriesRole::Measured => points(PALETTE[4], Marker::Triangle),
         SeriesRole::External => points(PALETTE[6], Marker::Triangle),
+        // Dash-dot: neither Coulomb's even dashes nor the limit's dots.
         SeriesRole::Pin(n) => Look {
-            dashes: Some("10 5"),
+            dashes: Some("10 4 2 4"),
             ..line(nth(&PIN_PALETTE, n))
         },
         SeriesRole::Family(n) => line(nth(&PALETTE, n)),
@@ -647,10 +776,11 @@ pub(crate) fn parameter_caption(inputs: &crate::Inputs) -> String {
         .join(", ")
 }
 
-/// An HTML page showing `entries` (SVG files beside it) after `intro` (HTML), with their captions,
-/// CSV data links and the command that draws each alone.
+/// An HTML page showing `entries` (files of `format` beside it) after `intro` (HTML), with their
+/// captions, CSV data links and the command that draws each alone. A PDF is shown by the browser's
+/// viewer (`<object>`), with a link where it has none.
 #[cfg(any(feature = "app", test))]
-pub(crate) fn index_html(intro: &str, entries: &[IndexEntry]) -> String {
+pub(crate) fn index_html(intro: &str, entries: &[IndexEntry], format: Format) -> String {
     let mut page = String::from(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <title>microslip figures</title>\n<style>\n\
@@ -661,12 +791,24 @@ pub(crate) fn index_html(intro: &str, entries: &[IndexEntry]) -> String {
     page.push_str(&format!("<p>{intro}</p>\n"));
     for entry in entries {
         page.push_str(&format!(
-            "<figure id=\"{stem}\">\n<img src=\"{stem}.svg\" alt=\"{title}\">\n\
+            "<figure id=\"{stem}\">\n{image}\n\
              <figcaption>{caption}; \
              data: <a href=\"{stem}.csv\">{stem}.csv</a>; \
              <code>{command}</code>)</figcaption>\n</figure>\n",
+            image = match format {
+                Format::Pdf => format!(
+                    "<object data=\"{stem}.pdf\" type=\"application/pdf\" width=\"100%\" \
+                     height=\"540\"><a href=\"{stem}.pdf\">{title} (PDF)</a></object>",
+                    stem = entry.stem,
+                    title = entry.title
+                ),
+                Format::Svg | Format::Png => format!(
+                    "<img src=\"{stem}.{format}\" alt=\"{title}\">",
+                    stem = entry.stem,
+                    title = entry.title
+                ),
+            },
             stem = entry.stem,
-            title = entry.title,
             caption = entry.caption,
             command = entry.command,
         ));
@@ -1067,7 +1209,7 @@ mod tests {
     #[test]
     fn the_index_shows_every_figure_with_its_data() {
         let entries: Vec<IndexEntry> = PAPER_FIGURES.iter().map(PaperFigure::entry).collect();
-        let page = index_html(PAPER_INTRO, &entries);
+        let page = index_html(PAPER_INTRO, &entries, Format::Svg);
         for f in PAPER_FIGURES {
             assert!(
                 page.contains(&format!("src=\"{}.svg\"", f.stem)),

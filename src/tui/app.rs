@@ -363,7 +363,22 @@ impl App {
         if self.table.is_some() {
             return self.error("x exports charts; this is a table (microslip kt prints it)");
         }
-        let svg = match figure::svg(&self.plot) {
+        // A figure is read away from the screen: the parameters in a caption (as `plot` writes
+        // them, less the x axis's), each curve named by its own values.
+        let current = self.inputs();
+        let pinned: Vec<(u8, crate::Inputs)> = self
+            .state()
+            .pins
+            .iter()
+            .map(|pin| (pin.number, pin.inputs))
+            .collect();
+        let mut plot = pins::named_by_values(self.plot.clone(), &current, &pinned);
+        let x_param = match self.varied() {
+            Some(param) => Some(param),
+            None => self.views.of(self.kind).chart().and_then(AnyChart::x_param),
+        };
+        plot.caption = Some(crate::chart::family::parameter_text(&current, &[x_param]));
+        let svg = match figure::svg(&plot) {
             Ok(svg) => svg,
             Err(e) => return self.error(e.to_string()),
         };
@@ -383,7 +398,10 @@ impl App {
     /// What `x` wrote, or why nothing.
     fn exported(&mut self, result: Result<PathBuf, ExportError>) {
         match result {
-            Ok(svg) => self.info(format!("chart exported: {} (+ .csv data)", svg.display())),
+            Ok(svg) => self.info(format!(
+                "chart exported: {} (+ .png, .pdf, .csv data)",
+                svg.display()
+            )),
             Err(ExportError::Failed { path, reason }) => {
                 self.error(format!("cannot export to {}: {reason}", path.display()))
             }
@@ -2647,6 +2665,52 @@ mod tests {
         );
     }
 
+    /// The exported figure is read without the terminal: a parameter caption, each curve named by
+    /// its own values with units (not `mu 0.3->0.2`, which reads as a change), and pin 1 not in
+    /// Coulomb's black dashes.
+    #[test]
+    fn x_exports_a_figure_with_a_caption_and_curves_named_by_their_own_values() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut app = app();
+        app.set_export_dir(dir.path().to_path_buf());
+        app.update(Action::Pin);
+        set_typed(&mut app, "mu", "0.2");
+        set_typed(&mut app, "KT", "1000");
+        press(&mut app, Action::ExportChart);
+        let file = |extension: &str| dir.path().join(format!("microslip-w-vs-f.{extension}"));
+        assert!(
+            std::fs::read(file("png"))
+                .unwrap()
+                .starts_with(b"\x89PNG\r\n\x1a\n")
+        );
+        assert!(std::fs::read(file("pdf")).unwrap().starts_with(b"%PDF-"));
+        let svg = std::fs::read_to_string(file("svg")).unwrap();
+        for text in [
+            "L = 200 mm, b = 20 mm",
+            // F is the x axis: not in the caption.
+            "P = 1 MPa, mu = 0.2, KT = 1000 MPa/mm\n</text>",
+            "K_T (mu = 0.2, KT = 1000 MPa/mm)",
+            "pin 1: mu = 0.3, KT = 600 MPa/mm",
+        ] {
+            assert!(svg.contains(text), "{text}\n{svg}");
+        }
+        assert!(!svg.contains("-&gt;") && !svg.contains("->"), "{svg}");
+        // Coulomb is black with even dashes; pin 1 is neither (purple, dash-dot).
+        let curves: Vec<&str> = svg.lines().filter(|l| l.starts_with("<polyline")).collect();
+        let with = |dashes: &str| {
+            curves
+                .iter()
+                .find(|l| l.contains(&format!("stroke-dasharray=\"{dashes}\"")))
+                .copied()
+                .unwrap_or_else(|| panic!("a curve dashed {dashes}\n{svg}"))
+        };
+        assert!(with("7 4").contains("stroke=\"#000000\""));
+        assert!(with("10 4 2 4").contains("stroke=\"#7570B3\""));
+        // The CSV keeps its series names.
+        let csv = std::fs::read_to_string(dir.path().join("microslip-w-vs-f.csv")).unwrap();
+        assert!(csv.contains("\npin 1: mu 0.3->0.2 KT 600->1000,"), "{csv}");
+    }
+
     #[test]
     fn x_exports_the_chart_as_svg_and_csv_without_replacing_files() {
         let dir = tempfile::tempdir().unwrap();
@@ -2678,7 +2742,8 @@ mod tests {
         press(&mut app, Action::PreviousChart);
         press(&mut app, Action::ExportChart);
         assert!(app.message().unwrap().is_error);
-        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 6);
+        // Three exports of four files each (SVG, PNG, PDF, CSV).
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 12);
     }
 
     #[test]

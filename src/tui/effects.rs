@@ -223,7 +223,7 @@ pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
             stem,
             svg,
             csv,
-        } => Outcome::Exported(export(&dir, &stem, svg.as_bytes(), &csv)),
+        } => Outcome::Exported(export(&dir, &stem, &svg, &csv)),
         Effect::SavePreset {
             dir,
             name,
@@ -350,29 +350,41 @@ fn drive(app: &mut App, effects: Vec<Effect>, mut perform: impl FnMut(Effect) ->
     }
 }
 
-/// `x`'s files: `STEM.svg` and `STEM.csv`, or the first free `STEM-N` pair; both or neither
+/// `x`'s files: `STEM.svg`, `.png`, `.pdf` (the same figure rendered, so whichever a user sends
+/// says the same) and `.csv`, or the first free `STEM-N` set; all or none
 /// ([`crate::file::write_new_files`]: a disk with room for the SVG only must not keep it). Returns
-/// the SVG's path.
+/// the SVG's path. Rendering runs here, off the event loop.
 fn export(
     dir: &std::path::Path,
     stem: &str,
-    svg: &[u8],
+    svg: &str,
     csv: &[u8],
 ) -> Result<PathBuf, ExportError> {
+    use crate::report::figure;
+    let rendered = figure::png_from_svg(svg).and_then(|png| Ok((png, figure::pdf_from_svg(svg)?)));
+    let (png, pdf) = rendered.map_err(|e| ExportError::Failed {
+        path: dir.join(format!("{stem}.png")),
+        reason: e.to_string(),
+    })?;
     for n in 1..=MAX_EXPORT_NUMBER {
         let name = if n == 1 {
             stem.to_string()
         } else {
             format!("{stem}-{n}")
         };
-        let (svg_path, csv_path) = (
-            dir.join(format!("{name}.svg")),
-            dir.join(format!("{name}.csv")),
-        );
+        let path = |extension: &str| dir.join(format!("{name}.{extension}"));
+        let (svg_path, png_path, pdf_path, csv_path) =
+            (path("svg"), path("png"), path("pdf"), path("csv"));
         if csv_path.exists() {
             continue;
         }
-        match crate::file::write_new_files(&[(&svg_path, svg), (&csv_path, csv)]) {
+        let files: [(&std::path::Path, &[u8]); 4] = [
+            (&svg_path, svg.as_bytes()),
+            (&png_path, &png),
+            (&pdf_path, &pdf),
+            (&csv_path, csv),
+        ];
+        match crate::file::write_new_files(&files) {
             Ok(()) => return Ok(svg_path),
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
             Err(e) => {

@@ -77,6 +77,42 @@ pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
             label_pins(frame.buffer_mut(), &theme, body);
         }
     }
+    place_x_ticks(frame.buffer_mut(), plot, &theme, body);
+}
+
+/// The x tick labels between the two ends, each centred on the column of its own value.
+///
+/// ratatui's Chart lays middle labels out in equal slots of `width / labels` cells, which drifts
+/// from their values as the chart widens (at 200 columns "60" sat where F is 73 N); so the chart
+/// gets only the end labels (which it aligns to the axis ends, correctly) and these are written
+/// here. Column `c` of the graph area holds the values `[c, c + 1) * span / width` (as ratatui's
+/// canvas maps them); a label of `n` cells starts at `round(p - n / 2)`, so its centre is within half
+/// a cell of its value's position `p`. A label that would touch another is left out.
+fn place_x_ticks(buffer: &mut Buffer, plot: &Plot, theme: &Theme, area: Rect) {
+    let Some(graph) = graph_area(buffer, area) else {
+        return;
+    };
+    let row = graph.bottom() + 1;
+    if row >= area.bottom() {
+        return;
+    }
+    let ticks = plot.x.ticks(tick_count(area.width, 40));
+    let last = ticks.len().saturating_sub(1);
+    let style = theme.style(Role::Muted);
+    for (i, label) in ticks.iter().enumerate().take(last).skip(1) {
+        let cells = Span::raw(label.as_str()).width() as f64;
+        let position = f64::from(graph.left()) + f64::from(graph.width) * i as f64 / last as f64;
+        let start = (position - cells / 2.0).round();
+        let end = start + cells;
+        // One blank cell either side, inside the chart's area.
+        if start < f64::from(area.left()) + 1.0 || end > f64::from(area.right()) - 1.0 {
+            continue;
+        }
+        let (start, end) = (start as u16, end as u16);
+        if (start - 1..=end).all(|x| buffer[(x, row)].symbol() == " ") {
+            buffer.set_string(start, row, label, style);
+        }
+    }
 }
 
 /// Rows the legend may take (four pins and five curves on an 80-column screen need three).
@@ -245,21 +281,21 @@ fn tick_count(cells: u16, per_tick: u16) -> usize {
 /// A ratatui Chart of `datasets` with the plot's axes (more ticks on larger `area`s) and no
 /// built-in legend.
 fn chart<'a>(plot: &'a Plot, theme: &Theme, datasets: Vec<Dataset<'a>>, area: Rect) -> Chart<'a> {
-    let axis = |a: &'a plots::Axis, count: usize, titled: bool| {
+    let axis = |a: &'a plots::Axis, count: usize, titled: bool, ends_only: bool| {
+        let mut labels = a.ticks(count);
+        if ends_only && labels.len() > 2 {
+            // The middle ones are placed by [`place_x_ticks`].
+            labels.drain(1..labels.len() - 1);
+        }
         Axis::default()
             .title(if titled { a.title.as_str() } else { "" })
             .bounds(a.bounds)
-            .labels(
-                a.ticks(count)
-                    .into_iter()
-                    .map(Line::from)
-                    .collect::<Vec<_>>(),
-            )
+            .labels(labels.into_iter().map(Line::from).collect::<Vec<_>>())
             .style(theme.style(Role::Muted))
     };
     Chart::new(datasets)
-        .x_axis(axis(&plot.x, tick_count(area.width, 40), false))
-        .y_axis(axis(&plot.y, tick_count(area.height, 16), true))
+        .x_axis(axis(&plot.x, tick_count(area.width, 40), false, true))
+        .y_axis(axis(&plot.y, tick_count(area.height, 16), true, false))
         .legend_position(None)
 }
 
