@@ -4,7 +4,7 @@
 //! equal inputs give byte-identical files.
 //!
 //! PNG and PDF are that same SVG rendered (resvg for PNG, svg2pdf for PDF, both on one usvg tree), so
-//! the three formats cannot disagree. Their text uses a font built into the binary ([`FONT`]), not
+//! the three formats cannot disagree. Their text uses a font built into the binary (`FONT`), not
 //! the system's: a figure looks the same on a server with no fonts installed.
 //!
 //! A log axis of the plot (plotted in log10 units) becomes a real logarithmic axis here, with
@@ -45,7 +45,7 @@ pub enum FigureError {
 pub enum Format {
     /// Vector, for the web and for editing (the index page shows it).
     Svg,
-    /// Raster at twice [`SIZE`] (1600 x 1000 px), for slides, mail and word processors.
+    /// Raster at twice `SIZE` (1600 x 1000 px), for slides, mail and word processors.
     Png,
     /// Vector, with the font embedded, for papers and printing.
     Pdf,
@@ -98,7 +98,7 @@ fn svg_tree(svg: &str, format: Format) -> Result<resvg::usvg::Tree, FigureError>
     })
 }
 
-/// An SVG document (as [`svg`] writes it) as a PNG of [`PNG_SCALE`] times its size.
+/// An SVG document (as [`svg`] writes it) as a PNG of `PNG_SCALE` times its size.
 ///
 /// # Errors
 /// [`FigureError::Render`] if the SVG cannot be parsed or encoded.
@@ -125,7 +125,7 @@ pub fn png_from_svg(svg: &str) -> Result<Vec<u8>, FigureError> {
 }
 
 /// An SVG document (as [`svg`] writes it) as a one-page PDF of its size (1 SVG px = 0.75 pt),
-/// its text as text in the embedded [`FONT`].
+/// its text as text in the embedded `FONT`.
 ///
 /// # Errors
 /// [`FigureError::Render`] if the SVG cannot be parsed or converted.
