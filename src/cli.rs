@@ -386,7 +386,6 @@ pub struct InputArgs {
 }
 
 impl InputArgs {
-    /// The parameter flags given, as a command line repeats them (`--preset P`, `--set K=V`, ...).
     /// The files these flags read, with the flag that names each: the preset's file, given as a
     /// path or as the name of a user preset (bundled presets are no files). A preset that does
     /// not resolve reads nothing: loading it reports why.
@@ -400,6 +399,7 @@ impl InputArgs {
         }
     }
 
+    /// The parameter flags given, as a command line repeats them (`--preset P`, `--set K=V`, ...).
     fn flags(&self) -> Vec<String> {
         let mut given: Vec<String> = self
             .preset
@@ -1118,8 +1118,9 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                         crate::problems::lap::LapContinuumMesh::default(),
                     )
                 });
-            // An answer asked for with --continuum that could not be computed is an error (exit
-            // 1, nothing on stdout); the automatic one is reported as failed in the output.
+            // An answer asked for with --continuum that could not be given is an error (nothing on
+            // stdout; exit 2 for inputs it refuses, 1 for a failed solve: `CliError::exit_code`);
+            // the automatic one is reported as failed in the output.
             if *continuum && let Some(Err(e)) = &solved {
                 return Err(CliError::Numeric(e.clone()));
             }
