@@ -5,10 +5,11 @@
 //! The state stays a pure function of actions and outcomes, so every key can be tested without a
 //! disk, and the event loop decides where the work runs: files are quick and are read and written
 //! at once, in the loop ([`Runner::perform`], which uses [`perform_blocking`]), between two keys;
-//! a fit can take seconds on a long curve, so it runs on a worker thread, like the slow work of
-//! the `television` crate, and reports its progress and its result as messages the loop picks up
-//! with the terminal's events. The loop never waits for it: the screen is redrawn, Esc cancels it
-//! and signals act as fast as when the program is idle. Tests perform everything in place with
+//! an export renders a PNG and a PDF (tens of ms) and a fit can take seconds on a long curve, so
+//! they run on worker threads, like the slow work of the `television` crate, and report their
+//! results (a fit its progress too) as messages the loop picks up with the terminal's events. The
+//! loop never waits for them: the screen is redrawn, Esc cancels a fit and signals act as fast as
+//! when the program is idle. Tests perform everything in place with
 //! [`update_blocking`].
 
 use std::any::Any;
@@ -31,8 +32,9 @@ use crate::problems::inputs::Inputs;
 /// Something [`App::update`] wants done outside the state.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Effect {
-    /// `x`: write the chart as new files `STEM.svg` and `STEM.csv` in `dir`, or under the first
-    /// free name `STEM-2` to `STEM-999`; never replace a file.
+    /// `x`: write the chart as new files `STEM.svg`, `.png`, `.pdf` and `.csv` in `dir`, or under
+    /// the first free name `STEM-2` to `STEM-999`; never replace a file. Rendering the PNG and the
+    /// PDF takes longer than a frame, so the loop performs it on a worker.
     ExportChart {
         /// The export directory.
         dir: PathBuf,
@@ -353,7 +355,7 @@ fn drive(app: &mut App, effects: Vec<Effect>, mut perform: impl FnMut(Effect) ->
 /// `x`'s files: `STEM.svg`, `.png`, `.pdf` (the same figure rendered, so whichever a user sends
 /// says the same) and `.csv`, or the first free `STEM-N` set; all or none
 /// ([`crate::file::write_new_files`]: a disk with room for the SVG only must not keep it). Returns
-/// the SVG's path. Rendering runs here, off the event loop.
+/// the SVG's path. The terminal's loop performs it on a worker ([`Runner::perform`]).
 fn export(
     dir: &std::path::Path,
     stem: &str,
@@ -503,6 +505,12 @@ impl<M: From<Report> + Send + 'static> Runner<M> {
                 }
                 None
             }
+            // About 40 ms of rendering (release build): more than a frame, so off the loop.
+            // Two exports at once cannot collide: each claims its file names with create_new.
+            effect @ Effect::ExportChart { .. } => {
+                self.on_worker(move || perform_blocking(effect));
+                None
+            }
             effect => perform_blocking(effect),
         }
     }
@@ -512,14 +520,20 @@ impl<M: From<Report> + Send + 'static> Runner<M> {
     /// Solves the continuum on a worker thread, which reports its outcome (or its panic).
     fn start_continuum(&mut self, params: crate::PlateParams) {
         self.continuum.0 = true;
+        self.on_worker(move || Some(solve_continuum(params)));
+    }
+
+    /// Runs `work` on a worker thread, which reports its outcome (if any) or its panic.
+    fn on_worker(&self, work: impl FnOnce() -> Option<Outcome> + Send + 'static) {
         let reports = self.reports.clone();
         std::thread::spawn(move || {
-            // The solver reports non-convergence and out-of-range plates as errors; a panic is a
-            // bug, and the panic hook has already restored the terminal (on any thread), so the
-            // loop ends the program with it as it does for the fit's, rather than drawing on a
+            // Failures are outcomes (a solver's non-convergence, a full disk); a panic is a bug,
+            // and the panic hook has already restored the terminal (on any thread), so the loop
+            // ends the program with it as it does for the fit's, rather than drawing on a
             // terminal that is no longer in full-screen mode.
-            let report = match std::panic::catch_unwind(|| solve_continuum(params)) {
-                Ok(outcome) => Report::Outcome(outcome),
+            let report = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)) {
+                Ok(Some(outcome)) => Report::Outcome(outcome),
+                Ok(None) => return,
                 Err(payload) => Report::Panicked(payload),
             };
             // The loop has gone (the program is ending): nobody needs the report.
@@ -667,5 +681,29 @@ mod tests {
         }
         assert!(app.message().unwrap().text.starts_with("fit: mu = "));
         assert_eq!(app.history(), (1, 0));
+    }
+
+    /// `x` renders a PNG and a PDF, longer than a frame: the loop hands it to a worker and goes
+    /// on (nothing written, nothing said yet); the worker's report then says where it went.
+    #[test]
+    fn an_export_runs_on_a_worker_and_reports_its_files() {
+        let (sender, reports) = mpsc::channel::<Report>();
+        let mut runner = Runner::new(sender);
+        let dir = tempfile::tempdir().unwrap();
+        let mut app = app_with_points(2);
+        app.set_export_dir(dir.path().to_path_buf());
+        let before = app.message().map(|m| m.text.clone());
+        runner.update(&mut app, Action::ExportChart);
+        assert_eq!(app.message().map(|m| m.text.clone()), before);
+        let Ok(report) = reports.recv_timeout(Duration::from_secs(30)) else {
+            panic!("the export did not report")
+        };
+        runner.deliver(&mut app, report);
+        let message = app.message().unwrap();
+        assert!(!message.is_error, "{}", message.text);
+        for extension in ["svg", "png", "pdf", "csv"] {
+            let file = dir.path().join(format!("microslip-w-vs-f.{extension}"));
+            assert!(file.exists(), "{}: {}", file.display(), message.text);
+        }
     }
 }
