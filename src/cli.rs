@@ -124,7 +124,7 @@ pub enum Command {
     /// is searched unless --from/--to narrow it; every root is listed, and none is an error.
     Solve {
         /// Which benchmark.
-        #[arg(value_enum)]
+        #[arg(value_parser = model_kind_parser())]
         model: ModelKind,
         /// The parameter to solve for (beam: L b h E P mu KT F; plate: L tp E nu mu P KT; lap: L b
         /// t1 t2 E1 E2 P mu KT F).
@@ -247,7 +247,7 @@ pub enum Command {
         #[arg(value_enum)]
         code: FeCode,
         /// Which benchmark.
-        #[arg(value_enum)]
+        #[arg(value_parser = model_kind_parser())]
         model: ModelKind,
         #[command(flatten)]
         deck: DeckArgs,
@@ -267,7 +267,7 @@ pub enum Command {
         #[arg(value_enum)]
         code: FeCode,
         /// Which benchmark.
-        #[arg(value_enum)]
+        #[arg(value_parser = model_kind_parser())]
         model: ModelKind,
         #[command(flatten)]
         deck: DeckArgs,
@@ -286,7 +286,7 @@ pub enum Command {
     /// Compare FE results with the closed forms, point by point, and the K_T they imply.
     Compare {
         /// Which benchmark.
-        #[arg(value_enum)]
+        #[arg(value_parser = model_kind_parser())]
         model: ModelKind,
         /// Result files: the .dat of a `microslip deck ccx` run (its deck JOB.inp beside it), or a
         /// CSV from any FE code: F_N,w_mm (beam), KT_MPa_per_mm,u_mm (plate) or F_N,Delta_mm (lap).
@@ -789,15 +789,15 @@ macro_rules! value_enum {
     };
 }
 
-impl ValueEnum for ModelKind {
-    fn value_variants<'a>() -> &'a [Self] {
-        &ModelKind::ALL
-    }
-
-    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
-        let d = self.description();
-        Some(clap::builder::PossibleValue::new(d.key).help(d.summary))
-    }
+/// `--model` and the `model` positional: the problems' keys, each with its summary in `--help`
+/// (a parser rather than `ValueEnum`, which the core crate's type cannot implement here).
+fn model_kind_parser() -> impl clap::builder::TypedValueParser<Value = ModelKind> {
+    use clap::builder::TypedValueParser;
+    clap::builder::PossibleValuesParser::new(ModelKind::ALL.map(|kind| {
+        let d = kind.description();
+        clap::builder::PossibleValue::new(d.key).help(d.summary)
+    }))
+    .try_map(|key| key.parse::<ModelKind>())
 }
 
 value_enum!(TableFormat {
@@ -2251,18 +2251,20 @@ fn run_fit(
         reason,
     };
     let mut progress = ProgressLine::new(io::stderr(), io::stderr().is_terminal());
-    let contents = fit::data::read_text(path, crate::file::Kinds::AnyReadable)
+    let contents = crate::measured::read_text(path, crate::file::Kinds::AnyReadable)
         .map_err(|e| data_error(e.to_string()))?;
     let mut reading =
         |done, total| progress.update(Instant::now(), || text::reading_progress(done, total));
     let data = match structure {
-        fit::Structure::Beam(_) => fit::data::parse_measured_with_progress(&contents, &mut reading),
+        fit::Structure::Beam(_) => {
+            crate::measured::parse_measured_with_progress(&contents, &mut reading)
+        }
         fit::Structure::Lap(_) => {
-            fit::data::parse_measured_joint_with_progress(&contents, &mut reading)
+            crate::measured::parse_measured_joint_with_progress(&contents, &mut reading)
         }
     };
     drop(contents);
-    let fit::data::Measured {
+    let crate::fit::Measured {
         points: data,
         sigma,
     } = match data {
@@ -2279,7 +2281,7 @@ fn run_fit(
             return Err(data_error(format!(
                 "has a {} column, which gives each point's own standard deviation, and --weights {} \
                  asks for another; drop one",
-                fit::data::SIGMA_COLUMN,
+                crate::measured::SIGMA_COLUMN,
                 chosen
                     .to_possible_value()
                     .map_or_else(String::new, |v| v.get_name().to_string())

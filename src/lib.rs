@@ -88,21 +88,20 @@
 //! # Ok::<(), microslip::ParamError>(())
 //! ```
 
+/// The physics, from the `microslip-core` crate: re-exported under the same paths, so that
+/// `microslip::problems::...` and the application's own `crate::problems::...` name it.
+pub use microslip_core::{fit, kernel, numeric, problems, study, verify};
+
 pub mod chart;
 #[cfg(feature = "app")]
 mod cli;
 pub mod fe;
 pub mod file;
-pub mod fit;
-pub mod kernel;
-pub mod numeric;
+pub mod measured;
 pub mod preset;
-pub mod problems;
 pub mod report;
-pub mod study;
 #[cfg(feature = "app")]
 mod tui;
-pub mod verify;
 
 /// The application side (the `cli` and `tui` modules, private): what the `microslip` binary
 /// calls, and the narrow surface the TUI's frame, monkey and benchmark tests drive it through.

@@ -4,7 +4,7 @@
 //! layers, lowest first (the crate docs in src/lib.rs say why each sits where it does):
 //!
 //! ```text
-//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- fe <- chart <- report <- tui <- cli
+//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- measured <- fe <- chart <- report <- tui <- cli
 //! ```
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -20,11 +20,12 @@ const LAYERS: &[(&str, u8)] = &[
     ("fit", 3),
     ("verify", 3),
     ("preset", 3),
-    ("fe", 4),
-    ("chart", 5),
-    ("report", 6),
-    ("tui", 7),
-    ("cli", 8),
+    ("measured", 4),
+    ("fe", 5),
+    ("chart", 6),
+    ("report", 7),
+    ("tui", 8),
+    ("cli", 9),
 ];
 
 /// The files of a problem that hold its closed forms, and those that hold its discretized
@@ -89,6 +90,14 @@ fn root_reexports(lib: &str) -> BTreeMap<String, String> {
             continue;
         };
         let module = path.split("::").next().unwrap_or_default().to_string();
+        // `pub use microslip_core::{kernel, problems}`: the core's modules under their own names.
+        if module == "microslip_core" {
+            let list = path.trim_start_matches("microslip_core::");
+            for name in list.trim_matches(['{', '}']).split(',').map(str::trim) {
+                items.insert(name.to_string(), name.to_string());
+            }
+            continue;
+        }
         let names = match (path.find('{'), path.rfind('}')) {
             (Some(open), Some(close)) => path[open + 1..close].to_string(),
             _ => path.rsplit("::").next().unwrap_or_default().to_string(),
@@ -196,7 +205,8 @@ fn problem_breaches(source: &Source, root: &BTreeMap<String, String>) -> Vec<Str
             // ...) are the shared vocabulary every problem may use.
             let is_folder = !named.is_empty()
                 && Path::new(env!("CARGO_MANIFEST_DIR"))
-                    .join("src/problems")
+                    .join(CORE)
+                    .join("problems")
                     .join(&named)
                     .is_dir();
             if is_folder && named != problem {
@@ -261,29 +271,65 @@ fn rust_files(dir: &Path, found: &mut Vec<PathBuf>) {
     }
 }
 
+/// Where the physics lives: the core crate, whose modules keep their names in the application
+/// (`pub use microslip_core::{kernel, ...}`), so that both crates are one layered whole.
+const CORE: &str = "crates/microslip-core/src";
+
+/// The sources of both crates (paths below each crate's `src/`) and the root re-exports of both.
 fn crate_sources() -> (Vec<Source>, BTreeMap<String, String>) {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let mut paths = Vec::new();
-    rust_files(&src, &mut paths);
+    let top = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut sources = Vec::new();
-    for path in paths {
-        let relative = path
-            .strip_prefix(&src)
-            .unwrap()
-            .to_string_lossy()
-            .replace('\\', "/");
-        // The crate root lists modules and re-exports; the binary is outside the library.
-        if relative == "lib.rs" || relative == "main.rs" {
-            continue;
+    let mut root = BTreeMap::new();
+    for src in [top.join("src"), top.join(CORE)] {
+        let mut paths = Vec::new();
+        rust_files(&src, &mut paths);
+        for path in paths {
+            let relative = path
+                .strip_prefix(&src)
+                .unwrap()
+                .to_string_lossy()
+                .replace('\\', "/");
+            // The crate roots list modules and re-exports; the binary is outside the library.
+            if relative == "lib.rs" || relative == "main.rs" {
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).unwrap();
+            sources.push(Source {
+                path: relative,
+                code: shipped_code(&text),
+            });
         }
-        let text = std::fs::read_to_string(&path).unwrap();
-        sources.push(Source {
-            path: relative,
-            code: shipped_code(&text),
-        });
+        let lib = std::fs::read_to_string(src.join("lib.rs")).unwrap();
+        root.extend(root_reexports(&lib));
     }
-    let lib = std::fs::read_to_string(src.join("lib.rs")).unwrap();
-    (sources, root_reexports(&lib))
+    (sources, root)
+}
+
+/// The core crate depends on nothing with a terminal, a file format or a command line in it:
+/// its `[dependencies]` are a short, named list (`cargo tree -p microslip-core -e normal` shows
+/// the same).
+#[test]
+fn the_core_crate_depends_on_no_terminal_format_or_command_line() {
+    let manifest = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("crates/microslip-core/Cargo.toml"),
+    )
+    .unwrap();
+    let dependencies = manifest
+        .split("[dependencies]")
+        .nth(1)
+        .expect("the core has a [dependencies] table");
+    let dependencies = dependencies.split("\n[").next().unwrap_or_default();
+    let names: Vec<&str> = dependencies
+        .lines()
+        .filter_map(|line| line.split('=').next())
+        .map(str::trim)
+        .filter(|name| !name.is_empty() && !name.starts_with('#'))
+        .collect();
+    let allowed = ["roots", "serde", "thiserror"];
+    for name in &names {
+        assert!(allowed.contains(name), "the core depends on `{name}`");
+    }
+    assert!(names.contains(&"roots"), "read {names:?}");
 }
 
 #[test]

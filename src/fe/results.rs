@@ -12,9 +12,9 @@ use super::deck::sets;
 use super::header::DeckHeader;
 use super::lap_deck::sets as lap_sets;
 use super::verdict::InterfaceMesh;
-use crate::fit::data::{self, Curve, MEASURED_DEFLECTION, MEASURED_JOINT_DISPLACEMENT};
 use crate::kernel::params::{Compact, Domain, Unit};
 use crate::kernel::regime::{Law, Regime};
+use crate::measured::{self as data, Curve, MEASURED_DEFLECTION, MEASURED_JOINT_DISPLACEMENT};
 use crate::problems::inputs::Inputs;
 use crate::problems::lap::closed_form::zones_regime;
 

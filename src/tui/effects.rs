@@ -240,9 +240,9 @@ pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
             inputs,
         },
         Effect::ReadMeasurements { path } => Outcome::Measurements {
-            result: crate::fit::data::read_text(&path, crate::file::Kinds::RegularOnly)
+            result: crate::measured::read_text(&path, crate::file::Kinds::RegularOnly)
                 .map_err(|e| e.to_string())
-                .and_then(|text| crate::fit::data::parse(&text).map_err(|e| e.to_string())),
+                .and_then(|text| crate::measured::parse(&text).map_err(|e| e.to_string())),
             path,
         },
         Effect::ReadFeResults { path, kind } => Outcome::FeResults {

@@ -108,9 +108,9 @@ pub fn run(
     let data = match data {
         Some(path) => {
             let shown = path.display().to_string();
-            let text = crate::fit::data::read_text(&path, crate::file::Kinds::AnyReadable)
+            let text = crate::measured::read_text(&path, crate::file::Kinds::AnyReadable)
                 .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
-            let points = crate::fit::data::parse(&text)
+            let points = crate::measured::parse(&text)
                 .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
             Some(app::Measurements {
                 path: shown,

@@ -24,7 +24,6 @@ pub enum Grid {
 }
 
 /// A quantity both the closed forms and the finite elements compute.
-#[non_exhaustive]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Quantity {
     /// Twin beams: tip deflection w(L) (mm).
@@ -43,7 +42,6 @@ pub enum Quantity {
 }
 
 /// One compared case: the full parameters, so that it can be rerun.
-#[non_exhaustive]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Case {
     /// Twin beams at a tip force.

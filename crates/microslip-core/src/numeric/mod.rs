@@ -5,13 +5,14 @@
 //! the analytical core is right (see `microslip verify` and `docs/theory.md`, "Numerical solver").
 
 pub(crate) mod banded;
-pub(crate) mod elements;
+pub mod elements;
 mod error;
 pub(crate) mod interface;
-pub(crate) mod mesh;
+pub mod mesh;
 pub(crate) mod newton;
 pub(crate) mod q8;
 
 pub use error::NumericError;
-pub(crate) use error::{short, stiffness_advice};
+pub use error::short;
+pub(crate) use error::stiffness_advice;
 pub use mesh::MeshDensity;

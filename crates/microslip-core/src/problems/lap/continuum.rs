@@ -511,17 +511,17 @@ fn decay_rate(p: &LapParams) -> f64 {
 /// The element boundaries along x of the joint's continuum model, shared by this solver and the
 /// CalculiX deck (`fe::lap_deck`) so that the two mesh the joint the same way.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct LapBreaks {
+pub struct LapBreaks {
     /// Over the overlap [0, L], finest at both ends.
-    pub(crate) overlap: Vec<f64>,
+    pub overlap: Vec<f64>,
     /// The cover's extension [-H, 0], finest at x = 0 (H = 2 (t1 + t2)).
-    pub(crate) cover_extension: Vec<f64>,
+    pub cover_extension: Vec<f64>,
     /// The inner plate's extension [L, L + H], finest at x = L.
-    pub(crate) inner_extension: Vec<f64>,
+    pub inner_extension: Vec<f64>,
     /// The layer height: the thinner of t1/2 and t2 over `layers` (mm).
-    pub(crate) layer: f64,
+    pub layer: f64,
     /// The element size at the overlap's ends (mm).
-    pub(crate) finest: f64,
+    pub finest: f64,
 }
 
 /// The sizes behind the joint's mesh of `layers` elements through each body (its K_T sets the
@@ -552,13 +552,13 @@ fn lap_sizing(p: &LapParams, layers: usize) -> LapSizing {
 /// it: a stiff interface over a long overlap asks for 1e13 of them, which must be refused by
 /// their count before anything of that size is allocated.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct LapCounts {
+pub struct LapCounts {
     /// Elements over half the overlap.
-    pub(crate) half_overlap: f64,
+    pub half_overlap: f64,
     /// Elements over the cover's extension.
-    pub(crate) cover_extension: f64,
+    pub cover_extension: f64,
     /// Elements over the inner plate's extension.
-    pub(crate) inner_extension: f64,
+    pub inner_extension: f64,
 }
 
 impl LapCounts {
@@ -573,13 +573,13 @@ impl LapCounts {
     }
 
     /// Elements of both bodies, `layers` deep each.
-    pub(crate) fn elements(&self, layers: usize) -> f64 {
+    pub fn elements(&self, layers: usize) -> f64 {
         (self.inner() + self.cover()) * layers as f64
     }
 }
 
 /// The counts of [`lap_breaks`]`(p, layers)`, with no allocation that grows with them.
-pub(crate) fn lap_counts(p: &LapParams, layers: usize) -> LapCounts {
+pub fn lap_counts(p: &LapParams, layers: usize) -> LapCounts {
     use crate::numeric::mesh::graded_toward_end_count as count;
     let LapSizing {
         finest,
@@ -596,8 +596,8 @@ pub(crate) fn lap_counts(p: &LapParams, layers: usize) -> LapCounts {
 }
 
 /// The element boundaries of the joint `p` with `layers` elements through each body, sized by
-/// [`lap_sizing`]. Count them first ([`lap_counts`]): nothing here bounds their number.
-pub(crate) fn lap_breaks(p: &LapParams, layers: usize) -> LapBreaks {
+/// `lap_sizing`. Count them first ([`lap_counts`]): nothing here bounds their number.
+pub fn lap_breaks(p: &LapParams, layers: usize) -> LapBreaks {
     let LapSizing {
         layer,
         finest,

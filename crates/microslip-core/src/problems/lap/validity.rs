@@ -83,7 +83,7 @@ impl LapJoint {
     }
 
     /// [`LapJoint::validity`] given the regularized Delta at `force` (sweeps have it already).
-    pub(crate) fn validity_at(&self, force: JointForce, delta: f64) -> LapValidity {
+    pub fn validity_at(&self, force: JointForce, delta: f64) -> LapValidity {
         let p = self.params();
         let lambda = self.decay_rate();
         let shear_modulus = |e: f64| e / (2.0 * (1.0 + LAP_POISSON));

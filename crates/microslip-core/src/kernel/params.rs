@@ -230,7 +230,7 @@ fn bound(value: f64) -> String {
 ///
 /// # Examples
 /// ```
-/// use microslip::kernel::params::Compact;
+/// use microslip_core::kernel::params::Compact;
 /// assert_eq!(Compact(-3.0).to_string(), "-3");
 /// assert_eq!(Compact(0.25).to_string(), "0.25");
 /// assert_eq!(Compact(-1e308).to_string(), "-1e308");
@@ -256,7 +256,7 @@ impl fmt::Display for Compact {
 ///
 /// # Examples
 /// ```
-/// use microslip::kernel::params::significant;
+/// use microslip_core::kernel::params::significant;
 /// assert_eq!(significant(0.09523809306122456, 6), "0.0952381");
 /// assert_eq!(significant(1.75e10, 4), "1.75e10");
 /// ```
@@ -485,7 +485,7 @@ pub(crate) const STIFFNESS: ParamSpec = spec(
 .usual(0.1, 1e9);
 
 /// Parses a number as users type it: `1e6`, `600`, `0.3`; rejects NaN and infinities spelled out.
-pub(crate) fn parse_number(text: &str) -> Option<f64> {
+pub fn parse_number(text: &str) -> Option<f64> {
     let value: f64 = text.parse().ok()?;
     // "nan" and "inf" parse in Rust; they are never what a user means. Range checks catch the rest.
     if value.is_nan() || text.to_ascii_lowercase().contains("inf") {

@@ -168,8 +168,7 @@ impl BeamTheory {
     }
 
     /// The other theory.
-    #[cfg(feature = "app")]
-    pub(crate) fn other(self) -> BeamTheory {
+    pub fn other(self) -> BeamTheory {
         match self {
             BeamTheory::EulerBernoulli => BeamTheory::Timoshenko,
             BeamTheory::Timoshenko => BeamTheory::EulerBernoulli,

@@ -14,8 +14,8 @@ use crate::problems::{
 ///
 /// # Examples
 /// ```
-/// use microslip::problems::inputs::Inputs;
-/// use microslip::problems::{BeamParam, ModelKind, Param};
+/// use microslip_core::problems::inputs::Inputs;
+/// use microslip_core::problems::{BeamParam, ModelKind, Param};
 /// let mut inputs = Inputs::paper(ModelKind::Beam);
 /// inputs.set(Param::Beam(BeamParam::Stiffness), 120.0)?;
 /// assert!(inputs.validate().is_ok());
@@ -24,7 +24,7 @@ use crate::problems::{
 ///     inputs.validate().unwrap_err().to_string(),
 ///     "invalid L = -1: must be > 0 and finite (mm)"
 /// );
-/// # Ok::<(), microslip::problems::UnknownParam>(())
+/// # Ok::<(), microslip_core::problems::UnknownParam>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Inputs {

@@ -23,12 +23,12 @@
 //! Results are data only: the reason behind each verdict is an [`Evidence`] carrying its numbers;
 //! the words for people are written by the `report` module.
 
-pub mod data;
+pub mod measurement;
 pub mod weights;
 
 use thiserror::Error;
 
-pub use data::{DataError, Measurement};
+pub use measurement::{MIN_ROWS, Measured, Measurement};
 pub use weights::{Scatter, Weights};
 
 use crate::kernel::params::ParamError;
@@ -75,7 +75,6 @@ impl Status {
 }
 
 /// Why a parameter got its [`Status`]: the finding behind the verdict, with its numbers.
-#[non_exhaustive]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Evidence {
     /// Held at a given value (`--fix`), not fitted.
@@ -213,7 +212,6 @@ pub enum FitError {
 
 /// Progress of a fit, for a caller that wants to show it (the library prints nothing): reported
 /// per grid node and every few thousand measurements of a pass over the data.
-#[non_exhaustive]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Progress {
     /// The grid search for a start on `points` measurements (an evenly spread subsample when there
@@ -738,8 +736,8 @@ fn spread(len: usize, count: usize) -> impl Iterator<Item = usize> {
 /// A curve measured on beams with mu = 0.4 and K_T = 200 MPa/mm, well past F_1, gives both back:
 ///
 /// ```
-/// use microslip::fit::{Measurement, Status, fit_twin_beams};
-/// use microslip::{TipForce, TwinBeams, TwinBeamsParams};
+/// use microslip_core::fit::{Measurement, Status, fit_twin_beams};
+/// use microslip_core::{TipForce, TwinBeams, TwinBeamsParams};
 ///
 /// let truth = TwinBeams::new(TwinBeamsParams {
 ///     friction: 0.4,
@@ -752,7 +750,7 @@ fn spread(len: usize, count: usize) -> impl Iterator<Item = usize> {
 ///         let w = truth.regularized(TipForce::new(force)?).tip_deflection();
 ///         Ok(Measurement { force, deflection: w })
 ///     })
-///     .collect::<Result<_, microslip::ParamError>>()?;
+///     .collect::<Result<_, microslip_core::ParamError>>()?;
 ///
 /// // Only the geometry, E and P of the structure are used.
 /// let fit = fit_twin_beams(TwinBeamsParams::PAPER, &data, None, None)?;
@@ -790,8 +788,8 @@ pub fn fit_twin_beams(
 /// # Examples
 ///
 /// ```
-/// use microslip::fit::{Measurement, Progress, fit_twin_beams_with_progress};
-/// use microslip::TwinBeamsParams;
+/// use microslip_core::fit::{Measurement, Progress, fit_twin_beams_with_progress};
+/// use microslip_core::TwinBeamsParams;
 ///
 /// let data: Vec<Measurement> = (1..=20)
 ///     .map(|i| Measurement { force: 10.0 * f64::from(i), deflection: 4e-4 * f64::from(i) })
@@ -804,7 +802,7 @@ pub fn fit_twin_beams(
 /// })?;
 /// assert!(grid_nodes > 100);
 /// assert_eq!(fit.points, 20);
-/// # Ok::<(), microslip::fit::FitError>(())
+/// # Ok::<(), microslip_core::fit::FitError>(())
 /// ```
 pub fn fit_twin_beams_with_progress(
     structure: TwinBeamsParams,
@@ -838,8 +836,8 @@ pub fn fit_twin_beams_with_progress(
 /// estimates.
 ///
 /// ```
-/// use microslip::fit::{Measurement, Scatter, Weights, fit_twin_beams_weighted};
-/// use microslip::{TipForce, TwinBeams, TwinBeamsParams};
+/// use microslip_core::fit::{Measurement, Scatter, Weights, fit_twin_beams_weighted};
+/// use microslip_core::{TipForce, TwinBeams, TwinBeamsParams};
 ///
 /// let truth = TwinBeams::new(TwinBeamsParams {
 ///     friction: 0.22,
@@ -854,7 +852,7 @@ pub fn fit_twin_beams_with_progress(
 ///         let deflection = w * if i % 2 == 0 { 1.01 } else { 0.99 };
 ///         Ok(Measurement { force, deflection })
 ///     })
-///     .collect::<Result<_, microslip::ParamError>>()?;
+///     .collect::<Result<_, microslip_core::ParamError>>()?;
 /// let fit = fit_twin_beams_weighted(
 ///     TwinBeamsParams::PAPER, &data, None, None, Weights::Relative, &mut |_| {},
 /// )?;

@@ -11,27 +11,8 @@ use std::path::Path;
 use thiserror::Error;
 
 use crate::file::{Kinds, ReadError, Size, read_capped};
+use crate::fit::{MIN_ROWS, Measured, Measurement};
 use crate::kernel::params::{Compact, Domain, Unit};
-
-/// One measurement: the load (N) and the response (mm): the beams' tip force and tip
-/// deflection, or the lap joint's force and joint displacement Delta.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Measurement {
-    /// The load: tip force on each beam, or the force through the joint (N).
-    pub force: f64,
-    /// The response: tip deflection w(L), or joint displacement Delta (mm).
-    pub deflection: f64,
-}
-
-/// A measured curve and, when the file has a `sigma_mm` column, the standard deviation of each
-/// deflection (mm), for [`super::Weights::Sigma`].
-#[derive(Debug, Clone, PartialEq)]
-pub struct Measured {
-    /// The measurements, in file order.
-    pub points: Vec<Measurement>,
-    /// One standard deviation (mm, > 0) per measurement, or None without the column.
-    pub sigma: Option<Vec<f64>>,
-}
 
 /// Header of the optional column of per-point standard deviations of w (mm).
 pub(crate) const SIGMA_COLUMN: &str = "sigma_mm";
@@ -45,9 +26,6 @@ pub struct DataError {
     /// What is wrong.
     pub problem: String,
 }
-
-/// Fewest rows a fit accepts: two parameters need at least one more point than parameters.
-pub(crate) const MIN_ROWS: usize = 3;
 
 /// Largest measurement file read: 256 MiB. A million rows written with full precision take about
 /// 40 MB, so this allows six million or more (a long, finely sampled test) while keeping the text and

@@ -49,6 +49,6 @@ pub(crate) fn stiffness_advice(largest: f64, other: Option<&str>) -> String {
 }
 
 /// A number in a message, to four significant digits ("1.714", "1.75e10", "5.385e-7").
-pub(crate) fn short(x: f64) -> String {
+pub fn short(x: f64) -> String {
     crate::kernel::params::significant(x, 4)
 }

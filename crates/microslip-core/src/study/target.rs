@@ -35,7 +35,7 @@ const ROOT_CHECK: f64 = 1e-6;
 /// between 1.6e10 and 7e11 MPa/mm, one achieving 0.9999999999999994 (below 1 is impossible).
 pub const ROUNDING: f64 = 3e-13;
 
-pub(crate) use crate::problems::Quantity;
+pub use crate::problems::Quantity;
 
 /// How the targets see a problem's quantities: the names, meanings and values its description
 /// and its folder give ([`crate::problems::Description::quantities`]).
@@ -76,7 +76,7 @@ impl Quantity {
     }
 
     /// The names targets accept for `kind`, as error messages list them.
-    pub(crate) fn names(kind: ModelKind) -> String {
+    pub fn names(kind: ModelKind) -> String {
         kind.description()
             .quantities
             .iter()
@@ -393,9 +393,9 @@ fn edge(holds: &impl Fn(f64) -> bool, mut a: f64, mut b: f64) -> f64 {
 ///
 /// # Examples
 /// ```
-/// use microslip::problems::inputs::Inputs;
-/// use microslip::problems::{BeamParam, ModelKind, Param};
-/// use microslip::study::target::{Target, solve_for_target};
+/// use microslip_core::problems::inputs::Inputs;
+/// use microslip_core::problems::{BeamParam, ModelKind, Param};
+/// use microslip_core::study::target::{Target, solve_for_target};
 /// let model = Inputs::paper(ModelKind::Beam).validate()?;
 /// let target = Target::parse("ratio=1.01", ModelKind::Beam)?;
 /// let solved = solve_for_target(&model, Param::Beam(BeamParam::Stiffness), target, None)?;

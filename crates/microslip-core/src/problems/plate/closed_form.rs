@@ -33,7 +33,7 @@ impl SqueezedPlate {
     ///
     /// # Examples
     /// ```
-    /// use microslip::{PlateParams, SqueezedPlate};
+    /// use microslip_core::{PlateParams, SqueezedPlate};
     /// let plate = SqueezedPlate::new(PlateParams::PAPER)?;
     /// let state = plate.regularized();
     /// assert!(state.end_displacement() > plate.coulomb().end_displacement()); // mm
@@ -42,7 +42,7 @@ impl SqueezedPlate {
     ///     SqueezedPlate::new(bad).unwrap_err().to_string(),
     ///     "invalid nu = 0.5: must be in [0, 0.5) (dimensionless)"
     /// );
-    /// # Ok::<(), microslip::ParamError>(())
+    /// # Ok::<(), microslip_core::ParamError>(())
     /// ```
     pub fn new(params: PlateParams) -> Result<Self, ParamError> {
         params.check()?;

@@ -33,7 +33,7 @@ pub struct LapPoint {
 }
 
 /// The joint at one force.
-pub(crate) fn lap_point(joint: &LapJoint, force: JointForce) -> LapPoint {
+pub fn lap_point(joint: &LapJoint, force: JointForce) -> LapPoint {
     let (coulomb, regularized) = (joint.coulomb(force), joint.regularized(force));
     let zones = |s: &LapState| (s.slide_at_inner_end(), s.slide_at_cover_ends());
     LapPoint {
@@ -136,7 +136,7 @@ pub fn lap_param_sweep(
 ///
 /// # Errors
 /// As [`lap_force_sweep`].
-pub(crate) fn lap_displacement_vs_force(
+pub fn lap_displacement_vs_force(
     joint: &LapJoint,
     forces: Samples,
 ) -> Result<(Series, Series), RangeError> {
@@ -152,7 +152,7 @@ pub(crate) fn lap_displacement_vs_force(
 ///
 /// # Errors
 /// As [`lap_force_sweep`].
-pub(crate) fn lap_zone_outline_vs_force(
+pub fn lap_zone_outline_vs_force(
     joint: &LapJoint,
     forces: Samples,
 ) -> Result<(Series, Series), RangeError> {
@@ -171,7 +171,7 @@ pub(crate) fn lap_zone_outline_vs_force(
 
 /// Interface shear tau (MPa) on the inner plate along the overlap at one force: (Coulomb,
 /// regularized).
-pub(crate) fn lap_shear_along(
+pub fn lap_shear_along(
     joint: &LapJoint,
     force: JointForce,
     positions: Samples,
@@ -181,11 +181,7 @@ pub(crate) fn lap_shear_along(
 
 /// Interface slip s(x) = u_inner - u_cover (mm) along the overlap at one force: (Coulomb,
 /// regularized).
-pub(crate) fn lap_slip_along(
-    joint: &LapJoint,
-    force: JointForce,
-    positions: Samples,
-) -> (Series, Series) {
+pub fn lap_slip_along(joint: &LapJoint, force: JointForce, positions: Samples) -> (Series, Series) {
     along(joint, force, positions, LapState::slip_at)
 }
 
@@ -204,7 +200,7 @@ fn along(
 }
 
 /// The joint cycled at one amplitude.
-pub(crate) fn lap_cycle_point(joint: &LapJoint, amplitude: JointForce) -> CyclePoint {
+pub fn lap_cycle_point(joint: &LapJoint, amplitude: JointForce) -> CyclePoint {
     let (c, r) = (
         LapCycle::new(joint, Law::Coulomb, amplitude),
         LapCycle::new(joint, Law::Regularized, amplitude),
@@ -259,7 +255,7 @@ pub fn lap_cycle_loop(
 ///
 /// # Errors
 /// As [`lap_cycle_sweep`].
-pub(crate) fn lap_dissipation_vs_amplitude(
+pub fn lap_dissipation_vs_amplitude(
     joint: &LapJoint,
     amplitudes: Samples,
 ) -> Result<(Series, Series), RangeError> {

@@ -62,7 +62,7 @@ impl TwinBeams {
     ///
     /// # Examples
     /// ```
-    /// use microslip::{TipForce, TwinBeams, TwinBeamsParams};
+    /// use microslip_core::{TipForce, TwinBeams, TwinBeamsParams};
     /// let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
     /// assert_eq!(beams.threshold_force(), 80.0); // mu P b L, N
     /// let state = beams.regularized(TipForce::new(100.0)?);
@@ -72,7 +72,7 @@ impl TwinBeams {
     ///     TwinBeams::new(bad).unwrap_err().to_string(),
     ///     "invalid mu = -0.3: must be > 0 and finite (dimensionless)"
     /// );
-    /// # Ok::<(), microslip::ParamError>(())
+    /// # Ok::<(), microslip_core::ParamError>(())
     /// ```
     pub fn new(params: TwinBeamsParams) -> Result<Self, ParamError> {
         let mut fields = params;

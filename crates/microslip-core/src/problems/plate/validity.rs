@@ -40,16 +40,16 @@ pub const PLATE_QUANTITIES: [&str; 3] = ["thickness mean", "contact face", "mid-
 /// and 0.456 (examples/v1_calibration.rs); a plate outside that grid needed 0.375 on the mean.
 const THICK_COEFFICIENTS: [f64; 3] = [0.40, 0.95, 0.50];
 /// Largest alpha t_p over which (V1a) was calibrated.
-pub(crate) const CALIBRATED_RATIO: f64 = 0.5;
+pub const CALIBRATED_RATIO: f64 = 0.5;
 /// The exponent of (1 - nu) in (V1a).
 const PLATE_ERROR_POISSON_EXPONENT: f64 = 1.2;
 /// (V1b), a slip zone at least 3 thicknesses long and alpha t_p <= 3.5: bound = c t_p / (L - X_r)
 /// (mean, face, mid). Measured at most 0.152, 0.469 and 0.198 over the 130 such plates of the grid.
 const SLIP_COEFFICIENTS: [f64; 3] = [0.17, 0.52, 0.22];
 /// Shortest slip zone, in thicknesses, for which (V1b) was calibrated.
-pub(crate) const CALIBRATED_SLIP: f64 = 3.0;
+pub const CALIBRATED_SLIP: f64 = 3.0;
 /// Largest alpha t_p in the calibration grid of (V1b).
-pub(crate) const CALIBRATED_RATIO_SLIP: f64 = 3.5;
+pub const CALIBRATED_RATIO_SLIP: f64 = 3.5;
 
 /// (V1c), where the strip theory is measured wrong: (smallest alpha t_p, the strip theory's slip
 /// zone (L - X_r) / t_p below, the least |difference| of the thickness mean stated there). Drawn
@@ -57,7 +57,7 @@ pub(crate) const CALIBRATED_RATIO_SLIP: f64 = 3.5;
 /// with and without `--measured-wrong`: alpha t_p 0.55 to 20, nu 0.05 to 0.49, mu 0.02 to 10, t_p/L
 /// 0.005 to 0.3), where the least difference measured was 17 % and 46 %; tested on 197 hold-out
 /// plates (`--hold-out`, tests/plate_continuum.rs), least 27 % and 57 % (docs/theory.md, (V1c)).
-pub(crate) const MEASURED_WRONG: [(f64, f64, f64); 2] = [(0.7, 0.5, 0.15), (1.5, 1.0, 0.40)];
+pub const MEASURED_WRONG: [(f64, f64, f64); 2] = [(0.7, 0.5, 0.15), (1.5, 1.0, 0.40)];
 /// Largest alpha t_p of the (V1c) grid: the continuum solver stops at 20.
 const MEASURED_WRONG_UP_TO_RATIO: f64 = 20.0;
 

@@ -48,7 +48,7 @@ impl TwinBeams {
 
     /// [`TwinBeams::validity`] given the regularized w(L) at `force` under this theory (sweeps
     /// have it already).
-    pub(crate) fn validity_at(&self, force: TipForce, deflection: f64) -> BeamValidity {
+    pub fn validity_at(&self, force: TipForce, deflection: f64) -> BeamValidity {
         let p = self.params();
         let shear = self.shear_deflection(force);
         let euler = match p.theory {

@@ -105,13 +105,7 @@ pub(crate) fn ratio_for_smallest(length: f64, elements: usize, smallest: f64) ->
 /// Boundaries over [start, end] that are `finest` wide at `end` and grow by `ratio` per element
 /// toward `start`, up to `coarsest`; the remaining length is split evenly so that no element is
 /// wider than `coarsest`. Used to resolve the slip zone at a free end.
-pub(crate) fn graded_toward_end(
-    start: f64,
-    end: f64,
-    finest: f64,
-    coarsest: f64,
-    ratio: f64,
-) -> Vec<f64> {
+pub fn graded_toward_end(start: f64, end: f64, finest: f64, coarsest: f64, ratio: f64) -> Vec<f64> {
     let Grading { widths, rest, even } = grading(end - start, finest, coarsest, ratio);
     let even = even as usize;
     let mut breaks: Vec<f64> = (0..=even)
@@ -158,7 +152,7 @@ fn grading(length: f64, finest: f64, coarsest: f64, ratio: f64) -> Grading {
 
 /// The number of elements [`graded_toward_end`] would make, without making them (a deck too large
 /// to write is refused by its size before any allocation).
-pub(crate) fn graded_toward_end_count(
+pub fn graded_toward_end_count(
     start: f64,
     end: f64,
     finest: f64,

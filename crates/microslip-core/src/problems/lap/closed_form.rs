@@ -90,7 +90,7 @@ impl LapJoint {
     ///
     /// # Examples
     /// ```
-    /// use microslip::problems::lap::closed_form::{LapJoint, LapParams};
+    /// use microslip_core::problems::lap::closed_form::{LapJoint, LapParams};
     /// let joint = LapJoint::new(LapParams::ALUMINIUM)?;
     /// assert_eq!(joint.gross_slip_force(), 6000.0); // 2 b mu P L, N
     /// let state = joint.regularized(joint.force(3000.0)?);
@@ -100,7 +100,7 @@ impl LapJoint {
     ///     "invalid F = 7000: must be in [0, 6000] N (F_gross = 2 b mu P L: \
     ///      the joint slides through beyond it)"
     /// );
-    /// # Ok::<(), microslip::ParamError>(())
+    /// # Ok::<(), microslip_core::ParamError>(())
     /// ```
     pub fn new(params: LapParams) -> Result<Self, ParamError> {
         params.check()?;
@@ -536,7 +536,7 @@ impl LapState {
 /// The regime of a loaded joint whose sliding zones from x = 0 and from x = L are `a` and `d` (mm)
 /// over an overlap `length`: shared by the closed forms and the reader of FE slip profiles, so
 /// that both name the same zones the same way.
-pub(crate) fn zones_regime(law: Law, a: f64, d: f64, length: f64) -> Regime {
+pub fn zones_regime(law: Law, a: f64, d: f64, length: f64) -> Regime {
     if a + d >= length {
         return Regime::Macroslip;
     }

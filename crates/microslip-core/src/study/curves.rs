@@ -94,7 +94,7 @@ impl RangeError {
 ///
 /// # Errors
 /// [`RangeError::Points`] outside that range.
-pub(crate) fn check_points(points: u64) -> Result<u64, RangeError> {
+pub fn check_points(points: u64) -> Result<u64, RangeError> {
     if (2..=MAX_POINTS).contains(&points) {
         Ok(points)
     } else {
@@ -115,8 +115,8 @@ pub enum Spacing {
 ///
 /// # Examples
 /// ```
-/// use microslip::study::curves::{beam_force_sweep, force_samples};
-/// use microslip::{Regime, TwinBeams, TwinBeamsParams};
+/// use microslip_core::study::curves::{beam_force_sweep, force_samples};
+/// use microslip_core::{Regime, TwinBeams, TwinBeamsParams};
 /// let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
 /// let forces = force_samples(0.0, 300.0, 4)?; // 0, 100, 200, 300 N
 /// let rows: Vec<_> = beam_force_sweep(beams, forces)?.collect();
@@ -269,7 +269,7 @@ pub struct BeamPoint {
 }
 
 /// The twin beams at one force.
-pub(crate) fn beam_point(beams: &TwinBeams, force: TipForce) -> BeamPoint {
+pub fn beam_point(beams: &TwinBeams, force: TipForce) -> BeamPoint {
     let (coulomb, regularized) = (beams.coulomb(force), beams.regularized(force));
     let w_regularized = regularized.tip_deflection();
     BeamPoint {
@@ -337,7 +337,7 @@ pub struct PlatePoint {
 }
 
 /// The plate as it is.
-pub(crate) fn plate_point(plate: &SqueezedPlate) -> PlatePoint {
+pub fn plate_point(plate: &SqueezedPlate) -> PlatePoint {
     let (coulomb, regularized) = (plate.coulomb(), plate.regularized());
     PlatePoint {
         kt: plate.params().tangential_stiffness,
@@ -468,7 +468,7 @@ pub type Series = Vec<(f64, f64)>;
 ///
 /// # Errors
 /// As [`beam_force_sweep`].
-pub(crate) fn beam_deflection_vs_force(
+pub fn beam_deflection_vs_force(
     beams: &TwinBeams,
     forces: Samples,
 ) -> Result<(Series, Series), RangeError> {
@@ -481,7 +481,7 @@ pub(crate) fn beam_deflection_vs_force(
 ///
 /// # Errors
 /// As [`beam_force_sweep`].
-pub(crate) fn beam_slip_boundary_vs_force(
+pub fn beam_slip_boundary_vs_force(
     beams: &TwinBeams,
     forces: Samples,
 ) -> Result<Series, RangeError> {
@@ -491,7 +491,7 @@ pub(crate) fn beam_slip_boundary_vs_force(
 }
 
 /// Interface shear tau (MPa) along the beams at one force: (Coulomb, regularized).
-pub(crate) fn beam_shear_along(
+pub fn beam_shear_along(
     beams: &TwinBeams,
     force: TipForce,
     positions: Samples,
@@ -520,7 +520,7 @@ fn both_along(
 ///
 /// # Errors
 /// As [`plate_kt_sweep`].
-pub(crate) fn plate_end_displacement_vs_stiffness(
+pub fn plate_end_displacement_vs_stiffness(
     plate: &SqueezedPlate,
     stiffnesses: Samples,
 ) -> Result<(Series, Series), RangeError> {
@@ -533,7 +533,7 @@ pub(crate) fn plate_end_displacement_vs_stiffness(
 ///
 /// # Errors
 /// [`RangeError::Bound`] when an end of `frictions` is not an accepted friction coefficient.
-pub(crate) fn plate_slip_boundary_vs_friction(
+pub fn plate_slip_boundary_vs_friction(
     plate: &SqueezedPlate,
     frictions: Samples,
 ) -> Result<Series, RangeError> {
@@ -546,14 +546,13 @@ pub(crate) fn plate_slip_boundary_vs_friction(
 }
 
 /// Contact pressure ratio P_r / P along the half-plate.
-pub(crate) fn plate_contact_pressure_along(plate: &SqueezedPlate, positions: Samples) -> Series {
+pub fn plate_contact_pressure_along(plate: &SqueezedPlate, positions: Samples) -> Series {
     let pressure = plate.contact_pressure();
     positions.values().map(|x| (x, pressure.ratio(x))).collect()
 }
 
 /// Interface shear tau (MPa) along the half-plate: (Coulomb, regularized).
-#[cfg(feature = "app")]
-pub(crate) fn plate_shear_along(plate: &SqueezedPlate, positions: Samples) -> (Series, Series) {
+pub fn plate_shear_along(plate: &SqueezedPlate, positions: Samples) -> (Series, Series) {
     let (coulomb, regularized) = (plate.coulomb(), plate.regularized());
     both_along(
         positions,
@@ -828,8 +827,8 @@ pub struct ComparedStiffness {
 ///
 /// # Examples
 /// ```
-/// use microslip::study::curves::{Answer, CandidateSource, compare_stiffnesses};
-/// use microslip::{Inputs, ModelKind};
+/// use microslip_core::study::curves::{Answer, CandidateSource, compare_stiffnesses};
+/// use microslip_core::{Inputs, ModelKind};
 /// let model = Inputs::paper(ModelKind::Plate).validate()?;
 /// // Contact elements of 0.1 mm, and K_N = 1e6 MPa/mm at nu = 0.3 for paper eq. 4.
 /// let table = compare_stiffnesses(&model, 0.1, Some((1e6, 0.3)));
@@ -840,7 +839,7 @@ pub struct ComparedStiffness {
 ///     .unwrap();
 /// assert!((eq4.candidate.kt.unwrap() - 6.47e5).abs() < 1e3); // MPa/mm
 /// assert!(matches!(eq4.answer, Some(Answer::Plate { .. })));
-/// # Ok::<(), microslip::ParamError>(())
+/// # Ok::<(), microslip_core::ParamError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct StiffnessComparison {
@@ -971,7 +970,7 @@ pub struct CyclePoint {
 }
 
 /// The twin beams cycled at one amplitude.
-pub(crate) fn cycle_point(beams: &TwinBeams, amplitude: TipForce) -> CyclePoint {
+pub fn cycle_point(beams: &TwinBeams, amplitude: TipForce) -> CyclePoint {
     let (c, r) = (
         Cycle::new(beams, Law::Coulomb, amplitude),
         Cycle::new(beams, Law::Regularized, amplitude),
@@ -1086,7 +1085,7 @@ pub(crate) fn loop_points(
 ///
 /// # Errors
 /// As [`cycle_sweep`].
-pub(crate) fn dissipation_vs_amplitude(
+pub fn dissipation_vs_amplitude(
     beams: &TwinBeams,
     amplitudes: Samples,
 ) -> Result<(Series, Series), RangeError> {

@@ -123,8 +123,7 @@ impl ModelKind {
 
     /// The problem after this one in [`ModelKind::ALL`], the first after the last: what `m`
     /// switches to.
-    #[cfg(any(test, feature = "app"))]
-    pub(crate) fn next(self) -> ModelKind {
+    pub fn next(self) -> ModelKind {
         Self::ALL[(self.index() + 1) % Self::COUNT]
     }
 
@@ -154,7 +153,7 @@ impl ModelKind {
     }
 
     /// Every problem's key, quoted, as error messages offer them: `"beam" or "plate"`.
-    pub(crate) fn choices() -> String {
+    pub fn choices() -> String {
         let keys: Vec<String> = Self::ALL
             .iter()
             .map(|k| format!("\"{}\"", k.name()))
@@ -306,7 +305,7 @@ impl Param {
     }
 
     /// What follows a value of this parameter: ` MPa`, nothing for a dimensionless one.
-    pub(crate) fn unit_suffix(self) -> String {
+    pub fn unit_suffix(self) -> String {
         match self.unit() {
             Unit::Dimensionless => String::new(),
             unit => format!(" {unit}"),
@@ -314,8 +313,7 @@ impl Param {
     }
 
     /// A warning when an accepted `value` is outside [`Param::usual_range`], naming the range.
-    #[cfg(feature = "app")]
-    pub(crate) fn unusual(self, value: f64) -> Option<String> {
+    pub fn unusual(self, value: f64) -> Option<String> {
         let (low, high) = self.usual_range();
         let unit = self.unit_suffix();
         (!(low..=high).contains(&value)).then(|| {
@@ -331,7 +329,7 @@ impl Param {
 
     /// True for the tangential stiffness K_T of any problem (shown in MPa/um as well): the one
     /// parameter in MPa/mm.
-    pub(crate) fn is_stiffness(self) -> bool {
+    pub fn is_stiffness(self) -> bool {
         self.unit() == Unit::MegapascalPerMillimetre
     }
 }
