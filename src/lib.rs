@@ -4,33 +4,25 @@
 //!
 //! Units everywhere: mm, N, MPa; tangential stiffness K_T in MPa/mm.
 //!
-//! # Layers
-//! Data flows one way, lowest first; `tests/layering.rs` reads every `crate::` path of the shipped
-//! code and fails on an edge that runs up or sideways:
+//! # Crates and layers
+//! The physics lives in the `microslip-core` crate (kernel, numeric, problems, study, fit,
+//! verify), which depends on nothing with a terminal, a file format or a command line in it; this
+//! package is the application above it and re-exports the core's modules under their own names
+//! (`microslip::problems` is `microslip_core::problems`), so both read as one layered whole. Data
+//! flows one way, lowest first; `tests/layering.rs` reads every `crate::` path of the shipped
+//! code of both crates and fails on an edge that runs up or sideways:
 //!
 //! ```text
-//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- fe <- chart <- report <- tui <- cli
+//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- measured <- fe <- chart <- report <- tui <- cli
 //! ```
 //!
-//! - [`kernel`]: what no problem owns: typed parameters (units, domains, the error that names a
-//!   field, its value and its range), number formatting shared by every output, overflow-free
-//!   hyperbolic functions, certified root finding, regimes, validity verdicts, and the FE codes'
-//!   default friction penalties (data about K_T). No I/O.
+//! - [`kernel`], [`numeric`], [`problems`], [`study`], [`fit`], [`verify`]: the core crate (its
+//!   own docs say what each holds).
 //! - [`mod@file`]: reading a file a user named (a size cap, never blocking) and writing one without
 //!   clobbering it; the lowest layer beside the kernel.
-//! - [`numeric`]: problem-agnostic finite-element kernels (meshes, elements, banded Cholesky, the
-//!   Jenkins interface point, Newton with load stepping).
-//! - [`problems`]: one folder per benchmark ([`problems::twin_beams`], [`problems::plate`],
-//!   [`problems::lap`]) with its parameters, closed forms, validity envelope and independent
-//!   discretized solver; the closed forms and the discretized solvers never import each other
-//!   (the layering test checks it), so their agreement proves something. [`problems::ModelKind`] lists the problems and
-//!   [`problems::inputs`] holds the inputs and validated models of any of them.
-//! - [`study`]: sweeps, families and loops over any parameter, solving for a target value, the
-//!   smallest K_T within a tolerance of Coulomb.
-//! - [`fit`]: identification of mu and K_T, with structured evidence (no prose).
-//! - [`verify`]: the only place that calls both the closed forms and the discretized solvers,
-//!   returning the worst cases as data.
 //! - [`preset`]: TOML parse and write, and the file store (atomic, no clobber).
+//! - [`measured`]: measured curves read from CSV for the fits and the FE readers (the core's
+//!   fits take points, not files).
 //! - [`fe`]: decks for CalculiX (Abaqus keyword syntax), result readers, the comparison of an FE
 //!   code's answer with the closed forms (it uses [`fit`] for the implied K_T, so it sits above it).
 //! - [`chart`]: what every chart shows, as data (title, axes, series), built from the layers
@@ -48,31 +40,20 @@
 //!   clap, ratatui, crossterm or signal-hook is compiled.
 //!
 //! # What a problem is, and what adding one touches
-//! A problem is a folder of [`problems`] (its parameters, closed forms, cycle, validity envelope,
-//! discretized solver and its [`problems::Description`]) and one line of the list in
-//! `problems/mod.rs` (`problem_list!`: the variant and its folder). What the generic layers need
-//! to know of it is data they read, not a match they make: its parameters with their domains,
-//! units and scales, the quantities a target can be set on ([`problems::Quantity`], named and
-//! computed by the problem), its response symbol and its load parameter, its charts with their x
-//! parameter, load axis and default y scale ([`chart::view::ChartSet`]); presets, `--set`, the
-//! parameter pane, undo, pins, `v`, `t`, `solve` and the deck header work from those. What every
-//! problem's solution answers has one name in every problem ([`problems::Solution`]: `response`,
-//! `regime`, `zone_end`).
+//! A problem is a folder of [`problems`] in the core crate (its parameters, closed forms, cycle,
+//! validity envelope, discretized solver and its [`problems::Description`]) and one line of the
+//! registry in `problems/mod.rs`; the checklist a new problem follows is in the docs of
+//! [`problems`]. What the generic layers need to know of it is data they read, not a match they
+//! make: its parameters with their domains, units and scales, the quantities a target can be set
+//! on, its response symbol and its load parameter, its charts with their x parameter, load axis
+//! and default y scale ([`chart::view::ChartSet`]).
 //!
-//! This differs from the plan in `ARCHITECTURE.md` (a design note kept outside this repository)
-//! in one way, for a reason: the plan puts a problem's deck, report type and chart series in its
-//! folder, but those sit in layers above `problems` (a chart is built from `study`'s sampling, a
-//! report renders `fe`'s comparison), and a folder that held them would make the layering test
-//! meaningless. So a problem's code above the physics lives in one file per layer, named after the
-//! problem (`report/point/beam.rs`, `report/compare/plate.rs`, ...), and the enums that carry a
-//! problem's own types through those layers (`Param`, `Inputs`, `Model`, `AnyChart`, `AnyLoaded`,
-//! `Answer`) have one variant per problem: the compiler then lists every place a new problem must
-//! answer (exhaustive matches; no `_ =>` default over problems remains in `cli` or `tui`). Other
-//! choices: `verify` sits at the top level because it calls both sides of every problem and is
-//! neither physics nor I/O; the charts that exist live in `chart::view` so that figure exports
-//! name them as the TUI does, while which one is shown (`Views`) and the text table shown in the
-//! chart pane are the TUI's; `cli` sits above `tui` because `microslip` with no command starts the
-//! TUI.
+//! Where this departs from the project's intended shape, and why: FE decks, readers and the
+//! comparison are a module of the application ([`fe`]) rather than a crate of their own, because
+//! they are used only by the application and a crate boundary would add a published surface
+//! without a user; `verify` is in the core because it calls both sides of every problem and is
+//! neither I/O nor presentation; `cli` sits above `tui` because `microslip` with no command starts
+//! the TUI.
 //!
 //! # Example
 //! ```
