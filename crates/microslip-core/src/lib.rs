@@ -35,8 +35,7 @@
 //!
 //! # Example
 //! ```
-//! use microslip_core::problems::plate::closed_form::{PlateParams, SqueezedPlate};
-//! use microslip_core::problems::twin_beams::closed_form::{TipForce, TwinBeams, TwinBeamsParams};
+//! use microslip_core::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 //! let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
 //! let state = beams.regularized(TipForce::new(100.0)?);
 //! assert_eq!(state.regime().label(), "microslip+macroslip");
@@ -45,7 +44,7 @@
 //! let squeezed = plate.regularized();
 //! assert_eq!(squeezed.regime().label(), "microslip+macroslip");
 //! assert!(squeezed.micro_zone_end() < 10.0 && squeezed.end_displacement() > 0.0);
-//! # Ok::<(), microslip_core::kernel::params::ParamError>(())
+//! # Ok::<(), microslip_core::ParamError>(())
 //! ```
 
 pub mod fit;
