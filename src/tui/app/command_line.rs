@@ -23,6 +23,7 @@ impl App {
         let (completed, names) = crate::tui::command::complete(&text, self.kind);
         self.completed(&text, &completed, &names);
     }
+
     /// Enter in the command line.
     pub(super) fn run_command(&mut self, text: &str) {
         use crate::tui::command::{Command, parse};
@@ -49,6 +50,7 @@ impl App {
             Ok(Command::Quit) => self.update_normal(Action::RequestQuit),
         }
     }
+
     /// `:KT=250 mu=0.2`: every value set, or none (the first refusal is said, as `--set` says
     /// it); one undo step.
     pub(super) fn set_values(&mut self, assignments: &[String]) {

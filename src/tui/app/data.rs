@@ -32,6 +32,7 @@ impl App {
             Effect::ReadMeasurements { path }
         });
     }
+
     /// Measurements read for the fit; problems go to the status line and keep the previous data.
     pub(super) fn measurements_read(
         &mut self,
@@ -49,6 +50,7 @@ impl App {
             Err(reason) => self.error(format!("{path}: {reason}")),
         }
     }
+
     /// FE results: shown on the w(L) or u(L) chart, labelled with the code's name; a deck's
     /// parameters become the model's (the points mean nothing against others), and the status line
     /// gives the comparison `microslip compare` prints.
@@ -167,6 +169,7 @@ impl App {
         // The external points are of the problem's response: its first chart.
         self.views = self.views.with(model, View::first(model));
     }
+
     /// Forgets the measurements and FE results; says what went, as `25 measurements and the
     /// CalculiX points` (empty when nothing was loaded).
     pub(super) fn forget_data(&mut self) -> String {
@@ -187,6 +190,7 @@ impl App {
             .collect::<Vec<_>>()
             .join(" and ")
     }
+
     /// `D`: drops the loaded measurements and FE results.
     pub(super) fn drop_data(&mut self) {
         let dropped = self.forget_data();

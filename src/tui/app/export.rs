@@ -12,6 +12,7 @@ impl App {
     pub fn set_export_dir(&mut self, dir: PathBuf) {
         self.export_dir = dir;
     }
+
     /// The file name (without extension) of the chart shown: `microslip-w-vs-f`, or after `v`
     /// `microslip-w-vs-mu`.
     pub(super) fn export_stem(&self) -> String {
@@ -29,6 +30,7 @@ impl App {
         };
         format!("microslip-{chart}")
     }
+
     /// `x`: asks to write the chart shown as an SVG figure and its points as CSV, under the first
     /// free name (`-2`, `-3`, ... appended); never replaces a file ([`Effect::ExportChart`]).
     pub(super) fn export_chart(&mut self) {
@@ -68,6 +70,7 @@ impl App {
             csv,
         });
     }
+
     /// What `x` wrote, or why nothing.
     pub(super) fn exported(&mut self, result: Result<PathBuf, ExportError>) {
         match result {

@@ -35,6 +35,7 @@ impl App {
         });
         self.mode = Mode::Fitting { job: self.jobs };
     }
+
     /// A fit's result: adopts each estimate the data determine (identified or weakly) and says
     /// what it did.
     pub(super) fn fitted(&mut self, fitted: Result<crate::fit::FitResult, crate::fit::FitError>) {

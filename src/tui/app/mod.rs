@@ -304,40 +304,47 @@ impl App {
         app.recompute();
         app
     }
+
     fn snapshot(&self) -> Snapshot {
         Snapshot {
             inputs: ByProblem::from_fn(|kind| self.states[kind].inputs),
             kind: self.kind,
         }
     }
+
     fn restore(&mut self, snapshot: Snapshot) {
         for (kind, inputs) in snapshot.inputs.iter() {
             self.states[kind].inputs = *inputs;
         }
         self.kind = snapshot.kind;
     }
+
     /// The effects asked for outside an action (by [`App::new`]: the continuum of a plate it
     /// opens on), for the loop to perform before the first key.
     pub fn take_asked(&mut self) -> Vec<Effect> {
         std::mem::take(&mut self.asked)
     }
+
     /// Says why Ctrl-Z did nothing: the kernel discards a stop in a process group that no
     /// job-control shell leads (`ssh host microslip`, `sh -c`), since nothing could resume it.
     pub fn suspend_ignored(&mut self) {
         self.error("Not suspended: no job-control shell here could resume microslip (q quits)");
     }
+
     fn info(&mut self, text: impl Into<String>) {
         self.message = Some(Message {
             text: text.into(),
             is_error: false,
         });
     }
+
     fn error(&mut self, text: impl Into<String>) {
         self.message = Some(Message {
             text: text.into(),
             is_error: true,
         });
     }
+
     /// Whether `action` may act while the terminal is too small to draw the app: only quitting
     /// (q, Esc, Ctrl-C), answering the quit question, and suspending. Anything else would act
     /// unseen: at 1x1, `x` exported a file nobody saw.
@@ -345,6 +352,7 @@ impl App {
         matches!(action, Action::Quit | Action::RequestQuit | Action::Suspend)
             || matches!(self.mode, Mode::ConfirmQuit { .. })
     }
+
     /// Applies one action; returns what the caller must do for it (nothing, for most keys), whose
     /// outcomes go to [`App::receive`]. Touches no file and never waits.
     pub fn update(&mut self, action: Action) -> Vec<Effect> {
@@ -360,12 +368,14 @@ impl App {
         let undoable = !matches!(action, Action::Undo | Action::Redo);
         self.applying(undoable, |app| app.dispatch(action))
     }
+
     /// Applies what came of an effect (a file read, a preset saved, a fit's progress or result);
     /// returns what must be done next, like [`App::update`]. A parameter change it makes (a fit
     /// adopted, a deck's parameters) is undone by `u` like a key's.
     pub fn receive(&mut self, outcome: Outcome) -> Vec<Effect> {
         self.applying(true, |app| app.outcome(outcome))
     }
+
     /// Runs `change`, records the parameters before it for `u` when it changed them (and
     /// `undoable`), and hands over the effects it asked for.
     fn applying(&mut self, undoable: bool, change: impl FnOnce(&mut App)) -> Vec<Effect> {
@@ -388,6 +398,7 @@ impl App {
         }
         std::mem::take(&mut self.asked)
     }
+
     /// Applies what came of an effect (see [`App::receive`]).
     fn outcome(&mut self, outcome: Outcome) {
         match outcome {
@@ -447,6 +458,7 @@ impl App {
             }
         }
     }
+
     fn dispatch(&mut self, action: Action) {
         match std::mem::replace(&mut self.mode, Mode::Normal) {
             Mode::Normal => self.update_normal(action),

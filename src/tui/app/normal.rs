@@ -176,6 +176,7 @@ impl App {
             | Action::Quit => {}
         }
     }
+
     /// Undoes (`redo` false) or redoes the last change of any problem's parameters.
     pub(super) fn travel(&mut self, redo: bool) {
         let now = self.snapshot();
@@ -199,6 +200,7 @@ impl App {
         };
         self.info(format!("{done}; {left} more with {key}"));
     }
+
     /// Moves the selected parameter by its fine or coarse step; the result is validated like typed
     /// input.
     pub(super) fn step(&mut self, up: bool, coarse: bool) {
@@ -228,6 +230,7 @@ impl App {
         }
         self.set_value(param, next);
     }
+
     /// Sets a parameter if the model accepts it; otherwise refuses with the model's message and keeps
     /// the previous value.
     pub(super) fn set_value(&mut self, param: Param, value: f64) {
@@ -248,10 +251,12 @@ impl App {
             Err(e) => self.error(format!("{e}; kept {}", self.current_value(param))),
         }
     }
+
     /// The parameter's current value, as the status line shows it.
     pub(super) fn current_value(&self, param: Param) -> String {
         number(self.inputs().get(param).unwrap_or(0.0))
     }
+
     /// Enter in the value field: parse, then set like a step.
     pub(super) fn commit_value(&mut self, text: &str) {
         let param = self.selected_param();
@@ -260,6 +265,7 @@ impl App {
             Err(e) => self.error(format!("{e}; kept {}", self.current_value(param))),
         }
     }
+
     /// `t`: the value of the selected parameter at which a quantity takes the typed target; one
     /// certified root is adopted (u undoes it), anything else is said.
     pub(super) fn solve_target(&mut self, text: &str) {

@@ -44,6 +44,7 @@ impl App {
              compare, G clears"
         ));
     }
+
     /// `G`: removes every pin of the active model.
     pub(super) fn clear_pins(&mut self) {
         let count = std::mem::take(&mut self.state_mut().pins).len();

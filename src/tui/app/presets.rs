@@ -16,6 +16,7 @@ impl App {
             user_dir: self.user_dir.clone(),
         });
     }
+
     pub(super) fn update_presets(&mut self, entries: Vec<Listed>, selected: usize, action: Action) {
         let count = entries.len().max(1);
         match action {
@@ -48,6 +49,7 @@ impl App {
             _ => self.mode = Mode::Presets { entries, selected },
         }
     }
+
     /// A preset loaded (picked, or named after `:preset`): its model becomes the active one, with
     /// its values. Loaded data go: measurements and FE results belong to the bench they were
     /// loaded for (the rule the help states).
@@ -66,6 +68,7 @@ impl App {
         };
         self.info(format!("loaded preset {}{dropped}", self.preset_name()));
     }
+
     /// After the name of `s`: asks for the preset's description, prefilled with the loaded
     /// preset's own when the name is the one it was loaded from, else with the default one.
     pub(super) fn ask_description(&mut self, name: String) {
@@ -87,6 +90,7 @@ impl App {
             input: TextInput::prefilled(&description),
         };
     }
+
     /// The description of a preset saved without one.
     pub(super) fn default_description(&self) -> String {
         format!(
@@ -95,6 +99,7 @@ impl App {
             self.preset_name()
         )
     }
+
     /// Asks to save the parameters as the user preset `name` (replacing one only if `overwrite`).
     pub(super) fn save(&mut self, name: String, description: String, overwrite: bool) {
         let Some(dir) = self.user_dir.clone() else {
@@ -111,6 +116,7 @@ impl App {
             overwrite,
         });
     }
+
     /// A preset saved: the model now comes from it. One of that name exists: asks before
     /// replacing it.
     pub(super) fn saved(

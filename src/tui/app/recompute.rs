@@ -20,10 +20,12 @@ impl App {
             self.force_span[kind] = self.regime_scale_of(kind).map(|s| span * s);
         }
     }
+
     /// `kind`'s regime scale at its current values (F_thre for the beams), where it has one.
     pub(super) fn regime_scale_of(&self, kind: ModelKind) -> Option<f64> {
         self.states[kind].inputs.validate().ok()?.regime_scale()
     }
+
     /// What the regime pane shows of the plate's continuum solution.
     pub fn continuum(&self) -> crate::tui::summary::ContinuumState {
         use crate::tui::summary::ContinuumState;
@@ -42,12 +44,14 @@ impl App {
             _ => ContinuumState::Solving,
         }
     }
+
     /// The lines of the regime pane.
     pub fn summary_lines(&self) -> Vec<crate::tui::summary::SummaryLine> {
         self.model().map_or_else(Vec::new, |m| {
             crate::tui::summary::summary_lines(&m, &self.continuum())
         })
     }
+
     /// The lines `i` walks through: the regime pane's title where it states an envelope, then
     /// its lines.
     pub fn explained_lines(&self) -> Vec<crate::tui::summary::SummaryLine> {
@@ -55,6 +59,7 @@ impl App {
             crate::tui::summary::explained_lines(&m, &self.continuum())
         })
     }
+
     /// Asks for the plate's continuum at the current values when it is shown and not asked yet.
     pub(super) fn ask_continuum(&mut self) {
         let plate = match self.model() {
@@ -68,6 +73,7 @@ impl App {
         self.continuum = Some((params, None));
         self.asked.push(Effect::SolveContinuum { params });
     }
+
     /// A problem's load axis (the beams' F), kept while values change so that the curves can be
     /// compared, is fitted again (`load_span` times the regime scale: 3 F_thre, 1 F_gross) when
     /// the regime scale leaves it or is squeezed into its first twelfth (a geometry, mu or P
@@ -103,6 +109,7 @@ impl App {
             }
         }
     }
+
     /// Rebuilds the chart (and the finite-element points when shown) after any change.
     pub(super) fn recompute(&mut self) {
         self.follow_threshold();
@@ -166,6 +173,7 @@ impl App {
             .collect();
         self.plot = pins::add_pins(plot, &pinned);
     }
+
     /// The chart shown, with its y axis linear; None where the view is a table.
     pub(super) fn linear_plot(&self, model: &Model) -> Option<Plot> {
         let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
@@ -178,6 +186,7 @@ impl App {
             self.force_span[model.kind()],
         )
     }
+
     /// The chart shown (the view's, or the one against the parameter of `v`) for `model`; None
     /// where the view is a table (the v chart takes its place too).
     pub(super) fn chart_of(
@@ -196,6 +205,7 @@ impl App {
             model, shown, numeric, measured, external, force_span,
         ))
     }
+
     /// Which chart the y-axis mode belongs to: the view's chart, None for the chart of `v`;
     /// tables have none (outer None).
     pub(super) fn y_key(&self) -> Option<Option<AnyChart>> {
@@ -204,6 +214,7 @@ impl App {
         }
         self.views.of(self.kind).chart().map(Some)
     }
+
     /// The y-axis mode of the chart shown.
     pub fn y_mode(&self) -> YMode {
         let Some(key) = self.y_key() else {
@@ -214,6 +225,7 @@ impl App {
             .find(|(k, _)| *k == key)
             .map_or_else(|| key.map_or(YMode::Linear, YMode::default_for), |m| m.1)
     }
+
     /// `y`: the next y-axis mode the chart can show.
     pub(super) fn cycle_y_axis(&mut self) {
         let (Some(key), Some(model)) = (self.y_key(), self.model()) else {

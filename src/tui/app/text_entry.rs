@@ -44,6 +44,7 @@ impl App {
         }
         true
     }
+
     /// One key in a text-entry mode: edits stay in the mode (rebuilt by `mode`), Esc leaves it with
     /// the note `cancelled`, Enter returns the trimmed text for the caller to act on.
     pub(super) fn edit(
@@ -82,6 +83,7 @@ impl App {
         self.mode = mode(input);
         None
     }
+
     /// Tab's completion: applied if the prompt still holds the text completed; the status line
     /// lists the names that match.
     pub(super) fn completed(&mut self, text: &str, completed: &str, names: &[String]) {
@@ -106,6 +108,7 @@ impl App {
         input.set(completed);
         self.completions(names, "no file name starts so");
     }
+
     /// What Tab found, on the status line: nothing, the one match (no message), or the matches.
     pub(super) fn completions(&mut self, names: &[String], none: &str) {
         match names.len() {
