@@ -36,7 +36,7 @@ impl App {
     pub(super) fn export_chart(&mut self) {
         use crate::report::figure;
         use crate::report::table::{TableFormat, write_table};
-        if self.table.is_some() {
+        if self.view.chart.table.is_some() {
             return self.error("x exports charts; this is a table (microslip kt prints it)");
         }
         // A figure is read away from the screen: the parameters in a caption (as `plot` writes
@@ -48,7 +48,7 @@ impl App {
             .iter()
             .map(|pin| (pin.number, pin.inputs))
             .collect();
-        let mut plot = pins::named_by_values(self.plot.clone(), &current, &pinned);
+        let mut plot = pins::named_by_values(self.view.chart.plot.clone(), &current, &pinned);
         let x_param = match self.varied() {
             Some(param) => Some(param),
             None => self.views.of(self.kind).chart().and_then(AnyChart::x_param),
@@ -59,7 +59,7 @@ impl App {
             Err(e) => return self.error(e.to_string()),
         };
         let mut csv = Vec::new();
-        let rows = crate::report::rows::chart_rows(&self.plot);
+        let rows = crate::report::rows::chart_rows(&self.view.chart.plot);
         if let Err(e) = write_table(&mut csv, TableFormat::Csv, rows) {
             return self.error(format!("export failed: {e}"));
         }

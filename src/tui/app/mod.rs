@@ -11,6 +11,7 @@ use super::effects::{Effect, Outcome};
 use super::keymap::Context;
 use super::text_input::TextInput;
 use super::theme::Theme;
+use super::view::View;
 use super::views::Views;
 use crate::PlateParams;
 use crate::chart::view::AnyChart;
@@ -217,9 +218,9 @@ pub struct App {
     show_numeric: bool,
     user_dir: Option<PathBuf>,
     quit: bool,
-    plot: Plot,
-    /// The K_T table (title and lines) when the view is the table; `plot` is empty then.
-    table: Option<(&'static str, Vec<String>)>,
+    /// What the screen shows, rebuilt after every action and outcome (the chart by
+    /// [`App::recompute`]): the drawing reads it and nothing of the physics.
+    view: View,
     numeric: Option<NumericPoints>,
     measurements: Option<Measurements>,
     /// Points of an external FE code loaded with `d` (a CalculiX .dat, or a plate CSV), and the
@@ -282,8 +283,7 @@ impl App {
             show_numeric: false,
             user_dir: options.user_dir,
             quit: false,
-            plot: Plot::default(),
-            table: None,
+            view: View::default(),
             numeric: None,
             measurements: options.data,
             external: None,
@@ -302,6 +302,7 @@ impl App {
         };
         app.fit_axes();
         app.recompute();
+        app.refresh_view();
         app
     }
 
@@ -387,6 +388,7 @@ impl App {
                 None => self.info(note),
             }
         }
+        self.refresh_view();
         let after = self.snapshot();
         let changed = before.inputs != after.inputs;
         if changed && undoable {
@@ -573,7 +575,12 @@ impl App {
                 }
             }
             Mode::Explain { line } => {
-                let count = self.explained_lines().len().max(1);
+                let count = self
+                    .view
+                    .regime
+                    .as_ref()
+                    .map_or(0, |r| r.explained().count());
+                let count = count.max(1);
                 match action {
                     Action::Next => {
                         self.mode = Mode::Explain {

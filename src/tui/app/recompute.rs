@@ -10,6 +10,8 @@ use crate::problems::{ModelKind, Param};
 use crate::report::number;
 use crate::tui::effects::Effect;
 use crate::tui::kt_table;
+use crate::tui::summary::SummaryLine;
+use crate::tui::view;
 
 impl App {
     /// The load axis of each problem's charts that run along its load: 3 times its regime scale
@@ -46,18 +48,48 @@ impl App {
     }
 
     /// The lines of the regime pane.
-    pub fn summary_lines(&self) -> Vec<crate::tui::summary::SummaryLine> {
-        self.model().map_or_else(Vec::new, |m| {
-            crate::tui::summary::summary_lines(&m, &self.continuum())
-        })
+    pub fn summary_lines(&self) -> Vec<SummaryLine> {
+        self.view
+            .regime
+            .as_ref()
+            .map_or_else(Vec::new, |r| r.lines.clone())
     }
 
     /// The lines `i` walks through: the regime pane's title where it states an envelope, then
     /// its lines.
-    pub fn explained_lines(&self) -> Vec<crate::tui::summary::SummaryLine> {
-        self.model().map_or_else(Vec::new, |m| {
-            crate::tui::summary::explained_lines(&m, &self.continuum())
-        })
+    pub fn explained_lines(&self) -> Vec<SummaryLine> {
+        self.view
+            .regime
+            .as_ref()
+            .map_or_else(Vec::new, |r| r.explained().cloned().collect())
+    }
+
+    /// Rebuilds what the screen shows of the state, but the chart ([`App::recompute`] builds
+    /// it): the parameter rows, the regime pane and its strip, the status line's names. Run
+    /// after every action and outcome, so that it is never stale; it costs closed forms only.
+    pub(super) fn refresh_view(&mut self) {
+        let state = self.state();
+        let (title, rows) = view::parameters(self.kind, &state.inputs, &state.preset.inputs);
+        let regime = self
+            .model()
+            .map(|m| view::regime(&m, &self.continuum(), &crate::tui::ui::strip_cells()));
+        let (name, position, count) = self.views.describe(self.kind);
+        let chart_title = match self.varied() {
+            Some(param) => format!("vs {param} (v or c: back to {name})"),
+            None => format!("{name} ({position}/{count}, c cycles)"),
+        };
+        let target_quantities = crate::study::target::Quantity::names(self.kind);
+        let preset = self.state().preset.name.clone();
+        let modified = self.modified();
+        let view = &mut self.view;
+        view.parameters_title = title;
+        view.rows = rows;
+        view.regime = regime;
+        view.chart.title = chart_title;
+        view.kind = self.kind.to_string();
+        view.preset = preset;
+        view.modified = modified;
+        view.target_quantities = target_quantities.to_string();
     }
 
     /// Asks for the plate's continuum at the current values when it is shown and not asked yet.
@@ -128,14 +160,14 @@ impl App {
         let y_mode = self.y_mode();
         let Some(plot) = self.linear_plot(&model) else {
             // The view is the K_T table: text in the chart pane.
-            self.table = Some(kt_table::stiffness_table(&model));
-            self.plot = Plot::default();
+            self.view.chart.table = Some(kt_table::stiffness_table(&model));
+            self.view.chart.plot = Plot::default();
             return;
         };
-        self.table = None;
+        self.view.chart.table = None;
         let plot = y_mode.apply(plot);
         if self.state().pins.is_empty() {
-            self.plot = plot;
+            self.view.chart.plot = plot;
             return;
         }
         // Each pin: the same chart at its values, in the same y mode, without the overlays, over
@@ -171,7 +203,7 @@ impl App {
                 Some((pin.number, pins::label(&pin.inputs, &current), plot))
             })
             .collect();
-        self.plot = pins::add_pins(plot, &pinned);
+        self.view.chart.plot = pins::add_pins(plot, &pinned);
     }
 
     /// The chart shown, with its y axis linear; None where the view is a table.

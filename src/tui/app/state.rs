@@ -6,6 +6,7 @@ use crate::chart::Plot;
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::{ModelKind, Param};
 use crate::tui::theme::Theme;
+use crate::tui::view::View;
 use crate::tui::views::Views;
 
 impl App {
@@ -122,12 +123,17 @@ impl App {
 
     /// The chart to draw, computed when the state last changed.
     pub fn plot(&self) -> &Plot {
-        &self.plot
+        &self.view.chart.plot
+    }
+
+    /// What the screen shows of the state: the view model (`tui/view.rs`) the drawing reads.
+    pub fn view(&self) -> &View {
+        &self.view
     }
 
     /// The table shown in the chart pane in place of a chart (title and lines), if the view is
     /// one.
     pub fn table(&self) -> Option<&(&'static str, Vec<String>)> {
-        self.table.as_ref()
+        self.view.chart.table.as_ref()
     }
 }
