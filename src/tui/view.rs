@@ -208,20 +208,14 @@ fn shear_ratios(model: &Model, zones: &InterfaceZones, cells: usize) -> ShearRow
             regularized: Vec::new(),
         };
     };
-    let (series, limit): ((Series, Series), f64) = match model {
-        Model::Beam { beams, force } => (
-            beam_shear_along(beams, *force, positions),
-            beams.coulomb_stress(),
-        ),
-        Model::Plate(plate) => {
-            let p = plate.params();
-            (plate_shear_along(plate, positions), p.friction * p.pressure)
-        }
-        Model::Lap { joint, force } => (
-            crate::study::lap::lap_shear_along(joint, *force, positions),
-            joint.coulomb_stress(),
-        ),
+    let series: (Series, Series) = match model {
+        Model::Beam { beams, force } => beam_shear_along(beams, *force, positions),
+        Model::Plate(plate) => plate_shear_along(plate, positions),
+        Model::Lap { joint, force } => crate::study::lap::lap_shear_along(joint, *force, positions),
     };
+    // mu P, the stress the interface slides at, for every problem.
+    let interface = model.interface();
+    let limit = interface.friction * interface.pressure;
     let ratio = |s: Series| -> Vec<f64> {
         s.into_iter()
             .map(|(_, tau)| (tau.abs() / limit).clamp(0.0, 1.0))
