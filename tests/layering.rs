@@ -349,6 +349,46 @@ fn every_top_level_module_has_a_layer() {
     }
 }
 
+/// What the drawing may not name: the physics and what runs it. The TUI's `ui/` draws the
+/// read-only view that `recompute` builds (`tui/view.rs`), so that a frame costs no solve and
+/// every number on screen was computed once, where the state changed.
+const PHYSICS: &[&str] = &["kernel", "numeric", "problems", "study", "fit", "verify"];
+
+/// The physics modules a piece of code names (directly, through a root re-export, or through
+/// the core crate's own name).
+fn physics_named(code: &str, root: &BTreeMap<String, String>) -> Vec<String> {
+    let mut named: Vec<String> = modules_used(code, root)
+        .into_iter()
+        .filter(|m| PHYSICS.contains(&m.as_str()))
+        .collect();
+    if code.contains("microslip_core") {
+        named.push("microslip_core".to_string());
+    }
+    named
+}
+
+#[test]
+fn the_tui_s_drawing_names_no_physics() {
+    let (sources, root) = crate_sources();
+    let drawing: Vec<&Source> = sources
+        .iter()
+        .filter(|s| s.path.starts_with("tui/ui/"))
+        .collect();
+    assert!(drawing.len() >= 4, "read {} files of tui/ui", drawing.len());
+    let found: Vec<String> = drawing
+        .iter()
+        .filter_map(|s| {
+            let named = physics_named(&s.code, &root);
+            (!named.is_empty()).then(|| format!("{}: names {}", s.path, named.join(", ")))
+        })
+        .collect();
+    assert!(
+        found.is_empty(),
+        "drawing names physics:\n{}",
+        found.join("\n")
+    );
+}
+
 /// The checker itself can fail: each kind of breach, written into a synthetic source, is
 /// reported.
 #[test]
@@ -415,4 +455,19 @@ fn the_checker_reports_each_kind_of_breach() {
     // A problem's shared vocabulary (inputs, quantity, ...) is not another problem.
     let shared = "use crate::problems::{Description, Param, Quantity, QuantityName, Solution};\n";
     assert!(breaches(&[source("problems/plate/mod.rs", shared)], &root).is_empty());
+    // Drawing that names physics, directly or through a root re-export; the view it reads is
+    // fine.
+    assert_eq!(
+        physics_named("let z = crate::study::curves::interface_zones(m);", &root),
+        ["study"]
+    );
+    assert_eq!(
+        physics_named("use crate::{TwinBeams};", &root),
+        ["problems"]
+    );
+    assert_eq!(
+        physics_named("use microslip_core::study::curves::Zone;", &root),
+        ["microslip_core"]
+    );
+    assert!(physics_named("use crate::tui::view::View;", &root).is_empty());
 }

@@ -30,6 +30,7 @@ pub mod terminal;
 pub mod text_input;
 pub mod theme;
 pub mod ui;
+pub mod view;
 pub mod views;
 
 use std::io::{self, IsTerminal};

@@ -13,6 +13,7 @@ use crate::study::lap::lap_point;
 /// One line of the regime pane: its text (a regime line has a label and a styled value) and what
 /// it means, in words for someone who has not read the paper (`i`, and the spare height of tall
 /// screens).
+#[derive(Debug, Clone, PartialEq)]
 pub struct SummaryLine {
     /// The text, or the label of a regime line.
     pub text: String,
@@ -199,7 +200,6 @@ fn lap_validity_words(v: &crate::problems::lap::LapValidity) -> String {
     }
 }
 
-/// The lines of the regime pane for `model`; `continuum`: the plate's 2-D continuum u(L).
 /// The largest beam-theory envelope (V2) the regime pane's title states (10 %): past it the
 /// bound's 4 w(L)/L term speaks of deflections far beyond the largest measured (w/L about 1.3 %,
 /// docs/theory.md (V2)), so no number is claimed there.
@@ -229,15 +229,7 @@ pub fn title_line(model: &Model) -> Option<SummaryLine> {
     }
 }
 
-/// The lines `i` walks through: the pane's title where it states an envelope, then the pane's
-/// lines.
-pub fn explained_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLine> {
-    title_line(model)
-        .into_iter()
-        .chain(summary_lines(model, continuum))
-        .collect()
-}
-
+/// The lines of the regime pane for `model`; `continuum`: the plate's 2-D continuum u(L).
 pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLine> {
     const RATIO: &str =
         "regularized / Coulomb: 1.01 means 1 % more than under the plain Coulomb law";

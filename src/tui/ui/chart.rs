@@ -22,28 +22,23 @@ use ratatui::widgets::{Axis, Chart, Dataset, GraphType, Paragraph, Widget};
 
 use super::panes::pane;
 use crate::chart::{self as plots, Plot, PlotSeries, SeriesKind, SeriesRole, pins};
-use crate::study::curves::Series;
 use crate::tui::app::App;
 use crate::tui::theme::{Role, Theme};
 
 /// The chart pane: title, legend, plot.
 pub fn draw(frame: &mut Frame, app: &App, area: Rect) {
     let theme = app.theme();
-    let plot = app.plot();
-    let (name, position, count) = app.views().describe(app.kind());
-    let title = match app.varied() {
-        Some(param) => format!("vs {param} (v or c: back to {name})"),
-        None => format!("{name} ({position}/{count}, c cycles)"),
-    };
-    let mut block = pane(app, &title);
-    if app.table().is_none() {
+    let shown = &app.view().chart;
+    let plot = &shown.plot;
+    let mut block = pane(app, &shown.title);
+    if shown.table.is_none() {
         // The x axis's title on the pane's lower border, not on the chart's bottom row, where it
         // would hide a curve lying along y = 0 (u(L) under Coulomb on the plate's K_T axis).
         block = block.title_bottom(Line::from(format!(" {} ", plot.x.title)).right_aligned());
     }
     let inner = block.inner(area);
     frame.render_widget(block, area);
-    if let Some((table_title, table)) = app.table() {
+    if let Some((table_title, table)) = &shown.table {
         let mut lines = vec![Line::from(format!(" {table_title}")), Line::from("")];
         lines.extend(table.iter().map(|l| Line::from(format!(" {l}"))));
         frame.render_widget(Paragraph::new(lines), inner);
@@ -189,7 +184,7 @@ fn drawing_order(plot: &Plot) -> Vec<(usize, &PlotSeries)> {
 fn colour_datasets<'a>(
     plot: &'a Plot,
     theme: &Theme,
-    labels: &'a [(u8, Series)],
+    labels: &'a [(u8, Vec<(f64, f64)>)],
 ) -> Vec<Dataset<'a>> {
     let curves = drawing_order(plot).into_iter().map(|(_, s)| {
         let (graph, style, marker) = match s.kind() {
@@ -227,7 +222,7 @@ fn label_fractions(n: u8) -> [f64; 2] {
 }
 
 /// The points of each pinned curve that carry its number in colour mode.
-fn pin_label_points(plot: &Plot) -> Vec<(u8, Series)> {
+fn pin_label_points(plot: &Plot) -> Vec<(u8, Vec<(f64, f64)>)> {
     let [x0, x1] = plot.x.bounds;
     plot.series
         .iter()

@@ -1,5 +1,7 @@
-//! Pure drawing: `draw(frame, &App)` reads the state and writes cells, nothing else. That makes every
-//! screen a snapshot test over ratatui's `TestBackend`.
+//! Pure drawing: `draw(frame, &App)` reads the app's view model ([`App::view`], built where the
+//! state changed) and its plain UI state (the mode, the text typed, the selection, the message)
+//! and writes cells, nothing else: no file here names the physics (`tests/layering.rs` checks),
+//! so a frame never solves. That makes every screen a snapshot test over ratatui's `TestBackend`.
 
 mod chart;
 mod overlay;
@@ -25,6 +27,18 @@ pub fn is_too_small(width: u16, height: u16) -> bool {
     width < MIN_WIDTH || height < MIN_HEIGHT
 }
 
+/// The left column's width (parameters above the regime pane): wider from 120 columns.
+fn left_width(width: u16) -> u16 {
+    if width >= 120 { 44 } else { 34 }
+}
+
+/// The cells the regime pane's zone strip can have, one per width of the left column: the view
+/// samples the interface shear for each, so that drawing never solves.
+pub fn strip_cells() -> [usize; 2] {
+    // The pane's borders take a column each side.
+    [MIN_WIDTH, 120].map(|width| strip::cells(left_width(width) - 2))
+}
+
 /// Draws the whole screen.
 pub fn draw(frame: &mut Frame, app: &App) {
     let area = frame.area();
@@ -36,10 +50,10 @@ pub fn draw(frame: &mut Frame, app: &App) {
         let status_rows = panes::status_rows(app, area.width, area.height);
         let [main, status] =
             Layout::vertical([Constraint::Min(0), Constraint::Length(status_rows)]).areas(area);
-        let left_width = if area.width >= 120 { 44 } else { 34 };
+        let left_width = left_width(area.width);
         let [left, right] =
             Layout::horizontal([Constraint::Length(left_width), Constraint::Min(0)]).areas(main);
-        let parameter_rows = app.kind().params().len() as u16 + 2;
+        let parameter_rows = app.view().rows.len() as u16 + 2;
         let [parameters, summary] =
             Layout::vertical([Constraint::Length(parameter_rows), Constraint::Min(0)]).areas(left);
         panes::draw_parameters(frame, app, parameters);
@@ -100,7 +114,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 "Reset?",
                 &format!(
                     "Reset the edited values (*) to preset {}?",
-                    app.preset_name()
+                    app.view().preset
                 ),
                 "y reset (u undoes it), n or Esc keep the edits",
             ),
@@ -109,10 +123,14 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 app,
                 area,
                 "Solve for a target",
-                &format!("{} such that {}", app.selected_param(), input.shown()),
+                &format!(
+                    "{} such that {}",
+                    app.view().rows.get(app.selected()).map_or("", |r| r.name),
+                    input.shown()
+                ),
                 &format!(
                     "one of {}; Enter solve, Esc cancel",
-                    crate::study::target::Quantity::names(app.kind())
+                    app.view().target_quantities
                 ),
             ),
             Mode::Explain { line } => overlay::draw_explanation(frame, app, area, *line),
@@ -153,6 +171,51 @@ fn enforce_ascii(buffer: &mut Buffer) {
     for cell in buffer.content.iter_mut() {
         if !cell.symbol().is_ascii() {
             cell.set_symbol(ascii_fallback(cell.symbol()));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use ratatui::Terminal;
+    use ratatui::backend::TestBackend;
+
+    use super::*;
+    use crate::tui::app::AppOptions;
+    use crate::tui::theme::Theme;
+
+    /// The regime pane's shear rows are drawn from the view, which samples them for each width
+    /// the left column can have: on a tall screen of either width the rows hold one bar per
+    /// cell, not nothing.
+    #[test]
+    fn the_shear_rows_are_drawn_at_every_width_of_the_left_column() {
+        let app = App::new(AppOptions {
+            theme: Theme {
+                charset: Charset::Ascii,
+                color: false,
+            },
+            preset: crate::preset::resolve("paper-beams").unwrap(),
+            user_dir: None,
+            data: None,
+            solve_continuum: false,
+        });
+        for width in [MIN_WIDTH, 100, 119, 120, 200] {
+            let mut terminal = Terminal::new(TestBackend::new(width, 40)).unwrap();
+            terminal.draw(|frame| draw(frame, &app)).unwrap();
+            let screen = terminal.backend().to_string();
+            let rows: Vec<&str> = screen.lines().collect();
+            let heading = rows
+                .iter()
+                .position(|r| r.contains("tau(x) / mu P"))
+                .unwrap_or_else(|| panic!("no shear rows at {width} columns:\n{screen}"));
+            let cells = strip::cells(left_width(width) - 2);
+            for row in &rows[heading + 1..heading + 3] {
+                // The backend quotes each row; then the pane's border.
+                let inside = usize::from(left_width(width) - 2);
+                let left: String = row.chars().skip(2).take(inside).collect();
+                let bars = left.trim_end().chars().count().saturating_sub(3);
+                assert_eq!(bars, cells, "at {width} columns: {row}");
+            }
         }
     }
 }

@@ -57,7 +57,7 @@ fn help_lines(app: &App, contexts: &[Context]) -> Vec<Line<'static>> {
 /// its border, and the chart marks, one per role on every chart.
 fn symbol_lines(app: &App) -> Vec<Line<'static>> {
     use crate::chart::SeriesRole as R;
-    use crate::study::curves::Zone;
+    use crate::tui::view::Zone;
     let theme = app.theme();
     let zone = |z| theme.zone_symbol(z);
     let marks = |roles: &[(R, &str)]| {
@@ -296,10 +296,10 @@ pub fn draw_message(frame: &mut Frame, app: &App, area: Rect) {
 /// What one line of the regime pane means, in a box over the bottom of the chart; the line itself
 /// is highlighted in the pane.
 pub fn draw_explanation(frame: &mut Frame, app: &App, area: Rect, line: usize) {
-    if app.model().is_none() {
+    let Some(regime) = &app.view().regime else {
         return;
-    }
-    let lines = app.explained_lines();
+    };
+    let lines: Vec<_> = regime.explained().collect();
     let Some(chosen) = lines.get(line.min(lines.len().saturating_sub(1))) else {
         return;
     };

@@ -6,9 +6,7 @@ use ratatui::style::Style;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Paragraph};
 
-use crate::Inputs;
-use crate::kernel::params::Unit;
-use crate::report::{number, sanitize};
+use crate::report::sanitize;
 use crate::tui::app::{App, Mode};
 use crate::tui::summary::wrap_words;
 use crate::tui::theme::Role;
@@ -27,44 +25,26 @@ pub fn pane<'a>(app: &App, title: &'a str) -> Block<'a> {
 /// colour, so it shows without colour too. While typing, the row shows the text being typed.
 pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
     let theme = app.theme();
-    let inputs = app.inputs();
-    let title = match inputs {
-        Inputs::Beam { structure, .. } => format!("Twin beams, {}", structure.theory.label()),
-        Inputs::Plate(_) => "Squeezed plate".to_string(),
-        Inputs::Lap { .. } => "Double-lap joint".to_string(),
-    };
-    let lines: Vec<Line> = app
-        .kind()
-        .params()
+    let view = app.view();
+    let lines: Vec<Line> = view
+        .rows
         .iter()
         .enumerate()
-        .map(|(i, &param)| {
+        .map(|(i, row)| {
             let selected = i == app.selected();
-            // `get` cannot miss: the parameters come from the active model.
-            let value = inputs.get(param).unwrap_or(f64::NAN);
             let shown = match app.mode() {
                 // What is typed, invisible characters escaped (a zero-width space shows).
                 Mode::Editing { input } if selected => sanitize(&input.shown()).into_owned(),
-                _ => number(value),
-            };
-            let unit = match param.unit() {
-                Unit::Dimensionless => "",
-                unit => unit.symbol(),
+                _ => row.value.clone(),
             };
             // `*`: edited, differs from the loaded preset (shown without colour too).
-            let note = param.spec().note;
-            let unit = if note.is_empty() {
-                unit.to_string()
-            } else {
-                format!("{unit} {note}")
-            };
             let text = format!(
                 "{}{}{:<3} {:>11} {:<7}",
                 if selected { ">" } else { " " },
-                if app.is_edited(param) { "*" } else { " " },
-                param.name(),
+                if row.edited { "*" } else { " " },
+                row.name,
                 shown,
-                unit
+                row.unit
             );
             let style = if selected {
                 theme.style(Role::Selected)
@@ -74,7 +54,10 @@ pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
             Line::from(Span::styled(text, style))
         })
         .collect();
-    frame.render_widget(Paragraph::new(lines).block(pane(app, &title)), area);
+    frame.render_widget(
+        Paragraph::new(lines).block(pane(app, &view.parameters_title)),
+        area,
+    );
 }
 
 /// The regime of each law and the numbers that define it, as plain text (readable without colour).
@@ -82,15 +65,15 @@ pub fn draw_parameters(frame: &mut Frame, app: &App, area: Rect) {
 /// means.
 pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
     let theme = app.theme();
-    let Some(model) = app.model() else {
+    let Some(regime) = &app.view().regime else {
         let lines = vec![Line::from(" invalid parameters")];
         frame.render_widget(Paragraph::new(lines).block(pane(app, "Regime")), area);
         return;
     };
-    let summary = app.summary_lines();
+    let summary = &regime.lines;
     // The beams' and the lap joint's pane are full at 80x24: their envelope goes in the title,
     // which `i` explains first.
-    let title_line = crate::tui::summary::title_line(&model);
+    let title_line = &regime.title_line;
     let title = title_line.as_ref().map_or_else(
         || "Regime (i explains)".to_string(),
         |t| format!("Regime (i), {}", t.text),
@@ -120,7 +103,7 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
         .unwrap_or((false, StripSize::Compact));
     if size == StripSize::Compact {
         // The compact strip has no legend row: its symbols are explained on the pane's border.
-        block = block.title_bottom(strip::legend_of(&model, &theme));
+        block = block.title_bottom(strip::legend_of(&regime.strip, &theme));
     }
     frame.render_widget(block, area);
     let mut keep = vec![true; summary.len()];
@@ -143,15 +126,15 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
         _ => None,
     };
     let mut lines = Vec::new();
-    for (i, line) in summary.into_iter().enumerate().filter(|(i, _)| keep[*i]) {
+    for (i, line) in summary.iter().enumerate().filter(|(i, _)| keep[*i]) {
         let style = if highlighted == Some(i) {
             theme.style(Role::Selected)
         } else {
             Style::default()
         };
         let mut spans = vec![Span::styled(format!(" {}", line.text), style)];
-        if let Some(regime) = line.regime {
-            spans.push(Span::styled(regime, theme.style(Role::Regime)));
+        if let Some(regime) = &line.regime {
+            spans.push(Span::styled(regime.clone(), theme.style(Role::Regime)));
         }
         lines.push(Line::from(spans));
         if room {
@@ -166,7 +149,7 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
     // Under the text, or at the bottom where the text is cut.
     let text_rows = lines.len().min(height.saturating_sub(size.rows()));
     lines.truncate(text_rows);
-    lines.extend(strip::lines(&model, &theme, inner.width, size));
+    lines.extend(strip::lines(&regime.strip, &theme, inner.width, size));
     frame.render_widget(Paragraph::new(lines), inner);
 }
 
@@ -203,9 +186,10 @@ pub fn status_rows(app: &App, width: u16, height: u16) -> u16 {
 /// The status as one line, before wrapping.
 fn status_line(app: &App) -> Line<'static> {
     let theme = app.theme();
-    let marker = if app.modified() { "*" } else { "" };
+    let view = app.view();
+    let marker = if view.modified { "*" } else { "" };
     let mut spans = vec![Span::styled(
-        format!(" {} | {}{marker} ", app.kind(), sanitize(app.preset_name())),
+        format!(" {} | {}{marker} ", view.kind, sanitize(&view.preset)),
         theme.style(Role::Title),
     )];
     match (app.mode(), app.message()) {
@@ -229,16 +213,12 @@ fn status_line(app: &App) -> Line<'static> {
             spans.push(hint);
         }
         (Mode::Editing { .. }, None) => {
-            let spec = app.selected_param().spec();
-            // A half size says so where it is typed (`h (mm, half height ...)`), as its row does.
-            let meaning = if spec.note.is_empty() {
-                String::new()
-            } else {
-                format!(", {}", spec.meaning)
-            };
+            let prompt = view
+                .rows
+                .get(app.selected())
+                .map_or("", |r| r.prompt.as_str());
             spans.push(Span::raw(format!(
-                "| {} ({}{meaning}): type a value (replaces), Enter accept, Esc cancel",
-                spec.name, spec.unit
+                "| {prompt}: type a value (replaces), Enter accept, Esc cancel"
             )));
         }
         (_, Some(message)) => {

@@ -3,7 +3,7 @@
 //! drawn to scale for both laws, so that where the interface sticks, slips elastically and slides
 //! is seen at a glance rather than read off X, X_s and X_r. Zones are told apart by their symbols
 //! (`=` stick, `~` microslip, `#` macroslip in ASCII) and, with colour, by colour as well; the
-//! numbers come from [`crate::study::curves::interface_zones`], the same as the pane's text.
+//! numbers come from the view ([`StripView`]), built where the pane's text is.
 //!
 //! Three sizes, chosen by the pane's spare height: two rows (one per law) on small screens; with a
 //! heading, the boundaries marked and named, and a legend on taller ones; and on the tallest, two
@@ -12,13 +12,9 @@
 
 use ratatui::text::{Line, Span};
 
-use crate::problems::inputs::Model;
 use crate::report::number_with;
-use crate::study::curves::{
-    InterfaceZones, Samples, Series, Spacing, Zone, ZoneSpan, beam_shear_along, interface_zones,
-    plate_shear_along,
-};
 use crate::tui::theme::{Role, Theme};
+use crate::tui::view::{StripView, Zone, ZoneSpan};
 
 /// How much of the strip is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -49,20 +45,21 @@ impl StripSize {
 /// Width of the row label (` C `, ` R `).
 const LABEL: usize = 3;
 
+/// The cells of the strip in a pane `width` columns wide: one column is kept free on the right,
+/// so the strip does not touch the border.
+pub fn cells(width: u16) -> usize {
+    usize::from(width).saturating_sub(LABEL + 1).max(4)
+}
+
 /// The strip's lines for a pane `width` columns wide.
-pub fn lines(model: &Model, theme: &Theme, width: u16, size: StripSize) -> Vec<Line<'static>> {
-    let zones = interface_zones(model);
-    // One column kept free on the right, so the strip does not touch the border.
-    let cells = usize::from(width).saturating_sub(LABEL + 1).max(4);
+pub fn lines(strip: &StripView, theme: &Theme, width: u16, size: StripSize) -> Vec<Line<'static>> {
+    let zones = &strip.zones;
+    let cells = cells(width);
     let (coulomb, coulomb_cuts) = zone_cells(&zones.coulomb, zones.length, cells);
     let (regularized, regularized_cuts) = zone_cells(&zones.regularized, zones.length, cells);
     let mut lines = Vec::with_capacity(size.rows());
     if size >= StripSize::Marked {
-        let origin = match model {
-            Model::Beam { .. } => "clamp",
-            Model::Plate(_) => "centre",
-            Model::Lap { .. } => "inner end",
-        };
+        let origin = strip.origin;
         lines.push(Line::from(Span::styled(
             format!(
                 " Zones: x = 0 ({origin}) to {} mm",
@@ -99,9 +96,13 @@ pub fn lines(model: &Model, theme: &Theme, width: u16, size: StripSize) -> Vec<L
             " tau(x) / mu P, 0 to 1:",
             theme.style(Role::Muted),
         )));
-        let (c, r) = shear_ratios(model, &zones, cells);
-        lines.push(spark_row("C", &c, theme));
-        lines.push(spark_row("R", &r, theme));
+        // The view samples the shear for each width the pane can have; at another width the
+        // rows stay empty rather than solve while drawing.
+        let (c, r) = strip
+            .shear_for(cells)
+            .map_or((&[][..], &[][..]), |s| (&s.coulomb[..], &s.regularized[..]));
+        lines.push(spark_row("C", c, theme));
+        lines.push(spark_row("R", r, theme));
     }
     lines
 }
@@ -183,11 +184,10 @@ fn marker_row(carets: &[(usize, String)], cells: usize) -> String {
     row.into_iter().collect::<String>().trim_end().to_string()
 }
 
-/// The legend of `model`'s strip, for the compact strip, which has no row for it: the regime
+/// The legend of the strip, for the compact strip, which has no row for it: the regime
 /// pane puts it on its lower border, so that `=`, `~` and `#` are explained on every screen.
-pub fn legend_of(model: &Model, theme: &Theme) -> Line<'static> {
-    let zones = interface_zones(model);
-    let unloaded = zones.coulomb.iter().any(|z| z.zone == Zone::Unloaded);
+pub fn legend_of(strip: &StripView, theme: &Theme) -> Line<'static> {
+    let unloaded = strip.zones.coulomb.iter().any(|z| z.zone == Zone::Unloaded);
     let mut line = legend(theme, unloaded);
     line.spans.push(Span::raw(" "));
     line
@@ -218,35 +218,6 @@ fn legend(theme: &Theme, unloaded: bool) -> Line<'static> {
     Line::from(spans)
 }
 
-/// tau / (mu P) of each law at the centre of each cell, in [0, 1].
-fn shear_ratios(model: &Model, zones: &InterfaceZones, cells: usize) -> (Vec<f64>, Vec<f64>) {
-    let half = zones.length / (2 * cells) as f64;
-    let Ok(positions) = Samples::new(half, zones.length - half, cells as u64, Spacing::Linear)
-    else {
-        return (Vec::new(), Vec::new());
-    };
-    let (series, limit): ((Series, Series), f64) = match model {
-        Model::Beam { beams, force } => (
-            beam_shear_along(beams, *force, positions),
-            beams.coulomb_stress(),
-        ),
-        Model::Plate(plate) => {
-            let p = plate.params();
-            (plate_shear_along(plate, positions), p.friction * p.pressure)
-        }
-        Model::Lap { joint, force } => (
-            crate::study::lap::lap_shear_along(joint, *force, positions),
-            joint.coulomb_stress(),
-        ),
-    };
-    let ratio = |s: Series| -> Vec<f64> {
-        s.into_iter()
-            .map(|(_, tau)| (tau.abs() / limit).clamp(0.0, 1.0))
-            .collect()
-    };
-    (ratio(series.0), ratio(series.1))
-}
-
 fn spark_row(label: &str, ratios: &[f64], theme: &Theme) -> Line<'static> {
     let levels = theme.spark_levels();
     let top = (levels.len() - 1) as f64;
@@ -260,6 +231,8 @@ fn spark_row(label: &str, ratios: &[f64], theme: &Theme) -> Line<'static> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::problems::inputs::Model;
+    use crate::tui::summary::ContinuumState;
 
     fn span(from: f64, to: f64, zone: Zone) -> ZoneSpan {
         ZoneSpan { from, to, zone }
@@ -290,7 +263,8 @@ mod tests {
 
     /// The strip's rows as plain text, 24 columns wide.
     fn rows(model: &Model, theme: &Theme, size: StripSize) -> Vec<String> {
-        lines(model, theme, 24, size)
+        let view = crate::tui::view::regime(model, &ContinuumState::Off, &[cells(24)]);
+        lines(&view.strip, theme, 24, size)
             .iter()
             .map(|line| line.spans.iter().map(|s| s.content.as_ref()).collect())
             .collect()
