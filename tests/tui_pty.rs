@@ -596,3 +596,104 @@ fn a_data_file_above_the_cap_is_refused_before_the_screen_changes() {
     let _ = child.wait();
     drop(pty.master);
 }
+
+/// Polls `pid` until it has ended (gone, or a zombie its shell has not reaped yet); panics after
+/// `limit`. Returns how long that took.
+fn wait_ended(pid: &str, limit: Duration) -> Duration {
+    let start = Instant::now();
+    while !matches!(state(pid), '?' | 'Z' | 'X') {
+        assert!(
+            start.elapsed() < limit,
+            "still running {:?} after the signal",
+            start.elapsed()
+        );
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    start.elapsed()
+}
+
+/// Writes `keys` in one burst from a thread of its own (the program reads them as it goes) and
+/// returns when the last one has been handed to the terminal, with the writer back.
+fn burst(session: &mut Session, keys: String) -> Instant {
+    let mut writer = std::mem::replace(&mut session.writer, Box::new(std::io::sink()));
+    let typing = std::thread::spawn(move || {
+        let _ = writer.write_all(keys.as_bytes());
+        let _ = writer.flush();
+        writer
+    });
+    while !typing.is_finished() {
+        session.pump(Duration::from_millis(5));
+    }
+    let done = Instant::now();
+    session.writer = typing.join().unwrap();
+    done
+}
+
+/// Issue 32: on the lap joint with its finite-element and 2-D continuum overlay on (`n`), a
+/// storm of 2 000 `l` keys on K_T (each a new continuum solve, up to seconds each) settles
+/// within 2 s of the last key: the screen shows the final K_T (the top of its domain, 1e12
+/// MPa/mm, where 1.02^2000 takes it) with nothing pending. The continuum ran in the event loop
+/// before: every key waited for its own solve (342 s in a release build).
+#[test]
+fn a_storm_of_keys_on_the_lap_joint_with_the_continuum_on_settles_within_2_s() {
+    let (mut session, mut child) = start_with("--preset lap-aluminium --charset ascii");
+    session.wait_for("Double-lap joint");
+    // Down to K_T (the ninth row), then the overlay, and its first answer.
+    session.send("jjjjjjjj");
+    session.send("n");
+    session.wait_for("2-D continuum");
+    session.wait_until("the first overlay", |s| {
+        !s.parser.screen().contents().contains("solving")
+    });
+    let last_key = burst(&mut session, "l".repeat(2_000));
+    let limit = Duration::from_secs(2);
+    loop {
+        let screen = session.parser.screen().contents();
+        if screen.contains("1e12 MPa/mm") && !screen.contains("solving") {
+            break;
+        }
+        assert!(
+            last_key.elapsed() < limit,
+            "not settled {:?} after the last key; screen:\n{screen}",
+            last_key.elapsed()
+        );
+        session.pump(Duration::from_millis(10));
+    }
+    eprintln!(
+        "2 000 K_T keys with the continuum on: settled {:?} after the last key",
+        last_key.elapsed()
+    );
+    let pid = microslip_pid(child.as_ref());
+    kill("TERM", &pid);
+    session.wait_for("EXIT=143");
+    let _ = child.wait();
+}
+
+/// Issue 32: SIGTERM while a lap-joint continuum solve runs (`:KT=1e5 t2=0.2`, then `n`: seconds
+/// of work) ends the process within 100 ms: the solve runs on a worker and the event loop, which
+/// acts on signals, never waits for it. It ran in the event loop before, and the signal waited
+/// for the whole solve.
+#[test]
+fn sigterm_during_a_lap_continuum_solve_ends_the_program_within_100_ms() {
+    let (mut session, mut child) = start_with("--preset lap-aluminium --charset ascii");
+    session.wait_for("Double-lap joint");
+    let pid = microslip_pid(child.as_ref());
+    session.send(":KT=1e5 t2=0.2\r");
+    session.wait_for("KT = 100000");
+    session.send("n");
+    // Give the loop time to take the key and start the solve (seconds long at these values).
+    let start = Instant::now();
+    while start.elapsed() < Duration::from_millis(300) {
+        session.pump(Duration::from_millis(10));
+    }
+    kill("TERM", &pid);
+    let took = wait_ended(&pid, Duration::from_secs(30));
+    eprintln!("SIGTERM during a lap continuum solve: ended after {took:?}");
+    session.wait_for("EXIT=143");
+    session.assert_restored();
+    let _ = child.wait();
+    assert!(
+        took < Duration::from_millis(100),
+        "SIGTERM during a lap continuum solve took {took:?}"
+    );
+}
