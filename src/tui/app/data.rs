@@ -1,0 +1,199 @@
+//! Loading (`d`) and dropping (`D`) measurements and FE results.
+
+use super::{App, Measurements};
+use crate::PlateParams;
+use crate::chart;
+use crate::fit::Measurement;
+use crate::problems::ModelKind;
+use crate::problems::inputs::{Inputs, Model};
+use crate::tui::effects::Effect;
+use crate::tui::views::View;
+
+impl App {
+    /// Asks to read what `d` names: a CalculiX `.dat` (FE results, of the model its deck is), a
+    /// plate CSV `KT_MPa_per_mm,u_mm` on the plate, a lap CSV `F_N,Delta_mm` on the lap joint
+    /// (FE results: the TUI fits only the beams), else a measurement CSV `F_N,w_mm` for the fit.
+    pub(super) fn load_data(&mut self, path: String) {
+        let is_dat = std::path::Path::new(&path)
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("dat"));
+        // A CSV is a measured force-deflection curve to fit for the beams, FE results (K_T, u(L))
+        // for the plate, (F, Delta) for the lap joint.
+        let measurements = match self.kind {
+            ModelKind::Beam => !is_dat,
+            ModelKind::Plate | ModelKind::Lap => false,
+        };
+        self.asked.push(if !measurements {
+            Effect::ReadFeResults {
+                path,
+                kind: self.kind,
+            }
+        } else {
+            Effect::ReadMeasurements { path }
+        });
+    }
+    /// Measurements read for the fit; problems go to the status line and keep the previous data.
+    pub(super) fn measurements_read(
+        &mut self,
+        path: String,
+        result: Result<Vec<Measurement>, String>,
+    ) {
+        match result {
+            Ok(points) => {
+                self.info(format!(
+                    "loaded {} from {path}; f fits mu and K_T",
+                    crate::report::count_of(points.len(), "measurement")
+                ));
+                self.measurements = Some(Measurements { path, points });
+            }
+            Err(reason) => self.error(format!("{path}: {reason}")),
+        }
+    }
+    /// FE results: shown on the w(L) or u(L) chart, labelled with the code's name; a deck's
+    /// parameters become the model's (the points mean nothing against others), and the status line
+    /// gives the comparison `microslip compare` prints.
+    pub(super) fn fe_results_read(&mut self, path: &str, loaded: &crate::fe::load::AnyLoaded) {
+        use crate::fe::load::AnyLoaded;
+        let (model, header, points, code) = match loaded {
+            AnyLoaded::Beam(l) => (
+                ModelKind::Beam,
+                l.header.as_ref(),
+                l.points.iter().map(|p| (p.force, p.deflection)).collect(),
+                l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
+            ),
+            AnyLoaded::Plate(l) => (
+                ModelKind::Plate,
+                l.header.as_ref(),
+                l.points
+                    .iter()
+                    .map(|p| (p.stiffness, p.end_displacement))
+                    .collect::<Vec<_>>(),
+                l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
+            ),
+            AnyLoaded::Lap(l) => (
+                ModelKind::Lap,
+                l.header.as_ref(),
+                l.points
+                    .iter()
+                    .map(|p| (p.force, p.joint_displacement))
+                    .collect(),
+                l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
+            ),
+        };
+        let origin = header.map(|h| h.inputs);
+        // Measurements were taken on the values the deck now replaces: they go (the help's rule).
+        let mut dropped = String::new();
+        if let Some(inputs) = origin {
+            self.kind = model;
+            self.state_mut().inputs = inputs;
+            if let Some(m) = self.measurements.take() {
+                dropped = format!(
+                    "; dropped {} ({}): they were for the previous values",
+                    crate::report::count_of(m.points.len(), "measurement"),
+                    m.path
+                );
+            }
+        }
+        // Plate runs of the same deck but for K_T add up to a curve; anything else replaces.
+        let same_plate = |previous: &Option<Inputs>| match (previous, origin) {
+            (Some(Inputs::Plate(a)), Some(Inputs::Plate(b))) => {
+                PlateParams {
+                    tangential_stiffness: b.tangential_stiffness,
+                    ..*a
+                } == b
+            }
+            // A CSV's points (no deck), or a run of the beams: they replace.
+            (
+                None | Some(Inputs::Beam { .. } | Inputs::Plate(_) | Inputs::Lap { .. }),
+                None | Some(Inputs::Beam { .. } | Inputs::Lap { .. }),
+            )
+            | (None | Some(Inputs::Beam { .. } | Inputs::Lap { .. }), Some(Inputs::Plate(_))) => {
+                false
+            }
+        };
+        let mut points: Vec<(f64, f64)> = points;
+        if let Some((previous, previous_origin)) = &self.external
+            && model == ModelKind::Plate
+            && previous.model == model
+            && same_plate(previous_origin)
+        {
+            points.extend(previous.points.iter().copied());
+            points.sort_by(|a, b| a.0.total_cmp(&b.0));
+            points.dedup_by(|a, b| a.0 == b.0);
+        }
+        let Some(current) = self.model() else {
+            return self.error(format!("{path}: the deck's parameters are not valid"));
+        };
+        let summary = match (loaded, current) {
+            (AnyLoaded::Beam(l), Model::Beam { beams, .. }) => {
+                let comparison =
+                    crate::fe::compare::compare_beams(&beams, &l.points, l.interface_mesh.as_ref());
+                crate::tui::brief::beam_summary(code, &comparison)
+            }
+            (AnyLoaded::Plate(l), Model::Plate(plate)) => {
+                let rows =
+                    crate::fe::compare::compare_plate(&plate, &l.points, l.interface_mesh.as_ref());
+                rows.first()
+                    .map(|row| crate::tui::brief::plate_summary(code, row))
+                    .unwrap_or_default()
+            }
+            (AnyLoaded::Lap(l), Model::Lap { joint, .. }) => {
+                match crate::fe::compare::compare_lap(&joint, &l.points, l.interface_mesh.as_ref())
+                {
+                    Ok(rows) => crate::tui::brief::lap_summary(code, &rows),
+                    Err(e) => return self.error(format!("{path}: {e}")),
+                }
+            }
+            (AnyLoaded::Beam(_), Model::Plate(_) | Model::Lap { .. })
+            | (AnyLoaded::Plate(_), Model::Beam { .. } | Model::Lap { .. })
+            | (AnyLoaded::Lap(_), Model::Beam { .. } | Model::Plate(_)) => {
+                format!("{path}: FE results of another problem: press m")
+            }
+        };
+        let adopted = if origin.is_some() {
+            " (deck parameters adopted)"
+        } else {
+            ""
+        };
+        self.info(format!("{path}{adopted}: {summary}{dropped}"));
+        self.external = Some((
+            chart::ExternalPoints {
+                label: code.to_string(),
+                model,
+                points,
+            },
+            origin,
+        ));
+        // The external points are of the problem's response: its first chart.
+        self.views = self.views.with(model, View::first(model));
+    }
+    /// Forgets the measurements and FE results; says what went, as `25 measurements and the
+    /// CalculiX points` (empty when nothing was loaded).
+    pub(super) fn forget_data(&mut self) -> String {
+        let measured = self.measurements.take().map(|m| {
+            format!(
+                "{} ({})",
+                crate::report::count_of(m.points.len(), "measurement"),
+                m.path
+            )
+        });
+        let external = self
+            .external
+            .take()
+            .map(|(points, _)| format!("the {} points", points.label));
+        [measured, external]
+            .into_iter()
+            .flatten()
+            .collect::<Vec<_>>()
+            .join(" and ")
+    }
+    /// `D`: drops the loaded measurements and FE results.
+    pub(super) fn drop_data(&mut self) {
+        let dropped = self.forget_data();
+        if dropped.is_empty() {
+            return self.info("no loaded data to drop (d loads measurements or FE results)");
+        }
+        self.recompute();
+        self.info(format!("dropped {dropped}; d loads again"));
+    }
+}

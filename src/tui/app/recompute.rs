@@ -1,0 +1,235 @@
+//! After every change: the load axes, the chart (with its pins and FE points), the K_T table,
+//! the y-axis mode, and the plate's continuum asked of a worker.
+
+use super::{App, PinnedChart};
+use crate::chart::view::AnyChart;
+use crate::chart::{self, NumericPoints, Plot, YMode, pins};
+use crate::fit::Measurement;
+use crate::problems::inputs::Model;
+use crate::problems::{ModelKind, Param};
+use crate::report::number;
+use crate::tui::effects::Effect;
+use crate::tui::kt_table;
+
+impl App {
+    /// The load axis of each problem's charts that run along its load: 3 times its regime scale
+    /// (3 F_thre for the beams); none for a problem without a load.
+    pub(super) fn fit_axes(&mut self) {
+        for kind in ModelKind::ALL {
+            let span = kind.description().load_span;
+            self.force_span[kind] = self.regime_scale_of(kind).map(|s| span * s);
+        }
+    }
+    /// `kind`'s regime scale at its current values (F_thre for the beams), where it has one.
+    pub(super) fn regime_scale_of(&self, kind: ModelKind) -> Option<f64> {
+        self.states[kind].inputs.validate().ok()?.regime_scale()
+    }
+    /// What the regime pane shows of the plate's continuum solution.
+    pub fn continuum(&self) -> crate::tui::summary::ContinuumState {
+        use crate::tui::summary::ContinuumState;
+        // Only the plate has a continuum solver of its own.
+        let current = match self.model() {
+            Some(Model::Plate(plate)) if self.solve_continuum => plate.params(),
+            Some(Model::Plate(_) | Model::Beam { .. } | Model::Lap { .. }) | None => {
+                return ContinuumState::Off;
+            }
+        };
+        match &self.continuum {
+            Some((params, Some(Ok(solved)))) if *params == current => {
+                ContinuumState::Solved(*solved)
+            }
+            Some((params, Some(Err(e)))) if *params == current => ContinuumState::Failed(e.clone()),
+            _ => ContinuumState::Solving,
+        }
+    }
+    /// The lines of the regime pane.
+    pub fn summary_lines(&self) -> Vec<crate::tui::summary::SummaryLine> {
+        self.model().map_or_else(Vec::new, |m| {
+            crate::tui::summary::summary_lines(&m, &self.continuum())
+        })
+    }
+    /// The lines `i` walks through: the regime pane's title where it states an envelope, then
+    /// its lines.
+    pub fn explained_lines(&self) -> Vec<crate::tui::summary::SummaryLine> {
+        self.model().map_or_else(Vec::new, |m| {
+            crate::tui::summary::explained_lines(&m, &self.continuum())
+        })
+    }
+    /// Asks for the plate's continuum at the current values when it is shown and not asked yet.
+    pub(super) fn ask_continuum(&mut self) {
+        let plate = match self.model() {
+            Some(Model::Plate(plate)) => plate,
+            Some(Model::Beam { .. } | Model::Lap { .. }) | None => return,
+        };
+        let params = plate.params();
+        if !self.solve_continuum || self.continuum.as_ref().is_some_and(|(p, _)| *p == params) {
+            return;
+        }
+        self.continuum = Some((params, None));
+        self.asked.push(Effect::SolveContinuum { params });
+    }
+    /// A problem's load axis (the beams' F), kept while values change so that the curves can be
+    /// compared, is fitted again (`load_span` times the regime scale: 3 F_thre, 1 F_gross) when
+    /// the regime scale leaves it or is squeezed into its first twelfth (a geometry, mu or P
+    /// changed by a large factor); the status says so for the problem shown. K_T does not move F_thre: dragging it never rescales.
+    pub(super) fn follow_threshold(&mut self) {
+        for kind in ModelKind::ALL {
+            let (Some(span), Some(threshold)) = (self.force_span[kind], self.regime_scale_of(kind))
+            else {
+                continue;
+            };
+            if threshold <= span && threshold >= span / 12.0 {
+                continue;
+            }
+            let wanted = kind.description().load_span * threshold;
+            self.force_span[kind] = Some(wanted);
+            let load = kind.description().load;
+            let unit = load.map(Param::unit_suffix).unwrap_or_default();
+            let note = format!(
+                "{} axis rescaled to 0-{}{unit}: {} = {}{unit} {} the old 0-{}{unit}",
+                load.map_or("", |p| p.name()),
+                number(wanted),
+                kind.description().regime_scale_name,
+                number(threshold),
+                if threshold > span {
+                    "is beyond"
+                } else {
+                    "was squeezed into the start of"
+                },
+                number(span)
+            );
+            if self.kind == kind {
+                self.axis_note = Some(note);
+            }
+        }
+    }
+    /// Rebuilds the chart (and the finite-element points when shown) after any change.
+    pub(super) fn recompute(&mut self) {
+        self.follow_threshold();
+        self.ask_continuum();
+        let Some(model) = self.model() else { return };
+        match (self.show_numeric, self.views.of(self.kind).chart()) {
+            (true, Some(shown)) => match chart::numeric_points(&model, shown) {
+                Ok(points) => self.numeric = points,
+                Err(e) => {
+                    self.numeric = None;
+                    self.error(format!("finite elements failed: {e}"));
+                }
+            },
+            _ => self.numeric = None,
+        }
+        let y_mode = self.y_mode();
+        let Some(plot) = self.linear_plot(&model) else {
+            // The view is the K_T table: text in the chart pane.
+            self.table = Some(kt_table::stiffness_table(&model));
+            self.plot = Plot::default();
+            return;
+        };
+        self.table = None;
+        let plot = y_mode.apply(plot);
+        if self.state().pins.is_empty() {
+            self.plot = plot;
+            return;
+        }
+        // Each pin: the same chart at its values, in the same y mode, without the overlays, over
+        // the shown chart's x range (the current F or measured points may have widened it beyond
+        // the kept force span: a pin built over that span alone would stop short of the axis).
+        let span = Some(plot.x.bounds[1]);
+        let key = PinnedChart {
+            views: self.views,
+            varied: self.state().varied,
+            force_span: span,
+            y_mode,
+        };
+        for i in 0..self.state().pins.len() {
+            let pin = &self.state().pins[i];
+            if pin.chart.as_ref().is_some_and(|(k, _)| *k == key) {
+                continue;
+            }
+            let built = pin
+                .inputs
+                .validate()
+                .ok()
+                .and_then(|m| self.chart_of(&m, None, None, None, span))
+                .map(|plot| (key, y_mode.apply(plot)));
+            self.state_mut().pins[i].chart = built;
+        }
+        let current = self.inputs();
+        let pinned: Vec<(u8, String, &Plot)> = self
+            .state()
+            .pins
+            .iter()
+            .filter_map(|pin| {
+                let (_, plot) = pin.chart.as_ref()?;
+                Some((pin.number, pins::label(&pin.inputs, &current), plot))
+            })
+            .collect();
+        self.plot = pins::add_pins(plot, &pinned);
+    }
+    /// The chart shown, with its y axis linear; None where the view is a table.
+    pub(super) fn linear_plot(&self, model: &Model) -> Option<Plot> {
+        let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
+        let external = self.external.as_ref().map(|(points, _)| points);
+        self.chart_of(
+            model,
+            self.numeric.as_ref(),
+            measured,
+            external,
+            self.force_span[model.kind()],
+        )
+    }
+    /// The chart shown (the view's, or the one against the parameter of `v`) for `model`; None
+    /// where the view is a table (the v chart takes its place too).
+    pub(super) fn chart_of(
+        &self,
+        model: &Model,
+        numeric: Option<&NumericPoints>,
+        measured: Option<&[Measurement]>,
+        external: Option<&chart::ExternalPoints>,
+        force_span: Option<f64>,
+    ) -> Option<Plot> {
+        if let Some(param) = self.state().varied {
+            return Some(chart::vary::build(model, param));
+        }
+        let shown = self.views.of(model.kind()).chart()?;
+        Some(chart::build(
+            model, shown, numeric, measured, external, force_span,
+        ))
+    }
+    /// Which chart the y-axis mode belongs to: the view's chart, None for the chart of `v`;
+    /// tables have none (outer None).
+    pub(super) fn y_key(&self) -> Option<Option<AnyChart>> {
+        if self.varied().is_some() {
+            return Some(None);
+        }
+        self.views.of(self.kind).chart().map(Some)
+    }
+    /// The y-axis mode of the chart shown.
+    pub fn y_mode(&self) -> YMode {
+        let Some(key) = self.y_key() else {
+            return YMode::Linear;
+        };
+        self.y_modes
+            .iter()
+            .find(|(k, _)| *k == key)
+            .map_or_else(|| key.map_or(YMode::Linear, YMode::default_for), |m| m.1)
+    }
+    /// `y`: the next y-axis mode the chart can show.
+    pub(super) fn cycle_y_axis(&mut self) {
+        let (Some(key), Some(model)) = (self.y_key(), self.model()) else {
+            return self.error("y: a table has no y axis");
+        };
+        let Some(plot) = self.linear_plot(&model) else {
+            return self.error("y: a table has no y axis");
+        };
+        let current = self.y_mode();
+        let next = current.next_for(&plot);
+        if next == current {
+            return self.info(format!("y axis: only {} for this chart", current.label()));
+        }
+        self.y_modes.retain(|(k, _)| *k != key);
+        self.y_modes.push((key, next));
+        self.recompute();
+        self.info(format!("y axis: {} (y: next mode)", next.label()));
+    }
+}
