@@ -21,7 +21,8 @@ use std::time::{Duration, Instant};
 use super::action::Action;
 use super::app::App;
 use super::workers::{Job, Lane, Report, Workers};
-use crate::chart::{AnyChart, NumericPoints};
+use crate::chart::NumericPoints;
+use crate::chart::view::AnyChart;
 use crate::fe::load::AnyLoaded;
 use crate::fit::{FitError, FitResult, Measurement, Progress, Structure};
 use crate::preset::{self, Listed, SaveError};
@@ -600,10 +601,11 @@ impl<M: From<Report> + Send + 'static> Runner<M> {
 
 #[cfg(test)]
 mod tests {
-    use std::sync::mpsc::{self, RecvTimeoutError};
+    use std::sync::mpsc;
 
     use super::*;
     use crate::tui::app::{AppOptions, Measurements, Mode};
+    use crate::tui::workers::Lane;
     use crate::tui::theme::{Charset, Theme};
 
     /// The app on the paper's beams with `count` measurements of a straight w(F) line: a fit
@@ -647,12 +649,12 @@ mod tests {
             started.elapsed()
         );
         assert!(matches!(app.mode(), Mode::Fitting { .. }));
-        let Ok(Report::Outcome(progress @ Outcome::FitProgress { .. })) =
+        let Ok(Report::Progress(progress @ Outcome::FitProgress { .. })) =
             reports.recv_timeout(Duration::from_secs(10))
         else {
             panic!("no progress report")
         };
-        runner.deliver(&mut app, Report::Outcome(progress));
+        runner.deliver(&mut app, Report::Progress(progress));
         let text = &app.message().unwrap().text;
         assert!(
             text.starts_with("fitting: ") && text.ends_with(" (Esc cancels)"),
@@ -662,16 +664,15 @@ mod tests {
         runner.update(&mut app, Action::Cancel);
         assert_eq!(app.mode(), &Mode::Normal);
         assert_eq!(app.inputs(), before);
-        // The worker stops: its end closes the channel (the runner's copy is dropped), and no
-        // result ever comes.
-        drop(runner);
+        // The worker stops and says so with no result.
         loop {
             match reports.recv_timeout(Duration::from_secs(10)) {
-                Ok(Report::Outcome(Outcome::FitProgress { .. })) => {}
-                Ok(Report::Outcome(other)) => panic!("after Esc: {other:?}"),
+                Ok(Report::Progress(Outcome::FitProgress { .. })) => {}
+                Ok(Report::Finished { outcome: None, .. }) => break,
+                Ok(Report::Finished { outcome, .. }) => panic!("after Esc: {outcome:?}"),
+                Ok(Report::Progress(other)) => panic!("after Esc: {other:?}"),
                 Ok(Report::Panicked(_)) => panic!("the worker panicked"),
-                Err(RecvTimeoutError::Timeout) => panic!("the fit still runs 10 s after Esc"),
-                Err(RecvTimeoutError::Disconnected) => break,
+                Err(_) => panic!("the fit still runs 10 s after Esc"),
             }
         }
         let took = cancelled.elapsed();
@@ -722,5 +723,177 @@ mod tests {
             let file = dir.path().join(format!("microslip-w-vs-f.{extension}"));
             assert!(file.exists(), "{}: {}", file.display(), message.text);
         }
+    }
+
+    /// The app on a bundled preset, with the continuum of the regime pane off.
+    fn app_on(name: &str, data: Option<Measurements>) -> App {
+        App::new(AppOptions {
+            theme: Theme {
+                charset: Charset::Ascii,
+                color: false,
+            },
+            preset: preset::resolve(name).unwrap(),
+            user_dir: None,
+            data,
+            solve_continuum: false,
+        })
+    }
+
+    /// The names of the chart's series.
+    fn legend(app: &App) -> Vec<String> {
+        app.plot().series.iter().map(|s| s.name.clone()).collect()
+    }
+
+    /// `n` on the lap joint (its 2-D continuum takes seconds): the key returns at once, the
+    /// legend says the points are being solved and shows none, and the worker's answer puts
+    /// them on the chart, the 2-D continuum's included.
+    #[test]
+    fn the_lap_overlay_is_solved_on_a_worker_and_said_to_be_pending_meanwhile() {
+        let (sender, reports) = mpsc::channel::<Report>();
+        let mut runner = Runner::new(sender);
+        let mut app = app_on("lap-aluminium", None);
+        let pressed = Instant::now();
+        runner.update(&mut app, Action::ToggleNumeric);
+        assert!(
+            pressed.elapsed() < Duration::from_millis(500),
+            "n waited for the solve: {:?}",
+            pressed.elapsed()
+        );
+        assert!(
+            legend(&app).iter().any(|n| n.contains("solving")),
+            "{:?}",
+            legend(&app)
+        );
+        assert!(app.plot().series.iter().all(|s| s.role
+            != crate::chart::SeriesRole::Continuum));
+        let Ok(report) = reports.recv_timeout(Duration::from_secs(60)) else {
+            panic!("no overlay")
+        };
+        runner.deliver(&mut app, report);
+        let names = legend(&app);
+        assert!(names.iter().all(|n| !n.contains("solving")), "{names:?}");
+        assert!(names.iter().any(|n| n == "2-D continuum"), "{names:?}");
+    }
+
+    /// Esc (and q) while the overlay is solved stops the solve, turns `n` off and does not quit;
+    /// the worker ends at its next Newton iteration without an answer. A second Esc quits.
+    #[test]
+    fn esc_cancels_a_pending_overlay_solve_at_once() {
+        let (sender, reports) = mpsc::channel::<Report>();
+        let mut runner = Runner::new(sender);
+        let mut app = app_on("lap-aluminium", None);
+        runner.update(&mut app, Action::ToggleNumeric);
+        let cancelled = Instant::now();
+        runner.update(&mut app, Action::RequestQuit);
+        assert!(!app.should_quit());
+        assert!(!app.show_numeric());
+        assert_eq!(
+            app.message().unwrap().text,
+            "finite elements cancelled; n solves them again"
+        );
+        assert!(legend(&app).iter().all(|n| !n.contains("solving")));
+        let Ok(Report::Finished {
+            lane: Lane::Overlay,
+            outcome: None,
+        }) = reports.recv_timeout(Duration::from_secs(60))
+        else {
+            panic!("the solve was not cancelled")
+        };
+        let took = cancelled.elapsed();
+        assert!(took < Duration::from_secs(1), "the solve stopped {took:?} after Esc");
+        runner.update(&mut app, Action::RequestQuit);
+        assert!(app.should_quit());
+    }
+
+    /// Answers for values no longer shown are dropped: a step while the overlay is solved asks
+    /// for the new values' points, and an answer for the old ones changes nothing.
+    #[test]
+    fn an_overlay_answer_for_other_values_is_dropped() {
+        let mut app = app_on("paper-beams", None);
+        let asked = app.update(Action::ToggleNumeric);
+        let [old @ Effect::SolveOverlay { .. }] = asked.as_slice() else {
+            panic!("{asked:?}")
+        };
+        let late = perform_blocking(old.clone()).unwrap();
+        app.update(Action::Increase);
+        let before = legend(&app);
+        assert!(before.iter().any(|n| n.contains("solving")), "{before:?}");
+        app.receive(late);
+        assert_eq!(legend(&app), before);
+    }
+
+    /// `d` reads the file on a worker: the app waits in its own mode, where keys typed meanwhile
+    /// do nothing (an `m` switched the model when the file was read in the loop), and adopts
+    /// the points when they come.
+    #[test]
+    fn keys_typed_while_a_file_loads_do_not_act_on_the_main_screen() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("m.csv");
+        std::fs::write(&path, "F_N,w_mm\n10,0.004\n20,0.008\n30,0.012\n").unwrap();
+        let (sender, reports) = mpsc::channel::<Report>();
+        let mut runner = Runner::new(sender);
+        let mut app = app_on("paper-beams", None);
+        let kind = app.kind();
+        runner.update(&mut app, Action::LoadData);
+        for c in path.to_str().unwrap().chars() {
+            runner.update(&mut app, Action::Input(c));
+        }
+        runner.update(&mut app, Action::Commit);
+        assert!(matches!(app.mode(), Mode::Loading { .. }), "{:?}", app.mode());
+        for action in [Action::SwitchModel, Action::Increase, Action::Next] {
+            runner.update(&mut app, action);
+        }
+        assert_eq!(app.kind(), kind);
+        assert_eq!(app.selected(), 0);
+        let Ok(report) = reports.recv_timeout(Duration::from_secs(10)) else {
+            panic!("the read did not report")
+        };
+        runner.deliver(&mut app, report);
+        assert_eq!(app.mode(), &Mode::Normal);
+        assert_eq!(app.measurements().map(|m| m.points.len()), Some(3));
+        assert_eq!(app.kind(), kind);
+    }
+
+    /// `f` fits the lap joint as it fits the beams: measured Delta(F) of the bundled joint at
+    /// mu = 0.3, K_T = 1000 (drawn from the closed form at those values), fitted from the preset
+    /// moved to K_T = 400, brings K_T back and adopts it.
+    #[test]
+    fn f_fits_the_lap_joint_to_its_measured_curve() {
+        let joint = crate::problems::inputs::Inputs::paper(ModelKind::Lap).validate().unwrap();
+        let crate::problems::inputs::Model::Lap { joint, .. } = joint else {
+            panic!("not a lap joint")
+        };
+        let points = (1..=40)
+            .map(|i| {
+                let force = 140.0 * f64::from(i);
+                let delta = joint
+                    .regularized(joint.force(force).unwrap())
+                    .joint_displacement();
+                Measurement {
+                    force,
+                    deflection: delta,
+                }
+            })
+            .collect();
+        let mut app = app_on(
+            "lap-aluminium",
+            Some(Measurements {
+                path: "lap.csv".into(),
+                points,
+            }),
+        );
+        let kt = app.kind().param("KT").unwrap();
+        app.update(Action::CommandLine);
+        for c in "KT=400".chars() {
+            app.update(Action::Input(c));
+        }
+        app.update(Action::Commit);
+        assert_eq!(app.inputs().get(kt), Some(400.0));
+        update_blocking(&mut app, Action::Fit);
+        let text = &app.message().unwrap().text;
+        assert!(text.starts_with("fit: mu = 0.3"), "{text}");
+        let fitted = app.inputs().get(kt).unwrap();
+        assert!((fitted - 1000.0).abs() < 1.0, "K_T = {fitted}: {text}");
+        assert_eq!(app.history().0, 2, "u undoes the fit");
     }
 }

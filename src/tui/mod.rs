@@ -7,8 +7,10 @@
 //! - The screen is redrawn only after a key, a paste or a resize; there is no frame rate.
 //! - A reader thread turns terminal input into events. The loop applies every queued event, for
 //!   up to [`BATCH`] at a time, then draws once, so a storm of keys costs one frame per batch.
-//! - A fit runs on a worker thread, which reports its progress and result over the same channel
-//!   as the reader: the loop never waits for it (Esc cancels it).
+//! - Every slow job (the finite-element and continuum overlay, the plate's continuum, a fit, a
+//!   file read with `d`, an export) runs on a worker thread ([`workers`]), which reports over the
+//!   same channel as the reader: the loop never waits for it, the newest request wins and Esc
+//!   cancels.
 //! - Signals are looked at between any two events and at least every [`TICK`]. SIGTERM, SIGHUP
 //!   and SIGINT restore the terminal and exit with 128 + the signal; SIGTSTP and Ctrl-Z suspend
 //!   (where a shell with job control can resume the program; see `signals`).
@@ -31,6 +33,7 @@ pub mod text_input;
 pub mod theme;
 pub mod ui;
 pub mod views;
+pub mod workers;
 
 use std::io::{self, IsTerminal};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
@@ -40,7 +43,8 @@ use ratatui::DefaultTerminal;
 use ratatui::crossterm::event::{self, Event, KeyEventKind};
 
 use app::{App, AppOptions};
-use effects::{Report, Runner};
+use effects::Runner;
+use workers::Report;
 use theme::{Charset, Theme};
 
 use crate::preset::{self, PresetError};
@@ -110,8 +114,16 @@ pub fn run(
             let shown = path.display().to_string();
             let text = crate::measured::read_text(&path, crate::file::Kinds::AnyReadable)
                 .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
-            let points = crate::measured::parse(&text)
-                .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
+            // The measured curve of the problem opened: F_N,Delta_mm on a lap joint's preset.
+            let parse = match preset.inputs.kind() {
+                ModelKind::Lap => crate::measured::parse_measured_joint_with_progress,
+                ModelKind::Beam | ModelKind::Plate => {
+                    crate::measured::parse_measured_with_progress
+                }
+            };
+            let points = parse(&text, &mut |_, _| {})
+                .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?
+                .points;
             Some(app::Measurements {
                 path: shown,
                 points,

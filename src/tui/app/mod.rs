@@ -12,6 +12,7 @@ use super::keymap::Context;
 use super::text_input::TextInput;
 use super::theme::Theme;
 use super::views::Views;
+use super::workers::Lane;
 use crate::PlateParams;
 use crate::chart::view::AnyChart;
 use crate::chart::{self, NumericPoints, Plot, YMode};
@@ -113,6 +114,13 @@ pub enum Mode {
         /// The fit, as in [`Effect::Fit`].
         job: u64,
     },
+    /// A file named with `d` is read on a worker (a million rows take seconds): Esc cancels, other
+    /// keys are ignored until it is in, so that keys typed meanwhile never act on the main
+    /// screen (an `m` switched the model while the file loaded in the loop).
+    Loading {
+        /// The file, as typed.
+        path: String,
+    },
 }
 
 impl Mode {
@@ -132,7 +140,7 @@ impl Mode {
             Mode::ConfirmOverwrite { .. } | Mode::ConfirmQuit { .. } | Mode::ConfirmReset => {
                 Context::Confirm
             }
-            Mode::Fitting { .. } => Context::Working,
+            Mode::Fitting { .. } | Mode::Loading { .. } => Context::Working,
         }
     }
 }
@@ -221,7 +229,15 @@ pub struct App {
     /// The K_T table (title and lines) when the view is the table; `plot` is empty then.
     table: Option<(&'static str, Vec<String>)>,
     numeric: Option<NumericPoints>,
+    /// What the finite-element overlay (`n`) was last asked for (parameters and chart), and true
+    /// while its answer is pending: `numeric` is that answer, never one for other values.
+    overlay: Option<(Inputs, AnyChart, bool)>,
+    /// True from `n` switching the overlay on until its answer comes, which the status explains
+    /// (no points for this chart, unsolved points).
+    overlay_toggled: bool,
     measurements: Option<Measurements>,
+    /// The problem whose measured curve `measurements` is (the one `f` fits).
+    measured_kind: ModelKind,
     /// Points of an external FE code loaded with `d` (a CalculiX .dat, or a plate CSV), and the
     /// parameters of the deck they came from.
     external: Option<(chart::ExternalPoints, Option<Inputs>)>,
@@ -285,7 +301,10 @@ impl App {
             plot: Plot::default(),
             table: None,
             numeric: None,
+            overlay: None,
+            overlay_toggled: false,
             measurements: options.data,
+            measured_kind: kind,
             external: None,
             jobs: 0,
             asked: Vec::new(),
@@ -398,11 +417,20 @@ impl App {
                 inputs,
                 result,
             } => self.saved(name, description, inputs, result),
-            Outcome::Measurements { path, result } => {
-                self.measurements_read(path, result);
+            // A read cancelled with Esc comes too late: the user has moved on.
+            Outcome::Measurements { path, kind, result } => {
+                if self.mode != (Mode::Loading { path: path.clone() }) {
+                    return;
+                }
+                self.mode = Mode::Normal;
+                self.measurements_read(path, kind, result);
                 self.recompute();
             }
             Outcome::FeResults { path, result } => {
+                if self.mode != (Mode::Loading { path: path.clone() }) {
+                    return;
+                }
+                self.mode = Mode::Normal;
                 match result {
                     Ok(loaded) => self.fe_results_read(&path, &loaded),
                     Err(reason) => self.error(reason),
@@ -445,6 +473,11 @@ impl App {
                     self.fitted(result);
                 }
             }
+            Outcome::Overlay {
+                inputs,
+                chart,
+                result,
+            } => self.overlay_solved(inputs, chart, result),
         }
     }
     fn dispatch(&mut self, action: Action) {
@@ -583,6 +616,13 @@ impl App {
                     self.asked.push(Effect::CancelFit { job });
                 }
                 _ => self.mode = Mode::Fitting { job },
+            },
+            Mode::Loading { path } => match action {
+                Action::Cancel => {
+                    self.info(format!("loading {path} cancelled; nothing changed"));
+                    self.asked.push(Effect::Cancel { lane: Lane::Read });
+                }
+                _ => self.mode = Mode::Loading { path },
             },
         }
     }

@@ -303,8 +303,14 @@ fn keys_that_need_files_return_effects_and_touch_nothing() {
     );
     assert_eq!(
         app.update(Action::Commit),
-        [Effect::ReadMeasurements { path: path.clone() }]
+        [Effect::ReadMeasurements {
+            path: path.clone(),
+            kind: ModelKind::Beam
+        }]
     );
+    // The app waits for the file, which nobody reads here (Esc would stop the read).
+    assert_eq!(app.mode(), &Mode::Loading { path: path.clone() });
+    app.mode = Mode::Normal;
     app.update(Action::LoadData);
     typed(&mut app, &format!("{path}.dat"));
     assert_eq!(
