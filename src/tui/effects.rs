@@ -425,7 +425,12 @@ fn solve_overlay(inputs: Inputs, chart: AnyChart) -> Outcome {
 /// A fit with the command line's default weights (a sigma_mm column is not kept by the terminal
 /// UI): its progress every [`PROGRESS_EVERY`] through `progress`, then its result. It stops at the
 /// next progress call (every grid node, every 16 384 measurements of a pass) once cancelled.
-fn fit(job: u64, structure: Structure, points: &[Measurement], progress: &dyn Fn(Outcome)) -> Outcome {
+fn fit(
+    job: u64,
+    structure: Structure,
+    points: &[Measurement],
+    progress: &dyn Fn(Outcome),
+) -> Outcome {
     let reported = Cell::new(Instant::now());
     let result = crate::fit::fit_weighted(
         structure,
@@ -605,8 +610,8 @@ mod tests {
 
     use super::*;
     use crate::tui::app::{AppOptions, Measurements, Mode};
-    use crate::tui::workers::Lane;
     use crate::tui::theme::{Charset, Theme};
+    use crate::tui::workers::Lane;
 
     /// The app on the paper's beams with `count` measurements of a straight w(F) line: a fit
     /// that takes seconds on a million.
@@ -764,8 +769,12 @@ mod tests {
             "{:?}",
             legend(&app)
         );
-        assert!(app.plot().series.iter().all(|s| s.role
-            != crate::chart::SeriesRole::Continuum));
+        assert!(
+            app.plot()
+                .series
+                .iter()
+                .all(|s| s.role != crate::chart::SeriesRole::Continuum)
+        );
         let Ok(report) = reports.recv_timeout(Duration::from_secs(60)) else {
             panic!("no overlay")
         };
@@ -800,7 +809,10 @@ mod tests {
             panic!("the solve was not cancelled")
         };
         let took = cancelled.elapsed();
-        assert!(took < Duration::from_secs(1), "the solve stopped {took:?} after Esc");
+        assert!(
+            took < Duration::from_secs(1),
+            "the solve stopped {took:?} after Esc"
+        );
         runner.update(&mut app, Action::RequestQuit);
         assert!(app.should_quit());
     }
@@ -839,7 +851,11 @@ mod tests {
             runner.update(&mut app, Action::Input(c));
         }
         runner.update(&mut app, Action::Commit);
-        assert!(matches!(app.mode(), Mode::Loading { .. }), "{:?}", app.mode());
+        assert!(
+            matches!(app.mode(), Mode::Loading { .. }),
+            "{:?}",
+            app.mode()
+        );
         for action in [Action::SwitchModel, Action::Increase, Action::Next] {
             runner.update(&mut app, action);
         }
@@ -859,7 +875,9 @@ mod tests {
     /// moved to K_T = 400, brings K_T back and adopts it.
     #[test]
     fn f_fits_the_lap_joint_to_its_measured_curve() {
-        let joint = crate::problems::inputs::Inputs::paper(ModelKind::Lap).validate().unwrap();
+        let joint = crate::problems::inputs::Inputs::paper(ModelKind::Lap)
+            .validate()
+            .unwrap();
         let crate::problems::inputs::Model::Lap { joint, .. } = joint else {
             panic!("not a lap joint")
         };

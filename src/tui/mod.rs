@@ -6,7 +6,8 @@
 //! Over SSH (see docs/guide.md, "Limits"):
 //! - The screen is redrawn only after a key, a paste or a resize; there is no frame rate.
 //! - A reader thread turns terminal input into events. The loop applies every queued event, for
-//!   up to [`BATCH`] at a time, then draws once, so a storm of keys costs one frame per batch.
+//!   up to [`BATCH`] at a time, then rebuilds the chart and draws once, so a storm of keys costs
+//!   one chart and one frame per batch.
 //! - Every slow job (the finite-element and continuum overlay, the plate's continuum, a fit, a
 //!   file read with `d`, an export) runs on a worker thread ([`workers`]), which reports over the
 //!   same channel as the reader: the loop never waits for it, the newest request wins and Esc
@@ -44,8 +45,8 @@ use ratatui::crossterm::event::{self, Event, KeyEventKind};
 
 use app::{App, AppOptions};
 use effects::Runner;
-use workers::Report;
 use theme::{Charset, Theme};
+use workers::Report;
 
 use crate::preset::{self, PresetError};
 use crate::problems::ModelKind;
@@ -117,9 +118,7 @@ pub fn run(
             // The measured curve of the problem opened: F_N,Delta_mm on a lap joint's preset.
             let parse = match preset.inputs.kind() {
                 ModelKind::Lap => crate::measured::parse_measured_joint_with_progress,
-                ModelKind::Beam | ModelKind::Plate => {
-                    crate::measured::parse_measured_with_progress
-                }
+                ModelKind::Beam | ModelKind::Plate => crate::measured::parse_measured_with_progress,
             };
             let points = parse(&text, &mut |_, _| {})
                 .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?
@@ -138,6 +137,8 @@ pub fn run(
         data,
         solve_continuum: true,
     });
+    // One chart per frame, not one per key of a batch (see `event_loop`).
+    app.defer_charts();
     let signals = signals::Signals::install()?;
     let mut terminal = terminal::enter()?;
     let (sender, inputs) = mpsc::channel();
@@ -226,6 +227,13 @@ fn apply(app: &mut App, runner: &mut Runner<Input>, event: Event, too_small: boo
     }
 }
 
+/// Rebuilds what the keys applied since the last frame left stale, once, and draws.
+fn draw(terminal: &mut DefaultTerminal, app: &mut App) -> io::Result<()> {
+    app.settle();
+    terminal.draw(|frame| ui::draw(frame, app))?;
+    Ok(())
+}
+
 fn event_loop(
     terminal: &mut DefaultTerminal,
     app: &mut App,
@@ -233,7 +241,7 @@ fn event_loop(
     signals: &signals::Signals,
     inputs: &Receiver<Input>,
 ) -> io::Result<Exit> {
-    terminal.draw(|frame| ui::draw(frame, app))?;
+    draw(terminal, app)?;
     loop {
         match signals.take() {
             Some(signals::Request::Terminate(signal)) => return Ok(Exit::Signal(signal)),
@@ -241,7 +249,7 @@ fn event_loop(
                 if terminal::suspend(terminal)? == signals::Suspended::Ignored {
                     app.suspend_ignored();
                 }
-                terminal.draw(|frame| ui::draw(frame, app))?;
+                draw(terminal, app)?;
             }
             None => {}
         }
@@ -281,7 +289,7 @@ fn event_loop(
             next = inputs.try_recv().ok();
         }
         if redraw && !signals.waiting() {
-            terminal.draw(|frame| ui::draw(frame, app))?;
+            draw(terminal, app)?;
         }
     }
 }

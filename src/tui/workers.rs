@@ -234,9 +234,19 @@ mod tests {
         let (started_tx, started) = mpsc::channel();
         let mut workers = Workers::new(sender);
         let closed = Arc::new(AtomicBool::new(false));
-        workers.submit(job(Lane::Overlay, 1, Arc::clone(&closed), started_tx.clone()));
+        workers.submit(job(
+            Lane::Overlay,
+            1,
+            Arc::clone(&closed),
+            started_tx.clone(),
+        ));
         assert_eq!(started.recv_timeout(Duration::from_secs(10)), Ok(1));
-        workers.submit(job(Lane::Overlay, 2, Arc::clone(&closed), started_tx.clone()));
+        workers.submit(job(
+            Lane::Overlay,
+            2,
+            Arc::clone(&closed),
+            started_tx.clone(),
+        ));
         let open = Arc::new(AtomicBool::new(true));
         workers.submit(job(Lane::Overlay, 3, open, started_tx));
         let cancelled = Instant::now();

@@ -25,7 +25,8 @@ impl App {
             return self.error("the parameters are not valid: nothing to fit");
         };
         let Some(structure) = fit_structure(&model) else {
-            return self.error("fitting needs a load-driven model (twin beams, lap joint): press m");
+            return self
+                .error("fitting needs a load-driven model (twin beams, lap joint): press m");
         };
         let measurements = self
             .measurements

@@ -235,6 +235,10 @@ pub struct App {
     /// True from `n` switching the overlay on until its answer comes, which the status explains
     /// (no points for this chart, unsolved points).
     overlay_toggled: bool,
+    /// See [`App::defer_charts`].
+    charts_deferred: bool,
+    /// True when a change left the chart to be rebuilt ([`App::settle`]).
+    chart_stale: bool,
     measurements: Option<Measurements>,
     /// The problem whose measured curve `measurements` is (the one `f` fits).
     measured_kind: ModelKind,
@@ -303,6 +307,8 @@ impl App {
             numeric: None,
             overlay: None,
             overlay_toggled: false,
+            charts_deferred: false,
+            chart_stale: false,
             measurements: options.data,
             measured_kind: kind,
             external: None,

@@ -5,10 +5,10 @@ use super::{App, PinnedChart};
 use crate::chart::view::AnyChart;
 use crate::chart::{self, NumericPoints, Plot, YMode, pins};
 use crate::fit::Measurement;
+use crate::problems::inputs::Inputs;
 use crate::problems::inputs::Model;
 use crate::problems::{ModelKind, Param};
 use crate::report::number;
-use crate::problems::inputs::Inputs;
 use crate::tui::effects::Effect;
 use crate::tui::workers::Lane;
 
@@ -109,12 +109,42 @@ impl App {
             }
         }
     }
-    /// Rebuilds the chart (and the finite-element points when shown) after any change.
+    /// After any change: follows the load axis, asks for the continuum and the overlay at the
+    /// new values, and rebuilds the chart, at once or, once [`App::defer_charts`] was called,
+    /// at the next [`App::settle`].
     pub(super) fn recompute(&mut self) {
         self.follow_threshold();
         self.ask_continuum();
-        let Some(model) = self.model() else { return };
+        if self.model().is_none() {
+            return;
+        }
         self.ask_overlay();
+        if self.charts_deferred {
+            self.chart_stale = true;
+        } else {
+            self.build_chart();
+        }
+    }
+
+    /// From now on, changes leave the chart to be rebuilt once by [`App::settle`] rather than
+    /// after each: the event loop applies a batch of keys (a held arrow key queues hundreds),
+    /// then settles and draws once, so a storm of keys costs one chart per frame, not one per
+    /// key (about 4 ms each for the lap joint in a debug build).
+    pub fn defer_charts(&mut self) {
+        self.charts_deferred = true;
+    }
+
+    /// Rebuilds the chart if a change since the last build left it stale; the event loop calls it
+    /// before drawing, and everything that reads the chart (the export) before reading it.
+    pub fn settle(&mut self) {
+        if std::mem::take(&mut self.chart_stale) {
+            self.build_chart();
+        }
+    }
+
+    /// Builds the chart shown (with its pins and the overlay's points), or the K_T table.
+    fn build_chart(&mut self) {
+        let Some(model) = self.model() else { return };
         let y_mode = self.y_mode();
         let Some(plot) = self.linear_plot(&model) else {
             // The view is the K_T table: text in the chart pane.
