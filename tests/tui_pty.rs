@@ -712,3 +712,34 @@ fn sigterm_during_a_lap_continuum_solve_ends_the_program_within_100_ms() {
     );
     assert!(solving, "no solve was under way when the signal came");
 }
+
+/// Issue 32: `d` reads a long file on a worker, and keys typed while it loads do not act on the
+/// main screen: an `m` typed right after Enter switched the model once the file, read in the event
+/// loop, was in.
+#[test]
+fn keys_typed_while_d_loads_a_long_file_do_not_act_on_the_main_screen() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("bench.csv");
+    let rows = 200_000;
+    let mut csv = String::from("F_N,w_mm\n");
+    for i in 1..=rows {
+        let force = 300.0 * f64::from(i) / f64::from(rows);
+        csv.push_str(&format!("{force},{}\n", 4e-4 * force));
+    }
+    std::fs::write(&data, csv).unwrap();
+    let (mut session, mut child) = start_with("--charset ascii");
+    session.wait_for("Twin beams");
+    session.send("d");
+    session.wait_for("Load measurements");
+    // The file, Enter, and at once `m` (which switches to the plate on the main screen).
+    session.send(&format!("{}\rm", data.display()));
+    session.wait_for("measurements from");
+    let screen = session.parser.screen().contents();
+    assert!(
+        screen.contains("Twin beams") && !screen.contains("Squeezed plate"),
+        "a key typed while the file loaded acted:\n{screen}"
+    );
+    session.send("q");
+    session.wait_for("EXIT=0");
+    let _ = child.wait();
+}

@@ -870,6 +870,38 @@ mod tests {
         assert_eq!(app.kind(), kind);
     }
 
+    /// On the lap joint, `d` with a CSV reads its measured curve, `F_N,Delta_mm` as `microslip fit
+    /// lap` takes it (FE results of the joint come as a CalculiX `.dat`), for `f`.
+    #[test]
+    fn d_on_the_lap_joint_reads_its_measured_curve() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("joint.csv");
+        std::fs::write(&path, "F_N,Delta_mm\n1000,0.004\n2000,0.008\n3000,0.013\n").unwrap();
+        let mut app = app_on("lap-aluminium", None);
+        update_blocking(&mut app, Action::LoadData);
+        for c in path.to_str().unwrap().chars() {
+            update_blocking(&mut app, Action::Input(c));
+        }
+        update_blocking(&mut app, Action::Commit);
+        assert_eq!(app.mode(), &Mode::Normal);
+        let text = &app.message().unwrap().text;
+        assert!(text.starts_with("loaded 3 measurements from "), "{text}");
+        assert_eq!(
+            app.measurements().map(|m| m.points[2].deflection),
+            Some(0.013)
+        );
+        let asked = app.clone().update(Action::Fit);
+        assert!(
+            matches!(asked.as_slice(), [Effect::Fit { .. }]),
+            "{asked:?}"
+        );
+        // They are the joint's: the beams have nothing to fit.
+        app.update(Action::SwitchModel);
+        app.update(Action::Fit);
+        let text = &app.message().unwrap().text;
+        assert!(text.starts_with("no measurements: press d"), "{text}");
+    }
+
     /// `f` fits the lap joint as it fits the beams: measured Delta(F) of the bundled joint at
     /// mu = 0.3, K_T = 1000 (drawn from the closed form at those values), fitted from the preset
     /// moved to K_T = 400, brings K_T back and adopts it.
