@@ -734,6 +734,11 @@ fn keys_typed_while_d_loads_a_long_file_do_not_act_on_the_main_screen() {
     // The file, Enter, and at once `m` (which switches to the plate on the main screen).
     session.send(&format!("{}\rm", data.display()));
     session.wait_for("measurements from");
+    // Long enough for a key still queued behind the read to have acted and been drawn.
+    let start = Instant::now();
+    while start.elapsed() < Duration::from_millis(500) {
+        session.pump(Duration::from_millis(20));
+    }
     let screen = session.parser.screen().contents();
     assert!(
         screen.contains("Twin beams") && !screen.contains("Squeezed plate"),
