@@ -22,6 +22,7 @@ impl App {
             .is_some_and(|e| e.eq_ignore_ascii_case("dat"));
         // A CSV is a measured curve to fit where the problem has one (a load: a fit structure).
         let measurements = !is_dat && self.model().is_some_and(|m| fit_structure(&m).is_some());
+        self.info(format!("loading {path}... (Esc cancels)"));
         self.mode = Mode::Loading { path: path.clone() };
         self.asked.push(if !measurements {
             Effect::ReadFeResults {
