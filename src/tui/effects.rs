@@ -395,10 +395,7 @@ pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
 /// The outcome of [`Effect::ReadMeasurements`]: the curve of `kind`'s fit (a long parse stops at
 /// a cancellation checkpoint every few ten thousand rows).
 fn read_measurements(path: String, kind: ModelKind) -> Outcome {
-    let parse = match kind {
-        ModelKind::Lap => crate::measured::parse_measured_joint_with_progress,
-        ModelKind::Beam | ModelKind::Plate => crate::measured::parse_measured_with_progress,
-    };
+    let parse = measured_curve_parser(kind);
     let result = crate::measured::read_text(&path, crate::file::Kinds::RegularOnly)
         .map_err(|e| e.to_string())
         .and_then(|text| {
@@ -407,6 +404,21 @@ fn read_measurements(path: String, kind: ModelKind) -> Outcome {
                 .map_err(|e| e.to_string())
         });
     Outcome::Measurements { path, kind, result }
+}
+
+/// The reader of `kind`'s measured curve (`F_N,Delta_mm` for the lap joint, `F_N,w_mm` else):
+/// what `d` and `--data` read, and `f` fits.
+pub type CurveParser = fn(
+    &str,
+    &mut dyn FnMut(usize, usize),
+) -> Result<crate::fit::Measured, crate::measured::DataError>;
+
+/// See [`CurveParser`].
+pub fn measured_curve_parser(kind: ModelKind) -> CurveParser {
+    match kind {
+        ModelKind::Lap => crate::measured::parse_measured_joint_with_progress,
+        ModelKind::Beam | ModelKind::Plate => crate::measured::parse_measured_with_progress,
+    }
 }
 
 /// The outcome of [`Effect::SolveOverlay`].

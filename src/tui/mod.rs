@@ -116,10 +116,7 @@ pub fn run(
             let text = crate::measured::read_text(&path, crate::file::Kinds::AnyReadable)
                 .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
             // The measured curve of the problem opened: F_N,Delta_mm on a lap joint's preset.
-            let parse = match preset.inputs.kind() {
-                ModelKind::Lap => crate::measured::parse_measured_joint_with_progress,
-                ModelKind::Beam | ModelKind::Plate => crate::measured::parse_measured_with_progress,
-            };
+            let parse = effects::measured_curve_parser(preset.inputs.kind());
             let points = parse(&text, &mut |_, _| {})
                 .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?
                 .points;
