@@ -65,7 +65,9 @@ const KEY_DETAILS: &[(&str, &str)] = &[
         "finite-element points on/off (on the plate's u(L) chart also the 2-D plane-strain \
          continuum, where the strip theory's assumptions are dropped; on the lap joint's Delta, \
          zone, tau(x) and s(x) charts the 2-D plane-stress continuum, where the shear-lag \
-         theory's are)",
+         theory's are). They are solved on a worker thread (seconds for the lap joint's \
+         continuum): the legend says `solving...` meanwhile, the newest values win, and Esc (or \
+         `q`) stops the solve and turns the points off",
     ),
     (
         "b",
@@ -88,15 +90,18 @@ const KEY_DETAILS: &[(&str, &str)] = &[
     ),
     (
         "d",
-        "load measurements (CSV `F_N,w_mm`, for `f`; also `--data FILE`) or FE results: a \
+        "load a measured curve for `f` (a CSV: `F_N,w_mm` on the twin beams, `F_N,Delta_mm` on \
+         the lap joint, as `microslip fit` takes them; also `--data FILE`) or FE results: a \
          CalculiX `.dat` of a `microslip deck` run (its deck's parameters are adopted; points \
          labelled CalculiX on the w(L), u(L) or Delta chart; the status line gives the comparison \
          of `microslip compare`; plate runs of one deck add up over K_T), or on the plate a CSV \
-         `KT_MPa_per_mm,u_mm`, on the lap joint a CSV `F_N,Delta_mm` of any FE code",
+         `KT_MPa_per_mm,u_mm` of any FE code. The file is read on a worker thread: Esc cancels, \
+         other keys do nothing until it is in",
     ),
     (
         "f",
-        "fit mu and K_T to them and adopt the identifiable values (`u` undoes it). The fit runs \
+        "fit mu and K_T of the twin beams or the lap joint to their measured curve and adopt the \
+         identifiable values (`u` undoes it), as `microslip fit` does. The fit runs \
          on a worker thread: a long one shows its progress on the status line and Esc cancels \
          it, leaving the parameters as they were; other keys do nothing until it ends",
     ),

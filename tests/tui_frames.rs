@@ -422,6 +422,53 @@ fn measured_points_on_the_deflection_chart() {
     insta::assert_snapshot!("after_fit", screen(&app, 100, 30));
 }
 
+/// `f` fits the lap joint as it fits the beams (issue 32): its measured Delta(F), drawn from the
+/// bundled joint (mu = 0.3, K_T = 1000 MPa/mm) with a gauge's scatter, shows on Delta vs F at
+/// K_T = 400, and the fit brings K_T back to about 1000.
+#[test]
+fn the_lap_joint_is_fitted_with_f() {
+    use microslip::problems::inputs::{Inputs, Model};
+    let Ok(Model::Lap { joint, .. }) =
+        Inputs::paper(microslip::problems::ModelKind::Lap).validate()
+    else {
+        panic!("the bundled lap joint")
+    };
+    let points = (1..=14)
+        .map(|i| {
+            let force = 400.0 * f64::from(i);
+            // A gauge's scatter, +-0.4 % alternating: the errors of the fit are not round-off.
+            let scatter = if i % 2 == 0 { 1.004 } else { 0.996 };
+            let deflection = scatter
+                * joint
+                    .regularized(joint.force(force).unwrap())
+                    .joint_displacement();
+            microslip::fit::Measurement { force, deflection }
+        })
+        .collect();
+    let mut app = App::new(AppOptions {
+        theme: Theme {
+            charset: Charset::Ascii,
+            color: false,
+        },
+        preset: preset::resolve("lap-aluminium").unwrap(),
+        user_dir: None,
+        data: Some(microslip::app::testing::Measurements {
+            path: "joint.csv".into(),
+            points,
+        }),
+        solve_continuum: false,
+    });
+    press(&mut app, Action::CommandLine);
+    act(
+        &mut app,
+        &"KT=400".chars().map(Action::Input).collect::<Vec<_>>(),
+    );
+    press(&mut app, Action::Commit);
+    insta::assert_snapshot!("lap_measured_points", screen(&app, 100, 30));
+    press(&mut app, Action::Fit);
+    insta::assert_snapshot!("lap_after_fit", screen(&app, 100, 30));
+}
+
 #[test]
 fn stiffness_panels() {
     let mut app = app();

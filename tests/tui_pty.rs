@@ -18,10 +18,21 @@ struct Session {
 }
 
 impl Session {
+    /// Reads what the program wrote, waiting up to `timeout` for the first chunk, then taking
+    /// everything already there: a test that read one chunk per look at the screen fell behind a
+    /// program drawing fast, whose writes then waited for the pty's buffer.
     fn pump(&mut self, timeout: Duration) {
-        if let Ok(chunk) = self.output.recv_timeout(timeout) {
+        let Ok(first) = self.output.recv_timeout(timeout) else {
+            return;
+        };
+        let mut chunk = first;
+        loop {
             self.parser.process(&chunk);
             self.raw.extend_from_slice(&chunk);
+            match self.output.try_recv() {
+                Ok(next) => chunk = next,
+                Err(_) => break,
+            }
         }
     }
 
@@ -595,4 +606,145 @@ fn a_data_file_above_the_cap_is_refused_before_the_screen_changes() {
     );
     let _ = child.wait();
     drop(pty.master);
+}
+
+/// Polls `pid` until it has ended (gone, or a zombie its shell has not reaped yet); panics after
+/// `limit`. Returns how long that took.
+fn wait_ended(pid: &str, limit: Duration) -> Duration {
+    let start = Instant::now();
+    while !matches!(state(pid), '?' | 'Z' | 'X') {
+        assert!(
+            start.elapsed() < limit,
+            "still running {:?} after the signal",
+            start.elapsed()
+        );
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    start.elapsed()
+}
+
+/// Writes `count` keys `key` as a fast terminal would, 200 every 20 ms (10 000 keys a second),
+/// reading the screen meanwhile; returns when the last one has been written. Not all at once: the
+/// terminal library reads at most 1 024 bytes per wake-up, and the rest of a single larger write
+/// waited in the kernel for the next key (a terminal never delivers a thousand keys in one read).
+fn burst(session: &mut Session, count: usize, key: char) -> Instant {
+    let mut left = count;
+    while left > 0 {
+        let now = left.min(200);
+        session.send(&key.to_string().repeat(now));
+        left -= now;
+        let pause = Instant::now() + Duration::from_millis(20);
+        while left > 0 && Instant::now() < pause {
+            session.pump(Duration::from_millis(2));
+        }
+    }
+    Instant::now()
+}
+
+/// Issue 32: on the lap joint with its finite-element and 2-D continuum overlay on (`n`), a
+/// storm of 2 000 `l` keys on K_T (each a new continuum solve, up to seconds each) settles
+/// within 2 s of the last key: the screen shows the final K_T (the top of its domain, 1e12
+/// MPa/mm, where 1.02^2000 takes it) with nothing pending. The continuum ran in the event loop
+/// before: every key waited for its own solve (342 s in a release build).
+#[test]
+fn a_storm_of_keys_on_the_lap_joint_with_the_continuum_on_settles_within_2_s() {
+    let (mut session, mut child) = start_with("--preset lap-aluminium --charset ascii");
+    session.wait_for("Double-lap joint");
+    // Down to K_T (the ninth row), then the overlay, and its first answer.
+    session.send("jjjjjjjj");
+    session.send("n");
+    session.wait_for("2-D continuum");
+    session.wait_until("the first overlay", |s| {
+        !s.parser.screen().contents().contains("solving")
+    });
+    let last_key = burst(&mut session, 2_000, 'l');
+    let limit = Duration::from_secs(2);
+    loop {
+        let screen = session.parser.screen().contents();
+        if screen.contains("1e12 MPa/mm") && !screen.contains("solving") {
+            break;
+        }
+        assert!(
+            last_key.elapsed() < limit,
+            "not settled {:?} after the last key; screen:\n{screen}",
+            last_key.elapsed()
+        );
+        session.pump(Duration::from_millis(10));
+    }
+    eprintln!(
+        "2 000 K_T keys with the continuum on: settled {:?} after the last key",
+        last_key.elapsed()
+    );
+    let pid = microslip_pid(child.as_ref());
+    kill("TERM", &pid);
+    session.wait_for("EXIT=143");
+    let _ = child.wait();
+}
+
+/// Issue 32: SIGTERM while a lap-joint continuum solve runs (`:KT=1e5 t2=0.2`, then `n`: seconds
+/// of work) ends the process within 100 ms: the solve runs on a worker and the event loop, which
+/// acts on signals, never waits for it. It ran in the event loop before, and the signal waited
+/// for the whole solve.
+#[test]
+fn sigterm_during_a_lap_continuum_solve_ends_the_program_within_100_ms() {
+    let (mut session, mut child) = start_with("--preset lap-aluminium --charset ascii");
+    session.wait_for("Double-lap joint");
+    let pid = microslip_pid(child.as_ref());
+    session.send(":KT=1e5 t2=0.2\r");
+    session.wait_for("KT = 100000");
+    session.send("n");
+    // Give the loop time to take the key and start the solve (seconds long at these values).
+    let start = Instant::now();
+    while start.elapsed() < Duration::from_millis(300) {
+        session.pump(Duration::from_millis(10));
+    }
+    // The legend says the points are coming: the signal arrives while they are solved.
+    let solving = session.parser.screen().contents().contains("solving");
+    kill("TERM", &pid);
+    let took = wait_ended(&pid, Duration::from_secs(30));
+    eprintln!("SIGTERM during a lap continuum solve: ended after {took:?}");
+    session.wait_for("EXIT=143");
+    session.assert_restored();
+    let _ = child.wait();
+    assert!(
+        took < Duration::from_millis(100),
+        "SIGTERM during a lap continuum solve took {took:?}"
+    );
+    assert!(solving, "no solve was under way when the signal came");
+}
+
+/// Issue 32: `d` reads a long file on a worker, and keys typed while it loads do not act on the
+/// main screen: an `m` typed right after Enter switched the model once the file, read in the event
+/// loop, was in.
+#[test]
+fn keys_typed_while_d_loads_a_long_file_do_not_act_on_the_main_screen() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("bench.csv");
+    let rows = 200_000;
+    let mut csv = String::from("F_N,w_mm\n");
+    for i in 1..=rows {
+        let force = 300.0 * f64::from(i) / f64::from(rows);
+        csv.push_str(&format!("{force},{}\n", 4e-4 * force));
+    }
+    std::fs::write(&data, csv).unwrap();
+    let (mut session, mut child) = start_with("--charset ascii");
+    session.wait_for("Twin beams");
+    session.send("d");
+    session.wait_for("Load measurements");
+    // The file, Enter, and at once `m` (which switches to the plate on the main screen).
+    session.send(&format!("{}\rm", data.display()));
+    session.wait_for("measurements from");
+    // Long enough for a key still queued behind the read to have acted and been drawn.
+    let start = Instant::now();
+    while start.elapsed() < Duration::from_millis(500) {
+        session.pump(Duration::from_millis(20));
+    }
+    let screen = session.parser.screen().contents();
+    assert!(
+        screen.contains("Twin beams") && !screen.contains("Squeezed plate"),
+        "a key typed while the file loaded acted:\n{screen}"
+    );
+    session.send("q");
+    session.wait_for("EXIT=0");
+    let _ = child.wait();
 }

@@ -377,8 +377,9 @@ pub(crate) fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
 const LOOP_POINTS: u64 = SAMPLES / 2 + 1;
 
 /// Builds `chart` of `model` (a chart of the model's problem), with finite-element points,
-/// measurements and an external code's points if given (measurements show on the twin beams' w(L)
-/// vs F chart, external points on the chart of their quantity).
+/// measurements and an external code's points if given (measurements show on the chart of the
+/// measured response against the load, w(L) or Delta vs F; external points on the chart of their
+/// quantity).
 pub fn build(
     model: &Model,
     chart: AnyChart,
@@ -424,6 +425,10 @@ pub fn build(
         Model::Lap { joint, force } => match chart {
             AnyChart::Beam(_) | AnyChart::Plate(_) => None,
             AnyChart::Lap(chart) => {
+                if let (LapChart::Displacement, Some(points)) = (chart, measured) {
+                    let series = points.iter().map(|m| (m.force, m.deflection)).collect();
+                    overlays.push((SeriesRole::Measured, "measured", series));
+                }
                 if let (LapChart::Displacement, Some(e)) = (chart, external) {
                     overlays.push((SeriesRole::External, e.label.as_str(), e.points.clone()));
                 }

@@ -1,30 +1,30 @@
 //! The TUI's effects: what [`App::update`] asks for and does not do itself (write an exported
-//! chart or a preset, read a measurement or FE result file, list presets or a folder, run a fit),
-//! and what came of it ([`Outcome`]), which goes back through [`App::receive`].
+//! chart or a preset, read a measurement or FE result file, list presets or a folder, solve the
+//! finite-element and continuum overlay, run a fit), and what came of it ([`Outcome`]), which goes
+//! back through [`App::receive`].
 //!
 //! The state stays a pure function of actions and outcomes, so every key can be tested without a
-//! disk, and the event loop decides where the work runs: files are quick and are read and written
-//! at once, in the loop ([`Runner::perform`], which uses [`perform_blocking`]), between two keys;
-//! an export renders a PNG and a PDF (tens of ms) and a fit can take seconds on a long curve, so
-//! they run on worker threads, like the slow work of the `television` crate, and report their
-//! results (a fit its progress too) as messages the loop picks up with the terminal's events. The
-//! loop never waits for them: the screen is redrawn, Esc cancels a fit and signals act as fast as
-//! when the program is idle. Tests perform everything in place with
-//! [`update_blocking`].
+//! disk, and the event loop decides where the work runs ([`plan`]): what is quick (a preset, a
+//! folder listing) is done at once, in the loop, between two keys; every slow job (the overlay and
+//! the continuum, a fit, a file read with `d`, an export) runs on a worker ([`super::workers`]),
+//! like the slow work of the `television` crate, and reports its results (a fit its progress too)
+//! as messages the loop picks up with the terminal's events. The loop never waits for them: the
+//! screen is redrawn, Esc cancels, and signals act as fast as when the program is idle. Tests
+//! perform everything in place with [`update_blocking`].
 
-use std::any::Any;
+use std::cell::Cell;
 use std::collections::VecDeque;
 use std::path::PathBuf;
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::Sender;
 use std::time::{Duration, Instant};
 
 use super::action::Action;
 use super::app::App;
-use crate::TwinBeamsParams;
+use super::workers::{Job, Lane, Report, Workers};
+use crate::chart::NumericPoints;
+use crate::chart::view::AnyChart;
 use crate::fe::load::AnyLoaded;
-use crate::fit::{FitError, FitResult, Measurement, Progress};
+use crate::fit::{FitError, FitResult, Measurement, Progress, Structure};
 use crate::preset::{self, Listed, SaveError};
 use crate::problems::ModelKind;
 use crate::problems::inputs::Inputs;
@@ -60,12 +60,16 @@ pub enum Effect {
         /// True once the user agreed to replace an existing preset.
         overwrite: bool,
     },
-    /// `d` with a measurement CSV (`F_N,w_mm`): read and parse it.
+    /// `d` with a measured curve (`F_N,w_mm` for the beams, `F_N,Delta_mm` for the lap joint):
+    /// read and parse it (on a worker in the loop: a million rows take seconds).
     ReadMeasurements {
         /// The file, as typed.
         path: String,
+        /// The problem whose curve it is.
+        kind: ModelKind,
     },
-    /// `d` with FE results (a CalculiX `.dat`, a plate CSV): read and parse them.
+    /// `d` with FE results (a CalculiX `.dat`, a plate CSV): read and parse them (on a worker in
+    /// the loop).
     ReadFeResults {
         /// The file, as typed.
         path: String,
@@ -78,7 +82,7 @@ pub enum Effect {
         user_dir: Option<PathBuf>,
     },
     /// The plate's 2-D continuum at `params`, for the regime pane (on a worker in the loop: up to
-    /// a tenth of a second; a request made while one runs waits, and only the newest waits).
+    /// a tenth of a second; the newest request wins).
     SolveContinuum {
         /// The plate.
         params: crate::PlateParams,
@@ -104,12 +108,13 @@ pub enum Effect {
         /// The prompt's text.
         text: String,
     },
-    /// `f`: fit mu and K_T of the twin beams to the measurements (on a worker in the loop).
+    /// `f`: fit mu and K_T of a load-driven problem to its measured curve (on a worker in the
+    /// loop).
     Fit {
         /// Which fit, for its outcomes: those of a cancelled fit are ignored.
         job: u64,
-        /// The beams (the start of the fit).
-        structure: TwinBeamsParams,
+        /// The structure (the start of the fit).
+        structure: Structure,
         /// The measurements.
         points: Vec<Measurement>,
     },
@@ -117,6 +122,20 @@ pub enum Effect {
     CancelFit {
         /// The fit to stop.
         job: u64,
+    },
+    /// `n`: the finite-element points of `chart` at `inputs`, with the 2-D continuum's where the
+    /// problem has one (on a worker in the loop: seconds for the lap joint; the newest request
+    /// wins).
+    SolveOverlay {
+        /// The parameters, as shown.
+        inputs: Inputs,
+        /// The chart shown.
+        chart: AnyChart,
+    },
+    /// Esc while the work of `lane` runs: stop it (its outcome is dropped in any case).
+    Cancel {
+        /// The lane to stop.
+        lane: Lane,
     },
 }
 
@@ -140,6 +159,8 @@ pub enum Outcome {
     Measurements {
         /// The file, as typed.
         path: String,
+        /// The problem whose curve they are.
+        kind: ModelKind,
         /// The points, or the reason (with the line).
         result: Result<Vec<Measurement>, String>,
     },
@@ -189,6 +210,15 @@ pub enum Outcome {
         /// The estimates, or why there are none.
         result: Result<FitResult, FitError>,
     },
+    /// The overlay of [`Effect::SolveOverlay`] (None: the chart has none), or why it failed.
+    Overlay {
+        /// The parameters it was solved at.
+        inputs: Inputs,
+        /// The chart it was solved for.
+        chart: AnyChart,
+        /// The points, or the solver's reason.
+        result: Result<Option<NumericPoints>, String>,
+    },
 }
 
 /// Why `x` wrote nothing.
@@ -216,16 +246,35 @@ pub const MAX_EXPORT_NUMBER: u32 = 999;
 /// result, as when it ran in the loop, and a long one costs a redraw every 100 ms at most.
 pub const PROGRESS_EVERY: Duration = Duration::from_millis(100);
 
-/// Performs `effect` on this thread, the fit included, and returns what came of it (nothing for
-/// [`Effect::CancelFit`]: there is nothing to stop here).
-pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
-    Some(match effect {
+/// Where an effect is performed: now, on the loop's thread, or as a slow [`Job`] on a worker.
+pub enum Plan {
+    /// Done: what came of it, if anything.
+    Now(Option<Outcome>),
+    /// Slow: a job for the workers.
+    Slow(Job),
+    /// Stop the job of a lane (of that tag, when given).
+    Cancel(Lane, Option<u64>),
+}
+
+/// Decides where `effect` runs and does it at once if it is quick. The one place that says which
+/// effects are slow: the loop ([`Runner::perform`]) hands those to its workers, and tests
+/// ([`perform_blocking`]) run them in place.
+pub fn plan(effect: Effect) -> Plan {
+    let slow = |lane, tag, work: super::workers::Work| Plan::Slow(Job { lane, tag, work });
+    Plan::Now(Some(match effect {
         Effect::ExportChart {
             dir,
             stem,
             svg,
             csv,
-        } => Outcome::Exported(export(&dir, &stem, &svg, &csv)),
+        } => {
+            // About 40 ms of rendering (release build): more than a frame.
+            return slow(
+                Lane::Export,
+                0,
+                Box::new(move |_| Some(Outcome::Exported(export(&dir, &stem, &svg, &csv)))),
+            );
+        }
         Effect::SavePreset {
             dir,
             name,
@@ -239,19 +288,45 @@ pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
             description,
             inputs,
         },
-        Effect::ReadMeasurements { path } => Outcome::Measurements {
-            result: crate::measured::read_text(&path, crate::file::Kinds::RegularOnly)
-                .map_err(|e| e.to_string())
-                .and_then(|text| crate::measured::parse(&text).map_err(|e| e.to_string())),
-            path,
-        },
-        Effect::ReadFeResults { path, kind } => Outcome::FeResults {
-            result: crate::fe::load::any_results(std::path::Path::new(&path), None, kind)
-                .map_err(|e| e.to_string()),
-            path,
-        },
+        Effect::ReadMeasurements { path, kind } => {
+            return slow(
+                Lane::Read,
+                0,
+                Box::new(move |_| Some(read_measurements(path, kind))),
+            );
+        }
+        Effect::ReadFeResults { path, kind } => {
+            return slow(
+                Lane::Read,
+                0,
+                Box::new(move |_| {
+                    Some(Outcome::FeResults {
+                        result: crate::fe::load::any_results(
+                            std::path::Path::new(&path),
+                            None,
+                            kind,
+                        )
+                        .map_err(|e| e.to_string()),
+                        path,
+                    })
+                }),
+            );
+        }
         Effect::ListPresets { user_dir } => Outcome::Presets(preset::listing(user_dir.as_deref())),
-        Effect::SolveContinuum { params } => solve_continuum(params),
+        Effect::SolveContinuum { params } => {
+            return slow(
+                Lane::Continuum,
+                0,
+                Box::new(move |_| Some(solve_continuum(params))),
+            );
+        }
+        Effect::SolveOverlay { inputs, chart } => {
+            return slow(
+                Lane::Overlay,
+                0,
+                Box::new(move |_| Some(solve_overlay(inputs, chart))),
+            );
+        }
         Effect::LoadPreset { name, user_dir } => Outcome::Preset {
             // As `--preset` takes it: a path, a bundled name, then a user preset of that name.
             result: preset::resolve_in(&name, user_dir.as_deref()).map_err(|e| match e {
@@ -295,19 +370,97 @@ pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
             job,
             structure,
             points,
-        } => Outcome::Fitted {
-            job,
-            result: crate::fit::fit_twin_beams_weighted(
-                structure,
-                &points,
-                None,
-                None,
-                crate::fit::Weights::default(),
-                &mut |_| {},
-            ),
+        } => {
+            return slow(
+                Lane::Fit,
+                job,
+                Box::new(move |progress| Some(fit(job, structure, &points, progress))),
+            );
+        }
+        Effect::CancelFit { job } => return Plan::Cancel(Lane::Fit, Some(job)),
+        Effect::Cancel { lane } => return Plan::Cancel(lane, None),
+    }))
+}
+
+/// Performs `effect` on this thread, the slow ones included, and returns what came of it
+/// (nothing for a cancel: there is nothing to stop here).
+pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
+    match plan(effect) {
+        Plan::Now(outcome) => outcome,
+        Plan::Slow(job) => job.run_here(),
+        Plan::Cancel(..) => None,
+    }
+}
+
+/// The outcome of [`Effect::ReadMeasurements`]: the curve of `kind`'s fit (a long parse stops at
+/// a cancellation checkpoint every few ten thousand rows).
+fn read_measurements(path: String, kind: ModelKind) -> Outcome {
+    let parse = measured_curve_parser(kind);
+    let result = crate::measured::read_text(&path, crate::file::Kinds::RegularOnly)
+        .map_err(|e| e.to_string())
+        .and_then(|text| {
+            parse(&text, &mut |_, _| crate::numeric::cancel::checkpoint())
+                .map(|measured| measured.points)
+                .map_err(|e| e.to_string())
+        });
+    Outcome::Measurements { path, kind, result }
+}
+
+/// The reader of `kind`'s measured curve (`F_N,Delta_mm` for the lap joint, `F_N,w_mm` else):
+/// what `d` and `--data` read, and `f` fits.
+pub type CurveParser = fn(
+    &str,
+    &mut dyn FnMut(usize, usize),
+) -> Result<crate::fit::Measured, crate::measured::DataError>;
+
+/// See [`CurveParser`].
+pub fn measured_curve_parser(kind: ModelKind) -> CurveParser {
+    match kind {
+        ModelKind::Lap => crate::measured::parse_measured_joint_with_progress,
+        ModelKind::Beam | ModelKind::Plate => crate::measured::parse_measured_with_progress,
+    }
+}
+
+/// The outcome of [`Effect::SolveOverlay`].
+fn solve_overlay(inputs: Inputs, chart: AnyChart) -> Outcome {
+    let result = match inputs.validate() {
+        Ok(model) => crate::chart::numeric_points(&model, chart).map_err(|e| e.to_string()),
+        Err(e) => Err(e.to_string()),
+    };
+    Outcome::Overlay {
+        inputs,
+        chart,
+        result,
+    }
+}
+
+/// A fit with the command line's default weights (a sigma_mm column is not kept by the terminal
+/// UI): its progress every [`PROGRESS_EVERY`] through `progress`, then its result. It stops at the
+/// next progress call (every grid node, every 16 384 measurements of a pass) once cancelled.
+fn fit(
+    job: u64,
+    structure: Structure,
+    points: &[Measurement],
+    progress: &dyn Fn(Outcome),
+) -> Outcome {
+    let reported = Cell::new(Instant::now());
+    let result = crate::fit::fit_weighted(
+        structure,
+        points,
+        (None, None),
+        crate::fit::Weights::default(),
+        &mut |step| {
+            crate::numeric::cancel::checkpoint();
+            if reported.get().elapsed() >= PROGRESS_EVERY {
+                reported.set(Instant::now());
+                progress(Outcome::FitProgress {
+                    job,
+                    progress: step,
+                });
+            }
         },
-        Effect::CancelFit { .. } => return None,
-    })
+    );
+    Outcome::Fitted { job, result }
 }
 
 /// What the regime pane shows of the plate's continuum solution.
@@ -402,38 +555,17 @@ fn export(
     })
 }
 
-/// What a worker sends the event loop.
-pub enum Report {
-    /// An outcome for [`App::receive`].
-    Outcome(Outcome),
-    /// The work panicked (after the panic hook restored the terminal and printed the message):
-    /// the loop panics with it too, so that the program ends as it did when the work ran in the
-    /// loop.
-    Panicked(Box<dyn Any + Send>),
-}
-
-/// The payload a cancelled fit unwinds with (see [`Runner::perform`]).
-struct Cancelled;
-
-/// Performs effects for the event loop: at once in the loop, except the fit, which runs on a
-/// worker thread reporting through `reports` (the loop's channel, shared with the terminal's
-/// events).
+/// Performs effects for the event loop: the quick ones at once, the slow ones on its workers,
+/// which report through the loop's channel, shared with the terminal's events.
 pub struct Runner<M> {
-    reports: Sender<M>,
-    /// The fit running, if any, and its cancel flag.
-    fit: Option<(u64, Arc<AtomicBool>)>,
-    /// True while a continuum solve runs; the newest request made meanwhile waits here (older
-    /// ones are dropped: a held arrow key asks for many, only the last values matter).
-    continuum: (bool, Option<crate::PlateParams>),
+    workers: Workers<M>,
 }
 
 impl<M: From<Report> + Send + 'static> Runner<M> {
     /// A runner whose workers report through `reports`.
     pub fn new(reports: Sender<M>) -> Runner<M> {
         Runner {
-            reports,
-            fit: None,
-            continuum: (false, None),
+            workers: Workers::new(reports),
         }
     }
 
@@ -449,145 +581,49 @@ impl<M: From<Report> + Send + 'static> Runner<M> {
         drive(app, effects, |effect| self.perform(effect));
     }
 
-    /// Gives a worker's report to the app and performs what that leads to; resumes a worker's
-    /// panic.
+    /// Gives a worker's report to the app and performs what that leads to; frees the lane of a
+    /// job that ended (the request waiting for it starts); resumes a worker's panic.
     pub fn deliver(&mut self, app: &mut App, report: Report) {
-        match report {
-            Report::Outcome(outcome) => {
-                if matches!(outcome, Outcome::Continuum { .. }) {
-                    self.continuum.0 = false;
-                    if let Some(params) = self.continuum.1.take() {
-                        self.start_continuum(params);
-                    }
+        let outcome = match report {
+            Report::Progress(outcome) => outcome,
+            Report::Finished { lane, outcome } => {
+                self.workers.finished(lane);
+                match outcome {
+                    Some(outcome) => outcome,
+                    None => return,
                 }
-                let effects = app.receive(outcome);
-                drive(app, effects, |effect| self.perform(effect));
             }
             Report::Panicked(payload) => std::panic::resume_unwind(payload),
-        }
+        };
+        let effects = app.receive(outcome);
+        drive(app, effects, |effect| self.perform(effect));
     }
 
-    /// Performs `effect`: a fit starts on a worker thread and reports later (nothing now), a
-    /// cancel sets the fit's flag, anything else is done at once ([`perform_blocking`]).
-    ///
-    /// The fit has no cancel of its own, only its progress callback, called at every grid node
-    /// and every 16 384 measurements of a pass: a cancelled fit unwinds out of that callback ([`std::panic::resume_unwind`],
-    /// which runs no panic hook, so nothing is printed and the terminal stays as it is) and the
-    /// worker catches it, as the `salsa` crate cancels queries. The fit holds no lock and shares
-    /// nothing, so unwinding only drops its own data. Built with `panic = "abort"` a cancelled
-    /// fit runs to its end instead, and its result is ignored like any cancelled fit's.
+    /// Performs `effect` where [`plan`] says: a slow one goes to the workers and reports later
+    /// (nothing now), a cancel stops a lane, anything else is done at once.
     pub fn perform(&mut self, effect: Effect) -> Option<Outcome> {
-        match effect {
-            Effect::Fit {
-                job,
-                structure,
-                points,
-            } => {
-                let cancel = Arc::new(AtomicBool::new(false));
-                self.fit = Some((job, Arc::clone(&cancel)));
-                let reports = self.reports.clone();
-                std::thread::spawn(move || {
-                    fit_on_worker(job, structure, &points, &cancel, &reports)
-                });
+        match plan(effect) {
+            Plan::Now(outcome) => outcome,
+            Plan::Slow(job) => {
+                self.workers.submit(job);
                 None
             }
-            Effect::SolveContinuum { params } => {
-                if self.continuum.0 {
-                    self.continuum.1 = Some(params);
-                } else {
-                    self.start_continuum(params);
-                }
+            Plan::Cancel(lane, tag) => {
+                self.workers.cancel(lane, tag);
                 None
             }
-            Effect::CancelFit { job } => {
-                if let Some((_, cancel)) = self.fit.take_if(|(running, _)| *running == job) {
-                    cancel.store(true, Ordering::SeqCst);
-                }
-                None
-            }
-            // About 40 ms of rendering (release build): more than a frame, so off the loop.
-            // Two exports at once cannot collide: each claims its file names with create_new.
-            effect @ Effect::ExportChart { .. } => {
-                self.on_worker(move || perform_blocking(effect));
-                None
-            }
-            effect => perform_blocking(effect),
         }
-    }
-}
-
-impl<M: From<Report> + Send + 'static> Runner<M> {
-    /// Solves the continuum on a worker thread, which reports its outcome (or its panic).
-    fn start_continuum(&mut self, params: crate::PlateParams) {
-        self.continuum.0 = true;
-        self.on_worker(move || Some(solve_continuum(params)));
-    }
-
-    /// Runs `work` on a worker thread, which reports its outcome (if any) or its panic.
-    fn on_worker(&self, work: impl FnOnce() -> Option<Outcome> + Send + 'static) {
-        let reports = self.reports.clone();
-        std::thread::spawn(move || {
-            // Failures are outcomes (a solver's non-convergence, a full disk); a panic is a bug,
-            // and the panic hook has already restored the terminal (on any thread), so the loop
-            // ends the program with it as it does for the fit's, rather than drawing on a
-            // terminal that is no longer in full-screen mode.
-            let report = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)) {
-                Ok(Some(outcome)) => Report::Outcome(outcome),
-                Ok(None) => return,
-                Err(payload) => Report::Panicked(payload),
-            };
-            // The loop has gone (the program is ending): nobody needs the report.
-            let _ = reports.send(M::from(report));
-        });
-    }
-}
-
-/// A worker's fit: progress every [`PROGRESS_EVERY`], then the result, unless cancelled.
-fn fit_on_worker<M: From<Report>>(
-    job: u64,
-    structure: TwinBeamsParams,
-    points: &[Measurement],
-    cancel: &AtomicBool,
-    reports: &Sender<M>,
-) {
-    let send = |report: Report| {
-        // The loop has gone (the program is ending): nobody needs the report.
-        let _ = reports.send(M::from(report));
-    };
-    let mut reported = Instant::now();
-    let fitted = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        // The command line's default weights (a sigma_mm column is not kept by the terminal UI).
-        crate::fit::fit_twin_beams_weighted(
-            structure,
-            points,
-            None,
-            None,
-            crate::fit::Weights::default(),
-            &mut |progress| {
-                if cfg!(panic = "unwind") && cancel.load(Ordering::SeqCst) {
-                    std::panic::resume_unwind(Box::new(Cancelled));
-                }
-                if reported.elapsed() >= PROGRESS_EVERY {
-                    reported = Instant::now();
-                    send(Report::Outcome(Outcome::FitProgress { job, progress }));
-                }
-            },
-        )
-    }));
-    match fitted {
-        Ok(result) => send(Report::Outcome(Outcome::Fitted { job, result })),
-        Err(payload) if payload.is::<Cancelled>() => {}
-        Err(payload) => send(Report::Panicked(payload)),
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use std::sync::mpsc::{self, RecvTimeoutError};
+    use std::sync::mpsc;
 
     use super::*;
     use crate::tui::app::{AppOptions, Measurements, Mode};
     use crate::tui::theme::{Charset, Theme};
+    use crate::tui::workers::Lane;
 
     /// The app on the paper's beams with `count` measurements of a straight w(F) line: a fit
     /// that takes seconds on a million.
@@ -630,12 +666,12 @@ mod tests {
             started.elapsed()
         );
         assert!(matches!(app.mode(), Mode::Fitting { .. }));
-        let Ok(Report::Outcome(progress @ Outcome::FitProgress { .. })) =
+        let Ok(Report::Progress(progress @ Outcome::FitProgress { .. })) =
             reports.recv_timeout(Duration::from_secs(10))
         else {
             panic!("no progress report")
         };
-        runner.deliver(&mut app, Report::Outcome(progress));
+        runner.deliver(&mut app, Report::Progress(progress));
         let text = &app.message().unwrap().text;
         assert!(
             text.starts_with("fitting: ") && text.ends_with(" (Esc cancels)"),
@@ -645,16 +681,15 @@ mod tests {
         runner.update(&mut app, Action::Cancel);
         assert_eq!(app.mode(), &Mode::Normal);
         assert_eq!(app.inputs(), before);
-        // The worker stops: its end closes the channel (the runner's copy is dropped), and no
-        // result ever comes.
-        drop(runner);
+        // The worker stops and says so with no result.
         loop {
             match reports.recv_timeout(Duration::from_secs(10)) {
-                Ok(Report::Outcome(Outcome::FitProgress { .. })) => {}
-                Ok(Report::Outcome(other)) => panic!("after Esc: {other:?}"),
+                Ok(Report::Progress(Outcome::FitProgress { .. })) => {}
+                Ok(Report::Finished { outcome: None, .. }) => break,
+                Ok(Report::Finished { outcome, .. }) => panic!("after Esc: {outcome:?}"),
+                Ok(Report::Progress(other)) => panic!("after Esc: {other:?}"),
                 Ok(Report::Panicked(_)) => panic!("the worker panicked"),
-                Err(RecvTimeoutError::Timeout) => panic!("the fit still runs 10 s after Esc"),
-                Err(RecvTimeoutError::Disconnected) => break,
+                Err(_) => panic!("the fit still runs 10 s after Esc"),
             }
         }
         let took = cancelled.elapsed();
@@ -705,5 +740,222 @@ mod tests {
             let file = dir.path().join(format!("microslip-w-vs-f.{extension}"));
             assert!(file.exists(), "{}: {}", file.display(), message.text);
         }
+    }
+
+    /// The app on a bundled preset, with the continuum of the regime pane off.
+    fn app_on(name: &str, data: Option<Measurements>) -> App {
+        App::new(AppOptions {
+            theme: Theme {
+                charset: Charset::Ascii,
+                color: false,
+            },
+            preset: preset::resolve(name).unwrap(),
+            user_dir: None,
+            data,
+            solve_continuum: false,
+        })
+    }
+
+    /// The names of the chart's series.
+    fn legend(app: &App) -> Vec<String> {
+        app.plot().series.iter().map(|s| s.name.clone()).collect()
+    }
+
+    /// `n` on the lap joint (its 2-D continuum takes seconds): the key returns at once, the
+    /// legend says the points are being solved and shows none, and the worker's answer puts
+    /// them on the chart, the 2-D continuum's included.
+    #[test]
+    fn the_lap_overlay_is_solved_on_a_worker_and_said_to_be_pending_meanwhile() {
+        let (sender, reports) = mpsc::channel::<Report>();
+        let mut runner = Runner::new(sender);
+        let mut app = app_on("lap-aluminium", None);
+        let pressed = Instant::now();
+        runner.update(&mut app, Action::ToggleNumeric);
+        assert!(
+            pressed.elapsed() < Duration::from_millis(500),
+            "n waited for the solve: {:?}",
+            pressed.elapsed()
+        );
+        assert!(
+            legend(&app).iter().any(|n| n.contains("solving")),
+            "{:?}",
+            legend(&app)
+        );
+        assert!(
+            app.plot()
+                .series
+                .iter()
+                .all(|s| s.role != crate::chart::SeriesRole::Continuum)
+        );
+        let Ok(report) = reports.recv_timeout(Duration::from_secs(60)) else {
+            panic!("no overlay")
+        };
+        runner.deliver(&mut app, report);
+        let names = legend(&app);
+        assert!(names.iter().all(|n| !n.contains("solving")), "{names:?}");
+        assert!(names.iter().any(|n| n == "2-D continuum"), "{names:?}");
+    }
+
+    /// Esc (and q) while the overlay is solved stops the solve, turns `n` off and does not quit;
+    /// the worker ends at its next Newton iteration without an answer. A second Esc quits.
+    #[test]
+    fn esc_cancels_a_pending_overlay_solve_at_once() {
+        let (sender, reports) = mpsc::channel::<Report>();
+        let mut runner = Runner::new(sender);
+        let mut app = app_on("lap-aluminium", None);
+        runner.update(&mut app, Action::ToggleNumeric);
+        let cancelled = Instant::now();
+        runner.update(&mut app, Action::RequestQuit);
+        assert!(!app.should_quit());
+        assert!(!app.show_numeric());
+        assert_eq!(
+            app.message().unwrap().text,
+            "finite elements cancelled; n solves them again"
+        );
+        assert!(legend(&app).iter().all(|n| !n.contains("solving")));
+        let Ok(Report::Finished {
+            lane: Lane::Overlay,
+            outcome: None,
+        }) = reports.recv_timeout(Duration::from_secs(60))
+        else {
+            panic!("the solve was not cancelled")
+        };
+        let took = cancelled.elapsed();
+        assert!(
+            took < Duration::from_secs(1),
+            "the solve stopped {took:?} after Esc"
+        );
+        runner.update(&mut app, Action::RequestQuit);
+        assert!(app.should_quit());
+    }
+
+    /// Answers for values no longer shown are dropped: a step while the overlay is solved asks
+    /// for the new values' points, and an answer for the old ones changes nothing.
+    #[test]
+    fn an_overlay_answer_for_other_values_is_dropped() {
+        let mut app = app_on("paper-beams", None);
+        let asked = app.update(Action::ToggleNumeric);
+        let [old @ Effect::SolveOverlay { .. }] = asked.as_slice() else {
+            panic!("{asked:?}")
+        };
+        let late = perform_blocking(old.clone()).unwrap();
+        app.update(Action::Increase);
+        let before = legend(&app);
+        assert!(before.iter().any(|n| n.contains("solving")), "{before:?}");
+        app.receive(late);
+        assert_eq!(legend(&app), before);
+    }
+
+    /// `d` reads the file on a worker: the app waits in its own mode, where keys typed meanwhile
+    /// do nothing (an `m` switched the model when the file was read in the loop), and adopts
+    /// the points when they come.
+    #[test]
+    fn keys_typed_while_a_file_loads_do_not_act_on_the_main_screen() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("m.csv");
+        std::fs::write(&path, "F_N,w_mm\n10,0.004\n20,0.008\n30,0.012\n").unwrap();
+        let (sender, reports) = mpsc::channel::<Report>();
+        let mut runner = Runner::new(sender);
+        let mut app = app_on("paper-beams", None);
+        let kind = app.kind();
+        runner.update(&mut app, Action::LoadData);
+        for c in path.to_str().unwrap().chars() {
+            runner.update(&mut app, Action::Input(c));
+        }
+        runner.update(&mut app, Action::Commit);
+        assert!(
+            matches!(app.mode(), Mode::Loading { .. }),
+            "{:?}",
+            app.mode()
+        );
+        for action in [Action::SwitchModel, Action::Increase, Action::Next] {
+            runner.update(&mut app, action);
+        }
+        assert_eq!(app.kind(), kind);
+        assert_eq!(app.selected(), 0);
+        let Ok(report) = reports.recv_timeout(Duration::from_secs(10)) else {
+            panic!("the read did not report")
+        };
+        runner.deliver(&mut app, report);
+        assert_eq!(app.mode(), &Mode::Normal);
+        assert_eq!(app.measurements().map(|m| m.points.len()), Some(3));
+        assert_eq!(app.kind(), kind);
+    }
+
+    /// On the lap joint, `d` with a CSV reads its measured curve, `F_N,Delta_mm` as `microslip fit
+    /// lap` takes it (FE results of the joint come as a CalculiX `.dat`), for `f`.
+    #[test]
+    fn d_on_the_lap_joint_reads_its_measured_curve() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("joint.csv");
+        std::fs::write(&path, "F_N,Delta_mm\n1000,0.004\n2000,0.008\n3000,0.013\n").unwrap();
+        let mut app = app_on("lap-aluminium", None);
+        update_blocking(&mut app, Action::LoadData);
+        for c in path.to_str().unwrap().chars() {
+            update_blocking(&mut app, Action::Input(c));
+        }
+        update_blocking(&mut app, Action::Commit);
+        assert_eq!(app.mode(), &Mode::Normal);
+        let text = &app.message().unwrap().text;
+        assert!(text.starts_with("loaded 3 measurements from "), "{text}");
+        assert_eq!(
+            app.measurements().map(|m| m.points[2].deflection),
+            Some(0.013)
+        );
+        let asked = app.clone().update(Action::Fit);
+        assert!(
+            matches!(asked.as_slice(), [Effect::Fit { .. }]),
+            "{asked:?}"
+        );
+        // They are the joint's: the beams have nothing to fit.
+        app.update(Action::SwitchModel);
+        app.update(Action::Fit);
+        let text = &app.message().unwrap().text;
+        assert!(text.starts_with("no measurements: press d"), "{text}");
+    }
+
+    /// `f` fits the lap joint as it fits the beams: measured Delta(F) of the bundled joint at
+    /// mu = 0.3, K_T = 1000 (drawn from the closed form at those values), fitted from the preset
+    /// moved to K_T = 400, brings K_T back and adopts it.
+    #[test]
+    fn f_fits_the_lap_joint_to_its_measured_curve() {
+        let joint = crate::problems::inputs::Inputs::paper(ModelKind::Lap)
+            .validate()
+            .unwrap();
+        let crate::problems::inputs::Model::Lap { joint, .. } = joint else {
+            panic!("not a lap joint")
+        };
+        let points = (1..=40)
+            .map(|i| {
+                let force = 140.0 * f64::from(i);
+                let delta = joint
+                    .regularized(joint.force(force).unwrap())
+                    .joint_displacement();
+                Measurement {
+                    force,
+                    deflection: delta,
+                }
+            })
+            .collect();
+        let mut app = app_on(
+            "lap-aluminium",
+            Some(Measurements {
+                path: "lap.csv".into(),
+                points,
+            }),
+        );
+        let kt = app.kind().param("KT").unwrap();
+        app.update(Action::CommandLine);
+        for c in "KT=400".chars() {
+            app.update(Action::Input(c));
+        }
+        app.update(Action::Commit);
+        assert_eq!(app.inputs().get(kt), Some(400.0));
+        update_blocking(&mut app, Action::Fit);
+        let text = &app.message().unwrap().text;
+        assert!(text.starts_with("fit: mu = 0.3"), "{text}");
+        let fitted = app.inputs().get(kt).unwrap();
+        assert!((fitted - 1000.0).abs() < 1.0, "K_T = {fitted}: {text}");
+        assert_eq!(app.history().0, 2, "u undoes the fit");
     }
 }

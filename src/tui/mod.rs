@@ -6,9 +6,12 @@
 //! Over SSH (see docs/guide.md, "Limits"):
 //! - The screen is redrawn only after a key, a paste or a resize; there is no frame rate.
 //! - A reader thread turns terminal input into events. The loop applies every queued event, for
-//!   up to [`BATCH`] at a time, then draws once, so a storm of keys costs one frame per batch.
-//! - A fit runs on a worker thread, which reports its progress and result over the same channel
-//!   as the reader: the loop never waits for it (Esc cancels it).
+//!   up to [`BATCH`] at a time, then rebuilds the chart and draws once, so a storm of keys costs
+//!   one chart and one frame per batch.
+//! - Every slow job (the finite-element and continuum overlay, the plate's continuum, a fit, a
+//!   file read with `d`, an export) runs on a worker thread ([`workers`]), which reports over the
+//!   same channel as the reader: the loop never waits for it, the newest request wins and Esc
+//!   cancels.
 //! - Signals are looked at between any two events and at least every [`TICK`]. SIGTERM, SIGHUP
 //!   and SIGINT restore the terminal and exit with 128 + the signal; SIGTSTP and Ctrl-Z suspend
 //!   (where a shell with job control can resume the program; see `signals`).
@@ -32,6 +35,7 @@ pub mod theme;
 pub mod ui;
 pub mod view;
 pub mod views;
+pub mod workers;
 
 use std::io::{self, IsTerminal};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
@@ -41,8 +45,9 @@ use ratatui::DefaultTerminal;
 use ratatui::crossterm::event::{self, Event, KeyEventKind};
 
 use app::{App, AppOptions};
-use effects::{Report, Runner};
+use effects::Runner;
 use theme::{Charset, Theme};
+use workers::Report;
 
 use crate::preset::{self, PresetError};
 use crate::problems::ModelKind;
@@ -111,8 +116,11 @@ pub fn run(
             let shown = path.display().to_string();
             let text = crate::measured::read_text(&path, crate::file::Kinds::AnyReadable)
                 .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
-            let points = crate::measured::parse(&text)
-                .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
+            // The measured curve of the problem opened: F_N,Delta_mm on a lap joint's preset.
+            let parse = effects::measured_curve_parser(preset.inputs.kind());
+            let points = parse(&text, &mut |_, _| {})
+                .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?
+                .points;
             Some(app::Measurements {
                 path: shown,
                 points,
@@ -127,6 +135,8 @@ pub fn run(
         data,
         solve_continuum: true,
     });
+    // One chart per frame, not one per key of a batch (see `event_loop`).
+    app.defer_charts();
     let signals = signals::Signals::install()?;
     let mut terminal = terminal::enter()?;
     let (sender, inputs) = mpsc::channel();
@@ -215,6 +225,13 @@ fn apply(app: &mut App, runner: &mut Runner<Input>, event: Event, too_small: boo
     }
 }
 
+/// Rebuilds what the keys applied since the last frame left stale, once, and draws.
+fn draw(terminal: &mut DefaultTerminal, app: &mut App) -> io::Result<()> {
+    app.settle();
+    terminal.draw(|frame| ui::draw(frame, app))?;
+    Ok(())
+}
+
 fn event_loop(
     terminal: &mut DefaultTerminal,
     app: &mut App,
@@ -222,7 +239,7 @@ fn event_loop(
     signals: &signals::Signals,
     inputs: &Receiver<Input>,
 ) -> io::Result<Exit> {
-    terminal.draw(|frame| ui::draw(frame, app))?;
+    draw(terminal, app)?;
     loop {
         match signals.take() {
             Some(signals::Request::Terminate(signal)) => return Ok(Exit::Signal(signal)),
@@ -230,7 +247,7 @@ fn event_loop(
                 if terminal::suspend(terminal)? == signals::Suspended::Ignored {
                     app.suspend_ignored();
                 }
-                terminal.draw(|frame| ui::draw(frame, app))?;
+                draw(terminal, app)?;
             }
             None => {}
         }
@@ -270,7 +287,7 @@ fn event_loop(
             next = inputs.try_recv().ok();
         }
         if redraw && !signals.waiting() {
-            terminal.draw(|frame| ui::draw(frame, app))?;
+            draw(terminal, app)?;
         }
     }
 }

@@ -1,6 +1,7 @@
 //! Loading (`d`) and dropping (`D`) measurements and FE results.
 
-use super::{App, Measurements};
+use super::fit::fit_structure;
+use super::{App, Measurements, Mode};
 use crate::PlateParams;
 use crate::chart;
 use crate::fit::Measurement;
@@ -11,25 +12,28 @@ use crate::tui::views::View;
 
 impl App {
     /// Asks to read what `d` names: a CalculiX `.dat` (FE results, of the model its deck is), a
-    /// plate CSV `KT_MPa_per_mm,u_mm` on the plate, a lap CSV `F_N,Delta_mm` on the lap joint
-    /// (FE results: the TUI fits only the beams), else a measurement CSV `F_N,w_mm` for the fit.
+    /// plate CSV `KT_MPa_per_mm,u_mm` on the plate (FE results), else the measured load-response
+    /// curve of a load-driven problem for the fit (`F_N,w_mm` for the beams, `F_N,Delta_mm` for
+    /// the lap joint, as `microslip fit` takes them). The file is read on a worker, in
+    /// [`Mode::Loading`] until it is in.
     pub(super) fn load_data(&mut self, path: String) {
         let is_dat = std::path::Path::new(&path)
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("dat"));
-        // A CSV is a measured force-deflection curve to fit for the beams, FE results (K_T, u(L))
-        // for the plate, (F, Delta) for the lap joint.
-        let measurements = match self.kind {
-            ModelKind::Beam => !is_dat,
-            ModelKind::Plate | ModelKind::Lap => false,
-        };
+        // A CSV is a measured curve to fit where the problem has one (a load: a fit structure).
+        let measurements = !is_dat && self.model().is_some_and(|m| fit_structure(&m).is_some());
+        self.info(format!("loading {path}... (Esc cancels)"));
+        self.mode = Mode::Loading { path: path.clone() };
         self.asked.push(if !measurements {
             Effect::ReadFeResults {
                 path,
                 kind: self.kind,
             }
         } else {
-            Effect::ReadMeasurements { path }
+            Effect::ReadMeasurements {
+                path,
+                kind: self.kind,
+            }
         });
     }
 
@@ -37,6 +41,7 @@ impl App {
     pub(super) fn measurements_read(
         &mut self,
         path: String,
+        kind: ModelKind,
         result: Result<Vec<Measurement>, String>,
     ) {
         match result {
@@ -46,6 +51,7 @@ impl App {
                     crate::report::count_of(points.len(), "measurement")
                 ));
                 self.measurements = Some(Measurements { path, points });
+                self.measured_kind = kind;
             }
             Err(reason) => self.error(format!("{path}: {reason}")),
         }

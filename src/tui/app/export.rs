@@ -36,6 +36,8 @@ impl App {
     pub(super) fn export_chart(&mut self) {
         use crate::report::figure;
         use crate::report::table::{TableFormat, write_table};
+        // The chart as shown: the keys before this one may have left it to be rebuilt.
+        self.settle();
         if self.view.chart.table.is_some() {
             return self.error("x exports charts; this is a table (microslip kt prints it)");
         }

@@ -1,36 +1,47 @@
-//! `f`: the fit of mu and K_T to the measurements, on a worker, and its result adopted.
+//! `f`: the fit of mu and K_T to the measurements, on a worker, and its result adopted; the same
+//! for every load-driven problem (the twin beams' w(L), the lap joint's Delta against F).
 
 use super::{App, Mode};
+use crate::fit::Structure;
 use crate::problems::inputs::Model;
-use crate::problems::{BeamParam, ModelKind, Param};
 use crate::report::{number, number_with};
 use crate::tui::effects::Effect;
 
+/// What `f` fits for `model`: its structure (all but mu and K_T) when it has a load-response
+/// curve to fit, the one place that says which problems have one.
+pub(super) fn fit_structure(model: &Model) -> Option<Structure> {
+    match *model {
+        Model::Beam { beams, .. } => Some(Structure::Beam(beams.params())),
+        Model::Lap { joint, .. } => Some(Structure::Lap(joint.params())),
+        Model::Plate(_) => None,
+    }
+}
+
 impl App {
-    /// `f`: asks to fit mu and K_T of the twin beams to the measurements ([`Effect::Fit`]), in
-    /// [`Mode::Fitting`] until the result comes (or Esc cancels).
+    /// `f`: asks to fit mu and K_T of the problem shown to its measured curve ([`Effect::Fit`]),
+    /// in [`Mode::Fitting`] until the result comes (or Esc cancels).
     pub(super) fn fit(&mut self) {
-        if self.kind == ModelKind::Lap {
-            return self.error(
-                "the terminal UI fits the twin beams; for the lap joint run `microslip fit lap \
-                 DATA.csv` (columns F_N,Delta_mm)",
-            );
-        }
-        let Some(measurements) = &self.measurements else {
-            return self.error("no measurements: press d to load a CSV with columns F_N,w_mm");
+        let Some(model) = self.model() else {
+            return self.error("the parameters are not valid: nothing to fit");
         };
-        // The fit identifies mu and K_T from a force-deflection curve: the beams'.
-        let beams = match self.model() {
-            Some(Model::Beam { beams, .. }) => beams,
-            Some(Model::Plate(_) | Model::Lap { .. }) => {
-                return self.error("fitting needs the twin-beam model: press m");
-            }
-            None => return self.error("the parameters are not valid: nothing to fit"),
+        let Some(structure) = fit_structure(&model) else {
+            return self
+                .error("fitting needs a load-driven model (twin beams, lap joint): press m");
+        };
+        let measurements = self
+            .measurements
+            .as_ref()
+            .filter(|_| self.measured_kind == self.kind);
+        let Some(measurements) = measurements else {
+            return self.error(format!(
+                "no measurements: press d to load a CSV with columns F_N,{}_mm",
+                self.kind.description().response_symbol
+            ));
         };
         self.jobs += 1;
         self.asked.push(Effect::Fit {
             job: self.jobs,
-            structure: beams.params(),
+            structure,
             points: measurements.points.clone(),
         });
         self.mode = Mode::Fitting { job: self.jobs };
@@ -43,10 +54,10 @@ impl App {
             Ok(result) => {
                 let mut inputs = self.state().inputs;
                 let mut text = Vec::new();
-                for (param, estimate) in [
-                    (BeamParam::Friction, &result.mu),
-                    (BeamParam::Stiffness, &result.kt),
-                ] {
+                for (key, estimate) in [("mu", &result.mu), ("KT", &result.kt)] {
+                    let Ok(param) = self.kind.param(key) else {
+                        continue;
+                    };
                     let error = estimate
                         .std_error
                         .map_or(String::new(), |e| format!(" +- {}", number_with(e, 2)));
@@ -59,7 +70,7 @@ impl App {
                         estimate.status,
                         crate::fit::Status::Identified | crate::fit::Status::Weak
                     ) {
-                        let _ = inputs.set(Param::Beam(param), estimate.value);
+                        let _ = inputs.set(param, estimate.value);
                     }
                 }
                 if inputs.validate().is_ok() {

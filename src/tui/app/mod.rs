@@ -13,6 +13,7 @@ use super::text_input::TextInput;
 use super::theme::Theme;
 use super::view::View;
 use super::views::Views;
+use super::workers::Lane;
 use crate::PlateParams;
 use crate::chart::view::AnyChart;
 use crate::chart::{self, NumericPoints, Plot, YMode};
@@ -114,6 +115,13 @@ pub enum Mode {
         /// The fit, as in [`Effect::Fit`].
         job: u64,
     },
+    /// A file named with `d` is read on a worker (a million rows take seconds): Esc cancels, other
+    /// keys are ignored until it is in, so that keys typed meanwhile never act on the main
+    /// screen (an `m` switched the model while the file loaded in the loop).
+    Loading {
+        /// The file, as typed.
+        path: String,
+    },
 }
 
 impl Mode {
@@ -133,7 +141,7 @@ impl Mode {
             Mode::ConfirmOverwrite { .. } | Mode::ConfirmQuit { .. } | Mode::ConfirmReset => {
                 Context::Confirm
             }
-            Mode::Fitting { .. } => Context::Working,
+            Mode::Fitting { .. } | Mode::Loading { .. } => Context::Working,
         }
     }
 }
@@ -222,7 +230,19 @@ pub struct App {
     /// [`App::recompute`]): the drawing reads it and nothing of the physics.
     view: View,
     numeric: Option<NumericPoints>,
+    /// What the finite-element overlay (`n`) was last asked for (parameters and chart), and true
+    /// while its answer is pending: `numeric` is that answer, never one for other values.
+    overlay: Option<(Inputs, AnyChart, bool)>,
+    /// True from `n` switching the overlay on until its answer comes, which the status explains
+    /// (no points for this chart, unsolved points).
+    overlay_toggled: bool,
+    /// See [`App::defer_charts`].
+    charts_deferred: bool,
+    /// True when a change left the chart to be rebuilt ([`App::settle`]).
+    chart_stale: bool,
     measurements: Option<Measurements>,
+    /// The problem whose measured curve `measurements` is (the one `f` fits).
+    measured_kind: ModelKind,
     /// Points of an external FE code loaded with `d` (a CalculiX .dat, or a plate CSV), and the
     /// parameters of the deck they came from.
     external: Option<(chart::ExternalPoints, Option<Inputs>)>,
@@ -285,7 +305,12 @@ impl App {
             quit: false,
             view: View::default(),
             numeric: None,
+            overlay: None,
+            overlay_toggled: false,
+            charts_deferred: false,
+            chart_stale: false,
             measurements: options.data,
+            measured_kind: kind,
             external: None,
             jobs: 0,
             asked: Vec::new(),
@@ -411,11 +436,20 @@ impl App {
                 inputs,
                 result,
             } => self.saved(name, description, inputs, result),
-            Outcome::Measurements { path, result } => {
-                self.measurements_read(path, result);
+            // A read cancelled with Esc comes too late: the user has moved on.
+            Outcome::Measurements { path, kind, result } => {
+                if self.mode != (Mode::Loading { path: path.clone() }) {
+                    return;
+                }
+                self.mode = Mode::Normal;
+                self.measurements_read(path, kind, result);
                 self.recompute();
             }
             Outcome::FeResults { path, result } => {
+                if self.mode != (Mode::Loading { path: path.clone() }) {
+                    return;
+                }
+                self.mode = Mode::Normal;
                 match result {
                     Ok(loaded) => self.fe_results_read(&path, &loaded),
                     Err(reason) => self.error(reason),
@@ -458,6 +492,11 @@ impl App {
                     self.fitted(result);
                 }
             }
+            Outcome::Overlay {
+                inputs,
+                chart,
+                result,
+            } => self.overlay_solved(inputs, chart, result),
         }
     }
 
@@ -602,6 +641,13 @@ impl App {
                     self.asked.push(Effect::CancelFit { job });
                 }
                 _ => self.mode = Mode::Fitting { job },
+            },
+            Mode::Loading { path } => match action {
+                Action::Cancel => {
+                    self.info(format!("loading {path} cancelled; nothing changed"));
+                    self.asked.push(Effect::Cancel { lane: Lane::Read });
+                }
+                _ => self.mode = Mode::Loading { path },
             },
         }
     }

@@ -2,7 +2,6 @@
 //! that act at once.
 
 use super::{App, Mode};
-use crate::chart::NumericPoints;
 use crate::kernel::params::Compact;
 use crate::problems::Param;
 use crate::problems::inputs::Inputs;
@@ -73,18 +72,12 @@ impl App {
             }
             Action::ToggleNumeric => {
                 self.show_numeric = !self.show_numeric;
+                // The status explains the points once they are in (on a worker: seconds).
+                self.overlay_toggled = self.show_numeric;
                 self.recompute();
-                if self.show_numeric && self.numeric.is_none() && self.message.is_none() {
-                    self.info("no finite-element points for this chart (D vs F_a, P_r/P, X_r vs mu and the table have none)");
-                }
-                // The legend says where the first gap is; the status says why.
-                if let Some(words) = self
-                    .numeric
-                    .as_ref()
-                    .filter(|_| self.show_numeric)
-                    .and_then(NumericPoints::failure_words)
-                {
-                    self.info(format!("finite elements: {words}"));
+                if !self.overlay.is_some_and(|(.., pending)| pending) {
+                    self.overlay_toggled = false;
+                    self.explain_overlay();
                 }
             }
             Action::ToggleBeamTheory => match &mut self.state_mut().inputs {
@@ -110,6 +103,8 @@ impl App {
                 self.help_page = 0;
                 self.mode = Mode::Help;
             }
+            // Esc (and q) first stop a pending overlay solve: one more quits.
+            Action::RequestQuit if self.cancel_overlay() => {}
             Action::RequestQuit => {
                 let unsaved = self.unsaved();
                 if unsaved.is_empty() {

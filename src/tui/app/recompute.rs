@@ -5,10 +5,16 @@ use super::{App, PinnedChart};
 use crate::chart::view::AnyChart;
 use crate::chart::{self, NumericPoints, Plot, YMode, pins};
 use crate::fit::Measurement;
+use crate::problems::inputs::Inputs;
 use crate::problems::inputs::Model;
 use crate::problems::{ModelKind, Param};
 use crate::report::number;
 use crate::tui::effects::Effect;
+use crate::tui::workers::Lane;
+
+/// The legend's word for the overlay (`n`) while its points are solved on a worker: the screen
+/// says they are coming rather than showing those of other values as these.
+const OVERLAY_PENDING: &str = "finite elements: solving... (Esc cancels)";
 use crate::tui::kt_table;
 use crate::tui::summary::SummaryLine;
 use crate::tui::view;
@@ -142,21 +148,42 @@ impl App {
         }
     }
 
-    /// Rebuilds the chart (and the finite-element points when shown) after any change.
+    /// After any change: follows the load axis, asks for the continuum and the overlay at the
+    /// new values, and rebuilds the chart, at once or, once [`App::defer_charts`] was called,
+    /// at the next [`App::settle`].
     pub(super) fn recompute(&mut self) {
         self.follow_threshold();
         self.ask_continuum();
-        let Some(model) = self.model() else { return };
-        match (self.show_numeric, self.views.of(self.kind).chart()) {
-            (true, Some(shown)) => match chart::numeric_points(&model, shown) {
-                Ok(points) => self.numeric = points,
-                Err(e) => {
-                    self.numeric = None;
-                    self.error(format!("finite elements failed: {e}"));
-                }
-            },
-            _ => self.numeric = None,
+        if self.model().is_none() {
+            return;
         }
+        self.ask_overlay();
+        if self.charts_deferred {
+            self.chart_stale = true;
+        } else {
+            self.build_chart();
+        }
+    }
+
+    /// From now on, changes leave the chart to be rebuilt once by [`App::settle`] rather than
+    /// after each: the event loop applies a batch of keys (a held arrow key queues hundreds),
+    /// then settles and draws once, so a storm of keys costs one chart per frame, not one per
+    /// key (about 4 ms each for the lap joint in a debug build).
+    pub fn defer_charts(&mut self) {
+        self.charts_deferred = true;
+    }
+
+    /// Rebuilds the chart if a change since the last build left it stale; the event loop calls it
+    /// before drawing, and everything that reads the chart (the export) before reading it.
+    pub fn settle(&mut self) {
+        if std::mem::take(&mut self.chart_stale) {
+            self.build_chart();
+        }
+    }
+
+    /// Builds the chart shown (with its pins and the overlay's points), or the K_T table.
+    fn build_chart(&mut self) {
+        let Some(model) = self.model() else { return };
         let y_mode = self.y_mode();
         let Some(plot) = self.linear_plot(&model) else {
             // The view is the K_T table: text in the chart pane.
@@ -165,7 +192,15 @@ impl App {
             return;
         };
         self.view.chart.table = None;
-        let plot = y_mode.apply(plot);
+        let mut plot = y_mode.apply(plot);
+        if self.overlay.is_some_and(|(.., pending)| pending) {
+            // Said where the points will be, rather than showing those of other values as these.
+            plot.series.push(chart::PlotSeries {
+                name: OVERLAY_PENDING.into(),
+                points: Vec::new(),
+                role: chart::SeriesRole::FiniteElements,
+            });
+        }
         if self.state().pins.is_empty() {
             self.view.chart.plot = plot;
             return;
@@ -205,10 +240,90 @@ impl App {
             .collect();
         self.view.chart.plot = pins::add_pins(plot, &pinned);
     }
+    /// Asks for the finite-element overlay of the chart shown, at the values shown, when `n` is on
+    /// and it was not asked for yet ([`Effect::SolveOverlay`], on a worker: seconds for the lap
+    /// joint); until it comes, no points show. With `n` off, a pending solve is cancelled.
+    fn ask_overlay(&mut self) {
+        let wanted = match (self.show_numeric, self.views.of(self.kind).chart()) {
+            (true, Some(shown)) => Some((self.inputs(), shown)),
+            _ => None,
+        };
+        let asked = self.overlay.map(|(inputs, chart, _)| (inputs, chart));
+        if wanted == asked {
+            return;
+        }
+        self.numeric = None;
+        if self.overlay.is_some_and(|(.., pending)| pending) && wanted.is_none() {
+            self.asked.push(Effect::Cancel {
+                lane: Lane::Overlay,
+            });
+        }
+        self.overlay = wanted.map(|(inputs, chart)| (inputs, chart, true));
+        if let Some((inputs, chart)) = wanted {
+            self.asked.push(Effect::SolveOverlay { inputs, chart });
+        }
+    }
+
+    /// The overlay's answer: adopted if it is for the values and chart shown, dropped otherwise.
+    pub(super) fn overlay_solved(
+        &mut self,
+        inputs: Inputs,
+        chart: AnyChart,
+        result: Result<Option<NumericPoints>, String>,
+    ) {
+        if self.overlay != Some((inputs, chart, true)) {
+            return;
+        }
+        self.overlay = Some((inputs, chart, false));
+        match result {
+            Ok(points) => self.numeric = points,
+            Err(e) => {
+                self.numeric = None;
+                self.error(format!("finite elements failed: {e}"));
+            }
+        }
+        self.recompute();
+        if std::mem::take(&mut self.overlay_toggled) {
+            self.explain_overlay();
+        }
+    }
+
+    /// Esc while the overlay is being solved: stops the solve and turns `n` off; false when no
+    /// solve was pending.
+    pub(super) fn cancel_overlay(&mut self) -> bool {
+        if !self.overlay.is_some_and(|(.., pending)| pending) {
+            return false;
+        }
+        self.show_numeric = false;
+        self.overlay_toggled = false;
+        self.recompute();
+        self.info("finite elements cancelled; n solves them again");
+        true
+    }
+
+    /// What `n` says once its points are in: none for this chart, or where they have gaps.
+    pub(super) fn explain_overlay(&mut self) {
+        if self.show_numeric && self.numeric.is_none() && self.message.is_none() {
+            self.info("no finite-element points for this chart (D vs F_a, P_r/P, X_r vs mu and the table have none)");
+        }
+        // The legend says where the first gap is; the status says why.
+        if let Some(words) = self
+            .numeric
+            .as_ref()
+            .filter(|_| self.show_numeric)
+            .and_then(NumericPoints::failure_words)
+        {
+            self.info(format!("finite elements: {words}"));
+        }
+    }
 
     /// The chart shown, with its y axis linear; None where the view is a table.
     pub(super) fn linear_plot(&self, model: &Model) -> Option<Plot> {
-        let measured = self.measurements.as_ref().map(|m| m.points.as_slice());
+        let measured = self
+            .measurements
+            .as_ref()
+            .filter(|_| self.measured_kind == model.kind())
+            .map(|m| m.points.as_slice());
         let external = self.external.as_ref().map(|(points, _)| points);
         self.chart_of(
             model,

@@ -134,7 +134,11 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 ),
             ),
             Mode::Explain { line } => overlay::draw_explanation(frame, app, area, *line),
-            Mode::Normal | Mode::Editing { .. } | Mode::Command { .. } | Mode::Fitting { .. } => {}
+            Mode::Normal
+            | Mode::Editing { .. }
+            | Mode::Command { .. }
+            | Mode::Fitting { .. }
+            | Mode::Loading { .. } => {}
         }
     }
     if app.theme().charset == Charset::Ascii {

@@ -5,6 +5,7 @@
 //! the analytical core is right (see `microslip verify` and `docs/theory.md`, "Numerical solver").
 
 pub(crate) mod banded;
+pub mod cancel;
 pub mod elements;
 mod error;
 pub(crate) mod interface;

@@ -104,6 +104,8 @@ fn solve<M: Discretized>(model: &mut M, load: f64) -> Result<(), NumericError> {
     let mut previous_set: Option<Vec<bool>> = None;
     let mut previous_norm = f64::INFINITY;
     for _ in 0..MAX_ITERATIONS {
+        // A solve nobody waits for any more (the TUI moved on) stops here.
+        super::cancel::checkpoint();
         let (residual, tangent, responses) = model.linearize(&displacement, load);
         let norm = residual.iter().map(|r| r * r).sum::<f64>().sqrt();
         let sliding: Vec<bool> = responses.iter().map(|r| r.sliding).collect();

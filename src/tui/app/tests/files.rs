@@ -303,8 +303,14 @@ fn keys_that_need_files_return_effects_and_touch_nothing() {
     );
     assert_eq!(
         app.update(Action::Commit),
-        [Effect::ReadMeasurements { path: path.clone() }]
+        [Effect::ReadMeasurements {
+            path: path.clone(),
+            kind: ModelKind::Beam
+        }]
     );
+    // The app waits for the file, which nobody reads here (Esc would stop the read).
+    assert_eq!(app.mode(), &Mode::Loading { path: path.clone() });
+    app.mode = Mode::Normal;
     app.update(Action::LoadData);
     typed(&mut app, &format!("{path}.dat"));
     assert_eq!(
@@ -314,8 +320,12 @@ fn keys_that_need_files_return_effects_and_touch_nothing() {
             kind: ModelKind::Beam
         }]
     );
-    // Nothing said, nothing loaded, nothing changed, nothing on the disk.
-    assert_eq!(app.message(), None);
+    // Nothing said but that the file is coming; nothing loaded, nothing changed, nothing on the
+    // disk.
+    assert_eq!(
+        app.message().map(|m| m.text.as_str()),
+        Some(format!("loading {path}.dat... (Esc cancels)").as_str())
+    );
     assert_eq!(app.measurements(), None);
     assert_eq!(app.history(), (0, 0));
     assert!(!missing.exists());
