@@ -401,7 +401,10 @@ fn measured_points_on_the_deflection_chart() {
             let deflection = beams
                 .regularized(microslip::TipForce::new(force).unwrap())
                 .tip_deflection();
-            microslip::fit::Measurement { force, deflection }
+            microslip::fit::Measurement {
+                force,
+                response: deflection,
+            }
         })
         .collect();
     let mut app = App::new(AppOptions {

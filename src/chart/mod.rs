@@ -396,7 +396,7 @@ pub fn build(
             AnyChart::Beam(chart) => {
                 if chart == BeamChart::Deflection {
                     if let Some(points) = measured {
-                        let series = points.iter().map(|m| (m.force, m.deflection)).collect();
+                        let series = points.iter().map(|m| (m.force, m.response)).collect();
                         overlays.push((SeriesRole::Measured, "measured", series));
                     }
                     if let Some(e) = external {

@@ -2032,7 +2032,10 @@ mod tests {
                 let deflection = beams
                     .regularized(crate::TipForce::new(force).unwrap())
                     .tip_deflection();
-                Measurement { force, deflection }
+                Measurement {
+                    force,
+                    response: deflection,
+                }
             })
             .collect()
     }
@@ -2612,7 +2615,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let mut csv = String::from("F_N,w_mm\n");
         for m in measured() {
-            csv.push_str(&format!("{},{}\n", m.force, m.deflection));
+            csv.push_str(&format!("{},{}\n", m.force, m.response));
         }
         let path = dir.path().join("m.csv");
         std::fs::write(&path, csv).unwrap();

@@ -597,7 +597,7 @@ mod tests {
                 let force = 300.0 * f64::from(i) / f64::from(count);
                 Measurement {
                     force,
-                    deflection: 4e-4 * force,
+                    response: 4e-4 * force,
                 }
             })
             .collect();

@@ -400,7 +400,7 @@ impl Problem<'_> {
             if i % PROGRESS_EVERY == 0 {
                 tick(i);
             }
-            residuals.push((curve.response(m.force)? - m.deflection) / sigma);
+            residuals.push((curve.response(m.force)? - m.response) / sigma);
         }
         Some(residuals)
     }
@@ -416,7 +416,7 @@ impl Problem<'_> {
             let Some(response) = curve.response(m.force) else {
                 return f64::INFINITY;
             };
-            let r = (response - m.deflection) / sigma;
+            let r = (response - m.response) / sigma;
             sum += r * r;
             if sum >= limit {
                 return sum;
@@ -452,7 +452,7 @@ impl Problem<'_> {
             }
             for (entry, curve) in row.iter_mut().zip(&shifted) {
                 *entry = match curve.and_then(|c| c.response(m.force)) {
-                    Some(response) => ((response - m.deflection) / sigma - r) / JACOBIAN_STEP,
+                    Some(response) => ((response - m.response) / sigma - r) / JACOBIAN_STEP,
                     None => 0.0,
                 };
             }
@@ -484,7 +484,7 @@ impl Problem<'_> {
             .data
             .iter()
             .zip(self.sigma)
-            .map(|(m, sigma)| (m.deflection / sigma).abs())
+            .map(|(m, sigma)| (m.response / sigma).abs())
             .fold(0.0, f64::max);
         self.data.len() as f64 * (RESIDUAL_FLOOR * scale).powi(2)
     }
@@ -748,7 +748,7 @@ fn spread(len: usize, count: usize) -> impl Iterator<Item = usize> {
 ///     .map(|i| {
 ///         let force = 10.0 * f64::from(i);
 ///         let w = truth.regularized(TipForce::new(force)?).tip_deflection();
-///         Ok(Measurement { force, deflection: w })
+///         Ok(Measurement { force, response: w })
 ///     })
 ///     .collect::<Result<_, microslip_core::ParamError>>()?;
 ///
@@ -792,7 +792,7 @@ pub fn fit_twin_beams(
 /// use microslip_core::TwinBeamsParams;
 ///
 /// let data: Vec<Measurement> = (1..=20)
-///     .map(|i| Measurement { force: 10.0 * f64::from(i), deflection: 4e-4 * f64::from(i) })
+///     .map(|i| Measurement { force: 10.0 * f64::from(i), response: 4e-4 * f64::from(i) })
 ///     .collect();
 /// let mut grid_nodes = 0;
 /// let fit = fit_twin_beams_with_progress(TwinBeamsParams::PAPER, &data, None, None, &mut |p| {
@@ -850,7 +850,7 @@ pub fn fit_twin_beams_with_progress(
 ///         let force = 5.0 * f64::from(i);
 ///         let w = truth.regularized(TipForce::new(force)?).tip_deflection();
 ///         let deflection = w * if i % 2 == 0 { 1.01 } else { 0.99 };
-///         Ok(Measurement { force, deflection })
+///         Ok(Measurement { force, response: deflection })
 ///     })
 ///     .collect::<Result<_, microslip_core::ParamError>>()?;
 /// let fit = fit_twin_beams_weighted(
@@ -952,7 +952,7 @@ pub fn fit_weighted(
         });
     }
     // Relative weights would make any curve through zeros look perfect: refuse a flat zero curve.
-    if data.iter().all(|m| m.deflection == 0.0) {
+    if data.iter().all(|m| m.response == 0.0) {
         return Err(FitError::NothingToFit {
             column: structure.response_column(),
         });
@@ -1160,7 +1160,7 @@ mod tests {
         forces
             .map(|f| Measurement {
                 force: f,
-                deflection: beams
+                response: beams
                     .regularized(TipForce::new(f).unwrap())
                     .tip_deflection(),
             })
@@ -1200,7 +1200,7 @@ mod tests {
                     let f = truth.force(force).unwrap();
                     Measurement {
                         force,
-                        deflection: truth.regularized(f).joint_displacement(),
+                        response: truth.regularized(f).joint_displacement(),
                     }
                 })
                 .collect()
@@ -1237,7 +1237,7 @@ mod tests {
         // Forces no mu of the search carries: refused, naming the force and the largest F_gross.
         let over = [1e5, 2e5, 2.5e5].map(|force| Measurement {
             force,
-            deflection: force * 1e-5,
+            response: force * 1e-5,
         });
         let refused = fit_weighted(
             Structure::Lap(LapParams::ALUMINIUM),
@@ -1287,7 +1287,7 @@ mod tests {
             state ^= state << 13;
             state ^= state >> 7;
             state ^= state << 17;
-            m.deflection += noise * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
+            m.response += noise * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
         }
         data
     }
