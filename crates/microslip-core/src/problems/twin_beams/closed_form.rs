@@ -8,7 +8,7 @@
 //! Conventions (lower beam): x from the clamp, deflection w in the direction of F, interface slip s(x)
 //! of the upper beam relative to the lower one, interface shear tau(x) >= 0 acting on the lower beam.
 
-pub use super::params::{BeamTheory, TwinBeamsParams};
+pub use super::params::{BeamTheory, BeamTheoryError, TwinBeamsParams};
 use crate::kernel::hyperbolic::{
     cosh_rem0, cosh_rem2, cosh_sinh_ratio, inv_sinh, one_minus_sech, sinh_ratio, sinh_rem1,
     sinh_rem3, sinhc,
