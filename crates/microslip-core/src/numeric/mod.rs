@@ -5,8 +5,10 @@
 //! the analytical core is right (see `microslip verify` and `docs/theory.md`, "Numerical solver").
 
 pub(crate) mod banded;
+pub(crate) mod condense;
 pub mod elements;
 mod error;
+pub(crate) mod grid;
 pub(crate) mod interface;
 pub mod mesh;
 pub(crate) mod newton;
