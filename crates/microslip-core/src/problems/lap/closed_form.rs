@@ -154,7 +154,7 @@ impl LapJoint {
                 value: newtons,
                 domain: Domain::NonNegative { max: gross },
                 unit: spec.unit,
-                reason: "",
+                reason: None,
             }
             .because("F_gross = 2 b mu P L: the joint slides through beyond it"));
         }
