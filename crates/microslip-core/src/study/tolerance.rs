@@ -623,7 +623,7 @@ fn code_settings(threshold: Threshold, mu_p: f64, modulus: f64, element: f64) ->
 }
 
 /// A tolerance that [`parse_tolerance`] refuses: the text typed and what is allowed (a fraction
-/// in the (0, 10] [`TOLERANCE`] range, written as a number or a percentage). The words are the
+/// from 1e-9 to 10, written as a number or a percentage). The words are the
 /// `--tolerance` flag's, where users type it.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
