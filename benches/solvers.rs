@@ -134,7 +134,7 @@ fn measured_curve(rows: usize) -> Vec<Measurement> {
                 .tip_deflection();
             Measurement {
                 force,
-                deflection: w + noise,
+                response: w + noise,
             }
         })
         .collect()

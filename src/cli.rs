@@ -2180,7 +2180,7 @@ fn apply_and_validate(
     let set_changed = inputs != preset.inputs;
     let before_theory = inputs;
     if let Some(theory) = &args.beam_theory {
-        let theory = BeamTheory::parse(theory).map_err(CliError::Theory)?;
+        let theory = BeamTheory::parse(theory).map_err(|e| CliError::Theory(e.to_string()))?;
         match &mut inputs {
             Inputs::Beam { structure, .. } => structure.theory = theory,
             Inputs::Plate(_) => {
@@ -2462,7 +2462,7 @@ fn run_kt_tolerance(
     format: ReportFormat,
 ) -> Result<(), CliError> {
     use crate::study::tolerance::{self, parse_tolerance};
-    let tol = parse_tolerance(tolerance).map_err(CliError::Invalid)?;
+    let tol = parse_tolerance(tolerance).map_err(|e| CliError::Invalid(e.to_string()))?;
     let (name, model) = load_any(inputs, ModelKind::Beam)?;
     let element = element_size(element, &model)?;
     let answer = match model {

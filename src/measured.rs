@@ -172,7 +172,10 @@ fn parse_measured_curve(
     Ok(Measured {
         points: points
             .into_iter()
-            .map(|(force, deflection)| Measurement { force, deflection })
+            .map(|(force, deflection)| Measurement {
+                force,
+                response: deflection,
+            })
             .collect(),
         sigma,
     })
@@ -436,10 +439,10 @@ mod tests {
                     100.0,0.038,0.0383,17.3,macroslip,microslip+macroslip\n";
         let data = parse(text).unwrap();
         assert_eq!(data.len(), 3);
-        assert_eq!((data[1].force, data[1].deflection), (50.0, 0.012));
+        assert_eq!((data[1].force, data[1].response), (50.0, 0.012));
         // A measured column wins over the sweep's.
         let both = "F_N,w_regularized_mm,w_mm\n1,9,0.1\n2,9,0.2\n3,9,0.3\n";
-        assert_eq!(parse(both).unwrap()[0].deflection, 0.1);
+        assert_eq!(parse(both).unwrap()[0].response, 0.1);
     }
 
     #[test]
@@ -487,7 +490,7 @@ mod tests {
             data[2],
             Measurement {
                 force: 60.0,
-                deflection: 0.03
+                response: 0.03
             }
         );
     }
@@ -496,15 +499,15 @@ mod tests {
     const EXPECTED: [Measurement; 3] = [
         Measurement {
             force: 10.0,
-            deflection: 0.1,
+            response: 0.1,
         },
         Measurement {
             force: 20.0,
-            deflection: 0.2,
+            response: 0.2,
         },
         Measurement {
             force: 30.0,
-            deflection: 0.3,
+            response: 0.3,
         },
     ];
 

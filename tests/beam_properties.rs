@@ -147,8 +147,8 @@ fn tip_deflection_is_continuous_at_f1_and_x_leaves_l_like_a_square_root() {
         let f1 = beams.first_macroslip_force();
         let below = beams.regularized(force(f1 * (1.0 - 1e-10)));
         let above = beams.regularized(force(f1 * (1.0 + 1e-10)));
-        assert_eq!(below.regime(), Regime::Microslip);
-        assert_eq!(above.regime(), Regime::MicroslipMacroslip);
+        assert_eq!(below.regime(), Regime::MICROSLIP);
+        assert_eq!(above.regime(), Regime::MICROSLIP_MACROSLIP);
         assert!(
             relative_error(above.tip_deflection(), below.tip_deflection()) < 1e-8,
             "K_T={kt}"
@@ -193,7 +193,7 @@ fn x_falls_and_deflection_rises_with_force() {
             let wc = beams.coulomb(force(f)).tip_deflection();
             assert!(x <= last_x, "K_T={kt} F={f}: X rose to {x} from {last_x}");
             assert!(w > last_w && wc > last_wc, "K_T={kt} F={f}");
-            if state.regime() == Regime::MicroslipMacroslip {
+            if state.regime() == Regime::MICROSLIP_MACROSLIP {
                 assert!(
                     x < last_x || x == 0.0,
                     "K_T={kt} F={f}: X not strictly falling"
@@ -277,7 +277,7 @@ fn microslip_boundary_solves_its_equation_to_1e_10_everywhere() {
                 continue;
             }
             let state = beams.regularized(force(f));
-            assert_eq!(state.regime(), Regime::MicroslipMacroslip);
+            assert_eq!(state.regime(), Regime::MICROSLIP_MACROSLIP);
             let x = state.micro_zone_end();
             let tb = 3.0 * f / (4.0 * 20.0 * 10.0);
             let g = |s: f64| {

@@ -155,18 +155,18 @@ fn check_beams(params: TwinBeamsParams, f: f64) -> Result<(), String> {
     let (c, r) = (beams.coulomb(force), beams.regularized(force));
     // Regimes follow the thresholds; F = 0 is unloaded under both laws.
     let coulomb_regime = if f == 0.0 {
-        Regime::Unloaded
+        Regime::UNLOADED
     } else if f > f_thre {
-        Regime::Macroslip
+        Regime::MACROSLIP
     } else {
-        Regime::Stick
+        Regime::STICK
     };
     let regularized_regime = if f == 0.0 {
-        Regime::Unloaded
+        Regime::UNLOADED
     } else if f > f_1 {
-        Regime::MicroslipMacroslip
+        Regime::MICROSLIP_MACROSLIP
     } else {
-        Regime::Microslip
+        Regime::MICROSLIP
     };
     if c.regime() != coulomb_regime || r.regime() != regularized_regime {
         return fail(&format!("regimes {} / {}", c.regime(), r.regime()));
@@ -254,11 +254,11 @@ fn check_plate(params: PlateParams) -> Result<(), String> {
     let slide = p.poisson * p.thickness / (p.friction * (1.0 - p.poisson));
     // nu = 0: nothing squeezes the plate sideways, so the interface carries no shear at all.
     let coulomb_regime = if p.poisson == 0.0 {
-        Regime::Unloaded
+        Regime::UNLOADED
     } else if slide >= l {
-        Regime::Macroslip
+        Regime::MACROSLIP
     } else {
-        Regime::StickMacroslip
+        Regime::STICK_MACROSLIP
     };
     if c.regime() != coulomb_regime {
         return Err(format!("Coulomb regime {} (slide {slide})", c.regime()));
@@ -267,7 +267,7 @@ fn check_plate(params: PlateParams) -> Result<(), String> {
     if !((0.0..=l).contains(&xs) && (0.0..=l).contains(&xr) && xr >= xs) {
         return Err(format!("X_s = {xs}, X_r = {xr}"));
     }
-    if r.regime() == Regime::Microslip && xr != l {
+    if r.regime() == Regime::MICROSLIP && xr != l {
         return Err(format!("microslip with X_r = {xr}"));
     }
     let (uc, ur) = (c.end_displacement(), r.end_displacement());

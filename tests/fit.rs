@@ -36,7 +36,7 @@ fn measure(mu: f64, kt: f64, forces: &[f64], sigma: f64, seed: u64) -> Vec<Measu
         .iter()
         .map(|&f| Measurement {
             force: f,
-            deflection: beams
+            response: beams
                 .regularized(TipForce::new(f).unwrap())
                 .tip_deflection()
                 + sigma * noise.gaussian(),
@@ -66,7 +66,7 @@ fn noisy_data_recover_the_true_parameters_within_the_reported_uncertainty() {
             let forces = linspace(f_max / 40.0, f_max, 40);
             // Noise: 0.5 % of the largest deflection, a realistic dial-gauge scatter.
             let clean = measure(mu, kt, &forces, 0.0, seed);
-            let sigma = 0.005 * clean.last().unwrap().deflection;
+            let sigma = 0.005 * clean.last().unwrap().response;
             let data = measure(mu, kt, &forces, sigma, seed * 7919 + case as u64);
             let fit = fit_twin_beams(TwinBeamsParams::PAPER, &data, None, None).unwrap();
             assert!(
@@ -123,7 +123,7 @@ fn a_stiff_interface_leaves_k_t_undetermined() {
     // K_T = 1e7: indistinguishable from plain Coulomb at 0.5 % noise.
     let forces = linspace(10.0, 300.0, 30);
     let clean = measure(0.3, 1e7, &forces, 0.0, 1);
-    let sigma = 0.005 * clean.last().unwrap().deflection;
+    let sigma = 0.005 * clean.last().unwrap().response;
     let data = measure(0.3, 1e7, &forces, sigma, 3);
     let fit = fit_twin_beams(TwinBeamsParams::PAPER, &data, None, None).unwrap();
     assert_ne!(fit.kt.status, Status::Identified, "{:?}", fit.kt);
@@ -161,7 +161,7 @@ fn coverage(relative: f64, absolute: f64, weighing: Weighing, repeats: u64) -> C
     // The point at F = 0 has w = 0 and no scatter under relative noise: any small sigma will do.
     let sigma: Vec<f64> = clean
         .iter()
-        .map(|m| (relative * m.deflection).hypot(absolute).max(1e-9))
+        .map(|m| (relative * m.response).hypot(absolute).max(1e-9))
         .collect();
     let weights = match weighing {
         Weighing::Absolute => Weights::Absolute,
@@ -175,7 +175,7 @@ fn coverage(relative: f64, absolute: f64, weighing: Weighing, repeats: u64) -> C
                 .iter()
                 .map(|m| Measurement {
                     force: m.force,
-                    deflection: m.deflection * (1.0 + relative * noise.gaussian())
+                    response: m.response * (1.0 + relative * noise.gaussian())
                         + absolute * noise.gaussian(),
                 })
                 .collect();
@@ -363,7 +363,7 @@ fn an_all_zero_response_is_refused_as_nothing_to_fit() {
         .iter()
         .map(|&force| Measurement {
             force,
-            deflection: 0.0,
+            response: 0.0,
         })
         .collect();
     assert_eq!(

@@ -4,8 +4,9 @@
 
 use microslip::problems::{BeamParam, PlateParam};
 use microslip::study::tolerance::{
-    Threshold, ToleranceError, beam_stiffness_for_tolerance, beam_stiffness_near_current,
-    parse_tolerance, plate_stiffness_for_tolerance, plate_stiffness_near_current,
+    ParseToleranceError, Threshold, ToleranceError, beam_stiffness_for_tolerance,
+    beam_stiffness_near_current, parse_tolerance, plate_stiffness_for_tolerance,
+    plate_stiffness_near_current,
 };
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
@@ -197,6 +198,21 @@ fn limits_and_refusals() {
     for bad in ["", "%", "abc", "0", "-1%", "nan", "2000%"] {
         assert!(parse_tolerance(bad).is_err(), "{bad}");
     }
+    // Typed refusals: the text, the fraction it reads as and the range, in the flag's words.
+    assert_eq!(
+        parse_tolerance("abc").unwrap_err().to_string(),
+        "invalid --tolerance 'abc': a number, e.g. 1% or 0.01"
+    );
+    let out_of_range = parse_tolerance("2000%").unwrap_err();
+    assert_eq!(
+        out_of_range.to_string(),
+        "invalid --tolerance '2000%': between 1e-7 % and 1000 %"
+    );
+    let ParseToleranceError::OutOfRange { value, allowed, .. } = out_of_range else {
+        panic!("2000% is a number: {out_of_range:?}");
+    };
+    assert_eq!(value, 20.0);
+    assert!(!allowed.contains(value) && allowed.contains(10.0) && allowed.contains(1e-9));
 }
 
 /// The other reading (`--of current`): the K_T whose answer is within T of the current K_T's form

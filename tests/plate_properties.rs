@@ -101,7 +101,7 @@ fn first_macroslip_stiffness() -> f64 {
     let (mut lo, mut hi) = (1e3_f64, 1e7_f64);
     for _ in 0..200 {
         let mid = (lo * hi).sqrt();
-        if plate_with(mid).regularized().regime() == Regime::Microslip {
+        if plate_with(mid).regularized().regime() == Regime::MICROSLIP {
             lo = mid
         } else {
             hi = mid
@@ -115,8 +115,8 @@ fn end_displacement_is_continuous_where_macroslip_appears() {
     let kt = first_macroslip_stiffness();
     let below = plate_with(kt * (1.0 - 1e-9)).regularized();
     let above = plate_with(kt * (1.0 + 1e-9)).regularized();
-    assert_eq!(below.regime(), Regime::Microslip);
-    assert_eq!(above.regime(), Regime::MicroslipMacroslip);
+    assert_eq!(below.regime(), Regime::MICROSLIP);
+    assert_eq!(above.regime(), Regime::MICROSLIP_MACROSLIP);
     assert!(relative_error(above.end_displacement(), below.end_displacement()) < 1e-8);
     assert!(
         10.0 - above.micro_zone_end() < 1e-3,
@@ -390,7 +390,7 @@ fn the_coulomb_end_displacement_does_not_depend_on_the_length() {
         })
         .unwrap();
         let c = plate.coulomb();
-        assert_eq!(c.regime(), Regime::StickMacroslip, "L = {l}");
+        assert_eq!(c.regime(), Regime::STICK_MACROSLIP, "L = {l}");
         assert!(
             relative_error(c.end_displacement(), expected) < 1e-12,
             "L = {l}"

@@ -34,9 +34,9 @@ fn twin_beams_match_the_finite_element_reference() {
             "K_T={kt} F={f}: X = {x}, reference {x_ref}"
         );
         let expected = if x_ref < 200.0 {
-            Regime::MicroslipMacroslip
+            Regime::MICROSLIP_MACROSLIP
         } else {
-            Regime::Microslip
+            Regime::MICROSLIP
         };
         assert_eq!(state.regime(), expected);
     }

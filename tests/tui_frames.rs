@@ -401,7 +401,10 @@ fn measured_points_on_the_deflection_chart() {
             let deflection = beams
                 .regularized(microslip::TipForce::new(force).unwrap())
                 .tip_deflection();
-            microslip::fit::Measurement { force, deflection }
+            microslip::fit::Measurement {
+                force,
+                response: deflection,
+            }
         })
         .collect();
     let mut app = App::new(AppOptions {
@@ -442,7 +445,10 @@ fn the_lap_joint_is_fitted_with_f() {
                 * joint
                     .regularized(joint.force(force).unwrap())
                     .joint_displacement();
-            microslip::fit::Measurement { force, deflection }
+            microslip::fit::Measurement {
+                force,
+                response: deflection,
+            }
         })
         .collect();
     let mut app = App::new(AppOptions {

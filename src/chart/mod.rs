@@ -397,7 +397,7 @@ pub fn build(
             AnyChart::Beam(chart) => {
                 if chart == BeamChart::Deflection {
                     if let Some(points) = measured {
-                        let series = points.iter().map(|m| (m.force, m.deflection)).collect();
+                        let series = points.iter().map(|m| (m.force, m.response)).collect();
                         overlays.push((SeriesRole::Measured, "measured", series));
                     }
                     if let Some(e) = external {
@@ -426,7 +426,7 @@ pub fn build(
             AnyChart::Beam(_) | AnyChart::Plate(_) => None,
             AnyChart::Lap(chart) => {
                 if let (LapChart::Displacement, Some(points)) = (chart, measured) {
-                    let series = points.iter().map(|m| (m.force, m.deflection)).collect();
+                    let series = points.iter().map(|m| (m.force, m.response)).collect();
                     overlays.push((SeriesRole::Measured, "measured", series));
                 }
                 if let (LapChart::Displacement, Some(e)) = (chart, external) {

@@ -147,7 +147,7 @@ pub fn compare_beams(
         .iter()
         .map(|r| Measurement {
             force: r.fe.force,
-            deflection: r.fe.deflection - (r.shear_corrected - r.euler),
+            response: r.fe.deflection - (r.shear_corrected - r.euler),
         })
         .collect();
     let implied = fit::fit_twin_beams(euler_bernoulli.params(), &bending_only, None, None);
@@ -444,7 +444,7 @@ mod tests {
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
         let rows = compare_plate(&plate, &[mean_only(1e4, 1.1 * paper_u(1e4))], None);
         assert!((rows[0].difference().unwrap() - 0.1).abs() < 1e-12);
-        assert_eq!(rows[0].regime, Regime::Microslip);
+        assert_eq!(rows[0].regime, Regime::MICROSLIP);
         assert_eq!(rows[0].strip_validity, Validity::Holds);
         assert!(
             rows[0].implied_stiffness.unwrap() < 1e4,

@@ -566,7 +566,7 @@ fn interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> FeInterface {
     if n == 0 || slips[last] < saturation {
         return FeInterface {
             macroslip_start: xs.last().copied().unwrap_or(0.0),
-            regime: Regime::Microslip,
+            regime: Regime::MICROSLIP,
         };
     }
     let mut i = last;
@@ -576,14 +576,14 @@ fn interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> FeInterface {
     if i == 0 {
         return FeInterface {
             macroslip_start: xs[0],
-            regime: Regime::Macroslip,
+            regime: Regime::MACROSLIP,
         };
     }
     let (x0, x1, s0, s1) = (xs[i - 1], xs[i], slips[i - 1], slips[i]);
     let start = x0 + (x1 - x0) * (saturation - s0) / (s1 - s0);
     FeInterface {
         macroslip_start: start,
-        regime: Regime::MicroslipMacroslip,
+        regime: Regime::MICROSLIP_MACROSLIP,
     }
 }
 
@@ -713,7 +713,7 @@ fn lap_interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> LapFeInter
         slide_from_start: a,
         slide_from_end: d,
         regime: if n == 0 {
-            Regime::Microslip
+            Regime::MICROSLIP
         } else {
             zones_regime(Law::Regularized, a, d, length)
         },
@@ -828,6 +828,7 @@ fn parse_nodes(deck: &str) -> Result<HashMap<usize, [f64; 3]>, ResultsError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::kernel::regime::Zone;
 
     const DAT: &str = "
  displacements (vx,vy,vz) for set WTIP and time  0.1000000E+01
@@ -879,15 +880,15 @@ mod tests {
         let xs = [0.0, 1.0, 2.0, 3.0, 4.0];
         // Saturation 1: the slip crosses it between x = 2 (0.5) and x = 3 (1.5).
         let state = interface_state(&xs, &[0.0, 0.2, 0.5, 1.5, 3.0], 1.0);
-        assert_eq!(state.regime, Regime::MicroslipMacroslip);
+        assert_eq!(state.regime, Regime::MICROSLIP_MACROSLIP);
         assert!((state.macroslip_start - 2.5).abs() < 1e-12);
         let none = interface_state(&xs, &[0.0, 0.1, 0.2, 0.3, 0.9], 1.0);
         assert_eq!(
             (none.macroslip_start, none.regime),
-            (4.0, Regime::Microslip)
+            (4.0, Regime::MICROSLIP)
         );
         let all = interface_state(&xs, &[1.0, 1.1, 1.2, 1.3, 1.4], 1.0);
-        assert_eq!((all.macroslip_start, all.regime), (0.0, Regime::Macroslip));
+        assert_eq!((all.macroslip_start, all.regime), (0.0, Regime::MACROSLIP));
     }
 
     #[test]
@@ -898,22 +899,25 @@ mod tests {
         let state = lap_interface_state(&xs, &[-3.0, -2.0, 0.5, 0.0, 2.0], 1.0);
         assert!((state.slide_from_start - (1.0 + 1.0 / 1.5)).abs() < 1e-12);
         assert!((state.slide_from_end - 0.5).abs() < 1e-12);
-        assert_eq!(state.regime, Regime::MacroslipMicroslipMacroslip);
+        assert_eq!(
+            state.regime,
+            Regime::from_zones(&[Zone::Macroslip, Zone::Microslip, Zone::Macroslip])
+        );
         let elastic = lap_interface_state(&xs, &[0.9, 0.5, 0.1, 0.5, 0.9], 1.0);
         assert_eq!(
             (elastic.slide_from_start, elastic.slide_from_end),
             (0.0, 0.0)
         );
-        assert_eq!(elastic.regime, Regime::Microslip);
+        assert_eq!(elastic.regime, Regime::MICROSLIP);
         let one_end = lap_interface_state(&xs, &[0.9, 0.5, 0.1, 0.5, 1.5], 1.0);
-        assert_eq!(one_end.regime, Regime::MicroslipMacroslip);
+        assert_eq!(one_end.regime, Regime::MICROSLIP_MACROSLIP);
         // Sliding everywhere: the whole overlap, counted once.
         let through = lap_interface_state(&xs, &[2.0; 5], 1.0);
         assert_eq!(
             (through.slide_from_start, through.slide_from_end),
             (4.0, 0.0)
         );
-        assert_eq!(through.regime, Regime::Macroslip);
+        assert_eq!(through.regime, Regime::MACROSLIP);
     }
 
     #[test]

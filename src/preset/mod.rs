@@ -23,6 +23,7 @@ use crate::kernel::params::ParamError;
 use crate::problems::ModelKind;
 use crate::problems::UnknownParam;
 use crate::problems::inputs::Inputs;
+use crate::problems::twin_beams::closed_form::BeamTheoryError;
 
 pub use parse::apply_assignment;
 /// The TUI's value field parses as `--set` and `:` do (the same refusals, the same range).
@@ -119,14 +120,35 @@ pub enum PresetError {
     #[error("{0}")]
     Model(String),
     /// A bad `beam_theory`.
-    #[error("{0}")]
-    Theory(String),
+    #[error(transparent)]
+    Theory(#[from] BeamTheoryError),
+    /// `beam_theory` in a preset of a model without bending beams.
+    #[error("{key} applies to the twin beams, not {model}")]
+    TheoryNotApplicable {
+        /// The key given (`beam_theory`).
+        key: &'static str,
+        /// The model it was given to, with why it has no beam theory where that helps.
+        model: &'static str,
+    },
     /// A value out of range.
     #[error(transparent)]
     Param(#[from] ParamError),
     /// TOML syntax (the message carries line and column).
     #[error("{0}")]
     Syntax(String),
+    /// A problem in the preset `spec` (a name or a path), at `line` of it when it has one.
+    #[error(
+        "preset '{spec}'{}: {error}",
+        line.map_or_else(String::new, |line| format!(", line {line}"))
+    )]
+    InPreset {
+        /// The preset as asked for.
+        spec: String,
+        /// 1-based line, when the problem has one.
+        line: Option<usize>,
+        /// The problem.
+        error: Box<PresetError>,
+    },
     /// The file could not be read.
     #[error("cannot read {path}: {reason}")]
     Io {
@@ -245,14 +267,13 @@ pub fn resolve(spec: &str) -> Result<Preset, PresetError> {
 /// As [`resolve`].
 pub fn resolve_in(spec: &str, user_dir: Option<&Path>) -> Result<Preset, PresetError> {
     let first = |mut problems: Vec<Located>| {
-        let problem = problems.remove(0);
-        match problem.line {
-            Some(line) => {
-                PresetError::Syntax(format!("preset '{spec}', line {line}: {}", problem.error))
-            }
-            None => match problem.error {
-                PresetError::Io { .. } => problem.error,
-                other => PresetError::Syntax(format!("preset '{spec}': {other}")),
+        let Located { line, error } = problems.remove(0);
+        match (line, error) {
+            (None, error @ PresetError::Io { .. }) => error,
+            (line, error) => PresetError::InPreset {
+                spec: spec.to_string(),
+                line,
+                error: Box::new(error),
             },
         }
     };
@@ -280,7 +301,7 @@ pub struct Listed {
     pub origin: &'static str,
     /// The preset, or the first problem of an invalid file; for a shadowed file, the warning
     /// ([`PresetError::Shadowed`]), so that it cannot be loaded by picking it either.
-    pub preset: Result<Preset, String>,
+    pub preset: Result<Preset, Located>,
     /// A user file named like a bundled preset, which wins (`is_bundled`): listed with a
     /// warning rather than as invalid.
     pub shadowed: bool,
@@ -305,9 +326,12 @@ pub fn listing(user_dir: Option<&Path>) -> Vec<Listed> {
                 .unwrap_or_default();
             let shadowed = is_bundled(&name);
             let preset = if shadowed {
-                Err(PresetError::Shadowed { name: name.clone() }.to_string())
+                Err(Located {
+                    line: None,
+                    error: PresetError::Shadowed { name: name.clone() },
+                })
             } else {
-                loaded.map_err(|problems| problems[0].to_string())
+                loaded.map_err(|mut problems| problems.swap_remove(0))
             };
             Listed {
                 name,
@@ -369,7 +393,7 @@ mod tests {
                 "b"
             ]
         );
-        assert!(rows[5].preset.as_ref().unwrap_err().contains("line 2"));
+        assert!(rows[5].preset.as_ref().unwrap_err().line == Some(2));
         assert_eq!(listing(None).len(), BUNDLED.len());
     }
 
@@ -386,7 +410,7 @@ mod tests {
         assert_eq!(user.len(), 1);
         assert!(user[0].shadowed);
         assert_eq!(
-            user[0].preset,
+            user[0].preset.as_ref().map_err(ToString::to_string),
             Err(
                 "named like the bundled preset 'paper-beams', which wins (`--preset paper-beams`, \
                  the picker): rename the file to use it by name"

@@ -156,13 +156,14 @@ impl Preset {
                         key: name_of_key.to_string(),
                         text: value.to_string(),
                     }),
-                    (Inputs::Plate(_), _) => Err(PresetError::Theory(format!(
-                        "{THEORY_KEY} applies to the twin beams, not the plate"
-                    ))),
-                    (Inputs::Lap { .. }, _) => Err(PresetError::Theory(format!(
-                        "{THEORY_KEY} applies to the twin beams, not the lap joint (its plates \
-                         are bars: no bending)"
-                    ))),
+                    (Inputs::Plate(_), _) => Err(PresetError::TheoryNotApplicable {
+                        key: THEORY_KEY,
+                        model: "the plate",
+                    }),
+                    (Inputs::Lap { .. }, _) => Err(PresetError::TheoryNotApplicable {
+                        key: THEORY_KEY,
+                        model: "the lap joint (its plates are bars: no bending)",
+                    }),
                 },
                 "description" => match value.as_str() {
                     Some(text) => {

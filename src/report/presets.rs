@@ -33,7 +33,7 @@ pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
                 name,
                 "?",
                 row.origin,
-                sanitize(warning),
+                sanitize(&warning.to_string()),
             ),
             Err(problem) => {
                 let file = user_dir.map_or_else(
@@ -46,7 +46,7 @@ pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
                     name,
                     "?",
                     row.origin,
-                    sanitize(problem),
+                    sanitize(&problem.to_string()),
                     sanitize(&file),
                 )
             }

@@ -633,7 +633,7 @@ mod tests {
                 let force = 300.0 * f64::from(i) / f64::from(count);
                 Measurement {
                     force,
-                    deflection: 4e-4 * force,
+                    response: 4e-4 * force,
                 }
             })
             .collect();
@@ -899,7 +899,7 @@ mod tests {
         let text = &app.message().unwrap().text;
         assert!(text.starts_with("loaded 3 measurements from "), "{text}");
         assert_eq!(
-            app.measurements().map(|m| m.points[2].deflection),
+            app.measurements().map(|m| m.points[2].response),
             Some(0.013)
         );
         let asked = app.clone().update(Action::Fit);
@@ -933,7 +933,7 @@ mod tests {
                     .joint_displacement();
                 Measurement {
                     force,
-                    deflection: delta,
+                    response: delta,
                 }
             })
             .collect();

@@ -199,7 +199,7 @@ pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed]
                 ),
                 // Short enough for the box; Enter on it shows the whole warning.
                 Err(_) if entry.shadowed => ("?", "WARNING: shadowed by the bundled one".into()),
-                Err(problem) => ("?", format!("INVALID: {}", sanitize(problem))),
+                Err(problem) => ("?", format!("INVALID: {}", sanitize(&problem.to_string()))),
             };
             let marker = if i == selected { ">" } else { " " };
             let text = format!(

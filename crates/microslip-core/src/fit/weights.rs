@@ -1,4 +1,4 @@
-//! What the fit assumes about the scatter of the measured deflections, and so how it weighs them.
+//! What the fit assumes about the scatter of the measured responses (w, Delta), and so how it weighs them.
 //!
 //! Weighted least squares minimizes sum ((model_i - w_i) / sigma_i)^2. The standard errors are
 //! right only when the sigma_i are right, up to one common factor that the residuals estimate
@@ -21,7 +21,7 @@ use super::{FitError, Measurement};
 /// for every mu and K_T, so such a point changes neither the fit nor its errors.
 pub const RELATIVE_FLOOR: f64 = 1e-3;
 
-/// How the measured deflections are weighted (see the module's documentation).
+/// How the measured responses are weighted (see the module's documentation).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum Weights<'a> {
     /// Every point alike: the same unknown sigma (mm) everywhere.
@@ -65,14 +65,14 @@ impl Weights<'_> {
         match *self {
             Weights::Absolute => Ok(vec![1.0; data.len()]),
             Weights::Relative => {
-                let largest = data.iter().map(|m| m.deflection.abs()).fold(0.0, f64::max);
+                let largest = data.iter().map(|m| m.response.abs()).fold(0.0, f64::max);
                 // All zero: nothing to scale by, every point alike.
                 let floor = if largest > 0.0 {
                     RELATIVE_FLOOR * largest
                 } else {
                     1.0
                 };
-                Ok(data.iter().map(|m| m.deflection.abs().max(floor)).collect())
+                Ok(data.iter().map(|m| m.response.abs().max(floor)).collect())
             }
             Weights::Sigma(sigma) => {
                 if sigma.len() != data.len() {
@@ -118,13 +118,13 @@ impl Weights<'_> {
 mod tests {
     use super::*;
 
-    fn data(deflections: &[f64]) -> Vec<Measurement> {
-        deflections
+    fn data(responses: &[f64]) -> Vec<Measurement> {
+        responses
             .iter()
             .enumerate()
-            .map(|(i, &deflection)| Measurement {
+            .map(|(i, &response)| Measurement {
                 force: i as f64,
-                deflection,
+                response,
             })
             .collect()
     }

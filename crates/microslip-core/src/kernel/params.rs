@@ -207,7 +207,7 @@ impl Domain {
                 value,
                 domain: self,
                 unit,
-                reason: "",
+                reason: None,
             })
         }
     }
@@ -295,8 +295,8 @@ pub struct ParamError {
     /// The field's unit.
     pub unit: Unit,
     /// Why the range is what it is, where the domain alone does not say it (the lap joint's
-    /// force bound F_gross); empty for a parameter's own domain.
-    pub reason: &'static str,
+    /// force bound F_gross); None for a parameter's own domain.
+    pub reason: Option<&'static str>,
 }
 
 impl ParamError {
@@ -304,16 +304,18 @@ impl ParamError {
     /// for a caller that names the value its own way (a flag, a sweep's end).
     pub fn allowed(&self) -> String {
         let refusal = self.domain.refusal(self.value, self.unit);
-        if self.reason.is_empty() {
-            refusal
-        } else {
-            format!("{refusal} ({})", self.reason)
+        match self.reason {
+            Some(reason) => format!("{refusal} ({reason})"),
+            None => refusal,
         }
     }
 
     /// The same error, saying why the range is what it is.
     pub fn because(self, reason: &'static str) -> ParamError {
-        ParamError { reason, ..self }
+        ParamError {
+            reason: Some(reason),
+            ..self
+        }
     }
 }
 

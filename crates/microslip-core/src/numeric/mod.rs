@@ -6,8 +6,10 @@
 
 pub(crate) mod banded;
 pub mod cancel;
+pub(crate) mod condense;
 pub mod elements;
 mod error;
+pub(crate) mod grid;
 pub(crate) mod interface;
 pub mod mesh;
 pub(crate) mod newton;

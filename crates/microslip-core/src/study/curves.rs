@@ -121,7 +121,7 @@ pub enum Spacing {
 /// let forces = force_samples(0.0, 300.0, 4)?; // 0, 100, 200, 300 N
 /// let rows: Vec<_> = beam_force_sweep(beams, forces)?.collect();
 /// assert_eq!(rows[1].force, 100.0);
-/// assert_eq!(rows[1].regime_regularized, Regime::MicroslipMacroslip);
+/// assert_eq!(rows[1].regime_regularized, Regime::MICROSLIP_MACROSLIP);
 /// assert!(force_samples(0.0, -1.0, 4).is_err()); // -1 N is not a tip force
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -644,7 +644,7 @@ pub fn interface_zones(model: &Model) -> InterfaceZones {
         Model::Lap { joint, force } => return lap_zones(joint, *force),
     };
     let zones = |regime: Regime, end: f64, inner: Zone| {
-        if regime == Regime::Unloaded {
+        if regime == Regime::UNLOADED {
             split_at(length, length, Zone::Unloaded, Zone::Unloaded)
         } else {
             split_at(length, end, inner, Zone::Macroslip)
@@ -656,7 +656,7 @@ pub fn interface_zones(model: &Model) -> InterfaceZones {
         (names.1, micro_end, regularized),
     ]
     .into_iter()
-    .filter(|&(_, at, regime)| regime != Regime::Unloaded && inside(at))
+    .filter(|&(_, at, regime)| regime != Regime::UNLOADED && inside(at))
     .map(|(name, at, _)| ZoneBoundary { name, at })
     .collect();
     InterfaceZones {
@@ -674,7 +674,7 @@ fn lap_zones(joint: &LapJoint, force: JointForce) -> InterfaceZones {
     let length = joint.params().length;
     let row = crate::study::lap::lap_point(joint, force);
     let spans = |regime: Regime, (a, d): (f64, f64), middle: Zone| {
-        if regime == Regime::Unloaded {
+        if regime == Regime::UNLOADED {
             return split_at(length, length, Zone::Unloaded, Zone::Unloaded);
         }
         [
@@ -697,7 +697,7 @@ fn lap_zones(joint: &LapJoint, force: JointForce) -> InterfaceZones {
         ("L-d", length - dr, row.regime_regularized),
     ]
     .into_iter()
-    .filter(|&(_, at, regime)| regime != Regime::Unloaded && inside(at))
+    .filter(|&(_, at, regime)| regime != Regime::UNLOADED && inside(at))
     .map(|(name, at, _)| ZoneBoundary { name, at })
     .collect();
     InterfaceZones {
@@ -1375,7 +1375,7 @@ mod tests {
             .collect();
         assert_eq!(rows.len(), 31);
         assert!((rows[10].force - 100.0).abs() < 1e-12);
-        assert_eq!(rows[10].regime_regularized, Regime::MicroslipMacroslip);
+        assert_eq!(rows[10].regime_regularized, Regime::MICROSLIP_MACROSLIP);
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
         let samples = stiffness_samples(1.0, 1e7, 8, Spacing::Logarithmic).unwrap();
         let rows: Vec<PlatePoint> = plate_kt_sweep(plate, samples).unwrap().collect();

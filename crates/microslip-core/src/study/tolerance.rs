@@ -622,11 +622,35 @@ fn code_settings(threshold: Threshold, mu_p: f64, modulus: f64, element: f64) ->
         .collect()
 }
 
+/// A tolerance that [`parse_tolerance`] refuses: the text typed and what is allowed (a fraction
+/// from 1e-9 to 10, written as a number or a percentage). The words are the
+/// `--tolerance` flag's, where users type it.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ParseToleranceError {
+    /// Not a number, with or without `%`.
+    #[error("invalid --tolerance '{text}': a number, e.g. 1% or 0.01")]
+    NotANumber {
+        /// The text typed.
+        text: String,
+    },
+    /// A number outside the allowed fractions, 1e-9 to 10 (1e-7 % to 1000 %).
+    #[error("invalid --tolerance '{text}': between 1e-7 % and 1000 %")]
+    OutOfRange {
+        /// The text typed.
+        text: String,
+        /// The fraction it reads as.
+        value: f64,
+        /// The fractions allowed.
+        allowed: Domain,
+    },
+}
+
 /// Parses a tolerance as typed: `1%` or `0.01`.
 ///
 /// # Errors
 /// Not a number, or outside (0, 10] as a fraction.
-pub fn parse_tolerance(text: &str) -> Result<f64, String> {
+pub fn parse_tolerance(text: &str) -> Result<f64, ParseToleranceError> {
     let trimmed = text.trim();
     let (number, scale) = match trimmed.strip_suffix('%') {
         Some(n) => (n.trim(), 0.01),
@@ -634,7 +658,12 @@ pub fn parse_tolerance(text: &str) -> Result<f64, String> {
     };
     let value = crate::kernel::params::parse_number(number)
         .map(|v| v * scale)
-        .ok_or_else(|| format!("invalid --tolerance '{text}': a number, e.g. 1% or 0.01"))?;
-    check_tolerance(value)
-        .map_err(|_| format!("invalid --tolerance '{text}': between 1e-7 % and 1000 %"))
+        .ok_or_else(|| ParseToleranceError::NotANumber {
+            text: text.to_string(),
+        })?;
+    check_tolerance(value).map_err(|_| ParseToleranceError::OutOfRange {
+        text: text.to_string(),
+        value,
+        allowed: TOLERANCE,
+    })
 }

@@ -118,7 +118,7 @@ fn measurements_load_fit_and_set_the_parameters() {
     let dir = tempfile::tempdir().unwrap();
     let mut csv = String::from("F_N,w_mm\n");
     for m in measured() {
-        csv.push_str(&format!("{},{}\n", m.force, m.deflection));
+        csv.push_str(&format!("{},{}\n", m.force, m.response));
     }
     let path = dir.path().join("m.csv");
     std::fs::write(&path, csv).unwrap();

@@ -44,7 +44,10 @@ fn measured() -> Vec<Measurement> {
             let deflection = beams
                 .regularized(crate::TipForce::new(force).unwrap())
                 .tip_deflection();
-            Measurement { force, deflection }
+            Measurement {
+                force,
+                response: deflection,
+            }
         })
         .collect()
 }

@@ -15,7 +15,7 @@
 pub use super::params::LapParams;
 use crate::kernel::hyperbolic::{cosh_sinh_ratio, one_minus_tanhc, sech, tanhc};
 use crate::kernel::params::{Domain, ParamError};
-use crate::kernel::regime::{Law, Regime};
+use crate::kernel::regime::{Law, Regime, Zone};
 use crate::kernel::solve::{find_root_in_bracket, find_root_newton};
 use crate::problems::Solution;
 use crate::problems::lap::params::LapParam;
@@ -154,7 +154,7 @@ impl LapJoint {
                 value: newtons,
                 domain: Domain::NonNegative { max: gross },
                 unit: spec.unit,
-                reason: "",
+                reason: None,
             }
             .because("F_gross = 2 b mu P L: the joint slides through beyond it"));
         }
@@ -510,11 +510,11 @@ impl LapState {
     /// The zones from x = 0 outward.
     pub fn regime(&self) -> Regime {
         if self.force == 0.0 {
-            return Regime::Unloaded;
+            return Regime::UNLOADED;
         }
         let (start, end) = self.middle_zone();
         if end - start <= 0.0 {
-            return Regime::Macroslip;
+            return Regime::MACROSLIP;
         }
         zones_regime(self.law, self.a, self.d, self.joint.params.length)
     }
@@ -538,17 +538,17 @@ impl LapState {
 /// that both name the same zones the same way.
 pub fn zones_regime(law: Law, a: f64, d: f64, length: f64) -> Regime {
     if a + d >= length {
-        return Regime::Macroslip;
+        return Regime::MACROSLIP;
     }
-    match (law, a > 0.0, d > 0.0) {
-        (Law::Coulomb, true, true) => Regime::MacroslipStickMacroslip,
-        (Law::Coulomb, false, true) => Regime::StickMacroslip,
-        (Law::Coulomb, true, false) => Regime::MacroslipStick,
-        (Law::Coulomb, false, false) => Regime::Stick,
-        (Law::Regularized, true, true) => Regime::MacroslipMicroslipMacroslip,
-        (Law::Regularized, false, true) => Regime::MicroslipMacroslip,
-        (Law::Regularized, true, false) => Regime::MacroslipMicroslip,
-        (Law::Regularized, false, false) => Regime::Microslip,
+    let middle = match law {
+        Law::Coulomb => Zone::Stick,
+        Law::Regularized => Zone::Microslip,
+    };
+    match (a > 0.0, d > 0.0) {
+        (true, true) => Regime::from_zones(&[Zone::Macroslip, middle, Zone::Macroslip]),
+        (false, true) => Regime::from_zones(&[middle, Zone::Macroslip]),
+        (true, false) => Regime::from_zones(&[Zone::Macroslip, middle]),
+        (false, false) => Regime::from_zones(&[middle]),
     }
 }
 

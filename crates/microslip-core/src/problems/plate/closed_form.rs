@@ -263,13 +263,13 @@ impl CoulombPlate {
     pub fn regime(&self) -> Regime {
         if self.plate.params.poisson == 0.0 {
             // Nothing squeezes the plate sideways: no shear anywhere, as the unloaded beams.
-            Regime::Unloaded
+            Regime::UNLOADED
         } else if self.slide_zone <= 0.0 {
-            Regime::Stick
+            Regime::STICK
         } else if self.slide_zone >= self.plate.params.half_length {
-            Regime::Macroslip
+            Regime::MACROSLIP
         } else {
-            Regime::StickMacroslip
+            Regime::STICK_MACROSLIP
         }
     }
 
@@ -330,11 +330,11 @@ impl RegularizedPlate {
     /// Microslip alone, or microslip near the centre then macroslip near the free end.
     pub fn regime(&self) -> Regime {
         if self.plate.params.poisson == 0.0 {
-            Regime::Unloaded
+            Regime::UNLOADED
         } else if self.has_macroslip {
-            Regime::MicroslipMacroslip
+            Regime::MICROSLIP_MACROSLIP
         } else {
-            Regime::Microslip
+            Regime::MICROSLIP
         }
     }
 
@@ -657,7 +657,7 @@ mod tests {
         // u(L) = (1 + nu) nu^2 t_p P / (2 (1 - nu) mu E).
         let u = 1.3 * 0.09 * 0.2 * 10.0 / (2.0 * 0.7 * 0.3 * 70_000.0);
         assert!(((c.end_displacement() - u) / u).abs() < 1e-13);
-        assert_eq!(c.regime(), Regime::StickMacroslip);
+        assert_eq!(c.regime(), Regime::STICK_MACROSLIP);
     }
 
     #[test]
@@ -670,10 +670,10 @@ mod tests {
         // u = 0 exactly, and the continuum agrees exactly (it was 2e-21 mm, "+inf %").
         let plate = SqueezedPlate::new(no_poisson).unwrap();
         let c = plate.coulomb();
-        assert_eq!(c.regime(), Regime::Unloaded);
+        assert_eq!(c.regime(), Regime::UNLOADED);
         assert_eq!(c.end_displacement(), 0.0);
         let r = plate.regularized();
-        assert_eq!(r.regime(), Regime::Unloaded);
+        assert_eq!(r.regime(), Regime::UNLOADED);
         assert_eq!(r.end_displacement(), 0.0);
         let continuum = crate::problems::plate::continuum::solve_plate_continuum(
             no_poisson,
@@ -698,7 +698,7 @@ mod tests {
             ..PlateParams::PAPER
         };
         let c = SqueezedPlate::new(slippery).unwrap().coulomb();
-        assert_eq!(c.regime(), Regime::Macroslip);
+        assert_eq!(c.regime(), Regime::MACROSLIP);
         assert_eq!(c.stick_end(), 0.0);
         // Whole half-plate sliding: u(L) = kappa (l L - L^2 / 2).
         let (kappa, l) = (
@@ -713,7 +713,7 @@ mod tests {
     fn all_microslip_end_displacement_matches_hand_value() {
         // K_T = 1: alpha L = 10 sqrt(0.91 / 14000); u(L) = nu (1 + nu) P tanh(alpha L) / (E alpha).
         let r = plate(1.0).regularized();
-        assert_eq!(r.regime(), Regime::Microslip);
+        assert_eq!(r.regime(), Regime::MICROSLIP);
         let alpha = (0.91_f64 / 14_000.0).sqrt();
         let u = 0.3 * 1.3 * 10.0 * (alpha * 10.0).tanh() / (70_000.0 * alpha);
         assert!(((r.end_displacement() - u) / u).abs() < 1e-13);
@@ -722,7 +722,7 @@ mod tests {
     #[test]
     fn displacement_and_shear_are_continuous_at_the_microslip_end() {
         let r = plate(1e6).regularized();
-        assert_eq!(r.regime(), Regime::MicroslipMacroslip);
+        assert_eq!(r.regime(), Regime::MICROSLIP_MACROSLIP);
         let x = r.micro_zone_end();
         let (below, above) = (
             r.displacement(x * (1.0 - 1e-13)),

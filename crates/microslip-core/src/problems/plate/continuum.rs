@@ -18,10 +18,11 @@
 use super::params::PlateParams;
 use crate::numeric::NumericError;
 use crate::numeric::banded::SymmetricBand;
+use crate::numeric::grid::Q8Grid;
 use crate::numeric::interface::{InterfacePoint, Response};
 use crate::numeric::mesh::graded_toward_end;
 use crate::numeric::newton::{self, Discretized};
-use crate::numeric::q8::{Q8, plane_strain, q8_stiffness};
+use crate::numeric::q8::plane_strain;
 
 /// How fine the continuum mesh is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -168,14 +169,13 @@ fn unstrained(grid: &Grid, params: &PlateParams) -> ContinuumPlate {
     }
 }
 
-/// The mesh: element boundaries and the half-grid numbering of the Q8 nodes.
+/// The mesh: the plate's structured Q8 grid (`numeric::grid`), numbered column by column from
+/// x = 0, and its contact face.
 #[derive(Debug, Clone)]
 struct Grid {
-    xs: Vec<f64>,
-    ys: Vec<f64>,
-    /// Node id of each half-grid point (column by column), `None` at element centres.
-    ids: Vec<Option<usize>>,
-    nodes: usize,
+    mesh: Q8Grid,
+    /// Unknowns: (u, v) of every node.
+    unknowns: usize,
     /// Share of the contact face of each lower-face node (mm per mm of width): Simpson weights.
     face_weights: Vec<f64>,
     bandwidth: usize,
@@ -185,9 +185,9 @@ impl Grid {
     /// x (mm) of the i-th node along the contact face (corners at even i, midsides at odd i).
     fn face_x(&self, i: usize) -> f64 {
         if i.is_multiple_of(2) {
-            self.xs[i / 2]
+            self.mesh.xs[i / 2]
         } else {
-            0.5 * (self.xs[i / 2] + self.xs[i / 2 + 1])
+            0.5 * (self.mesh.xs[i / 2] + self.mesh.xs[i / 2 + 1])
         }
     }
 
@@ -209,17 +209,7 @@ impl Grid {
         let ys: Vec<f64> = (0..=layers)
             .map(|j| p.thickness * j as f64 / layers as f64)
             .collect();
-        let (ni, nj) = (2 * (xs.len() - 1) + 1, 2 * layers + 1);
-        let mut ids = Vec::with_capacity(ni * nj);
-        let mut next = 0;
-        for i in 0..ni {
-            for j in 0..nj {
-                ids.push((i % 2 == 0 || j % 2 == 0).then(|| {
-                    next += 1;
-                    next - 1
-                }));
-            }
-        }
+        let ni = 2 * (xs.len() - 1) + 1;
         let mut face_weights = vec![0.0; ni];
         for e in 0..xs.len() - 1 {
             let length = xs[e + 1] - xs[e];
@@ -227,22 +217,15 @@ impl Grid {
             face_weights[2 * e + 1] += 2.0 * length / 3.0;
             face_weights[2 * e + 2] += length / 6.0;
         }
-        let mut grid = Grid {
-            xs,
-            ys,
-            ids,
-            nodes: next,
+        let mut body = Q8Grid::new(xs, ys, 0, plane_strain(p.youngs_modulus, p.poisson));
+        let unknowns = body.number_by_columns(0);
+        let bandwidth = body.bandwidth();
+        Grid {
+            mesh: body,
+            unknowns,
             face_weights,
-            bandwidth: 0,
-        };
-        grid.bandwidth = (0..grid.elements_x())
-            .map(|ex| {
-                let dofs = grid.element_dofs(ex, 0);
-                dofs.iter().max().unwrap_or(&0) - dofs.iter().min().unwrap_or(&0)
-            })
-            .max()
-            .unwrap_or(0);
-        grid
+            bandwidth,
+        }
     }
 
     /// The tributary interval of each contact-face node: the part of the face its Simpson weight
@@ -251,19 +234,22 @@ impl Grid {
         let e = i / 2;
         if i.is_multiple_of(2) {
             let left = if e == 0 {
-                self.xs[0]
+                self.mesh.xs[0]
             } else {
-                self.xs[e] - (self.xs[e] - self.xs[e - 1]) / 6.0
+                self.mesh.xs[e] - (self.mesh.xs[e] - self.mesh.xs[e - 1]) / 6.0
             };
-            let right = if e + 1 == self.xs.len() {
-                self.xs[e]
+            let right = if e + 1 == self.mesh.xs.len() {
+                self.mesh.xs[e]
             } else {
-                self.xs[e] + (self.xs[e + 1] - self.xs[e]) / 6.0
+                self.mesh.xs[e] + (self.mesh.xs[e + 1] - self.mesh.xs[e]) / 6.0
             };
             (left, right)
         } else {
-            let length = self.xs[e + 1] - self.xs[e];
-            (self.xs[e] + length / 6.0, self.xs[e + 1] - length / 6.0)
+            let length = self.mesh.xs[e + 1] - self.mesh.xs[e];
+            (
+                self.mesh.xs[e] + length / 6.0,
+                self.mesh.xs[e + 1] - length / 6.0,
+            )
         }
     }
 
@@ -271,7 +257,7 @@ impl Grid {
     /// end (the whole face when it is shorter), each node's value held over its tributary interval,
     /// so that the whole face integrates to the total reaction exactly.
     fn mean_over_last(&self, ratio: &[(f64, f64)], window: f64) -> f64 {
-        let end = self.xs[self.xs.len() - 1];
+        let end = self.mesh.xs[self.mesh.xs.len() - 1];
         let window = window.min(end);
         let from = end - window;
         let resultant: f64 = ratio
@@ -285,28 +271,14 @@ impl Grid {
         resultant / window
     }
 
-    fn elements_x(&self) -> usize {
-        self.xs.len() - 1
+    /// The x unknown of node (i, j).
+    fn u(&self, i: usize, j: usize) -> usize {
+        self.mesh.dof(i, j)[0]
     }
 
-    fn elements_y(&self) -> usize {
-        self.ys.len() - 1
-    }
-
-    fn node(&self, i: usize, j: usize) -> usize {
-        let nj = 2 * self.elements_y() + 1;
-        self.ids[i * nj + j].expect("corner and midside points are nodes")
-    }
-
-    /// The 16 unknowns of element (ex, ey): (u, v) of each Q8 node.
-    fn element_dofs(&self, ex: usize, ey: usize) -> [usize; 16] {
-        let mut dofs = [0; 16];
-        for (k, &(a, b)) in Q8.iter().enumerate() {
-            let n = self.node(2 * ex + a, 2 * ey + b);
-            dofs[2 * k] = 2 * n;
-            dofs[2 * k + 1] = 2 * n + 1;
-        }
-        dofs
+    /// The y unknown of node (i, j).
+    fn v(&self, i: usize, j: usize) -> usize {
+        self.mesh.dof(i, j)[1]
     }
 }
 
@@ -328,15 +300,13 @@ struct Continuum<'a> {
 
 impl<'a> Continuum<'a> {
     fn new(grid: &'a Grid, params: &'a PlateParams, contact: &[f64]) -> Continuum<'a> {
-        let n = 2 * grid.nodes;
+        let n = grid.unknowns;
         let mut stiffness = SymmetricBand::zeros(n, grid.bandwidth);
-        let elasticity = plane_strain(params.youngs_modulus, params.poisson);
-        for ex in 0..grid.elements_x() {
-            let width = grid.xs[ex + 1] - grid.xs[ex];
-            for ey in 0..grid.elements_y() {
-                let height = grid.ys[ey + 1] - grid.ys[ey];
-                let k = q8_stiffness(width, height, &elasticity);
-                let dofs = grid.element_dofs(ex, ey);
+        let mesh = &grid.mesh;
+        for ex in 0..mesh.elements_x() {
+            for ey in 0..mesh.elements_y() {
+                let k = mesh.element_stiffness(ex, ey);
+                let dofs = mesh.element_dofs(ex, ey);
                 for a in 0..16 {
                     for b in 0..16 {
                         if dofs[a] > dofs[b] || a == b {
@@ -346,16 +316,14 @@ impl<'a> Continuum<'a> {
                 }
             }
         }
-        let top = 2 * grid.elements_y();
+        let top = 2 * mesh.elements_y();
         let mut unit_load = vec![0.0; n];
         for (i, w) in grid.face_weights.iter().enumerate() {
-            unit_load[2 * grid.node(i, top) + 1] -= w;
+            unit_load[grid.v(i, top)] -= w;
         }
         let columns = grid.face_weights.len();
-        let mut fixed: Vec<usize> = (0..=top)
-            .filter_map(|j| grid.ids[j].map(|id| 2 * id))
-            .collect();
-        fixed.extend((0..columns).map(|i| 2 * grid.node(i, 0) + 1));
+        let mut fixed: Vec<usize> = (0..=top).map(|j| grid.u(0, j)).collect();
+        fixed.extend((0..columns).map(|i| grid.v(i, 0)));
         let pressure = params.pressure;
         Continuum {
             grid,
@@ -374,7 +342,7 @@ impl<'a> Continuum<'a> {
         let p = self.params;
         (0..self.points.len())
             .map(|i| {
-                let slip = displacement[2 * self.grid.node(i, 0)];
+                let slip = displacement[self.grid.u(i, 0)];
                 let stiffness = p.tangential_stiffness * self.grid.face_weights[i];
                 let strength = p.friction * self.unit_contact[i] * pressure;
                 self.points[i].respond(slip, stiffness, strength)
@@ -387,7 +355,7 @@ impl<'a> Continuum<'a> {
         let internal = self.stiffness.mul_accurate(&self.displacement);
         (0..self.points.len())
             .map(|i| {
-                let dof = 2 * self.grid.node(i, 0) + 1;
+                let dof = self.grid.v(i, 0);
                 internal[dof] - self.pressure * self.unit_load[dof]
             })
             .collect()
@@ -397,17 +365,18 @@ impl<'a> Continuum<'a> {
         let g = self.grid;
         let p = self.params;
         let last = g.face_weights.len() - 1;
-        let column: Vec<f64> = (0..=2 * g.elements_y())
-            .map(|j| self.displacement[2 * g.node(last, j)])
+        let layers = g.mesh.elements_y();
+        let column: Vec<f64> = (0..=2 * layers)
+            .map(|j| self.displacement[g.u(last, j)])
             .collect();
         let mean = column
             .windows(3)
             .step_by(2)
             .map(|w| (w[0] + 4.0 * w[1] + w[2]) / 6.0)
             .sum::<f64>()
-            / g.elements_y() as f64;
+            / layers as f64;
         let face: Vec<(f64, f64)> = (0..=last)
-            .map(|i| (g.face_x(i), self.displacement[2 * g.node(i, 0)]))
+            .map(|i| (g.face_x(i), self.displacement[g.u(i, 0)]))
             .collect();
         let saturation = p.friction * p.pressure / p.tangential_stiffness;
         let mut start = p.half_length;
@@ -438,7 +407,7 @@ impl<'a> Continuum<'a> {
             .unwrap_or((1.0, 1.0));
         ContinuumPlate {
             end_displacement_face: column[0],
-            end_displacement_mid: column[g.elements_y()],
+            end_displacement_mid: column[layers],
             end_displacement_mean: mean,
             micro_zone_end: start,
             end_pressure_ratio: contact_pressure[last].1,
@@ -479,7 +448,7 @@ impl Discretized for Continuum<'_> {
         }
         let mut tangent = self.stiffness.clone();
         for (i, response) in responses.iter().enumerate() {
-            let dof = 2 * self.grid.node(i, 0);
+            let dof = self.grid.u(i, 0);
             residual[dof] += response.stress;
             tangent.add(dof, dof, response.tangent);
         }

@@ -8,7 +8,7 @@
 //! Conventions (lower beam): x from the clamp, deflection w in the direction of F, interface slip s(x)
 //! of the upper beam relative to the lower one, interface shear tau(x) >= 0 acting on the lower beam.
 
-pub use super::params::{BeamTheory, TwinBeamsParams};
+pub use super::params::{BeamTheory, BeamTheoryError, TwinBeamsParams};
 use crate::kernel::hyperbolic::{
     cosh_rem0, cosh_rem2, cosh_sinh_ratio, inv_sinh, one_minus_sech, sinh_ratio, sinh_rem1,
     sinh_rem3, sinhc,
@@ -304,11 +304,11 @@ impl CoulombBeams {
     /// Stick below or at F_thre, macroslip (the whole interface at once) above; unloaded at F = 0.
     pub fn regime(&self) -> Regime {
         if self.force == 0.0 {
-            Regime::Unloaded
+            Regime::UNLOADED
         } else if self.slides {
-            Regime::Macroslip
+            Regime::MACROSLIP
         } else {
-            Regime::Stick
+            Regime::STICK
         }
     }
 
@@ -387,11 +387,11 @@ impl RegularizedBeams {
     /// unloaded at F = 0 (no shear, no slip: not "microslip").
     pub fn regime(&self) -> Regime {
         if self.force == 0.0 {
-            Regime::Unloaded
+            Regime::UNLOADED
         } else if self.has_macroslip {
-            Regime::MicroslipMacroslip
+            Regime::MICROSLIP_MACROSLIP
         } else {
-            Regime::Microslip
+            Regime::MICROSLIP
         }
     }
 
@@ -590,10 +590,10 @@ mod tests {
         let f = beams.threshold_force();
         let below = beams.coulomb(force(f)).tip_deflection();
         let above = beams.coulomb(force(f * (1.0 + 1e-12))).tip_deflection();
-        assert_eq!(beams.coulomb(force(f)).regime(), Regime::Stick);
+        assert_eq!(beams.coulomb(force(f)).regime(), Regime::STICK);
         assert_eq!(
             beams.coulomb(force(f * (1.0 + 1e-12))).regime(),
-            Regime::Macroslip
+            Regime::MACROSLIP
         );
         assert!(((above - below) / below).abs() < 1e-10);
     }
@@ -602,9 +602,9 @@ mod tests {
     fn zero_force_gives_a_zero_solution() {
         // Zero load is its own state, not "microslip" (issue 16): nothing is stressed.
         let state = paper().regularized(force(0.0));
-        assert_eq!(state.regime(), Regime::Unloaded);
-        assert_eq!(paper().coulomb(force(0.0)).regime(), Regime::Unloaded);
-        assert_eq!(paper().regularized(force(1e-9)).regime(), Regime::Microslip);
+        assert_eq!(state.regime(), Regime::UNLOADED);
+        assert_eq!(paper().coulomb(force(0.0)).regime(), Regime::UNLOADED);
+        assert_eq!(paper().regularized(force(1e-9)).regime(), Regime::MICROSLIP);
         assert_eq!(state.tip_deflection(), 0.0);
         assert_eq!(state.shear_stress(100.0), 0.0);
     }
@@ -616,7 +616,7 @@ mod tests {
             let state = beams.regularized(force(f));
             assert!(state.shear_stress(0.0).abs() < 1e-12);
             let x = state.micro_zone_end();
-            if state.regime() == Regime::MicroslipMacroslip {
+            if state.regime() == Regime::MICROSLIP_MACROSLIP {
                 let at_x = state.shear_stress(x * (1.0 - 1e-12));
                 assert!((at_x - 0.3).abs() < 1e-9, "F={f}: tau(X-) = {at_x}");
             }
@@ -630,7 +630,7 @@ mod tests {
         // Just above F_1 (X near L, found as L - X), then deep in macroslip (X small, found as X).
         for f in [f_1 * (1.0 + 1e-9), 81.0, 100.0, 1e4, 1e9] {
             let state = beams.regularized(force(f));
-            assert_eq!(state.regime(), Regime::MicroslipMacroslip);
+            assert_eq!(state.regime(), Regime::MICROSLIP_MACROSLIP);
             let (x, a) = (state.micro_zone_end(), state.macroslip_length());
             assert!(a > 0.0 && x > 0.0, "F={f}");
             assert!(
@@ -654,7 +654,7 @@ mod tests {
         .unwrap();
         let f = thin.threshold_force().next_up();
         let c = thin.coulomb(force(f));
-        assert_eq!(c.regime(), Regime::Macroslip);
+        assert_eq!(c.regime(), Regime::MACROSLIP);
         for x in [0.0, 100.0, 200.0] {
             assert!(c.slip(x) >= 0.0, "x={x}: {}", c.slip(x));
         }

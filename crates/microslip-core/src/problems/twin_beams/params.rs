@@ -156,14 +156,14 @@ impl BeamTheory {
     /// Reads [`BeamTheory::key`] (also `euler`).
     ///
     /// # Errors
-    /// The accepted names, when `text` is none of them.
-    pub fn parse(text: &str) -> Result<BeamTheory, String> {
+    /// [`BeamTheoryError`], naming the accepted names, when `text` is none of them.
+    pub fn parse(text: &str) -> Result<BeamTheory, BeamTheoryError> {
         match text.trim().to_ascii_lowercase().as_str() {
             "euler-bernoulli" | "euler" => Ok(BeamTheory::EulerBernoulli),
             "timoshenko" => Ok(BeamTheory::Timoshenko),
-            _ => Err(format!(
-                "invalid beam theory '{text}': must be \"euler-bernoulli\" or \"timoshenko\""
-            )),
+            _ => Err(BeamTheoryError {
+                text: text.to_string(),
+            }),
         }
     }
 
@@ -174,6 +174,24 @@ impl BeamTheory {
             BeamTheory::Timoshenko => BeamTheory::EulerBernoulli,
         }
     }
+}
+
+/// A beam theory [`BeamTheory::parse`] does not know: the text given, and the names it accepts
+/// ([`BeamTheoryError::ALLOWED`]).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "invalid beam theory '{text}': must be \"{}\" or \"{}\"",
+    Self::ALLOWED[0],
+    Self::ALLOWED[1]
+)]
+pub struct BeamTheoryError {
+    /// The text given.
+    pub text: String,
+}
+
+impl BeamTheoryError {
+    /// The names accepted (each [`BeamTheory::key`]; `euler` is read as `euler-bernoulli` too).
+    pub const ALLOWED: [&'static str; 2] = ["euler-bernoulli", "timoshenko"];
 }
 
 /// Raw inputs of the twin-beam problem (mm, MPa, MPa/mm); validated by
@@ -229,5 +247,24 @@ impl TwinBeamsParams {
             BeamParam::Poisson => &mut self.poisson,
             BeamParam::Force => return None,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_unknown_beam_theory_is_refused_with_the_text_and_the_names_accepted() {
+        assert_eq!(BeamTheory::parse(" Euler "), Ok(BeamTheory::EulerBernoulli));
+        let error = BeamTheory::parse("kirchhoff").unwrap_err();
+        assert_eq!(error.text, "kirchhoff");
+        assert_eq!(
+            error.to_string(),
+            "invalid beam theory 'kirchhoff': must be \"euler-bernoulli\" or \"timoshenko\""
+        );
+        for name in BeamTheoryError::ALLOWED {
+            assert_eq!(BeamTheory::parse(name).map(BeamTheory::key), Ok(name));
+        }
     }
 }
