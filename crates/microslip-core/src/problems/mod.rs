@@ -14,6 +14,7 @@ use std::str::FromStr;
 use thiserror::Error;
 
 use crate::kernel::params::{ParamSpec, Unit};
+pub use problem::{AnyProblem, Continuum, ParamKey, Problem};
 pub use quantity::{Quantity, QuantityName, Solution};
 
 /// The parameters of one problem as [`Param`]s, in the order of `$ty::ALL`: a const array, so
@@ -33,6 +34,7 @@ macro_rules! param_list {
 pub mod inputs;
 pub mod lap;
 pub mod plate;
+pub mod problem;
 pub mod quantity;
 pub mod stiffness;
 pub mod twin_beams;
@@ -76,11 +78,13 @@ pub struct Description {
     pub load_span: f64,
 }
 
-/// Writes [`ModelKind`], its [`ModelKind::ALL`] and [`ModelKind::description`] from one list,
-/// so that the list of problems is spelled once: a variant missing from `ALL` (which would
-/// index past [`ByProblem`]'s slots) or without a description cannot be written.
+/// Writes [`ModelKind`], its [`ModelKind::ALL`], [`ModelKind::description`],
+/// [`ModelKind::problem`] and [`Param`] (with [`Param::spec`] and [`Param::model`]) from one list
+/// of `Variant => folder::ProblemType`, so that the list of problems is spelled once: a variant
+/// missing from `ALL` (which would index past [`ByProblem`]'s slots), without a description or
+/// without a parameter type cannot be written.
 macro_rules! problem_list {
-    ($($(#[$doc:meta])* $variant:ident => $folder:ident),+ $(,)?) => {
+    ($($(#[$doc:meta])* $variant:ident => $problem:path),+ $(,)?) => {
         /// Which benchmark a parameter set describes.
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
         pub enum ModelKind {
@@ -92,24 +96,52 @@ macro_rules! problem_list {
             pub const ALL: [ModelKind; [$(ModelKind::$variant),+].len()] =
                 [$(ModelKind::$variant),+];
 
-            /// What the generic layers know of the problem: its [`Description`], from its folder.
-            pub fn description(self) -> &'static Description {
+            /// The problem itself, its types erased: what a caller uses instead of a `match` on
+            /// the kind.
+            pub fn problem(self) -> &'static dyn AnyProblem {
                 match self {
-                    $(ModelKind::$variant => &$folder::DESCRIPTION),+
+                    $(ModelKind::$variant => &$problem),+
+                }
+            }
+        }
+
+        $(impl problem::Registered for $problem {
+            const KIND: ModelKind = ModelKind::$variant;
+        })+
+
+        /// A parameter of any problem: what the TUI's parameter pane and presets iterate over.
+        /// One variant per problem, holding that problem's [`Problem::Key`].
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum Param {
+            $($(#[$doc])* $variant(<$problem as Problem>::Key)),+
+        }
+
+        impl Param {
+            /// Key, unit, meaning, domain and step.
+            pub fn spec(self) -> ParamSpec {
+                match self {
+                    $(Param::$variant(p) => ParamKey::spec(p)),+
+                }
+            }
+
+            /// The model this parameter belongs to.
+            pub fn model(self) -> ModelKind {
+                match self {
+                    $(Param::$variant(_) => ModelKind::$variant),+
                 }
             }
         }
     };
 }
 
-// The problems: the one list a new problem is added to (its variant and its folder).
+// The problems: the one list a new problem is added to (its variant and its type).
 problem_list! {
     /// Twin cantilever beams (paper section 2.1).
-    Beam => twin_beams,
+    Beam => twin_beams::TwinBeamsProblem,
     /// Squeezed plate (paper section 2.2).
-    Plate => plate,
+    Plate => plate::SqueezedPlateProblem,
     /// Clamped double-lap joint (issue 24).
-    Lap => lap,
+    Lap => lap::LapJointProblem,
 }
 
 impl ModelKind {
@@ -119,6 +151,11 @@ impl ModelKind {
     /// This problem's place in [`ModelKind::ALL`].
     pub(crate) fn index(self) -> usize {
         self as usize
+    }
+
+    /// What the generic layers know of the problem: its [`Description`], from its folder.
+    pub fn description(self) -> &'static Description {
+        self.problem().info()
     }
 
     /// The problem after this one in [`ModelKind::ALL`], the first after the last: what `m`
@@ -207,14 +244,24 @@ impl fmt::Display for ModelKind {
 }
 
 impl FromStr for ModelKind {
-    type Err = String;
+    type Err = UnknownModel;
 
     fn from_str(text: &str) -> Result<Self, Self::Err> {
         ModelKind::ALL
             .into_iter()
             .find(|k| k.name() == text)
-            .ok_or_else(|| format!("unknown model '{text}': must be {}", ModelKind::choices()))
+            .ok_or_else(|| UnknownModel {
+                text: text.to_string(),
+            })
     }
+}
+
+/// A model key that names no problem: what parsing a [`ModelKind`] refuses, listing the keys.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("unknown model '{text}': must be {}", ModelKind::choices())]
+pub struct UnknownModel {
+    /// The key as written.
+    pub text: String,
 }
 
 /// One value per problem, indexed by [`ModelKind`]: what a layer keeps for every problem at once
@@ -259,27 +306,7 @@ pub struct UnknownParam {
     pub model: ModelKind,
 }
 
-/// A parameter of any problem: what the TUI's parameter pane and presets iterate over.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Param {
-    /// A twin-beam parameter.
-    Beam(BeamParam),
-    /// A squeezed-plate parameter.
-    Plate(PlateParam),
-    /// A double-lap joint parameter.
-    Lap(LapParam),
-}
-
 impl Param {
-    /// Key, unit, meaning, domain and step.
-    pub fn spec(self) -> ParamSpec {
-        match self {
-            Param::Beam(p) => p.spec(),
-            Param::Plate(p) => p.spec(),
-            Param::Lap(p) => p.spec(),
-        }
-    }
-
     /// The key (`KT`).
     pub fn name(self) -> &'static str {
         self.spec().name
@@ -288,15 +315,6 @@ impl Param {
     /// The unit.
     pub fn unit(self) -> Unit {
         self.spec().unit
-    }
-
-    /// The model this parameter belongs to.
-    pub fn model(self) -> ModelKind {
-        match self {
-            Param::Beam(_) => ModelKind::Beam,
-            Param::Plate(_) => ModelKind::Plate,
-            Param::Lap(_) => ModelKind::Lap,
-        }
     }
 
     /// The values engineers usually give this parameter (see [`ParamSpec::usual`]).
