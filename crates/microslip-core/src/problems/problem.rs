@@ -25,6 +25,8 @@ use crate::problems::{Description, ModelKind, Param, Quantity, Solution};
 pub trait ParamKey: Debug + Clone + Copy + PartialEq + Eq + Hash + Send + Sync + 'static {
     /// Key, unit, meaning, domain and step.
     fn spec(self) -> ParamSpec;
+    /// Its place in its problem's [`Description::params`].
+    fn index(self) -> usize;
 }
 
 /// A benchmark problem: its description, its parameters, the model they validate into and the
@@ -110,6 +112,20 @@ pub trait Problem: Send + Sync + Sized + 'static {
                 let domain = p.spec().domain;
                 (domain.min(), domain.max())
             })
+    }
+
+    /// The same model with the parameter `key` set to the accepted value nearest to `value`
+    /// (its domain, then [`Problem::accepted_range`]): infallible, for sweeps and root finding
+    /// whose range was checked; should the model refuse it all the same, `model` as it is.
+    fn with_clamped(model: &Self::Model, key: Self::Key, value: f64) -> Self::Model {
+        let index = key.index();
+        let (lo, hi) = Self::accepted_range(model, index);
+        let mut params = Self::params(model);
+        let Some(slot) = Self::slot(&mut params, index) else {
+            return *model;
+        };
+        *slot = key.spec().domain.clamp(value).clamp(lo, hi);
+        Self::model(&params).unwrap_or(*model)
     }
 
     /// The 2-D continuum reference of the problem, where it has one ([`Continuum`]): how the

@@ -38,6 +38,11 @@ impl ParamKey for LapParam {
     fn spec(self) -> ParamSpec {
         LapParam::spec(self)
     }
+
+    fn index(self) -> usize {
+        // `ALL` is the description's order (`param_list!`) and holds every key.
+        LapParam::ALL.iter().position(|&p| p == self).unwrap_or(0)
+    }
 }
 
 impl Problem for LapJointProblem {

@@ -20,6 +20,11 @@ impl ParamKey for PlateParam {
     fn spec(self) -> ParamSpec {
         PlateParam::spec(self)
     }
+
+    fn index(self) -> usize {
+        // `ALL` is the description's order (`param_list!`) and holds every key.
+        PlateParam::ALL.iter().position(|&p| p == self).unwrap_or(0)
+    }
 }
 
 impl Problem for SqueezedPlateProblem {

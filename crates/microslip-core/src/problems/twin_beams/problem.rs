@@ -35,6 +35,11 @@ impl ParamKey for BeamParam {
     fn spec(self) -> ParamSpec {
         BeamParam::spec(self)
     }
+
+    fn index(self) -> usize {
+        // `ALL` is the description's order (`param_list!`) and holds every key.
+        BeamParam::ALL.iter().position(|&p| p == self).unwrap_or(0)
+    }
 }
 
 impl Problem for TwinBeamsProblem {
