@@ -35,13 +35,11 @@ pub struct LapModel {
 }
 
 impl ParamKey for LapParam {
+    // `ALL` is the description's order (`param_list!`).
+    const KEYS: &'static [LapParam] = &LapParam::ALL;
+
     fn spec(self) -> ParamSpec {
         LapParam::spec(self)
-    }
-
-    fn index(self) -> usize {
-        // `ALL` is the description's order (`param_list!`) and holds every key.
-        LapParam::ALL.iter().position(|&p| p == self).unwrap_or(0)
     }
 }
 

@@ -17,13 +17,11 @@ use crate::problems::{Description, Quantity};
 pub struct SqueezedPlateProblem;
 
 impl ParamKey for PlateParam {
+    // `ALL` is the description's order (`param_list!`).
+    const KEYS: &'static [PlateParam] = &PlateParam::ALL;
+
     fn spec(self) -> ParamSpec {
         PlateParam::spec(self)
-    }
-
-    fn index(self) -> usize {
-        // `ALL` is the description's order (`param_list!`) and holds every key.
-        PlateParam::ALL.iter().position(|&p| p == self).unwrap_or(0)
     }
 }
 

@@ -32,13 +32,11 @@ pub struct BeamsModel {
 }
 
 impl ParamKey for BeamParam {
+    // `ALL` is the description's order (`param_list!`).
+    const KEYS: &'static [BeamParam] = &BeamParam::ALL;
+
     fn spec(self) -> ParamSpec {
         BeamParam::spec(self)
-    }
-
-    fn index(self) -> usize {
-        // `ALL` is the description's order (`param_list!`) and holds every key.
-        BeamParam::ALL.iter().position(|&p| p == self).unwrap_or(0)
     }
 }
 
