@@ -612,7 +612,10 @@ mod tests {
 
     /// The answers of one law through its own types, written from the values by key name (not
     /// through the problem's `slot`), so that a slot mapped to the wrong field shows.
-    fn typed_answers(kind: ModelKind, values: &[f64]) -> Result<Answers, ParamError> {
+    fn typed_answers(
+        kind: ModelKind,
+        values: &[f64],
+    ) -> Result<(Answers, Option<f64>), ParamError> {
         let v = |name: &str| {
             let i = kind.params().iter().position(|p| p.name() == name);
             values[i.unwrap_or_else(|| panic!("{kind} has no key {name}"))]
@@ -632,10 +635,11 @@ mod tests {
                     ..TwinBeamsParams::PAPER
                 })?;
                 let force = TipForce::new(v("F"))?;
-                Answers {
+                let answers = Answers {
                     coulomb: of(&beams.coulomb(force)),
                     regularized: of(&beams.regularized(force)),
-                }
+                };
+                (answers, Some(beams.threshold_force()))
             }
             ModelKind::Plate => {
                 let plate = SqueezedPlate::new(PlateParams {
@@ -647,10 +651,11 @@ mod tests {
                     pressure: v("P"),
                     tangential_stiffness: v("KT"),
                 })?;
-                Answers {
+                let answers = Answers {
                     coulomb: of(&plate.coulomb()),
                     regularized: of(&plate.regularized()),
-                }
+                };
+                (answers, None)
             }
             ModelKind::Lap => {
                 let joint = LapJoint::new(LapParams {
@@ -665,10 +670,11 @@ mod tests {
                     tangential_stiffness: v("KT"),
                 })?;
                 let force = joint.force(v("F"))?;
-                Answers {
+                let answers = Answers {
                     coulomb: of(&joint.coulomb(force)),
                     regularized: of(&joint.regularized(force)),
-                }
+                };
+                (answers, Some(joint.gross_slip_force()))
             }
         })
     }
@@ -691,7 +697,7 @@ mod tests {
                 let inputs = problem.inputs_at(values).unwrap();
                 let model = inputs.validate();
                 match (erased, typed) {
-                    (Ok(e), Ok(t)) => {
+                    (Ok(e), Ok((t, scale))) => {
                         solved += 1;
                         for (a, b) in [(e.coulomb, t.coulomb), (e.regularized, t.regularized)] {
                             assert!(same(a.response, b.response), "{kind} {values:?}");
@@ -699,6 +705,11 @@ mod tests {
                             assert_eq!(a.regime, b.regime, "{kind} {values:?}");
                         }
                         let model = model.unwrap();
+                        assert_eq!(
+                            model.regime_scale().map(f64::to_bits),
+                            scale.map(f64::to_bits),
+                            "{kind} {values:?}"
+                        );
                         for q in kind.description().quantities {
                             let erased = problem.quantity_at(values, q.quantity).unwrap();
                             let typed = model.quantity(q.quantity);
