@@ -1,12 +1,59 @@
-//! The benchmark problems, one folder each, and the list of them. A problem's folder holds what is
-//! its own: parameters, closed forms, validity envelope, its independent discretized solver.
-//! Everything here is built on [`crate::kernel`] and [`crate::numeric`], which know no problem.
+//! The benchmark problems, one folder each, and the registry of them. A problem's folder holds
+//! what is its own: parameters, closed forms, validity envelope, its independent discretized
+//! solver. Everything here is built on [`crate::kernel`] and [`crate::numeric`], which know no
+//! problem.
 //!
-//! [`ModelKind`] lists the problems (spelled once, in `problem_list!`); each folder's
-//! [`Description`] is what the generic layers know of its problem; [`Param`] is a parameter of any
-//! of them, what presets, `--set`, the parameter pane, sweeps and solving for a target iterate
-//! over; [`ByProblem`] keeps one value per problem; [`Quantity`] and [`Solution`] name what every
-//! problem's solution answers.
+//! A problem is a type that implements [`Problem`] (its [`Description`], its parameters, the
+//! model they validate into, one solve's state) and the capabilities it has ([`Continuum`]; a
+//! capability a problem lacks is a trait it does not implement, not a `match` arm). The
+//! registry, `problem_list!` below, holds one line per problem (`Beam =>
+//! twin_beams::TwinBeamsProblem`) and generates from it [`ModelKind`] (with
+//! [`ModelKind::problem`], the problem as `&'static dyn` [`AnyProblem`]: what a caller uses
+//! instead of a `match` on the kind) and [`Param`] (a parameter of any problem, what presets,
+//! `--set`, the parameter pane, sweeps and solving for a target iterate over). [`ByProblem`]
+//! keeps one value per problem; [`Quantity`] and [`Solution`] name what every problem's solution
+//! answers.
+//!
+//! [`Inputs`](inputs::Inputs) and [`Model`](inputs::Model) are still hand-written enums with a
+//! variant per problem (the application matches on their variants in about 130 places);
+//! every method on them goes through the problem's [`Problem`] impl, so they hold no per-problem
+//! logic, only the bridge (`to_inputs`, `from_inputs`, `to_model`, `from_model`) each folder
+//! writes. They go when their callers use [`AnyProblem`] or the typed [`Problem`] instead.
+//!
+//! # Adding a problem
+//! A fourth problem (the Hertzian cylinder, say) is, in this crate:
+//! 1. **Its folder** `problems/cylinder/`, naming no other problem (`tests/layering.rs` checks it):
+//!    - `params.rs`: the parameter key enum (`CylinderParam`, with `ALL` in display order and a
+//!      `spec()` giving key, unit, meaning, domain, usual range and step; `FromStr` through
+//!      [`ParamKey::parse_key`]) and the raw parameter struct with a `PAPER` (or bundled) data
+//!      set and `value_mut`;
+//!    - `closed_form.rs`: the validated model (a checked `new -> Result<_, ParamError>`) and
+//!      one state per law, each implementing [`Solution`];
+//!    - `validity.rs`: where the closed form holds; `discretized.rs`: the independent solver
+//!      (never importing the closed forms: `tests/layering.rs`); `cycle.rs` if it is driven by
+//!      a load; `continuum.rs` if it has a 2-D reference;
+//!    - `mod.rs`: its `DESCRIPTION` (key, title, summary, paper preset, parameters through
+//!      `param_list!`, quantities, load) and its `quantity` function;
+//!    - `problem.rs`: the unit struct (`CylinderProblem`) implementing [`ParamKey`] for its key
+//!      enum, [`Problem`] (and [`Continuum`] and the other capabilities it has). Its `State` is
+//!      [`problem::Laws`] of its two law states.
+//! 2. **One registry line** in `problem_list!` below: `Cylinder => cylinder::CylinderProblem,`
+//!    with its doc comment. [`ModelKind`], [`ModelKind::ALL`], [`ModelKind::problem`] and
+//!    [`Param`] follow from it; [`ByProblem`] grows a slot.
+//! 3. **While the enums last**, a variant in [`Inputs`](inputs::Inputs) and
+//!    [`Model`](inputs::Model) and their `kind` arms (`problems/inputs.rs`); the folder's
+//!    `problem.rs` writes the bridge to them.
+//! 4. **Its presets**: `presets/<paper-preset>.toml`, named by [`Description::paper_preset`].
+//! 5. **Its tests**: its folder's unit tests (closed form against hand values and its
+//!    discretized solver, validity edges), a `tests/<name>_properties.rs` of properties over
+//!    random inputs; the registry tests in `problems/problem.rs` cover it without an edit once
+//!    the typed cross-check there (`typed_answers`) gets its arm.
+//! 6. **Its docs**: its section in `docs/theory.md` (the equations its closed forms implement,
+//!    cited by number in its doc comments) and its line in the guide's list of problems.
+//!
+//! The files outside the folders that still name a problem's types (the application's layers
+//! that match on a problem's kind) are what a new problem would touch beyond this list; each
+//! port to [`AnyProblem`] or [`Problem`] lowers that count.
 
 use std::fmt;
 use std::str::FromStr;
@@ -44,8 +91,8 @@ pub use plate::params::PlateParam;
 pub use twin_beams::params::BeamParam;
 
 /// What the generic layers (presets, deck headers, commands, the parameter pane, targets) know
-/// of a problem, as data: a new problem writes one in its folder and adds its line to
-/// `problem_list!`, which hands it out through [`ModelKind::description`].
+/// of a problem, as data: a new problem writes one in its folder and hands it out as its
+/// [`Problem::INFO`]; [`ModelKind::description`] reads it through the registry.
 #[derive(Debug)]
 pub struct Description {
     /// The key in presets (`model = "beam"`), commands and JSON.
