@@ -483,86 +483,40 @@ impl<P: Problem + Registered> AnyProblem for P {
     }
 }
 
+/// The checks every problem's `problem.rs` runs on itself (its tests call them with its own
+/// typed path), so that a new problem gets them by calling them, and this file names none.
 #[cfg(test)]
-mod tests {
+pub(crate) mod checks {
     use super::*;
-    use crate::problems::LapParam;
-    use crate::problems::lap::LapJointProblem;
-    use crate::problems::lap::closed_form::{LapJoint, LapParams};
-    use crate::problems::plate::SqueezedPlateProblem;
-    use crate::problems::plate::closed_form::{PlateParams, SqueezedPlate};
-    use crate::problems::twin_beams::TwinBeamsProblem;
-    use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams, TwinBeamsParams};
 
-    /// The typed side of a problem agrees with its description: one key per listed parameter, in
-    /// the same order, each knowing its own place; its paper values are its own.
-    fn typed_agrees<P: Problem + Registered>() {
+    /// The typed side of `P` agrees with its description and the registry: one key per listed
+    /// parameter, in the same order, each knowing its own place and parsing back; every slot is
+    /// its own field; its erased self is its registry entry.
+    pub(crate) fn registered<P: Problem + Registered>() {
         let info = P::INFO;
-        assert_eq!(P::KIND.description().key, info.key);
+        let kind = P::KIND;
+        assert_eq!(kind.description().key, info.key);
+        assert!(ModelKind::ALL.contains(&kind));
+        assert_eq!(kind.problem().kind(), kind);
+        assert_eq!(kind.name().parse::<ModelKind>(), Ok(kind));
+        assert_eq!(kind.problem().paper_inputs(), P::to_inputs(P::paper()));
         assert_eq!(
             <P::Key as ParamKey>::KEYS.len(),
             info.params.len(),
-            "{}",
-            info.key
+            "{kind}"
         );
-        for (i, (&key, &param)) in <P::Key as ParamKey>::KEYS
-            .iter()
-            .zip(info.params)
-            .enumerate()
-        {
-            assert_eq!(key.spec(), param.spec(), "{}: {}", info.key, param);
-            assert_eq!(key.index(), i, "{}: {}", info.key, param);
+        let keys = <P::Key as ParamKey>::KEYS.iter();
+        for (i, (&key, &param)) in keys.zip(info.params).enumerate() {
+            assert_eq!(key.spec(), param.spec(), "{kind}: {param}");
+            assert_eq!(key.index(), i, "{kind}: {param}");
+            assert_eq!(param.model(), kind, "{param}");
             assert_eq!(P::index_of(param), Some(i));
-            assert_eq!(P::Key::parse_key(param.name(), P::KIND), Ok(key));
+            assert_eq!(P::Key::parse_key(param.name(), kind), Ok(key));
         }
-        // Every slot is its own field: values written by index read back by index.
         let values: Vec<f64> = (0..info.params.len()).map(|i| 1000.0 + i as f64).collect();
         let params = P::from_values(&values).unwrap();
-        assert_eq!(P::values(&params), values, "{}", info.key);
+        assert_eq!(P::values(&params), values, "{kind}");
         assert!(P::slot(&mut P::paper(), info.params.len()).is_none());
-    }
-
-    #[test]
-    fn the_registry_and_model_kind_all_agree() {
-        typed_agrees::<TwinBeamsProblem>();
-        typed_agrees::<SqueezedPlateProblem>();
-        typed_agrees::<LapJointProblem>();
-        let mut keys = Vec::new();
-        for kind in ModelKind::ALL {
-            let problem = kind.problem();
-            assert_eq!(problem.kind(), kind);
-            assert_eq!(problem.info().key, kind.name());
-            assert_eq!(kind.name().parse::<ModelKind>(), Ok(kind));
-            for &param in kind.params() {
-                assert_eq!(param.model(), kind, "{param}");
-            }
-            assert_eq!(problem.paper_inputs().kind(), kind);
-            assert_eq!(problem.paper_inputs(), Inputs::paper(kind));
-            keys.push(kind.name());
-        }
-        keys.sort_unstable();
-        keys.dedup();
-        assert_eq!(keys.len(), ModelKind::ALL.len(), "two problems share a key");
-        // The capability is where the problem has it.
-        assert!(ModelKind::Beam.problem().continuum().is_none());
-        assert!(ModelKind::Plate.problem().continuum().is_some());
-        assert!(ModelKind::Lap.problem().continuum().is_some());
-    }
-
-    #[test]
-    fn an_unknown_model_says_the_keys_and_a_wrong_count_says_how_many() {
-        assert_eq!(
-            "beams".parse::<ModelKind>().unwrap_err().to_string(),
-            "unknown model 'beams': must be \"beam\", \"plate\" or \"lap\""
-        );
-        assert_eq!(
-            ModelKind::Plate
-                .problem()
-                .answers(&[1.0; 3])
-                .unwrap_err()
-                .to_string(),
-            "the plate problem takes 7 parameter values, got 3"
-        );
     }
 
     /// Pseudo-random values (a fixed linear congruential sequence, so a failure repeats), each
@@ -610,160 +564,122 @@ mod tests {
         points
     }
 
-    /// The answers of one law through its own types, written from the values by key name (not
-    /// through the problem's `slot`), so that a slot mapped to the wrong field shows.
-    fn typed_answers(
-        kind: ModelKind,
-        values: &[f64],
-    ) -> Result<(Answers, Option<f64>), ParamError> {
-        let v = |name: &str| {
-            let i = kind.params().iter().position(|p| p.name() == name);
-            values[i.unwrap_or_else(|| panic!("{kind} has no key {name}"))]
-        };
-        let of = |s: &dyn Solution| LawAnswer::of(s);
-        Ok(match kind {
-            ModelKind::Beam => {
-                let beams = TwinBeams::new(TwinBeamsParams {
-                    length: v("L"),
-                    width: v("b"),
-                    half_height: v("h"),
-                    youngs_modulus: v("E"),
-                    pressure: v("P"),
-                    friction: v("mu"),
-                    tangential_stiffness: v("KT"),
-                    poisson: v("nu"),
-                    ..TwinBeamsParams::PAPER
-                })?;
-                let force = TipForce::new(v("F"))?;
-                let answers = Answers {
-                    coulomb: of(&beams.coulomb(force)),
-                    regularized: of(&beams.regularized(force)),
-                };
-                (answers, Some(beams.threshold_force()))
-            }
-            ModelKind::Plate => {
-                let plate = SqueezedPlate::new(PlateParams {
-                    half_length: v("L"),
-                    thickness: v("tp"),
-                    youngs_modulus: v("E"),
-                    poisson: v("nu"),
-                    friction: v("mu"),
-                    pressure: v("P"),
-                    tangential_stiffness: v("KT"),
-                })?;
-                let answers = Answers {
-                    coulomb: of(&plate.coulomb()),
-                    regularized: of(&plate.regularized()),
-                };
-                (answers, None)
-            }
-            ModelKind::Lap => {
-                let joint = LapJoint::new(LapParams {
-                    length: v("L"),
-                    width: v("b"),
-                    inner_thickness: v("t1"),
-                    cover_thickness: v("t2"),
-                    inner_modulus: v("E1"),
-                    cover_modulus: v("E2"),
-                    pressure: v("P"),
-                    friction: v("mu"),
-                    tangential_stiffness: v("KT"),
-                })?;
-                let force = joint.force(v("F"))?;
-                let answers = Answers {
-                    coulomb: of(&joint.coulomb(force)),
-                    regularized: of(&joint.regularized(force)),
-                };
-                (answers, Some(joint.gross_slip_force()))
-            }
-        })
-    }
-
     /// Bit-identical: both paths call the same closed forms, so any difference is a mapping bug.
     fn same(a: f64, b: f64) -> bool {
         a.to_bits() == b.to_bits()
     }
 
-    #[test]
-    fn every_problem_answers_the_same_erased_as_typed() {
-        for kind in ModelKind::ALL {
-            let problem = kind.problem();
-            let mut points = vec![problem.paper_values()];
-            points.extend(random_points(kind, 40));
-            let mut solved = 0;
-            for values in &points {
-                let erased = problem.answers(values);
-                let typed = typed_answers(kind, values);
-                let inputs = problem.inputs_at(values).unwrap();
-                let model = inputs.validate();
-                match (erased, typed) {
-                    (Ok(e), Ok((t, scale))) => {
-                        solved += 1;
-                        for (a, b) in [(e.coulomb, t.coulomb), (e.regularized, t.regularized)] {
-                            assert!(same(a.response, b.response), "{kind} {values:?}");
-                            assert!(same(a.zone_end, b.zone_end), "{kind} {values:?}");
-                            assert_eq!(a.regime, b.regime, "{kind} {values:?}");
-                        }
-                        let model = model.unwrap();
-                        assert_eq!(
-                            model.regime_scale().map(f64::to_bits),
-                            scale.map(f64::to_bits),
-                            "{kind} {values:?}"
-                        );
-                        for q in kind.description().quantities {
-                            let erased = problem.quantity_at(values, q.quantity).unwrap();
-                            let typed = model.quantity(q.quantity);
-                            assert_eq!(
-                                erased.map(f64::to_bits),
-                                typed.map(f64::to_bits),
-                                "{kind} {}",
-                                q.name
-                            );
-                        }
-                        // The enum path reads the same values back.
-                        for (&param, &value) in kind.params().iter().zip(values) {
-                            assert_eq!(model.inputs().get(param), Some(value), "{param}");
-                        }
-                    }
-                    (Err(ProblemError::Param(e)), Err(t)) => {
-                        assert_eq!(e, t, "{kind} {values:?}");
-                        assert_eq!(model.unwrap_err(), t, "{kind} {values:?}");
-                    }
-                    (e, t) => panic!("{kind} {values:?}: erased {e:?}, typed {t:?}"),
-                }
-            }
-            // The random points are not all refused (the lap joint's F <= F_gross refuses some).
-            assert!(
-                solved > points.len() / 2,
-                "{kind}: {solved} of {}",
-                points.len()
-            );
+    /// Both laws' answers from any problem's states, as the typed paths give them.
+    pub(crate) fn answers(coulomb: &dyn Solution, regularized: &dyn Solution) -> Answers {
+        Answers {
+            coulomb: LawAnswer::of(coulomb),
+            regularized: LawAnswer::of(regularized),
         }
     }
 
+    /// `kind`'s erased problem and its [`Model`] enum answer exactly as `typed` (the problem's
+    /// closed forms called by hand from the values, looked up by key name, with its regime
+    /// scale) at the paper data and 40 random points: responses, zone ends, regimes, every
+    /// quantity of its description, the regime scale and the values read back; and refuse
+    /// exactly where `typed` refuses, with the same error.
+    pub(crate) fn erased_answers_as_typed(
+        kind: ModelKind,
+        typed: impl Fn(&dyn Fn(&str) -> f64) -> Result<(Answers, Option<f64>), ParamError>,
+    ) {
+        let problem = kind.problem();
+        let mut points = vec![problem.paper_values()];
+        points.extend(random_points(kind, 40));
+        let mut solved = 0;
+        for values in &points {
+            let by_name = |name: &str| {
+                let i = kind.params().iter().position(|p| p.name() == name);
+                values[i.unwrap_or_else(|| panic!("{kind} has no key {name}"))]
+            };
+            let erased = problem.answers(values);
+            let model = problem.inputs_at(values).unwrap().validate();
+            match (erased, typed(&by_name)) {
+                (Ok(e), Ok((t, scale))) => {
+                    solved += 1;
+                    for (a, b) in [(e.coulomb, t.coulomb), (e.regularized, t.regularized)] {
+                        assert!(same(a.response, b.response), "{kind} {values:?}");
+                        assert!(same(a.zone_end, b.zone_end), "{kind} {values:?}");
+                        assert_eq!(a.regime, b.regime, "{kind} {values:?}");
+                    }
+                    let model = model.unwrap();
+                    assert_eq!(
+                        model.regime_scale().map(f64::to_bits),
+                        scale.map(f64::to_bits),
+                        "{kind} {values:?}"
+                    );
+                    for q in kind.description().quantities {
+                        let erased = problem.quantity_at(values, q.quantity).unwrap();
+                        let through_enum = model.quantity(q.quantity);
+                        assert_eq!(
+                            erased.map(f64::to_bits),
+                            through_enum.map(f64::to_bits),
+                            "{kind} {}",
+                            q.name
+                        );
+                    }
+                    for (&param, &value) in kind.params().iter().zip(values) {
+                        assert_eq!(model.inputs().get(param), Some(value), "{param}");
+                    }
+                }
+                (Err(ProblemError::Param(e)), Err(t)) => {
+                    assert_eq!(e, t, "{kind} {values:?}");
+                    assert_eq!(model.unwrap_err(), t, "{kind} {values:?}");
+                }
+                (e, t) => panic!("{kind} {values:?}: erased {e:?}, typed {t:?}"),
+            }
+        }
+        // Most random points are accepted (the lap joint's F <= F_gross refuses some).
+        assert!(
+            solved > points.len() / 2,
+            "{kind}: {solved} of {}",
+            points.len()
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
     #[test]
-    fn typed_clamping_agrees_with_the_enum_and_keeps_the_lap_force_carried() {
-        let model = Inputs::paper(ModelKind::Lap).validate().unwrap();
-        let typed = LapJointProblem::from_model(&model).unwrap();
-        let gross = typed.joint.gross_slip_force();
-        for (key, value) in [
-            (LapParam::Force, 10.0 * gross),
-            (LapParam::Length, 1e-9),
-            (LapParam::Friction, 0.05),
-            (LapParam::Stiffness, -1.0),
-        ] {
-            let clamped = LapJointProblem::with_clamped(&typed, key, value);
+    fn the_registry_lists_every_problem_once() {
+        let mut keys: Vec<&str> = ModelKind::ALL.iter().map(|k| k.name()).collect();
+        for (i, kind) in ModelKind::ALL.into_iter().enumerate() {
+            assert_eq!(kind.problem().kind(), kind);
+            assert_eq!(kind as usize, i);
+        }
+        keys.sort_unstable();
+        keys.dedup();
+        assert_eq!(keys.len(), ModelKind::ALL.len(), "two problems share a key");
+    }
+
+    #[test]
+    fn an_unknown_model_says_the_keys_and_a_wrong_count_says_how_many() {
+        let keys: Vec<String> = ModelKind::ALL
+            .iter()
+            .map(|k| format!("\"{}\"", k.name()))
+            .collect();
+        assert_eq!(
+            "beams".parse::<ModelKind>().unwrap_err().to_string(),
+            "unknown model 'beams': must be \"beam\", \"plate\" or \"lap\""
+        );
+        assert!(ModelKind::choices().ends_with(&format!(" or {}", keys[keys.len() - 1])));
+        for kind in ModelKind::ALL {
+            let count = kind.params().len();
             assert_eq!(
-                LapJointProblem::to_model(clamped),
-                model.with_clamped(Param::Lap(key), value),
-                "{key}"
+                kind.problem()
+                    .answers(&vec![1.0; count + 1])
+                    .unwrap_err()
+                    .to_string(),
+                format!(
+                    "the {kind} problem takes {count} parameter values, got {}",
+                    count + 1
+                )
             );
         }
-        // F far beyond F_gross is held at F_gross; L far below is held where F_gross = F.
-        let held = LapJointProblem::with_clamped(&typed, LapParam::Force, 10.0 * gross);
-        assert_eq!(held.force.newtons(), gross);
-        let short = LapJointProblem::with_clamped(&typed, LapParam::Length, 1e-9);
-        assert!(short.joint.gross_slip_force() >= typed.force.newtons());
-        assert!(short.joint.params().length < typed.joint.params().length);
     }
 }

@@ -191,3 +191,58 @@ impl Continuum for LapJointProblem {
         reference.delta
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::problems::problem::checks;
+    use crate::problems::{ModelKind, Param, Problem};
+
+    #[test]
+    fn the_joint_is_registered_and_answers_the_same_erased_as_typed() {
+        checks::registered::<LapJointProblem>();
+        assert!(LapJointProblem::continuum().is_some());
+        checks::erased_answers_as_typed(ModelKind::Lap, |v| {
+            let joint = LapJoint::new(LapParams {
+                length: v("L"),
+                width: v("b"),
+                inner_thickness: v("t1"),
+                cover_thickness: v("t2"),
+                inner_modulus: v("E1"),
+                cover_modulus: v("E2"),
+                pressure: v("P"),
+                friction: v("mu"),
+                tangential_stiffness: v("KT"),
+            })?;
+            let force = joint.force(v("F"))?;
+            let answers = checks::answers(&joint.coulomb(force), &joint.regularized(force));
+            Ok((answers, Some(joint.gross_slip_force())))
+        });
+    }
+
+    #[test]
+    fn typed_clamping_agrees_with_the_enum_and_keeps_the_force_carried() {
+        let model = Inputs::paper(ModelKind::Lap).validate().unwrap();
+        let typed = LapJointProblem::from_model(&model).unwrap();
+        let gross = typed.joint.gross_slip_force();
+        for (key, value) in [
+            (LapParam::Force, 10.0 * gross),
+            (LapParam::Length, 1e-9),
+            (LapParam::Friction, 0.05),
+            (LapParam::Stiffness, -1.0),
+        ] {
+            let clamped = LapJointProblem::with_clamped(&typed, key, value);
+            assert_eq!(
+                LapJointProblem::to_model(clamped),
+                model.with_clamped(Param::Lap(key), value),
+                "{key}"
+            );
+        }
+        // F far beyond F_gross is held at F_gross; L far below is held where F_gross = F.
+        let held = LapJointProblem::with_clamped(&typed, LapParam::Force, 10.0 * gross);
+        assert_eq!(held.force.newtons(), gross);
+        let short = LapJointProblem::with_clamped(&typed, LapParam::Length, 1e-9);
+        assert!(short.joint.gross_slip_force() >= typed.force.newtons());
+        assert!(short.joint.params().length < typed.joint.params().length);
+    }
+}

@@ -120,3 +120,31 @@ impl Continuum for SqueezedPlateProblem {
         reference.end_displacement_mean
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::problems::problem::checks;
+    use crate::problems::{ModelKind, Problem};
+
+    #[test]
+    fn the_plate_is_registered_and_answers_the_same_erased_as_typed() {
+        checks::registered::<SqueezedPlateProblem>();
+        assert!(SqueezedPlateProblem::continuum().is_some());
+        checks::erased_answers_as_typed(ModelKind::Plate, |v| {
+            let plate = SqueezedPlate::new(PlateParams {
+                half_length: v("L"),
+                thickness: v("tp"),
+                youngs_modulus: v("E"),
+                poisson: v("nu"),
+                friction: v("mu"),
+                pressure: v("P"),
+                tangential_stiffness: v("KT"),
+            })?;
+            Ok((
+                checks::answers(&plate.coulomb(), &plate.regularized()),
+                None,
+            ))
+        });
+    }
+}

@@ -142,3 +142,33 @@ impl Problem for TwinBeamsProblem {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::problems::problem::checks;
+    use crate::problems::{ModelKind, Problem};
+
+    #[test]
+    fn the_beams_are_registered_and_answer_the_same_erased_as_typed() {
+        checks::registered::<TwinBeamsProblem>();
+        // No 2-D continuum of the beams yet (issue 33).
+        assert!(TwinBeamsProblem::continuum().is_none());
+        checks::erased_answers_as_typed(ModelKind::Beam, |v| {
+            let beams = TwinBeams::new(TwinBeamsParams {
+                length: v("L"),
+                width: v("b"),
+                half_height: v("h"),
+                youngs_modulus: v("E"),
+                pressure: v("P"),
+                friction: v("mu"),
+                tangential_stiffness: v("KT"),
+                poisson: v("nu"),
+                ..TwinBeamsParams::PAPER
+            })?;
+            let force = TipForce::new(v("F"))?;
+            let answers = checks::answers(&beams.coulomb(force), &beams.regularized(force));
+            Ok((answers, Some(beams.threshold_force())))
+        });
+    }
+}
