@@ -3,10 +3,13 @@
 //! TUI all edit an [`Inputs`] and validate it through the checked constructors.
 
 use crate::kernel::params::ParamError;
+use crate::problems::lap::LapJointProblem;
 use crate::problems::lap::closed_form::{JointForce, LapJoint, LapParams};
+use crate::problems::plate::SqueezedPlateProblem;
 use crate::problems::plate::closed_form::{PlateParams, SqueezedPlate};
+use crate::problems::twin_beams::TwinBeamsProblem;
 use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams, TwinBeamsParams};
-use crate::problems::{ModelKind, Param, Quantity, UnknownParam};
+use crate::problems::{ModelKind, Param, Problem, Quantity, UnknownParam};
 
 /// Unvalidated inputs of one model, as read from a preset, flags or key presses.
 ///
@@ -86,27 +89,22 @@ impl Model {
     /// The twin beams and their tip force, when this is the twin-beam problem: how a caller that
     /// asked for beams gets them typed, without a match that could only fail by a bug.
     pub fn into_beams(self) -> Result<(TwinBeams, TipForce), ModelKind> {
-        match self {
-            Model::Beam { beams, force } => Ok((beams, force)),
-            other => Err(other.kind()),
-        }
+        TwinBeamsProblem::from_model(&self)
+            .map(|m| (m.beams, m.force))
+            .ok_or(self.kind())
     }
 
     /// The squeezed plate, when this is the plate problem (see [`Model::into_beams`]).
     pub fn into_plate(self) -> Result<SqueezedPlate, ModelKind> {
-        match self {
-            Model::Plate(plate) => Ok(plate),
-            other => Err(other.kind()),
-        }
+        SqueezedPlateProblem::from_model(&self).ok_or(self.kind())
     }
 
     /// The lap joint and its force, when this is the lap-joint problem (see
     /// [`Model::into_beams`]).
     pub fn into_lap(self) -> Result<(LapJoint, JointForce), ModelKind> {
-        match self {
-            Model::Lap { joint, force } => Ok((joint, force)),
-            other => Err(other.kind()),
-        }
+        LapJointProblem::from_model(&self)
+            .map(|m| (m.joint, m.force))
+            .ok_or(self.kind())
     }
 
     /// Which model this is.
