@@ -20,8 +20,8 @@ use crate::numeric::NumericError;
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::{Description, ModelKind, Param, Quantity, Solution, UnknownParam};
 
-/// One parameter of one problem, typed (`BeamParam`, `PlateParam`, ...): what the generated
-/// [`Param`] wraps, one variant per problem.
+/// One parameter of one problem, typed (each folder's key enum, in its `params.rs`): what the
+/// generated [`Param`] wraps, one variant per problem.
 pub trait ParamKey: Debug + Clone + Copy + PartialEq + Eq + Hash + Send + Sync + 'static {
     /// Every key of the problem, in the order of its [`Description::params`].
     const KEYS: &'static [Self];
