@@ -340,6 +340,24 @@ pub trait Registered {
 /// [`Description::params`], answers as plain numbers, and the bridges to the enums the
 /// application still matches on. Every registered [`Problem`] is one (blanket impl); the registry hands them
 /// out as `&'static dyn AnyProblem`.
+///
+/// # Examples
+/// Code written once for every problem, with no `match` on the kind:
+/// ```
+/// use microslip_core::problems::ModelKind;
+/// for kind in ModelKind::ALL {
+///     let problem = kind.problem();
+///     let mut values = problem.paper_values();
+///     let answers = problem.answers(&values)?;
+///     // Every bundled data set is loaded: the regularized response is positive.
+///     assert!(answers.regularized.response > 0.0, "{kind}");
+///     // Values are indexed like the description's parameters; a bad one is refused by name.
+///     values[0] = -1.0;
+///     let refused = problem.answers(&values).unwrap_err().to_string();
+///     assert!(refused.starts_with(&format!("invalid {} = -1", kind.params()[0])));
+/// }
+/// # Ok::<(), microslip_core::problems::problem::ProblemError>(())
+/// ```
 pub trait AnyProblem: Send + Sync {
     /// What the generic layers know of the problem.
     fn info(&self) -> &'static Description;
