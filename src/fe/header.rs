@@ -324,7 +324,9 @@ impl DeckHeader {
         let number_of = |key: &str, text: &str| {
             parse_number(text).ok_or_else(|| fail(format!("{key} = '{text}' is not a number")))
         };
-        let kind: ModelKind = take("model")?.parse().map_err(fail)?;
+        let kind: ModelKind = take("model")?
+            .parse()
+            .map_err(|e: crate::problems::UnknownModel| fail(e.to_string()))?;
         let mesh = match take("mesh")? {
             "coarse" => DeckMesh::Coarse,
             "fine" => DeckMesh::Fine,

@@ -13,7 +13,7 @@ pub struct MeshDensity {
     /// Smallest element, as a fraction of the interface's shortest length scale.
     pub smallest_fraction: f64,
     /// Refine around the slip front the solver found, where the grading did not put small elements
-    /// (the plate's microslip end near its centre, [`crate::problems::plate::PlateFe::load_to`]):
+    /// (the plate's microslip end near its centre, found while its 1-D solver steps the load):
     /// on by default; off to study the convergence of the graded mesh alone.
     pub refine_at_front: bool,
 }

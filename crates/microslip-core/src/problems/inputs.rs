@@ -3,12 +3,13 @@
 //! TUI all edit an [`Inputs`] and validate it through the checked constructors.
 
 use crate::kernel::params::ParamError;
+use crate::problems::lap::LapJointProblem;
 use crate::problems::lap::closed_form::{JointForce, LapJoint, LapParams};
+use crate::problems::plate::SqueezedPlateProblem;
 use crate::problems::plate::closed_form::{PlateParams, SqueezedPlate};
+use crate::problems::twin_beams::TwinBeamsProblem;
 use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams, TwinBeamsParams};
-use crate::problems::{
-    BeamParam, LapParam, ModelKind, Param, Quantity, UnknownParam, lap, plate, twin_beams,
-};
+use crate::problems::{ModelKind, Param, Problem, Quantity, UnknownParam};
 
 /// Unvalidated inputs of one model, as read from a preset, flags or key presses.
 ///
@@ -88,27 +89,22 @@ impl Model {
     /// The twin beams and their tip force, when this is the twin-beam problem: how a caller that
     /// asked for beams gets them typed, without a match that could only fail by a bug.
     pub fn into_beams(self) -> Result<(TwinBeams, TipForce), ModelKind> {
-        match self {
-            Model::Beam { beams, force } => Ok((beams, force)),
-            other => Err(other.kind()),
-        }
+        TwinBeamsProblem::from_model(&self)
+            .map(|m| (m.beams, m.force))
+            .ok_or(self.kind())
     }
 
     /// The squeezed plate, when this is the plate problem (see [`Model::into_beams`]).
     pub fn into_plate(self) -> Result<SqueezedPlate, ModelKind> {
-        match self {
-            Model::Plate(plate) => Ok(plate),
-            other => Err(other.kind()),
-        }
+        SqueezedPlateProblem::from_model(&self).ok_or(self.kind())
     }
 
     /// The lap joint and its force, when this is the lap-joint problem (see
     /// [`Model::into_beams`]).
     pub fn into_lap(self) -> Result<(LapJoint, JointForce), ModelKind> {
-        match self {
-            Model::Lap { joint, force } => Ok((joint, force)),
-            other => Err(other.kind()),
-        }
+        LapJointProblem::from_model(&self)
+            .map(|m| (m.joint, m.force))
+            .ok_or(self.kind())
     }
 
     /// Which model this is.
@@ -122,17 +118,11 @@ impl Model {
 
     /// The inputs this model was validated from.
     pub fn inputs(&self) -> Inputs {
-        match *self {
-            Model::Beam { beams, force } => Inputs::Beam {
-                structure: beams.params(),
-                force: force.newtons(),
-            },
-            Model::Plate(plate) => Inputs::Plate(plate.params()),
-            Model::Lap { joint, force } => Inputs::Lap {
-                structure: joint.params(),
-                force: force.newtons(),
-            },
-        }
+        // Every model is its own problem's: the registry's bridge always answers.
+        self.kind().problem().model_inputs(self).unwrap_or_else(|| {
+            debug_assert!(false, "a {} model its problem does not read", self.kind());
+            Inputs::paper(self.kind())
+        })
     }
 
     /// The same model with `param` set to the accepted value nearest to `value` (see
@@ -155,27 +145,21 @@ impl Model {
     /// This model at zero load (the plate has none): for what does not depend on the load, so
     /// that the load's own limit (the lap joint's F <= F_gross) cannot constrain it.
     pub fn unloaded(&self) -> Model {
-        match *self {
-            Model::Beam { beams, .. } => Model::Beam {
-                beams,
-                force: TipForce::clamped(0.0),
-            },
-            Model::Plate(plate) => Model::Plate(plate),
-            Model::Lap { joint, .. } => Model::Lap {
-                joint,
-                force: joint.clamped_force(0.0),
-            },
+        let Some(load) = self.kind().description().load else {
+            return *self;
+        };
+        let mut inputs = self.inputs();
+        if inputs.set(load, 0.0).is_err() {
+            return *self;
         }
+        // Zero is in every load's domain and within what any structure carries.
+        inputs.validate().unwrap_or(*self)
     }
 
     /// The value of `quantity` for this model, computed by its problem; `None` where the problem
     /// has no such quantity or it is not defined here (see [`crate::problems::Quantity`]).
     pub fn quantity(&self, quantity: Quantity) -> Option<f64> {
-        match self {
-            Model::Beam { beams, force } => twin_beams::quantity(beams, *force, quantity),
-            Model::Plate(plate) => plate::quantity(plate, quantity),
-            Model::Lap { joint, force } => lap::quantity(joint, *force, quantity),
-        }
+        self.kind().problem().model_quantity(self, quantity)
     }
 
     /// The load at which the regimes change, the scale the problem's load parameter steps and
@@ -183,103 +167,48 @@ impl Model {
     /// bound); None for a problem without a load parameter
     /// ([`crate::problems::Description::load`]).
     pub fn regime_scale(&self) -> Option<f64> {
-        match self {
-            Model::Beam { beams, .. } => Some(beams.threshold_force()),
-            Model::Plate(_) => None,
-            Model::Lap { joint, .. } => Some(joint.gross_slip_force()),
-        }
+        self.kind().problem().model_regime_scale(self)
     }
 
     /// The values `param` may take with every other input as in this model: its domain, and for
     /// the lap joint also F <= F_gross = 2 b mu P L, which bounds F from above and L, b, P and mu
     /// from below (F_gross is proportional to each of them). What a chart or sweep over `param`
-    /// keeps inside, so that every point of it has a state.
+    /// keeps inside, so that every point of it has a state. A parameter of another problem gets
+    /// its domain.
     pub fn accepted_range(&self, param: Param) -> (f64, f64) {
-        let domain = param.spec().domain;
-        let (min, max) = (domain.min(), domain.max());
-        let Model::Lap { joint, force } = self else {
-            return (min, max);
-        };
-        let Param::Lap(lap_param) = param else {
-            return (min, max);
-        };
-        let gross = joint.gross_slip_force();
-        match lap_param {
-            LapParam::Force => (min, max.min(gross)),
-            LapParam::Length | LapParam::Width | LapParam::Pressure | LapParam::Friction => {
-                let value = self.inputs().get(param).unwrap_or(min);
-                // The value at which F_gross falls to F, moved up past round-off until the
-                // force is accepted there (a few ulps at most).
-                let mut lowest = min.max(value * force.newtons() / gross).min(max);
-                let mut inputs = self.inputs();
-                for _ in 0..8 {
-                    if inputs.set(param, lowest).is_ok() && inputs.validate().is_ok() {
-                        break;
-                    }
-                    lowest = lowest.next_up().min(max);
-                }
-                (lowest, max)
-            }
-            _ => (min, max),
-        }
+        self.kind()
+            .problem()
+            .model_accepted_range(self, param)
+            .unwrap_or_else(|| {
+                let domain = param.spec().domain;
+                (domain.min(), domain.max())
+            })
     }
 
     /// The model's interface data.
     pub fn interface(&self) -> InterfaceData {
-        match self {
-            Model::Beam { beams, .. } => {
-                let p = beams.params();
-                InterfaceData {
-                    length: p.length,
-                    friction: p.friction,
-                    pressure: p.pressure,
-                    modulus: p.youngs_modulus,
-                    stiffness: p.tangential_stiffness,
-                    poisson: None,
-                }
+        let problem = self.kind().problem();
+        problem.model_interface(self).unwrap_or_else(|| {
+            debug_assert!(false, "a {} model its problem does not read", self.kind());
+            InterfaceData {
+                length: f64::NAN,
+                friction: f64::NAN,
+                pressure: f64::NAN,
+                modulus: f64::NAN,
+                stiffness: f64::NAN,
+                poisson: None,
             }
-            Model::Plate(plate) => {
-                let p = plate.params();
-                InterfaceData {
-                    length: p.half_length,
-                    friction: p.friction,
-                    pressure: p.pressure,
-                    modulus: p.youngs_modulus,
-                    stiffness: p.tangential_stiffness,
-                    poisson: Some(p.poisson),
-                }
-            }
-            Model::Lap { joint, .. } => {
-                let p = joint.params();
-                // The inner plate's modulus: the member every FE model of the joint meshes.
-                InterfaceData {
-                    length: p.length,
-                    friction: p.friction,
-                    pressure: p.pressure,
-                    modulus: p.inner_modulus,
-                    stiffness: p.tangential_stiffness,
-                    poisson: None,
-                }
-            }
-        }
+        })
     }
 }
 
 impl Inputs {
     /// The paper's data set for `kind` (beams at F = 100 N), the bundled aluminium joint at F =
-    /// 3000 N for the lap joint (both ends sliding).
+    /// 3000 N for the lap joint (both ends sliding): each problem's [`Problem::paper`].
+    ///
+    /// [`Problem::paper`]: crate::problems::Problem::paper
     pub fn paper(kind: ModelKind) -> Inputs {
-        match kind {
-            ModelKind::Beam => Inputs::Beam {
-                structure: TwinBeamsParams::PAPER,
-                force: 100.0,
-            },
-            ModelKind::Plate => Inputs::Plate(PlateParams::PAPER),
-            ModelKind::Lap => Inputs::Lap {
-                structure: LapParams::ALUMINIUM,
-                force: 3000.0,
-            },
-        }
+        kind.problem().paper_inputs()
     }
 
     /// Which model these inputs are for.
@@ -291,24 +220,9 @@ impl Inputs {
         }
     }
 
-    fn slot(&mut self, param: Param) -> Option<&mut f64> {
-        match (self, param) {
-            (Inputs::Beam { force, .. }, Param::Beam(BeamParam::Force)) => Some(force),
-            (Inputs::Beam { structure, .. }, Param::Beam(p)) => structure.value_mut(p),
-            (Inputs::Plate(s), Param::Plate(p)) => Some(s.value_mut(p)),
-            (Inputs::Lap { force, .. }, Param::Lap(LapParam::Force)) => Some(force),
-            (Inputs::Lap { structure, .. }, Param::Lap(p)) => structure.value_mut(p),
-            // A parameter of another problem.
-            (Inputs::Beam { .. }, Param::Plate(_) | Param::Lap(_))
-            | (Inputs::Plate(_), Param::Beam(_) | Param::Lap(_))
-            | (Inputs::Lap { .. }, Param::Beam(_) | Param::Plate(_)) => None,
-        }
-    }
-
     /// The value of a parameter, or `None` for a parameter of another problem.
     pub fn get(&self, param: Param) -> Option<f64> {
-        let mut copy = *self;
-        copy.slot(param).map(|v| *v)
+        self.kind().problem().get(self, param)
     }
 
     /// Sets one parameter without validating its range (see [`Inputs::validate`]).
@@ -317,12 +231,14 @@ impl Inputs {
     /// [`UnknownParam`] when `param` belongs to another problem.
     pub fn set(&mut self, param: Param, value: f64) -> Result<(), UnknownParam> {
         let model = self.kind();
-        let slot = self.slot(param).ok_or_else(|| UnknownParam {
-            key: param.name().to_string(),
-            model,
-        })?;
-        *slot = value;
-        Ok(())
+        if model.problem().set(self, param, value) {
+            Ok(())
+        } else {
+            Err(UnknownParam {
+                key: param.name().to_string(),
+                model,
+            })
+        }
     }
 
     /// Validates through the model's checked constructors.
@@ -330,20 +246,10 @@ impl Inputs {
     /// # Errors
     /// The first out-of-range parameter, in display order.
     pub fn validate(&self) -> Result<Model, ParamError> {
-        Ok(match *self {
-            Inputs::Beam { structure, force } => Model::Beam {
-                beams: TwinBeams::new(structure)?,
-                force: TipForce::new(force)?,
-            },
-            Inputs::Plate(params) => Model::Plate(SqueezedPlate::new(params)?),
-            Inputs::Lap { structure, force } => {
-                let joint = LapJoint::new(structure)?;
-                Model::Lap {
-                    joint,
-                    force: joint.force(force)?,
-                }
-            }
-        })
+        self.kind()
+            .problem()
+            .validate(self)
+            .unwrap_or_else(|| Err(self.foreign()))
     }
 
     /// As [`Inputs::validate`] for a command that does not use the load (a cycle's amplitude,
@@ -354,24 +260,25 @@ impl Inputs {
     /// # Errors
     /// As [`Inputs::validate`], except the lap joint's F above F_gross.
     pub fn validate_without_load(&self) -> Result<Model, ParamError> {
-        Ok(match *self {
-            Inputs::Beam { structure, force } => {
-                TipForce::new(force)?;
-                Model::Beam {
-                    beams: TwinBeams::new(structure)?,
-                    force: TipForce::clamped(0.0),
-                }
-            }
-            Inputs::Plate(params) => Model::Plate(SqueezedPlate::new(params)?),
-            Inputs::Lap { structure, force } => {
-                let joint = LapJoint::new(structure)?;
-                LapParam::Force.check(force)?;
-                Model::Lap {
-                    joint,
-                    force: joint.clamped_force(0.0),
-                }
-            }
-        })
+        self.kind()
+            .problem()
+            .validate_without_load(self)
+            .unwrap_or_else(|| Err(self.foreign()))
+    }
+
+    /// What [`Inputs::validate`] says should the registry's bridge not read these inputs, which
+    /// would be a bug in a problem's `from_inputs`: an error rather than a panic in a user's
+    /// session.
+    fn foreign(&self) -> ParamError {
+        debug_assert!(false, "{} inputs their problem does not read", self.kind());
+        let first = self.kind().params()[0].spec();
+        ParamError {
+            field: first.name,
+            value: f64::NAN,
+            domain: first.domain,
+            unit: first.unit,
+            reason: "",
+        }
     }
 
     /// Every out-of-range parameter, not only the first: each one is checked on its own against

@@ -1,12 +1,59 @@
-//! The benchmark problems, one folder each, and the list of them. A problem's folder holds what is
-//! its own: parameters, closed forms, validity envelope, its independent discretized solver.
-//! Everything here is built on [`crate::kernel`] and [`crate::numeric`], which know no problem.
+//! The benchmark problems, one folder each, and the registry of them. A problem's folder holds
+//! what is its own: parameters, closed forms, validity envelope, its independent discretized
+//! solver. Everything here is built on [`crate::kernel`] and [`crate::numeric`], which know no
+//! problem.
 //!
-//! [`ModelKind`] lists the problems (spelled once, in `problem_list!`); each folder's
-//! [`Description`] is what the generic layers know of its problem; [`Param`] is a parameter of any
-//! of them, what presets, `--set`, the parameter pane, sweeps and solving for a target iterate
-//! over; [`ByProblem`] keeps one value per problem; [`Quantity`] and [`Solution`] name what every
-//! problem's solution answers.
+//! A problem is a type that implements [`Problem`] (its [`Description`], its parameters, the
+//! model they validate into, one solve's state) and the capabilities it has ([`Continuum`]; a
+//! capability a problem lacks is a trait it does not implement, not a `match` arm). The
+//! registry, `problem_list!` below, holds one line per problem (`Beam =>
+//! twin_beams::TwinBeamsProblem`) and generates from it [`ModelKind`] (with
+//! [`ModelKind::problem`], the problem as `&'static dyn` [`AnyProblem`]: what a caller uses
+//! instead of a `match` on the kind) and [`Param`] (a parameter of any problem, what presets,
+//! `--set`, the parameter pane, sweeps and solving for a target iterate over). [`ByProblem`]
+//! keeps one value per problem; [`Quantity`] and [`Solution`] name what every problem's solution
+//! answers.
+//!
+//! [`Inputs`](inputs::Inputs) and [`Model`](inputs::Model) are still hand-written enums with a
+//! variant per problem (the application matches on their variants in about 130 places);
+//! every method on them goes through the problem's [`Problem`] impl, so they hold no per-problem
+//! logic, only the bridge (`to_inputs`, `from_inputs`, `to_model`, `from_model`) each folder
+//! writes. They go when their callers use [`AnyProblem`] or the typed [`Problem`] instead.
+//!
+//! # Adding a problem
+//! A fourth problem (the Hertzian cylinder, say) is, in this crate:
+//! 1. **Its folder** `problems/cylinder/`, naming no other problem (`tests/layering.rs` checks it):
+//!    - `params.rs`: the parameter key enum (`CylinderParam`, with `ALL` in display order and a
+//!      `spec()` giving key, unit, meaning, domain, usual range and step; `FromStr` through
+//!      [`ParamKey::parse_key`]) and the raw parameter struct with a `PAPER` (or bundled) data
+//!      set and `value_mut`;
+//!    - `closed_form.rs`: the validated model (a checked `new -> Result<_, ParamError>`) and
+//!      one state per law, each implementing [`Solution`];
+//!    - `validity.rs`: where the closed form holds; `discretized.rs`: the independent solver
+//!      (never importing the closed forms: `tests/layering.rs`); `cycle.rs` if it is driven by
+//!      a load; `continuum.rs` if it has a 2-D reference;
+//!    - `mod.rs`: its `DESCRIPTION` (key, title, summary, paper preset, parameters through
+//!      `param_list!`, quantities, load) and its `quantity` function;
+//!    - `problem.rs`: the unit struct (`CylinderProblem`) implementing [`ParamKey`] for its key
+//!      enum, [`Problem`] (and [`Continuum`] and the other capabilities it has). Its `State` is
+//!      [`problem::Laws`] of its two law states.
+//! 2. **One registry line** in `problem_list!` below: `Cylinder => cylinder::CylinderProblem,`
+//!    with its doc comment. [`ModelKind`], [`ModelKind::ALL`], [`ModelKind::problem`] and
+//!    [`Param`] follow from it; [`ByProblem`] grows a slot.
+//! 3. **While the enums last**, a variant in [`Inputs`](inputs::Inputs) and
+//!    [`Model`](inputs::Model) and their `kind` arms (`problems/inputs.rs`); the folder's
+//!    `problem.rs` writes the bridge to them.
+//! 4. **Its presets**: `presets/<paper-preset>.toml`, named by [`Description::paper_preset`].
+//! 5. **Its tests**: its folder's unit tests (closed form against hand values and its
+//!    discretized solver, validity edges), a `tests/<name>_properties.rs` of properties over
+//!    random inputs; the registry tests in `problems/problem.rs` cover it without an edit once
+//!    the typed cross-check there (`typed_answers`) gets its arm.
+//! 6. **Its docs**: its section in `docs/theory.md` (the equations its closed forms implement,
+//!    cited by number in its doc comments) and its line in the guide's list of problems.
+//!
+//! The files outside the folders that still name a problem's types (the application's layers
+//! that match on a problem's kind) are what a new problem would touch beyond this list; each
+//! port to [`AnyProblem`] or [`Problem`] lowers that count.
 
 use std::fmt;
 use std::str::FromStr;
@@ -14,6 +61,7 @@ use std::str::FromStr;
 use thiserror::Error;
 
 use crate::kernel::params::{ParamSpec, Unit};
+pub use problem::{AnyProblem, Continuum, ParamKey, Problem};
 pub use quantity::{Quantity, QuantityName, Solution};
 
 /// The parameters of one problem as [`Param`]s, in the order of `$ty::ALL`: a const array, so
@@ -33,6 +81,7 @@ macro_rules! param_list {
 pub mod inputs;
 pub mod lap;
 pub mod plate;
+pub mod problem;
 pub mod quantity;
 pub mod stiffness;
 pub mod twin_beams;
@@ -42,8 +91,8 @@ pub use plate::params::PlateParam;
 pub use twin_beams::params::BeamParam;
 
 /// What the generic layers (presets, deck headers, commands, the parameter pane, targets) know
-/// of a problem, as data: a new problem writes one in its folder and adds its line to
-/// `problem_list!`, which hands it out through [`ModelKind::description`].
+/// of a problem, as data: a new problem writes one in its folder and hands it out as its
+/// [`Problem::INFO`]; [`ModelKind::description`] reads it through the registry.
 #[derive(Debug)]
 pub struct Description {
     /// The key in presets (`model = "beam"`), commands and JSON.
@@ -76,11 +125,13 @@ pub struct Description {
     pub load_span: f64,
 }
 
-/// Writes [`ModelKind`], its [`ModelKind::ALL`] and [`ModelKind::description`] from one list,
-/// so that the list of problems is spelled once: a variant missing from `ALL` (which would
-/// index past [`ByProblem`]'s slots) or without a description cannot be written.
+/// Writes [`ModelKind`], its [`ModelKind::ALL`], [`ModelKind::description`],
+/// [`ModelKind::problem`] and [`Param`] (with [`Param::spec`] and [`Param::model`]) from one list
+/// of `Variant => folder::ProblemType`, so that the list of problems is spelled once: a variant
+/// missing from `ALL` (which would index past [`ByProblem`]'s slots), without a description or
+/// without a parameter type cannot be written.
 macro_rules! problem_list {
-    ($($(#[$doc:meta])* $variant:ident => $folder:ident),+ $(,)?) => {
+    ($($(#[$doc:meta])* $variant:ident => $problem:path),+ $(,)?) => {
         /// Which benchmark a parameter set describes.
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
         pub enum ModelKind {
@@ -92,24 +143,52 @@ macro_rules! problem_list {
             pub const ALL: [ModelKind; [$(ModelKind::$variant),+].len()] =
                 [$(ModelKind::$variant),+];
 
-            /// What the generic layers know of the problem: its [`Description`], from its folder.
-            pub fn description(self) -> &'static Description {
+            /// The problem itself, its types erased: what a caller uses instead of a `match` on
+            /// the kind.
+            pub fn problem(self) -> &'static dyn AnyProblem {
                 match self {
-                    $(ModelKind::$variant => &$folder::DESCRIPTION),+
+                    $(ModelKind::$variant => &$problem),+
+                }
+            }
+        }
+
+        $(impl problem::Registered for $problem {
+            const KIND: ModelKind = ModelKind::$variant;
+        })+
+
+        /// A parameter of any problem: what the TUI's parameter pane and presets iterate over.
+        /// One variant per problem, holding that problem's [`Problem::Key`].
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum Param {
+            $($(#[$doc])* $variant(<$problem as Problem>::Key)),+
+        }
+
+        impl Param {
+            /// Key, unit, meaning, domain and step.
+            pub fn spec(self) -> ParamSpec {
+                match self {
+                    $(Param::$variant(p) => ParamKey::spec(p)),+
+                }
+            }
+
+            /// The model this parameter belongs to.
+            pub fn model(self) -> ModelKind {
+                match self {
+                    $(Param::$variant(_) => ModelKind::$variant),+
                 }
             }
         }
     };
 }
 
-// The problems: the one list a new problem is added to (its variant and its folder).
+// The problems: the one list a new problem is added to (its variant and its type).
 problem_list! {
     /// Twin cantilever beams (paper section 2.1).
-    Beam => twin_beams,
+    Beam => twin_beams::TwinBeamsProblem,
     /// Squeezed plate (paper section 2.2).
-    Plate => plate,
+    Plate => plate::SqueezedPlateProblem,
     /// Clamped double-lap joint (issue 24).
-    Lap => lap,
+    Lap => lap::LapJointProblem,
 }
 
 impl ModelKind {
@@ -119,6 +198,11 @@ impl ModelKind {
     /// This problem's place in [`ModelKind::ALL`].
     pub(crate) fn index(self) -> usize {
         self as usize
+    }
+
+    /// What the generic layers know of the problem: its [`Description`], from its folder.
+    pub fn description(self) -> &'static Description {
+        self.problem().info()
     }
 
     /// The problem after this one in [`ModelKind::ALL`], the first after the last: what `m`
@@ -207,14 +291,24 @@ impl fmt::Display for ModelKind {
 }
 
 impl FromStr for ModelKind {
-    type Err = String;
+    type Err = UnknownModel;
 
     fn from_str(text: &str) -> Result<Self, Self::Err> {
         ModelKind::ALL
             .into_iter()
             .find(|k| k.name() == text)
-            .ok_or_else(|| format!("unknown model '{text}': must be {}", ModelKind::choices()))
+            .ok_or_else(|| UnknownModel {
+                text: text.to_string(),
+            })
     }
+}
+
+/// A model key that names no problem: what parsing a [`ModelKind`] refuses, listing the keys.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("unknown model '{text}': must be {}", ModelKind::choices())]
+pub struct UnknownModel {
+    /// The key as written.
+    pub text: String,
 }
 
 /// One value per problem, indexed by [`ModelKind`]: what a layer keeps for every problem at once
@@ -259,27 +353,7 @@ pub struct UnknownParam {
     pub model: ModelKind,
 }
 
-/// A parameter of any problem: what the TUI's parameter pane and presets iterate over.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Param {
-    /// A twin-beam parameter.
-    Beam(BeamParam),
-    /// A squeezed-plate parameter.
-    Plate(PlateParam),
-    /// A double-lap joint parameter.
-    Lap(LapParam),
-}
-
 impl Param {
-    /// Key, unit, meaning, domain and step.
-    pub fn spec(self) -> ParamSpec {
-        match self {
-            Param::Beam(p) => p.spec(),
-            Param::Plate(p) => p.spec(),
-            Param::Lap(p) => p.spec(),
-        }
-    }
-
     /// The key (`KT`).
     pub fn name(self) -> &'static str {
         self.spec().name
@@ -288,15 +362,6 @@ impl Param {
     /// The unit.
     pub fn unit(self) -> Unit {
         self.spec().unit
-    }
-
-    /// The model this parameter belongs to.
-    pub fn model(self) -> ModelKind {
-        match self {
-            Param::Beam(_) => ModelKind::Beam,
-            Param::Plate(_) => ModelKind::Plate,
-            Param::Lap(_) => ModelKind::Lap,
-        }
     }
 
     /// The values engineers usually give this parameter (see [`ParamSpec::usual`]).

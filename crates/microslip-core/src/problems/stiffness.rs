@@ -3,8 +3,19 @@
 //! microslip works in MPa/mm internally; the paper's nomenclature quotes K_T in MPa/um, and so do many
 //! measurements, so the UI may show both.
 
-use crate::kernel::params::{Domain, ParamError, Unit};
-use crate::problems::PlateParam;
+use crate::kernel::params::{Domain, FRICTION, POISSON, ParamError, ParamSpec, STIFFNESS, Unit};
+
+/// `value` checked against a shared parameter spec (its name, domain and unit): these
+/// conversions belong to no problem, so they check against the kernel's specs, which every
+/// problem's nu, mu and K_T are, rather than against one problem's parameters.
+fn checked(spec: ParamSpec, value: f64) -> Result<f64, ParamError> {
+    spec.domain.check(spec.name, value, spec.unit)
+}
+
+/// The contact pressure P (MPa) checked against its domain (each problem words its own P).
+fn checked_pressure(value: f64) -> Result<f64, ParamError> {
+    Domain::PRESSURE.check("P", value, Unit::Megapascal)
+}
 
 /// Number of micrometres in a millimetre.
 const UM_PER_MM: f64 = 1000.0;
@@ -16,7 +27,7 @@ const UM_PER_MM: f64 = 1000.0;
 /// # Errors
 /// [`ParamError`] when nu is outside [0, 0.5).
 pub fn tangential_to_normal_ratio(nu: f64) -> Result<f64, ParamError> {
-    let nu = PlateParam::Poisson.check(nu)?;
+    let nu = checked(POISSON, nu)?;
     Ok(std::f64::consts::PI * (1.0 - nu) / (2.0 * (2.0 - nu)))
 }
 
@@ -34,9 +45,9 @@ pub fn tangential_from_normal(kn: f64, nu: f64) -> Result<f64, ParamError> {
 /// # Errors
 /// [`ParamError`] naming the first of mu, P, K_T outside its domain.
 pub fn saturation_slip(mu: f64, pressure: f64, kt: f64) -> Result<f64, ParamError> {
-    let mu = PlateParam::Friction.check(mu)?;
-    let p = PlateParam::Pressure.check(pressure)?;
-    let kt = PlateParam::Stiffness.check(kt)?;
+    let mu = checked(FRICTION, mu)?;
+    let p = checked_pressure(pressure)?;
+    let kt = checked(STIFFNESS, kt)?;
     Ok(mu * p / kt)
 }
 
@@ -54,9 +65,9 @@ pub fn stiffness_for_saturation_slip(mu: f64, pressure: f64, slip: f64) -> Resul
         };
         return any_positive.check("slip", slip, Unit::Millimetre);
     }
-    let mu = PlateParam::Friction.check(mu)?;
-    let p = PlateParam::Pressure.check(pressure)?;
-    PlateParam::Stiffness.check(mu * p / slip)
+    let mu = checked(FRICTION, mu)?;
+    let p = checked_pressure(pressure)?;
+    checked(STIFFNESS, mu * p / slip)
 }
 
 /// MPa/mm to MPa/um.

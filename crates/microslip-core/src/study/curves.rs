@@ -12,8 +12,9 @@ use crate::kernel::validity::Validity;
 use crate::problems::inputs::Model;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::twin_beams::cycle::{Cycle, Law};
+use crate::problems::twin_beams::problem::{BeamsModel, TwinBeamsProblem};
 use crate::problems::twin_beams::validity::BeamValidity;
-use crate::problems::{BeamParam, Param, PlateParam};
+use crate::problems::{BeamParam, Param, PlateParam, Problem};
 use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
 /// Largest number of points a sweep (or a branch of a cycle's loop) accepts: beyond it a request is
@@ -397,16 +398,11 @@ pub fn beam_param_sweep(
     param: BeamParam,
     values: Samples,
 ) -> Result<impl Iterator<Item = (f64, BeamPoint)>, RangeError> {
-    let param = Param::Beam(param);
-    values.check_within(param)?;
-    let model = Model::Beam { beams, force };
+    values.check_within(Param::Beam(param))?;
+    let model = BeamsModel { beams, force };
     Ok(values.values().map(move |v| {
-        let point = match model.with_clamped(param, v) {
-            Model::Beam { beams, force } => beam_point(&beams, force),
-            // `with_clamped` keeps the model's kind.
-            Model::Plate(_) | Model::Lap { .. } => unreachable!("a beam model changed kind"),
-        };
-        (v, point)
+        let at = TwinBeamsProblem::with_clamped(&model, param, v);
+        (v, beam_point(&at.beams, at.force))
     }))
 }
 

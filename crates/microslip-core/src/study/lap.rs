@@ -5,7 +5,8 @@ use crate::kernel::regime::{Law, Regime};
 use crate::problems::inputs::Model;
 use crate::problems::lap::closed_form::{JointForce, LapJoint, LapState};
 use crate::problems::lap::cycle::LapCycle;
-use crate::problems::{LapParam, Param};
+use crate::problems::lap::problem::{LapJointProblem, LapModel};
+use crate::problems::{LapParam, Param, Problem};
 use crate::study::curves::{
     CyclePoint, LoopPoint, RangeEnd, RangeError, Samples, Series, check_points, loop_points,
 };
@@ -122,13 +123,10 @@ pub fn lap_param_sweep(
             }
         }
     }
-    let model = Model::Lap { joint, force };
+    let model = LapModel { joint, force };
     Ok(values.values().map(move |v| {
-        let point = match model.with_clamped(wrapped, v).into_lap() {
-            Ok((joint, force)) => lap_point(&joint, force),
-            Err(_) => unreachable!("a lap model changed kind"),
-        };
-        (v, point)
+        let at = LapJointProblem::with_clamped(&model, param, v);
+        (v, lap_point(&at.joint, at.force))
     }))
 }
 

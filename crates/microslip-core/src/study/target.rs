@@ -331,11 +331,13 @@ fn search_range(
         Some(r) => r,
         None => (least, domain.clamp(most)),
     };
-    let force = match model {
-        Model::Lap { force, .. } => force.newtons(),
-        Model::Beam { force, .. } => force.newtons(),
-        Model::Plate(_) => 0.0,
-    };
+    // The load the cut was found at (none for a problem without a load).
+    let force = model
+        .kind()
+        .description()
+        .load
+        .and_then(|load| model.inputs().get(load))
+        .unwrap_or(0.0);
     let cut = (range.is_none() && least > domain.min()).then_some(RangeCut { least, force });
     for value in [lo, hi] {
         if !domain.contains(value) {

@@ -8,6 +8,7 @@ pub mod continuum;
 pub mod cycle;
 pub mod discretized;
 pub mod params;
+pub mod problem;
 pub mod validity;
 
 pub use continuum::{
@@ -15,6 +16,7 @@ pub use continuum::{
     solve_lap_continuum_path,
 };
 pub use discretized::LapFe;
+pub use problem::LapJointProblem;
 pub use validity::LapValidity;
 
 use crate::kernel::regime::Law;

@@ -6,7 +6,7 @@ use std::str::FromStr;
 use crate::kernel::params::{
     Domain, FACTOR, FRICTION, ParamError, ParamSpec, STIFFNESS, Scale, Unit, spec,
 };
-use crate::problems::{ModelKind, Param, UnknownParam};
+use crate::problems::{ModelKind, ParamKey, UnknownParam};
 
 /// Poisson's ratio of both plates wherever a continuum stands in for the joint (the CalculiX deck,
 /// the 2-D continuum solver, the shear-lag envelope that was measured with them): the joint's keys
@@ -142,12 +142,7 @@ impl FromStr for LapParam {
     type Err = UnknownParam;
 
     fn from_str(key: &str) -> Result<Self, Self::Err> {
-        match ModelKind::Lap.param(key)? {
-            Param::Lap(p) => Ok(p),
-            Param::Beam(_) | Param::Plate(_) => {
-                unreachable!("the lap model lists only lap parameters")
-            }
-        }
+        <LapParam as ParamKey>::parse_key(key, ModelKind::Lap)
     }
 }
 

@@ -7,10 +7,12 @@ pub mod closed_form;
 pub mod continuum;
 pub mod discretized;
 pub mod params;
+pub mod problem;
 pub mod validity;
 
 pub use continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};
 pub use discretized::PlateFe;
+pub use problem::SqueezedPlateProblem;
 
 use crate::problems::quantity::ratio_to_coulomb;
 use crate::problems::{Description, Param, Quantity, QuantityName, Solution};

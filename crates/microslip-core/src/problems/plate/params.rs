@@ -6,7 +6,7 @@ use std::str::FromStr;
 use crate::kernel::params::{
     Domain, FACTOR, FRICTION, MODULUS, POISSON, ParamError, ParamSpec, STIFFNESS, Unit, spec,
 };
-use crate::problems::{ModelKind, Param, UnknownParam};
+use crate::problems::{ModelKind, ParamKey, UnknownParam};
 
 /// The inputs of the squeezed-plate problem.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -94,12 +94,7 @@ impl FromStr for PlateParam {
     type Err = UnknownParam;
 
     fn from_str(key: &str) -> Result<Self, Self::Err> {
-        match ModelKind::Plate.param(key)? {
-            Param::Plate(p) => Ok(p),
-            Param::Beam(_) | Param::Lap(_) => {
-                unreachable!("the plate model lists only plate parameters")
-            }
-        }
+        <PlateParam as ParamKey>::parse_key(key, ModelKind::Plate)
     }
 }
 

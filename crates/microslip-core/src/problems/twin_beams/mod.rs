@@ -7,9 +7,11 @@ pub mod closed_form;
 pub mod cycle;
 pub mod discretized;
 pub mod params;
+pub mod problem;
 pub mod validity;
 
 pub use discretized::{InterfaceSample, TwinBeamsFe};
+pub use problem::TwinBeamsProblem;
 
 use crate::problems::quantity::ratio_to_coulomb;
 use crate::problems::{Description, Param, Quantity, QuantityName, Solution};

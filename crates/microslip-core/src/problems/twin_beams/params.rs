@@ -6,7 +6,7 @@ use std::str::FromStr;
 use crate::kernel::params::{
     Domain, FACTOR, FRICTION, MODULUS, POISSON, ParamError, ParamSpec, STIFFNESS, Scale, Unit, spec,
 };
-use crate::problems::{ModelKind, Param, UnknownParam};
+use crate::problems::{ModelKind, ParamKey, UnknownParam};
 
 /// The inputs of the twin-beam problem.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -111,12 +111,7 @@ impl FromStr for BeamParam {
     type Err = UnknownParam;
 
     fn from_str(key: &str) -> Result<Self, Self::Err> {
-        match ModelKind::Beam.param(key)? {
-            Param::Beam(p) => Ok(p),
-            Param::Plate(_) | Param::Lap(_) => {
-                unreachable!("the beam model lists only beam parameters")
-            }
-        }
+        <BeamParam as ParamKey>::parse_key(key, ModelKind::Beam)
     }
 }
 
