@@ -277,7 +277,7 @@ impl Inputs {
             value: f64::NAN,
             domain: first.domain,
             unit: first.unit,
-            reason: "",
+            reason: None,
         }
     }
 
