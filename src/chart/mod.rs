@@ -7,6 +7,7 @@
 
 pub mod family;
 mod lap;
+mod load;
 pub(crate) mod pins;
 pub mod vary;
 pub mod view;
@@ -21,12 +22,22 @@ use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::inputs::Model;
 use crate::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
 use crate::problems::twin_beams::TwinBeamsFe;
+use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
 use crate::problems::{ModelKind, PlateParam};
 use crate::study::curves::{self, Samples, Series, Spacing};
 use crate::{SqueezedPlate, TipForce, TwinBeams};
+use load::{LoadLabels, companions, dissipation_chart, fe_loop, loop_chart, response_plot};
 
 /// Points per analytic curve: two per column of a 100-column chart, enough for Braille resolution.
 pub(crate) const SAMPLES: u64 = 200;
+
+/// What the twin beams' load charts call their quantities: the loop is one beam's, D both's.
+const BEAM_LABELS: LoadLabels = LoadLabels {
+    response: "w(L)",
+    response_axis: "w(L) (mm)",
+    loop_title: ("1 beam ", "D(2)"),
+    dissipation_axis: "D, 2 beams (N mm)",
+};
 
 /// Elements of the finite-element overlay: its error (~1e-6) is far below a pixel.
 const OVERLAY_ELEMENTS: usize = 100;
@@ -373,9 +384,6 @@ pub(crate) fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
     Samples::new(from, to, SAMPLES, spacing).ok()
 }
 
-/// Loop points per branch: one per column of a 100-column chart.
-const LOOP_POINTS: u64 = SAMPLES / 2 + 1;
-
 /// Builds `chart` of `model` (a chart of the model's problem), with finite-element points,
 /// measurements and an external code's points if given (measurements show on the twin beams' w(L)
 /// vs F chart, external points on the chart of their quantity).
@@ -487,24 +495,7 @@ fn beam_plot(
     let f = force.newtons();
     match chart {
         BeamChart::Deflection => {
-            let (coulomb, regularized) = curves::beam_deflection_vs_force(beams, forces).ok()?;
-            // The current K_T last, so that it is drawn on top.
-            let mut series = vec![line(SeriesRole::Coulomb, "Coulomb", coulomb)];
-            for (role, label, other) in &companions {
-                let (_, w) = curves::beam_deflection_vs_force(other, forces).ok()?;
-                series.push(line(*role, *label, w));
-            }
-            series.push(line(SeriesRole::Current, "K_T", regularized));
-            let top = 1.05 * max_y(series.iter().map(|s| &s.points));
-            let y = linear_axis("w(L) (mm)", 0.0, top);
-            series.push(cursor(f, y.bounds));
-            Some(Plot {
-                caption: None,
-                title: format!("w(L) vs F, K_T = {} MPa/mm", number(kt)),
-                x: linear_axis("F (N)", 0.0, f_max),
-                y,
-                series,
-            })
+            response_plot::<TwinBeamsLoad>(beams, &BEAM_LABELS, forces, (f, f_max))
         }
         BeamChart::SlipBoundary => {
             let mut series = Vec::new();
@@ -533,38 +524,10 @@ fn beam_plot(
                 series,
             })
         }
-        BeamChart::Loop => {
-            use crate::problems::twin_beams::cycle::{Cycle, Law};
-            let (coulomb, regularized) = (
-                Cycle::new(beams, Law::Coulomb, force),
-                Cycle::new(beams, Law::Regularized, force),
-            );
-            let loops = curves::cycle_loop(beams, force, LOOP_POINTS).ok()?;
-            Some(loop_plot(
-                // At most 41 characters, the title row of an 80x24 screen's chart pane: D of
-                // both beams, C(oulomb) and R(egularized) as in the zone strip.
-                format!(
-                    "1 beam +-{} N; D(2) {} C, {} R N mm",
-                    number(f),
-                    number_with(coulomb.dissipation(), 3),
-                    number_with(regularized.dissipation(), 3)
-                ),
-                loops,
-                coulomb.peak_deflection().max(regularized.peak_deflection()),
-                f,
-                "w(L) (mm)",
-            ))
-        }
+        BeamChart::Loop => loop_chart::<TwinBeamsLoad>(beams, &BEAM_LABELS, force),
         BeamChart::Dissipation => {
             let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
-            let (coulomb, regularized) =
-                curves::dissipation_vs_amplitude(beams, amplitudes).ok()?;
-            Some(dissipation_plot(
-                &curves::cycle_point(beams, force),
-                (coulomb, regularized),
-                (f, f_max),
-                "D, 2 beams (N mm)",
-            ))
+            dissipation_chart::<TwinBeamsLoad>(beams, &BEAM_LABELS, force, amplitudes, f_max)
         }
         BeamChart::Shear => {
             let positions = samples(0.0, p.length, Spacing::Linear)?;
@@ -586,73 +549,6 @@ fn beam_plot(
                 ],
             })
         }
-    }
-}
-
-/// The curves drawn beside a load chart's current one: the model at K_T/5 and K_T*5, as `at`
-/// builds it, where that K_T is accepted (`at` gives None otherwise).
-pub(crate) fn companions<T>(
-    kt: f64,
-    at: impl Fn(f64) -> Option<T>,
-) -> Vec<(SeriesRole, &'static str, T)> {
-    [
-        (SeriesRole::Softer, "K_T/5", kt / 5.0),
-        (SeriesRole::Stiffer, "K_T*5", kt * 5.0),
-    ]
-    .into_iter()
-    .filter_map(|(role, label, k)| Some((role, label, at(k)?)))
-    .collect()
-}
-
-/// The hysteresis loop chart of either law's loop points: the response (`y_title`) against the
-/// force, between -`f` and `f`, its y range from the larger `peak`.
-pub(crate) fn loop_plot(
-    title: String,
-    loops: impl Iterator<Item = crate::study::curves::LoopPoint>,
-    peak: f64,
-    f: f64,
-    y_title: &str,
-) -> Plot {
-    let (coulomb, regularized): (Series, Series) = loops
-        .map(|p| ((p.force, p.w_coulomb), (p.force, p.w_regularized)))
-        .unzip();
-    let top = 1.05 * peak.max(f64::MIN_POSITIVE);
-    let span = f.max(1e-9);
-    Plot {
-        caption: None,
-        title,
-        x: linear_axis("F (N)", -span, span),
-        y: linear_axis(y_title, -top, top),
-        series: vec![
-            line(SeriesRole::Coulomb, "Coulomb", coulomb),
-            line(SeriesRole::Current, "regularized", regularized),
-        ],
-    }
-}
-
-/// D against the amplitude, both laws, the cursor at the current force `f` of the axis to
-/// `f_max`; the title gives zeta at `f` (at most 41 characters, an 80x24 chart pane's title row).
-pub(crate) fn dissipation_plot(
-    at: &crate::study::curves::CyclePoint,
-    (coulomb, regularized): (Series, Series),
-    (f, f_max): (f64, f64),
-    y_title: &str,
-) -> Plot {
-    let top = 1.05 * max_y([&coulomb, &regularized]).max(f64::MIN_POSITIVE);
-    Plot {
-        caption: None,
-        title: format!(
-            "D vs F_a; zeta at F {} C, {} R",
-            number_with(at.zeta_coulomb, 3),
-            number_with(at.zeta_regularized, 3)
-        ),
-        x: linear_axis("F_a (N)", 0.0, f_max),
-        y: linear_axis(y_title, 0.0, top),
-        series: vec![
-            line(SeriesRole::Coulomb, "Coulomb", coulomb),
-            line(SeriesRole::Current, "regularized", regularized),
-            cursor(f, [0.0, top]),
-        ],
     }
 }
 
@@ -839,14 +735,10 @@ pub fn numeric_points(
             let fa = force.newtons();
             let mut fe = TwinBeamsFe::new(beams.params(), density);
             fe.load_to(fa, 4)?;
-            let mut points = Vec::with_capacity(2 * OVERLAY_POINTS);
-            for (from, sign) in [(fa, -1.0), (-fa, 1.0)] {
-                for i in 1..=OVERLAY_POINTS {
-                    let f = from + sign * 2.0 * fa * i as f64 / OVERLAY_POINTS as f64;
-                    fe.load_to(f, 2)?;
-                    points.push((f, fe.tip_deflection()));
-                }
-            }
+            let points = fe_loop(fa, OVERLAY_POINTS, |f| {
+                fe.load_to(f, 2)?;
+                Ok(fe.tip_deflection())
+            })?;
             Ok(Some(NumericPoints {
                 points,
                 continuum: Vec::new(),

@@ -6,7 +6,7 @@ use serde::Serialize;
 
 use super::InputsReport;
 use crate::problems::inputs::Inputs;
-use crate::problems::twin_beams::cycle::{Cycle, Law};
+use crate::problems::twin_beams::cycle::{Cycle, Law, MasingCycle};
 use crate::report::{number, sanitize};
 use crate::{TipForce, TwinBeams, TwinBeamsParams};
 

@@ -13,7 +13,7 @@ use crate::numeric::NumericError;
 use crate::problems::inputs::Inputs;
 use crate::problems::lap::ContinuumLap;
 use crate::problems::lap::closed_form::{JointForce, LapJoint, LapParams};
-use crate::problems::lap::cycle::LapCycle;
+use crate::problems::lap::cycle::{LapCycle, MasingCycle};
 use crate::problems::stiffness::mm_to_um;
 use crate::report::{number, number_with, sanitize};
 use crate::study::lap::lap_point;

@@ -32,6 +32,7 @@ macro_rules! param_list {
 
 pub mod inputs;
 pub mod lap;
+pub mod load_driven;
 pub mod plate;
 pub mod quantity;
 pub mod stiffness;
