@@ -245,6 +245,7 @@ pub type Series = Vec<(f64, f64)>;
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::study::curves::{force_samples, stiffness_samples};
 
     #[test]
     fn samples_hit_both_ends_exactly() {
