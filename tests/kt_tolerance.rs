@@ -2,12 +2,33 @@
 //! force over the closed forms (plain bisection written here, with its own force grid) and the
 //! monotonicity it relies on (docs/theory.md, (T1)).
 
+use microslip::problems::twin_beams::load_driven::TwinBeamsLoad;
 use microslip::problems::{BeamParam, PlateParam};
 use microslip::study::tolerance::{
-    Threshold, ToleranceError, beam_stiffness_for_tolerance, beam_stiffness_near_current,
-    parse_tolerance, plate_stiffness_for_tolerance, plate_stiffness_near_current,
+    Threshold, ToleranceAnswer, ToleranceError, parse_tolerance, plate_stiffness_for_tolerance,
+    plate_stiffness_near_current, stiffness_for_tolerance, stiffness_near_current,
 };
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
+
+/// The generic tolerance of the twin beams.
+fn beam_stiffness_for_tolerance(
+    beams: &TwinBeams,
+    range: [f64; 2],
+    tolerance: f64,
+    element: f64,
+) -> Result<ToleranceAnswer, ToleranceError> {
+    stiffness_for_tolerance::<TwinBeamsLoad>(beams, range, tolerance, element)
+}
+
+/// The generic other reading of the twin beams.
+fn beam_stiffness_near_current(
+    beams: &TwinBeams,
+    range: [f64; 2],
+    tolerance: f64,
+    element: f64,
+) -> Result<ToleranceAnswer, ToleranceError> {
+    stiffness_near_current::<TwinBeamsLoad>(beams, range, tolerance, element)
+}
 
 fn paper_beams() -> TwinBeams {
     TwinBeams::new(TwinBeamsParams::PAPER).unwrap()
@@ -325,7 +346,7 @@ fn the_interval_at_the_edges_of_the_accepted_range() {
 #[test]
 fn the_lap_joints_worst_force_near_zero_decides() {
     use microslip::problems::lap::closed_form::{LapJoint, LapParams};
-    use microslip::study::tolerance::lap_stiffness_for_tolerance;
+    use microslip::problems::lap::load_driven::LapLoad;
     let joint = LapJoint::new(LapParams::ALUMINIUM).unwrap();
     let ratio = |kt: f64, f: f64| {
         let joint = joint.with_tangential_stiffness(kt).unwrap();
@@ -335,7 +356,7 @@ fn the_lap_joints_worst_force_near_zero_decides() {
     };
     let forces: Vec<f64> = [1e-6, 1e-3, 1.0, 10.0, 93.0, 500.0, 2000.0, 4000.0, 5999.0].to_vec();
     let brute = brute_force(&forces, 0.01, ratio);
-    let answer = lap_stiffness_for_tolerance(&joint, [0.0, 6000.0], 0.01, 0.4).unwrap();
+    let answer = stiffness_for_tolerance::<LapLoad>(&joint, [0.0, 6000.0], 0.01, 0.4).unwrap();
     let k = found(answer.threshold);
     assert!((k / brute - 1.0).abs() < 1e-3, "{k} vs {brute}");
     assert!((k / 1.63e6 - 1.0).abs() < 0.01, "{k}");

@@ -3,12 +3,12 @@
 //! [`super::load`]; this file gives the beams' words and their own charts.
 
 use crate::chart::load::{
-    LoadLabels, companions, dissipation_chart, fe_loop, loop_chart, response_plot,
+    LoadLabels, companions, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
 };
 use crate::chart::view::BeamChart;
 use crate::chart::{
     NumericPoints, OVERLAY_POINTS, Plot, PointFailure, SeriesRole, cursor, line, linear_axis,
-    max_y, samples,
+    samples,
 };
 use crate::kernel::format::number;
 use crate::numeric::{MeshDensity, NumericError};
@@ -92,23 +92,13 @@ pub(super) fn beam_plot(
         }
         BeamChart::Shear => {
             let positions = samples(0.0, p.length, Spacing::Linear)?;
-            let (coulomb, regularized) = curves::beam_shear_along(beams, force, positions);
-            let top = 1.1 * max_y([&coulomb, &regularized]).max(beams.coulomb_stress());
-            let mu_p = vec![
-                (0.0, beams.coulomb_stress()),
-                (p.length, beams.coulomb_stress()),
-            ];
-            Some(Plot {
-                caption: None,
-                title: format!("tau(x) at F = {} N, K_T = {} MPa/mm", number(f), number(kt)),
-                x: linear_axis("x (mm)", 0.0, p.length),
-                y: linear_axis("tau (MPa)", 0.0, top),
-                series: vec![
-                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
-                    line(SeriesRole::Current, "regularized", regularized),
-                    line(SeriesRole::Limit, "mu P", mu_p),
-                ],
-            })
+            Some(profile_plot(
+                ("tau(x)", "tau (MPa)"),
+                (f, kt),
+                p.length,
+                curves::beam_shear_along(beams, force, positions),
+                ("mu P", beams.coulomb_stress()),
+            ))
         }
     }
 }

@@ -2,10 +2,12 @@
 //! zones vs F, tau(x), the loop and D vs F_a. Built from [`crate::study::lap`].
 
 use crate::chart::NumericPoints;
-use crate::chart::load::{LoadLabels, dissipation_chart, fe_loop, loop_chart, response_plot};
+use crate::chart::load::{
+    LoadLabels, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
+};
 use crate::chart::view::LapChart;
-use crate::chart::{Plot, SeriesRole, cursor, line, linear_axis, max_y, samples};
-use crate::kernel::format::{number, number_with};
+use crate::chart::{Plot, SeriesRole, cursor, line, linear_axis, samples};
+use crate::kernel::format::number_with;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::lap::load_driven::LapLoad;
@@ -62,45 +64,23 @@ pub(crate) fn lap_plot(
         }
         LapChart::Shear => {
             let positions = samples(0.0, p.length, Spacing::Linear)?;
-            let (coulomb, regularized) = curves::lap_shear_along(joint, force, positions);
-            let mu_p = joint.coulomb_stress();
-            let top = 1.1 * max_y([&coulomb, &regularized]).max(mu_p);
-            Some(Plot {
-                caption: None,
-                title: format!("tau(x) at F = {} N, K_T = {} MPa/mm", number(f), number(kt)),
-                x: linear_axis("x (mm)", 0.0, p.length),
-                y: linear_axis("tau (MPa)", 0.0, top),
-                series: vec![
-                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
-                    line(SeriesRole::Current, "regularized", regularized),
-                    line(
-                        SeriesRole::Limit,
-                        "mu P",
-                        vec![(0.0, mu_p), (p.length, mu_p)],
-                    ),
-                ],
-            })
+            Some(profile_plot(
+                ("tau(x)", "tau (MPa)"),
+                (f, kt),
+                p.length,
+                curves::lap_shear_along(joint, force, positions),
+                ("mu P", joint.coulomb_stress()),
+            ))
         }
         LapChart::Slip => {
             let positions = samples(0.0, p.length, Spacing::Linear)?;
-            let (coulomb, regularized) = curves::lap_slip_along(joint, force, positions);
-            let saturation = joint.saturation_slip();
-            let top = 1.1 * max_y([&coulomb, &regularized]).max(saturation);
-            Some(Plot {
-                caption: None,
-                title: format!("s(x) at F = {} N, K_T = {} MPa/mm", number(f), number(kt)),
-                x: linear_axis("x (mm)", 0.0, p.length),
-                y: linear_axis("s (mm)", 0.0, top),
-                series: vec![
-                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
-                    line(SeriesRole::Current, "regularized", regularized),
-                    line(
-                        SeriesRole::Limit,
-                        "mu P / K_T",
-                        vec![(0.0, saturation), (p.length, saturation)],
-                    ),
-                ],
-            })
+            Some(profile_plot(
+                ("s(x)", "s (mm)"),
+                (f, kt),
+                p.length,
+                curves::lap_slip_along(joint, force, positions),
+                ("mu P / K_T", joint.saturation_slip()),
+            ))
         }
         LapChart::Loop => loop_chart::<LapLoad>(joint, &LAP_LABELS, force),
         LapChart::Dissipation => {

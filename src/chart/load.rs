@@ -119,6 +119,39 @@ pub(crate) fn dissipation_chart<P: LoadDriven>(
     ))
 }
 
+/// A profile along the interface at the current force `f` (N) and K_T (MPa/mm), both laws, with
+/// its limit as a flat line: tau(x) under mu P, s(x) under mu P / K_T. `quantity` is the title's
+/// symbol and the y axis's title (`tau(x)`, `tau (MPa)`), `limit` the line's name and value.
+pub(crate) fn profile_plot(
+    quantity: (&str, &str),
+    (f, kt): (f64, f64),
+    length: f64,
+    (coulomb, regularized): (Series, Series),
+    (limit_name, limit): (&str, f64),
+) -> Plot {
+    let top = 1.1 * max_y([&coulomb, &regularized]).max(limit);
+    Plot {
+        caption: None,
+        title: format!(
+            "{} at F = {} N, K_T = {} MPa/mm",
+            quantity.0,
+            number(f),
+            number(kt)
+        ),
+        x: linear_axis("x (mm)", 0.0, length),
+        y: linear_axis(quantity.1, 0.0, top),
+        series: vec![
+            line(SeriesRole::Coulomb, "Coulomb", coulomb),
+            line(SeriesRole::Current, "regularized", regularized),
+            line(
+                SeriesRole::Limit,
+                limit_name,
+                vec![(0.0, limit), (length, limit)],
+            ),
+        ],
+    }
+}
+
 /// The hysteresis loop chart of either law's loop points: the response (`y_title`) against the
 /// force, between -`f` and `f`, its y range from the larger `peak`.
 fn loop_plot(

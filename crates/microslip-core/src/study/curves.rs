@@ -2,8 +2,7 @@
 //! responses against a parameter, their shear along the interface. The CLI's sweeps, its
 //! single-point reports and the TUI's charts take their numbers from here, so a value on screen
 //! and the same value in a CSV file come from the same function. The load-driven studies (force
-//! sweeps, cycles, loops) are written once in [`crate::study::load`]; the twin beams' names below
-//! are its instances, kept for the callers that name the problem.
+//! sweeps, cycles, loops) are written once in [`crate::study::load`].
 //!
 //! Sweeps are iterators: a million-row sweep streams without building the table first.
 
@@ -199,17 +198,6 @@ pub fn response_vs_param(
     }
 }
 
-/// Tip deflection w(L) (mm) against F (N): (Coulomb, regularized) ([`load::response_vs_force`]).
-///
-/// # Errors
-/// As [`beam_force_sweep`].
-pub fn beam_deflection_vs_force(
-    beams: &TwinBeams,
-    forces: Samples,
-) -> Result<(Series, Series), RangeError> {
-    load::response_vs_force::<TwinBeamsLoad>(beams, forces)
-}
-
 /// End of the microslip zone X (mm) against F (N), regularized law (X = L below F_1): the far
 /// edge of the beams' holding zone ([`load::holding_zone_vs_force`]).
 ///
@@ -298,47 +286,6 @@ pub fn plate_shear_along(plate: &SqueezedPlate, positions: Samples) -> (Series, 
     )
 }
 
-/// The twin beams cycled at one amplitude ([`load::cycle_point`]).
-pub fn cycle_point(beams: &TwinBeams, amplitude: TipForce) -> CyclePoint {
-    load::cycle_point::<TwinBeamsLoad>(beams, amplitude)
-}
-
-/// The twin beams cycled over a range of amplitudes (accepted tip forces): one row per sample
-/// ([`load::cycle_sweep`]).
-///
-/// # Errors
-/// [`RangeError::Bound`] when an end of `amplitudes` is not an accepted tip force.
-pub fn cycle_sweep(
-    beams: TwinBeams,
-    amplitudes: Samples,
-) -> Result<impl Iterator<Item = CyclePoint>, RangeError> {
-    load::cycle_sweep::<TwinBeamsLoad>(beams, amplitudes)
-}
-
-/// The twin beams' closed hysteresis loop at `amplitude` ([`load::cycle_loop`]).
-///
-/// # Errors
-/// [`RangeError::Points`] outside 2 to [`MAX_POINTS`].
-pub fn cycle_loop(
-    beams: &TwinBeams,
-    amplitude: TipForce,
-    points: u64,
-) -> Result<impl Iterator<Item = LoopPoint> + use<>, RangeError> {
-    load::cycle_loop::<TwinBeamsLoad>(beams, amplitude, points)
-}
-
-/// The twin beams' dissipation per cycle D (N mm) against F_a (N): (Coulomb, regularized)
-/// ([`load::dissipation_vs_amplitude`]).
-///
-/// # Errors
-/// As [`cycle_sweep`].
-pub fn dissipation_vs_amplitude(
-    beams: &TwinBeams,
-    amplitudes: Samples,
-) -> Result<(Series, Series), RangeError> {
-    load::dissipation_vs_amplitude::<TwinBeamsLoad>(beams, amplitudes)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -356,10 +303,13 @@ mod tests {
                 ..
             })
         ));
-        assert!(cycle_sweep(beams, wide).is_err());
+        assert!(load::cycle_sweep::<TwinBeamsLoad>(beams, wide).is_err());
         let high = Samples::new(1.0, 1e13, 3, Spacing::Linear).unwrap();
         assert_eq!(
-            cycle_sweep(beams, high).err().unwrap().to_string(),
+            load::cycle_sweep::<TwinBeamsLoad>(beams, high)
+                .err()
+                .unwrap()
+                .to_string(),
             "invalid end = 1e13: must be in [0, 1e12] N"
         );
         let soft = Samples::new(1e-7, 1.0, 3, Spacing::Logarithmic).unwrap();
@@ -379,9 +329,10 @@ mod tests {
                 .iter()
                 .all(|v| v.is_finite())
         }));
-        let cycles: Vec<CyclePoint> = cycle_sweep(beams, force_samples(0.0, 1e12, 11).unwrap())
-            .unwrap()
-            .collect();
+        let cycles: Vec<CyclePoint> =
+            load::cycle_sweep::<TwinBeamsLoad>(beams, force_samples(0.0, 1e12, 11).unwrap())
+                .unwrap()
+                .collect();
         assert_eq!(cycles.len(), 11);
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
         let all = stiffness_samples(1e-6, 1e12, 181, Spacing::Logarithmic).unwrap();

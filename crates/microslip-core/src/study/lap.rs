@@ -1,28 +1,16 @@
 //! Sweeps over any parameter and profiles along the overlap of the double-lap joint: what its
 //! charts and reports show besides the load-driven studies, which are written once in
-//! [`crate::study::load`] (the `lap_*` names of those below are its instances, kept for the
-//! callers that name the problem).
+//! [`crate::study::load`].
 
 use crate::kernel::regime::Law;
 use crate::problems::inputs::Model;
 use crate::problems::lap::closed_form::{JointForce, LapJoint, LapState};
 use crate::problems::lap::load_driven::LapLoad;
 use crate::problems::{LapParam, Param};
-use crate::study::load::{self, CyclePoint, LoopPoint, check_forces};
+use crate::study::load::{self, check_forces};
 use crate::study::samples::{RangeEnd, RangeError, Samples, Series};
 
 pub use crate::problems::lap::load_driven::{LapPoint, lap_point};
-
-/// The joint over a range of forces: one row per sample ([`load::force_sweep`]).
-///
-/// # Errors
-/// [`RangeError::Bound`] when an end of `forces` is outside [0, F_gross].
-pub fn lap_force_sweep(
-    joint: LapJoint,
-    forces: Samples,
-) -> Result<impl Iterator<Item = LapPoint>, RangeError> {
-    load::force_sweep::<LapLoad>(joint, forces)
-}
 
 /// The joint over a range of any one parameter (the others, F included, as in `joint` and
 /// `force`): one row per sample, the sample value first. A sample at which F exceeds that
@@ -71,17 +59,6 @@ pub fn lap_param_sweep(
     }))
 }
 
-/// Delta (mm) against F (N): (Coulomb, regularized) ([`load::response_vs_force`]).
-///
-/// # Errors
-/// As [`lap_force_sweep`].
-pub fn lap_displacement_vs_force(
-    joint: &LapJoint,
-    forces: Samples,
-) -> Result<(Series, Series), RangeError> {
-    load::response_vs_force::<LapLoad>(joint, forces)
-}
-
 /// The middle zone's edges against F, one closed outline per law: x = a (mm) from F = 0 up to
 /// the last force, then x = L - d back down to F = 0 (the edges of the joint's holding zone,
 /// [`load::holding_zone_vs_force`]). The two meet where a + d = L (F_gross), so the outline
@@ -89,7 +66,7 @@ pub fn lap_displacement_vs_force(
 /// zones lie outside it: (Coulomb, regularized).
 ///
 /// # Errors
-/// As [`lap_force_sweep`].
+/// As [`load::force_sweep`].
 pub fn lap_zone_outline_vs_force(
     joint: &LapJoint,
     forces: Samples,
@@ -131,46 +108,4 @@ fn along(
         .values()
         .map(|x| ((x, at(&coulomb, x)), (x, at(&regularized, x))))
         .unzip()
-}
-
-/// The joint cycled at one amplitude ([`load::cycle_point`]).
-pub fn lap_cycle_point(joint: &LapJoint, amplitude: JointForce) -> CyclePoint {
-    load::cycle_point::<LapLoad>(joint, amplitude)
-}
-
-/// The joint cycled over a range of amplitudes in [0, F_gross]: one row per sample
-/// ([`load::cycle_sweep`]).
-///
-/// # Errors
-/// [`RangeError::Bound`] when an end of `amplitudes` is outside [0, F_gross].
-pub fn lap_cycle_sweep(
-    joint: LapJoint,
-    amplitudes: Samples,
-) -> Result<impl Iterator<Item = CyclePoint>, RangeError> {
-    load::cycle_sweep::<LapLoad>(joint, amplitudes)
-}
-
-/// The closed hysteresis loop of Delta at `amplitude` ([`load::cycle_loop`]); the loop point's
-/// `w_*` fields hold Delta (mm).
-///
-/// # Errors
-/// [`RangeError::Points`] outside 2 to [`crate::study::samples::MAX_POINTS`].
-pub fn lap_cycle_loop(
-    joint: &LapJoint,
-    amplitude: JointForce,
-    points: u64,
-) -> Result<impl Iterator<Item = LoopPoint> + use<>, RangeError> {
-    load::cycle_loop::<LapLoad>(joint, amplitude, points)
-}
-
-/// Dissipation per cycle D (N mm) against F_a (N): (Coulomb, regularized)
-/// ([`load::dissipation_vs_amplitude`]).
-///
-/// # Errors
-/// As [`lap_cycle_sweep`].
-pub fn lap_dissipation_vs_amplitude(
-    joint: &LapJoint,
-    amplitudes: Samples,
-) -> Result<(Series, Series), RangeError> {
-    load::dissipation_vs_amplitude::<LapLoad>(joint, amplitudes)
 }

@@ -8,16 +8,13 @@
 //! a force range too, and "within tolerance" holds on one interval [K_T*, infinity): one bracketed
 //! root on ln K_T finds K_T*.
 
+use crate::SqueezedPlate;
 use crate::kernel::code_defaults::{CODE_DEFAULTS, CodeDefault, DefaultRule};
 use crate::kernel::params::{Domain, ParamError};
 use crate::kernel::regime::Law;
 use crate::kernel::solve::find_root_in_bracket;
-use crate::problems::lap::closed_form::LapJoint;
-use crate::problems::lap::load_driven::LapLoad;
 use crate::problems::load_driven::LoadDriven;
-use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
 use crate::problems::{ModelKind, PlateParam};
-use crate::{SqueezedPlate, TwinBeams};
 
 /// Force samples over a range of the load, besides its ends and regime changes: the deviation is
 /// flat below F_thre and falls above it (T2), and over the joint's range it is largest near zero
@@ -72,7 +69,7 @@ pub struct ToleranceAnswer {
     pub current: (f64, f64),
     /// What the threshold means in each FE code's setting.
     pub settings: Vec<CodeSetting>,
-    /// The other reading, when asked for ([`beam_stiffness_near_current`]): the tolerance is of
+    /// The other reading, when asked for ([`stiffness_near_current`]): the tolerance is of
     /// the current K_T's answer, not of Coulomb's; `threshold` is then the interval's lower end.
     pub near_current: Option<NearCurrent>,
 }
@@ -310,59 +307,6 @@ pub fn stiffness_near_current<P: LoadDriven>(
     ))
 }
 
-/// The twin beams' [`stiffness_for_tolerance`]: w(L) at every tip force in `[from, to]` (N).
-///
-/// # Errors
-/// As [`stiffness_for_tolerance`].
-pub fn beam_stiffness_for_tolerance(
-    beams: &TwinBeams,
-    range: [f64; 2],
-    tolerance: f64,
-    element: f64,
-) -> Result<ToleranceAnswer, ToleranceError> {
-    stiffness_for_tolerance::<TwinBeamsLoad>(beams, range, tolerance, element)
-}
-
-/// The twin beams' [`stiffness_near_current`].
-///
-/// # Errors
-/// As [`stiffness_for_tolerance`].
-pub fn beam_stiffness_near_current(
-    beams: &TwinBeams,
-    range: [f64; 2],
-    tolerance: f64,
-    element: f64,
-) -> Result<ToleranceAnswer, ToleranceError> {
-    stiffness_near_current::<TwinBeamsLoad>(beams, range, tolerance, element)
-}
-
-/// The lap joint's [`stiffness_for_tolerance`]: Delta at every force in `[from, to]` (N), each
-/// in [0, F_gross] (L11).
-///
-/// # Errors
-/// As [`stiffness_for_tolerance`].
-pub fn lap_stiffness_for_tolerance(
-    joint: &LapJoint,
-    range: [f64; 2],
-    tolerance: f64,
-    element: f64,
-) -> Result<ToleranceAnswer, ToleranceError> {
-    stiffness_for_tolerance::<LapLoad>(joint, range, tolerance, element)
-}
-
-/// The lap joint's [`stiffness_near_current`].
-///
-/// # Errors
-/// As [`stiffness_for_tolerance`].
-pub fn lap_stiffness_near_current(
-    joint: &LapJoint,
-    range: [f64; 2],
-    tolerance: f64,
-    element: f64,
-) -> Result<ToleranceAnswer, ToleranceError> {
-    stiffness_near_current::<LapLoad>(joint, range, tolerance, element)
-}
-
 /// [`near_current`] over a force range: `response(K_T, F)` is the regularized answer at each
 /// force, `coulomb(F)` Coulomb's; the current K_T is the question's.
 fn near_current_over_forces<F: Copy>(
@@ -398,7 +342,7 @@ fn near_current_over_forces<F: Copy>(
     )
 }
 
-/// The plate, the other reading (see [`beam_stiffness_near_current`]).
+/// The plate, the other reading (see [`stiffness_near_current`]).
 ///
 /// # Errors
 /// As [`plate_stiffness_for_tolerance`].
