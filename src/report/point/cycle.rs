@@ -28,7 +28,7 @@ pub(crate) const LAP_CYCLE_NOTE: &str = "D is the whole joint's (both interfaces
 /// A load-driven structure cycled between +F_a and -F_a: `S` is its parameters (the twin
 /// beams', the lap joint's), for the text's one-line summary.
 #[derive(Debug, Clone, Serialize)]
-pub struct CycleReport<S> {
+pub struct CycleReport<S: 'static> {
     /// `beam` or `lap`.
     pub model: &'static str,
     pub preset: String,
@@ -44,6 +44,9 @@ pub struct CycleReport<S> {
     /// A note on the units: what D, U and the secant stiffness are of (`CYCLE_UNITS_NOTE`,
     /// `LAP_CYCLE_NOTE`).
     pub note: &'static str,
+    /// The problem's words in the text.
+    #[serde(skip)]
+    words: &'static CycleWords<S>,
 }
 
 /// The twin beams cycled between +F_a and -F_a.
@@ -100,18 +103,35 @@ impl Serialize for LawCycle {
     }
 }
 
-/// A problem's words in its cycle report: the JSON key of the peak, the labels of the six rows
-/// of the text's table, and the note.
-struct CycleWords {
+/// A problem's words in its cycle report: the JSON key of the peak, the heading, the line that
+/// gives the structure `S`, the labels of the six rows of the text's table, and the note.
+#[derive(Debug)]
+struct CycleWords<S> {
     model: &'static str,
     peak_key: &'static str,
+    /// What is cycled and by which load: (`Twin beams`, `tip force`).
+    heading: (&'static str, &'static str),
+    structure: fn(&S) -> String,
     rows: [&'static str; 6],
     note: &'static str,
 }
 
-const BEAM_WORDS: CycleWords = CycleWords {
+static BEAM_WORDS: CycleWords<TwinBeamsParams> = CycleWords {
     model: "beam",
     peak_key: "w_peak_mm",
+    heading: ("Twin beams", "tip force"),
+    structure: |p| {
+        format!(
+            "L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
+            number(p.length),
+            number(p.width),
+            number(p.half_height),
+            number(p.youngs_modulus),
+            number(p.pressure),
+            number(p.friction),
+            number(p.tangential_stiffness)
+        )
+    },
     rows: [
         "onset of sliding (N)",
         "peak deflection w_a (mm)",
@@ -123,9 +143,24 @@ const BEAM_WORDS: CycleWords = CycleWords {
     note: CYCLE_UNITS_NOTE,
 };
 
-const LAP_WORDS: CycleWords = CycleWords {
+static LAP_WORDS: CycleWords<LapParams> = CycleWords {
     model: "lap",
     peak_key: "Delta_peak_mm",
+    heading: ("Double-lap joint", "force"),
+    structure: |p| {
+        format!(
+            "L = {} mm, b = {} mm, t1 = {} mm, t2 = {} mm, E1 = {} MPa, E2 = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
+            number(p.length),
+            number(p.width),
+            number(p.inner_thickness),
+            number(p.cover_thickness),
+            number(p.inner_modulus),
+            number(p.cover_modulus),
+            number(p.pressure),
+            number(p.friction),
+            number(p.tangential_stiffness)
+        )
+    },
     rows: [
         "onset of sliding (N)",
         "peak displacement Delta_a (mm)",
@@ -137,10 +172,10 @@ const LAP_WORDS: CycleWords = CycleWords {
     note: LAP_CYCLE_NOTE,
 };
 
-impl<S> CycleReport<S> {
+impl<S: 'static> CycleReport<S> {
     /// The report of `model` cycled at `amplitude`, both laws, in the problem's `words`.
     fn cycled<P: LoadDriven>(
-        words: &CycleWords,
+        words: &'static CycleWords<S>,
         preset: &str,
         (inputs, structure): (Inputs, S),
         model: &P::Model,
@@ -156,11 +191,23 @@ impl<S> CycleReport<S> {
             coulomb: law(Law::Coulomb),
             regularized: law(Law::Regularized),
             note: words.note,
+            words,
         }
     }
 
-    /// The readable summary after its two heading lines: both laws side by side, then the note.
-    fn table(&self, words: &CycleWords, mut out: String) -> String {
+    /// The readable summary: what is cycled and its structure, then both laws side by side.
+    pub fn text(&self) -> String {
+        let words = self.words;
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "{2}, {3} cycling between +{0} N and -{0} N (Masing branches) - preset {1}",
+            number(self.amplitude),
+            sanitize(&self.preset),
+            words.heading.0,
+            words.heading.1,
+        );
+        let _ = writeln!(out, "  {}", (words.structure)(&self.structure));
         let _ = writeln!(out, "{:<34}{:<18}regularized", "", "Coulomb");
         let (c, r) = (&self.coulomb, &self.regularized);
         let values = [
@@ -197,30 +244,6 @@ impl CycleReport<TwinBeamsParams> {
             amplitude,
         )
     }
-
-    /// The readable summary: both laws side by side.
-    pub fn text(&self) -> String {
-        let mut out = String::new();
-        let _ = writeln!(
-            out,
-            "Twin beams, tip force cycling between +{0} N and -{0} N (Masing branches) - preset {1}",
-            number(self.amplitude),
-            sanitize(&self.preset)
-        );
-        let p = &self.structure;
-        let _ = writeln!(
-            out,
-            "  L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
-            number(p.length),
-            number(p.width),
-            number(p.half_height),
-            number(p.youngs_modulus),
-            number(p.pressure),
-            number(p.friction),
-            number(p.tangential_stiffness)
-        );
-        self.table(&BEAM_WORDS, out)
-    }
 }
 
 impl CycleReport<LapParams> {
@@ -236,32 +259,6 @@ impl CycleReport<LapParams> {
             joint,
             amplitude,
         )
-    }
-
-    /// The readable summary: both laws side by side.
-    pub fn text(&self) -> String {
-        let mut out = String::new();
-        let _ = writeln!(
-            out,
-            "Double-lap joint, force cycling between +{0} N and -{0} N (Masing branches) - preset {1}",
-            number(self.amplitude),
-            sanitize(&self.preset)
-        );
-        let p = &self.structure;
-        let _ = writeln!(
-            out,
-            "  L = {} mm, b = {} mm, t1 = {} mm, t2 = {} mm, E1 = {} MPa, E2 = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
-            number(p.length),
-            number(p.width),
-            number(p.inner_thickness),
-            number(p.cover_thickness),
-            number(p.inner_modulus),
-            number(p.cover_modulus),
-            number(p.pressure),
-            number(p.friction),
-            number(p.tangential_stiffness)
-        );
-        self.table(&LAP_WORDS, out)
     }
 }
 

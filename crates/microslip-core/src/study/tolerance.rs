@@ -228,6 +228,45 @@ fn worst<P: LoadDriven>(model: &P::Model, forces: &[P::Force]) -> f64 {
         .fold(f64::NEG_INFINITY, f64::max)
 }
 
+/// The question about `model` over `range` (N) at `tolerance`, checked, and the forces sampled in
+/// the range: what both readings start from.
+fn load_question<P: LoadDriven>(
+    model: &P::Model,
+    range: [f64; 2],
+    tolerance: f64,
+) -> Result<(Question, Vec<P::Force>), ToleranceError> {
+    let tolerance = check_tolerance(tolerance)?;
+    let (range, forces) = checked_forces::<P>(model, range)?;
+    let question = Question {
+        kind: P::KIND,
+        tolerance,
+        forces: Some(range),
+        current: (P::tangential_stiffness(model), worst::<P>(model, &forces)),
+        domain: P::STIFFNESS.spec().domain,
+    };
+    Ok((question, forces))
+}
+
+/// `model` with K_T = `kt`; every K_T of the domain is accepted (and no force depends on K_T,
+/// nor does the joint's F_gross), so the fallback is never taken.
+fn stiffened<P: LoadDriven>(model: &P::Model, kt: f64) -> P::Model {
+    P::with_tangential_stiffness(model, kt).unwrap_or(*model)
+}
+
+/// Each code's setting for `threshold` on `model` with contact elements of `element` (mm).
+fn load_settings<P: LoadDriven>(
+    model: &P::Model,
+    threshold: Threshold,
+    element: f64,
+) -> Vec<CodeSetting> {
+    code_settings(
+        threshold,
+        P::interface_strength(model),
+        P::modulus(model),
+        element,
+    )
+}
+
 /// Any load-driven problem: the smallest K_T for which the regularized response stays within
 /// `tolerance` (fraction) of Coulomb's at every force in `range` = `[from, to]` (N), all else as
 /// in `model`. The response does not increase with K_T at a fixed force ((T1), (L11)), so the
@@ -241,27 +280,16 @@ pub fn stiffness_for_tolerance<P: LoadDriven>(
     tolerance: f64,
     element: f64,
 ) -> Result<ToleranceAnswer, ToleranceError> {
-    let tolerance = check_tolerance(tolerance)?;
-    let (range, forces) = checked_forces::<P>(model, range)?;
-    // Every K_T of the domain is accepted, and the forces do not depend on K_T (nor does the
-    // joint's F_gross): the fallback is never taken.
-    let at = |kt: f64| {
-        let stiffer = P::with_tangential_stiffness(model, kt).unwrap_or(*model);
-        worst::<P>(&stiffer, &forces)
-    };
-    let threshold = smallest_within(P::STIFFNESS.spec().domain, tolerance, at);
+    let (question, forces) = load_question::<P>(model, range, tolerance)?;
+    let at = |kt: f64| worst::<P>(&stiffened::<P>(model, kt), &forces);
+    let threshold = smallest_within(question.domain, question.tolerance, at);
     Ok(ToleranceAnswer {
-        kind: P::KIND,
-        tolerance,
-        forces: Some(range),
+        kind: question.kind,
+        tolerance: question.tolerance,
+        forces: question.forces,
         threshold,
-        current: (P::tangential_stiffness(model), worst::<P>(model, &forces)),
-        settings: code_settings(
-            threshold,
-            P::interface_strength(model),
-            P::modulus(model),
-            element,
-        ),
+        current: question.current,
+        settings: load_settings::<P>(model, threshold, element),
         near_current: None,
     })
 }
@@ -279,31 +307,13 @@ pub fn stiffness_near_current<P: LoadDriven>(
     tolerance: f64,
     element: f64,
 ) -> Result<ToleranceAnswer, ToleranceError> {
-    let tolerance = check_tolerance(tolerance)?;
-    let (range, forces) = checked_forces::<P>(model, range)?;
-    let question = Question {
-        kind: P::KIND,
-        tolerance,
-        forces: Some(range),
-        current: (P::tangential_stiffness(model), worst::<P>(model, &forces)),
-        domain: P::STIFFNESS.spec().domain,
-    };
+    let (question, forces) = load_question::<P>(model, range, tolerance)?;
     Ok(near_current_over_forces(
         question,
         &forces,
-        |kt, f| {
-            let at = P::with_tangential_stiffness(model, kt).unwrap_or(*model);
-            P::response(&at, Law::Regularized, f)
-        },
+        |kt, f| P::response(&stiffened::<P>(model, kt), Law::Regularized, f),
         |f| P::response(model, Law::Coulomb, f),
-        |threshold| {
-            code_settings(
-                threshold,
-                P::interface_strength(model),
-                P::modulus(model),
-                element,
-            )
-        },
+        |threshold| load_settings::<P>(model, threshold, element),
     ))
 }
 
