@@ -137,6 +137,12 @@ pub fn build(
     plot
 }
 
+/// The chart `chart` of `model` (a model of the chart's kind) as a figure shows it: the TUI's
+/// series, with the finite-element points where asked and the chart has them, the y axis in mode
+/// `y` where it applies.
+///
+/// # Errors
+/// The finite-element solver's, when `finite_elements` is asked and it fails.
 pub fn figure(
     model: &Model,
     chart: AnyChart,

@@ -117,13 +117,6 @@ pub(super) fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plo
     }
 }
 
-/// The chart `chart` of `model` (a model of the chart's kind) as a figure shows it: the TUI's
-/// series, with the finite-element points where asked and the chart has them, the y axis in mode
-/// `y` where it applies.
-///
-/// # Errors
-/// The finite-element solver's, when `finite_elements` is asked and it fails.
-
 /// The plate's finite-element points for `chart`: u(L) against K_T, with the 2-D continuum
 /// beside it (none for X_r vs mu and the contact pressure).
 pub(super) fn plate_numeric_points(
