@@ -219,7 +219,7 @@ pub struct NumericPoints {
 pub struct PointFailure {
     /// Where, with its unit: "F = 120 N", "K_T = 1e10 MPa/mm".
     pub at: String,
-    /// The solver's reason (a [`NumericError`]'s message).
+    /// The solver's reason (a [`crate::numeric::NumericError`]'s message).
     pub why: String,
 }
 
