@@ -28,13 +28,16 @@ use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
+use crate::problems::lap::load_driven::LapLoad;
 use crate::problems::twin_beams::closed_form::BeamTheory;
+use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
 use crate::problems::{BeamParam, LapParam, ModelKind, Param, PlateParam, UnknownParam};
 use crate::report::figure::{self, FigureError};
 use crate::report::rows::{BeamRow, CycleRow, LapLoopRow, LapRow, LoopRow, PlateRow};
 use crate::report::table::{TableFormat, write_json, write_table, write_table_after};
 use crate::report::{self, json, text};
 use crate::study::curves::{self, RangeError, Samples, Spacing};
+use crate::study::load;
 use crate::study::target::{Target, TargetError, solve_for_target};
 use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
@@ -1091,7 +1094,8 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 .map_err(force_range_error)?;
             let (_, beams, force) = load_beams(inputs, "sweep beam")?;
             if varied == BeamParam::Force {
-                let rows = curves::beam_force_sweep(beams, values).map_err(force_range_error)?;
+                let rows =
+                    load::force_sweep::<TwinBeamsLoad>(beams, values).map_err(force_range_error)?;
                 write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
             } else {
                 let rows = curves::beam_param_sweep(beams, force, varied, values)
@@ -1259,11 +1263,12 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 curves::force_samples(*from, *to, *points).map_err(force_range_error)?;
             match load_any_structure(inputs, ModelKind::Beam)?.1 {
                 Model::Beam { beams, .. } => {
-                    let rows = curves::cycle_sweep(beams, amplitudes).map_err(force_range_error)?;
+                    let rows = load::cycle_sweep::<TwinBeamsLoad>(beams, amplitudes)
+                        .map_err(force_range_error)?;
                     write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
                 }
                 Model::Lap { joint, .. } => {
-                    let rows = crate::study::lap::lap_cycle_sweep(joint, amplitudes)
+                    let rows = load::cycle_sweep::<LapLoad>(joint, amplitudes)
                         .map_err(force_range_error)?;
                     write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
                 }
@@ -2100,7 +2105,7 @@ fn plate_has_no_cycle(args: &InputArgs, command: &str) -> CliError {
 
 /// `microslip sweep lap`: over F (rows of the F sweep) or any other parameter.
 fn run_lap_sweep(out: &mut impl Write, args: &LapSweepArgs) -> Result<(), CliError> {
-    use crate::study::lap::{lap_force_sweep, lap_param_sweep};
+    use crate::study::lap::lap_param_sweep;
     let varied: LapParam = args.vary.as_deref().unwrap_or("F").parse()?;
     let param = Param::Lap(varied);
     let values = Samples::of_param(
@@ -2113,7 +2118,7 @@ fn run_lap_sweep(out: &mut impl Write, args: &LapSweepArgs) -> Result<(), CliErr
     .map_err(force_range_error)?;
     let (_, joint, force) = load_lap(&args.inputs, "sweep lap")?;
     if varied == LapParam::Force {
-        let rows = lap_force_sweep(joint, values).map_err(force_range_error)?;
+        let rows = load::force_sweep::<LapLoad>(joint, values).map_err(force_range_error)?;
         write_table(out, args.format, rows.map(|r| LapRow::from(&r)))?;
     } else {
         let rows = lap_param_sweep(joint, force, varied, values).map_err(force_range_error)?;
@@ -2403,7 +2408,7 @@ fn run_cycle(
                 }
                 CycleFormat::Json => write_json(out, &json::lap_cycle(&name, &joint, amplitude))?,
                 CycleFormat::Csv => {
-                    let points = crate::study::lap::lap_cycle_loop(&joint, amplitude, points)
+                    let points = load::cycle_loop::<LapLoad>(&joint, amplitude, points)
                         .map_err(points_error)?;
                     write_table(out, TableFormat::Csv, points.map(|p| LapLoopRow::from(&p)))?;
                 }
@@ -2417,7 +2422,8 @@ fn run_cycle(
         CycleFormat::Text => out.write_all(text::cycle(&name, &beams, amplitude).as_bytes())?,
         CycleFormat::Json => write_json(out, &json::cycle(&name, &beams, amplitude))?,
         CycleFormat::Csv => {
-            let points = curves::cycle_loop(&beams, amplitude, points).map_err(points_error)?;
+            let points = load::cycle_loop::<TwinBeamsLoad>(&beams, amplitude, points)
+                .map_err(points_error)?;
             write_table(out, TableFormat::Csv, points.map(|p| LoopRow::from(&p)))?;
         }
     }
@@ -2470,10 +2476,10 @@ fn run_kt_tolerance(
             let range = tolerance_forces([from, to], force.newtons())?;
             match of {
                 ToleranceOf::Coulomb => {
-                    tolerance::beam_stiffness_for_tolerance(&beams, range, tol, element)
+                    tolerance::stiffness_for_tolerance::<TwinBeamsLoad>(&beams, range, tol, element)
                 }
                 ToleranceOf::Current => {
-                    tolerance::beam_stiffness_near_current(&beams, range, tol, element)
+                    tolerance::stiffness_near_current::<TwinBeamsLoad>(&beams, range, tol, element)
                 }
             }
             .map_err(|e| CliError::Invalid(e.to_string()))?
@@ -2496,10 +2502,10 @@ fn run_kt_tolerance(
             }
             match of {
                 ToleranceOf::Coulomb => {
-                    tolerance::lap_stiffness_for_tolerance(&joint, range, tol, element)
+                    tolerance::stiffness_for_tolerance::<LapLoad>(&joint, range, tol, element)
                 }
                 ToleranceOf::Current => {
-                    tolerance::lap_stiffness_near_current(&joint, range, tol, element)
+                    tolerance::stiffness_near_current::<LapLoad>(&joint, range, tol, element)
                 }
             }
             .map_err(|e| CliError::Invalid(e.to_string()))?

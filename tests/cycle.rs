@@ -4,7 +4,7 @@
 
 use microslip::numeric::MeshDensity;
 use microslip::problems::twin_beams::TwinBeamsFe;
-use microslip::problems::twin_beams::cycle::{Cycle, Law};
+use microslip::problems::twin_beams::cycle::{Cycle, Law, MasingCycle};
 use microslip::{TipForce, TwinBeams, TwinBeamsParams};
 
 fn beams(kt: f64) -> TwinBeams {

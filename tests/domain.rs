@@ -11,7 +11,7 @@
 
 use microslip::kernel::params::Domain;
 use microslip::problems::twin_beams::closed_form::BeamTheory;
-use microslip::problems::twin_beams::cycle::{Cycle, Law};
+use microslip::problems::twin_beams::cycle::{Cycle, Law, MasingCycle};
 use microslip::problems::{BeamParam, PlateParam};
 use microslip::{PlateParams, Regime, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 use proptest::prelude::*;

@@ -2,11 +2,11 @@
 //! force over the closed forms (plain bisection written here, with its own force grid) and the
 //! monotonicity it relies on (docs/theory.md, (T1)).
 
+use microslip::problems::twin_beams::load_driven::TwinBeamsLoad;
 use microslip::problems::{BeamParam, PlateParam};
 use microslip::study::tolerance::{
-    ParseToleranceError, Threshold, ToleranceError, beam_stiffness_for_tolerance,
-    beam_stiffness_near_current, parse_tolerance, plate_stiffness_for_tolerance,
-    plate_stiffness_near_current,
+    ParseToleranceError, Threshold, ToleranceError, parse_tolerance, plate_stiffness_for_tolerance,
+    plate_stiffness_near_current, stiffness_for_tolerance, stiffness_near_current,
 };
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
@@ -51,7 +51,9 @@ fn found(threshold: Threshold) -> f64 {
 
 #[test]
 fn paper_beams_at_100_n_need_about_423_mpa_per_mm_for_one_percent() {
-    let answer = beam_stiffness_for_tolerance(&paper_beams(), [100.0, 100.0], 0.01, 2.0).unwrap();
+    let answer =
+        stiffness_for_tolerance::<TwinBeamsLoad>(&paper_beams(), [100.0, 100.0], 0.01, 2.0)
+            .unwrap();
     let kt = found(answer.threshold);
     let brute = brute_force(&[100.0], 0.01, beam_ratio);
     assert!((kt / brute - 1.0).abs() < 1e-8, "{kt} vs {brute}");
@@ -67,7 +69,9 @@ fn over_a_force_range_the_worst_force_decides() {
     // A dense grid of its own (1001 forces) against the library's coarse one plus F_thre.
     let forces: Vec<f64> = (1..=1000).map(|i| 0.3 * f64::from(i)).collect();
     for tol in [0.001, 0.01, 0.05] {
-        let answer = beam_stiffness_for_tolerance(&paper_beams(), [0.0, 300.0], tol, 2.0).unwrap();
+        let answer =
+            stiffness_for_tolerance::<TwinBeamsLoad>(&paper_beams(), [0.0, 300.0], tol, 2.0)
+                .unwrap();
         let kt = found(answer.threshold);
         let brute = brute_force(&forces, tol, beam_ratio);
         assert!(
@@ -131,7 +135,9 @@ fn the_plate_threshold_matches_brute_force() {
 #[test]
 fn code_settings_give_at_least_the_stiffness_needed() {
     use microslip::study::tolerance::Setting;
-    let answer = beam_stiffness_for_tolerance(&paper_beams(), [100.0, 100.0], 0.01, 2.0).unwrap();
+    let answer =
+        stiffness_for_tolerance::<TwinBeamsLoad>(&paper_beams(), [100.0, 100.0], 0.01, 2.0)
+            .unwrap();
     let kt = found(answer.threshold);
     let mu_p = 0.3 * 1.0;
     for s in &answer.settings {
@@ -160,7 +166,7 @@ fn code_settings_give_at_least_the_stiffness_needed() {
 #[test]
 fn limits_and_refusals() {
     let beams = paper_beams();
-    let lax = beam_stiffness_for_tolerance(&beams, [0.0, 100.0], 10.0, 2.0).unwrap();
+    let lax = stiffness_for_tolerance::<TwinBeamsLoad>(&beams, [0.0, 100.0], 10.0, 2.0).unwrap();
     assert_eq!(
         lax.threshold,
         Threshold::Everywhere(BeamParam::Stiffness.spec().domain.min())
@@ -171,7 +177,7 @@ fn limits_and_refusals() {
         ..TwinBeamsParams::PAPER
     })
     .unwrap();
-    let strict = beam_stiffness_for_tolerance(&short, [0.0, 100.0], 1e-9, 2.0).unwrap();
+    let strict = stiffness_for_tolerance::<TwinBeamsLoad>(&short, [0.0, 100.0], 1e-9, 2.0).unwrap();
     assert!(
         matches!(strict.threshold, Threshold::Nowhere { deviation, .. } if deviation > 1e-9),
         "{:?}",
@@ -184,15 +190,15 @@ fn limits_and_refusals() {
     assert!(found(lax.threshold) > PlateParam::Stiffness.spec().domain.min());
     for bad in [0.0, -0.01, 11.0, f64::NAN, f64::INFINITY] {
         assert!(matches!(
-            beam_stiffness_for_tolerance(&beams, [0.0, 100.0], bad, 2.0),
+            stiffness_for_tolerance::<TwinBeamsLoad>(&beams, [0.0, 100.0], bad, 2.0),
             Err(ToleranceError::Tolerance { .. })
         ));
     }
     assert!(matches!(
-        beam_stiffness_for_tolerance(&beams, [0.0, 0.0], 0.01, 2.0),
+        stiffness_for_tolerance::<TwinBeamsLoad>(&beams, [0.0, 0.0], 0.01, 2.0),
         Err(ToleranceError::Unloaded { .. })
     ));
-    assert!(beam_stiffness_for_tolerance(&beams, [-1.0, 10.0], 0.01, 2.0).is_err());
+    assert!(stiffness_for_tolerance::<TwinBeamsLoad>(&beams, [-1.0, 10.0], 0.01, 2.0).is_err());
     assert_eq!(parse_tolerance("1%"), Ok(0.01));
     assert_eq!(parse_tolerance(" 0.05 "), Ok(0.05));
     for bad in ["", "%", "abc", "0", "-1%", "nan", "2000%"] {
@@ -228,7 +234,8 @@ fn within_t_of_the_current_answer_is_an_interval_around_the_current_k_t() {
             .tip_deflection()
     };
     // At 100 N Coulomb is 0.515 % below K_T = 600's answer: within 1 %, every stiffer K_T is.
-    let answer = beam_stiffness_near_current(&paper_beams(), [100.0, 100.0], 0.01, 2.0).unwrap();
+    let answer =
+        stiffness_near_current::<TwinBeamsLoad>(&paper_beams(), [100.0, 100.0], 0.01, 2.0).unwrap();
     let near = answer.near_current.unwrap();
     assert_eq!(near.upper, None);
     let lo = found(answer.threshold);
@@ -238,7 +245,9 @@ fn within_t_of_the_current_answer_is_an_interval_around_the_current_k_t() {
     assert!(lo < 423.0, "looser than 1 % of Coulomb: {lo}");
     assert!((near.coulomb + 0.00515).abs() < 1e-4, "{}", near.coulomb);
     // Within 0.1 %: bounded above too, and the upper end is where w falls 0.1 % below.
-    let answer = beam_stiffness_near_current(&paper_beams(), [100.0, 100.0], 0.001, 2.0).unwrap();
+    let answer =
+        stiffness_near_current::<TwinBeamsLoad>(&paper_beams(), [100.0, 100.0], 0.001, 2.0)
+            .unwrap();
     let (lo, hi) = (
         found(answer.threshold),
         answer.near_current.unwrap().upper.unwrap(),
@@ -247,9 +256,11 @@ fn within_t_of_the_current_answer_is_an_interval_around_the_current_k_t() {
     assert!((off(lo) - 0.001).abs() < 1e-8 && (off(hi) + 0.001).abs() < 1e-8);
     assert!(off(hi * 1.01) < -0.001 && off(hi * 0.99) > -0.001);
     // Over a force range, every force must be within: the interval is narrower than at either end.
-    let range = beam_stiffness_near_current(&paper_beams(), [40.0, 200.0], 0.001, 2.0).unwrap();
+    let range =
+        stiffness_near_current::<TwinBeamsLoad>(&paper_beams(), [40.0, 200.0], 0.001, 2.0).unwrap();
     let at = |f: f64| {
-        let a = beam_stiffness_near_current(&paper_beams(), [f, f], 0.001, 2.0).unwrap();
+        let a =
+            stiffness_near_current::<TwinBeamsLoad>(&paper_beams(), [f, f], 0.001, 2.0).unwrap();
         (
             found(a.threshold),
             a.near_current.unwrap().upper.unwrap_or(f64::INFINITY),
@@ -320,7 +331,7 @@ fn the_interval_at_the_edges_of_the_accepted_range() {
         ..TwinBeamsParams::PAPER
     })
     .unwrap();
-    let answer = beam_stiffness_near_current(&soft, [100.0, 100.0], 0.01, 2.0).unwrap();
+    let answer = stiffness_near_current::<TwinBeamsLoad>(&soft, [100.0, 100.0], 0.01, 2.0).unwrap();
     assert!(matches!(answer.threshold, Threshold::Everywhere(k) if k == 1e-6));
     let near = answer.near_current.unwrap();
     let upper = near.upper.unwrap();
@@ -341,7 +352,7 @@ fn the_interval_at_the_edges_of_the_accepted_range() {
 #[test]
 fn the_lap_joints_worst_force_near_zero_decides() {
     use microslip::problems::lap::closed_form::{LapJoint, LapParams};
-    use microslip::study::tolerance::lap_stiffness_for_tolerance;
+    use microslip::problems::lap::load_driven::LapLoad;
     let joint = LapJoint::new(LapParams::ALUMINIUM).unwrap();
     let ratio = |kt: f64, f: f64| {
         let joint = joint.with_tangential_stiffness(kt).unwrap();
@@ -351,7 +362,7 @@ fn the_lap_joints_worst_force_near_zero_decides() {
     };
     let forces: Vec<f64> = [1e-6, 1e-3, 1.0, 10.0, 93.0, 500.0, 2000.0, 4000.0, 5999.0].to_vec();
     let brute = brute_force(&forces, 0.01, ratio);
-    let answer = lap_stiffness_for_tolerance(&joint, [0.0, 6000.0], 0.01, 0.4).unwrap();
+    let answer = stiffness_for_tolerance::<LapLoad>(&joint, [0.0, 6000.0], 0.01, 0.4).unwrap();
     let k = found(answer.threshold);
     assert!((k / brute - 1.0).abs() < 1e-3, "{k} vs {brute}");
     assert!((k / 1.63e6 - 1.0).abs() < 0.01, "{k}");

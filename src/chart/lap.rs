@@ -2,22 +2,26 @@
 //! zones vs F, tau(x), the loop and D vs F_a. Built from [`crate::study::lap`].
 
 use crate::chart::NumericPoints;
-use crate::chart::view::LapChart;
-use crate::chart::{
-    Plot, SeriesRole, companions, cursor, dissipation_plot, line, linear_axis, loop_plot, max_y,
-    samples,
+use crate::chart::load::{
+    LoadLabels, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
 };
-use crate::kernel::format::{number, number_with};
-use crate::kernel::regime::Law;
+use crate::chart::view::LapChart;
+use crate::chart::{Plot, SeriesRole, cursor, line, linear_axis, samples};
+use crate::kernel::format::number_with;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
-use crate::problems::lap::cycle::LapCycle;
+use crate::problems::lap::load_driven::LapLoad;
 use crate::problems::lap::{LapContinuumMesh, LapFe, solve_lap_continuum_path};
 use crate::study::curves::Spacing;
 use crate::study::lap as curves;
 
-/// Loop points per branch: one per column of a 100-column chart.
-const LOOP_POINTS: u64 = super::SAMPLES / 2 + 1;
+/// What the joint's load charts call its quantities.
+const LAP_LABELS: LoadLabels = LoadLabels {
+    response: "Delta",
+    response_axis: "Delta (mm)",
+    loop_title: ("", "D"),
+    dissipation_axis: "D (N mm)",
+};
 
 /// The force axis: the whole range the joint carries, 0 to F_gross (N), or `span` when a family
 /// asks for a wider one (never beyond F_gross: there is no state there).
@@ -36,28 +40,9 @@ pub(crate) fn lap_plot(
     let f_max = force_range(joint, span);
     let forces = samples(0.0, f_max, Spacing::Linear)?;
     let kt = p.tangential_stiffness;
-    let companions = companions(kt, |k| joint.with_tangential_stiffness(k).ok());
     let f = force.newtons();
     match chart {
-        LapChart::Displacement => {
-            let (coulomb, regularized) = curves::lap_displacement_vs_force(joint, forces).ok()?;
-            let mut series = vec![line(SeriesRole::Coulomb, "Coulomb", coulomb)];
-            for (role, label, other) in &companions {
-                let (_, delta) = curves::lap_displacement_vs_force(other, forces).ok()?;
-                series.push(line(*role, *label, delta));
-            }
-            series.push(line(SeriesRole::Current, "K_T", regularized));
-            let top = 1.05 * max_y(series.iter().map(|s| &s.points)).max(f64::MIN_POSITIVE);
-            let y = linear_axis("Delta (mm)", 0.0, top);
-            series.push(cursor(f, y.bounds));
-            Some(Plot {
-                caption: None,
-                title: format!("Delta vs F, K_T = {} MPa/mm", number(kt)),
-                x: linear_axis("F (N)", 0.0, f_max),
-                y,
-                series,
-            })
-        }
+        LapChart::Displacement => response_plot::<LapLoad>(joint, &LAP_LABELS, forces, (f, f_max)),
         LapChart::Zones => {
             let (coulomb, regularized) = curves::lap_zone_outline_vs_force(joint, forces).ok()?;
             let series = vec![
@@ -79,78 +64,28 @@ pub(crate) fn lap_plot(
         }
         LapChart::Shear => {
             let positions = samples(0.0, p.length, Spacing::Linear)?;
-            let (coulomb, regularized) = curves::lap_shear_along(joint, force, positions);
-            let mu_p = joint.coulomb_stress();
-            let top = 1.1 * max_y([&coulomb, &regularized]).max(mu_p);
-            Some(Plot {
-                caption: None,
-                title: format!("tau(x) at F = {} N, K_T = {} MPa/mm", number(f), number(kt)),
-                x: linear_axis("x (mm)", 0.0, p.length),
-                y: linear_axis("tau (MPa)", 0.0, top),
-                series: vec![
-                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
-                    line(SeriesRole::Current, "regularized", regularized),
-                    line(
-                        SeriesRole::Limit,
-                        "mu P",
-                        vec![(0.0, mu_p), (p.length, mu_p)],
-                    ),
-                ],
-            })
+            Some(profile_plot(
+                ("tau(x)", "tau (MPa)"),
+                (f, kt),
+                p.length,
+                curves::lap_shear_along(joint, force, positions),
+                ("mu P", joint.coulomb_stress()),
+            ))
         }
         LapChart::Slip => {
             let positions = samples(0.0, p.length, Spacing::Linear)?;
-            let (coulomb, regularized) = curves::lap_slip_along(joint, force, positions);
-            let saturation = joint.saturation_slip();
-            let top = 1.1 * max_y([&coulomb, &regularized]).max(saturation);
-            Some(Plot {
-                caption: None,
-                title: format!("s(x) at F = {} N, K_T = {} MPa/mm", number(f), number(kt)),
-                x: linear_axis("x (mm)", 0.0, p.length),
-                y: linear_axis("s (mm)", 0.0, top),
-                series: vec![
-                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
-                    line(SeriesRole::Current, "regularized", regularized),
-                    line(
-                        SeriesRole::Limit,
-                        "mu P / K_T",
-                        vec![(0.0, saturation), (p.length, saturation)],
-                    ),
-                ],
-            })
-        }
-        LapChart::Loop => {
-            let (coulomb, regularized) = (
-                LapCycle::new(joint, Law::Coulomb, force),
-                LapCycle::new(joint, Law::Regularized, force),
-            );
-            let loops = curves::lap_cycle_loop(joint, force, LOOP_POINTS).ok()?;
-            Some(loop_plot(
-                // At most 41 characters (the title row of an 80x24 screen's chart pane).
-                format!(
-                    "+-{} N; D {} C, {} R N mm",
-                    number(f),
-                    number_with(coulomb.dissipation(), 3),
-                    number_with(regularized.dissipation(), 3)
-                ),
-                loops,
-                coulomb
-                    .peak_displacement()
-                    .max(regularized.peak_displacement()),
-                f,
-                "Delta (mm)",
+            Some(profile_plot(
+                ("s(x)", "s (mm)"),
+                (f, kt),
+                p.length,
+                curves::lap_slip_along(joint, force, positions),
+                ("mu P / K_T", joint.saturation_slip()),
             ))
         }
+        LapChart::Loop => loop_chart::<LapLoad>(joint, &LAP_LABELS, force),
         LapChart::Dissipation => {
             let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
-            let (coulomb, regularized) =
-                curves::lap_dissipation_vs_amplitude(joint, amplitudes).ok()?;
-            Some(dissipation_plot(
-                &curves::lap_cycle_point(joint, force),
-                (coulomb, regularized),
-                (f, f_max),
-                "D (N mm)",
-            ))
+            dissipation_chart::<LapLoad>(joint, &LAP_LABELS, force, amplitudes, f_max)
         }
     }
 }
@@ -249,15 +184,10 @@ pub(crate) fn lap_numeric_points(
             // Its own slider histories round a real reversal, no Masing rule.
             let fa = force.newtons().min(0.98 * joint.gross_slip_force());
             fe.load_to(fa, 4)?;
-            let mut found = Vec::with_capacity(2 * count);
-            for (from, sign) in [(fa, -1.0), (-fa, 1.0)] {
-                for i in 1..=count {
-                    let f = from + sign * 2.0 * fa * i as f64 / count as f64;
-                    fe.load_to(f, 2)?;
-                    found.push((f, fe.joint_displacement()));
-                }
-            }
-            points(found)
+            points(fe_loop(fa, count, |f| {
+                fe.load_to(f, 2)?;
+                Ok(fe.joint_displacement())
+            })?)
         }
         LapChart::Dissipation => Ok(None),
     }

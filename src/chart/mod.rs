@@ -5,25 +5,28 @@
 //! layer, below `report`: `report` formats (text, JSON, CSV, SVG) and computes nothing; which
 //! charts exist is [`view`].
 
+mod beam;
 pub mod family;
 mod lap;
+mod load;
 pub(crate) mod pins;
+mod plate;
+mod plot;
 pub mod vary;
 pub mod view;
 mod ymode;
 
+pub use plot::{
+    Axis, ExternalPoints, NumericPoints, Plot, PlotSeries, PointFailure, SeriesKind, SeriesRole,
+};
+pub(crate) use plot::{axis_bounds, cursor, line, linear_axis, log_axis, max_y, tick, unsolved};
 pub use ymode::YMode;
 
 use crate::chart::view::{AnyChart, BeamChart, LapChart, PlateChart};
 use crate::fit::Measurement;
-use crate::kernel::format::{number, number_with};
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::inputs::Model;
-use crate::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
-use crate::problems::twin_beams::TwinBeamsFe;
-use crate::problems::{ModelKind, PlateParam};
-use crate::study::curves::{self, Samples, Series, Spacing};
-use crate::{SqueezedPlate, TipForce, TwinBeams};
+use crate::study::curves::{Samples, Series, Spacing};
 
 /// Points per analytic curve: two per column of a 100-column chart, enough for Braille resolution.
 pub(crate) const SAMPLES: u64 = 200;
@@ -32,349 +35,11 @@ pub(crate) const SAMPLES: u64 = 200;
 const OVERLAY_ELEMENTS: usize = 100;
 
 /// Number of finite-element points shown on a curve.
-const OVERLAY_POINTS: usize = 8;
-
-/// One axis.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Axis {
-    /// Title with unit.
-    pub title: String,
-    /// [min, max] in plotted units.
-    pub bounds: [f64; 2],
-    /// Tick labels, evenly spaced from min to max.
-    pub labels: Vec<String>,
-    /// True when the plotted units are log10 of the values (the labels show the values).
-    pub log: bool,
-}
-
-impl Axis {
-    /// The value a plotted coordinate stands for: `10^v` on a log axis, `v` itself otherwise.
-    pub fn value(&self, plotted: f64) -> f64 {
-        if self.log {
-            10f64.powf(plotted)
-        } else {
-            plotted
-        }
-    }
-
-    /// `count` tick labels evenly spaced from min to max (at least the axis's own three): large
-    /// charts get more ticks.
-    #[cfg(feature = "app")]
-    pub(crate) fn ticks(&self, count: usize) -> Vec<String> {
-        if count <= self.labels.len() {
-            return self.labels.clone();
-        }
-        let [lo, hi] = self.bounds;
-        (0..count)
-            .map(|i| {
-                let v = lo + (hi - lo) * i as f64 / (count - 1) as f64;
-                tick(self.value(v))
-            })
-            .collect()
-    }
-}
-
-/// How a series is drawn: derived from its [`SeriesRole`], never set apart from it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum SeriesKind {
-    /// A curve.
-    Line,
-    /// Isolated markers (finite-element results, measurements).
-    Points,
-    /// The vertical cursor at the current value.
-    Cursor,
-    /// A pinned curve (its number, 1 to 4, `pins::MAX_PINS`): the same quantity at parameters
-    /// kept for comparison.
-    Pin(u8),
-}
-
-/// What a series stands for, set where the series is built. The drawing layers choose colour,
-/// marker, line style and draw order from the role alone, never from the series' position or
-/// name, so that one role looks the same on every chart (the K_T curve is `x` in ASCII on w(L)
-/// vs F, X vs F and tau(x) alike) and a legend text can change without changing a style.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum SeriesRole {
-    /// The regularized law at the current parameters: `K_T`, `regularized`, `P_r/P`. The curve a
-    /// pin or a family member keeps.
-    Current,
-    /// The plain Coulomb law: the reference the others are compared with.
-    Coulomb,
-    /// The regularized law at a softer interface (`K_T/5` on the beams, `K_T/10` on the plate).
-    Softer,
-    /// The regularized law at a stiffer interface (`K_T*5`, `K_T*10`).
-    Stiffer,
-    /// A limit or reference line that is not a law: `mu P` under tau(x), `P_r = P`.
-    Limit,
-    /// The project's finite-element points.
-    FiniteElements,
-    /// The plate's 2-D plane-strain continuum points.
-    Continuum,
-    /// Points of a measured curve (`d` in the TUI).
-    Measured,
-    /// Points of an external FE code (a CalculiX .dat, any CSV).
-    External,
-    /// The vertical line at the current value.
-    Cursor,
-    /// A pinned curve, by its number (1 to 4, `pins::MAX_PINS`).
-    Pin(u8),
-    /// A member of a family (`plot --family`), by its position (1 to 6, `family::MAX_MEMBERS`):
-    /// every member has the same rank, none is the current one.
-    Family(u8),
-}
-
-impl SeriesRole {
-    /// The roles a chart's own series have (not pins or family members), in the order `--series`
-    /// lists them.
-    pub const CHART_ROLES: [SeriesRole; 10] = [
-        SeriesRole::Current,
-        SeriesRole::Coulomb,
-        SeriesRole::Softer,
-        SeriesRole::Stiffer,
-        SeriesRole::Limit,
-        SeriesRole::FiniteElements,
-        SeriesRole::Continuum,
-        SeriesRole::Measured,
-        SeriesRole::External,
-        SeriesRole::Cursor,
-    ];
-
-    /// How the role is drawn.
-    pub fn kind(self) -> SeriesKind {
-        match self {
-            SeriesRole::Current
-            | SeriesRole::Coulomb
-            | SeriesRole::Softer
-            | SeriesRole::Stiffer
-            | SeriesRole::Limit
-            | SeriesRole::Family(_) => SeriesKind::Line,
-            SeriesRole::FiniteElements
-            | SeriesRole::Continuum
-            | SeriesRole::Measured
-            | SeriesRole::External => SeriesKind::Points,
-            SeriesRole::Cursor => SeriesKind::Cursor,
-            SeriesRole::Pin(n) => SeriesKind::Pin(n),
-        }
-    }
-
-    /// The role's key on the command line (`plot --series`); pins and family members have none
-    /// (they are asked for with `--pin` and `--family`).
-    pub fn key(self) -> Option<&'static str> {
-        Some(match self {
-            SeriesRole::Current => "current",
-            SeriesRole::Coulomb => "coulomb",
-            SeriesRole::Softer => "softer",
-            SeriesRole::Stiffer => "stiffer",
-            SeriesRole::Limit => "limit",
-            SeriesRole::FiniteElements => "fe",
-            SeriesRole::Continuum => "continuum",
-            SeriesRole::Measured => "measured",
-            SeriesRole::External => "external",
-            SeriesRole::Cursor => "cursor",
-            SeriesRole::Pin(_) | SeriesRole::Family(_) => return None,
-        })
-    }
-
-    /// The chart role of `key` (`--series`).
-    pub fn from_key(key: &str) -> Option<SeriesRole> {
-        Self::CHART_ROLES.into_iter().find(|r| r.key() == Some(key))
-    }
-
-    /// Draw order, lowest first: the cursor under everything, then limit lines (so that a curve
-    /// lying on `mu P` shows over it), then curves, then points on top (few and sparse, they
-    /// would vanish under a curve).
-    #[cfg(feature = "figures")]
-    pub(crate) fn layer(self) -> u8 {
-        match self.kind() {
-            SeriesKind::Cursor => 0,
-            _ if self == SeriesRole::Limit => 1,
-            SeriesKind::Line | SeriesKind::Pin(_) => 2,
-            SeriesKind::Points => 3,
-        }
-    }
-}
-
-/// One series.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PlotSeries {
-    /// Legend text.
-    pub name: String,
-    /// Points in plotted units.
-    pub points: Series,
-    /// What the series stands for (which sets how it is drawn).
-    pub role: SeriesRole,
-}
-
-impl PlotSeries {
-    /// How the series is drawn.
-    pub fn kind(&self) -> SeriesKind {
-        self.role.kind()
-    }
-}
-
-/// A chart, ready to draw.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Plot {
-    /// Title.
-    pub title: String,
-    /// Horizontal axis.
-    pub x: Axis,
-    /// Vertical axis.
-    pub y: Axis,
-    /// Curves, points and the cursor.
-    pub series: Vec<PlotSeries>,
-    /// What the title leaves out, under it in a figure: the parameters a family or a comparison
-    /// holds fixed (`L = 200 mm, b = 20 mm, ...`). The TUI shows them in its parameter pane.
-    pub caption: Option<String>,
-}
-
-/// Finite-element results for the overlay, in the chart's plotted units.
-#[derive(Debug, Clone, PartialEq)]
-pub struct NumericPoints {
-    /// The points.
-    pub points: Series,
-    /// The plate's plane-strain continuum solution at the same K_T (u(L) thickness mean), where
-    /// it converged: where the strip theory and the continuum part ways. Empty elsewhere.
-    pub continuum: Series,
-    /// Sample points whose solve did not converge (left as gaps; the legend says how many).
-    pub failed: usize,
-    /// Where the first of them failed and why: the legend says where, the TUI's status why, so a
-    /// gap is not a mystery.
-    pub failure: Option<PointFailure>,
-}
-
-/// The first overlay point that was not solved.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PointFailure {
-    /// Where, with its unit: "F = 120 N", "K_T = 1e10 MPa/mm".
-    pub at: String,
-    /// The solver's reason (a [`NumericError`]'s message).
-    pub why: String,
-}
-
-impl NumericPoints {
-    /// The unsolved points in words, where and why ("2 points not solved; the first, at K_T =
-    /// 1e10 MPa/mm: the saturation slip ..."); None when every point was solved.
-    pub fn failure_words(&self) -> Option<String> {
-        let failure = self.failure.as_ref()?;
-        Some(format!(
-            "{}; the first, at {}: {}",
-            unsolved(self.failed),
-            failure.at,
-            failure.why
-        ))
-    }
-}
-
-/// "1 point not solved", "3 points not solved".
-fn unsolved(count: usize) -> String {
-    match count {
-        1 => "1 point not solved".to_string(),
-        n => format!("{n} points not solved"),
-    }
-}
-
-/// Points from an external FE code (or a CSV of any code), drawn on the chart of their quantity:
-/// w(L) vs F for the beams, u(L) vs K_T for the plate.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ExternalPoints {
-    /// The code's name, the legend label ("CalculiX").
-    pub label: String,
-    /// The model the points are of.
-    pub model: ModelKind,
-    /// (F in N, w(L) in mm) for the beams, (K_T in MPa/mm, u(L) in mm) for the plate.
-    pub points: Vec<(f64, f64)>,
-}
-
-/// A curve of `role`.
-pub(crate) fn line(role: SeriesRole, name: impl Into<String>, points: Series) -> PlotSeries {
-    PlotSeries {
-        name: name.into(),
-        points,
-        role,
-    }
-}
-
-pub(crate) fn cursor(x: f64, [y0, y1]: [f64; 2]) -> PlotSeries {
-    PlotSeries {
-        name: "current".into(),
-        points: vec![(x, y0), (x, y1)],
-        role: SeriesRole::Cursor,
-    }
-}
-
-/// Finite, strictly increasing bounds from a data range that may be flat (or, defensively, not
-/// finite): a range narrower than 1e-9 of its magnitude is widened to that, a flat range at 0 to
-/// [0, 1]. `lo + 1` would not do: it equals `lo` above 2^53.
-fn axis_bounds(lo: f64, hi: f64) -> [f64; 2] {
-    let lo = if lo.is_finite() { lo } else { 0.0 };
-    let hi = if hi.is_finite() { hi } else { lo };
-    let magnitude = lo.abs().max(hi.abs());
-    let least = if magnitude > 0.0 {
-        1e-9 * magnitude
-    } else {
-        1.0
-    };
-    if hi - lo >= least {
-        [lo, hi]
-    } else {
-        [lo, lo + least]
-    }
-}
-
-pub(crate) fn linear_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
-    let [lo, hi] = axis_bounds(lo, hi);
-    Axis {
-        title: title.into(),
-        bounds: [lo, hi],
-        labels: [lo, 0.5 * (lo + hi), hi].iter().map(|&v| tick(v)).collect(),
-        log: false,
-    }
-}
-
-/// An axis in log10 units, labelled with the values themselves.
-pub(crate) fn log_axis(title: impl Into<String>, lo: f64, hi: f64) -> Axis {
-    let labels = [lo, 0.5 * (lo + hi), hi]
-        .iter()
-        .map(|&v| tick(10f64.powf(v)))
-        .collect();
-    Axis {
-        title: title.into(),
-        bounds: [lo, hi],
-        labels,
-        log: true,
-    }
-}
-
-/// Tick labels: 3 significant digits keep the y axis narrow.
-fn tick(value: f64) -> String {
-    number_with(value, 3)
-}
-
-pub(crate) fn max_y<'a>(series: impl IntoIterator<Item = &'a Series>) -> f64 {
-    series
-        .into_iter()
-        .flatten()
-        .map(|p| p.1)
-        .fold(0.0, f64::max)
-}
-
-/// The force range of the beam charts: up to `span` (kept by the app while parameters change) or
-/// 3 F_thre, or further to show the current F and the largest measured force, but never beyond the
-/// largest accepted force (the sweeps refuse it).
-fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64, span: Option<f64>) -> f64 {
-    let wanted = span
-        .unwrap_or(3.0 * beams.threshold_force())
-        .max(1.25 * force.newtons())
-        .max(1.05 * f_data);
-    TipForce::clamped(wanted).newtons()
-}
+pub(crate) const OVERLAY_POINTS: usize = 8;
 
 pub(crate) fn samples(from: f64, to: f64, spacing: Spacing) -> Option<Samples> {
     Samples::new(from, to, SAMPLES, spacing).ok()
 }
-
-/// Loop points per branch: one per column of a 100-column chart.
-const LOOP_POINTS: u64 = SAMPLES / 2 + 1;
 
 /// Builds `chart` of `model` (a chart of the model's problem), with finite-element points,
 /// measurements and an external code's points if given (measurements show on the chart of the
@@ -408,7 +73,7 @@ pub fn build(
                     .iter()
                     .flat_map(|(_, _, s)| s.iter().map(|p| p.0))
                     .fold(0.0, f64::max);
-                beam_plot(&beams, force, chart, f_data, force_span)
+                beam::beam_plot(&beams, force, chart, f_data, force_span)
             }
         },
         Model::Plate(plate) => match chart {
@@ -419,7 +84,7 @@ pub fn build(
                     let series = e.points.iter().map(|&(k, u)| (k.log10(), u)).collect();
                     overlays.push((SeriesRole::External, e.label.as_str(), series));
                 }
-                plate_plot(&plate, chart)
+                plate::plate_plot(&plate, chart)
             }
         },
         Model::Lap { joint, force } => match chart {
@@ -477,294 +142,6 @@ pub fn build(
     plot
 }
 
-fn beam_plot(
-    beams: &TwinBeams,
-    force: TipForce,
-    chart: BeamChart,
-    f_data: f64,
-    span: Option<f64>,
-) -> Option<Plot> {
-    let p = beams.params();
-    let f_max = force_range(beams, force, f_data, span);
-    let forces = samples(0.0, f_max, Spacing::Linear)?;
-    let kt = p.tangential_stiffness;
-    let companions = companions(kt, |k| beams.with_tangential_stiffness(k).ok());
-    let f = force.newtons();
-    match chart {
-        BeamChart::Deflection => {
-            let (coulomb, regularized) = curves::beam_deflection_vs_force(beams, forces).ok()?;
-            // The current K_T last, so that it is drawn on top.
-            let mut series = vec![line(SeriesRole::Coulomb, "Coulomb", coulomb)];
-            for (role, label, other) in &companions {
-                let (_, w) = curves::beam_deflection_vs_force(other, forces).ok()?;
-                series.push(line(*role, *label, w));
-            }
-            series.push(line(SeriesRole::Current, "K_T", regularized));
-            let top = 1.05 * max_y(series.iter().map(|s| &s.points));
-            let y = linear_axis("w(L) (mm)", 0.0, top);
-            series.push(cursor(f, y.bounds));
-            Some(Plot {
-                caption: None,
-                title: format!("w(L) vs F, K_T = {} MPa/mm", number(kt)),
-                x: linear_axis("F (N)", 0.0, f_max),
-                y,
-                series,
-            })
-        }
-        BeamChart::SlipBoundary => {
-            let mut series = Vec::new();
-            for (role, label, other) in &companions {
-                series.push(line(
-                    *role,
-                    *label,
-                    curves::beam_slip_boundary_vs_force(other, forces).ok()?,
-                ));
-            }
-            series.push(line(
-                SeriesRole::Current,
-                "K_T",
-                curves::beam_slip_boundary_vs_force(beams, forces).ok()?,
-            ));
-            series.push(cursor(f, [0.0, p.length]));
-            Some(Plot {
-                caption: None,
-                title: format!(
-                    "X vs F, K_T = {} MPa/mm, F_1 = {} N",
-                    number(kt),
-                    number(beams.first_macroslip_force())
-                ),
-                x: linear_axis("F (N)", 0.0, f_max),
-                y: linear_axis("X (mm)", 0.0, p.length),
-                series,
-            })
-        }
-        BeamChart::Loop => {
-            use crate::problems::twin_beams::cycle::{Cycle, Law};
-            let (coulomb, regularized) = (
-                Cycle::new(beams, Law::Coulomb, force),
-                Cycle::new(beams, Law::Regularized, force),
-            );
-            let loops = curves::cycle_loop(beams, force, LOOP_POINTS).ok()?;
-            Some(loop_plot(
-                // At most 41 characters, the title row of an 80x24 screen's chart pane: D of
-                // both beams, C(oulomb) and R(egularized) as in the zone strip.
-                format!(
-                    "1 beam +-{} N; D(2) {} C, {} R N mm",
-                    number(f),
-                    number_with(coulomb.dissipation(), 3),
-                    number_with(regularized.dissipation(), 3)
-                ),
-                loops,
-                coulomb.peak_deflection().max(regularized.peak_deflection()),
-                f,
-                "w(L) (mm)",
-            ))
-        }
-        BeamChart::Dissipation => {
-            let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
-            let (coulomb, regularized) =
-                curves::dissipation_vs_amplitude(beams, amplitudes).ok()?;
-            Some(dissipation_plot(
-                &curves::cycle_point(beams, force),
-                (coulomb, regularized),
-                (f, f_max),
-                "D, 2 beams (N mm)",
-            ))
-        }
-        BeamChart::Shear => {
-            let positions = samples(0.0, p.length, Spacing::Linear)?;
-            let (coulomb, regularized) = curves::beam_shear_along(beams, force, positions);
-            let top = 1.1 * max_y([&coulomb, &regularized]).max(beams.coulomb_stress());
-            let mu_p = vec![
-                (0.0, beams.coulomb_stress()),
-                (p.length, beams.coulomb_stress()),
-            ];
-            Some(Plot {
-                caption: None,
-                title: format!("tau(x) at F = {} N, K_T = {} MPa/mm", number(f), number(kt)),
-                x: linear_axis("x (mm)", 0.0, p.length),
-                y: linear_axis("tau (MPa)", 0.0, top),
-                series: vec![
-                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
-                    line(SeriesRole::Current, "regularized", regularized),
-                    line(SeriesRole::Limit, "mu P", mu_p),
-                ],
-            })
-        }
-    }
-}
-
-/// The curves drawn beside a load chart's current one: the model at K_T/5 and K_T*5, as `at`
-/// builds it, where that K_T is accepted (`at` gives None otherwise).
-pub(crate) fn companions<T>(
-    kt: f64,
-    at: impl Fn(f64) -> Option<T>,
-) -> Vec<(SeriesRole, &'static str, T)> {
-    [
-        (SeriesRole::Softer, "K_T/5", kt / 5.0),
-        (SeriesRole::Stiffer, "K_T*5", kt * 5.0),
-    ]
-    .into_iter()
-    .filter_map(|(role, label, k)| Some((role, label, at(k)?)))
-    .collect()
-}
-
-/// The hysteresis loop chart of either law's loop points: the response (`y_title`) against the
-/// force, between -`f` and `f`, its y range from the larger `peak`.
-pub(crate) fn loop_plot(
-    title: String,
-    loops: impl Iterator<Item = crate::study::curves::LoopPoint>,
-    peak: f64,
-    f: f64,
-    y_title: &str,
-) -> Plot {
-    let (coulomb, regularized): (Series, Series) = loops
-        .map(|p| ((p.force, p.w_coulomb), (p.force, p.w_regularized)))
-        .unzip();
-    let top = 1.05 * peak.max(f64::MIN_POSITIVE);
-    let span = f.max(1e-9);
-    Plot {
-        caption: None,
-        title,
-        x: linear_axis("F (N)", -span, span),
-        y: linear_axis(y_title, -top, top),
-        series: vec![
-            line(SeriesRole::Coulomb, "Coulomb", coulomb),
-            line(SeriesRole::Current, "regularized", regularized),
-        ],
-    }
-}
-
-/// D against the amplitude, both laws, the cursor at the current force `f` of the axis to
-/// `f_max`; the title gives zeta at `f` (at most 41 characters, an 80x24 chart pane's title row).
-pub(crate) fn dissipation_plot(
-    at: &crate::study::curves::CyclePoint,
-    (coulomb, regularized): (Series, Series),
-    (f, f_max): (f64, f64),
-    y_title: &str,
-) -> Plot {
-    let top = 1.05 * max_y([&coulomb, &regularized]).max(f64::MIN_POSITIVE);
-    Plot {
-        caption: None,
-        title: format!(
-            "D vs F_a; zeta at F {} C, {} R",
-            number_with(at.zeta_coulomb, 3),
-            number_with(at.zeta_regularized, 3)
-        ),
-        x: linear_axis("F_a (N)", 0.0, f_max),
-        y: linear_axis(y_title, 0.0, top),
-        series: vec![
-            line(SeriesRole::Coulomb, "Coulomb", coulomb),
-            line(SeriesRole::Current, "regularized", regularized),
-            cursor(f, [0.0, top]),
-        ],
-    }
-}
-
-/// The K_T range of the plate's displacement chart: four decades either side of K_T, within the
-/// accepted stiffnesses (ends in MPa/mm).
-fn stiffness_range(kt: f64) -> (f64, f64) {
-    let domain = PlateParam::Stiffness.spec().domain;
-    (domain.clamp(kt / 1e4), domain.clamp(kt * 1e4))
-}
-
-fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
-    let p = plate.params();
-    let kt = p.tangential_stiffness;
-    match chart {
-        PlateChart::Displacement => {
-            let (from, to) = stiffness_range(kt);
-            let stiffnesses = samples(from, to, Spacing::Logarithmic)?;
-            let (coulomb, regularized) =
-                curves::plate_end_displacement_vs_stiffness(plate, stiffnesses).ok()?;
-            let to_log = |s: Series| {
-                s.into_iter()
-                    .map(|(k, u)| (k.log10(), u))
-                    .collect::<Series>()
-            };
-            let (coulomb, regularized) = (to_log(coulomb), to_log(regularized));
-            let top = 1.05 * max_y([&coulomb, &regularized]);
-            let y = linear_axis("u(L) (mm)", 0.0, top);
-            let cursor = cursor(kt.log10(), y.bounds);
-            Some(Plot {
-                caption: None,
-                title: "u(L) vs K_T".into(),
-                x: log_axis("K_T (MPa/mm, log)", from.log10(), to.log10()),
-                y,
-                series: vec![
-                    line(SeriesRole::Coulomb, "Coulomb", coulomb),
-                    line(SeriesRole::Current, "regularized", regularized),
-                    cursor,
-                ],
-            })
-        }
-        PlateChart::SlipBoundary => {
-            let mu = p.friction;
-            // mu/5 to 5 (or 1.5 mu beyond 5), within the accepted friction coefficients.
-            let domain = PlateParam::Friction.spec().domain;
-            let (lo, hi) = (
-                domain.clamp(mu / 5.0),
-                domain.clamp((mu * 5.0).min(5.0).max(mu * 1.5)),
-            );
-            let frictions = samples(lo, hi, Spacing::Linear)?;
-            let mut series = Vec::new();
-            for (role, label, factor) in [
-                (SeriesRole::Softer, "K_T/10", 0.1),
-                (SeriesRole::Stiffer, "K_T*10", 10.0),
-                (SeriesRole::Current, "K_T", 1.0),
-            ] {
-                // Companions only where their K_T is accepted.
-                let Ok(other) = plate.with_tangential_stiffness(kt * factor) else {
-                    continue;
-                };
-                series.push(line(
-                    role,
-                    label,
-                    curves::plate_slip_boundary_vs_friction(&other, frictions).ok()?,
-                ));
-            }
-            // Zoom on the band the curves use: X_r stays near L over most of the range.
-            let bottom = series
-                .iter()
-                .flat_map(|s| &s.points)
-                .map(|q| q.1)
-                .fold(p.half_length, f64::min);
-            let bottom = (bottom - 0.05 * (p.half_length - bottom)).max(0.0);
-            let y = linear_axis("X_r (mm)", bottom, p.half_length);
-            series.push(cursor(mu, y.bounds));
-            Some(Plot {
-                caption: None,
-                title: format!("X_r vs mu, K_T = {} MPa/mm", number(kt)),
-                x: linear_axis("mu (-)", lo, hi),
-                y,
-                series,
-            })
-        }
-        PlateChart::ContactPressure => {
-            let positions = samples(0.0, p.half_length, Spacing::Linear)?;
-            let ratio = curves::plate_contact_pressure_along(plate, positions);
-            let (low, high) = ratio.iter().fold((1.0_f64, 1.0_f64), |(lo, hi), &(_, r)| {
-                (lo.min(r), hi.max(r))
-            });
-            let pad = 0.05 * (high - low).max(0.01);
-            Some(Plot {
-                caption: None,
-                title: "P_r(x)/P: flat-plate model P7-P9 (not 2-D)".to_string(),
-                x: linear_axis("x (mm)", 0.0, p.half_length),
-                y: linear_axis("P_r/P (-)", low - pad, high + pad),
-                series: vec![
-                    line(SeriesRole::Current, "P_r/P", ratio),
-                    line(
-                        SeriesRole::Limit,
-                        "P_r = P",
-                        vec![(0.0, 1.0), (p.half_length, 1.0)],
-                    ),
-                ],
-            })
-        }
-    }
-}
-
 /// The chart `chart` of `model` (a model of the chart's kind) as a figure shows it: the TUI's
 /// series, with the finite-element points where asked and the chart has them, the y axis in mode
 /// `y` where it applies.
@@ -792,153 +169,28 @@ pub fn numeric_points(
 ) -> Result<Option<NumericPoints>, NumericError> {
     let density = MeshDensity::with_elements(OVERLAY_ELEMENTS);
     match (*model, chart) {
-        (
-            Model::Beam { beams, force },
-            AnyChart::Beam(chart @ (BeamChart::Deflection | BeamChart::SlipBoundary)),
-        ) => {
-            // One model loaded monotonically through the sample forces: one load step per point.
-            let f_max = force_range(&beams, force, 0.0, None);
-            let mut fe = TwinBeamsFe::new(beams.params(), density);
-            let mut points = Vec::with_capacity(OVERLAY_POINTS);
-            let (mut failed, mut failure) = (0, None);
-            let mut first_failure = None;
-            for i in 1..=OVERLAY_POINTS {
-                let f = f_max * i as f64 / OVERLAY_POINTS as f64;
-                // A very stiff interface can make Newton cycle at one load (the whole interface
-                // on the yield limit to round-off): that point is a gap, the model stays at the
-                // last converged load and the next point goes on from there.
-                match fe.load_to(f, 2) {
-                    Ok(()) => {}
-                    Err(e @ NumericError::NoConvergence { .. }) => {
-                        failed += 1;
-                        first_failure.get_or_insert_with(|| PointFailure {
-                            at: format!("F = {} N", number(f)),
-                            why: e.to_string(),
-                        });
-                        failure = Some(e);
-                        continue;
-                    }
-                    Err(e) => return Err(e),
-                }
-                points.push((
-                    f,
-                    if chart == BeamChart::Deflection {
-                        fe.tip_deflection()
-                    } else {
-                        fe.micro_zone_end()
-                    },
-                ));
-            }
-            match failure {
-                Some(e) if points.is_empty() => Err(e),
-                _ => Ok(Some(NumericPoints {
-                    points,
-                    continuum: Vec::new(),
-                    failed,
-                    failure: first_failure,
-                })),
-            }
+        (Model::Beam { beams, force }, AnyChart::Beam(chart)) => {
+            beam::beam_numeric_points(&beams, force, chart, density)
         }
-        (Model::Beam { beams, force }, AnyChart::Beam(BeamChart::Loop)) => {
-            // The FE model driven round the same cycle: its own slider histories, no Masing rule.
-            let fa = force.newtons();
-            let mut fe = TwinBeamsFe::new(beams.params(), density);
-            fe.load_to(fa, 4)?;
-            let mut points = Vec::with_capacity(2 * OVERLAY_POINTS);
-            for (from, sign) in [(fa, -1.0), (-fa, 1.0)] {
-                for i in 1..=OVERLAY_POINTS {
-                    let f = from + sign * 2.0 * fa * i as f64 / OVERLAY_POINTS as f64;
-                    fe.load_to(f, 2)?;
-                    points.push((f, fe.tip_deflection()));
-                }
-            }
-            Ok(Some(NumericPoints {
-                points,
-                continuum: Vec::new(),
-                failed: 0,
-                failure: None,
-            }))
+        (Model::Plate(plate), AnyChart::Plate(chart)) => {
+            plate::plate_numeric_points(&plate, chart, density)
         }
-        (Model::Beam { beams, force }, AnyChart::Beam(BeamChart::Shear)) => {
-            let mut fe = TwinBeamsFe::new(beams.params(), density);
-            fe.load_to(force.newtons(), 4)?;
-            let samples = fe.interface();
-            let stride = (samples.len() / 40).max(1);
-            Ok(Some(NumericPoints {
-                continuum: Vec::new(),
-                failed: 0,
-                failure: None,
-                points: samples
-                    .iter()
-                    .step_by(stride)
-                    .map(|s| (s.x, s.stress))
-                    .collect(),
-            }))
-        }
-        (Model::Plate(plate), AnyChart::Plate(PlateChart::Displacement)) => {
-            let p = plate.params();
-            let (from, to) = stiffness_range(p.tangential_stiffness);
-            let (lo, hi) = (from.log10(), to.log10());
-            let mut points = Vec::with_capacity(OVERLAY_POINTS + 1);
-            let mut continuum = Vec::with_capacity(OVERLAY_POINTS + 1);
-            let (mut failure, mut first_failure) = (None, None);
-            for i in 0..=OVERLAY_POINTS {
-                let log_kt = lo + (hi - lo) * i as f64 / OVERLAY_POINTS as f64;
-                let params = crate::PlateParams {
-                    tangential_stiffness: PlateParam::Stiffness
-                        .spec()
-                        .domain
-                        .clamp(10f64.powf(log_kt)),
-                    ..p
-                };
-                // A solve that fails at an extreme K_T (the 1-D solver at 1e10 MPa/mm, the
-                // continuum beyond its stiffness limit) leaves a gap, not an error; only a chart
-                // without any point reports the failure.
-                let mut fe = PlateFe::new(params, density);
-                match fe.load_to(p.pressure, 2) {
-                    Ok(()) => points.push((log_kt, fe.end_displacement())),
-                    Err(e) => {
-                        first_failure.get_or_insert_with(|| PointFailure {
-                            at: format!("K_T = {} MPa/mm", number(params.tangential_stiffness)),
-                            why: e.to_string(),
-                        });
-                        failure = Some(e);
-                    }
-                }
-                if let Ok(solution) = solve_plate_continuum(params, ContinuumMesh::default()) {
-                    continuum.push((log_kt, solution.end_displacement_mean));
-                }
-            }
-            match failure {
-                Some(e) if points.is_empty() => Err(e),
-                _ => Ok(Some(NumericPoints {
-                    failed: OVERLAY_POINTS + 1 - points.len(),
-                    failure: first_failure,
-                    points,
-                    continuum,
-                })),
-            }
-        }
-        // No finite-element counterpart: dissipation (a closed-form integral of the loop), the
-        // contact pressure, X_r vs mu; and a chart of another problem.
-        (Model::Beam { .. }, AnyChart::Beam(BeamChart::Dissipation))
-        | (
-            Model::Plate(_),
-            AnyChart::Plate(PlateChart::SlipBoundary | PlateChart::ContactPressure),
-        )
-        | (Model::Beam { .. }, AnyChart::Plate(_) | AnyChart::Lap(_))
-        | (Model::Plate(_), AnyChart::Beam(_) | AnyChart::Lap(_))
-        | (Model::Lap { .. }, AnyChart::Beam(_) | AnyChart::Plate(_)) => Ok(None),
         (Model::Lap { joint, force }, AnyChart::Lap(chart)) => {
             lap::lap_numeric_points(&joint, force, chart, density, OVERLAY_POINTS)
         }
+        // A chart of another problem.
+        (Model::Beam { .. }, AnyChart::Plate(_) | AnyChart::Lap(_))
+        | (Model::Plate(_), AnyChart::Beam(_) | AnyChart::Lap(_))
+        | (Model::Lap { .. }, AnyChart::Beam(_) | AnyChart::Plate(_)) => Ok(None),
     }
 }
 
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
+    use crate::TipForce;
     use crate::problems::inputs::Inputs;
+    use crate::problems::{ModelKind, PlateParam};
 
     /// Every chart of `kind`, in the order the `c` key reaches them.
     pub(crate) fn every_chart(kind: ModelKind) -> Vec<AnyChart> {

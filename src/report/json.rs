@@ -6,9 +6,9 @@
 use serde_json::Value;
 
 use super::point::beam::BeamReport;
-use super::point::cycle::CycleReport;
+use super::point::cycle::{BeamCycleReport, LapCycleReport};
 use super::point::fit::FitReport;
-use super::point::lap::{LapCycleReport, LapReport};
+use super::point::lap::LapReport;
 use super::point::plate::{PlateReport, StripTheory};
 use super::point::solve::SolveReport;
 use super::point::stiffness::StiffnessReport;
@@ -29,7 +29,7 @@ pub(crate) fn suffixed(key: &str, unit: Unit) -> String {
 
 /// One cycle's summary for both laws.
 pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> Value {
-    to_json(&CycleReport::new(preset, beams, amplitude))
+    to_json(&BeamCycleReport::new(preset, beams, amplitude))
 }
 
 /// Lap-joint report at one force.

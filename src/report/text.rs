@@ -3,9 +3,9 @@
 //! ([`super::point::tolerance`]); the progress lines are built here from the library's results.
 
 use super::point::beam::BeamReport;
-use super::point::cycle::CycleReport;
+use super::point::cycle::{BeamCycleReport, LapCycleReport};
 use super::point::fit::FitReport;
-use super::point::lap::{LapCycleReport, LapReport};
+use super::point::lap::LapReport;
 use super::point::plate::PlateReport;
 use super::point::solve::SolveReport;
 use super::point::stiffness::StiffnessReport;
@@ -47,7 +47,7 @@ pub fn plate(
 
 /// Cyclic-loading report: both laws side by side.
 pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> String {
-    CycleReport::new(preset, beams, amplitude).text()
+    BeamCycleReport::new(preset, beams, amplitude).text()
 }
 
 pub use super::point::fit::evidence;

@@ -30,9 +30,10 @@ const TABLE_TOLERANCE: f64 = 0.01;
 /// The K_T table's answer to "how stiff for Coulomb within 1 %": the beams at F and over 0..F, the
 /// plate at its pressure.
 fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
+    use crate::problems::lap::load_driven::LapLoad;
+    use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
     use crate::study::tolerance::{
-        Threshold, beam_stiffness_for_tolerance, lap_stiffness_for_tolerance,
-        plate_stiffness_for_tolerance,
+        Threshold, plate_stiffness_for_tolerance, stiffness_for_tolerance,
     };
     let shown = |answer: Result<_, _>| match answer
         .map(|a: crate::study::tolerance::ToleranceAnswer| a.threshold)
@@ -52,8 +53,10 @@ fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
             if f <= 0.0 {
                 return vec![format!("{heading}: any, at F = 0")];
             }
-            let at = beam_stiffness_for_tolerance(beams, [f, f], TABLE_TOLERANCE, element);
-            let upto = beam_stiffness_for_tolerance(beams, [0.0, f], TABLE_TOLERANCE, element);
+            let at =
+                stiffness_for_tolerance::<TwinBeamsLoad>(beams, [f, f], TABLE_TOLERANCE, element);
+            let upto =
+                stiffness_for_tolerance::<TwinBeamsLoad>(beams, [0.0, f], TABLE_TOLERANCE, element);
             vec![
                 format!("{heading} {} at F,", shown(at)),
                 format!("  {} at all F up to F", shown(upto)),
@@ -64,8 +67,9 @@ fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
             if f <= 0.0 {
                 return vec![format!("{heading}: any, at F = 0")];
             }
-            let at = lap_stiffness_for_tolerance(joint, [f, f], TABLE_TOLERANCE, element);
-            let upto = lap_stiffness_for_tolerance(joint, [0.0, f], TABLE_TOLERANCE, element);
+            let at = stiffness_for_tolerance::<LapLoad>(joint, [f, f], TABLE_TOLERANCE, element);
+            let upto =
+                stiffness_for_tolerance::<LapLoad>(joint, [0.0, f], TABLE_TOLERANCE, element);
             vec![
                 format!("{heading} {} at F,", shown(at)),
                 format!("  {} at all F up to F", shown(upto)),

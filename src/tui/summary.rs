@@ -4,7 +4,7 @@
 use crate::kernel::regime::Law;
 use crate::problems::inputs::Model;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
-use crate::problems::lap::cycle::LapCycle;
+use crate::problems::lap::cycle::{LapCycle, MasingCycle};
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::report::{number, number_with};
 use crate::study::curves::{beam_point, plate_point};

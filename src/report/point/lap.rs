@@ -12,8 +12,8 @@ use crate::kernel::validity::Validity;
 use crate::numeric::NumericError;
 use crate::problems::inputs::Inputs;
 use crate::problems::lap::ContinuumLap;
-use crate::problems::lap::closed_form::{JointForce, LapJoint, LapParams};
-use crate::problems::lap::cycle::LapCycle;
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
+use crate::problems::lap::cycle::{LapCycle, MasingCycle};
 use crate::problems::stiffness::mm_to_um;
 use crate::report::{number, number_with, sanitize};
 use crate::study::lap::lap_point;
@@ -396,132 +396,6 @@ impl LapReport {
                 }
             }
         }
-        out
-    }
-}
-
-/// What D, U and the secant stiffness of the lap joint refer to.
-pub(crate) const LAP_CYCLE_NOTE: &str = "D is the whole joint's (both interfaces); U = 1/2 F_a \
-     Delta_a; the secant stiffness is F_a / Delta_a of the joint.";
-
-/// The lap joint cycled between +F_a and -F_a.
-#[derive(Debug, Clone, Serialize)]
-pub struct LapCycleReport {
-    /// Always `lap`.
-    pub model: &'static str,
-    pub preset: String,
-    pub inputs: InputsReport,
-    #[serde(skip)]
-    pub structure: LapParams,
-    /// Amplitude F_a (N).
-    #[serde(rename = "Fa_N")]
-    pub amplitude: f64,
-    pub coulomb: LapLawCycle,
-    pub regularized: LapLawCycle,
-    pub note: &'static str,
-}
-
-/// One law's cycle.
-#[derive(Debug, Clone, Copy, Serialize)]
-pub struct LapLawCycle {
-    /// Force at which sliding starts (N): 0 under Coulomb.
-    #[serde(rename = "onset_N")]
-    pub onset: f64,
-    /// Peak displacement Delta_a (mm).
-    #[serde(rename = "Delta_peak_mm")]
-    pub peak_displacement: f64,
-    /// Dissipation per cycle (N mm).
-    #[serde(rename = "D_Nmm")]
-    pub dissipation: f64,
-    /// Peak energy (N mm).
-    #[serde(rename = "U_Nmm")]
-    pub peak_energy: f64,
-    /// D / (4 pi U).
-    #[serde(rename = "zeta")]
-    pub damping_ratio: f64,
-    /// F_a / Delta_a (N/mm).
-    #[serde(rename = "secant_stiffness_N_per_mm")]
-    pub secant_stiffness: f64,
-}
-
-impl LapLawCycle {
-    fn new(joint: &LapJoint, law: Law, amplitude: JointForce) -> LapLawCycle {
-        let c = LapCycle::new(joint, law, amplitude);
-        LapLawCycle {
-            onset: c.onset(),
-            peak_displacement: c.peak_displacement(),
-            dissipation: c.dissipation(),
-            peak_energy: c.peak_energy(),
-            damping_ratio: c.damping_ratio(),
-            secant_stiffness: c.secant_stiffness(),
-        }
-    }
-}
-
-impl LapCycleReport {
-    pub fn new(preset: &str, joint: &LapJoint, amplitude: JointForce) -> LapCycleReport {
-        LapCycleReport {
-            model: "lap",
-            preset: preset.to_string(),
-            inputs: InputsReport(Inputs::Lap {
-                structure: joint.params(),
-                force: amplitude.newtons(),
-            }),
-            structure: joint.params(),
-            amplitude: amplitude.newtons(),
-            coulomb: LapLawCycle::new(joint, Law::Coulomb, amplitude),
-            regularized: LapLawCycle::new(joint, Law::Regularized, amplitude),
-            note: LAP_CYCLE_NOTE,
-        }
-    }
-
-    /// The readable summary: both laws side by side.
-    pub fn text(&self) -> String {
-        let mut out = String::new();
-        let _ = writeln!(
-            out,
-            "Double-lap joint, force cycling between +{0} N and -{0} N (Masing branches) - preset {1}",
-            number(self.amplitude),
-            sanitize(&self.preset)
-        );
-        let p = &self.structure;
-        let _ = writeln!(
-            out,
-            "  L = {} mm, b = {} mm, t1 = {} mm, t2 = {} mm, E1 = {} MPa, E2 = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
-            number(p.length),
-            number(p.width),
-            number(p.inner_thickness),
-            number(p.cover_thickness),
-            number(p.inner_modulus),
-            number(p.cover_modulus),
-            number(p.pressure),
-            number(p.friction),
-            number(p.tangential_stiffness)
-        );
-        let _ = writeln!(out, "{:<34}{:<18}regularized", "", "Coulomb");
-        let (c, r) = (&self.coulomb, &self.regularized);
-        let rows: [(&str, f64, f64); 6] = [
-            ("onset of sliding (N)", c.onset, r.onset),
-            (
-                "peak displacement Delta_a (mm)",
-                c.peak_displacement,
-                r.peak_displacement,
-            ),
-            ("D per cycle (N mm)", c.dissipation, r.dissipation),
-            ("peak energy U (N mm)", c.peak_energy, r.peak_energy),
-            (
-                "damping ratio D / (4 pi U) (-)",
-                c.damping_ratio,
-                r.damping_ratio,
-            ),
-            (
-                "secant F_a/Delta_a (N/mm)",
-                c.secant_stiffness,
-                r.secant_stiffness,
-            ),
-        ];
-        super::cycle::write_law_rows(&mut out, &rows);
-        let _ = writeln!(out, "  {}", self.note);
         out
     }
 }

@@ -80,6 +80,7 @@ macro_rules! param_list {
 
 pub mod inputs;
 pub mod lap;
+pub mod load_driven;
 pub mod plate;
 pub mod problem;
 pub mod quantity;

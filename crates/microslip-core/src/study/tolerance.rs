@@ -8,15 +8,17 @@
 //! a force range too, and "within tolerance" holds on one interval [K_T*, infinity): one bracketed
 //! root on ln K_T finds K_T*.
 
+use crate::SqueezedPlate;
 use crate::kernel::code_defaults::{CODE_DEFAULTS, CodeDefault, DefaultRule};
 use crate::kernel::params::{Domain, ParamError};
+use crate::kernel::regime::Law;
 use crate::kernel::solve::find_root_in_bracket;
-use crate::problems::lap::closed_form::{JointForce, LapJoint};
-use crate::problems::{BeamParam, LapParam, ModelKind, PlateParam};
-use crate::{SqueezedPlate, TipForce, TwinBeams};
+use crate::problems::load_driven::LoadDriven;
+use crate::problems::{ModelKind, PlateParam};
 
-/// Force samples over a range of the beams' tip force, besides its ends and F_thre: the deviation
-/// is flat below F_thre and falls above it (T2), so the samples only guard that analysis.
+/// Force samples over a range of the load, besides its ends and regime changes: the deviation is
+/// flat below F_thre and falls above it (T2), and over the joint's range it is largest near zero
+/// (L11), so the samples only guard that analysis.
 const FORCE_SAMPLES: usize = 64;
 
 /// The accepted tolerances (fractions): from 1e-9 (round-off of the closed forms is ~1e-12) to 10
@@ -67,7 +69,7 @@ pub struct ToleranceAnswer {
     pub current: (f64, f64),
     /// What the threshold means in each FE code's setting.
     pub settings: Vec<CodeSetting>,
-    /// The other reading, when asked for ([`beam_stiffness_near_current`]): the tolerance is of
+    /// The other reading, when asked for ([`stiffness_near_current`]): the tolerance is of
     /// the current K_T's answer, not of Coulomb's; `threshold` is then the interval's lower end.
     pub near_current: Option<NearCurrent>,
 }
@@ -155,38 +157,9 @@ fn check_tolerance(tolerance: f64) -> Result<f64, ToleranceError> {
     }
 }
 
-/// The twin beams' regularized w(L) over Coulomb's, minus 1, at `force` (> 0).
-fn beam_deviation(beams: &TwinBeams, force: TipForce) -> f64 {
-    let coulomb = beams.coulomb(force).tip_deflection();
-    beams.regularized(force).tip_deflection() / coulomb - 1.0
-}
-
 /// The plate's regularized u(L) over Coulomb's, minus 1.
 fn plate_deviation(plate: &SqueezedPlate) -> f64 {
     plate.regularized().end_displacement() / plate.coulomb().end_displacement() - 1.0
-}
-
-/// The forces at which the deviation is checked: the ends of [from, to], F_thre when inside, and
-/// [`FORCE_SAMPLES`] between; zero left out (nothing moves).
-fn force_grid(beams: &TwinBeams, [from, to]: [f64; 2]) -> Vec<TipForce> {
-    let threshold = beams.threshold_force();
-    let mut forces: Vec<f64> = (0..=FORCE_SAMPLES)
-        .map(|i| from + (to - from) * i as f64 / FORCE_SAMPLES as f64)
-        .collect();
-    if (from..=to).contains(&threshold) {
-        forces.push(threshold);
-    }
-    forces.retain(|&f| f > 0.0);
-    forces.sort_by(f64::total_cmp);
-    forces.dedup();
-    forces.into_iter().map(TipForce::clamped).collect()
-}
-
-fn worst(beams: &TwinBeams, forces: &[TipForce]) -> f64 {
-    forces
-        .iter()
-        .map(|&f| beam_deviation(beams, f))
-        .fold(f64::NEG_INFINITY, f64::max)
 }
 
 /// The smallest K_T at which `deviation(K_T)`, non-increasing, is at most `tolerance`, searched
@@ -209,97 +182,138 @@ fn smallest_within(domain: Domain, tolerance: f64, deviation: impl Fn(f64) -> f6
     Threshold::Stiffness(ln_k.exp())
 }
 
-/// The twin beams: the smallest K_T for which the regularized w(L) stays within `tolerance`
-/// (fraction) of Coulomb's at every tip force in `[from, to]` (N), all else as in `beams`.
-///
-/// # Errors
-/// A tolerance outside (0, 10], forces outside the accepted range or not ordered, or no positive
-/// force.
-pub fn beam_stiffness_for_tolerance(
-    beams: &TwinBeams,
-    [from, to]: [f64; 2],
-    tolerance: f64,
-    element: f64,
-) -> Result<ToleranceAnswer, ToleranceError> {
-    let tolerance = check_tolerance(tolerance)?;
-    let ([from, to], forces) = checked_forces(beams, [from, to])?;
-    let at = |kt: f64| {
-        // Every K_T of the domain is accepted; the fallback is never taken.
-        let beams = beams.with_tangential_stiffness(kt).unwrap_or(*beams);
-        worst(&beams, &forces)
-    };
-    let domain = BeamParam::Stiffness.spec().domain;
-    let threshold = smallest_within(domain, tolerance, at);
-    let p = beams.params();
-    let current = (p.tangential_stiffness, worst(beams, &forces));
-    Ok(ToleranceAnswer {
-        kind: ModelKind::Beam,
-        tolerance,
-        forces: Some([from, to]),
-        threshold,
-        current,
-        settings: code_settings(
-            threshold,
-            p.friction * p.pressure,
-            p.youngs_modulus,
-            element,
-        ),
-        near_current: None,
-    })
+/// The forces at which the deviation is checked: the ends of [from, to], [`FORCE_SAMPLES`]
+/// between, the regime changes inside (F_thre; F_1 and F_2 of the joint) and the problem's own
+/// probes ([`LoadDriven::deviation_probes`]); zero left out (nothing moves).
+fn force_grid<P: LoadDriven>(model: &P::Model, [from, to]: [f64; 2]) -> Vec<P::Force> {
+    let mut forces: Vec<f64> = (0..=FORCE_SAMPLES)
+        .map(|i| from + (to - from) * i as f64 / FORCE_SAMPLES as f64)
+        .collect();
+    forces.extend(P::deviation_probes(model, [from, to]));
+    let inside = |f: &f64| (from..=to).contains(f);
+    forces.extend(P::regime_changes(model).into_iter().filter(inside));
+    forces.retain(|&f| f > 0.0);
+    forces.sort_by(f64::total_cmp);
+    forces.dedup();
+    forces
+        .into_iter()
+        .map(|f| P::clamped_force(model, f))
+        .collect()
 }
 
-/// The force range `[from, to]` (N) checked and ordered, and the forces sampled in it.
-fn checked_forces(
-    beams: &TwinBeams,
+/// The force range `[from, to]` (N) checked against `model` (each a force it carries) and
+/// ordered, and the forces sampled in it.
+fn checked_forces<P: LoadDriven>(
+    model: &P::Model,
     [from, to]: [f64; 2],
-) -> Result<([f64; 2], Vec<TipForce>), ToleranceError> {
-    let (from, to) = (TipForce::new(from)?.newtons(), TipForce::new(to)?.newtons());
+) -> Result<([f64; 2], Vec<P::Force>), ToleranceError> {
+    let (from, to) = (
+        P::newtons(P::force(model, from)?),
+        P::newtons(P::force(model, to)?),
+    );
     let (from, to) = (from.min(to), from.max(to));
     if to <= 0.0 {
         return Err(ToleranceError::Unloaded { from, to });
     }
-    Ok(([from, to], force_grid(beams, [from, to])))
+    Ok(([from, to], force_grid::<P>(model, [from, to])))
 }
 
-/// The twin beams, the other reading: the K_T for which the regularized w(L) stays within
-/// `tolerance` (fraction) of the current K_T's at every tip force in `[from, to]` (N). The lower
-/// end is the answer's `threshold` (with the codes' settings for it), the upper end in
-/// `near_current`.
+/// The worst, over `forces`, of the regularized response over Coulomb's, minus 1.
+fn worst<P: LoadDriven>(model: &P::Model, forces: &[P::Force]) -> f64 {
+    forces
+        .iter()
+        .map(|&f| {
+            P::response(model, Law::Regularized, f) / P::response(model, Law::Coulomb, f) - 1.0
+        })
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+/// The question about `model` over `range` (N) at `tolerance`, checked, and the forces sampled in
+/// the range: what both readings start from.
+fn load_question<P: LoadDriven>(
+    model: &P::Model,
+    range: [f64; 2],
+    tolerance: f64,
+) -> Result<(Question, Vec<P::Force>), ToleranceError> {
+    let tolerance = check_tolerance(tolerance)?;
+    let (range, forces) = checked_forces::<P>(model, range)?;
+    let question = Question {
+        kind: P::KIND,
+        tolerance,
+        forces: Some(range),
+        current: (P::tangential_stiffness(model), worst::<P>(model, &forces)),
+        domain: P::STIFFNESS.spec().domain,
+    };
+    Ok((question, forces))
+}
+
+/// `model` with K_T = `kt`; every K_T of the domain is accepted (and no force depends on K_T,
+/// nor does the joint's F_gross), so the fallback is never taken.
+fn stiffened<P: LoadDriven>(model: &P::Model, kt: f64) -> P::Model {
+    P::with_tangential_stiffness(model, kt).unwrap_or(*model)
+}
+
+/// Each code's setting for `threshold` on `model` with contact elements of `element` (mm).
+fn load_settings<P: LoadDriven>(
+    model: &P::Model,
+    threshold: Threshold,
+    element: f64,
+) -> Vec<CodeSetting> {
+    code_settings(
+        threshold,
+        P::interface_strength(model),
+        P::modulus(model),
+        element,
+    )
+}
+
+/// Any load-driven problem: the smallest K_T for which the regularized response stays within
+/// `tolerance` (fraction) of Coulomb's at every force in `range` = `[from, to]` (N), all else as
+/// in `model`. The response does not increase with K_T at a fixed force ((T1), (L11)), so the
+/// worst deviation over the forces is non-increasing in K_T and one root on ln K_T finds it.
 ///
 /// # Errors
-/// As [`beam_stiffness_for_tolerance`].
-pub fn beam_stiffness_near_current(
-    beams: &TwinBeams,
+/// A tolerance outside (0, 10], forces the structure does not carry, or no positive force.
+pub fn stiffness_for_tolerance<P: LoadDriven>(
+    model: &P::Model,
     range: [f64; 2],
     tolerance: f64,
     element: f64,
 ) -> Result<ToleranceAnswer, ToleranceError> {
-    let tolerance = check_tolerance(tolerance)?;
-    let (range, forces) = checked_forces(beams, range)?;
-    let p = beams.params();
-    let question = Question {
-        kind: ModelKind::Beam,
-        tolerance,
-        forces: Some(range),
-        current: (p.tangential_stiffness, worst(beams, &forces)),
-        domain: BeamParam::Stiffness.spec().domain,
-    };
+    let (question, forces) = load_question::<P>(model, range, tolerance)?;
+    let at = |kt: f64| worst::<P>(&stiffened::<P>(model, kt), &forces);
+    let threshold = smallest_within(question.domain, question.tolerance, at);
+    Ok(ToleranceAnswer {
+        kind: question.kind,
+        tolerance: question.tolerance,
+        forces: question.forces,
+        threshold,
+        current: question.current,
+        settings: load_settings::<P>(model, threshold, element),
+        near_current: None,
+    })
+}
+
+/// Any load-driven problem, the other reading: the K_T for which the regularized response stays
+/// within `tolerance` (fraction) of the current K_T's at every force in `range` (N). The lower
+/// end is the answer's `threshold` (with the codes' settings for it), the upper end in
+/// `near_current`.
+///
+/// # Errors
+/// As [`stiffness_for_tolerance`].
+pub fn stiffness_near_current<P: LoadDriven>(
+    model: &P::Model,
+    range: [f64; 2],
+    tolerance: f64,
+    element: f64,
+) -> Result<ToleranceAnswer, ToleranceError> {
+    let (question, forces) = load_question::<P>(model, range, tolerance)?;
     Ok(near_current_over_forces(
         question,
         &forces,
-        |kt, f| {
-            let at = beams.with_tangential_stiffness(kt).unwrap_or(*beams);
-            at.regularized(f).tip_deflection()
-        },
-        |f| beams.coulomb(f).tip_deflection(),
-        |threshold| {
-            code_settings(
-                threshold,
-                p.friction * p.pressure,
-                p.youngs_modulus,
-                element,
-            )
-        },
+        |kt, f| P::response(&stiffened::<P>(model, kt), Law::Regularized, f),
+        |f| P::response(model, Law::Coulomb, f),
+        |threshold| load_settings::<P>(model, threshold, element),
     ))
 }
 
@@ -338,7 +352,7 @@ fn near_current_over_forces<F: Copy>(
     )
 }
 
-/// The plate, the other reading (see [`beam_stiffness_near_current`]).
+/// The plate, the other reading (see [`stiffness_near_current`]).
 ///
 /// # Errors
 /// As [`plate_stiffness_for_tolerance`].
@@ -475,119 +489,6 @@ pub fn plate_stiffness_for_tolerance(
         ),
         near_current: None,
     })
-}
-
-/// The lap joint's forces at which the deviation is checked: the ends of [from, to], F_1 and F_2
-/// when inside (where the regime changes), and [`FORCE_SAMPLES`] between. Zero itself is left out
-/// (nothing moves), but not its neighbourhood: there the regularized joint is elastic and
-/// Coulomb's is bonded (its slip grows as F^2), so their ratio tends to the elastic compliance
-/// over the bonded one, the largest deviation of a range that starts at zero. A force of 1e-9 of
-/// the range's end stands for that limit (the F^2 term is then 1e-9 of the bonded one).
-fn lap_force_grid(joint: &LapJoint, [from, to]: [f64; 2]) -> Vec<JointForce> {
-    let mut forces: Vec<f64> = (0..=FORCE_SAMPLES)
-        .map(|i| from + (to - from) * i as f64 / FORCE_SAMPLES as f64)
-        .collect();
-    if from == 0.0 {
-        forces.push(1e-9 * to);
-    }
-    for change in [joint.first_slip_force(), joint.second_slip_force()] {
-        if (from..=to).contains(&change) {
-            forces.push(change);
-        }
-    }
-    forces.retain(|&f| f > 0.0);
-    forces.sort_by(f64::total_cmp);
-    forces.dedup();
-    forces.into_iter().map(|f| joint.clamped_force(f)).collect()
-}
-
-/// The force range `[from, to]` (N) checked against the joint (each in [0, F_gross]) and
-/// ordered, and the forces sampled in it.
-fn checked_lap_forces(
-    joint: &LapJoint,
-    [from, to]: [f64; 2],
-) -> Result<([f64; 2], Vec<JointForce>), ToleranceError> {
-    let (from, to) = (joint.force(from)?.newtons(), joint.force(to)?.newtons());
-    let (from, to) = (from.min(to), from.max(to));
-    if to <= 0.0 {
-        return Err(ToleranceError::Unloaded { from, to });
-    }
-    Ok(([from, to], lap_force_grid(joint, [from, to])))
-}
-
-/// The worst, over `forces`, of the lap joint's regularized Delta over Coulomb's, minus 1.
-fn lap_worst(joint: &LapJoint, forces: &[JointForce]) -> f64 {
-    forces
-        .iter()
-        .map(|&f| {
-            joint.regularized(f).joint_displacement() / joint.coulomb(f).joint_displacement() - 1.0
-        })
-        .fold(f64::NEG_INFINITY, f64::max)
-}
-
-/// The lap joint: the smallest K_T for which the regularized Delta stays within `tolerance`
-/// (fraction) of Coulomb's at every force in `[from, to]` (N), all else as in `joint` (L11).
-///
-/// # Errors
-/// A tolerance outside (0, 10], forces outside [0, F_gross], or no positive force.
-pub fn lap_stiffness_for_tolerance(
-    joint: &LapJoint,
-    range: [f64; 2],
-    tolerance: f64,
-    element: f64,
-) -> Result<ToleranceAnswer, ToleranceError> {
-    let tolerance = check_tolerance(tolerance)?;
-    let (range, forces) = checked_lap_forces(joint, range)?;
-    // F_gross does not depend on K_T, so every force stays accepted as K_T moves.
-    let at = |kt: f64| {
-        lap_worst(
-            &joint.with_tangential_stiffness(kt).unwrap_or(*joint),
-            &forces,
-        )
-    };
-    let threshold = smallest_within(LapParam::Stiffness.spec().domain, tolerance, at);
-    let p = joint.params();
-    Ok(ToleranceAnswer {
-        kind: ModelKind::Lap,
-        tolerance,
-        forces: Some(range),
-        threshold,
-        current: (p.tangential_stiffness, lap_worst(joint, &forces)),
-        settings: code_settings(threshold, p.friction * p.pressure, p.inner_modulus, element),
-        near_current: None,
-    })
-}
-
-/// The lap joint, the other reading (see [`beam_stiffness_near_current`]).
-///
-/// # Errors
-/// As [`lap_stiffness_for_tolerance`].
-pub fn lap_stiffness_near_current(
-    joint: &LapJoint,
-    range: [f64; 2],
-    tolerance: f64,
-    element: f64,
-) -> Result<ToleranceAnswer, ToleranceError> {
-    let tolerance = check_tolerance(tolerance)?;
-    let (range, forces) = checked_lap_forces(joint, range)?;
-    let p = joint.params();
-    let question = Question {
-        kind: ModelKind::Lap,
-        tolerance,
-        forces: Some(range),
-        current: (p.tangential_stiffness, lap_worst(joint, &forces)),
-        domain: LapParam::Stiffness.spec().domain,
-    };
-    Ok(near_current_over_forces(
-        question,
-        &forces,
-        |kt, f| {
-            let at = joint.with_tangential_stiffness(kt).unwrap_or(*joint);
-            at.regularized(f).joint_displacement()
-        },
-        |f| joint.coulomb(f).joint_displacement(),
-        |threshold| code_settings(threshold, p.friction * p.pressure, p.inner_modulus, element),
-    ))
 }
 
 /// Each code's setting for a penalty of at least the threshold (T3). `mu_p` is mu P (MPa),

@@ -14,6 +14,7 @@
 
 use crate::kernel::regime::Law;
 use crate::problems::lap::closed_form::{JointForce, LapJoint, LapState};
+pub use crate::problems::load_driven::MasingCycle;
 
 /// One cycle of amplitude F_a for one law.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,14 +42,20 @@ impl LapCycle {
         }
     }
 
-    /// The amplitude F_a (N).
-    pub fn amplitude(&self) -> f64 {
+    /// Peak displacement Delta_a = Delta_v(F_a) (mm).
+    pub fn peak_displacement(&self) -> f64 {
+        self.peak.joint_displacement()
+    }
+}
+
+impl MasingCycle for LapCycle {
+    fn amplitude(&self) -> f64 {
         self.peak.force()
     }
 
     /// Where sliding starts on first loading (N): F_1 under the regularized law, 0 under plain
     /// Coulomb (both ends slide from the first newton, (L7)).
-    pub fn onset(&self) -> f64 {
+    fn onset(&self) -> f64 {
         match self.law {
             Law::Coulomb => 0.0,
             Law::Regularized => self.joint.first_slip_force(),
@@ -57,50 +64,30 @@ impl LapCycle {
 
     /// The virgin curve Delta_v(F) (mm), odd in F; |F| beyond F_gross is taken at F_gross (the
     /// branches never ask for more than F_a).
-    pub fn virgin(&self, force: f64) -> f64 {
+    fn virgin(&self, force: f64) -> f64 {
         let state = Self::solve(&self.joint, self.law, self.joint.clamped_force(force.abs()));
         state.joint_displacement().copysign(force)
     }
 
-    /// Peak displacement Delta_a = Delta_v(F_a) (mm).
-    pub fn peak_displacement(&self) -> f64 {
-        self.peak.joint_displacement()
-    }
-
-    /// Unloading branch from (F_a, Delta_a) down to -F_a (mm).
-    pub fn unloading(&self, force: f64) -> f64 {
-        self.peak_displacement() - 2.0 * self.virgin(0.5 * (self.amplitude() - force))
-    }
-
-    /// Reloading branch from (-F_a, -Delta_a) up to F_a (mm).
-    pub fn reloading(&self, force: f64) -> f64 {
-        -self.peak_displacement() + 2.0 * self.virgin(0.5 * (self.amplitude() + force))
+    /// Delta_a (mm), [`LapCycle::peak_displacement`].
+    fn peak_response(&self) -> f64 {
+        self.peak_displacement()
     }
 
     /// Energy dissipated per cycle (N mm), (L10): the friction work of the plastic slip at the
     /// turning point ([`LapState::cycle_dissipation`]); zero while nothing slides.
-    pub fn dissipation(&self) -> f64 {
+    fn dissipation(&self) -> f64 {
         self.peak.cycle_dissipation()
     }
 
     /// Peak elastic energy U = F_a Delta_a / 2 (N mm), the secant definition.
-    pub fn peak_energy(&self) -> f64 {
+    fn peak_energy(&self) -> f64 {
         0.5 * self.amplitude() * self.peak_displacement()
-    }
-
-    /// Equivalent viscous damping ratio D / (4 pi U) (-); 0 at zero amplitude.
-    pub fn damping_ratio(&self) -> f64 {
-        let u = self.peak_energy();
-        if u > 0.0 {
-            self.dissipation() / (4.0 * std::f64::consts::PI * u)
-        } else {
-            0.0
-        }
     }
 
     /// Secant stiffness F_a / Delta_a (N/mm); at zero amplitude the initial slope: the elastic
     /// joint's under the regularized law, the bonded joint's under Coulomb (its slip grows as F^2).
-    pub fn secant_stiffness(&self) -> f64 {
+    fn secant_stiffness(&self) -> f64 {
         let delta = self.peak_displacement();
         if delta > 0.0 {
             return self.amplitude() / delta;

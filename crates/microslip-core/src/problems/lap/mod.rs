@@ -7,6 +7,7 @@ pub mod closed_form;
 pub mod continuum;
 pub mod cycle;
 pub mod discretized;
+pub mod load_driven;
 pub mod params;
 pub mod problem;
 pub mod validity;
@@ -23,7 +24,7 @@ use crate::kernel::regime::Law;
 use crate::problems::quantity::ratio_to_coulomb;
 use crate::problems::{Description, Param, Quantity, QuantityName, Solution};
 use closed_form::{JointForce, LapJoint};
-use cycle::LapCycle;
+use cycle::{LapCycle, MasingCycle};
 use params::LapParam;
 
 /// The double-lap joint as the generic layers see it.

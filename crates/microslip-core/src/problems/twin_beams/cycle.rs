@@ -13,6 +13,7 @@
 //! ```
 
 pub use crate::kernel::regime::Law;
+pub use crate::problems::load_driven::MasingCycle;
 use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams};
 
 /// One cycle of amplitude F_a for one law.
@@ -62,19 +63,25 @@ impl Cycle {
         cycle
     }
 
-    /// The amplitude F_a (N).
-    pub fn amplitude(&self) -> f64 {
+    /// Peak deflection w_a = w_v(F_a) (mm).
+    pub fn peak_deflection(&self) -> f64 {
+        self.peak_deflection
+    }
+}
+
+impl MasingCycle for Cycle {
+    fn amplitude(&self) -> f64 {
         self.amplitude
     }
 
     /// Where sliding starts on first loading: F_thre (Coulomb) or F_1 (regularized) (N).
-    pub fn onset(&self) -> f64 {
+    fn onset(&self) -> f64 {
         self.onset
     }
 
     /// The virgin curve w_v(F) (mm), odd in F; |F| beyond the largest accepted force is taken at
     /// that force (the branches never ask for more than F_a).
-    pub fn virgin(&self, force: f64) -> f64 {
+    fn virgin(&self, force: f64) -> f64 {
         let f = TipForce::clamped(force.abs());
         let w = match self.law {
             Law::Coulomb => self.beams.coulomb(f).tip_deflection(),
@@ -83,19 +90,9 @@ impl Cycle {
         w.copysign(force)
     }
 
-    /// Peak deflection w_a = w_v(F_a) (mm).
-    pub fn peak_deflection(&self) -> f64 {
+    /// w_a (mm), [`Cycle::peak_deflection`].
+    fn peak_response(&self) -> f64 {
         self.peak_deflection
-    }
-
-    /// Unloading branch from (F_a, w_a) down to -F_a (mm).
-    pub fn unloading(&self, force: f64) -> f64 {
-        self.peak_deflection - 2.0 * self.virgin(0.5 * (self.amplitude - force))
-    }
-
-    /// Reloading branch from (-F_a, -w_a) up to F_a (mm).
-    pub fn reloading(&self, force: f64) -> f64 {
-        -self.peak_deflection + 2.0 * self.virgin(0.5 * (self.amplitude + force))
     }
 
     /// Energy dissipated per cycle by the whole system, both beams' tip forces (N mm), from the
@@ -103,7 +100,7 @@ impl Cycle {
     /// D = 4 mu P (F_a - F_thre) (L - X)^3 / (E h^2), with X the end of the microslip zone at F_a
     /// (X = 0 for Coulomb, which gives (C4)); zero while the cycle never reaches the onset of sliding.
     /// A product of positive factors: no cancellation at any amplitude.
-    pub fn dissipation(&self) -> f64 {
+    fn dissipation(&self) -> f64 {
         if self.amplitude <= self.onset {
             return 0.0;
         }
@@ -111,22 +108,12 @@ impl Cycle {
     }
 
     /// Peak elastic energy U = 1/2 (2 F_a) w_a of the two tip forces (N mm), the secant definition.
-    pub fn peak_energy(&self) -> f64 {
+    fn peak_energy(&self) -> f64 {
         self.amplitude * self.peak_deflection
     }
 
-    /// Equivalent viscous damping ratio D / (4 pi U) (-); 0 at zero amplitude.
-    pub fn damping_ratio(&self) -> f64 {
-        let u = self.peak_energy();
-        if u > 0.0 {
-            self.dissipation() / (4.0 * std::f64::consts::PI * u)
-        } else {
-            0.0
-        }
-    }
-
     /// Secant stiffness F_a / w_a of one beam (N/mm); the initial stiffness at zero amplitude.
-    pub fn secant_stiffness(&self) -> f64 {
+    fn secant_stiffness(&self) -> f64 {
         if self.peak_deflection > 0.0 {
             self.amplitude / self.peak_deflection
         } else {

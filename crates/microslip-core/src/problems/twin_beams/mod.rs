@@ -6,6 +6,7 @@
 pub mod closed_form;
 pub mod cycle;
 pub mod discretized;
+pub mod load_driven;
 pub mod params;
 pub mod problem;
 pub mod validity;
@@ -16,7 +17,7 @@ pub use problem::TwinBeamsProblem;
 use crate::problems::quantity::ratio_to_coulomb;
 use crate::problems::{Description, Param, Quantity, QuantityName, Solution};
 use closed_form::{TipForce, TwinBeams};
-use cycle::{Cycle, Law};
+use cycle::{Cycle, Law, MasingCycle};
 use params::BeamParam;
 
 /// The twin beams as the generic layers see them.

@@ -1,0 +1,146 @@
+//! The capability of a **load-driven** problem: a linear elastic structure held together by a
+//! frictional interface under a constant normal pressure P, loaded by one scalar force F that can
+//! grow from zero and cycle between +F_a and -F_a (the twin beams' tip force, the lap joint's force
+//! through the joint). Its answer at a force is one displacement, the *response* u(F) (w(L) of the
+//! beams, Delta of the joint), under plain Coulomb and under the regularized law
+//! (tau = K_T s up to mu P).
+//!
+//! What makes such a problem load-driven, and what the generic studies over it
+//! ([`crate::study::load`]: sweeps against F, the K_T tolerance, loops and dissipation) rely on:
+//!
+//! - **A force axis with a scale.** F lives in [0, F_max] ([`LoadDriven::force`] checks it, F_max
+//!   is the parameter's domain or the joint's F_gross), and one force sets the regime scale
+//!   ([`LoadDriven::regime_scale`]: F_thre of the beams, F_gross of the joint) that the charts'
+//!   force axes are measured against.
+//! - **Monotonic first loading.** The response grows with F, and at a fixed F it does not increase
+//!   with K_T (docs/theory.md (T1), (L11)): the deviation from Coulomb is then non-increasing in
+//!   K_T, which is what makes the smallest K_T within a tolerance one bracketed root.
+//! - **Masing's rule.** The structure is linear, mu P does not change with the load, every interface
+//!   point's shear grows monotonically on first loading and a point elastic at the turning point
+//!   stays elastic over the reversal (docs/theory.md (C1), (L9)). Then, with u_v the virgin
+//!   (first-loading) curve extended as an odd function and u_a = u_v(F_a), the cycle between +F_a
+//!   and -F_a is
+//!
+//! ```text
+//! unloading from +F_a:  u(F) = u_a - 2 u_v((F_a - F) / 2)
+//! reloading from -F_a:  u(F) = -u_a + 2 u_v((F_a + F) / 2)
+//! D   = the area of the loop, the friction work of the plastic slip at +F_a (C3), (L10)
+//! zeta = D / (4 pi U),  U = the peak elastic energy of the loading (secant definition)
+//! ```
+//!
+//! [`MasingCycle`] writes the branches and zeta once from u_v, u_a and D; each problem gives its
+//! virgin curve, its D (a closed form of its own) and its U (the beams count both tip forces).
+//!
+//! A problem is load-driven by implementing [`LoadDriven`] in its own folder
+//! (`problems/<name>/load_driven.rs`); every study, chart and report of a load-driven feature is
+//! then written once, generic over it.
+
+use crate::kernel::params::ParamError;
+use crate::kernel::regime::Law;
+use crate::problems::{ModelKind, Param};
+
+/// What the generic load-driven studies need of a problem: its force, its response under both
+/// laws, its regime scale, its cycle and its interface (see the module docs for the physics).
+pub trait LoadDriven {
+    /// The structure, valid by construction (built by the problem's checked constructor).
+    type Model: Copy;
+    /// A force the structure carries, checked against its range (N).
+    type Force: Copy;
+    /// One law's cycle between +F_a and -F_a.
+    type Cycle: MasingCycle + Copy;
+    /// Everything the reports show at one force, for both laws.
+    type Point;
+
+    /// Which problem this is.
+    const KIND: ModelKind;
+    /// The load parameter F: its name, unit and domain.
+    const FORCE: Param;
+    /// The interface stiffness K_T (MPa/mm): its domain is where the tolerance searches.
+    const STIFFNESS: Param;
+
+    /// Accepts `newtons` as a force this structure carries.
+    ///
+    /// # Errors
+    /// [`ParamError`] naming F, its value and the allowed range (and why, where the structure
+    /// bounds it: the joint's F_gross).
+    fn force(model: &Self::Model, newtons: f64) -> Result<Self::Force, ParamError>;
+    /// The accepted force nearest to `newtons` (0 for negative values and NaN).
+    fn clamped_force(model: &Self::Model, newtons: f64) -> Self::Force;
+    /// The force in N.
+    fn newtons(force: Self::Force) -> f64;
+    /// The force that sets the regime scale (N): F_thre of the beams, F_gross of the joint.
+    fn regime_scale(model: &Self::Model) -> f64;
+    /// The forces (N) at which the regime of first loading changes (F_thre; F_1 and F_2 of the
+    /// joint): where a search over forces must look besides its even samples.
+    fn regime_changes(model: &Self::Model) -> Vec<f64>;
+
+    /// The response u(F) (mm) at `force` under `law`: w(L) of the beams, Delta of the joint.
+    fn response(model: &Self::Model, law: Law, force: Self::Force) -> f64;
+    /// Everything the reports show at `force`, both laws.
+    fn point(model: &Self::Model, force: Self::Force) -> Self::Point;
+    /// The stretch of interface that does not slide at `force` under `law`, `[from, to]` (mm
+    /// along the interface): the stick (Coulomb) or elastic-slip (regularized) zone, whose edges
+    /// are the zone boundaries the charts draw against F.
+    fn holding_zone(model: &Self::Model, law: Law, force: Self::Force) -> [f64; 2];
+    /// The cycle between +`amplitude` and -`amplitude` under `law`.
+    fn cycle(model: &Self::Model, law: Law, amplitude: Self::Force) -> Self::Cycle;
+
+    /// The interface stiffness K_T (MPa/mm).
+    fn tangential_stiffness(model: &Self::Model) -> f64;
+    /// The same structure with K_T = `kt` (MPa/mm), all else equal.
+    ///
+    /// # Errors
+    /// [`ParamError`] for a K_T outside its domain.
+    fn with_tangential_stiffness(model: &Self::Model, kt: f64) -> Result<Self::Model, ParamError>;
+    /// The interface strength mu P (MPa): the FE codes' elastic-slip settings scale with it.
+    fn interface_strength(model: &Self::Model) -> f64;
+    /// The Young's modulus (MPa) the FE codes' default penalties scale with (the beams' E, the
+    /// joint's inner plate E1).
+    fn modulus(model: &Self::Model) -> f64;
+    /// Forces (N) besides the even samples and the regime changes at which the deviation from
+    /// Coulomb must be checked over `[from, to]`: the joint's limit at zero (its regularized
+    /// Delta is elastic, Coulomb's bonded, and their ratio is largest there); none for the beams,
+    /// whose deviation is flat below F_thre.
+    fn deviation_probes(_model: &Self::Model, [_from, _to]: [f64; 2]) -> Vec<f64> {
+        Vec::new()
+    }
+}
+
+/// One law's cycle between +F_a and -F_a under Masing's rule (module docs): the branches and the
+/// damping ratio come from the virgin curve, the peak and D, written once here.
+pub trait MasingCycle {
+    /// The amplitude F_a (N).
+    fn amplitude(&self) -> f64;
+    /// Where sliding starts on first loading (N).
+    fn onset(&self) -> f64;
+    /// The virgin curve u_v(F) (mm), odd in F.
+    fn virgin(&self, force: f64) -> f64;
+    /// The peak response u_a = u_v(F_a) (mm).
+    fn peak_response(&self) -> f64;
+    /// Energy dissipated per cycle D (N mm).
+    fn dissipation(&self) -> f64;
+    /// Peak elastic energy U (N mm), the secant definition.
+    fn peak_energy(&self) -> f64;
+    /// Secant stiffness F_a / u_a (N/mm), the initial slope at zero amplitude.
+    fn secant_stiffness(&self) -> f64;
+
+    /// Unloading branch from (F_a, u_a) down to -F_a (mm): u_a - 2 u_v((F_a - F) / 2).
+    fn unloading(&self, force: f64) -> f64 {
+        self.peak_response() - 2.0 * self.virgin(0.5 * (self.amplitude() - force))
+    }
+
+    /// Reloading branch from (-F_a, -u_a) up to F_a (mm): -u_a + 2 u_v((F_a + F) / 2).
+    fn reloading(&self, force: f64) -> f64 {
+        -self.peak_response() + 2.0 * self.virgin(0.5 * (self.amplitude() + force))
+    }
+
+    /// Equivalent viscous damping ratio D / (4 pi U) (-); 0 at zero amplitude.
+    fn damping_ratio(&self) -> f64 {
+        let u = self.peak_energy();
+        if u > 0.0 {
+            self.dissipation() / (4.0 * std::f64::consts::PI * u)
+        } else {
+            0.0
+        }
+    }
+}

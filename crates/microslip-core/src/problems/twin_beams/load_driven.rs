@@ -1,0 +1,127 @@
+//! The twin beams as a load-driven problem ([`LoadDriven`]): the tip force F on each beam, w(L)
+//! its response, F_thre = 4 b h mu P / 3 its regime scale, and the Masing cycle of [`Cycle`].
+
+use crate::kernel::params::ParamError;
+use crate::kernel::regime::{Law, Regime};
+use crate::problems::load_driven::LoadDriven;
+use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams};
+use crate::problems::twin_beams::cycle::Cycle;
+use crate::problems::twin_beams::validity::BeamValidity;
+use crate::problems::{BeamParam, ModelKind, Param};
+
+/// The twin beams under a tip force: the type that carries their [`LoadDriven`] capability.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TwinBeamsLoad;
+
+/// Everything the reports show about the twin beams at one force, for both laws.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BeamPoint {
+    /// Tip force F (N).
+    pub force: f64,
+    /// Coulomb tip deflection (mm).
+    pub w_coulomb: f64,
+    /// Regularized tip deflection (mm).
+    pub w_regularized: f64,
+    /// End of the Coulomb stick zone (mm): L in stick, 0 once the interface slides.
+    pub stick_end: f64,
+    /// End of the microslip zone X (mm); L without macroslip.
+    pub micro_end: f64,
+    /// Coulomb regime.
+    pub regime_coulomb: Regime,
+    /// Regularized regime.
+    pub regime_regularized: Regime,
+    /// Where the beam theory stands against continuum FE at this force (V2).
+    pub validity: BeamValidity,
+}
+
+/// The twin beams at one force.
+pub fn beam_point(beams: &TwinBeams, force: TipForce) -> BeamPoint {
+    let (coulomb, regularized) = (beams.coulomb(force), beams.regularized(force));
+    let w_regularized = regularized.tip_deflection();
+    BeamPoint {
+        force: force.newtons(),
+        w_coulomb: coulomb.tip_deflection(),
+        w_regularized,
+        stick_end: coulomb.stick_end(),
+        micro_end: regularized.micro_zone_end(),
+        regime_coulomb: coulomb.regime(),
+        regime_regularized: regularized.regime(),
+        validity: beams.validity_at(force, w_regularized),
+    }
+}
+
+impl LoadDriven for TwinBeamsLoad {
+    type Model = TwinBeams;
+    type Force = TipForce;
+    type Cycle = Cycle;
+    type Point = BeamPoint;
+
+    const KIND: ModelKind = ModelKind::Beam;
+    const FORCE: Param = Param::Beam(BeamParam::Force);
+    const STIFFNESS: Param = Param::Beam(BeamParam::Stiffness);
+
+    /// Any force of the tip force's domain: the beams carry every one (macroslip past F_thre).
+    fn force(_beams: &TwinBeams, newtons: f64) -> Result<TipForce, ParamError> {
+        TipForce::new(newtons)
+    }
+
+    fn clamped_force(_beams: &TwinBeams, newtons: f64) -> TipForce {
+        TipForce::clamped(newtons)
+    }
+
+    fn newtons(force: TipForce) -> f64 {
+        force.newtons()
+    }
+
+    /// F_thre, where Coulomb's interface starts to slide.
+    fn regime_scale(beams: &TwinBeams) -> f64 {
+        beams.threshold_force()
+    }
+
+    /// F_thre, where Coulomb's interface starts to slide: the deviation from Coulomb is flat
+    /// below it and falls above it (T2).
+    fn regime_changes(beams: &TwinBeams) -> Vec<f64> {
+        vec![beams.threshold_force()]
+    }
+
+    fn response(beams: &TwinBeams, law: Law, force: TipForce) -> f64 {
+        match law {
+            Law::Coulomb => beams.coulomb(force).tip_deflection(),
+            Law::Regularized => beams.regularized(force).tip_deflection(),
+        }
+    }
+
+    fn point(beams: &TwinBeams, force: TipForce) -> BeamPoint {
+        beam_point(beams, force)
+    }
+
+    /// From the clamp to the end of the stick zone (Coulomb) or of the microslip zone X
+    /// (regularized).
+    fn holding_zone(beams: &TwinBeams, law: Law, force: TipForce) -> [f64; 2] {
+        match law {
+            Law::Coulomb => [0.0, beams.coulomb(force).stick_end()],
+            Law::Regularized => [0.0, beams.regularized(force).micro_zone_end()],
+        }
+    }
+
+    fn cycle(beams: &TwinBeams, law: Law, amplitude: TipForce) -> Cycle {
+        Cycle::new(beams, law, amplitude)
+    }
+
+    fn tangential_stiffness(beams: &TwinBeams) -> f64 {
+        beams.params().tangential_stiffness
+    }
+
+    fn with_tangential_stiffness(beams: &TwinBeams, kt: f64) -> Result<TwinBeams, ParamError> {
+        beams.with_tangential_stiffness(kt)
+    }
+
+    fn interface_strength(beams: &TwinBeams) -> f64 {
+        let p = beams.params();
+        p.friction * p.pressure
+    }
+
+    fn modulus(beams: &TwinBeams) -> f64 {
+        beams.params().youngs_modulus
+    }
+}

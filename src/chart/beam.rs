@@ -1,0 +1,193 @@
+//! The twin beams' charts as data: w(L) vs F with Coulomb and the K_T family, X vs F, the loop,
+//! D vs F_a and tau(x), and their finite-element points. The load charts are written once in
+//! [`super::load`]; this file gives the beams' words and their own charts.
+
+use crate::chart::load::{
+    LoadLabels, companions, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
+};
+use crate::chart::view::BeamChart;
+use crate::chart::{
+    NumericPoints, OVERLAY_POINTS, Plot, PointFailure, SeriesRole, cursor, line, linear_axis,
+    samples,
+};
+use crate::kernel::format::number;
+use crate::numeric::{MeshDensity, NumericError};
+use crate::problems::twin_beams::TwinBeamsFe;
+use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
+use crate::study::curves::{self, Spacing};
+use crate::{TipForce, TwinBeams};
+
+/// What the twin beams' load charts call their quantities: the loop is one beam's, D both's.
+const BEAM_LABELS: LoadLabels = LoadLabels {
+    response: "w(L)",
+    response_axis: "w(L) (mm)",
+    loop_title: ("1 beam ", "D(2)"),
+    dissipation_axis: "D, 2 beams (N mm)",
+};
+
+/// The force range of the beam charts: up to `span` (kept by the app while parameters change) or
+/// 3 F_thre, or further to show the current F and the largest measured force, but never beyond the
+/// largest accepted force (the sweeps refuse it).
+pub(super) fn force_range(
+    beams: &TwinBeams,
+    force: TipForce,
+    f_data: f64,
+    span: Option<f64>,
+) -> f64 {
+    let wanted = span
+        .unwrap_or(3.0 * beams.threshold_force())
+        .max(1.25 * force.newtons())
+        .max(1.05 * f_data);
+    TipForce::clamped(wanted).newtons()
+}
+
+pub(super) fn beam_plot(
+    beams: &TwinBeams,
+    force: TipForce,
+    chart: BeamChart,
+    f_data: f64,
+    span: Option<f64>,
+) -> Option<Plot> {
+    let p = beams.params();
+    let f_max = force_range(beams, force, f_data, span);
+    let forces = samples(0.0, f_max, Spacing::Linear)?;
+    let kt = p.tangential_stiffness;
+    let companions = companions(kt, |k| beams.with_tangential_stiffness(k).ok());
+    let f = force.newtons();
+    match chart {
+        BeamChart::Deflection => {
+            response_plot::<TwinBeamsLoad>(beams, &BEAM_LABELS, forces, (f, f_max))
+        }
+        BeamChart::SlipBoundary => {
+            let mut series = Vec::new();
+            for (role, label, other) in &companions {
+                series.push(line(
+                    *role,
+                    *label,
+                    curves::beam_slip_boundary_vs_force(other, forces).ok()?,
+                ));
+            }
+            series.push(line(
+                SeriesRole::Current,
+                "K_T",
+                curves::beam_slip_boundary_vs_force(beams, forces).ok()?,
+            ));
+            series.push(cursor(f, [0.0, p.length]));
+            Some(Plot {
+                caption: None,
+                title: format!(
+                    "X vs F, K_T = {} MPa/mm, F_1 = {} N",
+                    number(kt),
+                    number(beams.first_macroslip_force())
+                ),
+                x: linear_axis("F (N)", 0.0, f_max),
+                y: linear_axis("X (mm)", 0.0, p.length),
+                series,
+            })
+        }
+        BeamChart::Loop => loop_chart::<TwinBeamsLoad>(beams, &BEAM_LABELS, force),
+        BeamChart::Dissipation => {
+            let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
+            dissipation_chart::<TwinBeamsLoad>(beams, &BEAM_LABELS, force, amplitudes, f_max)
+        }
+        BeamChart::Shear => {
+            let positions = samples(0.0, p.length, Spacing::Linear)?;
+            Some(profile_plot(
+                ("tau(x)", "tau (MPa)"),
+                (f, kt),
+                p.length,
+                curves::beam_shear_along(beams, force, positions),
+                ("mu P", beams.coulomb_stress()),
+            ))
+        }
+    }
+}
+
+/// The twin beams' finite-element points for `chart` (none for D vs F_a, a closed-form integral
+/// of the loop).
+pub(super) fn beam_numeric_points(
+    beams: &TwinBeams,
+    force: TipForce,
+    chart: BeamChart,
+    density: MeshDensity,
+) -> Result<Option<NumericPoints>, NumericError> {
+    match chart {
+        BeamChart::Deflection | BeamChart::SlipBoundary => {
+            // One model loaded monotonically through the sample forces: one load step per point.
+            let f_max = force_range(beams, force, 0.0, None);
+            let mut fe = TwinBeamsFe::new(beams.params(), density);
+            let mut points = Vec::with_capacity(OVERLAY_POINTS);
+            let (mut failed, mut failure) = (0, None);
+            let mut first_failure = None;
+            for i in 1..=OVERLAY_POINTS {
+                let f = f_max * i as f64 / OVERLAY_POINTS as f64;
+                // A very stiff interface can make Newton cycle at one load (the whole interface
+                // on the yield limit to round-off): that point is a gap, the model stays at the
+                // last converged load and the next point goes on from there.
+                match fe.load_to(f, 2) {
+                    Ok(()) => {}
+                    Err(e @ NumericError::NoConvergence { .. }) => {
+                        failed += 1;
+                        first_failure.get_or_insert_with(|| PointFailure {
+                            at: format!("F = {} N", number(f)),
+                            why: e.to_string(),
+                        });
+                        failure = Some(e);
+                        continue;
+                    }
+                    Err(e) => return Err(e),
+                }
+                points.push((
+                    f,
+                    if chart == BeamChart::Deflection {
+                        fe.tip_deflection()
+                    } else {
+                        fe.micro_zone_end()
+                    },
+                ));
+            }
+            match failure {
+                Some(e) if points.is_empty() => Err(e),
+                _ => Ok(Some(NumericPoints {
+                    points,
+                    continuum: Vec::new(),
+                    failed,
+                    failure: first_failure,
+                })),
+            }
+        }
+        BeamChart::Loop => {
+            // The FE model driven round the same cycle: its own slider histories, no Masing rule.
+            let fa = force.newtons();
+            let mut fe = TwinBeamsFe::new(beams.params(), density);
+            fe.load_to(fa, 4)?;
+            let points = fe_loop(fa, OVERLAY_POINTS, |f| {
+                fe.load_to(f, 2)?;
+                Ok(fe.tip_deflection())
+            })?;
+            Ok(Some(NumericPoints {
+                points,
+                continuum: Vec::new(),
+                failed: 0,
+                failure: None,
+            }))
+        }
+        BeamChart::Shear => {
+            let mut fe = TwinBeamsFe::new(beams.params(), density);
+            fe.load_to(force.newtons(), 4)?;
+            let samples = fe.interface();
+            let stride = (samples.len() / 40).max(1);
+            Ok(Some(NumericPoints {
+                continuum: Vec::new(),
+                failed: 0,
+                failure: None,
+                points: samples
+                    .iter()
+                    .step_by(stride)
+                    .map(|s| (s.x, s.stress))
+                    .collect(),
+            }))
+        }
+        BeamChart::Dissipation => Ok(None),
+    }
+}

@@ -1,0 +1,295 @@
+//! The paper's figures (`microslip figures`): which chart of which bundled preset each one is,
+//! their captions and the HTML index that shows them with their data.
+
+use super::Format;
+use crate::chart::YMode;
+use crate::chart::view::{AnyChart, BeamChart, PlateChart};
+
+/// One figure of `microslip figures`: a chart of a bundled preset.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg(any(feature = "app", test))]
+pub(crate) struct PaperFigure {
+    /// File name without extension (`.svg` and `.csv` are written).
+    pub stem: &'static str,
+    /// The bundled preset charted.
+    pub preset: &'static str,
+    /// The chart.
+    pub chart: AnyChart,
+    /// With the project's finite-element points (the paper's comparison figures).
+    pub finite_elements: bool,
+    /// The y axis.
+    pub y: YMode,
+    /// What it shows, for the index page.
+    pub caption: &'static str,
+}
+
+/// The paper's figures (its two data sets, with the finite-element points of its comparison
+/// figures), then the cyclic loading this project adds.
+#[cfg(any(feature = "app", test))]
+pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
+    PaperFigure {
+        stem: "beam-w-vs-f",
+        preset: "paper-beams",
+        chart: AnyChart::Beam(BeamChart::Deflection),
+        y: YMode::Linear,
+        finite_elements: true,
+        caption: "Twin beams, K_T = 600 MPa/mm: tip deflection w(L) against the tip force F, \
+                  Coulomb and regularized (K_T/5, K_T, K_T x 5), finite-element points at K_T",
+    },
+    PaperFigure {
+        stem: "beam-w-vs-f-relative",
+        preset: "paper-beams",
+        chart: AnyChart::Beam(BeamChart::Deflection),
+        y: YMode::Relative,
+        finite_elements: true,
+        caption: "Twin beams: the same curves as w(L) / w(L)_Coulomb - 1 in %, where the K_T \
+                  family separates: constant in stick, falling once Coulomb slides",
+    },
+    PaperFigure {
+        stem: "beam-soft-w-vs-f",
+        preset: "paper-beams-soft",
+        chart: AnyChart::Beam(BeamChart::Deflection),
+        y: YMode::Linear,
+        finite_elements: true,
+        caption: "Twin beams, K_T/5 = 120 MPa/mm: w(L) against F, finite-element points at \
+                  120 MPa/mm",
+    },
+    PaperFigure {
+        stem: "beam-x-vs-f",
+        preset: "paper-beams",
+        chart: AnyChart::Beam(BeamChart::SlipBoundary),
+        y: YMode::Linear,
+        finite_elements: true,
+        caption: "Twin beams: end X of the microslip zone (from the clamp) against F, \
+                  finite-element points at K_T",
+    },
+    PaperFigure {
+        stem: "beam-soft-x-vs-f",
+        preset: "paper-beams-soft",
+        chart: AnyChart::Beam(BeamChart::SlipBoundary),
+        y: YMode::Linear,
+        finite_elements: true,
+        caption: "Twin beams, K_T/5: X against F, finite-element points at 120 MPa/mm",
+    },
+    PaperFigure {
+        stem: "plate-u-vs-kt",
+        preset: "paper-plate",
+        chart: AnyChart::Plate(PlateChart::Displacement),
+        y: YMode::Log,
+        finite_elements: true,
+        caption: "Squeezed plate: end displacement u(L) against K_T, Coulomb and regularized, \
+                  finite-element points and the 2-D plane-strain continuum",
+    },
+    PaperFigure {
+        stem: "plate-xr-vs-mu",
+        preset: "paper-plate",
+        chart: AnyChart::Plate(PlateChart::SlipBoundary),
+        y: YMode::Linear,
+        finite_elements: false,
+        caption: "Squeezed plate: end X_r of the microslip zone against mu, for K_T/10, K_T, \
+                  K_T x 10",
+    },
+    PaperFigure {
+        stem: "plate-pressure",
+        preset: "paper-plate",
+        chart: AnyChart::Plate(PlateChart::ContactPressure),
+        y: YMode::Linear,
+        finite_elements: false,
+        caption: "Squeezed plate: contact pressure P_r(x)/P along the half-plate of the paper's \
+                  flat-plate model (P7-P9, friction saturated everywhere); the plane-strain \
+                  continuum's is flat away from the free end (docs/theory.md (P12))",
+    },
+    PaperFigure {
+        stem: "beam-loop",
+        preset: "paper-beams",
+        chart: AnyChart::Beam(BeamChart::Loop),
+        y: YMode::Linear,
+        finite_elements: true,
+        caption: "One beam cycled between +F and -F (F = 100 N): the hysteresis loop, both laws, \
+                  finite-element points of the same cycle",
+    },
+    PaperFigure {
+        stem: "beam-d-vs-fa",
+        preset: "paper-beams",
+        chart: AnyChart::Beam(BeamChart::Dissipation),
+        y: YMode::Log,
+        finite_elements: false,
+        caption: "Twin beams: dissipation per cycle D (both beams) against the amplitude F_a",
+    },
+];
+
+/// One figure of an index page: its files, its title and what it shows.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[cfg(any(feature = "app", test))]
+pub(crate) struct IndexEntry {
+    /// File name without extension (`.svg` and `.csv` are written).
+    pub stem: String,
+    /// The chart's short title (the image's alt text).
+    pub title: &'static str,
+    /// What it shows.
+    pub caption: String,
+    /// The command that draws it alone.
+    pub command: String,
+}
+
+#[cfg(any(feature = "app", test))]
+impl PaperFigure {
+    /// This figure as an entry of the index page.
+    pub(crate) fn entry(&self) -> IndexEntry {
+        IndexEntry {
+            stem: self.stem.to_string(),
+            title: self.chart.title(),
+            caption: format!("{} (preset <code>{}</code>", self.caption, self.preset),
+            command: format!(
+                "microslip plot {} --preset {}{} --y {}",
+                self.chart.key(),
+                self.preset,
+                if self.finite_elements { " --fe" } else { "" },
+                self.y.key()
+            ),
+        }
+    }
+}
+
+/// A user's own bench, as `figures --preset/--set` draws it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[cfg(feature = "app")]
+pub(crate) struct Bench {
+    /// The preset's name as shown (`mine (modified by --set)`).
+    pub preset: String,
+    /// Its parameters ([`parameter_caption`]).
+    pub values: String,
+    /// The flags that chose it, as typed (`--preset mine --set KT=3e5`).
+    pub flags: String,
+    /// With the project's finite-element points.
+    pub finite_elements: bool,
+}
+
+#[cfg(feature = "app")]
+impl Bench {
+    /// The index entry of `chart` on the y axis `y`.
+    pub(crate) fn entry(&self, chart: AnyChart, y: YMode) -> IndexEntry {
+        IndexEntry {
+            // A chart key that already names its problem (`lap-tau`) is not named twice.
+            stem: {
+                let model = chart.kind().name();
+                match chart
+                    .key()
+                    .strip_prefix(model)
+                    .and_then(|k| k.strip_prefix('-'))
+                {
+                    Some(rest) => format!("{model}-{rest}"),
+                    None => format!("{model}-{}", chart.key()),
+                }
+            },
+            title: chart.title(),
+            caption: format!(
+                "{} (preset <code>{}</code>: {}",
+                chart.title(),
+                html_text(&self.preset),
+                html_text(&self.values)
+            ),
+            command: format!(
+                "microslip plot {} {}{} --y {}",
+                chart.key(),
+                html_text(&self.flags),
+                if self.finite_elements { " --fe" } else { "" },
+                y.key()
+            ),
+        }
+    }
+
+    /// The introduction of its index page.
+    pub(crate) fn intro(&self) -> String {
+        format!(
+            "Your bench, preset <code>{}</code>: {}. Units: mm, N, MPa; K_T in MPa/mm. Closed \
+             forms under both laws{}. Made by <code>microslip figures {}</code>.",
+            html_text(&self.preset),
+            html_text(&self.values),
+            if self.finite_elements {
+                "; points are the project's own finite-element solutions"
+            } else {
+                ""
+            },
+            html_text(&self.flags)
+        )
+    }
+}
+
+/// Text for an HTML page: `&`, `<`, `>` and `"` escaped (preset names and paths are the user's).
+#[cfg(feature = "app")]
+fn html_text(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+/// The introduction of the paper's index page.
+#[cfg(any(feature = "app", test))]
+pub(crate) const PAPER_INTRO: &str = "Ligier &amp; Bonhote (2014), regularized Coulomb friction: the paper's data sets, \
+     both laws, closed forms; points are the project's own finite-element solutions. \
+     Units: mm, N, MPa; K_T in MPa/mm. Made by <code>microslip figures</code>.";
+
+/// The parameters of `inputs` as a caption says them: `L = 200 mm, b = 20 mm, ..., mu = 0.3`.
+#[cfg(feature = "app")]
+pub(crate) fn parameter_caption(inputs: &crate::Inputs) -> String {
+    inputs
+        .kind()
+        .params()
+        .iter()
+        .filter_map(|&param| {
+            let value = inputs.get(param)?;
+            let unit = match param.unit() {
+                crate::Unit::Dimensionless => String::new(),
+                unit => format!(" {unit}"),
+            };
+            Some(format!(
+                "{param} = {}{unit}",
+                crate::kernel::params::Compact(value)
+            ))
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// An HTML page showing `entries` (files of `format` beside it) after `intro` (HTML), with their
+/// captions, CSV data links and the command that draws each alone. A PDF is shown by the browser's
+/// viewer (`<object>`), with a link where it has none.
+#[cfg(any(feature = "app", test))]
+pub(crate) fn index_html(intro: &str, entries: &[IndexEntry], format: Format) -> String {
+    let mut page = String::from(
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <title>microslip figures</title>\n<style>\n\
+         body { font-family: sans-serif; max-width: 860px; margin: 2em auto; }\n\
+         figure { margin: 0 0 2.5em 0; } img { width: 100%; border: 1px solid #ddd; }\n\
+         </style>\n</head>\n<body>\n<h1>microslip figures</h1>\n",
+    );
+    page.push_str(&format!("<p>{intro}</p>\n"));
+    for entry in entries {
+        page.push_str(&format!(
+            "<figure id=\"{stem}\">\n{image}\n\
+             <figcaption>{caption}; \
+             data: <a href=\"{stem}.csv\">{stem}.csv</a>; \
+             <code>{command}</code>)</figcaption>\n</figure>\n",
+            image = match format {
+                Format::Pdf => format!(
+                    "<object data=\"{stem}.pdf\" type=\"application/pdf\" width=\"100%\" \
+                     height=\"540\"><a href=\"{stem}.pdf\">{title} (PDF)</a></object>",
+                    stem = entry.stem,
+                    title = entry.title
+                ),
+                Format::Svg | Format::Png => format!(
+                    "<img src=\"{stem}.{format}\" alt=\"{title}\">",
+                    stem = entry.stem,
+                    title = entry.title
+                ),
+            },
+            stem = entry.stem,
+            caption = entry.caption,
+            command = entry.command,
+        ));
+    }
+    page.push_str("</body>\n</html>\n");
+    page
+}
