@@ -1,0 +1,62 @@
+//! `cycle`: hysteresis loops under a cyclic load.
+
+use super::*;
+
+pub(super) fn run_cycle(
+    out: &mut impl Write,
+    amplitude: f64,
+    inputs: &InputArgs,
+    points: u64,
+    format: CycleFormat,
+) -> Result<(), CliError> {
+    let amplitude = check_flag("--amplitude", amplitude, Domain::FORCE, Unit::Newton)?;
+    let points_error = |error| CliError::Range {
+        error,
+        flags: ["", "", "--points"],
+    };
+    curves::check_points(points).map_err(points_error)?;
+    // The amplitude is cycled, not the preset's F.
+    let (name, model) = load_any_structure(inputs, ModelKind::Beam)?;
+    let beams = match model {
+        Model::Beam { beams, .. } => beams,
+        Model::Lap { joint, .. } => {
+            let amplitude = joint.force(amplitude).map_err(|e| CliError::Flag {
+                flag: "--amplitude",
+                value: amplitude,
+                allowed: e.allowed(),
+            })?;
+            match format {
+                CycleFormat::Text => {
+                    out.write_all(text::lap_cycle(&name, &joint, amplitude).as_bytes())?
+                }
+                CycleFormat::Json => write_json(out, &json::lap_cycle(&name, &joint, amplitude))?,
+                CycleFormat::Csv => {
+                    let points = load::cycle_loop::<LapLoad>(&joint, amplitude, points)
+                        .map_err(points_error)?;
+                    write_table(out, TableFormat::Csv, points.map(|p| LapLoopRow::from(&p)))?;
+                }
+            }
+            return Ok(());
+        }
+        Model::Plate(_) => return Err(plate_has_no_cycle(inputs, "cycle")),
+    };
+    let amplitude = TipForce::new(amplitude)?;
+    match format {
+        CycleFormat::Text => out.write_all(text::cycle(&name, &beams, amplitude).as_bytes())?,
+        CycleFormat::Json => write_json(out, &json::cycle(&name, &beams, amplitude))?,
+        CycleFormat::Csv => {
+            let points = load::cycle_loop::<TwinBeamsLoad>(&beams, amplitude, points)
+                .map_err(points_error)?;
+            write_table(out, TableFormat::Csv, points.map(|p| LoopRow::from(&p)))?;
+        }
+    }
+    Ok(())
+}
+
+/// The contact element length of `--element-size`, default L/100.
+pub(super) fn element_size(element: Option<f64>, model: &Model) -> Result<f64, CliError> {
+    match element {
+        Some(e) => check_flag("--element-size", e, Domain::ELEMENT_SIZE, Unit::Millimetre),
+        None => Ok(model.interface().length / 100.0),
+    }
+}

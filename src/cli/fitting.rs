@@ -1,0 +1,158 @@
+//! `fit`: mu and K_T from a measured curve, with progress on stderr.
+
+use super::*;
+
+/// `--fix` values: (mu, K_T). Only those two are fitted, so only they can be held.
+pub(super) fn parse_fixed(fixed: &[String]) -> Result<(Option<f64>, Option<f64>), CliError> {
+    let (mut mu, mut kt) = (None, None);
+    for text in fixed {
+        let bad = || CliError::Fix(text.clone());
+        let (key, value) = text.split_once('=').ok_or_else(bad)?;
+        let value = parse_number(value.trim()).ok_or_else(bad)?;
+        match key.trim().parse::<BeamParam>().map_err(|_| bad())? {
+            BeamParam::Friction => mu = Some(value),
+            BeamParam::Stiffness => kt = Some(value),
+            _ => return Err(bad()),
+        }
+    }
+    Ok((mu, kt))
+}
+
+pub(super) fn run_fit(
+    out: &mut impl Write,
+    kind: ModelKind,
+    path: &PathBuf,
+    inputs: &InputArgs,
+    fixed: &[String],
+    weights: Option<WeightsArg>,
+    format: ReportFormat,
+) -> Result<(), CliError> {
+    let (fixed_mu, fixed_kt) = parse_fixed(fixed)?;
+    let (name, structure) = match kind {
+        ModelKind::Lap => {
+            // The measured forces are fitted, not the preset's F.
+            let (name, joint) = load_lap_structure(inputs, "fit lap")?;
+            (name, fit::Structure::Lap(joint.params()))
+        }
+        ModelKind::Beam | ModelKind::Plate => {
+            let (name, beams) = load_beams_structure(inputs, "fit beam")?;
+            (name, fit::Structure::Beam(beams.params()))
+        }
+    };
+    let data_error = |reason: String| CliError::Data {
+        path: path.display().to_string(),
+        reason,
+    };
+    let mut progress = ProgressLine::new(io::stderr(), io::stderr().is_terminal());
+    let contents = crate::measured::read_text(path, crate::file::Kinds::AnyReadable)
+        .map_err(|e| data_error(e.to_string()))?;
+    let mut reading =
+        |done, total| progress.update(Instant::now(), || text::reading_progress(done, total));
+    let data = match structure {
+        fit::Structure::Beam(_) => {
+            crate::measured::parse_measured_with_progress(&contents, &mut reading)
+        }
+        fit::Structure::Lap(_) => {
+            crate::measured::parse_measured_joint_with_progress(&contents, &mut reading)
+        }
+    };
+    drop(contents);
+    let crate::fit::Measured {
+        points: data,
+        sigma,
+    } = match data {
+        Ok(data) => data,
+        Err(e) => {
+            progress.finish();
+            return Err(data_error(e.to_string()));
+        }
+    };
+    let weights = match (sigma.as_deref(), weights) {
+        (Some(sigma), None) => fit::Weights::Sigma(sigma),
+        (Some(_), Some(chosen)) => {
+            progress.finish();
+            return Err(data_error(format!(
+                "has a {} column, which gives each point's own standard deviation, and --weights {} \
+                 asks for another; drop one",
+                crate::measured::SIGMA_COLUMN,
+                chosen
+                    .to_possible_value()
+                    .map_or_else(String::new, |v| v.get_name().to_string())
+            )));
+        }
+        (None, Some(WeightsArg::Absolute)) => fit::Weights::Absolute,
+        (None, Some(WeightsArg::Relative) | None) => fit::Weights::default(),
+    };
+    let result = fit::fit_weighted(structure, &data, (fixed_mu, fixed_kt), weights, &mut |p| {
+        progress.update(Instant::now(), || text::fit_progress(&p))
+    });
+    progress.finish();
+    // A column of zeros is the file's fault: said with its path.
+    let result = result.map_err(|e| match e {
+        FitError::NothingToFit { .. } => data_error(e.to_string()),
+        e => CliError::Fit(e),
+    })?;
+    match format {
+        ReportFormat::Text => out.write_all(
+            text::fit(&path.display().to_string(), &name, &structure, &result).as_bytes(),
+        )?,
+        ReportFormat::Json => write_json(
+            out,
+            &json::fit(&path.display().to_string(), &name, &structure, &result),
+        )?,
+    }
+    Ok(())
+}
+
+/// A long fit's progress (reading, then fitting) on stderr: shown only when stderr is a terminal (scripts and pipes see
+/// nothing) and once the command has run for [`ProgressLine::AFTER`]; one line rewritten in place
+/// at most every [`ProgressLine::EVERY`], erased when the fit ends so that the report starts clean.
+pub(super) struct ProgressLine<W: Write> {
+    pub(super) out: W,
+    pub(super) enabled: bool,
+    pub(super) started: Instant,
+    pub(super) last: Option<Instant>,
+    pub(super) shown: bool,
+}
+
+impl<W: Write> ProgressLine<W> {
+    /// Quiet for this long: short fits print nothing.
+    const AFTER: Duration = Duration::from_secs(1);
+    /// Fastest refresh.
+    const EVERY: Duration = Duration::from_millis(100);
+
+    pub(super) fn new(out: W, enabled: bool) -> Self {
+        ProgressLine {
+            out,
+            enabled,
+            started: Instant::now(),
+            last: None,
+            shown: false,
+        }
+    }
+
+    /// Shows `message()` if it is time to; the message is only built then.
+    pub(super) fn update(&mut self, now: Instant, message: impl FnOnce() -> String) {
+        if !self.enabled
+            || now.saturating_duration_since(self.started) < Self::AFTER
+            || self
+                .last
+                .is_some_and(|last| now.saturating_duration_since(last) < Self::EVERY)
+        {
+            return;
+        }
+        self.last = Some(now);
+        self.shown = true;
+        // Carriage return and erase-line: the line is rewritten in place. A progress line is
+        // best-effort: a failed write must not fail the fit.
+        let _ = write!(self.out, "\r\x1b[2Kmicroslip: {}", message());
+        let _ = self.out.flush();
+    }
+
+    pub(super) fn finish(&mut self) {
+        if self.shown {
+            let _ = write!(self.out, "\r\x1b[2K");
+            let _ = self.out.flush();
+        }
+    }
+}

@@ -1,0 +1,277 @@
+//! From a preset and `--set` to a validated model: loading, overrides and the errors that name the command.
+
+use super::*;
+
+/// The members of `plot --family KEY=V1,V2,...`: each value set on top of `model`'s inputs and
+/// checked as `--set` checks it (the same messages, after the flag).
+pub(super) fn family_models(
+    model: &Model,
+    spec: &str,
+) -> Result<(crate::Param, Vec<(f64, Model)>), CliError> {
+    use crate::chart::family::MAX_MEMBERS;
+    let refuse = |why: String| CliError::Invalid(format!("--family {spec}: {why}"));
+    let (key, values) = spec
+        .split_once('=')
+        .ok_or_else(|| refuse("expected KEY=V1,V2,... (e.g. P=0.5,1,2)".to_string()))?;
+    let key = key.trim();
+    let param = model.kind().param(key).map_err(|e| refuse(e.to_string()))?;
+    let values: Vec<&str> = values.split(',').map(str::trim).collect();
+    if values.len() > MAX_MEMBERS {
+        return Err(refuse(format!(
+            "{} values given, at most {MAX_MEMBERS} (more curves cannot be told apart)",
+            values.len()
+        )));
+    }
+    let mut members: Vec<(f64, Model)> = Vec::with_capacity(values.len());
+    for value in values {
+        let mut inputs = model.inputs();
+        preset::apply_assignment(&mut inputs, &format!("{key}={value}"))
+            .map_err(|e| refuse(e.to_string()))?;
+        let member = inputs.validate().map_err(|e| refuse(e.to_string()))?;
+        let number = member.inputs().get(param).unwrap_or(f64::NAN);
+        if members.iter().any(|(v, _)| *v == number) {
+            return Err(refuse(format!("{key} = {value} is given twice")));
+        }
+        members.push((number, member));
+    }
+    Ok((param, members))
+}
+
+/// The models of `plot --pin`: each pin's assignments on top of `model`'s inputs.
+pub(super) fn pinned_models(model: &Model, pins: &[String]) -> Result<Vec<Model>, CliError> {
+    use crate::chart::pins::MAX_PINS;
+    if pins.len() > MAX_PINS {
+        return Err(CliError::Invalid(format!(
+            "--pin: {} pins given, at most {MAX_PINS} (more curves cannot be told apart)",
+            pins.len()
+        )));
+    }
+    pins.iter()
+        .map(|pin| {
+            let mut inputs = model.inputs();
+            let mut keys: Vec<&str> = Vec::new();
+            for assignment in pin.split(',').map(str::trim) {
+                let key = assignment.split('=').next().unwrap_or("").trim();
+                if keys.contains(&key) {
+                    return Err(CliError::Invalid(format!(
+                        "--pin {pin}: {key} is given twice; a pin sets each parameter once"
+                    )));
+                }
+                keys.push(key);
+                preset::apply_assignment(&mut inputs, assignment)
+                    .map_err(|e| CliError::Invalid(format!("--pin {pin}: {e}")))?;
+            }
+            inputs
+                .validate()
+                .map_err(|e| CliError::Invalid(format!("--pin {pin}: {e}")))
+        })
+        .collect()
+}
+
+pub(super) fn load(
+    args: &InputArgs,
+    wanted: ModelKind,
+    command: &str,
+) -> Result<(String, Model), CliError> {
+    load_for(args, wanted, command, Load::Used)
+}
+
+/// Whether a command reads the model's load (F): one that does not (a cycle's amplitude, a fit's
+/// or a comparison's own forces) must not be refused over it (issue 36).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Load {
+    /// The command uses F: validated against everything (the lap joint's F <= F_gross).
+    Used,
+    /// The command does not: F checked against its own domain only, the model unloaded.
+    Unused,
+}
+
+pub(super) fn load_for(
+    args: &InputArgs,
+    wanted: ModelKind,
+    command: &str,
+    load: Load,
+) -> Result<(String, Model), CliError> {
+    let (name, preset) = resolve_preset(args, wanted)?;
+    if preset.inputs.kind() != wanted {
+        return Err(wrong_model(args, preset.inputs.kind(), wanted, command));
+    }
+    apply_and_validate(args, name, preset, load)
+}
+
+/// The twin beams and tip force of `args` (a preset of another problem is refused by name).
+pub(super) fn load_beams(
+    args: &InputArgs,
+    command: &str,
+) -> Result<(String, TwinBeams, TipForce), CliError> {
+    let (name, model) = load(args, ModelKind::Beam, command)?;
+    let (beams, force) = model
+        .into_beams()
+        .map_err(|found| wrong_model(args, found, ModelKind::Beam, command))?;
+    Ok((name, beams, force))
+}
+
+/// The squeezed plate of `args` (a preset of another problem is refused by name).
+pub(super) fn load_plate(
+    args: &InputArgs,
+    command: &str,
+) -> Result<(String, SqueezedPlate), CliError> {
+    let (name, model) = load(args, ModelKind::Plate, command)?;
+    let plate = model
+        .into_plate()
+        .map_err(|found| wrong_model(args, found, ModelKind::Plate, command))?;
+    Ok((name, plate))
+}
+
+/// The lap joint and force of `args` (a preset of another problem is refused by name).
+pub(super) fn load_lap(
+    args: &InputArgs,
+    command: &str,
+) -> Result<(String, LapJoint, JointForce), CliError> {
+    let (name, model) = load(args, ModelKind::Lap, command)?;
+    let (joint, force) = model
+        .into_lap()
+        .map_err(|found| wrong_model(args, found, ModelKind::Lap, command))?;
+    Ok((name, joint, force))
+}
+
+/// The lap joint of `args` for a command that does not use its F ([`Load::Unused`]).
+pub(super) fn load_lap_structure(
+    args: &InputArgs,
+    command: &str,
+) -> Result<(String, LapJoint), CliError> {
+    let (name, model) = load_for(args, ModelKind::Lap, command, Load::Unused)?;
+    let (joint, _) = model
+        .into_lap()
+        .map_err(|found| wrong_model(args, found, ModelKind::Lap, command))?;
+    Ok((name, joint))
+}
+
+/// The twin beams of `args` for a command that does not use their F ([`Load::Unused`]).
+pub(super) fn load_beams_structure(
+    args: &InputArgs,
+    command: &str,
+) -> Result<(String, TwinBeams), CliError> {
+    let (name, model) = load_for(args, ModelKind::Beam, command, Load::Unused)?;
+    let (beams, _) = model
+        .into_beams()
+        .map_err(|found| wrong_model(args, found, ModelKind::Beam, command))?;
+    Ok((name, beams))
+}
+
+/// `cycle` or `sweep cycle` given the plate, which has no load to cycle.
+pub(super) fn plate_has_no_cycle(args: &InputArgs, command: &str) -> CliError {
+    CliError::Invalid(format!(
+        "preset '{}' is a plate preset; `microslip {command}` needs a beam or lap preset (the \
+         squeezed plate has no load to cycle: its pressure is fixed)",
+        args.preset.as_deref().unwrap_or_default()
+    ))
+}
+
+/// A preset of the problem `found` given to a command for `wanted`.
+pub(super) fn wrong_model(
+    args: &InputArgs,
+    found: ModelKind,
+    wanted: ModelKind,
+    command: &str,
+) -> CliError {
+    CliError::WrongModel {
+        preset: args.preset.clone().unwrap_or_default(),
+        found,
+        wanted,
+        command: command.to_string(),
+    }
+}
+
+/// A deck whose header describes another problem than the results reader was asked for.
+pub(super) fn deck_of_other_model(found: ModelKind) -> CliError {
+    CliError::Invalid(format!(
+        "the deck's header describes the {found} problem, not the one compared"
+    ))
+}
+
+/// Like [`load`], for commands that accept any problem (`default` picks the default preset).
+pub(super) fn load_any(args: &InputArgs, default: ModelKind) -> Result<(String, Model), CliError> {
+    let (name, preset) = resolve_preset(args, default)?;
+    apply_and_validate(args, name, preset, Load::Used)
+}
+
+/// As [`load_any`] for a command that does not use the load ([`Load::Unused`]).
+pub(super) fn load_any_structure(
+    args: &InputArgs,
+    default: ModelKind,
+) -> Result<(String, Model), CliError> {
+    let (name, preset) = resolve_preset(args, default)?;
+    apply_and_validate(args, name, preset, Load::Unused)
+}
+
+pub(super) fn resolve_preset(
+    args: &InputArgs,
+    default: ModelKind,
+) -> Result<(String, Preset), CliError> {
+    let preset = preset::resolve(
+        args.preset
+            .as_deref()
+            .unwrap_or(preset::default_name(default)),
+    )?;
+    Ok((preset.name.clone(), preset))
+}
+
+pub(super) fn apply_and_validate(
+    args: &InputArgs,
+    name: String,
+    preset: Preset,
+    load: Load,
+) -> Result<(String, Model), CliError> {
+    let mut inputs: Inputs = preset.inputs;
+    for assignment in &args.assignments {
+        preset::apply_assignment(&mut inputs, assignment)?;
+    }
+    // "modified" only where a value differs from the preset's: `--set F=3000` on a preset whose F
+    // is 3000 leaves the preset as it is, and saying otherwise sends users looking for a change.
+    let set_changed = inputs != preset.inputs;
+    let before_theory = inputs;
+    if let Some(theory) = &args.beam_theory {
+        let theory = BeamTheory::parse(theory).map_err(|e| CliError::Theory(e.to_string()))?;
+        match &mut inputs {
+            Inputs::Beam { structure, .. } => structure.theory = theory,
+            Inputs::Plate(_) => {
+                return Err(CliError::Theory(
+                    "--beam-theory applies to the twin beams, not the plate".to_string(),
+                ));
+            }
+            Inputs::Lap { .. } => {
+                return Err(CliError::Theory(
+                    "--beam-theory applies to the twin beams, not the lap joint".to_string(),
+                ));
+            }
+        }
+    }
+    let theory_changed = inputs != before_theory;
+    let name = match (set_changed, theory_changed) {
+        (false, false) => name,
+        (true, false) => format!("{name} (modified by --set)"),
+        (false, true) => format!("{name} (modified by --beam-theory)"),
+        (true, true) => format!("{name} (modified by --set and --beam-theory)"),
+    };
+    let model = match load {
+        Load::Used => inputs.validate()?,
+        Load::Unused => inputs.validate_without_load()?,
+    };
+    Ok((name, model))
+}
+
+/// Checks a flag that is not a model parameter against `domain`.
+/// [`Domain::check`] (which also turns -0 into 0) with the flag's name in the refusal.
+pub(super) fn check_flag(
+    flag: &'static str,
+    value: f64,
+    domain: Domain,
+    unit: Unit,
+) -> Result<f64, CliError> {
+    domain.check(flag, value, unit).map_err(|_| CliError::Flag {
+        flag,
+        value,
+        allowed: domain.refusal(value, unit),
+    })
+}

@@ -1,0 +1,316 @@
+//! The headless command line: reports, sweeps and presets for scripts and FE benchmarking.
+//!
+//! A thin layer: presets and `--set` come from [`crate::preset`], numbers from [`crate::study::curves`],
+//! formats from [`crate::report`]; this file only parses flags, checks the flags that are not model
+//! parameters, and names flags in error messages. Errors are one line on stderr; the exit codes
+//! follow one table ([`CliError::exit_code`]): 1 when a command ran and its answer is "no" (`check`,
+//! `verify`, a `solve` with no root) or could not be computed, 2 for usage or input problems, 3
+//! when the external solver failed, 128 + N after signal N. Nothing goes to stdout before the inputs
+//! are known to be valid, so a failed run never leaves half a table behind.
+
+use std::io::{self, BufWriter, IsTerminal, Write};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+use clap::{Parser, ValueEnum};
+use thiserror::Error;
+
+use crate::chart::view::AnyChart;
+use crate::chart::{SeriesRole, YMode};
+use crate::fe;
+use crate::fe::deck::{self, DeckMesh};
+use crate::fe::header::StickSlope;
+use crate::fe::load::LoadError;
+use crate::fit::{self, FitError};
+use crate::kernel::params::{Compact, Domain, ParamError, Unit, parse_number};
+use crate::numeric::{MeshDensity, NumericError};
+use crate::preset::{self, Preset, PresetError, PresetSource};
+use crate::problems::inputs::{Inputs, Model};
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
+use crate::problems::lap::load_driven::LapLoad;
+use crate::problems::twin_beams::closed_form::BeamTheory;
+use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
+use crate::problems::{BeamParam, LapParam, ModelKind, Param, PlateParam, UnknownParam};
+use crate::report::figure::{self, FigureError};
+use crate::report::rows::{BeamRow, CycleRow, LapLoopRow, LapRow, LoopRow, PlateRow};
+use crate::report::table::{TableFormat, write_json, write_table, write_table_after};
+use crate::report::{self, json, text};
+use crate::study::curves::{self, RangeError, Samples, Spacing};
+use crate::study::load;
+use crate::study::target::{Target, TargetError, solve_for_target};
+use crate::tui::theme::Charset;
+use crate::verify::{self, Grid};
+use crate::{SqueezedPlate, TipForce, TwinBeams};
+
+mod args;
+mod compare;
+mod cycle;
+mod decks;
+mod error;
+mod figures;
+mod fitting;
+mod kt;
+mod loading;
+mod output;
+mod plot;
+mod point;
+mod presets;
+mod solve;
+mod sweep;
+#[cfg(test)]
+mod tests;
+mod verification;
+
+use args::*;
+use compare::*;
+use cycle::*;
+use decks::*;
+use error::*;
+use figures::*;
+use fitting::*;
+use kt::*;
+use loading::*;
+use output::*;
+use plot::*;
+use point::*;
+use presets::*;
+use solve::*;
+use sweep::*;
+use verification::*;
+
+/// microslip: friction benchmarks under the regularized Coulomb law (Ligier & Bonhote, 2014).
+///
+/// Units: mm, N, MPa; K_T in MPa/mm. Without a subcommand, opens the terminal UI.
+#[derive(Debug, Parser)]
+#[command(
+    name = "microslip",
+    version,
+    // The doc comment above, not the crate description: the help speaks to users, Cargo.toml to
+    // crates.io.
+    long_about = None,
+    // A fixed width: help text (and its snapshot) must not depend on the terminal running it.
+    term_width = 100,
+    after_help = after_help()
+)]
+pub struct Cli {
+    /// What to do (default: the terminal UI).
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    /// Characters the terminal UI may use (ascii: 7-bit only, for any terminal).
+    #[arg(long, value_enum, default_value_t = Charset::Unicode)]
+    pub charset: Charset,
+    /// Preset to open in the terminal UI (bundled or user name, or a .toml path).
+    #[arg(long, value_name = "P")]
+    pub preset: Option<String>,
+    /// Measured twin-beam curve (CSV with columns F_N,w_mm) to show and fit in the terminal UI.
+    #[arg(long, value_name = "DATA.csv")]
+    pub data: Option<PathBuf>,
+}
+
+/// The closing lines of `--help`: units, and the parameter keys as the model defines them.
+fn after_help() -> String {
+    format!(
+        "Units: mm, N, MPa; K_T in MPa/mm (1 MPa/um = 1000 MPa/mm).\n\
+         Keys for --set and preset files: {}.\n\
+         Without a command, microslip opens the terminal UI (keys: press ? inside).",
+        ModelKind::key_docs()
+    )
+}
+
+/// The help of `--set`: every model's keys as the specs define them.
+fn set_help() -> String {
+    format!("Set a parameter, e.g. KT=120 ({})", ModelKind::key_docs())
+}
+
+/// Parses the process arguments and runs; the whole binary.
+pub fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(error) => return report_clap_error(&error),
+    };
+    if cli.command.is_none() {
+        return match crate::tui::run(cli.charset, cli.preset.as_deref(), cli.data.clone()) {
+            Ok(exit) => ExitCode::from(exit.code()),
+            Err(error) => {
+                print_error(&error.to_string());
+                ExitCode::from(2)
+            }
+        };
+    }
+    let mut out = BufWriter::with_capacity(1 << 16, io::stdout().lock());
+    let result = run(&cli, &mut out).and_then(|()| out.flush().map_err(CliError::from));
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        // `microslip sweep ... | head`: the reader left; that is not an error.
+        Err(CliError::Output(e)) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(error) => {
+            error.print();
+            ExitCode::from(error.exit_code())
+        }
+    }
+}
+
+/// The one error line on stderr. Errors echo what users gave (preset names, paths, values, CSV
+/// headers), so the whole line is sanitized here, once, at the edge: a control character in any of
+/// them is shown escaped instead of reaching the terminal.
+fn print_error(message: &str) {
+    // Not `eprintln!`, which panics when stderr is gone (a terminal that hung up).
+    let _ = writeln!(io::stderr(), "microslip: {}", report::sanitize(message));
+}
+
+/// Help and version go to stdout as clap writes them; every other parse error becomes one line.
+fn report_clap_error(error: &clap::Error) -> ExitCode {
+    use clap::error::ErrorKind;
+    if matches!(
+        error.kind(),
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
+    ) {
+        // Written like any other output: a full disk or a closed terminal is an error, a reader
+        // that left (`microslip --help | head -3`) is not.
+        let written = error.print().and_then(|()| io::stdout().flush());
+        return match written {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+            Err(e) => {
+                let error = CliError::Output(e);
+                print_error(&error.to_string());
+                ExitCode::from(error.exit_code())
+            }
+        };
+    }
+    let rendered = error.render().to_string();
+    let first_block: Vec<&str> = rendered
+        .lines()
+        .take_while(|l| !l.trim().is_empty())
+        .map(str::trim)
+        .collect();
+    let line = first_block.join(" ");
+    let line = line.strip_prefix("error: ").unwrap_or(&line);
+    print_error(&format!("{line} (see --help)"));
+    ExitCode::from(2)
+}
+
+/// Runs a parsed command, writing results to `out`.
+pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
+    match &cli.command {
+        None | Some(Command::Report) => out.write_all(report::paper_report().as_bytes())?,
+        Some(Command::Beam(args)) => {
+            let (name, beams, force) = load_beams(&args.inputs, "beam")?;
+            match args.format {
+                ReportFormat::Text => out.write_all(text::beam(&name, &beams, force).as_bytes())?,
+                ReportFormat::Json => write_json(out, &json::beam(&name, &beams, force))?,
+            }
+        }
+        Some(Command::Plate(args)) => run_plate_point(out, args)?,
+        Some(Command::Sweep(SweepCommand::Beam(args))) => run_beam_sweep(out, args)?,
+        Some(Command::Lap(args)) => run_lap_point(out, args)?,
+        Some(Command::Sweep(SweepCommand::Lap(args))) => run_lap_sweep(out, args)?,
+        Some(Command::Sweep(SweepCommand::Plate(args))) => run_plate_sweep(out, args)?,
+        Some(Command::Solve(args)) => run_solve(out, args)?,
+        Some(Command::Fit(FitCommand::Beam {
+            data,
+            inputs,
+            fixed,
+            weights,
+            format,
+        })) => run_fit(out, ModelKind::Beam, data, inputs, fixed, *weights, *format)?,
+        Some(Command::Fit(FitCommand::Lap {
+            data,
+            inputs,
+            fixed,
+            weights,
+            format,
+        })) => run_fit(out, ModelKind::Lap, data, inputs, fixed, *weights, *format)?,
+        Some(Command::Kt {
+            inputs,
+            element_size,
+            tolerance: Some(tolerance),
+            of,
+            from,
+            to,
+            format,
+            ..
+        }) => run_kt_tolerance(
+            out,
+            inputs,
+            *element_size,
+            (tolerance, *of),
+            [*from, *to],
+            *format,
+        )?,
+        Some(Command::Kt {
+            inputs,
+            element_size,
+            kn,
+            nu,
+            format,
+            ..
+        }) => run_kt(out, inputs, *element_size, *kn, *nu, *format)?,
+        Some(Command::Cycle {
+            amplitude,
+            inputs,
+            points,
+            format,
+        }) => run_cycle(out, *amplitude, inputs, *points, *format)?,
+        Some(Command::Sweep(SweepCommand::Cycle(args))) => run_cycle_sweep(out, args)?,
+        Some(Command::Presets) => {
+            let dir = preset::user_preset_dir();
+            let rows = preset::listing(dir.as_deref());
+            out.write_all(report::presets::listing(&rows, dir.as_deref()).as_bytes())?
+        }
+        Some(Command::Check { files }) => check(out, files)?,
+        Some(Command::Plot(args)) => run_plot(out, args)?,
+        Some(Command::Figures {
+            out: dir,
+            no_fe,
+            format,
+            inputs,
+        }) => {
+            let format = FigureFormat::choose(
+                Some(*format),
+                None,
+                "--format",
+                &[FigureFormat::Svg, FigureFormat::Png, FigureFormat::Pdf],
+                FigureFormat::Svg,
+            )?
+            .figure()
+            .unwrap_or(figure::Format::Svg);
+            run_figures(out, dir, !*no_fe, format, inputs)?
+        }
+        Some(Command::Compare {
+            model,
+            results,
+            deck,
+            inputs,
+            format,
+        }) => run_compare(out, *model, results, deck.as_deref(), inputs, *format)?,
+        Some(Command::Deck {
+            code: FeCode::Ccx,
+            model,
+            deck,
+            output,
+        }) => {
+            refuse_overwriting_an_input(output.as_deref(), &deck.inputs.read_files())?;
+            let deck = build_deck(*model, deck, &model_command(*model, "deck ccx"))?;
+            write_output(out, output.as_deref(), deck.as_bytes())?
+        }
+        Some(Command::Bench {
+            code: FeCode::Ccx,
+            model,
+            deck,
+            workdir,
+            ccx,
+            format,
+        }) => run_bench(out, *model, deck, workdir.as_deref(), ccx, *format)?,
+        Some(Command::Verify {
+            quick,
+            elements,
+            tolerance,
+        }) => {
+            let grid = if *quick { Grid::Quick } else { Grid::Full };
+            run_verify(out, grid, *elements, *tolerance)?
+        }
+    }
+    Ok(())
+}

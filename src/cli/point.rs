@@ -1,0 +1,59 @@
+//! One state of a problem: `beam`, `plate` and `lap` reports (text or JSON).
+
+use super::*;
+
+pub(super) fn run_plate_point(out: &mut impl Write, args: &PlatePointArgs) -> Result<(), CliError> {
+    let PlatePointArgs {
+        point: args,
+        continuum,
+    } = args;
+    let (name, plate) = load_plate(&args.inputs, "plate")?;
+    let solved = (*continuum
+        || plate.validity().validity != crate::kernel::validity::Validity::Holds)
+        .then(|| {
+            crate::problems::plate::solve_plate_continuum(
+                plate.params(),
+                crate::problems::plate::ContinuumMesh::default(),
+            )
+        });
+    if *continuum && let Some(Err(e)) = &solved {
+        return Err(CliError::Numeric(e.clone()));
+    }
+    match args.format {
+        ReportFormat::Text => {
+            out.write_all(text::plate(&name, &plate, solved.as_ref()).as_bytes())?
+        }
+        ReportFormat::Json => write_json(out, &json::plate(&name, &plate, solved.as_ref()))?,
+    }
+    Ok(())
+}
+
+pub(super) fn run_lap_point(out: &mut impl Write, args: &LapPointArgs) -> Result<(), CliError> {
+    let LapPointArgs {
+        point: args,
+        continuum,
+    } = args;
+    let (name, joint, force) = load_lap(&args.inputs, "lap")?;
+    let solved = (*continuum
+        || joint.validity(force).validity != crate::kernel::validity::Validity::Holds)
+        .then(|| {
+            crate::problems::lap::solve_lap_continuum(
+                joint.params(),
+                force.newtons(),
+                crate::problems::lap::LapContinuumMesh::default(),
+            )
+        });
+    // An answer asked for with --continuum that could not be given is an error (nothing on
+    // stdout; exit 2 for inputs it refuses, 1 for a failed solve: `CliError::exit_code`);
+    // the automatic one is reported as failed in the output.
+    if *continuum && let Some(Err(e)) = &solved {
+        return Err(CliError::Numeric(e.clone()));
+    }
+    match args.format {
+        ReportFormat::Text => {
+            out.write_all(text::lap(&name, &joint, force, solved.as_ref()).as_bytes())?
+        }
+        ReportFormat::Json => write_json(out, &json::lap(&name, &joint, force, solved.as_ref()))?,
+    }
+    Ok(())
+}
