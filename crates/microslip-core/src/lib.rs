@@ -49,6 +49,7 @@
 
 pub mod fit;
 pub mod kernel;
+pub mod prelude;
 pub mod numeric;
 pub mod problems;
 pub mod study;
