@@ -61,9 +61,11 @@ impl App {
                     let error = estimate
                         .std_error
                         .map_or(String::new(), |e| format!(" +- {}", number_with(e, 2)));
+                    // With its unit, as every number on screen (K_T in MPa/mm; mu has none).
                     text.push(format!(
-                        "{param} = {}{error} ({})",
+                        "{param} = {}{error}{} ({})",
                         number(estimate.value),
+                        param.unit_suffix(),
                         estimate.status.label()
                     ));
                     if matches!(
