@@ -30,8 +30,8 @@ const TABLE_TOLERANCE: f64 = 0.01;
 /// The K_T table's answer to "how stiff for Coulomb within 1 %": the beams at F and over 0..F, the
 /// plate at its pressure.
 fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
-    use crate::problems::lap::load_driven::LapLoad;
-    use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
+    use crate::problems::lap::LapJointProblem;
+    use crate::problems::twin_beams::TwinBeamsProblem;
     use crate::study::tolerance::{
         Threshold, plate_stiffness_for_tolerance, stiffness_for_tolerance,
     };
@@ -53,10 +53,18 @@ fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
             if f <= 0.0 {
                 return vec![format!("{heading}: any, at F = 0")];
             }
-            let at =
-                stiffness_for_tolerance::<TwinBeamsLoad>(beams, [f, f], TABLE_TOLERANCE, element);
-            let upto =
-                stiffness_for_tolerance::<TwinBeamsLoad>(beams, [0.0, f], TABLE_TOLERANCE, element);
+            let at = stiffness_for_tolerance::<TwinBeamsProblem>(
+                beams,
+                [f, f],
+                TABLE_TOLERANCE,
+                element,
+            );
+            let upto = stiffness_for_tolerance::<TwinBeamsProblem>(
+                beams,
+                [0.0, f],
+                TABLE_TOLERANCE,
+                element,
+            );
             vec![
                 format!("{heading} {} at F,", shown(at)),
                 format!("  {} at all F up to F", shown(upto)),
@@ -67,9 +75,14 @@ fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
             if f <= 0.0 {
                 return vec![format!("{heading}: any, at F = 0")];
             }
-            let at = stiffness_for_tolerance::<LapLoad>(joint, [f, f], TABLE_TOLERANCE, element);
-            let upto =
-                stiffness_for_tolerance::<LapLoad>(joint, [0.0, f], TABLE_TOLERANCE, element);
+            let at =
+                stiffness_for_tolerance::<LapJointProblem>(joint, [f, f], TABLE_TOLERANCE, element);
+            let upto = stiffness_for_tolerance::<LapJointProblem>(
+                joint,
+                [0.0, f],
+                TABLE_TOLERANCE,
+                element,
+            );
             vec![
                 format!("{heading} {} at F,", shown(at)),
                 format!("  {} at all F up to F", shown(upto)),

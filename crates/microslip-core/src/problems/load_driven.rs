@@ -9,9 +9,12 @@
 //! ([`crate::study::load`]: sweeps against F, the K_T tolerance, loops and dissipation) rely on:
 //!
 //! - **A force axis with a scale.** F lives in [0, F_max] ([`LoadDriven::force`] checks it, F_max
-//!   is the parameter's domain or the joint's F_gross), and one force sets the regime scale
-//!   ([`LoadDriven::regime_scale`]: F_thre of the beams, F_gross of the joint) that the charts'
-//!   force axes are measured against.
+//!   is the parameter's domain or the joint's F_gross), and one force of the structure sets the
+//!   regime scale ([`LoadDriven::force_scale`]: F_thre of the beams, F_gross of the joint) that
+//!   the charts' force axes are measured against. It is the number
+//!   [`Problem::regime_scale`](crate::problems::Problem::regime_scale) gives for every model of
+//!   the structure (whatever its force): that one is `Option`al because a problem without a
+//!   load has none, and a load-driven problem writes it as `Some(force_scale)`.
 //! - **Monotonic first loading.** The response grows with F, and at a fixed F it does not increase
 //!   with K_T (docs/theory.md (T1), (L11)): the deviation from Coulomb is then non-increasing in
 //!   K_T, which is what makes the smallest K_T within a tolerance one bracketed root.
@@ -31,19 +34,31 @@
 //! [`MasingCycle`] writes the branches and zeta once from u_v, u_a and D; each problem gives its
 //! virgin curve, its D (a closed form of its own) and its U (the beams count both tip forces).
 //!
-//! A problem is load-driven by implementing [`LoadDriven`] in its own folder
-//! (`problems/<name>/load_driven.rs`); every study, chart and report of a load-driven feature is
-//! then written once, generic over it.
+//! A problem is load-driven by implementing [`LoadDriven`] on its [`Problem`] type in its own
+//! folder (`problems/<name>/load_driven.rs`); every study, chart and report of a load-driven
+//! feature is then written once, generic over it.
+//!
+//! # Structure and model
+//! [`Problem::Model`] is the validated structure *at its force* (what one solve answers);
+//! the studies here vary the force themselves (sweeps, cycles, the tolerance's grid of forces),
+//! so they take [`LoadDriven::Structure`], the validated structure without it, and a
+//! [`LoadDriven::Force`] checked against it. [`LoadDriven::structure`] and
+//! [`LoadDriven::applied_force`] split a model into the two.
 
 use crate::kernel::params::ParamError;
 use crate::kernel::regime::Law;
-use crate::problems::{ModelKind, Param};
+use crate::problems::Param;
+use crate::problems::Problem;
+use crate::problems::problem::Registered;
 
 /// What the generic load-driven studies need of a problem: its force, its response under both
 /// laws, its regime scale, its cycle and its interface (see the module docs for the physics).
-pub trait LoadDriven {
-    /// The structure, valid by construction (built by the problem's checked constructor).
-    type Model: Copy;
+/// A capability of a [`Problem`] (implemented on the problem's own type); which problem it is
+/// comes from the registry ([`Registered::KIND`]).
+pub trait LoadDriven: Problem + Registered {
+    /// The structure without its force, valid by construction (built by the problem's checked
+    /// constructor): what the studies vary the force on (module docs).
+    type Structure: Copy;
     /// A force the structure carries, checked against its range (N).
     type Force: Copy;
     /// One law's cycle between +F_a and -F_a.
@@ -51,57 +66,64 @@ pub trait LoadDriven {
     /// Everything the reports show at one force, for both laws.
     type Point;
 
-    /// Which problem this is.
-    const KIND: ModelKind;
     /// The load parameter F: its name, unit and domain.
     const FORCE: Param;
     /// The interface stiffness K_T (MPa/mm): its domain is where the tolerance searches.
     const STIFFNESS: Param;
+
+    /// The structure of `model`, without its force.
+    fn structure(model: &Self::Model) -> Self::Structure;
+    /// The force `model` is at.
+    fn applied_force(model: &Self::Model) -> Self::Force;
 
     /// Accepts `newtons` as a force this structure carries.
     ///
     /// # Errors
     /// [`ParamError`] naming F, its value and the allowed range (and why, where the structure
     /// bounds it: the joint's F_gross).
-    fn force(model: &Self::Model, newtons: f64) -> Result<Self::Force, ParamError>;
+    fn force(structure: &Self::Structure, newtons: f64) -> Result<Self::Force, ParamError>;
     /// The accepted force nearest to `newtons` (0 for negative values and NaN).
-    fn clamped_force(model: &Self::Model, newtons: f64) -> Self::Force;
+    fn clamped_force(structure: &Self::Structure, newtons: f64) -> Self::Force;
     /// The force in N.
     fn newtons(force: Self::Force) -> f64;
-    /// The force that sets the regime scale (N): F_thre of the beams, F_gross of the joint.
-    fn regime_scale(model: &Self::Model) -> f64;
+    /// The force that sets the regime scale of `structure` (N): F_thre of the beams, F_gross of
+    /// the joint. [`Problem::regime_scale`] of any model of it is `Some` of this (module docs).
+    fn force_scale(structure: &Self::Structure) -> f64;
     /// The forces (N) at which the regime of first loading changes (F_thre; F_1 and F_2 of the
     /// joint): where a search over forces must look besides its even samples.
-    fn regime_changes(model: &Self::Model) -> Vec<f64>;
+    fn regime_changes(structure: &Self::Structure) -> Vec<f64>;
 
     /// The response u(F) (mm) at `force` under `law`: w(L) of the beams, Delta of the joint.
-    fn response(model: &Self::Model, law: Law, force: Self::Force) -> f64;
+    fn response(structure: &Self::Structure, law: Law, force: Self::Force) -> f64;
     /// Everything the reports show at `force`, both laws.
-    fn point(model: &Self::Model, force: Self::Force) -> Self::Point;
+    fn point(structure: &Self::Structure, force: Self::Force) -> Self::Point;
     /// The stretch of interface that does not slide at `force` under `law`, `[from, to]` (mm
     /// along the interface): the stick (Coulomb) or elastic-slip (regularized) zone, whose edges
     /// are the zone boundaries the charts draw against F.
-    fn holding_zone(model: &Self::Model, law: Law, force: Self::Force) -> [f64; 2];
+    fn holding_zone(structure: &Self::Structure, law: Law, force: Self::Force) -> [f64; 2];
     /// The cycle between +`amplitude` and -`amplitude` under `law`.
-    fn cycle(model: &Self::Model, law: Law, amplitude: Self::Force) -> Self::Cycle;
+    fn cycle(structure: &Self::Structure, law: Law, amplitude: Self::Force) -> Self::Cycle;
 
     /// The interface stiffness K_T (MPa/mm).
-    fn tangential_stiffness(model: &Self::Model) -> f64;
+    fn tangential_stiffness(structure: &Self::Structure) -> f64;
     /// The same structure with K_T = `kt` (MPa/mm), all else equal.
     ///
     /// # Errors
     /// [`ParamError`] for a K_T outside its domain.
-    fn with_tangential_stiffness(model: &Self::Model, kt: f64) -> Result<Self::Model, ParamError>;
+    fn with_tangential_stiffness(
+        structure: &Self::Structure,
+        kt: f64,
+    ) -> Result<Self::Structure, ParamError>;
     /// The interface strength mu P (MPa): the FE codes' elastic-slip settings scale with it.
-    fn interface_strength(model: &Self::Model) -> f64;
+    fn interface_strength(structure: &Self::Structure) -> f64;
     /// The Young's modulus (MPa) the FE codes' default penalties scale with (the beams' E, the
     /// joint's inner plate E1).
-    fn modulus(model: &Self::Model) -> f64;
+    fn modulus(structure: &Self::Structure) -> f64;
     /// Forces (N) besides the even samples and the regime changes at which the deviation from
     /// Coulomb must be checked over `[from, to]`: the joint's limit at zero (its regularized
     /// Delta is elastic, Coulomb's bonded, and their ratio is largest there); none for the beams,
     /// whose deviation is flat below F_thre.
-    fn deviation_probes(_model: &Self::Model, [_from, _to]: [f64; 2]) -> Vec<f64> {
+    fn deviation_probes(_structure: &Self::Structure, [_from, _to]: [f64; 2]) -> Vec<f64> {
         Vec::new()
     }
 }
