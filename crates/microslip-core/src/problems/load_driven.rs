@@ -49,6 +49,7 @@ use crate::kernel::params::ParamError;
 use crate::kernel::regime::Law;
 use crate::problems::Param;
 use crate::problems::Problem;
+use crate::problems::inputs::Model;
 use crate::problems::problem::Registered;
 
 /// What the generic load-driven studies need of a problem: its force, its response under both
@@ -128,6 +129,88 @@ pub trait LoadDriven: Problem + Registered {
     }
 }
 
+/// The [`LoadDriven`] capability of a problem, erased: what code written for any problem asks
+/// of one it holds as `&'static dyn` [`AnyProblem`](crate::problems::AnyProblem), through
+/// [`AnyProblem::load_driven`](crate::problems::AnyProblem::load_driven) (`None`: the problem is
+/// not load-driven), instead of a `match` on its kind. Forces are plain newtons and models the
+/// [`Model`] enum; every method answers `None` for another problem's model.
+///
+/// # Examples
+/// ```
+/// use microslip_core::kernel::regime::Law;
+/// use microslip_core::problems::ModelKind;
+/// use microslip_core::problems::inputs::Inputs;
+/// for kind in ModelKind::ALL {
+///     let model = Inputs::paper(kind).validate()?;
+///     // Exactly the problems with a load are load-driven (the plate is loaded by its pressure).
+///     let Some(load_driven) = kind.problem().load_driven() else {
+///         assert!(kind.description().load.is_none(), "{kind}");
+///         continue;
+///     };
+///     let force = load_driven.applied_force(&model).unwrap();
+///     let scale = load_driven.force_scale(&model).unwrap();
+///     assert!(force > 0.0 && scale > 0.0, "{kind}");
+///     // At twice its scale, the lap joint carries no force (no state beyond F_gross).
+///     let beyond = load_driven.response(&model, Law::Coulomb, 2.0 * scale).unwrap();
+///     assert_eq!(beyond.is_ok(), kind == ModelKind::Beam, "{kind}");
+/// }
+/// # Ok::<(), microslip_core::kernel::params::ParamError>(())
+/// ```
+pub trait AnyLoadDriven: Send + Sync {
+    /// The load parameter F ([`LoadDriven::FORCE`]).
+    fn force_param(&self) -> Param;
+    /// The interface stiffness K_T ([`LoadDriven::STIFFNESS`]).
+    fn stiffness_param(&self) -> Param;
+    /// The force `model` is at (N) ([`LoadDriven::applied_force`]).
+    fn applied_force(&self, model: &Model) -> Option<f64>;
+    /// The regime scale of `model`'s structure (N) ([`LoadDriven::force_scale`]).
+    fn force_scale(&self, model: &Model) -> Option<f64>;
+    /// The forces (N) at which the regime of first loading of `model`'s structure changes
+    /// ([`LoadDriven::regime_changes`]).
+    fn regime_changes(&self, model: &Model) -> Option<Vec<f64>>;
+    /// The response (mm) of `model`'s structure at `newtons` under `law`
+    /// ([`LoadDriven::response`]); `Err` for a force the structure does not carry
+    /// ([`LoadDriven::force`]).
+    fn response(&self, model: &Model, law: Law, newtons: f64) -> Option<Result<f64, ParamError>>;
+}
+
+/// The [`AnyLoadDriven`] of a [`LoadDriven`] problem `P`: what its
+/// [`Problem::load_driven`] hands out.
+#[derive(Debug)]
+pub struct LoadDrivenOf<P>(std::marker::PhantomData<P>);
+
+impl<P> LoadDrivenOf<P> {
+    /// The erased load-driven capability of `P`.
+    pub const NEW: LoadDrivenOf<P> = LoadDrivenOf(std::marker::PhantomData);
+}
+
+impl<P: LoadDriven> AnyLoadDriven for LoadDrivenOf<P> {
+    fn force_param(&self) -> Param {
+        P::FORCE
+    }
+
+    fn stiffness_param(&self) -> Param {
+        P::STIFFNESS
+    }
+
+    fn applied_force(&self, model: &Model) -> Option<f64> {
+        Some(P::newtons(P::applied_force(&P::from_model(model)?)))
+    }
+
+    fn force_scale(&self, model: &Model) -> Option<f64> {
+        Some(P::force_scale(&P::structure(&P::from_model(model)?)))
+    }
+
+    fn regime_changes(&self, model: &Model) -> Option<Vec<f64>> {
+        Some(P::regime_changes(&P::structure(&P::from_model(model)?)))
+    }
+
+    fn response(&self, model: &Model, law: Law, newtons: f64) -> Option<Result<f64, ParamError>> {
+        let structure = P::structure(&P::from_model(model)?);
+        Some(P::force(&structure, newtons).map(|force| P::response(&structure, law, force)))
+    }
+}
+
 /// One law's cycle between +F_a and -F_a under Masing's rule (module docs): the branches and the
 /// damping ratio come from the virgin curve, the peak and D, written once here.
 pub trait MasingCycle {
@@ -164,5 +247,78 @@ pub trait MasingCycle {
         } else {
             0.0
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::problems::ModelKind;
+    use crate::problems::inputs::Inputs;
+
+    /// The erased capability is found exactly for the problems with a load, names their own F
+    /// and K_T, and answers as the typed paths at the bundled data: the force the model is at,
+    /// its regime scale (bit for bit [`Problem::regime_scale`]), the responses of one solve,
+    /// regime changes inside (0, scale]; another problem's model gets `None`.
+    #[test]
+    fn the_erased_capability_is_found_for_the_loaded_problems_and_answers_as_typed() {
+        let mut found = Vec::new();
+        for kind in ModelKind::ALL {
+            let problem = kind.problem();
+            let Some(load_driven) = problem.load_driven() else {
+                assert_eq!(kind.description().load, None, "{kind}");
+                continue;
+            };
+            found.push(kind);
+            assert_eq!(Some(load_driven.force_param()), kind.description().load);
+            let stiffness = load_driven.stiffness_param();
+            assert!(
+                stiffness.is_stiffness() && stiffness.model() == kind,
+                "{kind}"
+            );
+
+            let inputs = Inputs::paper(kind);
+            let model = inputs.validate().unwrap();
+            let force = load_driven.applied_force(&model).unwrap();
+            assert_eq!(Some(force), inputs.get(load_driven.force_param()), "{kind}");
+            let scale = load_driven.force_scale(&model).unwrap();
+            assert_eq!(
+                Some(scale.to_bits()),
+                model.regime_scale().map(f64::to_bits)
+            );
+            let changes = load_driven.regime_changes(&model).unwrap();
+            assert!(!changes.is_empty(), "{kind}");
+            assert!(changes.iter().all(|&f| f > 0.0 && f <= scale), "{kind}");
+
+            let answers = problem.answers(&problem.paper_values()).unwrap();
+            for (law, answer) in [
+                (Law::Coulomb, answers.coulomb),
+                (Law::Regularized, answers.regularized),
+            ] {
+                let response = load_driven.response(&model, law, force).unwrap().unwrap();
+                assert_eq!(
+                    response.to_bits(),
+                    answer.response.to_bits(),
+                    "{kind} {law:?}"
+                );
+            }
+            // A force refused by the checked constructor is refused here too, naming F.
+            let refused = load_driven.response(&model, Law::Coulomb, -1.0).unwrap();
+            assert!(
+                refused
+                    .unwrap_err()
+                    .to_string()
+                    .starts_with("invalid F = -1")
+            );
+
+            for other in ModelKind::ALL.into_iter().filter(|&o| o != kind) {
+                let theirs = Inputs::paper(other).validate().unwrap();
+                assert_eq!(load_driven.applied_force(&theirs), None, "{kind} {other}");
+                assert_eq!(load_driven.force_scale(&theirs), None, "{kind} {other}");
+                assert!(load_driven.regime_changes(&theirs).is_none());
+                assert!(load_driven.response(&theirs, Law::Coulomb, 1.0).is_none());
+            }
+        }
+        assert_eq!(found, [ModelKind::Beam, ModelKind::Lap]);
     }
 }

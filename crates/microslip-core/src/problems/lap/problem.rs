@@ -9,7 +9,7 @@ use super::params::{LapParam, LapParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
-use crate::problems::load_driven::LoadDriven;
+use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
 use crate::problems::{Description, Quantity};
 
@@ -146,6 +146,10 @@ impl Problem for LapJointProblem {
 
     fn continuum() -> Option<&'static dyn AnyContinuum> {
         Some(&ContinuumOf::<LapJointProblem>::NEW)
+    }
+
+    fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
+        Some(&LoadDrivenOf::<LapJointProblem>::NEW)
     }
 
     fn to_inputs(params: LapInputs) -> Inputs {

@@ -6,7 +6,7 @@ use super::closed_form::{CoulombBeams, RegularizedBeams, TipForce, TwinBeams};
 use super::params::{BeamParam, TwinBeamsParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
-use crate::problems::load_driven::LoadDriven;
+use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{Laws, ParamKey, Problem};
 use crate::problems::{Description, Quantity};
 
@@ -113,6 +113,10 @@ impl Problem for TwinBeamsProblem {
             stiffness: p.tangential_stiffness,
             poisson: None,
         }
+    }
+
+    fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
+        Some(&LoadDrivenOf::<TwinBeamsProblem>::NEW)
     }
 
     fn to_inputs(params: BeamsInputs) -> Inputs {
