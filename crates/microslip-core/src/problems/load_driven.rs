@@ -11,10 +11,10 @@
 //! - **A force axis with a scale.** F lives in [0, F_max] ([`LoadDriven::force`] checks it, F_max
 //!   is the parameter's domain or the joint's F_gross), and one force of the structure sets the
 //!   regime scale ([`LoadDriven::force_scale`]: F_thre of the beams, F_gross of the joint) that
-//!   the charts' force axes are measured against. It is the number
-//!   [`Problem::regime_scale`](crate::problems::Problem::regime_scale) gives for every model of
-//!   the structure (whatever its force): that one is `Option`al because a problem without a
-//!   load has none, and a load-driven problem writes it as `Some(force_scale)`.
+//!   the charts' force axes are measured against. It is the number [`Problem::regime_scale`]
+//!   gives for every model of the structure (whatever its force): that one is `Option`al
+//!   because a problem without a load has none, and a load-driven problem writes it as
+//!   `Some(force_scale)`.
 //! - **Monotonic first loading.** The response grows with F, and at a fixed F it does not increase
 //!   with K_T (docs/theory.md (T1), (L11)): the deviation from Coulomb is then non-increasing in
 //!   K_T, which is what makes the smallest K_T within a tolerance one bracketed root.
