@@ -2,7 +2,7 @@
 //! force over the closed forms (plain bisection written here, with its own force grid) and the
 //! monotonicity it relies on (docs/theory.md, (T1)).
 
-use microslip::problems::twin_beams::load_driven::TwinBeamsLoad;
+use microslip::problems::twin_beams::TwinBeamsProblem;
 use microslip::problems::{BeamParam, PlateParam};
 use microslip::study::tolerance::{
     ParseToleranceError, Threshold, ToleranceError, parse_tolerance, plate_stiffness_for_tolerance,
@@ -52,7 +52,7 @@ fn found(threshold: Threshold) -> f64 {
 #[test]
 fn paper_beams_at_100_n_need_about_423_mpa_per_mm_for_one_percent() {
     let answer =
-        stiffness_for_tolerance::<TwinBeamsLoad>(&paper_beams(), [100.0, 100.0], 0.01, 2.0)
+        stiffness_for_tolerance::<TwinBeamsProblem>(&paper_beams(), [100.0, 100.0], 0.01, 2.0)
             .unwrap();
     let kt = found(answer.threshold);
     let brute = brute_force(&[100.0], 0.01, beam_ratio);
@@ -70,7 +70,7 @@ fn over_a_force_range_the_worst_force_decides() {
     let forces: Vec<f64> = (1..=1000).map(|i| 0.3 * f64::from(i)).collect();
     for tol in [0.001, 0.01, 0.05] {
         let answer =
-            stiffness_for_tolerance::<TwinBeamsLoad>(&paper_beams(), [0.0, 300.0], tol, 2.0)
+            stiffness_for_tolerance::<TwinBeamsProblem>(&paper_beams(), [0.0, 300.0], tol, 2.0)
                 .unwrap();
         let kt = found(answer.threshold);
         let brute = brute_force(&forces, tol, beam_ratio);
@@ -136,7 +136,7 @@ fn the_plate_threshold_matches_brute_force() {
 fn code_settings_give_at_least_the_stiffness_needed() {
     use microslip::study::tolerance::Setting;
     let answer =
-        stiffness_for_tolerance::<TwinBeamsLoad>(&paper_beams(), [100.0, 100.0], 0.01, 2.0)
+        stiffness_for_tolerance::<TwinBeamsProblem>(&paper_beams(), [100.0, 100.0], 0.01, 2.0)
             .unwrap();
     let kt = found(answer.threshold);
     let mu_p = 0.3 * 1.0;
@@ -166,7 +166,7 @@ fn code_settings_give_at_least_the_stiffness_needed() {
 #[test]
 fn limits_and_refusals() {
     let beams = paper_beams();
-    let lax = stiffness_for_tolerance::<TwinBeamsLoad>(&beams, [0.0, 100.0], 10.0, 2.0).unwrap();
+    let lax = stiffness_for_tolerance::<TwinBeamsProblem>(&beams, [0.0, 100.0], 10.0, 2.0).unwrap();
     assert_eq!(
         lax.threshold,
         Threshold::Everywhere(BeamParam::Stiffness.spec().domain.min())
@@ -177,7 +177,8 @@ fn limits_and_refusals() {
         ..TwinBeamsParams::PAPER
     })
     .unwrap();
-    let strict = stiffness_for_tolerance::<TwinBeamsLoad>(&short, [0.0, 100.0], 1e-9, 2.0).unwrap();
+    let strict =
+        stiffness_for_tolerance::<TwinBeamsProblem>(&short, [0.0, 100.0], 1e-9, 2.0).unwrap();
     assert!(
         matches!(strict.threshold, Threshold::Nowhere { deviation, .. } if deviation > 1e-9),
         "{:?}",
@@ -190,15 +191,15 @@ fn limits_and_refusals() {
     assert!(found(lax.threshold) > PlateParam::Stiffness.spec().domain.min());
     for bad in [0.0, -0.01, 11.0, f64::NAN, f64::INFINITY] {
         assert!(matches!(
-            stiffness_for_tolerance::<TwinBeamsLoad>(&beams, [0.0, 100.0], bad, 2.0),
+            stiffness_for_tolerance::<TwinBeamsProblem>(&beams, [0.0, 100.0], bad, 2.0),
             Err(ToleranceError::Tolerance { .. })
         ));
     }
     assert!(matches!(
-        stiffness_for_tolerance::<TwinBeamsLoad>(&beams, [0.0, 0.0], 0.01, 2.0),
+        stiffness_for_tolerance::<TwinBeamsProblem>(&beams, [0.0, 0.0], 0.01, 2.0),
         Err(ToleranceError::Unloaded { .. })
     ));
-    assert!(stiffness_for_tolerance::<TwinBeamsLoad>(&beams, [-1.0, 10.0], 0.01, 2.0).is_err());
+    assert!(stiffness_for_tolerance::<TwinBeamsProblem>(&beams, [-1.0, 10.0], 0.01, 2.0).is_err());
     assert_eq!(parse_tolerance("1%"), Ok(0.01));
     assert_eq!(parse_tolerance(" 0.05 "), Ok(0.05));
     for bad in ["", "%", "abc", "0", "-1%", "nan", "2000%"] {
@@ -235,7 +236,8 @@ fn within_t_of_the_current_answer_is_an_interval_around_the_current_k_t() {
     };
     // At 100 N Coulomb is 0.515 % below K_T = 600's answer: within 1 %, every stiffer K_T is.
     let answer =
-        stiffness_near_current::<TwinBeamsLoad>(&paper_beams(), [100.0, 100.0], 0.01, 2.0).unwrap();
+        stiffness_near_current::<TwinBeamsProblem>(&paper_beams(), [100.0, 100.0], 0.01, 2.0)
+            .unwrap();
     let near = answer.near_current.unwrap();
     assert_eq!(near.upper, None);
     let lo = found(answer.threshold);
@@ -246,7 +248,7 @@ fn within_t_of_the_current_answer_is_an_interval_around_the_current_k_t() {
     assert!((near.coulomb + 0.00515).abs() < 1e-4, "{}", near.coulomb);
     // Within 0.1 %: bounded above too, and the upper end is where w falls 0.1 % below.
     let answer =
-        stiffness_near_current::<TwinBeamsLoad>(&paper_beams(), [100.0, 100.0], 0.001, 2.0)
+        stiffness_near_current::<TwinBeamsProblem>(&paper_beams(), [100.0, 100.0], 0.001, 2.0)
             .unwrap();
     let (lo, hi) = (
         found(answer.threshold),
@@ -257,10 +259,11 @@ fn within_t_of_the_current_answer_is_an_interval_around_the_current_k_t() {
     assert!(off(hi * 1.01) < -0.001 && off(hi * 0.99) > -0.001);
     // Over a force range, every force must be within: the interval is narrower than at either end.
     let range =
-        stiffness_near_current::<TwinBeamsLoad>(&paper_beams(), [40.0, 200.0], 0.001, 2.0).unwrap();
+        stiffness_near_current::<TwinBeamsProblem>(&paper_beams(), [40.0, 200.0], 0.001, 2.0)
+            .unwrap();
     let at = |f: f64| {
         let a =
-            stiffness_near_current::<TwinBeamsLoad>(&paper_beams(), [f, f], 0.001, 2.0).unwrap();
+            stiffness_near_current::<TwinBeamsProblem>(&paper_beams(), [f, f], 0.001, 2.0).unwrap();
         (
             found(a.threshold),
             a.near_current.unwrap().upper.unwrap_or(f64::INFINITY),
@@ -331,7 +334,8 @@ fn the_interval_at_the_edges_of_the_accepted_range() {
         ..TwinBeamsParams::PAPER
     })
     .unwrap();
-    let answer = stiffness_near_current::<TwinBeamsLoad>(&soft, [100.0, 100.0], 0.01, 2.0).unwrap();
+    let answer =
+        stiffness_near_current::<TwinBeamsProblem>(&soft, [100.0, 100.0], 0.01, 2.0).unwrap();
     assert!(matches!(answer.threshold, Threshold::Everywhere(k) if k == 1e-6));
     let near = answer.near_current.unwrap();
     let upper = near.upper.unwrap();
@@ -351,8 +355,8 @@ fn the_interval_at_the_edges_of_the_accepted_range() {
 /// the review of issue 24) must match it, not the 1 % reached near 93 N.
 #[test]
 fn the_lap_joints_worst_force_near_zero_decides() {
+    use microslip::problems::lap::LapJointProblem;
     use microslip::problems::lap::closed_form::{LapJoint, LapParams};
-    use microslip::problems::lap::load_driven::LapLoad;
     let joint = LapJoint::new(LapParams::ALUMINIUM).unwrap();
     let ratio = |kt: f64, f: f64| {
         let joint = joint.with_tangential_stiffness(kt).unwrap();
@@ -362,7 +366,8 @@ fn the_lap_joints_worst_force_near_zero_decides() {
     };
     let forces: Vec<f64> = [1e-6, 1e-3, 1.0, 10.0, 93.0, 500.0, 2000.0, 4000.0, 5999.0].to_vec();
     let brute = brute_force(&forces, 0.01, ratio);
-    let answer = stiffness_for_tolerance::<LapLoad>(&joint, [0.0, 6000.0], 0.01, 0.4).unwrap();
+    let answer =
+        stiffness_for_tolerance::<LapJointProblem>(&joint, [0.0, 6000.0], 0.01, 0.4).unwrap();
     let k = found(answer.threshold);
     assert!((k / brute - 1.0).abs() < 1e-3, "{k} vs {brute}");
     assert!((k / 1.63e6 - 1.0).abs() < 0.01, "{k}");

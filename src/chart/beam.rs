@@ -13,7 +13,7 @@ use crate::chart::{
 use crate::kernel::format::number;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::twin_beams::TwinBeamsFe;
-use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
+use crate::problems::twin_beams::TwinBeamsProblem;
 use crate::study::curves::{self, Spacing};
 use crate::{TipForce, TwinBeams};
 
@@ -56,7 +56,7 @@ pub(super) fn beam_plot(
     let f = force.newtons();
     match chart {
         BeamChart::Deflection => {
-            response_plot::<TwinBeamsLoad>(beams, &BEAM_LABELS, forces, (f, f_max))
+            response_plot::<TwinBeamsProblem>(beams, &BEAM_LABELS, forces, (f, f_max))
         }
         BeamChart::SlipBoundary => {
             let mut series = Vec::new();
@@ -85,10 +85,10 @@ pub(super) fn beam_plot(
                 series,
             })
         }
-        BeamChart::Loop => loop_chart::<TwinBeamsLoad>(beams, &BEAM_LABELS, force),
+        BeamChart::Loop => loop_chart::<TwinBeamsProblem>(beams, &BEAM_LABELS, force),
         BeamChart::Dissipation => {
             let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
-            dissipation_chart::<TwinBeamsLoad>(beams, &BEAM_LABELS, force, amplitudes, f_max)
+            dissipation_chart::<TwinBeamsProblem>(beams, &BEAM_LABELS, force, amplitudes, f_max)
         }
         BeamChart::Shear => {
             let positions = samples(0.0, p.length, Spacing::Linear)?;

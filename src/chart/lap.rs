@@ -9,8 +9,8 @@ use crate::chart::view::LapChart;
 use crate::chart::{Plot, SeriesRole, cursor, line, linear_axis, samples};
 use crate::kernel::format::number_with;
 use crate::numeric::{MeshDensity, NumericError};
+use crate::problems::lap::LapJointProblem;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
-use crate::problems::lap::load_driven::LapLoad;
 use crate::problems::lap::{LapContinuumMesh, LapFe, solve_lap_continuum_path};
 use crate::study::curves::Spacing;
 use crate::study::lap as curves;
@@ -42,7 +42,9 @@ pub(crate) fn lap_plot(
     let kt = p.tangential_stiffness;
     let f = force.newtons();
     match chart {
-        LapChart::Displacement => response_plot::<LapLoad>(joint, &LAP_LABELS, forces, (f, f_max)),
+        LapChart::Displacement => {
+            response_plot::<LapJointProblem>(joint, &LAP_LABELS, forces, (f, f_max))
+        }
         LapChart::Zones => {
             let (coulomb, regularized) = curves::lap_zone_outline_vs_force(joint, forces).ok()?;
             let series = vec![
@@ -82,10 +84,10 @@ pub(crate) fn lap_plot(
                 ("mu P / K_T", joint.saturation_slip()),
             ))
         }
-        LapChart::Loop => loop_chart::<LapLoad>(joint, &LAP_LABELS, force),
+        LapChart::Loop => loop_chart::<LapJointProblem>(joint, &LAP_LABELS, force),
         LapChart::Dissipation => {
             let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
-            dissipation_chart::<LapLoad>(joint, &LAP_LABELS, force, amplitudes, f_max)
+            dissipation_chart::<LapJointProblem>(joint, &LAP_LABELS, force, amplitudes, f_max)
         }
     }
 }

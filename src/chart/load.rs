@@ -46,7 +46,7 @@ pub(crate) fn companions<T>(
 /// The response against F over `forces` (0 to `f_max`): Coulomb, the K_T/5 and K_T*5 companions,
 /// the current K_T on top, and the cursor at the current force `f`.
 pub(crate) fn response_plot<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     labels: &LoadLabels,
     forces: Samples,
     (f, f_max): (f64, f64),
@@ -77,7 +77,7 @@ pub(crate) fn response_plot<P: LoadDriven>(
 /// characters, the title row of an 80x24 screen's chart pane; C(oulomb) and R(egularized) as in
 /// the zone strip).
 pub(crate) fn loop_chart<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     labels: &LoadLabels,
     force: P::Force,
 ) -> Option<Plot> {
@@ -104,7 +104,7 @@ pub(crate) fn loop_chart<P: LoadDriven>(
 
 /// D against the amplitude from 0 to `f_max`, both laws, the cursor at the current force.
 pub(crate) fn dissipation_chart<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     labels: &LoadLabels,
     force: P::Force,
     amplitudes: Samples,

@@ -31,7 +31,7 @@ pub(super) fn run_cycle(
                 }
                 CycleFormat::Json => write_json(out, &json::lap_cycle(&name, &joint, amplitude))?,
                 CycleFormat::Csv => {
-                    let points = load::cycle_loop::<LapLoad>(&joint, amplitude, points)
+                    let points = load::cycle_loop::<LapJointProblem>(&joint, amplitude, points)
                         .map_err(points_error)?;
                     write_table(out, TableFormat::Csv, points.map(|p| LapLoopRow::from(&p)))?;
                 }
@@ -45,7 +45,7 @@ pub(super) fn run_cycle(
         CycleFormat::Text => out.write_all(text::cycle(&name, &beams, amplitude).as_bytes())?,
         CycleFormat::Json => write_json(out, &json::cycle(&name, &beams, amplitude))?,
         CycleFormat::Csv => {
-            let points = load::cycle_loop::<TwinBeamsLoad>(&beams, amplitude, points)
+            let points = load::cycle_loop::<TwinBeamsProblem>(&beams, amplitude, points)
                 .map_err(points_error)?;
             write_table(out, TableFormat::Csv, points.map(|p| LoopRow::from(&p)))?;
         }

@@ -42,12 +42,12 @@ pub(super) fn run_kt_tolerance(
         Model::Beam { beams, force } => {
             let range = tolerance_forces([from, to], force.newtons())?;
             match of {
-                ToleranceOf::Coulomb => {
-                    tolerance::stiffness_for_tolerance::<TwinBeamsLoad>(&beams, range, tol, element)
-                }
-                ToleranceOf::Current => {
-                    tolerance::stiffness_near_current::<TwinBeamsLoad>(&beams, range, tol, element)
-                }
+                ToleranceOf::Coulomb => tolerance::stiffness_for_tolerance::<TwinBeamsProblem>(
+                    &beams, range, tol, element,
+                ),
+                ToleranceOf::Current => tolerance::stiffness_near_current::<TwinBeamsProblem>(
+                    &beams, range, tol, element,
+                ),
             }
             .map_err(|e| CliError::Invalid(e.to_string()))?
         }
@@ -68,12 +68,12 @@ pub(super) fn run_kt_tolerance(
                 });
             }
             match of {
-                ToleranceOf::Coulomb => {
-                    tolerance::stiffness_for_tolerance::<LapLoad>(&joint, range, tol, element)
-                }
-                ToleranceOf::Current => {
-                    tolerance::stiffness_near_current::<LapLoad>(&joint, range, tol, element)
-                }
+                ToleranceOf::Coulomb => tolerance::stiffness_for_tolerance::<LapJointProblem>(
+                    &joint, range, tol, element,
+                ),
+                ToleranceOf::Current => tolerance::stiffness_near_current::<LapJointProblem>(
+                    &joint, range, tol, element,
+                ),
             }
             .map_err(|e| CliError::Invalid(e.to_string()))?
         }

@@ -17,7 +17,8 @@ pub(super) fn run_lap_sweep(out: &mut impl Write, args: &LapSweepArgs) -> Result
     .map_err(force_range_error)?;
     let (_, joint, force) = load_lap(&args.inputs, "sweep lap")?;
     if varied == LapParam::Force {
-        let rows = load::force_sweep::<LapLoad>(joint, values).map_err(force_range_error)?;
+        let rows =
+            load::force_sweep::<LapJointProblem>(joint, values).map_err(force_range_error)?;
         write_table(out, args.format, rows.map(|r| LapRow::from(&r)))?;
     } else {
         let rows = lap_param_sweep(joint, force, varied, values).map_err(force_range_error)?;
@@ -47,7 +48,8 @@ pub(super) fn run_beam_sweep(out: &mut impl Write, args: &BeamSweepArgs) -> Resu
         .map_err(force_range_error)?;
     let (_, beams, force) = load_beams(inputs, "sweep beam")?;
     if varied == BeamParam::Force {
-        let rows = load::force_sweep::<TwinBeamsLoad>(beams, values).map_err(force_range_error)?;
+        let rows =
+            load::force_sweep::<TwinBeamsProblem>(beams, values).map_err(force_range_error)?;
         write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
     } else {
         let rows =
@@ -124,13 +126,13 @@ pub(super) fn run_cycle_sweep(out: &mut impl Write, args: &CycleSweepArgs) -> Re
     let amplitudes = curves::force_samples(*from, *to, *points).map_err(force_range_error)?;
     match load_any_structure(inputs, ModelKind::Beam)?.1 {
         Model::Beam { beams, .. } => {
-            let rows =
-                load::cycle_sweep::<TwinBeamsLoad>(beams, amplitudes).map_err(force_range_error)?;
+            let rows = load::cycle_sweep::<TwinBeamsProblem>(beams, amplitudes)
+                .map_err(force_range_error)?;
             write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
         }
         Model::Lap { joint, .. } => {
-            let rows =
-                load::cycle_sweep::<LapLoad>(joint, amplitudes).map_err(force_range_error)?;
+            let rows = load::cycle_sweep::<LapJointProblem>(joint, amplitudes)
+                .map_err(force_range_error)?;
             write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
         }
         Model::Plate(_) => return Err(plate_has_no_cycle(inputs, "sweep cycle")),

@@ -4,8 +4,15 @@
 //! the full comparison from the same `study::curves::compare_stiffnesses`.
 
 use crate::kernel::format::{number, number_with};
+use crate::problems::LoadDriven;
 use crate::problems::inputs::Model;
+use crate::problems::lap::LapJointProblem;
+use crate::problems::twin_beams::TwinBeamsProblem;
 use crate::study::curves::{self, Answer, CandidateSource};
+use crate::study::tolerance::{
+    Threshold, ToleranceAnswer, ToleranceError, plate_stiffness_for_tolerance,
+    stiffness_for_tolerance,
+};
 
 /// The table's title.
 pub const TITLE: &str = "K_T that FE codes assume by default";
@@ -27,21 +34,19 @@ fn cell(value: f64, width: usize) -> String {
 /// The tolerance the K_T table answers for: 1 % of Coulomb (`microslip kt --tolerance` takes any).
 const TABLE_TOLERANCE: f64 = 0.01;
 
-/// The K_T table's answer to "how stiff for Coulomb within 1 %": the beams at F and over 0..F, the
-/// plate at its pressure.
-fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
-    use crate::problems::lap::load_driven::LapLoad;
-    use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
-    use crate::study::tolerance::{
-        Threshold, plate_stiffness_for_tolerance, stiffness_for_tolerance,
-    };
-    let shown = |answer: Result<_, _>| match answer
-        .map(|a: crate::study::tolerance::ToleranceAnswer| a.threshold)
-    {
+/// A tolerance answer in a cell: `>= K_T`, `> K_T` where even the stiffest is not within, `-`
+/// where there is no answer.
+fn shown(answer: Result<ToleranceAnswer, ToleranceError>) -> String {
+    match answer.map(|a| a.threshold) {
         Ok(Threshold::Stiffness(k) | Threshold::Everywhere(k)) => format!(">= {}", cell(k, 7)),
         Ok(Threshold::Nowhere { stiffness, .. }) => format!("> {}", cell(stiffness, 7)),
         Err(_) => "-".to_string(),
-    };
+    }
+}
+
+/// The K_T table's answer to "how stiff for Coulomb within 1 %": the beams at F and over 0..F, the
+/// plate at its pressure.
+fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
     let within = format!(
         "within {} % of Coulomb: K_T",
         number(100.0 * TABLE_TOLERANCE)
@@ -49,31 +54,10 @@ fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
     let heading = format!("W{}", &within[1..]);
     match model {
         Model::Beam { beams, force } => {
-            let f = force.newtons();
-            if f <= 0.0 {
-                return vec![format!("{heading}: any, at F = 0")];
-            }
-            let at =
-                stiffness_for_tolerance::<TwinBeamsLoad>(beams, [f, f], TABLE_TOLERANCE, element);
-            let upto =
-                stiffness_for_tolerance::<TwinBeamsLoad>(beams, [0.0, f], TABLE_TOLERANCE, element);
-            vec![
-                format!("{heading} {} at F,", shown(at)),
-                format!("  {} at all F up to F", shown(upto)),
-            ]
+            load_tolerance_lines::<TwinBeamsProblem>(beams, force.newtons(), &heading, element)
         }
         Model::Lap { joint, force } => {
-            let f = force.newtons();
-            if f <= 0.0 {
-                return vec![format!("{heading}: any, at F = 0")];
-            }
-            let at = stiffness_for_tolerance::<LapLoad>(joint, [f, f], TABLE_TOLERANCE, element);
-            let upto =
-                stiffness_for_tolerance::<LapLoad>(joint, [0.0, f], TABLE_TOLERANCE, element);
-            vec![
-                format!("{heading} {} at F,", shown(at)),
-                format!("  {} at all F up to F", shown(upto)),
-            ]
+            load_tolerance_lines::<LapJointProblem>(joint, force.newtons(), &heading, element)
         }
         Model::Plate(plate) => vec![format!(
             "u(L) {within} {}",
@@ -84,6 +68,24 @@ fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
             ))
         )],
     }
+}
+
+/// [`tolerance_lines`] of any load-driven problem at the force `f` (N): the smallest K_T within
+/// the table's tolerance at F and at every F up to F; any K_T at F = 0, where nothing slides.
+fn load_tolerance_lines<P: LoadDriven>(
+    structure: &P::Structure,
+    f: f64,
+    heading: &str,
+    element: f64,
+) -> Vec<String> {
+    if f <= 0.0 {
+        return vec![format!("{heading}: any, at F = 0")];
+    }
+    let within = |range| stiffness_for_tolerance::<P>(structure, range, TABLE_TOLERANCE, element);
+    vec![
+        format!("{heading} {} at F,", shown(within([f, f]))),
+        format!("  {} at all F up to F", shown(within([0.0, f]))),
+    ]
 }
 
 /// The K_T comparison as a narrow table (fits the 44-column chart pane of an 80x24 screen): its

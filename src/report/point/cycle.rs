@@ -9,10 +9,10 @@ use serde::ser::SerializeStruct;
 use super::InputsReport;
 use crate::kernel::regime::Law;
 use crate::problems::inputs::Inputs;
+use crate::problems::lap::LapJointProblem;
 use crate::problems::lap::closed_form::{JointForce, LapJoint, LapParams};
-use crate::problems::lap::load_driven::LapLoad;
 use crate::problems::load_driven::{LoadDriven, MasingCycle};
-use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
+use crate::problems::twin_beams::TwinBeamsProblem;
 use crate::report::{number, sanitize};
 use crate::{TipForce, TwinBeams, TwinBeamsParams};
 
@@ -178,7 +178,7 @@ impl<S: 'static> CycleReport<S> {
         words: &'static CycleWords<S>,
         preset: &str,
         (inputs, structure): (Inputs, S),
-        model: &P::Model,
+        model: &P::Structure,
         amplitude: P::Force,
     ) -> CycleReport<S> {
         let law = |law| LawCycle::new(&P::cycle(model, law, amplitude), words.peak_key);
@@ -236,7 +236,7 @@ impl CycleReport<TwinBeamsParams> {
             structure: beams.params(),
             force: amplitude.newtons(),
         };
-        Self::cycled::<TwinBeamsLoad>(
+        Self::cycled::<TwinBeamsProblem>(
             &BEAM_WORDS,
             preset,
             (inputs, beams.params()),
@@ -252,7 +252,7 @@ impl CycleReport<LapParams> {
             structure: joint.params(),
             force: amplitude.newtons(),
         };
-        Self::cycled::<LapLoad>(
+        Self::cycled::<LapJointProblem>(
             &LAP_WORDS,
             preset,
             (inputs, joint.params()),

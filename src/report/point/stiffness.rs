@@ -7,7 +7,6 @@ use serde::Serialize;
 
 use super::regime_label;
 use crate::Regime;
-use crate::problems::inputs::Model;
 use crate::problems::{BeamParam, ModelKind, Quantity};
 use crate::report::{number, sanitize};
 use crate::study::curves::{Answer, CandidateSource, ComparedStiffness, StiffnessComparison};
@@ -178,16 +177,18 @@ fn signed_percent(percent: Option<f64>) -> String {
 
 impl StiffnessReport {
     pub fn new(preset: &str, comparison: &StiffnessComparison) -> StiffnessReport {
-        let interface = comparison.model.interface();
+        let model = &comparison.model;
+        let interface = model.interface();
         StiffnessReport {
             preset: preset.to_string(),
             element: comparison.element,
             kind: comparison.model.kind(),
-            force: match comparison.model {
-                Model::Beam { force, .. } => Some(force.newtons()),
-                Model::Plate(_) => None,
-                Model::Lap { force, .. } => Some(force.newtons()),
-            },
+            // The force where the problem is driven by one (none for the plate's pressure).
+            force: model
+                .kind()
+                .problem()
+                .load_driven()
+                .and_then(|load_driven| load_driven.applied_force(model)),
             friction_stress: interface.friction * interface.pressure,
             candidates: comparison.rows.iter().map(CandidateReport::from).collect(),
         }

@@ -4,8 +4,10 @@
 //! problem.
 //!
 //! A problem is a type that implements [`Problem`] (its [`Description`], its parameters, the
-//! model they validate into, one solve's state) and the capabilities it has ([`Continuum`]; a
-//! capability a problem lacks is a trait it does not implement, not a `match` arm). The
+//! model they validate into, one solve's state) and the capabilities it has ([`Continuum`],
+//! [`LoadDriven`]; a capability a problem lacks is a trait it does not implement, not a `match`
+//! arm; the erased side finds each through [`AnyProblem::continuum`] and
+//! [`AnyProblem::load_driven`]). The
 //! registry, `problem_list!` below, holds one line per problem (`Beam =>
 //! twin_beams::TwinBeamsProblem`) and generates from it [`ModelKind`] (with
 //! [`ModelKind::problem`], the problem as `&'static dyn` [`AnyProblem`]: what a caller uses
@@ -30,12 +32,18 @@
 //!    - `closed_form.rs`: the validated model (a checked `new -> Result<_, ParamError>`) and
 //!      one state per law, each implementing [`Solution`];
 //!    - `validity.rs`: where the closed form holds; `discretized.rs`: the independent solver
-//!      (never importing the closed forms: `tests/layering.rs`); `cycle.rs` if it is driven by
-//!      a load; `continuum.rs` if it has a 2-D reference;
+//!      (never importing the closed forms: `tests/layering.rs`); `continuum.rs` if it has a
+//!      2-D reference;
+//!    - if it is driven by a load: `cycle.rs` (its Masing cycle, a
+//!      [`load_driven::MasingCycle`]) and `load_driven.rs` (the problem type's [`LoadDriven`]
+//!      impl, whose `Structure` is the model without its force); its `problem.rs` then writes
+//!      `regime_scale` as `Some(force_scale)` and hands out `LoadDrivenOf::<Self>::NEW` from
+//!      `load_driven()`, and every sweep, cycle, tolerance and load chart serves it;
 //!    - `mod.rs`: its `DESCRIPTION` (key, title, summary, paper preset, parameters through
 //!      `param_list!`, quantities, load) and its `quantity` function;
 //!    - `problem.rs`: the unit struct (`CylinderProblem`) implementing [`ParamKey`] for its key
-//!      enum, [`Problem`] (and [`Continuum`] and the other capabilities it has). Its `State` is
+//!      enum, [`Problem`] (and [`Continuum`] and the other capabilities it has, each handed to
+//!      the erased side by the [`Problem`] method of the same name). Its `State` is
 //!      [`problem::Laws`] of its two law states.
 //! 2. **One registry line** in `problem_list!` below: `Cylinder => cylinder::CylinderProblem,`
 //!    with its doc comment. [`ModelKind`], [`ModelKind::ALL`], [`ModelKind::problem`] and
@@ -61,6 +69,7 @@ use std::str::FromStr;
 use thiserror::Error;
 
 use crate::kernel::params::{ParamSpec, Unit};
+pub use load_driven::{AnyLoadDriven, LoadDriven};
 pub use problem::{AnyProblem, Continuum, ParamKey, Problem};
 pub use quantity::{Quantity, QuantityName, Solution};
 

@@ -1,5 +1,6 @@
 //! A problem is a type: the [`Problem`] trait each problem's folder implements, its capability
-//! traits ([`Continuum`]), and [`AnyProblem`], the same problem with its types erased, which the
+//! traits ([`Continuum`] here, [`LoadDriven`](crate::problems::load_driven::LoadDriven) in its
+//! own module), and [`AnyProblem`], the same problem with its types erased, which the
 //! generic layers hold as `&'static dyn AnyProblem` (from [`ModelKind::problem`]) so that a
 //! feature is written once for every problem instead of as a `match` with an arm per problem.
 //!
@@ -18,6 +19,7 @@ use crate::kernel::params::{ParamError, ParamSpec};
 use crate::kernel::regime::Regime;
 use crate::numeric::NumericError;
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
+use crate::problems::load_driven::AnyLoadDriven;
 use crate::problems::{Description, ModelKind, Param, Quantity, Solution, UnknownParam};
 
 /// One parameter of one problem, typed (each folder's key enum, in its `params.rs`): what the
@@ -152,6 +154,13 @@ pub trait Problem: Send + Sync + Sized + 'static {
     /// The 2-D continuum reference of the problem, where it has one ([`Continuum`]): how the
     /// erased side finds the capability without specialisation.
     fn continuum() -> Option<&'static dyn AnyContinuum> {
+        None
+    }
+
+    /// The problem's force axis, where it is driven by a load
+    /// ([`LoadDriven`](crate::problems::load_driven::LoadDriven)): how the erased
+    /// side finds the capability without specialisation (as [`Problem::continuum`]).
+    fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
         None
     }
 
@@ -382,6 +391,9 @@ pub trait AnyProblem: Send + Sync {
     fn quantity_at(&self, values: &[f64], quantity: Quantity) -> Result<Option<f64>, ProblemError>;
     /// The continuum reference, where the problem has one.
     fn continuum(&self) -> Option<&'static dyn AnyContinuum>;
+    /// Its force axis, where it is driven by a load: `None` answers "is this problem
+    /// load-driven?" without a `match` on its kind.
+    fn load_driven(&self) -> Option<&'static dyn AnyLoadDriven>;
 
     /// [`Inputs`] of this problem at `values`.
     ///
@@ -443,6 +455,10 @@ impl<P: Problem + Registered> AnyProblem for P {
 
     fn continuum(&self) -> Option<&'static dyn AnyContinuum> {
         P::continuum()
+    }
+
+    fn load_driven(&self) -> Option<&'static dyn AnyLoadDriven> {
+        P::load_driven()
     }
 
     fn inputs_at(&self, values: &[f64]) -> Result<Inputs, ProblemError> {

@@ -9,7 +9,6 @@
 use crate::kernel::regime::Law;
 use crate::kernel::validity::Validity;
 use crate::problems::inputs::Model;
-use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
 use crate::problems::twin_beams::problem::{BeamsModel, TwinBeamsProblem};
 use crate::problems::{BeamParam, Param, PlateParam, Problem};
 use crate::study::load;
@@ -36,7 +35,7 @@ pub fn beam_force_sweep(
     beams: TwinBeams,
     forces: Samples,
 ) -> Result<impl Iterator<Item = BeamPoint>, RangeError> {
-    load::force_sweep::<TwinBeamsLoad>(beams, forces)
+    load::force_sweep::<TwinBeamsProblem>(beams, forces)
 }
 
 /// A force sampling for [`beam_force_sweep`]: both bounds must be accepted tip forces.
@@ -204,7 +203,7 @@ pub fn beam_slip_boundary_vs_force(
     forces: Samples,
 ) -> Result<Series, RangeError> {
     Ok(
-        load::holding_zone_vs_force::<TwinBeamsLoad>(beams, Law::Regularized, forces)?
+        load::holding_zone_vs_force::<TwinBeamsProblem>(beams, Law::Regularized, forces)?
             .into_iter()
             .map(|(f, [_, x])| (f, x))
             .collect(),
@@ -299,10 +298,10 @@ mod tests {
                 ..
             })
         ));
-        assert!(load::cycle_sweep::<TwinBeamsLoad>(beams, wide).is_err());
+        assert!(load::cycle_sweep::<TwinBeamsProblem>(beams, wide).is_err());
         let high = Samples::new(1.0, 1e13, 3, Spacing::Linear).unwrap();
         assert_eq!(
-            load::cycle_sweep::<TwinBeamsLoad>(beams, high)
+            load::cycle_sweep::<TwinBeamsProblem>(beams, high)
                 .err()
                 .unwrap()
                 .to_string(),
@@ -326,7 +325,7 @@ mod tests {
                 .all(|v| v.is_finite())
         }));
         let cycles: Vec<CyclePoint> =
-            load::cycle_sweep::<TwinBeamsLoad>(beams, force_samples(0.0, 1e12, 11).unwrap())
+            load::cycle_sweep::<TwinBeamsProblem>(beams, force_samples(0.0, 1e12, 11).unwrap())
                 .unwrap()
                 .collect();
         assert_eq!(cycles.len(), 11);

@@ -5,7 +5,6 @@
 use crate::kernel::regime::Law;
 use crate::problems::inputs::Model;
 use crate::problems::lap::closed_form::{JointForce, LapJoint, LapState};
-use crate::problems::lap::load_driven::LapLoad;
 use crate::problems::lap::problem::{LapJointProblem, LapModel};
 use crate::problems::{LapParam, Param, Problem};
 use crate::study::load::{self, check_forces};
@@ -30,7 +29,7 @@ pub fn lap_param_sweep(
     let wrapped = Param::Lap(param);
     values.check_within(wrapped)?;
     if param == LapParam::Force {
-        check_forces::<LapLoad>(&joint, &values)?;
+        check_forces::<LapJointProblem>(&joint, &values)?;
     } else {
         // F_gross is monotonic in every parameter (it grows with L, b, P, mu and does not depend
         // on the others), so checking both ends checks every sample.
@@ -70,7 +69,7 @@ pub fn lap_zone_outline_vs_force(
     forces: Samples,
 ) -> Result<(Series, Series), RangeError> {
     let outline = |law: Law| -> Result<Series, RangeError> {
-        let rows = load::holding_zone_vs_force::<LapLoad>(joint, law, forces)?;
+        let rows = load::holding_zone_vs_force::<LapJointProblem>(joint, law, forces)?;
         let up = rows.iter().map(|&(f, [a, _])| (f, a));
         let down = rows.iter().rev().map(|&(f, [_, far])| (f, far));
         Ok(up.chain(down).collect())

@@ -14,7 +14,10 @@ use crate::study::samples::{RangeEnd, RangeError, Samples, Series, check_points}
 ///
 /// # Errors
 /// [`RangeError::Bound`] for the first end outside, with the range and why.
-pub fn check_forces<P: LoadDriven>(model: &P::Model, forces: &Samples) -> Result<(), RangeError> {
+pub fn check_forces<P: LoadDriven>(
+    model: &P::Structure,
+    forces: &Samples,
+) -> Result<(), RangeError> {
     forces.check_within(P::FORCE)?;
     for (end, value) in [
         (RangeEnd::Start, forces.value(0)),
@@ -37,7 +40,7 @@ pub fn check_forces<P: LoadDriven>(model: &P::Model, forces: &Samples) -> Result
 /// # Errors
 /// [`RangeError::Bound`] when an end of `forces` is not a force `model` carries.
 pub fn force_sweep<P: LoadDriven>(
-    model: P::Model,
+    model: P::Structure,
     forces: Samples,
 ) -> Result<impl Iterator<Item = P::Point>, RangeError> {
     check_forces::<P>(&model, &forces)?;
@@ -53,7 +56,7 @@ pub fn force_sweep<P: LoadDriven>(
 /// # Errors
 /// As [`force_sweep`].
 pub fn response_vs_force<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     forces: Samples,
 ) -> Result<(Series, Series), RangeError> {
     check_forces::<P>(model, &forces)?;
@@ -73,7 +76,7 @@ pub fn response_vs_force<P: LoadDriven>(
 /// # Errors
 /// As [`force_sweep`].
 pub fn holding_zone_vs_force<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     law: Law,
     forces: Samples,
 ) -> Result<Vec<(f64, [f64; 2])>, RangeError> {
@@ -100,7 +103,7 @@ pub struct CyclePoint {
 }
 
 /// `model` cycled at one amplitude, both laws.
-pub fn cycle_point<P: LoadDriven>(model: &P::Model, amplitude: P::Force) -> CyclePoint {
+pub fn cycle_point<P: LoadDriven>(model: &P::Structure, amplitude: P::Force) -> CyclePoint {
     let (c, r) = (
         P::cycle(model, Law::Coulomb, amplitude),
         P::cycle(model, Law::Regularized, amplitude),
@@ -119,7 +122,7 @@ pub fn cycle_point<P: LoadDriven>(model: &P::Model, amplitude: P::Force) -> Cycl
 /// # Errors
 /// [`RangeError::Bound`] when an end of `amplitudes` is not a force `model` carries.
 pub fn cycle_sweep<P: LoadDriven>(
-    model: P::Model,
+    model: P::Structure,
     amplitudes: Samples,
 ) -> Result<impl Iterator<Item = CyclePoint>, RangeError> {
     check_forces::<P>(&model, &amplitudes)?;
@@ -133,7 +136,7 @@ pub fn cycle_sweep<P: LoadDriven>(
 /// # Errors
 /// As [`cycle_sweep`].
 pub fn dissipation_vs_amplitude<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     amplitudes: Samples,
 ) -> Result<(Series, Series), RangeError> {
     Ok(cycle_sweep::<P>(*model, amplitudes)?
@@ -180,7 +183,7 @@ pub struct LoopPoint {
 /// # Errors
 /// [`RangeError::Points`] outside 2 to [`crate::study::samples::MAX_POINTS`].
 pub fn cycle_loop<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     amplitude: P::Force,
     points: u64,
 ) -> Result<impl Iterator<Item = LoopPoint> + use<P>, RangeError> {
@@ -218,16 +221,16 @@ pub fn cycle_loop<P: LoadDriven>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::problems::lap::LapJointProblem;
     use crate::problems::lap::closed_form::{LapJoint, LapParams};
-    use crate::problems::lap::load_driven::LapLoad;
-    use crate::problems::twin_beams::load_driven::TwinBeamsLoad;
+    use crate::problems::twin_beams::TwinBeamsProblem;
     use crate::{TipForce, TwinBeams, TwinBeamsParams};
 
     #[test]
     fn the_loop_closes_and_its_branches_meet_at_the_turning_points() {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
         let amplitude = TipForce::new(150.0).unwrap();
-        let points: Vec<LoopPoint> = cycle_loop::<TwinBeamsLoad>(&beams, amplitude, 11)
+        let points: Vec<LoopPoint> = cycle_loop::<TwinBeamsProblem>(&beams, amplitude, 11)
             .unwrap()
             .collect();
         assert_eq!(points.len(), 22);
@@ -240,7 +243,7 @@ mod tests {
             assert!((a.w_coulomb - b.w_coulomb).abs() <= 1e-12 * a.w_coulomb.abs());
             assert!((a.w_regularized - b.w_regularized).abs() <= 1e-12 * a.w_regularized.abs());
         }
-        assert!(cycle_loop::<TwinBeamsLoad>(&beams, amplitude, 1).is_err());
+        assert!(cycle_loop::<TwinBeamsProblem>(&beams, amplitude, 1).is_err());
     }
 
     /// The generic sweep refuses what each problem refuses: the joint carries no force beyond
@@ -251,7 +254,8 @@ mod tests {
         let gross = joint.gross_slip_force();
         let beyond =
             Samples::new(0.0, 1.5 * gross, 3, crate::study::samples::Spacing::Linear).unwrap();
-        let Err(RangeError::Bound { end, allowed, .. }) = force_sweep::<LapLoad>(joint, beyond)
+        let Err(RangeError::Bound { end, allowed, .. }) =
+            force_sweep::<LapJointProblem>(joint, beyond)
         else {
             panic!("a force beyond F_gross was swept");
         };
@@ -259,7 +263,9 @@ mod tests {
         assert!(allowed.contains("F_gross"), "{allowed}");
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
         assert_eq!(
-            force_sweep::<TwinBeamsLoad>(beams, beyond).unwrap().count(),
+            force_sweep::<TwinBeamsProblem>(beams, beyond)
+                .unwrap()
+                .count(),
             3
         );
     }
@@ -278,7 +284,7 @@ mod tests {
         )
         .unwrap();
         for law in [Law::Coulomb, Law::Regularized] {
-            let zones = holding_zone_vs_force::<LapLoad>(&joint, law, forces).unwrap();
+            let zones = holding_zone_vs_force::<LapJointProblem>(&joint, law, forces).unwrap();
             for pair in zones.windows(2) {
                 let ([a0, b0], [a1, b1]) = (pair[0].1, pair[1].1);
                 assert!(
@@ -289,7 +295,7 @@ mod tests {
         }
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
         let zone =
-            TwinBeamsLoad::holding_zone(&beams, Law::Regularized, TipForce::new(100.0).unwrap());
+            TwinBeamsProblem::holding_zone(&beams, Law::Regularized, TipForce::new(100.0).unwrap());
         assert_eq!(zone[0], 0.0);
         assert!(zone[1] > 0.0 && zone[1] < beams.params().length, "{zone:?}");
     }

@@ -185,7 +185,7 @@ fn smallest_within(domain: Domain, tolerance: f64, deviation: impl Fn(f64) -> f6
 /// The forces at which the deviation is checked: the ends of [from, to], [`FORCE_SAMPLES`]
 /// between, the regime changes inside (F_thre; F_1 and F_2 of the joint) and the problem's own
 /// probes ([`LoadDriven::deviation_probes`]); zero left out (nothing moves).
-fn force_grid<P: LoadDriven>(model: &P::Model, [from, to]: [f64; 2]) -> Vec<P::Force> {
+fn force_grid<P: LoadDriven>(model: &P::Structure, [from, to]: [f64; 2]) -> Vec<P::Force> {
     let mut forces: Vec<f64> = (0..=FORCE_SAMPLES)
         .map(|i| from + (to - from) * i as f64 / FORCE_SAMPLES as f64)
         .collect();
@@ -204,7 +204,7 @@ fn force_grid<P: LoadDriven>(model: &P::Model, [from, to]: [f64; 2]) -> Vec<P::F
 /// The force range `[from, to]` (N) checked against `model` (each a force it carries) and
 /// ordered, and the forces sampled in it.
 fn checked_forces<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     [from, to]: [f64; 2],
 ) -> Result<([f64; 2], Vec<P::Force>), ToleranceError> {
     let (from, to) = (
@@ -219,7 +219,7 @@ fn checked_forces<P: LoadDriven>(
 }
 
 /// The worst, over `forces`, of the regularized response over Coulomb's, minus 1.
-fn worst<P: LoadDriven>(model: &P::Model, forces: &[P::Force]) -> f64 {
+fn worst<P: LoadDriven>(model: &P::Structure, forces: &[P::Force]) -> f64 {
     forces
         .iter()
         .map(|&f| {
@@ -231,7 +231,7 @@ fn worst<P: LoadDriven>(model: &P::Model, forces: &[P::Force]) -> f64 {
 /// The question about `model` over `range` (N) at `tolerance`, checked, and the forces sampled in
 /// the range: what both readings start from.
 fn load_question<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     range: [f64; 2],
     tolerance: f64,
 ) -> Result<(Question, Vec<P::Force>), ToleranceError> {
@@ -249,13 +249,13 @@ fn load_question<P: LoadDriven>(
 
 /// `model` with K_T = `kt`; every K_T of the domain is accepted (and no force depends on K_T,
 /// nor does the joint's F_gross), so the fallback is never taken.
-fn stiffened<P: LoadDriven>(model: &P::Model, kt: f64) -> P::Model {
+fn stiffened<P: LoadDriven>(model: &P::Structure, kt: f64) -> P::Structure {
     P::with_tangential_stiffness(model, kt).unwrap_or(*model)
 }
 
 /// Each code's setting for `threshold` on `model` with contact elements of `element` (mm).
 fn load_settings<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     threshold: Threshold,
     element: f64,
 ) -> Vec<CodeSetting> {
@@ -275,7 +275,7 @@ fn load_settings<P: LoadDriven>(
 /// # Errors
 /// A tolerance outside (0, 10], forces the structure does not carry, or no positive force.
 pub fn stiffness_for_tolerance<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     range: [f64; 2],
     tolerance: f64,
     element: f64,
@@ -302,7 +302,7 @@ pub fn stiffness_for_tolerance<P: LoadDriven>(
 /// # Errors
 /// As [`stiffness_for_tolerance`].
 pub fn stiffness_near_current<P: LoadDriven>(
-    model: &P::Model,
+    model: &P::Structure,
     range: [f64; 2],
     tolerance: f64,
     element: f64,

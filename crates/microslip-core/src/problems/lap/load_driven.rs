@@ -6,12 +6,9 @@ use crate::kernel::params::ParamError;
 use crate::kernel::regime::{Law, Regime};
 use crate::problems::lap::closed_form::{JointForce, LapJoint, LapState};
 use crate::problems::lap::cycle::LapCycle;
+use crate::problems::lap::problem::{LapJointProblem, LapModel};
 use crate::problems::load_driven::LoadDriven;
-use crate::problems::{LapParam, ModelKind, Param};
-
-/// The double-lap joint under a force: the type that carries its [`LoadDriven`] capability.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct LapLoad;
+use crate::problems::{LapParam, Param};
 
 /// Everything the reports show about the joint at one force, for both laws.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -53,15 +50,22 @@ pub fn lap_point(joint: &LapJoint, force: JointForce) -> LapPoint {
     }
 }
 
-impl LoadDriven for LapLoad {
-    type Model = LapJoint;
+impl LoadDriven for LapJointProblem {
+    type Structure = LapJoint;
     type Force = JointForce;
     type Cycle = LapCycle;
     type Point = LapPoint;
 
-    const KIND: ModelKind = ModelKind::Lap;
     const FORCE: Param = Param::Lap(LapParam::Force);
     const STIFFNESS: Param = Param::Lap(LapParam::Stiffness);
+
+    fn structure(model: &LapModel) -> LapJoint {
+        model.joint
+    }
+
+    fn applied_force(model: &LapModel) -> Self::Force {
+        model.force
+    }
 
     /// A force in the force domain and at most F_gross (no static state beyond, (L6)).
     fn force(joint: &LapJoint, newtons: f64) -> Result<JointForce, ParamError> {
@@ -77,7 +81,7 @@ impl LoadDriven for LapLoad {
     }
 
     /// F_gross = 2 b mu P L, where the whole overlap slides.
-    fn regime_scale(joint: &LapJoint) -> f64 {
+    fn force_scale(joint: &LapJoint) -> f64 {
         joint.gross_slip_force()
     }
 

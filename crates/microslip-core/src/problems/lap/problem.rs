@@ -9,6 +9,7 @@ use super::params::{LapParam, LapParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
+use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
 use crate::problems::{Description, Quantity};
 
@@ -92,9 +93,10 @@ impl Problem for LapJointProblem {
         super::quantity(&model.joint, model.force, quantity)
     }
 
-    /// F_gross, also the force's upper bound.
+    /// F_gross, also the force's upper bound: the load-driven [`LoadDriven::force_scale`] of
+    /// the joint.
     fn regime_scale(model: &LapModel) -> Option<f64> {
-        Some(model.joint.gross_slip_force())
+        Some(Self::force_scale(&model.joint))
     }
 
     /// The inner plate's modulus: the member every FE model of the joint meshes.
@@ -144,6 +146,10 @@ impl Problem for LapJointProblem {
 
     fn continuum() -> Option<&'static dyn AnyContinuum> {
         Some(&ContinuumOf::<LapJointProblem>::NEW)
+    }
+
+    fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
+        Some(&LoadDrivenOf::<LapJointProblem>::NEW)
     }
 
     fn to_inputs(params: LapInputs) -> Inputs {

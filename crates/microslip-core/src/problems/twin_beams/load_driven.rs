@@ -6,12 +6,9 @@ use crate::kernel::regime::{Law, Regime};
 use crate::problems::load_driven::LoadDriven;
 use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams};
 use crate::problems::twin_beams::cycle::Cycle;
+use crate::problems::twin_beams::problem::{BeamsModel, TwinBeamsProblem};
 use crate::problems::twin_beams::validity::BeamValidity;
-use crate::problems::{BeamParam, ModelKind, Param};
-
-/// The twin beams under a tip force: the type that carries their [`LoadDriven`] capability.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct TwinBeamsLoad;
+use crate::problems::{BeamParam, Param};
 
 /// Everything the reports show about the twin beams at one force, for both laws.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -50,15 +47,22 @@ pub fn beam_point(beams: &TwinBeams, force: TipForce) -> BeamPoint {
     }
 }
 
-impl LoadDriven for TwinBeamsLoad {
-    type Model = TwinBeams;
+impl LoadDriven for TwinBeamsProblem {
+    type Structure = TwinBeams;
     type Force = TipForce;
     type Cycle = Cycle;
     type Point = BeamPoint;
 
-    const KIND: ModelKind = ModelKind::Beam;
     const FORCE: Param = Param::Beam(BeamParam::Force);
     const STIFFNESS: Param = Param::Beam(BeamParam::Stiffness);
+
+    fn structure(model: &BeamsModel) -> TwinBeams {
+        model.beams
+    }
+
+    fn applied_force(model: &BeamsModel) -> Self::Force {
+        model.force
+    }
 
     /// Any force of the tip force's domain: the beams carry every one (macroslip past F_thre).
     fn force(_beams: &TwinBeams, newtons: f64) -> Result<TipForce, ParamError> {
@@ -74,7 +78,7 @@ impl LoadDriven for TwinBeamsLoad {
     }
 
     /// F_thre, where Coulomb's interface starts to slide.
-    fn regime_scale(beams: &TwinBeams) -> f64 {
+    fn force_scale(beams: &TwinBeams) -> f64 {
         beams.threshold_force()
     }
 

@@ -6,6 +6,7 @@ use super::closed_form::{CoulombBeams, RegularizedBeams, TipForce, TwinBeams};
 use super::params::{BeamParam, TwinBeamsParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
+use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{Laws, ParamKey, Problem};
 use crate::problems::{Description, Quantity};
 
@@ -97,9 +98,9 @@ impl Problem for TwinBeamsProblem {
         super::quantity(&model.beams, model.force, quantity)
     }
 
-    /// F_thre.
+    /// F_thre: the load-driven [`LoadDriven::force_scale`] of the beams.
     fn regime_scale(model: &BeamsModel) -> Option<f64> {
-        Some(model.beams.threshold_force())
+        Some(Self::force_scale(&model.beams))
     }
 
     fn interface(model: &BeamsModel) -> InterfaceData {
@@ -112,6 +113,10 @@ impl Problem for TwinBeamsProblem {
             stiffness: p.tangential_stiffness,
             poisson: None,
         }
+    }
+
+    fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
+        Some(&LoadDrivenOf::<TwinBeamsProblem>::NEW)
     }
 
     fn to_inputs(params: BeamsInputs) -> Inputs {
