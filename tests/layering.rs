@@ -21,6 +21,8 @@ const LAYERS: &[(&str, u8)] = &[
     ("verify", 3),
     ("preset", 3),
     ("measured", 4),
+    // The core's prelude re-exports from every core layer; nothing in either crate uses it.
+    ("prelude", 4),
     ("fe", 5),
     ("chart", 6),
     ("report", 7),
