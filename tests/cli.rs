@@ -3036,3 +3036,7 @@ fn the_lap_continuum_answers_or_says_why_not() {
     let text = stdout_of(&["lap", "--set", "L=1e-6", "--set", "F=1e-4"]);
     assert!(text.contains("2-D continuum (L13): FAILED"), "{text}");
 }
+
+// The generic `sweep` (issue 32): its own file, so that this one does not grow further.
+#[path = "cli/generic_sweep.rs"]
+mod generic_sweep;
