@@ -288,10 +288,8 @@ pub struct GenericSweepArgs {
     /// must name the same problem.
     #[arg(long, value_parser = model_kind_parser())]
     pub(super) model: Option<ModelKind>,
-    /// The parameter to vary (beam: L b h E P mu KT F; plate: L tp E nu mu P KT; lap: L b t1 t2
-    /// E1 E2 P mu KT F). Default: the problem's load F, else KT. Columns: the parameter's then
-    /// those of the default's sweep; for the default, that sweep's own.
-    #[arg(long, value_name = "NAME")]
+    // The help lists each problem's keys from the registry (`vary_help`).
+    #[arg(long, value_name = "NAME", help = vary_help())]
     pub(super) vary: Option<String>,
     /// First value of the varied parameter (in its unit: F in N, K_T in MPa/mm, ...).
     #[arg(long, value_name = "A", allow_negative_numbers = true, required = true)]
@@ -309,6 +307,22 @@ pub struct GenericSweepArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
     pub(super) format: TableFormat,
+}
+
+/// The help of the generic sweep's `--vary`: every problem's keys, as the registry lists them.
+fn vary_help() -> String {
+    let keys: Vec<String> = ModelKind::ALL
+        .iter()
+        .map(|kind| {
+            let names: Vec<&str> = kind.params().iter().map(|p| p.name()).collect();
+            format!("{kind}: {}", names.join(" "))
+        })
+        .collect();
+    format!(
+        "The parameter to vary ({}). Default: the problem's load F, else KT. Columns: the \
+         parameter's then those of the default's sweep; for the default, that sweep's own",
+        keys.join("; ")
+    )
 }
 
 /// Rows of a generic `sweep` without --points: the ends and nine steps between, so a range of
