@@ -392,7 +392,8 @@ fn render_commands() -> String {
     out.push_str("\nEvery flag (`microslip COMMAND --help` says what each does):\n\n```text\n");
     let _ = writeln!(out, "{}", synopsis("microslip", &root));
     for (path, cmd) in &commands {
-        if cmd.has_subcommands() {
+        // A group is listed when it takes flags of its own (`sweep`, the generic sweep).
+        if cmd.has_subcommands() && cmd.get_arguments().all(|a| synopsis_piece(a).is_none()) {
             continue;
         }
         let _ = writeln!(out, "{}", synopsis(path, cmd));

@@ -20,8 +20,7 @@ pub enum Command {
     #[command(mut_arg("beam_theory", |a| a.hide(true)))]
     Lap(LapPointArgs),
     /// Tables over a parameter range, as CSV or JSON.
-    #[command(subcommand)]
-    Sweep(SweepCommand),
+    Sweep(SweepArgs),
     /// The value of one parameter at which a quantity takes a target value (a certified root).
     ///
     /// Quantities: beam w(L) X ratio F_1 D zeta; plate u(L) X_r ratio; lap Delta a d ratio F_1 D
@@ -264,6 +263,71 @@ pub struct PointArgs {
     #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
     pub(super) format: ReportFormat,
 }
+
+/// `sweep`: the generic sweep of any problem (its flags, when no subcommand is given), or one of
+/// the per-problem subcommands, kept as aliases with their own flags and help. A subcommand and
+/// the generic flags exclude each other, so `sweep beam --help` is what it was.
+#[derive(Debug, Args)]
+#[command(
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true,
+    subcommand_value_name = "PROBLEM",
+    subcommand_help_heading = "Aliases (one problem each, their own flags)"
+)]
+pub struct SweepArgs {
+    #[command(subcommand)]
+    pub(super) command: Option<SweepCommand>,
+    #[command(flatten)]
+    pub(super) generic: GenericSweepArgs,
+}
+
+/// The flags of the generic `sweep`: the problem comes from --model or the preset.
+#[derive(Debug, Args)]
+pub struct GenericSweepArgs {
+    /// The problem (default: the preset's; without --preset, beam). Given with --preset, both
+    /// must name the same problem.
+    #[arg(long, value_parser = model_kind_parser())]
+    pub(super) model: Option<ModelKind>,
+    // The help lists each problem's keys from the registry (`vary_help`).
+    #[arg(long, value_name = "NAME", help = vary_help())]
+    pub(super) vary: Option<String>,
+    /// First value of the varied parameter (in its unit: F in N, K_T in MPa/mm, ...).
+    #[arg(long, value_name = "A", allow_negative_numbers = true, required = true)]
+    pub(super) from: Option<f64>,
+    /// Last value.
+    #[arg(long, value_name = "B", allow_negative_numbers = true, required = true)]
+    pub(super) to: Option<f64>,
+    /// Number of rows, both ends included (2 to 100000000; default 11, or 1 when --from = --to).
+    #[arg(long, value_name = "N", value_parser = parse_count, allow_negative_numbers = true)]
+    pub(super) points: Option<u64>,
+    #[command(flatten)]
+    pub(super) spacing: SpacingArgs,
+    #[command(flatten)]
+    pub(super) inputs: InputArgs,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = TableFormat::Csv)]
+    pub(super) format: TableFormat,
+}
+
+/// The help of the generic sweep's `--vary`: every problem's keys, as the registry lists them.
+fn vary_help() -> String {
+    let keys: Vec<String> = ModelKind::ALL
+        .iter()
+        .map(|kind| {
+            let names: Vec<&str> = kind.params().iter().map(|p| p.name()).collect();
+            format!("{kind}: {}", names.join(" "))
+        })
+        .collect();
+    format!(
+        "The parameter to vary ({}). Default: the problem's load F, else KT. Columns: the \
+         parameter's then those of the default's sweep; for the default, that sweep's own",
+        keys.join("; ")
+    )
+}
+
+/// Rows of a generic `sweep` without --points: the ends and nine steps between, so a range of
+/// round ends gives round values (0.1 to 0.5: steps of 0.04).
+pub(super) const DEFAULT_SWEEP_POINTS: u64 = 11;
 
 /// Sweep subcommands.
 #[derive(Debug, Subcommand)]

@@ -203,10 +203,8 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             }
         }
         Some(Command::Plate(args)) => run_plate_point(out, args)?,
-        Some(Command::Sweep(SweepCommand::Beam(args))) => run_beam_sweep(out, args)?,
+        Some(Command::Sweep(args)) => run_sweep(out, args)?,
         Some(Command::Lap(args)) => run_lap_point(out, args)?,
-        Some(Command::Sweep(SweepCommand::Lap(args))) => run_lap_sweep(out, args)?,
-        Some(Command::Sweep(SweepCommand::Plate(args))) => run_plate_sweep(out, args)?,
         Some(Command::Solve(args)) => run_solve(out, args)?,
         Some(Command::Fit(FitCommand::Beam {
             data,
@@ -253,7 +251,6 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             points,
             format,
         }) => run_cycle(out, *amplitude, inputs, *points, *format)?,
-        Some(Command::Sweep(SweepCommand::Cycle(args))) => run_cycle_sweep(out, args)?,
         Some(Command::Presets) => {
             let dir = preset::user_preset_dir();
             let rows = preset::listing(dir.as_deref());

@@ -2,9 +2,140 @@
 
 use super::*;
 
+/// `microslip sweep ...`: the generic sweep, or the alias a subcommand names.
+pub(super) fn run_sweep(out: &mut impl Write, args: &SweepArgs) -> Result<(), CliError> {
+    match &args.command {
+        None => run_generic_sweep(out, &args.generic),
+        Some(SweepCommand::Beam(args)) => run_beam_sweep(out, args),
+        Some(SweepCommand::Lap(args)) => run_lap_sweep(out, args),
+        Some(SweepCommand::Plate(args)) => run_plate_sweep(out, args),
+        Some(SweepCommand::Cycle(args)) => run_cycle_sweep(out, args),
+    }
+}
+
+/// The parameter a sweep of `kind` varies unless `--vary` names another: the problem's load
+/// (F) when it has one, else K_T, the parameter every problem has and the one the plate's
+/// results depend on most. Its table is the problem's own sweep table, without a column
+/// repeating the varied value.
+fn default_vary(kind: ModelKind) -> Option<Param> {
+    kind.description()
+        .load
+        .or_else(|| kind.params().iter().copied().find(|p| p.is_stiffness()))
+}
+
+/// `microslip sweep [--model M] [--preset P] [--vary NAME] --from A --to B`: the problem comes
+/// from --model or the preset; the same tables, bytes and refusals as the alias of that problem
+/// (both end in [`write_sweep`]).
+fn run_generic_sweep(out: &mut impl Write, args: &GenericSweepArgs) -> Result<(), CliError> {
+    let (name, preset) = resolve_preset(&args.inputs, args.model.unwrap_or(ModelKind::Beam))?;
+    let kind = preset.inputs.kind();
+    if let Some(model) = args.model
+        && model != kind
+    {
+        return Err(CliError::Invalid(format!(
+            "--model {model} and --preset {} disagree: the preset is a {kind} preset; drop \
+             --model, or give a {model} preset",
+            args.inputs.preset.as_deref().unwrap_or_default()
+        )));
+    }
+    let param = match (&args.vary, default_vary(kind)) {
+        (Some(key), _) => kind.param(key)?,
+        (None, Some(param)) => param,
+        (None, None) => {
+            return Err(CliError::Invalid(format!(
+                "the {kind} problem has no load and no K_T to sweep by default: give --vary \
+                 (allowed: {})",
+                kind.params()
+                    .iter()
+                    .map(|p| p.name())
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            )));
+        }
+    };
+    // clap requires both ends without a subcommand.
+    let (Some(from), Some(to)) = (args.from, args.to) else {
+        return Err(CliError::Usage("sweep needs --from A --to B"));
+    };
+    let points = match args.points {
+        Some(points) => points,
+        None if from == to => 1,
+        None => DEFAULT_SWEEP_POINTS,
+    };
+    let values = Samples::of_param(param, from, to, points, args.spacing.spacing(param))
+        .map_err(force_range_error)?;
+    let (_, model) = apply_and_validate(&args.inputs, name, preset, Load::Used)?;
+    write_sweep(out, model, param, values, args.format, force_range_error)
+}
+
+/// The rows of `model` over `param` at `values`, as every sweep command writes them: for the
+/// problem's [`default_vary`] parameter its own table (the F sweep, the plate's K_T sweep), for
+/// any other the parameter's column first, then the same columns. The one place a sweep meets
+/// each problem's row type; `range_error` names the command's flags in a refusal.
+fn write_sweep(
+    out: &mut impl Write,
+    model: Model,
+    param: Param,
+    values: Samples,
+    format: TableFormat,
+    range_error: impl Fn(RangeError) -> CliError,
+) -> Result<(), CliError> {
+    let own_table = Some(param) == default_vary(model.kind());
+    match (model, param) {
+        (Model::Beam { beams, force }, Param::Beam(varied)) => {
+            if own_table {
+                let rows =
+                    load::force_sweep::<TwinBeamsProblem>(beams, values).map_err(range_error)?;
+                write_table(out, format, rows.map(|r| BeamRow::from(&r)))?;
+            } else {
+                let rows =
+                    curves::beam_param_sweep(beams, force, varied, values).map_err(range_error)?;
+                write_varied(
+                    out,
+                    format,
+                    param,
+                    rows.map(|(v, r)| (v, BeamRow::from(&r))),
+                )?;
+            }
+        }
+        (Model::Plate(plate), Param::Plate(varied)) => {
+            if own_table {
+                let rows = curves::plate_kt_sweep(plate, values).map_err(range_error)?;
+                write_table(out, format, rows.map(|r| PlateRow::from(&r)))?;
+            } else {
+                let rows = curves::plate_param_sweep(plate, varied, values).map_err(range_error)?;
+                write_varied(
+                    out,
+                    format,
+                    param,
+                    rows.map(|(v, r)| (v, PlateRow::from(&r))),
+                )?;
+            }
+        }
+        (Model::Lap { joint, force }, Param::Lap(varied)) => {
+            if own_table {
+                let rows =
+                    load::force_sweep::<LapJointProblem>(joint, values).map_err(range_error)?;
+                write_table(out, format, rows.map(|r| LapRow::from(&r)))?;
+            } else {
+                let rows = crate::study::lap::lap_param_sweep(joint, force, varied, values)
+                    .map_err(range_error)?;
+                write_varied(out, format, param, rows.map(|(v, r)| (v, LapRow::from(&r))))?;
+            }
+        }
+        // `param` is parsed with the model's own kind by every caller.
+        (model, param) => {
+            return Err(CliError::Invalid(format!(
+                "{param} is not a parameter of the {} problem",
+                model.kind()
+            )));
+        }
+    }
+    Ok(())
+}
+
 /// `microslip sweep lap`: over F (rows of the F sweep) or any other parameter.
-pub(super) fn run_lap_sweep(out: &mut impl Write, args: &LapSweepArgs) -> Result<(), CliError> {
-    use crate::study::lap::lap_param_sweep;
+fn run_lap_sweep(out: &mut impl Write, args: &LapSweepArgs) -> Result<(), CliError> {
     let varied: LapParam = args.vary.as_deref().unwrap_or("F").parse()?;
     let param = Param::Lap(varied);
     let values = Samples::of_param(
@@ -15,56 +146,29 @@ pub(super) fn run_lap_sweep(out: &mut impl Write, args: &LapSweepArgs) -> Result
         args.spacing.spacing(param),
     )
     .map_err(force_range_error)?;
-    let (_, joint, force) = load_lap(&args.inputs, "sweep lap")?;
-    if varied == LapParam::Force {
-        let rows =
-            load::force_sweep::<LapJointProblem>(joint, values).map_err(force_range_error)?;
-        write_table(out, args.format, rows.map(|r| LapRow::from(&r)))?;
-    } else {
-        let rows = lap_param_sweep(joint, force, varied, values).map_err(force_range_error)?;
-        write_varied(
-            out,
-            args.format,
-            param,
-            rows.map(|(v, r)| (v, LapRow::from(&r))),
-        )?;
-    }
-    Ok(())
+    let (_, model) = load(&args.inputs, ModelKind::Lap, "sweep lap")?;
+    write_sweep(out, model, param, values, args.format, force_range_error)
 }
 
-pub(super) fn run_beam_sweep(out: &mut impl Write, args: &BeamSweepArgs) -> Result<(), CliError> {
-    let BeamSweepArgs {
-        vary,
-        from,
-        to,
-        points,
-        spacing,
-        inputs,
-        format,
-    } = args;
-    let varied: BeamParam = vary.as_deref().unwrap_or("F").parse()?;
+/// `microslip sweep beam`: over F (rows of the F sweep) or any other parameter.
+fn run_beam_sweep(out: &mut impl Write, args: &BeamSweepArgs) -> Result<(), CliError> {
+    let varied: BeamParam = args.vary.as_deref().unwrap_or("F").parse()?;
     let param = Param::Beam(varied);
-    let values = Samples::of_param(param, *from, *to, *points, spacing.spacing(param))
-        .map_err(force_range_error)?;
-    let (_, beams, force) = load_beams(inputs, "sweep beam")?;
-    if varied == BeamParam::Force {
-        let rows =
-            load::force_sweep::<TwinBeamsProblem>(beams, values).map_err(force_range_error)?;
-        write_table(out, *format, rows.map(|r| BeamRow::from(&r)))?;
-    } else {
-        let rows =
-            curves::beam_param_sweep(beams, force, varied, values).map_err(force_range_error)?;
-        write_varied(
-            out,
-            *format,
-            param,
-            rows.map(|(v, r)| (v, BeamRow::from(&r))),
-        )?;
-    }
-    Ok(())
+    let values = Samples::of_param(
+        param,
+        args.from,
+        args.to,
+        args.points,
+        args.spacing.spacing(param),
+    )
+    .map_err(force_range_error)?;
+    let (_, model) = load(&args.inputs, ModelKind::Beam, "sweep beam")?;
+    write_sweep(out, model, param, values, args.format, force_range_error)
 }
 
-pub(super) fn run_plate_sweep(out: &mut impl Write, args: &PlateSweepArgs) -> Result<(), CliError> {
+/// `microslip sweep plate`: over K_T (`--kt-from`/`--kt-to`, or the default of `--vary`) or any
+/// other parameter.
+fn run_plate_sweep(out: &mut impl Write, args: &PlateSweepArgs) -> Result<(), CliError> {
     let PlateSweepArgs {
         kt_from,
         kt_to,
@@ -99,23 +203,11 @@ pub(super) fn run_plate_sweep(out: &mut impl Write, args: &PlateSweepArgs) -> Re
     let range_error = |error| CliError::Range { error, flags };
     let values =
         Samples::of_param(param, lo, hi, *points, spacing.spacing(param)).map_err(range_error)?;
-    let (_, plate) = load_plate(inputs, "sweep plate")?;
-    if varied == PlateParam::Stiffness {
-        let rows = curves::plate_kt_sweep(plate, values).map_err(range_error)?;
-        write_table(out, *format, rows.map(|r| PlateRow::from(&r)))?;
-    } else {
-        let rows = curves::plate_param_sweep(plate, varied, values).map_err(range_error)?;
-        write_varied(
-            out,
-            *format,
-            param,
-            rows.map(|(v, r)| (v, PlateRow::from(&r))),
-        )?;
-    }
-    Ok(())
+    let (_, model) = load(inputs, ModelKind::Plate, "sweep plate")?;
+    write_sweep(out, model, param, values, *format, range_error)
 }
 
-pub(super) fn run_cycle_sweep(out: &mut impl Write, args: &CycleSweepArgs) -> Result<(), CliError> {
+fn run_cycle_sweep(out: &mut impl Write, args: &CycleSweepArgs) -> Result<(), CliError> {
     let CycleSweepArgs {
         from,
         to,

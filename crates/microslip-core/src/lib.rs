@@ -49,8 +49,8 @@
 
 pub mod fit;
 pub mod kernel;
-pub mod prelude;
 pub mod numeric;
+pub mod prelude;
 pub mod problems;
 pub mod study;
 pub mod verify;
