@@ -513,7 +513,7 @@ pub fn context_title(context: Context) -> &'static str {
         Context::Confirm => "Yes/no questions",
         Context::Help => "This help",
         Context::Explain => "Explaining the numbers",
-        Context::Working => "While a fit runs",
+        Context::Working => "While a fit or a file read runs",
     }
 }
 
