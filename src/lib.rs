@@ -13,11 +13,13 @@
 //! code of both crates and fails on an edge that runs up or sideways:
 //!
 //! ```text
-//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- measured <- fe <- chart <- report <- tui <- cli
+//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- measured <- fe <- chart <- report <- faces <- tui <- cli
 //! ```
 //!
-//! - [`kernel`], [`numeric`], [`problems`], [`study`], [`fit`], [`verify`]: the core crate (its
-//!   own docs say what each holds).
+//! - [`kernel`], [`numeric`], [`study`], [`fit`], [`verify`]: the core crate (its own docs say
+//!   what each holds); [`problems`] is the core's, re-exported whole, plus each problem's
+//!   *faces* in a folder of its own (`src/problems/<name>/`: its charts, report and deck, the
+//!   layer `faces` between `report` and `tui`).
 //! - [`mod@file`]: reading a file a user named (a size cap, never blocking) and writing one without
 //!   clobbering it; the lowest layer beside the kernel.
 //! - [`preset`]: TOML parse and write, and the file store (atomic, no clobber).
@@ -71,7 +73,7 @@
 
 /// The physics, from the `microslip-core` crate: re-exported under the same paths, so that
 /// `microslip::problems::...` and the application's own `crate::problems::...` name it.
-pub use microslip_core::{fit, kernel, numeric, problems, study, verify};
+pub use microslip_core::{fit, kernel, numeric, study, verify};
 
 pub mod chart;
 #[cfg(feature = "app")]
@@ -80,6 +82,7 @@ pub mod fe;
 pub mod file;
 pub mod measured;
 pub mod preset;
+pub mod problems;
 pub mod report;
 #[cfg(feature = "app")]
 mod tui;

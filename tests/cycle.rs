@@ -4,7 +4,7 @@
 
 use microslip::numeric::MeshDensity;
 use microslip::problems::twin_beams::TwinBeamsFe;
-use microslip::problems::twin_beams::cycle::{Cycle, Law, MasingCycle};
+use microslip::problems::twin_beams::cycle::{BeamsCycle, Law, MasingCycle};
 use microslip::{TipForce, TwinBeams, TwinBeamsParams};
 
 fn beams(kt: f64) -> TwinBeams {
@@ -15,8 +15,8 @@ fn beams(kt: f64) -> TwinBeams {
     .unwrap()
 }
 
-fn cycle(kt: f64, law: Law, amplitude: f64) -> Cycle {
-    Cycle::new(&beams(kt), law, TipForce::new(amplitude).unwrap())
+fn cycle(kt: f64, law: Law, amplitude: f64) -> BeamsCycle {
+    BeamsCycle::new(&beams(kt), law, TipForce::new(amplitude).unwrap())
 }
 
 #[test]
@@ -118,7 +118,7 @@ fn stiff_interface_dissipates_like_coulomb() {
 fn amplitude_exponents() {
     let b = beams(120.0);
     let f1 = b.first_macroslip_force();
-    let d = |fa: f64| Cycle::new(&b, Law::Regularized, TipForce::new(fa).unwrap()).dissipation();
+    let d = |fa: f64| BeamsCycle::new(&b, Law::Regularized, TipForce::new(fa).unwrap()).dissipation();
     // Just above F_1: D ~ (F_a - F_1)^(3/2) (docs/theory.md, (C6)).
     let slope = (d(f1 * (1.0 + 1e-5)) / d(f1 * (1.0 + 1e-6))).log10();
     assert!(
@@ -135,7 +135,7 @@ fn amplitude_exponents() {
     // D grows with the amplitude; the secant stiffness falls.
     let mut last = (0.0, f64::INFINITY);
     for i in 1..200 {
-        let c = Cycle::new(
+        let c = BeamsCycle::new(
             &b,
             Law::Regularized,
             TipForce::new(2.0 * f64::from(i)).unwrap(),
@@ -165,7 +165,7 @@ fn coulomb_damping_peaks_at_2_over_3_pi_at_one_and_a_half_times_the_threshold() 
         let b = TwinBeams::new(params).unwrap();
         let ft = b.threshold_force();
         let zeta =
-            |r: f64| Cycle::new(&b, Law::Coulomb, TipForce::new(r * ft).unwrap()).damping_ratio();
+            |r: f64| BeamsCycle::new(&b, Law::Coulomb, TipForce::new(r * ft).unwrap()).damping_ratio();
         let peak = 2.0 / (3.0 * std::f64::consts::PI);
         assert!((zeta(1.5) - peak).abs() < 1e-12);
         assert!(zeta(1.45) < peak && zeta(1.55) < peak);
@@ -224,8 +224,8 @@ fn dissipation_keeps_its_precision_up_to_the_largest_amplitude() {
         for amplitude in [1e4, 1e8, 1e11, 1e12] {
             let force = TipForce::new(amplitude).unwrap();
             let (c, r) = (
-                Cycle::new(&b, Law::Coulomb, force).dissipation(),
-                Cycle::new(&b, Law::Regularized, force).dissipation(),
+                BeamsCycle::new(&b, Law::Coulomb, force).dissipation(),
+                BeamsCycle::new(&b, Law::Regularized, force).dissipation(),
             );
             let exact = coulomb_dissipation(&params, amplitude);
             assert!(

@@ -11,7 +11,7 @@
 
 use microslip::kernel::params::Domain;
 use microslip::problems::twin_beams::closed_form::BeamTheory;
-use microslip::problems::twin_beams::cycle::{Cycle, Law, MasingCycle};
+use microslip::problems::twin_beams::cycle::{BeamsCycle, Law, MasingCycle};
 use microslip::problems::{BeamParam, PlateParam};
 use microslip::{PlateParams, Regime, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 use proptest::prelude::*;
@@ -209,8 +209,8 @@ fn check_beams(params: TwinBeamsParams, f: f64) -> Result<(), String> {
     }
     // Cycles: finite, non-negative, the regularized one dissipating less than Coulomb.
     let (cc, cr) = (
-        Cycle::new(&beams, Law::Coulomb, force),
-        Cycle::new(&beams, Law::Regularized, force),
+        BeamsCycle::new(&beams, Law::Coulomb, force),
+        BeamsCycle::new(&beams, Law::Regularized, force),
     );
     for cycle in [&cc, &cr] {
         let values = [
@@ -430,7 +430,7 @@ fn check_beam_scaling(p: TwinBeamsParams, f: f64, s: f64, sigma: f64) -> Result<
     )?;
     let energy = sigma * s * s * s;
     for law in [Law::Coulomb, Law::Regularized] {
-        let (ya, yb) = (Cycle::new(&a, law, fa), Cycle::new(&b, law, fb));
+        let (ya, yb) = (BeamsCycle::new(&a, law, fa), BeamsCycle::new(&b, law, fb));
         // D grows from 0 at the onset of sliding F_s like (F - F_s) (Coulomb) or (F - F_1)^(3/2):
         // a round-off change of F (the scaled F and F_s are rounded independently) changes D by
         // 1.5 x 2 eps F / (F - F_s) relative, which the tolerance adds. At F_s itself, not compared.

@@ -4,7 +4,7 @@
 //! layers, lowest first (the crate docs in src/lib.rs say why each sits where it does):
 //!
 //! ```text
-//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- measured <- fe <- chart <- report <- tui <- cli
+//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- measured <- fe <- chart <- report <- faces <- tui <- cli
 //! ```
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -26,8 +26,12 @@ const LAYERS: &[(&str, u8)] = &[
     ("fe", 5),
     ("chart", 6),
     ("report", 7),
-    ("tui", 8),
-    ("cli", 9),
+    // The application's folder of each problem (`src/problems/<name>/`): its charts, report and
+    // deck, written against the traits of `chart`, `report` and `fe`, reached by the TUI and the
+    // command line only through them (src/problems/mod.rs says why a problem has two folders).
+    ("faces", 8),
+    ("tui", 9),
+    ("cli", 10),
 ];
 
 /// The files of a problem that hold its closed forms, and those that hold its discretized
@@ -176,7 +180,7 @@ fn problem_breaches(source: &Source, root: &BTreeMap<String, String>) -> Vec<Str
     let [problems, problem, file] = parts[..] else {
         return found;
     };
-    if problems != "problems" {
+    if problems != "problems" && problems != "faces" {
         return found;
     }
     let code = &source.code;
@@ -295,6 +299,11 @@ fn crate_sources() -> (Vec<Source>, BTreeMap<String, String>) {
             if relative == "lib.rs" || relative == "main.rs" {
                 continue;
             }
+            // The application's problem folders are the problems' faces, a layer of their own.
+            let relative = match relative.strip_prefix("problems/") {
+                Some(face) if src == top.join("src") => format!("faces/{face}"),
+                _ => relative,
+            };
             let text = std::fs::read_to_string(&path).unwrap();
             sources.push(Source {
                 path: relative,
@@ -472,4 +481,172 @@ fn the_checker_reports_each_kind_of_breach() {
         ["microslip_core"]
     );
     assert!(physics_named("use crate::tui::view::View;", &root).is_empty());
+}
+
+/// The names that are a problem's own: its folder's name as a path (`twin_beams::`), its
+/// registry variant as the generic enums spell it (`ModelKind::Beam`, `Param::Beam`, ...) and
+/// every type its core folder declares (`TwinBeams`, `TipForce`, `BeamParam`, ...).
+fn problem_names() -> Vec<(String, Vec<String>)> {
+    let core = Path::new(env!("CARGO_MANIFEST_DIR")).join(CORE).join("problems");
+    let registry = std::fs::read_to_string(core.join("mod.rs")).unwrap();
+    let mut problems = Vec::new();
+    for entry in std::fs::read_dir(&core).unwrap() {
+        let folder = entry.unwrap().path();
+        if !folder.is_dir() {
+            continue;
+        }
+        let name = folder.file_name().unwrap().to_string_lossy().to_string();
+        let mut names = vec![format!("{name}::")];
+        // The registry line `Beam => $crate::problems::twin_beams::TwinBeamsProblem`.
+        let line = registry
+            .lines()
+            .find(|l| l.contains(&format!("::problems::{name}::")) && l.contains("=>"))
+            .unwrap_or_else(|| panic!("no registry line for `{name}`"));
+        let variant = line.split("=>").next().unwrap().trim().to_string();
+        for generic in ["ModelKind", "Param", "Inputs", "Model"] {
+            names.push(format!("{generic}::{variant}"));
+        }
+        let mut files = Vec::new();
+        rust_files(&folder, &mut files);
+        for file in files {
+            let code = shipped_code(&std::fs::read_to_string(file).unwrap());
+            for word in ["pub struct ", "pub enum ", "pub trait ", "pub type "] {
+                for (at, _) in code.match_indices(word) {
+                    let ident: String = code[at + word.len()..]
+                        .chars()
+                        .take_while(|c| c.is_alphanumeric() || *c == '_')
+                        .collect();
+                    if !ident.is_empty() && !names.contains(&ident) {
+                        names.push(ident);
+                    }
+                }
+            }
+        }
+        problems.push((name, names));
+    }
+    problems
+}
+
+/// True when `code` holds `name` as a whole word (a `BeamParam` inside `BeamParams` counts for
+/// `BeamParams` only).
+fn names_word(code: &str, name: &str) -> bool {
+    let word = |c: char| c.is_alphanumeric() || c == '_';
+    code.match_indices(name).any(|(at, _)| {
+        let before = code[..at].chars().next_back();
+        let after = code[at + name.len()..].chars().next();
+        !before.is_some_and(word) && (name.ends_with("::") || !after.is_some_and(word))
+    })
+}
+
+/// The files outside every problem's two folders that still name a problem (issue 32's measure:
+/// what a new problem would touch besides its folders and its registry line). The list only
+/// shrinks: a file that stops naming a problem must leave it, and a new one may not join it.
+const STILL_NAMING_A_PROBLEM: &[&str] = &[
+    "chart/beam.rs",
+    "chart/lap.rs",
+    "chart/mod.rs",
+    "chart/pins.rs",
+    "chart/plate.rs",
+    "chart/view.rs",
+    "cli/compare.rs",
+    "cli/cycle.rs",
+    "cli/decks.rs",
+    "cli/figures.rs",
+    "cli/fitting.rs",
+    "cli/kt.rs",
+    "cli/loading.rs",
+    "cli/mod.rs",
+    "cli/point.rs",
+    "cli/sweep.rs",
+    "fe/compare.rs",
+    "fe/deck.rs",
+    "fe/header.rs",
+    "fe/lap_deck.rs",
+    "fe/load.rs",
+    "fe/results.rs",
+    "fit/beam.rs",
+    "fit/lap.rs",
+    "fit/mod.rs",
+    "fit/structure.rs",
+    "prelude.rs",
+    "preset/mod.rs",
+    "preset/parse.rs",
+    "preset/write.rs",
+    "problems/inputs.rs",
+    "report/figure/paper.rs",
+    "report/json.rs",
+    "report/mod.rs",
+    "report/point/beam.rs",
+    "report/point/cycle.rs",
+    "report/point/lap.rs",
+    "report/point/plate.rs",
+    "report/point/stiffness.rs",
+    "report/point/tolerance.rs",
+    "report/rows.rs",
+    "report/text.rs",
+    "study/candidates.rs",
+    "study/curves.rs",
+    "study/lap.rs",
+    "study/tolerance.rs",
+    "study/zones.rs",
+    "tui/app/data.rs",
+    "tui/app/fit.rs",
+    "tui/app/mod.rs",
+    "tui/app/normal.rs",
+    "tui/app/recompute.rs",
+    "tui/brief.rs",
+    "tui/effects.rs",
+    "tui/kt_table.rs",
+    "tui/mod.rs",
+    "tui/summary.rs",
+    "tui/view.rs",
+    "verify.rs",
+];
+
+#[test]
+fn only_a_problem_s_folders_and_the_registry_name_it() {
+    let (sources, _) = crate_sources();
+    let problems = problem_names();
+    assert!(problems.len() >= 3, "read {} problems", problems.len());
+    let mut naming = Vec::new();
+    for source in &sources {
+        let own_folder = |name: &str| {
+            source.path.starts_with(&format!("problems/{name}/"))
+                || source.path.starts_with(&format!("faces/{name}/"))
+        };
+        // The registry (the core's problems/mod.rs) is where the problems are listed.
+        if source.path == "problems/mod.rs" {
+            continue;
+        }
+        // Unit tests build their fixtures from named problems, as `tests/` does.
+        if source.path.contains("/tests/") || source.path.ends_with("/tests.rs") {
+            continue;
+        }
+        let named: Vec<String> = problems
+            .iter()
+            .filter(|(name, _)| !own_folder(name))
+            .flat_map(|(_, names)| names.iter().filter(|n| names_word(&source.code, n)))
+            .cloned()
+            .collect();
+        if !named.is_empty() {
+            naming.push((source.path.clone(), named));
+        }
+    }
+    let paths: Vec<&str> = naming.iter().map(|(p, _)| p.as_str()).collect();
+    let new: Vec<String> = naming
+        .iter()
+        .filter(|(p, _)| !STILL_NAMING_A_PROBLEM.contains(&p.as_str()))
+        .map(|(p, n)| format!("{p}: {}", n.join(", ")))
+        .collect();
+    let gone: Vec<&&str> = STILL_NAMING_A_PROBLEM
+        .iter()
+        .filter(|p| !paths.contains(p))
+        .collect();
+    assert!(
+        new.is_empty() && gone.is_empty(),
+        "{} files name a problem outside its folders; not listed:\n{}\nlisted but clean now \
+         (remove them from STILL_NAMING_A_PROBLEM):\n{gone:?}",
+        naming.len(),
+        new.join("\n")
+    );
 }

@@ -8,7 +8,7 @@
 //! [`LoadDriven`]; a capability a problem lacks is a trait it does not implement, not a `match`
 //! arm; the erased side finds each through [`AnyProblem::continuum`] and
 //! [`AnyProblem::load_driven`]). The
-//! registry, `problem_list!` below, holds one line per problem (`Beam =>
+//! registry, [`with_problems!`](crate::with_problems) below, holds one line per problem (`Beam =>
 //! twin_beams::TwinBeamsProblem`) and generates from it [`ModelKind`] (with
 //! [`ModelKind::problem`], the problem as `&'static dyn` [`AnyProblem`]: what a caller uses
 //! instead of a `match` on the kind) and [`Param`] (a parameter of any problem, what presets,
@@ -45,7 +45,7 @@
 //!      enum, [`Problem`] (and [`Continuum`] and the other capabilities it has, each handed to
 //!      the erased side by the [`Problem`] method of the same name). Its `State` is
 //!      [`problem::Laws`] of its two law states.
-//! 2. **One registry line** in `problem_list!` below: `Cylinder => cylinder::CylinderProblem,`
+//! 2. **One registry line** in [`with_problems!`](crate::with_problems): `Cylinder => $crate::problems::cylinder::CylinderProblem,`
 //!    with its doc comment. [`ModelKind`], [`ModelKind::ALL`], [`ModelKind::problem`] and
 //!    [`Param`] follow from it; [`ByProblem`] grows a slot.
 //! 3. **While the enums last**, a variant in [`Inputs`](inputs::Inputs) and
@@ -191,15 +191,40 @@ macro_rules! problem_list {
     };
 }
 
-// The problems: the one list a new problem is added to (its variant and its type).
-problem_list! {
-    /// Twin cantilever beams (paper section 2.1).
-    Beam => twin_beams::TwinBeamsProblem,
-    /// Squeezed plate (paper section 2.2).
-    Plate => plate::SqueezedPlateProblem,
-    /// Clamped double-lap joint (issue 24).
-    Lap => lap::LapJointProblem,
+/// **The registry**: the one list of problems, a line each (`Variant => its type`), which every
+/// per-problem type of both crates is generated from. It hands the list to the macro it is
+/// given: `with_problems!(problem_list)` below writes [`ModelKind`] and [`Param`]; a layer above
+/// the core (a chart, a report, a deck) writes its own dispatch over every problem the same way,
+/// from the same list, so that no file but this one lists the problems and a new problem is
+/// one line here. The callback receives `$(#[doc] Variant => path::to::ProblemType),+`.
+///
+/// # Examples
+/// ```
+/// // Count the problems by their type, written once for every problem.
+/// macro_rules! count {
+///     ($($(#[$doc:meta])* $variant:ident => $problem:path),+ $(,)?) => {
+///         [$(<$problem as microslip_core::problems::Problem>::INFO.key),+]
+///     };
+/// }
+/// let keys = microslip_core::with_problems!(count);
+/// assert_eq!(keys.len(), microslip_core::problems::ModelKind::ALL.len());
+/// assert_eq!(keys[0], "beam");
+/// ```
+#[macro_export]
+macro_rules! with_problems {
+    ($callback:ident) => {
+        $callback! {
+            /// Twin cantilever beams (paper section 2.1).
+            Beam => $crate::problems::twin_beams::TwinBeamsProblem,
+            /// Squeezed plate (paper section 2.2).
+            Plate => $crate::problems::plate::SqueezedPlateProblem,
+            /// Clamped double-lap joint (issue 24).
+            Lap => $crate::problems::lap::LapJointProblem,
+        }
+    };
 }
+
+with_problems!(problem_list);
 
 impl ModelKind {
     /// How many problems there are.

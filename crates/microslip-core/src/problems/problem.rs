@@ -338,7 +338,7 @@ pub enum ProblemError {
     Param(#[from] ParamError),
 }
 
-/// A [`Problem`]'s line in the registry: written by `problem_list!`, never by hand, so that a
+/// A [`Problem`]'s line in the registry: written by the registry ([`crate::with_problems`]), never by hand, so that a
 /// problem is an [`AnyProblem`] exactly when it is listed.
 pub trait Registered {
     /// Its variant of [`ModelKind`].

@@ -18,7 +18,7 @@ use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams};
 
 /// One cycle of amplitude F_a for one law.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Cycle {
+pub struct BeamsCycle {
     beams: TwinBeams,
     law: Law,
     amplitude: f64,
@@ -33,9 +33,9 @@ pub struct Cycle {
     macroslip_length: f64,
 }
 
-impl Cycle {
+impl BeamsCycle {
     /// The cycle between +`amplitude` and -`amplitude` for `law`.
-    pub fn new(beams: &TwinBeams, law: Law, amplitude: TipForce) -> Cycle {
+    pub fn new(beams: &TwinBeams, law: Law, amplitude: TipForce) -> BeamsCycle {
         let onset = match law {
             Law::Coulomb => beams.threshold_force(),
             Law::Regularized => beams.first_macroslip_force(),
@@ -45,7 +45,7 @@ impl Cycle {
             Law::Coulomb => 0.0,
             Law::Regularized => beams.regularized(amplitude).macroslip_length(),
         };
-        let mut cycle = Cycle {
+        let mut cycle = BeamsCycle {
             beams: *beams,
             law,
             amplitude: amplitude.newtons(),
@@ -69,7 +69,7 @@ impl Cycle {
     }
 }
 
-impl MasingCycle for Cycle {
+impl MasingCycle for BeamsCycle {
     fn amplitude(&self) -> f64 {
         self.amplitude
     }
@@ -90,7 +90,7 @@ impl MasingCycle for Cycle {
         w.copysign(force)
     }
 
-    /// w_a (mm), [`Cycle::peak_deflection`].
+    /// w_a (mm), [`BeamsCycle::peak_deflection`].
     fn peak_response(&self) -> f64 {
         self.peak_deflection
     }
@@ -148,7 +148,7 @@ mod tests {
         // (C5), derived from friction work: D = 4 mu P L^3 (F_a - F_thre) / (E h^2).
         let beams = paper();
         for fa in [90.0, 150.0, 400.0] {
-            let cycle = Cycle::new(&beams, Law::Coulomb, TipForce::new(fa).unwrap());
+            let cycle = BeamsCycle::new(&beams, Law::Coulomb, TipForce::new(fa).unwrap());
             let expected = 4.0 * 0.3 * 1.0 * 200.0_f64.powi(3) * (fa - 80.0) / (210_000.0 * 100.0);
             assert!(
                 (cycle.dissipation() / expected - 1.0).abs() < 1e-12,
@@ -156,7 +156,7 @@ mod tests {
             );
         }
         assert_eq!(
-            Cycle::new(&beams, Law::Coulomb, TipForce::new(79.0).unwrap()).dissipation(),
+            BeamsCycle::new(&beams, Law::Coulomb, TipForce::new(79.0).unwrap()).dissipation(),
             0.0
         );
     }
@@ -165,7 +165,7 @@ mod tests {
     fn loops_close_and_are_symmetric() {
         let beams = paper();
         for law in [Law::Coulomb, Law::Regularized] {
-            let cycle = Cycle::new(&beams, law, TipForce::new(150.0).unwrap());
+            let cycle = BeamsCycle::new(&beams, law, TipForce::new(150.0).unwrap());
             let wa = cycle.peak_deflection();
             assert!((cycle.unloading(150.0) - wa).abs() < 1e-15);
             assert!((cycle.unloading(-150.0) + wa).abs() < 1e-12 * wa);
@@ -180,7 +180,7 @@ mod tests {
     #[test]
     fn pure_microslip_dissipates_nothing() {
         let beams = paper();
-        let cycle = Cycle::new(
+        let cycle = BeamsCycle::new(
             &beams,
             Law::Regularized,
             TipForce::new(0.99 * beams.first_macroslip_force()).unwrap(),

@@ -1,11 +1,11 @@
 //! The twin beams as a load-driven problem ([`LoadDriven`]): the tip force F on each beam, w(L)
-//! its response, F_thre = 4 b h mu P / 3 its regime scale, and the Masing cycle of [`Cycle`].
+//! its response, F_thre = 4 b h mu P / 3 its regime scale, and the Masing cycle of [`BeamsCycle`].
 
 use crate::kernel::params::ParamError;
 use crate::kernel::regime::{Law, Regime};
 use crate::problems::load_driven::LoadDriven;
 use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams};
-use crate::problems::twin_beams::cycle::Cycle;
+use crate::problems::twin_beams::cycle::BeamsCycle;
 use crate::problems::twin_beams::problem::{BeamsModel, TwinBeamsProblem};
 use crate::problems::twin_beams::validity::BeamValidity;
 use crate::problems::{BeamParam, Param};
@@ -50,7 +50,7 @@ pub fn beam_point(beams: &TwinBeams, force: TipForce) -> BeamPoint {
 impl LoadDriven for TwinBeamsProblem {
     type Structure = TwinBeams;
     type Force = TipForce;
-    type Cycle = Cycle;
+    type Cycle = BeamsCycle;
     type Point = BeamPoint;
 
     const FORCE: Param = Param::Beam(BeamParam::Force);
@@ -108,8 +108,8 @@ impl LoadDriven for TwinBeamsProblem {
         }
     }
 
-    fn cycle(beams: &TwinBeams, law: Law, amplitude: TipForce) -> Cycle {
-        Cycle::new(beams, law, amplitude)
+    fn cycle(beams: &TwinBeams, law: Law, amplitude: TipForce) -> BeamsCycle {
+        BeamsCycle::new(beams, law, amplitude)
     }
 
     fn tangential_stiffness(beams: &TwinBeams) -> f64 {

@@ -17,7 +17,7 @@ pub use problem::TwinBeamsProblem;
 use crate::problems::quantity::ratio_to_coulomb;
 use crate::problems::{Description, Param, Quantity, QuantityName, Solution};
 use closed_form::{TipForce, TwinBeams};
-use cycle::{Cycle, Law, MasingCycle};
+use cycle::{BeamsCycle, Law, MasingCycle};
 use params::BeamParam;
 
 /// The twin beams as the generic layers see them.
@@ -88,9 +88,9 @@ pub(crate) fn quantity(beams: &TwinBeams, force: TipForce, quantity: Quantity) -
             beams.coulomb(force).response(),
         )?,
         Quantity::FirstMacroslipForce => beams.first_macroslip_force(),
-        Quantity::Dissipation => Cycle::new(beams, Law::Regularized, force).dissipation(),
+        Quantity::Dissipation => BeamsCycle::new(beams, Law::Regularized, force).dissipation(),
         Quantity::SlideFromStart | Quantity::SlideFromEnd => return None,
-        Quantity::DampingRatio => Cycle::new(beams, Law::Regularized, force).damping_ratio(),
+        Quantity::DampingRatio => BeamsCycle::new(beams, Law::Regularized, force).damping_ratio(),
     };
     value.is_finite().then_some(value)
 }

@@ -1,0 +1,4 @@
+//! The application's faces of the core's `lap` problem (see [`crate::problems`]): the core's
+//! folder re-exported whole, so `crate::problems::lap::...` keeps naming the same items.
+
+pub use microslip_core::problems::lap::*;

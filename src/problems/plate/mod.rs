@@ -1,0 +1,4 @@
+//! The application's faces of the core's `plate` problem (see [`crate::problems`]): the core's
+//! folder re-exported whole, so `crate::problems::plate::...` keeps naming the same items.
+
+pub use microslip_core::problems::plate::*;

@@ -1,0 +1,4 @@
+//! The application's faces of the core's `twin_beams` problem (see [`crate::problems`]): the core's
+//! folder re-exported whole, so `crate::problems::twin_beams::...` keeps naming the same items.
+
+pub use microslip_core::problems::twin_beams::*;
