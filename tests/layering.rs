@@ -497,10 +497,10 @@ fn problem_names() -> Vec<(String, Vec<String>)> {
         }
         let name = folder.file_name().unwrap().to_string_lossy().to_string();
         let mut names = vec![format!("{name}::")];
-        // The registry line `Beam => $crate::problems::twin_beams::TwinBeamsProblem`.
+        // The registry line `Beam => twin_beams::TwinBeamsProblem,`.
         let line = registry
             .lines()
-            .find(|l| l.contains(&format!("::problems::{name}::")) && l.contains("=>"))
+            .find(|l| l.contains(&format!("=> {name}::")))
             .unwrap_or_else(|| panic!("no registry line for `{name}`"));
         let variant = line.split("=>").next().unwrap().trim().to_string();
         for generic in ["ModelKind", "Param", "Inputs", "Model"] {

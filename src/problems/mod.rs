@@ -17,6 +17,11 @@
 
 pub use microslip_core::problems::*;
 
-pub mod lap;
-pub mod plate;
-pub mod twin_beams;
+/// Declares each problem's folder of faces from the registry, so that this file lists none.
+macro_rules! face_folders {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        $($(#[$doc])* pub mod $folder;)+
+    };
+}
+
+microslip_core::with_problems!(face_folders);

@@ -45,7 +45,7 @@
 //!      enum, [`Problem`] (and [`Continuum`] and the other capabilities it has, each handed to
 //!      the erased side by the [`Problem`] method of the same name). Its `State` is
 //!      [`problem::Laws`] of its two law states.
-//! 2. **One registry line** in [`with_problems!`](crate::with_problems): `Cylinder => $crate::problems::cylinder::CylinderProblem,`
+//! 2. **One registry line** in [`with_problems!`](crate::with_problems): `Cylinder => cylinder::CylinderProblem,`
 //!    with its doc comment. [`ModelKind`], [`ModelKind::ALL`], [`ModelKind::problem`] and
 //!    [`Param`] follow from it; [`ByProblem`] grows a slot.
 //! 3. **While the enums last**, a variant in [`Inputs`](inputs::Inputs) and
@@ -141,7 +141,7 @@ pub struct Description {
 /// missing from `ALL` (which would index past [`ByProblem`]'s slots), without a description or
 /// without a parameter type cannot be written.
 macro_rules! problem_list {
-    ($($(#[$doc:meta])* $variant:ident => $problem:path),+ $(,)?) => {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
         /// Which benchmark a parameter set describes.
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
         pub enum ModelKind {
@@ -157,12 +157,12 @@ macro_rules! problem_list {
             /// the kind.
             pub fn problem(self) -> &'static dyn AnyProblem {
                 match self {
-                    $(ModelKind::$variant => &$problem),+
+                    $(ModelKind::$variant => &$folder::$problem),+
                 }
             }
         }
 
-        $(impl problem::Registered for $problem {
+        $(impl problem::Registered for $folder::$problem {
             const KIND: ModelKind = ModelKind::$variant;
         })+
 
@@ -170,7 +170,7 @@ macro_rules! problem_list {
         /// One variant per problem, holding that problem's [`Problem::Key`].
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
         pub enum Param {
-            $($(#[$doc])* $variant(<$problem as Problem>::Key)),+
+            $($(#[$doc])* $variant(<$folder::$problem as Problem>::Key)),+
         }
 
         impl Param {
@@ -191,22 +191,26 @@ macro_rules! problem_list {
     };
 }
 
-/// **The registry**: the one list of problems, a line each (`Variant => its type`), which every
-/// per-problem type of both crates is generated from. It hands the list to the macro it is
+/// **The registry**: the one list of problems, a line each (`Variant => folder::ItsType`), which
+/// every per-problem type of both crates is generated from. It hands the list to the macro it is
 /// given: `with_problems!(problem_list)` below writes [`ModelKind`] and [`Param`]; a layer above
 /// the core (a chart, a report, a deck) writes its own dispatch over every problem the same way,
-/// from the same list, so that no file but this one lists the problems and a new problem is
-/// one line here. The callback receives `$(#[doc] Variant => path::to::ProblemType),+`.
+/// from the same list, so that no file but this one lists the problems and a new problem is one
+/// line here. The callback receives `$($(#[doc])* Variant => folder::ProblemType),+`: the
+/// folder is the problem's module in `problems` (in the core, and in the application, whose
+/// `problems` re-exports the core's and adds each problem's faces), so both crates name the type
+/// as `crate::problems::$folder::$problem` and the application declares its folders from it.
 ///
 /// # Examples
 /// ```
 /// // Count the problems by their type, written once for every problem.
-/// macro_rules! count {
-///     ($($(#[$doc:meta])* $variant:ident => $problem:path),+ $(,)?) => {
-///         [$(<$problem as microslip_core::problems::Problem>::INFO.key),+]
+/// macro_rules! keys {
+///     ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+///         [$(<microslip_core::problems::$folder::$problem as
+///             microslip_core::problems::Problem>::INFO.key),+]
 ///     };
 /// }
-/// let keys = microslip_core::with_problems!(count);
+/// let keys = microslip_core::with_problems!(keys);
 /// assert_eq!(keys.len(), microslip_core::problems::ModelKind::ALL.len());
 /// assert_eq!(keys[0], "beam");
 /// ```
@@ -215,11 +219,11 @@ macro_rules! with_problems {
     ($callback:ident) => {
         $callback! {
             /// Twin cantilever beams (paper section 2.1).
-            Beam => $crate::problems::twin_beams::TwinBeamsProblem,
+            Beam => twin_beams::TwinBeamsProblem,
             /// Squeezed plate (paper section 2.2).
-            Plate => $crate::problems::plate::SqueezedPlateProblem,
+            Plate => plate::SqueezedPlateProblem,
             /// Clamped double-lap joint (issue 24).
-            Lap => $crate::problems::lap::LapJointProblem,
+            Lap => lap::LapJointProblem,
         }
     };
 }
