@@ -1,6 +1,9 @@
 //! `compare`: an FE code's results against the closed forms, with a verdict.
 
 use super::*;
+use crate::problems::lap::LapJointProblem;
+use crate::problems::plate::SqueezedPlateProblem;
+use crate::problems::twin_beams::TwinBeamsProblem;
 
 pub(super) fn run_compare(
     out: &mut impl Write,
@@ -34,7 +37,11 @@ pub(super) fn run_compare(
                 let joint = match &loaded.header {
                     Some(header) => header.model()?.into_lap().map_err(deck_of_other_model)?.0,
                     // The FE forces are compared, not the preset's F.
-                    None => load_lap_structure(inputs, "compare lap")?.1,
+                    None => {
+                        load_problem::<LapJointProblem>(inputs, "compare lap", Load::Unused)?
+                            .1
+                            .joint
+                    }
                 };
                 let compared = fe::compare::compare_lap(
                     &joint,
@@ -67,7 +74,11 @@ pub(super) fn run_compare(
             let beams = match &loaded.header {
                 Some(header) => header.model()?.into_beams().map_err(deck_of_other_model)?.0,
                 // A CSV has no header: the parameters come from the flags.
-                None => load_beams_structure(inputs, "compare beam")?.1,
+                None => {
+                    load_problem::<TwinBeamsProblem>(inputs, "compare beam", Load::Unused)?
+                        .1
+                        .beams
+                }
             };
             let comparison =
                 fe::compare::compare_beams(&beams, &loaded.points, loaded.interface_mesh.as_ref());
@@ -87,7 +98,9 @@ pub(super) fn run_compare(
                 }
                 let plate = match &loaded.header {
                     Some(header) => header.model()?.into_plate().map_err(deck_of_other_model)?,
-                    None => load_plate(inputs, "compare plate")?.1,
+                    None => {
+                        load_problem::<SqueezedPlateProblem>(inputs, "compare plate", Load::Used)?.1
+                    }
                 };
                 rows.extend(fe::compare::compare_plate(
                     &plate,

@@ -1,6 +1,9 @@
 //! `cycle`: hysteresis loops under a cyclic load.
 
 use super::*;
+use crate::TipForce;
+use crate::problems::lap::LapJointProblem;
+use crate::problems::twin_beams::TwinBeamsProblem;
 
 pub(super) fn run_cycle(
     out: &mut impl Write,
@@ -16,7 +19,7 @@ pub(super) fn run_cycle(
     };
     curves::check_points(points).map_err(points_error)?;
     // The amplitude is cycled, not the preset's F.
-    let (name, model) = load_any_structure(inputs, ModelKind::Beam)?;
+    let (name, model) = load_any_structure(inputs, DEFAULT_PROBLEM)?;
     let beams = match model {
         Model::Beam { beams, .. } => beams,
         Model::Lap { joint, .. } => {

@@ -1,6 +1,8 @@
 //! `deck` and `bench`: writing an FE deck and running an external solver on it.
 
 use super::*;
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
+use crate::{TipForce, TwinBeams};
 
 /// The deck `deck` describes for `model`, as text. `command` names the subcommand in errors.
 pub(super) fn build_deck(

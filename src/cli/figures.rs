@@ -19,7 +19,7 @@ pub(super) fn run_figures(
     // Every model is loaded before the folder is made: a bad preset leaves nothing behind.
     let mut figures = Vec::new();
     let intro = if !flags.is_empty() {
-        let (name, model) = load_any(inputs, ModelKind::Beam)?;
+        let (name, model) = load_any(inputs, DEFAULT_PROBLEM)?;
         let bench = figure::Bench {
             preset: name,
             values: figure::parameter_caption(&model.inputs()),

@@ -1,6 +1,9 @@
 //! `fit`: mu and K_T from a measured curve, with progress on stderr.
 
 use super::*;
+use crate::problems::BeamParam;
+use crate::problems::lap::LapJointProblem;
+use crate::problems::twin_beams::TwinBeamsProblem;
 
 /// `--fix` values: (mu, K_T). Only those two are fitted, so only they can be held.
 pub(super) fn parse_fixed(fixed: &[String]) -> Result<(Option<f64>, Option<f64>), CliError> {
@@ -18,6 +21,26 @@ pub(super) fn parse_fixed(fixed: &[String]) -> Result<(Option<f64>, Option<f64>)
     Ok((mu, kt))
 }
 
+/// `fit beam` and `fit lap`: the problem is the subcommand's.
+pub(super) fn run_fit_command(out: &mut impl Write, command: &FitCommand) -> Result<(), CliError> {
+    match command {
+        FitCommand::Beam {
+            data,
+            inputs,
+            fixed,
+            weights,
+            format,
+        } => run_fit(out, ModelKind::Beam, data, inputs, fixed, *weights, *format),
+        FitCommand::Lap {
+            data,
+            inputs,
+            fixed,
+            weights,
+            format,
+        } => run_fit(out, ModelKind::Lap, data, inputs, fixed, *weights, *format),
+    }
+}
+
 pub(super) fn run_fit(
     out: &mut impl Write,
     kind: ModelKind,
@@ -31,11 +54,13 @@ pub(super) fn run_fit(
     let (name, structure) = match kind {
         ModelKind::Lap => {
             // The measured forces are fitted, not the preset's F.
-            let (name, joint) = load_lap_structure(inputs, "fit lap")?;
+            let (name, model) = load_problem::<LapJointProblem>(inputs, "fit lap", Load::Unused)?;
+            let joint = model.joint;
             (name, fit::Structure::Lap(joint.params()))
         }
         ModelKind::Beam | ModelKind::Plate => {
-            let (name, beams) = load_beams_structure(inputs, "fit beam")?;
+            let (name, model) = load_problem::<TwinBeamsProblem>(inputs, "fit beam", Load::Unused)?;
+            let beams = model.beams;
             (name, fit::Structure::Beam(beams.params()))
         }
     };

@@ -1,6 +1,8 @@
 //! `kt`: the FE codes' default K_T and the tolerance K_T needs.
 
 use super::*;
+use crate::problems::lap::LapJointProblem;
+use crate::problems::twin_beams::TwinBeamsProblem;
 
 /// The force range of `kt --tolerance`: `--from` and `--to` (each the model's force when not
 /// given), accepted forces, in order.
@@ -36,7 +38,7 @@ pub(super) fn run_kt_tolerance(
 ) -> Result<(), CliError> {
     use crate::study::tolerance::{self, parse_tolerance};
     let tol = parse_tolerance(tolerance).map_err(|e| CliError::Invalid(e.to_string()))?;
-    let (name, model) = load_any(inputs, ModelKind::Beam)?;
+    let (name, model) = load_any(inputs, DEFAULT_PROBLEM)?;
     let element = element_size(element, &model)?;
     let answer = match model {
         Model::Beam { beams, force } => {
@@ -110,7 +112,7 @@ pub(super) fn run_kt(
     nu: Option<f64>,
     format: ReportFormat,
 ) -> Result<(), CliError> {
-    let (name, model) = load_any(inputs, ModelKind::Beam)?;
+    let (name, model) = load_any(inputs, DEFAULT_PROBLEM)?;
     let data = model.interface();
     let element = element_size(element, &model)?;
     let normal = match kn {

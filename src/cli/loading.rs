@@ -99,64 +99,18 @@ pub(super) fn load_for(
     apply_and_validate(args, name, preset, load)
 }
 
-/// The twin beams and tip force of `args` (a preset of another problem is refused by name).
-pub(super) fn load_beams(
+/// The typed model of problem `P` from `args` (a preset of another problem is refused by name),
+/// validated with or without its load ([`Load`]): what a command written for one problem's
+/// types (its report, its deck, its comparison) starts from.
+pub(super) fn load_problem<P: Problem + Registered>(
     args: &InputArgs,
     command: &str,
-) -> Result<(String, TwinBeams, TipForce), CliError> {
-    let (name, model) = load(args, ModelKind::Beam, command)?;
-    let (beams, force) = model
-        .into_beams()
-        .map_err(|found| wrong_model(args, found, ModelKind::Beam, command))?;
-    Ok((name, beams, force))
-}
-
-/// The squeezed plate of `args` (a preset of another problem is refused by name).
-pub(super) fn load_plate(
-    args: &InputArgs,
-    command: &str,
-) -> Result<(String, SqueezedPlate), CliError> {
-    let (name, model) = load(args, ModelKind::Plate, command)?;
-    let plate = model
-        .into_plate()
-        .map_err(|found| wrong_model(args, found, ModelKind::Plate, command))?;
-    Ok((name, plate))
-}
-
-/// The lap joint and force of `args` (a preset of another problem is refused by name).
-pub(super) fn load_lap(
-    args: &InputArgs,
-    command: &str,
-) -> Result<(String, LapJoint, JointForce), CliError> {
-    let (name, model) = load(args, ModelKind::Lap, command)?;
-    let (joint, force) = model
-        .into_lap()
-        .map_err(|found| wrong_model(args, found, ModelKind::Lap, command))?;
-    Ok((name, joint, force))
-}
-
-/// The lap joint of `args` for a command that does not use its F ([`Load::Unused`]).
-pub(super) fn load_lap_structure(
-    args: &InputArgs,
-    command: &str,
-) -> Result<(String, LapJoint), CliError> {
-    let (name, model) = load_for(args, ModelKind::Lap, command, Load::Unused)?;
-    let (joint, _) = model
-        .into_lap()
-        .map_err(|found| wrong_model(args, found, ModelKind::Lap, command))?;
-    Ok((name, joint))
-}
-
-/// The twin beams of `args` for a command that does not use their F ([`Load::Unused`]).
-pub(super) fn load_beams_structure(
-    args: &InputArgs,
-    command: &str,
-) -> Result<(String, TwinBeams), CliError> {
-    let (name, model) = load_for(args, ModelKind::Beam, command, Load::Unused)?;
-    let (beams, _) = model
-        .into_beams()
-        .map_err(|found| wrong_model(args, found, ModelKind::Beam, command))?;
-    Ok((name, beams))
+    load: Load,
+) -> Result<(String, P::Model), CliError> {
+    let (name, model) = load_for(args, P::KIND, command, load)?;
+    let typed =
+        P::from_model(&model).ok_or_else(|| wrong_model(args, model.kind(), P::KIND, command))?;
+    Ok((name, typed))
 }
 
 /// `cycle` or `sweep cycle` given the plate, which has no load to cycle.
@@ -231,21 +185,8 @@ pub(super) fn apply_and_validate(
     // is 3000 leaves the preset as it is, and saying otherwise sends users looking for a change.
     let set_changed = inputs != preset.inputs;
     let before_theory = inputs;
-    if let Some(theory) = &args.beam_theory {
-        let theory = BeamTheory::parse(theory).map_err(|e| CliError::Theory(e.to_string()))?;
-        match &mut inputs {
-            Inputs::Beam { structure, .. } => structure.theory = theory,
-            Inputs::Plate(_) => {
-                return Err(CliError::Theory(
-                    "--beam-theory applies to the twin beams, not the plate".to_string(),
-                ));
-            }
-            Inputs::Lap { .. } => {
-                return Err(CliError::Theory(
-                    "--beam-theory applies to the twin beams, not the lap joint".to_string(),
-                ));
-            }
-        }
+    if let Some(text) = &args.beam_theory {
+        apply_choice(&mut inputs, "beam_theory", text)?;
     }
     let theory_changed = inputs != before_theory;
     let name = match (set_changed, theory_changed) {
@@ -259,6 +200,28 @@ pub(super) fn apply_and_validate(
         Load::Unused => inputs.validate_without_load()?,
     };
     Ok((name, model))
+}
+
+/// Sets the problem's setting `key` (a name, not a number: `beam_theory`) from its flag
+/// (`--beam-theory`, the key with `-` for `_`), through the registry; refused, naming whose
+/// setting it is, for the inputs of a problem without it.
+fn apply_choice(inputs: &mut Inputs, key: &str, text: &str) -> Result<(), CliError> {
+    let Some(choice) = preset::choice(key) else {
+        return Ok(());
+    };
+    match choice.set(inputs, text) {
+        Some(set) => set.map_err(|e| CliError::Theory(e.to_string())),
+        None => {
+            // The one-line refusal leaves out the preset's parenthesis (why it has none).
+            let refused = inputs.kind().problem().refused_as();
+            let model = refused.split(" (").next().unwrap_or(refused);
+            Err(CliError::Theory(format!(
+                "--{} applies to {}, not {model}",
+                key.replace('_', "-"),
+                choice.owner()
+            )))
+        }
+    }
 }
 
 /// Checks a flag that is not a model parameter against `domain`.

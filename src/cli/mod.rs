@@ -27,11 +27,8 @@ use crate::kernel::params::{Compact, Domain, ParamError, Unit, parse_number};
 use crate::numeric::{MeshDensity, NumericError};
 use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::problems::inputs::{Inputs, Model};
-use crate::problems::lap::LapJointProblem;
-use crate::problems::lap::closed_form::{JointForce, LapJoint};
-use crate::problems::twin_beams::TwinBeamsProblem;
-use crate::problems::twin_beams::closed_form::BeamTheory;
-use crate::problems::{BeamParam, LapParam, ModelKind, Param, PlateParam, UnknownParam};
+use crate::problems::problem::Registered;
+use crate::problems::{ModelKind, Param, Problem, UnknownParam};
 use crate::report::figure::{self, FigureError};
 use crate::report::rows::{BeamRow, CycleRow, LapLoopRow, LapRow, LoopRow, PlateRow};
 use crate::report::table::{TableFormat, write_json, write_table, write_table_after};
@@ -41,7 +38,6 @@ use crate::study::load;
 use crate::study::target::{Target, TargetError, solve_for_target};
 use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
-use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 mod args;
 mod compare;
@@ -123,6 +119,10 @@ fn set_help() -> String {
     format!("Set a parameter, e.g. KT=120 ({})", ModelKind::key_docs())
 }
 
+/// The problem a command that takes any problem opens without --preset (or --model): the
+/// registry's first, the paper's twin beams.
+const DEFAULT_PROBLEM: ModelKind = ModelKind::ALL[0];
+
 /// Parses the process arguments and runs; the whole binary.
 pub fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
@@ -195,31 +195,12 @@ fn report_clap_error(error: &clap::Error) -> ExitCode {
 pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
     match &cli.command {
         None | Some(Command::Report) => out.write_all(report::paper_report().as_bytes())?,
-        Some(Command::Beam(args)) => {
-            let (name, beams, force) = load_beams(&args.inputs, "beam")?;
-            match args.format {
-                ReportFormat::Text => out.write_all(text::beam(&name, &beams, force).as_bytes())?,
-                ReportFormat::Json => write_json(out, &json::beam(&name, &beams, force))?,
-            }
-        }
+        Some(Command::Beam(args)) => run_beam_point(out, args)?,
         Some(Command::Plate(args)) => run_plate_point(out, args)?,
         Some(Command::Sweep(args)) => run_sweep(out, args)?,
         Some(Command::Lap(args)) => run_lap_point(out, args)?,
         Some(Command::Solve(args)) => run_solve(out, args)?,
-        Some(Command::Fit(FitCommand::Beam {
-            data,
-            inputs,
-            fixed,
-            weights,
-            format,
-        })) => run_fit(out, ModelKind::Beam, data, inputs, fixed, *weights, *format)?,
-        Some(Command::Fit(FitCommand::Lap {
-            data,
-            inputs,
-            fixed,
-            weights,
-            format,
-        })) => run_fit(out, ModelKind::Lap, data, inputs, fixed, *weights, *format)?,
+        Some(Command::Fit(command)) => run_fit_command(out, command)?,
         Some(Command::Kt {
             inputs,
             element_size,

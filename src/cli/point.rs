@@ -1,13 +1,28 @@
 //! One state of a problem: `beam`, `plate` and `lap` reports (text or JSON).
 
 use super::*;
+use crate::problems::lap::LapJointProblem;
+use crate::problems::plate::SqueezedPlateProblem;
+use crate::problems::twin_beams::TwinBeamsProblem;
+
+/// `beam`: the twin beams at their tip force.
+pub(super) fn run_beam_point(out: &mut impl Write, args: &PointArgs) -> Result<(), CliError> {
+    let (name, model) = load_problem::<TwinBeamsProblem>(&args.inputs, "beam", Load::Used)?;
+    match args.format {
+        ReportFormat::Text => {
+            out.write_all(text::beam(&name, &model.beams, model.force).as_bytes())?
+        }
+        ReportFormat::Json => write_json(out, &json::beam(&name, &model.beams, model.force))?,
+    }
+    Ok(())
+}
 
 pub(super) fn run_plate_point(out: &mut impl Write, args: &PlatePointArgs) -> Result<(), CliError> {
     let PlatePointArgs {
         point: args,
         continuum,
     } = args;
-    let (name, plate) = load_plate(&args.inputs, "plate")?;
+    let (name, plate) = load_problem::<SqueezedPlateProblem>(&args.inputs, "plate", Load::Used)?;
     let solved = (*continuum
         || plate.validity().validity != crate::kernel::validity::Validity::Holds)
         .then(|| {
@@ -33,7 +48,8 @@ pub(super) fn run_lap_point(out: &mut impl Write, args: &LapPointArgs) -> Result
         point: args,
         continuum,
     } = args;
-    let (name, joint, force) = load_lap(&args.inputs, "lap")?;
+    let (name, model) = load_problem::<LapJointProblem>(&args.inputs, "lap", Load::Used)?;
+    let (joint, force) = (model.joint, model.force);
     let solved = (*continuum
         || joint.validity(force).validity != crate::kernel::validity::Validity::Holds)
         .then(|| {

@@ -1,6 +1,9 @@
 //! `sweep`: tables over one parameter.
 
 use super::*;
+use crate::problems::lap::LapJointProblem;
+use crate::problems::twin_beams::TwinBeamsProblem;
+use crate::problems::{BeamParam, LapParam, PlateParam};
 
 /// `microslip sweep ...`: the generic sweep, or the alias a subcommand names.
 pub(super) fn run_sweep(out: &mut impl Write, args: &SweepArgs) -> Result<(), CliError> {
@@ -27,7 +30,7 @@ fn default_vary(kind: ModelKind) -> Option<Param> {
 /// from --model or the preset; the same tables, bytes and refusals as the alias of that problem
 /// (both end in [`write_sweep`]).
 fn run_generic_sweep(out: &mut impl Write, args: &GenericSweepArgs) -> Result<(), CliError> {
-    let (name, preset) = resolve_preset(&args.inputs, args.model.unwrap_or(ModelKind::Beam))?;
+    let (name, preset) = resolve_preset(&args.inputs, args.model.unwrap_or(DEFAULT_PROBLEM))?;
     let kind = preset.inputs.kind();
     if let Some(model) = args.model
         && model != kind
@@ -216,7 +219,7 @@ fn run_cycle_sweep(out: &mut impl Write, args: &CycleSweepArgs) -> Result<(), Cl
         format,
     } = args;
     let amplitudes = curves::force_samples(*from, *to, *points).map_err(force_range_error)?;
-    match load_any_structure(inputs, ModelKind::Beam)?.1 {
+    match load_any_structure(inputs, DEFAULT_PROBLEM)?.1 {
         Model::Beam { beams, .. } => {
             let rows = load::cycle_sweep::<TwinBeamsProblem>(beams, amplitudes)
                 .map_err(force_range_error)?;

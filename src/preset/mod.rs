@@ -22,8 +22,8 @@ use crate::kernel::params::ParamError;
 #[cfg(any(test, feature = "app"))]
 use crate::problems::ModelKind;
 use crate::problems::UnknownParam;
+use crate::problems::choice::{AnyChoice, ChoiceError};
 use crate::problems::inputs::Inputs;
-use crate::problems::twin_beams::closed_form::BeamTheoryError;
 
 pub use parse::apply_assignment;
 /// The TUI's value field parses as `--set` and `:` do (the same refusals, the same range).
@@ -119,15 +119,18 @@ pub enum PresetError {
     /// A missing or unknown `model`.
     #[error("{0}")]
     Model(String),
-    /// A bad `beam_theory`.
+    /// A bad value of a problem's setting that is a name (`beam_theory`).
     #[error(transparent)]
-    Theory(#[from] BeamTheoryError),
-    /// `beam_theory` in a preset of a model without bending beams.
-    #[error("{key} applies to the twin beams, not {model}")]
-    TheoryNotApplicable {
+    Choice(#[from] ChoiceError),
+    /// A problem's setting (`beam_theory`) in a preset of a problem without it.
+    #[error("{key} applies to {owner}, not {model}")]
+    ChoiceNotApplicable {
         /// The key given (`beam_theory`).
         key: &'static str,
-        /// The model it was given to, with why it has no beam theory where that helps.
+        /// The problem it belongs to ([`AnyChoice::owner`]).
+        owner: &'static str,
+        /// The problem it was given to, with why it has no such setting where that helps
+        /// ([`crate::problems::Problem::REFUSED_AS`]).
         model: &'static str,
     },
     /// A value out of range.
@@ -210,6 +213,17 @@ const BUNDLED: &[(&str, &str)] = &[
         include_str!("../../presets/lap-aluminium.toml"),
     ),
 ];
+
+/// The setting that is a name (not a number) of any problem whose preset key is `key`
+/// (`beam_theory`), found through the registry: presets and the command line set it without
+/// knowing whose it is.
+pub fn choice(key: &str) -> Option<&'static dyn AnyChoice> {
+    crate::problems::ModelKind::ALL
+        .iter()
+        .flat_map(|kind| kind.problem().choices())
+        .copied()
+        .find(|choice| choice.key() == key)
+}
 
 /// The bundled preset that opens a model by default (the paper's data set).
 #[cfg(any(test, feature = "app"))]

@@ -9,7 +9,6 @@ use toml::Spanned;
 use super::{Located, Preset, PresetError, PresetSource};
 use crate::kernel::params::parse_number;
 use crate::problems::inputs::Inputs;
-use crate::problems::twin_beams::closed_form::BeamTheory;
 use crate::problems::{ModelKind, Param};
 
 /// Applies `KEY=VALUE` as typed on the command line.
@@ -57,9 +56,6 @@ pub(crate) fn parse_value(param: Param, text: &str) -> Result<f64, PresetError> 
     }
     Ok(number)
 }
-
-/// The preset key of the twin beams' [`BeamTheory`].
-pub(crate) const THEORY_KEY: &str = "beam_theory";
 
 /// 1-based line of a byte offset.
 fn line_at(text: &str, offset: usize) -> usize {
@@ -145,27 +141,27 @@ impl Preset {
                 text: value.to_string(),
                 allowed,
             };
-            let result = match name_of_key {
-                "model" => Ok(()),
-                // Not a number: which beam theory the deflection uses.
-                THEORY_KEY => match (&mut inputs, value.as_str()) {
-                    (Inputs::Beam { structure, .. }, Some(text)) => BeamTheory::parse(text)
-                        .map(|theory| structure.theory = theory)
-                        .map_err(PresetError::Theory),
-                    (Inputs::Beam { .. }, None) => Err(PresetError::NotAString {
+            let choice = super::choice(name_of_key);
+            let result = match (name_of_key, choice) {
+                ("model", _) => Ok(()),
+                // Not a number: a setting that takes a name (the beams' theory), which the
+                // problem it belongs to reads.
+                (_, Some(choice)) => match value.as_str() {
+                    _ if choice.get(&inputs).is_none() => Err(PresetError::ChoiceNotApplicable {
+                        key: choice.key(),
+                        owner: choice.owner(),
+                        model: kind.problem().refused_as(),
+                    }),
+                    Some(text) => choice
+                        .set(&mut inputs, text)
+                        .unwrap_or(Ok(()))
+                        .map_err(PresetError::Choice),
+                    None => Err(PresetError::NotAString {
                         key: name_of_key.to_string(),
                         text: value.to_string(),
                     }),
-                    (Inputs::Plate(_), _) => Err(PresetError::TheoryNotApplicable {
-                        key: THEORY_KEY,
-                        model: "the plate",
-                    }),
-                    (Inputs::Lap { .. }, _) => Err(PresetError::TheoryNotApplicable {
-                        key: THEORY_KEY,
-                        model: "the lap joint (its plates are bars: no bending)",
-                    }),
                 },
-                "description" => match value.as_str() {
+                ("description", None) => match value.as_str() {
                     Some(text) => {
                         description = text.to_string();
                         Ok(())
@@ -175,7 +171,7 @@ impl Preset {
                         text: value.to_string(),
                     }),
                 },
-                _ => kind
+                (_, None) => kind
                     .param(name_of_key)
                     .map_err(PresetError::from)
                     .and_then(|param| {
@@ -358,6 +354,33 @@ mod tests {
         assert_eq!(
             preset.inputs.get(Param::Plate(PlateParam::Stiffness)),
             Some(10.0)
+        );
+    }
+
+    #[test]
+    fn a_beam_theory_is_read_for_the_beams_and_refused_for_the_others_with_why() {
+        let text = "model = \"beam\"\nbeam_theory = \"timoshenko\"\n";
+        let preset = Preset::parse(text, "x", PresetSource::Bundled).unwrap();
+        assert!(preset.inputs != Inputs::paper(ModelKind::Beam));
+        let refused = |text: &str| {
+            Preset::parse(text, "x", PresetSource::Bundled).unwrap_err()[0].to_string()
+        };
+        assert_eq!(
+            refused("model = \"beam\"\nbeam_theory = \"x\"\n"),
+            "line 2: invalid beam theory 'x': must be \"euler-bernoulli\" or \"timoshenko\""
+        );
+        assert_eq!(
+            refused("model = \"beam\"\nbeam_theory = 3\n"),
+            "line 2: invalid value '3' for beam_theory: must be a string, in double quotes"
+        );
+        assert_eq!(
+            refused("model = \"plate\"\nbeam_theory = \"timoshenko\"\n"),
+            "line 2: beam_theory applies to the twin beams, not the plate"
+        );
+        assert_eq!(
+            refused("model = \"lap\"\nbeam_theory = 3\n"),
+            "line 2: beam_theory applies to the twin beams, not the lap joint (its plates are \
+             bars: no bending)"
         );
     }
 }

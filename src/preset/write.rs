@@ -10,13 +10,16 @@ pub fn to_toml(inputs: &Inputs, description: &str) -> String {
     let mut text = String::from("# microslip preset. Units: mm, N, MPa; KT in MPa/mm.\n");
     let _ = writeln!(text, "description = {}", toml::Value::from(description));
     let _ = writeln!(text, "model = \"{}\"", inputs.kind().name());
-    if let Inputs::Beam { structure, .. } = inputs {
-        let _ = writeln!(
-            text,
-            "{} = \"{}\"  # deflection: euler-bernoulli (the paper's) or timoshenko",
-            super::parse::THEORY_KEY,
-            structure.theory.key()
-        );
+    // The settings that take a name (the beams' theory), before the numbers.
+    for choice in inputs.kind().problem().choices() {
+        if let Some(value) = choice.get(inputs) {
+            let _ = writeln!(
+                text,
+                "{} = \"{value}\"  # {}",
+                choice.key(),
+                choice.comment()
+            );
+        }
     }
     for &param in inputs.kind().params() {
         let spec = param.spec();

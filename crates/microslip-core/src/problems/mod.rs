@@ -87,6 +87,7 @@ macro_rules! param_list {
     }};
 }
 
+pub mod choice;
 pub mod inputs;
 pub mod lap;
 pub mod load_driven;

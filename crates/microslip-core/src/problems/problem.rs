@@ -18,6 +18,7 @@ use thiserror::Error;
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::kernel::regime::Regime;
 use crate::numeric::NumericError;
+use crate::problems::choice::AnyChoice;
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::AnyLoadDriven;
 use crate::problems::{Description, ModelKind, Param, Quantity, Solution, UnknownParam};
@@ -163,6 +164,17 @@ pub trait Problem: Send + Sync + Sized + 'static {
     fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
         None
     }
+
+    /// Its settings that are names, not numbers ([`AnyChoice`]: the beams' theory), which
+    /// presets and the command line set through the registry; none by default.
+    fn choices() -> &'static [&'static dyn AnyChoice] {
+        &[]
+    }
+
+    /// How a refusal names the problem when it is given another problem's setting (`beam_theory`
+    /// for the plate: "... not the plate"), with why it has none in parentheses where that helps
+    /// (a one-line flag refusal keeps the part before them). By default its title.
+    const REFUSED_AS: &'static str = Self::INFO.title;
 
     /// Bridge to the [`Inputs`] enum while it exists.
     fn to_inputs(params: Self::Params) -> Inputs;
@@ -394,6 +406,10 @@ pub trait AnyProblem: Send + Sync {
     /// Its force axis, where it is driven by a load: `None` answers "is this problem
     /// load-driven?" without a `match` on its kind.
     fn load_driven(&self) -> Option<&'static dyn AnyLoadDriven>;
+    /// Its settings that are names ([`Problem::choices`]).
+    fn choices(&self) -> &'static [&'static dyn AnyChoice];
+    /// [`Problem::REFUSED_AS`].
+    fn refused_as(&self) -> &'static str;
 
     /// [`Inputs`] of this problem at `values`.
     ///
@@ -459,6 +475,14 @@ impl<P: Problem + Registered> AnyProblem for P {
 
     fn load_driven(&self) -> Option<&'static dyn AnyLoadDriven> {
         P::load_driven()
+    }
+
+    fn choices(&self) -> &'static [&'static dyn AnyChoice] {
+        P::choices()
+    }
+
+    fn refused_as(&self) -> &'static str {
+        P::REFUSED_AS
     }
 
     fn inputs_at(&self, values: &[f64]) -> Result<Inputs, ProblemError> {

@@ -46,6 +46,7 @@ impl ParamKey for LapParam {
 
 impl Problem for LapJointProblem {
     const INFO: &'static Description = &DESCRIPTION;
+    const REFUSED_AS: &'static str = "the lap joint (its plates are bars: no bending)";
     type Key = LapParam;
     type Params = LapInputs;
     type Model = LapModel;

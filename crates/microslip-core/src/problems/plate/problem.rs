@@ -27,6 +27,7 @@ impl ParamKey for PlateParam {
 
 impl Problem for SqueezedPlateProblem {
     const INFO: &'static Description = &DESCRIPTION;
+    const REFUSED_AS: &'static str = "the plate";
     type Key = PlateParam;
     type Params = PlateParams;
     type Model = SqueezedPlate;

@@ -3,6 +3,7 @@
 //! independent finite-element solver. The closed forms and the discretized solver never import
 //! each other (tests/layering.rs checks it), so that their agreement means something.
 
+pub mod choice;
 pub mod closed_form;
 pub mod cycle;
 pub mod discretized;
