@@ -94,8 +94,7 @@ pub enum Command {
         format: CycleFormat,
     },
     /// Identify mu and K_T from a measured deflection curve.
-    #[command(subcommand)]
-    Fit(FitCommand),
+    Fit(FitArgs),
     /// List bundled and user presets with their descriptions.
     Presets,
     /// Cross-check the closed forms against the finite-element solvers; exit 1 above tolerance.
@@ -397,6 +396,63 @@ impl SpacingArgs {
             Spacing::Linear
         }
     }
+}
+
+/// `fit`: the generic fit of any problem with a load (its arguments, when no subcommand is
+/// given), or one of the per-problem subcommands, kept as aliases with their own flags and help.
+/// A subcommand and the generic arguments exclude each other, so `fit beam --help` is what it
+/// was.
+#[derive(Debug, Args)]
+#[command(
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true,
+    subcommand_value_name = "PROBLEM",
+    subcommand_help_heading = "Aliases (one problem each, their own flags)"
+)]
+pub struct FitArgs {
+    #[command(subcommand)]
+    pub(super) command: Option<FitCommand>,
+    #[command(flatten)]
+    pub(super) generic: GenericFitArgs,
+}
+
+/// The arguments of the generic `fit`: the problem comes from --model or the preset.
+#[derive(Debug, Args)]
+pub struct GenericFitArgs {
+    // The help names each problem's response column from the registry (`fit_data_help`).
+    #[arg(value_name = "DATA.csv", required = true, help = fit_data_help())]
+    pub(super) data: Option<PathBuf>,
+    /// The problem (default: the preset's; without --preset, beam). Given with --preset, both
+    /// must name the same problem, one with a load to fit the curve against.
+    #[arg(long, value_parser = model_kind_parser())]
+    pub(super) model: Option<ModelKind>,
+    #[command(flatten)]
+    pub(super) inputs: InputArgs,
+    /// Hold a parameter at a value instead of fitting it: mu=0.3 or KT=600 (repeatable).
+    #[arg(long = "fix", value_name = "KEY=VALUE")]
+    pub(super) fixed: Vec<String>,
+    /// What the standard errors assume about the scatter of the response [default: relative;
+    /// a sigma_mm column in the data gives each point's own, taken as known].
+    #[arg(long, value_enum)]
+    pub(super) weights: Option<WeightsArg>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    pub(super) format: ReportFormat,
+}
+
+/// The help of the generic fit's DATA.csv: the response column of every problem with a load,
+/// as the registry lists them.
+fn fit_data_help() -> String {
+    let columns: Vec<String> = ModelKind::ALL
+        .iter()
+        .filter(|kind| kind.description().load.is_some())
+        .map(|kind| format!("{}_mm ({kind})", kind.description().response_symbol))
+        .collect();
+    format!(
+        "Measurements: CSV with a header naming F_N and the problem's response, {} (other \
+         columns are ignored)",
+        columns.join(" or ")
+    )
 }
 
 /// Fit subcommands.

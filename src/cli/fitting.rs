@@ -21,24 +21,71 @@ pub(super) fn parse_fixed(fixed: &[String]) -> Result<(Option<f64>, Option<f64>)
     Ok((mu, kt))
 }
 
-/// `fit beam` and `fit lap`: the problem is the subcommand's.
-pub(super) fn run_fit_command(out: &mut impl Write, command: &FitCommand) -> Result<(), CliError> {
-    match command {
-        FitCommand::Beam {
+/// `microslip fit ...`: the generic fit, or the alias a subcommand names (whose problem is its
+/// name, read through the registry).
+pub(super) fn run_fit_command(out: &mut impl Write, args: &FitArgs) -> Result<(), CliError> {
+    let (alias, data, inputs, fixed, weights, format) = match &args.command {
+        None => return run_generic_fit(out, &args.generic),
+        Some(FitCommand::Beam {
             data,
             inputs,
             fixed,
             weights,
             format,
-        } => run_fit(out, ModelKind::Beam, data, inputs, fixed, *weights, *format),
-        FitCommand::Lap {
+        }) => ("beam", data, inputs, fixed, weights, format),
+        Some(FitCommand::Lap {
             data,
             inputs,
             fixed,
             weights,
             format,
-        } => run_fit(out, ModelKind::Lap, data, inputs, fixed, *weights, *format),
+        }) => ("lap", data, inputs, fixed, weights, format),
+    };
+    let kind: ModelKind = alias
+        .parse()
+        .map_err(|_| CliError::Usage("fit: an alias that names no problem"))?;
+    run_fit(out, kind, data, inputs, fixed, *weights, *format)
+}
+
+/// `microslip fit DATA.csv [--model M] [--preset P] ...`: the problem comes from --model or the
+/// preset, and must have a load; the same report, bytes and refusals as its alias (`fit lap`).
+fn run_generic_fit(out: &mut impl Write, args: &GenericFitArgs) -> Result<(), CliError> {
+    // clap requires the data without a subcommand.
+    let Some(data) = &args.data else {
+        return Err(CliError::Usage("fit needs DATA.csv"));
+    };
+    let (name, preset) = resolve_preset(&args.inputs, args.model.unwrap_or(DEFAULT_PROBLEM))?;
+    let kind = preset.inputs.kind();
+    if let Some(model) = args.model
+        && model != kind
+    {
+        return Err(CliError::Invalid(format!(
+            "--model {model} and --preset {} disagree: the preset is a {kind} preset; drop \
+             --model, or give a {model} preset",
+            args.inputs.preset.as_deref().unwrap_or_default()
+        )));
     }
+    if kind.description().load.is_none() {
+        let loaded: Vec<&str> = ModelKind::ALL
+            .iter()
+            .filter(|k| k.description().load.is_some())
+            .map(|k| k.name())
+            .collect();
+        return Err(CliError::Invalid(format!(
+            "fit: preset '{name}' is a {kind} preset, which has no load to fit a curve against; \
+             fit takes a {} preset",
+            loaded.join(" or ")
+        )));
+    }
+    run_fit(
+        out,
+        kind,
+        data,
+        &args.inputs,
+        &args.fixed,
+        args.weights,
+        args.format,
+    )
 }
 
 pub(super) fn run_fit(
@@ -51,19 +98,10 @@ pub(super) fn run_fit(
     format: ReportFormat,
 ) -> Result<(), CliError> {
     let (fixed_mu, fixed_kt) = parse_fixed(fixed)?;
-    let (name, structure) = match kind {
-        ModelKind::Lap => {
-            // The measured forces are fitted, not the preset's F.
-            let (name, model) = load_problem::<LapJointProblem>(inputs, "fit lap", Load::Unused)?;
-            let joint = model.joint;
-            (name, fit::Structure::Lap(joint.params()))
-        }
-        ModelKind::Beam | ModelKind::Plate => {
-            let (name, model) = load_problem::<TwinBeamsProblem>(inputs, "fit beam", Load::Unused)?;
-            let beams = model.beams;
-            (name, fit::Structure::Beam(beams.params()))
-        }
-    };
+    // The measured forces are fitted, not the preset's F.
+    let (name, model) = load_for(inputs, kind, &model_command(kind, "fit"), Load::Unused)?;
+    let structure = fit_structure(&model)
+        .ok_or_else(|| wrong_model(inputs, model.kind(), kind, &model_command(kind, "fit")))?;
     let data_error = |reason: String| CliError::Data {
         path: path.display().to_string(),
         reason,
@@ -127,6 +165,15 @@ pub(super) fn run_fit(
         )?,
     }
     Ok(())
+}
+
+/// What a fit of `model` holds fixed (all but mu and K_T); `None` for a problem without a
+/// load-response curve.
+fn fit_structure(model: &Model) -> Option<fit::Structure> {
+    if let Some(lap) = LapJointProblem::from_model(model) {
+        return Some(fit::Structure::Lap(lap.joint.params()));
+    }
+    TwinBeamsProblem::from_model(model).map(|beams| fit::Structure::Beam(beams.beams.params()))
 }
 
 /// A long fit's progress (reading, then fitting) on stderr: shown only when stderr is a terminal (scripts and pipes see

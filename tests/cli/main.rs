@@ -6,6 +6,7 @@ mod decks_and_compare;
 mod domain_and_files;
 mod figures;
 mod fit_kt_cycle;
+mod generic_fit;
 mod generic_sweep;
 mod lap_and_words;
 mod reports;
