@@ -41,9 +41,7 @@ pub(super) fn run_fit_command(out: &mut impl Write, args: &FitArgs) -> Result<()
             format,
         }) => ("lap", data, inputs, fixed, weights, format),
     };
-    let kind: ModelKind = alias
-        .parse()
-        .map_err(|_| CliError::Usage("fit: an alias that names no problem"))?;
+    let kind = alias_problem(alias)?;
     run_fit(out, kind, data, inputs, fixed, *weights, *format)
 }
 

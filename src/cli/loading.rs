@@ -113,6 +113,14 @@ pub(super) fn load_problem<P: Problem + Registered>(
     Ok((name, typed))
 }
 
+/// The problem of a per-problem alias (`sweep beam`, `fit lap`): its name is the problem's key,
+/// read through the registry, so that an alias names no problem's type.
+pub(super) fn alias_problem(alias: &str) -> Result<ModelKind, CliError> {
+    alias
+        .parse()
+        .map_err(|e: crate::problems::UnknownModel| CliError::Invalid(e.to_string()))
+}
+
 /// `cycle` or `sweep cycle` given the plate, which has no load to cycle.
 pub(super) fn plate_has_no_cycle(args: &InputArgs, command: &str) -> CliError {
     CliError::Invalid(format!(

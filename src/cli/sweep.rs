@@ -1,16 +1,30 @@
 //! `sweep`: tables over one parameter.
 
 use super::*;
+use crate::problems::PlateParam;
 use crate::problems::lap::LapJointProblem;
 use crate::problems::twin_beams::TwinBeamsProblem;
-use crate::problems::{BeamParam, LapParam, PlateParam};
 
 /// `microslip sweep ...`: the generic sweep, or the alias a subcommand names.
 pub(super) fn run_sweep(out: &mut impl Write, args: &SweepArgs) -> Result<(), CliError> {
     match &args.command {
         None => run_generic_sweep(out, &args.generic),
-        Some(SweepCommand::Beam(args)) => run_beam_sweep(out, args),
-        Some(SweepCommand::Lap(args)) => run_lap_sweep(out, args),
+        Some(SweepCommand::Beam(args)) => run_load_sweep(
+            out,
+            "beam",
+            (args.vary.as_deref(), args.from, args.to, args.points),
+            &args.spacing,
+            &args.inputs,
+            args.format,
+        ),
+        Some(SweepCommand::Lap(args)) => run_load_sweep(
+            out,
+            "lap",
+            (args.vary.as_deref(), args.from, args.to, args.points),
+            &args.spacing,
+            &args.inputs,
+            args.format,
+        ),
         Some(SweepCommand::Plate(args)) => run_plate_sweep(out, args),
         Some(SweepCommand::Cycle(args)) => run_cycle_sweep(out, args),
     }
@@ -137,36 +151,22 @@ fn write_sweep(
     Ok(())
 }
 
-/// `microslip sweep lap`: over F (rows of the F sweep) or any other parameter.
-fn run_lap_sweep(out: &mut impl Write, args: &LapSweepArgs) -> Result<(), CliError> {
-    let varied: LapParam = args.vary.as_deref().unwrap_or("F").parse()?;
-    let param = Param::Lap(varied);
-    let values = Samples::of_param(
-        param,
-        args.from,
-        args.to,
-        args.points,
-        args.spacing.spacing(param),
-    )
-    .map_err(force_range_error)?;
-    let (_, model) = load(&args.inputs, ModelKind::Lap, "sweep lap")?;
-    write_sweep(out, model, param, values, args.format, force_range_error)
-}
-
-/// `microslip sweep beam`: over F (rows of the F sweep) or any other parameter.
-fn run_beam_sweep(out: &mut impl Write, args: &BeamSweepArgs) -> Result<(), CliError> {
-    let varied: BeamParam = args.vary.as_deref().unwrap_or("F").parse()?;
-    let param = Param::Beam(varied);
-    let values = Samples::of_param(
-        param,
-        args.from,
-        args.to,
-        args.points,
-        args.spacing.spacing(param),
-    )
-    .map_err(force_range_error)?;
-    let (_, model) = load(&args.inputs, ModelKind::Beam, "sweep beam")?;
-    write_sweep(out, model, param, values, args.format, force_range_error)
+/// `microslip sweep beam|lap`: over F (rows of the F sweep) or any other parameter of the
+/// alias's problem (its name, read through the registry).
+fn run_load_sweep(
+    out: &mut impl Write,
+    alias: &str,
+    (vary, from, to, points): (Option<&str>, f64, f64, u64),
+    spacing: &SpacingArgs,
+    inputs: &InputArgs,
+    format: TableFormat,
+) -> Result<(), CliError> {
+    let kind = alias_problem(alias)?;
+    let param = kind.param(vary.unwrap_or("F"))?;
+    let values = Samples::of_param(param, from, to, points, spacing.spacing(param))
+        .map_err(force_range_error)?;
+    let (_, model) = load(inputs, kind, &model_command(kind, "sweep"))?;
+    write_sweep(out, model, param, values, format, force_range_error)
 }
 
 /// `microslip sweep plate`: over K_T (`--kt-from`/`--kt-to`, or the default of `--vary`) or any
