@@ -263,9 +263,10 @@ pub struct PointArgs {
     pub(super) format: ReportFormat,
 }
 
-/// `sweep`: the generic sweep of any problem (its flags, when no subcommand is given), or one of
-/// the per-problem subcommands, kept as aliases with their own flags and help. A subcommand and
-/// the generic flags exclude each other, so `sweep beam --help` is what it was.
+/// A generic command of any problem (its own flags, when no subcommand is given) or one of its
+/// per-problem subcommands, kept as aliases with their own flags and help (`sweep beam`, `fit
+/// lap`). A subcommand and the generic flags exclude each other, so an alias's `--help` is what
+/// it was.
 #[derive(Debug, Args)]
 #[command(
     args_conflicts_with_subcommands = true,
@@ -273,12 +274,15 @@ pub struct PointArgs {
     subcommand_value_name = "PROBLEM",
     subcommand_help_heading = "Aliases (one problem each, their own flags)"
 )]
-pub struct SweepArgs {
+pub struct WithAliases<A: Subcommand, G: Args> {
     #[command(subcommand)]
-    pub(super) command: Option<SweepCommand>,
+    pub(super) command: Option<A>,
     #[command(flatten)]
-    pub(super) generic: GenericSweepArgs,
+    pub(super) generic: G,
 }
+
+/// `sweep`: the generic sweep, or `sweep beam|plate|lap|cycle`.
+pub type SweepArgs = WithAliases<SweepCommand, GenericSweepArgs>;
 
 /// The flags of the generic `sweep`: the problem comes from --model or the preset.
 #[derive(Debug, Args)]
@@ -398,23 +402,8 @@ impl SpacingArgs {
     }
 }
 
-/// `fit`: the generic fit of any problem with a load (its arguments, when no subcommand is
-/// given), or one of the per-problem subcommands, kept as aliases with their own flags and help.
-/// A subcommand and the generic arguments exclude each other, so `fit beam --help` is what it
-/// was.
-#[derive(Debug, Args)]
-#[command(
-    args_conflicts_with_subcommands = true,
-    subcommand_negates_reqs = true,
-    subcommand_value_name = "PROBLEM",
-    subcommand_help_heading = "Aliases (one problem each, their own flags)"
-)]
-pub struct FitArgs {
-    #[command(subcommand)]
-    pub(super) command: Option<FitCommand>,
-    #[command(flatten)]
-    pub(super) generic: GenericFitArgs,
-}
+/// `fit`: the generic fit of any problem with a load, or `fit beam|lap`.
+pub type FitArgs = WithAliases<FitCommand, GenericFitArgs>;
 
 /// The arguments of the generic `fit`: the problem comes from --model or the preset.
 #[derive(Debug, Args)]

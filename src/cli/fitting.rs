@@ -52,17 +52,8 @@ fn run_generic_fit(out: &mut impl Write, args: &GenericFitArgs) -> Result<(), Cl
     let Some(data) = &args.data else {
         return Err(CliError::Usage("fit needs DATA.csv"));
     };
-    let (name, preset) = resolve_preset(&args.inputs, args.model.unwrap_or(DEFAULT_PROBLEM))?;
+    let (name, preset) = resolve_generic(&args.inputs, args.model)?;
     let kind = preset.inputs.kind();
-    if let Some(model) = args.model
-        && model != kind
-    {
-        return Err(CliError::Invalid(format!(
-            "--model {model} and --preset {} disagree: the preset is a {kind} preset; drop \
-             --model, or give a {model} preset",
-            args.inputs.preset.as_deref().unwrap_or_default()
-        )));
-    }
     if kind.description().load.is_none() {
         let loaded: Vec<&str> = ModelKind::ALL
             .iter()

@@ -179,6 +179,26 @@ pub(super) fn resolve_preset(
     Ok((preset.name.clone(), preset))
 }
 
+/// The preset of a generic command (`sweep`, `fit`), whose problem comes from `--model` or the
+/// preset: `--model`'s default preset without `--preset`; both given, they must agree.
+pub(super) fn resolve_generic(
+    args: &InputArgs,
+    model: Option<ModelKind>,
+) -> Result<(String, Preset), CliError> {
+    let (name, preset) = resolve_preset(args, model.unwrap_or(DEFAULT_PROBLEM))?;
+    let kind = preset.inputs.kind();
+    if let Some(model) = model
+        && model != kind
+    {
+        return Err(CliError::Invalid(format!(
+            "--model {model} and --preset {} disagree: the preset is a {kind} preset; drop \
+             --model, or give a {model} preset",
+            args.preset.as_deref().unwrap_or_default()
+        )));
+    }
+    Ok((name, preset))
+}
+
 pub(super) fn apply_and_validate(
     args: &InputArgs,
     name: String,

@@ -44,17 +44,8 @@ fn default_vary(kind: ModelKind) -> Option<Param> {
 /// from --model or the preset; the same tables, bytes and refusals as the alias of that problem
 /// (both end in [`write_sweep`]).
 fn run_generic_sweep(out: &mut impl Write, args: &GenericSweepArgs) -> Result<(), CliError> {
-    let (name, preset) = resolve_preset(&args.inputs, args.model.unwrap_or(DEFAULT_PROBLEM))?;
+    let (name, preset) = resolve_generic(&args.inputs, args.model)?;
     let kind = preset.inputs.kind();
-    if let Some(model) = args.model
-        && model != kind
-    {
-        return Err(CliError::Invalid(format!(
-            "--model {model} and --preset {} disagree: the preset is a {kind} preset; drop \
-             --model, or give a {model} preset",
-            args.inputs.preset.as_deref().unwrap_or_default()
-        )));
-    }
     let param = match (&args.vary, default_vary(kind)) {
         (Some(key), _) => kind.param(key)?,
         (None, Some(param)) => param,

@@ -3,19 +3,9 @@
 
 use super::{failure, stdout_of};
 
-/// The generic sweep and its alias print the same bytes (CSV and JSON) for `args` after the
-/// command words.
+/// The generic sweep and its alias print the same bytes (CSV and JSON).
 fn same_as_alias(generic: &[&str], alias: &[&str]) {
-    for format in ["csv", "json"] {
-        let with = |words: &[&str]| {
-            let mut all = words.to_vec();
-            all.extend(["--format", format]);
-            stdout_of(&all)
-        };
-        let (g, a) = (with(generic), with(alias));
-        assert!(!a.is_empty(), "{alias:?} printed nothing");
-        assert_eq!(g, a, "{generic:?} vs {alias:?} ({format})");
-    }
+    super::same_bytes(generic, alias, &["csv", "json"]);
 }
 
 #[test]

@@ -31,6 +31,21 @@ fn stdout_of(args: &[&str]) -> String {
     String::from_utf8(output.stdout).unwrap()
 }
 
+/// A generic command (`sweep`, `fit`) and its per-problem alias print the same bytes for each
+/// of `formats` (given as `--format F` after the words).
+fn same_bytes(generic: &[&str], alias: &[&str], formats: &[&str]) {
+    for format in formats {
+        let with = |words: &[&str]| {
+            let mut all = words.to_vec();
+            all.extend(["--format", format]);
+            stdout_of(&all)
+        };
+        let (g, a) = (with(generic), with(alias));
+        assert!(!a.is_empty(), "{alias:?} printed nothing");
+        assert_eq!(g, a, "{generic:?} vs {alias:?} ({format})");
+    }
+}
+
 /// Runs a command that must fail: one line on stderr, nothing on stdout, exit code `code`.
 fn failure(args: &[&str], code: i32) -> String {
     let output = microslip().args(args).output().unwrap();
