@@ -39,6 +39,10 @@
 //!      impl, whose `Structure` is the model without its force); its `problem.rs` then writes
 //!      `regime_scale` as `Some(force_scale)` and hands out `LoadDrivenOf::<Self>::NEW` from
 //!      `load_driven()`, and every sweep, cycle, tolerance and load chart serves it;
+//!    - if it has a setting that is a name, not a number (the beams' theory): `choice.rs`, an
+//!      [`AnyChoice`](choice::AnyChoice) handed out by `choices()`, which presets and the
+//!      command line read and write with no edit; a problem whose refusal of another's setting
+//!      needs its own words ("the plate", not its title) writes `REFUSED_AS`;
 //!    - `mod.rs`: its `DESCRIPTION` (key, title, summary, paper preset, parameters through
 //!      `param_list!`, quantities, load) and its `quantity` function;
 //!    - `problem.rs`: the unit struct (`CylinderProblem`) implementing [`ParamKey`] for its key
