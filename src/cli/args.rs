@@ -438,8 +438,8 @@ fn fit_data_help() -> String {
         .map(|kind| format!("{}_mm ({kind})", kind.description().response_symbol))
         .collect();
     format!(
-        "Measurements: CSV with a header naming F_N and the problem's response, {} (other \
-         columns are ignored)",
+        "Measurements: CSV with a header naming F_N and the problem's response column, {}; \
+         other columns are ignored",
         columns.join(" or ")
     )
 }
