@@ -32,11 +32,11 @@ pub(super) fn run_fit(
         ModelKind::Lap => {
             // The measured forces are fitted, not the preset's F.
             let (name, joint) = load_lap_structure(inputs, "fit lap")?;
-            (name, fit::Structure::Lap(joint.params()))
+            (name, fit::Structure::typed::<LapJointProblem>(&joint))
         }
         ModelKind::Beam | ModelKind::Plate => {
             let (name, beams) = load_beams_structure(inputs, "fit beam")?;
-            (name, fit::Structure::Beam(beams.params()))
+            (name, fit::Structure::typed::<TwinBeamsProblem>(&beams))
         }
     };
     let data_error = |reason: String| CliError::Data {
@@ -48,11 +48,11 @@ pub(super) fn run_fit(
         .map_err(|e| data_error(e.to_string()))?;
     let mut reading =
         |done, total| progress.update(Instant::now(), || text::reading_progress(done, total));
-    let data = match structure {
-        fit::Structure::Beam(_) => {
+    let data = match kind {
+        ModelKind::Beam | ModelKind::Plate => {
             crate::measured::parse_measured_with_progress(&contents, &mut reading)
         }
-        fit::Structure::Lap(_) => {
+        ModelKind::Lap => {
             crate::measured::parse_measured_joint_with_progress(&contents, &mut reading)
         }
     };

@@ -18,6 +18,7 @@ use thiserror::Error;
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::kernel::regime::Regime;
 use crate::numeric::NumericError;
+use crate::problems::fittable::AnyFittable;
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::AnyLoadDriven;
 use crate::problems::{Description, ModelKind, Param, Quantity, Solution, UnknownParam};
@@ -161,6 +162,13 @@ pub trait Problem: Send + Sync + Sized + 'static {
     /// ([`LoadDriven`](crate::problems::load_driven::LoadDriven)): how the erased
     /// side finds the capability without specialisation (as [`Problem::continuum`]).
     fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
+        None
+    }
+
+    /// Its fit of mu and K_T to a measured load-response curve, where it has one
+    /// ([`Fittable`](crate::problems::fittable::Fittable)): how the erased side finds the
+    /// capability (as [`Problem::continuum`]).
+    fn fittable() -> Option<&'static dyn AnyFittable> {
         None
     }
 
@@ -394,6 +402,9 @@ pub trait AnyProblem: Send + Sync {
     /// Its force axis, where it is driven by a load: `None` answers "is this problem
     /// load-driven?" without a `match` on its kind.
     fn load_driven(&self) -> Option<&'static dyn AnyLoadDriven>;
+    /// Its fit of mu and K_T to a measured curve, where it has one: `None` answers "can `f`
+    /// fit this problem?" without a `match` on its kind.
+    fn fittable(&self) -> Option<&'static dyn AnyFittable>;
 
     /// [`Inputs`] of this problem at `values`.
     ///
@@ -459,6 +470,10 @@ impl<P: Problem + Registered> AnyProblem for P {
 
     fn load_driven(&self) -> Option<&'static dyn AnyLoadDriven> {
         P::load_driven()
+    }
+
+    fn fittable(&self) -> Option<&'static dyn AnyFittable> {
+        P::fittable()
     }
 
     fn inputs_at(&self, values: &[f64]) -> Result<Inputs, ProblemError> {

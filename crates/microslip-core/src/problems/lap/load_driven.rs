@@ -67,6 +67,13 @@ impl LoadDriven for LapJointProblem {
         model.force
     }
 
+    fn at_force(joint: &LapJoint, force: JointForce) -> LapModel {
+        LapModel {
+            joint: *joint,
+            force,
+        }
+    }
+
     /// A force in the force domain and at most F_gross (no static state beyond, (L6)).
     fn force(joint: &LapJoint, newtons: f64) -> Result<JointForce, ParamError> {
         joint.force(newtons)

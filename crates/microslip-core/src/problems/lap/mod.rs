@@ -7,6 +7,7 @@ pub mod closed_form;
 pub mod continuum;
 pub mod cycle;
 pub mod discretized;
+pub mod fittable;
 pub mod load_driven;
 pub mod params;
 pub mod problem;

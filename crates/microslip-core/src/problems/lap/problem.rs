@@ -8,6 +8,7 @@ use super::continuum::{ContinuumLap, LapContinuumMesh, solve_lap_continuum};
 use super::params::{LapParam, LapParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
+use crate::problems::fittable::{AnyFittable, FittableOf};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
@@ -150,6 +151,10 @@ impl Problem for LapJointProblem {
 
     fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
         Some(&LoadDrivenOf::<LapJointProblem>::NEW)
+    }
+
+    fn fittable() -> Option<&'static dyn AnyFittable> {
+        Some(&FittableOf::<LapJointProblem>::NEW)
     }
 
     fn to_inputs(params: LapInputs) -> Inputs {

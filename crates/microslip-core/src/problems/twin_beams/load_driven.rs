@@ -64,6 +64,13 @@ impl LoadDriven for TwinBeamsProblem {
         model.force
     }
 
+    fn at_force(beams: &TwinBeams, force: TipForce) -> BeamsModel {
+        BeamsModel {
+            beams: *beams,
+            force,
+        }
+    }
+
     /// Any force of the tip force's domain: the beams carry every one (macroslip past F_thre).
     fn force(_beams: &TwinBeams, newtons: f64) -> Result<TipForce, ParamError> {
         TipForce::new(newtons)

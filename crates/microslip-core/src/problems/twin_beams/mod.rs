@@ -6,6 +6,7 @@
 pub mod closed_form;
 pub mod cycle;
 pub mod discretized;
+pub mod fittable;
 pub mod load_driven;
 pub mod params;
 pub mod problem;

@@ -5,6 +5,7 @@ use super::DESCRIPTION;
 use super::closed_form::{CoulombBeams, RegularizedBeams, TipForce, TwinBeams};
 use super::params::{BeamParam, TwinBeamsParams};
 use crate::kernel::params::{ParamError, ParamSpec};
+use crate::problems::fittable::{AnyFittable, FittableOf};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{Laws, ParamKey, Problem};
@@ -117,6 +118,10 @@ impl Problem for TwinBeamsProblem {
 
     fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
         Some(&LoadDrivenOf::<TwinBeamsProblem>::NEW)
+    }
+
+    fn fittable() -> Option<&'static dyn AnyFittable> {
+        Some(&FittableOf::<TwinBeamsProblem>::NEW)
     }
 
     fn to_inputs(params: BeamsInputs) -> Inputs {
