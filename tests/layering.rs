@@ -599,7 +599,6 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "tui/mod.rs",
     "tui/summary.rs",
     "tui/view.rs",
-    "verify.rs",
 ];
 
 #[test]

@@ -87,6 +87,7 @@ macro_rules! param_list {
     }};
 }
 
+pub mod cross_check;
 pub mod fittable;
 pub mod inputs;
 pub mod lap;

@@ -18,6 +18,7 @@ use thiserror::Error;
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::kernel::regime::Regime;
 use crate::numeric::NumericError;
+use crate::problems::cross_check::AnyCrossChecked;
 use crate::problems::fittable::AnyFittable;
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::AnyLoadDriven;
@@ -169,6 +170,12 @@ pub trait Problem: Send + Sync + Sized + 'static {
     /// ([`Fittable`](crate::problems::fittable::Fittable)): how the erased side finds the
     /// capability (as [`Problem::continuum`]).
     fn fittable() -> Option<&'static dyn AnyFittable> {
+        None
+    }
+
+    /// The comparison of its closed forms with its own discretized solver, where it has one
+    /// ([`CrossChecked`](crate::problems::cross_check::CrossChecked)): what `verify` runs.
+    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
         None
     }
 
@@ -405,6 +412,8 @@ pub trait AnyProblem: Send + Sync {
     /// Its fit of mu and K_T to a measured curve, where it has one: `None` answers "can `f`
     /// fit this problem?" without a `match` on its kind.
     fn fittable(&self) -> Option<&'static dyn AnyFittable>;
+    /// Its cross-check against its own discretized solver, where it has one.
+    fn cross_checked(&self) -> Option<&'static dyn AnyCrossChecked>;
 
     /// [`Inputs`] of this problem at `values`.
     ///
@@ -474,6 +483,10 @@ impl<P: Problem + Registered> AnyProblem for P {
 
     fn fittable(&self) -> Option<&'static dyn AnyFittable> {
         P::fittable()
+    }
+
+    fn cross_checked(&self) -> Option<&'static dyn AnyCrossChecked> {
+        P::cross_checked()
     }
 
     fn inputs_at(&self, values: &[f64]) -> Result<Inputs, ProblemError> {

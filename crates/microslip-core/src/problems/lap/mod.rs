@@ -5,6 +5,7 @@
 
 pub mod closed_form;
 pub mod continuum;
+pub mod cross_check;
 pub mod cycle;
 pub mod discretized;
 pub mod fittable;

@@ -8,6 +8,7 @@ use super::continuum::{ContinuumLap, LapContinuumMesh, solve_lap_continuum};
 use super::params::{LapParam, LapParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
+use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
 use crate::problems::fittable::{AnyFittable, FittableOf};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
@@ -155,6 +156,10 @@ impl Problem for LapJointProblem {
 
     fn fittable() -> Option<&'static dyn AnyFittable> {
         Some(&FittableOf::<LapJointProblem>::NEW)
+    }
+
+    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
+        Some(&CrossCheckedOf::<LapJointProblem>::NEW)
     }
 
     fn to_inputs(params: LapInputs) -> Inputs {

@@ -5,6 +5,7 @@
 
 pub mod closed_form;
 pub mod continuum;
+pub mod cross_check;
 pub mod discretized;
 pub mod params;
 pub mod problem;

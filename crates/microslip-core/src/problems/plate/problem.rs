@@ -8,6 +8,7 @@ use super::continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};
 use super::params::{PlateParam, PlateParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
+use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
 use crate::problems::{Description, Quantity};
@@ -79,6 +80,10 @@ impl Problem for SqueezedPlateProblem {
 
     fn continuum() -> Option<&'static dyn AnyContinuum> {
         Some(&ContinuumOf::<SqueezedPlateProblem>::NEW)
+    }
+
+    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
+        Some(&CrossCheckedOf::<SqueezedPlateProblem>::NEW)
     }
 
     fn to_inputs(params: PlateParams) -> Inputs {

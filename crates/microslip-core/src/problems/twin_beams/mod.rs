@@ -4,6 +4,7 @@
 //! each other (tests/layering.rs checks it), so that their agreement means something.
 
 pub mod closed_form;
+pub mod cross_check;
 pub mod cycle;
 pub mod discretized;
 pub mod fittable;

@@ -5,6 +5,7 @@ use super::DESCRIPTION;
 use super::closed_form::{CoulombBeams, RegularizedBeams, TipForce, TwinBeams};
 use super::params::{BeamParam, TwinBeamsParams};
 use crate::kernel::params::{ParamError, ParamSpec};
+use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
 use crate::problems::fittable::{AnyFittable, FittableOf};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
@@ -122,6 +123,10 @@ impl Problem for TwinBeamsProblem {
 
     fn fittable() -> Option<&'static dyn AnyFittable> {
         Some(&FittableOf::<TwinBeamsProblem>::NEW)
+    }
+
+    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
+        Some(&CrossCheckedOf::<TwinBeamsProblem>::NEW)
     }
 
     fn to_inputs(params: BeamsInputs) -> Inputs {
