@@ -584,7 +584,6 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "report/point/tolerance.rs",
     "report/rows.rs",
     "report/text.rs",
-    "study/candidates.rs",
     "study/curves.rs",
     "study/lap.rs",
     "study/tolerance.rs",

@@ -96,6 +96,7 @@ pub mod plate;
 pub mod problem;
 pub mod quantity;
 pub mod stiffness;
+pub mod stiffness_answer;
 pub mod twin_beams;
 
 pub use lap::params::LapParam;

@@ -12,6 +12,7 @@ pub mod fittable;
 pub mod load_driven;
 pub mod params;
 pub mod problem;
+pub mod stiffness_answer;
 pub mod validity;
 
 pub use continuum::{

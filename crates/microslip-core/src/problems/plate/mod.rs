@@ -9,6 +9,7 @@ pub mod cross_check;
 pub mod discretized;
 pub mod params;
 pub mod problem;
+pub mod stiffness_answer;
 pub mod validity;
 
 pub use continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};

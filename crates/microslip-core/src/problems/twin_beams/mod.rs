@@ -11,6 +11,7 @@ pub mod fittable;
 pub mod load_driven;
 pub mod params;
 pub mod problem;
+pub mod stiffness_answer;
 pub mod validity;
 
 pub use discretized::{InterfaceSample, TwinBeamsFe};
