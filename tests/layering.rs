@@ -587,7 +587,6 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "study/curves.rs",
     "study/lap.rs",
     "study/tolerance.rs",
-    "study/zones.rs",
     "tui/app/data.rs",
     "tui/app/mod.rs",
     "tui/app/normal.rs",

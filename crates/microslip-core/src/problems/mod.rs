@@ -98,6 +98,7 @@ pub mod quantity;
 pub mod stiffness;
 pub mod stiffness_answer;
 pub mod twin_beams;
+pub mod zoned;
 
 pub use lap::params::LapParam;
 pub use plate::params::PlateParam;

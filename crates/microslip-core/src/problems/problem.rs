@@ -22,6 +22,7 @@ use crate::problems::cross_check::AnyCrossChecked;
 use crate::problems::fittable::AnyFittable;
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::AnyLoadDriven;
+use crate::problems::zoned::AnyZoned;
 use crate::problems::{Description, ModelKind, Param, Quantity, Solution, UnknownParam};
 
 /// One parameter of one problem, typed (each folder's key enum, in its `params.rs`): what the
@@ -176,6 +177,12 @@ pub trait Problem: Send + Sync + Sized + 'static {
     /// The comparison of its closed forms with its own discretized solver, where it has one
     /// ([`CrossChecked`](crate::problems::cross_check::CrossChecked)): what `verify` runs.
     fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
+        None
+    }
+
+    /// Its interface's layout under both laws, where it has one interface that holds over one
+    /// stretch ([`Zoned`](crate::problems::zoned::Zoned)): what the zone strip draws.
+    fn zoned() -> Option<&'static dyn AnyZoned> {
         None
     }
 
@@ -414,6 +421,8 @@ pub trait AnyProblem: Send + Sync {
     fn fittable(&self) -> Option<&'static dyn AnyFittable>;
     /// Its cross-check against its own discretized solver, where it has one.
     fn cross_checked(&self) -> Option<&'static dyn AnyCrossChecked>;
+    /// Its interface's layout, where it has one.
+    fn zoned(&self) -> Option<&'static dyn AnyZoned>;
 
     /// [`Inputs`] of this problem at `values`.
     ///
@@ -487,6 +496,10 @@ impl<P: Problem + Registered> AnyProblem for P {
 
     fn cross_checked(&self) -> Option<&'static dyn AnyCrossChecked> {
         P::cross_checked()
+    }
+
+    fn zoned(&self) -> Option<&'static dyn AnyZoned> {
+        P::zoned()
     }
 
     fn inputs_at(&self, values: &[f64]) -> Result<Inputs, ProblemError> {

@@ -14,6 +14,7 @@ pub mod params;
 pub mod problem;
 pub mod stiffness_answer;
 pub mod validity;
+pub mod zoned;
 
 pub use continuum::{
     ContinuumLap, LAP_POISSON, LapContinuumMesh, SlidingZones, solve_lap_continuum,

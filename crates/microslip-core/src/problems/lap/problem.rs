@@ -13,6 +13,7 @@ use crate::problems::fittable::{AnyFittable, FittableOf};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
+use crate::problems::zoned::{AnyZoned, ZonedOf};
 use crate::problems::{Description, Quantity};
 
 /// The clamped double-lap joint as a type: see [`Problem`].
@@ -160,6 +161,10 @@ impl Problem for LapJointProblem {
 
     fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
         Some(&CrossCheckedOf::<LapJointProblem>::NEW)
+    }
+
+    fn zoned() -> Option<&'static dyn AnyZoned> {
+        Some(&ZonedOf::<LapJointProblem>::NEW)
     }
 
     fn to_inputs(params: LapInputs) -> Inputs {

@@ -11,6 +11,7 @@ pub mod params;
 pub mod problem;
 pub mod stiffness_answer;
 pub mod validity;
+pub mod zoned;
 
 pub use continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};
 pub use discretized::PlateFe;

@@ -11,6 +11,7 @@ use crate::numeric::NumericError;
 use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
+use crate::problems::zoned::{AnyZoned, ZonedOf};
 use crate::problems::{Description, Quantity};
 
 /// The squeezed plate (paper section 2.2) as a type: see [`Problem`].
@@ -84,6 +85,10 @@ impl Problem for SqueezedPlateProblem {
 
     fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
         Some(&CrossCheckedOf::<SqueezedPlateProblem>::NEW)
+    }
+
+    fn zoned() -> Option<&'static dyn AnyZoned> {
+        Some(&ZonedOf::<SqueezedPlateProblem>::NEW)
     }
 
     fn to_inputs(params: PlateParams) -> Inputs {

@@ -13,6 +13,7 @@ pub mod params;
 pub mod problem;
 pub mod stiffness_answer;
 pub mod validity;
+pub mod zoned;
 
 pub use discretized::{InterfaceSample, TwinBeamsFe};
 pub use problem::TwinBeamsProblem;

@@ -10,6 +10,7 @@ use crate::problems::fittable::{AnyFittable, FittableOf};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{Laws, ParamKey, Problem};
+use crate::problems::zoned::{AnyZoned, ZonedOf};
 use crate::problems::{Description, Quantity};
 
 /// The twin cantilever beams (paper section 2.1) as a type: see [`Problem`].
@@ -127,6 +128,10 @@ impl Problem for TwinBeamsProblem {
 
     fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
         Some(&CrossCheckedOf::<TwinBeamsProblem>::NEW)
+    }
+
+    fn zoned() -> Option<&'static dyn AnyZoned> {
+        Some(&ZonedOf::<TwinBeamsProblem>::NEW)
     }
 
     fn to_inputs(params: BeamsInputs) -> Inputs {
