@@ -586,7 +586,6 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "report/text.rs",
     "study/curves.rs",
     "study/lap.rs",
-    "study/tolerance.rs",
     "tui/app/data.rs",
     "tui/app/mod.rs",
     "tui/app/normal.rs",

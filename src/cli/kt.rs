@@ -84,12 +84,12 @@ pub(super) fn run_kt_tolerance(
                 ));
             }
             match of {
-                ToleranceOf::Coulomb => {
-                    tolerance::plate_stiffness_for_tolerance(&plate, tol, element)
-                }
-                ToleranceOf::Current => {
-                    tolerance::plate_stiffness_near_current(&plate, tol, element)
-                }
+                ToleranceOf::Coulomb => tolerance::state_stiffness_for_tolerance::<
+                    SqueezedPlateProblem,
+                >(&plate, tol, element),
+                ToleranceOf::Current => tolerance::state_stiffness_near_current::<
+                    SqueezedPlateProblem,
+                >(&plate, tol, element),
             }
             .map_err(|e| CliError::Invalid(e.to_string()))?
         }

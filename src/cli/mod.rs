@@ -29,6 +29,7 @@ use crate::preset::{self, Preset, PresetError, PresetSource};
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::lap::LapJointProblem;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
+use crate::problems::plate::SqueezedPlateProblem;
 use crate::problems::twin_beams::TwinBeamsProblem;
 use crate::problems::twin_beams::closed_form::BeamTheory;
 use crate::problems::{BeamParam, LapParam, ModelKind, Param, PlateParam, UnknownParam};

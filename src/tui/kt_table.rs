@@ -8,12 +8,13 @@ use crate::problems::LoadDriven;
 use crate::problems::inputs::Model;
 use crate::problems::lap::LapJointProblem;
 use crate::problems::lap::stiffness_answer::LapAnswer;
+use crate::problems::plate::SqueezedPlateProblem;
 use crate::problems::plate::stiffness_answer::PlateAnswer;
 use crate::problems::twin_beams::TwinBeamsProblem;
 use crate::problems::twin_beams::stiffness_answer::BeamAnswer;
 use crate::study::curves::{self, Answer, CandidateSource};
 use crate::study::tolerance::{
-    Threshold, ToleranceAnswer, ToleranceError, plate_stiffness_for_tolerance,
+    Threshold, ToleranceAnswer, ToleranceError, state_stiffness_for_tolerance,
     stiffness_for_tolerance,
 };
 
@@ -64,7 +65,7 @@ fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
         }
         Model::Plate(plate) => vec![format!(
             "u(L) {within} {}",
-            shown(plate_stiffness_for_tolerance(
+            shown(state_stiffness_for_tolerance::<SqueezedPlateProblem>(
                 plate,
                 TABLE_TOLERANCE,
                 element
