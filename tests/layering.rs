@@ -584,8 +584,6 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "report/point/tolerance.rs",
     "report/rows.rs",
     "report/text.rs",
-    "study/curves.rs",
-    "study/lap.rs",
     "tui/app/data.rs",
     "tui/app/mod.rs",
     "tui/app/normal.rs",
