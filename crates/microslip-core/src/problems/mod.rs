@@ -38,7 +38,18 @@
 //!      [`load_driven::MasingCycle`]) and `load_driven.rs` (the problem type's [`LoadDriven`]
 //!      impl, whose `Structure` is the model without its force); its `problem.rs` then writes
 //!      `regime_scale` as `Some(force_scale)` and hands out `LoadDrivenOf::<Self>::NEW` from
-//!      `load_driven()`, and every sweep, cycle, tolerance and load chart serves it;
+//!      `load_driven()`, and every sweep, cycle, tolerance and load chart serves it; then also
+//!      `fittable.rs` ([`fittable::Fittable`], handed out by `fittable()`), and the fit (the
+//!      TUI's `f`, `microslip fit`) serves it;
+//!    - what every problem writes, because the studies dispatch over the whole registry:
+//!      `point.rs` (its row type and [`pointwise::Pointwise`]: the sweeps' rows, re-exported
+//!      into `study::curves`), `profiles.rs` ([`profiled::Profiled`]: the shear along the
+//!      interface), `stiffness_answer.rs` ([`stiffness_answer::StiffnessAnswer`]: the K_T
+//!      comparison's row);
+//!    - what it may write, each handed out by the [`Problem`] method of the same name:
+//!      `zoned.rs` ([`zoned::Zoned`]: the TUI's zone strip) and `cross_check.rs`
+//!      ([`cross_check::CrossChecked`]: its closed forms against its discretized solver in
+//!      `microslip verify`);
 //!    - `mod.rs`: its `DESCRIPTION` (key, title, summary, paper preset, parameters through
 //!      `param_list!`, quantities, load) and its `quantity` function;
 //!    - `problem.rs`: the unit struct (`CylinderProblem`) implementing [`ParamKey`] for its key

@@ -264,19 +264,7 @@ mod tests {
     use crate::problems::{PlateParam, plate::params::PlateParams};
     use crate::{Regime, SqueezedPlate, TwinBeams, TwinBeamsParams};
 
-    fn force_samples(from: f64, to: f64, points: u64) -> Result<Samples, RangeError> {
-        load_samples::<TwinBeamsProblem>(from, to, points)
-    }
-
-    fn stiffness_samples(
-        from: f64,
-        to: f64,
-        points: u64,
-        spacing: Spacing,
-    ) -> Result<Samples, RangeError> {
-        let stiffness = Param::Plate(PlateParam::Stiffness);
-        Samples::of_param(stiffness, from, to, points, spacing)
-    }
+    const STIFFNESS: Param = Param::Plate(PlateParam::Stiffness);
 
     fn beam_force_sweep(
         beams: TwinBeams,
@@ -324,22 +312,27 @@ mod tests {
     #[test]
     fn sweeps_over_the_whole_domain_give_every_row_finite() {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
-        let rows: Vec<BeamPoint> = beam_force_sweep(beams, force_samples(0.0, 1e12, 101).unwrap())
-            .unwrap()
-            .collect();
+        let rows: Vec<BeamPoint> = beam_force_sweep(
+            beams,
+            load_samples::<TwinBeamsProblem>(0.0, 1e12, 101).unwrap(),
+        )
+        .unwrap()
+        .collect();
         assert_eq!(rows.len(), 101);
         assert!(rows.iter().all(|r| {
             [r.w_coulomb, r.w_regularized, r.micro_end]
                 .iter()
                 .all(|v| v.is_finite())
         }));
-        let cycles: Vec<CyclePoint> =
-            load::cycle_sweep::<TwinBeamsProblem>(beams, force_samples(0.0, 1e12, 11).unwrap())
-                .unwrap()
-                .collect();
+        let cycles: Vec<CyclePoint> = load::cycle_sweep::<TwinBeamsProblem>(
+            beams,
+            load_samples::<TwinBeamsProblem>(0.0, 1e12, 11).unwrap(),
+        )
+        .unwrap()
+        .collect();
         assert_eq!(cycles.len(), 11);
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
-        let all = stiffness_samples(1e-6, 1e12, 181, Spacing::Logarithmic).unwrap();
+        let all = Samples::of_param(STIFFNESS, 1e-6, 1e12, 181, Spacing::Logarithmic).unwrap();
         let rows: Vec<PlatePoint> = plate_kt_sweep(plate, all).unwrap().collect();
         assert_eq!(rows.len(), 181);
         assert_eq!((rows[0].kt, rows[180].kt), (1e-6, 1e12));
@@ -353,14 +346,17 @@ mod tests {
     #[test]
     fn sweeps_yield_one_row_per_sample() {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
-        let rows: Vec<BeamPoint> = beam_force_sweep(beams, force_samples(0.0, 300.0, 31).unwrap())
-            .unwrap()
-            .collect();
+        let rows: Vec<BeamPoint> = beam_force_sweep(
+            beams,
+            load_samples::<TwinBeamsProblem>(0.0, 300.0, 31).unwrap(),
+        )
+        .unwrap()
+        .collect();
         assert_eq!(rows.len(), 31);
         assert!((rows[10].force - 100.0).abs() < 1e-12);
         assert_eq!(rows[10].regime_regularized, Regime::MICROSLIP_MACROSLIP);
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
-        let samples = stiffness_samples(1.0, 1e7, 8, Spacing::Logarithmic).unwrap();
+        let samples = Samples::of_param(STIFFNESS, 1.0, 1e7, 8, Spacing::Logarithmic).unwrap();
         let rows: Vec<PlatePoint> = plate_kt_sweep(plate, samples).unwrap().collect();
         assert_eq!(rows.len(), 8);
         assert_eq!(rows[7].kt, 1e7);
