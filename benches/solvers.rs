@@ -1,12 +1,12 @@
 //! Speed of the solvers: `cargo bench --bench solvers`. Results and machine: BENCHMARKS.md.
 
 use divan::{Bencher, black_box};
-use microslip::fit::{Measurement, fit_twin_beams};
+use microslip::fit::{Measurement, Weights, fit_curve};
 use microslip::numeric::MeshDensity;
 use microslip::problems::lap::closed_form::{LapJoint, LapParams};
 use microslip::problems::lap::{LapContinuumMesh, LapFe, solve_lap_continuum};
 use microslip::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
-use microslip::problems::twin_beams::TwinBeamsFe;
+use microslip::problems::twin_beams::{TwinBeamsFe, TwinBeamsProblem};
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
 fn main() {
@@ -144,5 +144,16 @@ fn measured_curve(rows: usize) -> Vec<Measurement> {
 #[divan::bench(args = [10_000, 100_000], sample_count = 10)]
 fn fit_mu_and_kt(bencher: Bencher, rows: usize) {
     let data = measured_curve(rows);
-    bencher.bench_local(|| fit_twin_beams(TwinBeamsParams::PAPER, black_box(&data), None, None));
+    let Ok(beams) = TwinBeams::new(TwinBeamsParams::PAPER) else {
+        return;
+    };
+    bencher.bench_local(|| {
+        fit_curve::<TwinBeamsProblem>(
+            &beams,
+            black_box(&data),
+            (None, None),
+            Weights::Absolute,
+            &mut |_| {},
+        )
+    });
 }

@@ -2,10 +2,40 @@
 //! recovered within the uncertainty the fit reports, and data that cannot show a parameter must say so.
 
 use microslip::fit::{
-    Evidence, FitError, FitResult, Measurement, Scatter, Status, Weights, fit_twin_beams,
-    fit_twin_beams_weighted,
+    Evidence, FitError, FitResult, Measurement, Progress, Scatter, Status, Weights, fit_curve,
 };
+use microslip::problems::twin_beams::TwinBeamsProblem;
 use microslip::{TipForce, TwinBeams, TwinBeamsParams};
+
+/// The beams with the geometry, E and P of `structure`, fitted with equal weights.
+fn fit_twin_beams(
+    structure: TwinBeamsParams,
+    data: &[Measurement],
+    fixed_mu: Option<f64>,
+    fixed_kt: Option<f64>,
+) -> Result<FitResult, FitError> {
+    fit_twin_beams_weighted(
+        structure,
+        data,
+        fixed_mu,
+        fixed_kt,
+        Weights::Absolute,
+        &mut |_| {},
+    )
+}
+
+/// [`fit_twin_beams`] with `weights`.
+fn fit_twin_beams_weighted(
+    structure: TwinBeamsParams,
+    data: &[Measurement],
+    fixed_mu: Option<f64>,
+    fixed_kt: Option<f64>,
+    weights: Weights,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<FitResult, FitError> {
+    let beams = TwinBeams::new(structure)?;
+    fit_curve::<TwinBeamsProblem>(&beams, data, (fixed_mu, fixed_kt), weights, progress)
+}
 
 /// Deterministic Gaussian noise (xorshift64 + Box-Muller), so the test is reproducible.
 struct Noise(u64);

@@ -2,11 +2,12 @@
 //! force over the closed forms (plain bisection written here, with its own force grid) and the
 //! monotonicity it relies on (docs/theory.md, (T1)).
 
+use microslip::problems::plate::SqueezedPlateProblem;
 use microslip::problems::twin_beams::TwinBeamsProblem;
 use microslip::problems::{BeamParam, PlateParam};
 use microslip::study::tolerance::{
-    ParseToleranceError, Threshold, ToleranceError, parse_tolerance, plate_stiffness_for_tolerance,
-    plate_stiffness_near_current, stiffness_for_tolerance, stiffness_near_current,
+    ParseToleranceError, Threshold, ToleranceError, parse_tolerance, state_stiffness_for_tolerance,
+    state_stiffness_near_current, stiffness_for_tolerance, stiffness_near_current,
 };
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
@@ -122,7 +123,8 @@ fn the_plate_threshold_matches_brute_force() {
         p.regularized().end_displacement() / p.coulomb().end_displacement() - 1.0
     };
     for tol in [0.001, 0.01, 0.1] {
-        let answer = plate_stiffness_for_tolerance(&plate, tol, 0.1).unwrap();
+        let answer =
+            state_stiffness_for_tolerance::<SqueezedPlateProblem>(&plate, tol, 0.1).unwrap();
         let kt = found(answer.threshold);
         let brute = brute_force(&[0.0], tol, ratio);
         assert!(
@@ -187,7 +189,7 @@ fn limits_and_refusals() {
     assert!(strict.settings.is_empty());
     let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
     // The paper's plate: even 1000 % needs some stiffness (free expansion is 58 x Coulomb's u(L)).
-    let lax = plate_stiffness_for_tolerance(&plate, 10.0, 0.1).unwrap();
+    let lax = state_stiffness_for_tolerance::<SqueezedPlateProblem>(&plate, 10.0, 0.1).unwrap();
     assert!(found(lax.threshold) > PlateParam::Stiffness.spec().domain.min());
     for bad in [0.0, -0.01, 11.0, f64::NAN, f64::INFINITY] {
         assert!(matches!(
@@ -289,7 +291,7 @@ fn within_t_of_the_current_answer_is_an_interval_around_the_current_k_t() {
             .regularized()
             .end_displacement()
     };
-    let answer = plate_stiffness_near_current(&plate, 0.05, 0.1).unwrap();
+    let answer = state_stiffness_near_current::<SqueezedPlateProblem>(&plate, 0.05, 0.1).unwrap();
     let (lo, hi) = (
         found(answer.threshold),
         answer.near_current.unwrap().upper.unwrap(),
@@ -320,12 +322,13 @@ fn the_interval_at_the_edges_of_the_accepted_range() {
     let coulomb = stiff.coulomb().end_displacement() / current - 1.0;
     // Coulomb is outside 1e-9 of the current answer, the stiffest accepted K_T inside.
     assert!(-coulomb > 1e-9 && (u(1e12) / current - 1.0).abs() <= 1e-9);
-    let answer = plate_stiffness_near_current(&stiff, 1e-9, 0.1).unwrap();
+    let answer = state_stiffness_near_current::<SqueezedPlateProblem>(&stiff, 1e-9, 0.1).unwrap();
     let near = answer.near_current.unwrap();
     assert_eq!(near.upper, Some(1e12));
     assert!(near.upper_is_largest_accepted);
     // With a tolerance Coulomb meets, nothing above.
-    let wide = plate_stiffness_near_current(&stiff, 2.0 * -coulomb, 0.1).unwrap();
+    let wide =
+        state_stiffness_near_current::<SqueezedPlateProblem>(&stiff, 2.0 * -coulomb, 0.1).unwrap();
     assert_eq!(wide.near_current.unwrap().upper, None);
     // The softest accepted K_T within 1 % of its own answer: the lower end is the domain's, the
     // upper end a root where w(L) falls 1 % below.

@@ -112,6 +112,9 @@ fn root_reexports(lib: &str) -> BTreeMap<String, String> {
             items.insert(name.to_string(), module.clone());
         }
     }
+    // The registry macro is exported at the core's root (`#[macro_export]`) but defined in
+    // `problems`: `crate::with_problems!` is an edge to that layer.
+    items.insert("with_problems".to_string(), "problems".to_string());
     items
 }
 
@@ -563,11 +566,6 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "fe/lap_deck.rs",
     "fe/load.rs",
     "fe/results.rs",
-    "fit/beam.rs",
-    "fit/lap.rs",
-    "fit/mod.rs",
-    "fit/structure.rs",
-    "prelude.rs",
     "problems/inputs.rs",
     "report/figure/paper.rs",
     "report/json.rs",
@@ -580,13 +578,7 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "report/point/tolerance.rs",
     "report/rows.rs",
     "report/text.rs",
-    "study/candidates.rs",
-    "study/curves.rs",
-    "study/lap.rs",
-    "study/tolerance.rs",
-    "study/zones.rs",
     "tui/app/data.rs",
-    "tui/app/fit.rs",
     "tui/app/mod.rs",
     "tui/app/normal.rs",
     "tui/app/recompute.rs",
@@ -596,7 +588,6 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "tui/mod.rs",
     "tui/summary.rs",
     "tui/view.rs",
-    "verify.rs",
 ];
 
 #[test]

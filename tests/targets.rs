@@ -3,8 +3,11 @@
 //! methods (not on the solver under test).
 
 use microslip::problems::inputs::{Inputs, Model};
+use microslip::problems::plate::SqueezedPlateProblem;
+use microslip::problems::twin_beams::TwinBeamsProblem;
+use microslip::problems::twin_beams::problem::BeamsModel;
 use microslip::problems::{BeamParam, ModelKind, Param, PlateParam};
-use microslip::study::curves::{Samples, Spacing, beam_param_sweep, plate_param_sweep};
+use microslip::study::curves::{Samples, Spacing, param_sweep};
 use microslip::study::target::{Target, TargetError, solve_for_target};
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
@@ -202,7 +205,8 @@ fn sweeps_of_any_parameter_equal_the_model_at_each_value() {
         Spacing::Linear,
     )
     .unwrap();
-    let rows: Vec<_> = beam_param_sweep(beams, force, BeamParam::Friction, values)
+    let model = BeamsModel { beams, force };
+    let rows: Vec<_> = param_sweep::<TwinBeamsProblem>(model, BeamParam::Friction, values)
         .unwrap()
         .collect();
     assert_eq!(rows.len(), 9);
@@ -228,7 +232,7 @@ fn sweeps_of_any_parameter_equal_the_model_at_each_value() {
     )
     .unwrap();
     let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
-    let rows: Vec<_> = plate_param_sweep(plate, PlateParam::Poisson, one)
+    let rows: Vec<_> = param_sweep::<SqueezedPlateProblem>(plate, PlateParam::Poisson, one)
         .unwrap()
         .collect();
     assert_eq!(rows.len(), 1);

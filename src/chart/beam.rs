@@ -14,6 +14,7 @@ use crate::kernel::format::number;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::twin_beams::TwinBeamsFe;
 use crate::problems::twin_beams::TwinBeamsProblem;
+use crate::problems::twin_beams::problem::BeamsModel;
 use crate::study::curves::{self, Spacing};
 use crate::{TipForce, TwinBeams};
 
@@ -64,13 +65,13 @@ pub(super) fn beam_plot(
                 series.push(line(
                     *role,
                     *label,
-                    curves::beam_slip_boundary_vs_force(other, forces).ok()?,
+                    curves::slip_boundary_vs_force::<TwinBeamsProblem>(other, forces).ok()?,
                 ));
             }
             series.push(line(
                 SeriesRole::Current,
                 "K_T",
-                curves::beam_slip_boundary_vs_force(beams, forces).ok()?,
+                curves::slip_boundary_vs_force::<TwinBeamsProblem>(beams, forces).ok()?,
             ));
             series.push(cursor(f, [0.0, p.length]));
             Some(Plot {
@@ -96,7 +97,13 @@ pub(super) fn beam_plot(
                 ("tau(x)", "tau (MPa)"),
                 (f, kt),
                 p.length,
-                curves::beam_shear_along(beams, force, positions),
+                curves::shear_along_of::<TwinBeamsProblem>(
+                    &BeamsModel {
+                        beams: *beams,
+                        force,
+                    },
+                    positions,
+                ),
                 ("mu P", beams.coulomb_stress()),
             ))
         }

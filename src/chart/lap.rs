@@ -11,9 +11,11 @@ use crate::kernel::format::number_with;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::lap::LapJointProblem;
 use crate::problems::lap::closed_form::{JointForce, LapJoint};
+use crate::problems::lap::problem::LapModel;
+use crate::problems::lap::profiles::slip_along;
 use crate::problems::lap::{LapContinuumMesh, LapFe, solve_lap_continuum_path};
+use crate::study::curves;
 use crate::study::curves::Spacing;
-use crate::study::lap as curves;
 
 /// What the joint's load charts call its quantities.
 const LAP_LABELS: LoadLabels = LoadLabels {
@@ -46,7 +48,8 @@ pub(crate) fn lap_plot(
             response_plot::<LapJointProblem>(joint, &LAP_LABELS, forces, (f, f_max))
         }
         LapChart::Zones => {
-            let (coulomb, regularized) = curves::lap_zone_outline_vs_force(joint, forces).ok()?;
+            let (coulomb, regularized) =
+                curves::zone_outline_vs_force::<LapJointProblem>(joint, forces).ok()?;
             let series = vec![
                 line(SeriesRole::Coulomb, "Coulomb: a, L-d", coulomb),
                 line(SeriesRole::Current, "regularized: a, L-d", regularized),
@@ -70,7 +73,13 @@ pub(crate) fn lap_plot(
                 ("tau(x)", "tau (MPa)"),
                 (f, kt),
                 p.length,
-                curves::lap_shear_along(joint, force, positions),
+                curves::shear_along_of::<LapJointProblem>(
+                    &LapModel {
+                        joint: *joint,
+                        force,
+                    },
+                    positions,
+                ),
                 ("mu P", joint.coulomb_stress()),
             ))
         }
@@ -80,7 +89,13 @@ pub(crate) fn lap_plot(
                 ("s(x)", "s (mm)"),
                 (f, kt),
                 p.length,
-                curves::lap_slip_along(joint, force, positions),
+                slip_along(
+                    &LapModel {
+                        joint: *joint,
+                        force,
+                    },
+                    positions.values(),
+                ),
                 ("mu P / K_T", joint.saturation_slip()),
             ))
         }

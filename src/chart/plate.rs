@@ -10,7 +10,8 @@ use crate::chart::{
 use crate::kernel::format::number;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::PlateParam;
-use crate::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
+use crate::problems::plate::profiles::contact_pressure_along;
+use crate::problems::plate::{ContinuumMesh, PlateFe, SqueezedPlateProblem, solve_plate_continuum};
 use crate::study::curves::{self, Series, Spacing};
 
 /// The K_T range of the plate's displacement chart: four decades either side of K_T, within the
@@ -27,8 +28,12 @@ pub(super) fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plo
         PlateChart::Displacement => {
             let (from, to) = stiffness_range(kt);
             let stiffnesses = samples(from, to, Spacing::Logarithmic)?;
-            let (coulomb, regularized) =
-                curves::plate_end_displacement_vs_stiffness(plate, stiffnesses).ok()?;
+            let (coulomb, regularized) = curves::responses_over::<SqueezedPlateProblem>(
+                *plate,
+                PlateParam::Stiffness,
+                stiffnesses,
+            )
+            .ok()?;
             let to_log = |s: Series| {
                 s.into_iter()
                     .map(|(k, u)| (k.log10(), u))
@@ -72,7 +77,12 @@ pub(super) fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plo
                 series.push(line(
                     role,
                     label,
-                    curves::plate_slip_boundary_vs_friction(&other, frictions).ok()?,
+                    curves::zone_end_over::<SqueezedPlateProblem>(
+                        other,
+                        PlateParam::Friction,
+                        frictions,
+                    )
+                    .ok()?,
                 ));
             }
             // Zoom on the band the curves use: X_r stays near L over most of the range.
@@ -94,7 +104,7 @@ pub(super) fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plo
         }
         PlateChart::ContactPressure => {
             let positions = samples(0.0, p.half_length, Spacing::Linear)?;
-            let ratio = curves::plate_contact_pressure_along(plate, positions);
+            let ratio = contact_pressure_along(plate, positions.values());
             let (low, high) = ratio.iter().fold((1.0_f64, 1.0_f64), |(lo, hi), &(_, r)| {
                 (lo.min(r), hi.max(r))
             });

@@ -2,8 +2,6 @@
 
 use super::*;
 use crate::problems::BeamParam;
-use crate::problems::lap::LapJointProblem;
-use crate::problems::twin_beams::TwinBeamsProblem;
 
 /// `--fix` values: (mu, K_T). Only those two are fitted, so only they can be held.
 pub(super) fn parse_fixed(fixed: &[String]) -> Result<(Option<f64>, Option<f64>), CliError> {
@@ -89,7 +87,7 @@ pub(super) fn run_fit(
     let (fixed_mu, fixed_kt) = parse_fixed(fixed)?;
     // The measured forces are fitted, not the preset's F.
     let (name, model) = load_for(inputs, kind, &model_command(kind, "fit"), Load::Unused)?;
-    let structure = fit_structure(&model)
+    let structure = fit::Structure::of(&model)
         .ok_or_else(|| wrong_model(inputs, model.kind(), kind, &model_command(kind, "fit")))?;
     let data_error = |reason: String| CliError::Data {
         path: path.display().to_string(),
@@ -100,11 +98,11 @@ pub(super) fn run_fit(
         .map_err(|e| data_error(e.to_string()))?;
     let mut reading =
         |done, total| progress.update(Instant::now(), || text::reading_progress(done, total));
-    let data = match structure {
-        fit::Structure::Beam(_) => {
+    let data = match kind {
+        ModelKind::Beam | ModelKind::Plate => {
             crate::measured::parse_measured_with_progress(&contents, &mut reading)
         }
-        fit::Structure::Lap(_) => {
+        ModelKind::Lap => {
             crate::measured::parse_measured_joint_with_progress(&contents, &mut reading)
         }
     };
@@ -154,15 +152,6 @@ pub(super) fn run_fit(
         )?,
     }
     Ok(())
-}
-
-/// What a fit of `model` holds fixed (all but mu and K_T); `None` for a problem without a
-/// load-response curve.
-fn fit_structure(model: &Model) -> Option<fit::Structure> {
-    if let Some(lap) = LapJointProblem::from_model(model) {
-        return Some(fit::Structure::Lap(lap.joint.params()));
-    }
-    TwinBeamsProblem::from_model(model).map(|beams| fit::Structure::Beam(beams.beams.params()))
 }
 
 /// A long fit's progress (reading, then fitting) on stderr: shown only when stderr is a terminal (scripts and pipes see

@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::problems::lap::LapJointProblem;
+use crate::problems::plate::SqueezedPlateProblem;
 use crate::problems::twin_beams::TwinBeamsProblem;
 
 /// The force range of `kt --tolerance`: `--from` and `--to` (each the model's force when not
@@ -86,12 +87,12 @@ pub(super) fn run_kt_tolerance(
                 ));
             }
             match of {
-                ToleranceOf::Coulomb => {
-                    tolerance::plate_stiffness_for_tolerance(&plate, tol, element)
-                }
-                ToleranceOf::Current => {
-                    tolerance::plate_stiffness_near_current(&plate, tol, element)
-                }
+                ToleranceOf::Coulomb => tolerance::state_stiffness_for_tolerance::<
+                    SqueezedPlateProblem,
+                >(&plate, tol, element),
+                ToleranceOf::Current => tolerance::state_stiffness_near_current::<
+                    SqueezedPlateProblem,
+                >(&plate, tol, element),
             }
             .map_err(|e| CliError::Invalid(e.to_string()))?
         }

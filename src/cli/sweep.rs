@@ -3,7 +3,10 @@
 use super::*;
 use crate::problems::PlateParam;
 use crate::problems::lap::LapJointProblem;
+use crate::problems::lap::problem::LapModel;
+use crate::problems::plate::SqueezedPlateProblem;
 use crate::problems::twin_beams::TwinBeamsProblem;
+use crate::problems::twin_beams::problem::BeamsModel;
 
 /// `microslip sweep ...`: the generic sweep, or the alias a subcommand names.
 pub(super) fn run_sweep(out: &mut impl Write, args: &SweepArgs) -> Result<(), CliError> {
@@ -96,8 +99,12 @@ fn write_sweep(
                     load::force_sweep::<TwinBeamsProblem>(beams, values).map_err(range_error)?;
                 write_table(out, format, rows.map(|r| BeamRow::from(&r)))?;
             } else {
-                let rows =
-                    curves::beam_param_sweep(beams, force, varied, values).map_err(range_error)?;
+                let rows = curves::param_sweep::<TwinBeamsProblem>(
+                    BeamsModel { beams, force },
+                    varied,
+                    values,
+                )
+                .map_err(range_error)?;
                 write_varied(
                     out,
                     format,
@@ -108,10 +115,13 @@ fn write_sweep(
         }
         (Model::Plate(plate), Param::Plate(varied)) => {
             if own_table {
-                let rows = curves::plate_kt_sweep(plate, values).map_err(range_error)?;
+                let rows = curves::param_sweep::<SqueezedPlateProblem>(plate, varied, values)
+                    .map_err(range_error)?
+                    .map(|(_, r)| r);
                 write_table(out, format, rows.map(|r| PlateRow::from(&r)))?;
             } else {
-                let rows = curves::plate_param_sweep(plate, varied, values).map_err(range_error)?;
+                let rows = curves::param_sweep::<SqueezedPlateProblem>(plate, varied, values)
+                    .map_err(range_error)?;
                 write_varied(
                     out,
                     format,
@@ -126,8 +136,12 @@ fn write_sweep(
                     load::force_sweep::<LapJointProblem>(joint, values).map_err(range_error)?;
                 write_table(out, format, rows.map(|r| LapRow::from(&r)))?;
             } else {
-                let rows = crate::study::lap::lap_param_sweep(joint, force, varied, values)
-                    .map_err(range_error)?;
+                let rows = curves::param_sweep::<LapJointProblem>(
+                    LapModel { joint, force },
+                    varied,
+                    values,
+                )
+                .map_err(range_error)?;
                 write_varied(out, format, param, rows.map(|(v, r)| (v, LapRow::from(&r))))?;
             }
         }
@@ -209,7 +223,8 @@ fn run_cycle_sweep(out: &mut impl Write, args: &CycleSweepArgs) -> Result<(), Cl
         inputs,
         format,
     } = args;
-    let amplitudes = curves::force_samples(*from, *to, *points).map_err(force_range_error)?;
+    let amplitudes =
+        curves::load_samples::<TwinBeamsProblem>(*from, *to, *points).map_err(force_range_error)?;
     match load_any_structure(inputs, DEFAULT_PROBLEM)?.1 {
         Model::Beam { beams, .. } => {
             let rows = load::cycle_sweep::<TwinBeamsProblem>(beams, amplitudes)

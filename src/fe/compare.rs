@@ -13,6 +13,7 @@ use crate::kernel::params::ParamError;
 use crate::kernel::regime::Regime;
 use crate::kernel::validity::Validity;
 use crate::problems::lap::closed_form::LapJoint;
+use crate::problems::twin_beams::TwinBeamsProblem;
 use crate::problems::twin_beams::closed_form::BeamTheory;
 use crate::{SqueezedPlate, TipForce, TwinBeams};
 
@@ -150,7 +151,13 @@ pub fn compare_beams(
             response: r.fe.deflection - (r.shear_corrected - r.euler),
         })
         .collect();
-    let implied = fit::fit_twin_beams(euler_bernoulli.params(), &bending_only, None, None);
+    let implied = fit::fit_curve::<TwinBeamsProblem>(
+        &euler_bernoulli,
+        &bending_only,
+        (None, None),
+        fit::Weights::Absolute,
+        &mut |_| {},
+    );
     BeamComparison {
         rows,
         poisson: beams.params().poisson,

@@ -6,8 +6,8 @@
 use serde::Serialize;
 
 use crate::chart::{Plot, SeriesKind};
+use crate::study::curves::LapPoint;
 use crate::study::curves::{BeamPoint, CyclePoint, LoopPoint, PlatePoint};
-use crate::study::lap::LapPoint;
 
 /// One row of `microslip sweep beam`.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]

@@ -20,12 +20,15 @@ pub enum TableFormat {
 ///
 /// # Examples
 /// ```
-/// use microslip::study::curves::{beam_force_sweep, force_samples};
+/// use microslip::problems::twin_beams::TwinBeamsProblem;
 /// use microslip::report::rows::BeamRow;
 /// use microslip::report::table::{TableFormat, write_table};
+/// use microslip::study::curves::load_samples;
+/// use microslip::study::load::force_sweep;
 /// use microslip::{TwinBeams, TwinBeamsParams};
 /// let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
-/// let rows = beam_force_sweep(beams, force_samples(0.0, 80.0, 2)?)?.map(|p| BeamRow::from(&p));
+/// let forces = load_samples::<TwinBeamsProblem>(0.0, 80.0, 2)?;
+/// let rows = force_sweep::<TwinBeamsProblem>(beams, forces)?.map(|p| BeamRow::from(&p));
 /// let mut csv = Vec::new();
 /// write_table(&mut csv, TableFormat::Csv, rows)?;
 /// let csv = String::from_utf8(csv)?;

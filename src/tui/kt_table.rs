@@ -7,10 +7,14 @@ use crate::kernel::format::{number, number_with};
 use crate::problems::LoadDriven;
 use crate::problems::inputs::Model;
 use crate::problems::lap::LapJointProblem;
+use crate::problems::lap::stiffness_answer::LapAnswer;
+use crate::problems::plate::SqueezedPlateProblem;
+use crate::problems::plate::stiffness_answer::PlateAnswer;
 use crate::problems::twin_beams::TwinBeamsProblem;
+use crate::problems::twin_beams::stiffness_answer::BeamAnswer;
 use crate::study::curves::{self, Answer, CandidateSource};
 use crate::study::tolerance::{
-    Threshold, ToleranceAnswer, ToleranceError, plate_stiffness_for_tolerance,
+    Threshold, ToleranceAnswer, ToleranceError, state_stiffness_for_tolerance,
     stiffness_for_tolerance,
 };
 
@@ -61,7 +65,7 @@ fn tolerance_lines(model: &Model, element: f64) -> Vec<String> {
         }
         Model::Plate(plate) => vec![format!(
             "u(L) {within} {}",
-            shown(plate_stiffness_for_tolerance(
+            shown(state_stiffness_for_tolerance::<SqueezedPlateProblem>(
                 plate,
                 TABLE_TOLERANCE,
                 element
@@ -116,12 +120,12 @@ pub fn stiffness_table(model: &Model) -> (&'static str, Vec<String>) {
         let cells = match (row.candidate.kt, row.answer) {
             (
                 Some(k),
-                Some(Answer::Beam {
+                Some(Answer::Beam(BeamAnswer {
                     first_macroslip_force,
                     micro_end,
                     tip_deflection,
                     ..
-                }),
+                })),
             ) => format!(
                 "{:>7} {:>7} {:>7} {:>8}",
                 cell(k, 7),
@@ -131,11 +135,11 @@ pub fn stiffness_table(model: &Model) -> (&'static str, Vec<String>) {
             ),
             (
                 Some(k),
-                Some(Answer::Plate {
+                Some(Answer::Plate(PlateAnswer {
                     end_displacement,
                     micro_end,
                     ..
-                }),
+                })),
             ) => format!(
                 "{:>7} {:>9} {:>8}",
                 cell(k, 7),
@@ -144,12 +148,12 @@ pub fn stiffness_table(model: &Model) -> (&'static str, Vec<String>) {
             ),
             (
                 Some(k),
-                Some(Answer::Lap {
+                Some(Answer::Lap(LapAnswer {
                     first_slip_force,
                     zones: (a, d),
                     joint_displacement,
                     ..
-                }),
+                })),
             ) => format!(
                 "{:>7} {:>7} {:>7} {:>8}",
                 cell(k, 7),

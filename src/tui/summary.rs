@@ -7,8 +7,8 @@ use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::lap::cycle::{LapCycle, MasingCycle};
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::report::{number, number_with};
+use crate::study::curves::lap_point;
 use crate::study::curves::{beam_point, plate_point};
-use crate::study::lap::lap_point;
 
 /// One line of the regime pane: its text (a regime line has a label and a styled value) and what
 /// it means, in words for someone who has not read the paper (`i`, and the spare height of tall

@@ -14,9 +14,7 @@ use crate::kernel::params::Unit;
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::{ModelKind, Param};
 use crate::report::number;
-use crate::study::curves::{
-    Samples, Series, Spacing, beam_shear_along, interface_zones, plate_shear_along,
-};
+use crate::study::curves::{Samples, Series, Spacing, interface_zones, shear_along};
 use crate::tui::summary::{self, ContinuumState};
 
 pub use crate::study::curves::{InterfaceZones, Zone, ZoneSpan};
@@ -208,11 +206,7 @@ fn shear_ratios(model: &Model, zones: &InterfaceZones, cells: usize) -> ShearRow
             regularized: Vec::new(),
         };
     };
-    let series: (Series, Series) = match model {
-        Model::Beam { beams, force } => beam_shear_along(beams, *force, positions),
-        Model::Plate(plate) => plate_shear_along(plate, positions),
-        Model::Lap { joint, force } => crate::study::lap::lap_shear_along(joint, *force, positions),
-    };
+    let series: (Series, Series) = shear_along(model, positions);
     // mu P, the stress the interface slides at, for every problem.
     let interface = model.interface();
     let limit = interface.friction * interface.pressure;

@@ -2,6 +2,11 @@
 //! models and their checked constructors, the capability traits a generic study is written
 //! over, the registry's handles, and the errors. Everything else stays one module path away.
 //!
+//! The per-problem part is generated from the registry ([`crate::with_problems`]): each
+//! registered problem's type (`TwinBeamsProblem`, ...) and everything public in its folder's
+//! `closed_form` module (its model, its checked force and parameter types, its law states), so
+//! that a new problem is in the prelude by its registry line and this file names none.
+//!
 //! ```
 //! use microslip_core::prelude::*;
 //! let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
@@ -17,9 +22,18 @@
 pub use crate::kernel::params::{ParamError, Unit};
 pub use crate::kernel::regime::Regime;
 pub use crate::problems::inputs::{Inputs, Model};
-pub use crate::problems::lap::closed_form::{JointForce, LapJoint, LapParams};
 pub use crate::problems::load_driven::LoadDriven;
-pub use crate::problems::plate::closed_form::{PlateParams, SqueezedPlate};
-pub use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams, TwinBeamsParams};
 pub use crate::problems::{AnyProblem, Continuum, ModelKind, Param, Problem};
 pub use crate::study::curves::{Samples, Spacing};
+
+/// Re-exports every registered problem's type and its closed forms (module docs).
+macro_rules! problem_exports {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        $(
+            pub use crate::problems::$folder::$problem;
+            pub use crate::problems::$folder::closed_form::*;
+        )+
+    };
+}
+
+crate::with_problems!(problem_exports);

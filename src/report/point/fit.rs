@@ -25,12 +25,11 @@ pub struct FitReport {
     /// Residual RMS (mm).
     #[serde(rename = "rms_mm")]
     pub rms: f64,
-    /// The beams' F_thre at the fitted values (N); absent for the lap joint.
-    #[serde(rename = "F_thre_N", skip_serializing_if = "Option::is_none")]
-    pub threshold_force: Option<f64>,
-    /// The lap joint's F_gross at the fitted values (N); absent for the beams.
-    #[serde(rename = "F_gross_N", skip_serializing_if = "Option::is_none")]
-    pub gross_slip_force: Option<f64>,
+    /// The regime scale at the fitted values (N) under its problem's name
+    /// ([`Description::regime_scale_name`](crate::problems::Description)): in JSON `F_thre_N`
+    /// of the beams, `F_gross_N` of the lap joint.
+    #[serde(flatten, serialize_with = "regime_scale_field")]
+    pub regime_scale: (&'static str, f64),
     /// F_1 at the fitted values (N).
     #[serde(rename = "F_1_N")]
     pub first_macroslip_force: f64,
@@ -68,6 +67,17 @@ fn weights_and_scatter(scatter: &Scatter) -> (&'static str, Option<f64>, &'stati
 
 /// `weights`, the scatter under its unit's name and, deprecated (kept one release), the same
 /// value as `scatter`, whose unit depended on `weights`.
+/// `{name}_N`: the regime scale under its problem's name ([`FitReport::regime_scale`]).
+fn regime_scale_field<S: Serializer>(
+    (name, value): &(&'static str, f64),
+    s: S,
+) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let mut map = s.serialize_map(Some(1))?;
+    map.serialize_entry(&format!("{name}_N"), value)?;
+    map.end()
+}
+
 fn scatter_fields<S: Serializer>(scatter: &Scatter, s: S) -> Result<S::Ok, S::Error> {
     use serde::ser::SerializeMap;
     let (weights, value, key) = weights_and_scatter(scatter);
@@ -180,10 +190,10 @@ impl From<&Estimate> for EstimateReport {
 
 impl FitReport {
     pub fn new(data: &str, preset: &str, structure: &Structure, result: &FitResult) -> FitReport {
-        let (threshold_force, gross_slip_force) = match structure {
-            Structure::Beam(_) => (Some(result.threshold_force), None),
-            Structure::Lap(_) => (None, Some(result.threshold_force)),
-        };
+        let regime_scale = (
+            structure.kind().description().regime_scale_name,
+            result.threshold_force,
+        );
         FitReport {
             data: data.to_string(),
             preset: preset.to_string(),
@@ -192,8 +202,7 @@ impl FitReport {
             mu: EstimateReport::from(&result.mu),
             kt: EstimateReport::from(&result.kt),
             rms: result.rms,
-            threshold_force,
-            gross_slip_force,
+            regime_scale,
             first_macroslip_force: result.first_macroslip_force,
             beyond_first_macroslip: result.beyond_first_macroslip,
             scatter: result.scatter,
@@ -223,10 +232,7 @@ impl FitReport {
     /// The readable report: estimates with standard errors and the verdicts.
     pub fn text(&self) -> String {
         let mut out = String::new();
-        let what = match self.structure {
-            Structure::Beam(_) => "twin beams",
-            Structure::Lap(_) => "double-lap joint",
-        };
+        let what = self.structure.fitted();
         let _ = writeln!(
             out,
             "Fit of mu and K_T to {} ({}), {what} of preset {}",
@@ -234,28 +240,20 @@ impl FitReport {
             count_of(self.points, "measurement"),
             sanitize(&self.preset)
         );
-        let _ = match &self.structure {
-            Structure::Beam(p) => writeln!(
-                out,
-                "  structure: L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa",
-                number(p.length),
-                number(p.width),
-                number(p.half_height),
-                number(p.youngs_modulus),
-                number(p.pressure)
-            ),
-            Structure::Lap(p) => writeln!(
-                out,
-                "  structure: L = {} mm, b = {} mm, t1 = {} mm, t2 = {} mm, E1 = {} MPa, E2 = {} MPa, P = {} MPa",
-                number(p.length),
-                number(p.width),
-                number(p.inner_thickness),
-                number(p.cover_thickness),
-                number(p.inner_modulus),
-                number(p.cover_modulus),
-                number(p.pressure)
-            ),
-        };
+        let held: Vec<String> = self
+            .structure
+            .held()
+            .into_iter()
+            .map(|(param, value)| {
+                format!(
+                    "{} = {}{}",
+                    param.name(),
+                    number(value),
+                    param.unit_suffix()
+                )
+            })
+            .collect();
+        let _ = writeln!(out, "  structure: {}", held.join(", "));
         for (name, unit, estimate) in [("mu ", "", &self.mu), ("K_T", " MPa/mm", &self.kt)] {
             let error = estimate
                 .std_error
@@ -275,10 +273,7 @@ impl FitReport {
         if let Some(rho) = self.correlation {
             let _ = writeln!(out, "  correlation of mu and K_T = {}", number(rho));
         }
-        let response = match self.structure {
-            Structure::Beam(_) => "w",
-            Structure::Lap(_) => "Delta",
-        };
+        let response = self.structure.kind().description().response_symbol;
         let _ = writeln!(
             out,
             "  errors assume {}",
@@ -290,10 +285,7 @@ impl FitReport {
             ""
         };
         let _ = writeln!(out, "  residual RMS = {} mm{exact}", number(self.rms));
-        let (name, all_slide) = match (self.threshold_force, self.gross_slip_force) {
-            (_, Some(gross)) => ("F_gross", gross),
-            (threshold, None) => ("F_thre", threshold.unwrap_or(f64::NAN)),
-        };
+        let (name, all_slide) = self.regime_scale;
         let _ = writeln!(
             out,
             "  at the fitted values: {name} = {} N, F_1 = {} N; {} of {} measurements above F_1",

@@ -16,7 +16,7 @@ use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::lap::cycle::{LapCycle, MasingCycle};
 use crate::problems::stiffness::mm_to_um;
 use crate::report::{number, number_with, sanitize};
-use crate::study::lap::lap_point;
+use crate::study::curves::lap_point;
 
 /// What the shear-lag theory assumes and where its envelope comes from, said wherever its
 /// numbers are shown.

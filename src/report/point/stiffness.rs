@@ -7,6 +7,9 @@ use serde::Serialize;
 
 use super::regime_label;
 use crate::Regime;
+use crate::problems::lap::stiffness_answer::LapAnswer;
+use crate::problems::plate::stiffness_answer::PlateAnswer;
+use crate::problems::twin_beams::stiffness_answer::BeamAnswer;
 use crate::problems::{BeamParam, ModelKind, Quantity};
 use crate::report::{number, sanitize};
 use crate::study::curves::{Answer, CandidateSource, ComparedStiffness, StiffnessComparison};
@@ -113,32 +116,32 @@ impl From<&ComparedStiffness> for CandidateReport {
     fn from(row: &ComparedStiffness) -> Self {
         let kt = row.candidate.kt;
         let answer = match row.answer {
-            Some(Answer::Beam {
+            Some(Answer::Beam(BeamAnswer {
                 first_macroslip_force,
                 micro_end,
                 tip_deflection,
                 regime,
-            }) => Some(CandidateAnswer::Beam {
+            })) => Some(CandidateAnswer::Beam {
                 first_macroslip_force,
                 micro_end,
                 tip_deflection,
                 regime,
             }),
-            Some(Answer::Plate {
+            Some(Answer::Plate(PlateAnswer {
                 end_displacement,
                 micro_end,
                 regime,
-            }) => Some(CandidateAnswer::Plate {
+            })) => Some(CandidateAnswer::Plate {
                 end_displacement,
                 micro_end,
                 regime,
             }),
-            Some(Answer::Lap {
+            Some(Answer::Lap(LapAnswer {
                 first_slip_force,
                 zones: (slide_at_inner_end, slide_at_cover_ends),
                 joint_displacement,
                 regime,
-            }) => Some(CandidateAnswer::Lap {
+            })) => Some(CandidateAnswer::Lap {
                 first_slip_force,
                 slide_at_inner_end,
                 slide_at_cover_ends,

@@ -8,13 +8,9 @@ use crate::report::{number, number_with};
 use crate::tui::effects::Effect;
 
 /// What `f` fits for `model`: its structure (all but mu and K_T) when it has a load-response
-/// curve to fit, the one place that says which problems have one.
+/// curve to fit ([`Structure::of`] says which problems have one).
 pub(super) fn fit_structure(model: &Model) -> Option<Structure> {
-    match *model {
-        Model::Beam { beams, .. } => Some(Structure::Beam(beams.params())),
-        Model::Lap { joint, .. } => Some(Structure::Lap(joint.params())),
-        Model::Plate(_) => None,
-    }
+    Structure::of(model)
 }
 
 impl App {

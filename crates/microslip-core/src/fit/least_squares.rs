@@ -4,8 +4,9 @@
 
 use super::progress::{PROGRESS_EVERY, Pass, Progress};
 use super::small::{self, MAX_FREE, Matrix, Vector};
-use super::structure::{Curve, Structure};
+use super::structure::Structure;
 use super::{KT_RANGE, Measurement};
+use crate::problems::fittable::FitCurve;
 
 /// Grid points per decade of the bracketing search.
 const GRID_PER_DECADE: f64 = 4.0;
@@ -59,7 +60,7 @@ impl Problem<'_> {
     }
 
     /// The structure at the log-parameters `theta`.
-    fn curve_at(&self, theta: &[f64]) -> Option<Curve> {
+    fn curve_at(&self, theta: &[f64]) -> Option<Box<dyn FitCurve>> {
         let (mu, kt) = self.unpack(theta);
         self.structure.at(mu, kt)
     }
@@ -110,7 +111,7 @@ impl Problem<'_> {
         tick: &mut dyn FnMut(usize),
     ) -> (Matrix, Vector) {
         let free = theta.len();
-        let shifted: [Option<Curve>; MAX_FREE] = std::array::from_fn(|j| {
+        let shifted: [Option<Box<dyn FitCurve>>; MAX_FREE] = std::array::from_fn(|j| {
             (j < free)
                 .then(|| {
                     let mut moved = theta.to_vec();
@@ -127,7 +128,7 @@ impl Problem<'_> {
                 tick(i);
             }
             for (entry, curve) in row.iter_mut().zip(&shifted).take(free) {
-                *entry = match curve.and_then(|c| c.response(m.force)) {
+                *entry = match curve.as_ref().and_then(|c| c.response(m.force)) {
                     Some(response) => ((response - m.response) / sigma - r) / JACOBIAN_STEP,
                     None => 0.0,
                 };

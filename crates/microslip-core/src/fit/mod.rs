@@ -1,13 +1,14 @@
-//! Identification of mu and K_T from a measured twin-beam deflection curve w(L) vs F.
+//! Identification of mu and K_T from a measured load-response curve u(F) of any fittable problem
+//! ([`Fittable`]: the twin beams' w(L), the lap joint's Delta), written once.
 //!
 //! The paper's practical point (its section 2.1.3): below F_1 the whole interface is in microslip and
-//! w depends on K_T but not on mu; past F_1 the slope changes (towards the Coulomb slip slope, which
+//! u depends on K_T but not on mu; past F_1 the slope changes (towards the Coulomb slip slope, which
 //! carries mu). So K_T comes from the curve's stiffness, mu from where and how the slope changes.
 //!
 //! Method: nonlinear least squares on the closed form, in log-parameters (both must stay positive and
 //! span decades). A coarse grid over both (the bracket) gives a start that does not depend on the
 //! user's guess, then Levenberg-Marquardt refines it. The residuals are weighted by what the
-//! scatter of each measurement is assumed to be ([`Weights`]: absolute, relative to w, or given per
+//! scatter of each measurement is assumed to be ([`Weights`]: absolute, relative to u, or given per
 //! point); standard errors and the mu-K_T correlation come from the Jacobian at the optimum
 //! ((J^T W J)^-1, times the reduced chi-square unless the sigmas are known; delta method back to
 //! linear units; derived in docs/theory.md).
@@ -17,8 +18,13 @@
 //! subsamples (32 times larger at each level), so the full data are only visited by the last two
 //! or three Gauss-Newton steps; the normal equations are summed point by point, never storing the
 //! Jacobian. Up to 1024 rows the fit is the same computation as ever.
-//! [`fit_twin_beams_with_progress`] reports how far it got, for callers that show progress. Identifiability is judged from the
-//! physics first (no data beyond F_1: mu cannot be seen) and from the standard errors second.
+//! [`fit_weighted`] reports how far it got, for callers that show progress. Identifiability is
+//! judged from the physics first (no data beyond F_1: mu cannot be seen) and from the standard
+//! errors second.
+//!
+//! A structure that carries a bounded force (the lap joint carries none beyond F_gross = 2 b mu
+//! P L, docs/theory.md (L11) and section 3b) is searched only where mu carries every measured
+//! force ([`Fittable::force_per_friction`]).
 //!
 //! Results are data only: the reason behind each verdict is an [`Evidence`] carrying its numbers;
 //! the words for people are written by the `report` module.
@@ -26,9 +32,7 @@
 pub mod measurement;
 pub mod weights;
 
-mod beam;
 mod evidence;
-mod lap;
 mod least_squares;
 mod progress;
 mod small;
@@ -36,7 +40,6 @@ mod structure;
 
 use thiserror::Error;
 
-pub use beam::{fit_twin_beams, fit_twin_beams_weighted, fit_twin_beams_with_progress};
 pub use evidence::{Estimate, Evidence, FitResult, Status};
 pub use measurement::{MIN_ROWS, Measured, Measurement};
 pub use progress::{Pass, Progress};
@@ -44,6 +47,7 @@ pub use structure::Structure;
 pub use weights::{Scatter, Weights};
 
 use crate::kernel::params::ParamError;
+use crate::problems::fittable::Fittable;
 use evidence::summarize;
 use least_squares::{LADDER, Problem, SUBSAMPLE, bracket, refine, spread};
 
@@ -79,8 +83,8 @@ pub enum FitError {
         /// The response column (`w_mm`, `Delta_mm`).
         column: &'static str,
     },
-    /// (Lap joint) A measured force beyond the gross-slip force of every mu searched: no state
-    /// of the joint carries it.
+    /// (A structure that carries a bounded force: the lap joint) A measured force beyond the
+    /// gross-slip force of every mu searched: no state of the structure carries it.
     #[error(
         "invalid F_N = {force}: beyond the gross-slip force 2 b mu P L of every mu up to {} \
          ({largest} N): the joint slides through, so no mu fits it",
@@ -94,13 +98,124 @@ pub enum FitError {
     },
 }
 
-/// Fits mu and K_T (each unless `fixed`, (mu, K_T)) of any [`Structure`] to its measured
-/// load-response curve, as [`fit_twin_beams_weighted`] does for the beams: the lap joint's Delta
-/// against F (docs/theory.md (L11) and section 3b).
+/// Fits mu and K_T (each unless `fixed`, (mu, K_T)) of the typed `structure` of the fittable
+/// problem `P` to its measured load-response curve: [`fit_weighted`] of
+/// [`Structure::typed`]. Only the structure's geometry, moduli and pressure are used; its own mu
+/// and K_T are not a start (the grid is), only what a fixed value replaces.
+///
+/// Equal weights ([`Weights::Absolute`]) are right for a curve whose error does not grow with u,
+/// such as a model's mismatch to another model; measured curves usually scatter in proportion to
+/// u: fit them with [`Weights::default`] (relative), or with their own sigmas.
 ///
 /// # Errors
-/// As [`fit_twin_beams_weighted`]; for the joint also a fixed mu or the structure's own at which
-/// the largest measured force exceeds F_gross.
+/// As [`fit_weighted`].
+///
+/// # Examples
+///
+/// A curve measured on beams with mu = 0.4 and K_T = 200 MPa/mm, well past F_1, gives both back:
+///
+/// ```
+/// use microslip_core::fit::{Measurement, Status, Weights, fit_curve};
+/// use microslip_core::prelude::*;
+///
+/// let truth = TwinBeams::new(TwinBeamsParams {
+///     friction: 0.4,
+///     tangential_stiffness: 200.0,
+///     ..TwinBeamsParams::PAPER
+/// })?;
+/// let data: Vec<Measurement> = (1..=30)
+///     .map(|i| {
+///         let force = 10.0 * f64::from(i);
+///         let w = truth.regularized(TipForce::new(force)?).tip_deflection();
+///         Ok(Measurement { force, response: w })
+///     })
+///     .collect::<Result<_, ParamError>>()?;
+///
+/// // Only the geometry, E and P of the structure are used.
+/// let paper = TwinBeams::new(TwinBeamsParams::PAPER)?;
+/// let fit = fit_curve::<TwinBeamsProblem>(&paper, &data, (None, None), Weights::Absolute, &mut |_| {})?;
+/// assert!((fit.mu.value - 0.4).abs() < 1e-6);
+/// assert!((fit.kt.value - 200.0).abs() < 1e-3);
+/// assert_eq!(fit.mu.status, Status::Identified);
+/// assert!(fit.beyond_first_macroslip > 2);
+///
+/// // Holding K_T fixed fits mu alone.
+/// let fit = fit_curve::<TwinBeamsProblem>(&paper, &data, (None, Some(200.0)), Weights::Absolute, &mut |_| {})?;
+/// assert_eq!(fit.kt.status, Status::Fixed);
+/// assert!((fit.mu.value - 0.4).abs() < 1e-6);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn fit_curve<P: Fittable>(
+    structure: &P::Structure,
+    data: &[Measurement],
+    fixed: (Option<f64>, Option<f64>),
+    weights: Weights,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<FitResult, FitError> {
+    fit_weighted(
+        Structure::typed::<P>(structure),
+        data,
+        fixed,
+        weights,
+        progress,
+    )
+}
+
+/// The mu range to search for `structure` with the trial (`mu`, `kt`) (fixed values, else the
+/// structure's own), checked through its own constructor: [`MU_RANGE`], from above the smallest
+/// mu that carries every measured force where the force it carries is bounded (a fit on that
+/// bound is reported as at the search bound).
+///
+/// # Errors
+/// The structure at (`mu`, `kt`) is invalid; a `fixed_mu` does not carry the largest measured
+/// force; or no mu searched carries it ([`FitError::BeyondGrossSlip`]).
+fn mu_range(
+    structure: &Structure,
+    (mu, kt): (f64, f64),
+    fixed_mu: bool,
+    data: &[Measurement],
+) -> Result<(f64, f64), FitError> {
+    let Some(at) = structure.checked_at(mu, kt) else {
+        return Ok(MU_RANGE);
+    };
+    let at = at?;
+    let Some(per_mu) = structure.force_per_friction() else {
+        return Ok(MU_RANGE);
+    };
+    let Some(largest) = data.iter().map(|m| m.force).reduce(f64::max) else {
+        return Ok(MU_RANGE);
+    };
+    // A fixed mu must carry every measured force.
+    if fixed_mu {
+        at.carries(largest)?;
+    }
+    let least = largest / per_mu * (1.0 + 1e-9);
+    if least > MU_RANGE.1 {
+        return Err(FitError::BeyondGrossSlip {
+            force: largest,
+            largest: per_mu * MU_RANGE.1,
+        });
+    }
+    Ok((MU_RANGE.0.max(least), MU_RANGE.1))
+}
+
+/// Fits mu and K_T (each unless `fixed`, (mu, K_T)) of any [`Structure`] to its measured
+/// load-response curve (the beams' w(L), the lap joint's Delta against F), the measurements
+/// weighed by `weights` (what their scatter is assumed to be, which the standard errors and the
+/// correlation depend on), telling `progress` how far it got (see [`Progress`]; the result is
+/// the same).
+///
+/// A million measurements take a few seconds: the grid search and a first refinement run on an
+/// evenly spread subsample of a few thousand rows, and the refinement finishes on all of them,
+/// where it typically needs one or two steps.
+///
+/// # Errors
+/// [`FitError::Param`] when the structure or a fixed value is invalid (the model's own checks),
+/// or a fixed mu (or the structure's own) does not carry the largest measured force;
+/// [`FitError::TooFewPoints`] when there are not more measurements than free parameters;
+/// [`FitError::Sigma`] when `weights` gives sigmas that are not one positive finite value per
+/// measurement; [`FitError::NothingToFit`] for a curve of zeros;
+/// [`FitError::BeyondGrossSlip`] for a force no mu searched carries.
 pub fn fit_weighted(
     structure: Structure,
     data: &[Measurement],
@@ -112,13 +227,7 @@ pub fn fit_weighted(
     // searched is the structure's own business (the lap joint's carries every measured force).
     let (own_mu, own_kt) = structure.own();
     let (mu, kt) = (fixed_mu.unwrap_or(own_mu), fixed_kt.unwrap_or(own_kt));
-    let mu_range = match structure {
-        Structure::Beam(p) => {
-            beam::check(p, mu, kt)?;
-            MU_RANGE
-        }
-        Structure::Lap(p) => lap::mu_range(p, (mu, kt), fixed_mu.is_some(), data)?,
-    };
+    let mu_range = mu_range(&structure, (mu, kt), fixed_mu.is_some(), data)?;
     let sigma = weights.sigmas(data)?;
     let problem = Problem {
         structure,
@@ -178,8 +287,46 @@ pub fn fit_weighted(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::problems::lap::LapJointProblem;
     use crate::problems::lap::closed_form::{LapJoint, LapParams};
+    use crate::problems::twin_beams::TwinBeamsProblem;
     use crate::{TipForce, TwinBeams, TwinBeamsParams};
+
+    /// The beams of `params`, fitted with equal weights (what `fit_twin_beams` was).
+    fn fit_twin_beams(
+        params: TwinBeamsParams,
+        data: &[Measurement],
+        fixed_mu: Option<f64>,
+        fixed_kt: Option<f64>,
+    ) -> Result<FitResult, FitError> {
+        fit_twin_beams_with_progress(params, data, fixed_mu, fixed_kt, &mut |_| {})
+    }
+
+    fn fit_twin_beams_with_progress(
+        params: TwinBeamsParams,
+        data: &[Measurement],
+        fixed_mu: Option<f64>,
+        fixed_kt: Option<f64>,
+        progress: &mut dyn FnMut(Progress),
+    ) -> Result<FitResult, FitError> {
+        fit_weighted(
+            beams(params),
+            data,
+            (fixed_mu, fixed_kt),
+            Weights::Absolute,
+            progress,
+        )
+    }
+
+    /// The beams' structure with the geometry, E and P of `params` (mu and K_T as the paper's,
+    /// which the fits replace).
+    fn beams(params: TwinBeamsParams) -> Structure {
+        Structure::typed::<TwinBeamsProblem>(&TwinBeams::new(params).unwrap())
+    }
+
+    fn joint(params: LapParams) -> Structure {
+        Structure::typed::<LapJointProblem>(&LapJoint::new(params).unwrap())
+    }
 
     fn synthetic(mu: f64, kt: f64, forces: impl Iterator<Item = f64>) -> Vec<Measurement> {
         let beams = TwinBeams::new(TwinBeamsParams {
@@ -237,7 +384,7 @@ mod tests {
                 .collect()
         };
         let fit = fit_weighted(
-            Structure::Lap(LapParams::ALUMINIUM),
+            joint(LapParams::ALUMINIUM),
             &curve(0.9 * gross),
             (None, None),
             Weights::Absolute,
@@ -253,7 +400,7 @@ mod tests {
         assert!((fit.threshold_force / gross - 1.0).abs() < 1e-6);
         // Only microslip: K_T is seen, mu only bounded from below.
         let below = fit_weighted(
-            Structure::Lap(LapParams::ALUMINIUM),
+            joint(LapParams::ALUMINIUM),
             &curve(0.9 * truth.first_slip_force()),
             (None, None),
             Weights::Absolute,
@@ -271,7 +418,7 @@ mod tests {
             response: force * 1e-5,
         });
         let refused = fit_weighted(
-            Structure::Lap(LapParams::ALUMINIUM),
+            joint(LapParams::ALUMINIUM),
             &over,
             (None, None),
             Weights::Absolute,
@@ -286,7 +433,7 @@ mod tests {
         );
         // A fixed mu that cannot carry the largest force is refused by name.
         let refused = fit_weighted(
-            Structure::Lap(LapParams::ALUMINIUM),
+            joint(LapParams::ALUMINIUM),
             &curve(0.9 * gross),
             (Some(0.1), None),
             Weights::Absolute,
@@ -394,7 +541,7 @@ mod tests {
         }
         let sigma = vec![1.0; data.len()];
         let problem = Problem {
-            structure: Structure::Beam(TwinBeamsParams::PAPER),
+            structure: beams(TwinBeamsParams::PAPER),
             mu_range: MU_RANGE,
             data: &data,
             sigma: &sigma,

@@ -1,88 +1,111 @@
-//! What is fitted: the load-driven structures whose load-response curve a fit matches, each at
-//! a trial (mu, K_T).
+//! What is fitted: the structure of a fittable problem ([`Fittable`]), all but mu and K_T fixed,
+//! and the same structure at a trial (mu, K_T).
 
-use crate::problems::lap::closed_form::{LapJoint, LapParams};
-use crate::{TipForce, TwinBeams, TwinBeamsParams};
+use std::fmt;
 
-/// What is fitted: a problem with a load-response curve, its structure (all but mu and K_T) fixed.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Structure {
-    /// Twin beams: w(L) against the tip force.
-    Beam(TwinBeamsParams),
-    /// The lap joint: Delta against the force through it (a force beyond F_gross at a trial mu
-    /// has no state there: that mu is outside the fit's domain).
-    Lap(LapParams),
+use crate::kernel::params::ParamError;
+use crate::problems::fittable::{self, AnyFittable, FitCurve, Fittable};
+use crate::problems::inputs::Model;
+use crate::problems::{ModelKind, Param};
+
+/// What is fitted: the structure of a problem with a load-response curve ([`Fittable`]), held
+/// as a [`Model`] of it (its force is not used: the fit's forces are the measured ones). Made by
+/// [`Structure::of`] for any model (`None`: the problem has no curve to fit) or
+/// [`Structure::typed`] from a typed structure.
+#[derive(Clone, Copy)]
+pub struct Structure {
+    fittable: &'static dyn AnyFittable,
+    model: Model,
 }
 
-/// The structure at one (mu, K_T): its response at a force, and the forces where it changes
-/// regime.
-#[derive(Debug, Clone, Copy)]
-pub(super) enum Curve {
-    Beam(TwinBeams),
-    Lap(LapJoint),
+impl fmt::Debug for Structure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Structure")
+            .field("model", &self.model)
+            .finish()
+    }
+}
+
+impl PartialEq for Structure {
+    /// The same structure: the capability follows from the model's problem.
+    fn eq(&self, other: &Self) -> bool {
+        self.model == other.model
+    }
 }
 
 impl Structure {
-    /// The structure at `mu`, `kt`; None where they (or the structure) are not accepted.
-    pub(super) fn at(&self, mu: f64, kt: f64) -> Option<Curve> {
-        match *self {
-            Structure::Beam(structure) => TwinBeams::new(TwinBeamsParams {
-                friction: mu,
-                tangential_stiffness: kt,
-                ..structure
-            })
-            .ok()
-            .map(Curve::Beam),
-            Structure::Lap(structure) => LapJoint::new(LapParams {
-                friction: mu,
-                tangential_stiffness: kt,
-                ..structure
-            })
-            .ok()
-            .map(Curve::Lap),
+    /// The structure of `model`, when its problem is fittable; `None` for a problem without a
+    /// load-response curve (the plate): the one place that says which problems `f` fits.
+    pub fn of(model: &Model) -> Option<Structure> {
+        let fittable = model.kind().problem().fittable()?;
+        Some(Structure {
+            fittable,
+            model: *model,
+        })
+    }
+
+    /// The typed `structure` of the fittable problem `P`.
+    pub fn typed<P: Fittable>(structure: &P::Structure) -> Structure {
+        Structure {
+            fittable: &fittable::FittableOf::<P>::NEW,
+            model: fittable::unloaded::<P>(structure),
         }
     }
 
-    /// The header of its response column in a measurement file.
-    pub(super) fn response_column(&self) -> &'static str {
-        match self {
-            Structure::Beam(_) => "w_mm",
-            Structure::Lap(_) => "Delta_mm",
-        }
+    /// The problem fitted.
+    pub fn kind(&self) -> ModelKind {
+        self.fittable.kind()
+    }
+
+    /// The model the structure is held as (at no particular force).
+    pub fn model(&self) -> &Model {
+        &self.model
+    }
+
+    /// What the fit's report calls it (`twin beams`).
+    pub fn fitted(&self) -> &'static str {
+        self.fittable.fitted()
+    }
+
+    /// The parameters the fit holds, with their values, in the order its report lists them.
+    pub fn held(&self) -> Vec<(Param, f64)> {
+        let inputs = self.model.inputs();
+        self.fittable
+            .held()
+            .into_iter()
+            .filter_map(|p| Some((p, inputs.get(p)?)))
+            .collect()
+    }
+
+    /// The header of its response column in a measurement file (`w_mm`).
+    pub fn response_column(&self) -> &'static str {
+        self.fittable.response_column()
+    }
+
+    /// The structure at `mu`, `kt`; `None` where they (or the structure) are not accepted.
+    pub(super) fn at(&self, mu: f64, kt: f64) -> Option<Box<dyn FitCurve>> {
+        self.checked_at(mu, kt)?.ok()
+    }
+
+    /// The structure at `mu`, `kt`, or why it refuses them; `None` only for a structure whose
+    /// model is not its capability's (not made by [`Structure::of`] or [`Structure::typed`]).
+    pub(super) fn checked_at(
+        &self,
+        mu: f64,
+        kt: f64,
+    ) -> Option<Result<Box<dyn FitCurve>, ParamError>> {
+        self.fittable.curve(&self.model, mu, kt)
     }
 
     /// The structure's own mu and K_T.
     pub(super) fn own(&self) -> (f64, f64) {
-        match self {
-            Structure::Beam(p) => (p.friction, p.tangential_stiffness),
-            Structure::Lap(p) => (p.friction, p.tangential_stiffness),
-        }
-    }
-}
-
-impl Curve {
-    /// The regularized response at `force` (mm); None for a force the structure does not accept.
-    pub(super) fn response(&self, force: f64) -> Option<f64> {
-        match self {
-            Curve::Beam(beams) => Some(
-                beams
-                    .regularized(TipForce::new(force).ok()?)
-                    .tip_deflection(),
-            ),
-            Curve::Lap(joint) => Some(
-                joint
-                    .regularized(joint.force(force).ok()?)
-                    .joint_displacement(),
-            ),
-        }
+        self.fittable
+            .interface(&self.model)
+            .unwrap_or((f64::NAN, f64::NAN))
     }
 
-    /// (the force above which all slides under Coulomb, F_1) (N): F_thre and F_1 of the beams,
-    /// F_gross and F_1 of the joint.
-    pub(super) fn regime_forces(&self) -> (f64, f64) {
-        match self {
-            Curve::Beam(beams) => (beams.threshold_force(), beams.first_macroslip_force()),
-            Curve::Lap(joint) => (joint.gross_slip_force(), joint.first_slip_force()),
-        }
+    /// [`Fittable::force_per_friction`].
+    pub(super) fn force_per_friction(&self) -> Option<f64> {
+        self.fittable.force_per_friction(&self.model).flatten()
     }
 }

@@ -76,6 +76,9 @@ pub trait LoadDriven: Problem + Registered {
     fn structure(model: &Self::Model) -> Self::Structure;
     /// The force `model` is at.
     fn applied_force(model: &Self::Model) -> Self::Force;
+    /// The model of `structure` at `force`: the inverse of [`LoadDriven::structure`] and
+    /// [`LoadDriven::applied_force`].
+    fn at_force(structure: &Self::Structure, force: Self::Force) -> Self::Model;
 
     /// Accepts `newtons` as a force this structure carries.
     ///

@@ -43,6 +43,18 @@
 //!      [`AnyChoice`](choice::AnyChoice) handed out by `choices()`, which presets and the
 //!      command line read and write with no edit; a problem whose refusal of another's setting
 //!      needs its own words ("the plate", not its title) writes `REFUSED_AS`;
+//!      `load_driven()`, and every sweep, cycle, tolerance and load chart serves it; then also
+//!      `fittable.rs` ([`fittable::Fittable`], handed out by `fittable()`), and the fit (the
+//!      TUI's `f`, `microslip fit`) serves it;
+//!    - what every problem writes, because the studies dispatch over the whole registry:
+//!      `point.rs` (its row type and [`pointwise::Pointwise`]: the sweeps' rows, re-exported
+//!      into `study::curves`), `profiles.rs` ([`profiled::Profiled`]: the shear along the
+//!      interface), `stiffness_answer.rs` ([`stiffness_answer::StiffnessAnswer`]: the K_T
+//!      comparison's row);
+//!    - what it may write, each handed out by the [`Problem`] method of the same name:
+//!      `zoned.rs` ([`zoned::Zoned`]: the TUI's zone strip) and `cross_check.rs`
+//!      ([`cross_check::CrossChecked`]: its closed forms against its discretized solver in
+//!      `microslip verify`);
 //!    - `mod.rs`: its `DESCRIPTION` (key, title, summary, paper preset, parameters through
 //!      `param_list!`, quantities, load) and its `quantity` function;
 //!    - `problem.rs`: the unit struct (`CylinderProblem`) implementing [`ParamKey`] for its key
@@ -92,14 +104,20 @@ macro_rules! param_list {
 }
 
 pub mod choice;
+pub mod cross_check;
+pub mod fittable;
 pub mod inputs;
 pub mod lap;
 pub mod load_driven;
 pub mod plate;
+pub mod pointwise;
 pub mod problem;
+pub mod profiled;
 pub mod quantity;
 pub mod stiffness;
+pub mod stiffness_answer;
 pub mod twin_beams;
+pub mod zoned;
 
 pub use lap::params::LapParam;
 pub use plate::params::PlateParam;

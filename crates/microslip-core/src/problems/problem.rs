@@ -19,8 +19,11 @@ use crate::kernel::params::{ParamError, ParamSpec};
 use crate::kernel::regime::Regime;
 use crate::numeric::NumericError;
 use crate::problems::choice::AnyChoice;
+use crate::problems::cross_check::AnyCrossChecked;
+use crate::problems::fittable::AnyFittable;
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::AnyLoadDriven;
+use crate::problems::zoned::AnyZoned;
 use crate::problems::{Description, ModelKind, Param, Quantity, Solution, UnknownParam};
 
 /// One parameter of one problem, typed (each folder's key enum, in its `params.rs`): what the
@@ -175,6 +178,24 @@ pub trait Problem: Send + Sync + Sized + 'static {
     /// for the plate: "... not the plate"), with why it has none in parentheses where that helps
     /// (a one-line flag refusal keeps the part before them). By default its title.
     const REFUSED_AS: &'static str = Self::INFO.title;
+    /// Its fit of mu and K_T to a measured load-response curve, where it has one
+    /// ([`Fittable`](crate::problems::fittable::Fittable)): how the erased side finds the
+    /// capability (as [`Problem::continuum`]).
+    fn fittable() -> Option<&'static dyn AnyFittable> {
+        None
+    }
+
+    /// The comparison of its closed forms with its own discretized solver, where it has one
+    /// ([`CrossChecked`](crate::problems::cross_check::CrossChecked)): what `verify` runs.
+    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
+        None
+    }
+
+    /// Its interface's layout under both laws, where it has one interface that holds over one
+    /// stretch ([`Zoned`](crate::problems::zoned::Zoned)): what the zone strip draws.
+    fn zoned() -> Option<&'static dyn AnyZoned> {
+        None
+    }
 
     /// Bridge to the [`Inputs`] enum while it exists.
     fn to_inputs(params: Self::Params) -> Inputs;
@@ -410,6 +431,13 @@ pub trait AnyProblem: Send + Sync {
     fn choices(&self) -> &'static [&'static dyn AnyChoice];
     /// [`Problem::REFUSED_AS`].
     fn refused_as(&self) -> &'static str;
+    /// Its fit of mu and K_T to a measured curve, where it has one: `None` answers "can `f`
+    /// fit this problem?" without a `match` on its kind.
+    fn fittable(&self) -> Option<&'static dyn AnyFittable>;
+    /// Its cross-check against its own discretized solver, where it has one.
+    fn cross_checked(&self) -> Option<&'static dyn AnyCrossChecked>;
+    /// Its interface's layout, where it has one.
+    fn zoned(&self) -> Option<&'static dyn AnyZoned>;
 
     /// [`Inputs`] of this problem at `values`.
     ///
@@ -483,6 +511,18 @@ impl<P: Problem + Registered> AnyProblem for P {
 
     fn refused_as(&self) -> &'static str {
         P::REFUSED_AS
+    }
+
+    fn fittable(&self) -> Option<&'static dyn AnyFittable> {
+        P::fittable()
+    }
+
+    fn cross_checked(&self) -> Option<&'static dyn AnyCrossChecked> {
+        P::cross_checked()
+    }
+
+    fn zoned(&self) -> Option<&'static dyn AnyZoned> {
+        P::zoned()
     }
 
     fn inputs_at(&self, values: &[f64]) -> Result<Inputs, ProblemError> {

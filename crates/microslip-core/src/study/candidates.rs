@@ -3,8 +3,9 @@
 //! text and JSON reports and the TUI's table.
 
 use crate::kernel::code_defaults::CodeDefault;
-use crate::kernel::regime::Regime;
+use crate::problems::Problem;
 use crate::problems::inputs::Model;
+use crate::problems::stiffness_answer::StiffnessAnswer;
 
 /// Where a K_T to compare comes from.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,57 +47,57 @@ pub struct StiffnessCandidate {
     pub kt: Option<f64>,
 }
 
-/// What a K_T does to the model.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Answer {
-    /// Twin beams at the model's force.
-    Beam {
-        /// First-macroslip force F_1 (N).
-        first_macroslip_force: f64,
-        /// End of the microslip zone X (mm).
-        micro_end: f64,
-        /// Tip deflection w(L) (mm).
-        tip_deflection: f64,
-        /// Regime.
-        regime: Regime,
-    },
-    /// The plate.
-    Plate {
-        /// End displacement u(L) (mm).
-        end_displacement: f64,
-        /// End of the microslip zone X_r (mm).
-        micro_end: f64,
-        /// Regime.
-        regime: Regime,
-    },
-    /// The lap joint at the model's force.
-    Lap {
-        /// Force of first sliding F_1 (N).
-        first_slip_force: f64,
-        /// Sliding zones a (from x = 0) and d (from x = L) (mm).
-        zones: (f64, f64),
-        /// Joint displacement Delta (mm).
-        joint_displacement: f64,
-        /// Regime.
-        regime: Regime,
-    },
+/// Writes [`Answer`] and its dispatch from the registry: one variant per problem, holding its
+/// [`StiffnessAnswer::Answer`], so that this file names no problem.
+macro_rules! answers {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        /// What a K_T does to the model: one variant per problem (generated from the registry),
+        /// holding that problem's [`StiffnessAnswer::Answer`].
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub enum Answer {
+            $($(#[$doc])* $variant(
+                <crate::problems::$folder::$problem as StiffnessAnswer>::Answer
+            )),+
+        }
+
+        impl Answer {
+            /// The displacement the benchmark compares: the beams' w(L), the plate's u(L), the
+            /// lap joint's Delta (mm).
+            pub fn response(&self) -> f64 {
+                match self {
+                    $(Answer::$variant(answer) => {
+                        <crate::problems::$folder::$problem as StiffnessAnswer>::answer_response(
+                            answer,
+                        )
+                    })+
+                }
+            }
+        }
+
+        /// What `kt` does to `model` (at the model's force where it has one); `None` for an
+        /// invalid K_T.
+        fn answer_for_stiffness(model: &Model, kt: f64) -> Option<Answer> {
+            $(if let Some(typed) = <crate::problems::$folder::$problem as Problem>::from_model(model) {
+                return <crate::problems::$folder::$problem as StiffnessAnswer>::answer(&typed, kt)
+                    .map(Answer::$variant);
+            })+
+            None
+        }
+
+        /// Coulomb's w(L) (beams), u(L) (plate) or Delta (lap) for `model` at its force: the
+        /// K_T -> infinity limit the `vs Coulomb` column divides by.
+        fn coulomb_response(model: &Model) -> f64 {
+            $(if let Some(typed) = <crate::problems::$folder::$problem as Problem>::from_model(model) {
+                return <crate::problems::$folder::$problem as StiffnessAnswer>::coulomb_response(
+                    &typed,
+                );
+            })+
+            f64::NAN
+        }
+    };
 }
 
-impl Answer {
-    /// The displacement the benchmark compares: the beams' w(L), the plate's u(L), the lap
-    /// joint's Delta (mm).
-    pub fn response(&self) -> f64 {
-        match *self {
-            Answer::Beam { tip_deflection, .. } => tip_deflection,
-            Answer::Plate {
-                end_displacement, ..
-            } => end_displacement,
-            Answer::Lap {
-                joint_displacement, ..
-            } => joint_displacement,
-        }
-    }
-}
+crate::with_problems!(answers);
 
 /// One row of the K_T comparison: the candidate and, when it has a valid K_T, its answer.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -132,7 +133,7 @@ pub struct ComparedStiffness {
 ///     .find(|r| matches!(r.candidate.source, CandidateSource::Equation4 { .. }))
 ///     .unwrap();
 /// assert!((eq4.candidate.kt.unwrap() - 6.47e5).abs() < 1e3); // MPa/mm
-/// assert!(matches!(eq4.answer, Some(Answer::Plate { .. })));
+/// assert!(matches!(eq4.answer, Some(Answer::Plate(_))));
 /// # Ok::<(), microslip_core::ParamError>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
@@ -143,50 +144,6 @@ pub struct StiffnessComparison {
     pub element: f64,
     /// The rows: current, those from K_N (when given), then each code.
     pub rows: Vec<ComparedStiffness>,
-}
-
-/// Coulomb's w(L) (beams), u(L) (plate) or Delta (lap) for `model` at its force: the K_T ->
-/// infinity limit the `vs Coulomb` column divides by.
-fn coulomb_response(model: &Model) -> f64 {
-    match model {
-        Model::Beam { beams, force } => beams.coulomb(*force).tip_deflection(),
-        Model::Plate(plate) => plate.coulomb().end_displacement(),
-        Model::Lap { joint, force } => joint.coulomb(*force).joint_displacement(),
-    }
-}
-
-/// What `kt` does to `model` (at the model's force for the beams); `None` for an invalid K_T.
-fn answer_for_stiffness(model: &Model, kt: f64) -> Option<Answer> {
-    Some(match model {
-        Model::Beam { beams, force } => {
-            let beams = beams.with_tangential_stiffness(kt).ok()?;
-            let state = beams.regularized(*force);
-            Answer::Beam {
-                first_macroslip_force: beams.first_macroslip_force(),
-                micro_end: state.micro_zone_end(),
-                tip_deflection: state.tip_deflection(),
-                regime: state.regime(),
-            }
-        }
-        Model::Plate(plate) => {
-            let state = plate.with_tangential_stiffness(kt).ok()?.regularized();
-            Answer::Plate {
-                end_displacement: state.end_displacement(),
-                micro_end: state.micro_zone_end(),
-                regime: state.regime(),
-            }
-        }
-        Model::Lap { joint, force } => {
-            let joint = joint.with_tangential_stiffness(kt).ok()?;
-            let state = joint.regularized(*force);
-            Answer::Lap {
-                first_slip_force: joint.first_slip_force(),
-                zones: (state.slide_at_inner_end(), state.slide_at_cover_ends()),
-                joint_displacement: state.joint_displacement(),
-                regime: state.regime(),
-            }
-        }
-    })
 }
 
 /// Compares the K_T values worth comparing for `model`: the current one, those from a normal contact
@@ -261,7 +218,7 @@ mod tests {
         assert_eq!(table.rows[0].candidate.source, CandidateSource::Current);
         assert!(matches!(
             table.rows[0].answer,
-            Some(Answer::Beam { micro_end, .. }) if (micro_end - 17.3095).abs() < 1e-4
+            Some(Answer::Beam(a)) if (a.micro_end - 17.3095).abs() < 1e-4
         ));
         assert!(matches!(
             table.rows[2].candidate.source,

@@ -1,20 +1,25 @@
-//! Sweeps and profiles: the twin beams and the plate over a range of a parameter, their
-//! responses against a parameter, their shear along the interface. The CLI's sweeps, its
-//! single-point reports and the TUI's charts take their numbers from here, so a value on screen
-//! and the same value in a CSV file come from the same function. The load-driven studies (force
-//! sweeps, cycles, loops) are written once in [`crate::study::load`].
+//! Sweeps and profiles of any problem: a problem over a range of one of its parameters, its
+//! responses against a parameter, its shear along the interface, the load-driven charts' zone
+//! edges against F. The CLI's sweeps, its single-point reports and the TUI's charts take their
+//! numbers from here, so a value on screen and the same value in a CSV file come from the same
+//! function. The load-driven studies (force sweeps, cycles, loops) are written once in
+//! [`crate::study::load`]. Everything here is written once, generic over the capability it
+//! needs ([`Pointwise`], [`Profiled`], [`LoadDriven`], or [`Problem`] alone), or dispatched from
+//! the registry over every problem ([`response_vs_param`], [`shear_along`]); each problem's point
+//! type (`BeamPoint`, `beam_point`, ...) is re-exported here from its folder's `point` module,
+//! generated from the registry.
 //!
 //! Sweeps are iterators: a million-row sweep streams without building the table first.
 
 use crate::kernel::regime::Law;
-use crate::kernel::validity::Validity;
 use crate::problems::inputs::Model;
-use crate::problems::twin_beams::problem::{BeamsModel, TwinBeamsProblem};
-use crate::problems::{BeamParam, Param, PlateParam, Problem};
+use crate::problems::load_driven::LoadDriven;
+use crate::problems::pointwise::Pointwise;
+use crate::problems::problem::BothLaws;
+use crate::problems::profiled::Profiled;
+use crate::problems::{Param, ParamKey, Problem};
 use crate::study::load;
-use crate::{Regime, SqueezedPlate, TipForce, TwinBeams};
 
-pub use crate::problems::twin_beams::load_driven::{BeamPoint, beam_point};
 pub use crate::study::candidates::{
     Answer, CandidateSource, ComparedStiffness, StiffnessCandidate, StiffnessComparison,
     compare_stiffnesses,
@@ -25,266 +30,258 @@ pub use crate::study::samples::{
 };
 pub use crate::study::zones::{InterfaceZones, Zone, ZoneBoundary, ZoneSpan, interface_zones};
 
-/// The twin beams over a range of forces: one row per sample, every one computed at the force
-/// asked for ([`load::force_sweep`]).
-///
-/// # Errors
-/// [`RangeError::Bound`] when an end of `forces` is not an accepted tip force (see
-/// [`force_samples`], which checks this when the range is made).
-pub fn beam_force_sweep(
-    beams: TwinBeams,
-    forces: Samples,
-) -> Result<impl Iterator<Item = BeamPoint>, RangeError> {
-    load::force_sweep::<TwinBeamsProblem>(beams, forces)
+/// Re-exports each registered problem's point (its `point` module: the row type and the function
+/// that makes it), so that `curves::beam_point` and the like are found here without this file
+/// naming a problem.
+macro_rules! problem_points {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        $(pub use crate::problems::$folder::point::*;)+
+    };
 }
 
-/// A force sampling for [`beam_force_sweep`]: both bounds must be accepted tip forces.
-///
-/// # Errors
-/// See [`Samples::of_param`].
-pub fn force_samples(from: f64, to: f64, points: u64) -> Result<Samples, RangeError> {
-    Samples::of_param(
-        Param::Beam(BeamParam::Force),
-        from,
-        to,
-        points,
-        Spacing::Linear,
-    )
-}
+crate::with_problems!(problem_points);
 
-/// Everything the reports show about the plate at one K_T, for both laws.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PlatePoint {
-    /// K_T (MPa/mm).
-    pub kt: f64,
-    /// Coulomb end displacement (mm).
-    pub u_coulomb: f64,
-    /// Regularized end displacement (mm).
-    pub u_regularized: f64,
-    /// End of the Coulomb stick zone X_s (mm); 0 when all slides.
-    pub stick_end: f64,
-    /// End of the microslip zone X_r (mm); L without macroslip.
-    pub micro_end: f64,
-    /// Coulomb regime.
-    pub regime_coulomb: Regime,
-    /// Regularized regime.
-    pub regime_regularized: Regime,
-    /// Where the strip theory stands against a plane-strain continuum (V1).
-    pub strip_validity: Validity,
-}
-
-/// The plate as it is.
-pub fn plate_point(plate: &SqueezedPlate) -> PlatePoint {
-    let (coulomb, regularized) = (plate.coulomb(), plate.regularized());
-    PlatePoint {
-        kt: plate.params().tangential_stiffness,
-        u_coulomb: coulomb.end_displacement(),
-        u_regularized: regularized.end_displacement(),
-        stick_end: coulomb.stick_end(),
-        micro_end: regularized.micro_zone_end(),
-        regime_coulomb: coulomb.regime(),
-        regime_regularized: regularized.regime(),
-        strip_validity: plate.validity().validity,
-    }
-}
-
-/// A K_T sampling for [`plate_kt_sweep`]: both bounds must be accepted stiffnesses.
+/// A sampling of the load of the load-driven problem `P` (its F): both bounds must be accepted
+/// forces, evenly spaced.
 ///
 /// # Errors
 /// See [`Samples::of_param`].
-pub fn stiffness_samples(
-    from: f64,
-    to: f64,
-    points: u64,
-    spacing: Spacing,
-) -> Result<Samples, RangeError> {
-    Samples::of_param(
-        Param::Plate(PlateParam::Stiffness),
-        from,
-        to,
-        points,
-        spacing,
-    )
+pub fn load_samples<P: LoadDriven>(from: f64, to: f64, points: u64) -> Result<Samples, RangeError> {
+    Samples::of_param(P::FORCE, from, to, points, Spacing::Linear)
 }
 
-/// The plate over a range of K_T (other parameters fixed): one row per sample.
-///
-/// # Errors
-/// [`RangeError::Bound`] when an end of `stiffnesses` is not an accepted K_T (see
-/// [`stiffness_samples`]).
-pub fn plate_kt_sweep(
-    plate: SqueezedPlate,
-    stiffnesses: Samples,
-) -> Result<impl Iterator<Item = PlatePoint>, RangeError> {
-    stiffnesses.check_within(Param::Plate(PlateParam::Stiffness))?;
-    Ok(stiffnesses
-        .values()
-        .map(move |kt| plate_point(&plate.with_clamped(PlateParam::Stiffness, kt))))
-}
-
-/// The twin beams over a range of any one parameter (the others, F included, as in `model`): one
-/// row per sample, the sample value first. For F this is [`beam_force_sweep`] with the force
-/// repeated in front.
-///
-/// # Errors
-/// [`RangeError::Bound`] when an end of `values` is not an accepted value of `param`.
-pub fn beam_param_sweep(
-    beams: TwinBeams,
-    force: TipForce,
-    param: BeamParam,
-    values: Samples,
-) -> Result<impl Iterator<Item = (f64, BeamPoint)>, RangeError> {
-    values.check_within(Param::Beam(param))?;
-    let model = BeamsModel { beams, force };
-    Ok(values.values().map(move |v| {
-        let at = TwinBeamsProblem::with_clamped(&model, param, v);
-        (v, beam_point(&at.beams, at.force))
-    }))
-}
-
-/// The plate over a range of any one parameter (the others as in `plate`): one row per sample, the
-/// sample value first.
-///
-/// # Errors
-/// [`RangeError::Bound`] when an end of `values` is not an accepted value of `param`.
-pub fn plate_param_sweep(
-    plate: SqueezedPlate,
-    param: PlateParam,
-    values: Samples,
-) -> Result<impl Iterator<Item = (f64, PlatePoint)>, RangeError> {
-    values.check_within(Param::Plate(param))?;
-    Ok(values
-        .values()
-        .map(move |v| (v, plate_point(&plate.with_clamped(param, v)))))
-}
-
-/// The response of `model` (w(L) of the beams, u(L) of the plate, Delta of the lap joint, mm) against any one of its
-/// parameters: (Coulomb, regularized). The chart "w(L) vs this parameter".
-///
-/// # Errors
-/// [`RangeError::Bound`] when an end of `values` is not an accepted value of `param` (or `param`
-/// belongs to another problem).
-pub fn response_vs_param(
-    model: &Model,
-    param: Param,
-    values: Samples,
-) -> Result<(Series, Series), RangeError> {
-    match (*model, param) {
-        (Model::Beam { beams, force }, Param::Beam(p)) => {
-            Ok(beam_param_sweep(beams, force, p, values)?
-                .map(|(v, r)| ((v, r.w_coulomb), (v, r.w_regularized)))
-                .unzip())
-        }
-        (Model::Plate(plate), Param::Plate(p)) => Ok(plate_param_sweep(plate, p, values)?
-            .map(|(v, r)| ((v, r.u_coulomb), (v, r.u_regularized)))
-            .unzip()),
-        (Model::Lap { joint, force }, Param::Lap(p)) => {
-            Ok(crate::study::lap::lap_param_sweep(joint, force, p, values)?
-                .map(|(v, r)| ((v, r.delta_coulomb), (v, r.delta_regularized)))
-                .unzip())
-        }
-        (Model::Beam { .. }, Param::Plate(_) | Param::Lap(_))
-        | (Model::Plate(_), Param::Beam(_) | Param::Lap(_))
-        | (Model::Lap { .. }, Param::Beam(_) | Param::Plate(_)) => Err(RangeError::Bound {
+/// The parameter of `P` that `key` is.
+fn param_of<P: Problem>(key: P::Key) -> Result<Param, RangeError> {
+    P::INFO
+        .params
+        .get(key.index())
+        .copied()
+        .ok_or_else(|| RangeError::Bound {
             end: RangeEnd::Start,
             value: f64::NAN,
-            allowed: format!("{param} is a parameter of another problem"),
-        }),
+            allowed: format!("{} has no parameter {}", P::INFO.key, key.spec().name),
+        })
+}
+
+/// `model` over a range of one of its parameters `key` (the others, the load included, as in
+/// `model`): one model per sample, the sample value first. Every end of `values` must be an
+/// accepted value of the parameter and give a valid model with the others: a problem whose
+/// inputs bound one another (the lap joint's F <= F_gross = 2 b mu P L) refuses, before the
+/// first row, a range at one of whose ends the model has no state. Both ends checked check every
+/// sample where the bound is monotonic in the parameter (F_gross grows with L, b, P and mu and
+/// does not depend on the others).
+///
+/// # Errors
+/// [`RangeError::Bound`] when an end of `values` is not an accepted value of the parameter, or
+/// the model at an end is refused: for the load, with the range the structure carries (as
+/// [`load::check_forces`]); for another parameter, naming it, its value and the refusal.
+pub fn param_models<P: Problem>(
+    model: P::Model,
+    key: P::Key,
+    values: Samples,
+) -> Result<impl Iterator<Item = (f64, P::Model)>, RangeError> {
+    let param = param_of::<P>(key)?;
+    values.check_within(param)?;
+    let load = P::INFO.load == Some(param);
+    for (end, value) in [
+        (RangeEnd::Start, values.value(0)),
+        (RangeEnd::End, values.value(values.len() - 1)),
+    ] {
+        let mut params = P::params(&model);
+        let Some(slot) = P::slot(&mut params, key.index()) else {
+            continue;
+        };
+        *slot = value;
+        if let Err(error) = P::model(&params) {
+            let allowed = if load {
+                error.allowed()
+            } else {
+                format!("at {param} = {value}, {error}")
+            };
+            return Err(RangeError::Bound {
+                end,
+                value,
+                allowed,
+            });
+        }
+    }
+    Ok(values
+        .values()
+        .map(move |v| (v, P::with_clamped(&model, key, v))))
+}
+
+/// `model` over a range of one of its parameters `key` ([`param_models`]): one row
+/// ([`Pointwise::Point`]) per sample, the sample value first. For the load of a load-driven
+/// problem this is [`load::force_sweep`] with the force repeated in front.
+///
+/// # Errors
+/// As [`param_models`].
+pub fn param_sweep<P: Pointwise>(
+    model: P::Model,
+    key: P::Key,
+    values: Samples,
+) -> Result<impl Iterator<Item = (f64, P::Point)>, RangeError> {
+    Ok(param_models::<P>(model, key, values)?.map(|(v, at)| (v, P::point(&at))))
+}
+
+/// The response of `model` (mm: w(L) of the beams, u(L) of the plate, Delta of the lap joint)
+/// against its parameter `key`: (Coulomb, regularized).
+///
+/// # Errors
+/// As [`param_models`].
+pub fn responses_over<P: Problem>(
+    model: P::Model,
+    key: P::Key,
+    values: Samples,
+) -> Result<(Series, Series), RangeError> {
+    Ok(param_models::<P>(model, key, values)?
+        .map(|(v, at)| {
+            let state = P::solve(&at);
+            (
+                (v, state.coulomb().response()),
+                (v, state.regularized().response()),
+            )
+        })
+        .unzip())
+}
+
+/// Where the regularized law's zone ends (mm: X_r of the plate, X of the beams) against the
+/// parameter `key` of `model`: one point per sample.
+///
+/// # Errors
+/// As [`param_models`].
+pub fn zone_end_over<P: Problem>(
+    model: P::Model,
+    key: P::Key,
+    values: Samples,
+) -> Result<Series, RangeError> {
+    Ok(param_models::<P>(model, key, values)?
+        .map(|(v, at)| (v, P::solve(&at).regularized().zone_end()))
+        .collect())
+}
+
+/// `param` of another problem than `model`'s.
+fn another_problem(param: Param) -> RangeError {
+    RangeError::Bound {
+        end: RangeEnd::Start,
+        value: f64::NAN,
+        allowed: format!("{param} is a parameter of another problem"),
     }
 }
 
-/// End of the microslip zone X (mm) against F (N), regularized law (X = L below F_1): the far
-/// edge of the beams' holding zone ([`load::holding_zone_vs_force`]).
+/// Interface shear tau (MPa) along the interface of `model` at its state: (Coulomb, regularized).
+pub fn shear_along_of<P: Profiled>(model: &P::Model, positions: Samples) -> (Series, Series) {
+    P::shear_along(model, positions.values())
+}
+
+/// Writes the dispatch over every registered problem of the erased studies below.
+macro_rules! erased_studies {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        /// The response of `model` (w(L) of the beams, u(L) of the plate, Delta of the lap joint,
+        /// mm) against any one of its parameters: (Coulomb, regularized). The chart "w(L) vs
+        /// this parameter" ([`responses_over`] of the model's problem).
+        ///
+        /// # Errors
+        /// [`RangeError::Bound`] when an end of `values` is not an accepted value of `param` (or
+        /// `param` belongs to another problem).
+        pub fn response_vs_param(
+            model: &Model,
+            param: Param,
+            values: Samples,
+        ) -> Result<(Series, Series), RangeError> {
+            $(if let Some(typed) =
+                <crate::problems::$folder::$problem as Problem>::from_model(model)
+            {
+                type P = crate::problems::$folder::$problem;
+                let key = <P as Problem>::index_of(param)
+                    .and_then(|i| <<P as Problem>::Key as ParamKey>::KEYS.get(i).copied());
+                return match key {
+                    Some(key) => responses_over::<P>(typed, key, values),
+                    None => Err(another_problem(param)),
+                };
+            })+
+            Err(another_problem(param))
+        }
+
+        /// Interface shear tau (MPa) along the interface of `model` at its state: (Coulomb,
+        /// regularized) ([`shear_along_of`] of the model's problem).
+        pub fn shear_along(model: &Model, positions: Samples) -> (Series, Series) {
+            $(if let Some(typed) =
+                <crate::problems::$folder::$problem as Problem>::from_model(model)
+            {
+                return shear_along_of::<crate::problems::$folder::$problem>(&typed, positions);
+            })+
+            (Vec::new(), Vec::new())
+        }
+    };
+}
+
+crate::with_problems!(erased_studies);
+
+/// The far edge of the regularized law's holding zone (mm) against F (N): the end of the beams'
+/// microslip zone X (X = L below F_1), the joint's L - d ([`load::holding_zone_vs_force`]).
 ///
 /// # Errors
-/// As [`beam_force_sweep`].
-pub fn beam_slip_boundary_vs_force(
-    beams: &TwinBeams,
+/// As [`load::force_sweep`].
+pub fn slip_boundary_vs_force<P: LoadDriven>(
+    structure: &P::Structure,
     forces: Samples,
 ) -> Result<Series, RangeError> {
     Ok(
-        load::holding_zone_vs_force::<TwinBeamsProblem>(beams, Law::Regularized, forces)?
+        load::holding_zone_vs_force::<P>(structure, Law::Regularized, forces)?
             .into_iter()
             .map(|(f, [_, x])| (f, x))
             .collect(),
     )
 }
 
-/// Interface shear tau (MPa) along the beams at one force: (Coulomb, regularized).
-pub fn beam_shear_along(
-    beams: &TwinBeams,
-    force: TipForce,
-    positions: Samples,
-) -> (Series, Series) {
-    let (coulomb, regularized) = (beams.coulomb(force), beams.regularized(force));
-    both_along(
-        positions,
-        |x| coulomb.shear_stress(x),
-        |x| regularized.shear_stress(x),
-    )
-}
-
-/// One quantity of both laws at each position: (Coulomb, regularized).
-fn both_along(
-    positions: Samples,
-    coulomb: impl Fn(f64) -> f64,
-    regularized: impl Fn(f64) -> f64,
-) -> (Series, Series) {
-    positions
-        .values()
-        .map(|x| ((x, coulomb(x)), (x, regularized(x))))
-        .unzip()
-}
-
-/// End displacement u(L) (mm) against K_T (MPa/mm): (Coulomb, regularized).
+/// The holding zone's edges against F, one closed outline per law: its near edge (the joint's
+/// x = a) from F = 0 up to the last force, then its far edge (x = L - d) back down to F = 0
+/// ([`load::holding_zone_vs_force`]). Where the two meet (the joint's F_gross, a + d = L) the
+/// outline encloses the zone that sticks (Coulomb) or slips elastically (regularized), and the
+/// sliding zones lie outside it: (Coulomb, regularized).
 ///
 /// # Errors
-/// As [`plate_kt_sweep`].
-pub fn plate_end_displacement_vs_stiffness(
-    plate: &SqueezedPlate,
-    stiffnesses: Samples,
+/// As [`load::force_sweep`].
+pub fn zone_outline_vs_force<P: LoadDriven>(
+    structure: &P::Structure,
+    forces: Samples,
 ) -> Result<(Series, Series), RangeError> {
-    Ok(plate_kt_sweep(*plate, stiffnesses)?
-        .map(|p| ((p.kt, p.u_coulomb), (p.kt, p.u_regularized)))
-        .unzip())
-}
-
-/// End of the microslip zone X_r (mm) against mu, at the plate's K_T: one point per sample.
-///
-/// # Errors
-/// [`RangeError::Bound`] when an end of `frictions` is not an accepted friction coefficient.
-pub fn plate_slip_boundary_vs_friction(
-    plate: &SqueezedPlate,
-    frictions: Samples,
-) -> Result<Series, RangeError> {
-    frictions.check_within(Param::Plate(PlateParam::Friction))?;
-    Ok(frictions
-        .values()
-        .map(|mu| plate.with_clamped(PlateParam::Friction, mu))
-        .map(|p| (p.params().friction, p.regularized().micro_zone_end()))
-        .collect())
-}
-
-/// Contact pressure ratio P_r / P along the half-plate.
-pub fn plate_contact_pressure_along(plate: &SqueezedPlate, positions: Samples) -> Series {
-    let pressure = plate.contact_pressure();
-    positions.values().map(|x| (x, pressure.ratio(x))).collect()
-}
-
-/// Interface shear tau (MPa) along the half-plate: (Coulomb, regularized).
-pub fn plate_shear_along(plate: &SqueezedPlate, positions: Samples) -> (Series, Series) {
-    let (coulomb, regularized) = (plate.coulomb(), plate.regularized());
-    both_along(
-        positions,
-        |x| coulomb.shear_stress(x),
-        |x| regularized.shear_stress(x),
-    )
+    let outline = |law: Law| -> Result<Series, RangeError> {
+        let rows = load::holding_zone_vs_force::<P>(structure, law, forces)?;
+        let up = rows.iter().map(|&(f, [a, _])| (f, a));
+        let down = rows.iter().rev().map(|&(f, [_, far])| (f, far));
+        Ok(up.chain(down).collect())
+    };
+    Ok((outline(Law::Coulomb)?, outline(Law::Regularized)?))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{PlateParams, TwinBeamsParams};
+    use crate::problems::plate::SqueezedPlateProblem;
+    use crate::problems::twin_beams::TwinBeamsProblem;
+    use crate::problems::{PlateParam, plate::params::PlateParams};
+    use crate::{Regime, SqueezedPlate, TwinBeams, TwinBeamsParams};
+
+    const STIFFNESS: Param = Param::Plate(PlateParam::Stiffness);
+
+    fn beam_force_sweep(
+        beams: TwinBeams,
+        forces: Samples,
+    ) -> Result<impl Iterator<Item = BeamPoint>, RangeError> {
+        load::force_sweep::<TwinBeamsProblem>(beams, forces)
+    }
+
+    fn plate_kt_sweep(
+        plate: SqueezedPlate,
+        stiffnesses: Samples,
+    ) -> Result<impl Iterator<Item = PlatePoint>, RangeError> {
+        Ok(
+            param_sweep::<SqueezedPlateProblem>(plate, PlateParam::Stiffness, stiffnesses)?
+                .map(|(_, p)| p),
+        )
+    }
 
     #[test]
     fn sweeps_refuse_a_range_outside_the_domain_before_the_first_row() {
@@ -309,28 +306,33 @@ mod tests {
         );
         let soft = Samples::new(1e-7, 1.0, 3, Spacing::Logarithmic).unwrap();
         assert!(plate_kt_sweep(plate, soft).is_err());
-        assert!(plate_slip_boundary_vs_friction(&plate, high).is_err());
+        assert!(zone_end_over::<SqueezedPlateProblem>(plate, PlateParam::Friction, high).is_err());
     }
 
     #[test]
     fn sweeps_over_the_whole_domain_give_every_row_finite() {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
-        let rows: Vec<BeamPoint> = beam_force_sweep(beams, force_samples(0.0, 1e12, 101).unwrap())
-            .unwrap()
-            .collect();
+        let rows: Vec<BeamPoint> = beam_force_sweep(
+            beams,
+            load_samples::<TwinBeamsProblem>(0.0, 1e12, 101).unwrap(),
+        )
+        .unwrap()
+        .collect();
         assert_eq!(rows.len(), 101);
         assert!(rows.iter().all(|r| {
             [r.w_coulomb, r.w_regularized, r.micro_end]
                 .iter()
                 .all(|v| v.is_finite())
         }));
-        let cycles: Vec<CyclePoint> =
-            load::cycle_sweep::<TwinBeamsProblem>(beams, force_samples(0.0, 1e12, 11).unwrap())
-                .unwrap()
-                .collect();
+        let cycles: Vec<CyclePoint> = load::cycle_sweep::<TwinBeamsProblem>(
+            beams,
+            load_samples::<TwinBeamsProblem>(0.0, 1e12, 11).unwrap(),
+        )
+        .unwrap()
+        .collect();
         assert_eq!(cycles.len(), 11);
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
-        let all = stiffness_samples(1e-6, 1e12, 181, Spacing::Logarithmic).unwrap();
+        let all = Samples::of_param(STIFFNESS, 1e-6, 1e12, 181, Spacing::Logarithmic).unwrap();
         let rows: Vec<PlatePoint> = plate_kt_sweep(plate, all).unwrap().collect();
         assert_eq!(rows.len(), 181);
         assert_eq!((rows[0].kt, rows[180].kt), (1e-6, 1e12));
@@ -344,14 +346,17 @@ mod tests {
     #[test]
     fn sweeps_yield_one_row_per_sample() {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
-        let rows: Vec<BeamPoint> = beam_force_sweep(beams, force_samples(0.0, 300.0, 31).unwrap())
-            .unwrap()
-            .collect();
+        let rows: Vec<BeamPoint> = beam_force_sweep(
+            beams,
+            load_samples::<TwinBeamsProblem>(0.0, 300.0, 31).unwrap(),
+        )
+        .unwrap()
+        .collect();
         assert_eq!(rows.len(), 31);
         assert!((rows[10].force - 100.0).abs() < 1e-12);
         assert_eq!(rows[10].regime_regularized, Regime::MICROSLIP_MACROSLIP);
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
-        let samples = stiffness_samples(1.0, 1e7, 8, Spacing::Logarithmic).unwrap();
+        let samples = Samples::of_param(STIFFNESS, 1.0, 1e7, 8, Spacing::Logarithmic).unwrap();
         let rows: Vec<PlatePoint> = plate_kt_sweep(plate, samples).unwrap().collect();
         assert_eq!(rows.len(), 8);
         assert_eq!(rows[7].kt, 1e7);

@@ -107,14 +107,15 @@ pub enum Spacing {
 ///
 /// # Examples
 /// ```
-/// use microslip_core::study::curves::{beam_force_sweep, force_samples};
-/// use microslip_core::{Regime, TwinBeams, TwinBeamsParams};
+/// use microslip_core::prelude::*;
+/// use microslip_core::study::curves::load_samples;
+/// use microslip_core::study::load::force_sweep;
 /// let beams = TwinBeams::new(TwinBeamsParams::PAPER)?;
-/// let forces = force_samples(0.0, 300.0, 4)?; // 0, 100, 200, 300 N
-/// let rows: Vec<_> = beam_force_sweep(beams, forces)?.collect();
+/// let forces = load_samples::<TwinBeamsProblem>(0.0, 300.0, 4)?; // 0, 100, 200, 300 N
+/// let rows: Vec<_> = force_sweep::<TwinBeamsProblem>(beams, forces)?.collect();
 /// assert_eq!(rows[1].force, 100.0);
 /// assert_eq!(rows[1].regime_regularized, Regime::MICROSLIP_MACROSLIP);
-/// assert!(force_samples(0.0, -1.0, 4).is_err()); // -1 N is not a tip force
+/// assert!(load_samples::<TwinBeamsProblem>(0.0, -1.0, 4).is_err()); // -1 N is not a tip force
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -245,7 +246,23 @@ pub type Series = Vec<(f64, f64)>;
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::study::curves::{force_samples, stiffness_samples};
+    use crate::problems::twin_beams::TwinBeamsProblem;
+    use crate::problems::{Param, PlateParam};
+    use crate::study::curves::load_samples;
+
+    fn force_samples(from: f64, to: f64, points: u64) -> Result<Samples, RangeError> {
+        load_samples::<TwinBeamsProblem>(from, to, points)
+    }
+
+    fn stiffness_samples(
+        from: f64,
+        to: f64,
+        points: u64,
+        spacing: Spacing,
+    ) -> Result<Samples, RangeError> {
+        let stiffness = Param::Plate(PlateParam::Stiffness);
+        Samples::of_param(stiffness, from, to, points, spacing)
+    }
 
     #[test]
     fn samples_hit_both_ends_exactly() {

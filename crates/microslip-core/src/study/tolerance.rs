@@ -8,13 +8,13 @@
 //! a force range too, and "within tolerance" holds on one interval [K_T*, infinity): one bracketed
 //! root on ln K_T finds K_T*.
 
-use crate::SqueezedPlate;
 use crate::kernel::code_defaults::{CODE_DEFAULTS, CodeDefault, DefaultRule};
 use crate::kernel::params::{Domain, ParamError};
 use crate::kernel::regime::Law;
 use crate::kernel::solve::find_root_in_bracket;
 use crate::problems::load_driven::LoadDriven;
-use crate::problems::{ModelKind, PlateParam};
+use crate::problems::problem::{BothLaws, Registered};
+use crate::problems::{ModelKind, ParamKey, Problem};
 
 /// Force samples over a range of the load, besides its ends and regime changes: the deviation is
 /// flat below F_thre and falls above it (T2), and over the joint's range it is largest near zero
@@ -147,6 +147,13 @@ pub enum ToleranceError {
         /// End (N).
         to: f64,
     },
+    /// The problem has no interface stiffness K_T parameter to search (every bundled problem
+    /// has one).
+    #[error("the {kind} problem has no interface stiffness K_T")]
+    NoStiffness {
+        /// The problem.
+        kind: ModelKind,
+    },
 }
 
 fn check_tolerance(tolerance: f64) -> Result<f64, ToleranceError> {
@@ -157,9 +164,26 @@ fn check_tolerance(tolerance: f64) -> Result<f64, ToleranceError> {
     }
 }
 
-/// The plate's regularized u(L) over Coulomb's, minus 1.
-fn plate_deviation(plate: &SqueezedPlate) -> f64 {
-    plate.regularized().end_displacement() / plate.coulomb().end_displacement() - 1.0
+/// The regularized response of `model` over Coulomb's, minus 1: its deviation at its own state.
+fn state_deviation<P: Problem>(model: &P::Model) -> f64 {
+    let state = P::solve(model);
+    state.regularized().response() / state.coulomb().response() - 1.0
+}
+
+/// The key of `P`'s interface stiffness K_T: its parameter in MPa/mm.
+fn stiffness_key<P: Problem>() -> Option<P::Key> {
+    let index = P::INFO.params.iter().position(|p| p.is_stiffness())?;
+    <P::Key as ParamKey>::KEYS.get(index).copied()
+}
+
+/// `model` with K_T = `kt` (clamped to what it accepts), and K_T's domain; `None` for a problem
+/// without a K_T parameter.
+fn with_stiffness<P: Problem>(model: &P::Model) -> Option<(impl Fn(f64) -> P::Model + '_, Domain)> {
+    let key = stiffness_key::<P>()?;
+    Some((
+        move |kt: f64| P::with_clamped(model, key, kt),
+        key.spec().domain,
+    ))
 }
 
 /// The smallest K_T at which `deviation(K_T)`, non-increasing, is at most `tolerance`, searched
@@ -352,33 +376,31 @@ fn near_current_over_forces<F: Copy>(
     )
 }
 
-/// The plate, the other reading (see [`stiffness_near_current`]).
+/// A problem at its own state (no load to range over: the plate under its pressure), the other
+/// reading (see [`stiffness_near_current`]): the K_T interval whose responses stay within
+/// `tolerance` of the response at the model's own K_T.
 ///
 /// # Errors
-/// As [`plate_stiffness_for_tolerance`].
-pub fn plate_stiffness_near_current(
-    plate: &SqueezedPlate,
+/// As [`state_stiffness_for_tolerance`].
+pub fn state_stiffness_near_current<P: Problem + Registered>(
+    model: &P::Model,
     tolerance: f64,
     element: f64,
 ) -> Result<ToleranceAnswer, ToleranceError> {
     let tolerance = check_tolerance(tolerance)?;
-    let current = plate.regularized().end_displacement();
-    let ratio = |kt: f64| {
-        plate
-            .with_clamped(PlateParam::Stiffness, kt)
-            .regularized()
-            .end_displacement()
-            / current
-            - 1.0
-    };
-    let coulomb = plate.coulomb().end_displacement() / current - 1.0;
-    let p = plate.params();
+    let (at, domain) =
+        with_stiffness::<P>(model).ok_or(ToleranceError::NoStiffness { kind: P::KIND })?;
+    let own = P::solve(model);
+    let current = own.regularized().response();
+    let ratio = |kt: f64| P::solve(&at(kt)).regularized().response() / current - 1.0;
+    let coulomb = own.coulomb().response() / current - 1.0;
+    let data = P::interface(model);
     let question = Question {
-        kind: ModelKind::Plate,
+        kind: P::KIND,
         tolerance,
         forces: None,
-        current: (p.tangential_stiffness, plate_deviation(plate)),
-        domain: PlateParam::Stiffness.spec().domain,
+        current: (data.stiffness, state_deviation::<P>(model)),
+        domain,
     };
     Ok(near_current(
         question,
@@ -388,8 +410,8 @@ pub fn plate_stiffness_near_current(
         |threshold| {
             code_settings(
                 threshold,
-                p.friction * p.pressure,
-                p.youngs_modulus,
+                data.friction * data.pressure,
+                data.modulus,
                 element,
             )
         },
@@ -461,30 +483,32 @@ fn near_current(
     }
 }
 
-/// The plate: the smallest K_T for which the regularized u(L) is within `tolerance` (fraction) of
-/// Coulomb's, all else as in `plate`.
+/// A problem at its own state (the plate under its pressure): the smallest K_T for which its
+/// regularized response (the plate's u(L)) is within `tolerance` (fraction) of Coulomb's, all
+/// else as in `model`.
 ///
 /// # Errors
-/// A tolerance outside (0, 10].
-pub fn plate_stiffness_for_tolerance(
-    plate: &SqueezedPlate,
+/// A tolerance outside (0, 10]; a problem without a K_T parameter.
+pub fn state_stiffness_for_tolerance<P: Problem + Registered>(
+    model: &P::Model,
     tolerance: f64,
     element: f64,
 ) -> Result<ToleranceAnswer, ToleranceError> {
     let tolerance = check_tolerance(tolerance)?;
-    let at = |kt: f64| plate_deviation(&plate.with_clamped(PlateParam::Stiffness, kt));
-    let threshold = smallest_within(PlateParam::Stiffness.spec().domain, tolerance, at);
-    let p = plate.params();
+    let (at, domain) =
+        with_stiffness::<P>(model).ok_or(ToleranceError::NoStiffness { kind: P::KIND })?;
+    let threshold = smallest_within(domain, tolerance, |kt| state_deviation::<P>(&at(kt)));
+    let data = P::interface(model);
     Ok(ToleranceAnswer {
-        kind: ModelKind::Plate,
+        kind: P::KIND,
         tolerance,
         forces: None,
         threshold,
-        current: (p.tangential_stiffness, plate_deviation(plate)),
+        current: (data.stiffness, state_deviation::<P>(model)),
         settings: code_settings(
             threshold,
-            p.friction * p.pressure,
-            p.youngs_modulus,
+            data.friction * data.pressure,
+            data.modulus,
             element,
         ),
         near_current: None,

@@ -4,10 +4,7 @@
 
 use crate::kernel::regime::Regime;
 use crate::problems::inputs::Model;
-use crate::problems::lap::closed_form::{JointForce, LapJoint};
-use crate::problems::lap::load_driven::lap_point;
-use crate::problems::twin_beams::load_driven::beam_point;
-use crate::study::curves::plate_point;
+use crate::problems::zoned::LawLayout;
 
 /// What one stretch of the interface does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -65,70 +62,35 @@ fn split_at(length: f64, at: f64, inner: Zone, outer: Zone) -> Vec<ZoneSpan> {
         .collect()
 }
 
-/// The zones of both laws at the model's state: Coulomb sticks up to its stick end and slides
-/// beyond; the regularized law slips elastically up to X (X_r) and slides beyond. From the same
-/// `beam_point` / `plate_point` as the regime pane, so strip and text cannot disagree.
+/// The zones of both laws at the model's state, for any problem whose interface holds over one
+/// stretch under each law ([`Zoned`](crate::problems::zoned::Zoned)): the stretch sticks
+/// (Coulomb) or slips elastically (regularized) and the interface slides on either side of it;
+/// an unloaded law's interface is unloaded throughout. The boundaries are the stretch's named
+/// edges strictly inside (0, L), Coulomb's first. Empty for a problem without a layout.
 pub fn interface_zones(model: &Model) -> InterfaceZones {
-    let (length, stick_end, micro_end, coulomb, regularized, names) = match model {
-        Model::Beam { beams, force } => {
-            let row = beam_point(beams, *force);
-            let p = (row.stick_end, row.micro_end);
-            let r = (row.regime_coulomb, row.regime_regularized);
-            (beams.params().length, p.0, p.1, r.0, r.1, ("X_s", "X"))
-        }
-        Model::Plate(plate) => {
-            let row = plate_point(plate);
-            let p = (row.stick_end, row.micro_end);
-            let r = (row.regime_coulomb, row.regime_regularized);
-            (
-                plate.params().half_length,
-                p.0,
-                p.1,
-                r.0,
-                r.1,
-                ("X_s", "X_r"),
-            )
-        }
-        Model::Lap { joint, force } => return lap_zones(joint, *force),
+    let Some(layout) = model
+        .kind()
+        .problem()
+        .zoned()
+        .and_then(|zoned| zoned.layout(model))
+    else {
+        return InterfaceZones {
+            length: 0.0,
+            coulomb: Vec::new(),
+            regularized: Vec::new(),
+            boundaries: Vec::new(),
+        };
     };
-    let zones = |regime: Regime, end: f64, inner: Zone| {
-        if regime == Regime::UNLOADED {
-            split_at(length, length, Zone::Unloaded, Zone::Unloaded)
-        } else {
-            split_at(length, end, inner, Zone::Macroslip)
-        }
-    };
-    let inside = |at: f64| at > 0.0 && at < length;
-    let boundaries = [
-        (names.0, stick_end, coulomb),
-        (names.1, micro_end, regularized),
-    ]
-    .into_iter()
-    .filter(|&(_, at, regime)| regime != Regime::UNLOADED && inside(at))
-    .map(|(name, at, _)| ZoneBoundary { name, at })
-    .collect();
-    InterfaceZones {
-        length,
-        coulomb: zones(coulomb, stick_end, Zone::Stick),
-        regularized: zones(regularized, micro_end, Zone::Microslip),
-        boundaries,
-    }
-}
-
-/// The lap joint's zones: sliding from both ends, [0, a] and [L - d, L], sticking (Coulomb) or
-/// elastic (regularized) between; boundaries named `a`, `L-d` (regularized) and `a_C`, `L-d_C`
-/// (Coulomb).
-fn lap_zones(joint: &LapJoint, force: JointForce) -> InterfaceZones {
-    let length = joint.params().length;
-    let row = lap_point(joint, force);
-    let spans = |regime: Regime, (a, d): (f64, f64), middle: Zone| {
-        if regime == Regime::UNLOADED {
+    let length = layout.length;
+    let spans = |law: &LawLayout, middle: Zone| {
+        if law.regime == Regime::UNLOADED {
             return split_at(length, length, Zone::Unloaded, Zone::Unloaded);
         }
+        let [from, to] = law.holding.map(|at| at.clamp(0.0, length));
         [
-            (0.0, a, Zone::Macroslip),
-            (a, length - d, middle),
-            (length - d, length, Zone::Macroslip),
+            (0.0, from, Zone::Macroslip),
+            (from, to, middle),
+            (to, length, Zone::Macroslip),
         ]
         .into_iter()
         .filter(|(from, to, _)| to > from)
@@ -136,26 +98,17 @@ fn lap_zones(joint: &LapJoint, force: JointForce) -> InterfaceZones {
         .collect()
     };
     let inside = |at: f64| at > 0.0 && at < length;
-    let (ac, dc) = row.zones_coulomb;
-    let (ar, dr) = row.zones_regularized;
-    let boundaries = [
-        ("a_C", ac, row.regime_coulomb),
-        ("L-d_C", length - dc, row.regime_coulomb),
-        ("a", ar, row.regime_regularized),
-        ("L-d", length - dr, row.regime_regularized),
-    ]
-    .into_iter()
-    .filter(|&(_, at, regime)| regime != Regime::UNLOADED && inside(at))
-    .map(|(name, at, _)| ZoneBoundary { name, at })
-    .collect();
+    let boundaries = [layout.coulomb, layout.regularized]
+        .into_iter()
+        .filter(|law| law.regime != Regime::UNLOADED)
+        .flat_map(|law| law.edges.into_iter().zip(law.holding))
+        .filter(|&(_, at)| inside(at))
+        .map(|(name, at)| ZoneBoundary { name, at })
+        .collect();
     InterfaceZones {
         length,
-        coulomb: spans(row.regime_coulomb, row.zones_coulomb, Zone::Stick),
-        regularized: spans(
-            row.regime_regularized,
-            row.zones_regularized,
-            Zone::Microslip,
-        ),
+        coulomb: spans(&layout.coulomb, Zone::Stick),
+        regularized: spans(&layout.regularized, Zone::Microslip),
         boundaries,
     }
 }

@@ -3,52 +3,13 @@
 //! of [`LapCycle`].
 
 use crate::kernel::params::ParamError;
-use crate::kernel::regime::{Law, Regime};
-use crate::problems::lap::closed_form::{JointForce, LapJoint, LapState};
+use crate::kernel::regime::Law;
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::lap::cycle::LapCycle;
+use crate::problems::lap::point::{LapPoint, lap_point};
 use crate::problems::lap::problem::{LapJointProblem, LapModel};
 use crate::problems::load_driven::LoadDriven;
 use crate::problems::{LapParam, Param};
-
-/// Everything the reports show about the joint at one force, for both laws.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LapPoint {
-    /// Force through the joint F (N).
-    pub force: f64,
-    /// Coulomb joint displacement Delta (mm).
-    pub delta_coulomb: f64,
-    /// Regularized joint displacement Delta (mm).
-    pub delta_regularized: f64,
-    /// Coulomb sliding zones from x = 0 (a) and from x = L (d) (mm).
-    pub zones_coulomb: (f64, f64),
-    /// Regularized sliding zones a and d (mm).
-    pub zones_regularized: (f64, f64),
-    /// Coulomb regime.
-    pub regime_coulomb: Regime,
-    /// Regularized regime.
-    pub regime_regularized: Regime,
-    /// The shear-lag envelope's bound on Delta's difference from a continuum (L14), a fraction;
-    /// `None` where it is not calibrated.
-    pub shear_lag_within: Option<f64>,
-}
-
-/// The joint at one force.
-pub fn lap_point(joint: &LapJoint, force: JointForce) -> LapPoint {
-    let (coulomb, regularized) = (joint.coulomb(force), joint.regularized(force));
-    let zones = |s: &LapState| (s.slide_at_inner_end(), s.slide_at_cover_ends());
-    LapPoint {
-        force: force.newtons(),
-        delta_coulomb: coulomb.joint_displacement(),
-        delta_regularized: regularized.joint_displacement(),
-        zones_coulomb: zones(&coulomb),
-        zones_regularized: zones(&regularized),
-        regime_coulomb: coulomb.regime(),
-        regime_regularized: regularized.regime(),
-        shear_lag_within: joint
-            .validity_at(force, regularized.joint_displacement())
-            .expected_error,
-    }
-}
 
 impl LoadDriven for LapJointProblem {
     type Structure = LapJoint;
@@ -65,6 +26,13 @@ impl LoadDriven for LapJointProblem {
 
     fn applied_force(model: &LapModel) -> Self::Force {
         model.force
+    }
+
+    fn at_force(joint: &LapJoint, force: JointForce) -> LapModel {
+        LapModel {
+            joint: *joint,
+            force,
+        }
     }
 
     /// A force in the force domain and at most F_gross (no static state beyond, (L6)).

@@ -5,12 +5,18 @@
 
 pub mod closed_form;
 pub mod continuum;
+pub mod cross_check;
 pub mod cycle;
 pub mod discretized;
+pub mod fittable;
 pub mod load_driven;
 pub mod params;
+pub mod point;
 pub mod problem;
+pub mod profiles;
+pub mod stiffness_answer;
 pub mod validity;
+pub mod zoned;
 
 pub use continuum::{
     ContinuumLap, LAP_POISSON, LapContinuumMesh, SlidingZones, solve_lap_continuum,

@@ -8,9 +8,12 @@ use super::continuum::{ContinuumLap, LapContinuumMesh, solve_lap_continuum};
 use super::params::{LapParam, LapParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
+use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
+use crate::problems::fittable::{AnyFittable, FittableOf};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
+use crate::problems::zoned::{AnyZoned, ZonedOf};
 use crate::problems::{Description, Quantity};
 
 /// The clamped double-lap joint as a type: see [`Problem`].
@@ -151,6 +154,18 @@ impl Problem for LapJointProblem {
 
     fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
         Some(&LoadDrivenOf::<LapJointProblem>::NEW)
+    }
+
+    fn fittable() -> Option<&'static dyn AnyFittable> {
+        Some(&FittableOf::<LapJointProblem>::NEW)
+    }
+
+    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
+        Some(&CrossCheckedOf::<LapJointProblem>::NEW)
+    }
+
+    fn zoned() -> Option<&'static dyn AnyZoned> {
+        Some(&ZonedOf::<LapJointProblem>::NEW)
     }
 
     fn to_inputs(params: LapInputs) -> Inputs {

@@ -5,10 +5,15 @@
 
 pub mod closed_form;
 pub mod continuum;
+pub mod cross_check;
 pub mod discretized;
 pub mod params;
+pub mod point;
 pub mod problem;
+pub mod profiles;
+pub mod stiffness_answer;
 pub mod validity;
+pub mod zoned;
 
 pub use continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};
 pub use discretized::PlateFe;

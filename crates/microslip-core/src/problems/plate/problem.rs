@@ -8,8 +8,10 @@ use super::continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};
 use super::params::{PlateParam, PlateParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
+use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
+use crate::problems::zoned::{AnyZoned, ZonedOf};
 use crate::problems::{Description, Quantity};
 
 /// The squeezed plate (paper section 2.2) as a type: see [`Problem`].
@@ -80,6 +82,14 @@ impl Problem for SqueezedPlateProblem {
 
     fn continuum() -> Option<&'static dyn AnyContinuum> {
         Some(&ContinuumOf::<SqueezedPlateProblem>::NEW)
+    }
+
+    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
+        Some(&CrossCheckedOf::<SqueezedPlateProblem>::NEW)
+    }
+
+    fn zoned() -> Option<&'static dyn AnyZoned> {
+        Some(&ZonedOf::<SqueezedPlateProblem>::NEW)
     }
 
     fn to_inputs(params: PlateParams) -> Inputs {

@@ -5,12 +5,18 @@
 
 pub mod choice;
 pub mod closed_form;
+pub mod cross_check;
 pub mod cycle;
 pub mod discretized;
+pub mod fittable;
 pub mod load_driven;
 pub mod params;
+pub mod point;
 pub mod problem;
+pub mod profiles;
+pub mod stiffness_answer;
 pub mod validity;
+pub mod zoned;
 
 pub use discretized::{InterfaceSample, TwinBeamsFe};
 pub use problem::TwinBeamsProblem;

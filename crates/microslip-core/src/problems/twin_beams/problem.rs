@@ -6,9 +6,12 @@ use super::closed_form::{CoulombBeams, RegularizedBeams, TipForce, TwinBeams};
 use super::params::{BeamParam, TwinBeamsParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::problems::choice::AnyChoice;
+use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
+use crate::problems::fittable::{AnyFittable, FittableOf};
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{Laws, ParamKey, Problem};
+use crate::problems::zoned::{AnyZoned, ZonedOf};
 use crate::problems::{Description, Quantity};
 
 /// The twin cantilever beams (paper section 2.1) as a type: see [`Problem`].
@@ -123,6 +126,18 @@ impl Problem for TwinBeamsProblem {
     /// The beam theory ([`super::choice::TheoryChoice`]).
     fn choices() -> &'static [&'static dyn AnyChoice] {
         &[&super::choice::TheoryChoice]
+    }
+
+    fn fittable() -> Option<&'static dyn AnyFittable> {
+        Some(&FittableOf::<TwinBeamsProblem>::NEW)
+    }
+
+    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
+        Some(&CrossCheckedOf::<TwinBeamsProblem>::NEW)
+    }
+
+    fn zoned() -> Option<&'static dyn AnyZoned> {
+        Some(&ZonedOf::<TwinBeamsProblem>::NEW)
     }
 
     fn to_inputs(params: BeamsInputs) -> Inputs {
