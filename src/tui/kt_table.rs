@@ -189,7 +189,7 @@ mod tests {
     /// screen (one column for the border's padding) and shows no NaN, infinity or n/a.
     #[test]
     fn every_line_fits_the_pane_and_is_finite_at_every_corner_of_the_domain() {
-        for (what, model) in crate::chart::tests::corner_models() {
+        for (what, model) in crate::chart::corner_models() {
             let (title, lines) = stiffness_table(&model);
             assert!(title.len() <= 43);
             for line in lines {

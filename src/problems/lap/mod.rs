@@ -2,3 +2,7 @@
 //! folder re-exported whole, so `crate::problems::lap::...` keeps naming the same items.
 
 pub use microslip_core::problems::lap::*;
+
+mod chart;
+
+pub use chart::LapChart;

@@ -2,3 +2,7 @@
 //! folder re-exported whole, so `crate::problems::plate::...` keeps naming the same items.
 
 pub use microslip_core::problems::plate::*;
+
+mod chart;
+
+pub use chart::PlateChart;

@@ -2,3 +2,7 @@
 //! folder re-exported whole, so `crate::problems::twin_beams::...` keeps naming the same items.
 
 pub use microslip_core::problems::twin_beams::*;
+
+mod chart;
+
+pub use chart::BeamChart;
