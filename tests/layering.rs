@@ -585,16 +585,6 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "study/tolerance.rs",
     "study/zones.rs",
     "tui/app/data.rs",
-    "tui/app/fit.rs",
-    "tui/app/mod.rs",
-    "tui/app/normal.rs",
-    "tui/app/recompute.rs",
-    "tui/brief.rs",
-    "tui/effects.rs",
-    "tui/kt_table.rs",
-    "tui/mod.rs",
-    "tui/summary.rs",
-    "tui/view.rs",
     "verify.rs",
 ];
 

@@ -7,6 +7,8 @@
 
 pub mod family;
 pub(crate) mod load;
+#[cfg(feature = "app")]
+pub mod panes;
 pub(crate) mod pins;
 mod plot;
 pub mod vary;

@@ -1,12 +1,9 @@
-//! The TUI's one-line texts about FE comparisons and validity: the status line after `d` loads
-//! FE results, and the plate's strip-theory verdict in the regime pane (30 characters). Sized
-//! for the screen, so they live with it; the full reports are `report::compare`'s.
+//! The TUI's one-line texts about FE comparisons: the status line after `d` loads FE results.
+//! Sized for the screen, so they live with it; the full reports are `report::compare`'s (each
+//! problem's validity words for the regime pane are its face's, `src/problems/<name>/pane.rs`).
 
 use crate::fe::compare::{BeamComparison, LapCompared, PlateCompared};
-use crate::kernel::format::{number, number_with};
-use crate::kernel::validity::Validity;
-use crate::problems::lap::LapValidity;
-use crate::problems::plate::validity::PlateValidity;
+use crate::kernel::format::number;
 use crate::report::compare::{percent, percent_or_na, verdict};
 
 /// The range of the defined `values` as "a to b %", or the one value; "n/a" when none is.
@@ -68,44 +65,4 @@ pub fn lap_summary(code: &str, rows: &[LapCompared]) -> String {
         verdict::lap_summary(rows).short,
         percent_range(rows.iter().map(LapCompared::difference))
     )
-}
-
-/// The shear-lag theory's envelope in the lap joint's regime-pane title (about 20 characters), as
-/// the beams' title gives theirs: "FE within 3.4 %" (the expected difference of Delta from a
-/// plane-stress continuum, (L14)), "FE: >10 %, n solves" where the theory is outside it, "FE: not
-/// calibrated" where no calibration reaches (`n` draws the continuum in both cases).
-pub fn lap_validity_title(v: &LapValidity) -> String {
-    match (v.validity, v.expected_error) {
-        (Validity::Holds | Validity::Approximate, Some(e)) => {
-            format!("FE within {} %", number_with(100.0 * e, 2))
-        }
-        (Validity::Outside | Validity::MeasuredWrong, _) => {
-            format!("FE: >{} %, n solves", 100.0 * Validity::APPROXIMATE)
-        }
-        (Validity::Holds | Validity::Approximate | Validity::NotCalibrated, _) => {
-            "FE: not calibrated".to_string()
-        }
-    }
-}
-
-/// The strip theory's validity in a few words (TUI regime pane, one line of 30 characters), for
-/// the thickness-mean u(L): "mean holds (~1.6 %)", "mean approx. (~5.2 %)", "mean OUTSIDE",
-/// "not calibrated". The number is the expected difference from a plane-strain continuum, (V1).
-pub fn strip_validity_short(v: &PlateValidity) -> String {
-    let e = v.expected_error();
-    match v.validity {
-        Validity::Holds => format!("mean holds (~{} %)", percent_of(e)),
-        Validity::Approximate => format!("mean approx. (~{} %)", percent_of(e)),
-        Validity::Outside => format!("mean OUTSIDE (>{} %)", 100.0 * Validity::APPROXIMATE),
-        Validity::NotCalibrated => "not calibrated".to_string(),
-        Validity::MeasuredWrong => format!(
-            "mean WRONG (>{} %)",
-            v.measured_at_least
-                .map_or_else(|| "-".to_string(), |e| number_with(100.0 * e, 2))
-        ),
-    }
-}
-
-fn percent_of(error: Option<f64>) -> String {
-    error.map_or_else(|| "-".to_string(), |e| number_with(100.0 * e, 2))
 }

@@ -100,13 +100,14 @@ pub enum TuiError {
     Io(#[from] io::Error),
 }
 
-/// Opens the TUI on `preset` (default: the paper's twin beams).
+/// Opens the TUI on `preset` (default: the paper preset of the registry's first problem, the
+/// twin beams).
 pub fn run(
     charset: Charset,
     preset: Option<&str>,
     data: Option<std::path::PathBuf>,
 ) -> Result<Exit, TuiError> {
-    let preset = preset::resolve(preset.unwrap_or(preset::default_name(ModelKind::Beam)))?;
+    let preset = preset::resolve(preset.unwrap_or(preset::default_name(ModelKind::ALL[0])))?;
     if !io::stdout().is_terminal() || !io::stdin().is_terminal() {
         return Err(TuiError::NotATerminal);
     }

@@ -10,13 +10,12 @@
 //! no function of the physics that way.
 
 use crate::chart::Plot;
+use crate::chart::panes::pane_face;
 use crate::kernel::params::Unit;
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::{ModelKind, Param};
 use crate::report::number;
-use crate::study::curves::{
-    Samples, Series, Spacing, beam_shear_along, interface_zones, plate_shear_along,
-};
+use crate::study::curves::{Samples, Series, Spacing, interface_zones};
 use crate::tui::summary::{self, ContinuumState};
 
 pub use crate::study::curves::{InterfaceZones, Zone, ZoneSpan};
@@ -120,11 +119,7 @@ pub struct ChartView {
 /// The parameter pane of `kind` at `inputs`; `preset`: the loaded preset's values (edited rows
 /// are marked).
 pub fn parameters(kind: ModelKind, inputs: &Inputs, preset: &Inputs) -> (String, Vec<ParamRow>) {
-    let title = match inputs {
-        Inputs::Beam { structure, .. } => format!("Twin beams, {}", structure.theory.label()),
-        Inputs::Plate(_) => "Squeezed plate".to_string(),
-        Inputs::Lap { .. } => "Double-lap joint".to_string(),
-    };
+    let title = pane_face(kind).parameters_title(inputs);
     let rows = kind
         .params()
         .iter()
@@ -181,11 +176,7 @@ pub fn regime(model: &Model, continuum: &ContinuumState, strip_cells: &[usize]) 
 /// The zone strip at `model`, with the shear sampled for each of `strip_cells`.
 fn strip(model: &Model, strip_cells: &[usize]) -> StripView {
     let zones = interface_zones(model);
-    let origin = match model {
-        Model::Beam { .. } => "clamp",
-        Model::Plate(_) => "centre",
-        Model::Lap { .. } => "inner end",
-    };
+    let origin = pane_face(model.kind()).strip_origin();
     let shear = strip_cells
         .iter()
         .map(|&cells| shear_ratios(model, &zones, cells))
@@ -208,11 +199,10 @@ fn shear_ratios(model: &Model, zones: &InterfaceZones, cells: usize) -> ShearRow
             regularized: Vec::new(),
         };
     };
-    let series: (Series, Series) = match model {
-        Model::Beam { beams, force } => beam_shear_along(beams, *force, positions),
-        Model::Plate(plate) => plate_shear_along(plate, positions),
-        Model::Lap { joint, force } => crate::study::lap::lap_shear_along(joint, *force, positions),
-    };
+    // The face of the model's own problem: it always answers.
+    let series: (Series, Series) = pane_face(model.kind())
+        .shear_along(model, positions)
+        .unwrap_or_default();
     // mu P, the stress the interface slides at, for every problem.
     let interface = model.interface();
     let limit = interface.friction * interface.pressure;

@@ -4,5 +4,7 @@
 pub use microslip_core::problems::lap::*;
 
 mod chart;
+#[cfg(feature = "app")]
+mod pane;
 
 pub use chart::LapChart;

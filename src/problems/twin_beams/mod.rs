@@ -4,5 +4,7 @@
 pub use microslip_core::problems::twin_beams::*;
 
 mod chart;
+#[cfg(feature = "app")]
+mod pane;
 
 pub use chart::BeamChart;

@@ -2,19 +2,16 @@
 //! for every load-driven problem (the twin beams' w(L), the lap joint's Delta against F).
 
 use super::{App, Mode};
+use crate::chart::panes::pane_face;
 use crate::fit::Structure;
 use crate::problems::inputs::Model;
 use crate::report::{number, number_with};
 use crate::tui::effects::Effect;
 
 /// What `f` fits for `model`: its structure (all but mu and K_T) when it has a load-response
-/// curve to fit, the one place that says which problems have one.
+/// curve to fit; its problem's face says whether it has one.
 pub(super) fn fit_structure(model: &Model) -> Option<Structure> {
-    match *model {
-        Model::Beam { beams, .. } => Some(Structure::Beam(beams.params())),
-        Model::Lap { joint, .. } => Some(Structure::Lap(joint.params())),
-        Model::Plate(_) => None,
-    }
+    pane_face(model.kind()).fit_structure(model)
 }
 
 impl App {
