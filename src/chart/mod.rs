@@ -142,7 +142,7 @@ pub fn numeric_points(
 }
 
 /// The chart tests' fixtures, for the tests of the layers that draw charts.
-#[cfg(test)]
+#[cfg(all(test, feature = "app"))]
 pub(crate) use tests::{corner_models, every_chart};
 
 #[cfg(test)]

@@ -96,6 +96,10 @@ pub enum ContinuumState {
 /// `d` and `--data` read and `f` fits; `progress` is called every few ten thousand rows.
 pub type CurveParser = fn(&str, &mut dyn FnMut(usize, usize)) -> Result<Measured, DataError>;
 
+/// The regime pane's own continuum solve of a model `M` (see [`PaneFace::PANE_CONTINUUM`]): its
+/// summary, or why there is none.
+pub type PaneContinuum<M> = fn(&M) -> Result<ContinuumSummary, String>;
+
 /// What the regime pane's ratio of the regularized response to Coulomb's means, for every
 /// problem.
 pub const RATIO_MEANING: &str =
@@ -119,7 +123,7 @@ pub trait PaneFace: Problem {
     const MEASURED: CurveParser = crate::measured::parse_measured_with_progress;
     /// The regime pane's own continuum solve, where the pane shows one (the plate's: a tenth of
     /// a second, on a worker); None for a problem whose continuum is drawn by `n` only.
-    const PANE_CONTINUUM: Option<fn(&Self::Model) -> Result<ContinuumSummary, String>> = None;
+    const PANE_CONTINUUM: Option<PaneContinuum<Self::Model>> = None;
 
     /// The parameter pane's title (`Twin beams, Euler-Bernoulli`).
     fn parameters_title(params: &Self::Params) -> String;

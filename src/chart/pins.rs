@@ -233,9 +233,9 @@ pub(crate) fn with_pinned_models(
     add_pins(base, &entries)
 }
 
+#[cfg(feature = "app")]
 #[cfg(test)]
 mod tests {
-    #![cfg(feature = "app")]
     use super::*;
     use crate::problems::{BeamParam, ModelKind, Param, PlateParam};
 

@@ -6,7 +6,7 @@ use super::validity::PlateValidity;
 use super::{ContinuumMesh, SqueezedPlateProblem, solve_plate_continuum};
 use crate::SqueezedPlate;
 use crate::chart::panes::{
-    ContinuumState, ContinuumSummary, PaneFace, RATIO_MEANING, SATURATION_MEANING, SummaryLine,
+    ContinuumState, ContinuumSummary, PaneContinuum, PaneFace, RATIO_MEANING, SATURATION_MEANING, SummaryLine,
     TABLE_TOLERANCE, cell, shown,
 };
 use crate::kernel::format::{number, number_with};
@@ -28,8 +28,7 @@ fn pane_continuum(plate: &SqueezedPlate) -> Result<ContinuumSummary, String> {
 
 impl PaneFace for SqueezedPlateProblem {
     const STRIP_ORIGIN: &'static str = "centre";
-    const PANE_CONTINUUM: Option<fn(&SqueezedPlate) -> Result<ContinuumSummary, String>> =
-        Some(pane_continuum);
+    const PANE_CONTINUUM: Option<PaneContinuum<SqueezedPlate>> = Some(pane_continuum);
 
     fn parameters_title(_params: &Self::Params) -> String {
         "Squeezed plate".to_string()
