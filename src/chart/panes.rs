@@ -12,7 +12,7 @@
 //! screen shows.
 
 use crate::fit::{Measured, Structure};
-use crate::kernel::format::number_with;
+use crate::kernel::format::{number, number_with};
 use crate::measured::DataError;
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::{LoadDriven, ModelKind, Problem};
@@ -112,6 +112,9 @@ pub const SATURATION_MEANING: &str = "mu P / K_T: the elastic slip at which the 
 /// What the regime pane's K_T in MPa/um means.
 pub const KT_UM_MEANING: &str = "K_T in the unit some FE codes use: 1 MPa/um = 1000 MPa/mm";
 
+/// The width of the K_T table's K_T column.
+pub const KT_WIDTH: usize = 7;
+
 /// The tolerance the K_T table answers for: 1 % of Coulomb (`microslip kt --tolerance` takes any).
 pub const TABLE_TOLERANCE: f64 = 0.01;
 
@@ -142,12 +145,13 @@ pub trait PaneFace: Problem {
     /// The regime pane's lines; `continuum`: where its own continuum solve stands.
     fn summary_lines(model: &Self::Model, continuum: &ContinuumState) -> Vec<SummaryLine>;
 
-    /// The K_T table's column heads after `source` (one line, 44 columns at most with it).
-    fn kt_header() -> String;
+    /// The K_T table's columns after `source` and `K_T`: each head and width (with them, 44
+    /// characters at most).
+    const KT_COLUMNS: &'static [(&'static str, usize)];
 
-    /// The K_T table's cells for `model` at K_T = `kt` (MPa/mm), aligned under
-    /// [`PaneFace::kt_header`]; None where `kt` is not accepted.
-    fn kt_cells(model: &Self::Model, kt: f64) -> Option<String>;
+    /// The K_T table's values for `model` at K_T = `kt` (MPa/mm), one per
+    /// [`PaneFace::KT_COLUMNS`]; None where `kt` is not accepted.
+    fn kt_values(model: &Self::Model, kt: f64) -> Option<Vec<f64>>;
 
     /// The K_T table's answer to "how stiff for Coulomb within 1 %" ([`TABLE_TOLERANCE`]), for
     /// contact elements of `element` mm; `within`: `within 1 % of Coulomb: K_T`.
@@ -189,9 +193,10 @@ pub trait AnyPaneFace: Send + Sync {
     fn title_line(&self, model: &Model) -> Option<SummaryLine>;
     /// See [`PaneFace::summary_lines`].
     fn summary_lines(&self, model: &Model, continuum: &ContinuumState) -> Vec<SummaryLine>;
-    /// See [`PaneFace::kt_header`].
+    /// The K_T table's column heads after `source`: `K_T`, then [`PaneFace::KT_COLUMNS`].
     fn kt_header(&self) -> String;
-    /// See [`PaneFace::kt_cells`].
+    /// The K_T table's cells for `model` at K_T = `kt`, aligned under [`AnyPaneFace::kt_header`]
+    /// ([`PaneFace::kt_values`]); None where `kt` is not accepted.
     fn kt_cells(&self, model: &Model, kt: f64) -> Option<String>;
     /// See [`PaneFace::kt_tolerance_lines`].
     fn kt_tolerance_lines(&self, model: &Model, within: &str, element: f64) -> Vec<String>;
@@ -238,11 +243,27 @@ impl<P: PaneFace> AnyPaneFace for PaneOf<P> {
     }
 
     fn kt_header(&self) -> String {
-        P::kt_header()
+        let heads = P::KT_COLUMNS
+            .iter()
+            .map(|&(head, width)| format!("{head:>width$}"));
+        std::iter::once(format!("{:>KT_WIDTH$}", "K_T"))
+            .chain(heads)
+            .collect::<Vec<_>>()
+            .join(" ")
     }
 
     fn kt_cells(&self, model: &Model, kt: f64) -> Option<String> {
-        P::kt_cells(&P::from_model(model)?, kt)
+        let values = P::kt_values(&P::from_model(model)?, kt)?;
+        let cells = P::KT_COLUMNS
+            .iter()
+            .zip(values)
+            .map(|(&(_, width), value)| format!("{:>width$}", cell(value, width)));
+        Some(
+            std::iter::once(format!("{:>KT_WIDTH$}", cell(kt, KT_WIDTH)))
+                .chain(cells)
+                .collect::<Vec<_>>()
+                .join(" "),
+        )
     }
 
     fn kt_tolerance_lines(&self, model: &Model, within: &str, element: f64) -> Vec<String> {
@@ -317,4 +338,38 @@ pub fn load_tolerance_lines<P: LoadDriven>(
         format!("{heading} {} at F,", shown(within([f, f]))),
         format!("  {} at all F up to F", shown(within([0.0, f]))),
     ]
+}
+
+/// The ratio line's value: the regularized response over Coulomb's, or `none` where Coulomb's
+/// is not positive (nothing loaded), where a ratio means nothing.
+pub fn ratio_text(regularized: f64, coulomb: f64, none: &str) -> String {
+    if coulomb > 0.0 {
+        number(regularized / coulomb)
+    } else {
+        none.into()
+    }
+}
+
+/// The regime pane's heading and both laws' regime words for a load-driven problem at `force`
+/// (N), `what` naming the force (`tip force`): at zero load nothing is loaded, whatever the law,
+/// so the pane says so rather than "microslip".
+pub fn load_regimes(
+    force: f64,
+    what: &str,
+    coulomb: impl FnOnce() -> String,
+    regularized: impl FnOnce() -> String,
+) -> (String, String, String) {
+    if force == 0.0 {
+        (
+            "unloaded".to_string(),
+            "unloaded".to_string(),
+            "At F = 0 N: no load, no slip".to_string(),
+        )
+    } else {
+        (
+            coulomb(),
+            regularized(),
+            format!("At F = {} N ({what})", number(force)),
+        )
+    }
 }

@@ -9,7 +9,9 @@ use crate::chart::load::{
     LoadLabels, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
 };
 use crate::chart::view::{ChartFace, ChartSet};
-use crate::chart::{NumericPoints, OVERLAY_POINTS, Plot, SeriesRole, cursor, line, linear_axis, samples};
+use crate::chart::{
+    NumericPoints, OVERLAY_POINTS, Plot, SeriesRole, cursor, line, linear_axis, samples,
+};
 use crate::kernel::format::number_with;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::{LapParam, Param};
@@ -91,7 +93,6 @@ impl ChartSet for LapChart {
         }
     }
 }
-
 
 impl ChartFace for LapJointProblem {
     type Chart = LapChart;

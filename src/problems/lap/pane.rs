@@ -3,12 +3,12 @@
 //! curve `d` reads (`F_N,Delta_mm`) and what `f` fits.
 
 use super::LapJointProblem;
+use super::LapValidity;
 use super::closed_form::{FirstSlip, JointForce, LapJoint};
 use super::cycle::{LapCycle, MasingCycle};
-use super::LapValidity;
 use crate::chart::panes::{
     ContinuumState, CurveParser, KT_UM_MEANING, PaneFace, RATIO_MEANING, SATURATION_MEANING,
-    SummaryLine, cell, load_tolerance_lines,
+    SummaryLine, load_regimes, load_tolerance_lines, ratio_text,
 };
 use crate::fit::Structure;
 use crate::kernel::format::{number, number_with};
@@ -43,20 +43,17 @@ impl PaneFace for LapJointProblem {
         lap_lines(&model.joint, model.force)
     }
 
-    fn kt_header() -> String {
-        format!("{:>7} {:>7} {:>7} {:>8}", "K_T", "F_1 N", "a+d mm", "Delta mm")
-    }
+    const KT_COLUMNS: &'static [(&'static str, usize)] =
+        &[("F_1 N", 7), ("a+d mm", 7), ("Delta mm", 8)];
 
-    fn kt_cells(model: &Self::Model, kt: f64) -> Option<String> {
+    fn kt_values(model: &Self::Model, kt: f64) -> Option<Vec<f64>> {
         let joint = model.joint.with_tangential_stiffness(kt).ok()?;
         let state = joint.regularized(model.force);
-        Some(format!(
-            "{:>7} {:>7} {:>7} {:>8}",
-            cell(kt, 7),
-            cell(joint.first_slip_force(), 7),
-            cell(state.slide_at_inner_end() + state.slide_at_cover_ends(), 7),
-            cell(state.joint_displacement(), 8)
-        ))
+        Some(vec![
+            joint.first_slip_force(),
+            state.slide_at_inner_end() + state.slide_at_cover_ends(),
+            state.joint_displacement(),
+        ])
     }
 
     fn kt_tolerance_lines(model: &Self::Model, within: &str, element: f64) -> Vec<String> {
@@ -69,29 +66,15 @@ impl PaneFace for LapJointProblem {
 }
 
 /// The lap joint's lines of the regime pane.
-fn lap_lines(
-    joint: &LapJoint,
-    force: JointForce,
-    ) -> Vec<SummaryLine> {
+fn lap_lines(joint: &LapJoint, force: JointForce) -> Vec<SummaryLine> {
     let row = lap_point(joint, force);
-    let ratio = if row.delta_coulomb > 0.0 {
-        number(row.delta_regularized / row.delta_coulomb)
-    } else {
-        "- (no load)".into()
-    };
-    let (coulomb, regularized, heading) = if row.force == 0.0 {
-        (
-            "unloaded".to_string(),
-            "unloaded".to_string(),
-            "At F = 0 N: no load, no slip".to_string(),
-        )
-    } else {
-        (
-            row.regime_coulomb.short_label().to_string(),
-            row.regime_regularized.short_label().to_string(),
-            format!("At F = {} N (joint force)", number(row.force)),
-        )
-    };
+    let ratio = ratio_text(row.delta_regularized, row.delta_coulomb, "- (no load)");
+    let (coulomb, regularized, heading) = load_regimes(
+        row.force,
+        "joint force",
+        || row.regime_coulomb.short_label().to_string(),
+        || row.regime_regularized.short_label().to_string(),
+    );
     let cycle = LapCycle::new(joint, Law::Regularized, force);
     let (a, d) = row.zones_regularized;
     let end = match joint.first_slip() {

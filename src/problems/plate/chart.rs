@@ -69,11 +69,15 @@ impl ChartSet for PlateChart {
     }
 }
 
-
 impl ChartFace for SqueezedPlateProblem {
     type Chart = PlateChart;
 
-    fn plot(model: &Self::Model, chart: PlateChart, _f_data: f64, _span: Option<f64>) -> Option<Plot> {
+    fn plot(
+        model: &Self::Model,
+        chart: PlateChart,
+        _f_data: f64,
+        _span: Option<f64>,
+    ) -> Option<Plot> {
         plate_plot(model, chart)
     }
 

@@ -6,8 +6,8 @@ use super::validity::PlateValidity;
 use super::{ContinuumMesh, SqueezedPlateProblem, solve_plate_continuum};
 use crate::SqueezedPlate;
 use crate::chart::panes::{
-    ContinuumState, ContinuumSummary, PaneContinuum, PaneFace, RATIO_MEANING, SATURATION_MEANING, SummaryLine,
-    TABLE_TOLERANCE, cell, shown,
+    ContinuumState, ContinuumSummary, PaneContinuum, PaneFace, RATIO_MEANING, SATURATION_MEANING,
+    SummaryLine, TABLE_TOLERANCE, ratio_text, shown,
 };
 use crate::kernel::format::{number, number_with};
 use crate::kernel::validity::Validity;
@@ -39,136 +39,125 @@ impl PaneFace for SqueezedPlateProblem {
     }
 
     fn summary_lines(plate: &Self::Model, continuum: &ContinuumState) -> Vec<SummaryLine> {
-            let row = plate_point(plate);
-            let ratio = if row.u_coulomb > 0.0 {
-                number(row.u_regularized / row.u_coulomb)
-            } else {
-                "-".into()
-            };
-            let onset = match plate.macroslip_onset_stiffness() {
-                Some(kt) => format!("macroslip K_T > {} MPa/mm", number(kt)),
-                None => "no macroslip at any K_T".into(),
-            };
-            let mut lines = vec![
-                SummaryLine::regime(
-                    "Coulomb",
-                    row.regime_coulomb.to_string(),
-                    "plain Coulomb law: stick near the centre, sliding (macroslip) near the free end",
-                ),
-                SummaryLine::regime(
-                    "regularized",
-                    row.regime_regularized.to_string(),
-                    "regularized law: microslip = every point slips elastically; +macroslip = \
+        let row = plate_point(plate);
+        let ratio = ratio_text(row.u_regularized, row.u_coulomb, "-");
+        let onset = match plate.macroslip_onset_stiffness() {
+            Some(kt) => format!("macroslip K_T > {} MPa/mm", number(kt)),
+            None => "no macroslip at any K_T".into(),
+        };
+        let mut lines = vec![
+            SummaryLine::regime(
+                "Coulomb",
+                row.regime_coulomb.to_string(),
+                "plain Coulomb law: stick near the centre, sliding (macroslip) near the free end",
+            ),
+            SummaryLine::regime(
+                "regularized",
+                row.regime_regularized.to_string(),
+                "regularized law: microslip = every point slips elastically; +macroslip = \
                      the part near the free end slides at mu P",
-                ),
-                SummaryLine::plain(
-                    format!("X_s = {} mm stick end", number(row.stick_end)),
-                    "Coulomb law: the plate sticks from the centre (x = 0) to X_s, slides beyond",
-                ),
-                SummaryLine::plain(
-                    format!("X_r = {} mm microslip end", number(row.micro_end)),
-                    "regularized law: microslip from the centre to X_r, macroslip beyond; \
+            ),
+            SummaryLine::plain(
+                format!("X_s = {} mm stick end", number(row.stick_end)),
+                "Coulomb law: the plate sticks from the centre (x = 0) to X_s, slides beyond",
+            ),
+            SummaryLine::plain(
+                format!("X_r = {} mm microslip end", number(row.micro_end)),
+                "regularized law: microslip from the centre to X_r, macroslip beyond; \
                      X_r = L: no macroslip",
-                ),
-                SummaryLine::plain(
-                    onset,
-                    "the K_T above which macroslip appears at the free end (closed form, \
+            ),
+            SummaryLine::plain(
+                onset,
+                "the K_T above which macroslip appears at the free end (closed form, \
                      theory (P11)): the plate's F_1",
-                ),
-                SummaryLine::plain(
-                    format!("u(L) Coulomb {} mm", number(row.u_coulomb)),
-                    "displacement of the free end under the plain Coulomb law",
-                )
-                .dropped(3),
-                SummaryLine::plain(
-                    format!("u(L) regularized {} mm", number(row.u_regularized)),
-                    "displacement of the free end under the regularized law",
-                ),
-                SummaryLine::plain(format!("ratio to Coulomb {ratio}"), RATIO_MEANING),
-            ];
-            let continuum_line = match continuum {
-                ContinuumState::Off => None,
-                ContinuumState::Solving => Some("u(L) 2-D FE: solving...".to_string()),
-                // Three digits and a whole percent above 10 %: the line fits the 80-column pane.
-                ContinuumState::Solved(solved) if row.u_regularized > 0.0 => {
-                    let u = solved.end_displacement;
-                    let off = 100.0 * (u / row.u_regularized - 1.0);
-                    let digits = if off.abs() >= 10.0 { 0 } else { 1 };
-                    Some(format!(
-                        "u(L) 2-D FE {} mm ({off:+.digits$} %)",
-                        number_with(u, 3)
-                    ))
-                }
-                ContinuumState::Solved(solved) => Some(format!(
-                    "u(L) 2-D FE {} mm",
-                    number_with(solved.end_displacement, 3)
-                )),
-                // The reason, in the words the line has room for (the whole of it in i's text
-                // would need the pane's lines to own their meanings).
-                ContinuumState::Failed(reason) if reason.contains("too stiff") => {
-                    Some("u(L) 2-D FE: K_T too stiff".to_string())
-                }
-                ContinuumState::Failed(_) => Some("u(L) 2-D FE: not converged".to_string()),
-            };
-            lines.extend(continuum_line.map(|text| {
-                SummaryLine::plain(
-                    text,
-                    "the project's plane-strain continuum FE (2-D, 4 layers, contact pressure \
+            ),
+            SummaryLine::plain(
+                format!("u(L) Coulomb {} mm", number(row.u_coulomb)),
+                "displacement of the free end under the plain Coulomb law",
+            )
+            .dropped(3),
+            SummaryLine::plain(
+                format!("u(L) regularized {} mm", number(row.u_regularized)),
+                "displacement of the free end under the regularized law",
+            ),
+            SummaryLine::plain(format!("ratio to Coulomb {ratio}"), RATIO_MEANING),
+        ];
+        let continuum_line = match continuum {
+            ContinuumState::Off => None,
+            ContinuumState::Solving => Some("u(L) 2-D FE: solving...".to_string()),
+            // Three digits and a whole percent above 10 %: the line fits the 80-column pane.
+            ContinuumState::Solved(solved) if row.u_regularized > 0.0 => {
+                let u = solved.end_displacement;
+                let off = 100.0 * (u / row.u_regularized - 1.0);
+                let digits = if off.abs() >= 10.0 { 0 } else { 1 };
+                Some(format!(
+                    "u(L) 2-D FE {} mm ({off:+.digits$} %)",
+                    number_with(u, 3)
+                ))
+            }
+            ContinuumState::Solved(solved) => Some(format!(
+                "u(L) 2-D FE {} mm",
+                number_with(solved.end_displacement, 3)
+            )),
+            // The reason, in the words the line has room for (the whole of it in i's text
+            // would need the pane's lines to own their meanings).
+            ContinuumState::Failed(reason) if reason.contains("too stiff") => {
+                Some("u(L) 2-D FE: K_T too stiff".to_string())
+            }
+            ContinuumState::Failed(_) => Some("u(L) 2-D FE: not converged".to_string()),
+        };
+        lines.extend(continuum_line.map(|text| {
+            SummaryLine::plain(
+                text,
+                "the project's plane-strain continuum FE (2-D, 4 layers, contact pressure \
                      solved): u(L) averaged through the thickness, the best answer here; in % \
                      against the strip theory's regularized u(L). None when K_T is too stiff \
                      for it (alpha t_p > 20) or it does not converge",
-                )
-            }));
-            lines.extend([
-                SummaryLine::plain(
-                    format!(
-                        "saturation slip {} um",
-                        number(mm_to_um(plate.saturation_slip()))
-                    ),
-                    SATURATION_MEANING,
-                )
-                .dropped(1),
-                SummaryLine::plain(
-                    pressure_words(plate, continuum),
-                    "contact pressure: the plane-strain continuum's (microslip plate --continuum) \
+            )
+        }));
+        lines.extend([
+            SummaryLine::plain(
+                format!(
+                    "saturation slip {} um",
+                    number(mm_to_um(plate.saturation_slip()))
+                ),
+                SATURATION_MEANING,
+            )
+            .dropped(1),
+            SummaryLine::plain(
+                pressure_words(plate, continuum),
+                "contact pressure: the plane-strain continuum's (microslip plate --continuum) \
                      is flat away from the free end and peaks at it; once solved, this line gives \
                      its peak, the mean over the last t_p/10 (the corner node itself grows with \
                      every refinement). The paper's flat-plate model (P7-P9, friction saturated \
                      everywhere), shown until then, is right only for the mean over the last t_p \
                      where the slip zone is at least t_p long (theory (P12))",
-                ),
-                SummaryLine::plain(
-                    format!(
-                        "strip theory {}",
-                        strip_validity_short(&plate.validity())
-                    ),
-                    "the closed forms treat the plate as a strip (u uniform through t_p); this \
+            ),
+            SummaryLine::plain(
+                format!("strip theory {}", strip_validity_short(&plate.validity())),
+                "the closed forms treat the plate as a strip (u uniform through t_p); this \
                      says how far a 2-D continuum's thickness-mean u(L) differs (V1); the contact \
                      face and mid-thickness have their own bounds (microslip plate), X_r none",
-                ),
-            ]);
-            lines
+            ),
+        ]);
+        lines
     }
 
-    fn kt_header() -> String {
-        format!("{:>7} {:>9} {:>8}", "K_T", "u(L) mm", "X_r mm")
-    }
+    const KT_COLUMNS: &'static [(&'static str, usize)] = &[("u(L) mm", 9), ("X_r mm", 8)];
 
-    fn kt_cells(plate: &Self::Model, kt: f64) -> Option<String> {
+    fn kt_values(plate: &Self::Model, kt: f64) -> Option<Vec<f64>> {
         let state = plate.with_tangential_stiffness(kt).ok()?.regularized();
-        Some(format!(
-            "{:>7} {:>9} {:>8}",
-            cell(kt, 7),
-            cell(state.end_displacement(), 9),
-            cell(state.micro_zone_end(), 8)
-        ))
+        Some(vec![state.end_displacement(), state.micro_zone_end()])
     }
 
-    /// At the plate's pressure (it has no load to range over).
     fn kt_tolerance_lines(plate: &Self::Model, within: &str, element: f64) -> Vec<String> {
         vec![format!(
             "u(L) {within} {}",
-            shown(plate_stiffness_for_tolerance(plate, TABLE_TOLERANCE, element))
+            shown(plate_stiffness_for_tolerance(
+                plate,
+                TABLE_TOLERANCE,
+                element
+            ))
         )]
     }
 }
@@ -185,12 +174,7 @@ fn pressure_words(plate: &SqueezedPlate, continuum: &ContinuumState) -> String {
     }
     plate.end_layer_pressure().map_or_else(
         || "contact P: 2-D only".to_string(),
-        |mean| {
-            format!(
-                "P last t_p ~{} P (flat)",
-                number_with(mean, 3)
-            )
-        },
+        |mean| format!("P last t_p ~{} P (flat)", number_with(mean, 3)),
     )
 }
 

@@ -3,8 +3,8 @@
 //! charts are written once in the chart layer's `load`; this file gives the beams' words and
 //! their own charts.
 
-use super::TwinBeamsProblem;
 use super::TwinBeamsFe;
+use super::TwinBeamsProblem;
 use super::closed_form::BeamTheory;
 use crate::chart::load::{
     LoadLabels, companions, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
@@ -89,7 +89,6 @@ impl ChartSet for BeamChart {
     }
 }
 
-
 impl ChartFace for TwinBeamsProblem {
     type Chart = BeamChart;
 
@@ -126,12 +125,7 @@ const BEAM_LABELS: LoadLabels = LoadLabels {
 /// The force range of the beam charts: up to `span` (kept by the app while parameters change) or
 /// 3 F_thre, or further to show the current F and the largest measured force, but never beyond the
 /// largest accepted force (the sweeps refuse it).
-fn force_range(
-    beams: &TwinBeams,
-    force: TipForce,
-    f_data: f64,
-    span: Option<f64>,
-) -> f64 {
+fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64, span: Option<f64>) -> f64 {
     let wanted = span
         .unwrap_or(3.0 * beams.threshold_force())
         .max(1.25 * force.newtons())

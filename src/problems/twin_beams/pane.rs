@@ -5,7 +5,7 @@
 use super::TwinBeamsProblem;
 use crate::chart::panes::{
     ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SATURATION_MEANING, SummaryLine,
-    cell, load_tolerance_lines,
+    load_regimes, load_tolerance_lines, ratio_text,
 };
 use crate::fit::Structure;
 use crate::kernel::format::{number, number_with};
@@ -33,118 +33,103 @@ impl PaneFace for TwinBeamsProblem {
     /// it as the first of the pane's lines.
     fn title_line(model: &Self::Model) -> Option<SummaryLine> {
         let (beams, force) = (&model.beams, &model.force);
-            let text = match beams.validity(*force).expected_error {
-                None => "FE: not calibrated".to_string(),
-                Some(error) if error > MAX_SHOWN_ENVELOPE => "FE: w/L too big".to_string(),
-                Some(error) => format!("FE within {} %", number_with(100.0 * error, 2)),
-            };
-            Some(SummaryLine::plain(
-                text,
-                "how far continuum FE of these beams (plane stress, fine mesh) is expected from                  the w(L) shown: the beam theory's envelope at this force (docs/theory.md (V2)).                  'not calibrated': mu P L / (2 E h) beyond the measured range; 'w/L too big':                  the bound passes 10 %, deflections far beyond those measured",
-            ))
+        let text = match beams.validity(*force).expected_error {
+            None => "FE: not calibrated".to_string(),
+            Some(error) if error > MAX_SHOWN_ENVELOPE => "FE: w/L too big".to_string(),
+            Some(error) => format!("FE within {} %", number_with(100.0 * error, 2)),
+        };
+        Some(SummaryLine::plain(
+            text,
+            "how far continuum FE of these beams (plane stress, fine mesh) is expected from                  the w(L) shown: the beam theory's envelope at this force (docs/theory.md (V2)).                  'not calibrated': mu P L / (2 E h) beyond the measured range; 'w/L too big':                  the bound passes 10 %, deflections far beyond those measured",
+        ))
     }
 
     fn summary_lines(model: &Self::Model, _continuum: &ContinuumState) -> Vec<SummaryLine> {
         let (beams, force) = (&model.beams, &model.force);
-            let row = beam_point(beams, *force);
-            let ratio = if row.w_coulomb > 0.0 {
-                number(row.w_regularized / row.w_coulomb)
-            } else {
-                "- (no load)".into()
-            };
-            // At zero load nothing is loaded, whatever the law: say so rather than "microslip".
-            let (coulomb, regularized, heading) = if row.force == 0.0 {
-                (
-                    "unloaded".to_string(),
-                    "unloaded".to_string(),
-                    "At F = 0 N: no load, no slip".to_string(),
-                )
-            } else {
-                (
-                    row.regime_coulomb.to_string(),
-                    row.regime_regularized.to_string(),
-                    format!("At F = {} N (tip force)", number(row.force)),
-                )
-            };
-            vec![
-                SummaryLine::plain(
-                    heading,
-                    "the tip force on each beam; every line below is at this force",
-                ),
-                SummaryLine::regime(
-                    "Coulomb",
-                    coulomb,
-                    "plain Coulomb law: stick (nothing slips) below F_thre, the whole interface \
+        let row = beam_point(beams, *force);
+        let ratio = ratio_text(row.w_regularized, row.w_coulomb, "- (no load)");
+        let (coulomb, regularized, heading) = load_regimes(
+            row.force,
+            "tip force",
+            || row.regime_coulomb.to_string(),
+            || row.regime_regularized.to_string(),
+        );
+        vec![
+            SummaryLine::plain(
+                heading,
+                "the tip force on each beam; every line below is at this force",
+            ),
+            SummaryLine::regime(
+                "Coulomb",
+                coulomb,
+                "plain Coulomb law: stick (nothing slips) below F_thre, the whole interface \
                      slides (macroslip) above it",
-                ),
-                SummaryLine::regime(
-                    "regularized",
-                    regularized,
-                    "regularized law (tau = K_T x slip up to mu P): microslip = every point slips \
+            ),
+            SummaryLine::regime(
+                "regularized",
+                regularized,
+                "regularized law (tau = K_T x slip up to mu P): microslip = every point slips \
                      elastically; +macroslip = the part near the free end slides at mu P",
+            ),
+            SummaryLine::plain(
+                format!("F_thre {} N: all slides", number(beams.threshold_force())),
+                "Coulomb threshold 4 mu b h P / 3: above it the whole interface slides",
+            ),
+            SummaryLine::plain(
+                format!(
+                    "F_1 {} N: tip slides",
+                    number(beams.first_macroslip_force())
                 ),
-                SummaryLine::plain(
-                    format!("F_thre {} N: all slides", number(beams.threshold_force())),
-                    "Coulomb threshold 4 mu b h P / 3: above it the whole interface slides",
-                ),
-                SummaryLine::plain(
-                    format!(
-                        "F_1 {} N: tip slides",
-                        number(beams.first_macroslip_force())
-                    ),
-                    "regularized law: above F_1 macroslip starts at the free end (x = L) and \
+                "regularized law: above F_1 macroslip starts at the free end (x = L) and \
                      spreads toward the clamp",
-                ),
-                SummaryLine::plain(
-                    format!("X = {} mm from clamp", number(row.micro_end)),
-                    "X: where microslip ends and macroslip begins, measured from the clamp \
+            ),
+            SummaryLine::plain(
+                format!("X = {} mm from clamp", number(row.micro_end)),
+                "X: where microslip ends and macroslip begins, measured from the clamp \
                      (x = 0); X = L: no macroslip",
+            ),
+            SummaryLine::plain(
+                format!("w(L) Coulomb {} mm", number(row.w_coulomb)),
+                "tip deflection under the plain Coulomb law",
+            )
+            .dropped(3),
+            SummaryLine::plain(
+                format!("w(L) regularized {} mm", number(row.w_regularized)),
+                "tip deflection under the regularized law",
+            ),
+            SummaryLine::plain(format!("ratio to Coulomb {ratio}"), RATIO_MEANING),
+            SummaryLine::plain(
+                format!(
+                    "saturation slip {} um",
+                    number(mm_to_um(beams.saturation_slip()))
                 ),
-                SummaryLine::plain(
-                    format!("w(L) Coulomb {} mm", number(row.w_coulomb)),
-                    "tip deflection under the plain Coulomb law",
-                )
-                .dropped(3),
-                SummaryLine::plain(
-                    format!("w(L) regularized {} mm", number(row.w_regularized)),
-                    "tip deflection under the regularized law",
+                SATURATION_MEANING,
+            )
+            .dropped(2),
+            SummaryLine::plain(
+                format!(
+                    "K_T = {} MPa/um",
+                    number(mpa_per_mm_to_mpa_per_um(
+                        beams.params().tangential_stiffness
+                    ))
                 ),
-                SummaryLine::plain(format!("ratio to Coulomb {ratio}"), RATIO_MEANING),
-                SummaryLine::plain(
-                    format!(
-                        "saturation slip {} um",
-                        number(mm_to_um(beams.saturation_slip()))
-                    ),
-                    SATURATION_MEANING,
-                )
-                .dropped(2),
-                SummaryLine::plain(
-                    format!(
-                        "K_T = {} MPa/um",
-                        number(mpa_per_mm_to_mpa_per_um(
-                            beams.params().tangential_stiffness
-                        ))
-                    ),
-                    KT_UM_MEANING,
-                )
-                .dropped(1),
-            ]
+                KT_UM_MEANING,
+            )
+            .dropped(1),
+        ]
     }
 
-    fn kt_header() -> String {
-        format!("{:>7} {:>7} {:>7} {:>8}", "K_T", "F_1 N", "X mm", "w(L) mm")
-    }
+    const KT_COLUMNS: &'static [(&'static str, usize)] =
+        &[("F_1 N", 7), ("X mm", 7), ("w(L) mm", 8)];
 
-    fn kt_cells(model: &Self::Model, kt: f64) -> Option<String> {
+    fn kt_values(model: &Self::Model, kt: f64) -> Option<Vec<f64>> {
         let beams = model.beams.with_tangential_stiffness(kt).ok()?;
         let state = beams.regularized(model.force);
-        Some(format!(
-            "{:>7} {:>7} {:>7} {:>8}",
-            cell(kt, 7),
-            cell(beams.first_macroslip_force(), 7),
-            cell(state.micro_zone_end(), 7),
-            cell(state.tip_deflection(), 8)
-        ))
+        Some(vec![
+            beams.first_macroslip_force(),
+            state.micro_zone_end(),
+            state.tip_deflection(),
+        ])
     }
 
     fn kt_tolerance_lines(model: &Self::Model, within: &str, element: f64) -> Vec<String> {
