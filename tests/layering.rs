@@ -584,7 +584,6 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "study/lap.rs",
     "study/tolerance.rs",
     "study/zones.rs",
-    "tui/app/data.rs",
     "verify.rs",
 ];
 

@@ -11,6 +11,7 @@
 //! described in words instead of curves), and this layer already turns a model into what a
 //! screen shows.
 
+use crate::fe::load::{AnyLoaded, Loaded};
 use crate::fit::{Measured, Structure};
 use crate::kernel::format::{number, number_with};
 use crate::measured::DataError;
@@ -170,6 +171,32 @@ pub trait PaneFace: Problem {
         let _ = model;
         None
     }
+
+    /// One point of the problem's FE results, as `fe` reads them (`d` loads them).
+    type FePoint;
+
+    /// An FE point on the axes of the problem's first chart, as read: (load or K_T, response).
+    fn fe_xy(point: &Self::FePoint) -> (f64, f64);
+
+    /// One line for the status after `d` loads FE results: `loaded` against the closed forms of
+    /// `model`, the verdict first (the line is cut at the screen's width); `code`: the FE code's
+    /// name (`CalculiX`).
+    ///
+    /// # Errors
+    /// Why the points cannot be compared with `model`, as the status line says it.
+    fn fe_brief(
+        model: &Self::Model,
+        loaded: &Loaded<Self::FePoint>,
+        code: &str,
+    ) -> Result<String, String>;
+
+    /// True where the FE runs of decks at `a` and at `b` are points of one curve, which add up
+    /// as they are loaded (the plate's runs of one deck at several K_T); false by default: a new
+    /// run replaces the previous points.
+    fn same_curve(a: &Self::Params, b: &Self::Params) -> bool {
+        let _ = (a, b);
+        false
+    }
 }
 
 /// A [`PaneFace`] with its types erased, for the TUI, which holds models as [`Model`] and
@@ -204,6 +231,8 @@ pub trait AnyPaneFace: Send + Sync {
     fn toggle_setting(&self, inputs: &mut Inputs) -> Option<&'static str>;
     /// See [`PaneFace::fit_structure`].
     fn fit_structure(&self, model: &Model) -> Option<Structure>;
+    /// See [`PaneFace::same_curve`]; false where either is of another problem.
+    fn same_curve(&self, a: &Inputs, b: &Inputs) -> bool;
 }
 
 /// The [`AnyPaneFace`] of a [`PaneFace`] problem `P`.
@@ -280,11 +309,63 @@ impl<P: PaneFace> AnyPaneFace for PaneOf<P> {
     fn fit_structure(&self, model: &Model) -> Option<Structure> {
         P::fit_structure(&P::from_model(model)?)
     }
+
+    fn same_curve(&self, a: &Inputs, b: &Inputs) -> bool {
+        match (P::from_inputs(a), P::from_inputs(b)) {
+            (Some(a), Some(b)) => P::same_curve(&a, &b),
+            _ => false,
+        }
+    }
 }
 
-/// Writes [`pane_face`] from the registry.
+/// FE results as the TUI shows them: of which problem, from which deck's values, the points on
+/// the problem's first chart, and the code's name.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FeRead {
+    /// The problem the results are of.
+    pub kind: ModelKind,
+    /// The values of the deck that produced them (CalculiX results); None for a CSV curve.
+    pub origin: Option<Inputs>,
+    /// The points, as read: (load or K_T, response) ([`PaneFace::fe_xy`]).
+    pub points: Vec<(f64, f64)>,
+    /// `CalculiX` for a run with its deck, `FE (CSV)` for a CSV curve.
+    pub code: &'static str,
+}
+
+/// Writes [`pane_face`], [`fe_read`] and [`fe_brief`] from the registry.
 macro_rules! pane_faces {
     ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        /// `loaded` as the TUI shows it ([`FeRead`]).
+        pub fn fe_read(loaded: &AnyLoaded) -> FeRead {
+            match loaded {
+                $(AnyLoaded::$variant(l) => FeRead {
+                    kind: ModelKind::$variant,
+                    origin: l.header.as_ref().map(|h| h.inputs),
+                    points: l
+                        .points
+                        .iter()
+                        .map(<crate::problems::$folder::$problem as PaneFace>::fe_xy)
+                        .collect(),
+                    code: l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
+                }),+
+            }
+        }
+
+        /// The status line's brief of `loaded` against `model` ([`PaneFace::fe_brief`]); None
+        /// where they are of different problems.
+        pub fn fe_brief(
+            loaded: &AnyLoaded,
+            model: &Model,
+            code: &str,
+        ) -> Option<Result<String, String>> {
+            match loaded {
+                $(AnyLoaded::$variant(l) => {
+                    type P = crate::problems::$folder::$problem;
+                    Some(<P as PaneFace>::fe_brief(&P::from_model(model)?, l, code))
+                }),+
+            }
+        }
+
         /// The screen face of the problem `kind` (generated from the registry).
         pub fn pane_face(kind: ModelKind) -> &'static dyn AnyPaneFace {
             match kind {

@@ -22,7 +22,6 @@
 
 pub mod action;
 pub mod app;
-pub mod brief;
 pub mod command;
 pub mod effects;
 pub mod keymap;

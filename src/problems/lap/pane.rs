@@ -10,11 +10,15 @@ use crate::chart::panes::{
     ContinuumState, CurveParser, KT_UM_MEANING, PaneFace, RATIO_MEANING, SATURATION_MEANING,
     SummaryLine, load_regimes, load_tolerance_lines, ratio_text,
 };
+use crate::fe::compare::{LapCompared, compare_lap};
+use crate::fe::load::Loaded;
+use crate::fe::results::LapFePoint;
 use crate::fit::Structure;
 use crate::kernel::format::{number, number_with};
 use crate::kernel::regime::Law;
 use crate::kernel::validity::Validity;
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
+use crate::report::compare::{percent_range, verdict};
 use crate::study::curves::{Samples, Series};
 use crate::study::lap::{lap_point, lap_shear_along};
 
@@ -62,6 +66,22 @@ impl PaneFace for LapJointProblem {
 
     fn fit_structure(model: &Self::Model) -> Option<Structure> {
         Some(Structure::Lap(model.joint.params()))
+    }
+
+    type FePoint = LapFePoint;
+
+    fn fe_xy(point: &LapFePoint) -> (f64, f64) {
+        (point.force, point.joint_displacement)
+    }
+
+    fn fe_brief(
+        model: &Self::Model,
+        loaded: &Loaded<LapFePoint>,
+        code: &str,
+    ) -> Result<String, String> {
+        compare_lap(&model.joint, &loaded.points, loaded.interface_mesh.as_ref())
+            .map(|rows| lap_summary(code, &rows))
+            .map_err(|e| e.to_string())
     }
 }
 
@@ -197,4 +217,14 @@ fn validity_title(v: &LapValidity) -> String {
             "FE: not calibrated".to_string()
         }
     }
+}
+
+/// One line for the TUI's status: the lap joint's comparison in brief, the verdict first.
+fn lap_summary(code: &str, rows: &[LapCompared]) -> String {
+    format!(
+        "{code}, {} points: {}; Delta {} vs shear lag",
+        rows.len(),
+        verdict::lap_summary(rows).short,
+        percent_range(rows.iter().map(LapCompared::difference))
+    )
 }

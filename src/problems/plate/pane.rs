@@ -2,6 +2,7 @@
 //! regime pane's lines with its own 2-D continuum solve (u(L) and the edge pressure, on a
 //! worker) and the strip theory's validity, and the K_T table's row.
 
+use super::params::PlateParams;
 use super::validity::PlateValidity;
 use super::{ContinuumMesh, SqueezedPlateProblem, solve_plate_continuum};
 use crate::SqueezedPlate;
@@ -9,9 +10,13 @@ use crate::chart::panes::{
     ContinuumState, ContinuumSummary, PaneContinuum, PaneFace, RATIO_MEANING, SATURATION_MEANING,
     SummaryLine, TABLE_TOLERANCE, ratio_text, shown,
 };
+use crate::fe::compare::{PlateCompared, compare_plate};
+use crate::fe::load::Loaded;
+use crate::fe::results::PlateFePoint;
 use crate::kernel::format::{number, number_with};
 use crate::kernel::validity::Validity;
 use crate::problems::stiffness::mm_to_um;
+use crate::report::compare::{percent, percent_or_na, verdict};
 use crate::study::curves::{Samples, Series, plate_point, plate_shear_along};
 use crate::study::tolerance::plate_stiffness_for_tolerance;
 
@@ -160,6 +165,33 @@ impl PaneFace for SqueezedPlateProblem {
             ))
         )]
     }
+
+    type FePoint = PlateFePoint;
+
+    fn fe_xy(point: &PlateFePoint) -> (f64, f64) {
+        (point.stiffness, point.end_displacement)
+    }
+
+    /// The first run's (a plate's results are one run per K_T).
+    fn fe_brief(
+        plate: &Self::Model,
+        loaded: &Loaded<PlateFePoint>,
+        code: &str,
+    ) -> Result<String, String> {
+        let rows = compare_plate(plate, &loaded.points, loaded.interface_mesh.as_ref());
+        Ok(rows
+            .first()
+            .map(|row| plate_summary(code, row))
+            .unwrap_or_default())
+    }
+
+    /// Runs of one deck but for K_T: the points of u(L) against K_T.
+    fn same_curve(a: &Self::Params, b: &Self::Params) -> bool {
+        PlateParams {
+            tangential_stiffness: b.tangential_stiffness,
+            ..*a
+        } == *b
+    }
 }
 
 /// The regime pane's contact-pressure line: the continuum's free-end peak (mean over the last
@@ -198,4 +230,21 @@ fn strip_validity_short(v: &PlateValidity) -> String {
 
 fn percent_of(error: Option<f64>) -> String {
     error.map_or_else(|| "-".to_string(), |e| number_with(100.0 * e, 2))
+}
+
+/// One line for the TUI's status: one plate run in brief, the verdict first.
+fn plate_summary(code: &str, row: &PlateCompared) -> String {
+    let through = row
+        .differences_through_thickness()
+        .map_or(String::new(), |[face, mid]| {
+            format!("; face {}, mid {}", percent(face), percent(mid))
+        });
+    format!(
+        "{code} at K_T = {} MPa/mm: {}; u(L) {} mm, strip theory {} mm ({}{through})",
+        number(row.fe.stiffness),
+        verdict::plate_summary(std::slice::from_ref(row)).short,
+        number(row.fe.end_displacement),
+        number(row.closed),
+        percent_or_na(row.difference())
+    )
 }

@@ -7,10 +7,14 @@ use crate::chart::panes::{
     ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SATURATION_MEANING, SummaryLine,
     load_regimes, load_tolerance_lines, ratio_text,
 };
+use crate::fe::compare::{BeamComparison, compare_beams};
+use crate::fe::load::Loaded;
+use crate::fe::results::BeamFePoint;
 use crate::fit::Structure;
 use crate::kernel::format::{number, number_with};
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::problems::twin_beams::closed_form::BeamTheory;
+use crate::report::compare::{percent_range, verdict};
 use crate::study::curves::{Samples, Series, beam_point, beam_shear_along};
 
 /// The largest beam-theory envelope (V2) the regime pane's title states (10 %): past it the
@@ -153,4 +157,37 @@ impl PaneFace for TwinBeamsProblem {
     fn fit_structure(model: &Self::Model) -> Option<Structure> {
         Some(Structure::Beam(model.beams.params()))
     }
+
+    type FePoint = BeamFePoint;
+
+    fn fe_xy(point: &BeamFePoint) -> (f64, f64) {
+        (point.force, point.deflection)
+    }
+
+    fn fe_brief(
+        model: &Self::Model,
+        loaded: &Loaded<BeamFePoint>,
+        code: &str,
+    ) -> Result<String, String> {
+        let comparison =
+            compare_beams(&model.beams, &loaded.points, loaded.interface_mesh.as_ref());
+        Ok(beam_summary(code, &comparison))
+    }
+}
+
+/// One line for the TUI's status: the beams' comparison in brief, the verdict first (the line is
+/// cut at the screen's width).
+fn beam_summary(code: &str, comparison: &BeamComparison) -> String {
+    let shear = percent_range(
+        comparison
+            .rows
+            .iter()
+            .map(|r| r.difference_shear_corrected()),
+    );
+    let euler = percent_range(comparison.rows.iter().map(|r| r.difference_euler()));
+    format!(
+        "{code}, {} points: {}; w(L) {shear} vs Timoshenko (E-B {euler})",
+        comparison.rows.len(),
+        verdict::beam_summary(comparison).short
+    )
 }
