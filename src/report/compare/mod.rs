@@ -231,6 +231,7 @@ pub(crate) fn percent_or_na(x: Option<f64>) -> String {
 
 /// The range of the defined `values` as "a to b %", or the one value; "n/a" when none is.
 /// Compact: it goes on the status line.
+#[cfg(feature = "app")]
 pub(crate) fn percent_range(values: impl Iterator<Item = Option<f64>>) -> String {
     let (lo, hi) = values
         .flatten()
