@@ -128,6 +128,11 @@ pub trait PaneFace: Problem {
     /// The regime pane's own continuum solve, where the pane shows one (the plate's: a tenth of
     /// a second, on a worker); None for a problem whose continuum is drawn by `n` only.
     const PANE_CONTINUUM: Option<PaneContinuum<Self::Model>> = None;
+    /// The K_T table's columns after `source` and `K_T`: each head and width (with them, 44
+    /// characters at most).
+    const KT_COLUMNS: &'static [(&'static str, usize)];
+    /// One point of the problem's FE results, as `fe` reads them (`d` loads them).
+    type FePoint;
 
     /// The parameter pane's title (`Twin beams, Euler-Bernoulli`).
     fn parameters_title(params: &Self::Params) -> String;
@@ -145,10 +150,6 @@ pub trait PaneFace: Problem {
 
     /// The regime pane's lines; `continuum`: where its own continuum solve stands.
     fn summary_lines(model: &Self::Model, continuum: &ContinuumState) -> Vec<SummaryLine>;
-
-    /// The K_T table's columns after `source` and `K_T`: each head and width (with them, 44
-    /// characters at most).
-    const KT_COLUMNS: &'static [(&'static str, usize)];
 
     /// The K_T table's values for `model` at K_T = `kt` (MPa/mm), one per
     /// [`PaneFace::KT_COLUMNS`]; None where `kt` is not accepted.
@@ -171,9 +172,6 @@ pub trait PaneFace: Problem {
         let _ = model;
         None
     }
-
-    /// One point of the problem's FE results, as `fe` reads them (`d` loads them).
-    type FePoint;
 
     /// An FE point on the axes of the problem's first chart, as read: (load or K_T, response).
     fn fe_xy(point: &Self::FePoint) -> (f64, f64);

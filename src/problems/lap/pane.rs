@@ -25,6 +25,9 @@ use crate::study::lap::{lap_point, lap_shear_along};
 impl PaneFace for LapJointProblem {
     const STRIP_ORIGIN: &'static str = "inner end";
     const MEASURED: CurveParser = crate::measured::parse_measured_joint_with_progress;
+    const KT_COLUMNS: &'static [(&'static str, usize)] =
+        &[("F_1 N", 7), ("a+d mm", 7), ("Delta mm", 8)];
+    type FePoint = LapFePoint;
 
     fn parameters_title(_params: &Self::Params) -> String {
         "Double-lap joint".to_string()
@@ -47,9 +50,6 @@ impl PaneFace for LapJointProblem {
         lap_lines(&model.joint, model.force)
     }
 
-    const KT_COLUMNS: &'static [(&'static str, usize)] =
-        &[("F_1 N", 7), ("a+d mm", 7), ("Delta mm", 8)];
-
     fn kt_values(model: &Self::Model, kt: f64) -> Option<Vec<f64>> {
         let joint = model.joint.with_tangential_stiffness(kt).ok()?;
         let state = joint.regularized(model.force);
@@ -67,8 +67,6 @@ impl PaneFace for LapJointProblem {
     fn fit_structure(model: &Self::Model) -> Option<Structure> {
         Some(Structure::Lap(model.joint.params()))
     }
-
-    type FePoint = LapFePoint;
 
     fn fe_xy(point: &LapFePoint) -> (f64, f64) {
         (point.force, point.joint_displacement)

@@ -34,6 +34,8 @@ fn pane_continuum(plate: &SqueezedPlate) -> Result<ContinuumSummary, String> {
 impl PaneFace for SqueezedPlateProblem {
     const STRIP_ORIGIN: &'static str = "centre";
     const PANE_CONTINUUM: Option<PaneContinuum<SqueezedPlate>> = Some(pane_continuum);
+    const KT_COLUMNS: &'static [(&'static str, usize)] = &[("u(L) mm", 9), ("X_r mm", 8)];
+    type FePoint = PlateFePoint;
 
     fn parameters_title(_params: &Self::Params) -> String {
         "Squeezed plate".to_string()
@@ -148,8 +150,6 @@ impl PaneFace for SqueezedPlateProblem {
         lines
     }
 
-    const KT_COLUMNS: &'static [(&'static str, usize)] = &[("u(L) mm", 9), ("X_r mm", 8)];
-
     fn kt_values(plate: &Self::Model, kt: f64) -> Option<Vec<f64>> {
         let state = plate.with_tangential_stiffness(kt).ok()?.regularized();
         Some(vec![state.end_displacement(), state.micro_zone_end()])
@@ -165,8 +165,6 @@ impl PaneFace for SqueezedPlateProblem {
             ))
         )]
     }
-
-    type FePoint = PlateFePoint;
 
     fn fe_xy(point: &PlateFePoint) -> (f64, f64) {
         (point.stiffness, point.end_displacement)

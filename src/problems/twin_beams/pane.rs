@@ -24,6 +24,9 @@ const MAX_SHOWN_ENVELOPE: f64 = 0.1;
 
 impl PaneFace for TwinBeamsProblem {
     const STRIP_ORIGIN: &'static str = "clamp";
+    const KT_COLUMNS: &'static [(&'static str, usize)] =
+        &[("F_1 N", 7), ("X mm", 7), ("w(L) mm", 8)];
+    type FePoint = BeamFePoint;
 
     fn parameters_title(params: &Self::Params) -> String {
         format!("Twin beams, {}", params.structure.theory.label())
@@ -123,9 +126,6 @@ impl PaneFace for TwinBeamsProblem {
         ]
     }
 
-    const KT_COLUMNS: &'static [(&'static str, usize)] =
-        &[("F_1 N", 7), ("X mm", 7), ("w(L) mm", 8)];
-
     fn kt_values(model: &Self::Model, kt: f64) -> Option<Vec<f64>> {
         let beams = model.beams.with_tangential_stiffness(kt).ok()?;
         let state = beams.regularized(model.force);
@@ -157,8 +157,6 @@ impl PaneFace for TwinBeamsProblem {
     fn fit_structure(model: &Self::Model) -> Option<Structure> {
         Some(Structure::Beam(model.beams.params()))
     }
-
-    type FePoint = BeamFePoint;
 
     fn fe_xy(point: &BeamFePoint) -> (f64, f64) {
         (point.force, point.deflection)
