@@ -28,7 +28,10 @@
 //! - [`fe`]: decks for CalculiX (Abaqus keyword syntax), result readers, the comparison of an FE
 //!   code's answer with the closed forms (it uses [`fit`] for the implied K_T, so it sits above it).
 //! - [`chart`]: what every chart shows, as data (title, axes, series), built from the layers
-//!   below; which charts exist and what each is ([`chart::view`]); drawn by the TUI and by the SVG
+//!   below; which charts exist and what each is ([`chart::view`]: the [`chart::view::ChartFace`]
+//!   each problem's face folder implements, and [`chart::view::AnyChart`], generated from the
+//!   registry); the text the TUI shows beside them (`chart::panes`, with the feature `app`: the
+//!   `PaneFace` of each problem's face folder); drawn by the TUI and by the SVG
 //!   figures of `report::figure`, which choose each series' look from its role
 //!   ([`chart::SeriesRole`]: Coulomb, the current K_T, a pin, a family member, ...), set where
 //!   the series is built; families of one chart over a parameter ([`chart::family`]).

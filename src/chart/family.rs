@@ -264,7 +264,8 @@ pub fn build_family(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::chart::view::{BeamChart, PlateChart};
+    use crate::problems::plate::PlateChart;
+    use crate::problems::twin_beams::BeamChart;
     use crate::problems::{BeamParam, ModelKind, PlateParam};
 
     fn members(kind: ModelKind, param: Param, values: &[f64]) -> Vec<(f64, Model)> {

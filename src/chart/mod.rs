@@ -5,12 +5,11 @@
 //! layer, below `report`: `report` formats (text, JSON, CSV, SVG) and computes nothing; which
 //! charts exist is [`view`].
 
-mod beam;
 pub mod family;
-mod lap;
-mod load;
+pub(crate) mod load;
+#[cfg(feature = "app")]
+pub mod panes;
 pub(crate) mod pins;
-mod plate;
 mod plot;
 pub mod vary;
 pub mod view;
@@ -22,7 +21,7 @@ pub use plot::{
 pub(crate) use plot::{axis_bounds, cursor, line, linear_axis, log_axis, max_y, tick, unsolved};
 pub use ymode::YMode;
 
-use crate::chart::view::{AnyChart, BeamChart, LapChart, PlateChart};
+use crate::chart::view::AnyChart;
 use crate::fit::Measurement;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::inputs::Model;
@@ -53,54 +52,26 @@ pub fn build(
     external: Option<&ExternalPoints>,
     force_span: Option<f64>,
 ) -> Plot {
-    debug_assert_eq!(chart.kind(), model.kind(), "a chart of another problem");
     let external = external.filter(|e| e.model == model.kind());
     let mut overlays: Vec<(SeriesRole, &str, Series)> = Vec::new();
-    let plot = match *model {
-        Model::Beam { beams, force } => match chart {
-            AnyChart::Plate(_) | AnyChart::Lap(_) => None,
-            AnyChart::Beam(chart) => {
-                if chart == BeamChart::Deflection {
-                    if let Some(points) = measured {
-                        let series = points.iter().map(|m| (m.force, m.response)).collect();
-                        overlays.push((SeriesRole::Measured, "measured", series));
-                    }
-                    if let Some(e) = external {
-                        overlays.push((SeriesRole::External, e.label.as_str(), e.points.clone()));
-                    }
-                }
-                let f_data = overlays
-                    .iter()
-                    .flat_map(|(_, _, s)| s.iter().map(|p| p.0))
-                    .fold(0.0, f64::max);
-                beam::beam_plot(&beams, force, chart, f_data, force_span)
-            }
-        },
-        Model::Plate(plate) => match chart {
-            AnyChart::Beam(_) | AnyChart::Lap(_) => None,
-            AnyChart::Plate(chart) => {
-                if let (PlateChart::Displacement, Some(e)) = (chart, external) {
-                    // The chart's x axis is log10 K_T.
-                    let series = e.points.iter().map(|&(k, u)| (k.log10(), u)).collect();
-                    overlays.push((SeriesRole::External, e.label.as_str(), series));
-                }
-                plate::plate_plot(&plate, chart)
-            }
-        },
-        Model::Lap { joint, force } => match chart {
-            AnyChart::Beam(_) | AnyChart::Plate(_) => None,
-            AnyChart::Lap(chart) => {
-                if let (LapChart::Displacement, Some(points)) = (chart, measured) {
-                    let series = points.iter().map(|m| (m.force, m.response)).collect();
-                    overlays.push((SeriesRole::Measured, "measured", series));
-                }
-                if let (LapChart::Displacement, Some(e)) = (chart, external) {
-                    overlays.push((SeriesRole::External, e.label.as_str(), e.points.clone()));
-                }
-                lap::lap_plot(&joint, force, chart, force_span)
-            }
-        },
-    };
+    // Measurements (a force and a response) and an external code's points are of the
+    // problem's response: they show on its first chart.
+    if chart.is_response() {
+        if let Some(points) = measured.filter(|_| chart.has_load()) {
+            let series = points.iter().map(|m| (m.force, m.response)).collect();
+            overlays.push((SeriesRole::Measured, "measured", series));
+        }
+        if let Some(e) = external {
+            let series = e.points.iter().map(|&p| chart.external_point(p)).collect();
+            overlays.push((SeriesRole::External, e.label.as_str(), series));
+        }
+    }
+    let f_data = overlays
+        .iter()
+        .flat_map(|(_, _, s)| s.iter().map(|p| p.0))
+        .fold(0.0, f64::max);
+    // None for a model of another problem than the chart's.
+    let plot = chart.plot_of(model, f_data, force_span);
     // Every range above lies in the accepted domain, so a chart is always built; should one not be,
     // an empty chart with valid axes is drawn rather than axes without extent.
     let mut plot = plot.unwrap_or_else(|| Plot {
@@ -167,34 +138,25 @@ pub fn numeric_points(
     model: &Model,
     chart: AnyChart,
 ) -> Result<Option<NumericPoints>, NumericError> {
-    let density = MeshDensity::with_elements(OVERLAY_ELEMENTS);
-    match (*model, chart) {
-        (Model::Beam { beams, force }, AnyChart::Beam(chart)) => {
-            beam::beam_numeric_points(&beams, force, chart, density)
-        }
-        (Model::Plate(plate), AnyChart::Plate(chart)) => {
-            plate::plate_numeric_points(&plate, chart, density)
-        }
-        (Model::Lap { joint, force }, AnyChart::Lap(chart)) => {
-            lap::lap_numeric_points(&joint, force, chart, density, OVERLAY_POINTS)
-        }
-        // A chart of another problem.
-        (Model::Beam { .. }, AnyChart::Plate(_) | AnyChart::Lap(_))
-        | (Model::Plate(_), AnyChart::Beam(_) | AnyChart::Lap(_))
-        | (Model::Lap { .. }, AnyChart::Beam(_) | AnyChart::Plate(_)) => Ok(None),
-    }
+    chart.numeric_points_of(model, MeshDensity::with_elements(OVERLAY_ELEMENTS))
 }
 
+/// The chart tests' fixtures, for the tests of the layers that draw charts.
+#[cfg(all(test, feature = "app"))]
+pub(crate) use tests::{corner_models, every_chart};
+
 #[cfg(test)]
-pub(crate) mod tests {
+mod tests {
     use super::*;
     use crate::TipForce;
     use crate::problems::inputs::Inputs;
+    use crate::problems::plate::PlateChart;
+    use crate::problems::twin_beams::BeamChart;
     use crate::problems::{ModelKind, PlateParam};
 
     /// Every chart of `kind`, in the order the `c` key reaches them.
     pub(crate) fn every_chart(kind: ModelKind) -> Vec<AnyChart> {
-        AnyChart::all().filter(|c| c.kind() == kind).collect()
+        AnyChart::of(kind).collect()
     }
 
     fn model(kind: ModelKind) -> Model {

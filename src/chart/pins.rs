@@ -13,11 +13,11 @@ use super::{YMode, build};
 #[cfg(feature = "app")]
 use crate::chart::view::AnyChart;
 #[cfg(feature = "app")]
+use crate::chart::view::setting_label;
+#[cfg(feature = "app")]
 use crate::kernel::format::number;
 #[cfg(feature = "app")]
 use crate::problems::inputs::{Inputs, Model};
-#[cfg(feature = "app")]
-use crate::problems::twin_beams::closed_form::BeamTheory;
 
 /// Pins kept at most: more curves than that cannot be told apart on a terminal chart.
 #[cfg(feature = "app")]
@@ -33,14 +33,6 @@ pub(crate) fn main_series(plot: &Plot) -> Option<&PlotSeries> {
     plot.series.iter().find(|s| s.role == SeriesRole::Current)
 }
 
-#[cfg(feature = "app")]
-fn theory(theory: BeamTheory) -> &'static str {
-    match theory {
-        BeamTheory::EulerBernoulli => "EB",
-        BeamTheory::Timoshenko => "Timo",
-    }
-}
-
 /// What differs between a pin and the current parameters, pinned value first:
 /// `mu 0.3->0.2 KT 600->1e3 +1`; `= current` when nothing does.
 #[cfg(feature = "app")]
@@ -54,15 +46,11 @@ pub(crate) fn label(pinned: &Inputs, current: &Inputs) -> String {
             (was != now).then(|| format!("{} {}->{}", param.name(), number(was), number(now)))
         })
         .collect();
-    if let (Inputs::Beam { structure: was, .. }, Inputs::Beam { structure: now, .. }) =
-        (pinned, current)
-        && was.theory != now.theory
+    // A setting that is no number (the beams' theory), where both have one and it differs.
+    if let (Some((name, was)), Some((_, now))) = (setting_label(pinned), setting_label(current))
+        && was != now
     {
-        differences.push(format!(
-            "theory {}->{}",
-            theory(was.theory),
-            theory(now.theory)
-        ));
+        differences.push(format!("{name} {was}->{now}"));
     }
     match differences.len() {
         0 => "= current".to_string(),
@@ -245,12 +233,13 @@ pub(crate) fn with_pinned_models(
     add_pins(base, &entries)
 }
 
-#[cfg(all(test, feature = "app"))]
+#[cfg(feature = "app")]
+#[cfg(test)]
 mod tests {
     use super::*;
     use crate::problems::{BeamParam, ModelKind, Param, PlateParam};
 
-    use crate::chart::tests::every_chart;
+    use crate::chart::every_chart;
 
     #[test]
     fn every_chart_has_a_curve_to_pin() {
@@ -268,7 +257,9 @@ mod tests {
     /// legend says so.
     #[test]
     fn values_a_log_axis_cannot_show_are_left_out_and_said() {
-        use crate::chart::view::{AnyChart, BeamChart, PlateChart};
+        use crate::chart::view::AnyChart;
+        use crate::problems::plate::PlateChart;
+        use crate::problems::twin_beams::BeamChart;
         let cases = [
             (
                 ModelKind::Beam,
@@ -329,7 +320,7 @@ mod tests {
         let model = inputs.validate().unwrap();
         build(
             &model,
-            AnyChart::Beam(crate::chart::view::BeamChart::Deflection),
+            AnyChart::Beam(crate::problems::twin_beams::BeamChart::Deflection),
             None,
             None,
             None,

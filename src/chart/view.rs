@@ -1,61 +1,30 @@
-//! The charts of each problem, as enums, with what the generic layers need to know of each (its
-//! key, title, x parameter, load axis, default y scale): `plot`, `figures`, families and the TUI
+//! The charts of every problem, with what the generic layers need to know of each (its key,
+//! title, x parameter, load axis, default y scale): `plot`, `figures`, families and the TUI
 //! name them the same way. A chart is never an index. Which one the TUI shows, and the table it
 //! can show instead, are the TUI's (`tui/views.rs`).
+//!
+//! Each problem's charts are its own: an enum in its face folder (`src/problems/<name>/chart.rs`)
+//! implementing [`ChartSet`], drawn by its [`ChartFace`] impl. [`AnyChart`], a chart of any
+//! problem, is generated from the registry ([`microslip_core::with_problems!`]), so that this
+//! layer names no problem and a new one adds its charts without an edit here.
 
-use crate::problems::{BeamParam, LapParam, ModelKind, Param, PlateParam};
+use std::fmt::Debug;
+use std::hash::Hash;
 
-/// The twin beams' charts, in the order the TUI cycles through them.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum BeamChart {
-    /// Tip deflection w(L) against the tip force F, for K_T/5, K_T, 5 K_T and Coulomb.
-    Deflection,
-    /// End of the microslip zone X against F.
-    SlipBoundary,
-    /// Interface shear tau(x) along the beams at F.
-    Shear,
-    /// The hysteresis loop of a cycle between +F and -F.
-    Loop,
-    /// Dissipation per cycle D against the amplitude F_a.
-    Dissipation,
-}
+use crate::chart::{NumericPoints, Plot};
+use crate::numeric::{MeshDensity, NumericError};
+use crate::problems::{ModelKind, Param, Problem};
 
-/// The squeezed plate's charts, in the order the TUI cycles through them.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum PlateChart {
-    /// End displacement u(L) against K_T (logarithmic K_T axis).
-    Displacement,
-    /// End of the microslip zone X_r against mu.
-    SlipBoundary,
-    /// Contact pressure ratio P_r(x)/P along the half-plate.
-    ContactPressure,
-}
-
-/// The double-lap joint's charts, in the order the TUI cycles through them.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum LapChart {
-    /// Joint displacement Delta against F, for K_T/5, K_T, 5 K_T and Coulomb.
-    Displacement,
-    /// The zones against F: the sliding zones [0, a] and [L - d, L] outside the outline of the
-    /// middle zone, for both laws.
-    Zones,
-    /// Interface shear tau(x) along the overlap at F.
-    Shear,
-    /// Interface slip s(x) = u_inner - u_cover along the overlap at F.
-    Slip,
-    /// The hysteresis loop of Delta for a force cycling between +F and -F.
-    Loop,
-    /// Dissipation per cycle D against the amplitude F_a.
-    Dissipation,
-}
-
-/// The charts of one model.
-pub trait ChartSet: Copy + Eq + 'static {
-    /// Every chart, in cycling order.
+/// The charts of one problem.
+pub trait ChartSet: Debug + Copy + Eq + Hash + Send + Sync + 'static {
+    /// Every chart, in cycling order. The first is the chart of the problem's response against
+    /// its load or stiffness (w(L) vs F, u(L) vs K_T, Delta vs F): the TUI opens on it and shows
+    /// measured and external points on it.
     const ALL: &'static [Self];
     /// The short title of the chart.
     fn title(self) -> &'static str;
-    /// The chart's name on the command line and in file names (`w-vs-f`).
+    /// The chart's name on the command line and in file names (`w-vs-f`), unique over every
+    /// problem.
     fn key(self) -> &'static str;
     /// The parameter the chart runs along its x axis (F, K_T, mu), whose value a caption need
     /// not give; None where the x axis is no parameter (tau(x), the loop, P_r(x), D vs F_a).
@@ -67,242 +36,219 @@ pub trait ChartSet: Copy + Eq + 'static {
     fn spans_decades(self) -> bool;
 }
 
-impl ChartSet for BeamChart {
-    const ALL: &'static [Self] = &[
-        BeamChart::Deflection,
-        BeamChart::SlipBoundary,
-        BeamChart::Shear,
-        BeamChart::Loop,
-        BeamChart::Dissipation,
-    ];
+/// How a problem is charted: its charts and how each is drawn from its model. Implemented in
+/// each problem's face folder (`src/problems/<name>/chart.rs`), so that the chart layer holds
+/// the generic parts (overlays, finite-element legends, y modes, pins, families) once and no
+/// `match` on the problem.
+pub trait ChartFace: Problem {
+    /// The problem's charts.
+    type Chart: ChartSet;
 
-    fn title(self) -> &'static str {
-        match self {
-            BeamChart::Deflection => "w(L) vs F",
-            BeamChart::SlipBoundary => "X vs F",
-            BeamChart::Shear => "tau(x) at F",
-            BeamChart::Loop => "loop +-F",
-            BeamChart::Dissipation => "D vs F_a",
-        }
+    /// The chart `chart` of `model`, without overlays; `f_data`: the largest force of the points
+    /// overlaid on it (a force axis may widen to show them), `span`: the force span a family of
+    /// curves asks for. None where a curve cannot be sampled (every range is checked, so this is
+    /// a guard).
+    fn plot(
+        model: &Self::Model,
+        chart: Self::Chart,
+        f_data: f64,
+        span: Option<f64>,
+    ) -> Option<Plot>;
+
+    /// The project's finite-element points (and the 2-D continuum's, where the problem has one)
+    /// for `chart` on `density`; None where the chart has no discretized counterpart.
+    ///
+    /// # Errors
+    /// The discretized solver's, where no point of the chart could be solved.
+    fn numeric_points(
+        model: &Self::Model,
+        chart: Self::Chart,
+        density: MeshDensity,
+    ) -> Result<Option<NumericPoints>, NumericError>;
+
+    /// An external code's point `(x, y)` of the response (as read: load or stiffness, response)
+    /// placed on the axes of the first chart (the plate's runs along log10 K_T).
+    fn external_point(point: (f64, f64)) -> (f64, f64) {
+        point
     }
 
-    fn key(self) -> &'static str {
-        match self {
-            BeamChart::Deflection => "w-vs-f",
-            BeamChart::SlipBoundary => "x-vs-f",
-            BeamChart::Shear => "tau",
-            BeamChart::Loop => "loop",
-            BeamChart::Dissipation => "d-vs-fa",
-        }
-    }
-
-    fn x_param(self) -> Option<Param> {
-        match self {
-            BeamChart::Deflection | BeamChart::SlipBoundary => Some(Param::Beam(BeamParam::Force)),
-            BeamChart::Shear | BeamChart::Loop | BeamChart::Dissipation => None,
-        }
-    }
-
-    fn load_axis(self) -> bool {
-        match self {
-            BeamChart::Deflection | BeamChart::SlipBoundary | BeamChart::Dissipation => true,
-            BeamChart::Shear | BeamChart::Loop => false,
-        }
-    }
-
-    fn spans_decades(self) -> bool {
-        match self {
-            BeamChart::Dissipation => true,
-            BeamChart::Deflection
-            | BeamChart::SlipBoundary
-            | BeamChart::Shear
-            | BeamChart::Loop => false,
-        }
+    /// A setting of `params` that is no number, as its name and the short label of its value
+    /// (the beams' theory: `("theory", "EB")`), which a pin's label names when it differs; None
+    /// where the problem has none.
+    fn setting_label(params: &Self::Params) -> Option<(&'static str, &'static str)> {
+        let _ = params;
+        None
     }
 }
 
-impl ChartSet for PlateChart {
-    const ALL: &'static [Self] = &[
-        PlateChart::Displacement,
-        PlateChart::SlipBoundary,
-        PlateChart::ContactPressure,
-    ];
-
-    fn title(self) -> &'static str {
-        match self {
-            PlateChart::Displacement => "u(L) vs K_T",
-            PlateChart::SlipBoundary => "X_r vs mu",
-            PlateChart::ContactPressure => "P_r(x)/P",
+/// Writes [`AnyChart`] and its dispatch from the registry.
+macro_rules! any_chart {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        /// A chart of any problem, as `microslip plot CHART` names it: one variant per problem
+        /// of the registry, holding one of its [`ChartFace::Chart`]s.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum AnyChart {
+            $($(#[$doc])* $variant(<crate::problems::$folder::$problem as ChartFace>::Chart)),+
         }
-    }
 
-    fn key(self) -> &'static str {
-        match self {
-            PlateChart::Displacement => "u-vs-kt",
-            PlateChart::SlipBoundary => "xr-vs-mu",
-            PlateChart::ContactPressure => "pressure",
+        /// How many charts the problems have together.
+        const CHART_COUNT: usize =
+            0 $(+ <<crate::problems::$folder::$problem as ChartFace>::Chart as ChartSet>::ALL.len())+;
+
+        /// Every chart, the problems in registry order, each one's in its cycling order.
+        const EVERY_CHART: [AnyChart; CHART_COUNT] = {
+            let first = [$(AnyChart::$variant(
+                <<crate::problems::$folder::$problem as ChartFace>::Chart as ChartSet>::ALL[0]
+            )),+][0];
+            let mut all = [first; CHART_COUNT];
+            let mut i = 0;
+            $(
+                let charts =
+                    <<crate::problems::$folder::$problem as ChartFace>::Chart as ChartSet>::ALL;
+                let mut j = 0;
+                while j < charts.len() {
+                    all[i] = AnyChart::$variant(charts[j]);
+                    i += 1;
+                    j += 1;
+                }
+            )+
+            let _ = i;
+            all
+        };
+
+        impl AnyChart {
+            /// The model the chart is of.
+            pub fn kind(self) -> ModelKind {
+                match self {
+                    $(AnyChart::$variant(_) => ModelKind::$variant),+
+                }
+            }
+
+            /// The parameter the chart runs along its x axis (F, K_T, mu), whose value a caption
+            /// need not give; None where the x axis is no parameter (tau(x), the loop, P_r(x)).
+            pub fn x_param(self) -> Option<Param> {
+                match self {
+                    $(AnyChart::$variant(c) => c.x_param()),+
+                }
+            }
+
+            /// See [`ChartSet::load_axis`].
+            pub fn load_axis(self) -> bool {
+                match self {
+                    $(AnyChart::$variant(c) => c.load_axis()),+
+                }
+            }
+
+            /// See [`ChartSet::spans_decades`].
+            pub fn spans_decades(self) -> bool {
+                match self {
+                    $(AnyChart::$variant(c) => c.spans_decades()),+
+                }
+            }
+
+            /// The name on the command line (unique over every problem).
+            pub fn key(self) -> &'static str {
+                match self {
+                    $(AnyChart::$variant(c) => c.key()),+
+                }
+            }
+
+            /// The short title.
+            pub fn title(self) -> &'static str {
+                match self {
+                    $(AnyChart::$variant(c) => c.title()),+
+                }
+            }
+
+            /// The chart of `model` (a model of the chart's problem), without overlays: see
+            /// [`ChartFace::plot`]. None for a model of another problem.
+            pub(crate) fn plot_of(
+                self,
+                model: &crate::problems::inputs::Model,
+                f_data: f64,
+                span: Option<f64>,
+            ) -> Option<Plot> {
+                match self {
+                    $(AnyChart::$variant(c) => {
+                        type P = crate::problems::$folder::$problem;
+                        <P as ChartFace>::plot(&P::from_model(model)?, c, f_data, span)
+                    }),+
+                }
+            }
+
+            /// See [`ChartFace::numeric_points`]; `Ok(None)` for a model of another problem.
+            pub(crate) fn numeric_points_of(
+                self,
+                model: &crate::problems::inputs::Model,
+                density: MeshDensity,
+            ) -> Result<Option<NumericPoints>, NumericError> {
+                match self {
+                    $(AnyChart::$variant(c) => {
+                        type P = crate::problems::$folder::$problem;
+                        match P::from_model(model) {
+                            Some(model) => <P as ChartFace>::numeric_points(&model, c, density),
+                            None => Ok(None),
+                        }
+                    }),+
+                }
+            }
+
+            /// True where the chart is its problem's first, the response's (see
+            /// [`ChartSet::ALL`]), on which measured and external points show.
+            pub(crate) fn is_response(self) -> bool {
+                match self {
+                    $(AnyChart::$variant(c) => {
+                        <<crate::problems::$folder::$problem as ChartFace>::Chart as ChartSet>::ALL
+                            .first() == Some(&c)
+                    }),+
+                }
+            }
+
+            /// True where the chart's problem is driven by a load: measurements (a force and a
+            /// response) are of such a problem.
+            pub(crate) fn has_load(self) -> bool {
+                match self {
+                    $(AnyChart::$variant(_) =>
+                        <crate::problems::$folder::$problem as Problem>::INFO.load.is_some()),+
+                }
+            }
+
+            /// An external point placed on this chart's axes ([`ChartFace::external_point`]).
+            pub(crate) fn external_point(self, point: (f64, f64)) -> (f64, f64) {
+                match self {
+                    $(AnyChart::$variant(_) =>
+                        <crate::problems::$folder::$problem as ChartFace>::external_point(point)),+
+                }
+            }
         }
-    }
 
-    fn x_param(self) -> Option<Param> {
-        match self {
-            PlateChart::Displacement => Some(Param::Plate(PlateParam::Stiffness)),
-            PlateChart::SlipBoundary => Some(Param::Plate(PlateParam::Friction)),
-            PlateChart::ContactPressure => None,
+        /// The setting of `inputs` that is no number ([`ChartFace::setting_label`]): what a pin's
+        /// label names.
+        #[cfg(feature = "app")]
+        pub(crate) fn setting_label(
+            inputs: &crate::problems::inputs::Inputs,
+        ) -> Option<(&'static str, &'static str)> {
+            $(
+                if let Some(params) =
+                    <crate::problems::$folder::$problem as Problem>::from_inputs(inputs)
+                {
+                    return <crate::problems::$folder::$problem as ChartFace>::setting_label(&params);
+                }
+            )+
+            None
         }
-    }
-
-    fn load_axis(self) -> bool {
-        // The plate has no load parameter: its pressure is fixed.
-        false
-    }
-
-    fn spans_decades(self) -> bool {
-        match self {
-            PlateChart::Displacement => true,
-            PlateChart::SlipBoundary | PlateChart::ContactPressure => false,
-        }
-    }
+    };
 }
 
-impl ChartSet for LapChart {
-    const ALL: &'static [Self] = &[
-        LapChart::Displacement,
-        LapChart::Zones,
-        LapChart::Shear,
-        LapChart::Slip,
-        LapChart::Loop,
-        LapChart::Dissipation,
-    ];
-
-    fn title(self) -> &'static str {
-        match self {
-            LapChart::Displacement => "Delta vs F",
-            LapChart::Slip => "s(x) at F",
-            LapChart::Zones => "zones vs F",
-            LapChart::Shear => "tau(x) at F",
-            LapChart::Loop => "loop +-F",
-            LapChart::Dissipation => "D vs F_a",
-        }
-    }
-
-    fn key(self) -> &'static str {
-        match self {
-            LapChart::Displacement => "delta-vs-f",
-            LapChart::Zones => "zones-vs-f",
-            LapChart::Shear => "lap-tau",
-            LapChart::Slip => "lap-slip",
-            LapChart::Loop => "lap-loop",
-            LapChart::Dissipation => "lap-d-vs-fa",
-        }
-    }
-
-    fn x_param(self) -> Option<Param> {
-        match self {
-            LapChart::Displacement | LapChart::Zones => Some(Param::Lap(LapParam::Force)),
-            LapChart::Shear | LapChart::Slip | LapChart::Loop | LapChart::Dissipation => None,
-        }
-    }
-
-    fn load_axis(self) -> bool {
-        match self {
-            LapChart::Displacement | LapChart::Zones | LapChart::Dissipation => true,
-            LapChart::Shear | LapChart::Slip | LapChart::Loop => false,
-        }
-    }
-
-    fn spans_decades(self) -> bool {
-        match self {
-            LapChart::Dissipation => true,
-            LapChart::Displacement
-            | LapChart::Zones
-            | LapChart::Shear
-            | LapChart::Slip
-            | LapChart::Loop => false,
-        }
-    }
-}
-
-/// A chart of any model, as `microslip plot CHART` names it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum AnyChart {
-    /// A chart of the twin beams.
-    Beam(BeamChart),
-    /// A chart of the plate.
-    Plate(PlateChart),
-    /// A chart of the lap joint.
-    Lap(LapChart),
-}
+microslip_core::with_problems!(any_chart);
 
 impl AnyChart {
-    /// The parameter the chart runs along its x axis (F, K_T, mu), whose value a caption need not
-    /// give; None where the x axis is no parameter (tau(x), the loop, P_r(x)).
-    pub fn x_param(self) -> Option<Param> {
-        match self {
-            AnyChart::Beam(c) => c.x_param(),
-            AnyChart::Plate(c) => c.x_param(),
-            AnyChart::Lap(c) => c.x_param(),
-        }
-    }
-
-    /// See [`ChartSet::load_axis`].
-    pub fn load_axis(self) -> bool {
-        match self {
-            AnyChart::Beam(c) => c.load_axis(),
-            AnyChart::Plate(c) => c.load_axis(),
-            AnyChart::Lap(c) => c.load_axis(),
-        }
-    }
-
-    /// See [`ChartSet::spans_decades`].
-    pub fn spans_decades(self) -> bool {
-        match self {
-            AnyChart::Beam(c) => c.spans_decades(),
-            AnyChart::Plate(c) => c.spans_decades(),
-            AnyChart::Lap(c) => c.spans_decades(),
-        }
-    }
-
-    /// Every chart: the beams', the plate's, then the lap joint's (each model's in cycling
-    /// order).
-    pub const ALL: &'static [AnyChart] = &[
-        AnyChart::Beam(BeamChart::Deflection),
-        AnyChart::Beam(BeamChart::SlipBoundary),
-        AnyChart::Beam(BeamChart::Shear),
-        AnyChart::Beam(BeamChart::Loop),
-        AnyChart::Beam(BeamChart::Dissipation),
-        AnyChart::Plate(PlateChart::Displacement),
-        AnyChart::Plate(PlateChart::SlipBoundary),
-        AnyChart::Plate(PlateChart::ContactPressure),
-        AnyChart::Lap(LapChart::Displacement),
-        AnyChart::Lap(LapChart::Zones),
-        AnyChart::Lap(LapChart::Shear),
-        AnyChart::Lap(LapChart::Slip),
-        AnyChart::Lap(LapChart::Loop),
-        AnyChart::Lap(LapChart::Dissipation),
-    ];
+    /// Every chart: each problem's in cycling order, the problems in registry order.
+    pub const ALL: &'static [AnyChart] = &EVERY_CHART;
 
     /// Every chart, as [`AnyChart::ALL`].
     pub fn all() -> impl Iterator<Item = AnyChart> + Clone {
         Self::ALL.iter().copied()
-    }
-
-    /// The name on the command line (unique over every problem).
-    pub fn key(self) -> &'static str {
-        match self {
-            AnyChart::Beam(c) => c.key(),
-            AnyChart::Plate(c) => c.key(),
-            AnyChart::Lap(c) => c.key(),
-        }
-    }
-
-    /// The short title.
-    pub fn title(self) -> &'static str {
-        match self {
-            AnyChart::Beam(c) => c.title(),
-            AnyChart::Plate(c) => c.title(),
-            AnyChart::Lap(c) => c.title(),
-        }
     }
 
     /// The chart named `key`, if any.
@@ -310,13 +256,9 @@ impl AnyChart {
         Self::all().find(|c| c.key().eq_ignore_ascii_case(key))
     }
 
-    /// The model the chart is of.
-    pub fn kind(self) -> ModelKind {
-        match self {
-            AnyChart::Beam(_) => ModelKind::Beam,
-            AnyChart::Plate(_) => ModelKind::Plate,
-            AnyChart::Lap(_) => ModelKind::Lap,
-        }
+    /// Every chart of `kind`, in cycling order.
+    pub fn of(kind: ModelKind) -> impl Iterator<Item = AnyChart> + Clone {
+        Self::all().filter(move |c| c.kind() == kind)
     }
 }
 
@@ -347,6 +289,9 @@ mod tests {
         }
         assert_eq!(AnyChart::parse("nope"), None);
         // ALL holds each model's charts in their own order.
+        use crate::problems::lap::LapChart;
+        use crate::problems::plate::PlateChart;
+        use crate::problems::twin_beams::BeamChart;
         let beams = AnyChart::all().filter_map(|c| match c {
             AnyChart::Beam(b) => Some(b),
             AnyChart::Plate(_) | AnyChart::Lap(_) => None,

@@ -237,9 +237,10 @@ fn to_relative(mut plot: Plot) -> Plot {
 mod tests {
     use super::*;
     use crate::chart::figure;
-    use crate::chart::view::{BeamChart, PlateChart};
     use crate::problems::ModelKind;
     use crate::problems::inputs::{Inputs, Model};
+    use crate::problems::plate::PlateChart;
+    use crate::problems::twin_beams::BeamChart;
     use crate::{TipForce, TwinBeams};
 
     fn plot_of(chart: AnyChart) -> Plot {

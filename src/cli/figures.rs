@@ -48,8 +48,8 @@ pub(super) fn run_figures(
                 assignments: Vec::new(),
                 beam_theory: None,
             };
-            let (_, model) = load(&inputs, f.chart.kind(), "figures")?;
-            let plot = crate::chart::figure(&model, f.chart, fe && f.finite_elements, f.y)?;
+            let (_, model) = load(&inputs, f.chart().kind(), "figures")?;
+            let plot = crate::chart::figure(&model, f.chart(), fe && f.finite_elements, f.y)?;
             figures.push((plot, f.entry()));
         }
         figure::PAPER_INTRO.to_string()

@@ -22,6 +22,7 @@ use super::action::Action;
 use super::app::App;
 use super::workers::{Job, Lane, Report, Workers};
 use crate::chart::NumericPoints;
+use crate::chart::panes::pane_face;
 use crate::chart::view::AnyChart;
 use crate::fe::load::AnyLoaded;
 use crate::fit::{FitError, FitResult, Measurement, Progress, Structure};
@@ -81,11 +82,11 @@ pub enum Effect {
         /// The user preset directory, if any.
         user_dir: Option<PathBuf>,
     },
-    /// The plate's 2-D continuum at `params`, for the regime pane (on a worker in the loop: up to
+    /// The regime pane's 2-D continuum (the plate's) at `inputs` (on a worker in the loop: up to
     /// a tenth of a second; the newest request wins).
     SolveContinuum {
-        /// The plate.
-        params: crate::PlateParams,
+        /// The values solved.
+        inputs: Inputs,
     },
     /// `:preset NAME`: read the preset `name` (bundled, in `user_dir`, or a path).
     LoadPreset {
@@ -173,10 +174,10 @@ pub enum Outcome {
     },
     /// The presets to pick from.
     Presets(Vec<Listed>),
-    /// What the regime pane shows of the continuum at `params`, or why there is none.
+    /// What the regime pane shows of the continuum at `inputs`, or why there is none.
     Continuum {
-        /// The plate solved.
-        params: crate::PlateParams,
+        /// The values solved.
+        inputs: Inputs,
         /// The solution's summary, or the reason.
         result: Result<ContinuumSummary, String>,
     },
@@ -313,11 +314,11 @@ pub fn plan(effect: Effect) -> Plan {
             );
         }
         Effect::ListPresets { user_dir } => Outcome::Presets(preset::listing(user_dir.as_deref())),
-        Effect::SolveContinuum { params } => {
+        Effect::SolveContinuum { inputs } => {
             return slow(
                 Lane::Continuum,
                 0,
-                Box::new(move |_| Some(solve_continuum(params))),
+                Box::new(move |_| Some(solve_continuum(inputs))),
             );
         }
         Effect::SolveOverlay { inputs, chart } => {
@@ -406,19 +407,14 @@ fn read_measurements(path: String, kind: ModelKind) -> Outcome {
     Outcome::Measurements { path, kind, result }
 }
 
-/// The reader of `kind`'s measured curve (`F_N,Delta_mm` for the lap joint, `F_N,w_mm` else):
-/// what `d` and `--data` read, and `f` fits.
-pub type CurveParser = fn(
-    &str,
-    &mut dyn FnMut(usize, usize),
-) -> Result<crate::fit::Measured, crate::measured::DataError>;
+pub use crate::chart::panes::CurveParser;
 
-/// See [`CurveParser`].
+/// The reader of `kind`'s measured curve (`F_N,Delta_mm` for the lap joint, `F_N,w_mm` for the
+/// beams: its face's [`PaneFace::MEASURED`]): what `d` and `--data` read, and `f` fits.
+///
+/// [`PaneFace::MEASURED`]: crate::chart::panes::PaneFace::MEASURED
 pub fn measured_curve_parser(kind: ModelKind) -> CurveParser {
-    match kind {
-        ModelKind::Lap => crate::measured::parse_measured_joint_with_progress,
-        ModelKind::Beam | ModelKind::Plate => crate::measured::parse_measured_with_progress,
-    }
+    pane_face(kind).measured()
 }
 
 /// The outcome of [`Effect::SolveOverlay`].
@@ -463,28 +459,20 @@ fn fit(
     Outcome::Fitted { job, result }
 }
 
-/// What the regime pane shows of the plate's continuum solution.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ContinuumSummary {
-    /// u(L), thickness mean (mm).
-    pub end_displacement: f64,
-    /// Contact pressure over P, mean over the last t_p / 10: the free-end peak at that resolution
-    /// (the corner node's own value grows with refinement).
-    pub edge_pressure: f64,
-}
+pub use crate::chart::panes::ContinuumSummary;
 
-/// The outcome of [`Effect::SolveContinuum`].
-fn solve_continuum(params: crate::PlateParams) -> Outcome {
-    let result = crate::problems::plate::solve_plate_continuum(
-        params,
-        crate::problems::plate::ContinuumMesh::default(),
-    )
-    .map(|plate| ContinuumSummary {
-        end_displacement: plate.end_displacement_mean,
-        edge_pressure: plate.edge_pressure_ratio,
-    })
-    .map_err(|e| e.to_string());
-    Outcome::Continuum { params, result }
+/// The outcome of [`Effect::SolveContinuum`]: the regime pane's continuum of the problem of
+/// `inputs` (its face's), or why there is none.
+fn solve_continuum(inputs: Inputs) -> Outcome {
+    let result = inputs
+        .validate()
+        .map_err(|e| e.to_string())
+        .and_then(|model| {
+            pane_face(model.kind())
+                .pane_continuum(&model)
+                .unwrap_or_else(|| Err(format!("the {} has no continuum here", model.kind())))
+        });
+    Outcome::Continuum { inputs, result }
 }
 
 /// Applies `action` and performs every effect it leads to before returning, the fit included:

@@ -22,7 +22,6 @@
 
 pub mod action;
 pub mod app;
-pub mod brief;
 pub mod command;
 pub mod effects;
 pub mod keymap;
@@ -100,13 +99,14 @@ pub enum TuiError {
     Io(#[from] io::Error),
 }
 
-/// Opens the TUI on `preset` (default: the paper's twin beams).
+/// Opens the TUI on `preset` (default: the paper preset of the registry's first problem, the
+/// twin beams).
 pub fn run(
     charset: Charset,
     preset: Option<&str>,
     data: Option<std::path::PathBuf>,
 ) -> Result<Exit, TuiError> {
-    let preset = preset::resolve(preset.unwrap_or(preset::default_name(ModelKind::Beam)))?;
+    let preset = preset::resolve(preset.unwrap_or(preset::default_name(ModelKind::ALL[0])))?;
     if !io::stdout().is_terminal() || !io::stdin().is_terminal() {
         return Err(TuiError::NotATerminal);
     }

@@ -10,6 +10,7 @@
 //! no function of the physics that way.
 
 use crate::chart::Plot;
+use crate::chart::panes::pane_face;
 use crate::kernel::params::Unit;
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::{ModelKind, Param};
@@ -118,11 +119,7 @@ pub struct ChartView {
 /// The parameter pane of `kind` at `inputs`; `preset`: the loaded preset's values (edited rows
 /// are marked).
 pub fn parameters(kind: ModelKind, inputs: &Inputs, preset: &Inputs) -> (String, Vec<ParamRow>) {
-    let title = match inputs {
-        Inputs::Beam { structure, .. } => format!("Twin beams, {}", structure.theory.label()),
-        Inputs::Plate(_) => "Squeezed plate".to_string(),
-        Inputs::Lap { .. } => "Double-lap joint".to_string(),
-    };
+    let title = pane_face(kind).parameters_title(inputs);
     let rows = kind
         .params()
         .iter()
@@ -179,11 +176,7 @@ pub fn regime(model: &Model, continuum: &ContinuumState, strip_cells: &[usize]) 
 /// The zone strip at `model`, with the shear sampled for each of `strip_cells`.
 fn strip(model: &Model, strip_cells: &[usize]) -> StripView {
     let zones = interface_zones(model);
-    let origin = match model {
-        Model::Beam { .. } => "clamp",
-        Model::Plate(_) => "centre",
-        Model::Lap { .. } => "inner end",
-    };
+    let origin = pane_face(model.kind()).strip_origin();
     let shear = strip_cells
         .iter()
         .map(|&cells| shear_ratios(model, &zones, cells))

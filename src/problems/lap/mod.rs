@@ -2,3 +2,9 @@
 //! folder re-exported whole, so `crate::problems::lap::...` keeps naming the same items.
 
 pub use microslip_core::problems::lap::*;
+
+mod chart;
+#[cfg(feature = "app")]
+mod pane;
+
+pub use chart::LapChart;

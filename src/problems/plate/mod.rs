@@ -2,3 +2,9 @@
 //! folder re-exported whole, so `crate::problems::plate::...` keeps naming the same items.
 
 pub use microslip_core::problems::plate::*;
+
+mod chart;
+#[cfg(feature = "app")]
+mod pane;
+
+pub use chart::PlateChart;

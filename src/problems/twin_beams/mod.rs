@@ -2,3 +2,9 @@
 //! folder re-exported whole, so `crate::problems::twin_beams::...` keeps naming the same items.
 
 pub use microslip_core::problems::twin_beams::*;
+
+mod chart;
+#[cfg(feature = "app")]
+mod pane;
+
+pub use chart::BeamChart;

@@ -229,6 +229,24 @@ pub(crate) fn percent_or_na(x: Option<f64>) -> String {
     x.map_or_else(|| "n/a".to_string(), percent)
 }
 
+/// The range of the defined `values` as "a to b %", or the one value; "n/a" when none is.
+/// Compact: it goes on the status line.
+#[cfg(feature = "app")]
+pub(crate) fn percent_range(values: impl Iterator<Item = Option<f64>>) -> String {
+    let (lo, hi) = values
+        .flatten()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+    if lo > hi {
+        "n/a".to_string()
+    } else if lo == hi {
+        percent(lo)
+    } else {
+        format!("{:+.2} to {}", 100.0 * lo, percent(hi))
+    }
+}
+
 /// The note under a table with an undefined relative difference.
 pub(crate) const UNDEFINED_NOTE: &str = "n/a: the closed form is 0 there (no load, or nothing squeezes the \
 plate sideways), so a relative difference is undefined; compare the values themselves.";

@@ -3,7 +3,7 @@
 
 use super::Format;
 use crate::chart::YMode;
-use crate::chart::view::{AnyChart, BeamChart, PlateChart};
+use crate::chart::view::AnyChart;
 
 /// One figure of `microslip figures`: a chart of a bundled preset.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -13,8 +13,9 @@ pub(crate) struct PaperFigure {
     pub stem: &'static str,
     /// The bundled preset charted.
     pub preset: &'static str,
-    /// The chart.
-    pub chart: AnyChart,
+    /// The chart, by its key (`w-vs-f`, as `microslip plot` names it): the chart layer names no
+    /// problem's chart type, so the figure names the chart as a user does ([`PaperFigure::chart`]).
+    pub chart_key: &'static str,
     /// With the project's finite-element points (the paper's comparison figures).
     pub finite_elements: bool,
     /// The y axis.
@@ -30,7 +31,7 @@ pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
     PaperFigure {
         stem: "beam-w-vs-f",
         preset: "paper-beams",
-        chart: AnyChart::Beam(BeamChart::Deflection),
+        chart_key: "w-vs-f",
         y: YMode::Linear,
         finite_elements: true,
         caption: "Twin beams, K_T = 600 MPa/mm: tip deflection w(L) against the tip force F, \
@@ -39,7 +40,7 @@ pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
     PaperFigure {
         stem: "beam-w-vs-f-relative",
         preset: "paper-beams",
-        chart: AnyChart::Beam(BeamChart::Deflection),
+        chart_key: "w-vs-f",
         y: YMode::Relative,
         finite_elements: true,
         caption: "Twin beams: the same curves as w(L) / w(L)_Coulomb - 1 in %, where the K_T \
@@ -48,7 +49,7 @@ pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
     PaperFigure {
         stem: "beam-soft-w-vs-f",
         preset: "paper-beams-soft",
-        chart: AnyChart::Beam(BeamChart::Deflection),
+        chart_key: "w-vs-f",
         y: YMode::Linear,
         finite_elements: true,
         caption: "Twin beams, K_T/5 = 120 MPa/mm: w(L) against F, finite-element points at \
@@ -57,7 +58,7 @@ pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
     PaperFigure {
         stem: "beam-x-vs-f",
         preset: "paper-beams",
-        chart: AnyChart::Beam(BeamChart::SlipBoundary),
+        chart_key: "x-vs-f",
         y: YMode::Linear,
         finite_elements: true,
         caption: "Twin beams: end X of the microslip zone (from the clamp) against F, \
@@ -66,7 +67,7 @@ pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
     PaperFigure {
         stem: "beam-soft-x-vs-f",
         preset: "paper-beams-soft",
-        chart: AnyChart::Beam(BeamChart::SlipBoundary),
+        chart_key: "x-vs-f",
         y: YMode::Linear,
         finite_elements: true,
         caption: "Twin beams, K_T/5: X against F, finite-element points at 120 MPa/mm",
@@ -74,7 +75,7 @@ pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
     PaperFigure {
         stem: "plate-u-vs-kt",
         preset: "paper-plate",
-        chart: AnyChart::Plate(PlateChart::Displacement),
+        chart_key: "u-vs-kt",
         y: YMode::Log,
         finite_elements: true,
         caption: "Squeezed plate: end displacement u(L) against K_T, Coulomb and regularized, \
@@ -83,7 +84,7 @@ pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
     PaperFigure {
         stem: "plate-xr-vs-mu",
         preset: "paper-plate",
-        chart: AnyChart::Plate(PlateChart::SlipBoundary),
+        chart_key: "xr-vs-mu",
         y: YMode::Linear,
         finite_elements: false,
         caption: "Squeezed plate: end X_r of the microslip zone against mu, for K_T/10, K_T, \
@@ -92,7 +93,7 @@ pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
     PaperFigure {
         stem: "plate-pressure",
         preset: "paper-plate",
-        chart: AnyChart::Plate(PlateChart::ContactPressure),
+        chart_key: "pressure",
         y: YMode::Linear,
         finite_elements: false,
         caption: "Squeezed plate: contact pressure P_r(x)/P along the half-plate of the paper's \
@@ -102,7 +103,7 @@ pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
     PaperFigure {
         stem: "beam-loop",
         preset: "paper-beams",
-        chart: AnyChart::Beam(BeamChart::Loop),
+        chart_key: "loop",
         y: YMode::Linear,
         finite_elements: true,
         caption: "One beam cycled between +F and -F (F = 100 N): the hysteresis loop, both laws, \
@@ -111,7 +112,7 @@ pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
     PaperFigure {
         stem: "beam-d-vs-fa",
         preset: "paper-beams",
-        chart: AnyChart::Beam(BeamChart::Dissipation),
+        chart_key: "d-vs-fa",
         y: YMode::Log,
         finite_elements: false,
         caption: "Twin beams: dissipation per cycle D (both beams) against the amplitude F_a",
@@ -134,15 +135,21 @@ pub(crate) struct IndexEntry {
 
 #[cfg(any(feature = "app", test))]
 impl PaperFigure {
+    /// The chart [`PaperFigure::chart_key`] names. Every key of [`PAPER_FIGURES`] names a chart
+    /// (a unit test reads them all), so the fallback, the first chart, is never drawn.
+    pub(crate) fn chart(&self) -> AnyChart {
+        AnyChart::parse(self.chart_key).unwrap_or(AnyChart::ALL[0])
+    }
+
     /// This figure as an entry of the index page.
     pub(crate) fn entry(&self) -> IndexEntry {
         IndexEntry {
             stem: self.stem.to_string(),
-            title: self.chart.title(),
+            title: self.chart().title(),
             caption: format!("{} (preset <code>{}</code>", self.caption, self.preset),
             command: format!(
                 "microslip plot {} --preset {}{} --y {}",
-                self.chart.key(),
+                self.chart().key(),
                 self.preset,
                 if self.finite_elements { " --fe" } else { "" },
                 self.y.key()

@@ -2,11 +2,10 @@
 
 use super::fit::fit_structure;
 use super::{App, Measurements, Mode};
-use crate::PlateParams;
 use crate::chart;
+use crate::chart::panes::{FeRead, fe_brief, fe_read, pane_face};
 use crate::fit::Measurement;
 use crate::problems::ModelKind;
-use crate::problems::inputs::{Inputs, Model};
 use crate::tui::effects::Effect;
 use crate::tui::views::View;
 
@@ -61,34 +60,12 @@ impl App {
     /// parameters become the model's (the points mean nothing against others), and the status line
     /// gives the comparison `microslip compare` prints.
     pub(super) fn fe_results_read(&mut self, path: &str, loaded: &crate::fe::load::AnyLoaded) {
-        use crate::fe::load::AnyLoaded;
-        let (model, header, points, code) = match loaded {
-            AnyLoaded::Beam(l) => (
-                ModelKind::Beam,
-                l.header.as_ref(),
-                l.points.iter().map(|p| (p.force, p.deflection)).collect(),
-                l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
-            ),
-            AnyLoaded::Plate(l) => (
-                ModelKind::Plate,
-                l.header.as_ref(),
-                l.points
-                    .iter()
-                    .map(|p| (p.stiffness, p.end_displacement))
-                    .collect::<Vec<_>>(),
-                l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
-            ),
-            AnyLoaded::Lap(l) => (
-                ModelKind::Lap,
-                l.header.as_ref(),
-                l.points
-                    .iter()
-                    .map(|p| (p.force, p.joint_displacement))
-                    .collect(),
-                l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
-            ),
-        };
-        let origin = header.map(|h| h.inputs);
+        let FeRead {
+            kind: model,
+            origin,
+            points,
+            code,
+        } = fe_read(loaded);
         // Measurements were taken on the values the deck now replaces: they go (the help's rule).
         let mut dropped = String::new();
         if let Some(inputs) = origin {
@@ -102,28 +79,13 @@ impl App {
                 );
             }
         }
-        // Plate runs of the same deck but for K_T add up to a curve; anything else replaces.
-        let same_plate = |previous: &Option<Inputs>| match (previous, origin) {
-            (Some(Inputs::Plate(a)), Some(Inputs::Plate(b))) => {
-                PlateParams {
-                    tangential_stiffness: b.tangential_stiffness,
-                    ..*a
-                } == b
-            }
-            // A CSV's points (no deck), or a run of the beams: they replace.
-            (
-                None | Some(Inputs::Beam { .. } | Inputs::Plate(_) | Inputs::Lap { .. }),
-                None | Some(Inputs::Beam { .. } | Inputs::Lap { .. }),
-            )
-            | (None | Some(Inputs::Beam { .. } | Inputs::Lap { .. }), Some(Inputs::Plate(_))) => {
-                false
-            }
-        };
+        // Runs of one curve (the plate's, of one deck but for K_T) add up; anything else
+        // (a CSV's points, a run of the beams) replaces.
         let mut points: Vec<(f64, f64)> = points;
-        if let Some((previous, previous_origin)) = &self.external
-            && model == ModelKind::Plate
+        if let Some((previous, Some(previous_origin))) = &self.external
+            && let Some(origin) = &origin
             && previous.model == model
-            && same_plate(previous_origin)
+            && pane_face(model).same_curve(previous_origin, origin)
         {
             points.extend(previous.points.iter().copied());
             points.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -132,31 +94,10 @@ impl App {
         let Some(current) = self.model() else {
             return self.error(format!("{path}: the deck's parameters are not valid"));
         };
-        let summary = match (loaded, current) {
-            (AnyLoaded::Beam(l), Model::Beam { beams, .. }) => {
-                let comparison =
-                    crate::fe::compare::compare_beams(&beams, &l.points, l.interface_mesh.as_ref());
-                crate::tui::brief::beam_summary(code, &comparison)
-            }
-            (AnyLoaded::Plate(l), Model::Plate(plate)) => {
-                let rows =
-                    crate::fe::compare::compare_plate(&plate, &l.points, l.interface_mesh.as_ref());
-                rows.first()
-                    .map(|row| crate::tui::brief::plate_summary(code, row))
-                    .unwrap_or_default()
-            }
-            (AnyLoaded::Lap(l), Model::Lap { joint, .. }) => {
-                match crate::fe::compare::compare_lap(&joint, &l.points, l.interface_mesh.as_ref())
-                {
-                    Ok(rows) => crate::tui::brief::lap_summary(code, &rows),
-                    Err(e) => return self.error(format!("{path}: {e}")),
-                }
-            }
-            (AnyLoaded::Beam(_), Model::Plate(_) | Model::Lap { .. })
-            | (AnyLoaded::Plate(_), Model::Beam { .. } | Model::Lap { .. })
-            | (AnyLoaded::Lap(_), Model::Beam { .. } | Model::Plate(_)) => {
-                format!("{path}: FE results of another problem: press m")
-            }
+        let summary = match fe_brief(loaded, &current, code) {
+            Some(Ok(summary)) => summary,
+            Some(Err(e)) => return self.error(format!("{path}: {e}")),
+            None => format!("{path}: FE results of another problem: press m"),
         };
         let adopted = if origin.is_some() {
             " (deck parameters adopted)"

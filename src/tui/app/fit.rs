@@ -2,6 +2,7 @@
 //! for every load-driven problem (the twin beams' w(L), the lap joint's Delta against F).
 
 use super::{App, Mode};
+
 use crate::fit::Structure;
 use crate::problems::inputs::Model;
 use crate::report::{number, number_with};

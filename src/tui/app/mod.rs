@@ -14,7 +14,6 @@ use super::theme::Theme;
 use super::view::View;
 use super::views::Views;
 use super::workers::Lane;
-use crate::PlateParams;
 use crate::chart::view::AnyChart;
 use crate::chart::{self, NumericPoints, Plot, YMode};
 use crate::fit::Measurement;
@@ -269,10 +268,10 @@ pub struct App {
     solve_continuum: bool,
     /// Why the force axis was just fitted again, added to the action's message when it is done.
     axis_note: Option<String>,
-    /// The plate's continuum solution, for the values it was solved at (the last asked for, with
-    /// None until it comes).
+    /// The regime pane's continuum solution (the plate's), for the values it was solved at (the
+    /// last asked for, with None until it comes).
     continuum: Option<(
-        PlateParams,
+        Inputs,
         Option<Result<super::effects::ContinuumSummary, String>>,
     )>,
 }
@@ -456,9 +455,9 @@ impl App {
                 }
                 self.recompute();
             }
-            Outcome::Continuum { params, result } => {
-                if self.continuum.as_ref().is_some_and(|(p, _)| *p == params) {
-                    self.continuum = Some((params, Some(result)));
+            Outcome::Continuum { inputs, result } => {
+                if self.continuum.as_ref().is_some_and(|(p, _)| *p == inputs) {
+                    self.continuum = Some((inputs, Some(result)));
                 }
             }
             Outcome::Preset { name, result } => match result {

@@ -2,10 +2,9 @@
 //! that act at once.
 
 use super::{App, Mode};
+use crate::chart::panes::pane_face;
 use crate::kernel::params::Compact;
 use crate::problems::Param;
-use crate::problems::inputs::Inputs;
-use crate::problems::twin_beams::closed_form::BeamTheory;
 use crate::report::number;
 use crate::tui::action::Action;
 use crate::tui::text_input::TextInput;
@@ -80,25 +79,19 @@ impl App {
                     self.explain_overlay();
                 }
             }
-            Action::ToggleBeamTheory => match &mut self.state_mut().inputs {
-                Inputs::Beam { structure, .. } => {
-                    structure.theory = structure.theory.other();
-                    let text = match structure.theory {
-                        BeamTheory::EulerBernoulli => {
-                            "beam theory: Euler-Bernoulli (the paper's; no shear deflection)"
-                        }
-                        BeamTheory::Timoshenko => {
-                            "beam theory: Timoshenko (adds each beam's shear deflection \
-                             F x / (kappa G b 2h), nu from the nu row)"
-                        }
-                    };
-                    self.info(text);
-                    self.recompute();
+            Action::ToggleBeamTheory => {
+                let kind = self.kind;
+                let toggled = pane_face(kind).toggle_setting(&mut self.state_mut().inputs);
+                match toggled {
+                    Some(text) => {
+                        self.info(text);
+                        self.recompute();
+                    }
+                    None => {
+                        self.error("the beam theory is a twin-beam setting: press m for the beams")
+                    }
                 }
-                Inputs::Plate(_) | Inputs::Lap { .. } => {
-                    self.error("the beam theory is a twin-beam setting: press m for the beams")
-                }
-            },
+            }
             Action::ToggleHelp => {
                 self.help_page = 0;
                 self.mode = Mode::Help;

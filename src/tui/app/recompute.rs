@@ -34,23 +34,30 @@ impl App {
         self.states[kind].inputs.validate().ok()?.regime_scale()
     }
 
-    /// What the regime pane shows of the plate's continuum solution.
+    /// What the regime pane shows of its own continuum solution (the plate's), where its
+    /// problem's face has one ([`PaneFace::PANE_CONTINUUM`]).
+    ///
+    /// [`PaneFace::PANE_CONTINUUM`]: crate::chart::panes::PaneFace::PANE_CONTINUUM
     pub fn continuum(&self) -> crate::tui::summary::ContinuumState {
         use crate::tui::summary::ContinuumState;
-        // Only the plate has a continuum solver of its own.
         let current = match self.model() {
-            Some(Model::Plate(plate)) if self.solve_continuum => plate.params(),
-            Some(Model::Plate(_) | Model::Beam { .. } | Model::Lap { .. }) | None => {
-                return ContinuumState::Off;
+            Some(model) if self.solve_continuum && self.has_pane_continuum(&model) => {
+                model.inputs()
             }
+            Some(_) | None => return ContinuumState::Off,
         };
         match &self.continuum {
-            Some((params, Some(Ok(solved)))) if *params == current => {
+            Some((inputs, Some(Ok(solved)))) if *inputs == current => {
                 ContinuumState::Solved(*solved)
             }
-            Some((params, Some(Err(e)))) if *params == current => ContinuumState::Failed(e.clone()),
+            Some((inputs, Some(Err(e)))) if *inputs == current => ContinuumState::Failed(e.clone()),
             _ => ContinuumState::Solving,
         }
+    }
+
+    /// True where the regime pane of `model`'s problem solves a continuum of its own.
+    fn has_pane_continuum(&self, model: &Model) -> bool {
+        crate::chart::panes::pane_face(model.kind()).has_pane_continuum()
     }
 
     /// The lines of the regime pane.
@@ -98,18 +105,18 @@ impl App {
         view.target_quantities = target_quantities.to_string();
     }
 
-    /// Asks for the plate's continuum at the current values when it is shown and not asked yet.
+    /// Asks for the regime pane's continuum (the plate's) at the current values when it is
+    /// shown and not asked yet.
     pub(super) fn ask_continuum(&mut self) {
-        let plate = match self.model() {
-            Some(Model::Plate(plate)) => plate,
-            Some(Model::Beam { .. } | Model::Lap { .. }) | None => return,
+        let Some(model) = self.model().filter(|m| self.has_pane_continuum(m)) else {
+            return;
         };
-        let params = plate.params();
-        if !self.solve_continuum || self.continuum.as_ref().is_some_and(|(p, _)| *p == params) {
+        let inputs = model.inputs();
+        if !self.solve_continuum || self.continuum.as_ref().is_some_and(|(p, _)| *p == inputs) {
             return;
         }
-        self.continuum = Some((params, None));
-        self.asked.push(Effect::SolveContinuum { params });
+        self.continuum = Some((inputs, None));
+        self.asked.push(Effect::SolveContinuum { inputs });
     }
 
     /// A problem's load axis (the beams' F), kept while values change so that the curves can be

@@ -547,10 +547,10 @@ fn the_plate_s_continuum_u_is_solved_for_the_values_shown_and_a_late_answer_is_i
         solve_continuum: true,
     });
     let asked = app.take_asked();
-    let [Effect::SolveContinuum { params }] = asked.as_slice() else {
+    let [Effect::SolveContinuum { inputs }] = asked.as_slice() else {
         panic!("{asked:?}")
     };
-    assert_eq!(*params, crate::PlateParams::PAPER);
+    assert_eq!(*inputs, Inputs::Plate(crate::PlateParams::PAPER));
     assert_eq!(app.continuum(), ContinuumState::Solving);
     // A value changes before the answer comes: the answer is for values no longer shown.
     let stale = crate::tui::effects::perform_blocking(asked[0].clone()).unwrap();

@@ -1,21 +1,116 @@
 //! The double-lap joint's charts as data: Delta vs F with Coulomb and the K_T family, the sliding
-//! zones vs F, tau(x), the loop and D vs F_a. Built from [`crate::study::lap`].
+//! zones vs F, tau(x), s(x), the loop and D vs F_a, with their finite-element and continuum
+//! points (the problem's [`ChartFace`]). Built from [`crate::study::lap`].
 
-use crate::chart::NumericPoints;
+use super::LapJointProblem;
+use super::closed_form::{JointForce, LapJoint};
+use super::problem::LapModel;
+use super::profiles::slip_along;
+use super::{LapContinuumMesh, LapFe, solve_lap_continuum_path};
 use crate::chart::load::{
     LoadLabels, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
 };
-use crate::chart::view::LapChart;
-use crate::chart::{Plot, SeriesRole, cursor, line, linear_axis, samples};
+use crate::chart::view::{ChartFace, ChartSet};
+use crate::chart::{
+    NumericPoints, OVERLAY_POINTS, Plot, SeriesRole, cursor, line, linear_axis, samples,
+};
 use crate::kernel::format::number_with;
 use crate::numeric::{MeshDensity, NumericError};
-use crate::problems::lap::LapJointProblem;
-use crate::problems::lap::closed_form::{JointForce, LapJoint};
-use crate::problems::lap::problem::LapModel;
-use crate::problems::lap::profiles::slip_along;
-use crate::problems::lap::{LapContinuumMesh, LapFe, solve_lap_continuum_path};
+use crate::problems::{LapParam, Param};
 use crate::study::curves;
 use crate::study::curves::Spacing;
+
+/// The double-lap joint's charts, in the order the TUI cycles through them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum LapChart {
+    /// Joint displacement Delta against F, for K_T/5, K_T, 5 K_T and Coulomb.
+    Displacement,
+    /// The zones against F: the sliding zones [0, a] and [L - d, L] outside the outline of the
+    /// middle zone, for both laws.
+    Zones,
+    /// Interface shear tau(x) along the overlap at F.
+    Shear,
+    /// Interface slip s(x) = u_inner - u_cover along the overlap at F.
+    Slip,
+    /// The hysteresis loop of Delta for a force cycling between +F and -F.
+    Loop,
+    /// Dissipation per cycle D against the amplitude F_a.
+    Dissipation,
+}
+
+impl ChartSet for LapChart {
+    const ALL: &'static [Self] = &[
+        LapChart::Displacement,
+        LapChart::Zones,
+        LapChart::Shear,
+        LapChart::Slip,
+        LapChart::Loop,
+        LapChart::Dissipation,
+    ];
+
+    fn title(self) -> &'static str {
+        match self {
+            LapChart::Displacement => "Delta vs F",
+            LapChart::Slip => "s(x) at F",
+            LapChart::Zones => "zones vs F",
+            LapChart::Shear => "tau(x) at F",
+            LapChart::Loop => "loop +-F",
+            LapChart::Dissipation => "D vs F_a",
+        }
+    }
+
+    fn key(self) -> &'static str {
+        match self {
+            LapChart::Displacement => "delta-vs-f",
+            LapChart::Zones => "zones-vs-f",
+            LapChart::Shear => "lap-tau",
+            LapChart::Slip => "lap-slip",
+            LapChart::Loop => "lap-loop",
+            LapChart::Dissipation => "lap-d-vs-fa",
+        }
+    }
+
+    fn x_param(self) -> Option<Param> {
+        match self {
+            LapChart::Displacement | LapChart::Zones => Some(Param::Lap(LapParam::Force)),
+            LapChart::Shear | LapChart::Slip | LapChart::Loop | LapChart::Dissipation => None,
+        }
+    }
+
+    fn load_axis(self) -> bool {
+        match self {
+            LapChart::Displacement | LapChart::Zones | LapChart::Dissipation => true,
+            LapChart::Shear | LapChart::Slip | LapChart::Loop => false,
+        }
+    }
+
+    fn spans_decades(self) -> bool {
+        match self {
+            LapChart::Dissipation => true,
+            LapChart::Displacement
+            | LapChart::Zones
+            | LapChart::Shear
+            | LapChart::Slip
+            | LapChart::Loop => false,
+        }
+    }
+}
+
+impl ChartFace for LapJointProblem {
+    type Chart = LapChart;
+
+    fn plot(model: &Self::Model, chart: LapChart, _f_data: f64, span: Option<f64>) -> Option<Plot> {
+        lap_plot(&model.joint, model.force, chart, span)
+    }
+
+    fn numeric_points(
+        model: &Self::Model,
+        chart: LapChart,
+        density: MeshDensity,
+    ) -> Result<Option<NumericPoints>, NumericError> {
+        lap_numeric_points(&model.joint, model.force, chart, density, OVERLAY_POINTS)
+    }
+}
 
 /// What the joint's load charts call its quantities.
 const LAP_LABELS: LoadLabels = LoadLabels {
@@ -27,12 +122,12 @@ const LAP_LABELS: LoadLabels = LoadLabels {
 
 /// The force axis: the whole range the joint carries, 0 to F_gross (N), or `span` when a family
 /// asks for a wider one (never beyond F_gross: there is no state there).
-pub(crate) fn force_range(joint: &LapJoint, span: Option<f64>) -> f64 {
+fn force_range(joint: &LapJoint, span: Option<f64>) -> f64 {
     let gross = joint.gross_slip_force();
     span.map_or(gross, |s| s.min(gross)).max(f64::MIN_POSITIVE)
 }
 
-pub(crate) fn lap_plot(
+fn lap_plot(
     joint: &LapJoint,
     force: JointForce,
     chart: LapChart,
@@ -114,7 +209,7 @@ pub(crate) fn lap_plot(
 /// plane-stress continuum ([`solve_lap_continuum_path`], (L13)): the answer without the
 /// shear-lag theory's assumptions, where its envelope (L14) says they fail. Where the continuum
 /// refuses the joint (an interface too stiff for it) its series is empty: a gap, not an error.
-pub(crate) fn lap_numeric_points(
+fn lap_numeric_points(
     joint: &LapJoint,
     force: JointForce,
     chart: LapChart,

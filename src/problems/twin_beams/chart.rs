@@ -1,22 +1,119 @@
 //! The twin beams' charts as data: w(L) vs F with Coulomb and the K_T family, X vs F, the loop,
-//! D vs F_a and tau(x), and their finite-element points. The load charts are written once in
-//! [`super::load`]; this file gives the beams' words and their own charts.
+//! D vs F_a and tau(x), and their finite-element points (the problem's [`ChartFace`]). The load
+//! charts are written once in the chart layer's `load`; this file gives the beams' words and
+//! their own charts.
 
+use super::TwinBeamsFe;
+use super::TwinBeamsProblem;
+use super::closed_form::BeamTheory;
+use super::problem::BeamsModel;
 use crate::chart::load::{
     LoadLabels, companions, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
 };
-use crate::chart::view::BeamChart;
+use crate::chart::view::{ChartFace, ChartSet};
 use crate::chart::{
     NumericPoints, OVERLAY_POINTS, Plot, PointFailure, SeriesRole, cursor, line, linear_axis,
     samples,
 };
 use crate::kernel::format::number;
 use crate::numeric::{MeshDensity, NumericError};
-use crate::problems::twin_beams::TwinBeamsFe;
-use crate::problems::twin_beams::TwinBeamsProblem;
-use crate::problems::twin_beams::problem::BeamsModel;
+use crate::problems::{BeamParam, Param};
 use crate::study::curves::{self, Spacing};
 use crate::{TipForce, TwinBeams};
+
+/// The twin beams' charts, in the order the TUI cycles through them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum BeamChart {
+    /// Tip deflection w(L) against the tip force F, for K_T/5, K_T, 5 K_T and Coulomb.
+    Deflection,
+    /// End of the microslip zone X against F.
+    SlipBoundary,
+    /// Interface shear tau(x) along the beams at F.
+    Shear,
+    /// The hysteresis loop of a cycle between +F and -F.
+    Loop,
+    /// Dissipation per cycle D against the amplitude F_a.
+    Dissipation,
+}
+
+impl ChartSet for BeamChart {
+    const ALL: &'static [Self] = &[
+        BeamChart::Deflection,
+        BeamChart::SlipBoundary,
+        BeamChart::Shear,
+        BeamChart::Loop,
+        BeamChart::Dissipation,
+    ];
+
+    fn title(self) -> &'static str {
+        match self {
+            BeamChart::Deflection => "w(L) vs F",
+            BeamChart::SlipBoundary => "X vs F",
+            BeamChart::Shear => "tau(x) at F",
+            BeamChart::Loop => "loop +-F",
+            BeamChart::Dissipation => "D vs F_a",
+        }
+    }
+
+    fn key(self) -> &'static str {
+        match self {
+            BeamChart::Deflection => "w-vs-f",
+            BeamChart::SlipBoundary => "x-vs-f",
+            BeamChart::Shear => "tau",
+            BeamChart::Loop => "loop",
+            BeamChart::Dissipation => "d-vs-fa",
+        }
+    }
+
+    fn x_param(self) -> Option<Param> {
+        match self {
+            BeamChart::Deflection | BeamChart::SlipBoundary => Some(Param::Beam(BeamParam::Force)),
+            BeamChart::Shear | BeamChart::Loop | BeamChart::Dissipation => None,
+        }
+    }
+
+    fn load_axis(self) -> bool {
+        match self {
+            BeamChart::Deflection | BeamChart::SlipBoundary | BeamChart::Dissipation => true,
+            BeamChart::Shear | BeamChart::Loop => false,
+        }
+    }
+
+    fn spans_decades(self) -> bool {
+        match self {
+            BeamChart::Dissipation => true,
+            BeamChart::Deflection
+            | BeamChart::SlipBoundary
+            | BeamChart::Shear
+            | BeamChart::Loop => false,
+        }
+    }
+}
+
+impl ChartFace for TwinBeamsProblem {
+    type Chart = BeamChart;
+
+    fn plot(model: &Self::Model, chart: BeamChart, f_data: f64, span: Option<f64>) -> Option<Plot> {
+        beam_plot(&model.beams, model.force, chart, f_data, span)
+    }
+
+    fn numeric_points(
+        model: &Self::Model,
+        chart: BeamChart,
+        density: MeshDensity,
+    ) -> Result<Option<NumericPoints>, NumericError> {
+        beam_numeric_points(&model.beams, model.force, chart, density)
+    }
+
+    /// The beam theory (`EB`, `Timo`): a pin of the other theory says so.
+    fn setting_label(params: &Self::Params) -> Option<(&'static str, &'static str)> {
+        let label = match params.structure.theory {
+            BeamTheory::EulerBernoulli => "EB",
+            BeamTheory::Timoshenko => "Timo",
+        };
+        Some(("theory", label))
+    }
+}
 
 /// What the twin beams' load charts call their quantities: the loop is one beam's, D both's.
 const BEAM_LABELS: LoadLabels = LoadLabels {
@@ -29,12 +126,7 @@ const BEAM_LABELS: LoadLabels = LoadLabels {
 /// The force range of the beam charts: up to `span` (kept by the app while parameters change) or
 /// 3 F_thre, or further to show the current F and the largest measured force, but never beyond the
 /// largest accepted force (the sweeps refuse it).
-pub(super) fn force_range(
-    beams: &TwinBeams,
-    force: TipForce,
-    f_data: f64,
-    span: Option<f64>,
-) -> f64 {
+fn force_range(beams: &TwinBeams, force: TipForce, f_data: f64, span: Option<f64>) -> f64 {
     let wanted = span
         .unwrap_or(3.0 * beams.threshold_force())
         .max(1.25 * force.newtons())
@@ -42,7 +134,7 @@ pub(super) fn force_range(
     TipForce::clamped(wanted).newtons()
 }
 
-pub(super) fn beam_plot(
+fn beam_plot(
     beams: &TwinBeams,
     force: TipForce,
     chart: BeamChart,
@@ -112,7 +204,7 @@ pub(super) fn beam_plot(
 
 /// The twin beams' finite-element points for `chart` (none for D vs F_a, a closed-form integral
 /// of the loop).
-pub(super) fn beam_numeric_points(
+fn beam_numeric_points(
     beams: &TwinBeams,
     force: TipForce,
     chart: BeamChart,

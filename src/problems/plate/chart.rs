@@ -1,18 +1,100 @@
 //! The squeezed plate's charts as data: u(L) against K_T (log axis), X_r against mu, the contact
-//! pressure and tau(x), and the finite-element and continuum points of u(L).
+//! pressure, and the finite-element and continuum points of u(L) (the problem's [`ChartFace`]).
 
+use super::SqueezedPlateProblem;
+use super::profiles::contact_pressure_along;
+use super::{ContinuumMesh, PlateFe, solve_plate_continuum};
 use crate::SqueezedPlate;
-use crate::chart::view::PlateChart;
+use crate::chart::view::{ChartFace, ChartSet};
 use crate::chart::{
     NumericPoints, OVERLAY_POINTS, Plot, PointFailure, SeriesRole, cursor, line, linear_axis,
     log_axis, max_y, samples,
 };
 use crate::kernel::format::number;
 use crate::numeric::{MeshDensity, NumericError};
-use crate::problems::PlateParam;
-use crate::problems::plate::profiles::contact_pressure_along;
-use crate::problems::plate::{ContinuumMesh, PlateFe, SqueezedPlateProblem, solve_plate_continuum};
+use crate::problems::{Param, PlateParam};
 use crate::study::curves::{self, Series, Spacing};
+
+/// The squeezed plate's charts, in the order the TUI cycles through them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PlateChart {
+    /// End displacement u(L) against K_T (logarithmic K_T axis).
+    Displacement,
+    /// End of the microslip zone X_r against mu.
+    SlipBoundary,
+    /// Contact pressure ratio P_r(x)/P along the half-plate.
+    ContactPressure,
+}
+
+impl ChartSet for PlateChart {
+    const ALL: &'static [Self] = &[
+        PlateChart::Displacement,
+        PlateChart::SlipBoundary,
+        PlateChart::ContactPressure,
+    ];
+
+    fn title(self) -> &'static str {
+        match self {
+            PlateChart::Displacement => "u(L) vs K_T",
+            PlateChart::SlipBoundary => "X_r vs mu",
+            PlateChart::ContactPressure => "P_r(x)/P",
+        }
+    }
+
+    fn key(self) -> &'static str {
+        match self {
+            PlateChart::Displacement => "u-vs-kt",
+            PlateChart::SlipBoundary => "xr-vs-mu",
+            PlateChart::ContactPressure => "pressure",
+        }
+    }
+
+    fn x_param(self) -> Option<Param> {
+        match self {
+            PlateChart::Displacement => Some(Param::Plate(PlateParam::Stiffness)),
+            PlateChart::SlipBoundary => Some(Param::Plate(PlateParam::Friction)),
+            PlateChart::ContactPressure => None,
+        }
+    }
+
+    fn load_axis(self) -> bool {
+        // The plate has no load parameter: its pressure is fixed.
+        false
+    }
+
+    fn spans_decades(self) -> bool {
+        match self {
+            PlateChart::Displacement => true,
+            PlateChart::SlipBoundary | PlateChart::ContactPressure => false,
+        }
+    }
+}
+
+impl ChartFace for SqueezedPlateProblem {
+    type Chart = PlateChart;
+
+    fn plot(
+        model: &Self::Model,
+        chart: PlateChart,
+        _f_data: f64,
+        _span: Option<f64>,
+    ) -> Option<Plot> {
+        plate_plot(model, chart)
+    }
+
+    fn numeric_points(
+        model: &Self::Model,
+        chart: PlateChart,
+        density: MeshDensity,
+    ) -> Result<Option<NumericPoints>, NumericError> {
+        plate_numeric_points(model, chart, density)
+    }
+
+    /// The u(L) chart runs along log10 K_T.
+    fn external_point((kt, u): (f64, f64)) -> (f64, f64) {
+        (kt.log10(), u)
+    }
+}
 
 /// The K_T range of the plate's displacement chart: four decades either side of K_T, within the
 /// accepted stiffnesses (ends in MPa/mm).
@@ -21,7 +103,7 @@ fn stiffness_range(kt: f64) -> (f64, f64) {
     (domain.clamp(kt / 1e4), domain.clamp(kt * 1e4))
 }
 
-pub(super) fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
+fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plot> {
     let p = plate.params();
     let kt = p.tangential_stiffness;
     match chart {
@@ -129,7 +211,7 @@ pub(super) fn plate_plot(plate: &SqueezedPlate, chart: PlateChart) -> Option<Plo
 
 /// The plate's finite-element points for `chart`: u(L) against K_T, with the 2-D continuum
 /// beside it (none for X_r vs mu and the contact pressure).
-pub(super) fn plate_numeric_points(
+fn plate_numeric_points(
     plate: &SqueezedPlate,
     chart: PlateChart,
     density: MeshDensity,
