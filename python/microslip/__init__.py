@@ -22,6 +22,8 @@ existing ones their familiar names (a new one is named from its title).
 
 from __future__ import annotations
 
+import os
+
 from . import _native
 from ._native import Law, ParameterError, Problem, Solution
 from ._report import Report
@@ -104,6 +106,23 @@ def preset(name: str) -> Problem:
     return _CLASSES[model](name=preset_name, **params)
 
 
+def compare(path, problem, *, deck=None) -> Report:
+    """An FE code's results against the closed forms, with the verdict, as ``microslip compare
+    MODEL RESULT --format json`` reports it.
+
+    ``path``: a CalculiX ``.dat`` (its deck, the ``.inp`` beside it or ``deck``, gives the
+    parameters in its header) or a CSV of FE points (``F_N,w_mm`` for the beams, ``KT_MPa_per_mm,u_mm``
+    for the plate, ``F_N,Delta_mm`` for the joint), compared at ``problem``'s parameters.
+    ``problem``: a problem instance, class or registry key (a class or key means its bundled
+    paper data set).
+    """
+    if isinstance(problem, str):
+        problem = problem_class(problem)()
+    elif isinstance(problem, type):
+        problem = problem()
+    return _native.compare(os.fspath(path), problem, None if deck is None else os.fspath(deck))
+
+
 def presets() -> list:
     """The names ``preset()`` accepts: the bundled presets, then the user's."""
     return _native.preset_names()
@@ -116,6 +135,7 @@ __all__ = [
     "Problem",
     "Report",
     "Solution",
+    "compare",
     "preset",
     "presets",
     "problem_class",

@@ -16,6 +16,7 @@ use pyo3::prelude::*;
 
 mod bridge;
 mod errors;
+mod features;
 mod json;
 mod presets;
 mod problem;
@@ -34,6 +35,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     )?;
     m.add_function(wrap_pyfunction!(registry::problems, m)?)?;
     m.add_function(wrap_pyfunction!(presets::preset_values, m)?)?;
+    m.add_function(wrap_pyfunction!(features::compare, m)?)?;
     m.add_function(wrap_pyfunction!(presets::preset_names, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

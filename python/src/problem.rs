@@ -228,6 +228,84 @@ impl Problem {
         crate::sweep::sweep(self, py, quantities, parameter)
     }
 
+    /// One load cycle between +amplitude and -amplitude (N), both laws: the loop, the
+    /// dissipation D (N mm) and the damping ratio, as `microslip cycle --amplitude A --format
+    /// json` reports them. Problems driven by a load only.
+    fn cycle<'py>(&self, py: Python<'py>, amplitude: f64) -> PyResult<Bound<'py, PyAny>> {
+        crate::features::cycle(py, self, amplitude)
+    }
+
+    /// The K_T each FE code assumes by default for a contact element of `element_size` mm
+    /// (default a hundredth of the interface) and what it does to the answer, as `microslip kt
+    /// --format json`.
+    #[pyo3(signature = (element_size = None))]
+    fn fe_defaults<'py>(
+        &self,
+        py: Python<'py>,
+        element_size: Option<f64>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        crate::features::fe_defaults(py, self, element_size)
+    }
+
+    /// The K_T (MPa/mm) that keeps the answer within `tolerance` (`"1%"`, `"0.01"` or 0.01) of
+    /// `of` (`"coulomb"`: K_T -> infinity; `"current"`: this K_T) over the forces F_from..F_to
+    /// (N; each this data set's F when not given), with each FE code's setting, as `microslip kt
+    /// --tolerance T --of REF --from F --to F --format json`.
+    #[pyo3(signature = (tolerance, *, of = "coulomb", F_from = None, F_to = None, element_size = None))]
+    #[allow(non_snake_case)]
+    fn kt_tolerance<'py>(
+        &self,
+        py: Python<'py>,
+        tolerance: &Bound<'py, PyAny>,
+        of: &str,
+        F_from: Option<f64>,
+        F_to: Option<f64>,
+        element_size: Option<f64>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        crate::features::kt_tolerance(py, self, tolerance, of, [F_from, F_to], element_size)
+    }
+
+    /// mu and K_T fitted to a measured force-response curve: forces `F` (N) and the measured
+    /// response (mm: w(L) of the beams, Delta of the joint), with each point's standard deviation
+    /// `sigma` (mm) when known; `fix_mu`/`fix_KT` hold one; `weights` is `"relative"` (default)
+    /// or `"absolute"` without sigma. The report has the estimates, their uncertainty and the
+    /// identifiability verdicts, as `microslip fit beam|lap --format json`.
+    #[pyo3(signature = (F, measured, sigma = None, *, fix_mu = None, fix_KT = None, weights = None))]
+    #[allow(non_snake_case, clippy::too_many_arguments)]
+    fn fit<'py>(
+        &self,
+        py: Python<'py>,
+        F: Vec<f64>,
+        measured: Vec<f64>,
+        sigma: Option<Vec<f64>>,
+        fix_mu: Option<f64>,
+        fix_KT: Option<f64>,
+        weights: Option<&str>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        crate::features::fit(py, self, (F, measured, sigma), (fix_mu, fix_KT), weights)
+    }
+
+    /// The 2-D plane-strain continuum reference's response (mm) on the default mesh: u(L) of the
+    /// plate, Delta of the joint (what the reduced theory's answer is compared with). The GIL is
+    /// released while it solves.
+    fn continuum(&self, py: Python<'_>) -> PyResult<f64> {
+        crate::features::continuum(py, self)
+    }
+
+    /// The CalculiX input deck of this data set (Abaqus keyword syntax), as `microslip deck ccx
+    /// MODEL` writes it: `mesh` `"coarse"` or `"fine"`, `loads` the load steps' forces (N,
+    /// increasing; default the CLI's, spanning every regime).
+    #[pyo3(signature = (code = "ccx", *, mesh = "coarse", loads = None))]
+    fn deck(
+        &self,
+        py: Python<'_>,
+        code: &str,
+        mesh: &str,
+        loads: Option<Vec<f64>>,
+    ) -> PyResult<String> {
+        crate::features::deck(py, self, code, mesh, loads)
+    }
+
     fn __repr__(&self) -> String {
         let args: Vec<String> = self
             .kind
