@@ -123,9 +123,10 @@ def compare(path, problem, *, deck=None) -> Report:
     return _native.compare(os.fspath(path), problem, None if deck is None else os.fspath(deck))
 
 
-def presets() -> list:
-    """The names ``preset()`` accepts: the bundled presets, then the user's."""
-    return _native.preset_names()
+def presets(bundled_only: bool = False) -> list:
+    """The names ``preset()`` accepts: the bundled presets, then (unless ``bundled_only``) the
+    user's (``microslip presets`` lists the same)."""
+    return _native.preset_names(bundled_only)
 
 
 __all__ = [

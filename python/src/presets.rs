@@ -38,10 +38,14 @@ pub fn preset_values<'py>(
     Ok((kind.name(), params, loaded.name, loaded.description))
 }
 
-/// The names `preset()` accepts without a path: the bundled presets, then the valid ones in the
-/// user's preset directory.
+/// The names `preset()` accepts without a path: the bundled presets, then (unless
+/// `bundled_only`) the valid ones in the user's preset directory.
 #[pyfunction]
-pub fn preset_names() -> Vec<String> {
+#[pyo3(signature = (bundled_only = false))]
+pub fn preset_names(bundled_only: bool) -> Vec<String> {
+    if bundled_only {
+        return preset::bundled().into_iter().map(|p| p.name).collect();
+    }
     preset::listing(preset::user_preset_dir().as_deref())
         .into_iter()
         .filter(|listed| listed.preset.is_ok())
