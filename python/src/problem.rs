@@ -306,6 +306,14 @@ impl Problem {
         crate::features::deck(py, self, code, mesh, loads)
     }
 
+    /// Pickling (multiprocessing pools, caches): rebuilt through the constructor, so a pickle
+    /// is checked again when loaded.
+    fn __getnewargs_ex__<'py>(&self, py: Python<'py>) -> PyResult<((), Bound<'py, PyDict>)> {
+        let kwargs = self.params_dict(py)?;
+        kwargs.set_item("name", &self.name)?;
+        Ok(((), kwargs))
+    }
+
     fn __repr__(&self) -> String {
         let args: Vec<String> = self
             .kind

@@ -62,3 +62,12 @@ def test_objects_are_frozen_and_replace_copies():
 def test_unknown_preset_says_so():
     with pytest.raises(ValueError, match="no-such-preset"):
         microslip.preset("no-such-preset")
+
+
+def test_problems_pickle_for_process_pools():
+    import pickle
+
+    joint = microslip.preset("lap-aluminium").replace(KT=250.0)
+    back = pickle.loads(pickle.dumps(joint))
+    assert type(back) is microslip.LapJoint and back == joint and back.name == joint.name
+    assert back.solve().to_dict() == joint.solve().to_dict()
