@@ -5,12 +5,13 @@ an FE comparison), so a script reads ``r.coulomb.D_Nmm`` or ``r["coulomb"]["D_Nm
 
 from __future__ import annotations
 
+# No `typing` import: it would be half of `import microslip`'s time (the stubs carry the types).
+
 import copy
 from collections.abc import Mapping
-from typing import Any, Iterator
 
 
-def _view(value: Any) -> Any:
+def _view(value):
     if isinstance(value, dict):
         return Report(value)
     if isinstance(value, list):
@@ -26,22 +27,22 @@ class Report(Mapping):
     def __init__(self, data: dict) -> None:
         object.__setattr__(self, "_data", data)
 
-    def __getitem__(self, key: str) -> Any:
+    def __getitem__(self, key: str):
         return _view(self._data[key])
 
-    def __iter__(self) -> Iterator[str]:
+    def __iter__(self):
         return iter(self._data)
 
     def __len__(self) -> int:
         return len(self._data)
 
-    def __getattr__(self, key: str) -> Any:
+    def __getattr__(self, key: str):
         try:
             return _view(self._data[key])
         except KeyError:
             raise AttributeError(f"report has no key {key!r} (keys: {', '.join(self._data)})") from None
 
-    def __setattr__(self, key: str, value: Any) -> None:
+    def __setattr__(self, key: str, value) -> None:
         raise AttributeError("a Report is read-only; use to_dict() for a mutable copy")
 
     def __dir__(self) -> list:

@@ -10,7 +10,9 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyType};
 
 use crate::errors::{guard, problem_error};
-use crate::registry::{kind_of, load_index, param_index, unit_symbol};
+use crate::registry::{
+    kind_of, load_index, param_index, param_index_or_error, params_dict, unit_symbol,
+};
 use crate::solution::Solution;
 
 /// The name a parameter set built from keywords reports as its `preset` (the CLI's JSON key).
@@ -34,14 +36,7 @@ impl Problem {
     ) -> PyResult<Vec<f64>> {
         for (key, value) in changes.into_iter().flat_map(|d| d.iter()) {
             let key: String = key.extract()?;
-            let index = param_index(kind, &key).ok_or_else(|| {
-                // The core's words: "unknown key 'Kt' for the beam model (allowed: L b ...)".
-                PyTypeError::new_err(
-                    kind.param(&key)
-                        .err()
-                        .map_or(key.clone(), |e| e.to_string()),
-                )
-            })?;
+            let index = param_index_or_error(kind, &key)?;
             values[index] = value.extract::<f64>().map_err(|_| {
                 PyTypeError::new_err(format!(
                     "{key} must be a number, got {}",
@@ -66,15 +61,6 @@ impl Problem {
         let problem = kind.problem();
         guard(|| problem.check(&values))?.map_err(|e| problem_error(py, &e, ""))?;
         Ok(Problem { kind, values, name })
-    }
-
-    /// The values as a dict, in the order of the problem's parameters.
-    pub(crate) fn params_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let dict = PyDict::new(py);
-        for (param, value) in self.kind.params().iter().zip(&self.values) {
-            dict.set_item(param.name(), value)?;
-        }
-        Ok(dict)
     }
 
     /// The registry key of `cls` (its `_model` attribute).
@@ -129,7 +115,7 @@ impl Problem {
     /// Every parameter's value, by name, in display order.
     #[getter]
     fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        self.params_dict(py)
+        params_dict(py, self.kind, &self.values)
     }
 
     /// Every parameter's unit (`mm`, `N`, `MPa`, `MPa/mm`, `-`), by name.
@@ -309,7 +295,7 @@ impl Problem {
     /// Pickling (multiprocessing pools, caches): rebuilt through the constructor, so a pickle
     /// is checked again when loaded.
     fn __getnewargs_ex__<'py>(&self, py: Python<'py>) -> PyResult<((), Bound<'py, PyDict>)> {
-        let kwargs = self.params_dict(py)?;
+        let kwargs = params_dict(py, self.kind, &self.values)?;
         kwargs.set_item("name", &self.name)?;
         Ok(((), kwargs))
     }

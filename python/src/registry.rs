@@ -5,7 +5,7 @@
 
 use microslip::kernel::params::Unit;
 use microslip::problems::{ModelKind, Param, QuantityName};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyKeyError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
@@ -25,18 +25,50 @@ pub fn param_index(kind: ModelKind, key: &str) -> Option<usize> {
     kind.params().iter().position(|p| p.name() == key)
 }
 
+/// [`param_index`], or the `TypeError` Python gives an unexpected keyword, in the core's words
+/// ("unknown key 'Kt' for the beam model (allowed: L b h E nu P mu KT F)").
+pub fn param_index_or_error(kind: ModelKind, key: &str) -> PyResult<usize> {
+    param_index(kind, key).ok_or_else(|| {
+        PyTypeError::new_err(
+            kind.param(key)
+                .err()
+                .map_or(key.to_string(), |e| e.to_string()),
+        )
+    })
+}
+
+/// Every parameter of `kind` with its value in `values`, by name, in display order.
+pub fn params_dict<'py>(
+    py: Python<'py>,
+    kind: ModelKind,
+    values: &[f64],
+) -> PyResult<Bound<'py, PyDict>> {
+    let dict = PyDict::new(py);
+    for (param, value) in kind.params().iter().zip(values) {
+        dict.set_item(param.name(), value)?;
+    }
+    Ok(dict)
+}
+
 /// The index of the problem's load in its parameter list, where it has one.
 pub fn load_index(kind: ModelKind) -> Option<usize> {
     let load = kind.description().load?;
     kind.params().iter().position(|&p| p == load)
 }
 
-/// The quantity of `kind` named `name` or one of its aliases.
-pub fn quantity_named(kind: ModelKind, name: &str) -> Option<&'static QuantityName> {
-    kind.description()
-        .quantities
+/// The quantity of `kind` named `name` or one of its aliases, or a `KeyError` listing them.
+pub fn quantity_named(kind: ModelKind, name: &str) -> PyResult<&'static QuantityName> {
+    let quantities = kind.description().quantities;
+    quantities
         .iter()
         .find(|q| q.name == name || q.aliases.contains(&name))
+        .ok_or_else(|| {
+            let names: Vec<&str> = quantities.iter().map(|q| q.name).collect();
+            PyKeyError::new_err(format!(
+                "the {kind} problem has no quantity {name:?} (it has: {})",
+                names.join(", ")
+            ))
+        })
 }
 
 fn param_entry<'py>(py: Python<'py>, param: Param, paper: f64) -> PyResult<Bound<'py, PyDict>> {

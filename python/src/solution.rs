@@ -6,14 +6,13 @@
 use microslip::kernel::regime::Regime;
 use microslip::problems::ModelKind;
 use microslip::problems::problem::{Answers, LawAnswer};
-use pyo3::exceptions::PyKeyError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::bridge;
 use crate::errors::{guard, problem_error, value_error};
 use crate::json::to_python;
-use crate::registry::{load_index, quantity_named, unit_symbol};
+use crate::registry::{load_index, params_dict, quantity_named, unit_symbol};
 
 /// One law's answer: the response (mm), the regime and its zones, where the law's zone ends (mm).
 #[pyclass(frozen, module = "microslip")]
@@ -112,11 +111,7 @@ impl Solution {
     /// The parameter values solved at, by name.
     #[getter]
     fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let dict = PyDict::new(py);
-        for (param, value) in self.kind.params().iter().zip(&self.values) {
-            dict.set_item(param.name(), value)?;
-        }
-        Ok(dict)
+        params_dict(py, self.kind, &self.values)
     }
 
     /// The load (N) solved at; None for a problem without one (the plate).
@@ -177,20 +172,7 @@ impl Solution {
 
     /// A quantity by name or alias (`s["w(L)"]`, `s["X"]`); None where not defined.
     fn __getitem__(&self, name: &str) -> PyResult<Option<f64>> {
-        let quantity = quantity_named(self.kind, name).ok_or_else(|| {
-            let names: Vec<&str> = self
-                .kind
-                .description()
-                .quantities
-                .iter()
-                .map(|q| q.name)
-                .collect();
-            PyKeyError::new_err(format!(
-                "the {} problem has no quantity {name:?} (it has: {})",
-                self.kind,
-                names.join(", ")
-            ))
-        })?;
+        let quantity = quantity_named(self.kind, name)?;
         let index = self
             .kind
             .description()

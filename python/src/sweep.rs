@@ -8,13 +8,13 @@ use microslip::kernel::regime::Regime;
 use microslip::problems::problem::ProblemError;
 use microslip::problems::{ModelKind, QuantityName};
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
-use pyo3::exceptions::{PyKeyError, PyTypeError};
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
 use crate::errors::{guard, problem_error};
 use crate::problem::Problem;
-use crate::registry::{param_index, quantity_named};
+use crate::registry::{param_index_or_error, quantity_named};
 
 /// The regime labels a sweep's integer codes index, first seen first.
 struct Regimes(Vec<Regime>);
@@ -179,20 +179,7 @@ fn wanted_quantities(
     };
     names
         .iter()
-        .map(|name| {
-            quantity_named(kind, name).ok_or_else(|| {
-                let all: Vec<&str> = kind
-                    .description()
-                    .quantities
-                    .iter()
-                    .map(|q| q.name)
-                    .collect();
-                PyKeyError::new_err(format!(
-                    "the {kind} problem has no quantity {name:?} (it has: {})",
-                    all.join(", ")
-                ))
-            })
-        })
+        .map(|name| quantity_named(kind, name))
         .collect()
 }
 
@@ -228,13 +215,7 @@ pub fn sweep<'py>(
             )));
         }
     };
-    let index = param_index(kind, &key).ok_or_else(|| {
-        PyTypeError::new_err(
-            kind.param(&key)
-                .err()
-                .map_or(key.clone(), |e| e.to_string()),
-        )
-    })?;
+    let index = param_index_or_error(kind, &key)?;
     let wanted = wanted_quantities(kind, quantities)?;
     // Any array-like of numbers, as float64 in C order (a copy only where it is not one).
     let numpy = py.import("numpy")?;
