@@ -62,3 +62,11 @@ pub fn guard<T>(work: impl FnOnce() -> T) -> PyResult<T> {
         ))
     })
 }
+
+/// Panics on a worker path the way a physics bug would (GIL released, inside [`guard`]), so that
+/// the test suite can check a panic reaches Python as a `RuntimeError` and the interpreter goes
+/// on. Hidden (`_native._panic_check`); not an API.
+#[pyfunction]
+pub fn _panic_check(py: Python<'_>) -> PyResult<()> {
+    py.detach(|| guard(|| -> () { panic!("deliberate panic for the test suite") }))
+}

@@ -37,6 +37,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(presets::preset_values, m)?)?;
     m.add_function(wrap_pyfunction!(features::compare, m)?)?;
     m.add_function(wrap_pyfunction!(presets::preset_names, m)?)?;
+    m.add_function(wrap_pyfunction!(errors::_panic_check, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -71,3 +71,13 @@ def test_memory_is_flat_over_repeated_million_point_sweeps():
     grown = _rss_bytes() - before
     # A leak of one sweep's arrays (about 42 MB) would add `rounds` times that.
     assert grown < sizes[0], (grown, sizes[0])
+
+
+def test_a_rust_panic_is_a_runtime_error_not_an_abort():
+    """A panic in the physics (simulated: the module has no known one) must not abort Python nor
+    escape `except Exception` as PyO3's BaseException-derived PanicException would."""
+    from microslip import _native
+
+    with pytest.raises(RuntimeError, match="internal error .*deliberate panic"):
+        _native._panic_check()
+    assert microslip.preset("paper-beams").solve().regularized.response > 0  # still alive
