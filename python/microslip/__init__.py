@@ -1,0 +1,144 @@
+"""microslip: friction benchmarks under the plain and the regularized Coulomb law.
+
+Units everywhere: mm, N, MPa; the tangential stiffness KT in MPa/mm.
+
+One class per problem of the registry (``TwinBeams``, ``Plate``, ``LapJoint``), built with keyword
+parameters (a parameter not given takes the bundled paper data set's value) or from a preset::
+
+    import microslip
+    beams = microslip.preset("paper-beams")          # or microslip.TwinBeams(KT=600, F=100)
+    s = beams.solve(F=100)                           # both laws, regimes, zones, quantities
+    s.regularized.response                           # w(L), mm
+    s.to_dict()                                      # == `microslip beam --format json`
+    beams.sweep(F=numpy.linspace(0, 240, 1_000_000))  # dict of numpy arrays
+
+A value outside its domain raises ``ParameterError`` (a ``ValueError``) whose message names the
+field, the value and the allowed range, as the command line does.
+
+The classes are generated here from the native registry (``_native.problems()``), so a problem
+added to the Rust core appears without binding code; ``_CLASS_NAMES`` only gives the three
+existing ones their familiar names (a new one is named from its title).
+"""
+
+from __future__ import annotations
+
+import os
+
+from . import _native
+from ._native import Law, ParameterError, Problem, Solution
+from ._report import Report
+
+__version__ = _native.__version__
+
+# The only per-problem text of the Python half: the issue's class names for the registry keys.
+# A problem missing here gets its title in CamelCase ("clamped double-lap joint" ->
+# "ClampedDoubleLapJoint").
+_CLASS_NAMES = {"beam": "TwinBeams", "plate": "Plate", "lap": "LapJoint"}
+
+PROBLEMS = tuple(_native.problems())
+"""The registry: one dict per problem (key, title, params with units and domains, quantities)."""
+
+
+def _class_name(entry: dict) -> str:
+    known = _CLASS_NAMES.get(entry["key"])
+    if known:
+        return known
+    words = entry["title"].replace("-", " ").split()
+    return "".join(w[:1].upper() + w[1:] for w in words)
+
+
+def _docstring(entry: dict) -> str:
+    params = "\n".join(
+        f"    {p['name']}: {p['meaning']} ({p['unit']}; {p['allowed']}; default {p['default']:g})"
+        for p in entry["params"]
+    )
+    quantities = "\n".join(
+        f"    {q['name']}: {q['meaning']} ({q['unit']})" for q in entry["quantities"]
+    )
+    load = (
+        f"\nIts load is {entry['load']} (N): solve(F=...) and sweep(F=...) vary it.\n"
+        if entry["load"]
+        else "\nIt has no load: solve() takes no argument.\n"
+    )
+    return (
+        f"{entry['summary']}.\n\n"
+        f"{_class_name(entry)}(*, name=None, **params): keyword parameters, each defaulting to "
+        f"the bundled preset '{entry['paper_preset']}'.\n\nParameters:\n{params}\n"
+        f"{load}\nQuantities of solve() (by name, solution[name]):\n{quantities}\n"
+    )
+
+
+def _make_class(entry: dict) -> type:
+    name = _class_name(entry)
+    return type(
+        name,
+        (Problem,),
+        {
+            "_model": entry["key"],
+            "__doc__": _docstring(entry),
+            "__module__": __name__,
+            "__slots__": (),
+            "description": entry,
+        },
+    )
+
+
+_CLASSES = {entry["key"]: _make_class(entry) for entry in PROBLEMS}
+globals().update({cls.__name__: cls for cls in _CLASSES.values()})
+
+
+def problem_class(model: str) -> type:
+    """The class of the problem whose registry key is ``model`` (``"beam"``, ``"plate"``, ``"lap"``)."""
+    try:
+        return _CLASSES[model]
+    except KeyError:
+        keys = ", ".join(repr(k) for k in _CLASSES)
+        raise ValueError(f"unknown model {model!r}: must be one of {keys}") from None
+
+
+def preset(name: str) -> Problem:
+    """The problem of a preset: a bundled name (``presets()``), a user preset or a TOML path.
+
+    Returns an instance of the preset's problem class (``TwinBeams``, ``Plate``, ``LapJoint``)
+    whose ``name`` is the preset's, as ``to_dict()`` reports it.
+    """
+    model, params, preset_name, _description = _native.preset_values(name)
+    return _CLASSES[model](name=preset_name, **params)
+
+
+def compare(path, problem, *, deck=None) -> Report:
+    """An FE code's results against the closed forms, with the verdict, as ``microslip compare
+    MODEL RESULT --format json`` reports it.
+
+    ``path``: a CalculiX ``.dat`` (its deck, the ``.inp`` beside it or ``deck``, gives the
+    parameters in its header) or a CSV of FE points (``F_N,w_mm`` for the beams, ``KT_MPa_per_mm,u_mm``
+    for the plate, ``F_N,Delta_mm`` for the joint), compared at ``problem``'s parameters.
+    ``problem``: a problem instance, class or registry key (a class or key means its bundled
+    paper data set).
+    """
+    if isinstance(problem, str):
+        problem = problem_class(problem)()
+    elif isinstance(problem, type):
+        problem = problem()
+    return _native.compare(os.fspath(path), problem, None if deck is None else os.fspath(deck))
+
+
+def presets(bundled_only: bool = False) -> list:
+    """The names ``preset()`` accepts: the bundled presets, then (unless ``bundled_only``) the
+    user's (``microslip presets`` lists the same)."""
+    return _native.preset_names(bundled_only)
+
+
+__all__ = [
+    "Law",
+    "PROBLEMS",
+    "ParameterError",
+    "Problem",
+    "Report",
+    "Solution",
+    "compare",
+    "preset",
+    "presets",
+    "problem_class",
+    *(cls.__name__ for cls in _CLASSES.values()),
+]

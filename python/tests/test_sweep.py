@@ -1,0 +1,119 @@
+"""Vectorized sweeps equal the scalar loop bit for bit, over the load and over other parameters,
+for every problem; refusals name the element; shapes are kept."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import microslip
+
+PROBLEMS = microslip.PROBLEMS
+
+
+def _bits(a) -> np.ndarray:
+    """A float array as its bit patterns, so NaN == NaN and -0 != 0: 'equal' means identical."""
+    return np.ascontiguousarray(a, dtype=np.float64).view(np.int64)
+
+
+def _scalar_loop(problem, key, xs, quantity_names):
+    rows = []
+    for x in xs:
+        s = problem.replace(**{key: float(x)}).solve()
+        rows.append(s)
+    return rows
+
+
+def _check_against_loop(problem, key, xs):
+    entry = problem.description
+    names = [q["name"] for q in entry["quantities"]]
+    out = problem.sweep(quantities="all", **{key: xs})
+    rows = _scalar_loop(problem, key, xs, names)
+    symbol = entry["response_symbol"]
+    for law in ("coulomb", "regularized"):
+        expected = [getattr(r, law).response for r in rows]
+        assert (_bits(out[f"{symbol}_{law}"]) == _bits(expected)).all(), law
+        expected = [getattr(r, law).zone_end for r in rows]
+        assert (_bits(out[f"zone_end_{law}"]) == _bits(expected)).all(), law
+        labels = [out["regimes"][code] for code in out[f"regime_{law}"]]
+        assert labels == [getattr(r, law).regime for r in rows]
+    for name in names:
+        expected = [np.nan if r[name] is None else r[name] for r in rows]
+        assert (_bits(out[name]) == _bits(expected)).all(), name
+    assert (_bits(out[key]) == _bits(xs)).all()
+
+
+@pytest.mark.parametrize("entry", PROBLEMS, ids=lambda e: e["key"])
+def test_sweeping_the_stiffness_equals_the_scalar_loop(entry):
+    problem = microslip.preset(entry["paper_preset"])
+    _check_against_loop(problem, "KT", np.logspace(-2, 8, 97))
+
+
+@pytest.mark.parametrize("entry", [e for e in PROBLEMS if e["load"]], ids=lambda e: e["key"])
+def test_sweeping_the_load_equals_the_scalar_loop(entry):
+    problem = microslip.preset(entry["paper_preset"])
+    top = problem.regime_scale * (1.0 if entry["key"] == "lap" else 3.0)
+    _check_against_loop(problem, entry["load"], np.linspace(0.0, top, 101))
+
+
+@pytest.mark.parametrize("entry", PROBLEMS, ids=lambda e: e["key"])
+def test_every_parameter_can_be_swept(entry):
+    problem = microslip.preset(entry["paper_preset"])
+    for p in entry["params"]:
+        value = getattr(problem, p["name"])
+        xs = np.array([value, value])
+        out = problem.sweep(**{p["name"]: xs})
+        assert out[f"{entry['response_symbol']}_regularized"][0] == problem.solve().regularized.response
+
+
+def test_a_refused_element_is_named_with_its_index():
+    beams = microslip.preset("paper-beams")
+    with pytest.raises(microslip.ParameterError, match=r"^F\[2\]: invalid F = -1: must be") as e:
+        beams.sweep(F=[0.0, 1.0, -1.0, 3.0])
+    assert e.value.field == "F" and e.value.value == -1.0
+
+
+def test_a_refusal_deep_in_a_long_sweep_names_its_own_index():
+    """Long sweeps are split across threads: the index is still the array's, and the first."""
+    forces = np.linspace(0.0, 240.0, 1_000_000)
+    forces[900_001] = -2.0
+    forces[700_000] = -3.0
+    with pytest.raises(microslip.ParameterError, match=r"^F\[700000\]: invalid F = -3"):
+        microslip.preset("paper-beams").sweep(F=forces)
+
+
+def test_a_long_sweep_equals_the_scalar_loop_where_threads_split_it():
+    beams = microslip.preset("paper-beams")
+    forces = np.linspace(0.0, 240.0, 200_001)
+    out = beams.sweep(F=forces)
+    for i in (0, 1, 65_535, 100_000, 100_001, 150_000, 200_000):
+        s = beams.solve(F=float(forces[i]))
+        assert out["w_regularized"][i] == s.regularized.response
+        assert out["regimes"][out["regime_regularized"][i]] == s.regularized.regime
+        assert out["regimes"][out["regime_coulomb"][i]] == s.coulomb.regime
+
+
+def test_the_joint_refuses_a_load_past_gross_slip_by_index():
+    joint = microslip.preset("lap-aluminium")
+    with pytest.raises(ValueError, match=r"^F\[1\]: invalid F = 7000: must be in \[0, 6000\] N"):
+        joint.sweep(F=[100.0, 7000.0])
+
+
+def test_shape_is_kept_and_lists_are_accepted():
+    beams = microslip.preset("paper-beams")
+    grid = np.linspace(1, 200, 12).reshape(3, 4)
+    out = beams.sweep(F=grid)
+    assert out["w_regularized"].shape == (3, 4)
+    assert out["regime_coulomb"].dtype == np.int8
+    flat = beams.sweep(F=list(grid.ravel()))
+    assert (flat["w_regularized"] == out["w_regularized"].ravel()).all()
+
+
+def test_sweep_takes_one_known_parameter():
+    beams = microslip.preset("paper-beams")
+    with pytest.raises(TypeError, match="exactly one parameter"):
+        beams.sweep(F=[1.0], KT=[2.0])
+    with pytest.raises(TypeError, match="unknown key 'Kt' for the beam model"):
+        beams.sweep(Kt=[1.0])
+    with pytest.raises(KeyError, match="no quantity"):
+        beams.sweep(F=[1.0], quantities=["nope"])
