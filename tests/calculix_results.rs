@@ -36,7 +36,9 @@ fn the_committed_deck_is_the_one_the_code_writes_today() {
 fn paper_beams_agree_with_calculix_once_shear_deflection_is_added() {
     let loaded = beam_results(&fixture("paper-beams.dat"), None).unwrap();
     let header = loaded.header.expect("a .dat comes with its deck's header");
-    let Model::Beam { beams, .. } = header.model().unwrap() else {
+    let Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) =
+        header.model().unwrap()
+    else {
         panic!("a beam deck")
     };
     assert_eq!(loaded.points.len(), 6);
@@ -164,7 +166,9 @@ fn a_dat_without_its_deck_says_what_is_missing() {
 #[test]
 fn the_timoshenko_option_brings_the_paper_beams_within_one_percent_of_calculix() {
     let loaded = beam_results(&fixture("paper-beams.dat"), None).unwrap();
-    let Model::Beam { beams, .. } = loaded.header.unwrap().model().unwrap() else {
+    let Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) =
+        loaded.header.unwrap().model().unwrap()
+    else {
         panic!("a beam deck")
     };
     let timoshenko =
@@ -194,7 +198,9 @@ fn calculix_beams_stay_within_the_stated_envelope() {
     use microslip::problems::twin_beams::closed_form::BeamTheory;
     for file in ["paper-beams.dat", "slender-beams.dat", "stubby-beams.dat"] {
         let loaded = beam_results(&fixture(file), None).unwrap();
-        let Model::Beam { beams, .. } = loaded.header.unwrap().model().unwrap() else {
+        let Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) =
+            loaded.header.unwrap().model().unwrap()
+        else {
             panic!("a beam deck")
         };
         for theory in BeamTheory::ALL {
@@ -245,7 +251,9 @@ fn calculix_verdicts_follow_from_the_fixtures_numbers() {
         ("stubby-beams.dat", 40.0),
     ] {
         let loaded = beam_results(&fixture(file), None).unwrap();
-        let Model::Beam { beams, .. } = loaded.header.unwrap().model().unwrap() else {
+        let Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) =
+            loaded.header.unwrap().model().unwrap()
+        else {
             panic!("a beam deck")
         };
         let comparison = compare_beams(&beams, &loaded.points, loaded.interface_mesh.as_ref());
@@ -372,7 +380,12 @@ fn the_committed_lap_deck_is_the_one_the_code_writes_today() {
     // 0.9 F_gross), written by `microslip bench ccx lap`.
     let loaded = lap_results(&fixture("lap-aluminium.dat"), None).unwrap();
     let header = loaded.header.expect("a .dat comes with its deck's header");
-    let (joint, _) = header.model().unwrap().into_lap().unwrap();
+    let (joint, _) = header
+        .model()
+        .unwrap()
+        .of::<microslip::problems::lap::LapJointProblem>()
+        .map(|m| (m.joint, m.force))
+        .unwrap();
     let loads: Vec<_> = header
         .loads
         .iter()
@@ -393,7 +406,14 @@ fn the_committed_lap_deck_is_the_one_the_code_writes_today() {
 #[test]
 fn the_bundled_lap_joint_agrees_with_calculix_in_every_regime() {
     let loaded = lap_results(&fixture("lap-aluminium.dat"), None).unwrap();
-    let (joint, _) = loaded.header.unwrap().model().unwrap().into_lap().unwrap();
+    let (joint, _) = loaded
+        .header
+        .unwrap()
+        .model()
+        .unwrap()
+        .of::<microslip::problems::lap::LapJointProblem>()
+        .map(|m| (m.joint, m.force))
+        .unwrap();
     let rows = compare_lap(&joint, &loaded.points, loaded.interface_mesh.as_ref()).unwrap();
     assert_eq!(rows.len(), 4);
     let mut regimes = Vec::new();

@@ -560,7 +560,6 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "fe/lap_deck.rs",
     "fe/load.rs",
     "fe/results.rs",
-    "problems/inputs.rs",
     "report/json.rs",
     "report/mod.rs",
     "report/point/beam.rs",

@@ -63,14 +63,14 @@ pub fn check_flag(name: &str, value: f64, domain: Domain, unit: Unit) -> Result<
 /// the joint add the continuum reference where their reduced theory does not hold.
 pub fn point_report(kind: ModelKind, values: &[f64], name: &str) -> Result<Value, String> {
     Ok(match model(kind, values)? {
-        Model::Beam { beams, force } => json::beam(name, &beams, force),
+        Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, force }) => json::beam(name, &beams, force),
         Model::Plate(squeezed) => {
             let continuum = (squeezed.validity().validity != Validity::Holds).then(|| {
                 plate::solve_plate_continuum(squeezed.params(), plate::ContinuumMesh::default())
             });
             json::plate(name, &squeezed, continuum.as_ref())
         }
-        Model::Lap { joint, force } => {
+        Model::Lap(microslip::problems::lap::problem::LapModel { joint, force }) => {
             let continuum = (joint.validity(force).validity != Validity::Holds).then(|| {
                 lap::solve_lap_continuum(
                     joint.params(),
@@ -95,11 +95,11 @@ pub fn cycle_report(
     let refused =
         |allowed: String| format!("invalid amplitude = {}: {allowed}", Compact(amplitude));
     match structure(kind, values)? {
-        Model::Beam { beams, .. } => {
+        Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) => {
             let amplitude = TipForce::new(amplitude).map_err(|e| refused(e.allowed()))?;
             Ok(json::cycle(name, &beams, amplitude))
         }
-        Model::Lap { joint, .. } => {
+        Model::Lap(microslip::problems::lap::problem::LapModel { joint, .. }) => {
             let amplitude = joint.force(amplitude).map_err(|e| refused(e.allowed()))?;
             Ok(json::lap_cycle(name, &joint, amplitude))
         }
@@ -145,7 +145,7 @@ pub fn kt_tolerance_report(
         Ok(range)
     };
     let answer = match model(kind, values)? {
-        Model::Beam { beams, force } => {
+        Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, force }) => {
             let range = range(force.newtons())?;
             match of {
                 Of::Coulomb => tolerance::stiffness_for_tolerance::<TwinBeamsProblem>(
@@ -156,7 +156,7 @@ pub fn kt_tolerance_report(
                 ),
             }
         }
-        Model::Lap { joint, force } => {
+        Model::Lap(microslip::problems::lap::problem::LapModel { joint, force }) => {
             let range = range(force.newtons())?;
             let gross = joint.gross_slip_force();
             if range[1] > gross {
@@ -205,11 +205,11 @@ pub fn fit_report(
     weights: Option<&str>,
 ) -> Result<Value, String> {
     let (structure, measured) = match structure(kind, values)? {
-        Model::Beam { beams, .. } => (
+        Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) => (
             fit::Structure::Beam(beams.params()),
             microslip::measured::parse_measured_with_progress(csv, &mut |_, _| {}),
         ),
-        Model::Lap { joint, .. } => (
+        Model::Lap(microslip::problems::lap::problem::LapModel { joint, .. }) => (
             fit::Structure::Lap(joint.params()),
             microslip::measured::parse_measured_joint_with_progress(csv, &mut |_, _| {}),
         ),
@@ -261,7 +261,7 @@ pub fn deck_text(
         None => Ok(()),
     };
     match model(kind, values)? {
-        Model::Beam { beams, .. } => {
+        Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) => {
             let loads: Vec<TipForce> = match loads {
                 // The CLI's default: multiples of F_thre spanning microslip and macroslip.
                 None => [0.5, 0.75, 1.0, 1.25, 1.875, 2.5]
@@ -278,7 +278,7 @@ pub fn deck_text(
             };
             deck::beam_deck_on_path(&beams, &loads, mesh, slope, path)
         }
-        Model::Lap { joint, .. } => {
+        Model::Lap(microslip::problems::lap::problem::LapModel { joint, .. }) => {
             let loads: Vec<_> = match loads {
                 // The CLI's default at the model's slope: one force in each regime.
                 None => {
@@ -349,7 +349,7 @@ pub fn compare_report(
     match kind {
         ModelKind::Beam => {
             let loaded = load::beam_results(path, deck).map_err(data_error)?;
-            let Model::Beam { beams, .. } = of_header(&loaded.header)? else {
+            let Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) = of_header(&loaded.header)? else {
                 return Err(format!("{source}: not a twin-beam result"));
             };
             let compared =
@@ -372,7 +372,7 @@ pub fn compare_report(
         }
         ModelKind::Lap => {
             let loaded = load::lap_results(path, deck).map_err(data_error)?;
-            let Model::Lap { joint, .. } = of_header(&loaded.header)? else {
+            let Model::Lap(microslip::problems::lap::problem::LapModel { joint, .. }) = of_header(&loaded.header)? else {
                 return Err(format!("{source}: not a lap-joint result"));
             };
             let rows = compare::compare_lap(&joint, &loaded.points, loaded.interface_mesh.as_ref())

@@ -237,7 +237,9 @@ mod tests {
                 };
                 inputs.set(crate::Param::Beam(*param), value).unwrap();
             }
-            let Ok(Model::Beam { beams, .. }) = inputs.validate() else {
+            let Ok(Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. })) =
+                inputs.validate()
+            else {
                 panic!("corner {mask} refused");
             };
             let force = match mask % 3 {
@@ -325,7 +327,7 @@ mod tests {
         let numeric = numeric_points(&m, AnyChart::Beam(BeamChart::Deflection))
             .unwrap()
             .unwrap();
-        let Model::Beam { beams, .. } = m else {
+        let Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. }) = m else {
             unreachable!()
         };
         for (f, w) in numeric.points {

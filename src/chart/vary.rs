@@ -115,7 +115,9 @@ mod tests {
         for &(x, w) in regularized.iter().step_by(37) {
             let mu = 10f64.powf(x);
             let direct = model.with_clamped(Param::Beam(BeamParam::Friction), mu);
-            let Model::Beam { beams, force } = direct else {
+            let Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, force }) =
+                direct
+            else {
                 panic!()
             };
             let expected = beams.regularized(force).tip_deflection();

@@ -253,7 +253,9 @@ mod tests {
         let plot = YMode::Relative.apply(plot_of(AnyChart::Beam(BeamChart::Deflection)));
         assert_eq!(plot.y.title, "w(L) / Coulomb - 1 (%)");
         let kt = plot.series.iter().find(|s| s.name == "K_T").unwrap();
-        let Model::Beam { beams, .. } = Inputs::paper(ModelKind::Beam).validate().unwrap() else {
+        let Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. }) =
+            Inputs::paper(ModelKind::Beam).validate().unwrap()
+        else {
             unreachable!()
         };
         let beams: TwinBeams = beams;

@@ -35,7 +35,13 @@ pub(super) fn run_compare(
                     note_flags_the_deck_overrides(inputs, model);
                 }
                 let joint = match &loaded.header {
-                    Some(header) => header.model()?.into_lap().map_err(deck_of_other_model)?.0,
+                    Some(header) => {
+                        header
+                            .model()?
+                            .of::<LapJointProblem>()
+                            .map_err(deck_of_other_model)?
+                            .joint
+                    }
                     // The FE forces are compared, not the preset's F.
                     None => {
                         load_problem::<LapJointProblem>(inputs, "compare lap", Load::Unused)?
@@ -72,7 +78,13 @@ pub(super) fn run_compare(
                 note_flags_the_deck_overrides(inputs, model);
             }
             let beams = match &loaded.header {
-                Some(header) => header.model()?.into_beams().map_err(deck_of_other_model)?.0,
+                Some(header) => {
+                    header
+                        .model()?
+                        .of::<TwinBeamsProblem>()
+                        .map_err(deck_of_other_model)?
+                        .beams
+                }
                 // A CSV has no header: the parameters come from the flags.
                 None => {
                     load_problem::<TwinBeamsProblem>(inputs, "compare beam", Load::Unused)?
@@ -97,7 +109,10 @@ pub(super) fn run_compare(
                     note_flags_the_deck_overrides(inputs, model);
                 }
                 let plate = match &loaded.header {
-                    Some(header) => header.model()?.into_plate().map_err(deck_of_other_model)?,
+                    Some(header) => header
+                        .model()?
+                        .of::<SqueezedPlateProblem>()
+                        .map_err(deck_of_other_model)?,
                     None => {
                         load_problem::<SqueezedPlateProblem>(inputs, "compare plate", Load::Used)?.1
                     }

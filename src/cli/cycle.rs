@@ -21,8 +21,8 @@ pub(super) fn run_cycle(
     // The amplitude is cycled, not the preset's F.
     let (name, model) = load_any_structure(inputs, DEFAULT_PROBLEM)?;
     let beams = match model {
-        Model::Beam { beams, .. } => beams,
-        Model::Lap { joint, .. } => {
+        Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. }) => beams,
+        Model::Lap(crate::problems::lap::problem::LapModel { joint, .. }) => {
             let amplitude = joint.force(amplitude).map_err(|e| CliError::Flag {
                 flag: "--amplitude",
                 value: amplitude,

@@ -16,7 +16,7 @@ pub(super) fn build_deck(
         StickSlope::Model
     };
     match load(&deck.inputs, model, command)? {
-        (_, Model::Beam { beams, .. }) => {
+        (_, Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. })) => {
             let loads = deck_loads(&beams, deck.loads.as_deref(), slope)?;
             let force_step = deck
                 .increment
@@ -25,7 +25,7 @@ pub(super) fn build_deck(
             let path = deck::LoadPath { force_step };
             deck::beam_deck_on_path(&beams, &loads, deck.mesh, slope, path)
         }
-        (_, Model::Lap { joint, .. }) => {
+        (_, Model::Lap(crate::problems::lap::problem::LapModel { joint, .. })) => {
             let loads = lap_deck_loads(&joint, deck.loads.as_deref(), slope)?;
             let force_step = deck
                 .increment

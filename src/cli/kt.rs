@@ -42,7 +42,7 @@ pub(super) fn run_kt_tolerance(
     let (name, model) = load_any(inputs, DEFAULT_PROBLEM)?;
     let element = element_size(element, &model)?;
     let answer = match model {
-        Model::Beam { beams, force } => {
+        Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, force }) => {
             let range = tolerance_forces([from, to], force.newtons())?;
             match of {
                 ToleranceOf::Coulomb => tolerance::stiffness_for_tolerance::<TwinBeamsProblem>(
@@ -54,7 +54,7 @@ pub(super) fn run_kt_tolerance(
             }
             .map_err(|e| CliError::Invalid(e.to_string()))?
         }
-        Model::Lap { joint, force } => {
+        Model::Lap(crate::problems::lap::problem::LapModel { joint, force }) => {
             let range = tolerance_forces([from, to], force.newtons())?;
             // The joint carries nothing beyond F_gross: said of the flag that asks for more.
             let gross = joint.gross_slip_force();

@@ -93,7 +93,10 @@ fn write_sweep(
 ) -> Result<(), CliError> {
     let own_table = Some(param) == default_vary(model.kind());
     match (model, param) {
-        (Model::Beam { beams, force }, Param::Beam(varied)) => {
+        (
+            Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, force }),
+            Param::Beam(varied),
+        ) => {
             if own_table {
                 let rows =
                     load::force_sweep::<TwinBeamsProblem>(beams, values).map_err(range_error)?;
@@ -130,7 +133,10 @@ fn write_sweep(
                 )?;
             }
         }
-        (Model::Lap { joint, force }, Param::Lap(varied)) => {
+        (
+            Model::Lap(crate::problems::lap::problem::LapModel { joint, force }),
+            Param::Lap(varied),
+        ) => {
             if own_table {
                 let rows =
                     load::force_sweep::<LapJointProblem>(joint, values).map_err(range_error)?;
@@ -226,12 +232,12 @@ fn run_cycle_sweep(out: &mut impl Write, args: &CycleSweepArgs) -> Result<(), Cl
     let amplitudes =
         curves::load_samples::<TwinBeamsProblem>(*from, *to, *points).map_err(force_range_error)?;
     match load_any_structure(inputs, DEFAULT_PROBLEM)?.1 {
-        Model::Beam { beams, .. } => {
+        Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. }) => {
             let rows = load::cycle_sweep::<TwinBeamsProblem>(beams, amplitudes)
                 .map_err(force_range_error)?;
             write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
         }
-        Model::Lap { joint, .. } => {
+        Model::Lap(crate::problems::lap::problem::LapModel { joint, .. }) => {
             let rows = load::cycle_sweep::<LapJointProblem>(joint, amplitudes)
                 .map_err(force_range_error)?;
             write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;

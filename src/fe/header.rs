@@ -107,10 +107,10 @@ impl DeckHeader {
         let mut structure = beams.params();
         structure.tangential_stiffness = stick_slope.value_for_beams(beams);
         DeckHeader {
-            inputs: Inputs::Beam {
+            inputs: Inputs::Beam(crate::problems::twin_beams::problem::BeamsInputs {
                 structure,
                 force: loads.last().map_or(0.0, |f| f.newtons()),
-            },
+            }),
             loads: loads.iter().map(|f| f.newtons()).collect(),
             mesh,
             stick_slope,
@@ -128,10 +128,10 @@ impl DeckHeader {
         let mut structure = joint.params();
         structure.tangential_stiffness = stick_slope.value_for_lap(joint);
         DeckHeader {
-            inputs: Inputs::Lap {
+            inputs: Inputs::Lap(crate::problems::lap::problem::LapInputs {
                 structure,
                 force: loads.last().map_or(0.0, |f| f.newtons()),
-            },
+            }),
             loads: loads.iter().map(|f| f.newtons()).collect(),
             mesh,
             stick_slope,
@@ -220,7 +220,7 @@ impl DeckHeader {
     fn expected(&self, model: &Model) -> String {
         let mut text = String::new();
         match model {
-            Model::Beam { beams, .. } => {
+            Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. }) => {
                 // The columns are Euler-Bernoulli whatever theory the preset chose: "+ shear"
                 // adds the shear deflection once (a Timoshenko model's w(L) already holds it).
                 let beams = &beams.with_theory(
@@ -263,7 +263,7 @@ impl DeckHeader {
                     state.regime().label()
                 );
             }
-            Model::Lap { joint, .. } => {
+            Model::Lap(crate::problems::lap::problem::LapModel { joint, .. }) => {
                 let _ = writeln!(
                     text,
                     "** Expected from the closed forms (shear lag):\n\
@@ -466,7 +466,9 @@ mod tests {
             StickSlope::NearCoulomb,
         );
         // 1/k = h/10 with k = 2 sqrt(K_T / (E h)): K_T = 25 E / h.
-        let Model::Beam { beams: stiff, .. } = header.model().unwrap() else {
+        let Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams: stiff, .. }) =
+            header.model().unwrap()
+        else {
             panic!("a beam header")
         };
         assert!((1.0 / stiff.decay_rate() - 1.0).abs() < 1e-12);

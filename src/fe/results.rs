@@ -210,7 +210,9 @@ impl CcxRun<'_> {
     /// A malformed `.dat` line, or no result for the deck's first load step (a run that failed
     /// before it, or the `.dat` of another deck).
     pub fn beam_points(&self) -> Result<Vec<BeamFePoint>, ResultsError> {
-        let Inputs::Beam { structure, .. } = self.header.inputs else {
+        let Inputs::Beam(crate::problems::twin_beams::problem::BeamsInputs { structure, .. }) =
+            self.header.inputs
+        else {
             return Err(self.other_deck());
         };
         let blocks = parse_dat(self.dat)?;
@@ -290,7 +292,9 @@ impl CcxRun<'_> {
     /// A malformed `.dat` line, no result at the end of the clamping step or of the deck's first
     /// load step (a run that failed before it, or the `.dat` of another deck).
     pub fn lap_points(&self) -> Result<Vec<LapFePoint>, ResultsError> {
-        let Inputs::Lap { structure, .. } = self.header.inputs else {
+        let Inputs::Lap(crate::problems::lap::problem::LapInputs { structure, .. }) =
+            self.header.inputs
+        else {
             return Err(self.other_deck());
         };
         let blocks = parse_dat(self.dat)?;
@@ -372,9 +376,13 @@ impl CcxRun<'_> {
     /// line of quadratic elements.
     pub fn interface_mesh(&self) -> Result<InterfaceMesh, ResultsError> {
         let set = match self.header.inputs {
-            Inputs::Beam { .. } => sets::BEAM_LOWER_FACE,
+            Inputs::Beam(crate::problems::twin_beams::problem::BeamsInputs { .. }) => {
+                sets::BEAM_LOWER_FACE
+            }
             Inputs::Plate(_) => sets::PLATE_FACE,
-            Inputs::Lap { .. } => lap_sets::LAP_INNER_FACE,
+            Inputs::Lap(crate::problems::lap::problem::LapInputs { .. }) => {
+                lap_sets::LAP_INNER_FACE
+            }
         };
         let nodes = parse_nodes(self.deck)?;
         let ids = parse_node_sets(self.deck).remove(set).unwrap_or_default();

@@ -910,7 +910,11 @@ mod tests {
         let joint = crate::problems::inputs::Inputs::paper(ModelKind::Lap)
             .validate()
             .unwrap();
-        let crate::problems::inputs::Model::Lap { joint, .. } = joint else {
+        let crate::problems::inputs::Model::Lap(crate::problems::lap::problem::LapModel {
+            joint,
+            ..
+        }) = joint
+        else {
             panic!("not a lap joint")
         };
         let points = (1..=40)

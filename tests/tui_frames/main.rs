@@ -433,7 +433,7 @@ fn measured_points_on_the_deflection_chart() {
 #[test]
 fn the_lap_joint_is_fitted_with_f() {
     use microslip::problems::inputs::{Inputs, Model};
-    let Ok(Model::Lap { joint, .. }) =
+    let Ok(Model::Lap(microslip::problems::lap::problem::LapModel { joint, .. })) =
         Inputs::paper(microslip::problems::ModelKind::Lap).validate()
     else {
         panic!("the bundled lap joint")

@@ -106,10 +106,12 @@ impl BeamReport {
         BeamReport {
             model: "beam",
             preset: preset.to_string(),
-            inputs: InputsReport(Inputs::Beam {
-                structure: beams.params(),
-                force: force.newtons(),
-            }),
+            inputs: InputsReport(Inputs::Beam(
+                crate::problems::twin_beams::problem::BeamsInputs {
+                    structure: beams.params(),
+                    force: force.newtons(),
+                },
+            )),
             force: row.force,
             threshold_force: beams.threshold_force(),
             first_macroslip_force: beams.first_macroslip_force(),

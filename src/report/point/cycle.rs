@@ -232,10 +232,10 @@ impl<S: 'static> CycleReport<S> {
 
 impl CycleReport<TwinBeamsParams> {
     pub fn new(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> BeamCycleReport {
-        let inputs = Inputs::Beam {
+        let inputs = Inputs::Beam(crate::problems::twin_beams::problem::BeamsInputs {
             structure: beams.params(),
             force: amplitude.newtons(),
-        };
+        });
         Self::cycled::<TwinBeamsProblem>(
             &BEAM_WORDS,
             preset,
@@ -248,10 +248,10 @@ impl CycleReport<TwinBeamsParams> {
 
 impl CycleReport<LapParams> {
     pub fn new(preset: &str, joint: &LapJoint, amplitude: JointForce) -> LapCycleReport {
-        let inputs = Inputs::Lap {
+        let inputs = Inputs::Lap(crate::problems::lap::problem::LapInputs {
             structure: joint.params(),
             force: amplitude.newtons(),
-        };
+        });
         Self::cycled::<LapJointProblem>(
             &LAP_WORDS,
             preset,

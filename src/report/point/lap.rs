@@ -206,10 +206,10 @@ impl LapReport {
         LapReport {
             model: "lap",
             preset: preset.to_string(),
-            inputs: InputsReport(Inputs::Lap {
+            inputs: InputsReport(Inputs::Lap(crate::problems::lap::problem::LapInputs {
                 structure: p,
                 force: force.newtons(),
-            }),
+            })),
             force: row.force,
             first_slip_force: joint.first_slip_force(),
             first_slip_at: joint.first_slip().key(),
@@ -370,8 +370,11 @@ impl LapReport {
             }
             Some(LapContinuumReport::Solved(c)) => {
                 let pressure = match self.inputs.0 {
-                    Inputs::Lap { structure, .. } => structure.pressure,
-                    Inputs::Beam { .. } | Inputs::Plate(_) => f64::NAN,
+                    Inputs::Lap(crate::problems::lap::problem::LapInputs { structure, .. }) => {
+                        structure.pressure
+                    }
+                    Inputs::Beam(crate::problems::twin_beams::problem::BeamsInputs { .. })
+                    | Inputs::Plate(_) => f64::NAN,
                 };
                 let _ = writeln!(
                     out,

@@ -278,10 +278,10 @@ mod tests {
             color: false,
         };
         let beams = crate::TwinBeams::new(crate::TwinBeamsParams::PAPER).unwrap();
-        let model = Model::Beam {
+        let model = Model::Beam(crate::problems::twin_beams::problem::BeamsModel {
             beams,
             force: crate::TipForce::new(0.0).unwrap(),
-        };
+        });
         let marked = rows(&model, &theme, StripSize::Marked);
         assert_eq!(marked.len(), StripSize::Marked.rows());
         assert_eq!(marked[1], format!(" C {}", "-".repeat(20)));
@@ -289,10 +289,10 @@ mod tests {
         assert_eq!(marked[3], " no boundary inside (0, L)");
         assert_eq!(marked[4], " -unloaded: no load, no slip");
         // Loaded past F_1: microslip then macroslip, X named under its boundary.
-        let model = Model::Beam {
+        let model = Model::Beam(crate::problems::twin_beams::problem::BeamsModel {
             beams,
             force: crate::TipForce::new(100.0).unwrap(),
-        };
+        });
         let full = rows(&model, &theme, StripSize::WithShear);
         assert_eq!(full.len(), StripSize::WithShear.rows());
         assert_eq!(full[1], format!(" C {}", "#".repeat(20)));

@@ -3,70 +3,62 @@
 //! TUI all edit an [`Inputs`] and validate it through the checked constructors.
 
 use crate::kernel::params::ParamError;
-use crate::problems::lap::LapJointProblem;
-use crate::problems::lap::closed_form::{JointForce, LapJoint, LapParams};
-use crate::problems::plate::SqueezedPlateProblem;
-use crate::problems::plate::closed_form::{PlateParams, SqueezedPlate};
-use crate::problems::twin_beams::TwinBeamsProblem;
-use crate::problems::twin_beams::closed_form::{TipForce, TwinBeams, TwinBeamsParams};
 use crate::problems::{ModelKind, Param, Problem, Quantity, UnknownParam};
 
-/// Unvalidated inputs of one model, as read from a preset, flags or key presses.
-///
-/// # Examples
-/// ```
-/// use microslip_core::problems::inputs::Inputs;
-/// use microslip_core::problems::{BeamParam, ModelKind, Param};
-/// let mut inputs = Inputs::paper(ModelKind::Beam);
-/// inputs.set(Param::Beam(BeamParam::Stiffness), 120.0)?;
-/// assert!(inputs.validate().is_ok());
-/// inputs.set(Param::Beam(BeamParam::Length), -1.0)?;
-/// assert_eq!(
-///     inputs.validate().unwrap_err().to_string(),
-///     "invalid L = -1: must be > 0 and finite (mm)"
-/// );
-/// # Ok::<(), microslip_core::problems::UnknownParam>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Inputs {
-    /// Twin beams and the tip force F (N).
-    Beam {
-        /// Structure and interface.
-        structure: TwinBeamsParams,
-        /// Tip force on each beam (N).
-        force: f64,
-    },
-    /// Squeezed plate.
-    Plate(PlateParams),
-    /// Double-lap joint and the force through it F (N).
-    Lap {
-        /// Structure and interface.
-        structure: LapParams,
-        /// Force through the joint (N).
-        force: f64,
-    },
+/// Writes [`Inputs`] and [`Model`] from the registry: one tuple variant per problem, holding
+/// its [`Problem::Params`] and [`Problem::Model`], so that no file lists the problems again and
+/// a variant cannot hold another problem's type.
+macro_rules! any_inputs_and_model {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        /// Unvalidated inputs of one problem, as read from a preset, flags or key presses: its
+        /// [`Problem::Params`], in the variant the registry gives it.
+        ///
+        /// # Examples
+        /// ```
+        /// use microslip_core::problems::inputs::Inputs;
+        /// use microslip_core::problems::{BeamParam, ModelKind, Param};
+        /// let mut inputs = Inputs::paper(ModelKind::Beam);
+        /// inputs.set(Param::Beam(BeamParam::Stiffness), 120.0)?;
+        /// assert!(inputs.validate().is_ok());
+        /// inputs.set(Param::Beam(BeamParam::Length), -1.0)?;
+        /// assert_eq!(
+        ///     inputs.validate().unwrap_err().to_string(),
+        ///     "invalid L = -1: must be > 0 and finite (mm)"
+        /// );
+        /// # Ok::<(), microslip_core::problems::UnknownParam>(())
+        /// ```
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub enum Inputs {
+            $($(#[$doc])* $variant(<crate::problems::$folder::$problem as Problem>::Params)),+
+        }
+
+        /// Validated inputs, what the physics accepts: one problem's [`Problem::Model`].
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub enum Model {
+            $($(#[$doc])* $variant(<crate::problems::$folder::$problem as Problem>::Model)),+
+        }
+
+        impl Inputs {
+            /// Which problem these inputs are for.
+            pub fn kind(&self) -> ModelKind {
+                match self {
+                    $(Inputs::$variant(_) => ModelKind::$variant),+
+                }
+            }
+        }
+
+        impl Model {
+            /// Which problem this model is of.
+            pub fn kind(&self) -> ModelKind {
+                match self {
+                    $(Model::$variant(_) => ModelKind::$variant),+
+                }
+            }
+        }
+    };
 }
 
-/// Validated inputs: what the physics core accepts.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Model {
-    /// Twin beams at a tip force.
-    Beam {
-        /// The beams.
-        beams: TwinBeams,
-        /// The tip force.
-        force: TipForce,
-    },
-    /// Squeezed plate.
-    Plate(SqueezedPlate),
-    /// Double-lap joint at a force.
-    Lap {
-        /// The joint.
-        joint: LapJoint,
-        /// The force through it.
-        force: JointForce,
-    },
-}
+crate::with_problems!(any_inputs_and_model);
 
 /// The interface data common to every problem: what the K_T comparisons need.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -86,34 +78,11 @@ pub struct InterfaceData {
 }
 
 impl Model {
-    /// The twin beams and their tip force, when this is the twin-beam problem: how a caller that
-    /// asked for beams gets them typed, without a match that could only fail by a bug.
-    pub fn into_beams(self) -> Result<(TwinBeams, TipForce), ModelKind> {
-        TwinBeamsProblem::from_model(&self)
-            .map(|m| (m.beams, m.force))
-            .ok_or(self.kind())
-    }
-
-    /// The squeezed plate, when this is the plate problem (see [`Model::into_beams`]).
-    pub fn into_plate(self) -> Result<SqueezedPlate, ModelKind> {
-        SqueezedPlateProblem::from_model(&self).ok_or(self.kind())
-    }
-
-    /// The lap joint and its force, when this is the lap-joint problem (see
-    /// [`Model::into_beams`]).
-    pub fn into_lap(self) -> Result<(LapJoint, JointForce), ModelKind> {
-        LapJointProblem::from_model(&self)
-            .map(|m| (m.joint, m.force))
-            .ok_or(self.kind())
-    }
-
-    /// Which model this is.
-    pub fn kind(&self) -> ModelKind {
-        match self {
-            Model::Beam { .. } => ModelKind::Beam,
-            Model::Plate(_) => ModelKind::Plate,
-            Model::Lap { .. } => ModelKind::Lap,
-        }
+    /// This model as problem `P`'s, typed, when it is `P`'s: how a caller that asked for one
+    /// problem gets its model, without a match that could only fail by a bug; otherwise the
+    /// problem it is of.
+    pub fn of<P: Problem>(self) -> Result<P::Model, ModelKind> {
+        P::from_model(&self).ok_or(self.kind())
     }
 
     /// The inputs this model was validated from.
@@ -209,15 +178,6 @@ impl Inputs {
     /// [`Problem::paper`]: crate::problems::Problem::paper
     pub fn paper(kind: ModelKind) -> Inputs {
         kind.problem().paper_inputs()
-    }
-
-    /// Which model these inputs are for.
-    pub fn kind(&self) -> ModelKind {
-        match self {
-            Inputs::Beam { .. } => ModelKind::Beam,
-            Inputs::Plate(_) => ModelKind::Plate,
-            Inputs::Lap { .. } => ModelKind::Lap,
-        }
     }
 
     /// The value of a parameter, or `None` for a parameter of another problem.

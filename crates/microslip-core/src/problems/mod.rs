@@ -16,11 +16,12 @@
 //! keeps one value per problem; [`Quantity`] and [`Solution`] name what every problem's solution
 //! answers.
 //!
-//! [`Inputs`](inputs::Inputs) and [`Model`](inputs::Model) are still hand-written enums with a
-//! variant per problem (the application matches on their variants in about 130 places);
-//! every method on them goes through the problem's [`Problem`] impl, so they hold no per-problem
-//! logic, only the bridge (`to_inputs`, `from_inputs`, `to_model`, `from_model`) each folder
-//! writes. They go when their callers use [`AnyProblem`] or the typed [`Problem`] instead.
+//! [`Inputs`](inputs::Inputs) and [`Model`](inputs::Model), the values of any problem that the
+//! application keeps (a preset's inputs, the TUI's current model), are enums generated from the
+//! registry, a tuple variant per problem holding its [`Problem::Params`] and [`Problem::Model`];
+//! every method on them goes through the problem's [`Problem`] impl, and a folder reaches them
+//! only through the bridges `enum_bridges!(Variant)` writes into its impl (`to_inputs`,
+//! `from_inputs`, `to_model`, `from_model`, or [`Model::of`](inputs::Model::of)).
 //!
 //! # Adding a problem
 //! A fourth problem (the Hertzian cylinder, say) is, in this crate:
@@ -64,9 +65,8 @@
 //! 2. **One registry line** in [`with_problems!`](crate::with_problems): `Cylinder => cylinder::CylinderProblem,`
 //!    with its doc comment. [`ModelKind`], [`ModelKind::ALL`], [`ModelKind::problem`] and
 //!    [`Param`] follow from it; [`ByProblem`] grows a slot.
-//! 3. **While the enums last**, a variant in [`Inputs`](inputs::Inputs) and
-//!    [`Model`](inputs::Model) and their `kind` arms (`problems/inputs.rs`); the folder's
-//!    `problem.rs` writes the bridge to them.
+//! 3. **Its bridges** to the generated [`Inputs`](inputs::Inputs) and
+//!    [`Model`](inputs::Model): `enum_bridges!(Cylinder);` inside its `impl Problem`.
 //! 4. **Its presets**: `presets/<paper-preset>.toml`, named by [`Description::paper_preset`].
 //! 5. **Its tests**: its folder's unit tests (closed form against hand values and its
 //!    discretized solver, validity edges), a `tests/<name>_properties.rs` of properties over
@@ -106,6 +106,38 @@ macro_rules! param_list {
 pub mod choice;
 pub mod cross_check;
 pub mod fittable;
+/// The bridges of a problem's [`Problem`] impl to the enums [`inputs::Inputs`] and
+/// [`inputs::Model`], which the registry generates with one variant per problem: a folder writes
+/// `enum_bridges!(Variant);` inside its `impl Problem`, naming its own variant only (a wrong one
+/// does not compile: the variant holds another problem's types).
+macro_rules! enum_bridges {
+    ($variant:ident) => {
+        fn to_inputs(params: Self::Params) -> crate::problems::inputs::Inputs {
+            crate::problems::inputs::Inputs::$variant(params)
+        }
+
+        fn from_inputs(inputs: &crate::problems::inputs::Inputs) -> Option<Self::Params> {
+            match inputs {
+                crate::problems::inputs::Inputs::$variant(params) => Some(*params),
+                #[allow(unreachable_patterns)]
+                _ => None,
+            }
+        }
+
+        fn to_model(model: Self::Model) -> crate::problems::inputs::Model {
+            crate::problems::inputs::Model::$variant(model)
+        }
+
+        fn from_model(model: &crate::problems::inputs::Model) -> Option<Self::Model> {
+            match model {
+                crate::problems::inputs::Model::$variant(model) => Some(*model),
+                #[allow(unreachable_patterns)]
+                _ => None,
+            }
+        }
+    };
+}
+
 pub mod inputs;
 pub mod lap;
 pub mod load_driven;

@@ -6,9 +6,9 @@
 //!
 //! The typed side ([`Problem`]) is what a numerical user and the physics call; the erased side
 //! ([`AnyProblem`]) speaks in plain numbers (parameter values as `&[f64]`, indexed like
-//! [`Description::params`]) and in the application's enums ([`Inputs`], [`Model`]) while those
-//! still exist: the `bridge` items are how the enums' former per-problem `match`es became trait
-//! calls, and go when the enums go.
+//! [`Description::params`]) and in the enums generated from the registry ([`Inputs`],
+//! [`Model`]), which the bridges (`to_inputs`, `from_model`, ...) connect to each problem's
+//! typed side.
 
 use std::fmt::Debug;
 use std::hash::Hash;
@@ -197,11 +197,11 @@ pub trait Problem: Send + Sync + Sized + 'static {
         None
     }
 
-    /// Bridge to the [`Inputs`] enum while it exists.
+    /// Bridge to the [`Inputs`] enum (generated from the registry; written by `enum_bridges!`).
     fn to_inputs(params: Self::Params) -> Inputs;
     /// Bridge from the [`Inputs`] enum: `None` for another problem's inputs.
     fn from_inputs(inputs: &Inputs) -> Option<Self::Params>;
-    /// Bridge to the [`Model`] enum while it exists.
+    /// Bridge to the [`Model`] enum (generated from the registry; written by `enum_bridges!`).
     fn to_model(model: Self::Model) -> Model;
     /// Bridge from the [`Model`] enum: `None` for another problem's model.
     fn from_model(model: &Model) -> Option<Self::Model>;

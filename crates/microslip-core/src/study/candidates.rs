@@ -230,7 +230,8 @@ mod tests {
         }
         // How far off each candidate is: its w(L) over the current K_T's, from the beams solved
         // at both stiffnesses here; 0 for the current row, above for softer, below for stiffer.
-        let Model::Beam { beams, force } = model else {
+        let Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, force }) = model
+        else {
             panic!()
         };
         let w = |kt: f64| {
@@ -250,10 +251,10 @@ mod tests {
         }
         assert_eq!(table.rows[0].off_current, Some(0.0));
         // No load, no displacement to compare against: nothing is said.
-        let unloaded = Model::Beam {
+        let unloaded = Model::Beam(crate::problems::twin_beams::problem::BeamsModel {
             beams,
             force: crate::TipForce::new(0.0).unwrap(),
-        };
+        });
         let table = compare_stiffnesses(&unloaded, 2.0, None);
         assert!(table.rows.iter().all(|r| r.off_current.is_none()));
     }

@@ -121,7 +121,9 @@ mod tests {
     fn beam_zones(force: f64) -> InterfaceZones {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
         let force = TipForce::new(force).unwrap();
-        interface_zones(&Model::Beam { beams, force })
+        interface_zones(&Model::Beam(
+            crate::problems::twin_beams::problem::BeamsModel { beams, force },
+        ))
     }
 
     fn plate_zones(kt: f64) -> InterfaceZones {

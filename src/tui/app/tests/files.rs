@@ -615,7 +615,9 @@ fn the_force_axis_follows_f_thre_when_it_leaves_the_axis_and_says_so() {
     // P x 8: F_thre = 640 N, beyond the axis: fitted again, and said.
     command(&mut app, "P=8");
     let threshold = match app.model() {
-        Some(Model::Beam { beams, .. }) => beams.threshold_force(),
+        Some(Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. })) => {
+            beams.threshold_force()
+        }
         _ => panic!(),
     };
     assert!((threshold - 640.0).abs() < 1e-9);

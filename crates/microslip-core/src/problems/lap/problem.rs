@@ -10,7 +10,7 @@ use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
 use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
 use crate::problems::fittable::{AnyFittable, FittableOf};
-use crate::problems::inputs::{Inputs, InterfaceData, Model};
+use crate::problems::inputs::InterfaceData;
 use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
 use crate::problems::zoned::{AnyZoned, ZonedOf};
@@ -168,33 +168,7 @@ impl Problem for LapJointProblem {
         Some(&ZonedOf::<LapJointProblem>::NEW)
     }
 
-    fn to_inputs(params: LapInputs) -> Inputs {
-        Inputs::Lap {
-            structure: params.structure,
-            force: params.force,
-        }
-    }
-
-    fn from_inputs(inputs: &Inputs) -> Option<LapInputs> {
-        match *inputs {
-            Inputs::Lap { structure, force } => Some(LapInputs { structure, force }),
-            _ => None,
-        }
-    }
-
-    fn to_model(model: LapModel) -> Model {
-        Model::Lap {
-            joint: model.joint,
-            force: model.force,
-        }
-    }
-
-    fn from_model(model: &Model) -> Option<LapModel> {
-        match *model {
-            Model::Lap { joint, force } => Some(LapModel { joint, force }),
-            _ => None,
-        }
-    }
+    enum_bridges!(Lap);
 }
 
 impl Continuum for LapJointProblem {
@@ -224,7 +198,9 @@ mod tests {
     fn the_joint_is_registered_and_answers_the_same_erased_as_typed() {
         checks::registered::<LapJointProblem>();
         // The erased continuum is the typed one, on the default mesh.
-        let model = Inputs::paper(ModelKind::Lap).validate().unwrap();
+        let model = crate::problems::inputs::Inputs::paper(ModelKind::Lap)
+            .validate()
+            .unwrap();
         let erased = LapJointProblem::continuum()
             .and_then(|c| c.response(&model))
             .unwrap()
@@ -252,7 +228,9 @@ mod tests {
 
     #[test]
     fn typed_clamping_agrees_with_the_enum_and_keeps_the_force_carried() {
-        let model = Inputs::paper(ModelKind::Lap).validate().unwrap();
+        let model = crate::problems::inputs::Inputs::paper(ModelKind::Lap)
+            .validate()
+            .unwrap();
         let typed = LapJointProblem::from_model(&model).unwrap();
         let gross = typed.joint.gross_slip_force();
         for (key, value) in [

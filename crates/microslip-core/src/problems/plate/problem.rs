@@ -9,7 +9,7 @@ use super::params::{PlateParam, PlateParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
 use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
-use crate::problems::inputs::{Inputs, InterfaceData, Model};
+use crate::problems::inputs::InterfaceData;
 use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
 use crate::problems::zoned::{AnyZoned, ZonedOf};
 use crate::problems::{Description, Quantity};
@@ -92,27 +92,7 @@ impl Problem for SqueezedPlateProblem {
         Some(&ZonedOf::<SqueezedPlateProblem>::NEW)
     }
 
-    fn to_inputs(params: PlateParams) -> Inputs {
-        Inputs::Plate(params)
-    }
-
-    fn from_inputs(inputs: &Inputs) -> Option<PlateParams> {
-        match *inputs {
-            Inputs::Plate(params) => Some(params),
-            _ => None,
-        }
-    }
-
-    fn to_model(model: SqueezedPlate) -> Model {
-        Model::Plate(model)
-    }
-
-    fn from_model(model: &Model) -> Option<SqueezedPlate> {
-        match *model {
-            Model::Plate(plate) => Some(plate),
-            _ => None,
-        }
-    }
+    enum_bridges!(Plate);
 }
 
 impl Continuum for SqueezedPlateProblem {
@@ -142,7 +122,9 @@ mod tests {
     fn the_plate_is_registered_and_answers_the_same_erased_as_typed() {
         checks::registered::<SqueezedPlateProblem>();
         // The erased continuum is the typed one, on the default mesh.
-        let model = Inputs::paper(ModelKind::Plate).validate().unwrap();
+        let model = crate::problems::inputs::Inputs::paper(ModelKind::Plate)
+            .validate()
+            .unwrap();
         let erased = SqueezedPlateProblem::continuum()
             .and_then(|c| c.response(&model))
             .unwrap()

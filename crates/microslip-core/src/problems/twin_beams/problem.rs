@@ -8,7 +8,7 @@ use crate::kernel::params::{ParamError, ParamSpec};
 use crate::problems::choice::AnyChoice;
 use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
 use crate::problems::fittable::{AnyFittable, FittableOf};
-use crate::problems::inputs::{Inputs, InterfaceData, Model};
+use crate::problems::inputs::InterfaceData;
 use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
 use crate::problems::problem::{Laws, ParamKey, Problem};
 use crate::problems::zoned::{AnyZoned, ZonedOf};
@@ -140,33 +140,7 @@ impl Problem for TwinBeamsProblem {
         Some(&ZonedOf::<TwinBeamsProblem>::NEW)
     }
 
-    fn to_inputs(params: BeamsInputs) -> Inputs {
-        Inputs::Beam {
-            structure: params.structure,
-            force: params.force,
-        }
-    }
-
-    fn from_inputs(inputs: &Inputs) -> Option<BeamsInputs> {
-        match *inputs {
-            Inputs::Beam { structure, force } => Some(BeamsInputs { structure, force }),
-            _ => None,
-        }
-    }
-
-    fn to_model(model: BeamsModel) -> Model {
-        Model::Beam {
-            beams: model.beams,
-            force: model.force,
-        }
-    }
-
-    fn from_model(model: &Model) -> Option<BeamsModel> {
-        match *model {
-            Model::Beam { beams, force } => Some(BeamsModel { beams, force }),
-            _ => None,
-        }
-    }
+    enum_bridges!(Beam);
 }
 
 #[cfg(test)]
