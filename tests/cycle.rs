@@ -118,7 +118,8 @@ fn stiff_interface_dissipates_like_coulomb() {
 fn amplitude_exponents() {
     let b = beams(120.0);
     let f1 = b.first_macroslip_force();
-    let d = |fa: f64| BeamsCycle::new(&b, Law::Regularized, TipForce::new(fa).unwrap()).dissipation();
+    let d =
+        |fa: f64| BeamsCycle::new(&b, Law::Regularized, TipForce::new(fa).unwrap()).dissipation();
     // Just above F_1: D ~ (F_a - F_1)^(3/2) (docs/theory.md, (C6)).
     let slope = (d(f1 * (1.0 + 1e-5)) / d(f1 * (1.0 + 1e-6))).log10();
     assert!(
@@ -164,8 +165,9 @@ fn coulomb_damping_peaks_at_2_over_3_pi_at_one_and_a_half_times_the_threshold() 
     ] {
         let b = TwinBeams::new(params).unwrap();
         let ft = b.threshold_force();
-        let zeta =
-            |r: f64| BeamsCycle::new(&b, Law::Coulomb, TipForce::new(r * ft).unwrap()).damping_ratio();
+        let zeta = |r: f64| {
+            BeamsCycle::new(&b, Law::Coulomb, TipForce::new(r * ft).unwrap()).damping_ratio()
+        };
         let peak = 2.0 / (3.0 * std::f64::consts::PI);
         assert!((zeta(1.5) - peak).abs() < 1e-12);
         assert!(zeta(1.45) < peak && zeta(1.55) < peak);

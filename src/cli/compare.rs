@@ -27,7 +27,8 @@ pub(super) fn run_compare(
         ModelKind::Lap => {
             let mut rows = Vec::new();
             for path in results {
-                let loaded = fe::load::lap_results(path, deck).map_err(data_error)?;
+                let loaded = fe::load::results::<crate::problems::lap::LapJointProblem>(path, deck)
+                    .map_err(data_error)?;
                 if loaded.header.is_some() && rows.is_empty() {
                     note_flags_the_deck_overrides(inputs, model);
                 }
@@ -36,7 +37,7 @@ pub(super) fn run_compare(
                     // The FE forces are compared, not the preset's F.
                     None => load_lap_structure(inputs, "compare lap")?.1,
                 };
-                let compared = fe::compare::compare_lap(
+                let compared = crate::problems::lap::deck::compare_lap(
                     &joint,
                     &loaded.points,
                     loaded.interface_mesh.as_ref(),
@@ -60,7 +61,9 @@ pub(super) fn run_compare(
                         .to_string(),
                 });
             };
-            let loaded = fe::load::beam_results(path, deck).map_err(data_error)?;
+            let loaded =
+                fe::load::results::<crate::problems::twin_beams::TwinBeamsProblem>(path, deck)
+                    .map_err(data_error)?;
             if loaded.header.is_some() {
                 note_flags_the_deck_overrides(inputs, model);
             }
@@ -69,8 +72,11 @@ pub(super) fn run_compare(
                 // A CSV has no header: the parameters come from the flags.
                 None => load_beams_structure(inputs, "compare beam")?.1,
             };
-            let comparison =
-                fe::compare::compare_beams(&beams, &loaded.points, loaded.interface_mesh.as_ref());
+            let comparison = crate::problems::twin_beams::deck::compare_beams(
+                &beams,
+                &loaded.points,
+                loaded.interface_mesh.as_ref(),
+            );
             let report = report::compare::beam::BeamCompareReport::new(&source, &comparison);
             let csv = comparison
                 .rows
@@ -81,7 +87,9 @@ pub(super) fn run_compare(
         ModelKind::Plate => {
             let mut rows = Vec::new();
             for path in results {
-                let loaded = fe::load::plate_results(path, deck).map_err(data_error)?;
+                let loaded =
+                    fe::load::results::<crate::problems::plate::SqueezedPlateProblem>(path, deck)
+                        .map_err(data_error)?;
                 if loaded.header.is_some() && rows.is_empty() {
                     note_flags_the_deck_overrides(inputs, model);
                 }
@@ -89,7 +97,7 @@ pub(super) fn run_compare(
                     Some(header) => header.model()?.into_plate().map_err(deck_of_other_model)?,
                     None => load_plate(inputs, "compare plate")?.1,
                 };
-                rows.extend(fe::compare::compare_plate(
+                rows.extend(crate::problems::plate::deck::compare_plate(
                     &plate,
                     &loaded.points,
                     loaded.interface_mesh.as_ref(),

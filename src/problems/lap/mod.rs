@@ -2,3 +2,5 @@
 //! folder re-exported whole, so `crate::problems::lap::...` keeps naming the same items.
 
 pub use microslip_core::problems::lap::*;
+
+pub mod deck;

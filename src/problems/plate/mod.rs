@@ -2,3 +2,5 @@
 //! folder re-exported whole, so `crate::problems::plate::...` keeps naming the same items.
 
 pub use microslip_core::problems::plate::*;
+
+pub mod deck;

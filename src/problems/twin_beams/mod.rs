@@ -2,3 +2,5 @@
 //! folder re-exported whole, so `crate::problems::twin_beams::...` keeps naming the same items.
 
 pub use microslip_core::problems::twin_beams::*;
+
+pub mod deck;

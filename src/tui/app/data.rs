@@ -134,20 +134,29 @@ impl App {
         };
         let summary = match (loaded, current) {
             (AnyLoaded::Beam(l), Model::Beam { beams, .. }) => {
-                let comparison =
-                    crate::fe::compare::compare_beams(&beams, &l.points, l.interface_mesh.as_ref());
+                let comparison = crate::problems::twin_beams::deck::compare_beams(
+                    &beams,
+                    &l.points,
+                    l.interface_mesh.as_ref(),
+                );
                 crate::tui::brief::beam_summary(code, &comparison)
             }
             (AnyLoaded::Plate(l), Model::Plate(plate)) => {
-                let rows =
-                    crate::fe::compare::compare_plate(&plate, &l.points, l.interface_mesh.as_ref());
+                let rows = crate::problems::plate::deck::compare_plate(
+                    &plate,
+                    &l.points,
+                    l.interface_mesh.as_ref(),
+                );
                 rows.first()
                     .map(|row| crate::tui::brief::plate_summary(code, row))
                     .unwrap_or_default()
             }
             (AnyLoaded::Lap(l), Model::Lap { joint, .. }) => {
-                match crate::fe::compare::compare_lap(&joint, &l.points, l.interface_mesh.as_ref())
-                {
+                match crate::problems::lap::deck::compare_lap(
+                    &joint,
+                    &l.points,
+                    l.interface_mesh.as_ref(),
+                ) {
                     Ok(rows) => crate::tui::brief::lap_summary(code, &rows),
                     Err(e) => return self.error(format!("{path}: {e}")),
                 }
