@@ -4,3 +4,4 @@
 pub use microslip_core::problems::plate::*;
 
 pub mod deck;
+pub mod report;

@@ -4,3 +4,4 @@
 pub use microslip_core::problems::twin_beams::*;
 
 pub mod deck;
+pub mod report;
