@@ -26,10 +26,14 @@ pub(super) fn run_cycle(
                 allowed: e.allowed(),
             })?;
             match format {
-                CycleFormat::Text => {
-                    out.write_all(text::lap_cycle(&name, &joint, amplitude).as_bytes())?
-                }
-                CycleFormat::Json => write_json(out, &json::lap_cycle(&name, &joint, amplitude))?,
+                CycleFormat::Text => out.write_all(
+                    text::cycle::<crate::problems::lap::LapJointProblem>(&name, &joint, amplitude)
+                        .as_bytes(),
+                )?,
+                CycleFormat::Json => write_json(
+                    out,
+                    &json::cycle::<crate::problems::lap::LapJointProblem>(&name, &joint, amplitude),
+                )?,
                 CycleFormat::Csv => {
                     let points = load::cycle_loop::<LapJointProblem>(&joint, amplitude, points)
                         .map_err(points_error)?;
@@ -42,8 +46,14 @@ pub(super) fn run_cycle(
     };
     let amplitude = TipForce::new(amplitude)?;
     match format {
-        CycleFormat::Text => out.write_all(text::cycle(&name, &beams, amplitude).as_bytes())?,
-        CycleFormat::Json => write_json(out, &json::cycle(&name, &beams, amplitude))?,
+        CycleFormat::Text => out.write_all(
+            text::cycle::<crate::problems::twin_beams::TwinBeamsProblem>(&name, &beams, amplitude)
+                .as_bytes(),
+        )?,
+        CycleFormat::Json => write_json(
+            out,
+            &json::cycle::<crate::problems::twin_beams::TwinBeamsProblem>(&name, &beams, amplitude),
+        )?,
         CycleFormat::Csv => {
             let points = load::cycle_loop::<TwinBeamsProblem>(&beams, amplitude, points)
                 .map_err(points_error)?;

@@ -198,8 +198,17 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
         Some(Command::Beam(args)) => {
             let (name, beams, force) = load_beams(&args.inputs, "beam")?;
             match args.format {
-                ReportFormat::Text => out.write_all(text::beam(&name, &beams, force).as_bytes())?,
-                ReportFormat::Json => write_json(out, &json::beam(&name, &beams, force))?,
+                ReportFormat::Text => out.write_all(
+                    crate::problems::twin_beams::report::BeamReport::new(&name, &beams, force)
+                        .text()
+                        .as_bytes(),
+                )?,
+                ReportFormat::Json => write_json(
+                    out,
+                    &json::of(&crate::problems::twin_beams::report::BeamReport::new(
+                        &name, &beams, force,
+                    )),
+                )?,
             }
         }
         Some(Command::Plate(args)) => run_plate_point(out, args)?,

@@ -20,10 +20,19 @@ pub(super) fn run_plate_point(out: &mut impl Write, args: &PlatePointArgs) -> Re
         return Err(CliError::Numeric(e.clone()));
     }
     match args.format {
-        ReportFormat::Text => {
-            out.write_all(text::plate(&name, &plate, solved.as_ref()).as_bytes())?
-        }
-        ReportFormat::Json => write_json(out, &json::plate(&name, &plate, solved.as_ref()))?,
+        ReportFormat::Text => out.write_all(
+            crate::problems::plate::report::PlateReport::new(&name, &plate, solved.as_ref())
+                .text()
+                .as_bytes(),
+        )?,
+        ReportFormat::Json => write_json(
+            out,
+            &json::of(&crate::problems::plate::report::PlateReport::new(
+                &name,
+                &plate,
+                solved.as_ref(),
+            )),
+        )?,
     }
     Ok(())
 }
@@ -50,10 +59,20 @@ pub(super) fn run_lap_point(out: &mut impl Write, args: &LapPointArgs) -> Result
         return Err(CliError::Numeric(e.clone()));
     }
     match args.format {
-        ReportFormat::Text => {
-            out.write_all(text::lap(&name, &joint, force, solved.as_ref()).as_bytes())?
-        }
-        ReportFormat::Json => write_json(out, &json::lap(&name, &joint, force, solved.as_ref()))?,
+        ReportFormat::Text => out.write_all(
+            crate::problems::lap::report::LapReport::new(&name, &joint, force, solved.as_ref())
+                .text()
+                .as_bytes(),
+        )?,
+        ReportFormat::Json => write_json(
+            out,
+            &json::of(&crate::problems::lap::report::LapReport::new(
+                &name,
+                &joint,
+                force,
+                solved.as_ref(),
+            )),
+        )?,
     }
     Ok(())
 }

@@ -1,18 +1,31 @@
 //! The lap joint's reports: its K_T table columns and its sweep row ([`ReportFace`]).
+//!
+//! `microslip lap` and `microslip cycle` of the lap joint: the joint at one force, both laws side
+//! by side, and one load cycle.
 
 use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use crate::kernel::regime::Regime;
+use crate::kernel::regime::{Law, Regime};
+use crate::kernel::validity::Validity;
+use crate::numeric::NumericError;
+use crate::problems::Problem;
+use crate::problems::inputs::Inputs;
+use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtHeading, KtRow, ReportFace};
-use crate::report::number;
-use crate::report::point::regime_label;
+use crate::report::point::cycle::{CycleFace, CycleWords};
+use crate::report::point::{InputsReport, regime_label, validity_label};
 use crate::report::rows::LapRow;
+use crate::report::{number, number_with, sanitize};
 use crate::study::curves::Answer;
+use crate::study::lap::lap_point;
 
+use super::closed_form::{JointForce, LapJoint};
+use super::continuum::ContinuumLap;
+use super::cycle::{LapCycle, MasingCycle};
 use super::load_driven::LapPoint;
-use super::problem::LapJointProblem;
+use super::problem::{LapInputs, LapJointProblem};
 
 /// What a candidate K_T does to the joint at the model's force (`microslip kt`'s row).
 #[derive(Debug, Clone, Copy, Serialize)]
@@ -135,3 +148,426 @@ impl From<&LapPoint> for LapRow {
     }
 }
 
+
+/// What D, U and the secant stiffness of the lap joint refer to.
+pub(crate) const LAP_CYCLE_NOTE: &str = "D is the whole joint's (both interfaces); U = 1/2 F_a \
+     Delta_a; the secant stiffness is F_a / Delta_a of the joint.";
+
+impl CycleFace for LapJointProblem {
+    const CYCLE_WORDS: CycleWords = CycleWords {
+        peak_key: "Delta_peak_mm",
+        heading: ("Double-lap joint", "force"),
+        rows: [
+            "onset of sliding (N)",
+            "peak displacement Delta_a (mm)",
+            "D per cycle (N mm)",
+            "peak energy U (N mm)",
+            "damping ratio D / (4 pi U) (-)",
+            "secant F_a/Delta_a (N/mm)",
+        ],
+        note: LAP_CYCLE_NOTE,
+    };
+
+    fn structure_line(joint: &LapJoint) -> String {
+        let p = joint.params();
+        format!(
+            "L = {} mm, b = {} mm, t1 = {} mm, t2 = {} mm, E1 = {} MPa, E2 = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
+            number(p.length),
+            number(p.width),
+            number(p.inner_thickness),
+            number(p.cover_thickness),
+            number(p.inner_modulus),
+            number(p.cover_modulus),
+            number(p.pressure),
+            number(p.friction),
+            number(p.tangential_stiffness)
+        )
+    }
+
+    fn cycle_inputs(joint: &LapJoint, amplitude: JointForce) -> Inputs {
+        LapJointProblem::to_inputs(LapInputs {
+            structure: joint.params(),
+            force: amplitude.newtons(),
+        })
+    }
+}
+
+/// What the shear-lag theory assumes and where its envelope comes from, said wherever its
+/// numbers are shown.
+pub(crate) const SHEAR_LAG_NOTE: &str = "shear-lag theory (each plate strained uniformly through \
+     its thickness, contact pressure P); its envelope (docs/theory.md (L14)) bounds Delta's \
+     difference from a plane-stress continuum (nu = 0.3), measured against CalculiX on 22 joints";
+
+/// The lap-joint report at one force.
+#[derive(Debug, Clone, Serialize)]
+pub struct LapReport {
+    /// Always `lap`.
+    pub model: &'static str,
+    pub preset: String,
+    pub inputs: InputsReport,
+    /// Force of the report (N), also in `inputs`.
+    #[serde(skip)]
+    pub force: f64,
+    /// Regularized: sliding starts above it (N).
+    #[serde(rename = "F_1_N")]
+    pub first_slip_force: f64,
+    /// Where: `x=0`, `x=L` or `both`.
+    pub first_slip_at: &'static str,
+    /// In words, for the text.
+    #[serde(skip)]
+    pub first_slip_words: &'static str,
+    /// Regularized: the other end starts sliding above it (N).
+    #[serde(rename = "F_2_N")]
+    pub second_slip_force: f64,
+    /// Both laws: the whole overlap slides at it; no larger force is carried (N).
+    #[serde(rename = "F_gross_N")]
+    pub gross_slip_force: f64,
+    /// mu P / K_T (mm).
+    #[serde(rename = "saturation_slip_mm")]
+    pub saturation_slip: f64,
+    /// 1/lambda, the elastic slip's decay length (mm).
+    #[serde(rename = "decay_length_mm")]
+    pub decay_length: f64,
+    /// k1 = E1 t1 and K2 = 2 E2 t2 (N/mm).
+    #[serde(rename = "inner_stiffness_N_per_mm")]
+    pub inner_stiffness: f64,
+    #[serde(rename = "covers_stiffness_N_per_mm")]
+    pub covers_stiffness: f64,
+    pub coulomb: LapLaw,
+    pub regularized: LapLaw,
+    pub shear_lag: ShearLagReport,
+    /// The 2-D plane-stress continuum at the same force (L13), when it was solved (asked for, or
+    /// where the shear-lag theory is not expected within 2 %).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub continuum: Option<LapContinuumReport>,
+}
+
+/// The 2-D plane-stress continuum's answer (L13), or why there is none.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum LapContinuumReport {
+    Solved(LapContinuumSolved),
+    Failed {
+        /// Why the continuum solver gave no answer.
+        error: String,
+    },
+}
+
+/// What the continuum gives where the shear-lag theory assumes.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct LapContinuumSolved {
+    /// Delta (mm): thickness means, from the clamped state, as the closed form's.
+    #[serde(rename = "Delta_mm")]
+    pub joint_displacement: f64,
+    /// (continuum - shear lag) / shear lag for Delta, a fraction. Deprecated: the same value as
+    /// `diff_vs_shear_lag_fraction`, kept one release.
+    pub diff_vs_shear_lag: Option<f64>,
+    /// (continuum - shear lag) / shear lag for Delta, a fraction (0.011 is 1.1 %).
+    pub diff_vs_shear_lag_fraction: Option<f64>,
+    /// The sliding zones where K_T |s| >= mu P (the closed form's definition) (mm).
+    #[serde(rename = "a_mm")]
+    pub slide_at_inner_end: f64,
+    #[serde(rename = "d_mm")]
+    pub slide_at_cover_ends: f64,
+    /// The least and largest contact pressure over the overlap (MPa): P in the theory.
+    #[serde(rename = "contact_pressure_min_MPa")]
+    pub pressure_min: f64,
+    #[serde(rename = "contact_pressure_max_MPa")]
+    pub pressure_max: f64,
+    /// Node pairs whose faces would open (held by the tie, without friction).
+    pub separated_pairs: usize,
+}
+
+impl LapContinuumReport {
+    fn new(solved: &Result<ContinuumLap, NumericError>, shear_lag: f64) -> LapContinuumReport {
+        match solved {
+            Err(e) => LapContinuumReport::Failed {
+                error: e.to_string(),
+            },
+            Ok(c) => {
+                let (pressure_min, pressure_max) = c
+                    .contact_pressure
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(_, p)| {
+                        (lo.min(p), hi.max(p))
+                    });
+                let diff = (shear_lag != 0.0).then(|| c.delta / shear_lag - 1.0);
+                LapContinuumReport::Solved(LapContinuumSolved {
+                    joint_displacement: c.delta,
+                    diff_vs_shear_lag: diff,
+                    diff_vs_shear_lag_fraction: diff,
+                    slide_at_inner_end: c.nominal_zones.from_inner_end,
+                    slide_at_cover_ends: c.nominal_zones.from_cover_ends,
+                    pressure_min,
+                    pressure_max,
+                    separated_pairs: c.separated.len(),
+                })
+            }
+        }
+    }
+}
+
+/// One law's answer.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct LapLaw {
+    #[serde(serialize_with = "regime_label")]
+    pub regime: Regime,
+    /// Delta = u_inner(L) - u_cover(0) (mm).
+    #[serde(rename = "Delta_mm")]
+    pub joint_displacement: f64,
+    /// Sliding zone from x = 0 (mm).
+    #[serde(rename = "a_mm")]
+    pub slide_at_inner_end: f64,
+    /// Sliding zone from x = L (mm).
+    #[serde(rename = "d_mm")]
+    pub slide_at_cover_ends: f64,
+    /// Energy dissipated per cycle of the force between +F and -F (N mm), as the TUI's regime
+    /// pane shows it; the same key as `cycle`'s.
+    #[serde(rename = "D_Nmm")]
+    pub dissipation: f64,
+    /// The equivalent damping ratio D / (4 pi U), U = F Delta / 2 (dimensionless).
+    #[serde(rename = "zeta")]
+    pub damping_ratio: f64,
+}
+
+/// The theory and what is known of its domain.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct ShearLagReport {
+    /// The decay length over the thicker plate's thickness, (1/lambda) / max(t1, t2): small
+    /// values are where uniform strain through the thickness is doubtful.
+    pub decay_length_over_thickness: f64,
+    #[serde(serialize_with = "validity_label")]
+    pub validity: Validity,
+    /// The envelope's bound on Delta's difference from a continuum, a fraction; null where the
+    /// calibration does not reach. Deprecated: the same value as `shear_lag_within_fraction`,
+    /// kept one release.
+    pub expected_error: Option<f64>,
+    /// The same bound under its one name in every output (`sweep lap`'s and `compare lap`'s
+    /// column): a fraction (0.034 is 3.4 %).
+    pub shear_lag_within_fraction: Option<f64>,
+    /// Which calibrated range the joint leaves (null inside them).
+    pub outside_calibration: Option<&'static str>,
+    /// The envelope's three terms: the plates' shear compliance r, the clamping prestress q_p
+    /// of dissimilar plates, the covers' bending beta (L14).
+    pub shear_compliance: f64,
+    pub clamping_prestress: f64,
+    pub cover_bending: f64,
+    pub note: &'static str,
+}
+
+impl LapReport {
+    /// The report of `joint` at `force`, with the continuum's answer when it was solved.
+    pub fn new(
+        preset: &str,
+        joint: &LapJoint,
+        force: JointForce,
+        continuum: Option<&Result<ContinuumLap, NumericError>>,
+    ) -> LapReport {
+        let row = lap_point(joint, force);
+        let p = joint.params();
+        let decay_length = 1.0 / joint.decay_rate();
+        let law = |law, regime, delta, (a, d): (f64, f64)| {
+            let cycle = LapCycle::new(joint, law, force);
+            LapLaw {
+                regime,
+                joint_displacement: delta,
+                slide_at_inner_end: a,
+                slide_at_cover_ends: d,
+                dissipation: cycle.dissipation(),
+                damping_ratio: cycle.damping_ratio(),
+            }
+        };
+        LapReport {
+            model: "lap",
+            preset: preset.to_string(),
+            inputs: InputsReport(LapJointProblem::to_inputs(LapInputs {
+                structure: p,
+                force: force.newtons(),
+            })),
+            force: row.force,
+            first_slip_force: joint.first_slip_force(),
+            first_slip_at: joint.first_slip().key(),
+            first_slip_words: joint.first_slip().label(),
+            second_slip_force: joint.second_slip_force(),
+            gross_slip_force: joint.gross_slip_force(),
+            saturation_slip: joint.saturation_slip(),
+            decay_length,
+            inner_stiffness: p.inner_stiffness(),
+            covers_stiffness: p.covers_stiffness(),
+            coulomb: law(
+                Law::Coulomb,
+                row.regime_coulomb,
+                row.delta_coulomb,
+                row.zones_coulomb,
+            ),
+            regularized: law(
+                Law::Regularized,
+                row.regime_regularized,
+                row.delta_regularized,
+                row.zones_regularized,
+            ),
+            shear_lag: {
+                let v = joint.validity_at(force, row.delta_regularized);
+                ShearLagReport {
+                    decay_length_over_thickness: v.decay_over_thickness,
+                    validity: v.validity,
+                    expected_error: v.expected_error,
+                    shear_lag_within_fraction: v.expected_error,
+                    outside_calibration: v.outside_calibration,
+                    shear_compliance: v.shear_compliance,
+                    clamping_prestress: v.clamping_prestress,
+                    cover_bending: v.cover_bending,
+                    note: SHEAR_LAG_NOTE,
+                }
+            },
+            continuum: continuum.map(|c| LapContinuumReport::new(c, row.delta_regularized)),
+        }
+    }
+
+    /// The readable report.
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "Clamped double-lap joint (shear lag, docs/theory.md section 9) - preset {}",
+            sanitize(&self.preset)
+        );
+        self.inputs.write(&mut out);
+        let _ = writeln!(
+            out,
+            "Members: inner plate E1 t1 = {} N/mm, both covers 2 E2 t2 = {} N/mm",
+            number(self.inner_stiffness),
+            number(self.covers_stiffness)
+        );
+        let _ = writeln!(out, "Thresholds");
+        let _ = writeln!(
+            out,
+            "  F_1        = {:<14} regularized: sliding starts above it, at {}",
+            format!("{} N", number(self.first_slip_force)),
+            self.first_slip_words
+        );
+        let _ = writeln!(
+            out,
+            "  F_2        = {:<14} regularized: both ends slide above it",
+            format!("{} N", number(self.second_slip_force)),
+        );
+        let _ = writeln!(
+            out,
+            "  F_gross    = {:<14} both laws: the whole overlap slides (2 b mu P L); no more is carried",
+            format!("{} N", number(self.gross_slip_force)),
+        );
+        let _ = writeln!(
+            out,
+            "  mu P / K_T = {:<14} saturation slip; 1/lambda = {} mm, the elastic slip's decay length",
+            format!("{} um", number(mm_to_um(self.saturation_slip))),
+            number(self.decay_length)
+        );
+        // Wider than the other problems' columns: the lap joint's regimes have three zones.
+        let (c, r) = (&self.coulomb, &self.regularized);
+        let row = |out: &mut String, label: &str, coulomb: String, regularized: String| {
+            let _ = writeln!(out, "  {label:<26}{coulomb:<31}{regularized}");
+        };
+        let _ = writeln!(
+            out,
+            "{:<28}{:<31}regularized",
+            format!("At F = {} N", number(self.force)),
+            "Coulomb"
+        );
+        row(
+            &mut out,
+            "regime",
+            c.regime.to_string(),
+            r.regime.to_string(),
+        );
+        row(
+            &mut out,
+            "Delta (mm)",
+            number(c.joint_displacement),
+            number(r.joint_displacement),
+        );
+        row(
+            &mut out,
+            "a, from x = 0 (mm)",
+            number(c.slide_at_inner_end),
+            number(r.slide_at_inner_end),
+        );
+        row(
+            &mut out,
+            "d, from x = L (mm)",
+            number(c.slide_at_cover_ends),
+            number(r.slide_at_cover_ends),
+        );
+        if c.joint_displacement > 0.0 {
+            let _ = writeln!(
+                out,
+                "  {:<26}{}",
+                "Delta_reg / Delta_Coulomb",
+                number(r.joint_displacement / c.joint_displacement)
+            );
+        }
+        let _ = writeln!(
+            out,
+            "  (a: sliding zone from x = 0, the inner plate's end; d: from x = L, the covers' ends; \
+             Delta = u_inner(L) - u_cover(0))"
+        );
+        let v = &self.shear_lag;
+        let verdict = match (v.expected_error, v.outside_calibration) {
+            (Some(e), _) => format!(
+                "Delta within {} % of a continuum ({})",
+                number_with(100.0 * e, 2),
+                v.validity.label()
+            ),
+            (None, why) => format!(
+                "not calibrated here ({}): use the 2-D continuum",
+                why.unwrap_or("no calibration reaches")
+            ),
+        };
+        let _ = writeln!(
+            out,
+            "Theory: {}\n  here: {verdict}; terms: plates' shear r = {} %, clamping prestress q_p = \
+             {}, cover bending beta = {}; 1/lambda = {} x the thicker plate",
+            v.note,
+            number_with(100.0 * v.shear_compliance, 2),
+            number_with(v.clamping_prestress, 2),
+            number_with(v.cover_bending, 2),
+            number_with(v.decay_length_over_thickness, 3),
+        );
+        match &self.continuum {
+            None => {}
+            Some(LapContinuumReport::Failed { error }) => {
+                let _ = writeln!(
+                    out,
+                    "2-D continuum (L13): FAILED, no answer (the shear-lag numbers above are \
+                     unchecked): {}",
+                    sanitize(error)
+                );
+            }
+            Some(LapContinuumReport::Solved(c)) => {
+                let pressure = LapJointProblem::from_inputs(&self.inputs.0)
+                    .map_or(f64::NAN, |inputs| inputs.structure.pressure);
+                let _ = writeln!(
+                    out,
+                    "2-D continuum (plane stress, nu = 0.3, docs/theory.md (L13): within 0.02 % of CalculiX where compared)\n  \
+                     Delta = {} mm ({} vs shear lag); a = {} mm, d = {} mm (K_T |s| >= mu P)\n  \
+                     contact pressure {} to {} MPa over the overlap (the theory's P: {} MPa)",
+                    number(c.joint_displacement),
+                    c.diff_vs_shear_lag
+                        .map_or_else(|| "n/a".to_string(), crate::report::compare::percent),
+                    number(c.slide_at_inner_end),
+                    number(c.slide_at_cover_ends),
+                    number_with(c.pressure_min, 3),
+                    number_with(c.pressure_max, 3),
+                    number(pressure)
+                );
+                if c.separated_pairs > 0 {
+                    let _ = writeln!(
+                        out,
+                        "  {} interface node pairs would open: held by the tie, without friction",
+                        c.separated_pairs
+                    );
+                }
+            }
+        }
+        out
+    }
+}

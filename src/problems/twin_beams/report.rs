@@ -1,21 +1,29 @@
 //! The twin beams' reports: their K_T table columns, their paper table and their sweep row
 //! ([`ReportFace`]).
+//!
+//! `microslip beam`: the twin beams at one tip force, both laws side by side.
 
 use std::fmt::Write as _;
 
-use serde::Serialize;
+use serde::{Serialize, Serializer};
 
 use crate::kernel::regime::Regime;
+use crate::kernel::validity::Validity;
+use crate::problems::Problem;
+use crate::problems::inputs::Inputs;
+use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtHeading, KtRow, ReportFace};
-use crate::report::number;
-use crate::report::point::regime_label;
+use crate::report::point::cycle::{CycleFace, CycleWords};
+use crate::report::point::{InputsReport, SideBySide, regime_label, validity_label};
 use crate::report::rows::BeamRow;
+use crate::report::{number, number_with, sanitize};
 use crate::study::curves::{Answer, beam_point};
 
-use super::closed_form::{TipForce, TwinBeams};
+use super::closed_form::{BeamTheory, TipForce, TwinBeams};
 use super::load_driven::BeamPoint;
 use super::params::TwinBeamsParams;
-use super::problem::TwinBeamsProblem;
+use super::problem::{BeamsInputs, TwinBeamsProblem};
+use super::validity::CALIBRATED_FRICTION_STRAIN;
 
 /// What a candidate K_T does to the beams at the model's force (`microslip kt`'s row).
 #[derive(Debug, Clone, Copy, Serialize)]
@@ -190,3 +198,270 @@ impl From<&BeamPoint> for BeamRow {
     }
 }
 
+
+/// What D, U and the secant stiffness of the beams refer to.
+pub(crate) const CYCLE_UNITS_NOTE: &str = "D and U are for the pair (both beams' tip forces, the whole \
+     interface; U = 1/2 (2 F_a) w_a); the secant stiffness F_a/w_a and the loop w(F) are one beam's \
+     (the loop's area is D/2).";
+
+impl CycleFace for TwinBeamsProblem {
+    const CYCLE_WORDS: CycleWords = CycleWords {
+        peak_key: "w_peak_mm",
+        heading: ("Twin beams", "tip force"),
+        rows: [
+            "onset of sliding (N)",
+            "peak deflection w_a (mm)",
+            "D per cycle, both beams (N mm)",
+            "peak energy U, both (N mm)",
+            "damping ratio D / (4 pi U) (-)",
+            "secant F_a/w_a, 1 beam (N/mm)",
+        ],
+        note: CYCLE_UNITS_NOTE,
+    };
+
+    fn structure_line(beams: &TwinBeams) -> String {
+        let p = beams.params();
+        format!(
+            "L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
+            number(p.length),
+            number(p.width),
+            number(p.half_height),
+            number(p.youngs_modulus),
+            number(p.pressure),
+            number(p.friction),
+            number(p.tangential_stiffness)
+        )
+    }
+
+    fn cycle_inputs(beams: &TwinBeams, amplitude: TipForce) -> Inputs {
+        TwinBeamsProblem::to_inputs(BeamsInputs {
+            structure: beams.params(),
+            force: amplitude.newtons(),
+        })
+    }
+}
+
+/// The twin-beam report at one force.
+#[derive(Debug, Clone, Serialize)]
+pub struct BeamReport {
+    /// Always `beam`.
+    pub model: &'static str,
+    pub preset: String,
+    pub inputs: InputsReport,
+    /// Tip force of the report (N), also in `inputs`; the text's heading.
+    #[serde(skip)]
+    pub force: f64,
+    /// Coulomb: the whole interface slides above it (N).
+    #[serde(rename = "F_thre_N")]
+    pub threshold_force: f64,
+    /// Regularized: macroslip starts above it (N).
+    #[serde(rename = "F_1_N")]
+    pub first_macroslip_force: f64,
+    /// Where that macroslip starts (mm, the free end).
+    #[serde(rename = "first_macroslip_at_mm")]
+    pub first_macroslip_position: f64,
+    /// mu P / K_T (mm).
+    #[serde(rename = "saturation_slip_mm")]
+    pub saturation_slip: f64,
+    pub coulomb: BeamCoulomb,
+    pub regularized: BeamRegularized,
+    pub beam_theory: BeamTheoryReport,
+}
+
+/// The plain Coulomb law's answer.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct BeamCoulomb {
+    #[serde(serialize_with = "regime_label")]
+    pub regime: Regime,
+    /// w(L) (mm).
+    #[serde(rename = "w_tip_mm")]
+    pub tip_deflection: f64,
+    /// End of the stick zone, from the clamp (mm).
+    #[serde(rename = "stick_end_mm")]
+    pub stick_end: f64,
+}
+
+/// The regularized law's answer.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct BeamRegularized {
+    #[serde(serialize_with = "regime_label")]
+    pub regime: Regime,
+    /// w(L) (mm).
+    #[serde(rename = "w_tip_mm")]
+    pub tip_deflection: f64,
+    /// End of the microslip zone X, from the clamp (mm).
+    #[serde(rename = "X_mm")]
+    pub micro_end: f64,
+}
+
+/// The beam theory and how far its w(L) may be from continuum FE (V2).
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct BeamTheoryReport {
+    /// In JSON its key (`euler-bernoulli`), in text its label.
+    #[serde(serialize_with = "theory_key")]
+    pub theory: BeamTheory,
+    /// Shear deflection over the Euler-Bernoulli w(L), a fraction. Deprecated: the same value
+    /// as `shear_deflection_share_fraction`, kept one release.
+    pub shear_deflection_share: f64,
+    /// The same share under the name that says its unit (0.019 is 1.9 %).
+    pub shear_deflection_share_fraction: f64,
+    /// Bound on the difference from continuum FE, a fraction; absent where (V2) is not calibrated.
+    /// Deprecated: the same value as `vs_continuum_within_fraction`, kept one release.
+    #[serde(
+        rename = "vs_continuum_within",
+        skip_serializing_if = "Option::is_none"
+    )]
+    pub expected_error: Option<f64>,
+    /// The same bound under the name that says its unit, as `sweep beam`'s column: a fraction
+    /// (0.03 is 3 %); absent where (V2) is not calibrated.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vs_continuum_within_fraction: Option<f64>,
+    /// The friction strain mu P L / (2 E h) that decides whether (V2) is calibrated.
+    pub friction_strain: f64,
+    #[serde(serialize_with = "validity_label")]
+    pub validity: Validity,
+}
+
+fn theory_key<S: Serializer>(theory: &BeamTheory, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(theory.key())
+}
+
+impl BeamReport {
+    pub fn new(preset: &str, beams: &TwinBeams, force: TipForce) -> BeamReport {
+        let row = beam_point(beams, force);
+        BeamReport {
+            model: "beam",
+            preset: preset.to_string(),
+            inputs: InputsReport(TwinBeamsProblem::to_inputs(BeamsInputs {
+                structure: beams.params(),
+                force: force.newtons(),
+            })),
+            force: row.force,
+            threshold_force: beams.threshold_force(),
+            first_macroslip_force: beams.first_macroslip_force(),
+            first_macroslip_position: beams.first_macroslip_position(),
+            saturation_slip: beams.saturation_slip(),
+            coulomb: BeamCoulomb {
+                regime: row.regime_coulomb,
+                tip_deflection: row.w_coulomb,
+                stick_end: row.stick_end,
+            },
+            regularized: BeamRegularized {
+                regime: row.regime_regularized,
+                tip_deflection: row.w_regularized,
+                micro_end: row.micro_end,
+            },
+            beam_theory: BeamTheoryReport {
+                theory: row.validity.theory,
+                shear_deflection_share: row.validity.shear_share,
+                shear_deflection_share_fraction: row.validity.shear_share,
+                expected_error: row.validity.expected_error,
+                vs_continuum_within_fraction: row.validity.expected_error,
+                friction_strain: row.validity.friction_strain,
+                validity: row.validity.validity,
+            },
+        }
+    }
+
+    /// The readable report.
+    pub fn text(&self) -> String {
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "Twin cantilever beams (Ligier & Bonhote 2014, section 2.1) - preset {}",
+            sanitize(&self.preset)
+        );
+        self.inputs.write(&mut out);
+        let _ = writeln!(out, "Thresholds");
+        let _ = writeln!(
+            out,
+            "  F_thre     = {:<14} Coulomb: the whole interface slides above it",
+            format!("{} N", number(self.threshold_force))
+        );
+        let _ = writeln!(
+            out,
+            "  F_1        = {:<14} regularized: macroslip starts above it, at x = {} mm (free end)",
+            format!("{} N", number(self.first_macroslip_force)),
+            number(self.first_macroslip_position)
+        );
+        let _ = writeln!(
+            out,
+            "  mu P / K_T = {:<14} saturation slip",
+            format!("{} um", number(mm_to_um(self.saturation_slip)))
+        );
+        let _ = writeln!(
+            out,
+            "{:<24}{:<22}regularized",
+            format!("At F = {} N", number(self.force)),
+            "Coulomb"
+        );
+        let (c, r) = (&self.coulomb, &self.regularized);
+        SideBySide {
+            response: "w(L) (mm)",
+            ratio: "w_reg / w_Coulomb",
+            values: (c.tip_deflection, r.tip_deflection),
+            regimes: (c.regime, r.regime),
+            zone_ends: (
+                format!("{} (stick end)", number(c.stick_end)),
+                format!("{} (microslip end X)", number(r.micro_end)),
+            ),
+        }
+        .write(&mut out);
+        let v = &self.beam_theory;
+        let left_out = match v.theory {
+            BeamTheory::EulerBernoulli => format!(
+                "; it leaves out the shear deflection, {} % of w(L) (--beam-theory timoshenko adds it)",
+                number_with(100.0 * v.shear_deflection_share, 3)
+            ),
+            BeamTheory::Timoshenko => String::new(),
+        };
+        let envelope = match v.expected_error {
+            Some(bound) => format!(
+                "regularized w(L) within {} % of continuum FE (docs/theory.md (V2)): {}{left_out}",
+                number_with(100.0 * bound, 2),
+                v.validity.label()
+            ),
+            None => format!(
+                "regularized w(L) against continuum FE: {} (docs/theory.md (V2)){left_out}\n  \
+                 the friction strain mu P L / (2 E h) = {} is beyond the {} up to which (V2) was \
+                 measured to hold: check with a continuum model",
+                v.validity.label(),
+                number_with(v.friction_strain, 3),
+                number_with(CALIBRATED_FRICTION_STRAIN, 2)
+            ),
+        };
+        let _ = writeln!(
+            out,
+            "Beam theory: {}{}\n  {envelope}",
+            v.theory.label(),
+            match v.theory {
+                BeamTheory::EulerBernoulli => " (the paper's)",
+                BeamTheory::Timoshenko => " (Euler-Bernoulli plus each beam's shear deflection)",
+            },
+        );
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn beam_report_shows_units_thresholds_and_both_laws() {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let text = BeamReport::new("paper-beams", &beams, TipForce::new(100.0).unwrap()).text();
+        for needle in [
+            "KT  = 600 MPa/mm",
+            "(0.6 MPa/um)",
+            "F_thre     = 80 N",
+            "F_1        = 80.1857 N",
+            "0.5 um",
+            "17.3095 (microslip end X)",
+            "microslip+macroslip",
+        ] {
+            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+        }
+    }
+
+}
