@@ -12,9 +12,10 @@
 //! (free side faces), the plate in plane strain (every node held across the width) on a fixed block
 //! standing for the rigid plane.
 //!
-//! A deck is plain text built in memory: deterministic bytes for the same inputs, no I/O. Its first
-//! lines carry a machine-readable header ([`DeckHeader`]) that `microslip compare` reads back, so
-//! that results are compared with the parameters that produced them.
+//! A deck is plain text built in memory: deterministic bytes for the same inputs, no I/O. Its
+//! first lines carry a machine-readable header ([`DeckHeader`](super::header::DeckHeader)) that
+//! `microslip compare` reads back, so that results are compared with the parameters that
+//! produced them.
 
 use std::fmt::Write as _;
 
@@ -117,8 +118,7 @@ impl LoadPath {
     /// The force step (N) for a structure whose macroslip starts at `onset` (F_1 at the deck's
     /// stick slope, N).
     pub fn force_step(self, onset: f64) -> f64 {
-        self.force_step
-            .unwrap_or_else(|| Self::DEFAULT_FRACTION * onset)
+        self.force_step.unwrap_or(Self::DEFAULT_FRACTION * onset)
     }
 
     /// The increment of a step from `from` to `to` (N) as a fraction of the step: 1 when the step

@@ -1,8 +1,7 @@
 //! JSON reports of single points, with unit-suffixed names (`w_tip_mm`, `KT_MPa_per_mm`): cycle,
 //! K_T candidates, fit and solve serialize their [`super::point`] types, a problem's own point
-//! report ([`of`]) its folder's struct, which the
-//! text reports render too, `kt --tolerance` too ([`super::point::tolerance`]). Tables (sweeps) are serialized
-//! from [`super::rows`] instead.
+//! report ([`of`]) its folder's struct, which the text reports render too; `kt --tolerance` too
+//! ([`super::point::tolerance`]). Tables (sweeps) are serialized from [`super::rows`] instead.
 
 use serde_json::Value;
 

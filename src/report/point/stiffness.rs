@@ -219,16 +219,15 @@ impl StiffnessReport {
             };
             out.push_str(&CandidateAnswer::row(row.answer.as_ref(), self.kind, &line));
         }
-        if self.candidates.iter().any(|row| {
+        let refused = self.candidates.iter().any(|row| {
             row.kt.is_some() && matches!(row.answer, None | Some(CandidateAnswer::Refused { .. }))
-        }) {
-            if let Some(stiffness) = stiffness_spec(self.kind) {
-                let _ = writeln!(
-                    out,
-                    "K_T out of range: not evaluated, K_T {}.",
-                    stiffness.domain.describe(stiffness.unit)
-                );
-            }
+        });
+        if let (true, Some(stiffness)) = (refused, stiffness_spec(self.kind)) {
+            let _ = writeln!(
+                out,
+                "K_T out of range: not evaluated, K_T {}.",
+                stiffness.domain.describe(stiffness.unit)
+            );
         }
         let quantity = Quantity::Response.name(self.kind);
         let _ = writeln!(
