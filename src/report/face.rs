@@ -7,15 +7,17 @@
 //! every problem; a problem's columns and words are its own and live in its folder, so that a
 //! new problem is its folder and its registry line, not an arm in each report.
 
-use std::fmt::Debug;
+use std::fmt::{Debug, Write as _};
 
 use serde::Serialize;
 
+use crate::kernel::regime::Regime;
 use crate::problems::problem::Registered;
 use crate::problems::{ModelKind, Problem};
+use crate::report::number;
 use crate::study::curves::Answer;
 
-/// The heading of a K_T table: what every problem's first lines say.
+/// The heading of a K_T table: what every problem's first line says.
 #[derive(Debug, Clone, Copy)]
 pub struct KtHeading<'a> {
     /// The preset's name, sanitized.
@@ -45,6 +47,24 @@ pub struct KtRow<'a> {
     pub basis: &'a str,
 }
 
+/// A column of a problem's K_T table between the candidate's K_T and the regime: one of the
+/// answer's numbers, or a comparison every problem has.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KtColumn {
+    /// The answer's next number ([`ReportFace::kt_values`]), under `title`, right-aligned in
+    /// `width` characters.
+    Answer {
+        /// The column's title, with its unit (`w(L) (mm)`).
+        title: &'static str,
+        /// Its width.
+        width: usize,
+    },
+    /// Against the current K_T's response, signed %.
+    VsCurrent,
+    /// Against Coulomb's response, signed %.
+    VsCoulomb,
+}
+
 /// A problem as the generic reports show it.
 pub trait ReportFace: Problem + Registered {
     /// The equation of docs/theory.md that shows the problem's response never grows with K_T
@@ -55,14 +75,20 @@ pub trait ReportFace: Problem + Registered {
     /// the candidate's (flattened into it, so each problem names its own).
     type KtAnswer: Serialize + Debug + Clone;
 
-    /// The problem's part of `answer`; `None` for an answer of another problem.
+    /// What the K_T table's heading calls the problem (`twin beams`); a problem with a load
+    /// adds the force it is at.
+    const KT_TITLE: &'static str;
+    /// The K_T table's columns between K_T and the regime, in order.
+    const KT_COLUMNS: &'static [KtColumn];
+    /// The width of the regime column (its longest label).
+    const KT_REGIME_WIDTH: usize;
+
+    /// The problem's part of `answer`; `None` for an answer of another problem (while
+    /// [`Answer`] is an enum of every problem's answers).
     fn kt_answer(answer: &Answer) -> Option<Self::KtAnswer>;
 
-    /// The K_T table's heading and column titles, each line ended.
-    fn kt_heading(heading: &KtHeading) -> String;
-
-    /// One K_T table row, ended: the answer's columns, or dashes where there is none.
-    fn kt_row(row: &KtRow, answer: Option<&Self::KtAnswer>) -> String;
+    /// The answer's numbers, one per [`KtColumn::Answer`] in order, and its regime.
+    fn kt_values(answer: &Self::KtAnswer) -> (Vec<f64>, Regime);
 
     /// The problem's table in the paper report (`microslip` alone), where the paper has one.
     fn paper_table() -> Option<String> {
@@ -74,9 +100,9 @@ pub trait ReportFace: Problem + Registered {
 pub trait AnyReportFace: Send + Sync {
     /// [`ReportFace::MONOTONE_IN_STIFFNESS`].
     fn monotone_in_stiffness(&self) -> &'static str;
-    /// [`ReportFace::kt_heading`].
+    /// The K_T table's heading and column titles, each line ended.
     fn kt_heading(&self, heading: &KtHeading) -> String;
-    /// [`ReportFace::kt_row`] without an answer.
+    /// One K_T table row without an answer: dashes in the problem's columns.
     fn kt_row_unanswered(&self, row: &KtRow) -> String;
     /// [`ReportFace::paper_table`].
     fn paper_table(&self) -> Option<String>;
@@ -91,16 +117,81 @@ impl<P: ReportFace> AnyReportFace for ReportOf<P> {
     }
 
     fn kt_heading(&self, heading: &KtHeading) -> String {
-        P::kt_heading(heading)
+        let KtHeading {
+            preset,
+            force,
+            friction_stress: mu_p,
+            element,
+        } = *heading;
+        let at = match P::INFO.load {
+            Some(_) => format!(
+                " at F = {} N",
+                force.map_or_else(|| "-".to_string(), number)
+            ),
+            None => String::new(),
+        };
+        let mut out = format!(
+            "K_T candidates for preset {preset}: {}{at}, mu P = {mu_p} MPa, contact elements \
+             {element} mm\n",
+            P::KT_TITLE
+        );
+        let _ = write!(out, "{:<16} {:>12}", "source", "K_T (MPa/mm)");
+        for column in P::KT_COLUMNS {
+            let (title, width) = match *column {
+                KtColumn::Answer { title, width } => (title, width),
+                KtColumn::VsCurrent => ("vs current", 10),
+                KtColumn::VsCoulomb => ("vs Coulomb", 10),
+            };
+            let _ = write!(out, " {title:>width$}");
+        }
+        let _ = writeln!(
+            out,
+            "  {:<width$} basis",
+            "regime",
+            width = P::KT_REGIME_WIDTH
+        );
+        out
     }
 
     fn kt_row_unanswered(&self, row: &KtRow) -> String {
-        P::kt_row(row, None)
+        kt_row::<P>(row, None)
     }
 
     fn paper_table(&self) -> Option<String> {
         P::paper_table()
     }
+}
+
+/// One row of `P`'s K_T table, ended: the answer's columns, or dashes without one.
+pub(crate) fn kt_row<P: ReportFace>(row: &KtRow, answer: Option<&P::KtAnswer>) -> String {
+    let values = answer.map(P::kt_values);
+    let mut out = format!("{:<16} {:>12}", row.source, row.kt);
+    let mut numbers = values
+        .iter()
+        .flat_map(|(numbers, _)| numbers.iter().copied());
+    for column in P::KT_COLUMNS {
+        let (text, width) = match (*column, &values) {
+            (KtColumn::Answer { width, .. }, Some(_)) => (
+                numbers.next().map_or_else(|| "-".to_string(), number),
+                width,
+            ),
+            (KtColumn::VsCurrent, Some(_)) => (row.vs_current.to_string(), 10),
+            (KtColumn::VsCoulomb, Some(_)) => (row.vs_coulomb.to_string(), 10),
+            (KtColumn::Answer { width, .. }, None) => ("-".to_string(), width),
+            (KtColumn::VsCurrent | KtColumn::VsCoulomb, None) => ("-".to_string(), 10),
+        };
+        let _ = write!(out, " {text:>width$}");
+    }
+    let regime = values
+        .as_ref()
+        .map_or(row.unanswered, |(_, regime)| regime.label());
+    let _ = writeln!(
+        out,
+        "  {regime:<width$} {}",
+        row.basis,
+        width = P::KT_REGIME_WIDTH
+    );
+    out
 }
 
 /// Writes [`report_face`] from the registry.

@@ -13,7 +13,7 @@ use crate::numeric::NumericError;
 use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
-use crate::report::face::{KtHeading, KtRow, ReportFace};
+use crate::report::face::{KtColumn, ReportFace};
 use crate::report::point::cycle::{CycleFace, CycleWords};
 use crate::report::point::{InputsReport, regime_label, validity_label};
 use crate::report::rows::LapRow;
@@ -49,6 +49,28 @@ pub struct LapKtAnswer {
 
 impl ReportFace for LapJointProblem {
     const MONOTONE_IN_STIFFNESS: &'static str = "(L11)";
+    const KT_TITLE: &'static str = "double-lap joint";
+    const KT_COLUMNS: &'static [KtColumn] = &[
+        KtColumn::Answer {
+            title: "F_1 (N)",
+            width: 10,
+        },
+        KtColumn::Answer {
+            title: "a (mm)",
+            width: 8,
+        },
+        KtColumn::Answer {
+            title: "d (mm)",
+            width: 8,
+        },
+        KtColumn::Answer {
+            title: "Delta (mm)",
+            width: 12,
+        },
+        KtColumn::VsCurrent,
+        KtColumn::VsCoulomb,
+    ];
+    const KT_REGIME_WIDTH: usize = 29;
     type KtAnswer = LapKtAnswer;
 
     fn kt_answer(answer: &Answer) -> Option<LapKtAnswer> {
@@ -69,64 +91,13 @@ impl ReportFace for LapJointProblem {
         }
     }
 
-    fn kt_heading(heading: &KtHeading) -> String {
-        let KtHeading {
-            preset,
-            force,
-            friction_stress: mu_p,
-            element,
-        } = *heading;
-        let mut out = String::new();
-        let _ = writeln!(
-            out,
-            "K_T candidates for preset {preset}: double-lap joint at F = {} N, mu P = {mu_p} MPa, contact elements {element} mm",
-            force.map_or_else(|| "-".to_string(), number),
-        );
-        let _ = writeln!(
-            out,
-            "{:<16} {:>12} {:>10} {:>8} {:>8} {:>12} {:>10} {:>10}  {:<29} basis",
-            "source",
-            "K_T (MPa/mm)",
-            "F_1 (N)",
-            "a (mm)",
-            "d (mm)",
-            "Delta (mm)",
-            "vs current",
-            "vs Coulomb",
-            "regime"
-        );
-        out
-    }
-
-    fn kt_row(row: &KtRow, answer: Option<&LapKtAnswer>) -> String {
-        let KtRow {
-            source,
-            kt,
-            vs_current: off,
-            vs_coulomb: off_coulomb,
-            unanswered,
-            basis,
-        } = *row;
-        let mut out = String::new();
-        let _ = match answer {
-            Some(a) => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>10} {:>8} {:>8} {:>12} {:>10} {:>10}  {:<29} {basis}",
-                number(a.first_slip_force),
-                number(a.slide_at_inner_end),
-                number(a.slide_at_cover_ends),
-                number(a.joint_displacement),
-                off,
-                off_coulomb,
-                a.regime.label(),
-            ),
-            None => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>10} {:>8} {:>8} {:>12} {:>10} {:>10}  {unanswered:<29} {basis}",
-                "-", "-", "-", "-", "-", "-",
-            ),
-        };
-        out
+    fn kt_values(a: &LapKtAnswer) -> (Vec<f64>, Regime) {
+        (vec![
+                a.first_slip_force,
+                a.slide_at_inner_end,
+                a.slide_at_cover_ends,
+                a.joint_displacement,
+            ], a.regime)
     }
 }
 

@@ -12,7 +12,7 @@ use crate::kernel::validity::Validity;
 use crate::numeric::NumericError;
 use crate::problems::Problem;
 use crate::problems::stiffness::mm_to_um;
-use crate::report::face::{KtHeading, KtRow, ReportFace};
+use crate::report::face::{KtColumn, ReportFace};
 use crate::report::point::{InputsReport, SideBySide, regime_label, validity_label};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::{Answer, plate_point};
@@ -44,6 +44,20 @@ const PLATE_STIFFNESSES: [f64; 8] = [1.0, 10.0, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7];
 
 impl ReportFace for SqueezedPlateProblem {
     const MONOTONE_IN_STIFFNESS: &'static str = "(P10)";
+    const KT_TITLE: &'static str = "squeezed plate";
+    const KT_COLUMNS: &'static [KtColumn] = &[
+        KtColumn::Answer {
+            title: "u(L) (mm)",
+            width: 12,
+        },
+        KtColumn::VsCurrent,
+        KtColumn::VsCoulomb,
+        KtColumn::Answer {
+            title: "X_r (mm)",
+            width: 10,
+        },
+    ];
+    const KT_REGIME_WIDTH: usize = 20;
     type KtAnswer = PlateKtAnswer;
 
     fn kt_answer(answer: &Answer) -> Option<PlateKtAnswer> {
@@ -61,59 +75,8 @@ impl ReportFace for SqueezedPlateProblem {
         }
     }
 
-    fn kt_heading(heading: &KtHeading) -> String {
-        let KtHeading {
-            preset,
-            friction_stress: mu_p,
-            element,
-            ..
-        } = *heading;
-        let mut out = String::new();
-        let _ = writeln!(
-            out,
-            "K_T candidates for preset {preset}: squeezed plate, mu P = {mu_p} MPa, contact elements {element} mm",
-        );
-        let _ = writeln!(
-            out,
-            "{:<16} {:>12} {:>12} {:>10} {:>10} {:>10}  {:<20} basis",
-            "source",
-            "K_T (MPa/mm)",
-            "u(L) (mm)",
-            "vs current",
-            "vs Coulomb",
-            "X_r (mm)",
-            "regime"
-        );
-        out
-    }
-
-    fn kt_row(row: &KtRow, answer: Option<&PlateKtAnswer>) -> String {
-        let KtRow {
-            source,
-            kt,
-            vs_current: off,
-            vs_coulomb: off_coulomb,
-            unanswered,
-            basis,
-        } = *row;
-        let mut out = String::new();
-        let _ = match answer {
-            Some(a) => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>12} {:>10} {:>10} {:>10}  {:<20} {basis}",
-                number(a.end_displacement),
-                off,
-                off_coulomb,
-                number(a.micro_end),
-                a.regime.label(),
-            ),
-            None => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>12} {:>10} {:>10} {:>10}  {unanswered:<20} {basis}",
-                "-", "-", "-", "-",
-            ),
-        };
-        out
+    fn kt_values(a: &PlateKtAnswer) -> (Vec<f64>, Regime) {
+        (vec![a.end_displacement, a.micro_end], a.regime)
     }
 
     fn paper_table() -> Option<String> {

@@ -12,7 +12,7 @@ use crate::kernel::validity::Validity;
 use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
-use crate::report::face::{KtHeading, KtRow, ReportFace};
+use crate::report::face::{KtColumn, ReportFace};
 use crate::report::point::cycle::{CycleFace, CycleWords};
 use crate::report::point::{InputsReport, SideBySide, regime_label, validity_label};
 use crate::report::rows::BeamRow;
@@ -47,6 +47,24 @@ const BEAM_FORCE_FACTORS: [f64; 7] = [0.5, 1.0, 1.125, 1.25, 1.5, 2.5, 3.75];
 
 impl ReportFace for TwinBeamsProblem {
     const MONOTONE_IN_STIFFNESS: &'static str = "(T1)";
+    const KT_TITLE: &'static str = "twin beams";
+    const KT_COLUMNS: &'static [KtColumn] = &[
+        KtColumn::Answer {
+            title: "F_1 (N)",
+            width: 10,
+        },
+        KtColumn::Answer {
+            title: "X (mm)",
+            width: 10,
+        },
+        KtColumn::Answer {
+            title: "w(L) (mm)",
+            width: 11,
+        },
+        KtColumn::VsCurrent,
+        KtColumn::VsCoulomb,
+    ];
+    const KT_REGIME_WIDTH: usize = 20;
     type KtAnswer = BeamKtAnswer;
 
     fn kt_answer(answer: &Answer) -> Option<BeamKtAnswer> {
@@ -66,62 +84,8 @@ impl ReportFace for TwinBeamsProblem {
         }
     }
 
-    fn kt_heading(heading: &KtHeading) -> String {
-        let KtHeading {
-            preset,
-            force,
-            friction_stress: mu_p,
-            element,
-        } = *heading;
-        let mut out = String::new();
-        let _ = writeln!(
-            out,
-            "K_T candidates for preset {preset}: twin beams at F = {} N, mu P = {mu_p} MPa, contact elements {element} mm",
-            force.map_or_else(|| "-".to_string(), number),
-        );
-        let _ = writeln!(
-            out,
-            "{:<16} {:>12} {:>10} {:>10} {:>11} {:>10} {:>10}  {:<20} basis",
-            "source",
-            "K_T (MPa/mm)",
-            "F_1 (N)",
-            "X (mm)",
-            "w(L) (mm)",
-            "vs current",
-            "vs Coulomb",
-            "regime"
-        );
-        out
-    }
-
-    fn kt_row(row: &KtRow, answer: Option<&BeamKtAnswer>) -> String {
-        let KtRow {
-            source,
-            kt,
-            vs_current: off,
-            vs_coulomb: off_coulomb,
-            unanswered,
-            basis,
-        } = *row;
-        let mut out = String::new();
-        let _ = match answer {
-            Some(a) => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10} {:>10}  {:<20} {basis}",
-                number(a.first_macroslip_force),
-                number(a.micro_end),
-                number(a.tip_deflection),
-                off,
-                off_coulomb,
-                a.regime.label(),
-            ),
-            None => writeln!(
-                out,
-                "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10} {:>10}  {unanswered:<20} {basis}",
-                "-", "-", "-", "-", "-",
-            ),
-        };
-        out
+    fn kt_values(a: &BeamKtAnswer) -> (Vec<f64>, Regime) {
+        (vec![a.first_macroslip_force, a.micro_end, a.tip_deflection], a.regime)
     }
 
     fn paper_table() -> Option<String> {

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use crate::kernel::params::ParamSpec;
 use crate::problems::{ModelKind, Quantity};
-use crate::report::face::{KtHeading, KtRow, ReportFace, report_face};
+use crate::report::face::{KtHeading, KtRow, ReportFace, kt_row, report_face};
 use crate::report::{number, sanitize};
 use crate::study::curves::{Answer, CandidateSource, ComparedStiffness, StiffnessComparison};
 
@@ -85,7 +85,7 @@ macro_rules! candidate_answers {
             fn row(answer: Option<&CandidateAnswer>, kind: ModelKind, row: &KtRow) -> String {
                 match answer {
                     $(Some(CandidateAnswer::$variant(a)) => {
-                        <crate::problems::$folder::$problem as ReportFace>::kt_row(row, Some(a))
+                        kt_row::<crate::problems::$folder::$problem>(row, Some(a))
                     })+
                     None | Some(CandidateAnswer::Refused { .. }) => {
                         report_face(kind).kt_row_unanswered(row)
