@@ -131,3 +131,33 @@ macro_rules! deck_faces {
 }
 
 microslip_core::with_problems!(deck_faces);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fe::deck::DeckMesh;
+    use crate::fe::header::StickSlope;
+
+    /// Every problem of the registry has a deck face: a cited source, an interface set, and the
+    /// expected values of its paper data set; a header of another problem's inputs has none.
+    #[test]
+    fn every_problem_has_a_deck_face() {
+        for kind in ModelKind::ALL {
+            let face = deck_face(kind);
+            assert!(face.source().starts_with(" ("), "{kind}");
+            assert!(!face.interface_set().is_empty(), "{kind}");
+            let header = DeckHeader {
+                inputs: kind.problem().paper_inputs(),
+                loads: vec![1.0],
+                mesh: DeckMesh::Coarse,
+                stick_slope: StickSlope::Model,
+                poisson: 0.3,
+            };
+            let expected = face.expected(&header).unwrap_or_default();
+            assert!(expected.starts_with("** Expected"), "{kind}: {expected}");
+            for other in ModelKind::ALL.into_iter().filter(|&k| k != kind) {
+                assert_eq!(deck_face(other).expected(&header), None, "{kind} {other}");
+            }
+        }
+    }
+}

@@ -209,3 +209,40 @@ macro_rules! report_faces {
 }
 
 microslip_core::with_problems!(report_faces);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each problem's K_T table lines up: a row without an answer, given the titles' words, is
+    /// the title line itself; and every problem cites an equation.
+    #[test]
+    fn every_problem_s_kt_table_lines_up() {
+        for kind in ModelKind::ALL {
+            let face = report_face(kind);
+            assert!(face.monotone_in_stiffness().starts_with('('), "{kind}");
+            let heading = face.kt_heading(&KtHeading {
+                preset: "p",
+                force: Some(1.0),
+                friction_stress: "1",
+                element: "1",
+            });
+            let titles = heading.lines().nth(1).unwrap_or_default();
+            let row = face.kt_row_unanswered(&KtRow {
+                source: "source",
+                kt: "K_T (MPa/mm)",
+                vs_current: "-",
+                vs_coulomb: "-",
+                unanswered: "regime",
+                basis: "basis",
+            });
+            let words = titles.split_whitespace().count();
+            assert!(words > 4, "{kind}: {titles}");
+            assert_eq!(
+                titles.len(),
+                row.trim_end().len(),
+                "{kind}:\n{titles}\n{row}"
+            );
+        }
+    }
+}
