@@ -27,12 +27,11 @@ pub(super) fn run_cycle(
             })?;
             match format {
                 CycleFormat::Text => out.write_all(
-                    text::cycle::<crate::problems::lap::LapJointProblem>(&name, &joint, amplitude)
-                        .as_bytes(),
+                    text::cycle::<LapJointProblem>(&name, &joint, amplitude).as_bytes(),
                 )?,
                 CycleFormat::Json => write_json(
                     out,
-                    &json::cycle::<crate::problems::lap::LapJointProblem>(&name, &joint, amplitude),
+                    &json::cycle::<LapJointProblem>(&name, &joint, amplitude),
                 )?,
                 CycleFormat::Csv => {
                     let points = load::cycle_loop::<LapJointProblem>(&joint, amplitude, points)
@@ -46,13 +45,12 @@ pub(super) fn run_cycle(
     };
     let amplitude = TipForce::new(amplitude)?;
     match format {
-        CycleFormat::Text => out.write_all(
-            text::cycle::<crate::problems::twin_beams::TwinBeamsProblem>(&name, &beams, amplitude)
-                .as_bytes(),
-        )?,
+        CycleFormat::Text => {
+            out.write_all(text::cycle::<TwinBeamsProblem>(&name, &beams, amplitude).as_bytes())?
+        }
         CycleFormat::Json => write_json(
             out,
-            &json::cycle::<crate::problems::twin_beams::TwinBeamsProblem>(&name, &beams, amplitude),
+            &json::cycle::<TwinBeamsProblem>(&name, &beams, amplitude),
         )?,
         CycleFormat::Csv => {
             let points = load::cycle_loop::<TwinBeamsProblem>(&beams, amplitude, points)
