@@ -11,6 +11,8 @@ use std::path::PathBuf;
 
 use microslip::fe::header::DeckHeader;
 use microslip::fe::results::{BeamFePoint, CcxRun, PlateFePoint};
+use microslip::problems::plate::SqueezedPlateProblem;
+use microslip::problems::twin_beams::TwinBeamsProblem;
 use proptest::prelude::*;
 
 fn fixture(name: &str) -> String {
@@ -39,11 +41,16 @@ impl Run {
     }
 
     fn beam_points(&self, dat: &str) -> Result<Vec<BeamFePoint>, String> {
-        self.run(dat).beam_points().map_err(|e| e.to_string())
+        self.run(dat)
+            .points::<TwinBeamsProblem>()
+            .map_err(|e| e.to_string())
     }
 
     fn plate_point(&self, dat: &str) -> Result<PlateFePoint, String> {
-        self.run(dat).plate_point().map_err(|e| e.to_string())
+        self.run(dat)
+            .points::<SqueezedPlateProblem>()
+            .map(|mut points| points.remove(0))
+            .map_err(|e| e.to_string())
     }
 
     fn run<'a>(&'a self, dat: &'a str) -> CcxRun<'a> {

@@ -7,13 +7,30 @@
 //! `calculix-2.20-comparison.md`).
 
 use microslip::kernel::regime::Zone;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-use microslip::fe::compare::{compare_beams, compare_lap, compare_plate};
-use microslip::fe::deck::{DeckMesh, beam_deck};
+use microslip::fe::deck::DeckMesh;
 use microslip::fe::header::StickSlope;
-use microslip::fe::lap_deck::lap_deck;
-use microslip::fe::load::{beam_results, lap_results, plate_results};
+use microslip::fe::load::{LoadError, Loaded, results};
+use microslip::fe::results::{BeamFePoint, LapFePoint, PlateFePoint};
+use microslip::problems::lap::LapJointProblem;
+use microslip::problems::lap::deck::{compare_lap, lap_deck};
+use microslip::problems::plate::SqueezedPlateProblem;
+use microslip::problems::plate::deck::compare_plate;
+use microslip::problems::twin_beams::TwinBeamsProblem;
+use microslip::problems::twin_beams::deck::{beam_deck, compare_beams};
+
+fn beam_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<BeamFePoint>, LoadError> {
+    results::<TwinBeamsProblem>(path, deck)
+}
+
+fn plate_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<PlateFePoint>, LoadError> {
+    results::<SqueezedPlateProblem>(path, deck)
+}
+
+fn lap_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<LapFePoint>, LoadError> {
+    results::<LapJointProblem>(path, deck)
+}
 use microslip::{Model, Regime, TipForce, TwinBeams, TwinBeamsParams};
 
 fn fixture(name: &str) -> PathBuf {

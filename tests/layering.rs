@@ -554,22 +554,6 @@ const STILL_NAMING_A_PROBLEM: &[&str] = &[
     "cli/kt.rs",
     "cli/point.rs",
     "cli/sweep.rs",
-    "fe/compare.rs",
-    "fe/deck.rs",
-    "fe/header.rs",
-    "fe/lap_deck.rs",
-    "fe/load.rs",
-    "fe/results.rs",
-    "report/json.rs",
-    "report/mod.rs",
-    "report/point/beam.rs",
-    "report/point/cycle.rs",
-    "report/point/lap.rs",
-    "report/point/plate.rs",
-    "report/point/stiffness.rs",
-    "report/point/tolerance.rs",
-    "report/rows.rs",
-    "report/text.rs",
 ];
 
 #[test]

@@ -3,8 +3,9 @@
 
 use std::path::PathBuf;
 
-use microslip::fe::load::plate_results;
+use microslip::fe::load::results;
 use microslip::kernel::validity::Validity;
+use microslip::problems::plate::SqueezedPlateProblem;
 use microslip::problems::plate::validity::PLATE_QUANTITIES;
 use microslip::problems::plate::{ContinuumMesh, solve_plate_continuum};
 use microslip::{Model, PlateParams, SqueezedPlate};
@@ -18,7 +19,7 @@ fn fixture(name: &str) -> PathBuf {
 #[test]
 fn continuum_solver_agrees_with_calculix_on_the_thickness_mean_and_mid_thickness() {
     for (file, face_band) in [("plate-kt1e4.dat", 0.01), ("paper-plate.dat", 0.05)] {
-        let loaded = plate_results(&fixture(file), None).unwrap();
+        let loaded = results::<SqueezedPlateProblem>(&fixture(file), None).unwrap();
         let Model::Plate(plate) = loaded.header.unwrap().model().unwrap() else {
             panic!("a plate deck")
         };

@@ -30,7 +30,8 @@ pub(super) fn run_compare(
         ModelKind::Lap => {
             let mut rows = Vec::new();
             for path in results {
-                let loaded = fe::load::lap_results(path, deck).map_err(data_error)?;
+                let loaded = fe::load::results::<crate::problems::lap::LapJointProblem>(path, deck)
+                    .map_err(data_error)?;
                 if loaded.header.is_some() && rows.is_empty() {
                     note_flags_the_deck_overrides(inputs, model);
                 }
@@ -49,7 +50,7 @@ pub(super) fn run_compare(
                             .joint
                     }
                 };
-                let compared = fe::compare::compare_lap(
+                let compared = crate::problems::lap::deck::compare_lap(
                     &joint,
                     &loaded.points,
                     loaded.interface_mesh.as_ref(),
@@ -73,7 +74,9 @@ pub(super) fn run_compare(
                         .to_string(),
                 });
             };
-            let loaded = fe::load::beam_results(path, deck).map_err(data_error)?;
+            let loaded =
+                fe::load::results::<crate::problems::twin_beams::TwinBeamsProblem>(path, deck)
+                    .map_err(data_error)?;
             if loaded.header.is_some() {
                 note_flags_the_deck_overrides(inputs, model);
             }
@@ -92,8 +95,11 @@ pub(super) fn run_compare(
                         .beams
                 }
             };
-            let comparison =
-                fe::compare::compare_beams(&beams, &loaded.points, loaded.interface_mesh.as_ref());
+            let comparison = crate::problems::twin_beams::deck::compare_beams(
+                &beams,
+                &loaded.points,
+                loaded.interface_mesh.as_ref(),
+            );
             let report = report::compare::beam::BeamCompareReport::new(&source, &comparison);
             let csv = comparison
                 .rows
@@ -104,7 +110,9 @@ pub(super) fn run_compare(
         ModelKind::Plate => {
             let mut rows = Vec::new();
             for path in results {
-                let loaded = fe::load::plate_results(path, deck).map_err(data_error)?;
+                let loaded =
+                    fe::load::results::<crate::problems::plate::SqueezedPlateProblem>(path, deck)
+                        .map_err(data_error)?;
                 if loaded.header.is_some() && rows.is_empty() {
                     note_flags_the_deck_overrides(inputs, model);
                 }
@@ -117,7 +125,7 @@ pub(super) fn run_compare(
                         load_problem::<SqueezedPlateProblem>(inputs, "compare plate", Load::Used)?.1
                     }
                 };
-                rows.extend(fe::compare::compare_plate(
+                rows.extend(crate::problems::plate::deck::compare_plate(
                     &plate,
                     &loaded.points,
                     loaded.interface_mesh.as_ref(),

@@ -29,10 +29,13 @@ pub(super) fn run_cycle(
                 allowed: e.allowed(),
             })?;
             match format {
-                CycleFormat::Text => {
-                    out.write_all(text::lap_cycle(&name, &joint, amplitude).as_bytes())?
-                }
-                CycleFormat::Json => write_json(out, &json::lap_cycle(&name, &joint, amplitude))?,
+                CycleFormat::Text => out.write_all(
+                    text::cycle::<LapJointProblem>(&name, &joint, amplitude).as_bytes(),
+                )?,
+                CycleFormat::Json => write_json(
+                    out,
+                    &json::cycle::<LapJointProblem>(&name, &joint, amplitude),
+                )?,
                 CycleFormat::Csv => {
                     let points = load::cycle_loop::<LapJointProblem>(&joint, amplitude, points)
                         .map_err(points_error)?;
@@ -45,8 +48,13 @@ pub(super) fn run_cycle(
     };
     let amplitude = TipForce::new(amplitude)?;
     match format {
-        CycleFormat::Text => out.write_all(text::cycle(&name, &beams, amplitude).as_bytes())?,
-        CycleFormat::Json => write_json(out, &json::cycle(&name, &beams, amplitude))?,
+        CycleFormat::Text => {
+            out.write_all(text::cycle::<TwinBeamsProblem>(&name, &beams, amplitude).as_bytes())?
+        }
+        CycleFormat::Json => write_json(
+            out,
+            &json::cycle::<TwinBeamsProblem>(&name, &beams, amplitude),
+        )?,
         CycleFormat::Csv => {
             let points = load::cycle_loop::<TwinBeamsProblem>(&beams, amplitude, points)
                 .map_err(points_error)?;

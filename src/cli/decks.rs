@@ -23,7 +23,9 @@ pub(super) fn build_deck(
                 .map(|f| check_flag("--increment", f, Domain::FORCE_STEP, Unit::Newton))
                 .transpose()?;
             let path = deck::LoadPath { force_step };
-            deck::beam_deck_on_path(&beams, &loads, deck.mesh, slope, path)
+            crate::problems::twin_beams::deck::beam_deck_on_path(
+                &beams, &loads, deck.mesh, slope, path,
+            )
         }
         (_, Model::Lap(crate::problems::lap::problem::LapModel { joint, .. })) => {
             let loads = lap_deck_loads(&joint, deck.loads.as_deref(), slope)?;
@@ -31,7 +33,7 @@ pub(super) fn build_deck(
                 .increment
                 .map(|f| check_flag("--increment", f, Domain::FORCE_STEP, Unit::Newton))
                 .transpose()?;
-            crate::fe::lap_deck::lap_deck(
+            crate::problems::lap::deck::lap_deck(
                 &joint,
                 &loads,
                 deck.mesh,
@@ -46,7 +48,7 @@ pub(super) fn build_deck(
                      pressure P in one step (set P with --set P=...)",
                 ));
             }
-            deck::plate_deck(&plate, deck.mesh, slope)
+            crate::problems::plate::deck::plate_deck(&plate, deck.mesh, slope)
         }
     }
     .map_err(|e| CliError::Invalid(e.to_string()))
@@ -239,7 +241,7 @@ pub(super) fn lap_deck_loads(
     slope: StickSlope,
 ) -> Result<Vec<JointForce>, CliError> {
     let at_slope = joint
-        .with_tangential_stiffness(slope.value_for_lap(joint))
+        .with_tangential_stiffness(crate::problems::lap::deck::stick_slope_of(slope, joint))
         .unwrap_or(*joint);
     let Some(loads) = loads else {
         let (f1, f2, gross) = (

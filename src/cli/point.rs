@@ -9,10 +9,19 @@ use crate::problems::twin_beams::TwinBeamsProblem;
 pub(super) fn run_beam_point(out: &mut impl Write, args: &PointArgs) -> Result<(), CliError> {
     let (name, model) = load_problem::<TwinBeamsProblem>(&args.inputs, "beam", Load::Used)?;
     match args.format {
-        ReportFormat::Text => {
-            out.write_all(text::beam(&name, &model.beams, model.force).as_bytes())?
-        }
-        ReportFormat::Json => write_json(out, &json::beam(&name, &model.beams, model.force))?,
+        ReportFormat::Text => out.write_all(
+            crate::problems::twin_beams::report::BeamReport::new(&name, &model.beams, model.force)
+                .text()
+                .as_bytes(),
+        )?,
+        ReportFormat::Json => write_json(
+            out,
+            &json::of(&crate::problems::twin_beams::report::BeamReport::new(
+                &name,
+                &model.beams,
+                model.force,
+            )),
+        )?,
     }
     Ok(())
 }
@@ -35,10 +44,19 @@ pub(super) fn run_plate_point(out: &mut impl Write, args: &PlatePointArgs) -> Re
         return Err(CliError::Numeric(e.clone()));
     }
     match args.format {
-        ReportFormat::Text => {
-            out.write_all(text::plate(&name, &plate, solved.as_ref()).as_bytes())?
-        }
-        ReportFormat::Json => write_json(out, &json::plate(&name, &plate, solved.as_ref()))?,
+        ReportFormat::Text => out.write_all(
+            crate::problems::plate::report::PlateReport::new(&name, &plate, solved.as_ref())
+                .text()
+                .as_bytes(),
+        )?,
+        ReportFormat::Json => write_json(
+            out,
+            &json::of(&crate::problems::plate::report::PlateReport::new(
+                &name,
+                &plate,
+                solved.as_ref(),
+            )),
+        )?,
     }
     Ok(())
 }
@@ -66,10 +84,20 @@ pub(super) fn run_lap_point(out: &mut impl Write, args: &LapPointArgs) -> Result
         return Err(CliError::Numeric(e.clone()));
     }
     match args.format {
-        ReportFormat::Text => {
-            out.write_all(text::lap(&name, &joint, force, solved.as_ref()).as_bytes())?
-        }
-        ReportFormat::Json => write_json(out, &json::lap(&name, &joint, force, solved.as_ref()))?,
+        ReportFormat::Text => out.write_all(
+            crate::problems::lap::report::LapReport::new(&name, &joint, force, solved.as_ref())
+                .text()
+                .as_bytes(),
+        )?,
+        ReportFormat::Json => write_json(
+            out,
+            &json::of(&crate::problems::lap::report::LapReport::new(
+                &name,
+                &joint,
+                force,
+                solved.as_ref(),
+            )),
+        )?,
     }
     Ok(())
 }

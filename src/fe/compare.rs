@@ -8,14 +8,9 @@
 
 use super::results::{BeamFePoint, FeInterface, LapFePoint, PlateFePoint};
 use super::verdict::{Envelope, InterfaceMesh, MeshDifference, StiffnessMatch};
-use crate::fit::{self, FitError, FitResult, Measurement};
-use crate::kernel::params::ParamError;
+use crate::fit::{self, FitError, FitResult};
 use crate::kernel::regime::Regime;
 use crate::kernel::validity::Validity;
-use crate::problems::lap::closed_form::LapJoint;
-use crate::problems::twin_beams::TwinBeamsProblem;
-use crate::problems::twin_beams::closed_form::BeamTheory;
-use crate::{SqueezedPlate, TipForce, TwinBeams};
 
 /// One FE point of the beams beside the closed forms.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -116,58 +111,8 @@ impl BeamComparison {
     }
 }
 
-/// Compares FE points of the beams with the closed forms of `beams` (the K_T the deck gave the FE
-/// code; its nu for the shear deflection), under both beam theories whichever `beams` has. `mesh`:
-/// the FE mesh along the interface, to count the X difference in elements.
-pub fn compare_beams(
-    beams: &TwinBeams,
-    points: &[BeamFePoint],
-    mesh: Option<&InterfaceMesh>,
-) -> BeamComparison {
-    let euler_bernoulli = beams.with_theory(BeamTheory::EulerBernoulli);
-    let timoshenko = beams.with_theory(BeamTheory::Timoshenko);
-    let rows: Vec<BeamCompared> = points
-        .iter()
-        .map(|&fe| {
-            let force = TipForce::clamped(fe.force);
-            let state = euler_bernoulli.regularized(force);
-            let euler = state.tip_deflection();
-            let macroslip_start = state.micro_zone_end();
-            BeamCompared {
-                fe,
-                euler,
-                shear_corrected: euler + beams.shear_deflection(force),
-                regime: state.regime(),
-                macroslip_start,
-                shear_corrected_within: timoshenko.validity(force).expected_error,
-                macroslip_start_mesh: on_mesh(mesh, fe.interface, macroslip_start),
-            }
-        })
-        .collect();
-    let bending_only: Vec<Measurement> = rows
-        .iter()
-        .map(|r| Measurement {
-            force: r.fe.force,
-            response: r.fe.deflection - (r.shear_corrected - r.euler),
-        })
-        .collect();
-    let implied = fit::fit_curve::<TwinBeamsProblem>(
-        &euler_bernoulli,
-        &bending_only,
-        (None, None),
-        fit::Weights::Absolute,
-        &mut |_| {},
-    );
-    BeamComparison {
-        rows,
-        poisson: beams.params().poisson,
-        implied,
-        stiffness: beams.params().tangential_stiffness,
-    }
-}
-
 /// The FE zone end against the closed form's on `mesh`, when there are both.
-fn on_mesh(
+pub(crate) fn on_mesh(
     mesh: Option<&InterfaceMesh>,
     fe: Option<FeInterface>,
     closed: f64,
@@ -230,39 +175,6 @@ impl PlateCompared {
     }
 }
 
-/// Compares FE points of the plate (each at its own K_T) with the closed forms of `plate` at that
-/// K_T. Points whose K_T is outside the accepted domain cannot occur: the readers refuse them.
-/// `mesh`: the FE mesh along the contact face, to count the X_r difference in elements.
-pub fn compare_plate(
-    plate: &SqueezedPlate,
-    points: &[PlateFePoint],
-    mesh: Option<&InterfaceMesh>,
-) -> Vec<PlateCompared> {
-    points
-        .iter()
-        .map(|&fe| {
-            let at = plate.with_clamped(crate::PlateParam::Stiffness, fe.stiffness);
-            let state = at.regularized();
-            let validity = at.validity();
-            let strip_validity = validity.validity;
-            let micro_zone_end = state.micro_zone_end();
-            PlateCompared {
-                fe,
-                closed: state.end_displacement(),
-                coulomb: at.coulomb().end_displacement(),
-                regime: state.regime(),
-                micro_zone_end,
-                implied_stiffness: (strip_validity == Validity::Holds)
-                    .then(|| at.stiffness_for_end_displacement(fe.end_displacement))
-                    .flatten(),
-                strip_validity,
-                strip_within: validity.expected_error(),
-                micro_zone_end_mesh: on_mesh(mesh, fe.interface, micro_zone_end),
-            }
-        })
-        .collect()
-}
-
 /// One FE point of the double-lap joint beside the closed forms.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LapCompared {
@@ -306,59 +218,12 @@ impl LapCompared {
     }
 }
 
-/// Compares FE points of the lap joint with the closed forms of `joint` (the K_T the deck gave
-/// the FE code). `mesh`: the FE mesh along the interface, to count the zone differences in
-/// elements.
-///
-/// # Errors
-/// A point's force beyond the joint's gross-slip force (a CSV of another joint, or of a joint
-/// that slid through): the closed forms have no static state there.
-pub fn compare_lap(
-    joint: &LapJoint,
-    points: &[LapFePoint],
-    mesh: Option<&InterfaceMesh>,
-) -> Result<Vec<LapCompared>, ParamError> {
-    let length = joint.params().length;
-    points
-        .iter()
-        .map(|&fe| {
-            let force = joint.force(fe.force)?;
-            let state = joint.regularized(force);
-            let zones = (state.slide_at_inner_end(), state.slide_at_cover_ends());
-            let validity = joint.validity_at(force, state.joint_displacement());
-            let theory_validity = validity.validity;
-            let zones_mesh = mesh.zip(fe.interface).map(|(mesh, i)| {
-                [
-                    MeshDifference::on(mesh, i.slide_from_start, zones.0),
-                    // d counts from x = L: its elements are counted between the positions
-                    // L - d, its difference is d's own.
-                    MeshDifference {
-                        difference: i.slide_from_end - zones.1,
-                        ..MeshDifference::on(mesh, length - i.slide_from_end, length - zones.1)
-                    },
-                ]
-            });
-            Ok(LapCompared {
-                fe,
-                closed: state.joint_displacement(),
-                coulomb: joint.coulomb(force).joint_displacement(),
-                regime: state.regime(),
-                zones,
-                implied_stiffness: (theory_validity == Validity::Holds)
-                    .then(|| joint.stiffness_for_joint_displacement(force, fe.joint_displacement))
-                    .flatten(),
-                theory_validity,
-                theory_within: validity.expected_error,
-                zones_mesh,
-            })
-        })
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{PlateParams, TwinBeamsParams};
+    use crate::problems::plate::deck::compare_plate;
+    use crate::problems::twin_beams::deck::compare_beams;
+    use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
     #[test]
     fn closed_form_points_compare_to_zero_and_imply_their_own_stiffness() {

@@ -5,12 +5,11 @@
 use std::fmt::Write as _;
 
 use super::deck::DeckMesh;
-use crate::kernel::format::number;
+use super::face::deck_face;
+use crate::Model;
 use crate::kernel::params::{Compact, parse_number};
 use crate::problems::inputs::Inputs;
-use crate::problems::lap::closed_form::{JointForce, LapJoint};
 use crate::problems::{ModelKind, Param};
-use crate::{Model, SqueezedPlate, TipForce, TwinBeams};
 
 /// The prefix of the machine-readable header line.
 pub(crate) const HEADER_PREFIX: &str = "** microslip-deck:";
@@ -28,41 +27,8 @@ pub enum StickSlope {
 }
 
 impl StickSlope {
-    /// The stick slope (MPa/mm) for `beams`.
-    pub(crate) fn value_for_beams(self, beams: &TwinBeams) -> f64 {
-        let p = beams.params();
-        match self {
-            StickSlope::Model => p.tangential_stiffness,
-            StickSlope::NearCoulomb => 25.0 * p.youngs_modulus / p.half_height,
-        }
-    }
-
-    /// The stick slope (MPa/mm) for `plate`.
-    pub(crate) fn value_for_plate(self, plate: &SqueezedPlate) -> f64 {
-        let p = plate.params();
-        match self {
-            StickSlope::Model => p.tangential_stiffness,
-            StickSlope::NearCoulomb => {
-                100.0 * p.youngs_modulus / ((1.0 - p.poisson * p.poisson) * p.thickness)
-            }
-        }
-    }
-
-    /// The stick slope (MPa/mm) for `joint`: near Coulomb, the elastic slip's decay length a
-    /// tenth of the thinner half (min(t1/2, t2)), as the other decks resolve theirs.
-    pub(crate) fn value_for_lap(self, joint: &LapJoint) -> f64 {
-        let p = joint.params();
-        match self {
-            StickSlope::Model => p.tangential_stiffness,
-            StickSlope::NearCoulomb => {
-                let decay = 0.1 * (0.5 * p.inner_thickness).min(p.cover_thickness);
-                let c = 1.0 / p.inner_stiffness() + 1.0 / p.covers_stiffness();
-                1.0 / (2.0 * c * decay * decay)
-            }
-        }
-    }
-
-    fn name(self) -> &'static str {
+    /// The name in the header line.
+    pub(crate) fn name(self) -> &'static str {
         match self {
             StickSlope::Model => "model",
             StickSlope::NearCoulomb => "near-coulomb",
@@ -97,61 +63,6 @@ pub struct HeaderError {
 }
 
 impl DeckHeader {
-    /// The header of a twin-beam deck.
-    pub fn beams(
-        beams: &TwinBeams,
-        loads: &[TipForce],
-        mesh: DeckMesh,
-        stick_slope: StickSlope,
-    ) -> DeckHeader {
-        let mut structure = beams.params();
-        structure.tangential_stiffness = stick_slope.value_for_beams(beams);
-        DeckHeader {
-            inputs: Inputs::Beam(crate::problems::twin_beams::problem::BeamsInputs {
-                structure,
-                force: loads.last().map_or(0.0, |f| f.newtons()),
-            }),
-            loads: loads.iter().map(|f| f.newtons()).collect(),
-            mesh,
-            stick_slope,
-            poisson: structure.poisson,
-        }
-    }
-
-    /// The header of a double-lap joint deck.
-    pub fn lap(
-        joint: &LapJoint,
-        loads: &[JointForce],
-        mesh: DeckMesh,
-        stick_slope: StickSlope,
-    ) -> DeckHeader {
-        let mut structure = joint.params();
-        structure.tangential_stiffness = stick_slope.value_for_lap(joint);
-        DeckHeader {
-            inputs: Inputs::Lap(crate::problems::lap::problem::LapInputs {
-                structure,
-                force: loads.last().map_or(0.0, |f| f.newtons()),
-            }),
-            loads: loads.iter().map(|f| f.newtons()).collect(),
-            mesh,
-            stick_slope,
-            poisson: super::lap_deck::LAP_POISSON,
-        }
-    }
-
-    /// The header of a squeezed-plate deck.
-    pub fn plate(plate: &SqueezedPlate, mesh: DeckMesh, stick_slope: StickSlope) -> DeckHeader {
-        let mut params = plate.params();
-        params.tangential_stiffness = stick_slope.value_for_plate(plate);
-        DeckHeader {
-            inputs: Inputs::Plate(params),
-            loads: Vec::new(),
-            mesh,
-            stick_slope,
-            poisson: params.poisson,
-        }
-    }
-
     /// The model the header describes, validated.
     ///
     /// # Errors
@@ -163,10 +74,8 @@ impl DeckHeader {
     /// The comment block that opens the deck.
     pub(crate) fn to_comment(&self) -> String {
         let kind = self.inputs.kind();
-        let source = match kind {
-            ModelKind::Beam | ModelKind::Plate => " (Ligier & Bonhote 2014)",
-            ModelKind::Lap => " (docs/theory.md section 9)",
-        };
+        let face = deck_face(kind);
+        let source = face.source();
         let mut text = format!(
             "** microslip {}: CalculiX (ccx 2.20) deck for the {}{source}\n",
             env!("CARGO_PKG_VERSION"),
@@ -182,8 +91,8 @@ impl DeckHeader {
              ** Run it:      ccx -i JOB        (this file saved as JOB.inp)\n\
              ** Compare it:  {compare}"
         );
-        if let Ok(model) = self.model() {
-            text.push_str(&self.expected(&model));
+        if let Some(expected) = face.expected(self) {
+            text.push_str(&expected);
         }
         text
     }
@@ -214,78 +123,6 @@ impl DeckHeader {
             let _ = write!(line, " {}={}", load.name(), loads.join(","));
         }
         line
-    }
-
-    /// The closed-form values the run should reproduce, as comment lines.
-    fn expected(&self, model: &Model) -> String {
-        let mut text = String::new();
-        match model {
-            Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. }) => {
-                // The columns are Euler-Bernoulli whatever theory the preset chose: "+ shear"
-                // adds the shear deflection once (a Timoshenko model's w(L) already holds it).
-                let beams = &beams.with_theory(
-                    crate::problems::twin_beams::closed_form::BeamTheory::EulerBernoulli,
-                );
-                let _ = writeln!(
-                    text,
-                    "** Expected from the closed forms (Euler-Bernoulli, the paper's model; \"+ shear\"\n\
-                     ** adds each beam's shear deflection F L / (kappa G b 2h), kappa = 5/6, nu = {}):\n\
-                     **   F (N) | w(L) Coulomb (mm) | w(L) regularized (mm) | + shear (mm) | X (mm) | regime",
-                    Compact(self.poisson)
-                );
-                for &f in &self.loads {
-                    let force = TipForce::clamped(f);
-                    let state = beams.regularized(force);
-                    let w = state.tip_deflection();
-                    let _ = writeln!(
-                        text,
-                        "**   {} | {} | {} | {} | {} | {}",
-                        number(f),
-                        number(beams.coulomb(force).tip_deflection()),
-                        number(w),
-                        number(w + beams.shear_deflection(force)),
-                        number(state.micro_zone_end()),
-                        state.regime().label()
-                    );
-                }
-            }
-            Model::Plate(plate) => {
-                let state = plate.regularized();
-                let coulomb = plate.coulomb();
-                let _ = writeln!(
-                    text,
-                    "** Expected from the closed forms (strip theory, the paper's model):\n\
-                     **   u(L) regularized {} mm, Coulomb {} mm; X_r {} mm, X_s {} mm; regime {}",
-                    number(state.end_displacement()),
-                    number(coulomb.end_displacement()),
-                    number(state.micro_zone_end()),
-                    number(coulomb.stick_end()),
-                    state.regime().label()
-                );
-            }
-            Model::Lap(crate::problems::lap::problem::LapModel { joint, .. }) => {
-                let _ = writeln!(
-                    text,
-                    "** Expected from the closed forms (shear lag):\n\
-                     **   F (N) | Delta Coulomb (mm) | Delta regularized (mm) | a (mm) | d (mm) | regime"
-                );
-                for &f in &self.loads {
-                    let force = joint.clamped_force(f);
-                    let state = joint.regularized(force);
-                    let _ = writeln!(
-                        text,
-                        "**   {} | {} | {} | {} | {} | {}",
-                        number(f),
-                        number(joint.coulomb(force).joint_displacement()),
-                        number(state.joint_displacement()),
-                        number(state.slide_at_inner_end()),
-                        number(state.slide_at_cover_ends()),
-                        state.regime().label()
-                    );
-                }
-            }
-        }
-        text
     }
 
     /// Reads the header line of a deck, if `text` has one, and validates it as a preset is
@@ -415,7 +252,7 @@ fn is_poisson(param: Param) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{PlateParams, TwinBeamsParams};
+    use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
     #[test]
     fn beam_header_reads_back_what_was_written() {
@@ -426,7 +263,12 @@ mod tests {
         })
         .unwrap();
         let loads = [1e-3, 40.0, 100.5].map(|f| TipForce::new(f).unwrap());
-        let header = DeckHeader::beams(&beams, &loads, DeckMesh::Fine, StickSlope::Model);
+        let header = crate::problems::twin_beams::deck::header(
+            &beams,
+            &loads,
+            DeckMesh::Fine,
+            StickSlope::Model,
+        );
         let parsed = DeckHeader::parse(&header.to_comment()).unwrap().unwrap();
         assert_eq!(parsed, header);
     }
@@ -438,9 +280,13 @@ mod tests {
         let timoshenko = euler.with_theory(BeamTheory::Timoshenko);
         let loads = [TipForce::new(40.0).unwrap()];
         let text = |b: &TwinBeams| {
-            let h = DeckHeader::beams(b, &loads, DeckMesh::Coarse, StickSlope::Model);
-            let model = h.model().unwrap();
-            h.expected(&model)
+            let h = crate::problems::twin_beams::deck::header(
+                b,
+                &loads,
+                DeckMesh::Coarse,
+                StickSlope::Model,
+            );
+            deck_face(h.inputs.kind()).expected(&h).unwrap()
         };
         // w(L) regularized at 40 N (stick): 0.011121 mm Euler-Bernoulli, + shear 2.97e-4 mm.
         let expected = text(&timoshenko);
@@ -459,7 +305,7 @@ mod tests {
     #[test]
     fn near_coulomb_header_records_the_stiff_slope() {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
-        let header = DeckHeader::beams(
+        let header = crate::problems::twin_beams::deck::header(
             &beams,
             &[TipForce::new(40.0).unwrap()],
             DeckMesh::Coarse,
@@ -479,7 +325,8 @@ mod tests {
     #[test]
     fn plate_header_reads_back_and_states_the_expected_values() {
         let plate = SqueezedPlate::new(PlateParams::PAPER).unwrap();
-        let header = DeckHeader::plate(&plate, DeckMesh::Coarse, StickSlope::Model);
+        let header =
+            crate::problems::plate::deck::header(&plate, DeckMesh::Coarse, StickSlope::Model);
         let text = header.to_comment();
         assert_eq!(DeckHeader::parse(&text).unwrap().unwrap(), header);
         assert!(text.contains("u(L) regularized 9.459"), "{text}");
@@ -491,8 +338,13 @@ mod tests {
     fn an_edited_header_is_refused_like_a_preset() {
         let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
         let loads = [40.0, 60.0].map(|f| TipForce::new(f).unwrap());
-        let good =
-            DeckHeader::beams(&beams, &loads, DeckMesh::Coarse, StickSlope::Model).to_comment();
+        let good = crate::problems::twin_beams::deck::header(
+            &beams,
+            &loads,
+            DeckMesh::Coarse,
+            StickSlope::Model,
+        )
+        .to_comment();
         let edit = |from: &str, to: &str| {
             assert!(good.contains(from), "{from}");
             DeckHeader::parse(&good.replacen(from, to, 1))

@@ -5,11 +5,10 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
+pub use super::face::AnyLoaded;
+use super::face::Deck;
 use super::header::DeckHeader;
-use super::results::{
-    BeamFePoint, CcxRun, LapFePoint, PlateFePoint, ResultsError, beam_points_from_csv,
-    lap_points_from_csv, plate_points_from_csv,
-};
+use super::results::CcxRun;
 use super::verdict::InterfaceMesh;
 use crate::file::{Kinds, Size, read_capped};
 use crate::problems::ModelKind;
@@ -116,19 +115,18 @@ fn check_kind(
 }
 
 /// The points of the `.dat` at `path`, read with its already read deck.
-fn ccx_points<P>(
+fn ccx_points<P: Deck>(
     path: &Path,
     header: DeckHeader,
     deck_text: &str,
-    from_run: impl Fn(&CcxRun) -> Result<Vec<P>, ResultsError>,
-) -> Result<Loaded<P>, LoadError> {
+) -> Result<Loaded<P::FePoint>, LoadError> {
     let dat = read(path, "an FE result file")?;
     let run = CcxRun {
         header: &header,
         deck: deck_text,
         dat: &dat,
     };
-    let points = from_run(&run).map_err(|e| fail(path, e.to_string()))?;
+    let points = run.points::<P>().map_err(|e| fail(path, e.to_string()))?;
     let interface_mesh = Some(
         run.interface_mesh()
             .map_err(|e| fail(path, e.to_string()))?,
@@ -140,27 +138,42 @@ fn ccx_points<P>(
     })
 }
 
-fn beam_run(run: &CcxRun) -> Result<Vec<BeamFePoint>, ResultsError> {
-    run.beam_points()
+/// Where FE points are read from: a `.dat` with its deck (header and text already read), or a
+/// CSV. Which problem's points it holds is the reader's type parameter ([`Source::points`]).
+pub(crate) enum Source<'a> {
+    /// CalculiX output at `path`, of the deck whose header and text are given.
+    Ccx {
+        /// The `.dat`.
+        path: &'a Path,
+        /// The deck's header.
+        header: DeckHeader,
+        /// The deck's text.
+        deck_text: String,
+    },
+    /// A CSV curve at `path`.
+    Csv(&'a Path),
 }
 
-fn plate_run(run: &CcxRun) -> Result<Vec<PlateFePoint>, ResultsError> {
-    run.plate_point().map(|p| vec![p])
-}
-
-fn lap_run(run: &CcxRun) -> Result<Vec<LapFePoint>, ResultsError> {
-    run.lap_points()
-}
-
-/// FE points of any model.
-#[derive(Debug, Clone, PartialEq)]
-pub enum AnyLoaded {
-    /// Twin-beam points.
-    Beam(Loaded<BeamFePoint>),
-    /// Squeezed-plate points.
-    Plate(Loaded<PlateFePoint>),
-    /// Double-lap joint points.
-    Lap(Loaded<LapFePoint>),
+impl Source<'_> {
+    /// The points of the source, as problem `P`'s.
+    pub(crate) fn points<P: Deck>(self) -> Result<Loaded<P::FePoint>, LoadError> {
+        match self {
+            Source::Ccx {
+                path,
+                header,
+                deck_text,
+            } => ccx_points::<P>(path, header, &deck_text),
+            Source::Csv(path) => {
+                let text = read(path, "an FE result file")?;
+                let points = P::csv_points(&text).map_err(|e| fail(path, e.to_string()))?;
+                Ok(Loaded {
+                    header: None,
+                    points,
+                    interface_mesh: None,
+                })
+            }
+        }
+    }
 }
 
 /// The points of `path`, of whichever model its deck is (CalculiX), or of `csv_model` (CSV: the
@@ -176,70 +189,34 @@ pub fn any_results(
     if is_ccx(path)? {
         // The deck says which model; it is read once.
         let (header, deck_text) = read_deck(path, deck)?;
-        return match header.inputs.kind() {
-            ModelKind::Beam => ccx_points(path, header, &deck_text, beam_run).map(AnyLoaded::Beam),
-            ModelKind::Plate => {
-                ccx_points(path, header, &deck_text, plate_run).map(AnyLoaded::Plate)
-            }
-            ModelKind::Lap => ccx_points(path, header, &deck_text, lap_run).map(AnyLoaded::Lap),
+        let kind = header.inputs.kind();
+        let source = Source::Ccx {
+            path,
+            header,
+            deck_text,
         };
+        return AnyLoaded::read(kind, source);
     }
-    match csv_model {
-        ModelKind::Beam => beam_results(path, deck).map(AnyLoaded::Beam),
-        ModelKind::Plate => plate_results(path, deck).map(AnyLoaded::Plate),
-        ModelKind::Lap => lap_results(path, deck).map(AnyLoaded::Lap),
-    }
+    AnyLoaded::read(csv_model, Source::Csv(path))
 }
 
-/// Beam points from a `.dat` (with its deck) or a CSV `F_N,w_mm`.
+/// Problem `P`'s points from a `.dat` (with its deck, which must be of `P`) or a CSV in `P`'s
+/// measurement format (`F_N,w_mm` for the beams, `KT_MPa_per_mm,u_mm` for the plate,
+/// `F_N,Delta_mm` for the lap joint).
 ///
 /// # Errors
 /// [`LoadError`] naming the file and, where there is one, the line.
-pub fn beam_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<BeamFePoint>, LoadError> {
-    results(path, deck, ModelKind::Beam, beam_run, beam_points_from_csv)
-}
-
-/// Plate points from a `.dat` (with its deck) or a CSV `KT_MPa_per_mm,u_mm`.
-///
-/// # Errors
-/// [`LoadError`] naming the file and, where there is one, the line.
-pub fn plate_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<PlateFePoint>, LoadError> {
-    results(
-        path,
-        deck,
-        ModelKind::Plate,
-        plate_run,
-        plate_points_from_csv,
-    )
-}
-
-/// Lap-joint points from a `.dat` (with its deck) or a CSV `F_N,Delta_mm`.
-///
-/// # Errors
-/// [`LoadError`] naming the file and, where there is one, the line.
-pub fn lap_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<LapFePoint>, LoadError> {
-    results(path, deck, ModelKind::Lap, lap_run, lap_points_from_csv)
-}
-
-/// The points of `path`: from CalculiX output (with its deck, which must be of `kind`) or a CSV.
-fn results<P>(
-    path: &Path,
-    deck: Option<&Path>,
-    kind: ModelKind,
-    from_run: impl Fn(&CcxRun) -> Result<Vec<P>, ResultsError>,
-    from_csv: impl Fn(&str) -> Result<Vec<P>, ResultsError>,
-) -> Result<Loaded<P>, LoadError> {
+pub fn results<P: Deck>(path: &Path, deck: Option<&Path>) -> Result<Loaded<P::FePoint>, LoadError> {
     if is_ccx(path)? {
         let (header, deck_text) = read_deck(path, deck)?;
-        check_kind(&header, path, deck, kind)?;
-        ccx_points(path, header, &deck_text, from_run)
+        check_kind(&header, path, deck, P::KIND)?;
+        Source::Ccx {
+            path,
+            header,
+            deck_text,
+        }
+        .points::<P>()
     } else {
-        let text = read(path, "an FE result file")?;
-        let points = from_csv(&text).map_err(|e| fail(path, e.to_string()))?;
-        Ok(Loaded {
-            header: None,
-            points,
-            interface_mesh: None,
-        })
+        Source::Csv(path).points::<P>()
     }
 }

@@ -1,7 +1,9 @@
 //! Benchmarking an external FE code: input decks for CalculiX (Abaqus keyword syntax) and the
 //! comparison of its results with the closed forms.
 //!
-//! - [`deck`]: the decks, as text (deterministic; no I/O); the lap joint's in [`lap_deck`].
+//! - [`face`]: [`Deck`](face::Deck), what a problem's deck, reader and comparison are (each
+//!   problem's in its folder, `src/problems/<name>/deck.rs`), and their dispatch from the registry.
+//! - [`deck`]: what every deck is written with (mesh, size limit, load path, cards).
 //! - [`header`]: the header a deck starts with, which `compare` reads back.
 //! - [`results`]: readers of CalculiX's `.dat` output and of plain CSV from any FE code.
 //! - [`compare`]: FE values against both closed forms, point by point, and the K_T they imply.
@@ -14,10 +16,10 @@
 
 pub mod compare;
 pub mod deck;
+pub mod face;
 pub mod header;
-pub mod lap_deck;
 pub mod load;
-mod mesh;
+pub(crate) mod mesh;
 pub mod results;
 pub mod run;
 pub mod verdict;

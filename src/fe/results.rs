@@ -8,15 +8,12 @@ use std::collections::HashMap;
 
 use thiserror::Error;
 
-use super::deck::sets;
+use super::face::{Deck, deck_face};
 use super::header::DeckHeader;
-use super::lap_deck::sets as lap_sets;
 use super::verdict::InterfaceMesh;
 use crate::kernel::params::{Compact, Domain, Unit};
-use crate::kernel::regime::{Law, Regime};
+use crate::kernel::regime::Regime;
 use crate::measured::{self as data, Curve, MEASURED_DEFLECTION, MEASURED_JOINT_DISPLACEMENT};
-use crate::problems::inputs::Inputs;
-use crate::problems::lap::closed_form::zones_regime;
 
 /// What is wrong with an FE result file.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
@@ -116,10 +113,10 @@ pub struct CcxRun<'a> {
 
 /// One block of a `.dat` file: a quantity of a node set at one time.
 #[derive(Debug, Clone, PartialEq)]
-struct DatBlock {
-    set: String,
-    time: f64,
-    rows: Vec<(usize, [f64; 3])>,
+pub(crate) struct DatBlock {
+    pub(crate) set: String,
+    pub(crate) time: f64,
+    pub(crate) rows: Vec<(usize, [f64; 3])>,
 }
 
 /// The CSV form of the plate curve.
@@ -196,175 +193,23 @@ pub fn plate_points_from_csv(text: &str) -> Result<Vec<PlateFePoint>, ResultsErr
 }
 
 impl CcxRun<'_> {
+    /// The points of the run, as problem `P`'s: what its deck's load steps give.
+    ///
+    /// # Errors
+    /// A deck of another problem (naming the command that reads it), a malformed `.dat` line, or
+    /// a result the deck asks for and the `.dat` lacks.
+    pub fn points<P: Deck>(&self) -> Result<Vec<P::FePoint>, ResultsError> {
+        let params = P::from_inputs(&self.header.inputs).ok_or_else(|| self.other_deck())?;
+        P::ccx_points(self, &params)
+    }
+
     /// Results asked for as one problem's of a deck of another: the command that reads them.
-    fn other_deck(&self) -> ResultsError {
+    pub(crate) fn other_deck(&self) -> ResultsError {
         let kind = self.header.inputs.kind();
         ResultsError::Missing(format!(
             "the deck is a {kind} deck; use `microslip compare {kind}`"
         ))
     }
-
-    /// The beam points of a beam deck's run: one per load step that CalculiX finished.
-    ///
-    /// # Errors
-    /// A malformed `.dat` line, or no result for the deck's first load step (a run that failed
-    /// before it, or the `.dat` of another deck).
-    pub fn beam_points(&self) -> Result<Vec<BeamFePoint>, ResultsError> {
-        let Inputs::Beam(crate::problems::twin_beams::problem::BeamsInputs { structure, .. }) =
-            self.header.inputs
-        else {
-            return Err(self.other_deck());
-        };
-        let blocks = parse_dat(self.dat)?;
-        let nodes = parse_nodes(self.deck)?;
-        let deck_sets = parse_node_sets(self.deck);
-        let saturation = structure.friction * structure.pressure / structure.tangential_stiffness;
-        let loads = &self.header.loads;
-        let mut points = Vec::with_capacity(loads.len());
-        for n in 0..loads.len() {
-            let (force, time) = (loads[n], load_step_time(n));
-            let step = || load_step_label(n, loads);
-            let [tip, lower, upper] =
-                [sets::BEAM_TIP, sets::BEAM_LOWER_FACE, sets::BEAM_UPPER_FACE].map(|set| {
-                    complete_block(&blocks, &deck_sets, set, time).map_err(|why| {
-                        if points.is_empty() || why.starts_with("no ") {
-                            ResultsError::Missing(format!(
-                                "{}: {why}; the .dat holds {} of the deck's {} load steps (did \
-                                 ccx finish, and is this the .dat of this deck?)",
-                                step(),
-                                points.len(),
-                                loads.len()
-                            ))
-                        } else {
-                            ResultsError::Missing(format!("{}: {why}", step()))
-                        }
-                    })
-                });
-            let (tip, lower, upper) = (tip?, lower?, upper?);
-            let deflection = mean(tip.rows.iter().map(|(_, u)| u[1]));
-            let (xs, slips) = relative_slip(&nodes, lower, Some(upper))?;
-            points.push(BeamFePoint {
-                force,
-                deflection,
-                interface: Some(interface_state(&xs, &slips, saturation)),
-            });
-        }
-        Ok(points)
-    }
-
-    /// The plate point of a plate deck's run.
-    ///
-    /// # Errors
-    /// A malformed `.dat` line, or no result at the end of the step.
-    pub fn plate_point(&self) -> Result<PlateFePoint, ResultsError> {
-        let Inputs::Plate(plate) = self.header.inputs else {
-            return Err(self.other_deck());
-        };
-        let blocks = parse_dat(self.dat)?;
-        let nodes = parse_nodes(self.deck)?;
-        let deck_sets = parse_node_sets(self.deck);
-        let [end, face_nodes] = [sets::PLATE_END, sets::PLATE_FACE].map(|set| {
-            complete_block(&blocks, &deck_sets, set, 1.0).map_err(|why| {
-                ResultsError::Missing(format!(
-                    "at the end of the step (time 1): {why} (did ccx finish, and is this the .dat \
-                     of this deck?)"
-                ))
-            })
-        });
-        let (end, face_nodes) = (end?, face_nodes?);
-        let column = column_of(&nodes, end)?;
-        let mean = simpson_mean(&column);
-        let face = column[0].1;
-        let mid = column[column.len() / 2].1;
-        let (xs, slips) = relative_slip(&nodes, face_nodes, None)?;
-        let saturation = plate.friction * plate.pressure / plate.tangential_stiffness;
-        Ok(PlateFePoint {
-            stiffness: plate.tangential_stiffness,
-            end_displacement: mean,
-            through_thickness: Some([face, mid]),
-            interface: Some(interface_state(&xs, &slips, saturation)),
-        })
-    }
-    /// The lap-joint points of a lap deck's run: one per load step that CalculiX finished, each
-    /// measured from the end of the clamping step (step 1, time 1), as the deck's header says.
-    ///
-    /// # Errors
-    /// A malformed `.dat` line, no result at the end of the clamping step or of the deck's first
-    /// load step (a run that failed before it, or the `.dat` of another deck).
-    pub fn lap_points(&self) -> Result<Vec<LapFePoint>, ResultsError> {
-        let Inputs::Lap(crate::problems::lap::problem::LapInputs { structure, .. }) =
-            self.header.inputs
-        else {
-            return Err(self.other_deck());
-        };
-        let blocks = parse_dat(self.dat)?;
-        let nodes = parse_nodes(self.deck)?;
-        let deck_sets = parse_node_sets(self.deck);
-        let state_at = |time: f64, what: &dyn Fn() -> String| -> Result<LapState, String> {
-            let [inner, cover, inner_face, cover_face] = [
-                lap_sets::LAP_INNER_END,
-                lap_sets::LAP_COVER_END,
-                lap_sets::LAP_INNER_FACE,
-                lap_sets::LAP_COVER_FACE,
-            ]
-            .map(|set| {
-                complete_block(&blocks, &deck_sets, set, time)
-                    .map_err(|why| format!("{}: {why}", what()))
-            });
-            let mean = |block: &DatBlock| {
-                thickness_mean(&nodes, block).map_err(|e| format!("{}: {e}", what()))
-            };
-            let (xs, slips) = facing_slip(&nodes, inner_face?, cover_face?)
-                .map_err(|e| format!("{}: {e}", what()))?;
-            Ok(LapState {
-                joint_displacement: mean(inner?)? - mean(cover?)?,
-                xs,
-                slips,
-            })
-        };
-        let clamped = state_at(1.0, &|| {
-            "at the end of the clamping step (time 1)".to_string()
-        })
-        .map_err(|why| {
-            ResultsError::Missing(format!(
-                "{why} (did ccx finish, and is this the .dat of this deck?)"
-            ))
-        })?;
-        let saturation = structure.friction * structure.pressure / structure.tangential_stiffness;
-        let loads = &self.header.loads;
-        let mut points = Vec::with_capacity(loads.len());
-        for n in 0..loads.len() {
-            let (force, time) = (loads[n], load_step_time(n));
-            let step = || load_step_label(n, loads);
-            let state = state_at(time, &step).map_err(|why| {
-                ResultsError::Missing(format!(
-                    "{why}; the .dat holds {} of the deck's {} load steps (did ccx finish, and is \
-                     this the .dat of this deck?)",
-                    points.len(),
-                    loads.len()
-                ))
-            })?;
-            let slips: Vec<f64> = state
-                .slips
-                .iter()
-                .zip(&clamped.slips)
-                .map(|(s, s0)| s - s0)
-                .collect();
-            points.push(LapFePoint {
-                force,
-                joint_displacement: state.joint_displacement - clamped.joint_displacement,
-                interface: Some(lap_interface_state(&state.xs, &slips, saturation)),
-            });
-        }
-        Ok(points)
-    }
-}
-
-/// What a lap run's `.dat` gives at one time: Delta (not yet zeroed) and the slip profile.
-struct LapState {
-    joint_displacement: f64,
-    xs: Vec<f64>,
-    slips: Vec<f64>,
 }
 
 impl CcxRun<'_> {
@@ -375,15 +220,7 @@ impl CcxRun<'_> {
     /// A malformed `*NODE` line, a node of the set the deck does not list, or a set that is not a
     /// line of quadratic elements.
     pub fn interface_mesh(&self) -> Result<InterfaceMesh, ResultsError> {
-        let set = match self.header.inputs {
-            Inputs::Beam(crate::problems::twin_beams::problem::BeamsInputs { .. }) => {
-                sets::BEAM_LOWER_FACE
-            }
-            Inputs::Plate(_) => sets::PLATE_FACE,
-            Inputs::Lap(crate::problems::lap::problem::LapInputs { .. }) => {
-                lap_sets::LAP_INNER_FACE
-            }
-        };
+        let set = deck_face(self.header.inputs.kind()).interface_set();
         let nodes = parse_nodes(self.deck)?;
         let ids = parse_node_sets(self.deck).remove(set).unwrap_or_default();
         let xs: Vec<f64> = ids
@@ -401,12 +238,12 @@ impl CcxRun<'_> {
 
 /// The total time at the end of load `n` (from 0) of a deck: step 1 applies the pressure, load n
 /// ends step n + 2, at total time n + 2.
-fn load_step_time(n: usize) -> f64 {
+pub(crate) fn load_step_time(n: usize) -> f64 {
     (n + 2) as f64
 }
 
 /// "load step 2 of 4 (F = 100 N, time 3)": load `n` (from 0) of `loads`, for error messages.
-fn load_step_label(n: usize, loads: &[f64]) -> String {
+pub(crate) fn load_step_label(n: usize, loads: &[f64]) -> String {
     format!(
         "load step {} of {} (F = {} N, time {})",
         n + 1,
@@ -428,7 +265,7 @@ fn find<'a>(blocks: &'a [DatBlock], set: &str, time: f64) -> Option<&'a DatBlock
 /// lists, each once. A `.dat` cut short, or edited, fails here with what is missing, instead of
 /// giving a mean or a profile over part of the set (a plate `.dat` cut inside its `UEND` block
 /// used to give a thickness mean 40 % low and an implied K_T 70 times too stiff).
-fn complete_block<'a>(
+pub(crate) fn complete_block<'a>(
     blocks: &'a [DatBlock],
     deck_sets: &HashMap<String, Vec<usize>>,
     set: &str,
@@ -500,7 +337,7 @@ fn card_is(card: &str, name: &str) -> bool {
 }
 
 /// The node sets a deck defines (`*NSET, NSET=NAME` then node numbers), by upper-case name.
-fn parse_node_sets(deck: &str) -> HashMap<String, Vec<usize>> {
+pub(crate) fn parse_node_sets(deck: &str) -> HashMap<String, Vec<usize>> {
     let mut found: HashMap<String, Vec<usize>> = HashMap::new();
     for (_, card, data) in deck_data_lines(deck).filter(|(_, card, _)| card_is(card, "*NSET")) {
         let name = card
@@ -518,12 +355,15 @@ fn parse_node_sets(deck: &str) -> HashMap<String, Vec<usize>> {
     found
 }
 
-fn mean(values: impl Iterator<Item = f64>) -> f64 {
+pub(crate) fn mean(values: impl Iterator<Item = f64>) -> f64 {
     let (sum, count) = values.fold((0.0, 0usize), |(s, n), v| (s + v, n + 1));
     sum / count.max(1) as f64
 }
 
-fn node_coordinate(nodes: &HashMap<usize, [f64; 3]>, id: usize) -> Result<[f64; 3], ResultsError> {
+pub(crate) fn node_coordinate(
+    nodes: &HashMap<usize, [f64; 3]>,
+    id: usize,
+) -> Result<[f64; 3], ResultsError> {
     nodes.get(&id).copied().ok_or_else(|| {
         ResultsError::Missing(format!(
             "node {id} of the .dat is not in the deck's *NODE list: the .dat is of another deck"
@@ -533,7 +373,7 @@ fn node_coordinate(nodes: &HashMap<usize, [f64; 3]>, id: usize) -> Result<[f64; 
 
 /// Positions x (mm) and slips |u_other - u| (mm) along an interface, in x order. `other` is the
 /// facing surface's node set (same x positions); `None` for a fixed rigid plane.
-fn relative_slip(
+pub(crate) fn relative_slip(
     nodes: &HashMap<usize, [f64; 3]>,
     own: &DatBlock,
     other: Option<&DatBlock>,
@@ -568,7 +408,7 @@ fn relative_slip(
 /// The regime and the start of the macroslip zone at the free end from a slip profile: macroslip
 /// where |s| >= the saturation slip mu P / K_T. The start is found walking from the free end toward
 /// x = 0 and interpolated linearly between the last sliding node and the first one that does not.
-fn interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> FeInterface {
+pub(crate) fn interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> FeInterface {
     let n = xs.len();
     let last = n.saturating_sub(1);
     if n == 0 || slips[last] < saturation {
@@ -598,7 +438,7 @@ fn interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> FeInterface {
 /// The (y, u_x) of a block's nodes, which make one column through a thickness (x fixed), sorted
 /// by y: the corner and mid-side nodes of a column of quadratic elements, an odd number, 3 or
 /// more.
-fn column_of(
+pub(crate) fn column_of(
     nodes: &HashMap<usize, [f64; 3]>,
     block: &DatBlock,
 ) -> Result<Vec<(f64, f64)>, ResultsError> {
@@ -620,7 +460,7 @@ fn column_of(
 
 /// The thickness mean of u_x over a column ([`column_of`]): Simpson's rule over each quadratic
 /// element gives it exactly for the element's field.
-fn simpson_mean(column: &[(f64, f64)]) -> f64 {
+pub(crate) fn simpson_mean(column: &[(f64, f64)]) -> f64 {
     let thickness = column[column.len() - 1].0 - column[0].0;
     column
         .windows(3)
@@ -631,14 +471,17 @@ fn simpson_mean(column: &[(f64, f64)]) -> f64 {
 }
 
 /// The thickness mean of u_x over a block's column of nodes.
-fn thickness_mean(nodes: &HashMap<usize, [f64; 3]>, block: &DatBlock) -> Result<f64, ResultsError> {
+pub(crate) fn thickness_mean(
+    nodes: &HashMap<usize, [f64; 3]>,
+    block: &DatBlock,
+) -> Result<f64, ResultsError> {
     column_of(nodes, block).map(|c| simpson_mean(&c))
 }
 
 /// Positions x (mm) and slips u_inner - u_cover (mm, signed) along the lap joint's interface, in
 /// x order: the two sets' nodes paired by position (the `.dat` lists them by node number, which
 /// need not follow x in both bodies the same way).
-fn facing_slip(
+pub(crate) fn facing_slip(
     nodes: &HashMap<usize, [f64; 3]>,
     inner: &DatBlock,
     cover: &DatBlock,
@@ -673,65 +516,10 @@ fn facing_slip(
     Ok((xs, slips))
 }
 
-/// The sliding zones of a lap joint's slip profile: where K_T |s| >= mu P (|s| >= `saturation`),
-/// contiguous from x = 0 and from x = L, each end interpolated linearly between the last sliding
-/// node and the first that does not.
-fn lap_interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> LapFeInterface {
-    let n = xs.len();
-    let sliding = |i: usize| slips[i].abs() >= saturation;
-    let crossing = |inside: usize, outside: usize| {
-        let (s0, s1) = (slips[inside].abs(), slips[outside].abs());
-        xs[inside] + (xs[outside] - xs[inside]) * (s0 - saturation) / (s0 - s1)
-    };
-    let (start, end) = (
-        xs.first().copied().unwrap_or(0.0),
-        xs.last().copied().unwrap_or(0.0),
-    );
-    let length = end - start;
-    let mut from_start = 0.0;
-    if n > 0 && sliding(0) {
-        let mut i = 0;
-        while i + 1 < n && sliding(i + 1) {
-            i += 1;
-        }
-        from_start = if i + 1 == n {
-            length
-        } else {
-            crossing(i, i + 1) - start
-        };
-    }
-    let mut from_end = 0.0;
-    if n > 0 && sliding(n - 1) {
-        let mut i = n - 1;
-        while i > 0 && sliding(i - 1) {
-            i -= 1;
-        }
-        from_end = if i == 0 {
-            length
-        } else {
-            end - crossing(i, i - 1)
-        };
-    }
-    let (a, d) = if from_start + from_end >= length {
-        (from_start.min(length), (length - from_start).max(0.0))
-    } else {
-        (from_start, from_end)
-    };
-    LapFeInterface {
-        slide_from_start: a,
-        slide_from_end: d,
-        regime: if n == 0 {
-            Regime::MICROSLIP
-        } else {
-            zones_regime(Law::Regularized, a, d, length)
-        },
-    }
-}
-
 /// The displacement blocks of a `.dat` file. A block starts with a line like
 /// ` displacements (vx,vy,vz) for set WTIP and time  0.2000000E+01` and holds rows
 /// `node vx vy vz`; blocks of other quantities are skipped.
-fn parse_dat(text: &str) -> Result<Vec<DatBlock>, ResultsError> {
+pub(crate) fn parse_dat(text: &str) -> Result<Vec<DatBlock>, ResultsError> {
     let mut blocks: Vec<DatBlock> = Vec::new();
     let mut in_block = false;
     for (index, line) in text.lines().enumerate() {
@@ -805,7 +593,7 @@ fn parse_dat(text: &str) -> Result<Vec<DatBlock>, ResultsError> {
 }
 
 /// The node coordinates of a deck's `*NODE` sections (mm).
-fn parse_nodes(deck: &str) -> Result<HashMap<usize, [f64; 3]>, ResultsError> {
+pub(crate) fn parse_nodes(deck: &str) -> Result<HashMap<usize, [f64; 3]>, ResultsError> {
     let mut nodes = HashMap::new();
     for (index, _, trimmed) in deck_data_lines(deck).filter(|(_, card, _)| card_is(card, "*NODE")) {
         let fail = |problem: String| ResultsError::Line {
@@ -836,7 +624,6 @@ fn parse_nodes(deck: &str) -> Result<HashMap<usize, [f64; 3]>, ResultsError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kernel::regime::Zone;
 
     const DAT: &str = "
  displacements (vx,vy,vz) for set WTIP and time  0.1000000E+01
@@ -897,35 +684,6 @@ mod tests {
         );
         let all = interface_state(&xs, &[1.0, 1.1, 1.2, 1.3, 1.4], 1.0);
         assert_eq!((all.macroslip_start, all.regime), (0.0, Regime::MACROSLIP));
-    }
-
-    #[test]
-    fn lap_zones_are_read_from_both_ends() {
-        let xs = [0.0, 1.0, 2.0, 3.0, 4.0];
-        // Sliding from x = 0 to between nodes 1 and 2 (interpolated at |s| = 1), and at x = L
-        // over the last node only, to between nodes 3 and 4; the signs of the slip do not matter.
-        let state = lap_interface_state(&xs, &[-3.0, -2.0, 0.5, 0.0, 2.0], 1.0);
-        assert!((state.slide_from_start - (1.0 + 1.0 / 1.5)).abs() < 1e-12);
-        assert!((state.slide_from_end - 0.5).abs() < 1e-12);
-        assert_eq!(
-            state.regime,
-            Regime::from_zones(&[Zone::Macroslip, Zone::Microslip, Zone::Macroslip])
-        );
-        let elastic = lap_interface_state(&xs, &[0.9, 0.5, 0.1, 0.5, 0.9], 1.0);
-        assert_eq!(
-            (elastic.slide_from_start, elastic.slide_from_end),
-            (0.0, 0.0)
-        );
-        assert_eq!(elastic.regime, Regime::MICROSLIP);
-        let one_end = lap_interface_state(&xs, &[0.9, 0.5, 0.1, 0.5, 1.5], 1.0);
-        assert_eq!(one_end.regime, Regime::MICROSLIP_MACROSLIP);
-        // Sliding everywhere: the whole overlap, counted once.
-        let through = lap_interface_state(&xs, &[2.0; 5], 1.0);
-        assert_eq!(
-            (through.slide_from_start, through.slide_from_end),
-            (4.0, 0.0)
-        );
-        assert_eq!(through.regime, Regime::MACROSLIP);
     }
 
     #[test]

@@ -8,6 +8,7 @@
 
 pub mod compare;
 pub(crate) mod csv;
+pub mod face;
 #[cfg(feature = "figures")]
 pub mod figure;
 pub mod json;
@@ -20,9 +21,6 @@ pub mod verify;
 
 use std::borrow::Cow;
 use std::fmt::Write;
-
-use crate::study::curves::{beam_point, plate_point};
-use crate::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
 pub(crate) use crate::kernel::format::{number, number_with};
 
@@ -91,122 +89,15 @@ pub(crate) fn sanitize(text: &str) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
-/// Tip forces of the paper report's beam table, as multiples of F_thre: stick, threshold, then slip.
-const BEAM_FORCE_FACTORS: [f64; 7] = [0.5, 1.0, 1.125, 1.25, 1.5, 2.5, 3.75];
-
-/// K_T values of the paper report's plate table (MPa/mm): the decades of the paper's Fig. 14.
-const PLATE_STIFFNESSES: [f64; 8] = [1.0, 10.0, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7];
-
-/// The report for the paper's twin-beam and plate data sets (what `microslip` prints for now).
+/// The report for the paper's data sets (what `microslip` prints for now): each problem's table
+/// where the paper has one ([`ReportFace::paper_table`](face::ReportFace::paper_table)), in the
+/// registry's order, a blank line between them.
 pub fn paper_report() -> String {
-    let mut out = String::new();
-    // The paper's parameters are valid constants: construction cannot fail.
-    if let (Ok(beams), Ok(plate)) = (
-        TwinBeams::new(TwinBeamsParams::PAPER),
-        SqueezedPlate::new(PlateParams::PAPER),
-    ) {
-        write_beam_table(&mut out, &beams);
-        out.push('\n');
-        write_plate_table(&mut out, &plate);
-    }
-    out
-}
-
-fn write_beam_table(out: &mut String, beams: &TwinBeams) {
-    let p = beams.params();
-    let _ = writeln!(
-        out,
-        "Twin cantilever beams (Ligier & Bonhote 2014, section 2.1)"
-    );
-    let _ = writeln!(
-        out,
-        "  L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
-        p.length,
-        p.width,
-        p.half_height,
-        p.youngs_modulus,
-        p.pressure,
-        p.friction,
-        p.tangential_stiffness
-    );
-    let _ = writeln!(
-        out,
-        "  F_thre = {} N (Coulomb slip), F_1 = {} N (first macroslip, at x = {} mm), mu P / K_T = {} um",
-        number(beams.threshold_force()),
-        number(beams.first_macroslip_force()),
-        number(beams.first_macroslip_position()),
-        number(beams.saturation_slip() * 1e3)
-    );
-    let _ = writeln!(
-        out,
-        "  {:>8}  {:>14}  {:>18}  {:>9}  {:<10}  regularized",
-        "F (N)", "w_Coulomb (mm)", "w_regularized (mm)", "X (mm)", "Coulomb"
-    );
-    for factor in BEAM_FORCE_FACTORS {
-        let Ok(force) = TipForce::new(factor * beams.threshold_force()) else {
-            continue;
-        };
-        let row = beam_point(beams, force);
-        let _ = writeln!(
-            out,
-            "  {:>8}  {:>14}  {:>18}  {:>9}  {:<10}  {}",
-            number(row.force),
-            number(row.w_coulomb),
-            number(row.w_regularized),
-            number(row.micro_end),
-            row.regime_coulomb,
-            row.regime_regularized
-        );
-    }
-}
-
-fn write_plate_table(out: &mut String, plate: &SqueezedPlate) {
-    let p = plate.params();
-    let pressure = plate.contact_pressure();
-    let first = plate_point(plate);
-    let _ = writeln!(
-        out,
-        "Squeezed plate on a rigid plane (Ligier & Bonhote 2014, section 2.2)"
-    );
-    let _ = writeln!(
-        out,
-        "  L = {} mm (half-length), t_p = {} mm, E = {} MPa, nu = {}, mu = {}, P = {} MPa",
-        p.half_length, p.thickness, p.youngs_modulus, p.poisson, p.friction, p.pressure
-    );
-    let _ = writeln!(
-        out,
-        "  Coulomb: X_s = {} mm, u(L) = {} mm, {}",
-        number(first.stick_end),
-        number(first.u_coulomb),
-        first.regime_coulomb
-    );
-    let _ = writeln!(
-        out,
-        "  contact pressure P_r/P of the paper's flat-plate model (P7-P9, friction saturated \
-         everywhere): {} (centre) to {} (edge); not the plate's (docs/theory.md (P12)): \
-         `microslip plate` gives the plane-strain continuum's",
-        number(pressure.ratio(0.0)),
-        number(pressure.ratio(p.half_length)),
-    );
-    let _ = writeln!(
-        out,
-        "  {:>14}  {:>18}  {:>10}  regularized",
-        "K_T (MPa/mm)", "u_regularized (mm)", "X_r (mm)"
-    );
-    for kt in PLATE_STIFFNESSES {
-        let Ok(plate) = plate.with_tangential_stiffness(kt) else {
-            continue;
-        };
-        let row = plate_point(&plate);
-        let _ = writeln!(
-            out,
-            "  {:>14}  {:>18}  {:>10}  {}",
-            number(row.kt),
-            number(row.u_regularized),
-            number(row.micro_end),
-            row.regime_regularized
-        );
-    }
+    let tables: Vec<String> = crate::problems::ModelKind::ALL
+        .iter()
+        .filter_map(|&kind| face::report_face(kind).paper_table())
+        .collect();
+    tables.join("\n")
 }
 
 #[cfg(test)]

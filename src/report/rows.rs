@@ -6,8 +6,7 @@
 use serde::Serialize;
 
 use crate::chart::{Plot, SeriesKind};
-use crate::study::curves::LapPoint;
-use crate::study::curves::{BeamPoint, CyclePoint, LoopPoint, PlatePoint};
+use crate::study::curves::{CyclePoint, LoopPoint};
 
 /// One row of `microslip sweep beam`.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
@@ -38,22 +37,6 @@ pub struct BeamRow {
     pub vs_continuum_within_fraction: Option<f64>,
 }
 
-impl From<&BeamPoint> for BeamRow {
-    fn from(p: &BeamPoint) -> Self {
-        BeamRow {
-            force: p.force,
-            w_coulomb_mm: p.w_coulomb,
-            w_regularized_mm: p.w_regularized,
-            micro_end: p.micro_end,
-            regime_coulomb: p.regime_coulomb.label(),
-            regime_regularized: p.regime_regularized.label(),
-            beam_theory: p.validity.theory.key(),
-            vs_continuum_within: p.validity.expected_error,
-            vs_continuum_within_fraction: p.validity.expected_error,
-        }
-    }
-}
-
 /// One row of `microslip sweep plate`.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct PlateRow {
@@ -77,21 +60,6 @@ pub struct PlateRow {
     /// The strip theory against a plane-strain continuum (V1): holds (within 2 %), approximate
     /// (10 %) or outside. Added after the original columns, which scripts read by name.
     pub strip_theory: &'static str,
-}
-
-impl From<&PlatePoint> for PlateRow {
-    fn from(p: &PlatePoint) -> Self {
-        PlateRow {
-            kt: p.kt,
-            u_coulomb_mm: p.u_coulomb,
-            u_regularized_mm: p.u_regularized,
-            stick_end: p.stick_end,
-            micro_end: p.micro_end,
-            regime_coulomb: p.regime_coulomb.label(),
-            regime_regularized: p.regime_regularized.label(),
-            strip_theory: p.strip_validity.label(),
-        }
-    }
 }
 
 /// One row of `microslip sweep cycle`.
@@ -184,24 +152,6 @@ pub struct LapRow {
     /// The same bound under its one name in every output (`lap --format json`'s
     /// `shear_lag.shear_lag_within_fraction`, `compare lap`'s column): a fraction.
     pub shear_lag_within_fraction: Option<f64>,
-}
-
-impl From<&LapPoint> for LapRow {
-    fn from(p: &LapPoint) -> Self {
-        LapRow {
-            force: p.force,
-            delta_coulomb: p.delta_coulomb,
-            delta_regularized: p.delta_regularized,
-            slide_at_inner_end: p.zones_regularized.0,
-            slide_at_cover_ends: p.zones_regularized.1,
-            slide_at_inner_end_coulomb: p.zones_coulomb.0,
-            slide_at_cover_ends_coulomb: p.zones_coulomb.1,
-            regime_coulomb: p.regime_coulomb.label(),
-            regime_regularized: p.regime_regularized.label(),
-            shear_lag_within: p.shear_lag_within,
-            shear_lag_within_fraction: p.shear_lag_within,
-        }
-    }
 }
 
 /// One point of the lap joint's `microslip cycle --format csv` (the loop of Delta, both laws).

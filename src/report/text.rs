@@ -1,53 +1,18 @@
-//! Readable single-point reports. Beam, plate, cycle, K_T candidates, fit and solve render their
+//! Readable single-point reports. Cycle, K_T candidates, fit and solve render their
 //! [`super::point`] types (the same values their JSON serializes), `kt --tolerance` too
-//! ([`super::point::tolerance`]); the progress lines are built here from the library's results.
+//! ([`super::point::tolerance`]); a problem's own point report (the beams at a force, the plate,
+//! the lap joint) is its folder's (`src/problems/<name>/report.rs`), with its `text()`. The
+//! progress lines are built here from the library's results.
 
-use super::point::beam::BeamReport;
-use super::point::cycle::{BeamCycleReport, LapCycleReport};
+use super::point::cycle::{CycleFace, CycleReport};
 use super::point::fit::FitReport;
-use super::point::lap::LapReport;
-use super::point::plate::PlateReport;
 use super::point::solve::SolveReport;
 use super::point::stiffness::StiffnessReport;
-use crate::numeric::NumericError;
-use crate::problems::lap::ContinuumLap;
-use crate::problems::lap::closed_form::{JointForce, LapJoint};
-use crate::problems::plate::ContinuumPlate;
 use crate::study::curves::StiffnessComparison;
-use crate::{SqueezedPlate, TipForce, TwinBeams};
 
-/// Twin-beam report at one force.
-pub fn beam(preset: &str, beams: &TwinBeams, force: TipForce) -> String {
-    BeamReport::new(preset, beams, force).text()
-}
-
-/// Lap-joint report at one force.
-pub fn lap(
-    preset: &str,
-    joint: &LapJoint,
-    force: JointForce,
-    continuum: Option<&Result<ContinuumLap, NumericError>>,
-) -> String {
-    LapReport::new(preset, joint, force, continuum).text()
-}
-
-/// One cycle of the lap joint, both laws.
-pub fn lap_cycle(preset: &str, joint: &LapJoint, amplitude: JointForce) -> String {
-    LapCycleReport::new(preset, joint, amplitude).text()
-}
-
-/// Squeezed-plate report.
-pub fn plate(
-    preset: &str,
-    plate: &SqueezedPlate,
-    continuum: Option<&Result<ContinuumPlate, NumericError>>,
-) -> String {
-    PlateReport::new(preset, plate, continuum).text()
-}
-
-/// Cyclic-loading report: both laws side by side.
-pub fn cycle(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> String {
-    BeamCycleReport::new(preset, beams, amplitude).text()
+/// Cyclic-loading report of any load-driven problem: both laws side by side.
+pub fn cycle<P: CycleFace>(preset: &str, structure: &P::Structure, amplitude: P::Force) -> String {
+    CycleReport::new::<P>(preset, structure, amplitude).text()
 }
 
 pub use super::point::fit::evidence;
@@ -137,9 +102,6 @@ pub fn solved(
 
 #[cfg(test)]
 mod tests {
-    use super::*;
-    use crate::{PlateParams, TwinBeamsParams};
-
     #[test]
     fn every_fit_evidence_has_its_words() {
         use crate::fit::Evidence;
@@ -171,42 +133,6 @@ mod tests {
         ];
         for (evidence, words) in cases {
             assert_eq!(super::evidence(&evidence), words);
-        }
-    }
-
-    #[test]
-    fn beam_report_shows_units_thresholds_and_both_laws() {
-        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
-        let text = beam("paper-beams", &beams, TipForce::new(100.0).unwrap());
-        for needle in [
-            "KT  = 600 MPa/mm",
-            "(0.6 MPa/um)",
-            "F_thre     = 80 N",
-            "F_1        = 80.1857 N",
-            "0.5 um",
-            "17.3095 (microslip end X)",
-            "microslip+macroslip",
-        ] {
-            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
-        }
-    }
-
-    #[test]
-    fn plate_report_shows_both_zone_ends_and_names_the_pressure_model() {
-        let plate_model = SqueezedPlate::new(PlateParams::PAPER).unwrap();
-        let text = plate("paper-plate", &plate_model, None);
-        for needle in [
-            "nu  = 0.3",
-            "X_s = 9.71429",
-            "X_r = 9.83832",
-            "flat Timoshenko plate, friction saturated everywhere (P7-P9",
-            // (L - X_r) / t_p = (10 - 9.83832) / 0.2: under one t_p, where the flat model's
-            // end-layer mean was not measured right.
-            "not here (slip zone 0.808 t_p)",
-            "plane-strain continuum (--continuum)",
-            "MEASURED WRONG here (V1c)",
-        ] {
-            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
         }
     }
 }

@@ -8,3 +8,5 @@ mod chart;
 mod pane;
 
 pub use chart::LapChart;
+pub mod deck;
+pub mod report;

@@ -6,11 +6,12 @@ use super::LapJointProblem;
 use super::LapValidity;
 use super::closed_form::{FirstSlip, JointForce, LapJoint};
 use super::cycle::{LapCycle, MasingCycle};
+use super::deck::compare_lap;
 use crate::chart::panes::{
     ContinuumState, CurveParser, KT_UM_MEANING, PaneFace, RATIO_MEANING, SATURATION_MEANING,
     SummaryLine, load_regimes, load_tolerance_lines, ratio_text,
 };
-use crate::fe::compare::{LapCompared, compare_lap};
+use crate::fe::compare::LapCompared;
 use crate::fe::load::Loaded;
 use crate::fe::results::LapFePoint;
 use crate::kernel::format::{number, number_with};

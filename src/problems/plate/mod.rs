@@ -8,3 +8,5 @@ mod chart;
 mod pane;
 
 pub use chart::PlateChart;
+pub mod deck;
+pub mod report;

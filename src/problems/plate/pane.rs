@@ -2,6 +2,7 @@
 //! regime pane's lines with its own 2-D continuum solve (u(L) and the edge pressure, on a
 //! worker) and the strip theory's validity, and the K_T table's row.
 
+use super::deck::compare_plate;
 use super::params::PlateParams;
 use super::validity::PlateValidity;
 use super::{ContinuumMesh, SqueezedPlateProblem, solve_plate_continuum};
@@ -10,7 +11,7 @@ use crate::chart::panes::{
     ContinuumState, ContinuumSummary, PaneContinuum, PaneFace, RATIO_MEANING, SATURATION_MEANING,
     SummaryLine, TABLE_TOLERANCE, ratio_text, shown,
 };
-use crate::fe::compare::{PlateCompared, compare_plate};
+use crate::fe::compare::PlateCompared;
 use crate::fe::load::Loaded;
 use crate::fe::results::PlateFePoint;
 use crate::kernel::format::{number, number_with};

@@ -3,11 +3,12 @@
 //! the K_T table's row, the theory `b` toggles and the curve `f` fits.
 
 use super::TwinBeamsProblem;
+use super::deck::compare_beams;
 use crate::chart::panes::{
     ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SATURATION_MEANING, SummaryLine,
     load_regimes, load_tolerance_lines, ratio_text,
 };
-use crate::fe::compare::{BeamComparison, compare_beams};
+use crate::fe::compare::BeamComparison;
 use crate::fe::load::Loaded;
 use crate::fe::results::BeamFePoint;
 use crate::kernel::format::{number, number_with};

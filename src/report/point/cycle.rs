@@ -9,51 +9,44 @@ use serde::ser::SerializeStruct;
 use super::InputsReport;
 use crate::kernel::regime::Law;
 use crate::problems::inputs::Inputs;
-use crate::problems::lap::LapJointProblem;
-use crate::problems::lap::closed_form::{JointForce, LapJoint, LapParams};
 use crate::problems::load_driven::{LoadDriven, MasingCycle};
-use crate::problems::twin_beams::TwinBeamsProblem;
 use crate::report::{number, sanitize};
-use crate::{TipForce, TwinBeams, TwinBeamsParams};
 
-/// What D, U and the secant stiffness refer to: said wherever they appear (text, JSON, help, TUI).
-pub(crate) const CYCLE_UNITS_NOTE: &str = "D and U are for the pair (both beams' tip forces, the whole \
-     interface; U = 1/2 (2 F_a) w_a); the secant stiffness F_a/w_a and the loop w(F) are one beam's \
-     (the loop's area is D/2).";
+/// A load-driven problem as its cycle report says it: its words, its structure's summary line
+/// and the inputs the report lists. Each problem's folder implements it
+/// (`src/problems/<name>/report.rs`), so the report is written once for every load-driven problem.
+pub trait CycleFace: LoadDriven {
+    /// The problem's words in its cycle report.
+    const CYCLE_WORDS: CycleWords;
 
-/// What D, U and the secant stiffness of the lap joint refer to.
-pub(crate) const LAP_CYCLE_NOTE: &str = "D is the whole joint's (both interfaces); U = 1/2 F_a \
-     Delta_a; the secant stiffness is F_a / Delta_a of the joint.";
+    /// The structure in one line (its parameters with units), under the text's heading.
+    fn structure_line(structure: &Self::Structure) -> String;
 
-/// A load-driven structure cycled between +F_a and -F_a: `S` is its parameters (the twin
-/// beams', the lap joint's), for the text's one-line summary.
+    /// The inputs the report lists: the structure at the amplitude.
+    fn cycle_inputs(structure: &Self::Structure, amplitude: Self::Force) -> Inputs;
+}
+
+/// A load-driven structure cycled between +F_a and -F_a.
 #[derive(Debug, Clone, Serialize)]
-pub struct CycleReport<S: 'static> {
-    /// `beam` or `lap`.
+pub struct CycleReport {
+    /// `beam` or `lap`: the problem's key.
     pub model: &'static str,
     pub preset: String,
     pub inputs: InputsReport,
-    /// The structure, for the text's one-line summary.
+    /// The structure in one line, for the text.
     #[serde(skip)]
-    pub structure: S,
+    pub structure: String,
     /// Amplitude F_a (N).
     #[serde(rename = "Fa_N")]
     pub amplitude: f64,
     pub coulomb: LawCycle,
     pub regularized: LawCycle,
-    /// A note on the units: what D, U and the secant stiffness are of (`CYCLE_UNITS_NOTE`,
-    /// `LAP_CYCLE_NOTE`).
+    /// A note on the units: what D, U and the secant stiffness are of ([`CycleWords::note`]).
     pub note: &'static str,
     /// The problem's words in the text.
     #[serde(skip)]
-    words: &'static CycleWords<S>,
+    words: CycleWords,
 }
-
-/// The twin beams cycled between +F_a and -F_a.
-pub type BeamCycleReport = CycleReport<TwinBeamsParams>;
-
-/// The lap joint cycled between +F_a and -F_a.
-pub type LapCycleReport = CycleReport<LapParams>;
 
 /// One law's cycle: the same six numbers for every load-driven problem. Its JSON keys are
 /// `onset_N`, the peak's (`w_peak_mm`, `Delta_peak_mm`: [`LawCycle::peak_key`]), `D_Nmm`,
@@ -103,90 +96,35 @@ impl Serialize for LawCycle {
     }
 }
 
-/// A problem's words in its cycle report: the JSON key of the peak, the heading, the line that
-/// gives the structure `S`, the labels of the six rows of the text's table, and the note.
-#[derive(Debug)]
-struct CycleWords<S> {
-    model: &'static str,
-    peak_key: &'static str,
+/// A problem's words in its cycle report: the JSON key of the peak, the heading, the labels of
+/// the six rows of the text's table, and the note.
+#[derive(Debug, Clone, Copy)]
+pub struct CycleWords {
+    /// The peak's JSON key (`w_peak_mm`).
+    pub peak_key: &'static str,
     /// What is cycled and by which load: (`Twin beams`, `tip force`).
-    heading: (&'static str, &'static str),
-    structure: fn(&S) -> String,
-    rows: [&'static str; 6],
-    note: &'static str,
+    pub heading: (&'static str, &'static str),
+    /// The labels of the text's rows: onset, peak, D, U, damping ratio, secant stiffness.
+    pub rows: [&'static str; 6],
+    /// What D, U and the secant stiffness refer to: said wherever they appear (text, JSON,
+    /// help, TUI).
+    pub note: &'static str,
 }
 
-static BEAM_WORDS: CycleWords<TwinBeamsParams> = CycleWords {
-    model: "beam",
-    peak_key: "w_peak_mm",
-    heading: ("Twin beams", "tip force"),
-    structure: |p| {
-        format!(
-            "L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
-            number(p.length),
-            number(p.width),
-            number(p.half_height),
-            number(p.youngs_modulus),
-            number(p.pressure),
-            number(p.friction),
-            number(p.tangential_stiffness)
-        )
-    },
-    rows: [
-        "onset of sliding (N)",
-        "peak deflection w_a (mm)",
-        "D per cycle, both beams (N mm)",
-        "peak energy U, both (N mm)",
-        "damping ratio D / (4 pi U) (-)",
-        "secant F_a/w_a, 1 beam (N/mm)",
-    ],
-    note: CYCLE_UNITS_NOTE,
-};
-
-static LAP_WORDS: CycleWords<LapParams> = CycleWords {
-    model: "lap",
-    peak_key: "Delta_peak_mm",
-    heading: ("Double-lap joint", "force"),
-    structure: |p| {
-        format!(
-            "L = {} mm, b = {} mm, t1 = {} mm, t2 = {} mm, E1 = {} MPa, E2 = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
-            number(p.length),
-            number(p.width),
-            number(p.inner_thickness),
-            number(p.cover_thickness),
-            number(p.inner_modulus),
-            number(p.cover_modulus),
-            number(p.pressure),
-            number(p.friction),
-            number(p.tangential_stiffness)
-        )
-    },
-    rows: [
-        "onset of sliding (N)",
-        "peak displacement Delta_a (mm)",
-        "D per cycle (N mm)",
-        "peak energy U (N mm)",
-        "damping ratio D / (4 pi U) (-)",
-        "secant F_a/Delta_a (N/mm)",
-    ],
-    note: LAP_CYCLE_NOTE,
-};
-
-impl<S: 'static> CycleReport<S> {
-    /// The report of `model` cycled at `amplitude`, both laws, in the problem's `words`.
-    fn cycled<P: LoadDriven>(
-        words: &'static CycleWords<S>,
+impl CycleReport {
+    /// The report of `structure` cycled at `amplitude`, both laws, in the problem's words.
+    pub fn new<P: CycleFace>(
         preset: &str,
-        (inputs, structure): (Inputs, S),
-        model: &P::Structure,
+        structure: &P::Structure,
         amplitude: P::Force,
-    ) -> CycleReport<S> {
-        let law = |law| LawCycle::new(&P::cycle(model, law, amplitude), words.peak_key);
+    ) -> CycleReport {
+        let words = P::CYCLE_WORDS;
+        let law = |law| LawCycle::new(&P::cycle(structure, law, amplitude), words.peak_key);
         CycleReport {
-            model: words.model,
+            model: P::INFO.key,
             preset: preset.to_string(),
-            inputs: InputsReport(inputs),
-            structure,
+            inputs: InputsReport(P::cycle_inputs(structure, amplitude)),
+            structure: P::structure_line(structure),
             amplitude: P::newtons(amplitude),
             coulomb: law(Law::Coulomb),
             regularized: law(Law::Regularized),
@@ -207,7 +145,7 @@ impl<S: 'static> CycleReport<S> {
             words.heading.0,
             words.heading.1,
         );
-        let _ = writeln!(out, "  {}", (words.structure)(&self.structure));
+        let _ = writeln!(out, "  {}", self.structure);
         let _ = writeln!(out, "{:<34}{:<18}regularized", "", "Coulomb");
         let (c, r) = (&self.coulomb, &self.regularized);
         let values = [
@@ -227,38 +165,6 @@ impl<S: 'static> CycleReport<S> {
         write_law_rows(&mut out, &rows);
         let _ = writeln!(out, "  {}", self.note);
         out
-    }
-}
-
-impl CycleReport<TwinBeamsParams> {
-    pub fn new(preset: &str, beams: &TwinBeams, amplitude: TipForce) -> BeamCycleReport {
-        let inputs = Inputs::Beam(crate::problems::twin_beams::problem::BeamsInputs {
-            structure: beams.params(),
-            force: amplitude.newtons(),
-        });
-        Self::cycled::<TwinBeamsProblem>(
-            &BEAM_WORDS,
-            preset,
-            (inputs, beams.params()),
-            beams,
-            amplitude,
-        )
-    }
-}
-
-impl CycleReport<LapParams> {
-    pub fn new(preset: &str, joint: &LapJoint, amplitude: JointForce) -> LapCycleReport {
-        let inputs = Inputs::Lap(crate::problems::lap::problem::LapInputs {
-            structure: joint.params(),
-            force: amplitude.newtons(),
-        });
-        Self::cycled::<LapJointProblem>(
-            &LAP_WORDS,
-            preset,
-            (inputs, joint.params()),
-            joint,
-            amplitude,
-        )
     }
 }
 

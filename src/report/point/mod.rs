@@ -8,11 +8,8 @@
 //! alphabetical order scripts have always seen, whatever the order of the fields. Enums the text
 //! needs (regimes, validity levels) stay typed in the structs and serialize as their labels.
 
-pub mod beam;
 pub mod cycle;
 pub mod fit;
-pub mod lap;
-pub mod plate;
 pub mod solve;
 pub mod stiffness;
 pub mod tolerance;

@@ -5,12 +5,9 @@ use std::fmt::Write;
 
 use serde::Serialize;
 
-use super::regime_label;
-use crate::Regime;
-use crate::problems::lap::stiffness_answer::LapAnswer;
-use crate::problems::plate::stiffness_answer::PlateAnswer;
-use crate::problems::twin_beams::stiffness_answer::BeamAnswer;
-use crate::problems::{BeamParam, ModelKind, Quantity};
+use crate::kernel::params::ParamSpec;
+use crate::problems::{ModelKind, Quantity};
+use crate::report::face::{KtHeading, KtRow, ReportFace, kt_row, report_face};
 use crate::report::{number, sanitize};
 use crate::study::curves::{Answer, CandidateSource, ComparedStiffness, StiffnessComparison};
 
@@ -56,43 +53,50 @@ pub struct CandidateReport {
     pub vs_coulomb: Option<f64>,
 }
 
-/// What a candidate K_T does to the answer, or why it was not evaluated.
-#[derive(Debug, Clone, Serialize)]
-#[serde(untagged)]
-pub enum CandidateAnswer {
-    Beam {
-        #[serde(rename = "F_1_N")]
-        first_macroslip_force: f64,
-        #[serde(rename = "X_mm")]
-        micro_end: f64,
-        #[serde(rename = "w_tip_mm")]
-        tip_deflection: f64,
-        #[serde(serialize_with = "regime_label")]
-        regime: Regime,
-    },
-    Plate {
-        #[serde(rename = "u_end_mm")]
-        end_displacement: f64,
-        #[serde(rename = "Xr_mm")]
-        micro_end: f64,
-        #[serde(serialize_with = "regime_label")]
-        regime: Regime,
-    },
-    Lap {
-        #[serde(rename = "F_1_N")]
-        first_slip_force: f64,
-        #[serde(rename = "a_mm")]
-        slide_at_inner_end: f64,
-        #[serde(rename = "d_mm")]
-        slide_at_cover_ends: f64,
-        #[serde(rename = "Delta_mm")]
-        joint_displacement: f64,
-        #[serde(serialize_with = "regime_label")]
-        regime: Regime,
-    },
-    /// A K_T the model refuses: said rather than left out silently.
-    Refused { not_evaluated: String },
+/// Writes [`CandidateAnswer`] from the registry: a variant per problem holding its
+/// [`ReportFace::KtAnswer`], and the dispatch to its [`ReportFace`].
+macro_rules! candidate_answers {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        /// What a K_T candidate does to the answer (the problem's own fields, flattened into
+        /// the row), or why it was not evaluated.
+        #[derive(Debug, Clone, Serialize)]
+        #[serde(untagged)]
+        pub enum CandidateAnswer {
+            $($(#[$doc])* $variant(<crate::problems::$folder::$problem as ReportFace>::KtAnswer),)+
+            /// A K_T the model refuses: said rather than left out silently.
+            Refused {
+                /// Why.
+                not_evaluated: String,
+            },
+        }
+
+        impl CandidateAnswer {
+            /// `answer` as problem `kind`'s.
+            fn of(kind: ModelKind, answer: &Answer) -> Option<CandidateAnswer> {
+                match kind {
+                    $(ModelKind::$variant => {
+                        <crate::problems::$folder::$problem as ReportFace>::kt_answer(answer)
+                            .map(CandidateAnswer::$variant)
+                    })+
+                }
+            }
+
+            /// The table row of `row` with `answer` (dashes without one, in `kind`'s columns).
+            fn row(answer: Option<&CandidateAnswer>, kind: ModelKind, row: &KtRow) -> String {
+                match answer {
+                    $(Some(CandidateAnswer::$variant(a)) => {
+                        kt_row::<crate::problems::$folder::$problem>(row, Some(a))
+                    })+
+                    None | Some(CandidateAnswer::Refused { .. }) => {
+                        report_face(kind).kt_row_unanswered(row)
+                    }
+                }
+            }
+        }
+    };
 }
+
+microslip_core::with_problems!(candidate_answers);
 
 /// The name of a K_T candidate's source, as reports show it.
 pub(crate) fn candidate_name(source: &CandidateSource) -> &'static str {
@@ -112,48 +116,21 @@ pub(crate) fn candidate_basis(source: &CandidateSource) -> String {
     }
 }
 
-impl From<&ComparedStiffness> for CandidateReport {
-    fn from(row: &ComparedStiffness) -> Self {
+impl CandidateReport {
+    /// The report of `row`, a candidate of a problem `kind`.
+    fn new(kind: ModelKind, row: &ComparedStiffness) -> Self {
         let kt = row.candidate.kt;
-        let answer = match row.answer {
-            Some(Answer::Beam(BeamAnswer {
-                first_macroslip_force,
-                micro_end,
-                tip_deflection,
-                regime,
-            })) => Some(CandidateAnswer::Beam {
-                first_macroslip_force,
-                micro_end,
-                tip_deflection,
-                regime,
-            }),
-            Some(Answer::Plate(PlateAnswer {
-                end_displacement,
-                micro_end,
-                regime,
-            })) => Some(CandidateAnswer::Plate {
-                end_displacement,
-                micro_end,
-                regime,
-            }),
-            Some(Answer::Lap(LapAnswer {
-                first_slip_force,
-                zones: (slide_at_inner_end, slide_at_cover_ends),
-                joint_displacement,
-                regime,
-            })) => Some(CandidateAnswer::Lap {
-                first_slip_force,
-                slide_at_inner_end,
-                slide_at_cover_ends,
-                joint_displacement,
-                regime,
-            }),
-            None => match kt.map(|kt| BeamParam::Stiffness.check(kt)) {
-                Some(Err(refused)) => Some(CandidateAnswer::Refused {
+        let refused = |kt: f64| {
+            let spec = stiffness_spec(kind)?;
+            spec.domain.check(spec.name, kt, spec.unit).err()
+        };
+        let answer = match &row.answer {
+            Some(answer) => CandidateAnswer::of(kind, answer),
+            None => kt
+                .and_then(refused)
+                .map(|refused| CandidateAnswer::Refused {
                     not_evaluated: refused.to_string(),
                 }),
-                _ => None,
-            },
         };
         CandidateReport {
             source: candidate_name(&row.candidate.source),
@@ -164,6 +141,14 @@ impl From<&ComparedStiffness> for CandidateReport {
             vs_coulomb: row.off_coulomb.map(|f| 100.0 * f),
         }
     }
+}
+
+/// The spec of `kind`'s tangential stiffness K_T (its domain says which K_T it refuses).
+fn stiffness_spec(kind: ModelKind) -> Option<ParamSpec> {
+    kind.params()
+        .iter()
+        .find(|p| p.is_stiffness())
+        .map(|p| p.spec())
 }
 
 /// A deviation in % with its sign ("+3.97 %", "0 %"), "-" without one.
@@ -193,7 +178,11 @@ impl StiffnessReport {
                 .load_driven()
                 .and_then(|load_driven| load_driven.applied_force(model)),
             friction_stress: interface.friction * interface.pressure,
-            candidates: comparison.rows.iter().map(CandidateReport::from).collect(),
+            candidates: comparison
+                .rows
+                .iter()
+                .map(|row| CandidateReport::new(comparison.model.kind(), row))
+                .collect(),
         }
     }
 
@@ -202,64 +191,13 @@ impl StiffnessReport {
         let preset = sanitize(&self.preset);
         let mut out = String::new();
         let (mu_p, element) = (number(self.friction_stress), number(self.element));
-        match self.kind {
-            ModelKind::Beam => {
-                let _ = writeln!(
-                    out,
-                    "K_T candidates for preset {preset}: twin beams at F = {} N, mu P = {mu_p} MPa, contact elements {element} mm",
-                    self.force.map_or_else(|| "-".to_string(), number),
-                );
-                let _ = writeln!(
-                    out,
-                    "{:<16} {:>12} {:>10} {:>10} {:>11} {:>10} {:>10}  {:<20} basis",
-                    "source",
-                    "K_T (MPa/mm)",
-                    "F_1 (N)",
-                    "X (mm)",
-                    "w(L) (mm)",
-                    "vs current",
-                    "vs Coulomb",
-                    "regime"
-                );
-            }
-            ModelKind::Lap => {
-                let _ = writeln!(
-                    out,
-                    "K_T candidates for preset {preset}: double-lap joint at F = {} N, mu P = {mu_p} MPa, contact elements {element} mm",
-                    self.force.map_or_else(|| "-".to_string(), number),
-                );
-                let _ = writeln!(
-                    out,
-                    "{:<16} {:>12} {:>10} {:>8} {:>8} {:>12} {:>10} {:>10}  {:<29} basis",
-                    "source",
-                    "K_T (MPa/mm)",
-                    "F_1 (N)",
-                    "a (mm)",
-                    "d (mm)",
-                    "Delta (mm)",
-                    "vs current",
-                    "vs Coulomb",
-                    "regime"
-                );
-            }
-            ModelKind::Plate => {
-                let _ = writeln!(
-                    out,
-                    "K_T candidates for preset {preset}: squeezed plate, mu P = {mu_p} MPa, contact elements {element} mm",
-                );
-                let _ = writeln!(
-                    out,
-                    "{:<16} {:>12} {:>12} {:>10} {:>10} {:>10}  {:<20} basis",
-                    "source",
-                    "K_T (MPa/mm)",
-                    "u(L) (mm)",
-                    "vs current",
-                    "vs Coulomb",
-                    "X_r (mm)",
-                    "regime"
-                );
-            }
-        }
+        let face = report_face(self.kind);
+        out.push_str(&face.kt_heading(&KtHeading {
+            preset: &preset,
+            force: self.force,
+            friction_stress: &mu_p,
+            element: &element,
+        }));
         for row in &self.candidates {
             let (source, basis) = (row.source, &row.basis);
             let kt = row.kt.map_or("-".to_string(), number);
@@ -271,83 +209,20 @@ impl StiffnessReport {
             } else {
                 "-"
             };
-            let _ = match (&row.answer, self.kind) {
-                (
-                    Some(CandidateAnswer::Beam {
-                        first_macroslip_force,
-                        micro_end,
-                        tip_deflection,
-                        regime,
-                    }),
-                    _,
-                ) => writeln!(
-                    out,
-                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10} {:>10}  {:<20} {basis}",
-                    number(*first_macroslip_force),
-                    number(*micro_end),
-                    number(*tip_deflection),
-                    off,
-                    off_coulomb,
-                    regime.label(),
-                ),
-                (
-                    Some(CandidateAnswer::Plate {
-                        end_displacement,
-                        micro_end,
-                        regime,
-                    }),
-                    _,
-                ) => writeln!(
-                    out,
-                    "{source:<16} {kt:>12} {:>12} {:>10} {:>10} {:>10}  {:<20} {basis}",
-                    number(*end_displacement),
-                    off,
-                    off_coulomb,
-                    number(*micro_end),
-                    regime.label(),
-                ),
-                (
-                    Some(CandidateAnswer::Lap {
-                        first_slip_force,
-                        slide_at_inner_end,
-                        slide_at_cover_ends,
-                        joint_displacement,
-                        regime,
-                    }),
-                    _,
-                ) => writeln!(
-                    out,
-                    "{source:<16} {kt:>12} {:>10} {:>8} {:>8} {:>12} {:>10} {:>10}  {:<29} {basis}",
-                    number(*first_slip_force),
-                    number(*slide_at_inner_end),
-                    number(*slide_at_cover_ends),
-                    number(*joint_displacement),
-                    off,
-                    off_coulomb,
-                    regime.label(),
-                ),
-                // No answer: the columns of the problem's table.
-                (None | Some(CandidateAnswer::Refused { .. }), ModelKind::Beam) => writeln!(
-                    out,
-                    "{source:<16} {kt:>12} {:>10} {:>10} {:>11} {:>10} {:>10}  {unanswered:<20} {basis}",
-                    "-", "-", "-", "-", "-",
-                ),
-                (None | Some(CandidateAnswer::Refused { .. }), ModelKind::Lap) => writeln!(
-                    out,
-                    "{source:<16} {kt:>12} {:>10} {:>8} {:>8} {:>12} {:>10} {:>10}  {unanswered:<29} {basis}",
-                    "-", "-", "-", "-", "-", "-",
-                ),
-                (None | Some(CandidateAnswer::Refused { .. }), ModelKind::Plate) => writeln!(
-                    out,
-                    "{source:<16} {kt:>12} {:>12} {:>10} {:>10} {:>10}  {unanswered:<20} {basis}",
-                    "-", "-", "-", "-",
-                ),
+            let line = KtRow {
+                source,
+                kt: &kt,
+                vs_current: &off,
+                vs_coulomb: &off_coulomb,
+                unanswered,
+                basis,
             };
+            out.push_str(&CandidateAnswer::row(row.answer.as_ref(), self.kind, &line));
         }
-        if self.candidates.iter().any(|row| {
+        let refused = self.candidates.iter().any(|row| {
             row.kt.is_some() && matches!(row.answer, None | Some(CandidateAnswer::Refused { .. }))
-        }) {
-            let stiffness = BeamParam::Stiffness.spec();
+        });
+        if let (true, Some(stiffness)) = (refused, stiffness_spec(self.kind)) {
             let _ = writeln!(
                 out,
                 "K_T out of range: not evaluated, K_T {}.",

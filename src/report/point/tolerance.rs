@@ -6,7 +6,8 @@ use std::fmt::Write;
 
 use serde::Serialize;
 
-use crate::problems::{ModelKind, Quantity};
+use crate::problems::Quantity;
+use crate::report::face::report_face;
 use crate::report::{number, number_with, sanitize};
 use crate::study::tolerance::{CodeSetting, Setting, Threshold, ToleranceAnswer};
 
@@ -172,11 +173,7 @@ impl ToleranceReport {
         let mut out = String::new();
         let quantity = Quantity::Response.name(answer.kind);
         // Where docs/theory.md shows the response never grows with K_T, for this problem.
-        let why = match answer.kind {
-            ModelKind::Beam => "(T1)",
-            ModelKind::Plate => "(P10)",
-            ModelKind::Lap => "(L11)",
-        };
+        let why = report_face(answer.kind).monotone_in_stiffness();
         let over = match answer.forces {
             Some([from, to]) if from == to => format!("at F = {} N", number(to)),
             Some([from, to]) => format!("at every F from {} to {} N", number(from), number(to)),

@@ -1,19 +1,210 @@
+//! The twin beams' reports: their K_T table columns, their paper table and their sweep row
+//! ([`ReportFace`]).
+//!
 //! `microslip beam`: the twin beams at one tip force, both laws side by side.
 
-use std::fmt::Write;
+use std::fmt::Write as _;
 
 use serde::{Serialize, Serializer};
 
-use super::{InputsReport, SideBySide, regime_label, validity_label};
-use crate::Regime;
+use crate::kernel::regime::Regime;
 use crate::kernel::validity::Validity;
+use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
-use crate::problems::twin_beams::closed_form::BeamTheory;
-use crate::problems::twin_beams::validity::CALIBRATED_FRICTION_STRAIN;
+use crate::report::face::{KtColumn, ReportFace};
+use crate::report::point::cycle::{CycleFace, CycleWords};
+use crate::report::point::{InputsReport, SideBySide, regime_label, validity_label};
+use crate::report::rows::BeamRow;
 use crate::report::{number, number_with, sanitize};
-use crate::study::curves::beam_point;
-use crate::{TipForce, TwinBeams};
+use crate::study::curves::{Answer, beam_point};
+
+use super::closed_form::{BeamTheory, TipForce, TwinBeams};
+use super::params::TwinBeamsParams;
+use super::point::BeamPoint;
+use super::problem::{BeamsInputs, TwinBeamsProblem};
+use super::validity::CALIBRATED_FRICTION_STRAIN;
+
+/// What a candidate K_T does to the beams at the model's force (`microslip kt`'s row).
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct BeamKtAnswer {
+    /// First-macroslip force F_1 (N).
+    #[serde(rename = "F_1_N")]
+    pub first_macroslip_force: f64,
+    /// End of the microslip zone X (mm).
+    #[serde(rename = "X_mm")]
+    pub micro_end: f64,
+    /// Tip deflection w(L) (mm).
+    #[serde(rename = "w_tip_mm")]
+    pub tip_deflection: f64,
+    /// Regime.
+    #[serde(serialize_with = "regime_label")]
+    pub regime: Regime,
+}
+
+/// Tip forces of the paper report's beam table, as multiples of F_thre: stick, threshold, then slip.
+const BEAM_FORCE_FACTORS: [f64; 7] = [0.5, 1.0, 1.125, 1.25, 1.5, 2.5, 3.75];
+
+impl ReportFace for TwinBeamsProblem {
+    const MONOTONE_IN_STIFFNESS: &'static str = "(T1)";
+    const KT_TITLE: &'static str = "twin beams";
+    const KT_COLUMNS: &'static [KtColumn] = &[
+        KtColumn::Answer {
+            title: "F_1 (N)",
+            width: 10,
+        },
+        KtColumn::Answer {
+            title: "X (mm)",
+            width: 10,
+        },
+        KtColumn::Answer {
+            title: "w(L) (mm)",
+            width: 11,
+        },
+        KtColumn::VsCurrent,
+        KtColumn::VsCoulomb,
+    ];
+    const KT_REGIME_WIDTH: usize = 20;
+    type KtAnswer = BeamKtAnswer;
+
+    fn kt_answer(answer: &Answer) -> Option<BeamKtAnswer> {
+        match *answer {
+            Answer::Beam(super::stiffness_answer::BeamAnswer {
+                first_macroslip_force,
+                micro_end,
+                tip_deflection,
+                regime,
+            }) => Some(BeamKtAnswer {
+                first_macroslip_force,
+                micro_end,
+                tip_deflection,
+                regime,
+            }),
+            _ => None,
+        }
+    }
+
+    fn kt_values(a: &BeamKtAnswer) -> (Vec<f64>, Regime) {
+        (
+            vec![a.first_macroslip_force, a.micro_end, a.tip_deflection],
+            a.regime,
+        )
+    }
+
+    fn paper_table() -> Option<String> {
+        // The paper's parameters are valid constants: construction cannot fail.
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).ok()?;
+        let mut out = String::new();
+        write_beam_table(&mut out, &beams);
+        Some(out)
+    }
+}
+
+fn write_beam_table(out: &mut String, beams: &TwinBeams) {
+    let p = beams.params();
+    let _ = writeln!(
+        out,
+        "Twin cantilever beams (Ligier & Bonhote 2014, section 2.1)"
+    );
+    let _ = writeln!(
+        out,
+        "  L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
+        p.length,
+        p.width,
+        p.half_height,
+        p.youngs_modulus,
+        p.pressure,
+        p.friction,
+        p.tangential_stiffness
+    );
+    let _ = writeln!(
+        out,
+        "  F_thre = {} N (Coulomb slip), F_1 = {} N (first macroslip, at x = {} mm), mu P / K_T = {} um",
+        number(beams.threshold_force()),
+        number(beams.first_macroslip_force()),
+        number(beams.first_macroslip_position()),
+        number(beams.saturation_slip() * 1e3)
+    );
+    let _ = writeln!(
+        out,
+        "  {:>8}  {:>14}  {:>18}  {:>9}  {:<10}  regularized",
+        "F (N)", "w_Coulomb (mm)", "w_regularized (mm)", "X (mm)", "Coulomb"
+    );
+    for factor in BEAM_FORCE_FACTORS {
+        let Ok(force) = TipForce::new(factor * beams.threshold_force()) else {
+            continue;
+        };
+        let row = beam_point(beams, force);
+        let _ = writeln!(
+            out,
+            "  {:>8}  {:>14}  {:>18}  {:>9}  {:<10}  {}",
+            number(row.force),
+            number(row.w_coulomb),
+            number(row.w_regularized),
+            number(row.micro_end),
+            row.regime_coulomb,
+            row.regime_regularized
+        );
+    }
+}
+
+impl From<&BeamPoint> for BeamRow {
+    fn from(p: &BeamPoint) -> Self {
+        BeamRow {
+            force: p.force,
+            w_coulomb_mm: p.w_coulomb,
+            w_regularized_mm: p.w_regularized,
+            micro_end: p.micro_end,
+            regime_coulomb: p.regime_coulomb.label(),
+            regime_regularized: p.regime_regularized.label(),
+            beam_theory: p.validity.theory.key(),
+            vs_continuum_within: p.validity.expected_error,
+            vs_continuum_within_fraction: p.validity.expected_error,
+        }
+    }
+}
+
+/// What D, U and the secant stiffness of the beams refer to.
+pub(crate) const CYCLE_UNITS_NOTE: &str = "D and U are for the pair (both beams' tip forces, the whole \
+     interface; U = 1/2 (2 F_a) w_a); the secant stiffness F_a/w_a and the loop w(F) are one beam's \
+     (the loop's area is D/2).";
+
+impl CycleFace for TwinBeamsProblem {
+    const CYCLE_WORDS: CycleWords = CycleWords {
+        peak_key: "w_peak_mm",
+        heading: ("Twin beams", "tip force"),
+        rows: [
+            "onset of sliding (N)",
+            "peak deflection w_a (mm)",
+            "D per cycle, both beams (N mm)",
+            "peak energy U, both (N mm)",
+            "damping ratio D / (4 pi U) (-)",
+            "secant F_a/w_a, 1 beam (N/mm)",
+        ],
+        note: CYCLE_UNITS_NOTE,
+    };
+
+    fn structure_line(beams: &TwinBeams) -> String {
+        let p = beams.params();
+        format!(
+            "L = {} mm, b = {} mm, h = {} mm, E = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
+            number(p.length),
+            number(p.width),
+            number(p.half_height),
+            number(p.youngs_modulus),
+            number(p.pressure),
+            number(p.friction),
+            number(p.tangential_stiffness)
+        )
+    }
+
+    fn cycle_inputs(beams: &TwinBeams, amplitude: TipForce) -> Inputs {
+        TwinBeamsProblem::to_inputs(BeamsInputs {
+            structure: beams.params(),
+            force: amplitude.newtons(),
+        })
+    }
+}
 
 /// The twin-beam report at one force.
 #[derive(Debug, Clone, Serialize)]
@@ -106,12 +297,10 @@ impl BeamReport {
         BeamReport {
             model: "beam",
             preset: preset.to_string(),
-            inputs: InputsReport(Inputs::Beam(
-                crate::problems::twin_beams::problem::BeamsInputs {
-                    structure: beams.params(),
-                    force: force.newtons(),
-                },
-            )),
+            inputs: InputsReport(TwinBeamsProblem::to_inputs(BeamsInputs {
+                structure: beams.params(),
+                force: force.newtons(),
+            })),
             force: row.force,
             threshold_force: beams.threshold_force(),
             first_macroslip_force: beams.first_macroslip_force(),
@@ -216,5 +405,27 @@ impl BeamReport {
             },
         );
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn beam_report_shows_units_thresholds_and_both_laws() {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let text = BeamReport::new("paper-beams", &beams, TipForce::new(100.0).unwrap()).text();
+        for needle in [
+            "KT  = 600 MPa/mm",
+            "(0.6 MPa/um)",
+            "F_thre     = 80 N",
+            "F_1        = 80.1857 N",
+            "0.5 um",
+            "17.3095 (microslip end X)",
+            "microslip+macroslip",
+        ] {
+            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+        }
     }
 }

@@ -1,22 +1,168 @@
+//! The lap joint's reports: its K_T table columns and its sweep row ([`ReportFace`]).
+//!
 //! `microslip lap` and `microslip cycle` of the lap joint: the joint at one force, both laws side
 //! by side, and one load cycle.
 
-use std::fmt::Write;
+use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::{InputsReport, regime_label, validity_label};
-use crate::Regime;
-use crate::kernel::regime::Law;
+use crate::kernel::regime::{Law, Regime};
 use crate::kernel::validity::Validity;
 use crate::numeric::NumericError;
+use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
-use crate::problems::lap::ContinuumLap;
-use crate::problems::lap::closed_form::{JointForce, LapJoint};
-use crate::problems::lap::cycle::{LapCycle, MasingCycle};
 use crate::problems::stiffness::mm_to_um;
+use crate::report::face::{KtColumn, ReportFace};
+use crate::report::point::cycle::{CycleFace, CycleWords};
+use crate::report::point::{InputsReport, regime_label, validity_label};
+use crate::report::rows::LapRow;
 use crate::report::{number, number_with, sanitize};
-use crate::study::curves::lap_point;
+use crate::study::curves::{Answer, lap_point};
+
+use super::closed_form::{JointForce, LapJoint};
+use super::continuum::ContinuumLap;
+use super::cycle::{LapCycle, MasingCycle};
+use super::point::LapPoint;
+use super::problem::{LapInputs, LapJointProblem};
+
+/// What a candidate K_T does to the joint at the model's force (`microslip kt`'s row).
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct LapKtAnswer {
+    /// Force of first sliding F_1 (N).
+    #[serde(rename = "F_1_N")]
+    pub first_slip_force: f64,
+    /// Sliding zone a from x = 0 (mm).
+    #[serde(rename = "a_mm")]
+    pub slide_at_inner_end: f64,
+    /// Sliding zone d from x = L (mm).
+    #[serde(rename = "d_mm")]
+    pub slide_at_cover_ends: f64,
+    /// Joint displacement Delta (mm).
+    #[serde(rename = "Delta_mm")]
+    pub joint_displacement: f64,
+    /// Regime.
+    #[serde(serialize_with = "regime_label")]
+    pub regime: Regime,
+}
+
+impl ReportFace for LapJointProblem {
+    const MONOTONE_IN_STIFFNESS: &'static str = "(L11)";
+    const KT_TITLE: &'static str = "double-lap joint";
+    const KT_COLUMNS: &'static [KtColumn] = &[
+        KtColumn::Answer {
+            title: "F_1 (N)",
+            width: 10,
+        },
+        KtColumn::Answer {
+            title: "a (mm)",
+            width: 8,
+        },
+        KtColumn::Answer {
+            title: "d (mm)",
+            width: 8,
+        },
+        KtColumn::Answer {
+            title: "Delta (mm)",
+            width: 12,
+        },
+        KtColumn::VsCurrent,
+        KtColumn::VsCoulomb,
+    ];
+    const KT_REGIME_WIDTH: usize = 29;
+    type KtAnswer = LapKtAnswer;
+
+    fn kt_answer(answer: &Answer) -> Option<LapKtAnswer> {
+        match *answer {
+            Answer::Lap(super::stiffness_answer::LapAnswer {
+                first_slip_force,
+                zones: (slide_at_inner_end, slide_at_cover_ends),
+                joint_displacement,
+                regime,
+            }) => Some(LapKtAnswer {
+                first_slip_force,
+                slide_at_inner_end,
+                slide_at_cover_ends,
+                joint_displacement,
+                regime,
+            }),
+            _ => None,
+        }
+    }
+
+    fn kt_values(a: &LapKtAnswer) -> (Vec<f64>, Regime) {
+        (
+            vec![
+                a.first_slip_force,
+                a.slide_at_inner_end,
+                a.slide_at_cover_ends,
+                a.joint_displacement,
+            ],
+            a.regime,
+        )
+    }
+}
+
+impl From<&LapPoint> for LapRow {
+    fn from(p: &LapPoint) -> Self {
+        LapRow {
+            force: p.force,
+            delta_coulomb: p.delta_coulomb,
+            delta_regularized: p.delta_regularized,
+            slide_at_inner_end: p.zones_regularized.0,
+            slide_at_cover_ends: p.zones_regularized.1,
+            slide_at_inner_end_coulomb: p.zones_coulomb.0,
+            slide_at_cover_ends_coulomb: p.zones_coulomb.1,
+            regime_coulomb: p.regime_coulomb.label(),
+            regime_regularized: p.regime_regularized.label(),
+            shear_lag_within: p.shear_lag_within,
+            shear_lag_within_fraction: p.shear_lag_within,
+        }
+    }
+}
+
+/// What D, U and the secant stiffness of the lap joint refer to.
+pub(crate) const LAP_CYCLE_NOTE: &str = "D is the whole joint's (both interfaces); U = 1/2 F_a \
+     Delta_a; the secant stiffness is F_a / Delta_a of the joint.";
+
+impl CycleFace for LapJointProblem {
+    const CYCLE_WORDS: CycleWords = CycleWords {
+        peak_key: "Delta_peak_mm",
+        heading: ("Double-lap joint", "force"),
+        rows: [
+            "onset of sliding (N)",
+            "peak displacement Delta_a (mm)",
+            "D per cycle (N mm)",
+            "peak energy U (N mm)",
+            "damping ratio D / (4 pi U) (-)",
+            "secant F_a/Delta_a (N/mm)",
+        ],
+        note: LAP_CYCLE_NOTE,
+    };
+
+    fn structure_line(joint: &LapJoint) -> String {
+        let p = joint.params();
+        format!(
+            "L = {} mm, b = {} mm, t1 = {} mm, t2 = {} mm, E1 = {} MPa, E2 = {} MPa, P = {} MPa, mu = {}, K_T = {} MPa/mm",
+            number(p.length),
+            number(p.width),
+            number(p.inner_thickness),
+            number(p.cover_thickness),
+            number(p.inner_modulus),
+            number(p.cover_modulus),
+            number(p.pressure),
+            number(p.friction),
+            number(p.tangential_stiffness)
+        )
+    }
+
+    fn cycle_inputs(joint: &LapJoint, amplitude: JointForce) -> Inputs {
+        LapJointProblem::to_inputs(LapInputs {
+            structure: joint.params(),
+            force: amplitude.newtons(),
+        })
+    }
+}
 
 /// What the shear-lag theory assumes and where its envelope comes from, said wherever its
 /// numbers are shown.
@@ -206,7 +352,7 @@ impl LapReport {
         LapReport {
             model: "lap",
             preset: preset.to_string(),
-            inputs: InputsReport(Inputs::Lap(crate::problems::lap::problem::LapInputs {
+            inputs: InputsReport(LapJointProblem::to_inputs(LapInputs {
                 structure: p,
                 force: force.newtons(),
             })),
@@ -369,13 +515,8 @@ impl LapReport {
                 );
             }
             Some(LapContinuumReport::Solved(c)) => {
-                let pressure = match self.inputs.0 {
-                    Inputs::Lap(crate::problems::lap::problem::LapInputs { structure, .. }) => {
-                        structure.pressure
-                    }
-                    Inputs::Beam(crate::problems::twin_beams::problem::BeamsInputs { .. })
-                    | Inputs::Plate(_) => f64::NAN,
-                };
+                let pressure = LapJointProblem::from_inputs(&self.inputs.0)
+                    .map_or(f64::NAN, |inputs| inputs.structure.pressure);
                 let _ = writeln!(
                     out,
                     "2-D continuum (plane stress, nu = 0.3, docs/theory.md (L13): within 0.02 % of CalculiX where compared)\n  \

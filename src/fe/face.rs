@@ -1,0 +1,163 @@
+//! [`Deck`]: what the FE layer needs of a problem (its deck's header lines, the FE points its
+//! runs and CSV curves give, its comparison with the closed forms), as a capability trait each
+//! problem's application folder implements (`src/problems/<name>/deck.rs`), and its erased side
+//! ([`AnyDeck`], [`deck_face`], [`AnyLoaded`]) generated from the registry.
+//!
+//! Why a trait and not a `match` on the problem's kind: the header, the readers and the loader
+//! are written once for every problem; what differs (the cited source, the interface node set,
+//! the expected closed-form values, the point a run gives) is the problem's own and lives in its
+//! folder, so that a new problem with a deck is its folder and its registry line.
+
+use std::fmt::Debug;
+
+use super::header::DeckHeader;
+use super::load::Loaded;
+use super::results::{CcxRun, ResultsError};
+use super::verdict::InterfaceMesh;
+use crate::problems::ModelKind;
+use crate::problems::Problem;
+use crate::problems::problem::Registered;
+
+/// A problem that CalculiX decks are written for and whose FE results are read and compared.
+pub trait Deck: Problem + Registered {
+    /// Where the problem comes from, as the deck's first comment line cites it
+    /// (`" (Ligier & Bonhote 2014)"`).
+    const SOURCE: &'static str;
+    /// The node set along the interface whose nodes make the FE mesh an X difference is counted
+    /// in ([`CcxRun::interface_mesh`]).
+    const INTERFACE_SET: &'static str;
+    /// One FE point, from a CalculiX run or a CSV curve.
+    type FePoint: Debug + Clone + PartialEq + Send + 'static;
+    /// The FE points against the closed forms.
+    type Compared: Debug + Clone;
+
+    /// The closed-form values the run of a deck with `header` should reproduce, as comment lines
+    /// (`model` is the header's model, validated).
+    fn expected(model: &Self::Model, header: &DeckHeader) -> String;
+
+    /// The FE points of a CalculiX run of a deck of this problem, whose header holds `params`.
+    ///
+    /// # Errors
+    /// A malformed `.dat` line, or a result the deck asks for and the `.dat` lacks.
+    fn ccx_points(run: &CcxRun, params: &Self::Params) -> Result<Vec<Self::FePoint>, ResultsError>;
+
+    /// The FE points of a CSV curve (its columns are the problem's measurement format).
+    ///
+    /// # Errors
+    /// A malformed row, a value out of its domain, or no row.
+    fn csv_points(text: &str) -> Result<Vec<Self::FePoint>, ResultsError>;
+
+    /// The FE `points` against the closed forms of `model` (X differences counted in `mesh`
+    /// when it is known).
+    ///
+    /// # Errors
+    /// As the problem's comparison: a fit of K_T that cannot be made is refused with why.
+    fn compare(
+        model: &Self::Model,
+        points: &[Self::FePoint],
+        mesh: Option<&InterfaceMesh>,
+    ) -> Self::Compared;
+}
+
+/// A [`Deck`] with its types erased: what a header and a run reader hold for any problem.
+pub trait AnyDeck: Send + Sync {
+    /// [`Deck::SOURCE`].
+    fn source(&self) -> &'static str;
+    /// [`Deck::INTERFACE_SET`].
+    fn interface_set(&self) -> &'static str;
+    /// [`Deck::expected`] for the header's model; `None` where the header's inputs do not
+    /// validate (a header edited by hand) or are of another problem.
+    fn expected(&self, header: &DeckHeader) -> Option<String>;
+}
+
+/// The [`AnyDeck`] of a [`Deck`] problem `P`.
+struct DeckOf<P>(std::marker::PhantomData<P>);
+
+impl<P: Deck> AnyDeck for DeckOf<P> {
+    fn source(&self) -> &'static str {
+        P::SOURCE
+    }
+
+    fn interface_set(&self) -> &'static str {
+        P::INTERFACE_SET
+    }
+
+    fn expected(&self, header: &DeckHeader) -> Option<String> {
+        let model = P::model(&P::from_inputs(&header.inputs)?).ok()?;
+        Some(P::expected(&model, header))
+    }
+}
+
+/// Writes [`deck_face`] and [`AnyLoaded`] from the registry: one arm per problem, none by hand.
+macro_rules! deck_faces {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        /// The [`Deck`] of the problem `kind`, erased.
+        pub fn deck_face(kind: ModelKind) -> &'static dyn AnyDeck {
+            match kind {
+                $(ModelKind::$variant => &DeckOf::<crate::problems::$folder::$problem>(
+                    std::marker::PhantomData,
+                )),+
+            }
+        }
+
+        /// FE points of any problem, read from one file: one variant per problem of the
+        /// registry, holding that problem's [`Deck::FePoint`]s.
+        #[derive(Debug, Clone, PartialEq)]
+        pub enum AnyLoaded {
+            $($(#[$doc])* $variant(Loaded<<crate::problems::$folder::$problem as Deck>::FePoint>)),+
+        }
+
+        impl AnyLoaded {
+            /// The problem the points are of.
+            pub fn kind(&self) -> ModelKind {
+                match self {
+                    $(AnyLoaded::$variant(_) => ModelKind::$variant),+
+                }
+            }
+
+            /// The points of `source`, read as the problem `kind`'s.
+            pub(crate) fn read(
+                kind: ModelKind,
+                source: super::load::Source<'_>,
+            ) -> Result<AnyLoaded, super::load::LoadError> {
+                match kind {
+                    $(ModelKind::$variant => source
+                        .points::<crate::problems::$folder::$problem>()
+                        .map(AnyLoaded::$variant)),+
+                }
+            }
+        }
+    };
+}
+
+microslip_core::with_problems!(deck_faces);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fe::deck::DeckMesh;
+    use crate::fe::header::StickSlope;
+
+    /// Every problem of the registry has a deck face: a cited source, an interface set, and the
+    /// expected values of its paper data set; a header of another problem's inputs has none.
+    #[test]
+    fn every_problem_has_a_deck_face() {
+        for kind in ModelKind::ALL {
+            let face = deck_face(kind);
+            assert!(face.source().starts_with(" ("), "{kind}");
+            assert!(!face.interface_set().is_empty(), "{kind}");
+            let header = DeckHeader {
+                inputs: kind.problem().paper_inputs(),
+                loads: vec![1.0],
+                mesh: DeckMesh::Coarse,
+                stick_slope: StickSlope::Model,
+                poisson: 0.3,
+            };
+            let expected = face.expected(&header).unwrap_or_default();
+            assert!(expected.starts_with("** Expected"), "{kind}: {expected}");
+            for other in ModelKind::ALL.into_iter().filter(|&k| k != kind) {
+                assert_eq!(deck_face(other).expected(&header), None, "{kind} {other}");
+            }
+        }
+    }
+}

@@ -1,0 +1,643 @@
+//! The twin beams' FE deck ([`Deck`]): the CalculiX deck of two clamped beams pressed together,
+//! the header lines it expects, the points a run gives and their comparison with the closed
+//! forms.
+
+use std::fmt::Write as _;
+
+use crate::fe::compare::{BeamCompared, BeamComparison, on_mesh};
+use crate::fe::deck::{
+    DeckMesh, DeckTooLarge, Geometry, LoadPath, MAX_DECK_ELEMENTS, load_steps, normal_stiffness,
+    real, start_step, write_cload, write_contact_pair, write_elements, write_interaction,
+    write_material, write_nodes, write_nset, write_pressure, write_surface,
+};
+use crate::fe::face::Deck;
+use crate::fe::header::{DeckHeader, StickSlope};
+use crate::fe::mesh::{Block, Face, graded_toward_end, graded_toward_end_count, uniform};
+use crate::fe::results::{
+    BeamFePoint, CcxRun, ResultsError, beam_points_from_csv, complete_block, interface_state,
+    load_step_label, load_step_time, mean, parse_dat, parse_node_sets, parse_nodes, relative_slip,
+};
+use crate::fe::verdict::InterfaceMesh;
+use crate::fit::{self, Measurement};
+use crate::kernel::format::number;
+use crate::kernel::params::Compact;
+use crate::problems::Problem;
+
+use super::closed_form::{TipForce, TwinBeams};
+use super::params::{BeamTheory, TwinBeamsParams};
+use super::problem::{BeamsInputs, BeamsModel, TwinBeamsProblem};
+
+/// Names of the node sets the deck prints to the .dat file, which the reader looks up.
+pub(crate) mod sets {
+    /// Tip nodes on the centre line of both beams (w(L) is their mean transverse displacement).
+    pub(crate) const BEAM_TIP: &str = "WTIP";
+    /// Lower beam's interface nodes along x (at z = 0).
+    pub(crate) const BEAM_LOWER_FACE: &str = "IFLOWER";
+    /// Upper beam's interface nodes along x (at z = 0); they start where `IFLOWER`'s are.
+    pub(crate) const BEAM_UPPER_FACE: &str = "IFUPPER";
+}
+
+/// The stick slope (MPa/mm) a deck of `beams` gives CalculiX: the model's K_T, or near Coulomb a
+/// boundary layer a tenth of the half-height h (1/k = h/10, K_T = 25 E / h).
+pub fn stick_slope_of(stick_slope: StickSlope, beams: &TwinBeams) -> f64 {
+    let p = beams.params();
+    match stick_slope {
+        StickSlope::Model => p.tangential_stiffness,
+        StickSlope::NearCoulomb => 25.0 * p.youngs_modulus / p.half_height,
+    }
+}
+
+/// The header of a twin-beam deck: K_T is the deck's stick slope, F the last load.
+pub fn header(
+    beams: &TwinBeams,
+    loads: &[TipForce],
+    mesh: DeckMesh,
+    stick_slope: StickSlope,
+) -> DeckHeader {
+    let mut structure = beams.params();
+    structure.tangential_stiffness = stick_slope_of(stick_slope, beams);
+    DeckHeader {
+        inputs: TwinBeamsProblem::to_inputs(BeamsInputs {
+            structure,
+            force: loads.last().map_or(0.0, |f| f.newtons()),
+        }),
+        loads: loads.iter().map(|f| f.newtons()).collect(),
+        mesh,
+        stick_slope,
+        poisson: structure.poisson,
+    }
+}
+
+/// The grading along the beams: (finest at the clamp, coarsest, growth ratio), mm.
+///
+/// Elements a fifth of a beam's height, graded down to 1/80 of it at the clamp, where the clamped
+/// face meets the interface and stresses are singular. A uniform mesh of the same size left w(L)
+/// 0.4 % too stiff, converging slowly (docs/theory.md, "Benchmarking an FE code"); two quadratic
+/// elements through each beam's height carry its bending exactly.
+fn beam_grading(beams: &TwinBeams, mesh: DeckMesh) -> (f64, f64, f64) {
+    let height = 2.0 * beams.params().half_height;
+    let r = mesh.refinement() as f64;
+    (height / 80.0 / r, height / 5.0 / r, 1.2)
+}
+
+/// The number of elements of the beam deck (two blocks, `2 r` elements through each beam's
+/// height, one across the width), counted without building it.
+fn beam_element_count(beams: &TwinBeams, mesh: DeckMesh) -> f64 {
+    let (finest, coarsest, ratio) = beam_grading(beams, mesh);
+    let along = graded_toward_end_count(0.0, beams.params().length, finest, coarsest, ratio);
+    2.0 * along * (2 * mesh.refinement()) as f64
+}
+
+/// Refuses a beam deck over [`MAX_DECK_ELEMENTS`], with the slenderness that would fit.
+fn check_beam_size(beams: &TwinBeams, mesh: DeckMesh) -> Result<(), DeckTooLarge> {
+    let elements = beam_element_count(beams, mesh);
+    if elements <= MAX_DECK_ELEMENTS as f64 {
+        return Ok(());
+    }
+    let p = beams.params();
+    let slenderness = p.length / p.half_height;
+    let count_at = |ratio: f64| {
+        let params = TwinBeamsParams {
+            half_height: p.length / ratio,
+            ..p
+        };
+        TwinBeams::new(params).map_or(f64::INFINITY, |b| beam_element_count(&b, mesh))
+    };
+    let (mut fits, mut too_many) = (1.0_f64, slenderness);
+    for _ in 0..60 {
+        let mid = (fits * too_many).sqrt();
+        if count_at(mid) <= MAX_DECK_ELEMENTS as f64 {
+            fits = mid;
+        } else {
+            too_many = mid;
+        }
+    }
+    let finer = match mesh {
+        DeckMesh::Fine => "use --mesh coarse (4 times fewer elements) or ",
+        DeckMesh::Coarse => "",
+    };
+    Err(DeckTooLarge {
+        elements,
+        advice: format!(
+            "elements along the beams are h/5 long, so the count grows with L/h = {} (L = {} mm, \
+             h = {} mm); {finer}choose beams with L/h below about {}",
+            Compact(slenderness),
+            Compact(p.length),
+            Compact(p.half_height),
+            Compact(fits.floor()),
+        ),
+    })
+}
+
+/// The twin-beam deck: the pressure P in a first step, then one step per tip force in `loads`
+/// (N on each beam, increasing), each printed at its end, on the default load path.
+///
+/// Every step is `NLGEOM`. CalculiX's contact always works on the deformed faces; with linear
+/// geometry the pressure on the outer faces keeps its direction while the beams rotate by
+/// theta = w', so in the beams' frame it carries an axial traction P theta on each outer face, an
+/// extra "friction" that beam theory does not have. Against mu P it is theta / mu: at macroslip
+/// onset of h/L = 1/30, mu P = 1.5 MPa it made CalculiX 1 % stiffer than Timoshenko, whatever mu
+/// (docs/theory.md, "How the decks are built"). With `NLGEOM` the pressure follows the faces, as
+/// the closed forms assume; what remains of large rotations is of order theta^2.
+///
+/// # Errors
+/// [`DeckTooLarge`] when the mesh would have more than [`MAX_DECK_ELEMENTS`] elements (very
+/// slender beams).
+pub fn beam_deck(
+    beams: &TwinBeams,
+    loads: &[TipForce],
+    mesh: DeckMesh,
+    stick_slope: StickSlope,
+) -> Result<String, DeckTooLarge> {
+    beam_deck_on_path(beams, loads, mesh, stick_slope, LoadPath::default())
+}
+
+/// [`beam_deck`] with the load path `path`.
+///
+/// # Errors
+/// As [`beam_deck`].
+pub fn beam_deck_on_path(
+    beams: &TwinBeams,
+    loads: &[TipForce],
+    mesh: DeckMesh,
+    stick_slope: StickSlope,
+    path: LoadPath,
+) -> Result<String, DeckTooLarge> {
+    check_beam_size(beams, mesh)?;
+    let p = beams.params();
+    let poisson = p.poisson;
+    let slope = stick_slope_of(stick_slope, beams);
+    let header = header(beams, loads, mesh, stick_slope);
+    let r = mesh.refinement();
+    let height = 2.0 * p.half_height;
+    let (finest, coarsest, ratio) = beam_grading(beams, mesh);
+    let from_clamp = graded_toward_end(0.0, p.length, finest, coarsest, ratio);
+    let mut xs: Vec<f64> = from_clamp.iter().rev().map(|x| p.length - x).collect();
+    xs[0] = 0.0;
+    let through = 2 * r;
+    let zs = uniform(0.0, p.width, 1);
+    let lower = Block::new(
+        [xs.clone(), uniform(-height, 0.0, through), zs.clone()],
+        1,
+        1,
+    );
+    let upper = Block::new(
+        [xs, uniform(0.0, height, through), zs],
+        lower.node_count() + 1,
+        lower.element_count() + 1,
+    );
+    let normal_slope = normal_stiffness(p.youngs_modulus, height / through as f64, slope);
+
+    let mut deck = header.to_comment();
+    deck.push_str("*HEADING\n");
+    let _ = writeln!(
+        deck,
+        "microslip twin beams, K_T = {} MPa/mm",
+        Compact(slope)
+    );
+    write_nodes(&mut deck, &[&lower, &upper]);
+    write_elements(&mut deck, "LOWER", &lower);
+    write_elements(&mut deck, "UPPER", &upper);
+
+    let [nx, ny, _] = lower.elements_along();
+    let mut clamp = lower.nodes_at_x(0);
+    clamp.extend(upper.nodes_at_x(0));
+    write_nset(&mut deck, "CLAMP", &clamp);
+    // Centre line of each beam: half-grid row ny (mid-height), on both side faces.
+    let tip: Vec<usize> = [&lower, &upper]
+        .iter()
+        .flat_map(|b| [0, 2].map(|k| b.node([2 * nx, ny, k])))
+        .flatten()
+        .collect();
+    write_nset(&mut deck, sets::BEAM_TIP, &tip);
+    let face_line = |b: &Block, j: usize| -> Vec<usize> {
+        (0..=2 * nx).filter_map(|i| b.node([i, j, 0])).collect()
+    };
+    write_nset(&mut deck, sets::BEAM_LOWER_FACE, &face_line(&lower, 2 * ny));
+    write_nset(&mut deck, sets::BEAM_UPPER_FACE, &face_line(&upper, 0));
+    write_surface(
+        &mut deck,
+        "SLOWERTOP",
+        &lower.boundary_faces(Face::YMax),
+        Face::YMax,
+    );
+    write_surface(
+        &mut deck,
+        "SUPPERBOT",
+        &upper.boundary_faces(Face::YMin),
+        Face::YMin,
+    );
+
+    write_material(&mut deck, p.youngs_modulus, poisson, &["LOWER", "UPPER"]);
+    write_interaction(&mut deck, normal_slope, p.friction, slope);
+    write_contact_pair(
+        &mut deck,
+        "upper beam's lower face",
+        "lower beam's upper face",
+        ["SUPPERBOT", "SLOWERTOP"],
+    );
+    deck.push_str("*BOUNDARY\nCLAMP, 1, 3\n");
+
+    // A near-Coulomb slope beyond K_T's accepted range: F_1 is F_thre there to many digits.
+    let at_slope = beams.with_tangential_stiffness(slope).unwrap_or(*beams);
+    let onset = at_slope.first_macroslip_force();
+    let force_step = path.force_step(onset);
+    let _ = writeln!(
+        deck,
+        "** load path: steps ending beyond F_1 = {} N (at this stick slope) in increments of at most\n\
+         ** {} N of tip force beyond F_1 (friction is path-dependent once it saturates), a step that\n\
+         ** crosses F_1 reaching it in its first increment (the law is linear below); the others in one",
+        Compact(onset),
+        Compact(force_step)
+    );
+    // Steps that cross F_1: their loads follow an amplitude that reaches F_1 in one increment
+    // (CalculiX reads amplitudes in the model definition, before the first step).
+    let newtons: Vec<f64> = loads.iter().map(|f| f.newtons()).collect();
+    let steps = load_steps(&mut deck, &newtons, force_step, onset);
+    deck.push_str("** step 1: the interface pressure P, pressing the beams together\n");
+    start_step(&mut deck, 1.0, Geometry::Nonlinear);
+    write_pressure(
+        &mut deck,
+        &[(&lower, Face::YMin), (&upper, Face::YMax)],
+        p.pressure,
+    );
+    end_beam_step(&mut deck);
+    for (n, (force, (increment, amplitude))) in loads.iter().zip(steps).enumerate() {
+        let _ = writeln!(
+            deck,
+            "** step {}: tip force F = {} N on each beam (uniform shear traction on the end face)",
+            n + 2,
+            Compact(force.newtons())
+        );
+        start_step(&mut deck, increment, Geometry::Nonlinear);
+        write_cload(&mut deck, amplitude.as_deref());
+        for block in [&lower, &upper] {
+            for (id, f) in block.end_face_loads(force.newtons()) {
+                let _ = writeln!(deck, "{id}, 2, {}", real(f));
+            }
+        }
+        end_beam_step(&mut deck);
+    }
+    Ok(deck)
+}
+
+/// The beam points of a beam deck's run: one per load step that CalculiX finished.
+///
+/// # Errors
+/// A malformed `.dat` line, or no result for the deck's first load step (a run that failed
+/// before it, or the `.dat` of another deck).
+fn beam_points(run: &CcxRun, inputs: &BeamsInputs) -> Result<Vec<BeamFePoint>, ResultsError> {
+    let structure = inputs.structure;
+    let blocks = parse_dat(run.dat)?;
+    let nodes = parse_nodes(run.deck)?;
+    let deck_sets = parse_node_sets(run.deck);
+    let saturation = structure.friction * structure.pressure / structure.tangential_stiffness;
+    let loads = &run.header.loads;
+    let mut points = Vec::with_capacity(loads.len());
+    for n in 0..loads.len() {
+        let (force, time) = (loads[n], load_step_time(n));
+        let step = || load_step_label(n, loads);
+        let [tip, lower, upper] = [sets::BEAM_TIP, sets::BEAM_LOWER_FACE, sets::BEAM_UPPER_FACE]
+            .map(|set| {
+                complete_block(&blocks, &deck_sets, set, time).map_err(|why| {
+                    if points.is_empty() || why.starts_with("no ") {
+                        ResultsError::Missing(format!(
+                            "{}: {why}; the .dat holds {} of the deck's {} load steps (did \
+                             ccx finish, and is this the .dat of this deck?)",
+                            step(),
+                            points.len(),
+                            loads.len()
+                        ))
+                    } else {
+                        ResultsError::Missing(format!("{}: {why}", step()))
+                    }
+                })
+            });
+        let (tip, lower, upper) = (tip?, lower?, upper?);
+        let deflection = mean(tip.rows.iter().map(|(_, u)| u[1]));
+        let (xs, slips) = relative_slip(&nodes, lower, Some(upper))?;
+        points.push(BeamFePoint {
+            force,
+            deflection,
+            interface: Some(interface_state(&xs, &slips, saturation)),
+        });
+    }
+    Ok(points)
+}
+
+/// Compares FE points of the beams with the closed forms of `beams` (the K_T the deck gave the FE
+/// code; its nu for the shear deflection), under both beam theories whichever `beams` has. `mesh`:
+/// the FE mesh along the interface, to count the X difference in elements.
+pub fn compare_beams(
+    beams: &TwinBeams,
+    points: &[BeamFePoint],
+    mesh: Option<&InterfaceMesh>,
+) -> BeamComparison {
+    let euler_bernoulli = beams.with_theory(BeamTheory::EulerBernoulli);
+    let timoshenko = beams.with_theory(BeamTheory::Timoshenko);
+    let rows: Vec<BeamCompared> = points
+        .iter()
+        .map(|&fe| {
+            let force = TipForce::clamped(fe.force);
+            let state = euler_bernoulli.regularized(force);
+            let euler = state.tip_deflection();
+            let macroslip_start = state.micro_zone_end();
+            BeamCompared {
+                fe,
+                euler,
+                shear_corrected: euler + beams.shear_deflection(force),
+                regime: state.regime(),
+                macroslip_start,
+                shear_corrected_within: timoshenko.validity(force).expected_error,
+                macroslip_start_mesh: on_mesh(mesh, fe.interface, macroslip_start),
+            }
+        })
+        .collect();
+    let bending_only: Vec<Measurement> = rows
+        .iter()
+        .map(|r| Measurement {
+            force: r.fe.force,
+            response: r.fe.deflection - (r.shear_corrected - r.euler),
+        })
+        .collect();
+    let implied = fit::fit_curve::<TwinBeamsProblem>(
+        &euler_bernoulli,
+        &bending_only,
+        (None, None),
+        fit::Weights::Absolute,
+        &mut |_| {},
+    );
+    BeamComparison {
+        rows,
+        poisson: beams.params().poisson,
+        implied,
+        stiffness: beams.params().tangential_stiffness,
+    }
+}
+
+/// The end of a beam load step: its node sets printed, its displacements and contact saved.
+fn end_beam_step(deck: &mut String) {
+    for set in [sets::BEAM_TIP, sets::BEAM_LOWER_FACE, sets::BEAM_UPPER_FACE] {
+        let _ = writeln!(deck, "*NODE PRINT, NSET={set}\nU");
+    }
+    deck.push_str("*NODE FILE\nU\n*CONTACT FILE\nCDIS, CSTR\n*END STEP\n");
+}
+
+impl Deck for TwinBeamsProblem {
+    const SOURCE: &'static str = " (Ligier & Bonhote 2014)";
+    const INTERFACE_SET: &'static str = sets::BEAM_LOWER_FACE;
+    type FePoint = BeamFePoint;
+    type Compared = BeamComparison;
+
+    fn expected(model: &BeamsModel, header: &DeckHeader) -> String {
+        let mut text = String::new();
+        let beams = &model.beams;
+        // The columns are Euler-Bernoulli whatever theory the preset chose: "+ shear"
+        // adds the shear deflection once (a Timoshenko model's w(L) already holds it).
+        let beams = &beams.with_theory(BeamTheory::EulerBernoulli);
+        let _ = writeln!(
+            text,
+            "** Expected from the closed forms (Euler-Bernoulli, the paper's model; \"+ shear\"\n\
+             ** adds each beam's shear deflection F L / (kappa G b 2h), kappa = 5/6, nu = {}):\n\
+             **   F (N) | w(L) Coulomb (mm) | w(L) regularized (mm) | + shear (mm) | X (mm) | regime",
+            Compact(header.poisson)
+        );
+        for &f in &header.loads {
+            let force = TipForce::clamped(f);
+            let state = beams.regularized(force);
+            let w = state.tip_deflection();
+            let _ = writeln!(
+                text,
+                "**   {} | {} | {} | {} | {} | {}",
+                number(f),
+                number(beams.coulomb(force).tip_deflection()),
+                number(w),
+                number(w + beams.shear_deflection(force)),
+                number(state.micro_zone_end()),
+                state.regime().label()
+            );
+        }
+        text
+    }
+
+    fn ccx_points(run: &CcxRun, params: &BeamsInputs) -> Result<Vec<BeamFePoint>, ResultsError> {
+        beam_points(run, params)
+    }
+
+    fn csv_points(text: &str) -> Result<Vec<BeamFePoint>, ResultsError> {
+        beam_points_from_csv(text)
+    }
+
+    fn compare(
+        model: &BeamsModel,
+        points: &[BeamFePoint],
+        mesh: Option<&InterfaceMesh>,
+    ) -> BeamComparison {
+        compare_beams(&model.beams, points, mesh)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fe::deck::test_support::elements_written;
+
+    fn paper_beam_deck(mesh: DeckMesh) -> String {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let loads = [40.0, 100.0].map(|f| TipForce::new(f).unwrap());
+        beam_deck(&beams, &loads, mesh, StickSlope::Model).unwrap()
+    }
+
+    #[test]
+    fn the_counted_size_is_the_written_size() {
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        for mesh in [DeckMesh::Coarse, DeckMesh::Fine] {
+            assert_eq!(
+                beam_element_count(&beams, mesh),
+                elements_written(&paper_beam_deck(mesh)) as f64
+            );
+        }
+    }
+
+    /// `h = 1e-6` used to abort on a 20 TB allocation; `L = 1e6` wrote 574 MB.
+    #[test]
+    fn a_deck_too_large_is_refused_with_its_count_the_limit_and_a_way_out() {
+        let loads = [TipForce::new(1.0).unwrap()];
+        for (length, half_height) in [(200.0, 1e-6), (1e6, 10.0), (200.0, 1e-3)] {
+            let params = TwinBeamsParams {
+                length,
+                half_height,
+                ..TwinBeamsParams::PAPER
+            };
+            let beams = TwinBeams::new(params).unwrap();
+            for mesh in [DeckMesh::Coarse, DeckMesh::Fine] {
+                let refused = beam_deck(&beams, &loads, mesh, StickSlope::Model).unwrap_err();
+                assert!(refused.elements > MAX_DECK_ELEMENTS as f64);
+                let message = refused.to_string();
+                assert!(message.contains("more than the 20000"), "{message}");
+                assert!(message.contains("L/h below about"), "{message}");
+            }
+        }
+        // The advice holds: beams at the slenderness it names fit.
+        let params = TwinBeamsParams {
+            half_height: 1e-3,
+            ..TwinBeamsParams::PAPER
+        };
+        let refused = beam_deck(
+            &TwinBeams::new(params).unwrap(),
+            &loads,
+            DeckMesh::Coarse,
+            StickSlope::Model,
+        )
+        .unwrap_err();
+        let fits: f64 = refused.advice.rsplit(' ').next().unwrap().parse().unwrap();
+        let params = TwinBeamsParams {
+            half_height: params.length / fits,
+            ..TwinBeamsParams::PAPER
+        };
+        let beams = TwinBeams::new(params).unwrap();
+        assert!(beam_deck(&beams, &loads, DeckMesh::Coarse, StickSlope::Model).is_ok());
+        let params = TwinBeamsParams {
+            half_height: params.length / (1.05 * fits),
+            ..TwinBeamsParams::PAPER
+        };
+        let beams = TwinBeams::new(params).unwrap();
+        assert!(beam_deck(&beams, &loads, DeckMesh::Coarse, StickSlope::Model).is_err());
+    }
+
+    #[test]
+    fn the_same_inputs_give_the_same_bytes() {
+        assert_eq!(
+            paper_beam_deck(DeckMesh::Coarse),
+            paper_beam_deck(DeckMesh::Coarse)
+        );
+    }
+
+    #[test]
+    fn beam_deck_has_one_step_per_load_after_the_pressure() {
+        let deck = paper_beam_deck(DeckMesh::Coarse);
+        assert_eq!(deck.matches("*STEP").count(), 3);
+        assert_eq!(deck.matches("*END STEP").count(), 3);
+        assert!(
+            deck.contains("*FRICTION\n0.3, 600.0\n"),
+            "stick slope = K_T"
+        );
+        assert!(deck.contains("*ELASTIC\n210000.0, 0.3\n"));
+    }
+
+    #[test]
+    fn steps_beyond_macroslip_onset_are_cut_into_force_steps() {
+        // Below F_1 (or a step that does not rise) one increment; beyond, step / (to - from),
+        // clamped to [1e-3, 1].
+        assert_eq!(LoadPath::increment(2.0, 100.0, 40.0, 100.0), 1.0);
+        assert_eq!(LoadPath::increment(2.0, 100.0, 100.0, 100.0), 1.0);
+        assert!((LoadPath::increment(2.0, 100.0, 80.0, 120.0) - 0.05).abs() < 1e-15);
+        assert_eq!(LoadPath::increment(50.0, 100.0, 80.0, 120.0), 1.0);
+        assert_eq!(LoadPath::increment(1e-6, 100.0, 80.0, 120.0), 1e-3);
+        // A ramp only for a step that crosses F_1 and needs more than one increment.
+        assert_eq!(LoadPath::ramp(2.0, 100.0, 40.0, 90.0), None);
+        assert_eq!(LoadPath::ramp(2.0, 100.0, 100.0, 120.0), None);
+        assert_eq!(LoadPath::ramp(80.0, 100.0, 40.0, 120.0), None);
+        let (t1, points) = LoadPath::ramp(2.0, 100.0, 40.0, 120.0).unwrap();
+        assert!((t1 - 2.0 / 22.0).abs() < 1e-15);
+        assert_eq!(
+            points,
+            [(0.0, 40.0 / 120.0), (t1, 100.0 / 120.0), (1.0, 1.0)]
+        );
+        assert_eq!(LoadPath::ramp(1e-6, 100.0, 40.0, 120.0).unwrap().0, 1e-3);
+        // The paper's beams: F_1 = F_thre / (1 - sech kL) with F_thre = 80 N; the default step is
+        // F_1 / 40.
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let default = LoadPath::default().force_step(beams.first_macroslip_force());
+        assert!((default - beams.first_macroslip_force() / 40.0).abs() < 1e-12);
+        let given = LoadPath {
+            force_step: Some(3.0),
+        };
+        assert_eq!(given.force_step(beams.first_macroslip_force()), 3.0);
+    }
+
+    #[test]
+    fn beam_steps_are_nonlinear_and_fine_beyond_onset() {
+        // F_1 of the paper's beams is about 80 N: the 40 N step keeps one increment; the step
+        // from 40 to 100 N reaches F_1 in its first increment (an amplitude), then goes on by
+        // at most 2 N; the step from 100 to 120 N starts beyond F_1: 2 N increments, 1/10 of it.
+        let beams = TwinBeams::new(TwinBeamsParams::PAPER).unwrap();
+        let onset = beams.first_macroslip_force();
+        let loads = [40.0, 100.0, 120.0].map(|f| TipForce::new(f).unwrap());
+        let path = LoadPath {
+            force_step: Some(2.0),
+        };
+        let deck =
+            beam_deck_on_path(&beams, &loads, DeckMesh::Coarse, StickSlope::Model, path).unwrap();
+        assert_eq!(
+            deck.matches("*STEP, NLGEOM, INC=1000\n*STATIC\n1., 1.\n")
+                .count(),
+            2
+        );
+        let amplitude = deck
+            .split("*AMPLITUDE, NAME=RAMP3\n")
+            .nth(1)
+            .unwrap()
+            .lines()
+            .next()
+            .unwrap();
+        let points: Vec<f64> = amplitude.split(", ").map(|v| v.parse().unwrap()).collect();
+        let t1 = points[2];
+        assert_eq!([points[0], points[1]], [0.0, 0.4], "{amplitude}");
+        assert!((points[3] - onset / 100.0).abs() < 1e-15, "{amplitude}");
+        assert_eq!([points[4], points[5]], [1.0, 1.0]);
+        // Each later increment of step time t1 adds (100 - F_1) t1 / (1 - t1): 2 N.
+        assert!(((100.0 - onset) * t1 / (1.0 - t1) - 2.0).abs() < 1e-9);
+        let line = format!("{t1:.9e}, 1., {:.9e}, {t1:.9e}", t1 * 1e-3);
+        assert_eq!(deck.matches(&line).count(), 1, "{line}");
+        assert_eq!(deck.matches("*CLOAD, AMPLITUDE=RAMP3\n").count(), 1);
+        assert_eq!(
+            deck.matches("AMPLITUDE").count(),
+            2,
+            "one ramp, defined once"
+        );
+        let line = "1.000000000e-1, 1., 1.000000000e-4, 1.000000000e-1";
+        assert_eq!(deck.matches(line).count(), 1, "{line}");
+        // Amplitudes belong to the model definition: before the first step.
+        assert!(deck.find("*AMPLITUDE").unwrap() < deck.find("*STEP").unwrap());
+    }
+
+    #[test]
+    fn tip_loads_add_up_to_the_force_on_each_beam() {
+        let deck = paper_beam_deck(DeckMesh::Coarse);
+        // The step of F = 100 N crosses F_1: its loads follow an amplitude, ending at 1.
+        let step = deck.split("*CLOAD").nth(2).unwrap();
+        assert!(step.starts_with(", AMPLITUDE=RAMP"), "{}", &step[..40]);
+        let step = step.split_once('\n').unwrap().1;
+        let total: f64 = step
+            .lines()
+            .take_while(|l| !l.starts_with('*'))
+            .map(|l| l.split(", ").nth(2).unwrap().parse::<f64>().unwrap())
+            .sum();
+        assert!(
+            (total - 200.0).abs() < 1e-9,
+            "two beams x 100 N, got {total}"
+        );
+    }
+
+    #[test]
+    fn fine_mesh_has_about_four_times_the_elements() {
+        let count = |deck: &str| {
+            deck.split("*ELEMENT, TYPE=C3D20R")
+                .skip(1)
+                .map(|s| {
+                    s.lines()
+                        .skip(1)
+                        .take_while(|l| !l.starts_with('*'))
+                        .count()
+                        / 2
+                })
+                .sum::<usize>()
+        };
+        // Every size halved along x and y (the grading toward the clamp rounds the count), one
+        // element across the width in both.
+        let ratio = count(&paper_beam_deck(DeckMesh::Fine)) as f64
+            / count(&paper_beam_deck(DeckMesh::Coarse)) as f64;
+        assert!((3.5..4.5).contains(&ratio), "{ratio}");
+    }
+}

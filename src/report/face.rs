@@ -1,0 +1,248 @@
+//! [`ReportFace`]: what the generic reports need of a problem (the K_T table's columns, the
+//! equation that shows its response never grows with K_T, its table in the paper report), as a
+//! trait each problem's application folder implements (`src/problems/<name>/report.rs`), and its
+//! erased side ([`report_face`]) generated from the registry.
+//!
+//! Why a trait: the K_T table, the tolerance answer and the paper report are written once for
+//! every problem; a problem's columns and words are its own and live in its folder, so that a
+//! new problem is its folder and its registry line, not an arm in each report.
+
+use std::fmt::{Debug, Write as _};
+
+use serde::Serialize;
+
+use crate::kernel::regime::Regime;
+use crate::problems::problem::Registered;
+use crate::problems::{ModelKind, Problem};
+use crate::report::number;
+use crate::study::curves::Answer;
+
+/// The heading of a K_T table: what every problem's first line says.
+#[derive(Debug, Clone, Copy)]
+pub struct KtHeading<'a> {
+    /// The preset's name, sanitized.
+    pub preset: &'a str,
+    /// The load case's force (N), `None` for a problem without a load.
+    pub force: Option<f64>,
+    /// mu P (MPa), formatted.
+    pub friction_stress: &'a str,
+    /// The contact elements' length (mm), formatted.
+    pub element: &'a str,
+}
+
+/// One row of a K_T table, formatted, but the answer's own columns.
+#[derive(Debug, Clone, Copy)]
+pub struct KtRow<'a> {
+    /// The candidate's source.
+    pub source: &'a str,
+    /// Its K_T, or `-`.
+    pub kt: &'a str,
+    /// Against the current K_T's answer, signed %.
+    pub vs_current: &'a str,
+    /// Against Coulomb's, signed %.
+    pub vs_coulomb: &'a str,
+    /// What the regime column says without an answer.
+    pub unanswered: &'a str,
+    /// How the candidate was obtained.
+    pub basis: &'a str,
+}
+
+/// A column of a problem's K_T table between the candidate's K_T and the regime: one of the
+/// answer's numbers, or a comparison every problem has.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum KtColumn {
+    /// The answer's next number ([`ReportFace::kt_values`]), under `title`, right-aligned in
+    /// `width` characters.
+    Answer {
+        /// The column's title, with its unit (`w(L) (mm)`).
+        title: &'static str,
+        /// Its width.
+        width: usize,
+    },
+    /// Against the current K_T's response, signed %.
+    VsCurrent,
+    /// Against Coulomb's response, signed %.
+    VsCoulomb,
+}
+
+/// A problem as the generic reports show it.
+pub trait ReportFace: Problem + Registered {
+    /// The equation of docs/theory.md that shows the problem's response never grows with K_T
+    /// (`(T1)`), which the tolerance answer cites.
+    const MONOTONE_IN_STIFFNESS: &'static str;
+
+    /// What a K_T candidate does to the problem: the fields of the K_T table's JSON row beside
+    /// the candidate's (flattened into it, so each problem names its own).
+    type KtAnswer: Serialize + Debug + Clone;
+
+    /// What the K_T table's heading calls the problem (`twin beams`); a problem with a load
+    /// adds the force it is at.
+    const KT_TITLE: &'static str;
+    /// The K_T table's columns between K_T and the regime, in order.
+    const KT_COLUMNS: &'static [KtColumn];
+    /// The width of the regime column (its longest label).
+    const KT_REGIME_WIDTH: usize;
+
+    /// The problem's part of `answer`; `None` for an answer of another problem (while
+    /// [`Answer`] is an enum of every problem's answers).
+    fn kt_answer(answer: &Answer) -> Option<Self::KtAnswer>;
+
+    /// The answer's numbers, one per [`KtColumn::Answer`] in order, and its regime.
+    fn kt_values(answer: &Self::KtAnswer) -> (Vec<f64>, Regime);
+
+    /// The problem's table in the paper report (`microslip` alone), where the paper has one.
+    fn paper_table() -> Option<String> {
+        None
+    }
+}
+
+/// A [`ReportFace`] with its types erased.
+pub trait AnyReportFace: Send + Sync {
+    /// [`ReportFace::MONOTONE_IN_STIFFNESS`].
+    fn monotone_in_stiffness(&self) -> &'static str;
+    /// The K_T table's heading and column titles, each line ended.
+    fn kt_heading(&self, heading: &KtHeading) -> String;
+    /// One K_T table row without an answer: dashes in the problem's columns.
+    fn kt_row_unanswered(&self, row: &KtRow) -> String;
+    /// [`ReportFace::paper_table`].
+    fn paper_table(&self) -> Option<String>;
+}
+
+/// The [`AnyReportFace`] of a [`ReportFace`] problem `P`.
+struct ReportOf<P>(std::marker::PhantomData<P>);
+
+impl<P: ReportFace> AnyReportFace for ReportOf<P> {
+    fn monotone_in_stiffness(&self) -> &'static str {
+        P::MONOTONE_IN_STIFFNESS
+    }
+
+    fn kt_heading(&self, heading: &KtHeading) -> String {
+        let KtHeading {
+            preset,
+            force,
+            friction_stress: mu_p,
+            element,
+        } = *heading;
+        let at = match P::INFO.load {
+            Some(_) => format!(
+                " at F = {} N",
+                force.map_or_else(|| "-".to_string(), number)
+            ),
+            None => String::new(),
+        };
+        let mut out = format!(
+            "K_T candidates for preset {preset}: {}{at}, mu P = {mu_p} MPa, contact elements \
+             {element} mm\n",
+            P::KT_TITLE
+        );
+        let _ = write!(out, "{:<16} {:>12}", "source", "K_T (MPa/mm)");
+        for column in P::KT_COLUMNS {
+            let (title, width) = match *column {
+                KtColumn::Answer { title, width } => (title, width),
+                KtColumn::VsCurrent => ("vs current", 10),
+                KtColumn::VsCoulomb => ("vs Coulomb", 10),
+            };
+            let _ = write!(out, " {title:>width$}");
+        }
+        let _ = writeln!(
+            out,
+            "  {:<width$} basis",
+            "regime",
+            width = P::KT_REGIME_WIDTH
+        );
+        out
+    }
+
+    fn kt_row_unanswered(&self, row: &KtRow) -> String {
+        kt_row::<P>(row, None)
+    }
+
+    fn paper_table(&self) -> Option<String> {
+        P::paper_table()
+    }
+}
+
+/// One row of `P`'s K_T table, ended: the answer's columns, or dashes without one.
+pub(crate) fn kt_row<P: ReportFace>(row: &KtRow, answer: Option<&P::KtAnswer>) -> String {
+    let values = answer.map(P::kt_values);
+    let mut out = format!("{:<16} {:>12}", row.source, row.kt);
+    let mut numbers = values
+        .iter()
+        .flat_map(|(numbers, _)| numbers.iter().copied());
+    for column in P::KT_COLUMNS {
+        let (text, width) = match (*column, &values) {
+            (KtColumn::Answer { width, .. }, Some(_)) => (
+                numbers.next().map_or_else(|| "-".to_string(), number),
+                width,
+            ),
+            (KtColumn::VsCurrent, Some(_)) => (row.vs_current.to_string(), 10),
+            (KtColumn::VsCoulomb, Some(_)) => (row.vs_coulomb.to_string(), 10),
+            (KtColumn::Answer { width, .. }, None) => ("-".to_string(), width),
+            (KtColumn::VsCurrent | KtColumn::VsCoulomb, None) => ("-".to_string(), 10),
+        };
+        let _ = write!(out, " {text:>width$}");
+    }
+    let regime = values
+        .as_ref()
+        .map_or(row.unanswered, |(_, regime)| regime.label());
+    let _ = writeln!(
+        out,
+        "  {regime:<width$} {}",
+        row.basis,
+        width = P::KT_REGIME_WIDTH
+    );
+    out
+}
+
+/// Writes [`report_face`] from the registry.
+macro_rules! report_faces {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        /// The [`ReportFace`] of the problem `kind`, erased.
+        pub fn report_face(kind: ModelKind) -> &'static dyn AnyReportFace {
+            match kind {
+                $(ModelKind::$variant => &ReportOf::<crate::problems::$folder::$problem>(
+                    std::marker::PhantomData,
+                )),+
+            }
+        }
+    };
+}
+
+microslip_core::with_problems!(report_faces);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each problem's K_T table lines up: a row without an answer, given the titles' words, is
+    /// the title line itself; and every problem cites an equation.
+    #[test]
+    fn every_problem_s_kt_table_lines_up() {
+        for kind in ModelKind::ALL {
+            let face = report_face(kind);
+            assert!(face.monotone_in_stiffness().starts_with('('), "{kind}");
+            let heading = face.kt_heading(&KtHeading {
+                preset: "p",
+                force: Some(1.0),
+                friction_stress: "1",
+                element: "1",
+            });
+            let titles = heading.lines().nth(1).unwrap_or_default();
+            let row = face.kt_row_unanswered(&KtRow {
+                source: "source",
+                kt: "K_T (MPa/mm)",
+                vs_current: "-",
+                vs_coulomb: "-",
+                unanswered: "regime",
+                basis: "basis",
+            });
+            let words = titles.split_whitespace().count();
+            assert!(words > 4, "{kind}: {titles}");
+            assert_eq!(
+                titles.len(),
+                row.trim_end().len(),
+                "{kind}:\n{titles}\n{row}"
+            );
+        }
+    }
+}
