@@ -11,6 +11,7 @@
 //! described in words instead of curves), and this layer already turns a model into what a
 //! screen shows.
 
+use crate::fe::face::Deck;
 use crate::fe::load::{AnyLoaded, Loaded};
 use crate::fit::Measured;
 use crate::kernel::format::{number, number_with};
@@ -119,7 +120,7 @@ pub const KT_WIDTH: usize = 7;
 pub const TABLE_TOLERANCE: f64 = 0.01;
 
 /// How a problem shows on the terminal screen beside its charts (see the module docs).
-pub trait PaneFace: Problem {
+pub trait PaneFace: Deck {
     /// What x = 0 of the zone strip is (`clamp`, `centre`, `inner end`).
     const STRIP_ORIGIN: &'static str;
     /// The reader of its measured curve, where `f` fits one ([`crate::fit::Structure::of`]).
@@ -130,9 +131,6 @@ pub trait PaneFace: Problem {
     /// The K_T table's columns after `source` and `K_T`: each head and width (with them, 44
     /// characters at most).
     const KT_COLUMNS: &'static [(&'static str, usize)];
-    /// One point of the problem's FE results, as `fe` reads them (`d` loads them).
-    type FePoint;
-
     /// The parameter pane's title (`Twin beams, Euler-Bernoulli`).
     fn parameters_title(params: &Self::Params) -> String;
 

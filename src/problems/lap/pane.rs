@@ -26,7 +26,6 @@ impl PaneFace for LapJointProblem {
     const MEASURED: CurveParser = crate::measured::parse_measured_joint_with_progress;
     const KT_COLUMNS: &'static [(&'static str, usize)] =
         &[("F_1 N", 7), ("a+d mm", 7), ("Delta mm", 8)];
-    type FePoint = LapFePoint;
 
     fn parameters_title(_params: &Self::Params) -> String {
         "Double-lap joint".to_string()

@@ -36,7 +36,6 @@ impl PaneFace for SqueezedPlateProblem {
     const STRIP_ORIGIN: &'static str = "centre";
     const PANE_CONTINUUM: Option<PaneContinuum<SqueezedPlate>> = Some(pane_continuum);
     const KT_COLUMNS: &'static [(&'static str, usize)] = &[("u(L) mm", 9), ("X_r mm", 8)];
-    type FePoint = PlateFePoint;
 
     fn parameters_title(_params: &Self::Params) -> String {
         "Squeezed plate".to_string()

@@ -26,7 +26,6 @@ impl PaneFace for TwinBeamsProblem {
     const STRIP_ORIGIN: &'static str = "clamp";
     const KT_COLUMNS: &'static [(&'static str, usize)] =
         &[("F_1 N", 7), ("X mm", 7), ("w(L) mm", 8)];
-    type FePoint = BeamFePoint;
 
     fn parameters_title(params: &Self::Params) -> String {
         format!("Twin beams, {}", params.structure.theory.label())
