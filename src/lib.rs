@@ -120,13 +120,7 @@ pub mod app {
     }
 }
 
-pub use kernel::params::{ParamError, Unit};
-pub use kernel::regime::Regime;
-pub use problems::inputs::{Inputs, Model};
-pub use problems::plate::closed_form::{
-    ContactPressure, CoulombPlate, PlateParams, RegularizedPlate, SqueezedPlate,
-};
-pub use problems::twin_beams::closed_form::{
-    CoulombBeams, RegularizedBeams, TipForce, TwinBeams, TwinBeamsParams,
-};
-pub use problems::{BeamParam, ModelKind, Param, PlateParam};
+/// The core's prelude at the root (`microslip::TwinBeams`): every registered problem's type,
+/// parameter keys and closed forms (generated from the registry), the generic handles and the
+/// errors; the root names no problem itself.
+pub use microslip_core::prelude::*;

@@ -55,13 +55,7 @@ pub mod problems;
 pub mod study;
 pub mod verify;
 
-pub use kernel::params::{ParamError, Unit};
-pub use kernel::regime::Regime;
-pub use problems::inputs::{Inputs, Model};
-pub use problems::plate::closed_form::{
-    ContactPressure, CoulombPlate, PlateParams, RegularizedPlate, SqueezedPlate,
-};
-pub use problems::twin_beams::closed_form::{
-    CoulombBeams, RegularizedBeams, TipForce, TwinBeams, TwinBeamsParams,
-};
-pub use problems::{BeamParam, ModelKind, Param, PlateParam};
+/// The prelude at the crate root too (`microslip_core::TwinBeams`): every registered problem's
+/// type, parameter keys and closed forms, generated from the registry, with the generic handles
+/// and errors; the crate root names no problem itself.
+pub use prelude::*;

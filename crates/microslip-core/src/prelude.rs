@@ -4,7 +4,7 @@
 //!
 //! The per-problem part is generated from the registry ([`crate::with_problems`]): each
 //! registered problem's type (`TwinBeamsProblem`, ...) and everything public in its folder's
-//! `closed_form` module (its model, its checked force and parameter types, its law states), so
+//! `closed_form` and `params` modules (its model, its checked force and parameter types, its law states), so
 //! that a new problem is in the prelude by its registry line and this file names none.
 //!
 //! ```
@@ -32,6 +32,7 @@ macro_rules! problem_exports {
         $(
             pub use crate::problems::$folder::$problem;
             pub use crate::problems::$folder::closed_form::*;
+            pub use crate::problems::$folder::params::*;
         )+
     };
 }
