@@ -163,6 +163,25 @@ pub fn parse_measured_joint_with_progress(
     parse_measured_curve(text, &MEASURED_JOINT_DISPLACEMENT, progress)
 }
 
+/// [`parse_measured_with_progress`] for the measured curve of any fittable problem, whose
+/// response column is `response` (`fit::Structure::response_column`: `w_mm`, `Delta_mm`): what
+/// a caller outside the command line (the Python binding) reads a fit's data with, without
+/// naming the problem.
+///
+/// # Errors
+/// As [`parse_measured_with_progress`], with the problem's column names.
+pub fn parse_measured_response_with_progress(
+    text: &str,
+    response: &'static str,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Measured, DataError> {
+    let curve = Curve {
+        y: response,
+        ..MEASURED_DEFLECTION
+    };
+    parse_measured_curve(text, &curve, progress)
+}
+
 fn parse_measured_curve(
     text: &str,
     curve: &Curve,
