@@ -450,6 +450,24 @@ fn read_rows(
 mod tests {
     use super::*;
 
+    /// Read by its response column, a fittable problem's curve is what its own reader gives.
+    #[test]
+    fn a_curve_read_by_its_response_column_is_its_problem_s() {
+        let beam = "F_N,w_mm,sigma_mm\n10,0.1,0.01\n20,0.2,0.01\n30,0.3,0.01\n";
+        let joint = "F_N,Delta_regularized_mm\n10,0.1\n20,0.2\n30,0.3\n";
+        let by = |text, column| parse_measured_response_with_progress(text, column, &mut |_, _| {});
+        assert_eq!(
+            by(beam, "w_mm"),
+            parse_measured_with_progress(beam, &mut |_, _| {})
+        );
+        assert_eq!(
+            by(joint, "Delta_mm"),
+            parse_measured_joint_with_progress(joint, &mut |_, _| {})
+        );
+        assert!(by(joint, "Delta_mm").is_ok());
+        assert!(by(beam, "Delta_mm").is_err());
+    }
+
     #[test]
     fn a_sweep_table_of_microslip_loads_as_measurements() {
         let text = "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized\n\
