@@ -163,6 +163,25 @@ pub fn parse_measured_joint_with_progress(
     parse_measured_curve(text, &MEASURED_JOINT_DISPLACEMENT, progress)
 }
 
+/// [`parse_measured_with_progress`] for the measured curve of any fittable problem, whose
+/// response column is `response` (`fit::Structure::response_column`: `w_mm`, `Delta_mm`): what
+/// a caller outside the command line (the Python binding) reads a fit's data with, without
+/// naming the problem.
+///
+/// # Errors
+/// As [`parse_measured_with_progress`], with the problem's column names.
+pub fn parse_measured_response_with_progress(
+    text: &str,
+    response: &'static str,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Measured, DataError> {
+    let curve = Curve {
+        y: response,
+        ..MEASURED_DEFLECTION
+    };
+    parse_measured_curve(text, &curve, progress)
+}
+
 fn parse_measured_curve(
     text: &str,
     curve: &Curve,
@@ -430,6 +449,24 @@ fn read_rows(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Read by its response column, a fittable problem's curve is what its own reader gives.
+    #[test]
+    fn a_curve_read_by_its_response_column_is_its_problem_s() {
+        let beam = "F_N,w_mm,sigma_mm\n10,0.1,0.01\n20,0.2,0.01\n30,0.3,0.01\n";
+        let joint = "F_N,Delta_regularized_mm\n10,0.1\n20,0.2\n30,0.3\n";
+        let by = |text, column| parse_measured_response_with_progress(text, column, &mut |_, _| {});
+        assert_eq!(
+            by(beam, "w_mm"),
+            parse_measured_with_progress(beam, &mut |_, _| {})
+        );
+        assert_eq!(
+            by(joint, "Delta_mm"),
+            parse_measured_joint_with_progress(joint, &mut |_, _| {})
+        );
+        assert!(by(joint, "Delta_mm").is_ok());
+        assert!(by(beam, "Delta_mm").is_err());
+    }
 
     #[test]
     fn a_sweep_table_of_microslip_loads_as_measurements() {

@@ -1,54 +1,68 @@
-//! The one place this binding names a problem. The application's reports and FE decks are still
-//! one function per problem (`report::json::beam`, `plate`, `lap`, `fe::deck::beam_deck_on_path`,
-//! ...) taking typed models, and the CLI commands that choose among them are private to its `app`
-//! feature. Each function here is that command's body minus argument parsing and printing, and
-//! says which file it mirrors; the tests compare every one with the CLI's output, so a drift
-//! fails them. When issue 32 puts reports and decks behind the problem traits, each `match`
-//! becomes one generic call and this file shrinks to nothing. Meanwhile a new problem needs an
-//! arm here for `to_dict`, `cycle`, `kt_tolerance`, `fit`, `deck` and `compare` (construct,
-//! solve, sweep, `fe_defaults` and `continuum` are generic, in `features`).
+//! The one place this binding names a problem, and only where the application has no generic
+//! function for it yet. Each public function here is a CLI command's body (the CLI's is private
+//! to its `app` feature) minus argument parsing and printing, and says which file it mirrors;
+//! the tests compare every one with the CLI's output, so a drift fails them.
+//!
+//! The bodies are written once for every problem, over the application's traits and generic
+//! functions (`fe::load::results::<P>`, `Deck::compare`, `json::cycle::<P>`, `json::of`,
+//! `fit::Structure::of`, `study::tolerance::*::<P>`), and dispatched through [`face`], generated
+//! from the registry (`microslip_core::with_problems!`). What is still one function per problem
+//! in the application (its point report, its deck writer and default loads, its comparison
+//! report) is a [`Face`] method each problem implements below, in a few lines that call it; a
+//! capability it lacks (a load to cycle) is a default it keeps. A new problem is one `impl Face`
+//! here; when the application puts those behind traits, the impls shrink to nothing.
 
+use std::marker::PhantomData;
 use std::path::Path;
 
 use microslip::TipForce;
-use microslip::fe::deck::{self, DeckMesh, LoadPath};
+use microslip::fe::deck::{DeckMesh, LoadPath};
+use microslip::fe::face::Deck;
 use microslip::fe::header::StickSlope;
-use microslip::fe::{compare, lap_deck, load};
+use microslip::fe::load;
 use microslip::fit::{self, Weights};
 use microslip::kernel::params::{Compact, Domain, Unit};
 use microslip::kernel::validity::Validity;
 use microslip::problems::inputs::Model;
 use microslip::problems::lap::LapJointProblem;
+use microslip::problems::load_driven::LoadDriven;
+use microslip::problems::plate::SqueezedPlateProblem;
+use microslip::problems::problem::Registered;
 use microslip::problems::twin_beams::TwinBeamsProblem;
-use microslip::problems::{ModelKind, lap, plate};
-use microslip::report::compare::plate::PlateCompareReport;
-use microslip::report::compare::{beam::BeamCompareReport, lap::LapCompareReport};
+use microslip::problems::{ModelKind, Problem, lap, plate, twin_beams};
+use microslip::report::compare::{
+    beam::BeamCompareReport, lap::LapCompareReport, plate::PlateCompareReport,
+};
 use microslip::report::json;
+use microslip::report::point::cycle::CycleFace;
 use microslip::report::point::tolerance::ToleranceReport;
-use microslip::study::tolerance;
+use microslip::study::tolerance::{self, ToleranceAnswer};
 use serde_json::Value;
 
-/// The model of `kind` at `values`, validated as the CLI validates it.
-fn model(kind: ModelKind, values: &[f64]) -> Result<Model, String> {
+/// The model of `kind` at `values`, validated as the CLI validates it: with its load, or
+/// without it (`loaded` false: a command that does not read F, such as cycle, fit, compare).
+fn model(kind: ModelKind, values: &[f64], loaded: bool) -> Result<Model, String> {
     let inputs = kind
         .problem()
         .inputs_at(values)
         .map_err(|e| e.to_string())?;
-    inputs.validate().map_err(|e| e.to_string())
+    if loaded {
+        inputs.validate()
+    } else {
+        inputs.validate_without_load()
+    }
+    .map_err(|e| e.to_string())
 }
 
-/// The model without its load (a command that does not read F: cycle, fit, compare).
-fn structure(kind: ModelKind, values: &[f64]) -> Result<Model, String> {
-    let inputs = kind
-        .problem()
-        .inputs_at(values)
-        .map_err(|e| e.to_string())?;
-    inputs.validate_without_load().map_err(|e| e.to_string())
-}
-
-/// A report struct as the CLI's JSON value (`report::point::to_json`, which is crate-private).
-fn to_json(report: &impl serde::Serialize) -> Value {
-    serde_json::to_value(report).unwrap_or(Value::Null)
+/// `model` as the problem `P`'s typed model. Every caller holds a model of `P` (from
+/// [`face`]`(P::KIND)`); the error says so should one not.
+fn typed<P: Problem + Registered>(model: &Model) -> Result<P::Model, String> {
+    model.of::<P>().map_err(|other| {
+        format!(
+            "internal error: a {other} model where a {} one was expected",
+            P::KIND
+        )
+    })
 }
 
 /// A value given for a flag of the CLI (`amplitude`, `F_from`), checked against `domain` with the
@@ -57,56 +71,6 @@ pub fn check_flag(name: &str, value: f64, domain: Domain, unit: Unit) -> Result<
     domain
         .check("value", value, unit)
         .map_err(|e| format!("invalid {name} = {}: {}", Compact(value), e.allowed()))
-}
-
-/// `microslip beam|plate|lap --format json` (`src/cli/mod.rs`, `src/cli/point.rs`): the plate and
-/// the joint add the continuum reference where their reduced theory does not hold.
-pub fn point_report(kind: ModelKind, values: &[f64], name: &str) -> Result<Value, String> {
-    Ok(match model(kind, values)? {
-        Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, force }) => json::beam(name, &beams, force),
-        Model::Plate(squeezed) => {
-            let continuum = (squeezed.validity().validity != Validity::Holds).then(|| {
-                plate::solve_plate_continuum(squeezed.params(), plate::ContinuumMesh::default())
-            });
-            json::plate(name, &squeezed, continuum.as_ref())
-        }
-        Model::Lap(microslip::problems::lap::problem::LapModel { joint, force }) => {
-            let continuum = (joint.validity(force).validity != Validity::Holds).then(|| {
-                lap::solve_lap_continuum(
-                    joint.params(),
-                    force.newtons(),
-                    lap::LapContinuumMesh::default(),
-                )
-            });
-            json::lap(name, &joint, force, continuum.as_ref())
-        }
-    })
-}
-
-/// `microslip cycle --amplitude A --format json` (`src/cli/cycle.rs`): the structure validated
-/// without its load, the amplitude checked as the CLI checks `--amplitude`.
-pub fn cycle_report(
-    kind: ModelKind,
-    values: &[f64],
-    name: &str,
-    amplitude: f64,
-) -> Result<Value, String> {
-    let amplitude = check_flag("amplitude", amplitude, Domain::FORCE, Unit::Newton)?;
-    let refused =
-        |allowed: String| format!("invalid amplitude = {}: {allowed}", Compact(amplitude));
-    match structure(kind, values)? {
-        Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) => {
-            let amplitude = TipForce::new(amplitude).map_err(|e| refused(e.allowed()))?;
-            Ok(json::cycle(name, &beams, amplitude))
-        }
-        Model::Lap(microslip::problems::lap::problem::LapModel { joint, .. }) => {
-            let amplitude = joint.force(amplitude).map_err(|e| refused(e.allowed()))?;
-            Ok(json::lap_cycle(name, &joint, amplitude))
-        }
-        Model::Plate(_) => Err(format!(
-            "the {kind} problem has no load to cycle (its pressure is fixed)"
-        )),
-    }
 }
 
 /// What `kt --tolerance` measures the deviation from (`--of`).
@@ -118,6 +82,362 @@ pub enum Of {
     Current,
 }
 
+/// What the application still writes one function per problem for, as each problem's impl
+/// calls it; the command bodies around them are generic ([`AnyFace`]).
+trait Face: Deck {
+    /// `microslip beam|plate|lap --format json` (`src/cli/point.rs`): the problem's own point
+    /// report (its struct in `src/problems/<name>/report.rs`), as JSON.
+    fn point_report(model: &Self::Model, name: &str) -> Value;
+
+    /// `microslip cycle --format json` (`src/cli/cycle.rs`) of the structure of `model` at
+    /// `amplitude` (N, checked as a force): [`cycle_of`] for a load-driven problem; a problem
+    /// without a load keeps this refusal.
+    fn cycle_report(_model: &Self::Model, _name: &str, _amplitude: f64) -> Result<Value, String> {
+        Err(format!("the {} problem has no load to cycle", Self::KIND))
+    }
+
+    /// `kt --tolerance` (`src/cli/kt.rs`) over the forces `[from, to]`: [`load_tolerance`] for a
+    /// load-driven problem; a problem without a load answers at its one state, and has no
+    /// forces to give.
+    fn tolerance(
+        model: &Self::Model,
+        (tol, of): (f64, Of),
+        [from, to]: [Option<f64>; 2],
+        element: f64,
+    ) -> Result<ToleranceAnswer, String> {
+        if from.is_some() || to.is_some() {
+            return Err(format!(
+                "the {} problem has no force: F_from and F_to do not apply",
+                Self::KIND
+            ));
+        }
+        match of {
+            Of::Coulomb => tolerance::state_stiffness_for_tolerance::<Self>(model, tol, element),
+            Of::Current => tolerance::state_stiffness_near_current::<Self>(model, tol, element),
+        }
+        .map_err(|e| e.to_string())
+    }
+
+    /// `microslip deck ccx` (`src/cli/decks.rs`, `build_deck`) at the model's stick slope:
+    /// `loads` checked (increasing, each accepted) or the CLI's default, and the deck's text.
+    fn deck(model: &Self::Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String>;
+
+    /// `microslip compare --format json` (`src/cli/compare.rs`): the comparison's report.
+    fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String>;
+}
+
+/// [`Face::cycle_report`] of any load-driven problem: the amplitude is the structure's force.
+fn cycle_of<P: CycleFace>(model: &P::Model, name: &str, amplitude: f64) -> Result<Value, String> {
+    let structure = P::structure(model);
+    let amplitude = P::force(&structure, amplitude).map_err(|e| {
+        format!(
+            "invalid amplitude = {}: {}",
+            Compact(amplitude),
+            e.allowed()
+        )
+    })?;
+    Ok(json::cycle::<P>(name, &structure, amplitude))
+}
+
+/// [`Face::tolerance`] of any load-driven problem (`src/cli/kt.rs`, `run_kt_tolerance`): the
+/// forces checked as `--from`/`--to` (each the model's F when not given, in order, the upper one
+/// a force the structure carries), then the study over them.
+fn load_tolerance<P: LoadDriven>(
+    model: &P::Model,
+    (tol, of): (f64, Of),
+    [from, to]: [Option<f64>; 2],
+    element: f64,
+) -> Result<ToleranceAnswer, String> {
+    let structure = P::structure(model);
+    let force = P::newtons(P::applied_force(model));
+    let range = [
+        check_flag("F_from", from.unwrap_or(force), Domain::FORCE, Unit::Newton)?,
+        check_flag("F_to", to.unwrap_or(force), Domain::FORCE, Unit::Newton)?,
+    ];
+    if range[0] > range[1] {
+        return Err(format!(
+            "invalid F_to = {}: must not be below F_from = {} N (the forces checked run from \
+             F_from up to F_to)",
+            Compact(range[1]),
+            Compact(range[0])
+        ));
+    }
+    // The structure may carry less than any force (the joint slides through beyond F_gross):
+    // said of the flag that asks for more.
+    if let Err(e) = P::force(&structure, range[1]) {
+        let flag = if to.is_some() { "F_to" } else { "F_from" };
+        return Err(format!(
+            "invalid {flag} = {}: {}",
+            Compact(range[1]),
+            e.allowed()
+        ));
+    }
+    match of {
+        Of::Coulomb => tolerance::stiffness_for_tolerance::<P>(&structure, range, tol, element),
+        Of::Current => tolerance::stiffness_near_current::<P>(&structure, range, tol, element),
+    }
+    .map_err(|e| e.to_string())
+}
+
+/// Deck loads as given: strictly increasing, each accepted by `force` (the CLI's `--loads`).
+fn given_loads<F>(
+    forces: &[f64],
+    force: impl Fn(f64) -> Result<F, String>,
+) -> Result<Vec<F>, String> {
+    if let Some(w) = forces.windows(2).find(|w| w[0] >= w[1]) {
+        return Err(format!(
+            "invalid loads = {}: the loads must increase from one step to the next",
+            Compact(w[1])
+        ));
+    }
+    forces.iter().map(|&f| force(f)).collect()
+}
+
+impl Face for TwinBeamsProblem {
+    fn point_report(model: &Self::Model, name: &str) -> Value {
+        json::of(&twin_beams::report::BeamReport::new(
+            name,
+            &model.beams,
+            model.force,
+        ))
+    }
+
+    fn cycle_report(model: &Self::Model, name: &str, amplitude: f64) -> Result<Value, String> {
+        cycle_of::<Self>(model, name, amplitude)
+    }
+
+    fn tolerance(
+        model: &Self::Model,
+        question: (f64, Of),
+        range: [Option<f64>; 2],
+        element: f64,
+    ) -> Result<ToleranceAnswer, String> {
+        load_tolerance::<Self>(model, question, range, element)
+    }
+
+    fn deck(model: &Self::Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String> {
+        let beams = &model.beams;
+        let loads: Vec<TipForce> = match loads {
+            // The CLI's default: multiples of F_thre spanning microslip and macroslip.
+            None => [0.5, 0.75, 1.0, 1.25, 1.875, 2.5]
+                .map(|m| TipForce::clamped(m * beams.threshold_force()))
+                .to_vec(),
+            Some(forces) => given_loads(forces, |f| {
+                check_flag("loads", f, Domain::FORCE, Unit::Newton).map(TipForce::clamped)
+            })?,
+        };
+        let path = LoadPath { force_step: None };
+        twin_beams::deck::beam_deck_on_path(beams, &loads, mesh, StickSlope::Model, path)
+            .map_err(|e| e.to_string())
+    }
+
+    fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
+        Ok(json::of(&BeamCompareReport::new(source, compared)))
+    }
+}
+
+impl Face for SqueezedPlateProblem {
+    fn point_report(squeezed: &Self::Model, name: &str) -> Value {
+        // The continuum reference where the strip theory does not hold.
+        let continuum = (squeezed.validity().validity != Validity::Holds).then(|| {
+            plate::solve_plate_continuum(squeezed.params(), plate::ContinuumMesh::default())
+        });
+        json::of(&plate::report::PlateReport::new(
+            name,
+            squeezed,
+            continuum.as_ref(),
+        ))
+    }
+
+    fn deck(
+        squeezed: &Self::Model,
+        mesh: DeckMesh,
+        loads: Option<&[f64]>,
+    ) -> Result<String, String> {
+        if loads.is_some() {
+            return Err(
+                "loads are the tip forces of a beam deck or the joint's; the plate \
+                        deck applies its pressure P in one step"
+                    .to_string(),
+            );
+        }
+        plate::deck::plate_deck(squeezed, mesh, StickSlope::Model).map_err(|e| e.to_string())
+    }
+
+    fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
+        Ok(json::of(&PlateCompareReport::new(source, compared)))
+    }
+}
+
+impl Face for LapJointProblem {
+    fn point_report(model: &Self::Model, name: &str) -> Value {
+        let (joint, force) = (&model.joint, model.force);
+        // The continuum reference where the shear-lag theory does not hold.
+        let continuum = (joint.validity(force).validity != Validity::Holds).then(|| {
+            lap::solve_lap_continuum(
+                joint.params(),
+                force.newtons(),
+                lap::LapContinuumMesh::default(),
+            )
+        });
+        json::of(&lap::report::LapReport::new(
+            name,
+            joint,
+            force,
+            continuum.as_ref(),
+        ))
+    }
+
+    fn cycle_report(model: &Self::Model, name: &str, amplitude: f64) -> Result<Value, String> {
+        cycle_of::<Self>(model, name, amplitude)
+    }
+
+    fn tolerance(
+        model: &Self::Model,
+        question: (f64, Of),
+        range: [Option<f64>; 2],
+        element: f64,
+    ) -> Result<ToleranceAnswer, String> {
+        load_tolerance::<Self>(model, question, range, element)
+    }
+
+    fn deck(model: &Self::Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String> {
+        let joint = &model.joint;
+        let loads: Vec<_> = match loads {
+            // The CLI's default at the model's slope: one force in each regime.
+            None => {
+                let (f1, f2, gross) = (
+                    joint.first_slip_force(),
+                    joint.second_slip_force(),
+                    joint.gross_slip_force(),
+                );
+                let mut forces = vec![0.5 * f1, 0.5 * (f1 + f2), 0.5 * (f2 + gross), 0.9 * gross];
+                forces.dedup_by(|a, b| *a <= *b);
+                forces.into_iter().map(|f| joint.clamped_force(f)).collect()
+            }
+            Some(forces) => given_loads(forces, |f| {
+                joint
+                    .force(f)
+                    .map_err(|e| format!("invalid loads = {}: {}", Compact(f), e.allowed()))
+            })?,
+        };
+        let path = LoadPath { force_step: None };
+        lap::deck::lap_deck(joint, &loads, mesh, StickSlope::Model, path).map_err(|e| e.to_string())
+    }
+
+    fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
+        let rows = compared.as_ref().map_err(|e| format!("{source}: {e}"))?;
+        Ok(json::of(&LapCompareReport::new(source, rows)))
+    }
+}
+
+/// The commands of any problem, their types erased: one body each, written once over [`Face`]
+/// and the application's generic functions ([`FaceOf`]).
+trait AnyFace: Sync {
+    fn point_report(&self, model: &Model, name: &str) -> Result<Value, String>;
+    fn cycle_report(&self, model: &Model, name: &str, amplitude: f64) -> Result<Value, String>;
+    fn tolerance(
+        &self,
+        model: &Model,
+        question: (f64, Of),
+        range: [Option<f64>; 2],
+        element: f64,
+    ) -> Result<ToleranceAnswer, String>;
+    fn deck(&self, model: &Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String>;
+    fn compare(
+        &self,
+        path: &Path,
+        deck: Option<&Path>,
+        structure: &dyn Fn() -> Result<Model, String>,
+    ) -> Result<Value, String>;
+}
+
+/// The [`AnyFace`] of a [`Face`] problem `P`.
+struct FaceOf<P>(PhantomData<P>);
+
+impl<P: Face> AnyFace for FaceOf<P> {
+    fn point_report(&self, model: &Model, name: &str) -> Result<Value, String> {
+        Ok(P::point_report(&typed::<P>(model)?, name))
+    }
+
+    fn cycle_report(&self, model: &Model, name: &str, amplitude: f64) -> Result<Value, String> {
+        P::cycle_report(&typed::<P>(model)?, name, amplitude)
+    }
+
+    fn tolerance(
+        &self,
+        model: &Model,
+        question: (f64, Of),
+        range: [Option<f64>; 2],
+        element: f64,
+    ) -> Result<ToleranceAnswer, String> {
+        P::tolerance(&typed::<P>(model)?, question, range, element)
+    }
+
+    fn deck(&self, model: &Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String> {
+        P::deck(&typed::<P>(model)?, mesh, loads)
+    }
+
+    /// `src/cli/compare.rs` for one result file of `P`: a CalculiX `.dat`, whose deck's header
+    /// gives the model, or a CSV, compared at `structure` (the parameters given).
+    fn compare(
+        &self,
+        path: &Path,
+        deck: Option<&Path>,
+        structure: &dyn Fn() -> Result<Model, String>,
+    ) -> Result<Value, String> {
+        let source = path.display().to_string();
+        let loaded =
+            load::results::<P>(path, deck).map_err(|e| format!("{}: {}", e.path, e.reason))?;
+        let model = match &loaded.header {
+            Some(header) => header.model().map_err(|e| e.to_string())?,
+            None => structure()?,
+        };
+        let model = model.of::<P>().map_err(|other| {
+            format!(
+                "the deck's header describes the {other} problem, not the {} compared",
+                P::KIND
+            )
+        })?;
+        let compared = P::compare(&model, &loaded.points, loaded.interface_mesh.as_ref());
+        P::compare_report(&source, &compared)
+    }
+}
+
+/// Writes [`face`] from the registry: one arm per problem, none by hand.
+macro_rules! faces {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        /// The commands of the problem `kind`.
+        fn face(kind: ModelKind) -> &'static dyn AnyFace {
+            match kind {
+                $(ModelKind::$variant => &FaceOf::<microslip::problems::$folder::$problem>(
+                    PhantomData,
+                )),+
+            }
+        }
+    };
+}
+
+microslip_core::with_problems!(faces);
+
+/// `microslip beam|plate|lap --format json` (`src/cli/point.rs`): the plate and the joint add
+/// the continuum reference where their reduced theory does not hold.
+pub fn point_report(kind: ModelKind, values: &[f64], name: &str) -> Result<Value, String> {
+    face(kind).point_report(&model(kind, values, true)?, name)
+}
+
+/// `microslip cycle --amplitude A --format json` (`src/cli/cycle.rs`): the structure validated
+/// without its load, the amplitude checked as the CLI checks `--amplitude`.
+pub fn cycle_report(
+    kind: ModelKind,
+    values: &[f64],
+    name: &str,
+    amplitude: f64,
+) -> Result<Value, String> {
+    let amplitude = check_flag("amplitude", amplitude, Domain::FORCE, Unit::Newton)?;
+    face(kind).cycle_report(&model(kind, values, false)?, name, amplitude)
+}
+
 /// `microslip kt --tolerance T [--of REF] [--from F] [--to F] --format json` (`src/cli/kt.rs`,
 /// `run_kt_tolerance`): the K_T within `tol` (a fraction) of the reference over the forces
 /// `[from, to]` (each the model's F when not given).
@@ -125,77 +445,17 @@ pub fn kt_tolerance_report(
     kind: ModelKind,
     values: &[f64],
     name: &str,
-    (tol, of): (f64, Of),
-    [from, to]: [Option<f64>; 2],
+    question: (f64, Of),
+    range: [Option<f64>; 2],
     element: f64,
 ) -> Result<Value, String> {
-    let range = |force: f64| -> Result<[f64; 2], String> {
-        let range = [
-            check_flag("F_from", from.unwrap_or(force), Domain::FORCE, Unit::Newton)?,
-            check_flag("F_to", to.unwrap_or(force), Domain::FORCE, Unit::Newton)?,
-        ];
-        if range[0] > range[1] {
-            return Err(format!(
-                "invalid F_to = {}: must not be below F_from = {} N (the forces checked run from \
-                 F_from up to F_to)",
-                Compact(range[1]),
-                Compact(range[0])
-            ));
-        }
-        Ok(range)
-    };
-    let answer = match model(kind, values)? {
-        Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, force }) => {
-            let range = range(force.newtons())?;
-            match of {
-                Of::Coulomb => tolerance::stiffness_for_tolerance::<TwinBeamsProblem>(
-                    &beams, range, tol, element,
-                ),
-                Of::Current => tolerance::stiffness_near_current::<TwinBeamsProblem>(
-                    &beams, range, tol, element,
-                ),
-            }
-        }
-        Model::Lap(microslip::problems::lap::problem::LapModel { joint, force }) => {
-            let range = range(force.newtons())?;
-            let gross = joint.gross_slip_force();
-            if range[1] > gross {
-                let flag = if to.is_some() { "F_to" } else { "F_from" };
-                return Err(format!(
-                    "invalid {flag} = {}: must be at most F_gross = 2 b mu P L = {} N (the joint \
-                     slides through beyond it)",
-                    Compact(range[1]),
-                    Compact(gross)
-                ));
-            }
-            match of {
-                Of::Coulomb => tolerance::stiffness_for_tolerance::<LapJointProblem>(
-                    &joint, range, tol, element,
-                ),
-                Of::Current => tolerance::stiffness_near_current::<LapJointProblem>(
-                    &joint, range, tol, element,
-                ),
-            }
-        }
-        Model::Plate(squeezed) => {
-            if from.is_some() || to.is_some() {
-                return Err(format!(
-                    "the {kind} problem has no force: F_from and F_to do not apply"
-                ));
-            }
-            match of {
-                Of::Coulomb => tolerance::plate_stiffness_for_tolerance(&squeezed, tol, element),
-                Of::Current => tolerance::plate_stiffness_near_current(&squeezed, tol, element),
-            }
-        }
-    }
-    .map_err(|e| e.to_string())?;
-    Ok(to_json(&ToleranceReport::new(name, &answer)))
+    let answer = face(kind).tolerance(&model(kind, values, true)?, question, range, element)?;
+    Ok(json::of(&ToleranceReport::new(name, &answer)))
 }
 
-/// `microslip fit beam|lap DATA --format json` (`src/cli/fitting.rs`, `run_fit`) on `csv`, the
-/// measured curve written as the CLI reads it (so the CLI's parser checks every value), `data`
-/// what the report calls it.
+/// `microslip fit DATA --format json` (`src/cli/fitting.rs`, `run_fit`) on `csv`, the measured
+/// curve written as the CLI reads it (so the CLI's parser checks every value, in the problem's
+/// response column), `data` what the report calls it.
 pub fn fit_report(
     kind: ModelKind,
     values: &[f64],
@@ -204,23 +464,23 @@ pub fn fit_report(
     fixed: (Option<f64>, Option<f64>),
     weights: Option<&str>,
 ) -> Result<Value, String> {
-    let (structure, measured) = match structure(kind, values)? {
-        Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) => (
-            fit::Structure::Beam(beams.params()),
-            microslip::measured::parse_measured_with_progress(csv, &mut |_, _| {}),
-        ),
-        Model::Lap(microslip::problems::lap::problem::LapModel { joint, .. }) => (
-            fit::Structure::Lap(joint.params()),
-            microslip::measured::parse_measured_joint_with_progress(csv, &mut |_, _| {}),
-        ),
-        Model::Plate(_) => {
-            return Err(format!(
-                "the {kind} problem has no force-response curve to fit (the twin beams and the \
-                 lap joint have)"
-            ));
-        }
-    };
-    let measured = measured.map_err(|e| format!("{data}: {e}"))?;
+    let structure = fit::Structure::of(&model(kind, values, false)?).ok_or_else(|| {
+        let fittable: Vec<_> = ModelKind::ALL
+            .into_iter()
+            .filter(|k| k.problem().fittable().is_some())
+            .map(|k| k.name())
+            .collect();
+        format!(
+            "the {kind} problem has no force-response curve to fit (fit takes a {} problem)",
+            fittable.join(" or ")
+        )
+    })?;
+    let measured = microslip::measured::parse_measured_response_with_progress(
+        csv,
+        structure.response_column(),
+        &mut |_, _| {},
+    )
+    .map_err(|e| format!("{data}: {e}"))?;
     let weights = match (measured.sigma.as_deref(), weights) {
         (Some(sigma), None) => Weights::Sigma(sigma),
         (Some(_), Some(_)) => {
@@ -251,133 +511,18 @@ pub fn deck_text(
     mesh: DeckMesh,
     loads: Option<&[f64]>,
 ) -> Result<String, String> {
-    let slope = StickSlope::Model;
-    let path = LoadPath { force_step: None };
-    let increasing = |forces: &[f64]| match forces.windows(2).find(|w| w[0] >= w[1]) {
-        Some(w) => Err(format!(
-            "invalid loads = {}: the loads must increase from one step to the next",
-            Compact(w[1])
-        )),
-        None => Ok(()),
-    };
-    match model(kind, values)? {
-        Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) => {
-            let loads: Vec<TipForce> = match loads {
-                // The CLI's default: multiples of F_thre spanning microslip and macroslip.
-                None => [0.5, 0.75, 1.0, 1.25, 1.875, 2.5]
-                    .map(|m| TipForce::clamped(m * beams.threshold_force()))
-                    .to_vec(),
-                Some(forces) => {
-                    increasing(forces)?;
-                    forces
-                        .iter()
-                        .map(|&f| check_flag("loads", f, Domain::FORCE, Unit::Newton))
-                        .map(|f| f.map(TipForce::clamped))
-                        .collect::<Result<_, _>>()?
-                }
-            };
-            deck::beam_deck_on_path(&beams, &loads, mesh, slope, path)
-        }
-        Model::Lap(microslip::problems::lap::problem::LapModel { joint, .. }) => {
-            let loads: Vec<_> = match loads {
-                // The CLI's default at the model's slope: one force in each regime.
-                None => {
-                    let (f1, f2, gross) = (
-                        joint.first_slip_force(),
-                        joint.second_slip_force(),
-                        joint.gross_slip_force(),
-                    );
-                    let mut forces =
-                        vec![0.5 * f1, 0.5 * (f1 + f2), 0.5 * (f2 + gross), 0.9 * gross];
-                    forces.dedup_by(|a, b| *a <= *b);
-                    forces.into_iter().map(|f| joint.clamped_force(f)).collect()
-                }
-                Some(forces) => {
-                    increasing(forces)?;
-                    forces
-                        .iter()
-                        .map(|&f| {
-                            joint.force(f).map_err(|e| {
-                                format!("invalid loads = {}: {}", Compact(f), e.allowed())
-                            })
-                        })
-                        .collect::<Result<_, _>>()?
-                }
-            };
-            lap_deck::lap_deck(&joint, &loads, mesh, slope, path)
-        }
-        Model::Plate(squeezed) => {
-            if loads.is_some() {
-                return Err(
-                    "loads are the tip forces of a beam deck or the joint's; the plate \
-                            deck applies its pressure P in one step"
-                        .to_string(),
-                );
-            }
-            deck::plate_deck(&squeezed, mesh, slope)
-        }
-    }
-    .map_err(|e| e.to_string())
+    face(kind).deck(&model(kind, values, true)?, mesh, loads)
 }
 
 /// `microslip compare MODEL RESULT [--deck INP] --format json` (`src/cli/compare.rs`) for one
 /// result file: a CalculiX `.dat` (its deck's header gives the parameters) or a CSV (compared at
-/// `values`).
+/// `values`, without their load: the FE forces are compared; a problem without a load is its
+/// whole model).
 pub fn compare_report(
     kind: ModelKind,
     values: &[f64],
     path: &Path,
     deck: Option<&Path>,
 ) -> Result<Value, String> {
-    let source = path.display().to_string();
-    let data_error = |e: load::LoadError| format!("{}: {}", e.path, e.reason);
-    let of_header = |header: &Option<microslip::fe::header::DeckHeader>| -> Result<Model, String> {
-        match header {
-            Some(header) => {
-                let model = header.model().map_err(|e| e.to_string())?;
-                if model.kind() != kind {
-                    return Err(format!(
-                        "the deck's header describes the {} problem, not the one compared",
-                        model.kind()
-                    ));
-                }
-                Ok(model)
-            }
-            None => structure(kind, values),
-        }
-    };
-    match kind {
-        ModelKind::Beam => {
-            let loaded = load::beam_results(path, deck).map_err(data_error)?;
-            let Model::Beam(microslip::problems::twin_beams::problem::BeamsModel { beams, .. }) = of_header(&loaded.header)? else {
-                return Err(format!("{source}: not a twin-beam result"));
-            };
-            let compared =
-                compare::compare_beams(&beams, &loaded.points, loaded.interface_mesh.as_ref());
-            Ok(to_json(&BeamCompareReport::new(&source, &compared)))
-        }
-        ModelKind::Plate => {
-            let loaded = load::plate_results(path, deck).map_err(data_error)?;
-            let squeezed = match &loaded.header {
-                Some(_) => of_header(&loaded.header)?,
-                // A plate CSV is compared at the model as given, with its load.
-                None => model(kind, values)?,
-            };
-            let Model::Plate(squeezed) = squeezed else {
-                return Err(format!("{source}: not a plate result"));
-            };
-            let rows =
-                compare::compare_plate(&squeezed, &loaded.points, loaded.interface_mesh.as_ref());
-            Ok(to_json(&PlateCompareReport::new(&source, &rows)))
-        }
-        ModelKind::Lap => {
-            let loaded = load::lap_results(path, deck).map_err(data_error)?;
-            let Model::Lap(microslip::problems::lap::problem::LapModel { joint, .. }) = of_header(&loaded.header)? else {
-                return Err(format!("{source}: not a lap-joint result"));
-            };
-            let rows = compare::compare_lap(&joint, &loaded.points, loaded.interface_mesh.as_ref())
-                .map_err(|e| format!("{source}: {e}"))?;
-            Ok(to_json(&LapCompareReport::new(&source, &rows)))
-        }
-    }
+    face(kind).compare(path, deck, &|| model(kind, values, false))
 }

@@ -1,7 +1,7 @@
 //! The features beyond one solve, behind `Problem`'s methods: each runs with the GIL released
 //! and the panic guard, and returns the application's JSON report as a `microslip.Report` (or
-//! text, a number). Those written once for every problem live here (`fe_defaults`, `continuum`);
-//! those whose application code is still one function per problem go through `bridge`.
+//! text, a number). Those that need only the core live here (`fe_defaults`, `continuum`); those
+//! that mirror a CLI command's body (reports, decks, comparisons) go through `bridge`.
 
 use microslip::fe::deck::DeckMesh;
 use microslip::kernel::params::{Domain, Unit};

@@ -5,8 +5,9 @@
 //!
 //! Layout, one job per module: `registry` (the descriptions as data), `problem` (a validated
 //! parameter set), `solution` (one solve), `sweep` (many, into numpy), `features` (cycle, K_T,
-//! fit, continuum, decks, compare), `presets`, `bridge` (the only code naming a problem: the
-//! application's per-problem report functions), `json` (reports as Python objects), `errors`
+//! fit, continuum, decks, compare), `presets`, `bridge` (the CLI's command bodies, written once over
+//! the application's generic functions and dispatched from the registry; the only code naming a
+//! problem, where the application still has one function per problem), `json` (reports as Python objects), `errors`
 //! (refusals as `ParameterError`, panics as `RuntimeError`).
 //!
 //! Every number comes from the same core functions the CLI calls, so Python and
