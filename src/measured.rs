@@ -163,6 +163,24 @@ pub fn parse_measured_joint_with_progress(
     parse_measured_curve(text, &MEASURED_JOINT_DISPLACEMENT, progress)
 }
 
+/// [`parse_measured_with_progress`] for any fittable problem: `F_N` and its `response` column
+/// (`w_mm`, `Delta_mm`: [`crate::fit::Structure::response_column`]), with an optional
+/// `sigma_mm`, so that a fit reads its problem's curve without naming the problem.
+///
+/// # Errors
+/// As [`parse_measured_with_progress`], with the problem's column names.
+pub fn parse_measured_response_with_progress(
+    text: &str,
+    response: &'static str,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Measured, DataError> {
+    let curve = Curve {
+        y: response,
+        ..MEASURED_DEFLECTION
+    };
+    parse_measured_curve(text, &curve, progress)
+}
+
 fn parse_measured_curve(
     text: &str,
     curve: &Curve,

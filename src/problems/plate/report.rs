@@ -61,6 +61,27 @@ impl ReportFace for SqueezedPlateProblem {
     ];
     const KT_REGIME_WIDTH: usize = 20;
     type KtAnswer = PlateKtAnswer;
+    type PointReport = PlateReport;
+    type SweepRow = PlateRow;
+
+    /// The plane-strain continuum (default mesh) is solved when asked, or when the strip theory
+    /// is not expected within 2 %; only the one asked for fails the command.
+    fn point_report(
+        preset: &str,
+        plate: &SqueezedPlate,
+        continuum: bool,
+    ) -> Result<PlateReport, NumericError> {
+        let solved = (continuum || plate.validity().validity != Validity::Holds)
+            .then(|| super::solve_plate_continuum(plate.params(), super::ContinuumMesh::default()));
+        if continuum && let Some(Err(e)) = &solved {
+            return Err(e.clone());
+        }
+        Ok(PlateReport::new(preset, plate, solved.as_ref()))
+    }
+
+    fn point_text(report: &PlateReport) -> String {
+        report.text()
+    }
 
     fn kt_answer(answer: &Answer) -> Option<PlateKtAnswer> {
         match *answer {
