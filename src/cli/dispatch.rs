@@ -5,14 +5,15 @@
 
 use super::*;
 use crate::fe::face::Deck;
+use crate::report::compare::CompareFace;
 use crate::report::face::ReportFace;
 
-/// Everything a command may ask of any problem: its reports ([`ReportFace`]) and its FE deck
-/// ([`Deck`]). What only some problems have is reached through an erased, optional capability
+/// Everything a command may ask of any problem: its reports ([`ReportFace`]), its FE deck
+/// ([`Deck`]) and its comparison ([`CompareFace`]). What only some problems have is reached through an erased, optional capability
 /// of these (`ReportFace::cycle`), never by naming the problems that have it.
-pub(super) trait Faces: ReportFace + Deck {}
+pub(super) trait Faces: ReportFace + Deck + CompareFace {}
 
-impl<P: ReportFace + Deck> Faces for P {}
+impl<P: ReportFace + Deck + CompareFace> Faces for P {}
 
 /// A command's body for one problem `P`, given its arguments as `self`.
 pub(super) trait ForProblem {

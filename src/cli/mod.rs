@@ -19,7 +19,7 @@ use thiserror::Error;
 use crate::chart::view::AnyChart;
 use crate::chart::{SeriesRole, YMode};
 use crate::fe;
-use crate::fe::deck::{self, DeckMesh};
+use crate::fe::deck::DeckMesh;
 use crate::fe::header::StickSlope;
 use crate::fe::load::LoadError;
 use crate::fit::{self, FitError};

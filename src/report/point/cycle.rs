@@ -15,6 +15,7 @@ use crate::report::table::{TableFormat, write_table};
 use crate::report::{number, sanitize};
 use crate::study::curves::{RangeError, Samples};
 use crate::study::load::{self, LoopPoint};
+use crate::study::tolerance::{self, ToleranceAnswer, ToleranceError};
 
 /// A load-driven problem as its cycle report says it: its words, its structure's summary line
 /// and the inputs the report lists. Each problem's folder implements it
@@ -35,6 +36,24 @@ pub trait CycleFace: LoadDriven {
 
     /// One row of the problem's own F sweep (`sweep beam|lap`, `sweep --vary F`).
     type LoadRow: Serialize + Default + for<'a> From<&'a Self::Point>;
+
+    /// The largest force the structure carries, where it has one (the lap joint's F_gross):
+    /// `kt --tolerance` refuses a force range beyond it in these words. `None` for a structure
+    /// that carries any force (the beams slide on, their deflection grows).
+    fn force_limit(_structure: &Self::Structure) -> Option<ForceLimit> {
+        None
+    }
+}
+
+/// The largest force a structure carries, as a refusal says it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ForceLimit {
+    /// The force (N).
+    pub newtons: f64,
+    /// Its name and formula (`F_gross = 2 b mu P L`).
+    pub name: &'static str,
+    /// What happens beyond it (`the joint slides through beyond it`).
+    pub beyond: &'static str,
 }
 
 /// Why a table of a load-driven problem was not written: a force the structure does not carry,
@@ -94,6 +113,24 @@ pub trait AnyCycleFace: Send + Sync {
         model: &Model,
         forces: Samples,
     ) -> Option<Result<(), LoadTableError>>;
+
+    /// The force `model` is at (N).
+    fn applied_force(&self, model: &Model) -> Option<f64>;
+
+    /// [`CycleFace::force_limit`] of `model`'s structure; `None` also for another problem's
+    /// model.
+    fn force_limit(&self, model: &Model) -> Option<ForceLimit>;
+
+    /// The K_T that keeps the response within `tolerance` over the forces `range` (N), of
+    /// Coulomb's (`current` false) or of the current K_T's (`current` true), for contact
+    /// elements `element` long (`kt --tolerance`).
+    fn tolerance(
+        &self,
+        model: &Model,
+        range: [f64; 2],
+        tolerance_element: (f64, f64),
+        current: bool,
+    ) -> Option<Result<ToleranceAnswer, ToleranceError>>;
 }
 
 /// The [`AnyCycleFace`] of a [`CycleFace`] problem `P`.
@@ -168,6 +205,29 @@ impl<P: CycleFace> AnyCycleFace for CycleOf<P> {
             write_table(&mut &mut *out, format, rows.map(|r| P::LoadRow::from(&r)))?;
             Ok(())
         })())
+    }
+
+    fn applied_force(&self, model: &Model) -> Option<f64> {
+        Some(P::newtons(P::applied_force(&P::from_model(model)?)))
+    }
+
+    fn force_limit(&self, model: &Model) -> Option<ForceLimit> {
+        P::force_limit(&P::structure(&P::from_model(model)?))
+    }
+
+    fn tolerance(
+        &self,
+        model: &Model,
+        range: [f64; 2],
+        (tol, element): (f64, f64),
+        current: bool,
+    ) -> Option<Result<ToleranceAnswer, ToleranceError>> {
+        let structure = P::structure(&P::from_model(model)?);
+        Some(if current {
+            tolerance::stiffness_near_current::<P>(&structure, range, tol, element)
+        } else {
+            tolerance::stiffness_for_tolerance::<P>(&structure, range, tol, element)
+        })
     }
 }
 
