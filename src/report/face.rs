@@ -140,8 +140,6 @@ pub trait AnyReportFace: Send + Sync {
     fn paper_table(&self) -> Option<String>;
     /// [`ReportFace::cycle`].
     fn cycle(&self) -> Option<&'static dyn AnyCycleFace>;
-    /// The kind of the problem the face is of.
-    fn kind(&self) -> ModelKind;
 }
 
 /// The [`AnyReportFace`] of a [`ReportFace`] problem `P`.
@@ -200,9 +198,24 @@ impl<P: ReportFace> AnyReportFace for ReportOf<P> {
     fn cycle(&self) -> Option<&'static dyn AnyCycleFace> {
         P::cycle()
     }
+}
 
-    fn kind(&self) -> ModelKind {
-        P::KIND
+/// The continuum solution a point report shows: solved when `asked` (the command's
+/// `--continuum`) or when the closed forms are not expected to hold (`holds` false), and none
+/// otherwise. Only a solve that was asked for fails the report; an automatic one that fails is
+/// reported as failed in the output.
+///
+/// # Errors
+/// The solve's error, when it was asked for.
+pub fn point_continuum<T>(
+    asked: bool,
+    holds: bool,
+    solve: impl FnOnce() -> Result<T, NumericError>,
+) -> Result<Option<Result<T, NumericError>>, NumericError> {
+    let solved = (asked || !holds).then(solve);
+    match solved {
+        Some(Err(e)) if asked => Err(e),
+        solved => Ok(solved),
     }
 }
 

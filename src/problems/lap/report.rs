@@ -13,7 +13,7 @@ use crate::numeric::NumericError;
 use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
-use crate::report::face::{KtColumn, ReportFace};
+use crate::report::face::{KtColumn, ReportFace, point_continuum};
 use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleWords, ForceLimit};
 use crate::report::point::{InputsReport, regime_label, validity_label};
 use crate::report::rows::{LapLoopRow, LapRow};
@@ -82,16 +82,14 @@ impl ReportFace for LapJointProblem {
         continuum: bool,
     ) -> Result<LapReport, NumericError> {
         let (joint, force) = (model.joint, model.force);
-        let solved = (continuum || joint.validity(force).validity != Validity::Holds).then(|| {
+        let holds = joint.validity(force).validity == Validity::Holds;
+        let solved = point_continuum(continuum, holds, || {
             super::solve_lap_continuum(
                 joint.params(),
                 force.newtons(),
                 super::LapContinuumMesh::default(),
             )
-        });
-        if continuum && let Some(Err(e)) = &solved {
-            return Err(e.clone());
-        }
+        })?;
         Ok(LapReport::new(preset, &joint, force, solved.as_ref()))
     }
 

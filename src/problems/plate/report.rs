@@ -14,7 +14,7 @@ use crate::kernel::validity::Validity;
 use crate::numeric::NumericError;
 use crate::problems::Problem;
 use crate::problems::stiffness::mm_to_um;
-use crate::report::face::{KtColumn, ReportFace};
+use crate::report::face::{KtColumn, ReportFace, point_continuum};
 use crate::report::point::{InputsReport, SideBySide, regime_label, validity_label};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::{Answer, plate_point};
@@ -71,11 +71,10 @@ impl ReportFace for SqueezedPlateProblem {
         plate: &SqueezedPlate,
         continuum: bool,
     ) -> Result<PlateReport, NumericError> {
-        let solved = (continuum || plate.validity().validity != Validity::Holds)
-            .then(|| super::solve_plate_continuum(plate.params(), super::ContinuumMesh::default()));
-        if continuum && let Some(Err(e)) = &solved {
-            return Err(e.clone());
-        }
+        let holds = plate.validity().validity == Validity::Holds;
+        let solved = point_continuum(continuum, holds, || {
+            super::solve_plate_continuum(plate.params(), super::ContinuumMesh::default())
+        })?;
         Ok(PlateReport::new(preset, plate, solved.as_ref()))
     }
 
