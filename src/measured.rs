@@ -163,10 +163,9 @@ pub fn parse_measured_joint_with_progress(
     parse_measured_curve(text, &MEASURED_JOINT_DISPLACEMENT, progress)
 }
 
-/// [`parse_measured_with_progress`] for the measured curve of any fittable problem, whose
-/// response column is `response` (`fit::Structure::response_column`: `w_mm`, `Delta_mm`): what
-/// a caller outside the command line (the Python binding) reads a fit's data with, without
-/// naming the problem.
+/// [`parse_measured_with_progress`] for any fittable problem: `F_N` and its `response` column
+/// (`w_mm`, `Delta_mm`: [`crate::fit::Structure::response_column`]), with an optional
+/// `sigma_mm`, so that a fit reads its problem's curve without naming the problem.
 ///
 /// # Errors
 /// As [`parse_measured_with_progress`], with the problem's column names.

@@ -1,10 +1,9 @@
 //! `compare`: an FE code's results against the closed forms, with a verdict.
 
 use super::*;
-use crate::problems::lap::LapJointProblem;
-use crate::problems::plate::SqueezedPlateProblem;
-use crate::problems::twin_beams::TwinBeamsProblem;
 
+/// `microslip compare MODEL RESULT...`: the FE results of the problem `model` against its
+/// closed forms, written once for every problem through its deck and compare faces.
 pub(super) fn run_compare(
     out: &mut impl Write,
     model: ModelKind,
@@ -13,10 +12,6 @@ pub(super) fn run_compare(
     inputs: &InputArgs,
     format: CompareFormat,
 ) -> Result<(), CliError> {
-    let data_error = |e: LoadError| CliError::Data {
-        path: e.path,
-        reason: e.reason,
-    };
     if deck.is_some() && results.len() > 1 {
         return Err(CliError::Flag {
             flag: "--deck",
@@ -25,118 +20,86 @@ pub(super) fn run_compare(
         });
     }
     let source: Vec<String> = results.iter().map(|p| p.display().to_string()).collect();
-    let source = source.join(", ");
-    match model {
-        ModelKind::Lap => {
-            let mut rows = Vec::new();
-            for path in results {
-                let loaded = fe::load::results::<crate::problems::lap::LapJointProblem>(path, deck)
-                    .map_err(data_error)?;
-                if loaded.header.is_some() && rows.is_empty() {
-                    note_flags_the_deck_overrides(inputs, model);
-                }
-                let joint = match &loaded.header {
-                    Some(header) => {
-                        header
-                            .model()?
-                            .of::<LapJointProblem>()
-                            .map_err(deck_of_other_model)?
-                            .joint
-                    }
-                    // The FE forces are compared, not the preset's F.
-                    None => {
-                        load_problem::<LapJointProblem>(inputs, "compare lap", Load::Unused)?
-                            .1
-                            .joint
-                    }
-                };
-                let compared = crate::problems::lap::deck::compare_lap(
-                    &joint,
-                    &loaded.points,
-                    loaded.interface_mesh.as_ref(),
-                )
-                .map_err(|e| CliError::Data {
-                    path: path.display().to_string(),
-                    reason: e.to_string(),
-                })?;
-                rows.extend(compared);
-            }
-            let report = report::compare::lap::LapCompareReport::new(&source, &rows);
-            let csv = rows.iter().map(report::compare::LapCompareRow::from);
-            write_comparison(out, format, &report.text(), &report, csv)?;
+    let compare = Compare {
+        out,
+        results,
+        deck,
+        inputs,
+        format,
+        source: &source.join(", "),
+    };
+    for_problem(model, compare)
+}
+
+/// The arguments of [`run_compare`], for [`for_problem`].
+struct Compare<'a, W> {
+    out: &'a mut W,
+    results: &'a [PathBuf],
+    deck: Option<&'a std::path::Path>,
+    inputs: &'a InputArgs,
+    format: CompareFormat,
+    /// The result files, as the report names them.
+    source: &'a str,
+}
+
+impl<W: Write> ForProblem for Compare<'_, W> {
+    type Output = Result<(), CliError>;
+
+    fn run<P: Faces>(self) -> Result<(), CliError> {
+        let Compare {
+            out,
+            results,
+            deck,
+            inputs,
+            format,
+            source,
+        } = self;
+        if let Some(why) = P::ONE_RUN
+            && results.len() != 1
+        {
+            return Err(CliError::Flag {
+                flag: "RESULT",
+                value: results.len() as f64,
+                allowed: why.to_string(),
+            });
         }
-        ModelKind::Beam => {
-            let [path] = results else {
-                return Err(CliError::Flag {
-                    flag: "RESULT",
-                    value: results.len() as f64,
-                    allowed: "compare beam takes one result file (all load steps of one run)"
-                        .to_string(),
-                });
+        let data_error = |e: LoadError| CliError::Data {
+            path: e.path,
+            reason: e.reason,
+        };
+        let command = model_command(P::KIND, "compare");
+        let mut checked = Vec::with_capacity(results.len());
+        for path in results {
+            let loaded = fe::load::results::<P>(path, deck).map_err(data_error)?;
+            if loaded.header.is_some() && checked.is_empty() {
+                note_flags_the_deck_overrides(inputs, P::KIND);
+            }
+            let model = match &loaded.header {
+                Some(header) => header.model()?.of::<P>().map_err(deck_of_other_model)?,
+                // A CSV has no header: the parameters come from the flags; the FE forces are
+                // compared, not the preset's F.
+                None => load_problem::<P>(inputs, &command, Load::Unused)?.1,
             };
-            let loaded =
-                fe::load::results::<crate::problems::twin_beams::TwinBeamsProblem>(path, deck)
-                    .map_err(data_error)?;
-            if loaded.header.is_some() {
-                note_flags_the_deck_overrides(inputs, model);
-            }
-            let beams = match &loaded.header {
-                Some(header) => {
-                    header
-                        .model()?
-                        .of::<TwinBeamsProblem>()
-                        .map_err(deck_of_other_model)?
-                        .beams
-                }
-                // A CSV has no header: the parameters come from the flags.
-                None => {
-                    load_problem::<TwinBeamsProblem>(inputs, "compare beam", Load::Unused)?
-                        .1
-                        .beams
-                }
-            };
-            let comparison = crate::problems::twin_beams::deck::compare_beams(
-                &beams,
-                &loaded.points,
-                loaded.interface_mesh.as_ref(),
-            );
-            let report = report::compare::beam::BeamCompareReport::new(&source, &comparison);
-            let csv = comparison
-                .rows
-                .iter()
-                .map(report::compare::BeamCompareRow::from);
-            write_comparison(out, format, &report.text(), &report, csv)?;
+            let compared = P::compare(&model, &loaded.points, loaded.interface_mesh.as_ref());
+            checked.push(P::checked(compared).map_err(|e| CliError::Data {
+                path: path.display().to_string(),
+                reason: e.to_string(),
+            })?);
         }
-        ModelKind::Plate => {
-            let mut rows = Vec::new();
-            for path in results {
-                let loaded =
-                    fe::load::results::<crate::problems::plate::SqueezedPlateProblem>(path, deck)
-                        .map_err(data_error)?;
-                if loaded.header.is_some() && rows.is_empty() {
-                    note_flags_the_deck_overrides(inputs, model);
-                }
-                let plate = match &loaded.header {
-                    Some(header) => header
-                        .model()?
-                        .of::<SqueezedPlateProblem>()
-                        .map_err(deck_of_other_model)?,
-                    None => {
-                        load_problem::<SqueezedPlateProblem>(inputs, "compare plate", Load::Used)?.1
-                    }
-                };
-                rows.extend(crate::problems::plate::deck::compare_plate(
-                    &plate,
-                    &loaded.points,
-                    loaded.interface_mesh.as_ref(),
-                ));
-            }
-            let report = report::compare::plate::PlateCompareReport::new(&source, &rows);
-            let csv = rows.iter().map(report::compare::PlateCompareRow::from);
-            write_comparison(out, format, &report.text(), &report, csv)?;
-        }
+        let mut checked = checked.into_iter();
+        // clap requires a result file.
+        let Some(first) = checked.next() else {
+            return Err(CliError::Usage("compare needs a result file"));
+        };
+        let (report, rows) = P::compare_report(source, first, checked.collect());
+        write_comparison(
+            out,
+            format,
+            &P::compare_text(&report),
+            &report,
+            rows.into_iter(),
+        )
     }
-    Ok(())
 }
 
 /// A comparison in the format asked for: its text, its report as JSON, or its rows as CSV.

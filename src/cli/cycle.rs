@@ -1,10 +1,11 @@
 //! `cycle`: hysteresis loops under a cyclic load.
 
 use super::*;
-use crate::TipForce;
-use crate::problems::lap::LapJointProblem;
-use crate::problems::twin_beams::TwinBeamsProblem;
+use crate::report::point::cycle::LoadTableError;
 
+/// `microslip cycle`: any load-driven problem (the preset's) cycled, through its cycle face
+/// ([`AnyReportFace::cycle`](crate::report::face::AnyReportFace::cycle)); a problem without a
+/// load is refused.
 pub(super) fn run_cycle(
     out: &mut impl Write,
     amplitude: f64,
@@ -20,46 +21,31 @@ pub(super) fn run_cycle(
     curves::check_points(points).map_err(points_error)?;
     // The amplitude is cycled, not the preset's F.
     let (name, model) = load_any_structure(inputs, DEFAULT_PROBLEM)?;
-    let beams = match model {
-        Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. }) => beams,
-        Model::Lap(crate::problems::lap::problem::LapModel { joint, .. }) => {
-            let amplitude = joint.force(amplitude).map_err(|e| CliError::Flag {
-                flag: "--amplitude",
-                value: amplitude,
-                allowed: e.allowed(),
-            })?;
-            match format {
-                CycleFormat::Text => out.write_all(
-                    text::cycle::<LapJointProblem>(&name, &joint, amplitude).as_bytes(),
-                )?,
-                CycleFormat::Json => write_json(
-                    out,
-                    &json::cycle::<LapJointProblem>(&name, &joint, amplitude),
-                )?,
-                CycleFormat::Csv => {
-                    let points = load::cycle_loop::<LapJointProblem>(&joint, amplitude, points)
-                        .map_err(points_error)?;
-                    write_table(out, TableFormat::Csv, points.map(|p| LapLoopRow::from(&p)))?;
-                }
-            }
-            return Ok(());
-        }
-        Model::Plate(_) => return Err(plate_has_no_cycle(inputs, "cycle")),
+    let no_cycle = || plate_has_no_cycle(inputs, "cycle");
+    let face = report::face::report_face(model.kind())
+        .cycle()
+        .ok_or_else(no_cycle)?;
+    let amplitude_error = |e: ParamError| CliError::Flag {
+        flag: "--amplitude",
+        value: amplitude,
+        allowed: e.allowed(),
     };
-    let amplitude = TipForce::new(amplitude)?;
+    let report = || -> Result<_, CliError> {
+        face.report(&name, &model, amplitude)
+            .ok_or_else(no_cycle)?
+            .map_err(amplitude_error)
+    };
     match format {
-        CycleFormat::Text => {
-            out.write_all(text::cycle::<TwinBeamsProblem>(&name, &beams, amplitude).as_bytes())?
-        }
-        CycleFormat::Json => write_json(
-            out,
-            &json::cycle::<TwinBeamsProblem>(&name, &beams, amplitude),
-        )?,
-        CycleFormat::Csv => {
-            let points = load::cycle_loop::<TwinBeamsProblem>(&beams, amplitude, points)
-                .map_err(points_error)?;
-            write_table(out, TableFormat::Csv, points.map(|p| LoopRow::from(&p)))?;
-        }
+        CycleFormat::Text => out.write_all(report()?.text().as_bytes())?,
+        CycleFormat::Json => write_json(out, &json::of(&report()?))?,
+        CycleFormat::Csv => face
+            .write_loop(out, TableFormat::Csv, &model, (amplitude, points))
+            .ok_or_else(no_cycle)?
+            .map_err(|e| match e {
+                LoadTableError::Force(e) => amplitude_error(e),
+                LoadTableError::Range(e) => points_error(e),
+                LoadTableError::Output(e) => CliError::Output(e),
+            })?,
     }
     Ok(())
 }

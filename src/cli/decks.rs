@@ -1,10 +1,11 @@
 //! `deck` and `bench`: writing an FE deck and running an external solver on it.
 
 use super::*;
-use crate::problems::lap::closed_form::{JointForce, LapJoint};
-use crate::{TipForce, TwinBeams};
+use crate::fe::face::{DeckError, DeckRequest};
 
 /// The deck `deck` describes for `model`, as text. `command` names the subcommand in errors.
+/// What the flags mean for the deck (which loads, which increments) is the problem's own
+/// ([`Deck::write_deck`](crate::fe::face::Deck::write_deck)).
 pub(super) fn build_deck(
     model: ModelKind,
     deck: &DeckArgs,
@@ -15,43 +16,48 @@ pub(super) fn build_deck(
     } else {
         StickSlope::Model
     };
-    match load(&deck.inputs, model, command)? {
-        (_, Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. })) => {
-            let loads = deck_loads(&beams, deck.loads.as_deref(), slope)?;
-            let force_step = deck
-                .increment
-                .map(|f| check_flag("--increment", f, Domain::FORCE_STEP, Unit::Newton))
-                .transpose()?;
-            let path = deck::LoadPath { force_step };
-            crate::problems::twin_beams::deck::beam_deck_on_path(
-                &beams, &loads, deck.mesh, slope, path,
-            )
-        }
-        (_, Model::Lap(crate::problems::lap::problem::LapModel { joint, .. })) => {
-            let loads = lap_deck_loads(&joint, deck.loads.as_deref(), slope)?;
-            let force_step = deck
-                .increment
-                .map(|f| check_flag("--increment", f, Domain::FORCE_STEP, Unit::Newton))
-                .transpose()?;
-            crate::problems::lap::deck::lap_deck(
-                &joint,
-                &loads,
-                deck.mesh,
-                slope,
-                deck::LoadPath { force_step },
-            )
-        }
-        (_, Model::Plate(plate)) => {
-            if deck.loads.is_some() {
-                return Err(CliError::Usage(
-                    "--loads are the tip forces of a beam deck; the plate deck applies its \
-                     pressure P in one step (set P with --set P=...)",
-                ));
-            }
-            crate::problems::plate::deck::plate_deck(&plate, deck.mesh, slope)
-        }
+    let (_, loaded) = load(&deck.inputs, model, command)?;
+    let request = DeckRequest {
+        loads: deck.loads.as_deref(),
+        mesh: deck.mesh,
+        slope,
+        increment: deck.increment,
+    };
+    let written = for_problem(
+        model,
+        WriteDeck {
+            model: &loaded,
+            request: &request,
+        },
+    )
+    .ok_or_else(|| wrong_model(&deck.inputs, loaded.kind(), model, command))?;
+    written.map_err(|e| match e {
+        DeckError::Flag {
+            flag,
+            value,
+            allowed,
+        } => CliError::Flag {
+            flag,
+            value,
+            allowed,
+        },
+        DeckError::Usage(why) => CliError::Usage(why),
+        DeckError::TooLarge(e) => CliError::Invalid(e.to_string()),
+    })
+}
+
+/// [`build_deck`]'s model and request, for [`for_problem`].
+struct WriteDeck<'a> {
+    model: &'a Model,
+    request: &'a DeckRequest<'a>,
+}
+
+impl ForProblem for WriteDeck<'_> {
+    type Output = Option<Result<String, DeckError>>;
+
+    fn run<P: Faces>(self) -> Self::Output {
+        Some(P::write_deck(&P::from_model(self.model)?, self.request))
     }
-    .map_err(|e| CliError::Invalid(e.to_string()))
 }
 
 /// `microslip bench ccx MODEL`: the deck into a work folder, ccx on it with progress on stderr,
@@ -176,13 +182,11 @@ pub(super) fn note_flags_the_deck_overrides(inputs: &InputArgs, model: ModelKind
     eprintln!("microslip: note: {}", deck_overrides_words(&given, model));
 }
 
-/// The words of [`note_flags_the_deck_overrides`]: only the beams have two beam theories, so
-/// only their note says that both are shown.
+/// The words of [`note_flags_the_deck_overrides`]: what a problem adds is its own
+/// ([`Deck::OVERRIDES_NOTE`](crate::fe::face::Deck::OVERRIDES_NOTE): only the beams have two beam
+/// theories, so only their note says that both are shown).
 pub(super) fn deck_overrides_words(given: &[String], model: ModelKind) -> String {
-    let theories = match model {
-        ModelKind::Beam => " (compare shows both beam theories)",
-        ModelKind::Plate | ModelKind::Lap => "",
-    };
+    let theories = for_problem(model, OverridesNote);
     format!(
         "{} not used: the deck's header gives the parameters of the run{theories}; to compare FE \
          points at other parameters, give them as CSV",
@@ -190,86 +194,21 @@ pub(super) fn deck_overrides_words(given: &[String], model: ModelKind) -> String
     )
 }
 
+/// [`Deck::OVERRIDES_NOTE`](crate::fe::face::Deck::OVERRIDES_NOTE) of a problem, for
+/// [`for_problem`].
+struct OverridesNote;
+
+impl ForProblem for OverridesNote {
+    type Output = &'static str;
+
+    fn run<P: Faces>(self) -> &'static str {
+        P::OVERRIDES_NOTE
+    }
+}
+
 /// `command` followed by the model's name, for error messages ("deck ccx beam").
 pub(super) fn model_command(model: ModelKind, command: &str) -> String {
     format!("{command} {model}")
-}
-
-/// The load steps of a beam deck: `--loads` checked (each a valid force, strictly increasing), or
-/// the default multiples of F_thre, which span microslip and macroslip. With a near-Coulomb stick
-/// slope the interface is on the edge of sliding everywhere at exactly F_thre, and CalculiX's
-/// contact iterations can chatter there until they give up; the default then stops at 0.95 F_thre.
-pub(super) fn deck_loads(
-    beams: &TwinBeams,
-    loads: Option<&[f64]>,
-    slope: StickSlope,
-) -> Result<Vec<TipForce>, CliError> {
-    let Some(loads) = loads else {
-        let thre = beams.threshold_force();
-        let at_threshold = match slope {
-            StickSlope::Model => 1.0,
-            StickSlope::NearCoulomb => 0.95,
-        };
-        return Ok([0.5, 0.75, at_threshold, 1.25, 1.875, 2.5]
-            .map(|m| TipForce::clamped(m * thre))
-            .to_vec());
-    };
-    let mut forces = Vec::with_capacity(loads.len());
-    for &f in loads {
-        let force = check_flag("--loads", f, Domain::FORCE, Unit::Newton)?;
-        if forces
-            .last()
-            .is_some_and(|last: &TipForce| last.newtons() >= force)
-        {
-            return Err(CliError::Flag {
-                flag: "--loads",
-                value: f,
-                allowed: "the loads must increase from one step to the next".to_string(),
-            });
-        }
-        forces.push(TipForce::clamped(force));
-    }
-    Ok(forces)
-}
-
-/// The forces of a lap deck's steps: `--loads` (increasing, each at most F_gross), or one in each
-/// regime: all microslip (F_1/2), one end sliding, both ends, and 0.9 F_gross (at the deck's
-/// stick slope).
-pub(super) fn lap_deck_loads(
-    joint: &LapJoint,
-    loads: Option<&[f64]>,
-    slope: StickSlope,
-) -> Result<Vec<JointForce>, CliError> {
-    let at_slope = joint
-        .with_tangential_stiffness(crate::problems::lap::deck::stick_slope_of(slope, joint))
-        .unwrap_or(*joint);
-    let Some(loads) = loads else {
-        let (f1, f2, gross) = (
-            at_slope.first_slip_force(),
-            at_slope.second_slip_force(),
-            at_slope.gross_slip_force(),
-        );
-        let mut forces: Vec<f64> = vec![0.5 * f1, 0.5 * (f1 + f2), 0.5 * (f2 + gross), 0.9 * gross];
-        forces.dedup_by(|a, b| *a <= *b);
-        return Ok(forces.into_iter().map(|f| joint.clamped_force(f)).collect());
-    };
-    let mut forces: Vec<JointForce> = Vec::with_capacity(loads.len());
-    for &f in loads {
-        let force = joint.force(f).map_err(|e| CliError::Flag {
-            flag: "--loads",
-            value: f,
-            allowed: e.allowed(),
-        })?;
-        if forces.last().is_some_and(|last| *last >= force) {
-            return Err(CliError::Flag {
-                flag: "--loads",
-                value: f,
-                allowed: "the loads must increase from one step to the next".to_string(),
-            });
-        }
-        forces.push(force);
-    }
-    Ok(forces)
 }
 
 /// A count as users write numbers, the README's notation included: `101`, `1e8`. Anything but a

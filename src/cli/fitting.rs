@@ -1,19 +1,26 @@
 //! `fit`: mu and K_T from a measured curve, with progress on stderr.
 
 use super::*;
-use crate::problems::BeamParam;
 
-/// `--fix` values: (mu, K_T). Only those two are fitted, so only they can be held.
-pub(super) fn parse_fixed(fixed: &[String]) -> Result<(Option<f64>, Option<f64>), CliError> {
+/// `--fix` values: (mu, K_T), keyed as `kind` keys them. Only those two are fitted, so only
+/// they can be held: each is told by its spec (the friction coefficient's domain, a stiffness's
+/// unit), the vocabulary every problem shares, not by a problem's key type.
+pub(super) fn parse_fixed(
+    kind: ModelKind,
+    fixed: &[String],
+) -> Result<(Option<f64>, Option<f64>), CliError> {
     let (mut mu, mut kt) = (None, None);
     for text in fixed {
         let bad = || CliError::Fix(text.clone());
         let (key, value) = text.split_once('=').ok_or_else(bad)?;
         let value = parse_number(value.trim()).ok_or_else(bad)?;
-        match key.trim().parse::<BeamParam>().map_err(|_| bad())? {
-            BeamParam::Friction => mu = Some(value),
-            BeamParam::Stiffness => kt = Some(value),
-            _ => return Err(bad()),
+        let param = kind.param(key.trim()).map_err(|_| bad())?;
+        if param.spec().domain == Domain::FRICTION {
+            mu = Some(value);
+        } else if param.is_stiffness() {
+            kt = Some(value);
+        } else {
+            return Err(bad());
         }
     }
     Ok((mu, kt))
@@ -84,7 +91,7 @@ pub(super) fn run_fit(
     weights: Option<WeightsArg>,
     format: ReportFormat,
 ) -> Result<(), CliError> {
-    let (fixed_mu, fixed_kt) = parse_fixed(fixed)?;
+    let (fixed_mu, fixed_kt) = parse_fixed(kind, fixed)?;
     // The measured forces are fitted, not the preset's F.
     let (name, model) = load_for(inputs, kind, &model_command(kind, "fit"), Load::Unused)?;
     let structure = fit::Structure::of(&model)
@@ -98,14 +105,12 @@ pub(super) fn run_fit(
         .map_err(|e| data_error(e.to_string()))?;
     let mut reading =
         |done, total| progress.update(Instant::now(), || text::reading_progress(done, total));
-    let data = match kind {
-        ModelKind::Beam | ModelKind::Plate => {
-            crate::measured::parse_measured_with_progress(&contents, &mut reading)
-        }
-        ModelKind::Lap => {
-            crate::measured::parse_measured_joint_with_progress(&contents, &mut reading)
-        }
-    };
+    // The response column is the fitted problem's own (`w_mm`, `Delta_mm`).
+    let data = crate::measured::parse_measured_response_with_progress(
+        &contents,
+        structure.response_column(),
+        &mut reading,
+    );
     drop(contents);
     let crate::fit::Measured {
         points: data,

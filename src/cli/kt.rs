@@ -1,9 +1,7 @@
 //! `kt`: the FE codes' default K_T and the tolerance K_T needs.
 
 use super::*;
-use crate::problems::lap::LapJointProblem;
-use crate::problems::plate::SqueezedPlateProblem;
-use crate::problems::twin_beams::TwinBeamsProblem;
+use crate::study::tolerance::ToleranceError;
 
 /// The force range of `kt --tolerance`: `--from` and `--to` (each the model's force when not
 /// given), accepted forces, in order.
@@ -37,72 +35,87 @@ pub(super) fn run_kt_tolerance(
     [from, to]: [Option<f64>; 2],
     format: ReportFormat,
 ) -> Result<(), CliError> {
-    use crate::study::tolerance::{self, parse_tolerance};
+    use crate::study::tolerance::parse_tolerance;
     let tol = parse_tolerance(tolerance).map_err(|e| CliError::Invalid(e.to_string()))?;
     let (name, model) = load_any(inputs, DEFAULT_PROBLEM)?;
     let element = element_size(element, &model)?;
-    let answer = match model {
-        Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, force }) => {
-            let range = tolerance_forces([from, to], force.newtons())?;
-            match of {
-                ToleranceOf::Coulomb => tolerance::stiffness_for_tolerance::<TwinBeamsProblem>(
-                    &beams, range, tol, element,
-                ),
-                ToleranceOf::Current => tolerance::stiffness_near_current::<TwinBeamsProblem>(
-                    &beams, range, tol, element,
-                ),
-            }
-            .map_err(|e| CliError::Invalid(e.to_string()))?
-        }
-        Model::Lap(crate::problems::lap::problem::LapModel { joint, force }) => {
-            let range = tolerance_forces([from, to], force.newtons())?;
-            // The joint carries nothing beyond F_gross: said of the flag that asks for more.
-            let gross = joint.gross_slip_force();
-            if range[1] > gross {
+    let current = match of {
+        ToleranceOf::Coulomb => false,
+        ToleranceOf::Current => true,
+    };
+    let kind = model.kind();
+    // A load-driven problem is checked over a force range; any other at its one state.
+    let answer = match report::face::report_face(kind).cycle() {
+        Some(face) => {
+            let no_load = || CliError::Invalid(format!("the {kind} problem has no load"));
+            let force = face.applied_force(&model).ok_or_else(no_load)?;
+            let range = tolerance_forces([from, to], force)?;
+            // A structure carries nothing beyond its limit: said of the flag that asks for more.
+            if let Some(limit) = face.force_limit(&model)
+                && range[1] > limit.newtons
+            {
                 let flag = if to.is_some() { "--to" } else { "--from" };
                 return Err(CliError::Flag {
                     flag,
                     value: range[1],
                     allowed: format!(
-                        "must be at most F_gross = 2 b mu P L = {} N (the joint slides through \
-                         beyond it)",
-                        Compact(gross)
+                        "must be at most {} = {} N ({})",
+                        limit.name,
+                        Compact(limit.newtons),
+                        limit.beyond
                     ),
                 });
             }
-            match of {
-                ToleranceOf::Coulomb => tolerance::stiffness_for_tolerance::<LapJointProblem>(
-                    &joint, range, tol, element,
-                ),
-                ToleranceOf::Current => tolerance::stiffness_near_current::<LapJointProblem>(
-                    &joint, range, tol, element,
-                ),
-            }
-            .map_err(|e| CliError::Invalid(e.to_string()))?
+            face.tolerance(&model, range, (tol, element), current)
+                .ok_or_else(no_load)?
         }
-        Model::Plate(plate) => {
+        None => {
             if from.is_some() || to.is_some() {
                 return Err(CliError::Usage(
                     "--from/--to are forces of the twin beams and the lap joint; the plate has none",
                 ));
             }
-            match of {
-                ToleranceOf::Coulomb => tolerance::state_stiffness_for_tolerance::<
-                    SqueezedPlateProblem,
-                >(&plate, tol, element),
-                ToleranceOf::Current => tolerance::state_stiffness_near_current::<
-                    SqueezedPlateProblem,
-                >(&plate, tol, element),
-            }
-            .map_err(|e| CliError::Invalid(e.to_string()))?
+            for_problem(
+                kind,
+                StateTolerance {
+                    model: &model,
+                    tolerance: tol,
+                    element,
+                    current,
+                },
+            )
+            .ok_or_else(|| CliError::Invalid(format!("no {kind} model to check")))?
         }
-    };
+    }
+    .map_err(|e| CliError::Invalid(e.to_string()))?;
     let report = crate::report::point::tolerance::ToleranceReport::new(&name, &answer);
     match format {
         ReportFormat::Text => out.write_all(report.text().as_bytes())?,
         ReportFormat::Json => write_json(out, &crate::report::point::to_json(&report))?,
     }
     Ok(())
+}
+
+/// `kt --tolerance` of a problem without a load, at its one state, for [`for_problem`].
+struct StateTolerance<'a> {
+    model: &'a Model,
+    tolerance: f64,
+    element: f64,
+    current: bool,
+}
+
+impl ForProblem for StateTolerance<'_> {
+    type Output = Option<Result<crate::study::tolerance::ToleranceAnswer, ToleranceError>>;
+
+    fn run<P: Faces>(self) -> Self::Output {
+        use crate::study::tolerance;
+        let model = P::from_model(self.model)?;
+        Some(if self.current {
+            tolerance::state_stiffness_near_current::<P>(&model, self.tolerance, self.element)
+        } else {
+            tolerance::state_stiffness_for_tolerance::<P>(&model, self.tolerance, self.element)
+        })
+    }
 }
 
 pub(super) fn run_kt(

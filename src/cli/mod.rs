@@ -19,7 +19,7 @@ use thiserror::Error;
 use crate::chart::view::AnyChart;
 use crate::chart::{SeriesRole, YMode};
 use crate::fe;
-use crate::fe::deck::{self, DeckMesh};
+use crate::fe::deck::DeckMesh;
 use crate::fe::header::StickSlope;
 use crate::fe::load::LoadError;
 use crate::fit::{self, FitError};
@@ -30,11 +30,9 @@ use crate::problems::inputs::{Inputs, Model};
 use crate::problems::problem::Registered;
 use crate::problems::{ModelKind, Param, Problem, UnknownParam};
 use crate::report::figure::{self, FigureError};
-use crate::report::rows::{BeamRow, CycleRow, LapLoopRow, LapRow, LoopRow, PlateRow};
 use crate::report::table::{TableFormat, write_json, write_table, write_table_after};
 use crate::report::{self, json, text};
 use crate::study::curves::{self, RangeError, Samples, Spacing};
-use crate::study::load;
 use crate::study::target::{Target, TargetError, solve_for_target};
 use crate::tui::theme::Charset;
 use crate::verify::{self, Grid};
@@ -43,6 +41,7 @@ mod args;
 mod compare;
 mod cycle;
 mod decks;
+mod dispatch;
 mod error;
 mod figures;
 mod fitting;
@@ -62,6 +61,7 @@ use args::*;
 use compare::*;
 use cycle::*;
 use decks::*;
+use dispatch::*;
 use error::*;
 use figures::*;
 use fitting::*;
@@ -195,10 +195,11 @@ fn report_clap_error(error: &clap::Error) -> ExitCode {
 pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
     match &cli.command {
         None | Some(Command::Report) => out.write_all(report::paper_report().as_bytes())?,
-        Some(Command::Beam(args)) => run_beam_point(out, args)?,
-        Some(Command::Plate(args)) => run_plate_point(out, args)?,
+        // Each per-problem command runs the one generic handler for the problem its name is.
+        Some(Command::Beam(args)) => run_point(out, "beam", args, false)?,
+        Some(Command::Plate(args)) => run_point(out, "plate", &args.point, args.continuum)?,
         Some(Command::Sweep(args)) => run_sweep(out, args)?,
-        Some(Command::Lap(args)) => run_lap_point(out, args)?,
+        Some(Command::Lap(args)) => run_point(out, "lap", &args.point, args.continuum)?,
         Some(Command::Solve(args)) => run_solve(out, args)?,
         Some(Command::Fit(command)) => run_fit_command(out, command)?,
         Some(Command::Kt {

@@ -1,12 +1,9 @@
 //! `sweep`: tables over one parameter.
 
 use super::*;
-use crate::problems::PlateParam;
-use crate::problems::lap::LapJointProblem;
-use crate::problems::lap::problem::LapModel;
-use crate::problems::plate::SqueezedPlateProblem;
-use crate::problems::twin_beams::TwinBeamsProblem;
-use crate::problems::twin_beams::problem::BeamsModel;
+use crate::problems::problem::ParamKey;
+use crate::report::face::report_face;
+use crate::report::point::cycle::LoadTableError;
 
 /// `microslip sweep ...`: the generic sweep, or the alias a subcommand names.
 pub(super) fn run_sweep(out: &mut impl Write, args: &SweepArgs) -> Result<(), CliError> {
@@ -82,7 +79,8 @@ fn run_generic_sweep(out: &mut impl Write, args: &GenericSweepArgs) -> Result<()
 /// The rows of `model` over `param` at `values`, as every sweep command writes them: for the
 /// problem's [`default_vary`] parameter its own table (the F sweep, the plate's K_T sweep), for
 /// any other the parameter's column first, then the same columns. The one place a sweep meets
-/// each problem's row type; `range_error` names the command's flags in a refusal.
+/// each problem's row type (its [`ReportFace`](crate::report::face::ReportFace)); `range_error`
+/// names the command's flags in a refusal.
 fn write_sweep(
     out: &mut impl Write,
     model: Model,
@@ -91,75 +89,76 @@ fn write_sweep(
     format: TableFormat,
     range_error: impl Fn(RangeError) -> CliError,
 ) -> Result<(), CliError> {
-    let own_table = Some(param) == default_vary(model.kind());
-    match (model, param) {
-        (
-            Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, force }),
-            Param::Beam(varied),
-        ) => {
-            if own_table {
-                let rows =
-                    load::force_sweep::<TwinBeamsProblem>(beams, values).map_err(range_error)?;
-                write_table(out, format, rows.map(|r| BeamRow::from(&r)))?;
-            } else {
-                let rows = curves::param_sweep::<TwinBeamsProblem>(
-                    BeamsModel { beams, force },
-                    varied,
-                    values,
-                )
-                .map_err(range_error)?;
-                write_varied(
-                    out,
-                    format,
-                    param,
-                    rows.map(|(v, r)| (v, BeamRow::from(&r))),
-                )?;
-            }
-        }
-        (Model::Plate(plate), Param::Plate(varied)) => {
-            if own_table {
-                let rows = curves::param_sweep::<SqueezedPlateProblem>(plate, varied, values)
-                    .map_err(range_error)?
-                    .map(|(_, r)| r);
-                write_table(out, format, rows.map(|r| PlateRow::from(&r)))?;
-            } else {
-                let rows = curves::param_sweep::<SqueezedPlateProblem>(plate, varied, values)
-                    .map_err(range_error)?;
-                write_varied(
-                    out,
-                    format,
-                    param,
-                    rows.map(|(v, r)| (v, PlateRow::from(&r))),
-                )?;
-            }
-        }
-        (
-            Model::Lap(crate::problems::lap::problem::LapModel { joint, force }),
-            Param::Lap(varied),
-        ) => {
-            if own_table {
-                let rows =
-                    load::force_sweep::<LapJointProblem>(joint, values).map_err(range_error)?;
-                write_table(out, format, rows.map(|r| LapRow::from(&r)))?;
-            } else {
-                let rows = curves::param_sweep::<LapJointProblem>(
-                    LapModel { joint, force },
-                    varied,
-                    values,
-                )
-                .map_err(range_error)?;
-                write_varied(out, format, param, rows.map(|(v, r)| (v, LapRow::from(&r))))?;
-            }
-        }
+    let sweep = Sweep {
+        out,
+        model,
+        param,
+        values,
+        format,
+        range_error,
+    };
+    for_problem(model.kind(), sweep)
+}
+
+/// The arguments of [`write_sweep`], for [`for_problem`].
+struct Sweep<'a, W, E> {
+    out: &'a mut W,
+    model: Model,
+    param: Param,
+    values: Samples,
+    format: TableFormat,
+    range_error: E,
+}
+
+impl<W: Write, E: Fn(RangeError) -> CliError> ForProblem for Sweep<'_, W, E> {
+    type Output = Result<(), CliError>;
+
+    fn run<P: Faces>(self) -> Result<(), CliError> {
+        let Sweep {
+            out,
+            model,
+            param,
+            values,
+            format,
+            range_error,
+        } = self;
+        let own_table = Some(param) == default_vary(model.kind());
+        let key = P::index_of(param).and_then(|i| <P::Key as ParamKey>::KEYS.get(i).copied());
         // `param` is parsed with the model's own kind by every caller.
-        (model, param) => {
+        let (Some(typed), Some(key)) = (P::from_model(&model), key) else {
             return Err(CliError::Invalid(format!(
                 "{param} is not a parameter of the {} problem",
                 model.kind()
             )));
+        };
+        // A load-driven problem's own table is its F sweep, over the forces its structure
+        // carries; any other table is the problem's rows at each value of the parameter.
+        if own_table && let Some(face) = P::cycle() {
+            let written = face.write_force_sweep(out, format, &model, values);
+            return match written {
+                Some(Ok(())) => Ok(()),
+                Some(Err(LoadTableError::Range(e))) => Err(range_error(e)),
+                Some(Err(LoadTableError::Force(e))) => Err(CliError::Param(e)),
+                Some(Err(LoadTableError::Output(e))) => Err(CliError::Output(e)),
+                None => Err(CliError::Invalid(format!(
+                    "{param} is not a parameter of the {} problem",
+                    model.kind()
+                ))),
+            };
         }
+        let rows = curves::param_sweep::<P>(typed, key, values).map_err(range_error)?;
+        if own_table {
+            write_table(out, format, rows.map(|(_, r)| P::SweepRow::from(&r)))?;
+        } else {
+            write_varied(
+                out,
+                format,
+                param,
+                rows.map(|(v, r)| (v, P::SweepRow::from(&r))),
+            )?;
+        }
+        Ok(())
     }
-    Ok(())
 }
 
 /// `microslip sweep beam|lap`: over F (rows of the F sweep) or any other parameter of the
@@ -194,33 +193,39 @@ fn run_plate_sweep(out: &mut impl Write, args: &PlateSweepArgs) -> Result<(), Cl
         inputs,
         format,
     } = args;
-    let (varied, lo, hi, flags) = match (kt_from, kt_to, from, to) {
+    // The alias's problem, read through the registry by its name.
+    let kind = alias_problem("plate")?;
+    let usage = CliError::Usage(
+        "sweep plate needs --kt-from A --kt-to B, or [--vary NAME] --from A --to B",
+    );
+    let (param, lo, hi, flags) = match (kt_from, kt_to, from, to) {
         (Some(a), Some(b), None, None) => (
-            PlateParam::Stiffness,
+            kind.params()
+                .iter()
+                .copied()
+                .find(|p| p.is_stiffness())
+                .ok_or(usage)?,
             *a,
             *b,
             ["--kt-from", "--kt-to", "--points"],
         ),
         (None, None, Some(a), Some(b)) => (
-            vary.as_deref().unwrap_or("KT").parse()?,
+            kind.param(vary.as_deref().unwrap_or("KT"))?,
             *a,
             *b,
             ["--from", "--to", "--points"],
         ),
-        _ => {
-            return Err(CliError::Usage(
-                "sweep plate needs --kt-from A --kt-to B, or [--vary NAME] --from A --to B",
-            ));
-        }
+        _ => return Err(usage),
     };
-    let param = Param::Plate(varied);
     let range_error = |error| CliError::Range { error, flags };
     let values =
         Samples::of_param(param, lo, hi, *points, spacing.spacing(param)).map_err(range_error)?;
-    let (_, model) = load(inputs, ModelKind::Plate, "sweep plate")?;
+    let (_, model) = load(inputs, kind, &model_command(kind, "sweep"))?;
     write_sweep(out, model, param, values, *format, range_error)
 }
 
+/// `microslip sweep cycle`: one cycle summary per amplitude, of any load-driven problem (the
+/// preset's), through its cycle face; a problem without a load is refused.
 fn run_cycle_sweep(out: &mut impl Write, args: &CycleSweepArgs) -> Result<(), CliError> {
     let CycleSweepArgs {
         from,
@@ -229,20 +234,23 @@ fn run_cycle_sweep(out: &mut impl Write, args: &CycleSweepArgs) -> Result<(), Cl
         inputs,
         format,
     } = args;
-    let amplitudes =
-        curves::load_samples::<TwinBeamsProblem>(*from, *to, *points).map_err(force_range_error)?;
-    match load_any_structure(inputs, DEFAULT_PROBLEM)?.1 {
-        Model::Beam(crate::problems::twin_beams::problem::BeamsModel { beams, .. }) => {
-            let rows = load::cycle_sweep::<TwinBeamsProblem>(beams, amplitudes)
-                .map_err(force_range_error)?;
-            write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
-        }
-        Model::Lap(crate::problems::lap::problem::LapModel { joint, .. }) => {
-            let rows = load::cycle_sweep::<LapJointProblem>(joint, amplitudes)
-                .map_err(force_range_error)?;
-            write_table(out, *format, rows.map(|r| CycleRow::from(&r)))?;
-        }
-        Model::Plate(_) => return Err(plate_has_no_cycle(inputs, "sweep cycle")),
+    // The amplitudes are checked before the preset is read, as the default problem's forces.
+    let no_load = || {
+        CliError::Invalid(format!(
+            "sweep cycle: the {DEFAULT_PROBLEM} problem has no load to cycle"
+        ))
+    };
+    let force = DEFAULT_PROBLEM.description().load.ok_or_else(no_load)?;
+    let amplitudes = Samples::of_param(force, *from, *to, *points, Spacing::Linear)
+        .map_err(force_range_error)?;
+    let model = load_any_structure(inputs, DEFAULT_PROBLEM)?.1;
+    let no_cycle = || plate_has_no_cycle(inputs, "sweep cycle");
+    let face = report_face(model.kind()).cycle().ok_or_else(no_cycle)?;
+    match face.write_cycle_sweep(out, *format, &model, amplitudes) {
+        Some(Ok(())) => Ok(()),
+        Some(Err(LoadTableError::Range(e))) => Err(force_range_error(e)),
+        Some(Err(LoadTableError::Force(e))) => Err(CliError::Param(e)),
+        Some(Err(LoadTableError::Output(e))) => Err(CliError::Output(e)),
+        None => Err(no_cycle()),
     }
-    Ok(())
 }

@@ -10,7 +10,8 @@
 
 use std::fmt::Debug;
 
-use super::header::DeckHeader;
+use super::deck::{DeckMesh, DeckTooLarge};
+use super::header::{DeckHeader, StickSlope};
 use super::load::Loaded;
 use super::results::{CcxRun, ResultsError};
 use super::verdict::InterfaceMesh;
@@ -57,6 +58,77 @@ pub trait Deck: Problem + Registered {
         points: &[Self::FePoint],
         mesh: Option<&InterfaceMesh>,
     ) -> Self::Compared;
+
+    /// The deck of `model` that `request` describes (`deck ccx`, `bench ccx`): its load steps
+    /// from the request's forces, checked, or the problem's own defaults.
+    ///
+    /// # Errors
+    /// A request the problem refuses ([`DeckError::Flag`], [`DeckError::Usage`]), or a mesh too
+    /// large ([`DeckError::TooLarge`]).
+    fn write_deck(model: &Self::Model, request: &DeckRequest) -> Result<String, DeckError>;
+
+    /// What the note on flags a deck's header overrides adds for the problem (the beams':
+    /// `compare` shows both beam theories); empty for most.
+    const OVERRIDES_NOTE: &'static str = "";
+}
+
+/// What a deck is asked to be: the command line's `--loads`, `--mesh`, stick slope and
+/// `--increment`, as the problem's [`Deck::write_deck`] reads them.
+#[derive(Debug, Clone, Copy)]
+pub struct DeckRequest<'a> {
+    /// The forces of the load steps (N), as given, unchecked; `None`: the problem's defaults.
+    pub loads: Option<&'a [f64]>,
+    /// The mesh density.
+    pub mesh: DeckMesh,
+    /// The stick slope the deck gives the FE code.
+    pub slope: StickSlope,
+    /// The largest force change per increment (N), as given, unchecked.
+    pub increment: Option<f64>,
+}
+
+/// Why a deck was not written.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DeckError {
+    /// A flag's value refused: the flag, the value, and what is allowed.
+    Flag {
+        /// The flag (`--loads`).
+        flag: &'static str,
+        /// The value given.
+        value: f64,
+        /// What the flag accepts.
+        allowed: String,
+    },
+    /// A flag the problem's deck does not take, and why.
+    Usage(&'static str),
+    /// The mesh would be too large.
+    TooLarge(DeckTooLarge),
+}
+
+impl DeckError {
+    /// `value` of `flag` checked against `domain`, refused in the words of the domain.
+    ///
+    /// # Errors
+    /// [`DeckError::Flag`] when `value` is outside `domain`.
+    pub fn check(
+        flag: &'static str,
+        value: f64,
+        domain: crate::kernel::params::Domain,
+        unit: crate::kernel::params::Unit,
+    ) -> Result<f64, DeckError> {
+        domain
+            .check(flag, value, unit)
+            .map_err(|_| DeckError::Flag {
+                flag,
+                value,
+                allowed: domain.refusal(value, unit),
+            })
+    }
+}
+
+impl From<DeckTooLarge> for DeckError {
+    fn from(e: DeckTooLarge) -> Self {
+        DeckError::TooLarge(e)
+    }
 }
 
 /// A [`Deck`] with its types erased: what a header and a run reader hold for any problem.

@@ -12,9 +12,12 @@ use std::fmt::{Debug, Write as _};
 use serde::Serialize;
 
 use crate::kernel::regime::Regime;
+use crate::numeric::NumericError;
+use crate::problems::ModelKind;
+use crate::problems::pointwise::Pointwise;
 use crate::problems::problem::Registered;
-use crate::problems::{ModelKind, Problem};
 use crate::report::number;
+use crate::report::point::cycle::AnyCycleFace;
 use crate::study::curves::Answer;
 
 /// The heading of a K_T table: what every problem's first line says.
@@ -66,7 +69,7 @@ pub enum KtColumn {
 }
 
 /// A problem as the generic reports show it.
-pub trait ReportFace: Problem + Registered {
+pub trait ReportFace: Pointwise + Registered {
     /// The equation of docs/theory.md that shows the problem's response never grows with K_T
     /// (`(T1)`), which the tolerance answer cites.
     const MONOTONE_IN_STIFFNESS: &'static str;
@@ -94,6 +97,35 @@ pub trait ReportFace: Problem + Registered {
     fn paper_table() -> Option<String> {
         None
     }
+
+    /// The report of one state (`microslip beam|plate|lap`): its text is [`Self::point_text`],
+    /// its JSON the struct serialized.
+    type PointReport: Serialize;
+
+    /// The report of `model`, from the preset `preset`. `continuum` is the command's
+    /// `--continuum`: a problem with a continuum solves it when asked, or when its closed forms
+    /// are not expected to hold (and reports a failed solve in its output then); a problem
+    /// without one is never asked.
+    ///
+    /// # Errors
+    /// The continuum asked for (`continuum`) and not solved.
+    fn point_report(
+        preset: &str,
+        model: &Self::Model,
+        continuum: bool,
+    ) -> Result<Self::PointReport, NumericError>;
+
+    /// [`Self::PointReport`] as text.
+    fn point_text(report: &Self::PointReport) -> String;
+
+    /// One row of a sweep's table at one state (`sweep --vary`, the plate's K_T sweep).
+    type SweepRow: Serialize + Default + for<'a> From<&'a Self::Point>;
+
+    /// The problem's cycle and load tables, when it is load-driven ([`AnyCycleFace`]); `None`
+    /// for a problem without a load (the plate).
+    fn cycle() -> Option<&'static dyn AnyCycleFace> {
+        None
+    }
 }
 
 /// A [`ReportFace`] with its types erased.
@@ -106,6 +138,8 @@ pub trait AnyReportFace: Send + Sync {
     fn kt_row_unanswered(&self, row: &KtRow) -> String;
     /// [`ReportFace::paper_table`].
     fn paper_table(&self) -> Option<String>;
+    /// [`ReportFace::cycle`].
+    fn cycle(&self) -> Option<&'static dyn AnyCycleFace>;
 }
 
 /// The [`AnyReportFace`] of a [`ReportFace`] problem `P`.
@@ -159,6 +193,29 @@ impl<P: ReportFace> AnyReportFace for ReportOf<P> {
 
     fn paper_table(&self) -> Option<String> {
         P::paper_table()
+    }
+
+    fn cycle(&self) -> Option<&'static dyn AnyCycleFace> {
+        P::cycle()
+    }
+}
+
+/// The continuum solution a point report shows: solved when `asked` (the command's
+/// `--continuum`) or when the closed forms are not expected to hold (`holds` false), and none
+/// otherwise. Only a solve that was asked for fails the report; an automatic one that fails is
+/// reported as failed in the output.
+///
+/// # Errors
+/// The solve's error, when it was asked for.
+pub fn point_continuum<T>(
+    asked: bool,
+    holds: bool,
+    solve: impl FnOnce() -> Result<T, NumericError>,
+) -> Result<Option<Result<T, NumericError>>, NumericError> {
+    let solved = (asked || !holds).then(solve);
+    match solved {
+        Some(Err(e)) if asked => Err(e),
+        solved => Ok(solved),
     }
 }
 

@@ -30,7 +30,7 @@ use crate::fe::deck::{
     real, start_step, write_cload, write_contact_pair, write_elements, write_interaction,
     write_nodes, write_nset, write_surface,
 };
-use crate::fe::face::Deck;
+use crate::fe::face::{Deck, DeckError, DeckRequest};
 use crate::fe::header::{DeckHeader, StickSlope};
 use crate::fe::mesh::{Block, Face, uniform};
 use crate::fe::results::{
@@ -40,10 +40,12 @@ use crate::fe::results::{
 };
 use crate::fe::verdict::{InterfaceMesh, MeshDifference};
 use crate::kernel::format::number;
-use crate::kernel::params::{Compact, ParamError};
+use crate::kernel::params::{Compact, Domain, ParamError, Unit};
 use crate::kernel::regime::{Law, Regime};
 use crate::kernel::validity::Validity;
 use crate::problems::Problem;
+use crate::report::compare::lap::LapCompareReport;
+use crate::report::compare::{CompareFace, LapCompareRow};
 
 use super::closed_form::{JointForce, LapJoint, zones_regime};
 use super::continuum::{LapBreaks, lap_breaks, lap_counts};
@@ -565,6 +567,92 @@ impl Deck for LapJointProblem {
     ) -> Result<Vec<LapCompared>, ParamError> {
         compare_lap(&model.joint, points, mesh)
     }
+
+    fn write_deck(model: &LapModel, request: &DeckRequest) -> Result<String, DeckError> {
+        let joint = &model.joint;
+        let loads = deck_loads(joint, request.loads, request.slope)?;
+        let force_step = request
+            .increment
+            .map(|f| DeckError::check("--increment", f, Domain::FORCE_STEP, Unit::Newton))
+            .transpose()?;
+        Ok(lap_deck(
+            joint,
+            &loads,
+            request.mesh,
+            request.slope,
+            LoadPath { force_step },
+        )?)
+    }
+}
+
+impl CompareFace for LapJointProblem {
+    const ONE_RUN: Option<&'static str> = None;
+    type Checked = Vec<LapCompared>;
+    type CompareRow = LapCompareRow;
+    type CompareReport = LapCompareReport;
+
+    fn checked(
+        compared: Result<Vec<LapCompared>, ParamError>,
+    ) -> Result<Vec<LapCompared>, ParamError> {
+        compared
+    }
+
+    fn compare_report(
+        source: &str,
+        first: Vec<LapCompared>,
+        more: Vec<Vec<LapCompared>>,
+    ) -> (LapCompareReport, Vec<LapCompareRow>) {
+        let rows: Vec<LapCompared> = first
+            .into_iter()
+            .chain(more.into_iter().flatten())
+            .collect();
+        let report = LapCompareReport::new(source, &rows);
+        (report, rows.iter().map(LapCompareRow::from).collect())
+    }
+
+    fn compare_text(report: &LapCompareReport) -> String {
+        report.text()
+    }
+}
+
+/// The forces of a lap deck's steps: `loads` (increasing, each at most F_gross), or one in each
+/// regime: all microslip (F_1/2), one end sliding, both ends, and 0.9 F_gross (at the deck's
+/// stick slope).
+fn deck_loads(
+    joint: &LapJoint,
+    loads: Option<&[f64]>,
+    slope: StickSlope,
+) -> Result<Vec<JointForce>, DeckError> {
+    let at_slope = joint
+        .with_tangential_stiffness(stick_slope_of(slope, joint))
+        .unwrap_or(*joint);
+    let Some(loads) = loads else {
+        let (f1, f2, gross) = (
+            at_slope.first_slip_force(),
+            at_slope.second_slip_force(),
+            at_slope.gross_slip_force(),
+        );
+        let mut forces: Vec<f64> = vec![0.5 * f1, 0.5 * (f1 + f2), 0.5 * (f2 + gross), 0.9 * gross];
+        forces.dedup_by(|a, b| *a <= *b);
+        return Ok(forces.into_iter().map(|f| joint.clamped_force(f)).collect());
+    };
+    let mut forces: Vec<JointForce> = Vec::with_capacity(loads.len());
+    for &f in loads {
+        let force = joint.force(f).map_err(|e| DeckError::Flag {
+            flag: "--loads",
+            value: f,
+            allowed: e.allowed(),
+        })?;
+        if forces.last().is_some_and(|last| *last >= force) {
+            return Err(DeckError::Flag {
+                flag: "--loads",
+                value: f,
+                allowed: "the loads must increase from one step to the next".to_string(),
+            });
+        }
+        forces.push(force);
+    }
+    Ok(forces)
 }
 
 #[cfg(test)]

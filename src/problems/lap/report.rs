@@ -13,10 +13,10 @@ use crate::numeric::NumericError;
 use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
-use crate::report::face::{KtColumn, ReportFace};
-use crate::report::point::cycle::{CycleFace, CycleWords};
+use crate::report::face::{KtColumn, ReportFace, point_continuum};
+use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleWords, ForceLimit};
 use crate::report::point::{InputsReport, regime_label, validity_label};
-use crate::report::rows::LapRow;
+use crate::report::rows::{LapLoopRow, LapRow};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::{Answer, lap_point};
 
@@ -24,7 +24,7 @@ use super::closed_form::{JointForce, LapJoint};
 use super::continuum::ContinuumLap;
 use super::cycle::{LapCycle, MasingCycle};
 use super::point::LapPoint;
-use super::problem::{LapInputs, LapJointProblem};
+use super::problem::{LapInputs, LapJointProblem, LapModel};
 
 /// What a candidate K_T does to the joint at the model's force (`microslip kt`'s row).
 #[derive(Debug, Clone, Copy, Serialize)]
@@ -71,6 +71,35 @@ impl ReportFace for LapJointProblem {
     ];
     const KT_REGIME_WIDTH: usize = 29;
     type KtAnswer = LapKtAnswer;
+    type PointReport = LapReport;
+    type SweepRow = LapRow;
+
+    /// The 2-D continuum (default mesh) is solved when asked, or when the shear-lag theory is
+    /// not expected within 2 %; only the one asked for fails the command.
+    fn point_report(
+        preset: &str,
+        model: &LapModel,
+        continuum: bool,
+    ) -> Result<LapReport, NumericError> {
+        let (joint, force) = (model.joint, model.force);
+        let holds = joint.validity(force).validity == Validity::Holds;
+        let solved = point_continuum(continuum, holds, || {
+            super::solve_lap_continuum(
+                joint.params(),
+                force.newtons(),
+                super::LapContinuumMesh::default(),
+            )
+        })?;
+        Ok(LapReport::new(preset, &joint, force, solved.as_ref()))
+    }
+
+    fn point_text(report: &LapReport) -> String {
+        report.text()
+    }
+
+    fn cycle() -> Option<&'static dyn AnyCycleFace> {
+        Some(cycle::erased::<Self>())
+    }
 
     fn kt_answer(answer: &Answer) -> Option<LapKtAnswer> {
         match *answer {
@@ -154,6 +183,17 @@ impl CycleFace for LapJointProblem {
             number(p.friction),
             number(p.tangential_stiffness)
         )
+    }
+
+    type LoopRow = LapLoopRow;
+    type LoadRow = LapRow;
+
+    fn force_limit(joint: &LapJoint) -> Option<ForceLimit> {
+        Some(ForceLimit {
+            newtons: joint.gross_slip_force(),
+            name: "F_gross = 2 b mu P L",
+            beyond: "the joint slides through beyond it",
+        })
     }
 
     fn cycle_inputs(joint: &LapJoint, amplitude: JointForce) -> Inputs {

@@ -10,7 +10,7 @@ use crate::fe::deck::{
     write_contact_pair, write_elements, write_interaction, write_material, write_nodes, write_nset,
     write_pressure, write_surface,
 };
-use crate::fe::face::Deck;
+use crate::fe::face::{Deck, DeckError, DeckRequest};
 use crate::fe::header::{DeckHeader, StickSlope};
 use crate::fe::mesh::{Block, Face, graded_toward_end, graded_toward_end_count, uniform};
 use crate::fe::results::{
@@ -19,9 +19,11 @@ use crate::fe::results::{
 };
 use crate::fe::verdict::InterfaceMesh;
 use crate::kernel::format::number;
-use crate::kernel::params::Compact;
+use crate::kernel::params::{Compact, ParamError};
 use crate::kernel::validity::Validity;
 use crate::problems::Problem;
+use crate::report::compare::plate::PlateCompareReport;
+use crate::report::compare::{CompareFace, PlateCompareRow};
 
 use super::closed_form::SqueezedPlate;
 use super::params::{PlateParam, PlateParams};
@@ -316,6 +318,45 @@ impl Deck for SqueezedPlateProblem {
         mesh: Option<&InterfaceMesh>,
     ) -> Vec<PlateCompared> {
         compare_plate(plate, points, mesh)
+    }
+
+    /// One step: the pressure, applied at once; the plate has no forces to step through.
+    fn write_deck(plate: &SqueezedPlate, request: &DeckRequest) -> Result<String, DeckError> {
+        if request.loads.is_some() {
+            return Err(DeckError::Usage(
+                "--loads are the tip forces of a beam deck; the plate deck applies its \
+                 pressure P in one step (set P with --set P=...)",
+            ));
+        }
+        Ok(plate_deck(plate, request.mesh, request.slope)?)
+    }
+}
+
+impl CompareFace for SqueezedPlateProblem {
+    const ONE_RUN: Option<&'static str> = None;
+    type Checked = Vec<PlateCompared>;
+    type CompareRow = PlateCompareRow;
+    type CompareReport = PlateCompareReport;
+
+    fn checked(compared: Vec<PlateCompared>) -> Result<Vec<PlateCompared>, ParamError> {
+        Ok(compared)
+    }
+
+    fn compare_report(
+        source: &str,
+        first: Vec<PlateCompared>,
+        more: Vec<Vec<PlateCompared>>,
+    ) -> (PlateCompareReport, Vec<PlateCompareRow>) {
+        let rows: Vec<PlateCompared> = first
+            .into_iter()
+            .chain(more.into_iter().flatten())
+            .collect();
+        let report = PlateCompareReport::new(source, &rows);
+        (report, rows.iter().map(PlateCompareRow::from).collect())
+    }
+
+    fn compare_text(report: &PlateCompareReport) -> String {
+        report.text()
     }
 }
 

@@ -10,7 +10,7 @@ use crate::fe::deck::{
     real, start_step, write_cload, write_contact_pair, write_elements, write_interaction,
     write_material, write_nodes, write_nset, write_pressure, write_surface,
 };
-use crate::fe::face::Deck;
+use crate::fe::face::{Deck, DeckError, DeckRequest};
 use crate::fe::header::{DeckHeader, StickSlope};
 use crate::fe::mesh::{Block, Face, graded_toward_end, graded_toward_end_count, uniform};
 use crate::fe::results::{
@@ -20,8 +20,10 @@ use crate::fe::results::{
 use crate::fe::verdict::InterfaceMesh;
 use crate::fit::{self, Measurement};
 use crate::kernel::format::number;
-use crate::kernel::params::Compact;
+use crate::kernel::params::{Compact, Domain, ParamError, Unit};
 use crate::problems::Problem;
+use crate::report::compare::beam::BeamCompareReport;
+use crate::report::compare::{BeamCompareRow, CompareFace};
 
 use super::closed_form::{TipForce, TwinBeams};
 use super::params::{BeamTheory, TwinBeamsParams};
@@ -435,6 +437,89 @@ impl Deck for TwinBeamsProblem {
     ) -> BeamComparison {
         compare_beams(&model.beams, points, mesh)
     }
+
+    const OVERRIDES_NOTE: &'static str = " (compare shows both beam theories)";
+
+    fn write_deck(model: &BeamsModel, request: &DeckRequest) -> Result<String, DeckError> {
+        let beams = &model.beams;
+        let loads = deck_loads(beams, request.loads, request.slope)?;
+        let force_step = request
+            .increment
+            .map(|f| DeckError::check("--increment", f, Domain::FORCE_STEP, Unit::Newton))
+            .transpose()?;
+        let path = LoadPath { force_step };
+        Ok(beam_deck_on_path(
+            beams,
+            &loads,
+            request.mesh,
+            request.slope,
+            path,
+        )?)
+    }
+}
+
+impl CompareFace for TwinBeamsProblem {
+    const ONE_RUN: Option<&'static str> =
+        Some("compare beam takes one result file (all load steps of one run)");
+    type Checked = BeamComparison;
+    type CompareRow = BeamCompareRow;
+    type CompareReport = BeamCompareReport;
+
+    fn checked(compared: BeamComparison) -> Result<BeamComparison, ParamError> {
+        Ok(compared)
+    }
+
+    /// One run's comparison: `more` is empty ([`CompareFace::ONE_RUN`]).
+    fn compare_report(
+        source: &str,
+        first: BeamComparison,
+        _more: Vec<BeamComparison>,
+    ) -> (BeamCompareReport, Vec<BeamCompareRow>) {
+        let report = BeamCompareReport::new(source, &first);
+        let rows = first.rows.iter().map(BeamCompareRow::from).collect();
+        (report, rows)
+    }
+
+    fn compare_text(report: &BeamCompareReport) -> String {
+        report.text()
+    }
+}
+
+/// The load steps of a beam deck: `loads` checked (each a valid force, strictly increasing), or
+/// the default multiples of F_thre, which span microslip and macroslip. With a near-Coulomb stick
+/// slope the interface is on the edge of sliding everywhere at exactly F_thre, and CalculiX's
+/// contact iterations can chatter there until they give up; the default then stops at 0.95 F_thre.
+fn deck_loads(
+    beams: &TwinBeams,
+    loads: Option<&[f64]>,
+    slope: StickSlope,
+) -> Result<Vec<TipForce>, DeckError> {
+    let Some(loads) = loads else {
+        let thre = beams.threshold_force();
+        let at_threshold = match slope {
+            StickSlope::Model => 1.0,
+            StickSlope::NearCoulomb => 0.95,
+        };
+        return Ok([0.5, 0.75, at_threshold, 1.25, 1.875, 2.5]
+            .map(|m| TipForce::clamped(m * thre))
+            .to_vec());
+    };
+    let mut forces = Vec::with_capacity(loads.len());
+    for &f in loads {
+        let force = DeckError::check("--loads", f, Domain::FORCE, Unit::Newton)?;
+        if forces
+            .last()
+            .is_some_and(|last: &TipForce| last.newtons() >= force)
+        {
+            return Err(DeckError::Flag {
+                flag: "--loads",
+                value: f,
+                allowed: "the loads must increase from one step to the next".to_string(),
+            });
+        }
+        forces.push(TipForce::clamped(force));
+    }
+    Ok(forces)
 }
 
 #[cfg(test)]

@@ -9,20 +9,21 @@ use serde::{Serialize, Serializer};
 
 use crate::kernel::regime::Regime;
 use crate::kernel::validity::Validity;
+use crate::numeric::NumericError;
 use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace};
-use crate::report::point::cycle::{CycleFace, CycleWords};
+use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleWords};
 use crate::report::point::{InputsReport, SideBySide, regime_label, validity_label};
-use crate::report::rows::BeamRow;
+use crate::report::rows::{BeamRow, LoopRow};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::{Answer, beam_point};
 
 use super::closed_form::{BeamTheory, TipForce, TwinBeams};
 use super::params::TwinBeamsParams;
 use super::point::BeamPoint;
-use super::problem::{BeamsInputs, TwinBeamsProblem};
+use super::problem::{BeamsInputs, BeamsModel, TwinBeamsProblem};
 use super::validity::CALIBRATED_FRICTION_STRAIN;
 
 /// What a candidate K_T does to the beams at the model's force (`microslip kt`'s row).
@@ -66,6 +67,25 @@ impl ReportFace for TwinBeamsProblem {
     ];
     const KT_REGIME_WIDTH: usize = 20;
     type KtAnswer = BeamKtAnswer;
+    type PointReport = BeamReport;
+    type SweepRow = BeamRow;
+
+    /// The beams have no continuum: `--continuum` is not a flag of `beam`.
+    fn point_report(
+        preset: &str,
+        model: &BeamsModel,
+        _continuum: bool,
+    ) -> Result<BeamReport, NumericError> {
+        Ok(BeamReport::new(preset, &model.beams, model.force))
+    }
+
+    fn point_text(report: &BeamReport) -> String {
+        report.text()
+    }
+
+    fn cycle() -> Option<&'static dyn AnyCycleFace> {
+        Some(cycle::erased::<Self>())
+    }
 
     fn kt_answer(answer: &Answer) -> Option<BeamKtAnswer> {
         match *answer {
@@ -197,6 +217,9 @@ impl CycleFace for TwinBeamsProblem {
             number(p.tangential_stiffness)
         )
     }
+
+    type LoopRow = LoopRow;
+    type LoadRow = BeamRow;
 
     fn cycle_inputs(beams: &TwinBeams, amplitude: TipForce) -> Inputs {
         TwinBeamsProblem::to_inputs(BeamsInputs {

@@ -13,6 +13,41 @@ use serde::Serialize;
 
 use super::number;
 use crate::fe::compare::{BeamCompared, LapCompared, PlateCompared};
+use crate::fe::face::Deck;
+use crate::kernel::params::ParamError;
+
+/// A problem's comparison as `compare` and `bench` report it: how many result files one report
+/// takes, how one file's comparison is checked, and the report and CSV rows of them all. Each
+/// problem's application folder implements it (`src/problems/<name>/deck.rs`), so that the
+/// command is written once for every problem with a deck.
+pub trait CompareFace: Deck {
+    /// Why a comparison takes one result file, when it does (the beams': all the load steps of
+    /// one run, fitted together); `None` when the rows of several files are put together.
+    const ONE_RUN: Option<&'static str>;
+    /// One file's comparison, checked.
+    type Checked;
+    /// The CSV row of a comparison.
+    type CompareRow: Serialize + Default;
+    /// The report of a comparison: its JSON is serde of it, its text [`Self::compare_text`].
+    type CompareReport: Serialize;
+
+    /// `compared`, checked.
+    ///
+    /// # Errors
+    /// A point the closed forms cannot be evaluated at (a force the structure does not carry).
+    fn checked(compared: Self::Compared) -> Result<Self::Checked, ParamError>;
+
+    /// The report of the comparisons of the files `source` names, `first` and then `more` (empty
+    /// when [`Self::ONE_RUN`]), and its CSV rows.
+    fn compare_report(
+        source: &str,
+        first: Self::Checked,
+        more: Vec<Self::Checked>,
+    ) -> (Self::CompareReport, Vec<Self::CompareRow>);
+
+    /// The report as text.
+    fn compare_text(report: &Self::CompareReport) -> String;
+}
 
 /// One row of `microslip compare beam`.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]

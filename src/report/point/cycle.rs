@@ -7,10 +7,15 @@ use serde::Serialize;
 use serde::ser::SerializeStruct;
 
 use super::InputsReport;
+use crate::kernel::params::ParamError;
 use crate::kernel::regime::Law;
-use crate::problems::inputs::Inputs;
+use crate::problems::inputs::{Inputs, Model};
 use crate::problems::load_driven::{LoadDriven, MasingCycle};
+use crate::report::table::{TableFormat, write_table};
 use crate::report::{number, sanitize};
+use crate::study::curves::{RangeError, Samples};
+use crate::study::load::{self, LoopPoint};
+use crate::study::tolerance::{self, ToleranceAnswer, ToleranceError};
 
 /// A load-driven problem as its cycle report says it: its words, its structure's summary line
 /// and the inputs the report lists. Each problem's folder implements it
@@ -24,6 +29,206 @@ pub trait CycleFace: LoadDriven {
 
     /// The inputs the report lists: the structure at the amplitude.
     fn cycle_inputs(structure: &Self::Structure, amplitude: Self::Force) -> Inputs;
+
+    /// One row of the loop's CSV (`cycle --format csv`), its columns in the problem's words
+    /// (`w_..._mm`, `Delta_..._mm`).
+    type LoopRow: Serialize + Default + for<'a> From<&'a LoopPoint>;
+
+    /// One row of the problem's own F sweep (`sweep beam|lap`, `sweep --vary F`).
+    type LoadRow: Serialize + Default + for<'a> From<&'a Self::Point>;
+
+    /// The largest force the structure carries, where it has one (the lap joint's F_gross):
+    /// `kt --tolerance` refuses a force range beyond it in these words. `None` for a structure
+    /// that carries any force (the beams slide on, their deflection grows).
+    fn force_limit(_structure: &Self::Structure) -> Option<ForceLimit> {
+        None
+    }
+}
+
+/// The largest force a structure carries, as a refusal says it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ForceLimit {
+    /// The force (N).
+    pub newtons: f64,
+    /// Its name and formula (`F_gross = 2 b mu P L`).
+    pub name: &'static str,
+    /// What happens beyond it (`the joint slides through beyond it`).
+    pub beyond: &'static str,
+}
+
+/// Why a table of a load-driven problem was not written: a force the structure does not carry,
+/// a sample range refused, or the output failed.
+#[derive(Debug)]
+pub enum LoadTableError {
+    /// The amplitude or force is not accepted by the structure (said of the flag that gave it).
+    Force(ParamError),
+    /// The samples (count, ends) are refused.
+    Range(RangeError),
+    /// Writing failed.
+    Output(std::io::Error),
+}
+
+impl From<std::io::Error> for LoadTableError {
+    fn from(e: std::io::Error) -> Self {
+        LoadTableError::Output(e)
+    }
+}
+
+/// A [`CycleFace`] with its types erased: what a command reaches from a problem's kind
+/// ([`crate::report::face::AnyReportFace::cycle`]), each method `None` for a model of another
+/// problem. Only the load-driven problems have one, so a command that needs a load (`cycle`,
+/// `sweep cycle`, an F sweep) finds out from the problem, not from a list of problems.
+pub trait AnyCycleFace: Send + Sync {
+    /// The cycle report of `model`'s structure at `amplitude` (N).
+    fn report(
+        &self,
+        preset: &str,
+        model: &Model,
+        amplitude: f64,
+    ) -> Option<Result<CycleReport, ParamError>>;
+
+    /// The loop at `amplitude` (N), `points` per branch, as a table.
+    fn write_loop(
+        &self,
+        out: &mut dyn std::io::Write,
+        format: TableFormat,
+        model: &Model,
+        amplitude_points: (f64, u64),
+    ) -> Option<Result<(), LoadTableError>>;
+
+    /// One cycle summary per amplitude of `amplitudes`, as a table.
+    fn write_cycle_sweep(
+        &self,
+        out: &mut dyn std::io::Write,
+        format: TableFormat,
+        model: &Model,
+        amplitudes: Samples,
+    ) -> Option<Result<(), LoadTableError>>;
+
+    /// The problem's own F sweep over `forces`, as a table.
+    fn write_force_sweep(
+        &self,
+        out: &mut dyn std::io::Write,
+        format: TableFormat,
+        model: &Model,
+        forces: Samples,
+    ) -> Option<Result<(), LoadTableError>>;
+
+    /// The force `model` is at (N).
+    fn applied_force(&self, model: &Model) -> Option<f64>;
+
+    /// [`CycleFace::force_limit`] of `model`'s structure; `None` also for another problem's
+    /// model.
+    fn force_limit(&self, model: &Model) -> Option<ForceLimit>;
+
+    /// The K_T that keeps the response within `tolerance` over the forces `range` (N), of
+    /// Coulomb's (`current` false) or of the current K_T's (`current` true), for contact
+    /// elements `element` long (`kt --tolerance`).
+    fn tolerance(
+        &self,
+        model: &Model,
+        range: [f64; 2],
+        tolerance_element: (f64, f64),
+        current: bool,
+    ) -> Option<Result<ToleranceAnswer, ToleranceError>>;
+}
+
+/// The [`AnyCycleFace`] of a [`CycleFace`] problem `P`.
+struct CycleOf<P>(std::marker::PhantomData<P>);
+
+/// The erased [`CycleFace`] of `P`: what its [`crate::report::face::ReportFace::cycle`] returns.
+pub fn erased<P: CycleFace>() -> &'static dyn AnyCycleFace {
+    &CycleOf::<P>(std::marker::PhantomData)
+}
+
+impl<P: CycleFace> AnyCycleFace for CycleOf<P> {
+    fn report(
+        &self,
+        preset: &str,
+        model: &Model,
+        amplitude: f64,
+    ) -> Option<Result<CycleReport, ParamError>> {
+        let structure = P::structure(&P::from_model(model)?);
+        Some(
+            P::force(&structure, amplitude)
+                .map(|amplitude| CycleReport::new::<P>(preset, &structure, amplitude)),
+        )
+    }
+
+    fn write_loop(
+        &self,
+        out: &mut dyn std::io::Write,
+        format: TableFormat,
+        model: &Model,
+        (amplitude, points): (f64, u64),
+    ) -> Option<Result<(), LoadTableError>> {
+        let structure = P::structure(&P::from_model(model)?);
+        Some((|| {
+            let amplitude = P::force(&structure, amplitude).map_err(LoadTableError::Force)?;
+            let points = load::cycle_loop::<P>(&structure, amplitude, points)
+                .map_err(LoadTableError::Range)?;
+            write_table(&mut &mut *out, format, points.map(|p| P::LoopRow::from(&p)))?;
+            Ok(())
+        })())
+    }
+
+    fn write_cycle_sweep(
+        &self,
+        out: &mut dyn std::io::Write,
+        format: TableFormat,
+        model: &Model,
+        amplitudes: Samples,
+    ) -> Option<Result<(), LoadTableError>> {
+        let structure = P::structure(&P::from_model(model)?);
+        Some((|| {
+            let rows =
+                load::cycle_sweep::<P>(structure, amplitudes).map_err(LoadTableError::Range)?;
+            write_table(
+                &mut &mut *out,
+                format,
+                rows.map(|r| crate::report::rows::CycleRow::from(&r)),
+            )?;
+            Ok(())
+        })())
+    }
+
+    fn write_force_sweep(
+        &self,
+        out: &mut dyn std::io::Write,
+        format: TableFormat,
+        model: &Model,
+        forces: Samples,
+    ) -> Option<Result<(), LoadTableError>> {
+        let structure = P::structure(&P::from_model(model)?);
+        Some((|| {
+            let rows = load::force_sweep::<P>(structure, forces).map_err(LoadTableError::Range)?;
+            write_table(&mut &mut *out, format, rows.map(|r| P::LoadRow::from(&r)))?;
+            Ok(())
+        })())
+    }
+
+    fn applied_force(&self, model: &Model) -> Option<f64> {
+        Some(P::newtons(P::applied_force(&P::from_model(model)?)))
+    }
+
+    fn force_limit(&self, model: &Model) -> Option<ForceLimit> {
+        P::force_limit(&P::structure(&P::from_model(model)?))
+    }
+
+    fn tolerance(
+        &self,
+        model: &Model,
+        range: [f64; 2],
+        (tol, element): (f64, f64),
+        current: bool,
+    ) -> Option<Result<ToleranceAnswer, ToleranceError>> {
+        let structure = P::structure(&P::from_model(model)?);
+        Some(if current {
+            tolerance::stiffness_near_current::<P>(&structure, range, tol, element)
+        } else {
+            tolerance::stiffness_for_tolerance::<P>(&structure, range, tol, element)
+        })
+    }
 }
 
 /// A load-driven structure cycled between +F_a and -F_a.
