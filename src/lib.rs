@@ -45,13 +45,13 @@
 //!   clap, ratatui, crossterm or signal-hook is compiled.
 //!
 //! # What a problem is, and what adding one touches
-//! A problem is a folder of [`problems`] in the core crate (its parameters, closed forms, cycle,
-//! validity envelope, discretized solver and its [`problems::Description`]) and one line of the
-//! registry in `problems/mod.rs`; the checklist a new problem follows is in the docs of
-//! [`problems`]. What the generic layers need to know of it is data they read, not a match they
-//! make: its parameters with their domains, units and scales, the quantities a target can be set
-//! on, its response symbol and its load parameter, its charts with their x parameter, load axis
-//! and default y scale ([`chart::view::ChartSet`]).
+//! A problem is a type: a folder of the core's `problems` (its parameters, closed forms, cycle,
+//! validity envelope, discretized solver, its [`problems::Description`] and the capabilities it
+//! has), a folder of faces here (`src/problems/<name>/`: its charts, panes, deck and reports, as
+//! impls of the traits of `chart`, `fe` and `report`), and one line of the registry
+//! (`microslip_core::with_problems!`), from which every layer generates its dispatch; the
+//! checklist a new problem follows is in the docs of [`problems`]. No other file names a problem
+//! (`tests/layering.rs` checks it).
 //!
 //! Where this departs from the project's intended shape, and why: FE decks, readers and the
 //! comparison are a module of the application ([`fe`]) rather than a crate of their own, because

@@ -39,14 +39,13 @@
 //!      [`load_driven::MasingCycle`]) and `load_driven.rs` (the problem type's [`LoadDriven`]
 //!      impl, whose `Structure` is the model without its force); its `problem.rs` then writes
 //!      `regime_scale` as `Some(force_scale)` and hands out `LoadDrivenOf::<Self>::NEW` from
-//!      `load_driven()`, and every sweep, cycle, tolerance and load chart serves it;
+//!      `load_driven()`, and every sweep, cycle, tolerance and load chart serves it; then also
+//!      `fittable.rs` ([`fittable::Fittable`], handed out by `fittable()`), and the fit (the
+//!      TUI's `f`, `microslip fit`) serves it;
 //!    - if it has a setting that is a name, not a number (the beams' theory): `choice.rs`, an
 //!      [`AnyChoice`](choice::AnyChoice) handed out by `choices()`, which presets and the
 //!      command line read and write with no edit; a problem whose refusal of another's setting
 //!      needs its own words ("the plate", not its title) writes `REFUSED_AS`;
-//!      `load_driven()`, and every sweep, cycle, tolerance and load chart serves it; then also
-//!      `fittable.rs` ([`fittable::Fittable`], handed out by `fittable()`), and the fit (the
-//!      TUI's `f`, `microslip fit`) serves it;
 //!    - what every problem writes, because the studies dispatch over the whole registry:
 //!      `point.rs` (its row type and [`pointwise::Pointwise`]: the sweeps' rows, re-exported
 //!      into `study::curves`), `profiles.rs` ([`profiled::Profiled`]: the shear along the
@@ -67,17 +66,26 @@
 //!    [`Param`] follow from it; [`ByProblem`] grows a slot.
 //! 3. **Its bridges** to the generated [`Inputs`](inputs::Inputs) and
 //!    [`Model`](inputs::Model): `enum_bridges!(Cylinder);` inside its `impl Problem`.
-//! 4. **Its presets**: `presets/<paper-preset>.toml`, named by [`Description::paper_preset`].
-//! 5. **Its tests**: its folder's unit tests (closed form against hand values and its
+//! 4. **Its faces** in the application, `src/problems/cylinder/` (declared from the registry
+//!    line; the application's `problems` module docs say why a problem has two folders), each
+//!    the impl of a trait of the layer that shows it: `chart.rs` (`chart::view::ChartFace`: its
+//!    charts), `pane.rs` (`chart::panes::PaneFace`: the TUI's parameter title, regime pane, K_T
+//!    table), `deck.rs` (`fe::face::Deck`: its CalculiX deck, result readers and comparison),
+//!    `report.rs` (`report::face::ReportFace`: its point report, sweep row, K_T answer and paper
+//!    table; and `report::point::cycle::CycleFace` if it is driven by a load). Every command,
+//!    chart, report and TUI pane then serves it through code generated from the registry.
+//! 5. **Its presets**: `presets/<paper-preset>.toml`, named by [`Description::paper_preset`].
+//! 6. **Its tests**: its folder's unit tests (closed form against hand values and its
 //!    discretized solver, validity edges), a `tests/<name>_properties.rs` of properties over
 //!    random inputs; the registry tests in `problems/problem.rs` cover it without an edit once
 //!    the typed cross-check there (`typed_answers`) gets its arm.
-//! 6. **Its docs**: its section in `docs/theory.md` (the equations its closed forms implement,
+//! 7. **Its docs**: its section in `docs/theory.md` (the equations its closed forms implement,
 //!    cited by number in its doc comments) and its line in the guide's list of problems.
 //!
-//! The files outside the folders that still name a problem's types (the application's layers
-//! that match on a problem's kind) are what a new problem would touch beyond this list; each
-//! port to [`AnyProblem`] or [`Problem`] lowers that count.
+//! Nothing else: no file outside the problem's two folders and the registry names a problem's
+//! types, folders or variants (the application's
+//! `tests/layering.rs::only_a_problem_s_folders_and_the_registry_name_it` fails on a new one),
+//! so a fourth problem costs its folders, its registry line, its presets, tests and docs.
 
 use std::fmt;
 use std::str::FromStr;
