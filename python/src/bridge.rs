@@ -15,9 +15,8 @@
 use std::marker::PhantomData;
 use std::path::Path;
 
-use microslip::TipForce;
-use microslip::fe::deck::{DeckMesh, LoadPath};
-use microslip::fe::face::Deck;
+use microslip::fe::deck::DeckMesh;
+use microslip::fe::face::{Deck, DeckRequest};
 use microslip::fe::header::StickSlope;
 use microslip::fe::load;
 use microslip::fit::{self, Weights};
@@ -118,9 +117,18 @@ trait Face: Deck {
         .map_err(|e| e.to_string())
     }
 
-    /// `microslip deck ccx` (`src/cli/decks.rs`, `build_deck`) at the model's stick slope:
-    /// `loads` checked (increasing, each accepted) or the CLI's default, and the deck's text.
-    fn deck(model: &Self::Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String>;
+    /// `microslip deck ccx` at the model's stick slope: the problem's own deck writer
+    /// ([`Deck::write_deck`], which the CLI calls too), `loads` checked there (increasing, each
+    /// accepted) or the problem's defaults, and the deck's text.
+    fn deck(model: &Self::Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String> {
+        let request = DeckRequest {
+            loads,
+            mesh,
+            slope: StickSlope::Model,
+            increment: None,
+        };
+        Self::write_deck(model, &request).map_err(|e| e.to_string())
+    }
 
     /// `microslip compare --format json` (`src/cli/compare.rs`): the comparison's report.
     fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String>;
@@ -179,20 +187,6 @@ fn load_tolerance<P: LoadDriven>(
     .map_err(|e| e.to_string())
 }
 
-/// Deck loads as given: strictly increasing, each accepted by `force` (the CLI's `--loads`).
-fn given_loads<F>(
-    forces: &[f64],
-    force: impl Fn(f64) -> Result<F, String>,
-) -> Result<Vec<F>, String> {
-    if let Some(w) = forces.windows(2).find(|w| w[0] >= w[1]) {
-        return Err(format!(
-            "invalid loads = {}: the loads must increase from one step to the next",
-            Compact(w[1])
-        ));
-    }
-    forces.iter().map(|&f| force(f)).collect()
-}
-
 impl Face for TwinBeamsProblem {
     fn point_report(model: &Self::Model, name: &str) -> Value {
         json::of(&twin_beams::report::BeamReport::new(
@@ -215,22 +209,6 @@ impl Face for TwinBeamsProblem {
         load_tolerance::<Self>(model, question, range, element)
     }
 
-    fn deck(model: &Self::Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String> {
-        let beams = &model.beams;
-        let loads: Vec<TipForce> = match loads {
-            // The CLI's default: multiples of F_thre spanning microslip and macroslip.
-            None => [0.5, 0.75, 1.0, 1.25, 1.875, 2.5]
-                .map(|m| TipForce::clamped(m * beams.threshold_force()))
-                .to_vec(),
-            Some(forces) => given_loads(forces, |f| {
-                check_flag("loads", f, Domain::FORCE, Unit::Newton).map(TipForce::clamped)
-            })?,
-        };
-        let path = LoadPath { force_step: None };
-        twin_beams::deck::beam_deck_on_path(beams, &loads, mesh, StickSlope::Model, path)
-            .map_err(|e| e.to_string())
-    }
-
     fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
         Ok(json::of(&BeamCompareReport::new(source, compared)))
     }
@@ -247,21 +225,6 @@ impl Face for SqueezedPlateProblem {
             squeezed,
             continuum.as_ref(),
         ))
-    }
-
-    fn deck(
-        squeezed: &Self::Model,
-        mesh: DeckMesh,
-        loads: Option<&[f64]>,
-    ) -> Result<String, String> {
-        if loads.is_some() {
-            return Err(
-                "loads are the tip forces of a beam deck or the joint's; the plate \
-                        deck applies its pressure P in one step"
-                    .to_string(),
-            );
-        }
-        plate::deck::plate_deck(squeezed, mesh, StickSlope::Model).map_err(|e| e.to_string())
     }
 
     fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
@@ -299,30 +262,6 @@ impl Face for LapJointProblem {
         element: f64,
     ) -> Result<ToleranceAnswer, String> {
         load_tolerance::<Self>(model, question, range, element)
-    }
-
-    fn deck(model: &Self::Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String> {
-        let joint = &model.joint;
-        let loads: Vec<_> = match loads {
-            // The CLI's default at the model's slope: one force in each regime.
-            None => {
-                let (f1, f2, gross) = (
-                    joint.first_slip_force(),
-                    joint.second_slip_force(),
-                    joint.gross_slip_force(),
-                );
-                let mut forces = vec![0.5 * f1, 0.5 * (f1 + f2), 0.5 * (f2 + gross), 0.9 * gross];
-                forces.dedup_by(|a, b| *a <= *b);
-                forces.into_iter().map(|f| joint.clamped_force(f)).collect()
-            }
-            Some(forces) => given_loads(forces, |f| {
-                joint
-                    .force(f)
-                    .map_err(|e| format!("invalid loads = {}: {}", Compact(f), e.allowed()))
-            })?,
-        };
-        let path = LoadPath { force_step: None };
-        lap::deck::lap_deck(joint, &loads, mesh, StickSlope::Model, path).map_err(|e| e.to_string())
     }
 
     fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {

@@ -86,10 +86,12 @@ pub struct DeckRequest<'a> {
     pub increment: Option<f64>,
 }
 
-/// Why a deck was not written.
-#[derive(Debug, Clone, PartialEq)]
+/// Why a deck was not written, in the command line's words (the CLI maps each variant to its
+/// own error of the same text; the Python face prints it as is).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum DeckError {
     /// A flag's value refused: the flag, the value, and what is allowed.
+    #[error("invalid {flag} = {}: {allowed}", crate::kernel::params::Compact(*value))]
     Flag {
         /// The flag (`--loads`).
         flag: &'static str,
@@ -99,8 +101,10 @@ pub enum DeckError {
         allowed: String,
     },
     /// A flag the problem's deck does not take, and why.
+    #[error("{0}")]
     Usage(&'static str),
     /// The mesh would be too large.
+    #[error(transparent)]
     TooLarge(DeckTooLarge),
 }
 
