@@ -175,6 +175,15 @@ pub enum Command {
         /// Parameters for CSV results (a .dat takes them from its deck).
         #[command(flatten)]
         inputs: InputArgs,
+        /// The interface profile of a CSV result, from which the stick slope your FE code used is
+        /// read: x_mm,slip_mm,shear_MPa (one load step) or step,x_mm,slip_mm,shear_MPa (a .dat
+        /// reads it from the run's .frd).
+        #[arg(long, value_name = "FILE")]
+        interface: Option<PathBuf>,
+        /// The kinematics of a CSV result's FE run, which the verdict names and the beams'
+        /// envelope (V2, calibrated on NLGEOM runs) depends on (a .dat's deck says it).
+        #[arg(long, value_enum)]
+        kinematics: Option<KinematicsArg>,
         /// Output format.
         #[arg(long, value_enum, default_value_t = CompareFormat::Text)]
         format: CompareFormat,
@@ -549,6 +558,25 @@ pub struct DeckArgs {
 pub enum FeCode {
     /// CalculiX's solver, ccx (tested with 2.20).
     Ccx,
+}
+
+/// The kinematics of a CSV result's FE run (`compare --kinematics`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum KinematicsArg {
+    /// Large rotations (NLGEOM in Abaqus and CalculiX).
+    Nlgeom,
+    /// Linear (small-displacement) geometry.
+    Linear,
+}
+
+impl KinematicsArg {
+    /// The kinematics it names.
+    pub fn kinematics(self) -> crate::fe::kinematics::Kinematics {
+        match self {
+            KinematicsArg::Nlgeom => crate::fe::kinematics::Kinematics::Nlgeom,
+            KinematicsArg::Linear => crate::fe::kinematics::Kinematics::Linear,
+        }
+    }
 }
 
 /// Output formats of `compare`.

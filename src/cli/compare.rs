@@ -1,6 +1,19 @@
 //! `compare`: an FE code's results against the closed forms, with a verdict.
 
 use super::*;
+use crate::fe::kinematics::Kinematics;
+use crate::fe::stick_slope::{self, Friction, StickSlopeUsed};
+use crate::report::compare::stick_slope::{self as contact_report, RunEvidence, WithContact};
+
+/// What `compare` is told about a CSV result's contact: its interface profile and kinematics (a
+/// `.dat` says both itself, through its `.frd` and its deck).
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct ContactArgs<'a> {
+    /// The interface profile (`--interface`).
+    pub(super) interface: Option<&'a std::path::Path>,
+    /// The kinematics (`--kinematics`).
+    pub(super) kinematics: Option<Kinematics>,
+}
 
 /// `microslip compare MODEL RESULT...`: the FE results of the problem `model` against its
 /// closed forms, written once for every problem through its deck and compare faces.
@@ -10,8 +23,17 @@ pub(super) fn run_compare(
     results: &[PathBuf],
     deck: Option<&std::path::Path>,
     inputs: &InputArgs,
+    contact: ContactArgs<'_>,
     format: CompareFormat,
 ) -> Result<(), CliError> {
+    if contact.interface.is_some() && results.len() > 1 {
+        return Err(CliError::Flag {
+            flag: "--interface",
+            value: results.len() as f64,
+            allowed: "--interface names the interface profile of one CSV result; give one result"
+                .to_string(),
+        });
+    }
     if deck.is_some() && results.len() > 1 {
         return Err(CliError::Flag {
             flag: "--deck",
@@ -25,6 +47,7 @@ pub(super) fn run_compare(
         results,
         deck,
         inputs,
+        contact,
         format,
         source: &source.join(", "),
     };
@@ -37,6 +60,7 @@ struct Compare<'a, W> {
     results: &'a [PathBuf],
     deck: Option<&'a std::path::Path>,
     inputs: &'a InputArgs,
+    contact: ContactArgs<'a>,
     format: CompareFormat,
     /// The result files, as the report names them.
     source: &'a str,
@@ -51,6 +75,7 @@ impl<W: Write> ForProblem for Compare<'_, W> {
             results,
             deck,
             inputs,
+            contact,
             format,
             source,
         } = self;
@@ -69,6 +94,7 @@ impl<W: Write> ForProblem for Compare<'_, W> {
         };
         let command = model_command(P::KIND, "compare");
         let mut checked = Vec::with_capacity(results.len());
+        let mut evidence = Vec::with_capacity(results.len());
         for path in results {
             let loaded = fe::load::results::<P>(path, deck).map_err(data_error)?;
             if loaded.header.is_some() && checked.is_empty() {
@@ -80,7 +106,12 @@ impl<W: Write> ForProblem for Compare<'_, W> {
                 // compared, not the preset's F.
                 None => load_problem::<P>(inputs, &command, Load::Unused)?.1,
             };
-            let compared = P::compare(&model, &loaded.points, loaded.interface_mesh.as_ref());
+            let mut compared = P::compare(&model, &loaded.points, loaded.interface_mesh.as_ref());
+            let run = run_evidence::<P>(path, &loaded, &model, contact)?;
+            if !contact_report::envelope_applies(run.kinematics, P::ENVELOPE_KINEMATICS) {
+                P::without_envelope(&mut compared);
+            }
+            evidence.push(run);
             checked.push(P::checked(compared).map_err(|e| CliError::Data {
                 path: path.display().to_string(),
                 reason: e.to_string(),
@@ -91,15 +122,96 @@ impl<W: Write> ForProblem for Compare<'_, W> {
         let Some(first) = checked.next() else {
             return Err(CliError::Usage("compare needs a result file"));
         };
-        let (report, rows) = P::compare_report(source, first, checked.collect());
-        write_comparison(
-            out,
-            format,
+        let (mut report, rows) = P::compare_report(source, first, checked.collect());
+        let kinematics = contact_report::combined_kinematics(&evidence);
+        let stick_slope = contact_report::stick_slope_report(&evidence);
+        contact_report::add_to_summary(P::summary_mut(&mut report), &stick_slope, kinematics);
+        let with = WithContact {
+            report: &report,
+            stick_slope,
+            kinematics: contact_report::kinematics_report(kinematics, P::ENVELOPE_KINEMATICS),
+        };
+        let text = contact_report::insert_section(
             &P::compare_text(&report),
-            &report,
-            rows.into_iter(),
-        )
+            &with.stick_slope,
+            &with.kinematics,
+        );
+        write_comparison(out, format, &text, &with, rows.into_iter())
     }
+}
+
+/// What the result at `path` says about its contact: the stick slope its `.frd` (CalculiX) or
+/// its `--interface` profile (CSV) shows, against the K_T of `model`, and its kinematics.
+fn run_evidence<P: Faces>(
+    path: &std::path::Path,
+    loaded: &fe::load::Loaded<P::FePoint>,
+    model: &P::Model,
+    contact: ContactArgs<'_>,
+) -> Result<RunEvidence, CliError> {
+    let interface = P::interface(model);
+    let kinematics = match (&loaded.header, contact.kinematics) {
+        (Some(_), Some(said)) if said != loaded.kinematics => {
+            eprintln!(
+                "microslip: note: --kinematics {} not used: the deck says {}",
+                said.label(),
+                loaded.kinematics.words()
+            );
+            loaded.kinematics
+        }
+        (None, Some(said)) => said,
+        _ => loaded.kinematics,
+    };
+    let stick_slope = match (&loaded.header, contact.interface) {
+        (Some(_), Some(_)) => {
+            return Err(CliError::Usage(
+                "--interface is for CSV results: a .dat's stick slope is read from the run's .frd",
+            ));
+        }
+        (None, Some(file)) => {
+            let text = crate::file::read_capped(
+                file,
+                fe::load::MAX_RESULT_SIZE,
+                "an interface profile",
+                crate::file::Kinds::RegularOnly,
+            )
+            .map_err(|e| CliError::Data {
+                path: file.display().to_string(),
+                reason: e.to_string(),
+            })?;
+            let steps = stick_slope::read_interface_csv(&text).map_err(|e| CliError::Data {
+                path: file.display().to_string(),
+                reason: e.to_string(),
+            })?;
+            let friction = Friction {
+                coefficient: interface.friction,
+                nominal_pressure: interface.pressure,
+            };
+            Some(Ok(StickSlopeUsed::measure(
+                &steps,
+                friction,
+                interface.stiffness,
+            )))
+        }
+        _ => loaded.stick_slope.clone(),
+    };
+    let step_forces = loaded
+        .header
+        .as_ref()
+        .map(|h| {
+            h.loads
+                .iter()
+                .enumerate()
+                .map(|(n, f)| (n + 2, *f))
+                .collect()
+        })
+        .unwrap_or_default();
+    Ok(RunEvidence {
+        results: path.display().to_string(),
+        stick_slope,
+        deck: interface.stiffness,
+        kinematics,
+        step_forces,
+    })
 }
 
 /// A comparison in the format asked for: its text, its report as JSON, or its rows as CSV.

@@ -134,6 +134,7 @@ pub(super) fn run_bench(
         std::slice::from_ref(&files.results),
         Some(&files.deck),
         &deck.inputs,
+        super::compare::ContactArgs::default(),
         format,
     )
 }

@@ -262,8 +262,24 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             results,
             deck,
             inputs,
+            interface,
+            kinematics,
             format,
-        }) => run_compare(out, *model, results, deck.as_deref(), inputs, *format)?,
+        }) => {
+            let contact = compare::ContactArgs {
+                interface: interface.as_deref(),
+                kinematics: kinematics.map(KinematicsArg::kinematics),
+            };
+            run_compare(
+                out,
+                *model,
+                results,
+                deck.as_deref(),
+                inputs,
+                contact,
+                *format,
+            )?
+        }
         Some(Command::Deck {
             code: FeCode::Ccx,
             model,

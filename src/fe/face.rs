@@ -12,6 +12,7 @@ use std::fmt::Debug;
 
 use super::deck::{DeckMesh, DeckTooLarge};
 use super::header::{DeckHeader, StickSlope};
+use super::kinematics::Kinematics;
 use super::load::Loaded;
 use super::results::{CcxRun, ResultsError};
 use super::verdict::InterfaceMesh;
@@ -70,6 +71,15 @@ pub trait Deck: Problem + Registered {
     /// What the note on flags a deck's header overrides adds for the problem (the beams':
     /// `compare` shows both beam theories); empty for most.
     const OVERRIDES_NOTE: &'static str = "";
+
+    /// The kinematics of the FE runs the closed form's envelope was calibrated on: the project's
+    /// own decks' (the beams' are `NLGEOM`, the others linear). A run of other kinematics is not
+    /// judged against it ([`Deck::without_envelope`]).
+    const ENVELOPE_KINEMATICS: Kinematics = Kinematics::Linear;
+
+    /// `compared` with its envelope taken away (every bound "not calibrated"): for a run whose
+    /// kinematics the envelope was not calibrated on.
+    fn without_envelope(compared: &mut Self::Compared);
 }
 
 /// What a deck is asked to be: the command line's `--loads`, `--mesh`, stick slope and

@@ -8,7 +8,9 @@ use thiserror::Error;
 pub use super::face::AnyLoaded;
 use super::face::Deck;
 use super::header::DeckHeader;
+use super::kinematics::Kinematics;
 use super::results::CcxRun;
+use super::stick_slope::{self, Friction, StickSlopeUsed};
 use super::verdict::InterfaceMesh;
 use crate::file::{Kinds, Size, read_capped};
 use crate::problems::ModelKind;
@@ -37,6 +39,11 @@ pub struct Loaded<P> {
     /// The FE mesh along the interface, from the deck (CalculiX results; `None` for CSV, which
     /// does not say).
     pub interface_mesh: Option<InterfaceMesh>,
+    /// The kinematics of the run: read from the deck (CalculiX), not stated for CSV.
+    pub kinematics: Kinematics,
+    /// The stick slope the run used, from its interface output (CalculiX: the `.frd` beside the
+    /// `.dat`), or why it was not read; `None` where no interface output was given (CSV).
+    pub stick_slope: Option<Result<StickSlopeUsed, String>>,
 }
 
 fn read(path: &Path, what: &'static str) -> Result<String, LoadError> {
@@ -131,11 +138,52 @@ fn ccx_points<P: Deck>(
         run.interface_mesh()
             .map_err(|e| fail(path, e.to_string()))?,
     );
+    let stick_slope = Some(ccx_stick_slope(path, &header, deck_text));
     Ok(Loaded {
         header: Some(header),
         points,
         interface_mesh,
+        kinematics: Kinematics::of_deck(deck_text),
+        stick_slope,
     })
+}
+
+/// The stick slope a CalculiX run used, from the `CONTACT` blocks of the `.frd` beside its `.dat`
+/// (the decks ask for them: `*CONTACT FILE`, `CDIS, CSTR`), against the deck header's K_T; the
+/// friction coefficient is the one the run was given (the deck's `*FRICTION` card).
+fn ccx_stick_slope(
+    dat: &Path,
+    header: &DeckHeader,
+    deck_text: &str,
+) -> Result<StickSlopeUsed, String> {
+    use std::io::Read as _;
+    let frd = dat.with_extension("frd");
+    let file = std::fs::File::open(&frd).map_err(|e| {
+        format!(
+            "{}: {e} (the run's .frd, beside its .dat, holds the interface output)",
+            frd.display()
+        )
+    })?;
+    let reader = std::io::BufReader::new(file.take(stick_slope::MAX_FRD_BYTES));
+    let contact =
+        stick_slope::read_frd_contact(reader).map_err(|e| format!("{}: {e}", frd.display()))?;
+    if contact.is_empty() {
+        return Err(format!(
+            "{}: no CONTACT block (the deck's *CONTACT FILE with CDIS, CSTR writes them)",
+            frd.display()
+        ));
+    }
+    let interface = header.model().map_err(|e| e.to_string())?.interface();
+    let card = stick_slope::friction_card(deck_text);
+    let friction = Friction {
+        coefficient: card.map_or(interface.friction, |(mu, _)| mu),
+        nominal_pressure: interface.pressure,
+    };
+    let mut used = StickSlopeUsed::measure(&contact, friction, interface.stiffness);
+    used.friction_card = card
+        .map(|(_, slope)| slope)
+        .filter(|slope| (slope / interface.stiffness - 1.0).abs() > 1e-9);
+    Ok(used)
 }
 
 /// Where FE points are read from: a `.dat` with its deck (header and text already read), or a
@@ -170,6 +218,8 @@ impl Source<'_> {
                     header: None,
                     points,
                     interface_mesh: None,
+                    kinematics: Kinematics::NotStated,
+                    stick_slope: None,
                 })
             }
         }

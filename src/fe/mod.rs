@@ -9,6 +9,8 @@
 //! - [`compare`]: FE values against both closed forms, point by point, and the K_T they imply.
 //! - [`verdict`]: whether they agree: each difference against its stated envelope, X in elements
 //!   of the FE mesh, the implied K_T in standard errors.
+//! - [`stick_slope`]: the stick slope the FE code used, CSHEAR / CSLIP over the nodes that
+//!   stick, from its own interface output; [`kinematics`]: `NLGEOM` or linear geometry.
 //! - [`run`]: running CalculiX on a deck in a work folder of its own, with its log kept.
 //!
 //! Why the decks are built as they are, and how they differ from the paper's Ansys model, is in
@@ -18,8 +20,10 @@ pub mod compare;
 pub mod deck;
 pub mod face;
 pub mod header;
+pub mod kinematics;
 pub mod load;
 pub(crate) mod mesh;
 pub mod results;
 pub mod run;
+pub mod stick_slope;
 pub mod verdict;

@@ -568,6 +568,12 @@ impl Deck for LapJointProblem {
         compare_lap(&model.joint, points, mesh)
     }
 
+    fn without_envelope(compared: &mut Result<Vec<LapCompared>, ParamError>) {
+        for row in compared.iter_mut().flatten() {
+            row.theory_within = None;
+        }
+    }
+
     fn write_deck(model: &LapModel, request: &DeckRequest) -> Result<String, DeckError> {
         let joint = &model.joint;
         let loads = deck_loads(joint, request.loads, request.slope)?;
@@ -612,6 +618,10 @@ impl CompareFace for LapJointProblem {
 
     fn compare_text(report: &LapCompareReport) -> String {
         report.text()
+    }
+
+    fn summary_mut(report: &mut LapCompareReport) -> &mut crate::report::compare::verdict::Summary {
+        &mut report.verdict
     }
 }
 

@@ -320,6 +320,12 @@ impl Deck for SqueezedPlateProblem {
         compare_plate(plate, points, mesh)
     }
 
+    fn without_envelope(compared: &mut Vec<PlateCompared>) {
+        for row in compared {
+            row.strip_within = None;
+        }
+    }
+
     /// One step: the pressure, applied at once; the plate has no forces to step through.
     fn write_deck(plate: &SqueezedPlate, request: &DeckRequest) -> Result<String, DeckError> {
         if request.loads.is_some() {
@@ -357,6 +363,12 @@ impl CompareFace for SqueezedPlateProblem {
 
     fn compare_text(report: &PlateCompareReport) -> String {
         report.text()
+    }
+
+    fn summary_mut(
+        report: &mut PlateCompareReport,
+    ) -> &mut crate::report::compare::verdict::Summary {
+        &mut report.verdict
     }
 }
 

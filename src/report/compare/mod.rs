@@ -7,6 +7,7 @@
 pub mod beam;
 pub mod lap;
 pub mod plate;
+pub mod stick_slope;
 pub mod verdict;
 
 use serde::Serialize;
@@ -47,6 +48,10 @@ pub trait CompareFace: Deck {
 
     /// The report as text.
     fn compare_text(report: &Self::CompareReport) -> String;
+
+    /// The report's closing verdict, which the stick slope the FE code used may turn
+    /// ([`stick_slope::add_to_summary`]).
+    fn summary_mut(report: &mut Self::CompareReport) -> &mut verdict::Summary;
 }
 
 /// One row of `microslip compare beam`.

@@ -1,0 +1,485 @@
+//! The stick slope the FE code used ([`crate::fe::stick_slope`]) and the kinematics of its run
+//! ([`crate::fe::kinematics`]) in a comparison's words: a section before the closing verdict, the
+//! verdict itself turned to "does not agree" when the contact used another slope than the deck's,
+//! and the JSON keys `stick_slope` and `kinematics` beside the report's own (issue 33, items 1
+//! and 4). Additive: the problem's report is serialized as it was, these keys flattened beside.
+
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
+use super::percent;
+use super::verdict::Summary;
+use crate::fe::kinematics::Kinematics;
+use crate::fe::stick_slope::{STICK_SLOPE_TOLERANCE, StepSlope, StickSlopeUsed, StickSlopeVerdict};
+use crate::report::{number, number_with, sanitize};
+
+/// What one result file says about its contact.
+#[derive(Debug, Clone)]
+pub struct RunEvidence {
+    /// The result file.
+    pub results: String,
+    /// Its stick slope, why it was not read, or `None` where there was no interface output.
+    pub stick_slope: Option<Result<StickSlopeUsed, String>>,
+    /// The K_T the benchmark asks for (MPa/mm): the deck header's, or the model's for CSV.
+    pub deck: f64,
+    /// Its kinematics.
+    pub kinematics: Kinematics,
+    /// The FE step numbers that carry a load step's force, with the force (N): CalculiX's step
+    /// n + 2 is load n (step 1 is the pressure alone); empty where the steps carry no force.
+    pub step_forces: Vec<(usize, f64)>,
+}
+
+/// One step's slope in JSON.
+#[derive(Debug, Clone, Serialize)]
+pub struct StepSlopeReport {
+    /// The FE code's step number.
+    pub step: usize,
+    /// Its end time.
+    pub time: f64,
+    /// The force of the load step, where the step carries one (N).
+    #[serde(rename = "F_N")]
+    pub force: Option<f64>,
+    /// The median of CSHEAR / CSLIP over the sticking nodes (MPa/mm).
+    #[serde(rename = "KT_used_MPa_per_mm")]
+    pub used: f64,
+    /// Its 10th percentile (MPa/mm).
+    #[serde(rename = "KT_used_p10_MPa_per_mm")]
+    pub low: f64,
+    /// Its 90th percentile (MPa/mm).
+    #[serde(rename = "KT_used_p90_MPa_per_mm")]
+    pub high: f64,
+    /// Nodes counted as sticking.
+    pub sticking_nodes: usize,
+    /// Nodes in contact.
+    pub nodes_in_contact: usize,
+}
+
+/// One result file's stick slope in JSON.
+#[derive(Debug, Clone, Serialize)]
+pub struct RunSlopeReport {
+    /// The result file.
+    pub results: String,
+    /// `agrees`, `does not agree`, `not judged`, `not read` (no interface output found),
+    /// `not given` (a CSV without `--interface`).
+    pub verdict: &'static str,
+    /// The slope used at the headline step (MPa/mm).
+    #[serde(rename = "KT_used_MPa_per_mm")]
+    pub used: Option<f64>,
+    /// The K_T the deck asks for (MPa/mm).
+    #[serde(rename = "KT_deck_MPa_per_mm")]
+    pub deck: f64,
+    /// (used - deck) / deck, a fraction.
+    pub diff_fraction: Option<f64>,
+    /// The 10th and 90th percentiles over the headline step's sticking nodes, as fractions of
+    /// the median.
+    pub spread_fraction: Option<[f64; 2]>,
+    /// The headline step (the one with the most sticking nodes).
+    pub step: Option<usize>,
+    /// Its sticking nodes.
+    pub sticking_nodes: Option<usize>,
+    /// The stick slope on the deck's `*FRICTION` card where it differs from the header's K_T
+    /// (a deck edited after it was written) (MPa/mm).
+    #[serde(rename = "KT_friction_card_MPa_per_mm")]
+    pub friction_card: Option<f64>,
+    /// Every step with enough sticking nodes.
+    pub steps: Vec<StepSlopeReport>,
+    /// Why the slope was not read or not judged.
+    pub reason: Option<String>,
+    /// The verdict in words.
+    pub text: String,
+}
+
+/// The stick slope section of a comparison in JSON (`stick_slope`).
+#[derive(Debug, Clone, Serialize)]
+pub struct StickSlopeReport {
+    /// `agrees` when every file that has one agrees; `does not agree` when one does not; else
+    /// `not judged` / `not read` / `not given`.
+    pub verdict: &'static str,
+    /// How far the used slope may be from the deck's and agree, a fraction.
+    pub tolerance_fraction: f64,
+    /// One per result file.
+    pub runs: Vec<RunSlopeReport>,
+}
+
+/// The kinematics section in JSON (`kinematics`).
+#[derive(Debug, Clone, Serialize)]
+pub struct KinematicsReport {
+    /// `nlgeom`, `linear`, `mixed`, `not stated`.
+    pub kinematics: &'static str,
+    /// The kinematics the closed form's envelope was calibrated on.
+    pub envelope_calibrated_on: &'static str,
+    /// Whether the envelope was applied (false where the run's kinematics is another).
+    pub envelope_applies: bool,
+    /// In words.
+    pub text: String,
+}
+
+/// The two sections a comparison gains, flattened beside its own keys.
+#[derive(Debug, Clone, Serialize)]
+pub struct WithContact<'a, R> {
+    /// The problem's report, its keys unchanged.
+    #[serde(flatten)]
+    pub report: &'a R,
+    /// The stick slope used.
+    pub stick_slope: StickSlopeReport,
+    /// The kinematics.
+    pub kinematics: KinematicsReport,
+}
+
+/// The kinematics of several files: theirs when they share it, else mixed.
+pub fn combined_kinematics(runs: &[RunEvidence]) -> Kinematics {
+    let mut kinds = runs.iter().map(|r| r.kinematics);
+    let Some(first) = kinds.next() else {
+        return Kinematics::NotStated;
+    };
+    if kinds.all(|k| k == first) {
+        first
+    } else {
+        Kinematics::Mixed
+    }
+}
+
+/// Whether an envelope calibrated on `calibrated` applies to a run of `kinematics`: where they
+/// are the same, and where the run's is not stated (a CSV without `--kinematics`: judged as
+/// calibrated, and said).
+pub fn envelope_applies(kinematics: Kinematics, calibrated: Kinematics) -> bool {
+    kinematics == calibrated || kinematics == Kinematics::NotStated
+}
+
+/// The kinematics section.
+pub fn kinematics_report(kinematics: Kinematics, calibrated: Kinematics) -> KinematicsReport {
+    let applies = envelope_applies(kinematics, calibrated);
+    let text = if kinematics == Kinematics::NotStated {
+        format!(
+            "kinematics: not stated (give --kinematics nlgeom|linear); the envelope is applied as \
+             calibrated, on {} runs",
+            calibrated.words()
+        )
+    } else if applies {
+        format!(
+            "kinematics: {}, as the envelope was calibrated on",
+            kinematics.words()
+        )
+    } else {
+        format!(
+            "kinematics: {}; the envelope was calibrated on {} runs only: not calibrated for {}, \
+             so the closed form is not judged against it",
+            kinematics.words(),
+            calibrated.words(),
+            kinematics.words()
+        )
+    };
+    KinematicsReport {
+        kinematics: kinematics.label(),
+        envelope_calibrated_on: calibrated.label(),
+        envelope_applies: applies,
+        text,
+    }
+}
+
+/// "step 2 (F = 40 N)" or "step 1 (time 1)".
+fn step_words(step: &StepSlope, forces: &[(usize, f64)]) -> String {
+    match forces.iter().find(|(s, _)| *s == step.step) {
+        Some((_, f)) => format!("step {} (F = {} N)", step.step, number(*f)),
+        None => format!("step {} (time {})", step.step, number(step.time)),
+    }
+}
+
+/// One file's stick slope section.
+pub fn run_report(run: &RunEvidence) -> RunSlopeReport {
+    let empty = |verdict: &'static str, reason: Option<String>, text: String| RunSlopeReport {
+        results: run.results.clone(),
+        verdict,
+        used: None,
+        deck: run.deck,
+        diff_fraction: None,
+        spread_fraction: None,
+        step: None,
+        sticking_nodes: None,
+        friction_card: None,
+        steps: Vec::new(),
+        reason,
+        text,
+    };
+    let used = match &run.stick_slope {
+        None => {
+            return empty(
+                "not given",
+                None,
+                "stick slope used: not read (give the interface profile with --interface \
+                 FILE.csv, x_mm,slip_mm,shear_MPa)"
+                    .to_string(),
+            );
+        }
+        Some(Err(reason)) => {
+            return empty(
+                "not read",
+                Some(reason.clone()),
+                format!("stick slope used: not read: {}", sanitize(reason)),
+            );
+        }
+        Some(Ok(used)) => used,
+    };
+    let steps: Vec<StepSlopeReport> = used
+        .steps
+        .iter()
+        .map(|s| StepSlopeReport {
+            step: s.step,
+            time: s.time,
+            force: run
+                .step_forces
+                .iter()
+                .find(|(n, _)| *n == s.step)
+                .map(|(_, f)| *f),
+            used: s.used,
+            low: s.low,
+            high: s.high,
+            sticking_nodes: s.sticking,
+            nodes_in_contact: s.in_contact,
+        })
+        .collect();
+    let verdict = used.verdict();
+    let Some(head) = used.headline() else {
+        let reason = "no step has 3 nodes or more that stick (in contact, below the friction \
+                      limit by 10 %, with a slip)";
+        return RunSlopeReport {
+            steps,
+            friction_card: used.friction_card,
+            ..empty(
+                verdict.label(),
+                Some(reason.to_string()),
+                format!("stick slope used: not judged: {reason}"),
+            )
+        };
+    };
+    let diff = head.used / used.deck - 1.0;
+    let (low, high) = head.spread();
+    let mut text = format!(
+        "stick slope used: {} MPa/mm ({} vs the deck's {} MPa/mm; spread {} to {} over {} \
+         sticking nodes, {})",
+        number_with(head.used, 5),
+        percent(diff),
+        number(used.deck),
+        percent(low),
+        percent(high),
+        head.sticking,
+        step_words(head, &run.step_forces)
+    );
+    let tolerance = format!("{} %", number(100.0 * STICK_SLOPE_TOLERANCE));
+    let meaning = match verdict {
+        StickSlopeVerdict::Agrees => {
+            format!(": within {tolerance}, the contact used the deck's stick slope")
+        }
+        StickSlopeVerdict::DoesNotAgree => format!(
+            ": beyond {tolerance}. Your contact used {} MPa/mm where the deck asked for {} \
+             ({}): every comparison above is of a run with another K_T than the closed forms'",
+            number_with(head.used, 4),
+            number(used.deck),
+            if diff > 0.0 { "stiffer" } else { "softer" }
+        ),
+        StickSlopeVerdict::NotJudged => {
+            format!(": not judged, the sticking nodes spread beyond {tolerance} among themselves")
+        }
+    };
+    text.push_str(&meaning);
+    if let Some(card) = used.friction_card {
+        let _ = write!(
+            text,
+            " (the deck's *FRICTION card says {} MPa/mm: it was edited after microslip wrote it)",
+            number(card)
+        );
+    }
+    RunSlopeReport {
+        results: run.results.clone(),
+        verdict: verdict.label(),
+        used: Some(head.used),
+        deck: used.deck,
+        diff_fraction: Some(diff),
+        spread_fraction: Some([low, high]),
+        step: Some(head.step),
+        sticking_nodes: Some(head.sticking),
+        friction_card: used.friction_card,
+        steps,
+        reason: None,
+        text,
+    }
+}
+
+/// The stick slope section of all files.
+pub fn stick_slope_report(runs: &[RunEvidence]) -> StickSlopeReport {
+    let runs: Vec<RunSlopeReport> = runs.iter().map(run_report).collect();
+    let order = [
+        "does not agree",
+        "not judged",
+        "not read",
+        "not given",
+        "agrees",
+    ];
+    let verdict = order
+        .into_iter()
+        .find(|v| runs.iter().any(|r| r.verdict == *v))
+        .unwrap_or("not given");
+    StickSlopeReport {
+        verdict,
+        tolerance_fraction: STICK_SLOPE_TOLERANCE,
+        runs,
+    }
+}
+
+/// The closing verdict with the stick slope's: "does not agree" when the used slope is not the
+/// deck's, whatever the closed forms said, the reason first; otherwise the verdict as it was,
+/// with the stick slope's clause added.
+pub fn add_to_summary(summary: &mut Summary, slope: &StickSlopeReport, kinematics: Kinematics) {
+    let clause = match slope.verdict {
+        "does not agree" => {
+            let worst = slope
+                .runs
+                .iter()
+                .filter(|r| r.verdict == "does not agree")
+                .filter_map(|r| Some((r.used?, r.deck)))
+                .next();
+            match worst {
+                Some((used, deck)) => format!(
+                    "the contact used a stick slope of {} MPa/mm, {} from the deck's {} MPa/mm",
+                    number_with(used, 4),
+                    percent(used / deck - 1.0),
+                    number(deck)
+                ),
+                None => "the contact used another stick slope than the deck's".to_string(),
+            }
+        }
+        "agrees" => "stick slope used within 1 % of the deck's".to_string(),
+        other => format!("stick slope used {other}"),
+    };
+    let clause = format!("{clause}; kinematics: {}", kinematics.words());
+    let body = summary
+        .summary
+        .strip_prefix("Verdict: ")
+        .and_then(|rest| rest.split_once(". "))
+        .map(|(_, body)| body.trim_end_matches('.').to_string());
+    if slope.verdict == "does not agree" {
+        summary.agrees = false;
+        summary.summary = match body {
+            Some(body) => format!("Verdict: does not agree. {clause}; {body}."),
+            None => format!("Verdict: does not agree. {clause}. {}", summary.summary),
+        };
+        summary.short = format!("does not agree (stick slope; {})", summary.short);
+    } else {
+        summary.summary = match summary.summary.strip_suffix('.') {
+            Some(start) => format!("{start}; {clause}."),
+            None => format!("{}; {clause}", summary.summary),
+        };
+    }
+}
+
+/// The text section, put before the closing verdict line of `text`.
+pub fn insert_section(
+    text: &str,
+    slope: &StickSlopeReport,
+    kinematics: &KinematicsReport,
+) -> String {
+    let mut section = String::from(
+        "Stick slope used by the FE code (CSHEAR / CSLIP over the nodes that stick: in contact, \
+         |CSHEAR| below 0.9 mu CPRESS, slip not ~0; the median, with its 10th to 90th percentile):\n",
+    );
+    for run in &slope.runs {
+        let _ = writeln!(section, "  {}", run.text);
+        if run.steps.len() > 1 {
+            let per_step: Vec<String> = run
+                .steps
+                .iter()
+                .map(|s| format!("step {}: {}", s.step, number_with(s.used, 5)))
+                .collect();
+            let _ = writeln!(section, "    per step (MPa/mm): {}", per_step.join(", "));
+        }
+    }
+    let _ = writeln!(section, "  {}\n", kinematics.text);
+    match text.rfind("\nVerdict:") {
+        Some(at) => format!("{}\n{section}{}", &text[..at], &text[at + 1..]),
+        None => format!("{text}\n{section}"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn summary(text: &str) -> Summary {
+        Summary {
+            agrees: true,
+            summary: text.to_string(),
+            stiffness: None,
+            stiffness_z: None,
+            short: "agrees (x)".to_string(),
+        }
+    }
+
+    fn slope(verdict: &'static str, used: f64) -> StickSlopeReport {
+        StickSlopeReport {
+            verdict,
+            tolerance_fraction: STICK_SLOPE_TOLERANCE,
+            runs: vec![RunSlopeReport {
+                results: "r.dat".into(),
+                verdict,
+                used: Some(used),
+                deck: 600.0,
+                diff_fraction: Some(used / 600.0 - 1.0),
+                spread_fraction: Some([0.0, 0.0]),
+                step: Some(2),
+                sticking_nodes: Some(100),
+                friction_card: None,
+                steps: Vec::new(),
+                reason: None,
+                text: String::new(),
+            }],
+        }
+    }
+
+    #[test]
+    fn a_used_slope_beyond_the_tolerance_turns_the_verdict() {
+        let mut s =
+            summary("Verdict: agrees. w(L) within the stated envelope on all 2 load steps.");
+        add_to_summary(&mut s, &slope("does not agree", 660.0), Kinematics::Nlgeom);
+        assert!(!s.agrees);
+        assert_eq!(
+            s.summary,
+            "Verdict: does not agree. the contact used a stick slope of 660 MPa/mm, +10.00 % from \
+             the deck's 600 MPa/mm; kinematics: NLGEOM (large rotations); w(L) within the stated \
+             envelope on all 2 load steps."
+        );
+        let mut s =
+            summary("Verdict: agrees. w(L) within the stated envelope on all 2 load steps.");
+        add_to_summary(&mut s, &slope("agrees", 600.1), Kinematics::Linear);
+        assert!(s.agrees);
+        assert!(
+            s.summary.starts_with("Verdict: agrees. w(L)"),
+            "{}",
+            s.summary
+        );
+        assert!(
+            s.summary.ends_with("; kinematics: linear geometry."),
+            "{}",
+            s.summary
+        );
+    }
+
+    #[test]
+    fn the_section_goes_before_the_verdict() {
+        let k = kinematics_report(Kinematics::Linear, Kinematics::Nlgeom);
+        assert!(!k.envelope_applies);
+        assert!(
+            k.text.contains("not calibrated for linear geometry"),
+            "{}",
+            k.text
+        );
+        let text = insert_section(
+            "table\n\nVerdict: agrees. x.\n",
+            &slope("agrees", 600.0),
+            &k,
+        );
+        assert!(text.starts_with("table\n\nStick slope used"), "{text}");
+        assert!(text.ends_with("\nVerdict: agrees. x.\n"), "{text}");
+        assert!(envelope_applies(Kinematics::NotStated, Kinematics::Nlgeom));
+    }
+}
