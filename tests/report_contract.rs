@@ -877,6 +877,8 @@ const CASES: &[Case] = &[
             COMPARE_VERDICT,
             COMPARE_BEAM_IMPLIED_ERROR,
             COMPARE_BEAM_VERDICT_FE,
+            COMPARE_CONTACT,
+            COMPARE_CONTACT_NOT_READ,
         ],
         header: Some(COMPARE_BEAM_HEADER),
     },
@@ -897,6 +899,8 @@ const CASES: &[Case] = &[
             COMPARE_VERDICT,
             COMPARE_BEAM_IMPLIED_UNKNOWN_ERROR,
             COMPARE_BEAM_VERDICT_CSV,
+            COMPARE_CONTACT,
+            COMPARE_CONTACT_NOT_GIVEN,
         ],
         header: Some(COMPARE_BEAM_HEADER),
     },
@@ -915,6 +919,8 @@ const CASES: &[Case] = &[
             COMPARE_BEAM_TWO,
             COMPARE_VERDICT,
             COMPARE_BEAM_VERDICT_TWO,
+            COMPARE_CONTACT,
+            COMPARE_CONTACT_NOT_GIVEN,
         ],
         header: Some(COMPARE_BEAM_HEADER),
     },
@@ -933,6 +939,8 @@ const CASES: &[Case] = &[
             COMPARE_VERDICT,
             COMPARE_PLATE_VERDICT,
             COMPARE_PLATE_VERDICT_FE,
+            COMPARE_CONTACT,
+            COMPARE_CONTACT_NOT_READ,
         ],
         header: Some(COMPARE_PLATE_HEADER),
     },
@@ -940,7 +948,12 @@ const CASES: &[Case] = &[
         name: "compare-lap-calculix",
         args: &["compare", "lap", "tests/data/calculix/lap-aluminium.dat"],
         formats: ALL,
-        keys: &[COMPARE_LAP, COMPARE_VERDICT],
+        keys: &[
+            COMPARE_LAP,
+            COMPARE_VERDICT,
+            COMPARE_CONTACT,
+            COMPARE_CONTACT_NOT_READ,
+        ],
         header: Some(COMPARE_LAP_HEADER),
     },
     Case {
@@ -957,10 +970,44 @@ const CASES: &[Case] = &[
             COMPARE_VERDICT,
             COMPARE_PLATE_VERDICT,
             COMPARE_PLATE_VERDICT_CSV,
+            COMPARE_CONTACT,
+            COMPARE_CONTACT_NOT_GIVEN,
         ],
         header: Some(COMPARE_PLATE_HEADER),
     },
 ];
+
+/// Issue 33: the stick slope the FE code used and the run's kinematics, beside every comparison's
+/// own keys (here without an interface output: no .frd beside the fixtures' .dat, no --interface).
+const COMPARE_CONTACT: &[&str] = &[
+    "kinematics.envelope_applies: bool",
+    "kinematics.envelope_calibrated_on: string",
+    "kinematics.kinematics: string",
+    "kinematics.text: string",
+    "kinematics: object",
+    "stick_slope.runs: array",
+    "stick_slope.runs[].KT_deck_MPa_per_mm: number",
+    "stick_slope.runs[].KT_friction_card_MPa_per_mm: null",
+    "stick_slope.runs[].KT_used_MPa_per_mm: null",
+    "stick_slope.runs[].diff_fraction: null",
+    "stick_slope.runs[].results: string",
+    "stick_slope.runs[].spread_fraction: null",
+    "stick_slope.runs[].step: null",
+    "stick_slope.runs[].steps: array",
+    "stick_slope.runs[].sticking_nodes: null",
+    "stick_slope.runs[].text: string",
+    "stick_slope.runs[].verdict: string",
+    "stick_slope.runs[]: object",
+    "stick_slope.tolerance_fraction: number",
+    "stick_slope.verdict: string",
+    "stick_slope: object",
+];
+
+/// Why the stick slope was not read (a .dat without its .frd).
+const COMPARE_CONTACT_NOT_READ: &[&str] = &["stick_slope.runs[].reason: string"];
+
+/// A CSV without --interface: nothing to read, no reason.
+const COMPARE_CONTACT_NOT_GIVEN: &[&str] = &["stick_slope.runs[].reason: null"];
 
 /// Every key path of `value` with its JSON type, `a.b: number`; an array's elements are merged
 /// under `a[]`, so the set says what each element may hold, and a key whose type varies between

@@ -115,6 +115,23 @@ LAP_MESH_TOLERANCE = 0.002
 # (F_2 + F_gross)/2; Delta may move by at most INCREMENT_TOLERANCE.
 LAP_INCREMENT_LOADS = 3
 
+# The stick slope the FE code used (issue 33, item 1): each problem's deck as `deck ccx` writes it,
+# then with its *FRICTION card's stick slope edited by hand to +10 % and -10 % (the header keeps the
+# benchmark's K_T). `compare` reads CSHEAR / CSLIP over the sticking nodes from the run's .frd: the
+# unedited deck must agree (stick slope and verdict), each edited one must not, with a used K_T
+# within STICK_USED_TOLERANCE of the edited value. One load in the all-stick/microslip range each
+# (one increment after the pressure), so the nine runs stay short.
+STICK_USED_TOLERANCE = 0.02
+STICK_EDITS = [1.0, 1.1, 0.9]
+STICK_CASES = [
+    # problem, case name, deck arguments, loads ("0.5t": F_thre multiples; "lap1": the lap deck's
+    # first default load, 0.5 F_1; None: the problem takes none)
+    ("beam", "paper beams, F = 0.5 F_thre", ["--preset", "paper-beams"], "0.5t"),
+    ("plate", "plate, K_T = 1e4", ["--set", "KT=1e4"], None),
+    ("lap", "bundled joint, F = 0.5 F_1", ["--preset", "lap-aluminium"], "lap1"),
+]
+STICK_MARKERS = ("<!-- stick-slope -->", "<!-- /stick-slope -->")
+
 
 def find_microslip(given):
     for candidate in [given, ROOT / "target/debug/microslip", ROOT / "target/release/microslip"]:
@@ -301,12 +318,106 @@ def lap_rows(microslip, workdir, lines, timings, failures):
                  "the fine mesh's (every element size halved).")
 
 
+def edit_stick_slope(deck_text, factor):
+    """The deck with its *FRICTION card's stick slope (second number) times `factor`, as a user
+    would edit it by hand; the header line keeps the benchmark's K_T."""
+    lines = deck_text.splitlines(keepends=True)
+    at = next(i for i, line in enumerate(lines) if line.strip().upper() == "*FRICTION")
+    mu, slope = (float(f) for f in lines[at + 1].split(","))
+    lines[at + 1] = f"{mu!r}, {slope * factor!r}\n"
+    return "".join(lines), slope * factor
+
+
+def stick_slope_rows(microslip, workdir, timings, failures):
+    """The edited-deck cases of the stick slope used, and their table (between STICK_MARKERS)."""
+    lines = [STICK_MARKERS[0],
+             "\n**Stick slope used** (issue 33): each deck as `microslip deck ccx` writes it, and the "
+             "same deck with its `*FRICTION` stick slope edited by hand to +10 % and -10 % (the "
+             "header keeps the benchmark's K_T). `compare` reads CSHEAR / CSLIP over the sticking "
+             "nodes from the run's .frd (median over the step with most sticking nodes; spread: its "
+             "quartiles). Tolerance: the unedited deck agrees; an edited one does not, "
+             f"with a used K_T within {100 * STICK_USED_TOLERANCE:g} % of the edited value.\n",
+             "| problem | case | deck K_T (MPa/mm) | *FRICTION slope (MPa/mm) | used K_T (MPa/mm) | "
+             "vs *FRICTION | spread | sticking nodes | stick slope | verdict | kinematics | ccx (s) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    env = dict(os.environ, OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "2"))
+    for model, name, args, loads in STICK_CASES:
+        if loads == "lap1":
+            args = [*args, "--loads", f"{lap_default_loads(microslip, args)[0]:.10g}"]
+        elif loads is not None:
+            args = [*args, *load_arguments(microslip, args, [loads])]
+        deck = subprocess.run([microslip, "deck", "ccx", model, *args], check=True,
+                              capture_output=True, text=True).stdout
+        for factor in STICK_EDITS:
+            job = f"stick{model}{round(100 * factor)}"
+            text, slope = edit_stick_slope(deck, factor)
+            (workdir / f"{job}.inp").write_text(text)
+            start, before = time.monotonic(), os.times()
+            result = subprocess.run(["ccx", "-i", job], cwd=workdir, env=env,
+                                    capture_output=True, text=True)
+            after = os.times()
+            wall = time.monotonic() - start
+            cpu = (after.children_user - before.children_user) + (after.children_system - before.children_system)
+            timings.append((f"stick slope, {model} x{factor:g}", wall, cpu))
+            (workdir / f"{job}.log").write_text(result.stdout + result.stderr)
+            if result.returncode != 0 or "ERROR" in result.stdout:
+                raise RuntimeError(f"ccx failed on {job}: see {workdir / (job + '.log')}")
+            data = json.loads(subprocess.run(
+                [microslip, "compare", model, str(workdir / f"{job}.dat"), "--format", "json"],
+                check=True, capture_output=True, text=True).stdout)
+            run = data["stick_slope"]["runs"][0]
+            verdict = data["verdict"]
+            label = f"stick slope {model} {name} x{factor:g}"
+            used = run["KT_used_MPa_per_mm"]
+            if used is None:
+                failures.append(f"{label}: no stick slope read ({run['reason']})")
+                continue
+            if factor == 1.0:
+                if run["verdict"] != "agrees" or not verdict["agrees"]:
+                    failures.append(f"{label}: the unedited deck should agree: stick slope "
+                                    f"{run['verdict']}, {verdict['summary']}")
+            elif (run["verdict"] != "does not agree" or verdict["agrees"]
+                  or not verdict["summary"].startswith("Verdict: does not agree")):
+                failures.append(f"{label}: the edited deck should not agree: stick slope "
+                                f"{run['verdict']}, {verdict['summary']}")
+            if abs(used / slope - 1) > STICK_USED_TOLERANCE:
+                failures.append(f"{label}: used K_T {used:.6g} MPa/mm, the run was given "
+                                f"{slope:.6g} MPa/mm")
+            low, high = run["spread_fraction"]
+            lines.append(f"| {model} | {name} | {run['KT_deck_MPa_per_mm']:.6g} | {slope:.6g} | "
+                         f"{used:.7g} | {100 * (used / slope - 1):+.4f} % | "
+                         f"{100 * low:+.4f} to {100 * high:+.4f} % | {run['sticking_nodes']} | "
+                         f"{run['verdict']} | {verdict['summary'].split('.')[0].removeprefix('Verdict: ')} | "
+                         f"{data['kinematics']['kinematics']} | {wall:.1f} |")
+    lines.append("\nAdded CI time (ccx wall seconds of these runs): "
+                 f"{sum(w for n, w, c in timings if n.startswith('stick slope')):.0f} s.")
+    lines.append(STICK_MARKERS[1])
+    return lines
+
+
+def splice_stick_slope(lines):
+    """RESULTS.md with its stick-slope table replaced by `lines` (appended when it has none)."""
+    path = ROOT / "validation/calculix/RESULTS.md"
+    text = path.read_text() if path.exists() else "# CalculiX validation results\n\n"
+    block = "\n".join(lines) + "\n"
+    start, end = STICK_MARKERS
+    if start in text and end in text:
+        head, rest = text.split(start, 1)
+        _, tail = rest.split(end, 1)
+        text = head + block.rstrip("\n") + tail
+    else:
+        text = text.rstrip("\n") + "\n\n" + block
+    path.write_text(text)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--microslip")
     parser.add_argument("--update-guide", "--update-readme", dest="update_guide", action="store_true",
                         help="also write the tables into docs/guide.md (--update-readme: the old name)")
     parser.add_argument("--keep", help="keep decks and results in this directory")
+    parser.add_argument("--only", choices=["stick-slope"],
+                        help="run only these cases and replace only their table in RESULTS.md")
     options = parser.parse_args()
     if shutil.which("ccx") is None:
         sys.exit("ccx not found: apt-get install calculix-ccx")
@@ -318,6 +429,20 @@ def main():
     timings = []
     version = ccx_version()
     today = datetime.date.today().isoformat()
+
+    if options.only == "stick-slope":
+        stick = stick_slope_rows(microslip, workdir, timings, failures)
+        splice_stick_slope(stick)
+        print("\n".join(stick))
+        if failures:
+            print(f"{len(failures)} check(s) failed:", file=sys.stderr)
+            for failure in failures:
+                print("  " + failure, file=sys.stderr)
+            sys.exit(1)
+        print(f"All stick-slope checks passed (work files in {workdir}).")
+        if not options.keep:
+            shutil.rmtree(workdir, ignore_errors=True)
+        return
 
     lines.append(f"CalculiX {version}, microslip decks (C3D20R, coarse mesh unless stated), "
                  f"run {today} by `validation/calculix/validate.py`.\n")
@@ -466,6 +591,7 @@ def main():
                          f"{continuum['u_end_mean_mm']:.4g} ({pct(continuum['u_end_mean_mm'] / row['u_fe_mm'] - 1)}) |")
 
     lap_rows(microslip, workdir, lines, timings, failures)
+    lines.extend(stick_slope_rows(microslip, workdir, timings, failures))
 
     lines.append("\nRun times (ccx wall / CPU seconds, OMP_NUM_THREADS="
                  f"{os.environ.get('OMP_NUM_THREADS', '2')}): "

@@ -43,11 +43,11 @@ pub struct StepSlopeReport {
     /// The median of CSHEAR / CSLIP over the sticking nodes (MPa/mm).
     #[serde(rename = "KT_used_MPa_per_mm")]
     pub used: f64,
-    /// Its 10th percentile (MPa/mm).
-    #[serde(rename = "KT_used_p10_MPa_per_mm")]
+    /// Its lower quartile over the sticking nodes (MPa/mm).
+    #[serde(rename = "KT_used_q1_MPa_per_mm")]
     pub low: f64,
-    /// Its 90th percentile (MPa/mm).
-    #[serde(rename = "KT_used_p90_MPa_per_mm")]
+    /// Its upper quartile (MPa/mm).
+    #[serde(rename = "KT_used_q3_MPa_per_mm")]
     pub high: f64,
     /// Nodes counted as sticking.
     pub sticking_nodes: usize,
@@ -71,8 +71,7 @@ pub struct RunSlopeReport {
     pub deck: f64,
     /// (used - deck) / deck, a fraction.
     pub diff_fraction: Option<f64>,
-    /// The 10th and 90th percentiles over the headline step's sticking nodes, as fractions of
-    /// the median.
+    /// The quartiles over the headline step's sticking nodes, as fractions of the median.
     pub spread_fraction: Option<[f64; 2]>,
     /// The headline step (the one with the most sticking nodes).
     pub step: Option<usize>,
@@ -279,7 +278,7 @@ pub fn run_report(run: &RunEvidence) -> RunSlopeReport {
             if diff > 0.0 { "stiffer" } else { "softer" }
         ),
         StickSlopeVerdict::NotJudged => {
-            format!(": not judged, the sticking nodes spread beyond {tolerance} among themselves")
+            format!(": not judged, the sticking nodes' quartiles spread beyond {tolerance}")
         }
     };
     text.push_str(&meaning);
@@ -341,12 +340,12 @@ pub fn add_to_summary(summary: &mut Summary, slope: &StickSlopeReport, kinematic
                 .next();
             match worst {
                 Some((used, deck)) => format!(
-                    "the contact used a stick slope of {} MPa/mm, {} from the deck's {} MPa/mm",
+                    "The contact used a stick slope of {} MPa/mm, {} from the deck's {} MPa/mm",
                     number_with(used, 4),
                     percent(used / deck - 1.0),
                     number(deck)
                 ),
-                None => "the contact used another stick slope than the deck's".to_string(),
+                None => "The contact used another stick slope than the deck's".to_string(),
             }
         }
         "agrees" => "stick slope used within 1 % of the deck's".to_string(),
@@ -381,7 +380,7 @@ pub fn insert_section(
 ) -> String {
     let mut section = String::from(
         "Stick slope used by the FE code (CSHEAR / CSLIP over the nodes that stick: in contact, \
-         |CSHEAR| below 0.9 mu CPRESS, slip not ~0; the median, with its 10th to 90th percentile):\n",
+         |CSHEAR| below 0.9 mu CPRESS, slip not ~0; the median, with its quartiles as the spread):\n",
     );
     for run in &slope.runs {
         let _ = writeln!(section, "  {}", run.text);
@@ -444,7 +443,7 @@ mod tests {
         assert!(!s.agrees);
         assert_eq!(
             s.summary,
-            "Verdict: does not agree. the contact used a stick slope of 660 MPa/mm, +10.00 % from \
+            "Verdict: does not agree. The contact used a stick slope of 660 MPa/mm, +10.00 % from \
              the deck's 600 MPa/mm; kinematics: NLGEOM (large rotations); w(L) within the stated \
              envelope on all 2 load steps."
         );

@@ -1,0 +1,214 @@
+//! The stick slope an FE code used (issue 33, item 1), read from recorded CalculiX 2.20 output: no
+//! ccx needed (CI runs it for real in `validation/calculix/validate.py`, "Stick slope used").
+//!
+//! `tests/data/stick_slope/` holds excerpts of the `.frd` files ccx wrote for decks of `microslip
+//! deck ccx` (the last `CONTACT` block of each step, every third slave node, lines copied as ccx
+//! wrote them) and the plate's `.dat`: the paper's beams at F = 40 N and the plate at K_T = 1e4
+//! MPa/mm, each as written and with its `*FRICTION` stick slope edited by hand to +10 % and
+//! -10 %. The expected slopes are the ones the runs were given (600, 660, 540; 1e4, 1.1e4, 9e3
+//! MPa/mm), not values this code printed.
+
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+use serde_json::Value;
+
+use microslip::fe::stick_slope::{
+    Friction, StickSlopeUsed, StickSlopeVerdict, read_frd_contact, read_interface_csv,
+};
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/stick_slope")
+        .join(name)
+}
+
+fn read(name: &str) -> String {
+    std::fs::read_to_string(fixture(name)).unwrap()
+}
+
+/// The paper's beams: mu = 0.3, P = 1 MPa.
+const BEAM_FRICTION: Friction = Friction {
+    coefficient: 0.3,
+    nominal_pressure: 1.0,
+};
+
+fn beams(frd: &str, deck: f64) -> StickSlopeUsed {
+    let steps = read_frd_contact(frd.as_bytes()).unwrap();
+    StickSlopeUsed::measure(&steps, BEAM_FRICTION, deck)
+}
+
+#[test]
+fn the_paper_beams_contact_used_the_decks_stick_slope() {
+    let used = beams(&read("paper-beams.frd"), 600.0);
+    // Step 1 (the pressure alone) and step 2 (F = 40 N), each with its sticking nodes.
+    assert_eq!(
+        used.steps.iter().map(|s| s.step).collect::<Vec<_>>(),
+        [1, 2]
+    );
+    let head = used.headline().unwrap();
+    assert_eq!(head.step, 2);
+    assert!(head.sticking >= 90, "{head:?}");
+    assert!((head.used / 600.0 - 1.0).abs() < 1e-4, "{head:?}");
+    let (low, high) = head.spread();
+    assert!(low.abs() < 1e-4 && high.abs() < 1e-4, "{head:?}");
+    assert_eq!(used.verdict(), StickSlopeVerdict::Agrees);
+}
+
+#[test]
+fn an_edited_stick_slope_is_seen_within_two_percent() {
+    for (file, given) in [
+        ("paper-beams-plus10.frd", 660.0),
+        ("paper-beams-minus10.frd", 540.0),
+    ] {
+        let used = beams(&read(file), 600.0);
+        let head = used.headline().unwrap();
+        assert!((head.used / given - 1.0).abs() < 0.02, "{file}: {head:?}");
+        assert_eq!(used.verdict(), StickSlopeVerdict::DoesNotAgree, "{file}");
+    }
+}
+
+/// The sign convention: CalculiX's CSHEAR points along CSLIP at a sticking node. Output whose
+/// slips are read with the wrong sign gives a negative slope, which does not agree.
+#[test]
+fn a_slip_read_with_the_wrong_sign_does_not_agree() {
+    let frd = read("paper-beams.frd");
+    let flipped: String = frd
+        .lines()
+        .map(|line| {
+            if line.starts_with(" -1") && line.len() >= 13 + 36 {
+                // Negate CSLIP1 and CSLIP2 (columns 2 and 3) in place.
+                let mut out = line[..25].to_string();
+                for column in 1..3 {
+                    let text = &line[13 + 12 * column..25 + 12 * column];
+                    let value: f64 = text.trim().parse().unwrap();
+                    out.push_str(&format!("{:12.5E}", -value));
+                }
+                out.push_str(&line[49..]);
+                out
+            } else {
+                line.to_string()
+            }
+        })
+        .map(|l| l + "\n")
+        .collect();
+    let used = beams(&flipped, 600.0);
+    let head = used.headline().unwrap();
+    assert!(head.used < 0.0, "{head:?}");
+    assert_eq!(used.verdict(), StickSlopeVerdict::DoesNotAgree);
+}
+
+/// The columns are found by their names: a block whose names say another order is read in that
+/// order, so that reading the shear from the pressure's column is impossible without the output
+/// saying so; and a block without a column is refused, naming it.
+#[test]
+fn a_wrong_column_does_not_pass() {
+    let frd = read("paper-beams.frd");
+    // Name CPRESS where CSHEAR1 is and the other way round: the values are now read as a
+    // pressure of ~0.15 MPa and a shear of ~1 MPa, and no node sticks at 0.3 x 0.15 MPa.
+    let swapped = frd
+        .replace(" -5  CPRESS ", " -5  XXXXXX ")
+        .replace(" -5  CSHEAR1", " -5  CPRESS ")
+        .replace(" -5  XXXXXX ", " -5  CSHEAR1");
+    let used = beams(&swapped, 600.0);
+    assert_ne!(used.verdict(), StickSlopeVerdict::Agrees, "{used:?}");
+    let missing = frd.replace(" -5  CSLIP2 ", " -5  OTHER  ");
+    let error = read_frd_contact(missing.as_bytes())
+        .unwrap_err()
+        .to_string();
+    assert!(error.contains("without CSLIP2"), "{error}");
+}
+
+#[test]
+fn an_interface_csv_gives_the_slope_of_any_code() {
+    // A profile with 5 sticking nodes at 600 MPa/mm and 2 at the limit mu P = 0.3 MPa.
+    let csv = "x_mm,slip_mm,shear_MPa\n0,1e-5,6e-3\n10,2e-5,1.2e-2\n20,4e-5,2.4e-2\n\
+               30,1e-4,6e-2\n40,2e-4,1.2e-1\n50,8e-4,0.3\n60,1.6e-3,0.3\n";
+    let steps = read_interface_csv(csv).unwrap();
+    let used = StickSlopeUsed::measure(&steps, BEAM_FRICTION, 600.0);
+    let head = used.headline().unwrap();
+    assert_eq!(head.sticking, 5);
+    assert!((head.used / 600.0 - 1.0).abs() < 1e-12);
+    assert_eq!(used.verdict(), StickSlopeVerdict::Agrees);
+}
+
+/// The plate's deck (the one `deck ccx plate --set KT=1e4` writes, kept as a fixture), with its
+/// `*FRICTION` stick slope times `factor`, in a fresh folder with the recorded `.dat` and `.frd`.
+fn plate_run(factor: f64, results: &str) -> (tempfile::TempDir, PathBuf) {
+    let deck = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/calculix/plate-kt1e4.inp"),
+    )
+    .unwrap();
+    let edited = deck.replacen(
+        "*FRICTION\n0.3, 10000.0\n",
+        &format!("*FRICTION\n0.3, {:?}\n", 10000.0 * factor),
+        1,
+    );
+    assert_ne!(
+        edited == deck,
+        factor != 1.0,
+        "the deck's *FRICTION card moved"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("run.inp"), edited).unwrap();
+    for extension in ["dat", "frd"] {
+        std::fs::copy(
+            fixture(&format!("{results}.{extension}")),
+            dir.path().join(format!("run.{extension}")),
+        )
+        .unwrap();
+    }
+    let dat = dir.path().join("run.dat");
+    (dir, dat)
+}
+
+fn compare(dat: &Path, format: &str) -> String {
+    let output = Command::cargo_bin("microslip")
+        .unwrap()
+        .args(["compare", "plate"])
+        .arg(dat)
+        .args(["--format", format])
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    String::from_utf8(output.stdout).unwrap()
+}
+
+#[test]
+fn compare_says_an_edited_deck_does_not_agree_and_names_the_slope_used() {
+    for (factor, results, verdict) in [
+        (1.0, "plate-kt1e4", "agrees"),
+        (1.1, "plate-kt1e4-plus10", "does not agree"),
+        (0.9, "plate-kt1e4-minus10", "does not agree"),
+    ] {
+        let (_dir, dat) = plate_run(factor, results);
+        let json: Value = serde_json::from_str(&compare(&dat, "json")).unwrap();
+        let run = &json["stick_slope"]["runs"][0];
+        let used = run["KT_used_MPa_per_mm"].as_f64().unwrap();
+        assert!(
+            (used / (1e4 * factor) - 1.0).abs() < 0.02,
+            "{factor}: {used}"
+        );
+        assert_eq!(run["verdict"], verdict, "{factor}");
+        assert_eq!(json["stick_slope"]["verdict"], verdict, "{factor}");
+        assert_eq!(json["verdict"]["agrees"], factor == 1.0, "{factor}");
+        assert_eq!(json["kinematics"]["kinematics"], "linear");
+        let text = compare(&dat, "text");
+        let closing = text.lines().last().unwrap();
+        assert!(
+            closing.starts_with(&format!("Verdict: {verdict}.")),
+            "{factor}: {closing}"
+        );
+        assert!(closing.contains("kinematics: linear geometry"), "{closing}");
+        if factor != 1.0 {
+            assert!(
+                text.contains("it was edited after microslip wrote it"),
+                "{text}"
+            );
+        }
+    }
+}
