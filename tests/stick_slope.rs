@@ -212,3 +212,54 @@ fn compare_says_an_edited_deck_does_not_agree_and_names_the_slope_used() {
         }
     }
 }
+
+/// The beams' envelope (V2) was calibrated on NLGEOM runs: the same results under a deck whose
+/// steps are linear geometry are not judged against it, and the verdict says why.
+#[test]
+fn a_linear_geometry_beam_deck_is_not_judged_against_the_nlgeom_envelope() {
+    let calculix = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/calculix");
+    let deck = std::fs::read_to_string(calculix.join("paper-beams.inp")).unwrap();
+    assert!(deck.contains("*STEP, NLGEOM, INC=1000"));
+    let dir = tempfile::tempdir().unwrap();
+    for (name, text) in [
+        ("nlgeom", deck.clone()),
+        ("linear", deck.replace("*STEP, NLGEOM,", "*STEP,")),
+    ] {
+        std::fs::write(dir.path().join(format!("{name}.inp")), text).unwrap();
+        std::fs::copy(
+            calculix.join("paper-beams.dat"),
+            dir.path().join(format!("{name}.dat")),
+        )
+        .unwrap();
+    }
+    let run = |name: &str, format: &str| {
+        let output = Command::cargo_bin("microslip")
+            .unwrap()
+            .args(["compare", "beam"])
+            .arg(dir.path().join(format!("{name}.dat")))
+            .args(["--format", format])
+            .output()
+            .unwrap();
+        assert!(output.status.success());
+        String::from_utf8(output.stdout).unwrap()
+    };
+    let nlgeom: Value = serde_json::from_str(&run("nlgeom", "json")).unwrap();
+    assert_eq!(nlgeom["kinematics"]["kinematics"], "nlgeom");
+    assert_eq!(nlgeom["kinematics"]["envelope_applies"], true);
+    assert_eq!(nlgeom["rows"][0]["verdict"]["envelope"], "within");
+    let linear: Value = serde_json::from_str(&run("linear", "json")).unwrap();
+    assert_eq!(linear["kinematics"]["kinematics"], "linear");
+    assert_eq!(linear["kinematics"]["envelope_applies"], false);
+    for row in linear["rows"].as_array().unwrap() {
+        assert_eq!(row["verdict"]["envelope"], "not calibrated", "{row}");
+    }
+    let text = run("linear", "text");
+    assert!(
+        text.contains("not calibrated for linear geometry"),
+        "{text}"
+    );
+    assert!(
+        text.trim_end().ends_with("kinematics: linear geometry."),
+        "{text}"
+    );
+}
