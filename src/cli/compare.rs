@@ -125,11 +125,12 @@ impl<W: Write> ForProblem for Compare<'_, W> {
         let (mut report, rows) = P::compare_report(source, first, checked.collect());
         let kinematics = contact_report::combined_kinematics(&evidence);
         let stick_slope = contact_report::stick_slope_report(&evidence);
-        contact_report::add_to_summary(P::summary_mut(&mut report), &stick_slope, kinematics);
+        let kinematics = contact_report::kinematics_report(kinematics, P::ENVELOPE_KINEMATICS);
+        contact_report::add_to_summary(P::summary_mut(&mut report), &stick_slope, &kinematics);
         let with = WithContact {
             report: &report,
             stick_slope,
-            kinematics: contact_report::kinematics_report(kinematics, P::ENVELOPE_KINEMATICS),
+            kinematics,
         };
         let text = contact_report::insert_section(
             &P::compare_text(&report),

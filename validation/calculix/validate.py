@@ -338,7 +338,7 @@ def stick_slope_rows(microslip, workdir, timings, failures):
              "quartiles). Tolerance: the unedited deck agrees; an edited one does not, "
              f"with a used K_T within {100 * STICK_USED_TOLERANCE:g} % of the edited value.\n",
              "| problem | case | deck K_T (MPa/mm) | *FRICTION slope (MPa/mm) | used K_T (MPa/mm) | "
-             "vs *FRICTION | spread | sticking nodes | stick slope | verdict | kinematics | ccx (s) |",
+             "vs *FRICTION | spread | sticking nodes | stick slope | verdict | kinematics | ccx wall / CPU (s) |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     env = dict(os.environ, OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "2"))
     for model, name, args, loads in STICK_CASES:
@@ -388,9 +388,11 @@ def stick_slope_rows(microslip, workdir, timings, failures):
                          f"{used:.7g} | {100 * (used / slope - 1):+.4f} % | "
                          f"{100 * low:+.4f} to {100 * high:+.4f} % | {run['sticking_nodes']} | "
                          f"{run['verdict']} | {verdict['summary'].split('.')[0].removeprefix('Verdict: ')} | "
-                         f"{data['kinematics']['kinematics']} | {wall:.1f} |")
-    lines.append("\nAdded CI time (ccx wall seconds of these runs): "
-                 f"{sum(w for n, w, c in timings if n.startswith('stick slope')):.0f} s.")
+                         f"{data['kinematics']['kinematics']} | {wall:.1f} / {cpu:.1f} |")
+    ours = [(w, c) for n, w, c in timings if n.startswith("stick slope")]
+    lines.append(f"\nAdded CI time (these {len(ours)} ccx runs, OMP_NUM_THREADS="
+                 f"{os.environ.get('OMP_NUM_THREADS', '2')}): {sum(w for w, _ in ours):.0f} s wall, "
+                 f"{sum(c for _, c in ours):.0f} s CPU.")
     lines.append(STICK_MARKERS[1])
     return lines
 

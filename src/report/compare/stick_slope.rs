@@ -106,6 +106,9 @@ pub struct StickSlopeReport {
 pub struct KinematicsReport {
     /// `nlgeom`, `linear`, `mixed`, `not stated`.
     pub kinematics: &'static str,
+    /// The same in words.
+    #[serde(skip)]
+    pub words: &'static str,
     /// The kinematics the closed form's envelope was calibrated on.
     pub envelope_calibrated_on: &'static str,
     /// Whether the envelope was applied (false where the run's kinematics is another).
@@ -171,6 +174,7 @@ pub fn kinematics_report(kinematics: Kinematics, calibrated: Kinematics) -> Kine
     };
     KinematicsReport {
         kinematics: kinematics.label(),
+        words: kinematics.words(),
         envelope_calibrated_on: calibrated.label(),
         envelope_applies: applies,
         text,
@@ -326,10 +330,27 @@ pub fn stick_slope_report(runs: &[RunEvidence]) -> StickSlopeReport {
     }
 }
 
+/// The reason the closing verdict gives for an envelope without a bound
+/// ([`crate::report::compare::verdict`], `StiffnessMatch::ClosedFormNotCalibrated`).
+const FRICTION_STRAIN_REASON: &str =
+    "its friction strain mu P L / (2 E h) is beyond the measured range";
+
 /// The closing verdict with the stick slope's: "does not agree" when the used slope is not the
 /// deck's, whatever the closed forms said, the reason first; otherwise the verdict as it was,
 /// with the stick slope's clause added.
-pub fn add_to_summary(summary: &mut Summary, slope: &StickSlopeReport, kinematics: Kinematics) {
+pub fn add_to_summary(
+    summary: &mut Summary,
+    slope: &StickSlopeReport,
+    kinematics: &KinematicsReport,
+) {
+    if !kinematics.envelope_applies {
+        // The envelope was taken away for the run's kinematics, not for its friction strain,
+        // which the closing verdict's K_T clause would otherwise give as the reason.
+        summary.summary = summary.summary.replace(
+            FRICTION_STRAIN_REASON,
+            "the run is not of the kinematics it was calibrated on",
+        );
+    }
     let clause = match slope.verdict {
         "does not agree" => {
             let worst = slope
@@ -351,7 +372,7 @@ pub fn add_to_summary(summary: &mut Summary, slope: &StickSlopeReport, kinematic
         "agrees" => "stick slope used within 1 % of the deck's".to_string(),
         other => format!("stick slope used {other}"),
     };
-    let clause = format!("{clause}; kinematics: {}", kinematics.words());
+    let clause = format!("{clause}; kinematics: {}", kinematics.words);
     let body = summary
         .summary
         .strip_prefix("Verdict: ")
@@ -439,7 +460,11 @@ mod tests {
     fn a_used_slope_beyond_the_tolerance_turns_the_verdict() {
         let mut s =
             summary("Verdict: agrees. w(L) within the stated envelope on all 2 load steps.");
-        add_to_summary(&mut s, &slope("does not agree", 660.0), Kinematics::Nlgeom);
+        add_to_summary(
+            &mut s,
+            &slope("does not agree", 660.0),
+            &kinematics_report(Kinematics::Nlgeom, Kinematics::Nlgeom),
+        );
         assert!(!s.agrees);
         assert_eq!(
             s.summary,
@@ -449,7 +474,11 @@ mod tests {
         );
         let mut s =
             summary("Verdict: agrees. w(L) within the stated envelope on all 2 load steps.");
-        add_to_summary(&mut s, &slope("agrees", 600.1), Kinematics::Linear);
+        add_to_summary(
+            &mut s,
+            &slope("agrees", 600.1),
+            &kinematics_report(Kinematics::Linear, Kinematics::Linear),
+        );
         assert!(s.agrees);
         assert!(
             s.summary.starts_with("Verdict: agrees. w(L)"),
