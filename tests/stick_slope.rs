@@ -265,3 +265,54 @@ fn a_linear_geometry_beam_deck_is_not_judged_against_the_nlgeom_envelope() {
     );
     assert!(!closing.contains("friction strain"), "{closing}");
 }
+
+/// Any FE code: a CSV result with its interface profile (`--interface`) and its kinematics
+/// (`--kinematics`), which a CSV cannot say itself.
+#[test]
+fn a_csv_result_takes_its_interface_profile_and_kinematics_from_flags() {
+    let dir = tempfile::tempdir().unwrap();
+    let profile = dir.path().join("interface.csv");
+    // The paper's beams (mu P = 0.3 MPa): 5 nodes sticking at 660 MPa/mm, 2 at the limit.
+    std::fs::write(
+        &profile,
+        "x_mm,slip_mm,shear_MPa\n0,1e-5,6.6e-3\n10,2e-5,1.32e-2\n20,4e-5,2.64e-2\n\
+         30,1e-4,6.6e-2\n40,2e-4,1.32e-1\n50,8e-4,0.3\n60,1.6e-3,0.3\n",
+    )
+    .unwrap();
+    let results =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/reports/inputs/compare-beam.csv");
+    let output = Command::cargo_bin("microslip")
+        .unwrap()
+        .args(["compare", "beam"])
+        .arg(&results)
+        .arg("--interface")
+        .arg(&profile)
+        .args(["--kinematics", "linear", "--format", "json"])
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let json: Value = serde_json::from_slice(&output.stdout).unwrap();
+    let run = &json["stick_slope"]["runs"][0];
+    let used = run["KT_used_MPa_per_mm"].as_f64().unwrap();
+    assert!((used / 660.0 - 1.0).abs() < 1e-9, "{used}");
+    assert_eq!(run["verdict"], "does not agree");
+    assert_eq!(json["verdict"]["agrees"], false);
+    assert_eq!(json["kinematics"]["kinematics"], "linear");
+    assert_eq!(json["kinematics"]["envelope_applies"], false);
+    // A .dat says both itself: --interface is refused there.
+    let dat = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/calculix/paper-beams.dat");
+    let refused = Command::cargo_bin("microslip")
+        .unwrap()
+        .args(["compare", "beam"])
+        .arg(&dat)
+        .arg("--interface")
+        .arg(&profile)
+        .output()
+        .unwrap();
+    assert!(!refused.status.success());
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("--interface is for CSV results"));
+}

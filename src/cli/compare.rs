@@ -107,7 +107,7 @@ impl<W: Write> ForProblem for Compare<'_, W> {
                 None => load_problem::<P>(inputs, &command, Load::Unused)?.1,
             };
             let mut compared = P::compare(&model, &loaded.points, loaded.interface_mesh.as_ref());
-            let run = run_evidence::<P>(path, &loaded, &model, contact)?;
+            let run = run_evidence::<P>(path, deck, &loaded, &model, contact)?;
             if !contact_report::envelope_applies(run.kinematics, P::ENVELOPE_KINEMATICS) {
                 P::without_envelope(&mut compared);
             }
@@ -145,55 +145,57 @@ impl<W: Write> ForProblem for Compare<'_, W> {
 /// its `--interface` profile (CSV) shows, against the K_T of `model`, and its kinematics.
 fn run_evidence<P: Faces>(
     path: &std::path::Path,
+    deck: Option<&std::path::Path>,
     loaded: &fe::load::Loaded<P::FePoint>,
     model: &P::Model,
     contact: ContactArgs<'_>,
 ) -> Result<RunEvidence, CliError> {
-    let interface = P::interface(model);
-    let kinematics = match (&loaded.header, contact.kinematics) {
-        (Some(_), Some(said)) if said != loaded.kinematics => {
-            eprintln!(
-                "microslip: note: --kinematics {} not used: the deck says {}",
-                said.label(),
-                loaded.kinematics.words()
-            );
-            loaded.kinematics
-        }
-        (None, Some(said)) => said,
-        _ => loaded.kinematics,
-    };
-    let stick_slope = match (&loaded.header, contact.interface) {
-        (Some(_), Some(_)) => {
+    let interface_data = P::interface(model);
+    let (kinematics, stick_slope) = match (&loaded.header, contact) {
+        (
+            Some(_),
+            ContactArgs {
+                interface: Some(_), ..
+            },
+        ) => {
             return Err(CliError::Usage(
                 "--interface is for CSV results: a .dat's stick slope is read from the run's .frd",
             ));
         }
-        (None, Some(file)) => {
-            let text = crate::file::read_capped(
-                file,
-                fe::load::MAX_RESULT_SIZE,
-                "an interface profile",
-                crate::file::Kinds::RegularOnly,
-            )
-            .map_err(|e| CliError::Data {
-                path: file.display().to_string(),
-                reason: e.to_string(),
+        (
+            Some(header),
+            ContactArgs {
+                kinematics: said, ..
+            },
+        ) => {
+            let read = fe::load::ccx_contact(path, deck, header).map_err(|e| CliError::Data {
+                path: e.path,
+                reason: e.reason,
             })?;
-            let steps = stick_slope::read_interface_csv(&text).map_err(|e| CliError::Data {
-                path: file.display().to_string(),
-                reason: e.to_string(),
-            })?;
-            let friction = Friction {
-                coefficient: interface.friction,
-                nominal_pressure: interface.pressure,
-            };
-            Some(Ok(StickSlopeUsed::measure(
-                &steps,
-                friction,
-                interface.stiffness,
-            )))
+            if let Some(said) = said.filter(|k| *k != read.kinematics) {
+                eprintln!(
+                    "microslip: note: --kinematics {} not used: the deck says {}",
+                    said.label(),
+                    read.kinematics.words()
+                );
+            }
+            (read.kinematics, Some(read.stick_slope))
         }
-        _ => loaded.stick_slope.clone(),
+        (
+            None,
+            ContactArgs {
+                interface,
+                kinematics,
+            },
+        ) => {
+            let stick_slope = interface
+                .map(|file| csv_stick_slope(file, &interface_data))
+                .transpose()?;
+            (
+                kinematics.unwrap_or(Kinematics::NotStated),
+                stick_slope.map(Ok),
+            )
+        }
     };
     let step_forces = loaded
         .header
@@ -209,7 +211,7 @@ fn run_evidence<P: Faces>(
     Ok(RunEvidence {
         results: path.display().to_string(),
         stick_slope,
-        deck: interface.stiffness,
+        deck: interface_data.stiffness,
         kinematics,
         step_forces,
     })
@@ -229,4 +231,33 @@ pub(super) fn write_comparison<R: serde::Serialize + Default>(
         CompareFormat::Csv => write_table(out, TableFormat::Csv, rows)?,
     }
     Ok(())
+}
+
+/// The stick slope of the interface profile `file` (CSV) against the model's K_T, with its mu and
+/// nominal pressure.
+fn csv_stick_slope(
+    file: &std::path::Path,
+    interface: &crate::problems::inputs::InterfaceData,
+) -> Result<StickSlopeUsed, CliError> {
+    let fail = |reason: String| CliError::Data {
+        path: file.display().to_string(),
+        reason,
+    };
+    let text = crate::file::read_capped(
+        file,
+        fe::load::MAX_RESULT_SIZE,
+        "an interface profile",
+        crate::file::Kinds::RegularOnly,
+    )
+    .map_err(|e| fail(e.to_string()))?;
+    let steps = stick_slope::read_interface_csv(&text).map_err(|e| fail(e.to_string()))?;
+    let friction = Friction {
+        coefficient: interface.friction,
+        nominal_pressure: interface.pressure,
+    };
+    Ok(StickSlopeUsed::measure(
+        &steps,
+        friction,
+        interface.stiffness,
+    ))
 }

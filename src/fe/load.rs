@@ -39,11 +39,33 @@ pub struct Loaded<P> {
     /// The FE mesh along the interface, from the deck (CalculiX results; `None` for CSV, which
     /// does not say).
     pub interface_mesh: Option<InterfaceMesh>,
-    /// The kinematics of the run: read from the deck (CalculiX), not stated for CSV.
+}
+
+/// What a CalculiX run says about its contact, beside its points ([`ccx_contact`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CcxContact {
+    /// The kinematics of the run, from its deck.
     pub kinematics: Kinematics,
-    /// The stick slope the run used, from its interface output (CalculiX: the `.frd` beside the
-    /// `.dat`), or why it was not read; `None` where no interface output was given (CSV).
-    pub stick_slope: Option<Result<StickSlopeUsed, String>>,
+    /// The stick slope the run used, from the `.frd` beside its `.dat`, or why it was not read.
+    pub stick_slope: Result<StickSlopeUsed, String>,
+}
+
+/// The contact evidence of the `.dat` at `path` whose deck (`deck`, by default beside it with the
+/// extension `.inp`) has `header`: the deck's kinematics and the stick slope of the `.frd` beside
+/// the `.dat`. Read apart from the points (the TUI, which loads points, does not need it).
+///
+/// # Errors
+/// [`LoadError`] when the deck cannot be read (the points were read from it just before).
+pub fn ccx_contact(
+    path: &Path,
+    deck: Option<&Path>,
+    header: &DeckHeader,
+) -> Result<CcxContact, LoadError> {
+    let deck_text = read(&deck_path(path, deck), "a deck")?;
+    Ok(CcxContact {
+        kinematics: Kinematics::of_deck(&deck_text),
+        stick_slope: ccx_stick_slope(path, header, &deck_text),
+    })
 }
 
 fn read(path: &Path, what: &'static str) -> Result<String, LoadError> {
@@ -138,13 +160,10 @@ fn ccx_points<P: Deck>(
         run.interface_mesh()
             .map_err(|e| fail(path, e.to_string()))?,
     );
-    let stick_slope = Some(ccx_stick_slope(path, &header, deck_text));
     Ok(Loaded {
         header: Some(header),
         points,
         interface_mesh,
-        kinematics: Kinematics::of_deck(deck_text),
-        stick_slope,
     })
 }
 
@@ -218,8 +237,6 @@ impl Source<'_> {
                     header: None,
                     points,
                     interface_mesh: None,
-                    kinematics: Kinematics::NotStated,
-                    stick_slope: None,
                 })
             }
         }

@@ -291,16 +291,16 @@ pub fn read_frd_contact(reader: impl BufRead) -> Result<Vec<ContactStep>, Result
                 let name = rest.split_whitespace().next().unwrap_or_default();
                 columns.names.push(name.to_string());
             }
-        } else if line.starts_with(" -1") {
-            if let Some((columns, nodes)) = block.as_mut() {
-                if let Some(node) = contact_row(&line, columns).map_err(fail)? {
-                    nodes.push(node);
-                }
+        } else if line.starts_with(" -1")
+            && let Some((columns, nodes)) = block.as_mut()
+        {
+            if let Some(node) = contact_row(&line, columns).map_err(fail)? {
+                nodes.push(node);
             }
-        } else if trimmed.starts_with("-3") {
-            if let Some((_, nodes)) = block.take() {
-                steps.insert(step, ContactStep { step, time, nodes });
-            }
+        } else if trimmed.starts_with("-3")
+            && let Some((_, nodes)) = block.take()
+        {
+            steps.insert(step, ContactStep { step, time, nodes });
         }
     }
     Ok(steps.into_values().collect())
