@@ -162,14 +162,23 @@ fn plate_run(factor: f64, results: &str) -> (tempfile::TempDir, PathBuf) {
     (dir, dat)
 }
 
-fn compare(dat: &Path, format: &str) -> String {
-    let output = Command::cargo_bin("microslip")
+/// `microslip ARGS...`, run.
+fn microslip<I: AsRef<std::ffi::OsStr>>(args: impl IntoIterator<Item = I>) -> std::process::Output {
+    Command::cargo_bin("microslip")
         .unwrap()
-        .args(["compare", "plate"])
-        .arg(dat)
-        .args(["--format", format])
+        .args(args)
         .output()
-        .unwrap();
+        .unwrap()
+}
+
+fn compare(dat: &Path, format: &str) -> String {
+    let output = microslip([
+        "compare".as_ref(),
+        "plate".as_ref(),
+        dat.as_os_str(),
+        "--format".as_ref(),
+        format.as_ref(),
+    ]);
     assert!(
         output.status.success(),
         "{}",
@@ -233,13 +242,14 @@ fn a_linear_geometry_beam_deck_is_not_judged_against_the_nlgeom_envelope() {
         .unwrap();
     }
     let run = |name: &str, format: &str| {
-        let output = Command::cargo_bin("microslip")
-            .unwrap()
-            .args(["compare", "beam"])
-            .arg(dir.path().join(format!("{name}.dat")))
-            .args(["--format", format])
-            .output()
-            .unwrap();
+        let dat = dir.path().join(format!("{name}.dat"));
+        let output = microslip([
+            "compare".as_ref(),
+            "beam".as_ref(),
+            dat.as_os_str(),
+            "--format".as_ref(),
+            format.as_ref(),
+        ]);
         assert!(output.status.success());
         String::from_utf8(output.stdout).unwrap()
     };
@@ -281,15 +291,17 @@ fn a_csv_result_takes_its_interface_profile_and_kinematics_from_flags() {
     .unwrap();
     let results =
         Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/reports/inputs/compare-beam.csv");
-    let output = Command::cargo_bin("microslip")
-        .unwrap()
-        .args(["compare", "beam"])
-        .arg(&results)
-        .arg("--interface")
-        .arg(&profile)
-        .args(["--kinematics", "linear", "--format", "json"])
-        .output()
-        .unwrap();
+    let output = microslip([
+        "compare".as_ref(),
+        "beam".as_ref(),
+        results.as_os_str(),
+        "--interface".as_ref(),
+        profile.as_os_str(),
+        "--kinematics".as_ref(),
+        "linear".as_ref(),
+        "--format".as_ref(),
+        "json".as_ref(),
+    ]);
     assert!(
         output.status.success(),
         "{}",
@@ -305,14 +317,13 @@ fn a_csv_result_takes_its_interface_profile_and_kinematics_from_flags() {
     assert_eq!(json["kinematics"]["envelope_applies"], false);
     // A .dat says both itself: --interface is refused there.
     let dat = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/calculix/paper-beams.dat");
-    let refused = Command::cargo_bin("microslip")
-        .unwrap()
-        .args(["compare", "beam"])
-        .arg(&dat)
-        .arg("--interface")
-        .arg(&profile)
-        .output()
-        .unwrap();
+    let refused = microslip([
+        "compare".as_ref(),
+        "beam".as_ref(),
+        dat.as_os_str(),
+        "--interface".as_ref(),
+        profile.as_os_str(),
+    ]);
     assert!(!refused.status.success());
     assert!(String::from_utf8_lossy(&refused.stderr).contains("--interface is for CSV results"));
 }

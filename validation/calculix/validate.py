@@ -412,6 +412,18 @@ def splice_stick_slope(lines):
     path.write_text(text)
 
 
+def finish(failures, workdir, keep, what):
+    """Exit 1 naming every failed check; else say so and remove the work files (unless kept)."""
+    if failures:
+        print(f"{len(failures)} check(s) failed:", file=sys.stderr)
+        for failure in failures:
+            print("  " + failure, file=sys.stderr)
+        sys.exit(1)
+    print(f"All {what} checks passed (work files in {workdir}).")
+    if not keep:
+        shutil.rmtree(workdir, ignore_errors=True)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--microslip")
@@ -436,14 +448,7 @@ def main():
         stick = stick_slope_rows(microslip, workdir, timings, failures)
         splice_stick_slope(stick)
         print("\n".join(stick))
-        if failures:
-            print(f"{len(failures)} check(s) failed:", file=sys.stderr)
-            for failure in failures:
-                print("  " + failure, file=sys.stderr)
-            sys.exit(1)
-        print(f"All stick-slope checks passed (work files in {workdir}).")
-        if not options.keep:
-            shutil.rmtree(workdir, ignore_errors=True)
+        finish(failures, workdir, options.keep, "stick-slope")
         return
 
     lines.append(f"CalculiX {version}, microslip decks (C3D20R, coarse mesh unless stated), "
@@ -611,14 +616,7 @@ def main():
             _, tail = rest.split(end, 1)
             guide.write_text(head + start + table + end + tail)
     print(table)
-    if failures:
-        print(f"{len(failures)} check(s) failed:", file=sys.stderr)
-        for failure in failures:
-            print("  " + failure, file=sys.stderr)
-        sys.exit(1)
-    print(f"All CalculiX checks passed (work files in {workdir}).")
-    if not options.keep:
-        shutil.rmtree(workdir, ignore_errors=True)
+    finish(failures, workdir, options.keep, "CalculiX")
 
 
 if __name__ == "__main__":
