@@ -8,6 +8,9 @@ use crate::numeric::q8::Q8;
 
 /// An external load per unit of its magnitude, built by `add(unknown, value)` from zero.
 pub(crate) type LoadVector<'a> = &'a dyn Fn(&mut dyn FnMut(usize, f64));
+/// The upper body's own share of an external load (per unit of its magnitude) at pair i's
+/// normal unknown: what its internal force there carries besides the contact force.
+pub(crate) type OwnLoad<'a> = &'a dyn Fn(usize) -> f64;
 /// The response a problem reads from a displacement field, `at(unknown)`, linear in it.
 pub(crate) type Reading<'a> = &'a dyn Fn(&dyn Fn(usize) -> f64) -> f64;
 
@@ -41,7 +44,10 @@ pub(crate) struct Condensed {
 impl Condensed {
     /// Condenses the bodies of `grid` (unknowns `fixed` held at zero) with Jenkins springs of
     /// `stiffness_per_area` (K_T, MPa/mm) at its pairs, under the loads `first` (P) and `driving`
-    /// (F), read by `reading`.
+    /// (F), read by `reading`; `own` gives the upper body's own share of each load at each
+    /// pair's normal unknown (the contact force is the upper body's internal force there less
+    /// it: the beams' end traction loads the tip pair's corner node, the lap joint's loads no
+    /// pair).
     ///
     /// # Errors
     /// [`NumericError::Singular`] for a stiffness that is not positive definite (a body that
@@ -51,6 +57,7 @@ impl Condensed {
         stiffness_per_area: f64,
         fixed: &[usize],
         [first, driving]: [LoadVector<'_>; 2],
+        own: [OwnLoad<'_>; 2],
         reading: Reading<'_>,
     ) -> Result<Condensed, NumericError> {
         let n = grid.unknowns;
@@ -139,8 +146,15 @@ impl Condensed {
         });
         let slip_f = slips.pop().unwrap_or_default();
         let slip_p = slips.pop().unwrap_or_default();
-        let contact_f = contacts.pop().unwrap_or_default();
-        let contact_p = contacts.pop().unwrap_or_default();
+        let without_own = |contact: Vec<f64>, own: OwnLoad<'_>| -> Vec<f64> {
+            contact
+                .iter()
+                .enumerate()
+                .map(|(i, c)| c - own(i))
+                .collect()
+        };
+        let contact_f = without_own(contacts.pop().unwrap_or_default(), own[1]);
+        let contact_p = without_own(contacts.pop().unwrap_or_default(), own[0]);
         let reading_f = readings.pop().unwrap_or_default();
         let reading_p = readings.pop().unwrap_or_default();
 

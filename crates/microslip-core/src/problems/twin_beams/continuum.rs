@@ -326,7 +326,7 @@ fn check(
     }
     // Two pairs per element along x, less the held one at the clamp.
     let pairs = 2.0 * elements_along(params, mesh.layers);
-    if !(pairs <= MAX_PAIRS as f64) {
+    if pairs.is_nan() || pairs > MAX_PAIRS as f64 {
         return Err(NumericError::OutOfRange(format!(
             "the beams' continuum mesh would have {} interface node pairs at {} layers, more \
              than the {MAX_PAIRS} the solver takes: the elements along x are at most 1.6 \
@@ -368,6 +368,16 @@ fn condense(grid: &Grid, p: &TwinBeamsParams) -> Result<Condensed, NumericError>
             }
         }
     };
+    // The upper beam's end traction at its corner node (x = L, y = 0): the last pair's normal
+    // unknown, which the contact reading must not count.
+    let last = two.pairs() - 1;
+    let own_force = |pair: usize| {
+        if pair == last {
+            traction * through[0]
+        } else {
+            0.0
+        }
+    };
     let deflection = |at: &dyn Fn(usize) -> f64| {
         0.5 * (at(lower.dof(end, middle)[1]) + at(upper.dof(end, middle)[1]))
     };
@@ -376,6 +386,7 @@ fn condense(grid: &Grid, p: &TwinBeamsParams) -> Result<Condensed, NumericError>
         p.tangential_stiffness,
         &grid.fixed,
         [&pressure, &force],
+        [&|_| 0.0, &own_force],
         &deflection,
     )
 }

@@ -49,6 +49,7 @@ pub(super) fn condense(grid: &Grid, p: &LapParams) -> Result<Condensed, NumericE
         p.tangential_stiffness,
         &grid.fixed,
         [&pressure, &force],
+        [&|_| 0.0, &|_| 0.0],
         &delta,
     )
 }
