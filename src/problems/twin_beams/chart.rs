@@ -204,10 +204,10 @@ fn beam_plot(
 }
 
 /// The twin beams' finite-element points for `chart` (none for D vs F_a, a closed-form integral
-/// of the loop). Beside them, on w(L), X and tau(x), the 2-D plane-stress continuum
-/// ([`solve_beams_continuum_path`], one loading path through the chart's forces): the answer
-/// without beam theory's assumptions, the reference an FE code is judged against. Where the
-/// continuum refuses the beams (a mesh too large) its series is empty: a gap, not an error.
+/// of the loop). Beside them, on tau(x), the 2-D plane-stress continuum
+/// ([`solve_beams_continuum_path`]): the answer without beam theory's assumptions, the
+/// reference an FE code is judged against. Where the continuum refuses the beams (a mesh too
+/// large) its series is empty: a gap, not an error.
 fn beam_numeric_points(
     beams: &TwinBeams,
     force: TipForce,
@@ -249,32 +249,11 @@ fn beam_numeric_points(
                     },
                 ));
             }
-            let forces: Vec<f64> = (1..=OVERLAY_POINTS)
-                .map(|i| f_max * i as f64 / OVERLAY_POINTS as f64)
-                .collect();
-            let continuum =
-                solve_beams_continuum_path(beams.params(), &forces, BeamsContinuumMesh::default())
-                    .map_or_else(
-                        |_| Vec::new(),
-                        |states| {
-                            states
-                                .iter()
-                                .map(|c| {
-                                    let y = if chart == BeamChart::Deflection {
-                                        c.tip_deflection
-                                    } else {
-                                        c.macroslip_start
-                                    };
-                                    (c.force, y)
-                                })
-                                .collect()
-                        },
-                    );
             match failure {
                 Some(e) if points.is_empty() => Err(e),
                 _ => Ok(Some(NumericPoints {
                     points,
-                    continuum,
+                    continuum: Vec::new(),
                     failed,
                     failure: first_failure,
                 })),
