@@ -26,5 +26,5 @@ mod zones;
 
 pub(crate) use condensed::Condensed;
 pub(crate) use grid::TwoBodyGrid;
-pub(crate) use reduced::{Reduced, State};
+pub(crate) use reduced::{Reduced, State, check_path};
 pub(crate) use zones::{last_of_run, nominal_front};

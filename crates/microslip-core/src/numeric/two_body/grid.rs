@@ -91,6 +91,16 @@ impl TwoBodyGrid {
         grid
     }
 
+    /// Per-pair values over each pair's share of the face, (x (mm), `sign` x value / share):
+    /// a force per mm of width read as a stress (MPa).
+    pub(crate) fn per_face(&self, values: &[f64], sign: f64) -> Vec<(f64, f64)> {
+        self.pair_x
+            .iter()
+            .zip(values.iter().zip(&self.pair_weights))
+            .map(|(&x, (v, w))| (x, sign * v / w))
+            .collect()
+    }
+
     pub(crate) fn pairs(&self) -> usize {
         self.pair_x.len()
     }

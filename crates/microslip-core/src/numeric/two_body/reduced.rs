@@ -23,6 +23,22 @@ const MAX_RELAXATION: f64 = 2.0;
 /// Change of the contact forces, relative to the largest, that ends the fixed point.
 const CONTACT_TOLERANCE: f64 = 1e-10;
 
+/// Refuses a loading path whose forces decrease (friction is path-dependent: unloading is
+/// another problem).
+///
+/// # Errors
+/// [`NumericError::OutOfRange`] saying so.
+pub(crate) fn check_path(forces: &[f64]) -> Result<(), NumericError> {
+    if forces.windows(2).any(|w| w[1] < w[0]) {
+        return Err(NumericError::OutOfRange(
+            "the forces of one loading path must not decrease (friction is path-dependent: \
+             unloading is another problem)"
+                .into(),
+        ));
+    }
+    Ok(())
+}
+
 /// The interface problem on the m pair slips at given strengths: the Newton driver's model.
 pub(crate) struct Reduced<'a> {
     pub(crate) c: &'a Condensed,

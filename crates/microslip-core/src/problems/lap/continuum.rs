@@ -61,7 +61,7 @@ mod mesh;
 
 use super::params::{LapParam, LapParams};
 use crate::kernel::params::Compact;
-use crate::numeric::two_body::Reduced;
+use crate::numeric::two_body::{Reduced, check_path};
 use crate::numeric::{NumericError, short};
 use answer::lap_answer;
 use condensed::condense;
@@ -232,13 +232,7 @@ pub fn solve_lap_continuum_path(
             )));
         }
     }
-    if forces.windows(2).any(|w| w[1] < w[0]) {
-        return Err(NumericError::OutOfRange(
-            "the forces of one loading path must not decrease (friction is path-dependent: \
-             unloading is another problem)"
-                .into(),
-        ));
-    }
+    check_path(forces)?;
     if mesh.layers == 0 || mesh.layers > MAX_LAYERS {
         return Err(NumericError::OutOfRange(format!(
             "layers = {} is outside 1..={MAX_LAYERS}",

@@ -11,7 +11,7 @@
 //!   and Poisson ratio nu;
 //! - 8-node quadrilaterals (Q8, 3 x 3 Gauss points, `numeric::q8`), `layers` of them through
 //!   each beam, graded along x toward the clamp as the deck grades its mesh
-//!   ([`mesh::beam_breaks`]);
+//!   (`mesh::beam_breaks`);
 //! - the pressure P on both outer faces (y = -2h and y = 2h), pressing the beams together, and
 //!   the tip force F on each beam as a uniform shear traction F / (2 b h) on its end face x = L,
 //!   in +y (consistent nodal loads);
@@ -45,7 +45,7 @@ use super::params::{BeamParam, TwinBeamsParams};
 use crate::kernel::params::Compact;
 use crate::numeric::NumericError;
 use crate::numeric::grid::edge_weights;
-use crate::numeric::two_body::{Condensed, Reduced, State, last_of_run, nominal_front};
+use crate::numeric::two_body::{Condensed, Reduced, State, check_path, last_of_run, nominal_front};
 use mesh::{Grid, elements_along};
 
 /// Most interface node pairs: the condensed interface is a dense m x m system built from m
@@ -296,13 +296,7 @@ fn check(
     for &force in forces {
         BeamParam::Force.check(force).map_err(out_of_range)?;
     }
-    if forces.windows(2).any(|w| w[1] < w[0]) {
-        return Err(NumericError::OutOfRange(
-            "the forces of one loading path must not decrease (friction is path-dependent: \
-             unloading is another problem)"
-                .into(),
-        ));
-    }
+    check_path(forces)?;
     if mesh.layers == 0
         || mesh.layers > MAX_LAYERS
         || (mesh.extrapolate && !mesh.layers.is_multiple_of(2))
@@ -411,16 +405,8 @@ fn answer(
         .zip(slip_from_clamp)
         .map(|(&x, s)| (x, -s))
         .collect();
-    let shear: Vec<(f64, f64)> = xs
-        .iter()
-        .zip(model.pair_forces().iter().zip(weights))
-        .map(|(&x, (t, w))| (x, -t / w))
-        .collect();
-    let contact_pressure: Vec<(f64, f64)> = xs
-        .iter()
-        .zip(contact.iter().zip(weights))
-        .map(|(&x, (n, w))| (x, n / w))
-        .collect();
+    let shear = grid.two.per_face(&model.pair_forces(), -1.0);
+    let contact_pressure = grid.two.per_face(&contact, 1.0);
     let length = xs.last().copied().unwrap_or(0.0);
     let saturation = model.friction() * model.pressure();
     let level = |i: usize| c.stiffness[i] / weights[i] * slip[i].1.abs();

@@ -24,16 +24,8 @@ pub(super) fn lap_answer(
         .map(|(&x, ds)| (x, *ds))
         .collect();
     let forces = model.pair_forces();
-    let shear: Vec<(f64, f64)> = xs
-        .iter()
-        .zip(forces.iter().zip(weights))
-        .map(|(&x, (t, w))| (x, t / w))
-        .collect();
-    let contact_pressure: Vec<(f64, f64)> = xs
-        .iter()
-        .zip(contact.iter().zip(weights))
-        .map(|(&x, (n, w))| (x, n / w))
-        .collect();
+    let shear = grid.two.per_face(&forces, 1.0);
+    let contact_pressure = grid.two.per_face(&contact, 1.0);
     let length = *xs.last().unwrap_or(&0.0);
     // Nominal: K_T |s| >= mu P, P the nominal pressure, slip from the clamped state.
     let saturation = model.friction() * model.pressure();
