@@ -9,7 +9,7 @@ pub enum Command {
     /// Report of the paper's two data sets (twin beams and plate), as text.
     Report,
     /// Twin cantilever beams at one tip force: thresholds, X, w(L) for both laws, regimes.
-    Beam(PointArgs),
+    Beam(BeamPointArgs),
     /// Squeezed plate: X_s, X_r, u(L) for both laws, regimes, contact-pressure check, validity.
     // --beam-theory has no effect here: hidden from the help (and refused if given).
     #[command(mut_arg("beam_theory", |a| a.hide(true)))]
@@ -741,6 +741,17 @@ impl ValueEnum for AnyChart {
                 .help(format!("{model}: {}", self.title())),
         )
     }
+}
+
+// The flags of `beam` (Command::Beam); its help is the variant's doc comment.
+#[derive(Debug, Args)]
+pub struct BeamPointArgs {
+    #[command(flatten)]
+    pub point: PointArgs,
+    /// Also solve the 2-D plane-stress continuum of both beams (seconds): the reference an FE
+    /// code's w(L) is judged against.
+    #[arg(long)]
+    pub continuum: bool,
 }
 
 // The flags of `plate` (Command::Plate); its help is the variant's doc comment.

@@ -196,7 +196,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
     match &cli.command {
         None | Some(Command::Report) => out.write_all(report::paper_report().as_bytes())?,
         // Each per-problem command runs the one generic handler for the problem its name is.
-        Some(Command::Beam(args)) => run_point(out, "beam", args, false)?,
+        Some(Command::Beam(args)) => run_point(out, "beam", &args.point, args.continuum)?,
         Some(Command::Plate(args)) => run_point(out, "plate", &args.point, args.continuum)?,
         Some(Command::Sweep(args)) => run_sweep(out, args)?,
         Some(Command::Lap(args)) => run_point(out, "lap", &args.point, args.continuum)?,

@@ -6,6 +6,7 @@
 use super::TwinBeamsFe;
 use super::TwinBeamsProblem;
 use super::closed_form::BeamTheory;
+use super::continuum::{BeamsContinuumMesh, solve_beams_continuum_path};
 use super::problem::BeamsModel;
 use crate::chart::load::{
     LoadLabels, companions, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
@@ -203,7 +204,10 @@ fn beam_plot(
 }
 
 /// The twin beams' finite-element points for `chart` (none for D vs F_a, a closed-form integral
-/// of the loop).
+/// of the loop). Beside them, on tau(x), the 2-D plane-stress continuum
+/// ([`solve_beams_continuum_path`]): the answer without beam theory's assumptions, the
+/// reference an FE code is judged against. Where the continuum refuses the beams (a mesh too
+/// large) its series is empty: a gap, not an error.
 fn beam_numeric_points(
     beams: &TwinBeams,
     force: TipForce,
@@ -276,8 +280,17 @@ fn beam_numeric_points(
             fe.load_to(force.newtons(), 4)?;
             let samples = fe.interface();
             let stride = (samples.len() / 40).max(1);
+            let continuum = solve_beams_continuum_path(
+                beams.params(),
+                &[force.newtons()],
+                BeamsContinuumMesh::default(),
+            )
+            .map_or_else(
+                |_| Vec::new(),
+                |mut states| states.pop().map_or_else(Vec::new, |state| state.shear),
+            );
             Ok(Some(NumericPoints {
-                continuum: Vec::new(),
+                continuum,
                 failed: 0,
                 failure: None,
                 points: samples

@@ -13,7 +13,7 @@ use crate::numeric::NumericError;
 use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
-use crate::report::face::{KtColumn, ReportFace};
+use crate::report::face::{KtColumn, ReportFace, point_continuum};
 use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleWords};
 use crate::report::point::{InputsReport, SideBySide, regime_label, validity_label};
 use crate::report::rows::{BeamRow, LoopRow};
@@ -21,6 +21,7 @@ use crate::report::{number, number_with, sanitize};
 use crate::study::curves::{Answer, beam_point};
 
 use super::closed_form::{BeamTheory, TipForce, TwinBeams};
+use super::continuum::ContinuumBeams;
 use super::params::TwinBeamsParams;
 use super::point::BeamPoint;
 use super::problem::{BeamsInputs, BeamsModel, TwinBeamsProblem};
@@ -70,13 +71,25 @@ impl ReportFace for TwinBeamsProblem {
     type PointReport = BeamReport;
     type SweepRow = BeamRow;
 
-    /// The beams have no continuum: `--continuum` is not a flag of `beam`.
+    /// The 2-D plane-stress continuum (default mesh) is solved when asked (`--continuum`):
+    /// seconds, not microseconds, so never unasked.
     fn point_report(
         preset: &str,
         model: &BeamsModel,
-        _continuum: bool,
+        continuum: bool,
     ) -> Result<BeamReport, NumericError> {
-        Ok(BeamReport::new(preset, &model.beams, model.force))
+        let solved = point_continuum(continuum, true, || {
+            super::solve_beams_continuum(
+                model.beams.params(),
+                model.force.newtons(),
+                super::BeamsContinuumMesh::default(),
+            )
+        })?;
+        let mut report = BeamReport::new(preset, &model.beams, model.force);
+        report.continuum = solved
+            .as_ref()
+            .map(|c| BeamContinuumReport::new(c, &model.beams, model.force));
+        Ok(report)
     }
 
     fn point_text(report: &BeamReport) -> String {
@@ -254,6 +267,104 @@ pub struct BeamReport {
     pub coulomb: BeamCoulomb,
     pub regularized: BeamRegularized,
     pub beam_theory: BeamTheoryReport,
+    /// The 2-D plane-stress continuum at the same force (docs/theory.md, "The twin beams'
+    /// continuum"), when asked for (`--continuum`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub continuum: Option<BeamContinuumReport>,
+}
+
+/// The twin beams' 2-D plane-stress continuum answer, or why there is none.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum BeamContinuumReport {
+    Solved(BeamContinuumSolved),
+    Failed {
+        /// Why the continuum solver gave no answer.
+        error: String,
+    },
+}
+
+/// What the continuum gives where beam theory assumes.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct BeamContinuumSolved {
+    /// w(L) (mm): the mean v of both beams' tip nodes at mid-height, as the deck reads it.
+    #[serde(rename = "w_mm")]
+    pub tip_deflection: f64,
+    /// (continuum - Timoshenko) / Timoshenko for w(L), a fraction (0.004 is 0.4 %).
+    pub diff_vs_timoshenko_fraction: f64,
+    /// Start of the macroslip zone from the clamp, where K_T |s| = mu P (mm; L: none).
+    #[serde(rename = "X_mm")]
+    pub macroslip_start: f64,
+    /// The force at which its first interface pair saturates (N): the continuum's F_1.
+    #[serde(rename = "F_1_N")]
+    pub elastic_limit: f64,
+    /// The least and largest contact pressure along the interface (MPa): P in beam theory.
+    #[serde(rename = "contact_pressure_min_MPa")]
+    pub pressure_min: f64,
+    #[serde(rename = "contact_pressure_max_MPa")]
+    pub pressure_max: f64,
+    /// Node pairs whose faces would open (held by the tie, without friction).
+    pub separated_pairs: usize,
+}
+
+impl BeamContinuumReport {
+    fn new(
+        solved: &Result<ContinuumBeams, NumericError>,
+        beams: &TwinBeams,
+        force: TipForce,
+    ) -> BeamContinuumReport {
+        match solved {
+            Err(e) => BeamContinuumReport::Failed {
+                error: e.to_string(),
+            },
+            Ok(c) => {
+                let timoshenko = beams
+                    .with_theory(BeamTheory::EulerBernoulli)
+                    .regularized(force)
+                    .tip_deflection()
+                    + beams.shear_deflection(force);
+                let (pressure_min, pressure_max) = c
+                    .contact_pressure
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), (_, p)| {
+                        (lo.min(*p), hi.max(*p))
+                    });
+                BeamContinuumReport::Solved(BeamContinuumSolved {
+                    tip_deflection: c.tip_deflection,
+                    diff_vs_timoshenko_fraction: c.tip_deflection / timoshenko - 1.0,
+                    macroslip_start: c.macroslip_start,
+                    elastic_limit: c.elastic_limit,
+                    pressure_min,
+                    pressure_max,
+                    separated_pairs: c.separated.len(),
+                })
+            }
+        }
+    }
+
+    /// Its lines in the text report.
+    fn write(&self, out: &mut String) {
+        match self {
+            BeamContinuumReport::Failed { error } => {
+                let _ = writeln!(out, "2-D continuum: FAILED, no answer ({error})");
+            }
+            BeamContinuumReport::Solved(c) => {
+                let _ = writeln!(
+                    out,
+                    "2-D continuum (plane stress, small strain, docs/theory.md \"The twin beams' continuum\")\n  \
+                     w(L) = {} mm ({:+} % vs Timoshenko), X = {} mm, F_1 = {} N\n  \
+                     contact pressure {} to {} MPa, {} pairs would open",
+                    number(c.tip_deflection),
+                    number_with(100.0 * c.diff_vs_timoshenko_fraction, 3),
+                    number(c.macroslip_start),
+                    number(c.elastic_limit),
+                    number(c.pressure_min),
+                    number(c.pressure_max),
+                    c.separated_pairs
+                );
+            }
+        }
+    }
 }
 
 /// The plain Coulomb law's answer.
@@ -348,6 +459,7 @@ impl BeamReport {
                 friction_strain: row.validity.friction_strain,
                 validity: row.validity.validity,
             },
+            continuum: None,
         }
     }
 
@@ -427,6 +539,9 @@ impl BeamReport {
                 BeamTheory::Timoshenko => " (Euler-Bernoulli plus each beam's shear deflection)",
             },
         );
+        if let Some(continuum) = &self.continuum {
+            continuum.write(&mut out);
+        }
         out
     }
 }

@@ -248,8 +248,8 @@ pub trait Problem: Send + Sync + Sized + 'static {
 }
 
 /// The 2-D continuum reference of a problem: the plane-strain finite-element solve that measures
-/// where the problem's reduced theory (strip, shear lag) stops holding. The plate and the lap
-/// joint have one; the beams' is issue 33.
+/// where the problem's reduced theory (strip, shear lag, beams) stops holding: the plate, the
+/// lap joint and the twin beams have one.
 pub trait Continuum: Problem {
     /// The mesh controls (refinement), with the default the reports use.
     type Mesh: Debug + Clone + Default;

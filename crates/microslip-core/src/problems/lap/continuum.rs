@@ -55,16 +55,17 @@
 //! condensed stiffness, and the contact forces and Delta are linear in the plastic slips. The
 //! answer is the same as that of the full system (the condensation is exact).
 
+mod answer;
 mod condensed;
 mod mesh;
-mod reduced;
 
 use super::params::{LapParam, LapParams};
 use crate::kernel::params::Compact;
+use crate::numeric::two_body::{Reduced, check_path};
 use crate::numeric::{NumericError, short};
-use condensed::Condensed;
+use answer::lap_answer;
+use condensed::condense;
 use mesh::Grid;
-use reduced::Reduced;
 
 pub use super::params::LAP_POISSON;
 pub use mesh::{LapBreaks, LapCounts, lap_breaks, lap_counts};
@@ -91,24 +92,11 @@ const MAX_BAND_ENTRIES: f64 = 1.6e7;
 /// Most elements through each body's thickness.
 const MAX_LAYERS: usize = 32;
 
-/// Fixed-point iterations allowed on the contact forces per increment. The iteration contracts
-/// at a rate set by how much the strengths move the contact forces, which grows with mu: on the
-/// bundled joint a few iterations at mu = 0.3, but about 0.85 per iteration at mu = 2 near
-/// F = 10 kN with the covers lifting at x = 0 (about 130 iterations; 60 failed there, issue
-/// 36). Each iteration is one Newton solve on the pairs, mostly with a kept factor.
-const MAX_CONTACT_ITERATIONS: usize = 400;
-/// Times a load increment whose fixed point fails may be halved.
-const MAX_CUTS: u32 = 6;
 /// Most height over length of the overlap's elements: L = 1e-3 mm on the bundled joint (375)
 /// solves, 1e-4 mm (3750) loses precision and 1e-6 mm gives a singular stiffness.
 const MAX_ASPECT: f64 = 500.0;
 /// Largest [`clamping_slide`] accepted (measured: solved at 210, failed at 332).
 const MAX_CLAMPING_SLIDE: f64 = 200.0;
-/// The bounds of the contact forces' relaxation (Aitken's factor is clamped to them).
-const MIN_RELAXATION: f64 = 1.0 / 64.0;
-const MAX_RELAXATION: f64 = 2.0;
-/// Change of the contact forces, relative to the largest, that ends the fixed point.
-const CONTACT_TOLERANCE: f64 = 1e-10;
 /// Largest imbalance of the inner plate's half accepted, relative to F/2 + F_gross/2: measured
 /// 1.5e-8 at K_T = 0.01 MPa/mm and below 1e-9 from K_T = 1 up on the bundled joint (7.5e-5 at
 /// K_T = 1e-6, refused).
@@ -244,13 +232,7 @@ pub fn solve_lap_continuum_path(
             )));
         }
     }
-    if forces.windows(2).any(|w| w[1] < w[0]) {
-        return Err(NumericError::OutOfRange(
-            "the forces of one loading path must not decrease (friction is path-dependent: \
-             unloading is another problem)"
-                .into(),
-        ));
-    }
+    check_path(forces)?;
     if mesh.layers == 0 || mesh.layers > MAX_LAYERS {
         return Err(NumericError::OutOfRange(format!(
             "layers = {} is outside 1..={MAX_LAYERS}",
@@ -333,22 +315,23 @@ pub fn solve_lap_continuum_path(
         )));
     }
     let grid = Grid::new(&params, mesh);
-    let band = grid.unknowns as f64 * (grid.bandwidth + 1) as f64;
+    let band = grid.two.unknowns as f64 * (grid.two.bandwidth + 1) as f64;
     if band > MAX_BAND_ENTRIES {
         return Err(NumericError::OutOfRange(format!(
             "the continuum mesh's stiffness would hold {} entries ({} unknowns, half-bandwidth \
              {}), more than {}: use fewer layers",
             Compact(band),
-            grid.unknowns,
-            grid.bandwidth,
+            grid.two.unknowns,
+            grid.two.bandwidth,
             Compact(MAX_BAND_ENTRIES)
         )));
     }
-    let condensed = Condensed::new(&grid, &params)?;
+    let condensed = condense(&grid, &params)?;
     let top = forces.iter().fold(0.0_f64, |m, f| m.max(*f));
-    let mut model = Reduced::new(&condensed, &params, top);
+    let scale = params.pressure * params.length + top / (2.0 * params.width);
+    let mut model = Reduced::new(&condensed, params.friction, params.pressure, scale);
     // Step 1: P alone (the load parameter scales P from 0 to 1), one increment.
-    let mut iterations = model.step(1.0).map_err(|e| {
+    let iterations = model.step(1.0).map_err(|e| {
         NumericError::Unsolved(format!(
             "the continuum's clamping step (P = {} MPa alone) could not be solved: {}",
             Compact(params.pressure),
@@ -361,36 +344,24 @@ pub fn solve_lap_continuum_path(
     model.start_force_step();
     let stick = model.stick_limit();
     let mut states = Vec::with_capacity(forces.len());
-    let mut increments = 0;
+    let (mut increments, mut iterations) = (0, iterations);
     for &force in forces {
         let from = model.load;
-        let slip_from_clamp = if force <= stick {
-            // Below first slip the answer is the clamped state plus F times the unit-force
-            // solution, exactly: no increment can lose F's digits against the clamping state.
-            increments += 1;
-            model.stick_at(&clamped, force)
-        } else {
-            let steps =
-                (((force - from) / gross * mesh.force_increments as f64).ceil() as usize).max(1);
-            for i in 1..=steps {
-                let target = if i == steps {
-                    force
-                } else {
-                    from + (force - from) * i as f64 / steps as f64
-                };
-                iterations += model
-                    .step_with_cuts(target, MAX_CUTS)
-                    .map_err(|e| unsolved_force_step(&params, &model, force, &e))?;
-            }
-            increments += steps;
-            model
-                .slip
-                .iter()
-                .zip(&clamped.slip)
-                .map(|(s, s0)| s - s0)
-                .collect()
-        };
-        let result = model.result(&grid, &clamped, &slip_from_clamp, increments, iterations);
+        let steps =
+            (((force - from) / gross * mesh.force_increments as f64).ceil() as usize).max(1);
+        let (slip_from_clamp, taken, iterated) = model
+            .advance(&clamped, force, stick, steps)
+            .map_err(|e| unsolved_force_step(&params, &model, force, &e))?;
+        increments += taken;
+        iterations += iterated;
+        let result = lap_answer(
+            &model,
+            &grid,
+            &clamped,
+            &slip_from_clamp,
+            (increments, iterations),
+            params.width,
+        );
         let finite = result.delta.is_finite()
             && result.clamping_delta.is_finite()
             && [&result.slip, &result.shear, &result.contact_pressure]
@@ -525,11 +496,11 @@ mod tests {
             };
             let grid = Grid::new(&params, mesh);
             let (pairs, elements) = Grid::counts(&params, mesh);
-            assert_eq!(pairs, grid.pairs());
-            let built = layers * (grid.inner.xs.len() + grid.cover.xs.len() - 2);
+            assert_eq!(pairs, grid.two.pairs());
+            let built = layers * (grid.two.lower.xs.len() + grid.two.upper.xs.len() - 2);
             assert_eq!(elements, built);
-            let mut seen = vec![0; grid.unknowns];
-            for body in [&grid.inner, &grid.cover] {
+            let mut seen = vec![0; grid.two.unknowns];
+            for body in [&grid.two.lower, &grid.two.upper] {
                 for dofs in body.node_dofs() {
                     for d in dofs {
                         seen[d] += 1;
@@ -537,17 +508,17 @@ mod tests {
                 }
             }
             // Each pair's normal unknown is shared by two nodes; every other is one node's.
-            assert_eq!(seen.iter().filter(|&&c| c == 2).count(), grid.pairs());
+            assert_eq!(seen.iter().filter(|&&c| c == 2).count(), grid.two.pairs());
             assert!(seen.iter().all(|&c| c == 1 || c == 2));
             // The overlap runs over [0, L] in both bodies, with matching nodes.
-            assert_eq!(grid.pair_x[0], 0.0);
-            assert_eq!(*grid.pair_x.last().unwrap(), params.length);
-            let faces: f64 = grid.pair_weights.iter().sum();
+            assert_eq!(grid.two.pair_x[0], 0.0);
+            assert_eq!(*grid.two.pair_x.last().unwrap(), params.length);
+            let faces: f64 = grid.two.pair_weights.iter().sum();
             assert!((faces / params.length - 1.0).abs() < 1e-12);
             // The cover's extension reaches x = -H, the inner plate's x = L + H.
             let h = 2.0 * (params.inner_thickness + params.cover_thickness);
-            assert_eq!(grid.cover.xs[0], -h);
-            assert!((grid.inner.xs.last().unwrap() - params.length - h).abs() < 1e-12);
+            assert_eq!(grid.two.upper.xs[0], -h);
+            assert!((grid.two.lower.xs.last().unwrap() - params.length - h).abs() < 1e-12);
         }
     }
 
@@ -570,7 +541,7 @@ mod tests {
             let integral: f64 = state
                 .shear
                 .iter()
-                .zip(&grid.pair_weights)
+                .zip(&grid.two.pair_weights)
                 .map(|((_, tau), w)| tau * w)
                 .sum::<f64>()
                 * JOINT.width;

@@ -5,6 +5,7 @@
 
 pub mod choice;
 pub mod closed_form;
+pub mod continuum;
 pub mod cross_check;
 pub mod cycle;
 pub mod discretized;
@@ -18,6 +19,10 @@ pub mod stiffness_answer;
 pub mod validity;
 pub mod zoned;
 
+pub use continuum::{
+    BeamsContinuumMesh, ContinuumBeams, beams_continuum_deflections, solve_beams_continuum,
+    solve_beams_continuum_path,
+};
 pub use discretized::{InterfaceSample, TwinBeamsFe};
 pub use problem::TwinBeamsProblem;
 

@@ -1,16 +1,19 @@
-//! The twin beams as a [`Problem`]: the one place the generic layers' view of them (parameter
-//! values by index, the model, both laws' solutions) is mapped onto their own types.
+//! The twin beams as a [`Problem`] and a [`Continuum`]: the one place the generic layers' view
+//! of them (parameter values by index, the model, both laws' solutions, the plane-stress
+//! reference) is mapped onto their own types.
 
 use super::DESCRIPTION;
 use super::closed_form::{CoulombBeams, RegularizedBeams, TipForce, TwinBeams};
+use super::continuum::{BeamsContinuumMesh, ContinuumBeams, solve_beams_continuum};
 use super::params::{BeamParam, TwinBeamsParams};
 use crate::kernel::params::{ParamError, ParamSpec};
+use crate::numeric::NumericError;
 use crate::problems::choice::AnyChoice;
 use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
 use crate::problems::fittable::{AnyFittable, FittableOf};
 use crate::problems::inputs::InterfaceData;
 use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
-use crate::problems::problem::{Laws, ParamKey, Problem};
+use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
 use crate::problems::zoned::{AnyZoned, ZonedOf};
 use crate::problems::{Description, Quantity};
 
@@ -119,6 +122,10 @@ impl Problem for TwinBeamsProblem {
         }
     }
 
+    fn continuum() -> Option<&'static dyn AnyContinuum> {
+        Some(&ContinuumOf::<TwinBeamsProblem>::NEW)
+    }
+
     fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
         Some(&LoadDrivenOf::<TwinBeamsProblem>::NEW)
     }
@@ -143,6 +150,24 @@ impl Problem for TwinBeamsProblem {
     enum_bridges!(Beam);
 }
 
+impl Continuum for TwinBeamsProblem {
+    type Mesh = BeamsContinuumMesh;
+    type Reference = ContinuumBeams;
+
+    /// The same beams whatever their beam theory (the continuum has none).
+    fn solve_continuum(
+        model: &BeamsModel,
+        mesh: BeamsContinuumMesh,
+    ) -> Result<ContinuumBeams, NumericError> {
+        solve_beams_continuum(model.beams.params(), model.force.newtons(), mesh)
+    }
+
+    /// The tip deflection w(L): the closed form's and the deck's.
+    fn continuum_response(reference: &ContinuumBeams) -> f64 {
+        reference.tip_deflection
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -152,8 +177,18 @@ mod tests {
     #[test]
     fn the_beams_are_registered_and_answer_the_same_erased_as_typed() {
         checks::registered::<TwinBeamsProblem>();
-        // No 2-D continuum of the beams yet (issue 33).
-        assert!(TwinBeamsProblem::continuum().is_none());
+        // The erased continuum is the typed one, on the default mesh.
+        let model = crate::problems::inputs::Inputs::paper(ModelKind::Beam)
+            .validate()
+            .unwrap();
+        let erased = TwinBeamsProblem::continuum()
+            .and_then(|c| c.response(&model))
+            .unwrap()
+            .unwrap();
+        let typed =
+            solve_beams_continuum(TwinBeamsParams::PAPER, 100.0, BeamsContinuumMesh::default())
+                .unwrap();
+        assert_eq!(erased.to_bits(), typed.tip_deflection.to_bits());
         checks::erased_answers_as_typed(ModelKind::Beam, |v| {
             let beams = TwinBeams::new(TwinBeamsParams {
                 length: v("L"),

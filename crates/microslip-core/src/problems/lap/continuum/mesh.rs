@@ -4,9 +4,10 @@
 //! unknown.
 
 use super::{LAP_POISSON, LapContinuumMesh, decay_rate};
-use crate::numeric::grid::{Q8Grid, edge_weights};
+use crate::numeric::grid::Q8Grid;
 use crate::numeric::mesh::graded_toward_end;
 use crate::numeric::q8::plane_stress;
+use crate::numeric::two_body::TwoBodyGrid;
 use crate::problems::lap::params::LapParams;
 
 /// Growth ratio of neighbouring elements along x (the deck's).
@@ -129,20 +130,16 @@ pub fn lap_breaks(p: &LapParams, layers: usize) -> LapBreaks {
     }
 }
 
-/// Both bodies and the interface.
+/// Both bodies and the interface: the inner plate's half below, the cover above
+/// (`numeric::two_body`).
 #[derive(Debug, Clone)]
 pub(super) struct Grid {
-    pub(super) inner: Q8Grid,
-    pub(super) cover: Q8Grid,
+    /// The inner plate (lower) and the cover (upper), numbered across both.
+    pub(super) two: TwoBodyGrid,
     /// Elements along the overlap.
     pub(super) overlap_elements: usize,
-    pub(super) unknowns: usize,
-    pub(super) bandwidth: usize,
     /// Fixed unknowns: v on the symmetry plane, u and v on the cover's held end.
     pub(super) fixed: Vec<usize>,
-    /// x (mm) and share of the face (mm per mm of width) of each interface pair.
-    pub(super) pair_x: Vec<f64>,
-    pub(super) pair_weights: Vec<f64>,
 }
 
 impl Grid {
@@ -184,92 +181,30 @@ impl Grid {
         let mut xs_inner = overlap.clone();
         xs_inner.extend(&inner_extension[1..]);
         let overlap_elements = overlap.len() - 1;
-        let mut cover = Q8Grid::new(
+        let cover = Q8Grid::new(
             xs_cover,
             ys_cover,
             0,
             plane_stress(p.cover_modulus, LAP_POISSON),
         );
-        let mut inner = Q8Grid::new(
+        let inner = Q8Grid::new(
             xs_inner,
             ys_inner,
             2 * before,
             plane_stress(p.inner_modulus, LAP_POISSON),
         );
 
-        // Column by column across both bodies, the inner plate's points first: the pairs' shared
-        // normal unknown is the inner plate's top point's.
-        let total = inner.first_column + inner.columns();
-        let mut next = 0;
-        let top = inner.rows() - 1;
-        for g in 0..total {
-            if g >= inner.first_column {
-                let i = g - inner.first_column;
-                for j in 0..inner.rows() {
-                    if Q8Grid::is_node(i, j) {
-                        inner.set_dof(i, j, [next, next + 1]);
-                        next += 2;
-                    }
-                }
-            }
-            if g < cover.columns() {
-                for j in 0..cover.rows() {
-                    if !Q8Grid::is_node(g, j) {
-                        continue;
-                    }
-                    if j == 0 && g >= inner.first_column {
-                        let [_, v] = inner.dof(g - inner.first_column, top);
-                        cover.set_dof(g, 0, [next, v]);
-                        next += 1;
-                    } else {
-                        cover.set_dof(g, j, [next, next + 1]);
-                        next += 2;
-                    }
-                }
-            }
-        }
-        let mut bandwidth = inner.bandwidth().max(cover.bandwidth());
-        let mut fixed: Vec<usize> = (0..inner.columns()).map(|i| inner.dof(i, 0)[1]).collect();
-        for j in 0..cover.rows() {
-            fixed.extend(cover.dof(0, j));
-        }
-        let weights = edge_weights(&overlap);
-        let pair_x: Vec<f64> = (0..weights.len())
-            .map(|i| {
-                if i % 2 == 0 {
-                    overlap[i / 2]
-                } else {
-                    0.5 * (overlap[i / 2] + overlap[i / 2 + 1])
-                }
-            })
+        let two = TwoBodyGrid::new(inner, cover, 0);
+        let mut fixed: Vec<usize> = (0..two.lower.columns())
+            .map(|i| two.lower.dof(i, 0)[1])
             .collect();
-        for i in 0..pair_x.len() {
-            let [a, _] = inner.dof(i, top);
-            let [b, _] = cover.dof(inner.first_column + i, 0);
-            bandwidth = bandwidth.max(a.abs_diff(b));
+        for j in 0..two.upper.rows() {
+            fixed.extend(two.upper.dof(0, j));
         }
         Grid {
-            inner,
-            cover,
+            two,
             overlap_elements,
-            unknowns: next,
-            bandwidth,
             fixed,
-            pair_x,
-            pair_weights: weights,
         }
-    }
-
-    pub(super) fn pairs(&self) -> usize {
-        self.pair_x.len()
-    }
-
-    /// The inner plate's and the cover's u unknowns of pair `i`.
-    pub(super) fn pair_dofs(&self, i: usize) -> (usize, usize) {
-        let top = self.inner.rows() - 1;
-        (
-            self.inner.dof(i, top)[0],
-            self.cover.dof(self.inner.first_column + i, 0)[0],
-        )
     }
 }

@@ -1,39 +1,68 @@
-//! The interface problem on the lap joint's m pair slips at given strengths (the Newton driver's
-//! model, `numeric::newton`), the fixed point on its contact forces, and the state it reports.
+//! The interface problem on the m pair slips at given strengths ([`Reduced`], the Newton driver's
+//! model, `numeric::newton`), the fixed point on its contact forces and the load path.
 
 use std::cell::RefCell;
 
-use super::condensed::Condensed;
-use super::mesh::Grid;
-use super::*;
+use super::Condensed;
+use crate::numeric::NumericError;
 use crate::numeric::banded::{BandCholesky, NotPositiveDefinite, SymmetricBand};
 use crate::numeric::interface::{InterfacePoint, Response};
 use crate::numeric::newton::{self, Discretized};
 
+/// Fixed-point iterations allowed on the contact forces per increment. The iteration contracts
+/// at a rate set by how much the strengths move the contact forces, which grows with mu: on the
+/// bundled lap joint a few iterations at mu = 0.3, but about 0.85 per iteration at mu = 2 near
+/// F = 10 kN with the covers lifting at x = 0 (about 130 iterations; 60 failed there, issue
+/// 36). Each iteration is one Newton solve on the pairs, mostly with a kept factor.
+const MAX_CONTACT_ITERATIONS: usize = 400;
+/// Times a load increment whose fixed point fails may be halved.
+const MAX_CUTS: u32 = 6;
+/// The bounds of the contact forces' relaxation (Aitken's factor is clamped to them).
+const MIN_RELAXATION: f64 = 1.0 / 64.0;
+const MAX_RELAXATION: f64 = 2.0;
+/// Change of the contact forces, relative to the largest, that ends the fixed point.
+const CONTACT_TOLERANCE: f64 = 1e-10;
+
+/// Refuses a loading path whose forces decrease (friction is path-dependent: unloading is
+/// another problem).
+///
+/// # Errors
+/// [`NumericError::OutOfRange`] saying so.
+pub(crate) fn check_path(forces: &[f64]) -> Result<(), NumericError> {
+    if forces.windows(2).any(|w| w[1] < w[0]) {
+        return Err(NumericError::OutOfRange(
+            "the forces of one loading path must not decrease (friction is path-dependent: \
+             unloading is another problem)"
+                .into(),
+        ));
+    }
+    Ok(())
+}
+
 /// The interface problem on the m pair slips at given strengths: the Newton driver's model.
-pub(super) struct Reduced<'a> {
-    pub(super) c: &'a Condensed,
+pub(crate) struct Reduced<'a> {
+    pub(crate) c: &'a Condensed,
     friction: f64,
+    /// The first load's magnitude (P, MPa): the load parameter of the first stage is its
+    /// fraction.
     pressure: f64,
     /// The slips of the loads with every pair elastic and no plastic slip: base + load x unit.
     base: Vec<f64>,
     unit: Vec<f64>,
-    /// Contact forces and Delta the same way.
+    /// Contact forces and the reading the same way.
     contact_base: Vec<f64>,
     contact_unit: Vec<f64>,
-    delta_base: f64,
-    delta_unit: f64,
+    reading_base: f64,
+    reading_unit: f64,
     /// Jenkins strengths, mu times the contact forces of the fixed point's last iterate.
     strengths: Vec<f64>,
     points: Vec<InterfacePoint>,
-    pub(super) slip: Vec<f64>,
-    pub(super) load: f64,
-    /// Residual scale (N/mm): the clamping force per width plus the transferred force per width.
+    pub(crate) slip: Vec<f64>,
+    pub(crate) load: f64,
+    /// Residual scale (N/mm per mm of width): the problem's force per width.
     scale: f64,
-    /// Joint width b (mm).
-    width: f64,
-    /// Delta's reading at the end of the clamping step (mm).
-    clamping_delta: f64,
+    /// The reading at the end of the first stage (mm).
+    first_reading: f64,
     /// The factored tangent and the sliding set it belongs to: the tangent S + diag(k_t - k)
     /// depends on nothing else, and the fixed point's solves mostly repeat the set.
     factor: RefCell<Option<(Vec<bool>, BandCholesky)>>,
@@ -41,51 +70,52 @@ pub(super) struct Reduced<'a> {
 
 /// A committed state of [`Reduced`], to restart an increment from.
 #[derive(Debug, Clone)]
-pub(super) struct State {
-    points: Vec<InterfacePoint>,
-    pub(super) slip: Vec<f64>,
+pub(crate) struct State {
+    pub(crate) points: Vec<InterfacePoint>,
+    pub(crate) slip: Vec<f64>,
     load: f64,
 }
 
 impl<'a> Reduced<'a> {
-    pub(super) fn new(c: &'a Condensed, p: &LapParams, force: f64) -> Reduced<'a> {
+    /// The interface of `c` with friction coefficient `friction` under the first load of
+    /// magnitude `pressure`, the residual measured against `scale` (N per mm of width); the load
+    /// parameter is the fraction of `pressure` until [`Reduced::start_force_step`].
+    pub(crate) fn new(c: &'a Condensed, friction: f64, pressure: f64, scale: f64) -> Reduced<'a> {
         let m = c.pairs;
-        let scale = p.pressure * p.length + force / (2.0 * p.width);
         Reduced {
             c,
-            friction: p.friction,
-            pressure: p.pressure,
+            friction,
+            pressure,
             base: vec![0.0; m],
-            unit: c.slip_p.iter().map(|s| s * p.pressure).collect(),
+            unit: c.slip_p.iter().map(|s| s * pressure).collect(),
             contact_base: vec![0.0; m],
-            contact_unit: c.contact_p.iter().map(|s| s * p.pressure).collect(),
-            delta_base: 0.0,
-            delta_unit: c.delta_p * p.pressure,
+            contact_unit: c.contact_p.iter().map(|s| s * pressure).collect(),
+            reading_base: 0.0,
+            reading_unit: c.reading_p * pressure,
             strengths: vec![0.0; m],
             points: vec![InterfacePoint::default(); m],
             slip: vec![0.0; m],
             load: 0.0,
             scale,
-            width: p.width,
-            clamping_delta: 0.0,
+            first_reading: 0.0,
             factor: RefCell::new(None),
         }
     }
 
     /// After the clamping step: P held, the load parameter becomes F (N) from 0.
-    pub(super) fn start_force_step(&mut self) {
-        self.clamping_delta = self.delta();
+    pub(crate) fn start_force_step(&mut self) {
+        self.first_reading = self.reading();
         let p = self.pressure;
         self.base = self.c.slip_p.iter().map(|s| s * p).collect();
         self.unit = self.c.slip_f.clone();
         self.contact_base = self.c.contact_p.iter().map(|s| s * p).collect();
         self.contact_unit = self.c.contact_f.clone();
-        self.delta_base = self.c.delta_p * p;
-        self.delta_unit = self.c.delta_f;
+        self.reading_base = self.c.reading_p * p;
+        self.reading_unit = self.c.reading_f;
         self.load = 0.0;
     }
 
-    pub(super) fn state(&self) -> State {
+    pub(crate) fn state(&self) -> State {
         State {
             points: self.points.clone(),
             slip: self.slip.clone(),
@@ -93,21 +123,21 @@ impl<'a> Reduced<'a> {
         }
     }
 
-    pub(super) fn restore(&mut self, state: &State) {
+    pub(crate) fn restore(&mut self, state: &State) {
         self.points.clone_from(&state.points);
         self.slip.clone_from(&state.slip);
         self.load = state.load;
     }
 
     /// The plastic slips q_i (mm) of the committed state.
-    pub(super) fn plastic(&self) -> impl Iterator<Item = f64> + '_ {
+    pub(crate) fn plastic(&self) -> impl Iterator<Item = f64> + '_ {
         self.points.iter().map(|p| p.plastic_slip)
     }
 
     /// The contact forces of the committed state (N per mm of width): linear in the load and the
     /// pairs' Jenkins forces t_j = k_j (s_j - q_j). With t = S (s_f - s) the body's answer to the
     /// pair forces, the contact is the elastic contact minus R K0^-1 B^T times (t - k s) = -k q.
-    pub(super) fn contact_forces(&self) -> Vec<f64> {
+    pub(crate) fn contact_forces(&self) -> Vec<f64> {
         let m = self.c.pairs;
         let kq: Vec<f64> = self
             .plastic()
@@ -124,13 +154,14 @@ impl<'a> Reduced<'a> {
             .collect()
     }
 
-    pub(super) fn delta(&self) -> f64 {
-        self.delta_base
-            + self.load * self.delta_unit
+    /// The problem's reading of the committed state (mm).
+    pub(crate) fn reading(&self) -> f64 {
+        self.reading_base
+            + self.load * self.reading_unit
             + self
                 .plastic()
                 .zip(&self.c.stiffness)
-                .zip(&self.c.delta_per_pair)
+                .zip(&self.c.reading_per_pair)
                 .map(|((q, k), d)| d * k * q)
                 .sum::<f64>()
     }
@@ -138,7 +169,7 @@ impl<'a> Reduced<'a> {
     /// One increment to `load`; when its fixed point fails (nothing is committed then), two
     /// half increments, down to `cuts_left` halvings: a closer start is what the fixed point
     /// needs where the covers lift off (mu = 4 near 0.5 F_gross on the bundled joint, issue 36).
-    pub(super) fn step_with_cuts(
+    pub(crate) fn step_with_cuts(
         &mut self,
         load: f64,
         cuts_left: u32,
@@ -164,7 +195,7 @@ impl<'a> Reduced<'a> {
 
     /// One increment to `load`: the fixed point on the contact forces, each iterate solved by
     /// Newton from the state committed at the previous increment. Returns the iterations.
-    pub(super) fn step(&mut self, load: f64) -> Result<usize, NumericError> {
+    pub(crate) fn step(&mut self, load: f64) -> Result<usize, NumericError> {
         let start = self.state();
         // First guess: the contact forces at the start of the increment, moved elastically.
         let mut contact: Vec<f64> = self
@@ -227,7 +258,7 @@ impl<'a> Reduced<'a> {
     /// s = s_clamped + F s_F, so each pair's Jenkins force is t_c + F k s_F and its contact force
     /// c_c + F c_F: the pair sticks while |t_c + F k s_F| <= mu (c_c + F c_F), two inequalities
     /// linear in F. A pair already at its strength and loaded further gives 0.
-    pub(super) fn stick_limit(&self) -> f64 {
+    pub(crate) fn stick_limit(&self) -> f64 {
         let contact = self.contact_forces();
         let mut limit = f64::INFINITY;
         for (i, c) in contact.iter().enumerate() {
@@ -252,7 +283,7 @@ impl<'a> Reduced<'a> {
     /// Commits the stick state at `force` (N, at most [`Reduced::stick_limit`]) after the
     /// clamping state `clamped`; returns the slips from the clamped state, F s_F, computed as
     /// such rather than as a difference of two nearly equal totals.
-    pub(super) fn stick_at(&mut self, clamped: &State, force: f64) -> Vec<f64> {
+    pub(crate) fn stick_at(&mut self, clamped: &State, force: f64) -> Vec<f64> {
         let increment: Vec<f64> = self.unit.iter().map(|u| force * u).collect();
         self.restore(clamped);
         self.slip = clamped
@@ -265,115 +296,85 @@ impl<'a> Reduced<'a> {
         increment
     }
 
-    /// The state's answer; `slip_from_clamp` is s - s_clamped at each pair (mm).
-    pub(super) fn result(
-        &self,
-        grid: &Grid,
-        clamped: &State,
-        slip_from_clamp: &[f64],
-        increments: usize,
-        iterations: usize,
-    ) -> ContinuumLap {
-        let c = self.c;
-        let contact = self.contact_forces();
-        let weights = &grid.pair_weights;
-        let xs = &grid.pair_x;
-        let slip: Vec<(f64, f64)> = xs
-            .iter()
-            .zip(slip_from_clamp)
-            .map(|(&x, ds)| (x, *ds))
-            .collect();
-        let forces: Vec<f64> = self
-            .slip
+    /// The friction coefficient mu.
+    pub(crate) fn friction(&self) -> f64 {
+        self.friction
+    }
+
+    /// The first load's magnitude (P, MPa).
+    pub(crate) fn pressure(&self) -> f64 {
+        self.pressure
+    }
+
+    /// The reading at the end of the first stage (mm).
+    pub(crate) fn first_reading(&self) -> f64 {
+        self.first_reading
+    }
+
+    /// The pairs' Jenkins forces t_i = k_i (s_i - q_i) of the committed state (N per mm of
+    /// width), positive where the lower body's u exceeds the upper body's.
+    pub(crate) fn pair_forces(&self) -> Vec<f64> {
+        self.slip
             .iter()
             .zip(self.plastic())
-            .zip(&c.stiffness)
+            .zip(&self.c.stiffness)
             .map(|((s, q), k)| k * (s - q))
-            .collect();
-        let shear: Vec<(f64, f64)> = xs
-            .iter()
-            .zip(forces.iter().zip(weights))
-            .map(|(&x, (t, w))| (x, t / w))
-            .collect();
-        let contact_pressure: Vec<(f64, f64)> = xs
-            .iter()
-            .zip(contact.iter().zip(weights))
-            .map(|(&x, (n, w))| (x, n / w))
-            .collect();
-        let length = *xs.last().unwrap_or(&0.0);
-        // Nominal: K_T |s| >= mu P, P the nominal pressure, slip from the clamped state.
-        let saturation = self.friction * self.pressure;
-        let nominal = |order: &mut dyn Iterator<Item = usize>| -> f64 {
-            let mut previous: Option<(f64, f64)> = None;
-            for i in order {
-                let (x, s) = slip[i];
-                let level = c.stiffness[i] / weights[i] * s.abs();
-                if level < saturation {
-                    return match previous {
-                        None => x,
-                        Some((x0, l0)) => x0 + (x - x0) * (saturation - l0) / (level - l0),
-                    };
-                }
-                previous = Some((x, level));
-            }
-            previous.map_or(0.0, |(x, _)| x)
-        };
-        let from_start = nominal(&mut (0..slip.len()));
-        let from_end = length - nominal(&mut (0..slip.len()).rev());
-        let nominal_zones = SlidingZones {
-            from_inner_end: from_start,
-            from_cover_ends: from_end,
-        };
-        // Local: |tau| >= (1 - 1e-3) mu p, at node resolution.
-        let sliding = |i: usize| {
-            let p = contact_pressure[i].1;
-            p > 0.0 && shear[i].1.abs() >= (1.0 - LOCAL_SLIDING) * self.friction * p
-        };
-        let last_of_run = |order: &mut dyn Iterator<Item = usize>| -> Option<usize> {
-            let mut last = None;
-            for i in order {
-                if !sliding(i) {
-                    break;
-                }
-                last = Some(i);
-            }
-            last
-        };
-        let local_zones = SlidingZones {
-            from_inner_end: last_of_run(&mut (0..xs.len())).map_or(0.0, |i| xs[i]),
-            from_cover_ends: last_of_run(&mut (0..xs.len()).rev()).map_or(0.0, |i| length - xs[i]),
-        };
-        // Delta from the clamped state as F s_F's reading plus the plastic slips' change, not as
-        // a difference of totals: P alone gives about 1.7e-3 mm on the bundled joint, whose
-        // round-off (4e-19 mm) swallowed Delta at F = 1e-14 N (issue 36).
-        let delta = self.load * self.delta_unit
+            .collect()
+    }
+
+    /// The change of the reading from the first stage's end `clamped` (mm): F times its
+    /// elastic reading plus the plastic slips' change, not a difference of totals (which loses
+    /// the digits of a small F against the first stage's reading).
+    pub(crate) fn reading_from(&self, clamped: &State) -> f64 {
+        let c = self.c;
+        self.load * self.reading_unit
             + self
                 .plastic()
                 .zip(clamped.points.iter())
                 .zip(&c.stiffness)
-                .zip(&c.delta_per_pair)
+                .zip(&c.reading_per_pair)
                 .map(|(((q, q0), k), d)| d * k * (q - q0.plastic_slip))
-                .sum::<f64>();
-        ContinuumLap {
-            force: self.load,
-            delta,
-            clamping_delta: self.clamping_delta,
-            separated: contact
-                .iter()
-                .zip(xs)
-                .filter(|(n, _)| **n < 0.0)
-                .map(|(_, &x)| x)
-                .collect(),
-            transferred_force: self.width * forces.iter().sum::<f64>(),
-            slip,
-            shear,
-            contact_pressure,
-            nominal_zones,
-            local_zones,
-            increments,
-            iterations,
-            pairs: c.pairs,
+                .sum::<f64>()
+    }
+
+    /// Moves the driving load from its committed value to `force` (N): at or below `stick`
+    /// ([`Reduced::stick_limit`] from `clamped`, the first stage's end) exactly, as the clamped
+    /// state plus F times the unit-force solution; beyond it in `steps` equal increments, each
+    /// halved up to [`MAX_CUTS`] times when it fails. Returns the slips from `clamped` at each
+    /// pair (mm), the increments taken and the fixed point's iterations.
+    ///
+    /// # Errors
+    /// The failing increment's [`NumericError`] (the committed state is the last that
+    /// converged).
+    pub(crate) fn advance(
+        &mut self,
+        clamped: &State,
+        force: f64,
+        stick: f64,
+        steps: usize,
+    ) -> Result<(Vec<f64>, usize, usize), NumericError> {
+        if force <= stick {
+            // Below first slip the answer is the clamped state plus F times the unit-force
+            // solution, exactly: no increment can lose F's digits against the clamping state.
+            return Ok((self.stick_at(clamped, force), 1, 0));
         }
+        let from = self.load;
+        let mut iterations = 0;
+        for i in 1..=steps {
+            let target = if i == steps {
+                force
+            } else {
+                from + (force - from) * i as f64 / steps as f64
+            };
+            iterations += self.step_with_cuts(target, MAX_CUTS)?;
+        }
+        let slip = self
+            .slip
+            .iter()
+            .zip(&clamped.slip)
+            .map(|(s, s0)| s - s0)
+            .collect();
+        Ok((slip, steps, iterations))
     }
 }
 
