@@ -16,7 +16,8 @@ pub(super) fn build_deck(
     } else {
         StickSlope::Model
     };
-    let (_, loaded) = load(&deck.inputs, model, command)?;
+    let inputs = with_bench_preset(&deck.inputs, model);
+    let (_, loaded) = load(&inputs, model, command)?;
     let request = DeckRequest {
         loads: deck.loads.as_deref(),
         mesh: deck.mesh,
@@ -44,6 +45,39 @@ pub(super) fn build_deck(
         DeckError::Usage(why) => CliError::Usage(why),
         DeckError::TooLarge(e) => CliError::Invalid(e.to_string()),
     })
+}
+
+/// `inputs`, or where they name no preset, the problem's benchmark preset ([`Deck::BENCH_PRESET`]),
+/// said on stderr with why: `deck` and `bench` default to a case where the judge is sharp.
+///
+/// [`Deck::BENCH_PRESET`]: crate::fe::face::Deck::BENCH_PRESET
+fn with_bench_preset(inputs: &InputArgs, model: ModelKind) -> InputArgs {
+    let mut inputs = inputs.clone();
+    if inputs.preset.is_some() {
+        return inputs;
+    }
+    let (name, why) = for_problem(model, BenchPreset).unwrap_or((
+        model.description().paper_preset,
+        "the paper's data set, the benchmark's bundled case",
+    ));
+    eprintln!(
+        "microslip: the {} deck is the preset {name} ({why}); --preset names another",
+        model.name()
+    );
+    inputs.preset = Some(name.to_string());
+    inputs
+}
+
+/// The problem's [`Deck::BENCH_PRESET`](crate::fe::face::Deck::BENCH_PRESET), for
+/// [`for_problem`].
+struct BenchPreset;
+
+impl ForProblem for BenchPreset {
+    type Output = Option<(&'static str, &'static str)>;
+
+    fn run<P: Faces>(self) -> Self::Output {
+        P::BENCH_PRESET
+    }
 }
 
 /// [`build_deck`]'s model and request, for [`for_problem`].

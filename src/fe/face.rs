@@ -70,6 +70,12 @@ pub trait Deck: Problem + Registered {
     /// What the note on flags a deck's header overrides adds for the problem (the beams':
     /// `compare` shows both beam theories); empty for most.
     const OVERRIDES_NOTE: &'static str = "";
+
+    /// The bundled preset `deck` and `bench` write when no `--preset` is given, and why: a case
+    /// where the FE judge is sharp (the closed form within its tightest envelope, K_T resolved
+    /// within a few % by the verdict against the continuum). `None`: the paper's preset
+    /// ([`crate::problems::Description::paper_preset`]).
+    const BENCH_PRESET: Option<(&'static str, &'static str)> = None;
 }
 
 /// What a deck is asked to be: the command line's `--loads`, `--mesh`, stick slope and

@@ -314,6 +314,13 @@ impl Deck for SqueezedPlateProblem {
         plate_points_from_csv(text)
     }
 
+    const BENCH_PRESET: Option<(&'static str, &'static str)> = Some((
+        "plate-bench",
+        "the paper's plate at K_T = 1e4 MPa/mm: the strip theory holds there and u(L) tells K_T \
+         within +-0.6 %; at the paper's 1e6 the strip theory is 48 % off and u(L) tells K_T \
+         within +-2.4 % only",
+    ));
+
     fn compare(
         plate: &SqueezedPlate,
         points: &[PlateFePoint],
