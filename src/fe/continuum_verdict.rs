@@ -263,3 +263,84 @@ pub fn judged<P: ContinuumJudged>(
 ) -> Result<ContinuumVerdict, NotSolved> {
     judge::<P>(model, fe).map_err(|_| NotSolved)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::problems::plate::closed_form::SqueezedPlate;
+    use crate::problems::plate::params::{PlateParam, PlateParams};
+    use crate::problems::plate::problem::SqueezedPlateProblem;
+
+    fn plate(kt: f64) -> SqueezedPlate {
+        SqueezedPlate::new(PlateParams::PAPER)
+            .unwrap()
+            .with_clamped(PlateParam::Stiffness, kt)
+    }
+
+    /// The continuum's u(L) of the paper's plate at `kt`, solved directly.
+    fn continuum_u(kt: f64) -> f64 {
+        let reference =
+            SqueezedPlateProblem::solve_continuum(&plate(kt), Default::default()).unwrap();
+        SqueezedPlateProblem::continuum_response(&reference)
+    }
+
+    /// An "FE code" whose stick slope is 10 % off: its u(L) is the continuum's at 1.1 K_T (and
+    /// 0.9 K_T). The verdict must say it disagrees, and imply that stick slope, not the deck's.
+    #[test]
+    fn a_stick_slope_ten_percent_off_is_caught_and_implied() {
+        let deck = 1e4;
+        for factor in [1.1, 0.9] {
+            let fe = continuum_u(factor * deck);
+            let v = judge::<SqueezedPlateProblem>(&plate(deck), fe).unwrap();
+            assert!(!v.agrees(), "{factor}: {v:?}");
+            let k = v.implied.unwrap();
+            assert!(
+                (k.value / (factor * deck) - 1.0).abs() < 1e-5,
+                "{factor}: {k:?}"
+            );
+            assert!(k.low < k.value && k.value < k.high);
+            // The interval is the tolerance over the local sensitivity: about +-0.6 % here.
+            let half = (k.high / k.low).ln() / 2.0;
+            assert!((0.004..0.008).contains(&half), "{half}");
+        }
+    }
+
+    /// The continuum's own value agrees and implies the deck's K_T; the sensitivity is the
+    /// slope of ln u against ln K_T measured over a wider step (u falls with K_T (P10)), and
+    /// the resolution is the tolerance over it.
+    #[test]
+    fn the_continuum_agrees_with_itself_and_states_its_resolution() {
+        let deck = 1e4;
+        let v = judge::<SqueezedPlateProblem>(&plate(deck), continuum_u(deck)).unwrap();
+        assert!(v.agrees());
+        assert_eq!(v.difference(), 0.0);
+        assert!((v.implied.unwrap().value / deck - 1.0).abs() < 1e-6);
+        let wide = (continuum_u(1.1 * deck) / continuum_u(deck / 1.1)).ln() / (1.21f64).ln();
+        assert!(v.sensitivity < 0.0);
+        assert!(
+            (v.sensitivity / wide - 1.0).abs() < 0.02,
+            "{} {wide}",
+            v.sensitivity
+        );
+        let resolution = v.resolution().unwrap();
+        assert!((resolution - 0.003 / v.sensitivity.abs()).abs() < 1e-12);
+        // Just inside and just outside the tolerance.
+        let inside = judge::<SqueezedPlateProblem>(&plate(deck), continuum_u(deck) * 1.0029);
+        assert!(inside.unwrap().agrees());
+        let outside = judge::<SqueezedPlateProblem>(&plate(deck), continuum_u(deck) * 1.0031);
+        assert!(!outside.unwrap().agrees());
+    }
+
+    /// A value no K_T can give (beyond the free expansion of the plate, or not positive)
+    /// implies none, and the verdict says it disagrees.
+    #[test]
+    fn an_impossible_value_implies_no_stiffness() {
+        let p = PlateParams::PAPER;
+        let free = p.poisson * (1.0 + p.poisson) * p.pressure * p.half_length / p.youngs_modulus;
+        for fe in [2.0 * free, -1e-5] {
+            let v = judge::<SqueezedPlateProblem>(&plate(1e4), fe).unwrap();
+            assert_eq!(v.implied, None, "{fe}");
+            assert!(!v.agrees());
+        }
+    }
+}

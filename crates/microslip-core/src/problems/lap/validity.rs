@@ -185,8 +185,8 @@ pub struct OutOfRange(u16);
 /// What a joint outside each calibrated range is told, in the order they are checked.
 const RANGE_REASONS: [&str; 11] = [
     "lambda L below 1.4: an overlap shorter than 1.4 decay lengths, where no calibrated joint \
-     was (one measured +10 %); the covers stay in contact there (CalculiX and the continuum up \
-     to 0.94 F_gross) but the 1-D error grows with F",
+     was (one measured +10 %); the covers stay pressed on (the continuum's contact pressure \
+     stays positive up to 0.9 F_gross) but it is far from P, and the 1-D error grows with F",
     "mu (t1/2 + t2) / L above 0.3, where the covers bend",
     "lambda t1 outside 0.09 to 4.65",
     "lambda (t1/2 + t2) outside 0.12 to 6.7",
