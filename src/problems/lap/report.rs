@@ -547,6 +547,9 @@ impl LapReport {
                 crate::report::compare::percent(d),
                 Validity::of_error(d.abs()).label(),
                 match bound {
+                    Some(b) if d.abs() <= b => {
+                        format!("bound of {} %", number_with(100.0 * b, 2))
+                    }
                     Some(_) => "bound".to_string(),
                     None if v.outside_calibration_all.is_empty() => {
                         "bound, which no calibration reaches here".to_string()
