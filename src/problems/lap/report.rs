@@ -20,7 +20,7 @@ use crate::report::rows::{LapLoopRow, LapRow};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::{Answer, lap_point};
 
-use super::OutOfRange;
+use super::LapRangesLeft;
 use super::closed_form::{JointForce, LapJoint};
 use super::continuum::ContinuumLap;
 use super::cycle::{LapCycle, MasingCycle};
@@ -363,7 +363,7 @@ pub struct ShearLagReport {
     pub outside_calibration: Option<&'static str>,
     /// Every calibrated range the joint leaves (empty inside them), each as `lap` says it.
     #[serde(serialize_with = "range_names")]
-    pub outside_calibration_all: OutOfRange,
+    pub outside_calibration_all: LapRangesLeft,
     /// The envelope's three terms: the plates' shear compliance r, the clamping prestress q_p
     /// of dissimilar plates, the covers' bending beta (L14).
     pub shear_compliance: f64,
@@ -373,7 +373,7 @@ pub struct ShearLagReport {
 }
 
 /// The ranges a joint leaves as a JSON list of what `lap` tells it.
-fn range_names<S: serde::Serializer>(ranges: &OutOfRange, s: S) -> Result<S::Ok, S::Error> {
+fn range_names<S: serde::Serializer>(ranges: &LapRangesLeft, s: S) -> Result<S::Ok, S::Error> {
     serde::Serialize::serialize(&ranges.names(), s)
 }
 

@@ -42,7 +42,7 @@ pub struct LapValidity {
     /// [`LapValidity::out_of_range`].
     pub outside_calibration: Option<&'static str>,
     /// Every calibrated range the joint leaves.
-    pub out_of_range: OutOfRange,
+    pub out_of_range: LapRangesLeft,
 }
 
 /// The bound's coefficients on (r, q_p, beta, 1), fitted by a linear programme to the 54
@@ -152,7 +152,7 @@ impl LapJoint {
             within(COVER_OVER_INNER_MODULUS, p.cover_modulus / p.inner_modulus),
             force.newtons() <= MAX_LOAD_FRACTION * self.gross_slip_force() * (1.0 + SLACK),
         ];
-        let out_of_range = OutOfRange(
+        let out_of_range = LapRangesLeft(
             checks
                 .iter()
                 .enumerate()
@@ -180,7 +180,7 @@ impl LapJoint {
 /// Every calibrated range a joint leaves (issue 33: a joint outside two was told of one), as
 /// bits in the order of [`RANGE_REASONS`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct OutOfRange(u16);
+pub struct LapRangesLeft(u16);
 
 /// What a joint outside each calibrated range is told, in the order they are checked.
 const RANGE_REASONS: [&str; 11] = [
@@ -200,7 +200,7 @@ const RANGE_REASONS: [&str; 11] = [
     "F above 0.9 F_gross",
 ];
 
-impl OutOfRange {
+impl LapRangesLeft {
     /// Inside every calibrated range.
     pub fn is_empty(self) -> bool {
         self.0 == 0
