@@ -165,7 +165,7 @@ fn implied_stiffness<P: Continuum>(
     known: [(f64, f64); 2],
     tolerance: f64,
 ) -> Option<ImpliedStiffness> {
-    if !(fe > 0.0 && fe.is_finite()) {
+    if fe <= 0.0 || !fe.is_finite() {
         return None;
     }
     let mut solves = 0;
@@ -181,7 +181,8 @@ fn implied_stiffness<P: Continuum>(
     let point = |(k, r): (f64, f64)| (k.ln(), (r / fe).ln());
     let (a, b) = (point(known[0]), point(known[1]));
     let slope = (b.1 - a.1) / (b.0 - a.0);
-    if !(slope < -MIN_SENSITIVITY) {
+    // R must fall with K_T (NaN too is refused).
+    if slope.is_nan() || slope >= -MIN_SENSITIVITY {
         return None;
     }
     let (lo_x, hi_x) = (Domain::STIFFNESS.min().ln(), Domain::STIFFNESS.max().ln());
@@ -238,7 +239,7 @@ fn implied_stiffness<P: Continuum>(
     // The sensitivity at the implied K_T, for the interval.
     let step = (1.0 + SENSITIVITY_STEP).ln();
     let s = (g(root.0 + step)? - root.1) / step;
-    if !(s < -MIN_SENSITIVITY) {
+    if s.is_nan() || s >= -MIN_SENSITIVITY {
         return None;
     }
     let half_width = tolerance / s.abs();
