@@ -47,6 +47,7 @@ fn presets_load_and_save_without_clobbering() {
             "paper-beams",
             "paper-beams-soft",
             "paper-plate",
+            "plate-bench",
             "lap-aluminium",
             "broken"
         ]
