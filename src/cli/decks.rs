@@ -131,12 +131,6 @@ pub(super) fn run_bench(
     format: CompareFormat,
 ) -> Result<(), CliError> {
     let text = build_deck(model, deck, &model_command(model, "bench ccx"))?;
-    if deck.inputs.preset.is_none() {
-        let (_, note) = with_bench_preset(&deck.inputs, model);
-        if let Some(note) = note {
-            eprintln!("microslip: {note}");
-        }
-    }
     // Before the folder is made: a refused --ccx leaves nothing behind.
     let program = fe::run::resolve_program(ccx)?;
     let job = model.name();
@@ -194,6 +188,10 @@ pub(super) fn run_bench(
         started.elapsed().as_secs_f64(),
         files.log.display()
     );
+    // Which case ran, once it ran (an error before stays one line).
+    if let (_, Some(note)) = with_bench_preset(&deck.inputs, model) {
+        eprintln!("microslip: {note}");
+    }
     run_compare(
         out,
         model,
