@@ -178,7 +178,7 @@ impl LapJoint {
 }
 
 /// Every calibrated range a joint leaves (issue 33: a joint outside two was told of one), as
-/// bits in the order of [`RANGE_REASONS`].
+/// bits in the order the ranges are checked.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct LapRangesLeft(u16);
 
