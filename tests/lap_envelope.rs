@@ -74,8 +74,10 @@ fn every_measured_state_inside_the_calibration_is_under_the_bound() {
             s.force
         );
     }
-    // 82 states lie in the domain (C02 and H5 do not); the margin leaves room.
-    assert_eq!(inside, 82);
+    // 73 states lie in the domain: not C02 and H5 (short), nor since issue 33 C08, H2 and H4
+    // (dissimilar plates with E2 t2 / (E1 t1) above 3, where the continuum measured the bound
+    // exceeded on joints the grid did not have); the margin leaves room.
+    assert_eq!(inside, 73);
     assert!(worst < 0.85, "largest measured / bound {worst}");
 }
 
@@ -83,8 +85,9 @@ fn every_measured_state_inside_the_calibration_is_under_the_bound() {
 fn the_fitted_bound_covers_its_calibration_and_the_margin_covers_the_hold_outs() {
     // Without the 1.25 margin, the linear programme's bound (rounded up) is above every
     // calibration state it was fitted on; one state of the first hold-outs exceeded it (by 2.5 %
-    // of itself), which is why the margin is there, and one of the fresh joints, run after the
-    // margin was set, exceeds it too (by 4 %): the margin is needed, not decoration.
+    // of itself: H4, outside the domain since issue 33), which is why the margin is there, and
+    // one of the fresh joints, run after the margin was set, exceeds it too (by 4 %): the margin
+    // is needed, not decoration.
     let mut exceeded = Vec::new();
     for s in states() {
         let (error, v) = judged(&s);
@@ -104,11 +107,7 @@ fn the_fitted_bound_covers_its_calibration_and_the_margin_covers_the_hold_outs()
             exceeded.push(s.joint.clone());
         }
     }
-    assert_eq!(
-        exceeded,
-        ["H4", "J2"],
-        "hold-out states over the fitted bound"
-    );
+    assert_eq!(exceeded, ["J2"], "hold-out states over the fitted bound");
 }
 
 #[test]

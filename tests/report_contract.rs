@@ -504,6 +504,45 @@ regime_fe,Xr_mm,Xr_fe_mm,KT_implied_MPa_per_mm,strip_theory,diff_fraction,diff_c
 diff_mid_thickness_fraction";
 
 /// `compare lap` (issue 24) of CalculiX results: pinned when it was first published.
+/// Issue 33: the FE response against the continuum at the deck's parameters, all rows together
+/// (`compare plate`, `compare lap`).
+const COMPARE_CONTINUUM: &[&str] = &[
+    "continuum: object",
+    "continuum.KT_deck_MPa_per_mm: number",
+    "continuum.KT_implied_MPa_per_mm: number",
+    "continuum.KT_implied_high_MPa_per_mm: number",
+    "continuum.KT_implied_low_MPa_per_mm: number",
+    "continuum.agrees: bool",
+    "continuum.resolution_fraction: number",
+    "continuum.text: string",
+    "continuum.tolerance_fraction: number",
+    "rows[].continuum: object",
+    "rows[].continuum.agrees: bool",
+    "rows[].continuum.diff_fraction: number",
+    "rows[].continuum.resolution_fraction: number",
+    "rows[].continuum.response_mm: number",
+    "rows[].continuum.sensitivity: number",
+    "rows[].continuum.solved: bool",
+    "rows[].continuum.text: string",
+    "rows[].continuum.tolerance_fraction: number",
+];
+
+/// Each row's implied K_T through the continuum: a number where one is implied.
+const COMPARE_CONTINUUM_IMPLIED: &[&str] = &[
+    "rows[].continuum.KT_implied_MPa_per_mm: number",
+    "rows[].continuum.KT_implied_diff_fraction: number",
+    "rows[].continuum.KT_implied_high_MPa_per_mm: number",
+    "rows[].continuum.KT_implied_low_MPa_per_mm: number",
+];
+
+/// ... or null where a row's value no K_T gives (the CSV's made-up points).
+const COMPARE_CONTINUUM_IMPLIED_OR_NOT: &[&str] = &[
+    "rows[].continuum.KT_implied_MPa_per_mm: null|number",
+    "rows[].continuum.KT_implied_diff_fraction: null|number",
+    "rows[].continuum.KT_implied_high_MPa_per_mm: null|number",
+    "rows[].continuum.KT_implied_low_MPa_per_mm: null|number",
+];
+
 const COMPARE_LAP: &[&str] = &[
     "model: string",
     "results: string",
@@ -584,6 +623,8 @@ const LAP: &[&str] = &[
     // Issue 36: the bound under its one name in every output (sweep lap, compare lap).
     "shear_lag.shear_lag_within_fraction: number",
     "shear_lag.outside_calibration: null",
+    // Issue 33: every calibrated range the joint leaves (empty here).
+    "shear_lag.outside_calibration_all: array",
     "shear_lag.shear_compliance: number",
     "continuum: object",
     "continuum.Delta_mm: number",
@@ -941,6 +982,9 @@ const CASES: &[Case] = &[
             COMPARE_PLATE_VERDICT_FE,
             COMPARE_CONTACT,
             COMPARE_CONTACT_NOT_READ,
+
+            COMPARE_CONTINUUM,
+            COMPARE_CONTINUUM_IMPLIED,
         ],
         header: Some(COMPARE_PLATE_HEADER),
     },
@@ -953,6 +997,9 @@ const CASES: &[Case] = &[
             COMPARE_VERDICT,
             COMPARE_CONTACT,
             COMPARE_CONTACT_NOT_READ,
+
+            COMPARE_CONTINUUM,
+            COMPARE_CONTINUUM_IMPLIED,
         ],
         header: Some(COMPARE_LAP_HEADER),
     },
@@ -972,6 +1019,9 @@ const CASES: &[Case] = &[
             COMPARE_PLATE_VERDICT_CSV,
             COMPARE_CONTACT,
             COMPARE_CONTACT_NOT_GIVEN,
+
+            COMPARE_CONTINUUM,
+            COMPARE_CONTINUUM_IMPLIED_OR_NOT,
         ],
         header: Some(COMPARE_PLATE_HEADER),
     },

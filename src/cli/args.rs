@@ -217,7 +217,7 @@ pub enum Command {
 }
 
 /// Where the parameters come from.
-#[derive(Debug, Args)]
+#[derive(Debug, Clone, Args)]
 pub struct InputArgs {
     /// Bundled or user preset name, or a path to a TOML file.
     #[arg(long, value_name = "P")]

@@ -16,7 +16,8 @@ pub(super) fn build_deck(
     } else {
         StickSlope::Model
     };
-    let (_, loaded) = load(&deck.inputs, model, command)?;
+    let (inputs, note) = with_bench_preset(&deck.inputs, model);
+    let (_, loaded) = load(&inputs, model, command)?;
     let request = DeckRequest {
         loads: deck.loads.as_deref(),
         mesh: deck.mesh,
@@ -31,6 +32,10 @@ pub(super) fn build_deck(
         },
     )
     .ok_or_else(|| wrong_model(&deck.inputs, loaded.kind(), model, command))?;
+    let written = written.map(|deck| match &note {
+        Some(note) => with_case_note(&deck, note),
+        None => deck,
+    });
     written.map_err(|e| match e {
         DeckError::Flag {
             flag,
@@ -44,6 +49,61 @@ pub(super) fn build_deck(
         DeckError::Usage(why) => CliError::Usage(why),
         DeckError::TooLarge(e) => CliError::Invalid(e.to_string()),
     })
+}
+
+/// `inputs`, or where they name no preset, the problem's benchmark preset ([`Deck::BENCH_PRESET`])
+/// with the note that says which and why (for stderr once the deck is written): `deck` and
+/// `bench` default to a case where the judge is sharp.
+///
+/// [`Deck::BENCH_PRESET`]: crate::fe::face::Deck::BENCH_PRESET
+fn with_bench_preset(inputs: &InputArgs, model: ModelKind) -> (InputArgs, Option<String>) {
+    let mut inputs = inputs.clone();
+    if inputs.preset.is_some() {
+        return (inputs, None);
+    }
+    let (name, why) = for_problem(model, BenchPreset).unwrap_or((
+        model.description().paper_preset,
+        "the paper's data set, the benchmark's bundled case",
+    ));
+    let note = format!(
+        "Case: the preset {name}, the default of deck and bench for the {}: {why}; --preset \
+         names another",
+        model.name()
+    );
+    inputs.preset = Some(name.to_string());
+    (inputs, Some(note))
+}
+
+/// `deck` with `note` as comment lines (of at most 100 characters: CalculiX reads 132) before
+/// its `*HEADING`, below the header comments `compare` reads.
+fn with_case_note(deck: &str, note: &str) -> String {
+    let mut lines = vec![String::from("**")];
+    for word in note.split(' ') {
+        let last = lines.last_mut().expect("one line at least");
+        if last.len() + word.len() + 1 > 100 {
+            lines.push(format!("** {word}"));
+        } else {
+            last.push(' ');
+            last.push_str(word);
+        }
+    }
+    let comment = lines.join("\n") + "\n";
+    match deck.find("*HEADING") {
+        Some(at) => format!("{}{comment}{}", &deck[..at], &deck[at..]),
+        None => comment + deck,
+    }
+}
+
+/// The problem's [`Deck::BENCH_PRESET`](crate::fe::face::Deck::BENCH_PRESET), for
+/// [`for_problem`].
+struct BenchPreset;
+
+impl ForProblem for BenchPreset {
+    type Output = Option<(&'static str, &'static str)>;
+
+    fn run<P: Faces>(self) -> Self::Output {
+        P::BENCH_PRESET
+    }
 }
 
 /// [`build_deck`]'s model and request, for [`for_problem`].
@@ -128,6 +188,10 @@ pub(super) fn run_bench(
         started.elapsed().as_secs_f64(),
         files.log.display()
     );
+    // Which case ran, once it ran (an error before stays one line).
+    if let (_, Some(note)) = with_bench_preset(&deck.inputs, model) {
+        eprintln!("microslip: {note}");
+    }
     run_compare(
         out,
         model,

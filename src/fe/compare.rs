@@ -6,6 +6,7 @@
 //! so that it measures the interface, not the beam theory. Plate: u(L) against the strip theory,
 //! and per point the K_T whose closed-form u(L) equals the FE value.
 
+use super::continuum_verdict::{ContinuumVerdict, NotSolved};
 use super::results::{BeamFePoint, FeInterface, LapFePoint, PlateFePoint};
 use super::verdict::{Envelope, InterfaceMesh, MeshDifference, StiffnessMatch};
 use crate::fit::{self, FitError, FitResult};
@@ -146,6 +147,9 @@ pub struct PlateCompared {
     pub strip_within: Option<f64>,
     /// FE X_r against the closed form's in elements of the FE mesh (CalculiX results).
     pub micro_zone_end_mesh: Option<MeshDifference>,
+    /// u(L) against the plane-strain continuum at the run's parameters, where it was solved
+    /// (`compare`, `bench`; the TUI's pane leaves it out): the verdict, or why there is none.
+    pub continuum: Option<Result<ContinuumVerdict, NotSolved>>,
 }
 
 impl PlateCompared {
@@ -198,6 +202,9 @@ pub struct LapCompared {
     pub theory_within: Option<f64>,
     /// FE a and d against the closed form's in elements of the FE mesh (CalculiX results).
     pub zones_mesh: Option<[MeshDifference; 2]>,
+    /// Delta against the plane-stress continuum at the deck's parameters and this force, where
+    /// it was solved (`compare`, `bench`): the verdict, or why there is none.
+    pub continuum: Option<Result<ContinuumVerdict, NotSolved>>,
 }
 
 impl LapCompared {

@@ -80,6 +80,12 @@ pub trait Deck: Problem + Registered {
     /// `compared` with its envelope taken away (every bound "not calibrated"): for a run whose
     /// kinematics the envelope was not calibrated on.
     fn without_envelope(compared: &mut Self::Compared);
+
+    /// The bundled preset `deck` and `bench` write when no `--preset` is given, and why: a case
+    /// where the FE judge is sharp (the closed form within its tightest envelope, K_T resolved
+    /// within a few % by the verdict against the continuum). `None`: the paper's preset
+    /// ([`crate::problems::Description::paper_preset`]).
+    const BENCH_PRESET: Option<(&'static str, &'static str)> = None;
 }
 
 /// What a deck is asked to be: the command line's `--loads`, `--mesh`, stick slope and

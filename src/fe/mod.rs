@@ -17,6 +17,7 @@
 //! docs/theory.md, "Benchmarking an FE code"; the measured agreement is in docs/guide.md.
 
 pub mod compare;
+pub mod continuum_verdict;
 pub mod deck;
 pub mod face;
 pub mod header;

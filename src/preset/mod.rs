@@ -209,6 +209,10 @@ const BUNDLED: &[(&str, &str)] = &[
         include_str!("../../presets/paper-plate.toml"),
     ),
     (
+        "plate-bench",
+        include_str!("../../presets/plate-bench.toml"),
+    ),
+    (
         "lap-aluminium",
         include_str!("../../presets/lap-aluminium.toml"),
     ),
@@ -402,12 +406,13 @@ mod tests {
                 "paper-beams",
                 "paper-beams-soft",
                 "paper-plate",
+                "plate-bench",
                 "lap-aluminium",
                 "a",
                 "b"
             ]
         );
-        assert!(rows[5].preset.as_ref().unwrap_err().line == Some(2));
+        assert!(rows[6].preset.as_ref().unwrap_err().line == Some(2));
         assert_eq!(listing(None).len(), BUNDLED.len());
     }
 

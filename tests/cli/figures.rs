@@ -436,7 +436,9 @@ fn the_lap_joint_from_the_command_line() {
         "F_1        = 2015.89 N",
         "at x = L (covers' ends)",
         "macroslip+microslip+macroslip",
-        "Delta within 3.4 % of a continuum (approximate)",
+        // Issue 33: where the continuum was solved, its measured difference replaces the bound.
+        "Delta +1.09 % from the 2-D continuum solved below (holds; measured, in place of the \
+         envelope's bound of 3.4 %)",
         "2-D continuum (plane stress, nu = 0.3",
     ] {
         assert!(text.contains(needed), "{needed}\n{text}");

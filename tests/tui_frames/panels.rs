@@ -97,8 +97,9 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
         solve_continuum: false,
     });
     press(&mut app, Action::OpenPresets);
-    // Bundled: paper-beams, paper-beams-soft (selected), paper-plate, lap-aluminium; then the
-    // user's paper-beams.
+    // Bundled: paper-beams, paper-beams-soft (selected), paper-plate, plate-bench,
+    // lap-aluminium; then the user's paper-beams.
+    press(&mut app, Action::Next);
     press(&mut app, Action::Next);
     press(&mut app, Action::Next);
     press(&mut app, Action::Next);
@@ -119,7 +120,7 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
         message.text
     );
     // The picker stays open; picking the bundled one (first row) loads the bundled values.
-    for _ in 0..4 {
+    for _ in 0..5 {
         press(&mut app, Action::Previous);
     }
     press(&mut app, Action::Commit);

@@ -4,6 +4,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use super::continuum::{self, Check, ContinuumRow, ContinuumSummary};
 use super::verdict::{self, LapRowVerdict, Summary};
 use super::{LapCompareRow, optional, percent_or_na};
 use crate::fe::compare::LapCompared;
@@ -20,6 +21,10 @@ pub struct LapCompareReport {
     pub rows: Vec<LapRowReport>,
     /// The closing verdict.
     pub verdict: Summary,
+    /// The FE response against the continuum at the deck's parameters, all rows together
+    /// (`compare`, `bench`; absent where no row was checked).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub continuum: Option<ContinuumSummary>,
 }
 
 /// One load step: the CSV row's columns and its verdict.
@@ -31,11 +36,23 @@ pub struct LapRowReport {
     #[serde(skip)]
     pub theory_validity: Validity,
     pub verdict: LapRowVerdict,
+    /// This row against the continuum (absent where it was not checked).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub continuum: Option<ContinuumRow>,
 }
 
 impl LapCompareReport {
     /// The report of `rows` of the results named `source`.
     pub fn new(source: &str, rows: &[LapCompared]) -> LapCompareReport {
+        let checks: Vec<(String, Check)> = rows
+            .iter()
+            .map(|r| (format!("F = {} N", number(r.fe.force)), r.continuum))
+            .collect();
+        let continuum = continuum::summary("Delta", &checks);
+        let mut verdict = verdict::lap_summary(rows);
+        if let Some(c) = &continuum {
+            verdict::with_continuum(&mut verdict, c);
+        }
         LapCompareReport {
             model: "lap",
             results: source.to_string(),
@@ -45,9 +62,15 @@ impl LapCompareReport {
                     row: LapCompareRow::from(r),
                     theory_validity: r.theory_validity,
                     verdict: verdict::lap_row(r),
+                    continuum: ContinuumRow::of(
+                        &format!("F = {} N", number(r.fe.force)),
+                        "Delta",
+                        r.continuum,
+                    ),
                 })
                 .collect(),
-            verdict: verdict::lap_summary(rows),
+            verdict,
+            continuum,
         }
     }
 
@@ -114,6 +137,9 @@ impl LapCompareReport {
         );
         for r in &self.rows {
             let _ = writeln!(out, "  {}", r.verdict.text);
+        }
+        if let Some(c) = &self.continuum {
+            out.push_str(&continuum::section(c, "plane-stress continuum (L13)"));
         }
         let _ = writeln!(out, "\n{}", self.verdict.summary);
         out

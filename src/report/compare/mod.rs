@@ -5,6 +5,7 @@
 //! rows' table columns ([`BeamCompareRow`], [`PlateCompareRow`]) without the verdict.
 
 pub mod beam;
+pub mod continuum;
 pub mod lap;
 pub mod plate;
 pub mod stick_slope;

@@ -4,6 +4,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use super::continuum::{self, Check, ContinuumRow, ContinuumSummary};
 use super::verdict::{self, PlateRowVerdict, Summary};
 use super::{PlateCompareRow, UNDEFINED_NOTE, optional, percent, percent_or_na};
 use crate::fe::compare::PlateCompared;
@@ -20,6 +21,10 @@ pub struct PlateCompareReport {
     pub rows: Vec<PlateRowReport>,
     /// The closing verdict.
     pub verdict: Summary,
+    /// The FE response against the continuum at the deck's parameters, all rows together
+    /// (`compare`, `bench`; absent where no row was checked).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub continuum: Option<ContinuumSummary>,
 }
 
 /// One run: the CSV row's columns and its verdict.
@@ -31,11 +36,28 @@ pub struct PlateRowReport {
     #[serde(skip)]
     pub strip_validity: Validity,
     pub verdict: PlateRowVerdict,
+    /// This row against the continuum (absent where it was not checked).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub continuum: Option<ContinuumRow>,
 }
 
 impl PlateCompareReport {
     /// The report of `rows` of the results named `source`.
     pub fn new(source: &str, rows: &[PlateCompared]) -> PlateCompareReport {
+        let checks: Vec<(String, Check)> = rows
+            .iter()
+            .map(|r| {
+                (
+                    format!("K_T = {} MPa/mm", number(r.fe.stiffness)),
+                    r.continuum,
+                )
+            })
+            .collect();
+        let continuum = continuum::summary("u(L)", &checks);
+        let mut verdict = verdict::plate_summary(rows);
+        if let Some(c) = &continuum {
+            verdict::with_continuum(&mut verdict, c);
+        }
         PlateCompareReport {
             model: "plate",
             results: source.to_string(),
@@ -45,9 +67,15 @@ impl PlateCompareReport {
                     row: PlateCompareRow::from(r),
                     strip_validity: r.strip_validity,
                     verdict: verdict::plate_row(r),
+                    continuum: ContinuumRow::of(
+                        &format!("K_T = {} MPa/mm", number(r.fe.stiffness)),
+                        "u(L)",
+                        r.continuum,
+                    ),
                 })
                 .collect(),
-            verdict: verdict::plate_summary(rows),
+            verdict,
+            continuum,
         }
     }
 
@@ -121,6 +149,9 @@ impl PlateCompareReport {
         );
         for r in &self.rows {
             let _ = writeln!(out, "  {}", r.verdict.text);
+        }
+        if let Some(c) = &self.continuum {
+            out.push_str(&continuum::section(c, "plane-strain continuum"));
         }
         let _ = writeln!(out, "\n{}", self.verdict.summary);
         out

@@ -479,6 +479,48 @@ fn summary_without_stiffness(tally: &Tally, names: &Names) -> Summary {
     }
 }
 
+/// `summary` with the verdict against the continuum: its clause first, and its disagreement a
+/// disagreement of the whole; where the envelope judged nothing (a closed form measured wrong),
+/// the continuum's agreement is the verdict.
+pub(crate) fn with_continuum(
+    summary: &mut Summary,
+    continuum: &super::continuum::ContinuumSummary,
+) {
+    let rest = summary
+        .summary
+        .strip_prefix("Verdict: ")
+        .and_then(|s| s.split_once(". "))
+        .map_or(String::new(), |(_, rest)| rest.to_string());
+    let opening = if continuum.disagrees {
+        summary.agrees = false;
+        "does not agree"
+    } else if continuum.agrees == Some(true)
+        && !summary.agrees
+        && summary.short.starts_with("not judged")
+    {
+        summary.agrees = true;
+        "agrees"
+    } else if summary.agrees {
+        if summary.short.starts_with("agrees where judged") {
+            "agrees where judged"
+        } else {
+            "agrees"
+        }
+    } else if summary.short.starts_with("not judged") {
+        "not judged"
+    } else {
+        "does not agree"
+    };
+    summary.summary = format!("Verdict: {opening}. {}; {rest}", continuum.text);
+    let old = summary.short.split_once(" (").map_or("", |(_, rest)| rest);
+    let against = match continuum.agrees {
+        Some(true) => "continuum ok",
+        Some(false) => "continuum off",
+        None => "continuum n/a",
+    };
+    summary.short = format!("{opening} ({against}, {old}");
+}
+
 /// z to two significant figures (one decimal at most beyond them).
 fn z_words(z: f64) -> String {
     number_with(z, 2)

@@ -24,7 +24,7 @@ pub use continuum::{
 };
 pub use discretized::LapFe;
 pub use problem::LapJointProblem;
-pub use validity::LapValidity;
+pub use validity::{LapRangesLeft, LapValidity};
 
 use crate::kernel::regime::Law;
 use crate::problems::quantity::ratio_to_coulomb;
