@@ -543,6 +543,47 @@ const COMPARE_CONTINUUM_IMPLIED_OR_NOT: &[&str] = &[
     "rows[].continuum.KT_implied_low_MPa_per_mm: null|number",
 ];
 
+/// `compare beam` against the beams' continuum (issue 33): the summary, as the plate's and lap's.
+const COMPARE_BEAM_CONTINUUM: &[&str] = &[
+    "continuum: object",
+    "continuum.KT_deck_MPa_per_mm: number",
+    "continuum.KT_implied_MPa_per_mm: number",
+    "continuum.KT_implied_high_MPa_per_mm: number",
+    "continuum.KT_implied_low_MPa_per_mm: number",
+    "continuum.agrees: bool",
+    "continuum.resolution_fraction: number",
+    "continuum.text: string",
+    "continuum.tolerance_fraction: number",
+    "rows[].continuum: object",
+    "rows[].continuum.agrees: bool",
+    "rows[].continuum.response_mm: number",
+    "rows[].continuum.solved: bool",
+    "rows[].continuum.text: string",
+    "rows[].continuum.tolerance_fraction: number",
+];
+
+/// ... each row's numbers where every row implies a K_T (`compare-beam-two`).
+const COMPARE_BEAM_CONTINUUM_EVERY_ROW: &[&str] = &[
+    "rows[].continuum.diff_fraction: number",
+    "rows[].continuum.resolution_fraction: number",
+    "rows[].continuum.sensitivity: number",
+];
+
+/// ... or null where beyond the macroslip a row's w(L) barely moves with K_T (no resolution, no
+/// K_T implied: the paper's deck above F_1).
+const COMPARE_BEAM_CONTINUUM_SOME_ROWS: &[&str] = &[
+    "rows[].continuum.diff_fraction: number",
+    "rows[].continuum.resolution_fraction: null|number",
+    "rows[].continuum.sensitivity: number",
+];
+
+/// ... and null differences at F = 0 (the CSV's first point).
+const COMPARE_BEAM_CONTINUUM_AT_ZERO: &[&str] = &[
+    "rows[].continuum.diff_fraction: null|number",
+    "rows[].continuum.resolution_fraction: null|number",
+    "rows[].continuum.sensitivity: null|number",
+];
+
 const COMPARE_LAP: &[&str] = &[
     "model: string",
     "results: string",
@@ -920,6 +961,9 @@ const CASES: &[Case] = &[
             COMPARE_BEAM_VERDICT_FE,
             COMPARE_CONTACT,
             COMPARE_CONTACT_NOT_READ,
+            COMPARE_BEAM_CONTINUUM,
+            COMPARE_BEAM_CONTINUUM_SOME_ROWS,
+            COMPARE_CONTINUUM_IMPLIED_OR_NOT,
         ],
         header: Some(COMPARE_BEAM_HEADER),
     },
@@ -942,6 +986,9 @@ const CASES: &[Case] = &[
             COMPARE_BEAM_VERDICT_CSV,
             COMPARE_CONTACT,
             COMPARE_CONTACT_NOT_GIVEN,
+            COMPARE_BEAM_CONTINUUM,
+            COMPARE_BEAM_CONTINUUM_AT_ZERO,
+            COMPARE_CONTINUUM_IMPLIED_OR_NOT,
         ],
         header: Some(COMPARE_BEAM_HEADER),
     },
@@ -962,6 +1009,9 @@ const CASES: &[Case] = &[
             COMPARE_BEAM_VERDICT_TWO,
             COMPARE_CONTACT,
             COMPARE_CONTACT_NOT_GIVEN,
+            COMPARE_BEAM_CONTINUUM,
+            COMPARE_BEAM_CONTINUUM_EVERY_ROW,
+            COMPARE_CONTINUUM_IMPLIED,
         ],
         header: Some(COMPARE_BEAM_HEADER),
     },
@@ -982,7 +1032,6 @@ const CASES: &[Case] = &[
             COMPARE_PLATE_VERDICT_FE,
             COMPARE_CONTACT,
             COMPARE_CONTACT_NOT_READ,
-
             COMPARE_CONTINUUM,
             COMPARE_CONTINUUM_IMPLIED,
         ],
@@ -997,7 +1046,6 @@ const CASES: &[Case] = &[
             COMPARE_VERDICT,
             COMPARE_CONTACT,
             COMPARE_CONTACT_NOT_READ,
-
             COMPARE_CONTINUUM,
             COMPARE_CONTINUUM_IMPLIED,
         ],
@@ -1019,7 +1067,6 @@ const CASES: &[Case] = &[
             COMPARE_PLATE_VERDICT_CSV,
             COMPARE_CONTACT,
             COMPARE_CONTACT_NOT_GIVEN,
-
             COMPARE_CONTINUUM,
             COMPARE_CONTINUUM_IMPLIED_OR_NOT,
         ],

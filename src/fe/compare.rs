@@ -32,6 +32,9 @@ pub struct BeamCompared {
     /// FE X against the closed form's in elements of the FE mesh, when the results have the slip
     /// and the mesh is known (CalculiX results with their deck).
     pub macroslip_start_mesh: Option<MeshDifference>,
+    /// This point's w(L) against the beams' plane-stress continuum at the deck's parameters and
+    /// load (`None`: not checked).
+    pub continuum: Option<Result<ContinuumVerdict, NotSolved>>,
 }
 
 /// (FE - closed form) / closed form, or `None` where the closed form is 0 (no load, or a plate

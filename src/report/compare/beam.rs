@@ -4,6 +4,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use super::continuum::{self, Check, ContinuumRow, ContinuumSummary};
 use super::verdict::{self, BeamRowVerdict, Summary};
 use super::{BeamCompareRow, UNDEFINED_NOTE, optional, percent_or_na};
 use crate::fe::compare::BeamComparison;
@@ -26,6 +27,10 @@ pub struct BeamCompareReport {
     pub implied: ImpliedReport,
     /// The closing verdict.
     pub verdict: Summary,
+    /// w(L) against the beams' plane-stress continuum at the deck's parameters (absent where no
+    /// row was checked).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub continuum: Option<ContinuumSummary>,
 }
 
 /// One row: the CSV row's columns and its verdict.
@@ -34,6 +39,9 @@ pub struct BeamRowReport {
     #[serde(flatten)]
     pub row: BeamCompareRow,
     pub verdict: BeamRowVerdict,
+    /// This row against the continuum (absent where it was not checked).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub continuum: Option<ContinuumRow>,
 }
 
 /// What the FE points imply: the fit's values, or why there are none.
@@ -77,6 +85,17 @@ impl BeamCompareReport {
                 error: e.to_string(),
             },
         };
+        let label = |force: f64| format!("F = {} N", number(force));
+        let checks: Vec<(String, Check)> = comparison
+            .rows
+            .iter()
+            .map(|r| (label(r.fe.force), r.continuum))
+            .collect();
+        let continuum = continuum::summary("w(L)", &checks);
+        let mut verdict = verdict::beam_summary(comparison);
+        if let Some(c) = &continuum {
+            verdict::with_continuum(&mut verdict, c);
+        }
         BeamCompareReport {
             model: "beam",
             results: source.to_string(),
@@ -88,10 +107,12 @@ impl BeamCompareReport {
                 .map(|r| BeamRowReport {
                     row: BeamCompareRow::from(r),
                     verdict: verdict::beam_row(r),
+                    continuum: ContinuumRow::of(&label(r.fe.force), "w(L)", r.continuum),
                 })
                 .collect(),
             implied,
-            verdict: verdict::beam_summary(comparison),
+            verdict,
+            continuum,
         }
     }
 
@@ -185,6 +206,9 @@ impl BeamCompareReport {
             ImpliedReport::Error { error } => {
                 let _ = writeln!(out, "No K_T implied: {error}");
             }
+        }
+        if let Some(c) = &self.continuum {
+            out.push_str(&continuum::section(c, "plane-stress continuum (BC1)"));
         }
         let _ = writeln!(out, "\n{}", self.verdict.summary);
         out
