@@ -257,12 +257,18 @@ fn implied_stiffness<P: Continuum>(
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct NotSolved;
 
-/// [`judge`], a failure as [`NotSolved`] (for a report row).
+/// [`judge`] for a report row: `None` where the continuum's response is 0 (an unloaded step, where
+/// a relative difference is undefined, as the closed form's "n/a"; judging it printed "NaN %"), a
+/// failure as [`NotSolved`].
 pub fn judged<P: ContinuumJudged>(
     model: &P::Model,
     fe: f64,
-) -> Result<ContinuumVerdict, NotSolved> {
-    judge::<P>(model, fe).map_err(|_| NotSolved)
+) -> Option<Result<ContinuumVerdict, NotSolved>> {
+    match judge::<P>(model, fe) {
+        Ok(verdict) if verdict.continuum == 0.0 => None,
+        Ok(verdict) => Some(Ok(verdict)),
+        Err(_) => Some(Err(NotSolved)),
+    }
 }
 
 #[cfg(test)]

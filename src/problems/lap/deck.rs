@@ -579,7 +579,7 @@ impl Deck for LapJointProblem {
                 joint: model.joint,
                 force: model.joint.force(row.fe.force)?,
             };
-            row.continuum = Some(judged::<LapJointProblem>(&at, row.fe.joint_displacement));
+            row.continuum = judged::<LapJointProblem>(&at, row.fe.joint_displacement);
         }
         Ok(rows)
     }

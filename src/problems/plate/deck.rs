@@ -329,7 +329,7 @@ impl Deck for SqueezedPlateProblem {
         let mut rows = compare_plate(plate, points, mesh);
         for row in &mut rows {
             let at = plate.with_clamped(PlateParam::Stiffness, row.fe.stiffness);
-            row.continuum = Some(judged::<SqueezedPlateProblem>(&at, row.fe.end_displacement));
+            row.continuum = judged::<SqueezedPlateProblem>(&at, row.fe.end_displacement);
         }
         rows
     }

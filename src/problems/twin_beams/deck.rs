@@ -453,7 +453,7 @@ impl Deck for TwinBeamsProblem {
                 beams: model.beams,
                 force: TipForce::clamped(row.fe.force),
             };
-            row.continuum = Some(judged::<TwinBeamsProblem>(&at, row.fe.deflection));
+            row.continuum = judged::<TwinBeamsProblem>(&at, row.fe.deflection);
         }
         comparison
     }
