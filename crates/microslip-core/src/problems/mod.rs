@@ -146,6 +146,8 @@ macro_rules! enum_bridges {
     };
 }
 
+// After `enum_bridges!`, which its `impl Problem` uses.
+pub mod cylinder;
 pub mod inputs;
 pub mod lap;
 pub mod load_driven;
