@@ -24,19 +24,26 @@ use crate::fe::results::{
 
 use super::deck_writer::sets;
 
-/// One point of a cylinder run: the contact at the end of a load step.
+/// One FE point of the cylinder: the contact at the end of a load step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CylinderFePoint {
     /// Tangential line load Q (N/mm).
     pub load: f64,
+    /// Slip at the contact's edges x = +-a (mm), the mean of both: the fretting slip amplitude.
+    pub edge_slip: f64,
+    /// What a CalculiX run gives beside s(a); None from a CSV curve (`Q_N_per_mm,sa_mm`).
+    pub contact: Option<FeContact>,
+}
+
+/// The contact of an FE run at one load step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FeContact {
     /// Contact half-width a (mm), from the normal step's pressure.
     pub half_width: f64,
     /// Peak pressure p0 (MPa), from the normal step's pressure.
     pub peak_pressure: f64,
     /// Half-width c of the zone where K_T |s| < mu p (mm).
     pub micro_half_width: f64,
-    /// Slip at the contact's edges x = +-a (mm), the mean of both.
-    pub edge_slip: f64,
     /// Slip at the centre (mm).
     pub centre_slip: f64,
 }
@@ -241,11 +248,13 @@ pub(crate) fn cylinder_points(
         let at = |x: f64| interpolate(&faces.xs, &slips, x).unwrap_or(f64::NAN);
         points.push(CylinderFePoint {
             load,
-            half_width,
-            peak_pressure,
-            micro_half_width: micro_zone(&faces.xs, &ratio),
             edge_slip: 0.5 * (at(half_width) + at(-half_width)),
-            centre_slip: at(0.0),
+            contact: Some(FeContact {
+                half_width,
+                peak_pressure,
+                micro_half_width: micro_zone(&faces.xs, &ratio),
+                centre_slip: at(0.0),
+            }),
         });
     }
     Ok(points)

@@ -58,6 +58,10 @@ pub(crate) mod sets {
 pub struct CylinderDeckInputs {
     /// Radius of the cylinder R (mm).
     pub radius: f64,
+    /// Hertz's contact half-width a (mm): the mesh is laid out in units of it.
+    pub half_width: f64,
+    /// Hertz's peak pressure p0 (MPa), for the deck's comments.
+    pub peak_pressure: f64,
     /// Young's modulus of both bodies E (MPa).
     pub modulus: f64,
     /// Poisson's ratio of both bodies nu.
@@ -68,20 +72,6 @@ pub struct CylinderDeckInputs {
     pub friction: f64,
     /// The stick slope CalculiX is given (MPa/mm).
     pub stick_slope: f64,
-}
-
-impl CylinderDeckInputs {
-    /// The plane-strain contact modulus of two bodies of the same material, E* (MPa):
-    /// 1/E* = 2 (1 - nu^2) / E (docs/theory.md (C1)).
-    pub fn contact_modulus(&self) -> f64 {
-        self.modulus / (2.0 * (1.0 - self.poisson * self.poisson))
-    }
-
-    /// Hertz's half-width a = sqrt(4 P R / (pi E*)) (mm), docs/theory.md (C1).
-    pub fn half_width(&self) -> f64 {
-        (4.0 * self.normal_load * self.radius / (std::f64::consts::PI * self.contact_modulus()))
-            .sqrt()
-    }
 }
 
 /// The element boundaries along x (mm) of both bodies: a / n over the fine zone, growing away.
@@ -146,7 +136,7 @@ pub fn cylinder_deck(
     q_step: f64,
     header: &str,
 ) -> Result<String, DeckTooLarge> {
-    let a = inputs.half_width();
+    let a = inputs.half_width;
     let elements = element_count(a, per_half_width);
     if elements > MAX_DECK_ELEMENTS as f64 {
         return Err(DeckTooLarge {
@@ -299,7 +289,7 @@ pub fn cylinder_deck(
         "** step 1: the normal line load P = {} N/mm (a = {} mm, p0 = {} MPa by Hertz)",
         Compact(inputs.normal_load),
         Compact(a),
-        Compact(2.0 * inputs.normal_load / (std::f64::consts::PI * a))
+        Compact(inputs.peak_pressure)
     );
     start_step(&mut deck, 1.0 / NORMAL_INCREMENTS as f64, Geometry::Linear);
     let _ = writeln!(
@@ -341,6 +331,8 @@ mod tests {
 
     const PAD: CylinderDeckInputs = CylinderDeckInputs {
         radius: 50.0,
+        half_width: 0.525_231_918_323_660_1,
+        peak_pressure: 606.036_828_834_992_3,
         modulus: 210_000.0,
         poisson: 0.3,
         normal_load: 500.0,
@@ -373,7 +365,7 @@ mod tests {
 
     #[test]
     fn the_mesh_is_symmetric_and_fine_at_the_contact() {
-        let a = PAD.half_width();
+        let a = PAD.half_width;
         let xs = x_breaks(a, 20);
         assert!((xs[0] + BODY_SIZE * a).abs() < 1e-9 * a);
         assert!((xs[xs.len() - 1] - BODY_SIZE * a).abs() < 1e-9 * a);

@@ -289,6 +289,8 @@ macro_rules! with_problems {
             Plate => plate::SqueezedPlateProblem,
             /// Clamped double-lap joint (issue 24).
             Lap => lap::LapJointProblem,
+            /// Hertzian cylinder on a flat under a tangential line load (issue 34).
+            Cylinder => cylinder::CylinderProblem,
         }
     };
 }

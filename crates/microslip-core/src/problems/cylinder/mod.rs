@@ -17,13 +17,13 @@ pub mod regularized;
 // once `with_problems!` in `problems/mod.rs` lists `Cylinder => cylinder::CylinderProblem`,
 // which the application's faces must come with: uncomment them with that line.
 // REGISTRY-BEGIN
-// pub mod description;
-// pub mod point;
-// pub mod problem;
-// pub mod profiles;
-// pub mod stiffness_answer;
-// pub mod zoned;
-// pub use problem::CylinderProblem;
+pub mod description;
+pub mod point;
+pub mod problem;
+pub mod profiles;
+pub mod stiffness_answer;
+pub mod zoned;
+pub use problem::CylinderProblem;
 // REGISTRY-END
 // TODO(c1b): `pub mod cycle;` (`CylinderCycle`), `pub mod load_driven;` (written, waiting for
 // `CylinderCycle`), `pub mod discretized;`, `pub mod cross_check;`.
