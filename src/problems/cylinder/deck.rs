@@ -342,10 +342,13 @@ impl From<&CylinderCompared> for CylinderCompareRow {
     }
 }
 
-/// What the half-plane answer is expected within against CalculiX (the envelope of
-/// docs/theory.md, the cylinder's CalculiX judge): c within this fraction of a, ...
-pub const ZONE_WITHIN: f64 = 0.03;
-/// ... and s(a) within this fraction.
+/// What the half-plane answer is expected within against CalculiX (docs/theory.md, the
+/// cylinder's CalculiX judge): c within this fraction of a (two elements of the coarse deck:
+/// near the edges p -> 0 and the FE pressure scatters over the last two nodes, so c is read to
+/// about an element; measured -0.9 and -0.5 element at a/20 and a/10), ...
+pub const ZONE_WITHIN: f64 = 0.1;
+/// ... and s(a) within this fraction (measured: a/10 and a/20 elements straddle the half-plane
+/// s(a), +1.4 % and -1.0 %; they differ by 2.5 %: the mesh is converged to about that).
 pub const EDGE_SLIP_WITHIN: f64 = 0.03;
 
 /// `microslip compare cylinder`: the rows and the verdict.
