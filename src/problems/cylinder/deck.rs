@@ -374,7 +374,8 @@ pub const HALF_PLANE_NOTE: &str = "half-plane solution (Hertz, regularized Catta
      the deck's K_T); the deck's bodies are 20 a wide and deep, mirror images but for the arc";
 
 impl CylinderCompareReport {
-    fn new(source: &str, rows: &[CylinderCompared]) -> CylinderCompareReport {
+    /// The report of `rows`, compared from the files `source` names.
+    pub fn new(source: &str, rows: &[CylinderCompared]) -> CylinderCompareReport {
         let within = rows.iter().all(|r| {
             r.zone_difference().is_none_or(|d| d.abs() <= ZONE_WITHIN)
                 && r.edge_slip_difference()

@@ -14,7 +14,6 @@ use crate::report::point::{InputsReport, regime_label};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::Answer;
 
-use super::deck::HALF_PLANE_NOTE;
 use super::point::{CylinderPoint, cylinder_point};
 use super::problem::{CylinderInputs, CylinderModel, CylinderProblem};
 use super::stiffness_answer::CylinderAnswer;
@@ -158,6 +157,11 @@ impl ReportFace for CylinderProblem {
     }
 }
 
+/// What the report's numbers assume.
+const SOLUTION_NOTE: &str = "two elastic half-planes of one material (Hertz's pressure, unchanged \
+     by the shear); Mindlin's closed form under Coulomb, the semi-analytic regularized solution \
+     (docs/theory.md, the Hertzian cylinder)";
+
 /// One law's answer at Q.
 #[derive(Debug, Clone, Copy, Serialize)]
 pub struct CylinderLaw {
@@ -249,7 +253,7 @@ impl CylinderReport {
                 centre_slip: row.centre_slip_regularized,
                 peak_q_over_mu_p0: row.peak_shear_regularized,
             },
-            note: HALF_PLANE_NOTE,
+            note: SOLUTION_NOTE,
         }
     }
 
