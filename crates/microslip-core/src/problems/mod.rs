@@ -113,6 +113,7 @@ macro_rules! param_list {
 
 pub mod choice;
 pub mod cross_check;
+pub mod cylinder;
 pub mod fittable;
 /// The bridges of a problem's [`Problem`] impl to the enums [`inputs::Inputs`] and
 /// [`inputs::Model`], which the registry generates with one variant per problem: a folder writes
