@@ -52,7 +52,8 @@ pub struct CylinderContact {
 
 impl CylinderContact {
     /// A steel pad used by the tests: R = 10 mm, E = 210000 MPa, nu = 0.3, P = 500 N/mm, mu =
-    /// 0.5, K_T = 1e5 MPa/mm (a = 0.237 mm, p0 = 1342 MPa, kappa = K_T a / E* = 0.206).
+    /// 0.5, K_T = 1e5 MPa/mm (E* = 115385 MPa, a = 0.2349 mm, p0 = 1355 MPa, kappa = K_T a /
+    /// E* = 0.2036, slip scale mu a^2 / (2 R) = 1.379 um).
     pub const STEEL: CylinderContact = CylinderContact {
         radius: 10.0,
         modulus: 210_000.0,
@@ -914,6 +915,20 @@ mod tests {
             .unwrap();
             assert!(ratio(cycle.friction_work, d_factor * reference.friction_work) < 1e-10);
         }
+    }
+
+    /// Hertz by hand for the steel pad: E* = 210000 / (2 x 0.91) = 115384.6 MPa, a = sqrt(4 x
+    /// 500 x 10 / (pi E*)) = 0.2348909 mm, p0 = 2 x 500 / (pi a) = 1355.140 MPa, mu a^2 / (2 R)
+    /// = 1.379343 um. Planted fault caught: E* = E / (1 - nu^2) (one body's, not the pair's).
+    #[test]
+    fn hertz_by_hand() {
+        let close = |x: f64, y: f64| ((x - y) / y).abs() < 1e-6;
+        assert!(close(STEEL.contact_modulus(), 115_384.615));
+        assert!(close(STEEL.half_width(), 0.234_890_9));
+        assert!(close(STEEL.peak_pressure(), 1355.140));
+        assert!(close(STEEL.slip_scale(), 1.379_343e-3));
+        assert!(close(STEEL.stiffness_group(), 0.203_572_1));
+        assert!(close(STEEL.gross_slip_load(), 250.0));
     }
 
     /// Invalid input is refused with the field, its value and the range; never a panic.
