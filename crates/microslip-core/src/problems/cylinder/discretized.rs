@@ -622,6 +622,9 @@ pub struct FeLoop {
     /// Friction work over unloading and reloading (N mm per mm): the dissipation per cycle, the
     /// local way (HC6).
     pub friction_work: f64,
+    /// Friction work of first loading, 0 -> +Q_a (N mm per mm): a quarter of the dissipation
+    /// per cycle under Masing's rule (HC7).
+    pub first_loading_work: f64,
     /// The loop's area, -(integral of delta dQ along unloading and reloading) by the trapezoidal
     /// rule (N mm per mm): the dissipation per cycle, the global way (HC6).
     pub loop_area: f64,
@@ -656,10 +659,10 @@ impl FeLoop {
         };
         let virgin = branch(&mut fe, amplitude)?;
         let first_edge = fe.edge_slip();
-        let before = fe.friction_work();
+        let first_loading_work = fe.friction_work();
         let unloading = branch(&mut fe, -amplitude)?;
         let reloading = branch(&mut fe, amplitude)?;
-        let friction_work = fe.friction_work() - before;
+        let friction_work = fe.friction_work() - first_loading_work;
         let loop_area = -[&unloading, &reloading]
             .iter()
             .flat_map(|b| b.windows(2))
@@ -671,6 +674,7 @@ impl FeLoop {
             unloading,
             reloading,
             friction_work,
+            first_loading_work,
             loop_area,
             edge_slip: [first_edge, fe.edge_slip()],
         })
@@ -828,6 +832,9 @@ mod tests {
                 fe.masing_deviation()
             );
             assert!(fe.closure() < 1e-9 * peak, "{law:?}");
+            // (HC7): each branch's plastic slip is twice first loading's, so D = 4 W_1.
+            let quadruple = 4.0 * fe.first_loading_work;
+            assert!((fe.friction_work / quadruple - 1.0).abs() < 1e-9, "{law:?}");
             assert!((fe.edge_slip[1] - fe.edge_slip[0]).abs() < 1e-9 * fe.edge_slip[0]);
             // The branches are point symmetric: unloading at Q is minus reloading at -Q.
             for (down, up) in fe.unloading.iter().zip(&fe.reloading) {
