@@ -176,13 +176,27 @@ pub struct CylinderFe {
     work: f64,
     /// The factorization of the last elastic set, reused while the set does not change.
     cache: Option<Factored>,
+    /// The nodes from the centre outwards (by |x|): an elastic set that is a centred interval is
+    /// a leading block in this order.
+    centre_out: Vec<usize>,
+    /// The Cholesky factor of the whole compliance plus I / kappa in [`CylinderFe::centre_out`]'s
+    /// order (row stride N), computed once: the factor of a leading principal block is the
+    /// leading block of the factor, so every centred elastic set (first loading, and each
+    /// branch of a symmetric cycle) costs a substitution, not a factorization.
+    centred: Option<Vec<f64>>,
 }
 
 /// A Cholesky factor of the elastic nodes' compliance, with the solution for a unit shift.
 #[derive(Debug, Clone)]
 struct Factored {
+    /// The elastic nodes, ascending: what the cache is looked up by.
+    key: Vec<usize>,
+    /// The elastic nodes in the factor's order.
     elastic: Vec<usize>,
+    /// The factor, row stride `stride`; empty when it is the leading block of
+    /// [`CylinderFe::centred`].
     lower: Vec<f64>,
+    stride: usize,
     unit_shift: Vec<f64>,
 }
 
@@ -240,6 +254,12 @@ impl CylinderFe {
             load: 0.0,
             work: 0.0,
             cache: None,
+            centre_out: {
+                let mut order: Vec<usize> = (0..cells).collect();
+                order.sort_by(|&i, &j| nodes[i].abs().total_cmp(&nodes[j].abs()).then(i.cmp(&j)));
+                order
+            },
+            centred: None,
             nodes,
         })
     }
@@ -350,7 +370,9 @@ impl CylinderFe {
             ));
         }
         let sliding_load: f64 = self.spacing * shear.iter().sum::<f64>();
-        let rhs: Vec<f64> = elastic
+        let factored = self.factor(elastic)?;
+        let rhs: Vec<f64> = factored
+            .elastic
             .iter()
             .map(|&i| {
                 let row = &self.compliance[i * n..(i + 1) * n];
@@ -361,8 +383,7 @@ impl CylinderFe {
                         .sum::<f64>()
             })
             .collect();
-        let factored = self.factor(elastic)?;
-        let particular = substitute(&factored.lower, rhs);
+        let particular = self.substitute(&factored, rhs);
         let unit: f64 = factored.unit_shift.iter().sum();
         let elastic_load = (target - sliding_load) / self.spacing;
         let shift = (elastic_load - particular.iter().sum::<f64>()) / unit;
@@ -373,30 +394,62 @@ impl CylinderFe {
         Ok((shear, shift))
     }
 
-    /// The Cholesky factor of the elastic nodes' compliance plus I / kappa, from the cache when
-    /// the elastic set has not changed.
-    fn factor(&mut self, elastic: Vec<usize>) -> Result<Factored, NumericError> {
+    /// The Cholesky factor of the elastic nodes' compliance plus I / kappa: from the cache when
+    /// the elastic set has not changed, the leading block of [`CylinderFe::centred`] when the set
+    /// is a centred interval, a new factorization otherwise.
+    fn factor(&mut self, key: Vec<usize>) -> Result<Factored, NumericError> {
         if let Some(cached) = self.cache.take()
-            && cached.elastic == elastic
+            && cached.key == key
         {
             return Ok(cached);
         }
         let n = self.nodes.len();
-        let m = elastic.len();
+        let m = key.len();
+        let mut leading = self.centre_out[..m].to_vec();
+        leading.sort_unstable();
+        let (elastic, lower, stride) = if leading == key {
+            if self.centred.is_none() {
+                self.centred = Some(self.factorization(&self.centre_out)?);
+            }
+            (self.centre_out[..m].to_vec(), Vec::new(), n)
+        } else {
+            (key.clone(), self.factorization(&key)?, m)
+        };
+        let mut factored = Factored {
+            key,
+            elastic,
+            lower,
+            stride,
+            unit_shift: Vec::new(),
+        };
+        factored.unit_shift = self.substitute(&factored, vec![1.0; m]);
+        Ok(factored)
+    }
+
+    /// The Cholesky factor (row stride m) of the compliance plus I / kappa over `nodes`, in
+    /// their order.
+    fn factorization(&self, nodes: &[usize]) -> Result<Vec<f64>, NumericError> {
+        let n = self.nodes.len();
+        let m = nodes.len();
         let mut lower = vec![0.0; m * m];
-        for (a, &i) in elastic.iter().enumerate() {
-            for (b, &j) in elastic.iter().enumerate().take(a + 1) {
+        for (a, &i) in nodes.iter().enumerate() {
+            for (b, &j) in nodes.iter().enumerate().take(a + 1) {
                 lower[a * m + b] = self.compliance[i * n + j];
             }
             lower[a * m + a] += self.softness;
         }
         cholesky(&mut lower, m)?;
-        let unit_shift = substitute(&lower, vec![1.0; m]);
-        Ok(Factored {
-            elastic,
-            lower,
-            unit_shift,
-        })
+        Ok(lower)
+    }
+
+    /// Solves with a factor of [`CylinderFe::factor`].
+    fn substitute(&self, factored: &Factored, b: Vec<f64>) -> Vec<f64> {
+        let lower = if factored.lower.is_empty() {
+            self.centred.as_deref().unwrap_or_default()
+        } else {
+            &factored.lower
+        };
+        substitute(lower, factored.stride, b)
     }
 
     /// Normalized slips s_i = delta - sum_j compliance_ij q_j.
@@ -589,20 +642,21 @@ fn cholesky(a: &mut [f64], m: usize) -> Result<(), NumericError> {
     Ok(())
 }
 
-/// Solves L L^T x = b with the factor of [`cholesky`].
-fn substitute(lower: &[f64], mut b: Vec<f64>) -> Vec<f64> {
+/// Solves L L^T x = b with the leading b.len() x b.len() block of a factor of [`cholesky`]
+/// stored with row stride `stride`.
+fn substitute(lower: &[f64], stride: usize, mut b: Vec<f64>) -> Vec<f64> {
     let m = b.len();
     for i in 0..m {
-        let row = &lower[i * m..i * m + i];
+        let row = &lower[i * stride..i * stride + i];
         let sum: f64 = row.iter().zip(&b[..i]).map(|(l, x)| l * x).sum();
-        b[i] = (b[i] - sum) / lower[i * m + i];
+        b[i] = (b[i] - sum) / lower[i * stride + i];
     }
     for i in (0..m).rev() {
         let mut sum = b[i];
         for k in i + 1..m {
-            sum -= lower[k * m + i] * b[k];
+            sum -= lower[k * stride + i] * b[k];
         }
-        b[i] = sum / lower[i * m + i];
+        b[i] = sum / lower[i * stride + i];
     }
     b
 }
