@@ -1038,7 +1038,7 @@ mod tests {
             (STEEL, Law::Regularized),
         ] {
             for phi in [0.3, 0.7] {
-                for cells in [40, 80, 160, 320, 640] {
+                for cells in [40, 80, 160, 320, 640, 1280] {
                     let start = std::time::Instant::now();
                     let fe = loaded(contact, law, cells, phi);
                     let a = contact.half_width();
