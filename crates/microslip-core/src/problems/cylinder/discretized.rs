@@ -27,6 +27,7 @@
 
 use std::f64::consts::PI;
 
+use super::params::CylinderParams;
 use crate::kernel::regime::Law;
 use crate::numeric::{NumericError, short};
 
@@ -132,6 +133,21 @@ impl CylinderContact {
     /// The load scale mu p0 a (N/mm); mu P = (pi / 2) mu p0 a.
     fn load_scale(&self) -> f64 {
         self.shear_scale() * self.half_width()
+    }
+}
+
+impl From<CylinderParams> for CylinderContact {
+    /// The raw parameters, as they are: [`CylinderContact::check`] (or [`CylinderFe::new`])
+    /// validates them, and Hertz is derived here again, not read from the closed forms.
+    fn from(params: CylinderParams) -> CylinderContact {
+        CylinderContact {
+            radius: params.radius,
+            modulus: params.modulus,
+            poisson: params.poisson,
+            normal_load: params.normal_load,
+            friction: params.friction,
+            tangential_stiffness: params.tangential_stiffness,
+        }
     }
 }
 
