@@ -113,7 +113,6 @@ macro_rules! param_list {
 
 pub mod choice;
 pub mod cross_check;
-pub mod cylinder;
 pub mod fittable;
 /// The bridges of a problem's [`Problem`] impl to the enums [`inputs::Inputs`] and
 /// [`inputs::Model`], which the registry generates with one variant per problem: a folder writes
@@ -147,6 +146,8 @@ macro_rules! enum_bridges {
     };
 }
 
+// After `enum_bridges!`, which its `impl Problem` uses.
+pub mod cylinder;
 pub mod inputs;
 pub mod lap;
 pub mod load_driven;

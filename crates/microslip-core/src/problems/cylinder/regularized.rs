@@ -40,32 +40,20 @@ pub struct NormalizedSolution {
 impl NormalizedSolution {
     /// q / (mu p0) at t = x / a (H10), inside or beyond the microslip zone.
     pub fn shear(&self, collocation: &Collocation, t: f64) -> f64 {
-        let t = t.abs();
-        if t >= 1.0 {
-            return 0.0;
-        }
-        if t >= self.zone || self.zone == 0.0 {
-            return edge_root(t);
-        }
-        edge_root(t) - collocation.interpolate(&self.deficit, t / self.zone)
+        shear_of(collocation, self.zone, &self.deficit, t)
     }
 
     /// s E* / (mu p0 a) at t = x / a: q / K_T in the microslip zone, by (H11)'s potential beyond
     /// it (H13); at the edge beyond the contact.
     pub fn slip(&self, collocation: &Collocation, t: f64) -> f64 {
-        let t = t.abs().min(1.0);
-        if t < self.zone {
-            return self.shear(collocation, t) / self.kappa;
-        }
-        if self.zone == 0.0 {
-            // The whole contact slides: the shift alone (s(0) = mu p0 / K_T) and Hertz's
-            // quadratic potential.
-            return (2.0 / PI) * (self.shift + FRAC_PI_2 * t * t);
-        }
-        let mut row = vec![0.0; collocation.size()];
-        collocation.kernel_row(t / self.zone, &mut row);
-        let potential: f64 = row.iter().zip(&self.deficit).map(|(k, d)| k * d).sum();
-        (2.0 / PI) * (self.shift + FRAC_PI_2 * t * t - self.zone * potential)
+        slip_of(
+            collocation,
+            self.kappa,
+            self.zone,
+            self.shift,
+            &self.deficit,
+            t,
+        )
     }
 
     /// The edge slip s(a) E* / (mu p0 a).
@@ -84,6 +72,46 @@ impl NormalizedSolution {
             .sum();
         1.0 - 4.0 * self.zone / PI * integral
     }
+}
+
+/// q / (mu p0) at t = x / a for a microslip zone c / a = `zone` with the nodal `deficit` (H10):
+/// sqrt(1 - t^2) - psi(t / zone) inside the zone, sqrt(1 - t^2) in the sliding zones, 0 beyond
+/// the contact.
+fn shear_of(collocation: &Collocation, zone: f64, deficit: &[f64], t: f64) -> f64 {
+    let t = t.abs();
+    if t >= 1.0 {
+        return 0.0;
+    }
+    if t >= zone || zone == 0.0 {
+        return edge_root(t);
+    }
+    edge_root(t) - collocation.interpolate(deficit, t / zone)
+}
+
+/// s E* / (mu p0 a) at t = x / a (taken at the edge beyond the contact): q / (kappa mu p0)
+/// inside the microslip zone (the law itself), (2 / pi) (D + pi t^2 / 2 - zone * potential)
+/// beyond it (H13).
+fn slip_of(
+    collocation: &Collocation,
+    kappa: f64,
+    zone: f64,
+    shift: f64,
+    deficit: &[f64],
+    t: f64,
+) -> f64 {
+    let t = t.abs().min(1.0);
+    if t < zone {
+        return shear_of(collocation, zone, deficit, t) / kappa;
+    }
+    if zone == 0.0 {
+        // The whole contact slides: the shift alone (s(0) = mu p0 / K_T) and Hertz's
+        // quadratic potential.
+        return (2.0 / PI) * (shift + FRAC_PI_2 * t * t);
+    }
+    let mut row = vec![0.0; collocation.size()];
+    collocation.kernel_row(t / zone, &mut row);
+    let potential: f64 = row.iter().zip(deficit).map(|(k, d)| k * d).sum();
+    (2.0 / PI) * (shift + FRAC_PI_2 * t * t - zone * potential)
 }
 
 /// One linear solve of (H11) at c / a = `zone`: the deficit and the shift, and (H13)'s Q / mu P
@@ -295,7 +323,7 @@ impl Cylinder {
 }
 
 impl RegularizedState {
-    /// The normalized form (for the profiles; cheap: a copy of the nodal values).
+    /// The normalized form (a copy of the nodal values).
     pub fn normalized(&self) -> NormalizedSolution {
         NormalizedSolution {
             kappa: self.cylinder.stiffness_group(),
@@ -343,7 +371,7 @@ impl RegularizedState {
             return 0.0;
         }
         let t = x / self.cylinder.half_width();
-        self.strength() * self.normalized().shear(Collocation::default_mesh(), t)
+        self.strength() * shear_of(Collocation::default_mesh(), self.zone, &self.deficit, t)
     }
 
     /// Relative tangential slip s(x) (mm), positive towards +x; taken at the edge beyond the
@@ -353,7 +381,10 @@ impl RegularizedState {
             return 0.0;
         }
         let t = x / self.cylinder.half_width();
-        self.cylinder.slip_scale() * self.normalized().slip(Collocation::default_mesh(), t)
+        let kappa = self.cylinder.stiffness_group();
+        let collocation = Collocation::default_mesh();
+        let slip = slip_of(collocation, kappa, self.zone, self.shift, &self.deficit, t);
+        self.cylinder.slip_scale() * slip
     }
 
     /// The slip at the contact's edge s(a) (mm): the fretting slip amplitude.
@@ -373,11 +404,10 @@ impl RegularizedState {
             return 0.0;
         }
         let collocation = Collocation::default_mesh();
-        let normalized = self.normalized();
         collocation
             .nodes
             .iter()
-            .map(|&u| normalized.shear(collocation, u * self.zone))
+            .map(|&u| shear_of(collocation, self.zone, &self.deficit, u * self.zone))
             .fold(edge_root(self.zone), f64::max)
     }
 
