@@ -403,8 +403,8 @@ mod tests {
     /// The regularized law's D (4 W_1 on the semi-analytic solution): D > 0, increasing in Q_a,
     /// and vanishing as Q_a^4 (the edge layers of width ~ phi^2, (HC9)'s last paragraph): the
     /// local exponent between 0.01 and 0.02 mu P is 4 within 0.01 (measured 4.000) at kappa =
-    /// 0.64, where Coulomb's is 3. Planted fault caught: the exponent of the edge layers' width
-    /// wrong (W_1 over [c, a] with c taken as Mindlin's stick zone: the exponent falls to 3).
+    /// 0.64, where Coulomb's is 3. Planted fault caught: W_1 done against mu p0 instead of mu
+    /// p(x) (the edge layers' shear ~ phi lost: the exponent falls to 3).
     #[test]
     fn regularized_dissipation_vanishes_as_the_fourth_power() {
         let cylinder = pad(1e5);
