@@ -209,7 +209,7 @@ impl CylinderCycle {
 
     /// The friction work of first loading to Q_a, W_1 = int mu p(x) s_p(x) dx over both slip
     /// zones (N mm per mm), s_p = s - mu p / K_T (s under Coulomb): a quarter of D (HC7 (iv)).
-    /// Integrated on [c, a] by [`mapped`].
+    /// Integrated on [c, a] with x = c + (a - c) sin^4 theta (smooth at both ends).
     pub fn first_loading_work(&self) -> f64 {
         let load = self.cylinder.clamped_load(self.amplitude);
         let params = self.cylinder.params();
