@@ -118,14 +118,8 @@ impl MasingCycle for MindlinCycle {
 /// delta_v (mm) at a load (N/mm); the result is N mm per mm. A term of delta_v linear in Q (the
 /// log kernel's undetermined constant) cancels exactly.
 pub fn masing_dissipation(virgin: impl Fn(f64) -> f64, amplitude: f64, intervals: usize) -> f64 {
-    let n = intervals.max(2).next_multiple_of(2);
-    let h = amplitude / n as f64;
-    let mut sum = virgin(0.0) + virgin(amplitude);
-    for i in 1..n {
-        let weight = if i % 2 == 1 { 4.0 } else { 2.0 };
-        sum += weight * virgin(i as f64 * h);
-    }
-    8.0 * (0.5 * amplitude * virgin(amplitude) - sum * h / 3.0)
+    let integral = amplitude * simpson(|t| virgin(t * amplitude), intervals);
+    8.0 * (0.5 * amplitude * virgin(amplitude) - integral)
 }
 
 /// Composite Simpson's rule of `f` over [0, 1] on `intervals` (even) intervals.
