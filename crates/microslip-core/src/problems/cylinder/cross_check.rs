@@ -11,7 +11,7 @@
 
 use super::closed_form::{Cylinder, CylinderParams, TangentialLoad};
 use super::cycle::{CylinderCycle, MasingCycle};
-use super::discretized::{CylinderContact, CylinderFe, MAX_CELLS, MIN_CELLS};
+use super::discretized::{CylinderFe, MAX_CELLS, MIN_CELLS};
 use crate::kernel::format::number;
 use crate::kernel::regime::Law;
 use crate::numeric::{MeshDensity, NumericError};
@@ -81,8 +81,7 @@ pub fn compare(
     let cells = density.elements.clamp(MIN_CELLS, MAX_CELLS);
     let exact = cylinder.regularized(load);
     let q = load.newtons_per_mm();
-    let contact = CylinderContact::from(cylinder.params());
-    let mut fe = CylinderFe::new(contact, Law::Regularized, cells)?;
+    let mut fe = CylinderFe::new(cylinder.params(), Law::Regularized, cells)?;
     fe.load_to(q, 1)?;
     let zone = (fe.holding_half_width() - exact.micro_half_width()).abs() / cylinder.half_width();
     let edge = relative_error(fe.edge_slip(), exact.edge_slip());
@@ -142,7 +141,7 @@ pub fn describe(cylinder: &Cylinder, load: TangentialLoad) -> String {
 mod tests {
     use super::*;
     use crate::problems::cylinder::cycle::MindlinCycle;
-    use crate::problems::cylinder::discretized::FeLoop;
+    use crate::problems::cylinder::discretized::{FeLoop, Hertz, SMALL_PAD};
 
     /// The discretized loop under plain Coulomb, increment by increment with history, against
     /// Mindlin-Deresiewicz (HC9) and Mindlin's shift (HC8) at two amplitudes: D within 1.5e-3
@@ -151,7 +150,7 @@ mod tests {
     /// 2 / pi written 1 / pi (both off by tens of percent).
     #[test]
     fn the_coulomb_loop_is_mindlin_deresiewicz() {
-        let contact = CylinderContact::STEEL;
+        let contact = SMALL_PAD;
         let gross = contact.gross_slip_load();
         for (phi, cells) in [(0.5, 160), (0.9, 80)] {
             let amplitude = phi * gross;

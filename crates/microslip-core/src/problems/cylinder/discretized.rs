@@ -31,123 +31,51 @@ use super::params::CylinderParams;
 use crate::kernel::regime::Law;
 use crate::numeric::{NumericError, short};
 
-/// The cylinder on its flat, as plain numbers (mm, MPa, N/mm): what this solver needs, and no
-/// more. Plane strain, the cylinder and the flat of the same material (E, nu), so that the
-/// Hertz pressure is not changed by the shear and the tangential compliance of the pair is that
-/// of one combined half-plane (HC1).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CylinderContact {
-    /// Radius R of the cylinder (mm).
-    pub radius: f64,
-    /// Young's modulus E of both bodies (MPa).
-    pub modulus: f64,
-    /// Poisson's ratio nu of both bodies (-).
-    pub poisson: f64,
-    /// Normal line load P (N/mm, per unit length of the cylinder).
-    pub normal_load: f64,
-    /// Friction coefficient mu (-).
-    pub friction: f64,
-    /// Tangential interface stiffness K_T (MPa/mm).
-    pub tangential_stiffness: f64,
-}
-
-impl CylinderContact {
-    /// A steel pad used by the tests: R = 10 mm, E = 210000 MPa, nu = 0.3, P = 500 N/mm, mu =
-    /// 0.5, K_T = 1e5 MPa/mm (E* = 115385 MPa, a = 0.2349 mm, p0 = 1355 MPa, kappa = K_T a /
-    /// E* = 0.2036, slip scale mu a^2 / (2 R) = 1.379 um).
-    pub const STEEL: CylinderContact = CylinderContact {
-        radius: 10.0,
-        modulus: 210_000.0,
-        poisson: 0.3,
-        normal_load: 500.0,
-        friction: 0.5,
-        tangential_stiffness: 1e5,
-    };
-
-    /// Refuses a contact this solver cannot answer, naming the field, its value and the range.
-    ///
-    /// # Errors
-    /// [`NumericError::OutOfRange`] for a non-finite or non-positive R, E, P, mu or K_T, or a nu
-    /// outside [0, 0.5).
-    pub fn check(&self) -> Result<(), NumericError> {
-        for (name, value, unit) in [
-            ("R", self.radius, "mm"),
-            ("E", self.modulus, "MPa"),
-            ("P", self.normal_load, "N/mm"),
-            ("mu", self.friction, "(dimensionless)"),
-            ("KT", self.tangential_stiffness, "MPa/mm"),
-        ] {
-            if !(value.is_finite() && value > 0.0) {
-                return Err(NumericError::OutOfRange(format!(
-                    "invalid {name} = {}: must be > 0 and finite {unit}",
-                    short(value)
-                )));
-            }
-        }
-        if !(0.0..0.5).contains(&self.poisson) {
-            return Err(NumericError::OutOfRange(format!(
-                "invalid nu = {}: must be in [0, 0.5) (dimensionless)",
-                short(self.poisson)
-            )));
-        }
-        Ok(())
-    }
-
+/// Hertz's constants and the scales of (HC4), derived from the problem's raw parameters by this
+/// solver itself, not read from the closed forms. Plane strain, the cylinder and the flat of the
+/// same material (E, nu), so that the Hertz pressure is not changed by the shear and the
+/// tangential compliance of the pair is that of one combined half-plane (HC1).
+pub trait Hertz {
     /// The plane-strain contact modulus of the pair, E* = E / (2 (1 - nu^2)) (MPa), (HC1): 1/E*
     /// = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 for two identical bodies.
-    pub fn contact_modulus(&self) -> f64 {
+    fn contact_modulus(&self) -> f64;
+    /// Hertz half-width a = sqrt(4 P R / (pi E*)) (mm), (HC1).
+    fn half_width(&self) -> f64;
+    /// Hertz peak pressure p0 = 2 P / (pi a) (MPa), (HC1).
+    fn peak_pressure(&self) -> f64;
+    /// kappa = K_T a / E* (-): the interface stiffness against the half-planes' over the
+    /// contact, the one group besides Q / (mu P) the normalized answer depends on (HC4).
+    fn stiffness_group(&self) -> f64;
+    /// The slip scale mu p0 a / E* = mu a^2 / (2 R) (mm) the normalized slips are measured in.
+    fn slip_scale(&self) -> f64;
+    /// The load scale mu p0 a (N/mm) the normalized loads are measured in; mu P = (pi / 2) mu
+    /// p0 a.
+    fn load_scale(&self) -> f64;
+}
+
+impl Hertz for CylinderParams {
+    fn contact_modulus(&self) -> f64 {
         self.modulus / (2.0 * (1.0 - self.poisson * self.poisson))
     }
 
-    /// Hertz half-width a = sqrt(4 P R / (pi E*)) (mm), (HC1).
-    pub fn half_width(&self) -> f64 {
+    fn half_width(&self) -> f64 {
         (4.0 * self.normal_load * self.radius / (PI * self.contact_modulus())).sqrt()
     }
 
-    /// Hertz peak pressure p0 = 2 P / (pi a) (MPa), (HC1).
-    pub fn peak_pressure(&self) -> f64 {
+    fn peak_pressure(&self) -> f64 {
         2.0 * self.normal_load / (PI * self.half_width())
     }
 
-    /// The load of gross slip, mu P (N/mm).
-    pub fn gross_slip_load(&self) -> f64 {
-        self.friction * self.normal_load
-    }
-
-    /// kappa = K_T a / E* (-): the interface stiffness against the half-planes' over the contact,
-    /// the one group besides Q / (mu P) the normalized answer depends on (HC4).
-    pub fn stiffness_group(&self) -> f64 {
+    fn stiffness_group(&self) -> f64 {
         self.tangential_stiffness * self.half_width() / self.contact_modulus()
     }
 
-    /// The slip scale mu p0 a / E* = mu a^2 / (2 R) (mm) the normalized slips are measured in.
-    pub fn slip_scale(&self) -> f64 {
+    fn slip_scale(&self) -> f64 {
         self.friction * self.peak_pressure() * self.half_width() / self.contact_modulus()
     }
 
-    /// The shear scale mu p0 (MPa).
-    fn shear_scale(&self) -> f64 {
-        self.friction * self.peak_pressure()
-    }
-
-    /// The load scale mu p0 a (N/mm); mu P = (pi / 2) mu p0 a.
     fn load_scale(&self) -> f64 {
-        self.shear_scale() * self.half_width()
-    }
-}
-
-impl From<CylinderParams> for CylinderContact {
-    /// The raw parameters, as they are: [`CylinderContact::check`] (or [`CylinderFe::new`])
-    /// validates them, and Hertz is derived here again, not read from the closed forms.
-    fn from(params: CylinderParams) -> CylinderContact {
-        CylinderContact {
-            radius: params.radius,
-            modulus: params.modulus,
-            poisson: params.poisson,
-            normal_load: params.normal_load,
-            friction: params.friction,
-            tangential_stiffness: params.tangential_stiffness,
-        }
+        self.friction * self.peak_pressure() * self.half_width()
     }
 }
 
@@ -167,7 +95,7 @@ const MAX_CUTS: u32 = 12;
 /// The discretized cylinder with its current load and the history of every node (module docs).
 #[derive(Debug, Clone)]
 pub struct CylinderFe {
-    contact: CylinderContact,
+    contact: CylinderParams,
     /// 1 / kappa: the normalized interface compliance, 0 under plain Coulomb.
     softness: f64,
     /// Cell midpoints x_i / a.
@@ -221,10 +149,13 @@ impl CylinderFe {
     /// contact's K_T, or plain Coulomb).
     ///
     /// # Errors
-    /// [`NumericError::OutOfRange`] for an invalid contact ([`CylinderContact::check`]) or a
+    /// [`NumericError::OutOfRange`] for a parameter outside its domain ([`CylinderParams::check`],
+    /// naming it, its value and its range) or a
     /// cell count outside [[`MIN_CELLS`], [`MAX_CELLS`]].
-    pub fn new(contact: CylinderContact, law: Law, cells: usize) -> Result<Self, NumericError> {
-        contact.check()?;
+    pub fn new(contact: CylinderParams, law: Law, cells: usize) -> Result<Self, NumericError> {
+        contact
+            .check()
+            .map_err(|e| NumericError::OutOfRange(e.to_string()))?;
         if !(MIN_CELLS..=MAX_CELLS).contains(&cells) {
             return Err(NumericError::OutOfRange(format!(
                 "{cells} cells: the cylinder's discretized solver takes {MIN_CELLS} to {MAX_CELLS}"
@@ -511,7 +442,7 @@ impl CylinderFe {
     }
 
     /// The contact this solver was built for.
-    pub fn contact(&self) -> &CylinderContact {
+    pub fn contact(&self) -> &CylinderParams {
         &self.contact
     }
 
@@ -534,7 +465,10 @@ impl CylinderFe {
 
     /// The node positions x_i (mm) with their shear q_i (MPa).
     pub fn shear_profile(&self) -> Vec<(f64, f64)> {
-        let (a, scale) = (self.contact.half_width(), self.contact.shear_scale());
+        let (a, scale) = (
+            self.contact.half_width(),
+            self.contact.friction * self.contact.peak_pressure(),
+        );
         self.nodes
             .iter()
             .zip(&self.shear)
@@ -710,7 +644,7 @@ impl FeLoop {
     /// # Errors
     /// As [`CylinderFe::new`] and [`CylinderFe::load_to`].
     pub fn run(
-        contact: CylinderContact,
+        contact: CylinderParams,
         law: Law,
         cells: usize,
         amplitude: f64,
@@ -769,20 +703,34 @@ impl FeLoop {
     }
 }
 
+/// A steel pad smaller and harder than the bundled one, used by the tests: R = 10 mm, E =
+/// 210000 MPa, nu = 0.3, P = 500 N/mm, mu = 0.5, K_T = 1e5 MPa/mm (E* = 115385 MPa, a =
+/// 0.2349 mm, p0 = 1355 MPa, kappa = K_T a / E* = 0.2036, slip scale mu a^2 / (2 R) = 1.379
+/// um).
+#[cfg(test)]
+pub(crate) const SMALL_PAD: CylinderParams = CylinderParams {
+    radius: 10.0,
+    modulus: 210_000.0,
+    poisson: 0.3,
+    normal_load: 500.0,
+    friction: 0.5,
+    tangential_stiffness: 1e5,
+};
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    const STEEL: CylinderContact = CylinderContact::STEEL;
+    const STEEL: CylinderParams = SMALL_PAD;
 
     /// A stiffer interface (K_T = 1e7 MPa/mm, kappa = 20.4), whose slip zones are resolved by a
     /// few dozen cells at moderate loads.
-    const STIFF: CylinderContact = CylinderContact {
+    const STIFF: CylinderParams = CylinderParams {
         tangential_stiffness: 1e7,
-        ..CylinderContact::STEEL
+        ..SMALL_PAD
     };
 
-    fn loaded(contact: CylinderContact, law: Law, cells: usize, phi: f64) -> CylinderFe {
+    fn loaded(contact: CylinderParams, law: Law, cells: usize, phi: f64) -> CylinderFe {
         let mut fe = CylinderFe::new(contact, law, cells).unwrap();
         fe.load_to(phi * contact.gross_slip_load(), 1).unwrap();
         fe
@@ -791,7 +739,7 @@ mod tests {
     /// Mindlin's edge slip (HC5), derived from the kernel's factor and sign, not read from the
     /// solver: s(a) = mu a^2 / (2 R) [sqrt(1 - k) - k ln((1 + sqrt(1 - k)) / sqrt(k))], k = c^2 /
     /// a^2 = 1 - Q / (mu P).
-    fn mindlin_edge_slip(contact: &CylinderContact, phi: f64) -> f64 {
+    fn mindlin_edge_slip(contact: &CylinderParams, phi: f64) -> f64 {
         let k = 1.0 - phi;
         let a = contact.half_width();
         contact.friction * a * a / (2.0 * contact.radius)
@@ -823,7 +771,7 @@ mod tests {
             );
             assert!(fe.centre_slip().abs() < 1e-5 * exact, "{phi}");
             assert!((fe.load() - phi * STEEL.gross_slip_load()).abs() < 1e-9);
-            let rigid = CylinderContact {
+            let rigid = CylinderParams {
                 tangential_stiffness: 1e12,
                 ..STEEL
             };
@@ -956,13 +904,13 @@ mod tests {
     #[test]
     fn the_answer_scales_with_its_groups() {
         let base = STIFF;
-        let doubled = CylinderContact {
+        let doubled = CylinderParams {
             modulus: 2.0 * base.modulus,
             normal_load: 2.0 * base.normal_load,
             tangential_stiffness: 2.0 * base.tangential_stiffness,
             ..base
         };
-        let wider = CylinderContact {
+        let wider = CylinderParams {
             radius: 4.0 * base.radius,
             tangential_stiffness: 0.5 * base.tangential_stiffness,
             ..base
@@ -1011,7 +959,7 @@ mod tests {
     /// Invalid input is refused with the field, its value and the range; never a panic.
     #[test]
     fn invalid_inputs_are_refused_by_name() {
-        let bad = CylinderContact {
+        let bad = CylinderParams {
             poisson: 0.5,
             ..STEEL
         };
@@ -1021,7 +969,7 @@ mod tests {
                 .to_string(),
             "invalid nu = 0.5: must be in [0, 0.5) (dimensionless)"
         );
-        let bad = CylinderContact {
+        let bad = CylinderParams {
             tangential_stiffness: f64::NAN,
             ..STEEL
         };
