@@ -13,6 +13,8 @@ pub mod discretized;
 pub mod params;
 mod quadrature;
 pub mod regularized;
+#[cfg(test)]
+mod tests;
 
 // ---- REGISTRY: the modules below name what the registry generates for the cylinder (its
 // `Param::Cylinder` and `ModelKind::Cylinder` variants, its `Inputs`/`Model` bridges through

@@ -46,7 +46,8 @@ impl FromStr for CylinderParam {
 
 impl Problem for CylinderProblem {
     const INFO: &'static Description = &DESCRIPTION;
-    const REFUSED_AS: &'static str = "the cylinder (two elastic half-planes in contact: no bending)";
+    const REFUSED_AS: &'static str =
+        "the cylinder (two elastic half-planes in contact: no bending)";
     type Key = CylinderParam;
     type Params = CylinderInputs;
     type Model = CylinderModel;
@@ -212,7 +213,10 @@ mod tests {
         let light = CylinderProblem::with_clamped(&typed, CylinderParam::NormalLoad, 1e-9);
         assert!(light.cylinder.gross_slip_load() >= typed.load.newtons_per_mm());
         assert!(light.cylinder.params().normal_load < typed.cylinder.params().normal_load);
-        assert_eq!("Q".parse::<CylinderParam>(), Ok(CylinderParam::TangentialLoad));
+        assert_eq!(
+            "Q".parse::<CylinderParam>(),
+            Ok(CylinderParam::TangentialLoad)
+        );
         assert!(
             "F".parse::<CylinderParam>()
                 .unwrap_err()

@@ -38,22 +38,43 @@ pub struct NormalizedSolution {
 }
 
 impl NormalizedSolution {
-    /// q / (mu p0) at t = x / a (H10), inside or beyond the microslip zone.
-    pub fn shear(&self, collocation: &Collocation, t: f64) -> f64 {
-        shear_of(collocation, self.zone, &self.deficit, t)
+    /// The solution's fields on `collocation`.
+    fn fields<'a>(&'a self, collocation: &'a Collocation) -> Fields<'a> {
+        Fields {
+            collocation,
+            kappa: self.kappa,
+            zone: self.zone,
+            shift: self.shift,
+            deficit: &self.deficit,
+        }
     }
 
-    /// s E* / (mu p0 a) at t = x / a: q / K_T in the microslip zone, by (H11)'s potential beyond
-    /// it (H13); at the edge beyond the contact.
+    /// q / (mu p0) at t = x / a (H10), inside or beyond the microslip zone.
+    pub fn shear(&self, collocation: &Collocation, t: f64) -> f64 {
+        self.fields(collocation).shear(t)
+    }
+
+    /// s E* / (mu p0 a) at t = x / a: q / K_T in the microslip zone, by (H13)'s potential beyond
+    /// it; at the edge beyond the contact.
     pub fn slip(&self, collocation: &Collocation, t: f64) -> f64 {
-        slip_of(
-            collocation,
-            self.kappa,
-            self.zone,
-            self.shift,
-            &self.deficit,
-            t,
-        )
+        self.fields(collocation).slip(t)
+    }
+
+    /// s E* / (mu p0 a) at t = x / a <= 1 by (H13)'s potential wherever t lies: beyond the
+    /// microslip zone it is [`NormalizedSolution::slip`]; inside it, it must equal q / K_T,
+    /// which the collocation imposes at its points only.
+    pub fn potential_slip(&self, collocation: &Collocation, t: f64) -> f64 {
+        self.fields(collocation).potential_slip(t)
+    }
+
+    /// psi = (mu p - q) / (mu p0) at t = x / a in the microslip zone by its polynomial
+    /// interpolant on the mesh (what [`NormalizedSolution::shear`] uses for kappa above
+    /// [`NYSTROM_BELOW`]).
+    pub fn interpolated_deficit(&self, collocation: &Collocation, t: f64) -> f64 {
+        if self.zone == 0.0 {
+            return 0.0;
+        }
+        collocation.interpolate(&self.deficit, t.abs() / self.zone)
     }
 
     /// The edge slip s(a) E* / (mu p0 a).
@@ -74,44 +95,63 @@ impl NormalizedSolution {
     }
 }
 
-/// q / (mu p0) at t = x / a for a microslip zone c / a = `zone` with the nodal `deficit` (H10):
-/// sqrt(1 - t^2) - psi(t / zone) inside the zone, sqrt(1 - t^2) in the sliding zones, 0 beyond
-/// the contact.
-fn shear_of(collocation: &Collocation, zone: f64, deficit: &[f64], t: f64) -> f64 {
-    let t = t.abs();
-    if t >= 1.0 {
-        return 0.0;
-    }
-    if t >= zone || zone == 0.0 {
-        return edge_root(t);
-    }
-    edge_root(t) - collocation.interpolate(deficit, t / zone)
-}
+/// Below this kappa the shear inside the microslip zone is evaluated as K_T times (H13)'s
+/// potential (the Nystrom interpolant: the kernel's integral smooths the nodal values' error,
+/// and the law multiplies it by kappa); above it, by the deficit's polynomial interpolant
+/// (whose error, about 2.6^-8 of the deficit, does not grow with kappa). Both are about 1e-5
+/// of mu p0 here (docs/theory.md (H14)).
+pub const NYSTROM_BELOW: f64 = 30.0;
 
-/// s E* / (mu p0 a) at t = x / a (taken at the edge beyond the contact): q / (kappa mu p0)
-/// inside the microslip zone (the law itself), (2 / pi) (D + pi t^2 / 2 - zone * potential)
-/// beyond it (H13).
-fn slip_of(
-    collocation: &Collocation,
+/// One regularized solution's fields, read from its nodal values.
+struct Fields<'a> {
+    collocation: &'a Collocation,
     kappa: f64,
     zone: f64,
     shift: f64,
-    deficit: &[f64],
-    t: f64,
-) -> f64 {
-    let t = t.abs().min(1.0);
-    if t < zone {
-        return shear_of(collocation, zone, deficit, t) / kappa;
+    deficit: &'a [f64],
+}
+
+impl Fields<'_> {
+    /// q / (mu p0) at t = x / a (H10): sqrt(1 - t^2) - psi inside the microslip zone,
+    /// sqrt(1 - t^2) in the sliding zones, 0 beyond the contact.
+    fn shear(&self, t: f64) -> f64 {
+        let t = t.abs();
+        if t >= 1.0 {
+            return 0.0;
+        }
+        if t >= self.zone || self.zone == 0.0 {
+            return edge_root(t);
+        }
+        if self.kappa < NYSTROM_BELOW {
+            return (self.kappa * self.potential_slip(t)).clamp(0.0, edge_root(t));
+        }
+        edge_root(t) - self.collocation.interpolate(self.deficit, t / self.zone)
     }
-    if zone == 0.0 {
-        // The whole contact slides: the shift alone (s(0) = mu p0 / K_T) and Hertz's
-        // quadratic potential.
-        return (2.0 / PI) * (shift + FRAC_PI_2 * t * t);
+
+    /// s E* / (mu p0 a) at t = x / a (taken at the edge beyond the contact): q / (kappa mu p0)
+    /// inside the microslip zone (the law itself), (H13) beyond it.
+    fn slip(&self, t: f64) -> f64 {
+        let t = t.abs().min(1.0);
+        if t < self.zone {
+            return self.shear(t) / self.kappa;
+        }
+        self.potential_slip(t)
     }
-    let mut row = vec![0.0; collocation.size()];
-    collocation.kernel_row(t / zone, &mut row);
-    let potential: f64 = row.iter().zip(deficit).map(|(k, d)| k * d).sum();
-    (2.0 / PI) * (shift + FRAC_PI_2 * t * t - zone * potential)
+
+    /// (H13): s E* / (mu p0 a) = (2 / pi) (D + pi t^2 / 2 - zone * potential of psi at t /
+    /// zone), at any t = |x| / a <= 1.
+    fn potential_slip(&self, t: f64) -> f64 {
+        let t = t.abs().min(1.0);
+        if self.zone == 0.0 {
+            // The whole contact slides: the shift alone (s(0) = mu p0 / K_T) and Hertz's
+            // quadratic potential.
+            return (2.0 / PI) * (self.shift + FRAC_PI_2 * t * t);
+        }
+        let mut row = vec![0.0; self.collocation.size()];
+        self.collocation.kernel_row(t / self.zone, &mut row);
+        let potential: f64 = row.iter().zip(self.deficit).map(|(k, d)| k * d).sum();
+        (2.0 / PI) * (self.shift + FRAC_PI_2 * t * t - self.zone * potential)
+    }
 }
 
 /// One linear solve of (H11) at c / a = `zone`: the deficit and the shift, and (H13)'s Q / mu P
@@ -359,6 +399,17 @@ impl RegularizedState {
         self.cylinder.half_width() - self.micro_half_width()
     }
 
+    /// The solution's fields on the default mesh.
+    fn fields(&self) -> Fields<'_> {
+        Fields {
+            collocation: Collocation::default_mesh(),
+            kappa: self.cylinder.stiffness_group(),
+            zone: self.zone,
+            shift: self.shift,
+            deficit: &self.deficit,
+        }
+    }
+
     /// mu p0 (MPa).
     fn strength(&self) -> f64 {
         self.cylinder.params().friction * self.cylinder.peak_pressure()
@@ -370,8 +421,7 @@ impl RegularizedState {
         if self.load == 0.0 {
             return 0.0;
         }
-        let t = x / self.cylinder.half_width();
-        self.strength() * shear_of(Collocation::default_mesh(), self.zone, &self.deficit, t)
+        self.strength() * self.fields().shear(x / self.cylinder.half_width())
     }
 
     /// Relative tangential slip s(x) (mm), positive towards +x; taken at the edge beyond the
@@ -380,11 +430,7 @@ impl RegularizedState {
         if self.load == 0.0 {
             return 0.0;
         }
-        let t = x / self.cylinder.half_width();
-        let kappa = self.cylinder.stiffness_group();
-        let collocation = Collocation::default_mesh();
-        let slip = slip_of(collocation, kappa, self.zone, self.shift, &self.deficit, t);
-        self.cylinder.slip_scale() * slip
+        self.cylinder.slip_scale() * self.fields().slip(x / self.cylinder.half_width())
     }
 
     /// The slip at the contact's edge s(a) (mm): the fretting slip amplitude.
@@ -403,11 +449,12 @@ impl RegularizedState {
         if self.load == 0.0 {
             return 0.0;
         }
-        let collocation = Collocation::default_mesh();
-        collocation
+        let fields = self.fields();
+        fields
+            .collocation
             .nodes
             .iter()
-            .map(|&u| shear_of(collocation, self.zone, &self.deficit, u * self.zone))
+            .map(|&u| fields.shear(u * self.zone))
             .fold(edge_root(self.zone), f64::max)
     }
 
