@@ -861,6 +861,29 @@ mod tests {
         }
     }
 
+    /// Reversibility: after the first cycle the state repeats, a second cycle dissipates the
+    /// same to 1e-10 and ends at the same shift and edge slip. Planted fault caught: the
+    /// holonomic law (the second cycle's work differs from the first's, both are 0).
+    #[test]
+    fn the_second_cycle_repeats_the_first() {
+        let amplitude = 0.7 * STIFF.gross_slip_load();
+        let mut fe = CylinderFe::new(STIFF, Law::Regularized, 40).unwrap();
+        fe.load_to(amplitude, 1).unwrap();
+        let mut works = Vec::new();
+        let mut ends = Vec::new();
+        for _ in 0..2 {
+            let before = fe.friction_work();
+            fe.load_to(-amplitude, 2).unwrap();
+            fe.load_to(amplitude, 2).unwrap();
+            works.push(fe.friction_work() - before);
+            ends.push((fe.shift(), fe.edge_slip()));
+        }
+        assert!(works[0] > 0.0);
+        assert!((works[1] / works[0] - 1.0).abs() < 1e-10, "{works:?}");
+        assert!((ends[1].0 / ends[0].0 - 1.0).abs() < 1e-10);
+        assert!((ends[1].1 / ends[0].1 - 1.0).abs() < 1e-10);
+    }
+
     /// The dissipation per cycle two ways (HC6): the friction work of the nodes equals the loop's
     /// area to the trapezoidal rule's O(dQ^2) (4 -> 16 increments per branch: the gap, 4e-3 of
     /// D at 16, falls 14-17x); the friction work does not depend on the increments; D > 0 and
