@@ -862,8 +862,9 @@ mod tests {
     }
 
     /// Reversibility: after the first cycle the state repeats, a second cycle dissipates the
-    /// same to 1e-10 and ends at the same shift and edge slip. Planted fault caught: the
-    /// holonomic law (the second cycle's work differs from the first's, both are 0).
+    /// same to 1e-10 and ends at the same shift and edge slip. Planted fault caught: a return
+    /// mapping that commits only half of each plastic slip increment (the state drifts from
+    /// cycle to cycle).
     #[test]
     fn the_second_cycle_repeats_the_first() {
         let amplitude = 0.7 * STIFF.gross_slip_load();
