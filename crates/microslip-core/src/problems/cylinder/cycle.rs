@@ -173,8 +173,10 @@ fn shift_of(cylinder: &Cylinder, zone: f64, centre_slip: f64, shear: impl Fn(f64
     centre_slip - 2.0 / (PI * cylinder.contact_modulus()) * 2.0 * half
 }
 
-/// One cycle of amplitude Q_a for one law, from the semi-analytic first-loading solution and
-/// Masing's rule (HC7): the loop in the Q-delta plane and its dissipation.
+/// One cycle of amplitude Q_a for one law, from the closed-form (Coulomb) or semi-analytic
+/// (regularized) first-loading solution and Masing's rule (HC7): the branches of the edge slip
+/// s(a) (the problem's response), the shift's loop ([`CylinderCycle::shift`], whose area is D),
+/// D itself, and the peak energy and secant stiffness of the shift.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CylinderCycle {
     cylinder: Cylinder,
@@ -264,13 +266,22 @@ impl MasingCycle for CylinderCycle {
         0.0
     }
 
-    /// delta_v(Q) (mm), distances against a (module docs).
+    /// The edge slip on first loading s_v(a; Q) (mm), odd in Q: the problem's response (the
+    /// fretting slip amplitude). Masing's rule holds for it as for every local quantity (HC7:
+    /// the unloading state is the first-loading state doubled), so the generic branches are the
+    /// edge slip's loop; its area is not D (the loop whose area is D is the shift's,
+    /// [`CylinderCycle::shift`]).
     fn virgin(&self, force: f64) -> f64 {
-        self.shift(force)
+        let load = self.cylinder.clamped_load(force.abs());
+        let slip = match self.law {
+            Law::Coulomb => self.cylinder.coulomb(load).edge_slip(),
+            Law::Regularized => self.cylinder.regularized(load).edge_slip(),
+        };
+        slip.copysign(force)
     }
 
     fn peak_response(&self) -> f64 {
-        self.shift(self.amplitude)
+        self.virgin(self.amplitude)
     }
 
     /// D (N mm per mm): (HC9) under Coulomb, 4 W_1 under the regularized law (HC7).
@@ -281,15 +292,16 @@ impl MasingCycle for CylinderCycle {
         }
     }
 
-    /// Q_a delta_a / 2 (N mm per mm), with delta's convention (module docs).
+    /// Q_a delta_a / 2 (N mm per mm), the work of first loading through the rigid shift, with
+    /// delta's convention (module docs): an energy, unlike Q_a s(a) / 2.
     fn peak_energy(&self) -> f64 {
-        0.5 * self.amplitude * self.peak_response()
+        0.5 * self.amplitude * self.shift(self.amplitude)
     }
 
-    /// Q_a / delta_a (N/mm per mm), with delta's convention; at zero amplitude the slope at a
-    /// probe of 1e-6 mu P.
+    /// Q_a / delta_a (N/mm per mm), the contact's secant tangential stiffness with delta's
+    /// convention; at zero amplitude the slope at a probe of 1e-6 mu P.
     fn secant_stiffness(&self) -> f64 {
-        let delta = self.peak_response();
+        let delta = self.shift(self.amplitude);
         if delta > 0.0 {
             return self.amplitude / delta;
         }
@@ -386,11 +398,12 @@ mod tests {
                 state.centre_slip(),
                 |x| state.shear_at(x),
             );
-            let closed = cycle.peak_response();
+            let closed = cycle.shift(load.newtons_per_mm());
             assert!(
                 ((shift - closed) / closed).abs() < 1e-6,
                 "{phi}: {shift} vs {closed}"
             );
+            assert_eq!(cycle.peak_response(), state.edge_slip());
         }
     }
 
@@ -423,5 +436,8 @@ mod tests {
         let close = |x: f64, y: f64| ((x - y) / y).abs() < 1e-5;
         assert!(close(regularized.dissipation(), coulomb.dissipation()));
         assert!(close(regularized.peak_response(), coulomb.peak_response()));
+        let q = load.newtons_per_mm();
+        assert!(close(regularized.shift(q), coulomb.shift(q)));
+        assert!(close(regularized.peak_energy(), coulomb.peak_energy()));
     }
 }

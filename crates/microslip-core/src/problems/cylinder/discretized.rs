@@ -854,6 +854,21 @@ mod tests {
             let quadruple = 4.0 * fe.first_loading_work;
             assert!((fe.friction_work / quadruple - 1.0).abs() < 1e-9, "{law:?}");
             assert!((fe.edge_slip[1] - fe.edge_slip[0]).abs() < 1e-9 * fe.edge_slip[0]);
+            // Masing for a local quantity, the edge slip: unloading by Q_a from +Q_a gives
+            // s_a - 2 s_v(Q_a / 2).
+            let (mut down, mut half) = (
+                CylinderFe::new(contact, law, 60).unwrap(),
+                CylinderFe::new(contact, law, 60).unwrap(),
+            );
+            down.load_to(amplitude, 1).unwrap();
+            let peak_slip = down.edge_slip();
+            down.load_to(0.0, 1).unwrap();
+            half.load_to(0.5 * amplitude, 1).unwrap();
+            let masing = peak_slip - 2.0 * half.edge_slip();
+            assert!(
+                (down.edge_slip() - masing).abs() < 1e-9 * peak_slip,
+                "{law:?}"
+            );
             // The branches are point symmetric: unloading at Q is minus reloading at -Q.
             for (down, up) in fe.unloading.iter().zip(&fe.reloading) {
                 assert!((down.1 + up.1).abs() < 1e-9 * peak, "{law:?}");
