@@ -423,6 +423,13 @@ mod tests {
         assert!(0.0 < small && small < double && double < large);
         let exponent = (double / small).log2();
         assert!((exponent - 4.0).abs() < 0.01, "{exponent}");
+        // The edge layers' width goes as phi^2 (measured exponent 1.999).
+        let width = |phi: f64| {
+            let load = cylinder.load(phi * cylinder.gross_slip_load()).unwrap();
+            cylinder.regularized(load).edge_slide_width()
+        };
+        let growth = (width(0.02) / width(0.01)).log2();
+        assert!((growth - 2.0).abs() < 0.01, "{growth}");
     }
 
     /// K_T -> infinity: the regularized cycle is Mindlin-Deresiewicz's (D and delta_a within
