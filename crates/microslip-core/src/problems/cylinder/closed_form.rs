@@ -1,5 +1,5 @@
 //! The Hertzian cylinder on a flat: the validated contact (Hertz's half-width and peak pressure,
-//! (H1)-(H3)), its tangential load, and Mindlin's closed-form answer under plain Coulomb friction
+//! (H1)-(H2)), its tangential load, and Mindlin's closed-form answer under plain Coulomb friction
 //! ((H7)-(H9)). The regularized law's semi-analytic solution is in
 //! [`super::regularized`]. Equation numbers are docs/theory.md's section "The Hertzian cylinder
 //! (Cattaneo-Mindlin, regularized)".

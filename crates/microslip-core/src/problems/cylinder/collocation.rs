@@ -4,7 +4,7 @@
 //! layer and, as c approaches a, the Hertz pressure's square root nearly touches; on each
 //! element the unknown is the polynomial through its Gauss points, and the logarithmic kernel
 //! (symmetrized: ln|u - v| + ln|u + v|) is integrated against each basis polynomial exactly
-//! ([`super::quadrature::log_moments`]).
+//! (`quadrature::log_moments`).
 //!
 //! The kernel matrix depends on the mesh only, not on c nor on any input (c scales out, leaving
 //! a constant that the rigid shift absorbs), so the default mesh's is computed once per process.

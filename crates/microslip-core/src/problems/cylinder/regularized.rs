@@ -30,8 +30,8 @@ pub struct NormalizedSolution {
     pub load_ratio: f64,
     /// c / a, the microslip zone's half-width.
     pub zone: f64,
-    /// The shift D of (H11): (pi / (2 kappa)) s K_T / (mu p0) minus the kernel's potential, the
-    /// same at every x.
+    /// The constant D of (H11) and (H13): (pi / 2) s E* / (mu p0 a) minus pi t^2 / 2 and
+    /// the deficit's potential, the same at every x (it holds the rigid shift).
     pub shift: f64,
     /// psi = (mu p - q) / (mu p0) at the collocation points u_i = x / c.
     pub deficit: Vec<f64>,
@@ -443,18 +443,17 @@ impl RegularizedState {
         self.slip_at(0.0)
     }
 
-    /// The largest q / (mu p0) (-): at the microslip zone's edge, where q = mu p(c), or inside
-    /// it if larger there.
+    /// The largest q / (mu p0) (-): at the microslip zone's edge, where q = mu p(c), or at a
+    /// collocation point inside it if larger there (it never is: q grows towards c).
     pub fn peak_shear_ratio(&self) -> f64 {
         if self.load == 0.0 {
             return 0.0;
         }
-        let fields = self.fields();
-        fields
-            .collocation
-            .nodes
+        let nodes = &Collocation::default_mesh().nodes;
+        nodes
             .iter()
-            .map(|&u| fields.shear(u * self.zone))
+            .zip(&self.deficit)
+            .map(|(&u, &d)| edge_root(u * self.zone) - d)
             .fold(edge_root(self.zone), f64::max)
     }
 
