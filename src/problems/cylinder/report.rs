@@ -8,12 +8,16 @@ use serde::Serialize;
 use crate::kernel::regime::Regime;
 use crate::numeric::NumericError;
 use crate::problems::Problem;
+use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace};
+use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleWords, ForceLimit};
 use crate::report::point::{InputsReport, regime_label};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::Answer;
+use crate::study::load::LoopPoint;
 
+use super::closed_form::{Cylinder, TangentialLoad};
 use super::point::{CylinderPoint, cylinder_point};
 use super::problem::{CylinderInputs, CylinderModel, CylinderProblem};
 use super::stiffness_answer::CylinderAnswer;
@@ -133,6 +137,10 @@ impl ReportFace for CylinderProblem {
         report.text()
     }
 
+    fn cycle() -> Option<&'static dyn AnyCycleFace> {
+        Some(cycle::erased::<Self>())
+    }
+
     fn kt_answer(answer: &Answer) -> Option<CylinderKtAnswer> {
         match *answer {
             Answer::Cylinder(CylinderAnswer {
@@ -154,6 +162,84 @@ impl ReportFace for CylinderProblem {
 
     fn kt_values(a: &CylinderKtAnswer) -> (Vec<f64>, Regime) {
         (vec![a.stiffness_group, a.zone, a.edge_slip], a.regime)
+    }
+}
+
+/// One point of the cylinder's `microslip cycle --format csv`: the loop of the edge slip s(a),
+/// both laws.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct CylinderLoopRow {
+    /// `unloading` or `reloading`.
+    pub branch: &'static str,
+    /// Tangential line load Q (N/mm).
+    #[serde(rename = "Q_N_per_mm")]
+    pub load: f64,
+    /// Mindlin's and the regularized edge slip s(a) (mm).
+    #[serde(rename = "sa_coulomb_mm")]
+    pub edge_slip_coulomb: f64,
+    #[serde(rename = "sa_regularized_mm")]
+    pub edge_slip_regularized: f64,
+}
+
+impl From<&LoopPoint> for CylinderLoopRow {
+    fn from(p: &LoopPoint) -> Self {
+        CylinderLoopRow {
+            branch: p.branch.label(),
+            load: p.force,
+            edge_slip_coulomb: p.w_coulomb,
+            edge_slip_regularized: p.w_regularized,
+        }
+    }
+}
+
+impl CycleFace for CylinderProblem {
+    const CYCLE_WORDS: CycleWords = CycleWords {
+        peak_key: "sa_peak_mm",
+        heading: ("Hertzian cylinder", "tangential line load"),
+        rows: [
+            "onset of sliding (N/mm)",
+            "peak edge slip s(a) (mm)",
+            "D per cycle (N mm per mm)",
+            "peak energy U (N mm per mm)",
+            "damping ratio D / (4 pi U) (-)",
+            "secant Q_a/delta_a (N/mm per mm)",
+        ],
+        note: "P and Q are line loads (per mm of the cylinder's length): D and U are per mm \
+               of it. The loop shown is that of the edge slip s(a); U = Q_a delta_a / 2 and \
+               the secant use the bodies' relative shift delta (docs/theory.md, the cylinder's \
+               cycle), whose loop's area is D. With a finite K_T the edges slide from the \
+               first newton (onset 0).",
+    };
+
+    fn structure_line(cylinder: &Cylinder) -> String {
+        let p = cylinder.params();
+        format!(
+            "R = {} mm, E = {} MPa, nu = {}, P = {} N/mm, mu = {}, K_T = {} MPa/mm",
+            number(p.radius),
+            number(p.modulus),
+            number(p.poisson),
+            number(p.normal_load),
+            number(p.friction),
+            number(p.tangential_stiffness)
+        )
+    }
+
+    type LoopRow = CylinderLoopRow;
+    type LoadRow = CylinderRow;
+
+    fn force_limit(cylinder: &Cylinder) -> Option<ForceLimit> {
+        Some(ForceLimit {
+            newtons: cylinder.gross_slip_load(),
+            name: "Q_gross = mu P",
+            beyond: "the cylinder slides over the flat beyond it",
+        })
+    }
+
+    fn cycle_inputs(cylinder: &Cylinder, amplitude: TangentialLoad) -> Inputs {
+        CylinderProblem::to_inputs(CylinderInputs {
+            structure: cylinder.params(),
+            load: amplitude.newtons_per_mm(),
+        })
     }
 }
 

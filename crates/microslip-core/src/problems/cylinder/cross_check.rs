@@ -111,31 +111,30 @@ pub fn describe(cylinder: &Cylinder, load: TangentialLoad) -> String {
     )
 }
 
-// The `CrossChecked` impl, to uncomment with the registry line (it names the registered
-// `CylinderProblem`); `Problem::cross_checked` in problem.rs then hands out
-// `CrossCheckedOf::<Self>::NEW`:
-//
-// use super::problem::{CylinderModel, CylinderProblem};
-// use crate::problems::cross_check::CrossChecked;
-//
-// impl CrossChecked for CylinderProblem {
-//     const COMPARED: &'static [&'static str] = COMPARED;
-//
-//     fn grid(full: bool) -> Vec<CylinderModel> {
-//         cases(full)
-//             .into_iter()
-//             .map(|(cylinder, load)| CylinderModel { cylinder, load })
-//             .collect()
-//     }
-//
-//     fn compare(model: &CylinderModel, density: MeshDensity) -> Result<Vec<f64>, NumericError> {
-//         compare(&model.cylinder, model.load, density)
-//     }
-//
-//     fn describe(model: &CylinderModel) -> String {
-//         describe(&model.cylinder, model.load)
-//     }
-// }
+// The `CrossChecked` impl (it names the registered `CylinderProblem`); `Problem::cross_checked`
+// in problem.rs hands out `CrossCheckedOf::<Self>::NEW`.
+
+use super::problem::{CylinderModel, CylinderProblem};
+use crate::problems::cross_check::CrossChecked;
+
+impl CrossChecked for CylinderProblem {
+    const COMPARED: &'static [&'static str] = COMPARED;
+
+    fn grid(full: bool) -> Vec<CylinderModel> {
+        cases(full)
+            .into_iter()
+            .map(|(cylinder, load)| CylinderModel { cylinder, load })
+            .collect()
+    }
+
+    fn compare(model: &CylinderModel, density: MeshDensity) -> Result<Vec<f64>, NumericError> {
+        compare(&model.cylinder, model.load, density)
+    }
+
+    fn describe(model: &CylinderModel) -> String {
+        describe(&model.cylinder, model.load)
+    }
+}
 
 #[cfg(test)]
 mod tests {

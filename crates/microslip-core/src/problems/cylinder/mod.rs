@@ -23,6 +23,7 @@ mod tests;
 // which the application's faces must come with: uncomment them with that line.
 // REGISTRY-BEGIN
 pub mod description;
+pub mod load_driven;
 pub mod point;
 pub mod problem;
 pub mod profiles;
@@ -30,8 +31,6 @@ pub mod stiffness_answer;
 pub mod zoned;
 pub use problem::CylinderProblem;
 // REGISTRY-END
-// With the registry line also: `pub mod load_driven;` (its `Cycle` is `cycle::CylinderCycle`)
-// and the `CrossChecked` impl written at the end of `cross_check.rs`.
 
 pub use closed_form::{Cylinder, CylinderParams, MindlinState, TangentialLoad};
 pub use params::CylinderParam;

@@ -9,7 +9,9 @@ use super::description::DESCRIPTION;
 use super::params::CylinderParam;
 use super::regularized::RegularizedState;
 use crate::kernel::params::ParamError;
+use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
 use crate::problems::inputs::InterfaceData;
+use crate::problems::load_driven::{AnyLoadDriven, LoadDrivenOf};
 use crate::problems::problem::{Laws, ParamKey, Problem};
 use crate::problems::zoned::{AnyZoned, ZonedOf};
 use crate::problems::{Description, ModelKind, Quantity, UnknownParam};
@@ -147,14 +149,13 @@ impl Problem for CylinderProblem {
         }
     }
 
-    // TODO(c1b): once `cycle.rs` defines `CylinderCycle` and `load_driven.rs` is declared in
-    // `mod.rs`, hand out the force axis here:
-    //
-    //     fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
-    //         Some(&LoadDrivenOf::<CylinderProblem>::NEW)
-    //     }
-    //
-    // and `cross_checked()` (with `CrossCheckedOf`) once `cross_check.rs` is.
+    fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
+        Some(&LoadDrivenOf::<CylinderProblem>::NEW)
+    }
+
+    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
+        Some(&CrossCheckedOf::<CylinderProblem>::NEW)
+    }
 
     fn zoned() -> Option<&'static dyn AnyZoned> {
         Some(&ZonedOf::<CylinderProblem>::NEW)
