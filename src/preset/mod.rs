@@ -407,11 +407,12 @@ mod tests {
                 "paper-beams-soft",
                 "paper-plate",
                 "lap-aluminium",
+                "cylinder-steel-pad",
                 "a",
                 "b"
             ]
         );
-        assert!(rows[5].preset.as_ref().unwrap_err().line == Some(2));
+        assert!(rows[6].preset.as_ref().unwrap_err().line == Some(2));
         assert_eq!(listing(None).len(), BUNDLED.len());
     }
 

@@ -15,7 +15,8 @@
 //! - the micro-slip zone |x| < c: contiguous from the centre, where K_T |s| < mu p (the law's
 //!   elastic branch), each side interpolated where K_T |s| / (mu p) crosses 1; c is the mean of
 //!   both sides;
-//! - s(a) at the FE's own a (the mean of both sides) and s(0).
+//! - s(a) at Hertz's a (the mean of both sides; the slip is steep there at a stiff K_T, so the
+//!   comparison reads both at one place; the FE's own a is reported beside it) and s(0).
 
 use crate::fe::results::{
     ResultsError, complete_block, load_step_time, node_coordinate, parse_dat, parse_node_sets,
@@ -29,7 +30,8 @@ use super::deck_writer::sets;
 pub struct CylinderFePoint {
     /// Tangential line load Q (N/mm).
     pub load: f64,
-    /// Slip at the contact's edges x = +-a (mm), the mean of both: the fretting slip amplitude.
+    /// Slip at the contact's edges x = +-a (Hertz's a, mm), the mean of both: the fretting slip
+    /// amplitude.
     pub edge_slip: f64,
     /// What a CalculiX run gives beside s(a); None from a CSV curve (`Q_N_per_mm,sa_mm`).
     pub contact: Option<FeContact>,
@@ -144,7 +146,8 @@ pub(crate) fn micro_zone(xs: &[f64], ratio: &[f64]) -> f64 {
 }
 
 /// The cylinder points of a run: one per load step of `loads` (N/mm) that CalculiX finished,
-/// at the deck's stick slope `kt` (MPa/mm) and friction `mu`.
+/// at the deck's stick slope `kt` (MPa/mm) and friction `mu`; s(a) read at `edge` (mm, Hertz's
+/// a).
 ///
 /// # Errors
 /// A malformed `.dat` line, a set missing at the end of the normal step or of a load step, no
@@ -155,6 +158,7 @@ pub(crate) fn cylinder_points(
     loads: &[f64],
     kt: f64,
     mu: f64,
+    edge: f64,
 ) -> Result<Vec<CylinderFePoint>, ResultsError> {
     let blocks = parse_dat(dat)?;
     let nodes = parse_nodes(deck)?;
@@ -248,7 +252,7 @@ pub(crate) fn cylinder_points(
         let at = |x: f64| interpolate(&faces.xs, &slips, x).unwrap_or(f64::NAN);
         points.push(CylinderFePoint {
             load,
-            edge_slip: 0.5 * (at(half_width) + at(-half_width)),
+            edge_slip: 0.5 * (at(edge) + at(-edge)),
             contact: Some(FeContact {
                 half_width,
                 peak_pressure,
@@ -271,7 +275,8 @@ mod tests {
         let kt: f64 = std::env::var("CYL_KT").map_or(5e4, |v| v.parse().unwrap());
         let deck = std::fs::read_to_string(format!("{dir}/cyl.inp")).unwrap();
         let dat = std::fs::read_to_string(format!("{dir}/cyl.dat")).unwrap();
-        for p in cylinder_points(&deck, &dat, &[90.0, 180.0], kt, 0.6).unwrap() {
+        let a = std::env::var("CYL_A").map_or(0.525_231_918_323_660_1, |v| v.parse().unwrap());
+        for p in cylinder_points(&deck, &dat, &[90.0, 180.0], kt, 0.6, a).unwrap() {
             println!("{p:?}");
         }
     }

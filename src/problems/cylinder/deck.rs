@@ -236,12 +236,16 @@ impl Deck for CylinderProblem {
         run: &CcxRun,
         params: &CylinderInputs,
     ) -> Result<Vec<CylinderFePoint>, ResultsError> {
+        let cylinder = Cylinder::new(params.structure).map_err(|e| {
+            ResultsError::Missing(format!("the deck's header holds no valid cylinder: {e}"))
+        })?;
         cylinder_points(
             run.deck,
             run.dat,
             &run.header.loads,
             params.structure.tangential_stiffness,
             params.structure.friction,
+            cylinder.half_width(),
         )
     }
 

@@ -48,6 +48,7 @@ fn presets_load_and_save_without_clobbering() {
             "paper-beams-soft",
             "paper-plate",
             "lap-aluminium",
+            "cylinder-steel-pad",
             "broken"
         ]
     );
@@ -57,7 +58,7 @@ fn presets_load_and_save_without_clobbering() {
     assert_eq!(app.inputs().get(KT), Some(120.0));
     // Invalid user file: refused with its problem, picker stays open.
     press(&mut app, Action::OpenPresets);
-    for _ in 0..3 {
+    for _ in 0..4 {
         press(&mut app, Action::Next);
     }
     press(&mut app, Action::Commit);
