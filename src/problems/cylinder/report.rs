@@ -101,7 +101,7 @@ impl From<&CylinderPoint> for CylinderRow {
 }
 
 impl ReportFace for CylinderProblem {
-    const MONOTONE_IN_STIFFNESS: &'static str = "(the cylinder's monotonicity in K_T)";
+    const MONOTONE_IN_STIFFNESS: &'static str = "(H16)";
     const KT_TITLE: &'static str = "Hertzian cylinder";
     const KT_COLUMNS: &'static [KtColumn] = &[
         KtColumn::Answer {
