@@ -342,8 +342,28 @@ pub struct RegularizedState {
 }
 
 impl Cylinder {
-    /// The regularized law's answer at `load` ((H10)-(H14), the default mesh).
+    /// The regularized law's answer at `load` ((H10)-(H14), the default mesh). The last answer
+    /// of each thread is kept: the faces of one model (its point, zone strip, profiles and
+    /// quantities) ask for the same solve several times per frame, and a solve is deterministic,
+    /// so the kept answer is the one a new solve would give, bit for bit.
     pub fn regularized(&self, load: TangentialLoad) -> RegularizedState {
+        thread_local! {
+            static LAST: std::cell::Cell<Option<RegularizedState>> =
+                const { std::cell::Cell::new(None) };
+        }
+        let kept = LAST
+            .with(std::cell::Cell::get)
+            .filter(|s| s.cylinder == *self && s.load == load.newtons_per_mm());
+        if let Some(state) = kept {
+            return state;
+        }
+        let state = self.solve_regularized(load);
+        LAST.with(|last| last.set(Some(state)));
+        state
+    }
+
+    /// [`Cylinder::regularized`] without the kept answer.
+    fn solve_regularized(&self, load: TangentialLoad) -> RegularizedState {
         let collocation = Collocation::default_mesh();
         let solution = solve_normalized(
             collocation,
