@@ -225,4 +225,64 @@ mod tests {
                 .ends_with("(allowed: R E nu P mu KT Q)")
         );
     }
+
+    /// The faces every problem writes read one solve: the zone strip's stretches, the point row,
+    /// the profiles (even in x, mu p in the sliding zones), the K_T answer (the model's own K_T
+    /// gives the model's state; s(a) falls to Mindlin's as K_T grows) and the quantities.
+    #[test]
+    fn every_face_reads_the_same_solve() {
+        use crate::problems::pointwise::Pointwise;
+        use crate::problems::profiled::Profiled;
+        use crate::problems::stiffness_answer::StiffnessAnswer;
+        let model = CylinderProblem::model(&CylinderProblem::paper()).unwrap();
+        let state = CylinderProblem::solve(&model);
+        let (mindlin, regularized) = (state.coulomb, state.regularized);
+        let layout = crate::problems::zoned::layout::<CylinderProblem>(&model);
+        assert_eq!(layout.length, model.cylinder.half_width());
+        assert_eq!(layout.coulomb.holding, [0.0, mindlin.stick_half_width()]);
+        assert_eq!(
+            layout.regularized.holding,
+            [0.0, regularized.micro_half_width()]
+        );
+        assert_eq!(layout.coulomb.regime.label(), "stick+macroslip");
+        assert_eq!(layout.regularized.regime.label(), "microslip+macroslip");
+        let point = CylinderProblem::point(&model);
+        assert_eq!(point.edge_slip_regularized, regularized.edge_slip());
+        assert_eq!(point.zone_coulomb, mindlin.stick_half_width());
+        assert_eq!(point.regime_regularized, regularized.regime());
+        let a = model.cylinder.half_width();
+        let xs: Vec<f64> = (0..=20).map(|i| a * (i as f64 / 10.0 - 1.0)).collect();
+        let (coulomb, regular) = CylinderProblem::shear_along(&model, xs.iter().copied());
+        for (i, &x) in xs.iter().enumerate() {
+            let mirror = xs.len() - 1 - i;
+            assert!((regular[i].1 - regular[mirror].1).abs() < 1e-9, "{x}");
+            assert!((coulomb[i].1 - coulomb[mirror].1).abs() < 1e-9, "{x}");
+            if x.abs() > regularized.micro_half_width() {
+                let limit = 0.6 * model.cylinder.pressure_at(x);
+                assert!((regular[i].1 - limit).abs() < 1e-9, "{x}");
+            }
+        }
+        let own = model.cylinder.params().tangential_stiffness;
+        let answer = CylinderProblem::answer(&model, own).unwrap();
+        assert_eq!(answer.edge_slip, regularized.edge_slip());
+        assert_eq!(answer.zone, regularized.micro_half_width());
+        let mindlin_slip = CylinderProblem::coulomb_response(&model);
+        assert_eq!(mindlin_slip, mindlin.edge_slip());
+        let mut last = f64::INFINITY;
+        for kt in [1e3, 1e5, 1e7, 1e9, 1e11] {
+            let slip = CylinderProblem::answer(&model, kt).unwrap().edge_slip;
+            assert!(slip < last && slip > mindlin_slip, "{kt}");
+            last = slip;
+        }
+        assert!(CylinderProblem::answer(&model, -1.0).is_none());
+        let quantity = |q| CylinderProblem::quantity(&model, q).unwrap();
+        assert_eq!(quantity(Quantity::Response), regularized.edge_slip());
+        assert_eq!(quantity(Quantity::MicroEnd), regularized.micro_half_width());
+        let ratio = regularized.edge_slip() / mindlin.edge_slip();
+        assert_eq!(quantity(Quantity::Ratio), ratio);
+        assert_eq!(
+            CylinderProblem::quantity(&model, Quantity::SlideFromStart),
+            None
+        );
+    }
 }

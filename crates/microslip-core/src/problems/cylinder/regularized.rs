@@ -15,7 +15,9 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use super::closed_form::{Cylinder, TangentialLoad, edge_root, mindlin_stick_ratio};
 use super::collocation::{Collocation, Mesh};
 use super::quadrature::{lu_factor, lu_solve};
+use crate::kernel::params::Domain;
 use crate::kernel::regime::{Regime, Zone};
+use crate::kernel::solve::find_root_in_bracket;
 use crate::problems::Solution;
 
 /// Unknowns of the default mesh ([`Mesh::DEFAULT`]).
@@ -340,8 +342,28 @@ pub struct RegularizedState {
 }
 
 impl Cylinder {
-    /// The regularized law's answer at `load` ((H10)-(H14), the default mesh).
+    /// The regularized law's answer at `load` ((H10)-(H14), the default mesh). The last answer
+    /// of each thread is kept: the faces of one model (its point, zone strip, profiles and
+    /// quantities) ask for the same solve several times per frame, and a solve is deterministic,
+    /// so the kept answer is the one a new solve would give, bit for bit.
     pub fn regularized(&self, load: TangentialLoad) -> RegularizedState {
+        thread_local! {
+            static LAST: std::cell::Cell<Option<RegularizedState>> =
+                const { std::cell::Cell::new(None) };
+        }
+        let kept = LAST
+            .with(std::cell::Cell::get)
+            .filter(|s| s.cylinder == *self && s.load == load.newtons_per_mm());
+        if let Some(state) = kept {
+            return state;
+        }
+        let state = self.solve_regularized(load);
+        LAST.with(|last| last.set(Some(state)));
+        state
+    }
+
+    /// [`Cylinder::regularized`] without the kept answer.
+    fn solve_regularized(&self, load: TangentialLoad) -> RegularizedState {
         let collocation = Collocation::default_mesh();
         let solution = solve_normalized(
             collocation,
@@ -359,6 +381,34 @@ impl Cylinder {
             shift: solution.shift,
             deficit,
         }
+    }
+}
+
+impl Cylinder {
+    /// The K_T (MPa/mm) at which this contact's regularized edge slip s(a) at `load` equals
+    /// `edge_slip` (mm), all else as in this contact: what an FE result of s(a) says about the
+    /// stiffness its code really used. s(a) falls with K_T at every load (H16), from large values
+    /// at the softest accepted K_T towards Mindlin's, so there is at most one answer; `None` when
+    /// no K_T in the accepted domain gives it (at Q = 0, or an s(a) at or below Mindlin's).
+    pub fn stiffness_for_edge_slip(&self, load: TangentialLoad, edge_slip: f64) -> Option<f64> {
+        // K_T = min e^k, k in [0, ln(max / min)]: the root finder's bracket starts at 0.
+        let min = Domain::STIFFNESS.min();
+        let at = |k: f64| {
+            self.with_tangential_stiffness(min * k.exp())
+                .map(|c| c.regularized(load).edge_slip())
+        };
+        let span = (Domain::STIFFNESS.max() / min).ln();
+        let (soft, stiff) = (at(0.0).ok()?, at(span).ok()?);
+        if !(edge_slip > 0.0 && (stiff..=soft).contains(&edge_slip)) {
+            return None;
+        }
+        // Relative misfit, so that the root finder sees numbers near 1 whatever the scale.
+        let k = find_root_in_bracket(
+            |k| at(k).map_or(f64::NAN, |s| s / edge_slip - 1.0),
+            0.0,
+            span,
+        );
+        Some(min * k.exp())
     }
 }
 

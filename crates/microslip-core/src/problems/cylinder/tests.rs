@@ -323,3 +323,42 @@ fn extreme_inputs_give_finite_answers() {
         }
     }
 }
+
+/// An FE code's s(a) says which K_T it used: the round trip through
+/// [`Cylinder::stiffness_for_edge_slip`] returns the K_T, and an s(a) no K_T gives (Mindlin's
+/// or less, or any at Q = 0) has no answer.
+#[test]
+fn the_edge_slip_gives_back_the_stiffness() {
+    let pad = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
+    let load = pad.load(300.0).unwrap();
+    for kt in [3e3, 1e5, 3e7] {
+        let slip = pad
+            .with_tangential_stiffness(kt)
+            .unwrap()
+            .regularized(load)
+            .edge_slip();
+        let found = pad.stiffness_for_edge_slip(load, slip).unwrap();
+        assert!((found / kt - 1.0).abs() < 1e-8, "{kt}: {found}");
+    }
+    let mindlin = pad.coulomb(load).edge_slip();
+    assert_eq!(pad.stiffness_for_edge_slip(load, 0.99 * mindlin), None);
+    assert_eq!(pad.stiffness_for_edge_slip(load, -1.0), None);
+    let unloaded = pad.load(0.0).unwrap();
+    assert_eq!(pad.stiffness_for_edge_slip(unloaded, 1e-3), None);
+}
+
+/// The kept answer is the one a new solve gives, bit for bit, and a new load or K_T is solved
+/// anew.
+#[test]
+fn the_kept_answer_is_a_fresh_solve() {
+    let pad = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
+    let load = pad.load(300.0).unwrap();
+    let first = pad.regularized(load);
+    let other = pad.regularized(pad.load(301.0).unwrap());
+    assert_ne!(first, other);
+    let again = pad.regularized(load);
+    assert_eq!(first, again);
+    let stiffer = pad.with_tangential_stiffness(2e5).unwrap();
+    assert_ne!(stiffer.regularized(load), first);
+    assert_eq!(pad.regularized(load), first);
+}
