@@ -10,6 +10,7 @@ use crate::kernel::format::number;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::Param;
 use crate::study::curves::Spacing;
+use crate::study::samples::Series;
 
 /// The cylinder's charts, in the order the TUI cycles through them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -110,7 +111,7 @@ fn cylinder_plot(
             // Up to just below gross slip, where the edge slip grows without bound.
             let top = span.map_or(gross, |s| s.min(gross)) * 0.98;
             let loads = samples(0.0, top.max(f64::MIN_POSITIVE), Spacing::Linear)?;
-            let (mindlin, regularized): (Vec<(f64, f64)>, Vec<(f64, f64)>) = loads
+            let (mindlin, regularized): (Series, Series) = loads
                 .values()
                 .map(|x| {
                     let l = at(cylinder, x);
@@ -171,7 +172,7 @@ fn cylinder_plot(
             let xs = samples(-a, a, Spacing::Linear)?;
             let (mindlin, regularized) = (cylinder.coulomb(load), cylinder.regularized(load));
             let shear = chart == CylinderChart::Shear;
-            let (coulomb, current): (Vec<(f64, f64)>, Vec<(f64, f64)>) = xs
+            let (coulomb, current): (Series, Series) = xs
                 .values()
                 .map(|x| {
                     if shear {

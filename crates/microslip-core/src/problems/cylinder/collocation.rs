@@ -18,7 +18,7 @@ use super::quadrature::{
 /// The elements: a first one [0, 1 - ratio], then each next one `ratio` times as long as the
 /// one before, `layers` of them, and a last one reaching u = 1; `points` Gauss points in each.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Mesh {
+pub struct CollocationMesh {
     /// Length of each element over the one before it, towards the edge (0 < ratio < 1).
     pub ratio: f64,
     /// Graded elements after the first (the last one, touching u = 1, is of length
@@ -28,11 +28,11 @@ pub struct Mesh {
     pub points: usize,
 }
 
-impl Mesh {
+impl CollocationMesh {
     /// The mesh every solve uses (docs/theory.md, the convergence table (H14)): its smallest
     /// element is 0.2^14 = 1.6e-10 of c, below the boundary layer of every K_T a / E* up to
     /// 1e8 and the edge zones of every Q / mu P above 1e-4.
-    pub const DEFAULT: Mesh = Mesh {
+    pub const DEFAULT: CollocationMesh = CollocationMesh {
         ratio: 0.2,
         layers: 14,
         points: 8,
@@ -57,7 +57,7 @@ impl Mesh {
 /// A mesh with its collocation points, quadrature weights and kernel matrix.
 #[derive(Debug, Clone)]
 pub struct Collocation {
-    mesh: Mesh,
+    mesh: CollocationMesh,
     /// Element ends, from 0 to 1.
     breaks: Vec<f64>,
     /// The reference Gauss points and their barycentric weights.
@@ -79,12 +79,12 @@ impl Collocation {
     /// The default mesh's, computed once.
     pub fn default_mesh() -> &'static Collocation {
         static DEFAULT: OnceLock<Collocation> = OnceLock::new();
-        DEFAULT.get_or_init(|| Collocation::new(Mesh::DEFAULT))
+        DEFAULT.get_or_init(|| Collocation::new(CollocationMesh::DEFAULT))
     }
 
     /// Builds the collocation of `mesh` (its points clamped to [1, 16], its ratio to (0, 1)).
-    pub fn new(mesh: Mesh) -> Collocation {
-        let mesh = Mesh {
+    pub fn new(mesh: CollocationMesh) -> Collocation {
+        let mesh = CollocationMesh {
             points: mesh.points.clamp(1, MAX_POINTS),
             ratio: mesh.ratio.clamp(1e-3, 0.999),
             layers: mesh.layers,
@@ -131,7 +131,7 @@ impl Collocation {
     }
 
     /// The mesh.
-    pub fn mesh(&self) -> Mesh {
+    pub fn mesh(&self) -> CollocationMesh {
         self.mesh
     }
 
@@ -201,7 +201,7 @@ mod tests {
     /// about 2.62^(-2 * 8) = 2e-7 of the function's size.
     #[test]
     fn the_kernel_reproduces_the_half_ellipse_s_log_potential() {
-        let colloc = Collocation::new(Mesh::DEFAULT);
+        let colloc = Collocation::new(CollocationMesh::DEFAULT);
         let values: Vec<f64> = colloc.nodes.iter().map(|&v| (1.0 - v * v).sqrt()).collect();
         let closed = |u: f64| {
             let pi2 = std::f64::consts::FRAC_PI_2;

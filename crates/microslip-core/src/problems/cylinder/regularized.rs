@@ -13,15 +13,16 @@
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use super::closed_form::{Cylinder, TangentialLoad, edge_root, mindlin_stick_ratio};
-use super::collocation::{Collocation, Mesh};
+use super::collocation::{Collocation, CollocationMesh};
 use super::quadrature::{lu_factor, lu_solve};
 use crate::kernel::params::Domain;
 use crate::kernel::regime::{Regime, Zone};
 use crate::kernel::solve::find_root_in_bracket;
 use crate::problems::Solution;
 
-/// Unknowns of the default mesh ([`Mesh::DEFAULT`]).
-pub const DEFAULT_UNKNOWNS: usize = (Mesh::DEFAULT.layers + 1) * Mesh::DEFAULT.points;
+/// Unknowns of the default mesh ([`CollocationMesh::DEFAULT`]).
+pub const DEFAULT_UNKNOWNS: usize =
+    (CollocationMesh::DEFAULT.layers + 1) * CollocationMesh::DEFAULT.points;
 
 /// The regularized solution in normalized form (H6): what depends on kappa and Q / mu P only.
 #[derive(Debug, Clone, PartialEq)]
@@ -326,7 +327,7 @@ pub fn solve_normalized(
     }
 }
 
-/// The regularized answer at one tangential load, on the default mesh ([`Mesh::DEFAULT`]): a
+/// The regularized answer at one tangential load, on the default mesh ([`CollocationMesh::DEFAULT`]): a
 /// microslip zone |x| < c at the centre where q = K_T s < mu p, sliding at q = mu p beyond.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RegularizedState {

@@ -6,7 +6,7 @@
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use super::closed_form::{Cylinder, CylinderParams, mindlin_slip_normalized, mindlin_stick_ratio};
-use super::collocation::{Collocation, Mesh};
+use super::collocation::{Collocation, CollocationMesh};
 use super::regularized::{NormalizedSolution, compliant_limit_zone, solve_normalized};
 use crate::kernel::regime::Regime;
 
@@ -265,7 +265,7 @@ fn the_regularized_law_holds_between_the_collocation_points() {
 /// and stiffnesses, and the error falls as the points per element grow.
 #[test]
 fn the_default_mesh_is_converged() {
-    let fine = Collocation::new(Mesh {
+    let fine = Collocation::new(CollocationMesh {
         ratio: 0.1,
         layers: 14,
         points: 14,
@@ -273,13 +273,13 @@ fn the_default_mesh_is_converged() {
     let meshes: Vec<Collocation> = [4, 6, 8]
         .into_iter()
         .map(|points| {
-            Collocation::new(Mesh {
+            Collocation::new(CollocationMesh {
                 points,
-                ..Mesh::DEFAULT
+                ..CollocationMesh::DEFAULT
             })
         })
         .collect();
-    assert_eq!(meshes[2].mesh(), Mesh::DEFAULT);
+    assert_eq!(meshes[2].mesh(), CollocationMesh::DEFAULT);
     for (kappa, q) in [
         (0.1, 0.5),
         (1.0, 0.05),
