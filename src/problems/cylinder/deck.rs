@@ -1,5 +1,5 @@
-//! The Hertzian cylinder's FE deck ([`Deck`]): the CalculiX deck ([`super::deck_writer`]), the
-//! header it carries, its results ([`super::ccx_read`]) and their comparison with the half-plane
+//! The Hertzian cylinder's FE deck ([`Deck`]): the CalculiX deck (`deck_writer.rs`), the
+//! header it carries, its results (`ccx_read.rs`) and their comparison with the half-plane
 //! solution (Hertz's a and p0, the regularized c, s(a), s(0) at the deck's stick slope, and
 //! Mindlin's c beside them).
 

@@ -5,9 +5,8 @@
 //! history), over stiffnesses from as compliant as the bodies to nearly rigid; under plain
 //! Coulomb, Mindlin-Deresiewicz's loop (tests).
 //!
-//! The [`CrossChecked`](crate::problems::cross_check::CrossChecked) impl is three lines over
-//! [`cases`], [`compare`] and [`describe`]; it names the registered problem type, so it is
-//! written (commented) at the end of this file until the registry lists the cylinder.
+//! The [`CrossChecked`] impl, at the end of this file, is three lines over [`cases`],
+//! [`compare`] and [`describe`].
 
 use super::closed_form::{Cylinder, CylinderParams, TangentialLoad};
 use super::cycle::{CylinderCycle, MasingCycle};
