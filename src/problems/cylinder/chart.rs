@@ -9,7 +9,7 @@ use crate::chart::{NumericPoints, Plot, SeriesRole, cursor, line, linear_axis, m
 use crate::kernel::format::number;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::Param;
-use crate::study::curves::Spacing;
+use crate::study::curves::{Samples, Spacing};
 use crate::study::samples::Series;
 
 /// The cylinder's charts, in the order the TUI cycles through them.
@@ -90,6 +90,12 @@ impl ChartFace for CylinderProblem {
     }
 }
 
+/// The points of a curve whose every point is a regularized solve (the s(a) and c/a curves):
+/// 41, not the charts' 200, so that a frame stays within the TUI's budget; the curves are smooth.
+fn few(from: f64, to: f64) -> Option<Samples> {
+    Samples::new(from, to, 41, Spacing::Linear).ok()
+}
+
 /// A load of `cylinder` at `q` (N/mm), clamped to what it carries.
 fn at(cylinder: &Cylinder, q: f64) -> TangentialLoad {
     cylinder.clamped_load(q)
@@ -110,7 +116,7 @@ fn cylinder_plot(
         CylinderChart::EdgeSlip => {
             // Up to just below gross slip, where the edge slip grows without bound.
             let top = span.map_or(gross, |s| s.min(gross)) * 0.98;
-            let loads = samples(0.0, top.max(f64::MIN_POSITIVE), Spacing::Linear)?;
+            let loads = few(0.0, top.max(f64::MIN_POSITIVE))?;
             let (mindlin, regularized): (Series, Series) = loads
                 .values()
                 .map(|x| {
@@ -135,7 +141,7 @@ fn cylinder_plot(
             })
         }
         CylinderChart::Zone => {
-            let ratios = samples(0.0, 0.98, Spacing::Linear)?;
+            let ratios = few(0.0, 0.98)?;
             let family = |kt: f64| -> Vec<(f64, f64)> {
                 let Ok(c) = cylinder.with_tangential_stiffness(kt) else {
                     return Vec::new();

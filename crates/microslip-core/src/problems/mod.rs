@@ -543,7 +543,8 @@ mod tests {
             [
                 Param::Beam(BeamParam::Stiffness),
                 Param::Plate(PlateParam::Stiffness),
-                Param::Lap(LapParam::Stiffness)
+                Param::Lap(LapParam::Stiffness),
+                Param::Cylinder(cylinder::CylinderParam::Stiffness)
             ]
         );
     }
@@ -670,7 +671,8 @@ mod tests {
             [
                 (ModelKind::Beam, "beam"),
                 (ModelKind::Plate, "changed"),
-                (ModelKind::Lap, "lap")
+                (ModelKind::Lap, "lap"),
+                (ModelKind::Cylinder, "cylinder")
             ]
         );
     }
