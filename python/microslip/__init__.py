@@ -2,8 +2,8 @@
 
 Units everywhere: mm, N, MPa; the tangential stiffness KT in MPa/mm.
 
-One class per problem of the registry (``TwinBeams``, ``Plate``, ``LapJoint``), built with keyword
-parameters (a parameter not given takes the bundled paper data set's value) or from a preset::
+One class per problem of the registry (``TwinBeams``, ``Plate``, ``LapJoint``,
+``HertzianCylinder``), built with keyword parameters (a parameter not given takes the bundled paper data set's value) or from a preset::
 
     import microslip
     beams = microslip.preset("paper-beams")          # or microslip.TwinBeams(KT=600, F=100)
@@ -33,7 +33,12 @@ __version__ = _native.__version__
 # The only per-problem text of the Python half: the issue's class names for the registry keys.
 # A problem missing here gets its title in CamelCase ("clamped double-lap joint" ->
 # "ClampedDoubleLapJoint").
-_CLASS_NAMES = {"beam": "TwinBeams", "plate": "Plate", "lap": "LapJoint"}
+_CLASS_NAMES = {
+    "beam": "TwinBeams",
+    "plate": "Plate",
+    "lap": "LapJoint",
+    "cylinder": "HertzianCylinder",
+}
 
 PROBLEMS = tuple(_native.problems())
 """The registry: one dict per problem (key, title, params with units and domains, quantities)."""

@@ -22,13 +22,14 @@ use microslip::fe::load;
 use microslip::fit::{self, Weights};
 use microslip::kernel::params::{Compact, Domain, Unit};
 use microslip::kernel::validity::Validity;
+use microslip::problems::cylinder::problem::CylinderProblem;
 use microslip::problems::inputs::Model;
 use microslip::problems::lap::LapJointProblem;
 use microslip::problems::load_driven::LoadDriven;
 use microslip::problems::plate::SqueezedPlateProblem;
 use microslip::problems::problem::Registered;
 use microslip::problems::twin_beams::TwinBeamsProblem;
-use microslip::problems::{ModelKind, Problem, lap, plate, twin_beams};
+use microslip::problems::{ModelKind, Problem, cylinder, lap, plate, twin_beams};
 use microslip::report::compare::{
     beam::BeamCompareReport, lap::LapCompareReport, plate::PlateCompareReport,
 };
@@ -267,6 +268,19 @@ impl Face for LapJointProblem {
     fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
         let rows = compared.as_ref().map_err(|e| format!("{source}: {e}"))?;
         Ok(json::of(&LapCompareReport::new(source, rows)))
+    }
+}
+
+impl Face for CylinderProblem {
+    fn point_report(model: &Self::Model, name: &str) -> Value {
+        json::of(&cylinder::report::CylinderReport::new(name, model))
+    }
+
+    fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
+        let rows = compared.as_ref().map_err(|e| format!("{source}: {e}"))?;
+        Ok(json::of(&cylinder::deck::CylinderCompareReport::new(
+            source, rows,
+        )))
     }
 }
 

@@ -54,8 +54,10 @@ def test_random_parameters_equal_the_cli_json(cli, entry):
 
 
 def _response(report: dict, law: str) -> float:
-    """The response in a point report: the one `*_mm` key of the law naming w, u or Delta."""
-    keys = [k for k in report[law] if k.split("_")[0] in {"w", "u", "Delta"} and k.endswith("_mm")]
+    """The response in a point report: the one `*_mm` key of the law naming w, u, Delta or s(a)."""
+    keys = [
+        k for k in report[law] if k.split("_")[0] in {"w", "u", "Delta", "sa"} and k.endswith("_mm")
+    ]
     assert len(keys) == 1, keys
     return report[law][keys[0]]
 

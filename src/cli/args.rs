@@ -19,6 +19,11 @@ pub enum Command {
     // --beam-theory has no effect here: hidden from the help (and refused if given).
     #[command(mut_arg("beam_theory", |a| a.hide(true)))]
     Lap(LapPointArgs),
+    /// Any other problem of the registry at one state, by its key (`microslip KEY --preset P
+    /// --set K=V --format json`, the flags of `beam`): a problem that has no subcommand written
+    /// here is reached through its registry key.
+    #[command(external_subcommand)]
+    OtherProblem(Vec<String>),
     /// Tables over a parameter range, as CSV or JSON.
     Sweep(SweepArgs),
     /// The value of one parameter at which a quantity takes a target value (a certified root).

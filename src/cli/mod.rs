@@ -160,6 +160,19 @@ fn print_error(message: &str) {
 }
 
 /// Help and version go to stdout as clap writes them; every other parse error becomes one line.
+/// A clap error that is no request for help, as the one line `microslip: ...` says it.
+fn clap_error_line(error: &clap::Error) -> String {
+    let rendered = error.render().to_string();
+    let first_block: Vec<&str> = rendered
+        .lines()
+        .take_while(|l| !l.trim().is_empty())
+        .map(str::trim)
+        .collect();
+    let line = first_block.join(" ");
+    let line = line.strip_prefix("error: ").unwrap_or(&line);
+    format!("{line} (see --help)")
+}
+
 fn report_clap_error(error: &clap::Error) -> ExitCode {
     use clap::error::ErrorKind;
     if matches!(
@@ -179,15 +192,7 @@ fn report_clap_error(error: &clap::Error) -> ExitCode {
             }
         };
     }
-    let rendered = error.render().to_string();
-    let first_block: Vec<&str> = rendered
-        .lines()
-        .take_while(|l| !l.trim().is_empty())
-        .map(str::trim)
-        .collect();
-    let line = first_block.join(" ");
-    let line = line.strip_prefix("error: ").unwrap_or(&line);
-    print_error(&format!("{line} (see --help)"));
+    print_error(&clap_error_line(error));
     ExitCode::from(2)
 }
 
@@ -200,6 +205,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
         Some(Command::Plate(args)) => run_point(out, "plate", &args.point, args.continuum)?,
         Some(Command::Sweep(args)) => run_sweep(out, args)?,
         Some(Command::Lap(args)) => run_point(out, "lap", &args.point, args.continuum)?,
+        Some(Command::OtherProblem(words)) => run_other_point(out, words)?,
         Some(Command::Solve(args)) => run_solve(out, args)?,
         Some(Command::Fit(command)) => run_fit_command(out, command)?,
         Some(Command::Kt {

@@ -24,6 +24,34 @@ pub(super) fn run_point(
     )
 }
 
+/// `microslip KEY ...` for a problem of the registry that has no subcommand of its own: the
+/// words after the key parsed with the flags of `beam` (`--preset`, `--set`, `--format`), then
+/// [`run_point`]. A word that is no problem's key is refused as clap refuses an unknown
+/// subcommand.
+pub(super) fn run_other_point(out: &mut impl Write, words: &[String]) -> Result<(), CliError> {
+    use clap::{Args as _, FromArgMatches as _};
+    let name = words.first().map_or("", String::as_str);
+    let Ok(kind) = name.parse::<ModelKind>() else {
+        return Err(CliError::Invalid(format!(
+            "unrecognized subcommand '{name}' (see --help)"
+        )));
+    };
+    let command = PointArgs::augment_args(clap::Command::new(kind.name())).about(
+        "One state of the problem: both laws side by side, regimes, zones (the flags of `beam`)",
+    );
+    let matches = match command.try_get_matches_from(words) {
+        Ok(matches) => matches,
+        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelp => {
+            write!(out, "{}", e.render())?;
+            return Ok(());
+        }
+        Err(e) => return Err(CliError::Invalid(clap_error_line(&e))),
+    };
+    let args = PointArgs::from_arg_matches(&matches)
+        .map_err(|e| CliError::Invalid(clap_error_line(&e)))?;
+    run_point(out, name, &args, false)
+}
+
 /// The arguments of [`run_point`], for [`for_problem`].
 struct Point<'a, W> {
     out: &'a mut W,

@@ -216,6 +216,10 @@ const BUNDLED: &[(&str, &str)] = &[
         "lap-aluminium",
         include_str!("../../presets/lap-aluminium.toml"),
     ),
+    (
+        "cylinder-steel-pad",
+        include_str!("../../presets/cylinder-steel-pad.toml"),
+    ),
 ];
 
 /// The setting that is a name (not a number) of any problem whose preset key is `key`
@@ -408,6 +412,7 @@ mod tests {
                 "paper-plate",
                 "plate-bench",
                 "lap-aluminium",
+                "cylinder-steel-pad",
                 "a",
                 "b"
             ]

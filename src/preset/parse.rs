@@ -263,7 +263,7 @@ mod tests {
             Preset::parse("description = 3\nmodel = 4\n", "x", PresetSource::Bundled).unwrap_err();
         assert_eq!(
             problems[0].to_string(),
-            "line 2: invalid model = a non-string value: must be \"beam\", \"plate\" or \"lap\""
+            "line 2: invalid model = a non-string value: must be \"beam\", \"plate\", \"lap\" or \"cylinder\""
         );
     }
 
@@ -313,7 +313,7 @@ mod tests {
             Preset::parse("model = \"shell\"\n", "x", PresetSource::Bundled).unwrap_err();
         assert_eq!(
             problems[0].to_string(),
-            "line 1: invalid model = 'shell': must be \"beam\", \"plate\" or \"lap\""
+            "line 1: invalid model = 'shell': must be \"beam\", \"plate\", \"lap\" or \"cylinder\""
         );
     }
 

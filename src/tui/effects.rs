@@ -895,7 +895,8 @@ mod tests {
             matches!(asked.as_slice(), [Effect::Fit { .. }]),
             "{asked:?}"
         );
-        // They are the joint's: the beams have nothing to fit.
+        // They are the joint's: the beams (past the cylinder) have nothing to fit.
+        app.update(Action::SwitchModel);
         app.update(Action::SwitchModel);
         app.update(Action::Fit);
         let text = &app.message().unwrap().text;

@@ -116,6 +116,33 @@ fn lap_views() {
     insta::assert_snapshot!("lap_kt_table", screen(&app, 80, 24));
 }
 
+/// The Hertzian cylinder, as a newcomer meets it from its preset: at 80x24 in ASCII (a, c, s(a)
+/// must show, and that P and Q are line loads), at 120x40 in Unicode, and each of its charts.
+#[test]
+fn cylinder_views() {
+    let ascii = app_with("cylinder-steel-pad", Charset::Ascii, false);
+    let small = screen(&ascii, 80, 24);
+    for needed in [
+        "a 0.7428 mm",
+        "c/a Mindlin 0.707",
+        "s(a) 3.02401 um",
+        "N/mm",
+    ] {
+        assert!(small.contains(needed), "{needed}\n{small}");
+    }
+    insta::assert_snapshot!("cylinder_view_80x24_ascii", small);
+    let mut app = app_with("cylinder-steel-pad", Charset::Unicode, true);
+    insta::assert_snapshot!("cylinder_view_120x40", screen(&app, 120, 40));
+    for name in [
+        "cylinder_zone_chart",
+        "cylinder_shear_chart",
+        "cylinder_slip_chart",
+    ] {
+        press(&mut app, Action::NextChart);
+        insta::assert_snapshot!(name, screen(&app, 100, 30));
+    }
+}
+
 #[test]
 fn help_overlay() {
     let mut app = app();

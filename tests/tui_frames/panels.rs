@@ -98,7 +98,8 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
     });
     press(&mut app, Action::OpenPresets);
     // Bundled: paper-beams, paper-beams-soft (selected), paper-plate, plate-bench,
-    // lap-aluminium; then the user's paper-beams.
+    // lap-aluminium, cylinder-steel-pad; then the user's paper-beams.
+    press(&mut app, Action::Next);
     press(&mut app, Action::Next);
     press(&mut app, Action::Next);
     press(&mut app, Action::Next);
@@ -120,7 +121,7 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
         message.text
     );
     // The picker stays open; picking the bundled one (first row) loads the bundled values.
-    for _ in 0..5 {
+    for _ in 0..6 {
         press(&mut app, Action::Previous);
     }
     press(&mut app, Action::Commit);
@@ -385,8 +386,10 @@ fn y_axis_modes_at_80x24_and_120x40() {
     assert!(relative_title(&relative.app(Charset::Unicode, true)));
     let mut app = log_u.app(Charset::Unicode, true);
     assert!(app.plot().y.log, "u(L) vs K_T opens on a log axis");
-    // Through the lap joint (its own mode, linear) back to the beams: the relative mode of w(L)
-    // vs F was kept.
+    // Through the lap joint and the cylinder (their own modes, linear) back to the beams: the
+    // relative mode of w(L) vs F was kept.
+    press(&mut app, Action::SwitchModel);
+    assert!(!app.plot().y.log && !relative_title(&app));
     press(&mut app, Action::SwitchModel);
     assert!(!app.plot().y.log && !relative_title(&app));
     press(&mut app, Action::SwitchModel);

@@ -18,18 +18,22 @@ pub enum Unit {
     Megapascal,
     /// Megapascal per millimetre (stiffness per unit area).
     MegapascalPerMillimetre,
+    /// Newton per millimetre: a line load, per unit length of a plane-strain body (the
+    /// Hertzian cylinder's P and Q).
+    NewtonPerMillimetre,
     /// No unit.
     Dimensionless,
 }
 
 impl Unit {
-    /// The symbol: `mm`, `N`, `MPa`, `MPa/mm`, or `-` for dimensionless.
+    /// The symbol: `mm`, `N`, `MPa`, `MPa/mm`, `N/mm`, or `-` for dimensionless.
     pub fn symbol(self) -> &'static str {
         match self {
             Unit::Millimetre => "mm",
             Unit::Newton => "N",
             Unit::Megapascal => "MPa",
             Unit::MegapascalPerMillimetre => "MPa/mm",
+            Unit::NewtonPerMillimetre => "N/mm",
             Unit::Dimensionless => "-",
         }
     }

@@ -305,13 +305,13 @@ mod tests {
                     "{kind} {law:?}"
                 );
             }
-            // A force refused by the checked constructor is refused here too, naming F.
+            // A force refused by the checked constructor is refused here too, naming the load
+            // (F, or the cylinder's Q).
             let refused = load_driven.response(&model, Law::Coulomb, -1.0).unwrap();
+            let message = refused.unwrap_err().to_string();
             assert!(
-                refused
-                    .unwrap_err()
-                    .to_string()
-                    .starts_with("invalid F = -1")
+                message.starts_with("invalid F = -1") || message.starts_with("invalid Q = -1"),
+                "{message}"
             );
 
             for other in ModelKind::ALL.into_iter().filter(|&o| o != kind) {
@@ -322,6 +322,9 @@ mod tests {
                 assert!(load_driven.response(&theirs, Law::Coulomb, 1.0).is_none());
             }
         }
-        assert_eq!(found, [ModelKind::Beam, ModelKind::Lap]);
+        assert_eq!(
+            found,
+            [ModelKind::Beam, ModelKind::Lap, ModelKind::Cylinder]
+        );
     }
 }

@@ -146,6 +146,8 @@ macro_rules! enum_bridges {
     };
 }
 
+// After `enum_bridges!`, which its `impl Problem` uses.
+pub mod cylinder;
 pub mod inputs;
 pub mod lap;
 pub mod load_driven;
@@ -287,6 +289,8 @@ macro_rules! with_problems {
             Plate => plate::SqueezedPlateProblem,
             /// Clamped double-lap joint (issue 24).
             Lap => lap::LapJointProblem,
+            /// Hertzian cylinder on a flat under a tangential line load (issue 34).
+            Cylinder => cylinder::CylinderProblem,
         }
     };
 }
@@ -539,7 +543,8 @@ mod tests {
             [
                 Param::Beam(BeamParam::Stiffness),
                 Param::Plate(PlateParam::Stiffness),
-                Param::Lap(LapParam::Stiffness)
+                Param::Lap(LapParam::Stiffness),
+                Param::Cylinder(cylinder::CylinderParam::Stiffness)
             ]
         );
     }
@@ -666,7 +671,8 @@ mod tests {
             [
                 (ModelKind::Beam, "beam"),
                 (ModelKind::Plate, "changed"),
-                (ModelKind::Lap, "lap")
+                (ModelKind::Lap, "lap"),
+                (ModelKind::Cylinder, "cylinder")
             ]
         );
     }

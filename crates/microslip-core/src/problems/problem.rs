@@ -763,7 +763,7 @@ mod tests {
             .collect();
         assert_eq!(
             "beams".parse::<ModelKind>().unwrap_err().to_string(),
-            "unknown model 'beams': must be \"beam\", \"plate\" or \"lap\""
+            "unknown model 'beams': must be \"beam\", \"plate\", \"lap\" or \"cylinder\""
         );
         assert!(ModelKind::choices().ends_with(&format!(" or {}", keys[keys.len() - 1])));
         for kind in ModelKind::ALL {

@@ -528,6 +528,7 @@ pub fn solve_for_target(
                 crate::kernel::params::Unit::Newton => " N",
                 crate::kernel::params::Unit::Megapascal => " MPa",
                 crate::kernel::params::Unit::MegapascalPerMillimetre => " MPa/mm",
+                crate::kernel::params::Unit::NewtonPerMillimetre => " N/mm",
             },
             quantity: name,
             quantity_unit: match quantity.unit(kind) {

@@ -49,6 +49,7 @@ fn presets_load_and_save_without_clobbering() {
             "paper-plate",
             "plate-bench",
             "lap-aluminium",
+            "cylinder-steel-pad",
             "broken"
         ]
     );

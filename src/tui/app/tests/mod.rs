@@ -136,6 +136,8 @@ fn pins_keep_values_follow_the_charts_and_are_named_by_what_differs() {
     app.update(Action::SwitchModel);
     assert_eq!(app.kind(), ModelKind::Lap);
     assert!(pinned(&app).is_empty());
+    app.update(Action::SwitchModel); // the cylinder, no pins either
+    assert!(pinned(&app).is_empty());
     app.update(Action::SwitchModel);
     assert_eq!(pinned(&app).len(), 2);
     // A fifth pin replaces the oldest, and its number is free again.
@@ -269,6 +271,7 @@ fn undo_and_redo_walk_a_bounded_history_of_both_models() {
     app.update(Action::SwitchModel);
     app.update(Action::IncreaseCoarse); // plate L 12.5
     app.update(Action::SwitchModel); // the lap joint, unchanged
+    app.update(Action::SwitchModel); // the cylinder, unchanged
     app.update(Action::SwitchModel);
     app.update(Action::IncreaseCoarse); // L 312.5
     assert_eq!(app.history(), (3, 0));
@@ -422,6 +425,7 @@ fn switching_model_keeps_each_models_edits() {
     app.update(Action::SwitchModel);
     assert_eq!(app.kind(), ModelKind::Lap);
     assert_eq!(app.preset_name(), "lap-aluminium");
+    app.update(Action::SwitchModel); // the cylinder
     app.update(Action::SwitchModel);
     assert_eq!(app.inputs().get(L), Some(250.0));
 }

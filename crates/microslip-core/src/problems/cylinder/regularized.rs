@@ -1,0 +1,538 @@
+//! The Hertzian cylinder under the regularized law (q = K_T s up to mu p): the semi-analytic
+//! solution of docs/theory.md (H10)-(H14).
+//!
+//! In the normalized variables (H6) (x / a, q / (mu p0), s K_T / (mu p0)) the answer depends on
+//! kappa = K_T a / E* and Q / (mu P) only. The contact has one elastic ("microslip") zone |x| <
+//! c at the centre, where q = K_T s < mu p, and two sliding zones c < |x| < a at q = mu p, for
+//! every 0 < Q < mu P. The unknown is the shear deficit g = mu p - q in the microslip zone,
+//! psi = g / (mu p0) (zero at its edges, where q meets mu p), with the rigid shift; for a given c
+//! the equations are linear (H11) and collocated on the graded mesh of [`super::collocation`];
+//! c itself is the root of Q(c) = Q (H13), found by Newton's method with the exact derivative
+//! (one more back-substitution), safeguarded by bisection.
+
+use std::f64::consts::{FRAC_PI_2, PI};
+
+use super::closed_form::{Cylinder, TangentialLoad, edge_root, mindlin_stick_ratio};
+use super::collocation::{Collocation, CollocationMesh};
+use super::quadrature::{lu_factor, lu_solve};
+use crate::kernel::params::Domain;
+use crate::kernel::regime::{Regime, Zone};
+use crate::kernel::solve::find_root_in_bracket;
+use crate::problems::Solution;
+
+/// Unknowns of the default mesh ([`CollocationMesh::DEFAULT`]).
+pub const DEFAULT_UNKNOWNS: usize =
+    (CollocationMesh::DEFAULT.layers + 1) * CollocationMesh::DEFAULT.points;
+
+/// The regularized solution in normalized form (H6): what depends on kappa and Q / mu P only.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NormalizedSolution {
+    /// kappa = K_T a / E*.
+    pub kappa: f64,
+    /// Q / (mu P).
+    pub load_ratio: f64,
+    /// c / a, the microslip zone's half-width.
+    pub zone: f64,
+    /// The constant D of (H11) and (H13): (pi / 2) s E* / (mu p0 a) minus pi t^2 / 2 and
+    /// the deficit's potential, the same at every x (it holds the rigid shift).
+    pub shift: f64,
+    /// psi = (mu p - q) / (mu p0) at the collocation points u_i = x / c.
+    pub deficit: Vec<f64>,
+}
+
+impl NormalizedSolution {
+    /// The solution's fields on `collocation`.
+    fn fields<'a>(&'a self, collocation: &'a Collocation) -> Fields<'a> {
+        Fields {
+            collocation,
+            kappa: self.kappa,
+            zone: self.zone,
+            shift: self.shift,
+            deficit: &self.deficit,
+        }
+    }
+
+    /// q / (mu p0) at t = x / a (H10), inside or beyond the microslip zone.
+    pub fn shear(&self, collocation: &Collocation, t: f64) -> f64 {
+        self.fields(collocation).shear(t)
+    }
+
+    /// s E* / (mu p0 a) at t = x / a: q / K_T in the microslip zone, by (H13)'s potential beyond
+    /// it; at the edge beyond the contact.
+    pub fn slip(&self, collocation: &Collocation, t: f64) -> f64 {
+        self.fields(collocation).slip(t)
+    }
+
+    /// s E* / (mu p0 a) at t = x / a <= 1 by (H13)'s potential wherever t lies: beyond the
+    /// microslip zone it is [`NormalizedSolution::slip`]; inside it, it must equal q / K_T,
+    /// which the collocation imposes at its points only.
+    pub fn potential_slip(&self, collocation: &Collocation, t: f64) -> f64 {
+        self.fields(collocation).potential_slip(t)
+    }
+
+    /// psi = (mu p - q) / (mu p0) at t = x / a in the microslip zone by its polynomial
+    /// interpolant on the mesh (what [`NormalizedSolution::shear`] uses for kappa above
+    /// [`NYSTROM_BELOW`]).
+    pub fn interpolated_deficit(&self, collocation: &Collocation, t: f64) -> f64 {
+        if self.zone == 0.0 {
+            return 0.0;
+        }
+        collocation.interpolate(&self.deficit, t.abs() / self.zone)
+    }
+
+    /// The edge slip s(a) E* / (mu p0 a).
+    pub fn edge_slip(&self, collocation: &Collocation) -> f64 {
+        self.slip(collocation, 1.0)
+    }
+
+    /// Q / (mu P) this solution carries, from its deficit (H13): 1 - (4 c / (pi a)) times the
+    /// integral of psi over [0, 1].
+    pub fn carried(&self, collocation: &Collocation) -> f64 {
+        let integral: f64 = collocation
+            .weights
+            .iter()
+            .zip(&self.deficit)
+            .map(|(w, d)| w * d)
+            .sum();
+        1.0 - 4.0 * self.zone / PI * integral
+    }
+}
+
+/// Below this kappa the shear inside the microslip zone is evaluated as K_T times (H13)'s
+/// potential (the Nystrom interpolant: the kernel's integral smooths the nodal values' error,
+/// and the law multiplies it by kappa); above it, by the deficit's polynomial interpolant
+/// (whose error, about 2.6^-8 of the deficit, does not grow with kappa). Both are about 1e-5
+/// of mu p0 here (docs/theory.md (H14)).
+pub const NYSTROM_BELOW: f64 = 30.0;
+
+/// One regularized solution's fields, read from its nodal values.
+struct Fields<'a> {
+    collocation: &'a Collocation,
+    kappa: f64,
+    zone: f64,
+    shift: f64,
+    deficit: &'a [f64],
+}
+
+impl Fields<'_> {
+    /// q / (mu p0) at t = x / a (H10): sqrt(1 - t^2) - psi inside the microslip zone,
+    /// sqrt(1 - t^2) in the sliding zones, 0 beyond the contact.
+    fn shear(&self, t: f64) -> f64 {
+        let t = t.abs();
+        if t >= 1.0 {
+            return 0.0;
+        }
+        if t >= self.zone || self.zone == 0.0 {
+            return edge_root(t);
+        }
+        if self.kappa < NYSTROM_BELOW {
+            return (self.kappa * self.potential_slip(t)).clamp(0.0, edge_root(t));
+        }
+        edge_root(t) - self.collocation.interpolate(self.deficit, t / self.zone)
+    }
+
+    /// s E* / (mu p0 a) at t = x / a (taken at the edge beyond the contact): q / (kappa mu p0)
+    /// inside the microslip zone (the law itself), (H13) beyond it.
+    fn slip(&self, t: f64) -> f64 {
+        let t = t.abs().min(1.0);
+        if t < self.zone {
+            return self.shear(t) / self.kappa;
+        }
+        self.potential_slip(t)
+    }
+
+    /// (H13): s E* / (mu p0 a) = (2 / pi) (D + pi t^2 / 2 - zone * potential of psi at t /
+    /// zone), at any t = |x| / a <= 1.
+    fn potential_slip(&self, t: f64) -> f64 {
+        let t = t.abs().min(1.0);
+        if self.zone == 0.0 {
+            // The whole contact slides: the shift alone (s(0) = mu p0 / K_T) and Hertz's
+            // quadratic potential.
+            return (2.0 / PI) * (self.shift + FRAC_PI_2 * t * t);
+        }
+        let mut row = vec![0.0; self.collocation.size()];
+        self.collocation.kernel_row(t / self.zone, &mut row);
+        let potential: f64 = row.iter().zip(self.deficit).map(|(k, d)| k * d).sum();
+        (2.0 / PI) * (self.shift + FRAC_PI_2 * t * t - self.zone * potential)
+    }
+}
+
+/// One linear solve of (H11) at c / a = `zone`: the deficit and the shift, and (H13)'s Q / mu P
+/// with its derivative in c / a.
+struct AtZone {
+    deficit: Vec<f64>,
+    shift: f64,
+    carried: f64,
+    slope: f64,
+}
+
+/// Solves (H11) at c / a = `zone` for kappa = `kappa`; `None` when the matrix is singular.
+fn solve_at(collocation: &Collocation, kappa: f64, zone: f64) -> Option<AtZone> {
+    let n = collocation.size();
+    let size = n + 1;
+    let epsilon = FRAC_PI_2 / kappa;
+    let mut matrix = vec![0.0; size * size];
+    let mut rhs = vec![0.0; size];
+    let mut rate = vec![0.0; size];
+    for i in 0..size {
+        let u = collocation.nodes.get(i).copied().unwrap_or(1.0);
+        let row = &collocation.kernel[i * n..(i + 1) * n];
+        for (j, k) in row.iter().enumerate() {
+            matrix[i * size + j] = -zone * k;
+        }
+        if i < n {
+            matrix[i * size + i] += epsilon;
+        }
+        matrix[i * size + n] = 1.0;
+        let x = zone * u;
+        let root = edge_root(x);
+        rhs[i] = epsilon * root - FRAC_PI_2 * x * x;
+        // d rhs / d zone, then + kernel psi (d matrix / d zone = -kernel), filled after the solve.
+        rate[i] = if root > 0.0 {
+            -epsilon * x * u / root
+        } else {
+            0.0
+        } - PI * x * u;
+    }
+    let mut pivots = vec![0; size];
+    if !lu_factor(&mut matrix, size, &mut pivots) {
+        return None;
+    }
+    lu_solve(&matrix, size, &pivots, &mut rhs);
+    let (deficit, shift) = (rhs[..n].to_vec(), rhs[n]);
+    for (i, r) in rate.iter_mut().enumerate() {
+        let row = &collocation.kernel[i * n..(i + 1) * n];
+        *r += row.iter().zip(&deficit).map(|(k, d)| k * d).sum::<f64>();
+    }
+    lu_solve(&matrix, size, &pivots, &mut rate);
+    let integral: f64 = collocation
+        .weights
+        .iter()
+        .zip(&deficit)
+        .map(|(w, d)| w * d)
+        .sum();
+    let integral_rate: f64 = collocation
+        .weights
+        .iter()
+        .zip(&rate)
+        .map(|(w, d)| w * d)
+        .sum();
+    Some(AtZone {
+        carried: 1.0 - 4.0 * zone / PI * integral,
+        slope: -4.0 / PI * (integral + zone * integral_rate),
+        deficit,
+        shift,
+    })
+}
+
+/// The small-kappa limit of c / a (H15): the root of (2 / pi) (gamma sqrt(1 - gamma^2) +
+/// arccos gamma) = Q / mu P, both bodies rigid beside the interface.
+pub fn compliant_limit_zone(load_ratio: f64) -> f64 {
+    let target = load_ratio.clamp(0.0, 1.0);
+    // In theta = arccos gamma the function (2 / pi) (sin theta cos theta + theta) rises from 0
+    // to 1 with slope (4 / pi) cos^2 theta: Newton from the side where it is concave, safeguarded.
+    let (mut lo, mut hi) = (0.0, FRAC_PI_2);
+    let mut theta = FRAC_PI_2 * target;
+    for _ in 0..100 {
+        let f = (2.0 / PI) * (theta.sin() * theta.cos() + theta) - target;
+        if f > 0.0 {
+            hi = theta;
+        } else {
+            lo = theta;
+        }
+        let slope = (4.0 / PI) * theta.cos().powi(2);
+        let mut next = theta - f / slope;
+        if !(next > lo && next < hi) {
+            next = 0.5 * (lo + hi);
+        }
+        if (next - theta).abs() <= 1e-16 {
+            theta = next;
+            break;
+        }
+        theta = next;
+    }
+    theta.cos()
+}
+
+/// Where the root search on c stops: |Q(c) / mu P - Q / mu P| below it.
+const STOP: f64 = 1e-12;
+
+/// The regularized solution on `mesh` for kappa = `kappa` > 0 and Q / mu P = `load_ratio` in
+/// [0, 1] (H14): c / a from Q(c) = Q by safeguarded Newton on theta = arccos(c / a), in which
+/// Q(c) rises from 0 (theta = 0) to mu P (theta = pi / 2) with a finite slope at both ends.
+pub fn solve_normalized(
+    collocation: &Collocation,
+    kappa: f64,
+    load_ratio: f64,
+) -> NormalizedSolution {
+    let n = collocation.size();
+    let load_ratio = load_ratio.clamp(0.0, 1.0);
+    let done = |zone: f64, shift: f64, deficit: Vec<f64>| NormalizedSolution {
+        kappa,
+        load_ratio,
+        zone,
+        shift,
+        deficit,
+    };
+    let epsilon = FRAC_PI_2 / kappa;
+    if load_ratio == 0.0 {
+        // Unloaded: q = 0, psi = sqrt(1 - u^2), the shift of (H4)'s constant.
+        let deficit = collocation.nodes.iter().map(|&u| edge_root(u)).collect();
+        return done(1.0, -FRAC_PI_2 * (0.5 + 2f64.ln()), deficit);
+    }
+    if load_ratio == 1.0 {
+        // Gross slip: no microslip zone, s(0) = mu p0 / K_T.
+        return done(0.0, epsilon, vec![0.0; n]);
+    }
+    let (mut lo, mut hi) = (0.0, FRAC_PI_2);
+    let start = {
+        let soft = compliant_limit_zone(load_ratio).acos();
+        let stiff = mindlin_stick_ratio(load_ratio).acos();
+        (soft + kappa * stiff) / (1.0 + kappa)
+    };
+    let mut theta = start.clamp(1e-6, FRAC_PI_2 - 1e-6);
+    let mut best: Option<(f64, AtZone)> = None;
+    for _ in 0..80 {
+        let zone = theta.cos();
+        let Some(at) = solve_at(collocation, kappa, zone) else {
+            // A singular matrix (never met): move inside the bracket and go on.
+            theta = 0.5 * (lo + hi);
+            continue;
+        };
+        let f = at.carried - load_ratio;
+        if f > 0.0 {
+            hi = theta;
+        } else {
+            lo = theta;
+        }
+        // dQ/dtheta = dQ/dzone * (-sin theta), positive.
+        let slope = -at.slope * theta.sin();
+        let mut next = theta - f / slope;
+        if !(next > lo && next < hi && next.is_finite()) {
+            next = 0.5 * (lo + hi);
+        }
+        let step = (next - theta).abs();
+        best = Some((zone, at));
+        // Q / mu P to 1e-12 is c / a to about 1e-12, far below the mesh's error; below it the
+        // residual is round-off and Newton's steps wander.
+        if f.abs() <= STOP || step <= 1e-15 || hi - lo <= 1e-15 {
+            break;
+        }
+        theta = next;
+    }
+    match best {
+        Some((zone, at)) => done(zone, at.shift, at.deficit),
+        // Never met: every matrix singular. Mindlin's zone with no deficit is finite at least.
+        None => done(mindlin_stick_ratio(load_ratio), epsilon, vec![0.0; n]),
+    }
+}
+
+/// The regularized answer at one tangential load, on the default mesh ([`CollocationMesh::DEFAULT`]): a
+/// microslip zone |x| < c at the centre where q = K_T s < mu p, sliding at q = mu p beyond.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RegularizedState {
+    cylinder: Cylinder,
+    /// Q (N/mm).
+    load: f64,
+    /// c / a.
+    zone: f64,
+    /// The shift of (H11).
+    shift: f64,
+    /// psi at the default mesh's collocation points.
+    deficit: [f64; DEFAULT_UNKNOWNS],
+}
+
+impl Cylinder {
+    /// The regularized law's answer at `load` ((H10)-(H14), the default mesh). The last answer
+    /// of each thread is kept: the faces of one model (its point, zone strip, profiles and
+    /// quantities) ask for the same solve several times per frame, and a solve is deterministic,
+    /// so the kept answer is the one a new solve would give, bit for bit.
+    pub fn regularized(&self, load: TangentialLoad) -> RegularizedState {
+        thread_local! {
+            static LAST: std::cell::Cell<Option<RegularizedState>> =
+                const { std::cell::Cell::new(None) };
+        }
+        let kept = LAST
+            .with(std::cell::Cell::get)
+            .filter(|s| s.cylinder == *self && s.load == load.newtons_per_mm());
+        if let Some(state) = kept {
+            return state;
+        }
+        let state = self.solve_regularized(load);
+        LAST.with(|last| last.set(Some(state)));
+        state
+    }
+
+    /// [`Cylinder::regularized`] without the kept answer.
+    fn solve_regularized(&self, load: TangentialLoad) -> RegularizedState {
+        let collocation = Collocation::default_mesh();
+        let solution = solve_normalized(
+            collocation,
+            self.stiffness_group(),
+            load.newtons_per_mm() / self.gross_slip_load(),
+        );
+        let mut deficit = [0.0; DEFAULT_UNKNOWNS];
+        for (d, s) in deficit.iter_mut().zip(&solution.deficit) {
+            *d = *s;
+        }
+        RegularizedState {
+            cylinder: *self,
+            load: load.newtons_per_mm(),
+            zone: solution.zone,
+            shift: solution.shift,
+            deficit,
+        }
+    }
+}
+
+impl Cylinder {
+    /// The K_T (MPa/mm) at which this contact's regularized edge slip s(a) at `load` equals
+    /// `edge_slip` (mm), all else as in this contact: what an FE result of s(a) says about the
+    /// stiffness its code really used. s(a) falls with K_T at every load (H16), from large values
+    /// at the softest accepted K_T towards Mindlin's, so there is at most one answer; `None` when
+    /// no K_T in the accepted domain gives it (at Q = 0, or an s(a) at or below Mindlin's).
+    pub fn stiffness_for_edge_slip(&self, load: TangentialLoad, edge_slip: f64) -> Option<f64> {
+        // K_T = min e^k, k in [0, ln(max / min)]: the root finder's bracket starts at 0.
+        let min = Domain::STIFFNESS.min();
+        let at = |k: f64| {
+            self.with_tangential_stiffness(min * k.exp())
+                .map(|c| c.regularized(load).edge_slip())
+        };
+        let span = (Domain::STIFFNESS.max() / min).ln();
+        let (soft, stiff) = (at(0.0).ok()?, at(span).ok()?);
+        if !(edge_slip > 0.0 && (stiff..=soft).contains(&edge_slip)) {
+            return None;
+        }
+        // Relative misfit, so that the root finder sees numbers near 1 whatever the scale.
+        let k = find_root_in_bracket(
+            |k| at(k).map_or(f64::NAN, |s| s / edge_slip - 1.0),
+            0.0,
+            span,
+        );
+        Some(min * k.exp())
+    }
+}
+
+impl RegularizedState {
+    /// The normalized form (a copy of the nodal values).
+    pub fn normalized(&self) -> NormalizedSolution {
+        NormalizedSolution {
+            kappa: self.cylinder.stiffness_group(),
+            load_ratio: self.load / self.cylinder.gross_slip_load(),
+            zone: self.zone,
+            shift: self.shift,
+            deficit: self.deficit.to_vec(),
+        }
+    }
+
+    /// The contact it is of.
+    pub fn cylinder(&self) -> &Cylinder {
+        &self.cylinder
+    }
+
+    /// Tangential line load Q (N/mm).
+    pub fn load(&self) -> f64 {
+        self.load
+    }
+
+    /// Half-width c of the microslip zone (mm), where q = K_T s < mu p.
+    pub fn micro_half_width(&self) -> f64 {
+        self.zone * self.cylinder.half_width()
+    }
+
+    /// c / a (-).
+    pub fn zone_ratio(&self) -> f64 {
+        self.zone
+    }
+
+    /// Width a - c of each sliding zone at the contact's edges (mm).
+    pub fn edge_slide_width(&self) -> f64 {
+        self.cylinder.half_width() - self.micro_half_width()
+    }
+
+    /// The solution's fields on the default mesh.
+    fn fields(&self) -> Fields<'_> {
+        Fields {
+            collocation: Collocation::default_mesh(),
+            kappa: self.cylinder.stiffness_group(),
+            zone: self.zone,
+            shift: self.shift,
+            deficit: &self.deficit,
+        }
+    }
+
+    /// mu p0 (MPa).
+    fn strength(&self) -> f64 {
+        self.cylinder.params().friction * self.cylinder.peak_pressure()
+    }
+
+    /// Shear traction q(x) (MPa): K_T s(x) in the microslip zone, mu p(x) in the sliding zones,
+    /// 0 outside the contact.
+    pub fn shear_at(&self, x: f64) -> f64 {
+        if self.load == 0.0 {
+            return 0.0;
+        }
+        self.strength() * self.fields().shear(x / self.cylinder.half_width())
+    }
+
+    /// Relative tangential slip s(x) (mm), positive towards +x; taken at the edge beyond the
+    /// contact.
+    pub fn slip_at(&self, x: f64) -> f64 {
+        if self.load == 0.0 {
+            return 0.0;
+        }
+        self.cylinder.slip_scale() * self.fields().slip(x / self.cylinder.half_width())
+    }
+
+    /// The slip at the contact's edge s(a) (mm): the fretting slip amplitude.
+    pub fn edge_slip(&self) -> f64 {
+        self.slip_at(self.cylinder.half_width())
+    }
+
+    /// The slip at the centre s(0) (mm).
+    pub fn centre_slip(&self) -> f64 {
+        self.slip_at(0.0)
+    }
+
+    /// The largest q / (mu p0) (-): at the microslip zone's edge, where q = mu p(c), or at a
+    /// collocation point inside it if larger there (it never is: q grows towards c).
+    pub fn peak_shear_ratio(&self) -> f64 {
+        if self.load == 0.0 {
+            return 0.0;
+        }
+        let nodes = &Collocation::default_mesh().nodes;
+        nodes
+            .iter()
+            .zip(&self.deficit)
+            .map(|(&u, &d)| edge_root(u * self.zone) - d)
+            .fold(edge_root(self.zone), f64::max)
+    }
+
+    /// Unloaded; microslip at the centre and macroslip at the edges (for every 0 < Q < mu P:
+    /// p vanishes at the edges, K_T s does not); the whole contact sliding at Q = mu P.
+    pub fn regime(&self) -> Regime {
+        if self.load == 0.0 {
+            Regime::UNLOADED
+        } else if self.zone == 0.0 {
+            Regime::MACROSLIP
+        } else {
+            Regime::from_zones(&[Zone::Microslip, Zone::Macroslip])
+        }
+    }
+}
+
+impl Solution for RegularizedState {
+    /// The edge slip s(a) (mm).
+    fn response(&self) -> f64 {
+        self.edge_slip()
+    }
+
+    fn regime(&self) -> Regime {
+        RegularizedState::regime(self)
+    }
+
+    /// The microslip zone's half-width c (mm).
+    fn zone_end(&self) -> f64 {
+        self.micro_half_width()
+    }
+}

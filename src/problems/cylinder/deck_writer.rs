@@ -1,0 +1,380 @@
+//! The CalculiX deck of the Hertzian cylinder on a flat (issue 34, item 5), written from plain
+//! numbers: the mesh, the loads and the cards. The [`Deck`](crate::fe::face::Deck) face of the
+//! cylinder wraps it (its header, its readers, its comparison).
+//!
+//! What the deck models (docs/theory.md, "The Hertzian cylinder: the CalculiX judge"):
+//!
+//! - plane strain: one layer of C3D20R bricks across a slice of width w, every node held across
+//!   it (u_z = 0), as the plate's deck; every load is per unit length times w;
+//! - two bodies of the same material, mirror images of each other about the contact plane but for
+//!   the cylinder's arc: the flat is a block 2 L wide and H deep, the cylinder the segment of a
+//!   disc of radius R over |x| <= L, from its arc up to a flat top H above its lowest point. Both
+//!   L = H = [`BODY_SIZE`] a: half-planes for the contact's fields (item 6 measures how far);
+//! - a mesh graded toward the contact: elements of a / n over |x| <= [`FINE_ZONE`] a (n = 20
+//!   coarse, 40 fine), growing by [`GROWTH`] per element away from it in x and in depth;
+//! - the cylinder's top moves as a rigid translation (every top node's u_x, u_y tied to the
+//!   centre's by `*EQUATION`): the line loads P and Q act on that node, and the top cannot tilt,
+//!   so Q's moment about the contact is carried by the top, not by an asymmetric pressure (a pad
+//!   held in its fretting rig). The flat's bottom is held;
+//! - face-to-face penalty contact, the stick slope K_T (`*FRICTION`'s second value, MPa/mm,
+//!   exactly the law's K_T), a stiff linear normal law;
+//! - step 1 applies P (in [`NORMAL_INCREMENTS`] increments: the contact grows from a line);
+//!   step n + 1 takes Q to the n-th load of the list, in increments of at most `q_step` N/mm
+//!   (friction is path-dependent as soon as the edges slip, which they do for any Q > 0).
+
+use std::fmt::Write as _;
+
+use crate::fe::deck::{
+    DeckMesh, DeckTooLarge, Geometry, MAX_DECK_ELEMENTS, normal_stiffness, real, start_step,
+    write_contact_pair, write_elements, write_interaction, write_material, write_nset,
+    write_surface,
+};
+use crate::fe::mesh::{Block, Breaks, Face, graded_toward_end, graded_toward_end_count};
+use crate::kernel::params::Compact;
+
+/// The half-width and the depth of each body, in contact half-widths a.
+pub const BODY_SIZE: f64 = 20.0;
+/// The half-width of the uniformly fine zone, in contact half-widths a.
+pub const FINE_ZONE: f64 = 1.25;
+/// The growth of the element size per element away from the fine zone.
+pub const GROWTH: f64 = 1.3;
+/// The coarsest element, in contact half-widths a.
+const COARSEST: f64 = 4.0;
+/// Increments of the normal step.
+pub const NORMAL_INCREMENTS: usize = 5;
+
+/// Node sets the deck prints and a reader reads.
+pub(crate) mod sets {
+    /// The flat's contact-face nodes (y = 0, z = 0) over the fine zone, by x.
+    pub(crate) const FLAT_FACE: &str = "IFFLAT";
+    /// The cylinder's contact-face nodes (its arc, z = 0) over the fine zone, by x.
+    pub(crate) const CYLINDER_FACE: &str = "IFCYL";
+    /// The node at the centre of the cylinder's top, which carries P and Q.
+    pub(crate) const LOADED: &str = "LOADED";
+}
+
+/// The numbers a cylinder deck is written from: mm, MPa, N/mm.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CylinderDeckInputs {
+    /// Radius of the cylinder R (mm).
+    pub radius: f64,
+    /// Hertz's contact half-width a (mm): the mesh is laid out in units of it.
+    pub half_width: f64,
+    /// Hertz's peak pressure p0 (MPa), for the deck's comments.
+    pub peak_pressure: f64,
+    /// Young's modulus of both bodies E (MPa).
+    pub modulus: f64,
+    /// Poisson's ratio of both bodies nu.
+    pub poisson: f64,
+    /// Normal line load P (N/mm).
+    pub normal_load: f64,
+    /// Friction coefficient mu.
+    pub friction: f64,
+    /// The stick slope CalculiX is given (MPa/mm).
+    pub stick_slope: f64,
+}
+
+/// The element boundaries along x (mm) of both bodies: a / n over the fine zone, growing away.
+fn x_breaks(a: f64, per_half_width: usize) -> Breaks {
+    let h = a / per_half_width as f64;
+    let fine_end = FINE_ZONE * a;
+    let n_fine = (fine_end / h).round() as usize;
+    let outer = graded_toward_end(0.0, (BODY_SIZE - FINE_ZONE) * a, h, COARSEST * a, GROWTH);
+    // Toward its end is toward the contact: mirrored, it grows away from the fine zone.
+    let total = *outer.last().unwrap_or(&0.0);
+    let right: Vec<f64> = outer.iter().rev().map(|x| fine_end + total - x).collect();
+    let mut xs: Vec<f64> = right.iter().rev().map(|x| -x).collect();
+    xs.pop();
+    // Symmetric to the last bit, with the centre at 0 exactly (no rounding noise at x = 0).
+    xs.extend((0..=2 * n_fine).map(|i| (i as f64 - n_fine as f64) * fine_end / n_fine as f64));
+    xs.pop();
+    xs.extend(right);
+    xs
+}
+
+/// The element boundaries of the flat's depth (mm, from -H to 0), finest at the contact.
+fn depth_breaks(a: f64, per_half_width: usize) -> Breaks {
+    let h = a / per_half_width as f64;
+    graded_toward_end(-BODY_SIZE * a, 0.0, h, COARSEST * a, GROWTH)
+}
+
+/// The number of elements a deck of half-width `a` would have, counted without building it.
+fn element_count(a: f64, per_half_width: usize) -> f64 {
+    let h = a / per_half_width as f64;
+    let fine = 2.0 * (FINE_ZONE * a / h).round();
+    let outer = graded_toward_end_count(0.0, (BODY_SIZE - FINE_ZONE) * a, h, COARSEST * a, GROWTH);
+    let depth = graded_toward_end_count(-BODY_SIZE * a, 0.0, h, COARSEST * a, GROWTH);
+    2.0 * (fine + 2.0 * outer) * depth
+}
+
+/// Elements per contact half-width for a mesh density.
+pub fn per_half_width(mesh: DeckMesh) -> usize {
+    20 * mesh.refinement()
+}
+
+/// The height of the cylinder's arc above its lowest point at `x` (mm): R - sqrt(R^2 - x^2).
+fn arc(radius: f64, x: f64) -> f64 {
+    x * x / (radius + (radius * radius - x * x).sqrt())
+}
+
+/// A coordinate (mm) as CalculiX reads it, at most 20 characters a field: 11 significant digits
+/// (1e-11 of the largest coordinate, far below any element), and no rounding noise at zero.
+fn coordinate(x: f64) -> String {
+    format!("{x:.10e}")
+}
+
+/// The cylinder deck: P in step 1, then Q to each of `loads` (N/mm, increasing from 0) in steps
+/// of increments of at most `q_step` (N/mm). `header` is written first (the deck's comment lines).
+///
+/// # Errors
+/// [`DeckTooLarge`] beyond [`MAX_DECK_ELEMENTS`] elements (the mesh is fixed in units of a, so
+/// only a fine mesh far finer than the bundled ones meets it).
+pub fn cylinder_deck(
+    inputs: &CylinderDeckInputs,
+    loads: &[f64],
+    per_half_width: usize,
+    q_step: f64,
+    header: &str,
+) -> Result<String, DeckTooLarge> {
+    let a = inputs.half_width;
+    let elements = element_count(a, per_half_width);
+    if elements > MAX_DECK_ELEMENTS as f64 {
+        return Err(DeckTooLarge {
+            elements,
+            advice: "use the coarse mesh".into(),
+        });
+    }
+    let h = a / per_half_width as f64;
+    let xs = x_breaks(a, per_half_width);
+    let ys = depth_breaks(a, per_half_width);
+    let width = h;
+    let zs = vec![0.0, width];
+    let flat = Block::new([xs.clone(), ys.clone(), zs.clone()], 1, 1);
+    // The cylinder in its own coordinates: eta from 0 (the arc) to H (the top), the flat's
+    // depth mirrored; y = arc(x) (1 - eta / H) + eta.
+    let depth = BODY_SIZE * a;
+    let etas: Breaks = ys.iter().rev().map(|y| -y).collect();
+    let cylinder = Block::new(
+        [xs, etas, zs],
+        flat.node_count() + 1,
+        flat.element_count() + 1,
+    );
+    let on_arc = |[x, eta, z]: [f64; 3]| [x, arc(inputs.radius, x) * (1.0 - eta / depth) + eta, z];
+    let normal_slope = normal_stiffness(inputs.modulus, h, inputs.stick_slope);
+
+    let mut deck = header.to_string();
+    deck.push_str("*HEADING\n");
+    let _ = writeln!(
+        deck,
+        "microslip Hertzian cylinder on a flat, K_T = {} MPa/mm",
+        Compact(inputs.stick_slope)
+    );
+    deck.push_str("*NODE, NSET=NALL\n");
+    for (id, [x, y, z]) in flat.nodes() {
+        let _ = writeln!(
+            deck,
+            "{id}, {}, {}, {}",
+            coordinate(x),
+            coordinate(y),
+            coordinate(z)
+        );
+    }
+    for (id, point) in cylinder.nodes() {
+        let [x, y, z] = on_arc(point);
+        let _ = writeln!(
+            deck,
+            "{id}, {}, {}, {}",
+            coordinate(x),
+            coordinate(y),
+            coordinate(z)
+        );
+    }
+    let ground = flat.node_count() + cylinder.node_count() + 1;
+    let [nx, ny, _] = flat.elements_along();
+    let top = |i: usize| cylinder.node([i, 2 * ny, 0]);
+    let loaded = top(nx).expect("the top's centre is a node");
+    // Two ground nodes for weak springs on the loaded node, along y and along x: face-to-face
+    // contact engages only once the faces press, so the cylinder would float at first.
+    let _ = writeln!(
+        deck,
+        "{ground}, 0., {}, 0.\n{}, {}, {}, 0.",
+        real(-depth),
+        ground + 1,
+        real(-depth),
+        real(depth)
+    );
+    write_elements(&mut deck, "FLAT", &flat);
+    write_elements(&mut deck, "CYL", &cylinder);
+    let spring = flat.element_count() + cylinder.element_count() + 1;
+    let _ = writeln!(
+        deck,
+        "** weak springs on the loaded node (a millionth of the contact's stiffness over 2 a)\n\
+         *ELEMENT, TYPE=SPRINGA, ELSET=ESPRING\n{spring}, {loaded}, {ground}\n{}, {loaded}, {}\n\
+         *SPRING, ELSET=ESPRING\n\n{}",
+        spring + 1,
+        ground + 1,
+        real(1e-6 * normal_slope * 2.0 * a * width)
+    );
+
+    let fine = FINE_ZONE * a * (1.0 + 1e-9);
+    let face_nodes = |block: &Block, j: usize| -> Vec<usize> {
+        (0..=2 * nx)
+            .filter(|&i| block.coordinate(0, i).abs() <= fine)
+            .filter_map(|i| block.node([i, j, 0]))
+            .collect()
+    };
+    write_nset(&mut deck, sets::FLAT_FACE, &face_nodes(&flat, 2 * ny));
+    write_nset(&mut deck, sets::CYLINDER_FACE, &face_nodes(&cylinder, 0));
+    write_nset(&mut deck, sets::LOADED, &[loaded]);
+    let all: Vec<usize> = flat
+        .nodes()
+        .chain(cylinder.nodes())
+        .map(|(id, _)| id)
+        .collect();
+    write_nset(&mut deck, "ALL", &all);
+    let bottom: Vec<usize> = (0..=2 * nx)
+        .flat_map(|i| [0, 1, 2].map(|k| flat.node([i, 0, k])))
+        .flatten()
+        .collect();
+    let mut held = bottom;
+    held.extend([ground, ground + 1]);
+    write_nset(&mut deck, "HELD", &held);
+    write_surface(
+        &mut deck,
+        "SFLATTOP",
+        &flat.boundary_faces(Face::YMax),
+        Face::YMax,
+    );
+    write_surface(
+        &mut deck,
+        "SCYLBOT",
+        &cylinder.boundary_faces(Face::YMin),
+        Face::YMin,
+    );
+    write_material(&mut deck, inputs.modulus, inputs.poisson, &["FLAT", "CYL"]);
+    write_interaction(&mut deck, normal_slope, inputs.friction, inputs.stick_slope);
+    write_contact_pair(
+        &mut deck,
+        "the flat's upper face",
+        "the cylinder's arc",
+        ["SFLATTOP", "SCYLBOT"],
+    );
+    deck.push_str(
+        "** plane strain (no node moves across the slice), the flat's bottom held\n\
+         *BOUNDARY\nALL, 3, 3\nHELD, 1, 3\n\
+         ** the cylinder's top translates as a rigid line: u_x, u_y of every top node = the loaded node's\n\
+         *EQUATION\n",
+    );
+    for k in [0, 2] {
+        for i in 0..=2 * nx {
+            if let Some(node) = cylinder.node([i, 2 * ny, k])
+                && node != loaded
+            {
+                for dof in [1, 2] {
+                    let _ = writeln!(deck, "2\n{node}, {dof}, 1., {loaded}, {dof}, -1.");
+                }
+            }
+        }
+    }
+    let outputs = |deck: &mut String| {
+        for set in [sets::FLAT_FACE, sets::CYLINDER_FACE, sets::LOADED] {
+            let _ = writeln!(deck, "*NODE PRINT, NSET={set}\nU");
+        }
+        deck.push_str(
+            "*CONTACT PRINT\nCSTR\n*NODE FILE\nU\n*CONTACT FILE\nCDIS, CSTR\n*END STEP\n",
+        );
+    };
+    let _ = writeln!(
+        deck,
+        "** step 1: the normal line load P = {} N/mm (a = {} mm, p0 = {} MPa by Hertz)",
+        Compact(inputs.normal_load),
+        Compact(a),
+        Compact(inputs.peak_pressure)
+    );
+    start_step(&mut deck, 1.0 / NORMAL_INCREMENTS as f64, Geometry::Linear);
+    let _ = writeln!(
+        deck,
+        "*CLOAD\n{loaded}, 2, {}",
+        real(-inputs.normal_load * width)
+    );
+    outputs(&mut deck);
+    let mut from = 0.0;
+    for (n, &q) in loads.iter().enumerate() {
+        let _ = writeln!(
+            deck,
+            "** step {}: the tangential line load Q = {} N/mm, in increments of at most {} N/mm",
+            n + 2,
+            Compact(q),
+            Compact(q_step)
+        );
+        let increment = if q > from {
+            (q_step / (q - from)).clamp(1e-3, 1.0)
+        } else {
+            1.0
+        };
+        start_step(&mut deck, increment, Geometry::Linear);
+        let _ = writeln!(
+            deck,
+            "*CLOAD\n{loaded}, 2, {}\n{loaded}, 1, {}",
+            real(-inputs.normal_load * width),
+            real(q * width)
+        );
+        outputs(&mut deck);
+        from = q;
+    }
+    Ok(deck)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const PAD: CylinderDeckInputs = CylinderDeckInputs {
+        radius: 50.0,
+        half_width: 0.525_231_918_323_660_1,
+        peak_pressure: 606.036_828_834_992_3,
+        modulus: 210_000.0,
+        poisson: 0.3,
+        normal_load: 500.0,
+        friction: 0.6,
+        stick_slope: 5e4,
+    };
+
+    #[test]
+    #[ignore = "writes the study's decks to $CYL_DECKS"]
+    fn write_study_decks() {
+        let dir = std::env::var("CYL_DECKS").unwrap();
+        let kt: f64 = std::env::var("CYL_KT").map_or(5e4, |v| v.parse().unwrap());
+        let n: usize = std::env::var("CYL_N").map_or(20, |v| v.parse().unwrap());
+        let steps: f64 = std::env::var("CYL_QSTEPS").map_or(20.0, |v| v.parse().unwrap());
+        let mu_p = PAD.friction * PAD.normal_load;
+        let inputs = CylinderDeckInputs {
+            stick_slope: kt,
+            ..PAD
+        };
+        let deck = cylinder_deck(
+            &inputs,
+            &[0.3 * mu_p, 0.6 * mu_p],
+            n,
+            mu_p / steps,
+            "** study\n",
+        )
+        .unwrap();
+        std::fs::write(format!("{dir}/cyl.inp"), deck).unwrap();
+    }
+
+    #[test]
+    fn the_mesh_is_symmetric_and_fine_at_the_contact() {
+        let a = PAD.half_width;
+        let xs = x_breaks(a, 20);
+        assert!((xs[0] + BODY_SIZE * a).abs() < 1e-9 * a);
+        assert!((xs[xs.len() - 1] - BODY_SIZE * a).abs() < 1e-9 * a);
+        for (l, r) in xs.iter().zip(xs.iter().rev()) {
+            assert!((l + r).abs() < 1e-9 * a, "{l} {r}");
+        }
+        let widths: Vec<f64> = xs.windows(2).map(|w| w[1] - w[0]).collect();
+        assert!(widths.iter().all(|&w| w > 0.0));
+        let centre = widths[widths.len() / 2];
+        assert!((centre - a / 20.0).abs() < 1e-9 * a, "{centre}");
+    }
+}

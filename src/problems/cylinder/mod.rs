@@ -1,0 +1,14 @@
+//! The application's faces of the core's `cylinder` problem (see [`crate::problems`]): the core's
+//! folder re-exported whole, so `crate::problems::cylinder::...` keeps naming the same items.
+
+pub use microslip_core::problems::cylinder::*;
+
+mod ccx_read;
+mod chart;
+pub mod deck;
+mod deck_writer;
+#[cfg(feature = "app")]
+mod pane;
+pub mod report;
+
+pub use chart::CylinderChart;
