@@ -3,10 +3,14 @@
 use divan::{Bencher, black_box};
 use microslip::fit::{Measurement, Weights, fit_curve};
 use microslip::numeric::MeshDensity;
+use microslip::problems::cylinder::collocation::Collocation;
+use microslip::problems::cylinder::regularized::solve_normalized;
 use microslip::problems::lap::closed_form::{LapJoint, LapParams};
 use microslip::problems::lap::{LapContinuumMesh, LapFe, solve_lap_continuum};
 use microslip::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
-use microslip::problems::twin_beams::{TwinBeamsFe, TwinBeamsProblem};
+use microslip::problems::twin_beams::{
+    BeamsContinuumMesh, TwinBeamsFe, TwinBeamsProblem, solve_beams_continuum,
+};
 use microslip::{PlateParams, SqueezedPlate, TipForce, TwinBeams, TwinBeamsParams};
 
 fn main() {
@@ -154,6 +158,30 @@ fn fit_mu_and_kt(bencher: Bencher, rows: usize) {
             (None, None),
             Weights::Absolute,
             &mut |_| {},
+        )
+    });
+}
+
+/// The Hertzian cylinder's regularized solution (issue 34) on the default collocation mesh, what
+/// every key press in the TUI recomputes: kappa = K_T a / E* = 0.64 (the bundled steel pad) and
+/// 64 (near Mindlin), at Q / mu P = 0.5. Called on the normalized solver, because the problem's
+/// `regularized` keeps each thread's last answer (a repeated call would time the cache).
+#[divan::bench(args = [0.64, 64.0])]
+fn cylinder_regularized(bencher: Bencher, kappa: f64) {
+    let collocation = Collocation::default_mesh();
+    bencher.bench_local(|| solve_normalized(collocation, black_box(kappa), black_box(0.5)));
+}
+
+/// The twin beams' plane-stress continuum (issue 33), the paper's beams at F = 100 N (macroslip:
+/// the load path in increments), on the default mesh: what `compare beam` solves per FE row
+/// (several times, to imply K_T) and the TUI's `n` on a worker.
+#[divan::bench(sample_count = 5)]
+fn beams_continuum(bencher: Bencher) {
+    bencher.bench_local(|| {
+        solve_beams_continuum(
+            black_box(TwinBeamsParams::PAPER),
+            black_box(100.0),
+            BeamsContinuumMesh::default(),
         )
     });
 }

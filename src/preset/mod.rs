@@ -417,7 +417,7 @@ mod tests {
                 "b"
             ]
         );
-        assert!(rows[6].preset.as_ref().unwrap_err().line == Some(2));
+        assert!(rows[7].preset.as_ref().unwrap_err().line == Some(2));
         assert_eq!(listing(None).len(), BUNDLED.len());
     }
 

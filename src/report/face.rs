@@ -81,6 +81,9 @@ pub trait ReportFace: Pointwise + Registered {
     /// What the K_T table's heading calls the problem (`twin beams`); a problem with a load
     /// adds the force it is at.
     const KT_TITLE: &'static str;
+    /// What the K_T table's heading calls the friction stress it gives in MPa: `mu P` where P is
+    /// a pressure; the cylinder's P is a line load, so its stress is the peak `mu p0`.
+    const FRICTION_STRESS: &'static str = "mu P";
     /// The K_T table's columns between K_T and the regime, in order.
     const KT_COLUMNS: &'static [KtColumn];
     /// The width of the regime column (its longest label).
@@ -142,6 +145,13 @@ pub trait AnyReportFace: Send + Sync {
     fn cycle(&self) -> Option<&'static dyn AnyCycleFace>;
 }
 
+/// `F = 100 N`: a problem's load by its own key and unit (the cylinder's is a line load,
+/// `Q = 300 N/mm`), with its value already written.
+pub(crate) fn load_words(load: crate::problems::Param, value: String) -> String {
+    let spec = load.spec();
+    format!("{} = {value} {}", spec.name, spec.unit)
+}
+
 /// The [`AnyReportFace`] of a [`ReportFace`] problem `P`.
 struct ReportOf<P>(std::marker::PhantomData<P>);
 
@@ -158,16 +168,17 @@ impl<P: ReportFace> AnyReportFace for ReportOf<P> {
             element,
         } = *heading;
         let at = match P::INFO.load {
-            Some(_) => format!(
-                " at F = {} N",
-                force.map_or_else(|| "-".to_string(), number)
+            Some(load) => format!(
+                " at {}",
+                load_words(load, force.map_or_else(|| "-".to_string(), number))
             ),
             None => String::new(),
         };
         let mut out = format!(
-            "K_T candidates for preset {preset}: {}{at}, mu P = {mu_p} MPa, contact elements \
+            "K_T candidates for preset {preset}: {}{at}, {} = {mu_p} MPa, contact elements \
              {element} mm\n",
-            P::KT_TITLE
+            P::KT_TITLE,
+            P::FRICTION_STRESS
         );
         let _ = write!(out, "{:<16} {:>12}", "source", "K_T (MPa/mm)");
         for column in P::KT_COLUMNS {

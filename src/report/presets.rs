@@ -126,6 +126,6 @@ mod tests {
         );
         assert!(text.contains("bad\\u{9b}"), "{text}");
         // One line per preset, the header and the folder: the newline did not split a row.
-        assert_eq!(text.lines().count(), 1 + 5 + 2 + 2);
+        assert_eq!(text.lines().count(), 1 + 6 + 2 + 2);
     }
 }

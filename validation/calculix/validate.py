@@ -478,7 +478,7 @@ def main():
     parser.add_argument("--update-guide", "--update-readme", dest="update_guide", action="store_true",
                         help="also write the tables into docs/guide.md (--update-readme: the old name)")
     parser.add_argument("--keep", help="keep decks and results in this directory")
-    parser.add_argument("--only", choices=["stick-slope"],
+    parser.add_argument("--only", choices=["stick-slope", "cylinder"],
                         help="run only these cases and replace only their table in RESULTS.md")
     options = parser.parse_args()
     if shutil.which("ccx") is None:
@@ -492,6 +492,11 @@ def main():
     version = ccx_version()
     today = datetime.date.today().isoformat()
 
+    if options.only == "cylinder":
+        cylinder_rows(microslip, workdir, lines, timings, failures)
+        print("\n".join(lines))
+        finish(failures, workdir, options.keep, "cylinder")
+        return
     if options.only == "stick-slope":
         stick = stick_slope_rows(microslip, workdir, timings, failures)
         splice_stick_slope(stick)
@@ -648,7 +653,9 @@ def main():
     lap_rows(microslip, workdir, lines, timings, failures)
     lines.extend(stick_slope_rows(microslip, workdir, timings, failures))
 
-    cylinder_rows(microslip, workdir, lines, timings, failures)
+    # The Hertzian cylinder's case (issue 34) is not in the default run: its deck (a/20 elements,
+    # bodies 20 a wide and deep) took over 25 minutes of ccx on this project's 2-core machine,
+    # beyond CI's budget. Run it with `--only cylinder`.
 
     lines.append("\nRun times (ccx wall / CPU seconds, OMP_NUM_THREADS="
                  f"{os.environ.get('OMP_NUM_THREADS', '2')}): "

@@ -18,6 +18,7 @@ use crate::kernel::regime::Regime;
 use crate::measured::{self as data, Curve};
 use crate::problems::Problem;
 use crate::report::compare::CompareFace;
+use crate::report::compare::verdict::Summary;
 use crate::report::sanitize;
 
 use super::ccx_read::cylinder_points;
@@ -126,6 +127,9 @@ pub struct CylinderCompared {
     pub centre_slip: f64,
     /// The regularized regime.
     pub regime: Regime,
+    /// Whether the half-plane envelope judges this point: it was measured on linear-geometry
+    /// runs (the deck's), so a run of other kinematics is not judged against it.
+    pub envelope_applies: bool,
 }
 
 impl CylinderCompared {
@@ -165,6 +169,7 @@ pub fn compare_cylinder(
                 edge_slip: state.edge_slip(),
                 centre_slip: state.centre_slip(),
                 regime: state.regime(),
+                envelope_applies: true,
             })
         })
         .collect()
@@ -266,6 +271,13 @@ impl Deck for CylinderProblem {
         _mesh: Option<&InterfaceMesh>,
     ) -> Result<Vec<CylinderCompared>, ParamError> {
         compare_cylinder(&model.cylinder, points)
+    }
+
+    /// The half-plane envelope was measured on linear-geometry runs (the deck's steps).
+    fn without_envelope(compared: &mut Result<Vec<CylinderCompared>, ParamError>) {
+        for row in compared.iter_mut().flatten() {
+            row.envelope_applies = false;
+        }
     }
 
     fn write_deck(model: &CylinderModel, request: &DeckRequest) -> Result<String, DeckError> {
@@ -371,6 +383,9 @@ pub struct CylinderCompareReport {
     pub sa_within_fraction: f64,
     /// What the comparison assumes.
     pub note: &'static str,
+    /// The closing verdict, as every problem's (the stick slope used and the run's kinematics
+    /// are added to it by the generic comparison).
+    pub verdict: Summary,
 }
 
 /// What the half-plane solution assumes, said wherever the comparison is shown.
@@ -380,6 +395,7 @@ pub const HALF_PLANE_NOTE: &str = "half-plane solution (Hertz, regularized Catta
 impl CylinderCompareReport {
     /// The report of `rows`, compared from the files `source` names.
     pub fn new(source: &str, rows: &[CylinderCompared]) -> CylinderCompareReport {
+        let judged = !rows.is_empty() && rows.iter().all(|r| r.envelope_applies);
         let within = rows.iter().all(|r| {
             r.zone_difference().is_none_or(|d| d.abs() <= ZONE_WITHIN)
                 && r.edge_slip_difference()
@@ -393,6 +409,7 @@ impl CylinderCompareReport {
             c_within_fraction_of_a: ZONE_WITHIN,
             sa_within_fraction: EDGE_SLIP_WITHIN,
             note: HALF_PLANE_NOTE,
+            verdict: envelope_summary(within, judged),
         }
     }
 
@@ -442,19 +459,42 @@ impl CylinderCompareReport {
                 pct(r.sa_diff_fraction)
             );
         }
-        let _ = writeln!(
-            out,
-            "Verdict: {} (c within {} % of a, s(a) within {} %: the envelope measured against \
-             CalculiX, docs/theory.md)",
-            if self.within_envelope {
-                "the half-plane answer holds"
-            } else {
-                "OUTSIDE the envelope"
-            },
-            Compact(100.0 * ZONE_WITHIN),
-            Compact(100.0 * EDGE_SLIP_WITHIN)
-        );
+        let _ = writeln!(out, "{}", self.verdict.summary);
         out
+    }
+}
+
+/// The closing verdict of the half-plane envelope: c within [`ZONE_WITHIN`] of a and s(a) within
+/// [`EDGE_SLIP_WITHIN`] on every row (`judged`: there was a row).
+fn envelope_summary(within: bool, judged: bool) -> Summary {
+    let envelope = format!(
+        "c within {} % of a and s(a) within {} % of the half-plane answer (the envelope measured \
+         against CalculiX, docs/theory.md)",
+        Compact(100.0 * ZONE_WITHIN),
+        Compact(100.0 * EDGE_SLIP_WITHIN)
+    );
+    let (agrees, word, short) = match (judged, within) {
+        (false, _) => (
+            false,
+            "not judged",
+            "not judged: no rows, or a run of other kinematics than the envelope's".to_string(),
+        ),
+        (true, true) => (true, "agrees", "agrees".to_string()),
+        (true, false) => (false, "does not agree", "does not agree".to_string()),
+    };
+    let body = if !judged {
+        format!("the envelope ({envelope}) judges linear-geometry runs with rows only")
+    } else if within {
+        format!("{envelope} on every row")
+    } else {
+        format!("not {envelope} on every row")
+    };
+    Summary {
+        agrees,
+        summary: format!("Verdict: {word}. {body}."),
+        stiffness: None,
+        stiffness_z: None,
+        short,
     }
 }
 
@@ -486,5 +526,9 @@ impl CompareFace for CylinderProblem {
 
     fn compare_text(report: &CylinderCompareReport) -> String {
         report.text()
+    }
+
+    fn summary_mut(report: &mut CylinderCompareReport) -> &mut Summary {
+        &mut report.verdict
     }
 }

@@ -103,6 +103,7 @@ impl From<&CylinderPoint> for CylinderRow {
 impl ReportFace for CylinderProblem {
     const MONOTONE_IN_STIFFNESS: &'static str = "(H16)";
     const KT_TITLE: &'static str = "Hertzian cylinder";
+    const FRICTION_STRESS: &'static str = "mu p0";
     const KT_COLUMNS: &'static [KtColumn] = &[
         KtColumn::Answer {
             title: "K_T a/E*",
@@ -202,13 +203,13 @@ impl CycleFace for CylinderProblem {
             "D per cycle (N mm per mm)",
             "peak energy U (N mm per mm)",
             "damping ratio D / (4 pi U) (-)",
-            "secant Q_a/delta_a (N/mm per mm)",
+            "secant Q_a/delta_a (N/mm2)",
         ],
         note: "P and Q are line loads (per mm of the cylinder's length): D and U are per mm \
                of it. The loop shown is that of the edge slip s(a); U = Q_a delta_a / 2 and \
                the secant use the bodies' relative shift delta (docs/theory.md, the cylinder's \
-               cycle), whose loop's area is D. With a finite K_T the edges slide from the \
-               first newton (onset 0).",
+               cycle), whose loop's area is D. With a finite K_T the edges slide at any \
+               Q > 0 (onset 0).",
     };
 
     fn structure_line(cylinder: &Cylinder) -> String {

@@ -251,6 +251,9 @@ pub struct CycleReport {
     /// The problem's words in the text.
     #[serde(skip)]
     words: CycleWords,
+    /// The unit of the cycled load (`N`; the cylinder's line load `N/mm`), for the text.
+    #[serde(skip)]
+    load_unit: &'static str,
 }
 
 /// One law's cycle: the same six numbers for every load-driven problem. Its JSON keys are
@@ -335,6 +338,7 @@ impl CycleReport {
             regularized: law(Law::Regularized),
             note: words.note,
             words,
+            load_unit: P::INFO.load.map_or("N", |load| load.spec().unit.symbol()),
         }
     }
 
@@ -344,11 +348,12 @@ impl CycleReport {
         let mut out = String::new();
         let _ = writeln!(
             out,
-            "{2}, {3} cycling between +{0} N and -{0} N (Masing branches) - preset {1}",
+            "{2}, {3} cycling between +{0} {4} and -{0} {4} (Masing branches) - preset {1}",
             number(self.amplitude),
             sanitize(&self.preset),
             words.heading.0,
             words.heading.1,
+            self.load_unit,
         );
         let _ = writeln!(out, "  {}", self.structure);
         let _ = writeln!(out, "{:<34}{:<18}regularized", "", "Coulomb");

@@ -7,7 +7,7 @@ use std::fmt::Write;
 use serde::Serialize;
 
 use crate::problems::Quantity;
-use crate::report::face::report_face;
+use crate::report::face::{load_words, report_face};
 use crate::report::{number, number_with, sanitize};
 use crate::study::tolerance::{CodeSetting, Setting, Threshold, ToleranceAnswer};
 
@@ -174,10 +174,22 @@ impl ToleranceReport {
         let quantity = Quantity::Response.name(answer.kind);
         // Where docs/theory.md shows the response never grows with K_T, for this problem.
         let why = report_face(answer.kind).monotone_in_stiffness();
-        let over = match answer.forces {
-            Some([from, to]) if from == to => format!("at F = {} N", number(to)),
-            Some([from, to]) => format!("at every F from {} to {} N", number(from), number(to)),
-            None => format!("at the {}'s pressure", answer.kind),
+        let load = answer.kind.description().load;
+        let over = match (answer.forces, load) {
+            (Some([from, to]), Some(load)) if from == to => {
+                format!("at {}", load_words(load, number(to)))
+            }
+            (Some([from, to]), Some(load)) => {
+                let spec = load.spec();
+                format!(
+                    "at every {} from {} to {} {}",
+                    spec.name,
+                    number(from),
+                    number(to),
+                    spec.unit
+                )
+            }
+            _ => format!("at the {}'s pressure", answer.kind),
         };
         let (kt, deviation) = answer.current;
         if let Some(near) = answer.near_current {
