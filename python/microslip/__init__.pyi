@@ -219,6 +219,31 @@ class LapJoint(Problem):
     def sweep(self, *, quantities: Union[Sequence[str], Literal['all'], None] = None, L: npt.ArrayLike = ..., b: npt.ArrayLike = ..., t1: npt.ArrayLike = ..., t2: npt.ArrayLike = ..., E1: npt.ArrayLike = ..., E2: npt.ArrayLike = ..., P: npt.ArrayLike = ..., mu: npt.ArrayLike = ..., KT: npt.ArrayLike = ..., F: npt.ArrayLike = ...) -> Sweep:
         """Solved at every value of one parameter (given in its unit); response keys Delta_coulomb, Delta_regularized (mm); quantities among 'Delta', 'a', 'd', 'ratio', 'F_1', 'D', 'zeta'."""
 
+class HertzianCylinder(Problem):
+    """Hertzian cylinder on a flat under a tangential line load (Cattaneo-Mindlin, regularized; docs/theory.md, the Hertzian cylinder)."""
+
+    def __init__(self, *, name: Optional[str] = None, R: float = 50.0, E: float = 210000.0, nu: float = 0.3, P: float = 1000.0, mu: float = 0.6, KT: float = 100000.0, Q: float = 300.0) -> None:
+        """Keyword parameters; each not given is the bundled paper value."""
+    R: float
+    """cylinder radius (mm; must be in [1e-6, 1e6] mm)."""
+    E: float
+    """Young's modulus of the cylinder and the flat (MPa; must be in [1e-4, 1e7] MPa)."""
+    nu: float
+    """Poisson ratio of the cylinder and the flat (-; must be in [0, 0.5) (dimensionless))."""
+    P: float
+    """normal line load (N per mm of cylinder length) (N/mm; must be in [1e-6, 1e9] N/mm)."""
+    mu: float
+    """friction coefficient (-; must be in [1e-6, 10] (dimensionless))."""
+    KT: float
+    """tangential contact stiffness (MPa/mm; must be in [1e-6, 1e12] MPa/mm)."""
+    Q: float
+    """tangential line load (N per mm of cylinder length) (N/mm; must be in [0, 1e9] N/mm)."""
+    def replace(self, *, R: float = ..., E: float = ..., nu: float = ..., P: float = ..., mu: float = ..., KT: float = ..., Q: float = ...) -> HertzianCylinder: ...
+    def solve(self, F: Optional[float] = None) -> Solution:
+        """Both laws at this data set, or at the load F (N)."""
+    def sweep(self, *, quantities: Union[Sequence[str], Literal['all'], None] = None, R: npt.ArrayLike = ..., E: npt.ArrayLike = ..., nu: npt.ArrayLike = ..., P: npt.ArrayLike = ..., mu: npt.ArrayLike = ..., KT: npt.ArrayLike = ..., Q: npt.ArrayLike = ...) -> Sweep:
+        """Solved at every value of one parameter (given in its unit); response keys sa_coulomb, sa_regularized (mm); quantities among 's(a)', 'c', 'ratio'."""
+
 def preset(name: str) -> Problem:
     """The problem of a preset: a bundled name, a user preset or a TOML path."""
 

@@ -276,6 +276,19 @@ impl Face for CylinderProblem {
         json::of(&cylinder::report::CylinderReport::new(name, model))
     }
 
+    fn cycle_report(model: &Self::Model, name: &str, amplitude: f64) -> Result<Value, String> {
+        cycle_of::<Self>(model, name, amplitude)
+    }
+
+    fn tolerance(
+        model: &Self::Model,
+        question: (f64, Of),
+        range: [Option<f64>; 2],
+        element: f64,
+    ) -> Result<ToleranceAnswer, String> {
+        load_tolerance::<Self>(model, question, range, element)
+    }
+
     fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
         let rows = compared.as_ref().map_err(|e| format!("{source}: {e}"))?;
         Ok(json::of(&cylinder::deck::CylinderCompareReport::new(

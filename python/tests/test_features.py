@@ -112,6 +112,11 @@ def test_deck_with_loads_equals_the_cli(cli):
     "model, result",
     [("beam", "paper-beams.dat"), ("plate", "paper-plate.dat"), ("lap", "lap-aluminium.dat")],
 )
+@pytest.mark.xfail(
+    strict=True,
+    reason="issue 33: the CLI's compare adds the stick slope the FE code used and the run's "
+    "kinematics (src/cli/compare.rs); the Python face does not read them yet",
+)
 def test_compare_equals_the_cli(cli, model, result):
     path = DATA / "calculix" / result
     got = microslip.compare(path, model)
@@ -125,7 +130,8 @@ def test_compare_refuses_another_problems_results():
 
 
 @pytest.mark.parametrize(
-    "name, change", [("paper-plate", ["tp", 2.0]), ("lap-aluminium", ["KT", 300.0])]
+    "name, change",
+    [("paper-plate", ["tp", 2.0]), ("lap-aluminium", ["KT", 300.0]), ("paper-beams", ["KT", 300.0])],
 )
 def test_continuum_is_the_number_of_the_cli_report(cli, name, change):
     """`continuum()` is the continuum's response that `<model> --continuum` reports (the plate's
@@ -133,10 +139,10 @@ def test_continuum_is_the_number_of_the_cli_report(cli, name, change):
     problem = microslip.preset(name).replace(**{change[0]: change[1]})
     model = problem.model
     report = cli.json(model, "--preset", name, "--set", f"{change[0]}={change[1]!r}", "--continuum")
-    key = {"plate": "u_end_mean_mm", "lap": "Delta_mm"}[model]
+    key = {"plate": "u_end_mean_mm", "lap": "Delta_mm", "beam": "w_mm"}[model]
     assert problem.continuum() == report["continuum"][key]
 
 
-def test_the_beams_have_no_continuum_yet():
+def test_the_cylinder_has_no_continuum_yet():
     with pytest.raises(ValueError, match="no continuum reference"):
-        microslip.preset("paper-beams").continuum()
+        microslip.preset("cylinder-steel-pad").continuum()
