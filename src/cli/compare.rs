@@ -111,6 +111,7 @@ impl<W: Write> ForProblem for Compare<'_, W> {
             if !contact_report::envelope_applies(run.kinematics, P::ENVELOPE_KINEMATICS) {
                 P::without_envelope(&mut compared);
             }
+            P::judge_kinematics(&mut compared, &model, run.kinematics);
             evidence.push(run);
             checked.push(P::checked(compared).map_err(|e| CliError::Data {
                 path: path.display().to_string(),

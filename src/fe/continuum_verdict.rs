@@ -63,8 +63,12 @@ pub struct ContinuumVerdict {
     pub fe: f64,
     /// The continuum's, at the deck's K_T (mm).
     pub continuum: f64,
-    /// The tolerance, a fraction ([`ContinuumJudged::CONTINUUM_TOLERANCE`]).
+    /// The tolerance, a fraction: [`ContinuumJudged::CONTINUUM_TOLERANCE`] plus
+    /// [`ContinuumVerdict::allowance`].
     pub tolerance: f64,
+    /// The part of the tolerance the run's kinematics adds ([`ContinuumVerdict::with_allowance`]),
+    /// a fraction: 0 unless the problem states one for it (the beams' `NLGEOM` runs).
+    pub allowance: f64,
     /// The deck's K_T (MPa/mm).
     pub deck_stiffness: f64,
     /// d ln R / d ln K_T of the continuum at the deck's K_T (negative: R falls with K_T).
@@ -89,6 +93,29 @@ impl ContinuumVerdict {
     /// `None` where R does not depend on K_T.
     pub fn resolution(&self) -> Option<f64> {
         (self.sensitivity.abs() >= MIN_SENSITIVITY).then(|| self.tolerance / self.sensitivity.abs())
+    }
+
+    /// The verdict with `allowance` (a fraction, >= 0) added to its tolerance: what a converged
+    /// run of other kinematics than the continuum's small strain may differ by on top (the
+    /// beams' `NLGEOM`, docs/theory.md (BC4)). The implied K_T's interval widens with it: its
+    /// half-width in ln K_T is the tolerance over the sensitivity at the implied K_T, so it
+    /// scales by (tolerance + allowance) / tolerance.
+    pub fn with_allowance(mut self, allowance: f64) -> ContinuumVerdict {
+        if allowance.is_nan()
+            || allowance <= 0.0
+            || allowance.is_infinite()
+            || self.tolerance <= 0.0
+        {
+            return self;
+        }
+        let scale = (self.tolerance + allowance) / self.tolerance;
+        if let Some(k) = &mut self.implied {
+            k.low = k.value * (k.low / k.value).powf(scale);
+            k.high = k.value * (k.high / k.value).powf(scale);
+        }
+        self.tolerance += allowance;
+        self.allowance += allowance;
+        self
     }
 
     /// (implied - deck) / deck.
@@ -150,6 +177,7 @@ pub fn judge<P: ContinuumJudged>(
         fe,
         continuum,
         tolerance,
+        allowance: 0.0,
         deck_stiffness,
         sensitivity,
         implied,
@@ -309,6 +337,30 @@ mod tests {
             // The interval is the tolerance over the local sensitivity: about +-0.6 % here.
             let half = (k.high / k.low).ln() / 2.0;
             assert!((0.004..0.008).contains(&half), "{half}");
+        }
+    }
+
+    /// An allowance widens the tolerance and the implied K_T's interval in proportion (the
+    /// half-width in ln K_T is the tolerance over the sensitivity), and leaves the implied K_T;
+    /// a value outside the tolerance but inside tolerance + allowance agrees with it only.
+    #[test]
+    fn an_allowance_widens_the_tolerance_and_the_interval_in_proportion() {
+        let deck = 1e4;
+        let fe = continuum_u(deck) * 1.004;
+        let v = judge::<SqueezedPlateProblem>(&plate(deck), fe).unwrap();
+        assert!(!v.agrees());
+        let w = v.with_allowance(0.003);
+        assert!(w.agrees());
+        assert_eq!(w.allowance, 0.003);
+        assert!((w.tolerance - v.tolerance - 0.003).abs() < 1e-15);
+        let (k, kw) = (v.implied.unwrap(), w.implied.unwrap());
+        assert_eq!(k.value, kw.value);
+        let scale = w.tolerance / v.tolerance;
+        assert!(((kw.high / kw.value).ln() / (k.high / k.value).ln() - scale).abs() < 1e-9);
+        assert!(((kw.low / kw.value).ln() / (k.low / k.value).ln() - scale).abs() < 1e-9);
+        assert!((w.resolution().unwrap() / v.resolution().unwrap() - scale).abs() < 1e-12);
+        for nothing in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert_eq!(v.with_allowance(nothing), v);
         }
     }
 

@@ -81,6 +81,18 @@ pub trait Deck: Problem + Registered {
     /// kinematics the envelope was not calibrated on.
     fn without_envelope(compared: &mut Self::Compared);
 
+    /// `compared` (of `model`) judged as a run of `kinematics`: where the problem's continuum,
+    /// which is small-strain, differs from converged runs of those kinematics by more than its
+    /// tolerance, the continuum verdicts get the allowance the problem measured
+    /// ([`ContinuumVerdict::with_allowance`](super::continuum_verdict::ContinuumVerdict::with_allowance);
+    /// the beams' `NLGEOM`, docs/theory.md (BC4)). Nothing for most.
+    fn judge_kinematics(
+        _compared: &mut Self::Compared,
+        _model: &Self::Model,
+        _kinematics: Kinematics,
+    ) {
+    }
+
     /// The bundled preset `deck` and `bench` write when no `--preset` is given, and why: a case
     /// where the FE judge is sharp (the closed form within its tightest envelope, K_T resolved
     /// within a few % by the verdict against the continuum). `None`: the paper's preset

@@ -24,8 +24,10 @@ pub struct ContinuumRow {
     pub response_mm: Option<f64>,
     /// (FE - continuum) / continuum, a fraction.
     pub diff_fraction: Option<f64>,
-    /// The tolerance, a fraction.
+    /// The tolerance, a fraction (the allowance included).
     pub tolerance_fraction: Option<f64>,
+    /// The part of the tolerance the run's kinematics adds (the beams' `NLGEOM`), a fraction.
+    pub allowance_fraction: Option<f64>,
     /// Whether |diff| is within the tolerance.
     pub agrees: Option<bool>,
     /// d ln(response) / d ln K_T of the continuum at the deck's K_T.
@@ -66,6 +68,7 @@ impl ContinuumRow {
                 response_mm: None,
                 diff_fraction: None,
                 tolerance_fraction: None,
+                allowance_fraction: None,
                 agrees: None,
                 sensitivity: None,
                 resolution_fraction: None,
@@ -81,11 +84,21 @@ impl ContinuumRow {
                 } else {
                     "does not agree"
                 };
+                let tolerance = if v.allowance > 0.0 {
+                    format!(
+                        "{}: {} + {} for the run's kinematics",
+                        bare(v.tolerance),
+                        bare(v.tolerance - v.allowance),
+                        bare(v.allowance)
+                    )
+                } else {
+                    bare(v.tolerance)
+                };
                 let mut text = format!(
-                    "{label}: {response} {} from the continuum's {} mm (tolerance {}): {verdict}",
+                    "{label}: {response} {} from the continuum's {} mm (tolerance {tolerance}): \
+                     {verdict}",
                     percent(v.difference()),
                     number_with(v.continuum, 6),
-                    bare(v.tolerance)
                 );
                 match v.implied {
                     Some(k) => text.push_str(&format!(
@@ -106,6 +119,7 @@ impl ContinuumRow {
                     response_mm: Some(v.continuum),
                     diff_fraction: Some(v.difference()),
                     tolerance_fraction: Some(v.tolerance),
+                    allowance_fraction: Some(v.allowance),
                     agrees: Some(v.agrees()),
                     sensitivity: Some(v.sensitivity),
                     resolution_fraction: v.resolution(),
