@@ -525,6 +525,7 @@ const COMPARE_CONTINUUM: &[&str] = &[
     "rows[].continuum.solved: bool",
     "rows[].continuum.text: string",
     "rows[].continuum.tolerance_fraction: number",
+    "rows[].continuum.allowance_fraction: number",
 ];
 
 /// Each row's implied K_T through the continuum: a number where one is implied.
@@ -560,6 +561,7 @@ const COMPARE_BEAM_CONTINUUM: &[&str] = &[
     "rows[].continuum.solved: bool",
     "rows[].continuum.text: string",
     "rows[].continuum.tolerance_fraction: number",
+    "rows[].continuum.allowance_fraction: number",
 ];
 
 /// ... each row's numbers where every row implies a K_T (`compare-beam-two`, the CSV; a row at

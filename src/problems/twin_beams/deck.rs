@@ -425,6 +425,19 @@ pub fn nlgeom_allowance(beams: &TwinBeams) -> f64 {
         * (NLGEOM_FLOOR + NLGEOM_INTERFACE_PART * interface)
 }
 
+/// What an `NLGEOM` run's w(L) may differ by beyond first slip on top of [`nlgeom_allowance`], a
+/// fraction: theta_L / mu, theta_L = 1.5 w(L) / L the tip slope of a cantilever under a tip
+/// force, w(L) the continuum's (docs/theory.md (BC4a)). Where the interface slides its strength
+/// is mu p on faces that `NLGEOM` turns by theta and small strain does not: the turning pressure
+/// P theta acts beside the friction mu P, a relative change theta / mu of the slipping zone's
+/// traction, and w(L) moves less than the traction that holds the beams together. Measured
+/// differences beyond first slip were 0.3 to 0.6 of it (the issue's, the soft and the first
+/// hold-out beams).
+pub fn nlgeom_slip_allowance(beams: &TwinBeams, deflection: f64) -> f64 {
+    let p = beams.params();
+    1.5 * deflection.abs() / p.length / p.friction
+}
+
 impl Deck for TwinBeamsProblem {
     const SOURCE: &'static str = " (Ligier & Bonhote 2014)";
     const INTERFACE_SET: &'static str = sets::BEAM_LOWER_FACE;
@@ -497,16 +510,24 @@ impl Deck for TwinBeamsProblem {
     }
 
     /// A run that is not linear geometry (`NLGEOM`, mixed, or a CSV that does not say) is judged
-    /// against the continuum with [`nlgeom_allowance`] on top of its tolerance; a linear run
-    /// without (in stick the continuum is within 0.03 % of linear-geometry CalculiX).
+    /// against the continuum with [`nlgeom_allowance`] on top of its tolerance, and beyond the
+    /// closed form's first slip [`nlgeom_slip_allowance`] too; a linear run without (in stick
+    /// the continuum is within 0.03 % of linear-geometry CalculiX).
     fn judge_kinematics(compared: &mut BeamComparison, model: &BeamsModel, kinematics: Kinematics) {
         if kinematics == Kinematics::Linear {
             return;
         }
-        let allowance = nlgeom_allowance(&model.beams);
+        let beams = &model.beams;
+        let stick = nlgeom_allowance(beams);
+        let first_slip = beams.first_macroslip_force();
         for row in &mut compared.rows {
             if let Some(Ok(verdict)) = &mut row.continuum {
-                *verdict = verdict.with_allowance(allowance);
+                let slip = if row.fe.force > first_slip {
+                    nlgeom_slip_allowance(beams, verdict.continuum)
+                } else {
+                    0.0
+                };
+                *verdict = verdict.with_allowance(stick + slip);
             }
         }
     }
@@ -704,6 +725,19 @@ mod tests {
             assert_eq!(v.allowance, expected, "{kinematics:?}");
             assert!((v.tolerance - 0.0025 - expected).abs() < 1e-15);
         }
+        // Beyond first slip (F_1 about 80 N) the slip part joins: theta_L / mu of the continuum.
+        let point = BeamFePoint {
+            force: 100.0,
+            deflection: 0.0388257,
+            interface: None,
+        };
+        let mut compared = TwinBeamsProblem::compare(&model, &[point], None);
+        TwinBeamsProblem::judge_kinematics(&mut compared, &model, Kinematics::Nlgeom);
+        let Some(Ok(v)) = compared.rows[0].continuum else {
+            panic!("not judged")
+        };
+        let slip = 1.5 * v.continuum / 200.0 / 0.3;
+        assert!((v.allowance - allowance - slip).abs() < 1e-15, "{v:?}");
     }
 
     #[test]
