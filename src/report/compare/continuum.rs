@@ -140,7 +140,7 @@ impl ContinuumRow {
 pub struct ContinuumSummary {
     /// Every judged row within the tolerance (null when none was judged).
     pub agrees: Option<bool>,
-    /// The tolerance, a fraction.
+    /// The tolerance, a fraction (the smallest row's, where rows have their own).
     pub tolerance_fraction: Option<f64>,
     /// The deck's K_T (MPa/mm).
     #[serde(rename = "KT_deck_MPa_per_mm")]
@@ -197,7 +197,18 @@ pub fn summary(response: &str, rows: &[(String, Check)]) -> Option<ContinuumSumm
         .filter(|(_, v)| !v.agrees())
         .map(|(l, _)| l.as_str())
         .collect();
-    let tolerance = bare(first.tolerance);
+    // Rows may have their own tolerance (an allowance that grows with the load: the beams'
+    // NLGEOM beyond first slip): then the range is said.
+    let (low, high) = judged
+        .iter()
+        .fold((f64::INFINITY, 0.0_f64), |(lo, hi), (_, v)| {
+            (lo.min(v.tolerance), hi.max(v.tolerance))
+        });
+    let tolerance = if bare(low) == bare(high) {
+        bare(low)
+    } else {
+        format!("the tolerance ({} to {})", bare(low), bare(high))
+    };
     let mut clauses = vec![if outside.is_empty() {
         format!(
             "{response} within {tolerance} of the continuum on all {} judged",
@@ -249,7 +260,7 @@ pub fn summary(response: &str, rows: &[(String, Check)]) -> Option<ContinuumSumm
     let implied = sharpest.and_then(|(_, v, _)| v.implied);
     Some(ContinuumSummary {
         agrees: Some(outside.is_empty()),
-        tolerance_fraction: Some(first.tolerance),
+        tolerance_fraction: Some(low),
         deck_stiffness: Some(first.deck_stiffness),
         implied: implied.map(|k| k.value),
         implied_low: implied.map(|k| k.low),

@@ -140,24 +140,6 @@ pub fn solve_beams_continuum(
     states.pop().ok_or(NumericError::BadLoad(force))
 }
 
-/// The continuum's tip deflection w(L) (mm) of the beams of `params` along the loading path
-/// `forces` (N, non-decreasing), one per force, on the default mesh: the response a verdict
-/// bisects K_T on (it falls monotonically as K_T grows).
-///
-/// # Errors
-/// As [`solve_beams_continuum_path`].
-pub fn beams_continuum_deflections(
-    params: TwinBeamsParams,
-    forces: &[f64],
-) -> Result<Vec<f64>, NumericError> {
-    Ok(
-        solve_beams_continuum_path(params, forces, BeamsContinuumMesh::default())?
-            .iter()
-            .map(|s| s.tip_deflection)
-            .collect(),
-    )
-}
-
 /// Solves the beams along one monotonic loading path: P, then F rising through each of `forces`
 /// (N, non-decreasing) in turn; the state at each.
 ///

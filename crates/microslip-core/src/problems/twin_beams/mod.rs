@@ -20,8 +20,7 @@ pub mod validity;
 pub mod zoned;
 
 pub use continuum::{
-    BeamsContinuumMesh, ContinuumBeams, beams_continuum_deflections, solve_beams_continuum,
-    solve_beams_continuum_path,
+    BeamsContinuumMesh, ContinuumBeams, solve_beams_continuum, solve_beams_continuum_path,
 };
 pub use discretized::{InterfaceSample, TwinBeamsFe};
 pub use problem::TwinBeamsProblem;
