@@ -400,7 +400,7 @@ impl ContinuumJudged for TwinBeamsProblem {
 
 /// The floor and the interface part of the `NLGEOM` envelope f(kL) of [`nlgeom_allowance`].
 const NLGEOM_FLOOR: f64 = 0.06;
-const NLGEOM_INTERFACE_PART: f64 = 0.75;
+const NLGEOM_INTERFACE_PART: f64 = 1.0;
 
 /// How far a converged `NLGEOM` run's w(L) may be from the beams' small-strain continuum beyond
 /// the continuum's tolerance, a fraction (docs/theory.md (BC4), "NLGEOM against small strain").
@@ -411,9 +411,10 @@ const NLGEOM_INTERFACE_PART: f64 = 0.75;
 /// once divided by (P / E) (L / h)^2 it is one decreasing function of k L on 8 cases from
 /// kL = 0.87 to 27.6 (0.55 down to 0.054): the interface carries part of it as slip (the
 /// `NLGEOM` slip was 0.63 % above the linear run's all along the soft case), which a stiff
-/// interface (large kL) suppresses. The envelope (P / E) (L / h)^2 (0.06 + 0.75 tanh(kL) / kL)
-/// lies above every measured case, the fine mesh's too (0.32 at kL = 2.76 against 0.33), and
-/// beyond first slip it covered every difference measured (the sign may turn there).
+/// interface (large kL) suppresses. CalculiX's own answer is not mesh-converged in it (the fine
+/// mesh raised the soft case's 0.21 to 0.32, a Richardson estimate 0.36), so the envelope
+/// (P / E) (L / h)^2 (0.06 + tanh(kL) / kL) keeps a margin: 0.42 there, 1.3 to 2.4 times each
+/// coarse case. Beyond first slip [`nlgeom_slip_allowance`] joins it.
 pub fn nlgeom_allowance(beams: &TwinBeams) -> f64 {
     let p = beams.params();
     let kl = beams.decay_rate() * p.length;
@@ -690,10 +691,10 @@ mod tests {
         assert!(at(1, 10.0) < a && at(0, 300.0) > a);
         assert!(at(4, 500.0) < a && a < at(4, 5.0));
         let floor = 2.0 / 210_000.0 * 40.0 * 40.0 * NLGEOM_FLOOR;
-        // kL = 1.2e4 there: the interface part is 0.75 / kL of the floor's 0.06.
+        // kL = 1.2e4 there: the interface part is 1 / kL against the floor's 0.06.
         let ratio = at(4, 1e9) / floor;
         assert!(
-            ratio > 1.0 && ratio < 1.0 + 0.75 / 1.2e4 / 0.06 * 1.01,
+            ratio > 1.0 && ratio < 1.0 + 1.0 / 1.2e4 / 0.06 * 1.01,
             "{ratio}"
         );
     }
