@@ -327,3 +327,54 @@ fn a_csv_result_takes_its_interface_profile_and_kinematics_from_flags() {
     assert!(!refused.status.success());
     assert!(String::from_utf8_lossy(&refused.stderr).contains("--interface is for CSV results"));
 }
+
+/// The beams' continuum is small-strain: a run said to be `NLGEOM` (or not said) is judged with
+/// the measured allowance on top of the 0.25 % tolerance (docs/theory.md (BC4a)), a linear one
+/// without; the JSON says the allowance per row, and it is larger beyond first slip.
+#[test]
+fn the_beams_continuum_verdict_allows_for_nlgeom_and_not_for_linear_geometry() {
+    let results =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/reports/inputs/compare-beam.csv");
+    let allowances = |kinematics: Option<&str>| -> Vec<f64> {
+        let mut args: Vec<&std::ffi::OsStr> = vec![
+            "compare".as_ref(),
+            "beam".as_ref(),
+            results.as_os_str(),
+            "--format".as_ref(),
+            "json".as_ref(),
+        ];
+        if let Some(k) = kinematics {
+            args.push("--kinematics".as_ref());
+            args.push(k.as_ref());
+        }
+        let output = microslip(args);
+        assert!(
+            output.status.success(),
+            "{}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        let json: Value = serde_json::from_slice(&output.stdout).unwrap();
+        json["rows"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|r| r["continuum"].is_object())
+            .map(|r| {
+                let c = &r["continuum"];
+                let (tolerance, allowance) = (
+                    c["tolerance_fraction"].as_f64().unwrap(),
+                    c["allowance_fraction"].as_f64().unwrap(),
+                );
+                assert!((tolerance - 0.0025 - allowance).abs() < 1e-15, "{c}");
+                allowance
+            })
+            .collect()
+    };
+    let linear = allowances(Some("linear"));
+    assert!(linear.iter().all(|a| *a == 0.0), "{linear:?}");
+    let nlgeom = allowances(Some("nlgeom"));
+    assert_eq!(allowances(None), nlgeom);
+    // The paper's beams: (P/E)(L/h)^2 (0.06 + tanh(kL)/kL) = 0.0396 % in stick.
+    assert!((nlgeom[0] - 3.96e-4).abs() < 1e-6, "{nlgeom:?}");
+    assert!(nlgeom.last().unwrap() > &nlgeom[0], "{nlgeom:?}");
+}
