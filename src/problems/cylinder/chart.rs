@@ -339,3 +339,62 @@ fn dissipation_vs_amplitude(cylinder: &Cylinder, load: TangentialLoad) -> Option
         series,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::closed_form::CylinderParams;
+    use super::*;
+    use crate::chart::view::ChartFace;
+
+    /// The loop and D vs Q_a / mu P at the corners of K_T's domain and at Q = 0, mu P / 2 and
+    /// mu P (the whole contact sliding): finite points on increasing axes, both laws drawn, the
+    /// loop closed on itself (each branch ends where the other starts).
+    #[test]
+    fn the_loop_and_d_at_the_corners_have_finite_points_on_valid_axes() {
+        let domain = CylinderParam::Stiffness.spec().domain;
+        for kt in [domain.min(), 1e5, domain.max()] {
+            let cylinder = Cylinder::new(CylinderParams {
+                tangential_stiffness: kt,
+                ..CylinderParams::STEEL_PAD
+            })
+            .unwrap();
+            for q in [0.0, 300.0, 600.0] {
+                let model = super::super::problem::CylinderModel {
+                    cylinder,
+                    load: cylinder.load(q).unwrap(),
+                };
+                for chart in [CylinderChart::Loop, CylinderChart::Dissipation] {
+                    let plot =
+                        <CylinderProblem as ChartFace>::plot(&model, chart, 0.0, None).unwrap();
+                    let what = format!("K_T {kt} Q {q} {chart:?}");
+                    for axis in [&plot.x, &plot.y] {
+                        let [lo, hi] = axis.bounds;
+                        assert!(lo.is_finite() && hi.is_finite() && lo < hi, "{what}");
+                    }
+                    for s in &plot.series {
+                        assert!(
+                            s.points.iter().all(|p| p.0.is_finite() && p.1.is_finite()),
+                            "{what} {}",
+                            s.name
+                        );
+                    }
+                    let drawn = |name: &str| {
+                        plot.series
+                            .iter()
+                            .find(|s| s.name == name)
+                            .is_some_and(|s| !s.points.is_empty())
+                    };
+                    assert!(drawn("regularized") || drawn("K_T"), "{what}");
+                    assert!(drawn("Mindlin") || drawn("Mindlin-Deresiewicz"), "{what}");
+                    if chart == CylinderChart::Loop {
+                        for s in &plot.series {
+                            let (unloading, reloading) = s.points.split_at(FEW as usize);
+                            assert_eq!(unloading.last(), reloading.first(), "{what}");
+                            assert_eq!(unloading.first(), reloading.last(), "{what}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
