@@ -99,7 +99,7 @@ impl ChartFace for CylinderProblem {
     type Chart = CylinderChart;
 
     /// Not finite elements: point forces on a grid over the contact, a Jenkins element at each
-    /// ([`super::overlay`]).
+    /// (`overlay.rs` in this folder).
     const NUMERIC_NAME: &'static str = "discretized solver";
 
     fn plot(
@@ -111,7 +111,7 @@ impl ChartFace for CylinderProblem {
         cylinder_plot(&model.cylinder, model.load, chart, span)
     }
 
-    /// The independent discretized solver's points ([`super::overlay`]).
+    /// The independent discretized solver's points (`overlay.rs` in this folder).
     fn numeric_points(
         model: &Self::Model,
         chart: CylinderChart,
