@@ -97,7 +97,7 @@ pub(crate) fn loop_chart<P: LoadDriven>(
         ),
         loops,
         coulomb.peak_response().max(regularized.peak_response()),
-        f,
+        (f, "F (N)"),
         labels.response_axis,
     ))
 }
@@ -153,12 +153,14 @@ pub(crate) fn profile_plot(
 }
 
 /// The hysteresis loop chart of either law's loop points: the response (`y_title`) against the
-/// force, between -`f` and `f`, its y range from the larger `peak`.
-fn loop_plot(
+/// load (`x_title`, `F (N)` or a problem's own load and unit), between -`f` and `f`, its y range
+/// from the larger `peak`. Shared with a problem whose load is no force in N (the cylinder's
+/// line load, N/mm) and which writes its own title.
+pub(crate) fn loop_plot(
     title: String,
     loops: impl Iterator<Item = LoopPoint>,
     peak: f64,
-    f: f64,
+    (f, x_title): (f64, &str),
     y_title: &str,
 ) -> Plot {
     let (coulomb, regularized): (Series, Series) = loops
@@ -169,7 +171,7 @@ fn loop_plot(
     Plot {
         caption: None,
         title,
-        x: linear_axis("F (N)", -span, span),
+        x: linear_axis(x_title, -span, span),
         y: linear_axis(y_title, -top, top),
         series: vec![
             line(SeriesRole::Coulomb, "Coulomb", coulomb),

@@ -92,10 +92,11 @@ pub fn build(
     }
     if let Some(numeric) = numeric {
         // Where the first gap is; why is too long for a legend (the TUI's status says it).
+        let solver = chart.numeric_name();
         let name = match (numeric.failed, &numeric.failure) {
-            (0, _) => "finite elements".to_string(),
-            (n, Some(first)) => format!("finite elements ({}, from {})", unsolved(n), first.at),
-            (n, None) => format!("finite elements ({})", unsolved(n)),
+            (0, _) => solver.to_string(),
+            (n, Some(first)) => format!("{solver} ({}, from {})", unsolved(n), first.at),
+            (n, None) => format!("{solver} ({})", unsolved(n)),
         };
         plot.series.push(PlotSeries {
             name,

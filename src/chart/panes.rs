@@ -123,6 +123,11 @@ pub const TABLE_TOLERANCE: f64 = 0.01;
 pub trait PaneFace: Deck {
     /// What x = 0 of the zone strip is (`clamp`, `centre`, `inner end`).
     const STRIP_ORIGIN: &'static str;
+    /// What the zone strip's sparkline rows show: the interface shear over the problem's
+    /// [`crate::problems::inputs::InterfaceData`]'s `friction * pressure` (`tau(x) / mu P` where
+    /// that pressure is the interface's uniform P; a problem whose pressure varies names its
+    /// own shear and the pressure it is divided by).
+    const STRIP_SHEAR: &'static str = "tau(x) / mu P";
     /// The reader of its measured curve, where `f` fits one ([`crate::fit::Structure::of`]).
     const MEASURED: CurveParser = crate::measured::parse_measured_with_progress;
     /// The regime pane's own continuum solve, where the pane shows one (the plate's: a tenth of
@@ -190,6 +195,8 @@ pub trait PaneFace: Deck {
 pub trait AnyPaneFace: Send + Sync {
     /// See [`PaneFace::STRIP_ORIGIN`].
     fn strip_origin(&self) -> &'static str;
+    /// See [`PaneFace::STRIP_SHEAR`].
+    fn strip_shear(&self) -> &'static str;
     /// See [`PaneFace::MEASURED`].
     fn measured(&self) -> CurveParser;
     /// True where the regime pane solves a continuum of its own ([`PaneFace::PANE_CONTINUUM`]).
@@ -221,6 +228,10 @@ struct PaneOf<P>(std::marker::PhantomData<P>);
 impl<P: PaneFace> AnyPaneFace for PaneOf<P> {
     fn strip_origin(&self) -> &'static str {
         P::STRIP_ORIGIN
+    }
+
+    fn strip_shear(&self) -> &'static str {
+        P::STRIP_SHEAR
     }
 
     fn measured(&self) -> CurveParser {

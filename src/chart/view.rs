@@ -44,6 +44,10 @@ pub trait ChartFace: Problem {
     /// The problem's charts.
     type Chart: ChartSet;
 
+    /// The legend's name of the points [`ChartFace::numeric_points`] gives: what the
+    /// problem's discretized solver is (`finite elements` unless it is something else).
+    const NUMERIC_NAME: &'static str = "finite elements";
+
     /// The chart `chart` of `model`, without overlays; `f_data`: the largest force of the points
     /// overlaid on it (a force axis may widen to show them), `span`: the force span a family of
     /// curves asks for. None where a curve cannot be sampled (every range is checked, so this is
@@ -210,6 +214,14 @@ macro_rules! any_chart {
                 match self {
                     $(AnyChart::$variant(_) =>
                         <crate::problems::$folder::$problem as Problem>::INFO.load.is_some()),+
+                }
+            }
+
+            /// The legend's name of the chart's discretized points ([`ChartFace::NUMERIC_NAME`]).
+            pub(crate) fn numeric_name(self) -> &'static str {
+                match self {
+                    $(AnyChart::$variant(_) =>
+                        <crate::problems::$folder::$problem as ChartFace>::NUMERIC_NAME),+
                 }
             }
 

@@ -821,7 +821,8 @@ pub struct PlotArgs {
     #[command(flatten)]
     pub inputs: InputArgs,
     /// Add the project's finite-element points (w-vs-f, x-vs-f, tau, loop, u-vs-kt, delta-vs-f,
-    /// zones-vs-f, lap-tau, lap-slip, lap-loop).
+    /// zones-vs-f, lap-tau, lap-slip, lap-loop), or its discretized solver's on every cylinder
+    /// chart.
     #[arg(long)]
     pub fe: bool,
     /// The y axis: linear, log, or relative (each curve / Coulomb - 1, in %); default: log for

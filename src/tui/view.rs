@@ -80,6 +80,8 @@ impl RegimeView {
 pub struct StripView {
     /// What x = 0 is (`clamp`, `centre`, `inner end`).
     pub origin: &'static str,
+    /// What the sparkline rows show (`tau(x) / mu P`, `q(x) / mu p0`).
+    pub shear_name: &'static str,
     /// The zones of both laws along the interface.
     pub zones: InterfaceZones,
     /// tau(x) / (mu P) of each law at the centres of the strip's cells, for each width the pane
@@ -176,13 +178,15 @@ pub fn regime(model: &Model, continuum: &ContinuumState, strip_cells: &[usize]) 
 /// The zone strip at `model`, with the shear sampled for each of `strip_cells`.
 fn strip(model: &Model, strip_cells: &[usize]) -> StripView {
     let zones = interface_zones(model);
-    let origin = pane_face(model.kind()).strip_origin();
+    let face = pane_face(model.kind());
+    let (origin, shear_name) = (face.strip_origin(), face.strip_shear());
     let shear = strip_cells
         .iter()
         .map(|&cells| shear_ratios(model, &zones, cells))
         .collect();
     StripView {
         origin,
+        shear_name,
         zones,
         shear,
     }

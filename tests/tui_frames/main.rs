@@ -137,10 +137,35 @@ fn cylinder_views() {
         "cylinder_zone_chart",
         "cylinder_shear_chart",
         "cylinder_slip_chart",
+        "cylinder_loop_chart",
+        "cylinder_dissipation_chart",
     ] {
         press(&mut app, Action::NextChart);
         insta::assert_snapshot!(name, screen(&app, 100, 30));
     }
+}
+
+/// The cylinder's strip names what its sparklines are: the shear q(x) over mu p0 (the strength
+/// mu p(x) varies), not the uniform-pressure problems' tau(x) / mu P.
+#[test]
+fn the_cylinder_s_strip_names_its_shear() {
+    let app = app_with("cylinder-steel-pad", Charset::Unicode, true);
+    let text = screen(&app, 120, 40);
+    assert!(text.contains(" q(x) / mu p0, 0 to 1:"), "{text}");
+    assert!(!text.contains("tau(x)"), "{text}");
+}
+
+/// `n` on the cylinder's q(x): its independent discretized solver's nodes on the regularized
+/// curve, named as what they are in the legend (not finite elements).
+#[test]
+fn the_cylinder_s_discretized_points_over_q() {
+    let mut app = app_with("cylinder-steel-pad", Charset::Ascii, false);
+    press(&mut app, Action::NextChart);
+    press(&mut app, Action::NextChart);
+    press(&mut app, Action::ToggleNumeric);
+    let text = screen(&app, 100, 30);
+    assert!(text.contains("# discretized solver"), "{text}");
+    insta::assert_snapshot!("cylinder_discretized_points_over_q", text);
 }
 
 #[test]

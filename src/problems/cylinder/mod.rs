@@ -7,6 +7,7 @@ mod ccx_read;
 mod chart;
 pub mod deck;
 mod deck_writer;
+mod overlay;
 #[cfg(feature = "app")]
 mod pane;
 pub mod report;

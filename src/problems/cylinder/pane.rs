@@ -17,6 +17,9 @@ use super::deck::CylinderFePoint;
 
 impl PaneFace for CylinderProblem {
     const STRIP_ORIGIN: &'static str = "centre";
+    /// The strip divides the shear by the interface's `friction * pressure`, mu p0 here (the
+    /// peak pressure, `problem.rs`'s `interface`); the strength mu p(x) falls to 0 at the edges.
+    const STRIP_SHEAR: &'static str = "q(x) / mu p0";
     const KT_COLUMNS: &'static [(&'static str, usize)] =
         &[("KTa/E*", 7), ("c mm", 8), ("s(a) mm", 9)];
 

@@ -7,8 +7,9 @@
 //!
 //! Three sizes, chosen by the pane's spare height: two rows (one per law) on small screens; with a
 //! heading, the boundaries marked and named, and a legend on taller ones; and on the tallest, two
-//! sparkline rows of the interface shear tau(x) / (mu P), where the regularized law's gradual rise
-//! against Coulomb's step shows what "microslip" means.
+//! sparkline rows of the interface shear tau(x) / (mu P) (each problem names its own,
+//! [`StripView::shear_name`]), where the regularized law's gradual rise against Coulomb's step
+//! shows what "microslip" means.
 
 use ratatui::text::{Line, Span};
 
@@ -93,7 +94,7 @@ pub fn lines(strip: &StripView, theme: &Theme, width: u16, size: StripSize) -> V
     }
     if size >= StripSize::WithShear {
         lines.push(Line::from(Span::styled(
-            " tau(x) / mu P, 0 to 1:",
+            format!(" {}, 0 to 1:", strip.shear_name),
             theme.style(Role::Muted),
         )));
         // The view samples the shear for each width the pane can have; at another width the
