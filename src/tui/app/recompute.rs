@@ -14,7 +14,6 @@ use crate::tui::workers::Lane;
 
 /// The legend's word for the overlay (`n`) while its points are solved on a worker: the screen
 /// says they are coming rather than showing those of other values as these.
-const OVERLAY_PENDING: &str = "finite elements: solving... (Esc cancels)";
 use crate::tui::kt_table;
 use crate::tui::summary::SummaryLine;
 use crate::tui::view;
@@ -200,10 +199,10 @@ impl App {
         };
         self.view.chart.table = None;
         let mut plot = y_mode.apply(plot);
-        if self.overlay.is_some_and(|(.., pending)| pending) {
+        if let Some((_, chart, true)) = self.overlay {
             // Said where the points will be, rather than showing those of other values as these.
             plot.series.push(chart::PlotSeries {
-                name: OVERLAY_PENDING.into(),
+                name: format!("{}: solving... (Esc cancels)", chart.numeric_name()),
                 points: Vec::new(),
                 role: chart::SeriesRole::FiniteElements,
             });
@@ -286,7 +285,7 @@ impl App {
             Ok(points) => self.numeric = points,
             Err(e) => {
                 self.numeric = None;
-                self.error(format!("finite elements failed: {e}"));
+                self.error(format!("{} failed: {e}", chart.numeric_name()));
             }
         }
         self.recompute();
@@ -298,13 +297,16 @@ impl App {
     /// Esc while the overlay is being solved: stops the solve and turns `n` off; false when no
     /// solve was pending.
     pub(super) fn cancel_overlay(&mut self) -> bool {
-        if !self.overlay.is_some_and(|(.., pending)| pending) {
+        let Some((_, chart, true)) = self.overlay else {
             return false;
-        }
+        };
         self.show_numeric = false;
         self.overlay_toggled = false;
         self.recompute();
-        self.info("finite elements cancelled; n solves them again");
+        self.info(format!(
+            "{} cancelled; n solves them again",
+            chart.numeric_name()
+        ));
         true
     }
 
@@ -320,7 +322,10 @@ impl App {
             .filter(|_| self.show_numeric)
             .and_then(NumericPoints::failure_words)
         {
-            self.info(format!("finite elements: {words}"));
+            let name = self
+                .overlay
+                .map_or("finite elements", |(_, c, _)| c.numeric_name());
+            self.info(format!("{name}: {words}"));
         }
     }
 
