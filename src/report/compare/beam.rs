@@ -91,11 +91,8 @@ impl BeamCompareReport {
             .iter()
             .map(|r| (label(r.fe.force), r.continuum))
             .collect();
-        let continuum = continuum::summary("w(L)", &checks);
         let mut verdict = verdict::beam_summary(comparison);
-        if let Some(c) = &continuum {
-            verdict::with_continuum(&mut verdict, c);
-        }
+        let (checked, continuum) = continuum::judged_rows("w(L)", &checks, &mut verdict);
         BeamCompareReport {
             model: "beam",
             results: source.to_string(),
@@ -104,10 +101,11 @@ impl BeamCompareReport {
             rows: comparison
                 .rows
                 .iter()
-                .map(|r| BeamRowReport {
+                .zip(checked)
+                .map(|(r, continuum)| BeamRowReport {
                     row: BeamCompareRow::from(r),
                     verdict: verdict::beam_row(r),
-                    continuum: ContinuumRow::of(&label(r.fe.force), "w(L)", r.continuum),
+                    continuum,
                 })
                 .collect(),
             implied,

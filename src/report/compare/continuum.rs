@@ -11,6 +11,25 @@ use crate::report::number_with;
 /// A row's continuum check as the compare faces hold it.
 pub type Check = Option<Result<ContinuumVerdict, NotSolved>>;
 
+/// The continuum part of a comparison report, the same for every problem: each row's
+/// [`ContinuumRow`] in order (labelled as the report labels its rows) and their [`summary`],
+/// whose clause joins the report's closing `verdict`.
+pub fn judged_rows(
+    response: &str,
+    checks: &[(String, Check)],
+    verdict: &mut super::verdict::Summary,
+) -> (Vec<Option<ContinuumRow>>, Option<ContinuumSummary>) {
+    let continuum = summary(response, checks);
+    if let Some(c) = &continuum {
+        super::verdict::with_continuum(verdict, c);
+    }
+    let rows = checks
+        .iter()
+        .map(|(label, check)| ContinuumRow::of(label, response, *check))
+        .collect();
+    (rows, continuum)
+}
+
 /// The resolution beyond which a report says in words that the response cannot tell the deck's
 /// K_T from one that far off (a quarter: "could not tell 600 from 750").
 const BLUNT_RESOLUTION: f64 = 0.25;

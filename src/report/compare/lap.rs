@@ -48,25 +48,19 @@ impl LapCompareReport {
             .iter()
             .map(|r| (format!("F = {} N", number(r.fe.force)), r.continuum))
             .collect();
-        let continuum = continuum::summary("Delta", &checks);
         let mut verdict = verdict::lap_summary(rows);
-        if let Some(c) = &continuum {
-            verdict::with_continuum(&mut verdict, c);
-        }
+        let (checked, continuum) = continuum::judged_rows("Delta", &checks, &mut verdict);
         LapCompareReport {
             model: "lap",
             results: source.to_string(),
             rows: rows
                 .iter()
-                .map(|r| LapRowReport {
+                .zip(checked)
+                .map(|(r, continuum)| LapRowReport {
                     row: LapCompareRow::from(r),
                     theory_validity: r.theory_validity,
                     verdict: verdict::lap_row(r),
-                    continuum: ContinuumRow::of(
-                        &format!("F = {} N", number(r.fe.force)),
-                        "Delta",
-                        r.continuum,
-                    ),
+                    continuum,
                 })
                 .collect(),
             verdict,

@@ -53,25 +53,19 @@ impl PlateCompareReport {
                 )
             })
             .collect();
-        let continuum = continuum::summary("u(L)", &checks);
         let mut verdict = verdict::plate_summary(rows);
-        if let Some(c) = &continuum {
-            verdict::with_continuum(&mut verdict, c);
-        }
+        let (checked, continuum) = continuum::judged_rows("u(L)", &checks, &mut verdict);
         PlateCompareReport {
             model: "plate",
             results: source.to_string(),
             rows: rows
                 .iter()
-                .map(|r| PlateRowReport {
+                .zip(checked)
+                .map(|(r, continuum)| PlateRowReport {
                     row: PlateCompareRow::from(r),
                     strip_validity: r.strip_validity,
                     verdict: verdict::plate_row(r),
-                    continuum: ContinuumRow::of(
-                        &format!("K_T = {} MPa/mm", number(r.fe.stiffness)),
-                        "u(L)",
-                        r.continuum,
-                    ),
+                    continuum,
                 })
                 .collect(),
             verdict,
