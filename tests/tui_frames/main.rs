@@ -117,15 +117,17 @@ fn lap_views() {
 }
 
 /// The Hertzian cylinder, as a newcomer meets it from its preset: at 80x24 in ASCII (a, c, s(a)
-/// must show, and that P and Q are line loads), at 120x40 in Unicode, and each of its charts.
+/// and the dissipation per cycle must show, and that P and Q are line loads), at 120x40 in
+/// Unicode, and each of its charts.
 #[test]
 fn cylinder_views() {
     let ascii = app_with("cylinder-steel-pad", Charset::Ascii, false);
     let small = screen(&ascii, 80, 24);
     for needed in [
         "a 0.7428 mm",
-        "c/a Mindlin 0.707",
+        "c 0.6461 mm c/a 0.87",
         "s(a) 3.02401 um",
+        "D(+-Q) 0.105 N mm/mm",
         "N/mm",
     ] {
         assert!(small.contains(needed), "{needed}\n{small}");

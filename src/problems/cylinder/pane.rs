@@ -13,7 +13,10 @@ use crate::kernel::format::{number, number_with};
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::study::tolerance::state_stiffness_for_tolerance;
 
+use super::cycle::CylinderCycle;
 use super::deck::CylinderFePoint;
+use crate::kernel::regime::Law;
+use crate::problems::load_driven::MasingCycle;
 
 impl PaneFace for CylinderProblem {
     const STRIP_ORIGIN: &'static str = "centre";
@@ -30,6 +33,10 @@ impl PaneFace for CylinderProblem {
     fn summary_lines(model: &CylinderModel, _continuum: &ContinuumState) -> Vec<SummaryLine> {
         let row = cylinder_point(&model.cylinder, model.load);
         let p = model.cylinder.params();
+        let (mindlin, regularized) = (
+            CylinderCycle::new(&model.cylinder, Law::Coulomb, model.load),
+            CylinderCycle::new(&model.cylinder, Law::Regularized, model.load),
+        );
         vec![
             SummaryLine::plain(
                 format!("at Q {} N/mm", number(row.load)),
@@ -58,13 +65,22 @@ impl PaneFace for CylinderProblem {
             ),
             SummaryLine::plain(
                 format!(
-                    "c/a Mindlin {} reg {}",
-                    number_with(row.zone_coulomb / row.half_width, 3),
+                    "c {} mm c/a {}",
+                    number_with(row.zone_regularized, 4),
                     number_with(row.zone_regularized / row.half_width, 3)
                 ),
-                "half-width of the zone where |q| < mu p over a: Mindlin's sqrt(1 - Q/mu P), \
-                 and the regularized law's microslip zone",
+                "regularized law: half-width c of the zone where |q| < mu p (the microslip zone), \
+                 and c over a",
             ),
+            SummaryLine::plain(
+                format!(
+                    "c Mindlin {} mm c/a {}",
+                    number_with(row.zone_coulomb, 4),
+                    number_with(row.zone_coulomb / row.half_width, 3)
+                ),
+                "plain Coulomb law (Mindlin): the stick zone's half-width, c/a = sqrt(1 - Q/mu P)",
+            )
+            .dropped(3),
             SummaryLine::plain(
                 format!("s(a) {} um", number(mm_to_um(row.edge_slip_regularized))),
                 "regularized law: the slip at the contact's edge, the fretting slip amplitude",
@@ -76,7 +92,7 @@ impl PaneFace for CylinderProblem {
                 ),
                 "plain Coulomb law (Mindlin): the slip at the contact's edge",
             )
-            .dropped(3),
+            .dropped(5),
             SummaryLine::plain(
                 format!(
                     "ratio to Mindlin {}",
@@ -88,12 +104,28 @@ impl PaneFace for CylinderProblem {
                 ),
                 RATIO_MEANING,
             )
-            .dropped(4),
+            .dropped(6),
             SummaryLine::plain(
                 format!("s(0) {} um", number(mm_to_um(row.centre_slip_regularized))),
                 "regularized law: the slip at the centre (0 under Mindlin below gross slip)",
             )
             .dropped(2),
+            SummaryLine::plain(
+                format!(
+                    "D(+-Q) {} N mm/mm",
+                    number_with(regularized.dissipation(), 3)
+                ),
+                "regularized law: the energy dissipated per fully reversed cycle +-Q, per mm of \
+                 the cylinder's length (the area of the rigid shift's loop; c shows the loops)",
+            ),
+            SummaryLine::plain(
+                format!(
+                    "D Mindlin {} N mm/mm",
+                    number_with(mindlin.dissipation(), 3)
+                ),
+                "plain Coulomb law: Mindlin-Deresiewicz's dissipation per cycle +-Q (N mm per mm)",
+            )
+            .dropped(4),
             SummaryLine::plain(
                 format!("K_T a/E* {}", number_with(row.stiffness_group, 3)),
                 "how compliant the interface is beside the bodies: the answer depends on it and \
@@ -106,7 +138,7 @@ impl PaneFace for CylinderProblem {
                 ),
                 "gross slip: the whole contact slides; no larger Q is carried",
             )
-            .dropped(5),
+            .dropped(7),
             SummaryLine::plain(
                 format!(
                     "K_T = {} MPa/um",
