@@ -198,3 +198,23 @@ fn figures_with_only_a_beam_theory_draw_that_bench() {
     assert!(out.join("beam-w-vs-f.svg").is_file());
     assert!(!out.join("plate-u-vs-kt.svg").exists());
 }
+
+/// `sweep cylinder`: `sweep` has subcommands for the older problems only; a problem of the
+/// registry given where a subcommand is expected is pointed to `--model`, any other word refused
+/// as before.
+#[test]
+fn a_problem_given_as_a_subcommand_it_does_not_have_is_pointed_to_model() {
+    let (code, out, err) = run(&["sweep", "cylinder", "--from", "0", "--to", "100"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains("reaches the cylinder problem with --model cylinder"),
+        "{err}"
+    );
+    let (code, _, err) = run(&["sweep", "cylindre"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(!err.contains("--model"), "{err}");
+    let (code, out, err) = run(&["sweep", "--model", "cylinder", "--from", "0", "--to", "100"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("Q_N_per_mm,"), "{out}");
+}

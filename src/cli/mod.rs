@@ -170,7 +170,19 @@ fn clap_error_line(error: &clap::Error) -> String {
         .collect();
     let line = first_block.join(" ");
     let line = line.strip_prefix("error: ").unwrap_or(&line);
-    format!("{line} (see --help)")
+    // `sweep cylinder`: a problem of the registry where a command has subcommands for some
+    // problems only (the older ones' aliases); every problem is reached with --model.
+    let problem = (error.kind() == clap::error::ErrorKind::InvalidSubcommand)
+        .then(|| error.get(clap::error::ContextKind::InvalidSubcommand))
+        .flatten()
+        .map(ToString::to_string)
+        .filter(|name| name.parse::<ModelKind>().is_ok());
+    match problem {
+        Some(name) => format!(
+            "{line}: this command reaches the {name} problem with --model {name} (see --help)"
+        ),
+        None => format!("{line} (see --help)"),
+    }
 }
 
 fn report_clap_error(error: &clap::Error) -> ExitCode {
