@@ -40,7 +40,8 @@ pub enum Command {
         #[command(flatten)]
         inputs: InputArgs,
         /// Contact element length of your FE model (mm, in [1e-8, 1e6]), which the codes' default
-        /// K_T scale with; default: L/100 (0.4 mm on lap-aluminium, 2 mm on paper-beams).
+        /// K_T scale with; default: a hundredth of the contact's length (L; 0.4 mm on lap-aluminium,
+        /// 2 mm on paper-beams; the cylinder's is its half-width a).
         #[arg(long, value_name = "LE", allow_negative_numbers = true)]
         element_size: Option<f64>,
         /// Normal contact stiffness K_N (MPa/mm), for paper eq. 4 and the measured K_T/K_N range.

@@ -243,8 +243,8 @@ impl StiffnessReport {
         let _ = writeln!(
             out,
             "Elastic-slip defaults scale like mu P / element length, here contact elements of \
-             {element} mm (L/100 unless --element-size MM gives your mesh's): halve the elements, \
-             double K_T."
+             {element} mm (a hundredth of the contact's length unless --element-size MM gives \
+             your mesh's): halve the elements, double K_T."
         );
         out
     }
