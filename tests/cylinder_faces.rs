@@ -115,7 +115,8 @@ proptest! {
 
     /// The deck's header reads back as the model (K_T = the stick slope it gives CalculiX,
     /// Q the last load), `*FRICTION` carries mu and K_T, the loaded node carries P and Q per
-    /// unit length times the slice's width, and the contact's elements are a/20.
+    /// unit length times the slice's width, and the contact's elements are a/8 (the CI-sized
+    /// coarse deck).
     #[test]
     fn the_deck_carries_the_model(
         r in 5.0f64..200.0,
@@ -154,8 +155,8 @@ proptest! {
         xs.sort_by(f64::total_cmp);
         let a = c.half_width();
         for w in xs.windows(2) {
-            // Nodes every half element: elements of a/20.
-            prop_assert!(((w[1] - w[0]) / (a / 40.0) - 1.0).abs() < 1e-6, "{} {}", w[1] - w[0], a);
+            // Nodes every half element: elements of a/8.
+            prop_assert!(((w[1] - w[0]) / (a / 16.0) - 1.0).abs() < 1e-6, "{} {}", w[1] - w[0], a);
         }
         prop_assert!((xs[xs.len() - 1] / a - 1.25).abs() < 1e-6);
     }
