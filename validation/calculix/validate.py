@@ -458,15 +458,15 @@ def cylinder_values(row):
 def cylinder_moves(base, other, bounds, what, failures):
     """The largest change of each of a, p0, c (in a) and s(a) (relative) from `base` to `other`
     over their rows; a failure for each beyond `bounds`."""
-    worst = {}
+    worst = {key: 0.0 for key in bounds}
     for b, o in zip(base["rows"], other["rows"]):
         vb, vo = cylinder_values(b), cylinder_values(o)
         for key in bounds:
             move = vo[key] - vb[key] if key == "c" else vo[key] / vb[key] - 1
-            if abs(move) > abs(worst.get(key, 0)):
+            if abs(move) > abs(worst[key]):
                 worst[key] = move
     for key, bound in bounds.items():
-        if abs(worst.get(key, 0)) > bound:
+        if abs(worst[key]) > bound:
             failures.append(f"cylinder, {what}: {key} moves by {100 * worst[key]:+.2f} % "
                             f"(tolerance {100 * bound:g} %)")
     return worst
@@ -529,7 +529,7 @@ def cylinder_rows(microslip, workdir, lines, timings, failures):
                          f"{row['c_mm'] / a:.4f} | {row['c_mindlin_mm'] / a:.4f} | "
                          f"{pct(row['c_diff_over_a'])} | {row['sa_fe_mm']:.5g} | "
                          f"{row['sa_mm']:.5g} | {pct(row['sa_diff_fraction'])} | "
-                         + ("-" if slope is None else f"{slope:.4g} MPa/mm") + " |")
+                         + ("-" if slope is None else f"{slope:.6g} MPa/mm") + " |")
     moves = cylinder_moves(base, results[1][1], CYLINDER_INCREMENT, "Q step mu P/10 to mu P/20",
                            failures)
     lines.append("\nLoad-path convergence (halving the Q increment): "
