@@ -144,6 +144,12 @@ pub struct CylinderCompared {
     /// Whether the half-plane envelope judges this point: it was measured on linear-geometry
     /// runs (the deck's), so a run of other kinematics is not judged against it.
     pub envelope_applies: bool,
+    /// The half-plane envelope of this cylinder ([`Cylinder::validity`]): c within this
+    /// fraction of a and s(a) within this fraction; `None` outside the measured envelope.
+    pub zone_within: Option<f64>,
+    pub edge_slip_within: Option<f64>,
+    /// Why the envelope does not reach this cylinder; `None` inside it.
+    pub outside_because: Option<&'static str>,
 }
 
 impl CylinderCompared {
@@ -169,6 +175,7 @@ pub fn compare_cylinder(
     cylinder: &Cylinder,
     points: &[CylinderFePoint],
 ) -> Result<Vec<CylinderCompared>, ParamError> {
+    let envelope = cylinder.validity();
     points
         .iter()
         .map(|&fe| {
@@ -184,6 +191,9 @@ pub fn compare_cylinder(
                 centre_slip: state.centre_slip(),
                 regime: state.regime(),
                 envelope_applies: true,
+                zone_within: envelope.zone_within,
+                edge_slip_within: envelope.edge_slip_within,
+                outside_because: envelope.outside_because,
             })
         })
         .collect()
@@ -407,20 +417,29 @@ impl CylinderCompareReport {
     /// The report of `rows`, compared from the files `source` names.
     pub fn new(source: &str, rows: &[CylinderCompared]) -> CylinderCompareReport {
         let judged = !rows.is_empty() && rows.iter().all(|r| r.envelope_applies);
-        let within = rows.iter().all(|r| {
-            r.zone_difference().is_none_or(|d| d.abs() <= ZONE_WITHIN)
-                && r.edge_slip_difference()
-                    .is_none_or(|d| d.abs() <= EDGE_SLIP_WITHIN)
-        });
+        let outside = rows.iter().find_map(|r| r.outside_because);
+        let zone = rows
+            .first()
+            .and_then(|r| r.zone_within)
+            .unwrap_or(ZONE_WITHIN);
+        let edge = rows
+            .first()
+            .and_then(|r| r.edge_slip_within)
+            .unwrap_or(EDGE_SLIP_WITHIN);
+        let within = outside.is_none()
+            && rows.iter().all(|r| {
+                r.zone_difference().is_none_or(|d| d.abs() <= zone)
+                    && r.edge_slip_difference().is_none_or(|d| d.abs() <= edge)
+            });
         CylinderCompareReport {
             model: "cylinder",
             source: source.to_string(),
             rows: rows.iter().map(CylinderCompareRow::from).collect(),
             within_envelope: within,
-            c_within_fraction_of_a: ZONE_WITHIN,
-            sa_within_fraction: EDGE_SLIP_WITHIN,
+            c_within_fraction_of_a: zone,
+            sa_within_fraction: edge,
             note: HALF_PLANE_NOTE,
-            verdict: envelope_summary(within, judged),
+            verdict: envelope_summary(within, judged, (zone, edge), outside),
         }
     }
 
@@ -475,14 +494,32 @@ impl CylinderCompareReport {
     }
 }
 
-/// The closing verdict of the half-plane envelope: c within [`ZONE_WITHIN`] of a and s(a) within
-/// [`EDGE_SLIP_WITHIN`] on every row (`judged`: there was a row).
-fn envelope_summary(within: bool, judged: bool) -> Summary {
+/// The closing verdict of the half-plane envelope: c within `bounds.0` of a and s(a) within
+/// `bounds.1` on every row (`judged`: there was a row of the envelope's kinematics; `outside`:
+/// why the envelope does not reach this cylinder, which is then not judged).
+fn envelope_summary(
+    within: bool,
+    judged: bool,
+    (zone, edge): (f64, f64),
+    outside: Option<&str>,
+) -> Summary {
+    if let Some(why) = outside {
+        return Summary {
+            agrees: false,
+            summary: format!(
+                "Verdict: not judged. The half-plane envelope measured against CalculiX does not \
+                 reach this cylinder: {why}."
+            ),
+            stiffness: None,
+            stiffness_z: None,
+            short: "not judged: outside the measured envelope".to_string(),
+        };
+    }
     let envelope = format!(
         "c within {} % of a and s(a) within {} % of the half-plane answer (the envelope measured \
          against CalculiX, docs/theory.md)",
-        Compact(100.0 * ZONE_WITHIN),
-        Compact(100.0 * EDGE_SLIP_WITHIN)
+        Compact(100.0 * zone),
+        Compact(100.0 * edge)
     );
     let (agrees, word, short) = match (judged, within) {
         (false, _) => (
@@ -591,5 +628,66 @@ mod study {
         )
         .unwrap();
         std::fs::write(std::env::var("CYL_DECK").unwrap(), deck).unwrap();
+    }
+}
+
+#[cfg(test)]
+mod envelope {
+    use super::*;
+    use crate::problems::cylinder::params::CylinderParams;
+
+    /// A cylinder of radius `radius` (mm) at K_T a/E* = 0.64, and a point that agrees with its
+    /// half-plane answer exactly at 0.3 mu P.
+    fn agreeing(radius: f64) -> Vec<CylinderCompared> {
+        let base = Cylinder::new(CylinderParams {
+            radius,
+            modulus: 210_000.0,
+            poisson: 0.3,
+            normal_load: 1000.0,
+            friction: 0.6,
+            tangential_stiffness: 1e5,
+        })
+        .unwrap();
+        let c = base
+            .with_tangential_stiffness(0.64 * base.contact_modulus() / base.half_width())
+            .unwrap();
+        let load = c.load(0.3 * c.gross_slip_load()).unwrap();
+        let state = c.regularized(load);
+        let fe = CylinderFePoint {
+            load: load.newtons_per_mm(),
+            edge_slip: state.edge_slip(),
+            contact: Some(FeContact {
+                half_width: c.half_width(),
+                peak_pressure: c.peak_pressure(),
+                micro_half_width: state.micro_half_width(),
+                centre_slip: state.centre_slip(),
+            }),
+        };
+        compare_cylinder(&c, &[fe]).unwrap()
+    }
+
+    #[test]
+    fn the_envelope_is_the_cylinder_s_own() {
+        // The pad: inside, judged on the base bounds.
+        let report = CylinderCompareReport::new("run.dat", &agreeing(50.0));
+        assert!(report.within_envelope && report.verdict.agrees);
+        assert_eq!(report.sa_within_fraction, EDGE_SLIP_WITHIN);
+        // a/R = 0.047 (R = 5 mm): the curved bounds.
+        let report = CylinderCompareReport::new("run.dat", &agreeing(5.0));
+        assert!(report.verdict.agrees);
+        assert!(report.c_within_fraction_of_a > ZONE_WITHIN);
+        // a/R beyond the measured: not judged, with the reason, even where the numbers agree.
+        let report = CylinderCompareReport::new("run.dat", &agreeing(1.0));
+        assert!(!report.within_envelope && !report.verdict.agrees);
+        assert!(
+            report.verdict.summary.contains("not judged"),
+            "{}",
+            report.verdict.summary
+        );
+        assert!(
+            report.verdict.summary.contains("a/R"),
+            "{}",
+            report.verdict.summary
+        );
     }
 }
