@@ -30,6 +30,22 @@ impl PaneFace for CylinderProblem {
         "Hertzian cylinder (P, Q in N/mm)".to_string()
     }
 
+    /// The half-plane answer's envelope in the regime pane's title, as the lap joint's: "FE
+    /// within 4 %" (s(a) against a finite-body CalculiX model), "FE: not calibrated" outside it.
+    fn title_line(model: &CylinderModel) -> Option<SummaryLine> {
+        let v = model.cylinder.validity();
+        Some(SummaryLine::plain(
+            match v.edge_slip_within {
+                Some(e) => format!("FE within {} %", number_with(100.0 * e, 2)),
+                None => "FE: not calibrated".to_string(),
+            },
+            "how far a finite-body FE model (bodies at least 6 a wide and deep) is expected from \
+             the half-plane s(a) shown (c: within 5 % of a): the envelope measured against \
+             CalculiX over K_T a/E* 0.064-64 and a/R up to 0.09 (docs/theory.md, the cylinder \
+             in CI); 'not calibrated': outside it",
+        ))
+    }
+
     fn summary_lines(model: &CylinderModel, _continuum: &ContinuumState) -> Vec<SummaryLine> {
         let row = cylinder_point(&model.cylinder, model.load);
         let p = model.cylinder.params();

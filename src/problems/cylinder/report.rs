@@ -6,13 +6,14 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use crate::kernel::regime::Regime;
+use crate::kernel::validity::Validity;
 use crate::numeric::NumericError;
 use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace};
 use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleWords, ForceLimit};
-use crate::report::point::{InputsReport, regime_label};
+use crate::report::point::{InputsReport, regime_label, validity_label};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::Answer;
 use crate::study::load::LoopPoint;
@@ -21,6 +22,7 @@ use super::closed_form::{Cylinder, TangentialLoad};
 use super::point::{CylinderPoint, cylinder_point};
 use super::problem::{CylinderInputs, CylinderModel, CylinderProblem};
 use super::stiffness_answer::CylinderAnswer;
+use super::validity::{CylinderValidity, LEAST_BODY_OVER_HALF_WIDTH};
 
 /// What a candidate K_T does to the cylinder at the model's Q (`microslip kt`'s row).
 #[derive(Debug, Clone, Copy, Serialize)]
@@ -300,6 +302,65 @@ pub struct CylinderReport {
     pub regularized: CylinderLaw,
     /// What the solution assumes.
     pub note: &'static str,
+    /// How far the half-plane answer holds for this cylinder (docs/theory.md, "The Hertzian
+    /// cylinder in CI and how far the half-plane answer holds").
+    pub half_plane_validity: HalfPlaneValidity,
+}
+
+/// The half-plane answer's envelope in the report ([`CylinderValidity`]).
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct HalfPlaneValidity {
+    /// `holds`, `approximate` (s(a) expected within 2 %, 10 % of a finite-body FE answer) or
+    /// `not calibrated` (outside the measured envelope).
+    #[serde(serialize_with = "validity_label")]
+    pub validity: Validity,
+    /// |c_FE - c| / a expected at most this (-); null outside the envelope.
+    pub c_within_fraction_of_a: Option<f64>,
+    /// |s(a)_FE / s(a) - 1| expected at most this (-); null outside the envelope.
+    pub sa_within_fraction: Option<f64>,
+    /// a / R (-).
+    #[serde(rename = "a_over_R")]
+    pub half_width_over_radius: f64,
+    /// The least body half-width and depth, in a, the envelope was measured for.
+    #[serde(rename = "bodies_at_least_a")]
+    pub least_body: f64,
+    /// Why the envelope does not reach this cylinder; null inside it.
+    pub outside_because: Option<&'static str>,
+}
+
+impl From<CylinderValidity> for HalfPlaneValidity {
+    fn from(v: CylinderValidity) -> Self {
+        HalfPlaneValidity {
+            validity: v.validity,
+            c_within_fraction_of_a: v.zone_within,
+            sa_within_fraction: v.edge_slip_within,
+            half_width_over_radius: v.half_width_over_radius,
+            least_body: LEAST_BODY_OVER_HALF_WIDTH,
+            outside_because: v.outside_because,
+        }
+    }
+}
+
+impl HalfPlaneValidity {
+    /// The envelope in one sentence.
+    pub fn text(&self) -> String {
+        match (self.c_within_fraction_of_a, self.sa_within_fraction) {
+            (Some(c), Some(sa)) => format!(
+                "{}: a finite-body FE answer (bodies at least {} a wide and deep) expected within \
+                 {} % of a in c and {} % in s(a)",
+                self.validity.label(),
+                number(self.least_body),
+                number(100.0 * c),
+                number(100.0 * sa)
+            ),
+            _ => format!(
+                "{}: {}",
+                self.validity.label(),
+                self.outside_because
+                    .unwrap_or("outside the measured envelope")
+            ),
+        }
+    }
 }
 
 impl CylinderReport {
@@ -341,6 +402,7 @@ impl CylinderReport {
                 peak_q_over_mu_p0: row.peak_shear_regularized,
             },
             note: SOLUTION_NOTE,
+            half_plane_validity: cylinder.validity().into(),
         }
     }
 
@@ -416,6 +478,11 @@ impl CylinderReport {
             number(self.half_width - r.zone)
         );
         let _ = writeln!(out, "Solution: {}", self.note);
+        let _ = writeln!(
+            out,
+            "Half-plane answer against CalculiX: {}",
+            self.half_plane_validity.text()
+        );
         out
     }
 }

@@ -15,6 +15,7 @@ mod quadrature;
 pub mod regularized;
 #[cfg(test)]
 mod tests;
+pub mod validity;
 
 // ---- REGISTRY: the modules below name what the registry generates for the cylinder (its
 // `Param::Cylinder` and `ModelKind::Cylinder` variants, its `Inputs`/`Model` bridges through
