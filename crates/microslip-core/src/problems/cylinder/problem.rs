@@ -12,6 +12,7 @@ use crate::kernel::params::ParamError;
 use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
 use crate::problems::inputs::InterfaceData;
 use crate::problems::load_driven::{AnyLoadDriven, LoadDrivenOf};
+use crate::problems::fittable::{AnyFittable, FittableOf};
 use crate::problems::problem::{Laws, ParamKey, Problem};
 use crate::problems::zoned::{AnyZoned, ZonedOf};
 use crate::problems::{Description, ModelKind, Quantity, UnknownParam};
@@ -151,6 +152,10 @@ impl Problem for CylinderProblem {
 
     fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
         Some(&LoadDrivenOf::<CylinderProblem>::NEW)
+    }
+
+    fn fittable() -> Option<&'static dyn AnyFittable> {
+        Some(&FittableOf::<CylinderProblem>::NEW)
     }
 
     fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
