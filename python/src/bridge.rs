@@ -441,11 +441,8 @@ pub fn fit_report(
             fittable.join(" or ")
         )
     })?;
-    let measured = microslip::measured::parse_measured_response_with_progress(
-        csv,
-        structure.response_column(),
-        &mut |_, _| {},
-    )
+    let measured =
+        microslip::measured::parse_measured_response_with_progress(csv, &structure, &mut |_, _| {})
     .map_err(|e| format!("{data}: {e}"))?;
     let weights = match (measured.sigma.as_deref(), weights) {
         (Some(sigma), None) => Weights::Sigma(sigma),
