@@ -174,3 +174,23 @@ fn loads_beyond_every_gross_slip_load_are_refused_with_the_bound() {
          fits it"
     );
 }
+
+/// The terminal UI's reader of the cylinder's measured curve (`d`, `--data`; `f` fits it) reads
+/// the bundled curve by the fit's own columns, and refuses the beams' naming them.
+#[cfg(feature = "app")]
+#[test]
+fn the_terminal_ui_reads_the_cylinder_s_curve_by_its_columns() {
+    use microslip::problems::ModelKind;
+    let kind: ModelKind = "cylinder".parse().unwrap();
+    let parse = microslip::chart::panes::pane_face(kind).measured();
+    let text = std::fs::read_to_string("tests/data/reports/inputs/fit-cylinder.csv").unwrap();
+    let measured = parse(&text, &mut |_, _| {}).unwrap();
+    assert_eq!(measured.points.len(), 18);
+    assert_eq!(
+        (measured.points[0].force, measured.points[0].response),
+        (25.0, 0.00061879)
+    );
+    let beam = std::fs::read_to_string("tests/data/reports/inputs/fit-beam.csv").unwrap();
+    let message = parse(&beam, &mut |_, _| {}).unwrap_err().to_string();
+    assert!(message.ends_with("Q_N_per_mm and sa_mm are required"), "{message}");
+}
