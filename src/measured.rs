@@ -512,10 +512,9 @@ mod tests {
             let read = parse_measured_response_with_progress(&text, &mine, &mut |_, _| {});
             assert_eq!(read.unwrap().points.len(), 3, "{text}");
             for theirs in fittable.clone().filter(|s| s.kind() != mine.kind()) {
-                let message =
-                    parse_measured_response_with_progress(&text, &theirs, &mut |_, _| {})
-                        .unwrap_err()
-                        .to_string();
+                let message = parse_measured_response_with_progress(&text, &theirs, &mut |_, _| {})
+                    .unwrap_err()
+                    .to_string();
                 let (load, response) = (theirs.load_column(), theirs.response_column());
                 assert!(
                     message.starts_with("line 1: missing column '")

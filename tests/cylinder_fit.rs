@@ -192,5 +192,8 @@ fn the_terminal_ui_reads_the_cylinder_s_curve_by_its_columns() {
     );
     let beam = std::fs::read_to_string("tests/data/reports/inputs/fit-beam.csv").unwrap();
     let message = parse(&beam, &mut |_, _| {}).unwrap_err().to_string();
-    assert!(message.ends_with("Q_N_per_mm and sa_mm are required"), "{message}");
+    assert!(
+        message.ends_with("Q_N_per_mm and sa_mm are required"),
+        "{message}"
+    );
 }

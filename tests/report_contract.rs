@@ -932,14 +932,13 @@ const CASES: &[Case] = &[
     // The cylinder's bundled curve (issue 34, item 4), default weights.
     Case {
         name: "fit-cylinder",
-        args: &["fit", "cylinder", "tests/data/reports/inputs/fit-cylinder.csv"],
-        formats: TEXT_JSON,
-        keys: &[
-            FIT_CYLINDER,
-            FIT_ERRORS,
-            FIT_WEIGHTS,
-            FIT_SCATTER_FRACTION,
+        args: &[
+            "fit",
+            "cylinder",
+            "tests/data/reports/inputs/fit-cylinder.csv",
         ],
+        formats: TEXT_JSON,
+        keys: &[FIT_CYLINDER, FIT_ERRORS, FIT_WEIGHTS, FIT_SCATTER_FRACTION],
         header: None,
     },
     Case {

@@ -86,7 +86,10 @@ fn run_generic_fit(out: &mut impl Write, args: &GenericFitArgs) -> Result<(), Cl
 
 /// The problem `fit PROBLEM DATA.csv` names, as --model would (the registry's names); it and
 /// --model, both given, must agree.
-fn named_problem(problem: &std::path::Path, model: Option<ModelKind>) -> Result<ModelKind, CliError> {
+fn named_problem(
+    problem: &std::path::Path,
+    model: Option<ModelKind>,
+) -> Result<ModelKind, CliError> {
     let text = problem.to_string_lossy();
     let kind = alias_problem(&text).map_err(|e| {
         CliError::Invalid(format!(

@@ -151,7 +151,8 @@ fn fit_cylinder_refuses_a_curve_that_is_not_a_cylinder_s() {
     std::fs::write(&path, format!("Q_N_per_mm,sa_mm\n{rows}")).unwrap();
     let stderr = failure(&["fit", "cylinder", path.to_str().unwrap()], 2);
     assert!(
-        stderr.starts_with("microslip: the curve is not a Hertzian cylinder's: the best fit (mu = ")
+        stderr
+            .starts_with("microslip: the curve is not a Hertzian cylinder's: the best fit (mu = ")
             && stderr.contains("of the variation of sa_mm against Q_N_per_mm"),
         "{stderr}"
     );

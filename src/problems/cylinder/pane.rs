@@ -5,15 +5,15 @@ use super::deck::{CylinderCompared, compare_cylinder};
 use super::point::cylinder_point;
 use super::problem::{CylinderModel, CylinderProblem};
 use crate::chart::panes::{
-    ContinuumState, CurveParser, KT_UM_MEANING, PaneFace, RATIO_MEANING, SummaryLine, TABLE_TOLERANCE,
-    ratio_text, shown,
+    ContinuumState, CurveParser, KT_UM_MEANING, PaneFace, RATIO_MEANING, SummaryLine,
+    TABLE_TOLERANCE, ratio_text, shown,
 };
 use crate::fe::load::Loaded;
 use crate::fit::Measured;
+use crate::kernel::format::{number, number_with};
 use crate::measured::DataError;
 use crate::problems::fittable::Fittable;
 use crate::problems::load_driven::LoadDriven;
-use crate::kernel::format::{number, number_with};
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::study::tolerance::state_stiffness_for_tolerance;
 

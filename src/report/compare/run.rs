@@ -72,10 +72,8 @@ impl<P: CompareFace> ContactCompared<P> {
     ) -> Self {
         let (mut report, rows) = P::compare_report(source, first, more);
         let stick_slope = contact::stick_slope_report(runs);
-        let kinematics = contact::kinematics_report(
-            contact::combined_kinematics(runs),
-            P::ENVELOPE_KINEMATICS,
-        );
+        let kinematics =
+            contact::kinematics_report(contact::combined_kinematics(runs), P::ENVELOPE_KINEMATICS);
         contact::add_to_summary(P::summary_mut(&mut report), &stick_slope, &kinematics);
         ContactCompared {
             report,

@@ -218,7 +218,11 @@ mod tests {
             assert_eq!(Some(load), kind.description().load, "{kind}");
             assert_eq!(
                 fittable.load_column(),
-                format!("{}_{}", load.name(), load.unit().symbol().replace('/', "_per_")),
+                format!(
+                    "{}_{}",
+                    load.name(),
+                    load.unit().symbol().replace('/', "_per_")
+                ),
                 "{kind}"
             );
             let model = Inputs::paper(kind).validate().unwrap();
@@ -228,7 +232,11 @@ mod tests {
             // F_1 is 0 where the interface slides somewhere from the first newton (the
             // cylinder's edges, p -> 0 there).
             assert!(first >= 0.0 && scale > 0.0, "{kind}");
-            let probe = if first > 0.0 { 0.5 * first } else { 0.5 * scale };
+            let probe = if first > 0.0 {
+                0.5 * first
+            } else {
+                0.5 * scale
+            };
             assert!(curve.response(probe).unwrap() > 0.0, "{kind}");
             for other in ModelKind::ALL.into_iter().filter(|&o| o != kind) {
                 let theirs = Inputs::paper(other).validate().unwrap();
