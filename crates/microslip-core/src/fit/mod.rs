@@ -83,15 +83,16 @@ pub enum FitError {
         /// The response column (`w_mm`, `Delta_mm`).
         column: &'static str,
     },
-    /// The best fit explains less than [`LEAST_EXPLAINED`] of the weighted variation of the
-    /// measured response about its mean: the curve is not one the problem's structure gives
-    /// (every one grows with its load, [`LoadDriven`](crate::problems::load_driven::LoadDriven)),
-    /// whatever mu and K_T: a falling curve, another quantity's column, a unit mistake.
+    /// The best fit explains none of the weighted variation of the measured response about its
+    /// mean (R^2 <= [`LEAST_EXPLAINED`]: the mean fits it as well): the curve is not one the
+    /// problem's structure gives (every one grows with its load,
+    /// [`LoadDriven`](crate::problems::load_driven::LoadDriven)), whatever mu and K_T: a falling
+    /// curve, another quantity's column, a unit mistake.
     #[error(
-        "the curve is not a {fitted}'s: the best fit (mu = {mu}, K_T = {kt} MPa/mm) explains \
-         only {explained_percent:.1} % of the variation of {response} against {load} (a \
-         {fitted}'s {response} grows with {load}, and its own curves are explained to within \
-         their scatter); check the columns, their units and the problem"
+        "the curve is not a {fitted}'s: the best fit (mu = {mu}, K_T = {kt} MPa/mm) explains none \
+         of the variation of {response} against {load} (R^2 = {r_squared:.3}: their mean fits \
+         them as well), while a {fitted}'s {response} grows with {load}; check the columns, their \
+         units and the problem"
     )]
     NotThisModel {
         /// What is fitted ([`Fittable::FITTED`]).
@@ -104,8 +105,8 @@ pub enum FitError {
         mu: f64,
         /// The best fit's K_T (MPa/mm).
         kt: f64,
-        /// 100 (1 - SSE / SST) of the weighted residuals (%).
-        explained_percent: f64,
+        /// 1 - SSE / SST of the weighted residuals (-).
+        r_squared: f64,
     },
     /// (A structure that carries a bounded force: the lap joint, the cylinder) A measured force
     /// beyond the bound of every mu searched: no state of the structure carries it.
@@ -317,7 +318,7 @@ pub fn fit_weighted(
     let result = summarize(&problem, &refined, weights);
     if let Some(explained) = explained(&problem, &refined)
         && result.degrees_of_freedom > 0
-        && explained < LEAST_EXPLAINED
+        && explained <= LEAST_EXPLAINED
     {
         return Err(FitError::NotThisModel {
             fitted: structure.fitted(),
@@ -325,18 +326,19 @@ pub fn fit_weighted(
             load: structure.load_column(),
             mu: result.mu.value,
             kt: result.kt.value,
-            explained_percent: 100.0 * explained,
+            r_squared: explained,
         });
     }
     Ok(result)
 }
 
-/// The least fraction of the measured response's weighted variation a fit must explain to be
-/// reported: below it the curve is not the structure's ([`FitError::NotThisModel`]). A curve of
-/// the structure with a scatter of s (as a fraction of its range) is explained to about 1 -
-/// s^2 (99.9 % at 3 %); a curve that falls as the load grows, which no mu or K_T gives, to
-/// none of it (docs/theory.md, "Fitting mu and K_T to the cylinder's s(a) against Q").
-pub const LEAST_EXPLAINED: f64 = 0.5;
+/// The fraction of the measured response's weighted variation (R^2) a fit must explain, more
+/// than which it is reported: at or below it the mean of the responses fits them as well as the
+/// structure does, and the curve is not the structure's ([`FitError::NotThisModel`]). A curve of
+/// the structure with a scatter s (a fraction of its range) is explained to about 1 - s^2; one
+/// that falls as the load grows, or rises and falls back, which no mu or K_T gives, to less than
+/// nothing (docs/theory.md, "Fitting mu and K_T to the cylinder's s(a) against Q").
+pub const LEAST_EXPLAINED: f64 = 0.0;
 
 /// 1 - SSE / SST of the weighted residuals at the optimum: the fraction of the measured
 /// response's variation about its weighted mean that the fit explains; `None` without
