@@ -423,7 +423,7 @@ pub fn fit_report(
     kind: ModelKind,
     values: &[f64],
     name: &str,
-    (data, points): (&str, (&[f64], &[f64], Option<&[f64]>)),
+    (data, points): (&str, Points<'_>),
     fixed: (Option<f64>, Option<f64>),
     weights: Option<&str>,
 ) -> Result<Value, String> {
@@ -467,13 +467,14 @@ pub fn fit_report(
     Ok(json::fit(data, name, &structure, &result))
 }
 
+/// Measured points: the loads (in the load's unit), the responses (mm) and, when known, each
+/// one's standard deviation (mm).
+pub type Points<'a> = (&'a [f64], &'a [f64], Option<&'a [f64]>);
+
 /// The points `(load, measured, sigma)` as the CSV the CLI's fit reads for `structure`: its
 /// load and response columns, then `sigma_mm` when there are sigmas (one per point: checked by
 /// the caller), every number written in full.
-fn measurement_csv(
-    structure: &fit::Structure,
-    (loads, measured, sigma): (&[f64], &[f64], Option<&[f64]>),
-) -> String {
+fn measurement_csv(structure: &fit::Structure, (loads, measured, sigma): Points<'_>) -> String {
     let mut csv = format!(
         "{},{}{}\n",
         structure.load_column(),

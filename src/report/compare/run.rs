@@ -1,7 +1,7 @@
 //! One `compare`, written once for the command line and the Python face: the FE runs' evidence
 //! about their contact (the stick slope they used, their kinematics), the envelope taken away for
 //! a run of other kinematics, and the problem's report with the two sections it gains
-//! ([`WithContact`]). What differs between the callers (where the parameters of a CSV come from,
+//! ([`WithContact`](super::stick_slope::WithContact)). What differs between the callers (where the parameters of a CSV come from,
 //! their error types, the notes on stderr) stays with them.
 
 use std::path::Path;
