@@ -4,7 +4,9 @@
 //! curve of the independent discretized solver within its discretization error, and a curve no
 //! cylinder gives is refused.
 
-use microslip::fit::{FitError, FitResult, Measurement, Status, Weights, fit_curve};
+mod common;
+use common::Noise;
+use microslip::fit::{FitError, FitResult, Measurement, Status, Structure, Weights, fit_measured};
 use microslip::kernel::regime::Law;
 use microslip::problems::cylinder::discretized::CylinderFe;
 use microslip::problems::cylinder::{Cylinder, CylinderParams, CylinderProblem};
@@ -15,23 +17,6 @@ fn pad(mu: f64, kt: f64) -> CylinderParams {
         friction: mu,
         tangential_stiffness: kt,
         ..CylinderParams::STEEL_PAD
-    }
-}
-
-/// Deterministic Gaussian noise (xorshift64 + Box-Muller), so the test is reproducible.
-struct Noise(u64);
-
-impl Noise {
-    fn uniform(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn gaussian(&mut self) -> f64 {
-        let (u1, u2) = (self.uniform().max(1e-300), self.uniform());
-        (-2.0 * u1.ln()).sqrt() * (2.0 * std::f64::consts::PI * u2).cos()
     }
 }
 
@@ -55,10 +40,12 @@ fn loads(top: f64, n: usize) -> Vec<f64> {
     (1..=n).map(|i| top * i as f64 / n as f64).collect()
 }
 
-/// The fit held at the bundled pad (mu 0.6, K_T 1e5 MPa/mm: deliberately not the truth).
+/// The fit of a measured curve (`fit_measured`, what `microslip fit` calls) held at the bundled
+/// pad (mu 0.6, K_T 1e5 MPa/mm: deliberately not the truth).
 fn fit(data: &[Measurement], weights: Weights) -> Result<FitResult, FitError> {
     let held = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
-    fit_curve::<CylinderProblem>(&held, data, (None, None), weights, &mut |_| {})
+    let structure = Structure::typed::<CylinderProblem>(&held);
+    fit_measured(structure, data, (None, None), weights, &mut |_| {})
 }
 
 #[test]

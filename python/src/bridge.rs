@@ -462,7 +462,7 @@ pub fn fit_report(
             ));
         }
     };
-    let result = fit::fit_weighted(structure, &measured.points, fixed, weights, &mut |_| {})
+    let result = fit::fit_measured(structure, &measured.points, fixed, weights, &mut |_| {})
         .map_err(|e| e.to_string())?;
     Ok(json::fit(data, name, &structure, &result))
 }

@@ -158,7 +158,7 @@ pub(super) fn run_fit(
         (None, Some(WeightsArg::Absolute)) => fit::Weights::Absolute,
         (None, Some(WeightsArg::Relative) | None) => fit::Weights::default(),
     };
-    let result = fit::fit_weighted(structure, &data, (fixed_mu, fixed_kt), weights, &mut |p| {
+    let result = fit::fit_measured(structure, &data, (fixed_mu, fixed_kt), weights, &mut |p| {
         progress.update(Instant::now(), || text::fit_progress(&p))
     });
     progress.finish();

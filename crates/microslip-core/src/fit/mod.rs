@@ -253,10 +253,53 @@ fn mu_range(
 pub fn fit_weighted(
     structure: Structure,
     data: &[Measurement],
-    (fixed_mu, fixed_kt): (Option<f64>, Option<f64>),
+    fixed: (Option<f64>, Option<f64>),
     weights: Weights,
     progress: &mut dyn FnMut(Progress),
 ) -> Result<FitResult, FitError> {
+    Ok(fit_explained(structure, data, fixed, weights, progress)?.0)
+}
+
+/// [`fit_weighted`] of a measured curve, which must be the structure's: refused
+/// ([`FitError::NotThisModel`]) when the best fit explains none of its variation (R^2 <=
+/// [`LEAST_EXPLAINED`], with a degree of freedom left). What `microslip fit`, the terminal UI's
+/// `f` and the Python `fit` call; a comparison that fits FE points to imply a K_T
+/// (`compare beam`) calls [`fit_weighted`] and judges the misfit itself.
+///
+/// # Errors
+/// As [`fit_weighted`], and [`FitError::NotThisModel`].
+pub fn fit_measured(
+    structure: Structure,
+    data: &[Measurement],
+    fixed: (Option<f64>, Option<f64>),
+    weights: Weights,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<FitResult, FitError> {
+    let (result, explained) = fit_explained(structure, data, fixed, weights, progress)?;
+    if let Some(explained) = explained
+        && result.degrees_of_freedom > 0
+        && explained <= LEAST_EXPLAINED
+    {
+        return Err(FitError::NotThisModel {
+            fitted: structure.fitted(),
+            response: structure.response_column(),
+            load: structure.load_column(),
+            mu: result.mu.value,
+            kt: result.kt.value,
+            r_squared: explained,
+        });
+    }
+    Ok(result)
+}
+
+/// [`fit_weighted`], with the R^2 of its optimum ([`explained`]).
+fn fit_explained(
+    structure: Structure,
+    data: &[Measurement],
+    (fixed_mu, fixed_kt): (Option<f64>, Option<f64>),
+    weights: Weights,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<(FitResult, Option<f64>), FitError> {
     // Validate the structure and any fixed values through the model's own constructor; the mu
     // searched is the structure's own business (the lap joint's carries every measured force).
     let (own_mu, own_kt) = structure.own();
@@ -315,21 +358,10 @@ pub fn fit_weighted(
         None => bracket(&problem, &bounds, progress),
     };
     let refined = refine(&problem, start, &bounds, progress);
-    let result = summarize(&problem, &refined, weights);
-    if let Some(explained) = explained(&problem, &refined)
-        && result.degrees_of_freedom > 0
-        && explained <= LEAST_EXPLAINED
-    {
-        return Err(FitError::NotThisModel {
-            fitted: structure.fitted(),
-            response: structure.response_column(),
-            load: structure.load_column(),
-            mu: result.mu.value,
-            kt: result.kt.value,
-            r_squared: explained,
-        });
-    }
-    Ok(result)
+    Ok((
+        summarize(&problem, &refined, weights),
+        explained(&problem, &refined),
+    ))
 }
 
 /// The fraction of the measured response's weighted variation (R^2) a fit must explain, more
