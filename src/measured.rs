@@ -13,6 +13,7 @@ use thiserror::Error;
 use crate::file::{Kinds, ReadError, Size, read_capped};
 use crate::fit::{MIN_ROWS, Measured, Measurement};
 use crate::kernel::params::{Compact, Domain, Unit};
+use crate::problems::Param;
 
 /// Header of the optional column of per-point standard deviations of w (mm).
 pub(crate) const SIGMA_COLUMN: &str = "sigma_mm";
@@ -163,20 +164,53 @@ pub fn parse_measured_joint_with_progress(
     parse_measured_curve(text, &MEASURED_JOINT_DISPLACEMENT, progress)
 }
 
-/// [`parse_measured_with_progress`] for any fittable problem: `F_N` and its `response` column
-/// (`w_mm`, `Delta_mm`: [`crate::fit::Structure::response_column`]), with an optional
+/// [`parse_measured_with_progress`] for any fittable problem: its load column (`F_N`, the
+/// cylinder's `Q_N_per_mm`: [`crate::fit::Structure::load_column`]) and its `response` column
+/// (`w_mm`, `Delta_mm`, `sa_mm`: [`crate::fit::Structure::response_column`]), with an optional
 /// `sigma_mm`, so that a fit reads its problem's curve without naming the problem.
 ///
 /// # Errors
-/// As [`parse_measured_with_progress`], with the problem's column names.
+/// As [`parse_measured_with_progress`], with the problem's column names, the load's unit and
+/// its domain.
 pub fn parse_measured_response_with_progress(
     text: &str,
+    structure: &crate::fit::Structure,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Measured, DataError> {
+    parse_measured_columns_with_progress(
+        text,
+        (structure.load_column(), structure.load()),
+        structure.response_column(),
+        progress,
+    )
+}
+
+/// [`parse_measured_with_progress`] for the columns `load` (its header and the load parameter,
+/// whose unit and domain its values are checked against) and `response`: what a problem's pane
+/// reads a measured curve with when its columns are not the beams' (the cylinder's
+/// `Q_N_per_mm,sa_mm`).
+///
+/// # Errors
+/// As [`parse_measured_with_progress`], with these columns, the load's unit and domain.
+pub fn parse_measured_columns_with_progress(
+    text: &str,
+    (load_column, load): (&'static str, Param),
     response: &'static str,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Measured, DataError> {
+    let spec = load.spec();
     let curve = Curve {
+        x: load_column,
         y: response,
-        ..MEASURED_DEFLECTION
+        // A line load (N/mm) is not a force: messages say which they range over.
+        x_what: if spec.unit == Unit::Newton {
+            "forces"
+        } else {
+            "loads"
+        },
+        x_domain: spec.domain,
+        x_unit: spec.unit,
+        min_rows: MIN_ROWS,
     };
     parse_measured_curve(text, &curve, progress)
 }
@@ -449,22 +483,46 @@ fn read_rows(
 mod tests {
     use super::*;
 
-    /// Read by its response column, a fittable problem's curve is what its own reader gives.
+    /// Read by its problem's columns, a fittable problem's curve is what its own reader gives;
+    /// every fittable problem reads a file headed with its own load and response columns and
+    /// refuses another's, naming the column it expected.
     #[test]
-    fn a_curve_read_by_its_response_column_is_its_problem_s() {
+    fn a_curve_read_by_its_problem_s_columns_is_its_problem_s() {
+        use crate::fit::Structure;
+        use crate::problems::ModelKind;
+        use crate::problems::inputs::Inputs;
+        let structure = |kind: ModelKind| Structure::of(&Inputs::paper(kind).validate().unwrap());
         let beam = "F_N,w_mm,sigma_mm\n10,0.1,0.01\n20,0.2,0.01\n30,0.3,0.01\n";
         let joint = "F_N,Delta_regularized_mm\n10,0.1\n20,0.2\n30,0.3\n";
-        let by = |text, column| parse_measured_response_with_progress(text, column, &mut |_, _| {});
+        let by = |text, kind| {
+            parse_measured_response_with_progress(text, &structure(kind).unwrap(), &mut |_, _| {})
+        };
         assert_eq!(
-            by(beam, "w_mm"),
+            by(beam, ModelKind::Beam),
             parse_measured_with_progress(beam, &mut |_, _| {})
         );
         assert_eq!(
-            by(joint, "Delta_mm"),
+            by(joint, ModelKind::Lap),
             parse_measured_joint_with_progress(joint, &mut |_, _| {})
         );
-        assert!(by(joint, "Delta_mm").is_ok());
-        assert!(by(beam, "Delta_mm").is_err());
+        let fittable = ModelKind::ALL.into_iter().filter_map(structure);
+        for mine in fittable.clone() {
+            let (load, response) = (mine.load_column(), mine.response_column());
+            let text = format!("{load},{response}\n10,0.1\n20,0.2\n30,0.3\n");
+            let read = parse_measured_response_with_progress(&text, &mine, &mut |_, _| {});
+            assert_eq!(read.unwrap().points.len(), 3, "{text}");
+            for theirs in fittable.clone().filter(|s| s.kind() != mine.kind()) {
+                let message = parse_measured_response_with_progress(&text, &theirs, &mut |_, _| {})
+                    .unwrap_err()
+                    .to_string();
+                let (load, response) = (theirs.load_column(), theirs.response_column());
+                assert!(
+                    message.starts_with("line 1: missing column '")
+                        && message.ends_with(&format!("{load} and {response} are required")),
+                    "{message}"
+                );
+            }
+        }
     }
 
     #[test]

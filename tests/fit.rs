@@ -1,6 +1,8 @@
 //! Identification of mu and K_T from synthetic measurements: known parameters plus noise must be
 //! recovered within the uncertainty the fit reports, and data that cannot show a parameter must say so.
 
+mod common;
+use common::Noise;
 use microslip::fit::{
     Evidence, FitError, FitResult, Measurement, Progress, Scatter, Status, Weights, fit_curve,
 };
@@ -35,23 +37,6 @@ fn fit_twin_beams_weighted(
 ) -> Result<FitResult, FitError> {
     let beams = TwinBeams::new(structure)?;
     fit_curve::<TwinBeamsProblem>(&beams, data, (fixed_mu, fixed_kt), weights, progress)
-}
-
-/// Deterministic Gaussian noise (xorshift64 + Box-Muller), so the test is reproducible.
-struct Noise(u64);
-
-impl Noise {
-    fn uniform(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn gaussian(&mut self) -> f64 {
-        let (u1, u2) = (self.uniform().max(1e-300), self.uniform());
-        (-2.0 * u1.ln()).sqrt() * (2.0 * std::f64::consts::PI * u2).cos()
-    }
 }
 
 fn measure(mu: f64, kt: f64, forces: &[f64], sigma: f64, seed: u64) -> Vec<Measurement> {

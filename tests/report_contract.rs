@@ -297,6 +297,28 @@ const FIT_WEIGHTS: &[&str] = &["scatter: number", "weights: string"];
 const FIT_SCATTER_MM: &[&str] = &["scatter_mm: number"];
 const FIT_SCATTER_FRACTION: &[&str] = &["scatter_fraction: number"];
 
+/// The cylinder's fit (issue 34, item 4): its load is the line load Q (N/mm), so the forces on
+/// the load axis are named by it: the beams' `F_thre_N`, `F_1_N` and `points_above_F_1` are
+/// `Q_gross_N_per_mm`, `Q_1_N_per_mm` and `points_above_Q_1`; every other key is the beams'.
+const FIT_CYLINDER: &[&str] = &[
+    "KT_MPa_per_mm: object",
+    "KT_MPa_per_mm.note: string",
+    "KT_MPa_per_mm.status: string",
+    "KT_MPa_per_mm.value: number",
+    "Q_1_N_per_mm: number",
+    "Q_gross_N_per_mm: number",
+    "data: string",
+    "degrees_of_freedom: number",
+    "mu: object",
+    "mu.note: string",
+    "mu.status: string",
+    "mu.value: number",
+    "points: number",
+    "points_above_Q_1: number",
+    "preset: string",
+    "rms_mm: number",
+];
+
 /// (`mu_KT_correlation` added by issue 25 (5).)
 const FIT_ERRORS: &[&str] = &[
     "KT_MPa_per_mm.std_error: number",
@@ -907,6 +929,18 @@ const CASES: &[Case] = &[
         args: &["fit", "beam", "tests/data/reports/inputs/fit-beam.csv"],
         formats: TEXT_JSON,
         keys: &[FIT, FIT_ERRORS, FIT_WEIGHTS, FIT_SCATTER_FRACTION],
+        header: None,
+    },
+    // The cylinder's bundled curve (issue 34, item 4), default weights.
+    Case {
+        name: "fit-cylinder",
+        args: &[
+            "fit",
+            "cylinder",
+            "tests/data/reports/inputs/fit-cylinder.csv",
+        ],
+        formats: TEXT_JSON,
+        keys: &[FIT_CYLINDER, FIT_ERRORS, FIT_WEIGHTS, FIT_SCATTER_FRACTION],
         header: None,
     },
     Case {

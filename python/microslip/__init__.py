@@ -60,8 +60,10 @@ def _docstring(entry: dict) -> str:
     quantities = "\n".join(
         f"    {q['name']}: {q['meaning']} ({q['unit']})" for q in entry["quantities"]
     )
+    # The load's unit from its parameter: N for a force, N/mm for the cylinder's line load.
+    unit = next((p["unit"] for p in entry["params"] if p["name"] == entry["load"]), "N")
     load = (
-        f"\nIts load is {entry['load']} (N): solve(F=...) and sweep(F=...) vary it.\n"
+        f"\nIts load is {entry['load']} ({unit}): solve(F=...) and sweep(F=...) vary it.\n"
         if entry["load"]
         else "\nIt has no load: solve() takes no argument.\n"
     )

@@ -122,7 +122,7 @@ class Problem:
         fix_KT: Optional[float] = None,
         weights: Optional[Literal["relative", "absolute"]] = None,
     ) -> Report:
-        """mu and K_T (MPa/mm) fitted to forces F (N) and measured responses (mm)."""
+        """mu and K_T (MPa/mm) fitted to loads F (the load's unit: N, N/mm for a line load) and measured responses (mm)."""
     def continuum(self) -> float:
         """The 2-D continuum reference's response (mm)."""
     def deck(

@@ -16,8 +16,9 @@ use std::marker::PhantomData;
 use std::path::Path;
 
 use microslip::fe::deck::DeckMesh;
-use microslip::fe::face::{Deck, DeckRequest};
+use microslip::fe::face::DeckRequest;
 use microslip::fe::header::StickSlope;
+use microslip::fe::kinematics::Kinematics;
 use microslip::fe::load;
 use microslip::fit::{self, Weights};
 use microslip::kernel::params::{Compact, Domain, Unit};
@@ -30,9 +31,8 @@ use microslip::problems::plate::SqueezedPlateProblem;
 use microslip::problems::problem::Registered;
 use microslip::problems::twin_beams::TwinBeamsProblem;
 use microslip::problems::{ModelKind, Problem, cylinder, lap, plate, twin_beams};
-use microslip::report::compare::{
-    beam::BeamCompareReport, lap::LapCompareReport, plate::PlateCompareReport,
-};
+use microslip::report::compare::CompareFace;
+use microslip::report::compare::run::{self as compare_run, ContactCompared};
 use microslip::report::json;
 use microslip::report::point::cycle::CycleFace;
 use microslip::report::point::tolerance::ToleranceReport;
@@ -84,7 +84,7 @@ pub enum Of {
 
 /// What the application still writes one function per problem for, as each problem's impl
 /// calls it; the command bodies around them are generic ([`AnyFace`]).
-trait Face: Deck {
+trait Face: CompareFace {
     /// `microslip beam|plate|lap --format json` (`src/cli/point.rs`): the problem's own point
     /// report (its struct in `src/problems/<name>/report.rs`), as JSON.
     fn point_report(model: &Self::Model, name: &str) -> Value;
@@ -130,9 +130,6 @@ trait Face: Deck {
         };
         Self::write_deck(model, &request).map_err(|e| e.to_string())
     }
-
-    /// `microslip compare --format json` (`src/cli/compare.rs`): the comparison's report.
-    fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String>;
 }
 
 /// [`Face::cycle_report`] of any load-driven problem: the amplitude is the structure's force.
@@ -209,10 +206,6 @@ impl Face for TwinBeamsProblem {
     ) -> Result<ToleranceAnswer, String> {
         load_tolerance::<Self>(model, question, range, element)
     }
-
-    fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
-        Ok(json::of(&BeamCompareReport::new(source, compared)))
-    }
 }
 
 impl Face for SqueezedPlateProblem {
@@ -226,10 +219,6 @@ impl Face for SqueezedPlateProblem {
             squeezed,
             continuum.as_ref(),
         ))
-    }
-
-    fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
-        Ok(json::of(&PlateCompareReport::new(source, compared)))
     }
 }
 
@@ -264,11 +253,6 @@ impl Face for LapJointProblem {
     ) -> Result<ToleranceAnswer, String> {
         load_tolerance::<Self>(model, question, range, element)
     }
-
-    fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
-        let rows = compared.as_ref().map_err(|e| format!("{source}: {e}"))?;
-        Ok(json::of(&LapCompareReport::new(source, rows)))
-    }
 }
 
 impl Face for CylinderProblem {
@@ -287,13 +271,6 @@ impl Face for CylinderProblem {
         element: f64,
     ) -> Result<ToleranceAnswer, String> {
         load_tolerance::<Self>(model, question, range, element)
-    }
-
-    fn compare_report(source: &str, compared: &Self::Compared) -> Result<Value, String> {
-        let rows = compared.as_ref().map_err(|e| format!("{source}: {e}"))?;
-        Ok(json::of(&cylinder::deck::CylinderCompareReport::new(
-            source, rows,
-        )))
     }
 }
 
@@ -345,7 +322,9 @@ impl<P: Face> AnyFace for FaceOf<P> {
     }
 
     /// `src/cli/compare.rs` for one result file of `P`: a CalculiX `.dat`, whose deck's header
-    /// gives the model, or a CSV, compared at `structure` (the parameters given).
+    /// gives the model and whose `.frd` and deck the stick slope used and the kinematics, or a
+    /// CSV, compared at `structure` (the parameters given), its kinematics not stated; the
+    /// report with the same sections as the command's ([`ContactCompared`]).
     fn compare(
         &self,
         path: &Path,
@@ -353,8 +332,8 @@ impl<P: Face> AnyFace for FaceOf<P> {
         structure: &dyn Fn() -> Result<Model, String>,
     ) -> Result<Value, String> {
         let source = path.display().to_string();
-        let loaded =
-            load::results::<P>(path, deck).map_err(|e| format!("{}: {}", e.path, e.reason))?;
+        let failed = |e: load::LoadError| format!("{}: {}", e.path, e.reason);
+        let loaded = load::results::<P>(path, deck).map_err(failed)?;
         let model = match &loaded.header {
             Some(header) => header.model().map_err(|e| e.to_string())?,
             None => structure()?,
@@ -365,8 +344,25 @@ impl<P: Face> AnyFace for FaceOf<P> {
                 P::KIND
             )
         })?;
-        let compared = P::compare(&model, &loaded.points, loaded.interface_mesh.as_ref());
-        P::compare_report(&source, &compared)
+        let mut compared = P::compare(&model, &loaded.points, loaded.interface_mesh.as_ref());
+        let (kinematics, stick_slope) = match &loaded.header {
+            Some(header) => {
+                let read = load::ccx_contact(path, deck, header).map_err(failed)?;
+                (read.kinematics, Some(read.stick_slope))
+            }
+            None => (Kinematics::NotStated, None),
+        };
+        let run = compare_run::run_evidence(
+            path,
+            loaded.header.as_ref(),
+            P::interface(&model).stiffness,
+            kinematics,
+            stick_slope,
+        );
+        compare_run::judged_for::<P>(&run, &model, &mut compared);
+        let checked = P::checked(compared).map_err(|e| format!("{source}: {e}"))?;
+        let report = ContactCompared::<P>::new(&source, (checked, Vec::new()), &[run]);
+        Ok(json::of(&report.with_contact()))
     }
 }
 
@@ -419,14 +415,15 @@ pub fn kt_tolerance_report(
     Ok(json::of(&ToleranceReport::new(name, &answer)))
 }
 
-/// `microslip fit DATA --format json` (`src/cli/fitting.rs`, `run_fit`) on `csv`, the measured
-/// curve written as the CLI reads it (so the CLI's parser checks every value, in the problem's
-/// response column), `data` what the report calls it.
+/// `microslip fit DATA --format json` (`src/cli/fitting.rs`, `run_fit`) on the points `(load,
+/// measured, sigma)`, written as the CSV the CLI reads (the problem's load and response columns,
+/// `F_N,w_mm`, `Q_N_per_mm,sa_mm`, then `sigma_mm`) so that the CLI's parser checks every value,
+/// `data` what the report calls it.
 pub fn fit_report(
     kind: ModelKind,
     values: &[f64],
     name: &str,
-    (data, csv): (&str, &str),
+    (data, points): (&str, Points<'_>),
     fixed: (Option<f64>, Option<f64>),
     weights: Option<&str>,
 ) -> Result<Value, String> {
@@ -441,9 +438,10 @@ pub fn fit_report(
             fittable.join(" or ")
         )
     })?;
+    let csv = measurement_csv(&structure, points);
     let measured = microslip::measured::parse_measured_response_with_progress(
-        csv,
-        structure.response_column(),
+        &csv,
+        &structure,
         &mut |_, _| {},
     )
     .map_err(|e| format!("{data}: {e}"))?;
@@ -464,9 +462,32 @@ pub fn fit_report(
             ));
         }
     };
-    let result = fit::fit_weighted(structure, &measured.points, fixed, weights, &mut |_| {})
+    let result = fit::fit_measured(structure, &measured.points, fixed, weights, &mut |_| {})
         .map_err(|e| e.to_string())?;
     Ok(json::fit(data, name, &structure, &result))
+}
+
+/// Measured points: the loads (in the load's unit), the responses (mm) and, when known, each
+/// one's standard deviation (mm).
+pub type Points<'a> = (&'a [f64], &'a [f64], Option<&'a [f64]>);
+
+/// The points `(load, measured, sigma)` as the CSV the CLI's fit reads for `structure`: its
+/// load and response columns, then `sigma_mm` when there are sigmas (one per point: checked by
+/// the caller), every number written in full.
+fn measurement_csv(structure: &fit::Structure, (loads, measured, sigma): Points<'_>) -> String {
+    let mut csv = format!(
+        "{},{}{}\n",
+        structure.load_column(),
+        structure.response_column(),
+        if sigma.is_some() { ",sigma_mm" } else { "" }
+    );
+    for (i, (f, m)) in loads.iter().zip(measured).enumerate() {
+        match sigma.and_then(|s| s.get(i)) {
+            Some(s) => csv.push_str(&format!("{f:?},{m:?},{s:?}\n")),
+            None => csv.push_str(&format!("{f:?},{m:?}\n")),
+        }
+    }
+    csv
 }
 
 /// `microslip deck ccx MODEL [--mesh fine] [--loads ...]` (`src/cli/decks.rs`, `build_deck`) at

@@ -130,7 +130,8 @@ pub fn kt_tolerance<'py>(
     report(py, &value)
 }
 
-/// `microslip fit beam|lap --format json` on the points `(force, measured)` (N, mm), each with its
+/// `microslip fit beam|lap|cylinder --format json` on the points `(load, measured)` (the load in
+/// its unit: N, or N/mm for the cylinder's line load; mm), each with its
 /// standard deviation (mm) when `sigma` is given. The points are written as the CSV the CLI
 /// reads and read back by the CLI's own parser, so they are refused exactly where a file with
 /// them would be.
@@ -153,23 +154,11 @@ pub fn fit<'py>(
         )));
     }
     let value = released(py, || {
-        // The CLI's column names: F_N, then the response (w_mm, Delta_mm), then sigma_mm.
-        let response = format!("{}_mm", problem.kind.description().response_symbol);
-        let mut csv = format!(
-            "F_N,{response}{}\n",
-            if sigma.is_some() { ",sigma_mm" } else { "" }
-        );
-        for (i, (f, m)) in forces.iter().zip(&measured).enumerate() {
-            match &sigma {
-                Some(s) => csv.push_str(&format!("{f:?},{m:?},{:?}\n", s[i])),
-                None => csv.push_str(&format!("{f:?},{m:?}\n")),
-            }
-        }
         bridge::fit_report(
             problem.kind,
             &problem.values,
             &problem.name,
-            ("<arrays>", &csv),
+            ("<arrays>", (&forces, &measured, sigma.as_deref())),
             fixed,
             weights,
         )

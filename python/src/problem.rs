@@ -251,11 +251,12 @@ impl Problem {
         crate::features::kt_tolerance(py, self, tolerance, of, [F_from, F_to], element_size)
     }
 
-    /// mu and K_T fitted to a measured force-response curve: forces `F` (N) and the measured
-    /// response (mm: w(L) of the beams, Delta of the joint), with each point's standard deviation
+    /// mu and K_T fitted to a measured load-response curve: loads `F` (in the load's unit: N, or
+    /// N/mm for the cylinder's line load Q) and the measured response (mm: w(L) of the beams,
+    /// Delta of the joint, the cylinder's edge slip s(a)), with each point's standard deviation
     /// `sigma` (mm) when known; `fix_mu`/`fix_KT` hold one; `weights` is `"relative"` (default)
     /// or `"absolute"` without sigma. The report has the estimates, their uncertainty and the
-    /// identifiability verdicts, as `microslip fit beam|lap --format json`.
+    /// identifiability verdicts, as `microslip fit beam|lap|cylinder --format json`.
     #[pyo3(signature = (F, measured, sigma = None, *, fix_mu = None, fix_KT = None, weights = None))]
     #[allow(non_snake_case, clippy::too_many_arguments)]
     fn fit<'py>(

@@ -81,6 +81,21 @@ def test_fit_equals_the_cli(cli, tmp_path):
     assert held == expected
 
 
+def test_fit_of_the_cylinder_equals_the_cli(cli, tmp_path):
+    """The cylinder's s(a) against its line load Q (N/mm): the bundled curve, read as the CLI
+    reads it (`Q_N_per_mm,sa_mm`), fitted to the same report."""
+    source = DATA / "reports" / "inputs" / "fit-cylinder.csv"
+    with open(source) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    loads = [float(r["Q_N_per_mm"]) for r in rows]
+    slips = [float(r["sa_mm"]) for r in rows]
+    got = microslip.preset("cylinder-steel-pad").fit(loads, slips).to_dict()
+    expected = cli.json("fit", "cylinder", str(source))
+    assert got.pop("data") == "<arrays>" and expected.pop("data") == str(source)
+    assert got == expected
+    assert "Q_gross_N_per_mm" in got and "F_1_N" not in got
+
+
 def test_fit_refuses_bad_points_with_the_cli_words():
     beams = microslip.preset("paper-beams")
     with pytest.raises(ValueError, match="one value per point"):
@@ -108,20 +123,50 @@ def test_deck_with_loads_equals_the_cli(cli):
         microslip.preset("paper-beams").deck(loads=[50, 10])
 
 
-@pytest.mark.parametrize(
-    "model, result",
-    [("beam", "paper-beams.dat"), ("plate", "paper-plate.dat"), ("lap", "lap-aluminium.dat")],
-)
-@pytest.mark.xfail(
-    strict=True,
-    reason="issue 33: the CLI's compare adds the stick slope the FE code used and the run's "
-    "kinematics (src/cli/compare.rs); the Python face does not read them yet",
-)
-def test_compare_equals_the_cli(cli, model, result):
-    path = DATA / "calculix" / result
-    got = microslip.compare(path, model)
+RUNS = [
+    e for e in microslip.PROBLEMS if (DATA / "calculix" / f"{e['paper_preset']}.dat").exists()
+]
+
+
+@pytest.mark.parametrize("entry", RUNS, ids=lambda e: e["key"])
+def test_compare_of_a_calculix_run_equals_the_cli(cli, entry):
+    """Every CalculiX run of a bundled preset kept in tests/data/calculix (`<preset>.dat`): the
+    whole report of `microslip compare`, with the stick slope the run used, its kinematics and
+    the verdicts they turn. (The cylinder's run is 6 MB and not kept: the test below compares
+    every problem's, the cylinder's too, on a CSV result.)"""
+    path = DATA / "calculix" / f"{entry['paper_preset']}.dat"
+    got = microslip.compare(path, entry["key"])
     assert isinstance(got, microslip.Report)
-    assert got.to_dict() == cli.json("compare", model, str(path))
+    expected = cli.json("compare", entry["key"], str(path))
+    assert "stick_slope" in expected and "kinematics" in expected
+    assert got.to_dict() == expected
+
+
+def test_the_kept_runs_are_the_problems_of_the_calculix_validation():
+    assert [e["key"] for e in RUNS] == ["beam", "plate", "lap"]
+
+
+@pytest.mark.parametrize("entry", microslip.PROBLEMS, ids=lambda e: e["key"])
+def test_compare_of_a_csv_result_equals_the_cli(cli, entry, tmp_path):
+    """Every problem's FE points as a CSV (its own sweep table, which `compare` reads as FE
+    results): the report of `microslip compare MODEL CSV --preset P` with its stick-slope and
+    kinematics sections ("not stated" for a CSV) and the continuum verdict where there is one."""
+    name = entry["paper_preset"]
+    problem = microslip.preset(name)
+    if entry["load"]:
+        scale = problem.regime_scale
+        span = ["--from", repr(0.2 * scale), "--to", repr(0.8 * scale)]
+    else:
+        span = ["--from", repr(0.5 * problem.KT), "--to", repr(2.0 * problem.KT)]
+    table = cli.run("sweep", "--preset", name, *span, "--points", "4")
+    assert table.returncode == 0, table.stderr
+    path = tmp_path / "fe.csv"
+    path.write_text(table.stdout)
+    got = microslip.compare(path, problem).to_dict()
+    expected = cli.json("compare", entry["key"], str(path), "--preset", name)
+    assert expected["kinematics"]["kinematics"] == "not stated"
+    assert "stick_slope" in expected
+    assert got == expected
 
 
 def test_compare_refuses_another_problems_results():

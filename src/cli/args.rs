@@ -423,9 +423,16 @@ pub type FitArgs = WithAliases<FitCommand, GenericFitArgs>;
 /// The arguments of the generic `fit`: the problem comes from --model or the preset.
 #[derive(Debug, Args)]
 pub struct GenericFitArgs {
-    // The help names each problem's response column from the registry (`fit_data_help`).
-    #[arg(value_name = "DATA.csv", required = true, help = fit_data_help())]
-    pub(super) data: Option<PathBuf>,
+    // The help names each problem's columns from the registry (`fit_data_help`). One value is
+    // the data; two, the problem and the data (`fit cylinder s.csv`, the problem as --model
+    // names it, for a problem without an alias of its own).
+    #[arg(
+        value_name = "[PROBLEM] DATA.csv",
+        required = true,
+        num_args = 1..=2,
+        help = fit_data_help()
+    )]
+    pub(super) data: Vec<PathBuf>,
     /// The problem (default: the preset's; without --preset, beam). Given with --preset, both
     /// must name the same problem, one with a load to fit the curve against.
     #[arg(long, value_parser = model_kind_parser())]
@@ -449,12 +456,19 @@ pub struct GenericFitArgs {
 fn fit_data_help() -> String {
     let columns: Vec<String> = ModelKind::ALL
         .iter()
-        .filter(|kind| kind.description().load.is_some())
-        .map(|kind| format!("{}_mm ({kind})", kind.description().response_symbol))
+        .filter_map(|kind| {
+            let structure = crate::fit::Structure::of(&Inputs::paper(*kind).validate().ok()?)?;
+            Some(format!(
+                "{},{} ({kind})",
+                structure.load_column(),
+                structure.response_column()
+            ))
+        })
         .collect();
     format!(
-        "Measurements: CSV with a header naming F_N and the problem's response column, {}; \
-         other columns are ignored",
+        "Measurements: CSV with a header naming the problem's load and response columns, {}; \
+         other columns are ignored. Before it, the problem may be named as --model names it \
+         (`fit cylinder DATA.csv`)",
         columns.join(" or ")
     )
 }

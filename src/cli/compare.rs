@@ -3,7 +3,8 @@
 use super::*;
 use crate::fe::kinematics::Kinematics;
 use crate::fe::stick_slope::{self, Friction, StickSlopeUsed};
-use crate::report::compare::stick_slope::{self as contact_report, RunEvidence, WithContact};
+use crate::report::compare::run as compare_run;
+use crate::report::compare::stick_slope::RunEvidence;
 
 /// What `compare` is told about a CSV result's contact: its interface profile and kinematics (a
 /// `.dat` says both itself, through its `.frd` and its deck).
@@ -108,10 +109,7 @@ impl<W: Write> ForProblem for Compare<'_, W> {
             };
             let mut compared = P::compare(&model, &loaded.points, loaded.interface_mesh.as_ref());
             let run = run_evidence::<P>(path, deck, &loaded, &model, contact)?;
-            if !contact_report::envelope_applies(run.kinematics, P::ENVELOPE_KINEMATICS) {
-                P::without_envelope(&mut compared);
-            }
-            P::judge_kinematics(&mut compared, &model, run.kinematics);
+            compare_run::judged_for::<P>(&run, &model, &mut compared);
             evidence.push(run);
             checked.push(P::checked(compared).map_err(|e| CliError::Data {
                 path: path.display().to_string(),
@@ -123,22 +121,16 @@ impl<W: Write> ForProblem for Compare<'_, W> {
         let Some(first) = checked.next() else {
             return Err(CliError::Usage("compare needs a result file"));
         };
-        let (mut report, rows) = P::compare_report(source, first, checked.collect());
-        let kinematics = contact_report::combined_kinematics(&evidence);
-        let stick_slope = contact_report::stick_slope_report(&evidence);
-        let kinematics = contact_report::kinematics_report(kinematics, P::ENVELOPE_KINEMATICS);
-        contact_report::add_to_summary(P::summary_mut(&mut report), &stick_slope, &kinematics);
-        let with = WithContact {
-            report: &report,
-            stick_slope,
-            kinematics,
-        };
-        let text = contact_report::insert_section(
-            &P::compare_text(&report),
-            &with.stick_slope,
-            &with.kinematics,
-        );
-        write_comparison(out, format, &text, &with, rows.into_iter())
+        let mut compared =
+            compare_run::ContactCompared::<P>::new(source, (first, checked.collect()), &evidence);
+        let rows = std::mem::take(&mut compared.rows);
+        write_comparison(
+            out,
+            format,
+            &compared.text(),
+            &compared.with_contact(),
+            rows.into_iter(),
+        )
     }
 }
 
@@ -198,24 +190,13 @@ fn run_evidence<P: Faces>(
             )
         }
     };
-    let step_forces = loaded
-        .header
-        .as_ref()
-        .map(|h| {
-            h.loads
-                .iter()
-                .enumerate()
-                .map(|(n, f)| (n + 2, *f))
-                .collect()
-        })
-        .unwrap_or_default();
-    Ok(RunEvidence {
-        results: path.display().to_string(),
-        stick_slope,
-        deck: interface_data.stiffness,
+    Ok(compare_run::run_evidence(
+        path,
+        loaded.header.as_ref(),
+        interface_data.stiffness,
         kinematics,
-        step_forces,
-    })
+        stick_slope,
+    ))
 }
 
 /// A comparison in the format asked for: its text, its report as JSON, or its rows as CSV.

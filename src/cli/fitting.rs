@@ -53,11 +53,13 @@ pub(super) fn run_fit_command(out: &mut impl Write, args: &FitArgs) -> Result<()
 /// `microslip fit DATA.csv [--model M] [--preset P] ...`: the problem comes from --model or the
 /// preset, and must have a load; the same report, bytes and refusals as its alias (`fit lap`).
 fn run_generic_fit(out: &mut impl Write, args: &GenericFitArgs) -> Result<(), CliError> {
-    // clap requires the data without a subcommand.
-    let Some(data) = &args.data else {
-        return Err(CliError::Usage("fit needs DATA.csv"));
+    // clap requires the data without a subcommand; a value before it names the problem.
+    let (named, data) = match args.data.as_slice() {
+        [data] => (None, data),
+        [problem, data] => (Some(named_problem(problem, args.model)?), data),
+        _ => return Err(CliError::Usage("fit needs DATA.csv")),
     };
-    let (name, preset) = resolve_generic(&args.inputs, args.model)?;
+    let (name, preset) = resolve_generic(&args.inputs, named.or(args.model))?;
     let kind = preset.inputs.kind();
     if kind.description().load.is_none() {
         let loaded: Vec<&str> = ModelKind::ALL
@@ -80,6 +82,27 @@ fn run_generic_fit(out: &mut impl Write, args: &GenericFitArgs) -> Result<(), Cl
         args.weights,
         args.format,
     )
+}
+
+/// The problem `fit PROBLEM DATA.csv` names, as --model would (the registry's names); it and
+/// --model, both given, must agree.
+fn named_problem(
+    problem: &std::path::Path,
+    model: Option<ModelKind>,
+) -> Result<ModelKind, CliError> {
+    let text = problem.to_string_lossy();
+    let kind = alias_problem(&text).map_err(|e| {
+        CliError::Invalid(format!(
+            "fit {text} DATA.csv: '{text}' is not a problem ({e}); give the measurement file \
+             alone, or a problem before it"
+        ))
+    })?;
+    match model {
+        Some(model) if model != kind => Err(CliError::Invalid(format!(
+            "fit {kind} and --model {model} disagree: name one problem"
+        ))),
+        _ => Ok(kind),
+    }
 }
 
 pub(super) fn run_fit(
@@ -105,12 +128,9 @@ pub(super) fn run_fit(
         .map_err(|e| data_error(e.to_string()))?;
     let mut reading =
         |done, total| progress.update(Instant::now(), || text::reading_progress(done, total));
-    // The response column is the fitted problem's own (`w_mm`, `Delta_mm`).
-    let data = crate::measured::parse_measured_response_with_progress(
-        &contents,
-        structure.response_column(),
-        &mut reading,
-    );
+    // The columns are the fitted problem's own (`F_N,w_mm`, `Q_N_per_mm,sa_mm`).
+    let data =
+        crate::measured::parse_measured_response_with_progress(&contents, &structure, &mut reading);
     drop(contents);
     let crate::fit::Measured {
         points: data,
@@ -138,7 +158,7 @@ pub(super) fn run_fit(
         (None, Some(WeightsArg::Absolute)) => fit::Weights::Absolute,
         (None, Some(WeightsArg::Relative) | None) => fit::Weights::default(),
     };
-    let result = fit::fit_weighted(structure, &data, (fixed_mu, fixed_kt), weights, &mut |p| {
+    let result = fit::fit_measured(structure, &data, (fixed_mu, fixed_kt), weights, &mut |p| {
         progress.update(Instant::now(), || text::fit_progress(&p))
     });
     progress.finish();

@@ -440,7 +440,7 @@ fn fit(
     progress: &dyn Fn(Outcome),
 ) -> Outcome {
     let reported = Cell::new(Instant::now());
-    let result = crate::fit::fit_weighted(
+    let result = crate::fit::fit_measured(
         structure,
         points,
         (None, None),

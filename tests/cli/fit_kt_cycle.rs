@@ -182,7 +182,9 @@ fn kt_shows_each_candidate_against_coulomb_and_the_element_size() {
     // Half the elements, twice mu P / (0.005 x 0.2 mm) = 3000 MPa/mm.
     assert!(abaqus.contains(" 3000 "), "{abaqus}");
     assert!(
-        text.contains("contact elements of 0.2 mm (a hundredth of the contact's length unless --element-size"),
+        text.contains(
+            "contact elements of 0.2 mm (a hundredth of the contact's length unless --element-size"
+        ),
         "{text}"
     );
     // Unloaded: nothing to be off by, nothing said.

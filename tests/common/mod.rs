@@ -69,3 +69,23 @@ pub fn reference_rows(name: &str) -> Vec<Vec<f64>> {
 pub fn relative_error(a: f64, b: f64) -> f64 {
     ((a - b) / b).abs()
 }
+
+/// Deterministic Gaussian noise (xorshift64 + Box-Muller), so that a test with scatter is
+/// reproducible; seeded by its one field.
+pub struct Noise(pub u64);
+
+impl Noise {
+    /// Uniform in [0, 1).
+    pub fn uniform(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// A standard normal draw.
+    pub fn gaussian(&mut self) -> f64 {
+        let (u1, u2) = (self.uniform().max(1e-300), self.uniform());
+        (-2.0 * u1.ln()).sqrt() * (2.0 * std::f64::consts::PI * u2).cos()
+    }
+}

@@ -8,6 +8,7 @@ pub mod beam;
 pub mod continuum;
 pub mod lap;
 pub mod plate;
+pub mod run;
 pub mod stick_slope;
 pub mod verdict;
 

@@ -6,6 +6,7 @@ use std::fmt::Write;
 use serde::{Serialize, Serializer};
 
 use crate::fit::{Estimate, Evidence, FitResult, Scatter, Status, Structure};
+use crate::problems::Param;
 use crate::report::{count_of, number, sanitize};
 
 /// The fit report.
@@ -25,17 +26,12 @@ pub struct FitReport {
     /// Residual RMS (mm).
     #[serde(rename = "rms_mm")]
     pub rms: f64,
-    /// The regime scale at the fitted values (N) under its problem's name
-    /// ([`Description::regime_scale_name`](crate::problems::Description)): in JSON `F_thre_N`
-    /// of the beams, `F_gross_N` of the lap joint.
-    #[serde(flatten, serialize_with = "regime_scale_field")]
-    pub regime_scale: (&'static str, f64),
-    /// F_1 at the fitted values (N).
-    #[serde(rename = "F_1_N")]
-    pub first_macroslip_force: f64,
-    /// Measurements above F_1, the only ones that depend on mu.
-    #[serde(rename = "points_above_F_1")]
-    pub beyond_first_macroslip: usize,
+    /// The regime scale, F_1 and the measurements above F_1 at the fitted values, under the
+    /// load's name and unit ([`LoadForces`]): in JSON `F_thre_N`, `F_1_N`, `points_above_F_1`
+    /// of the beams, `F_gross_N` ... of the lap joint, `Q_gross_N_per_mm`, `Q_1_N_per_mm`,
+    /// `points_above_Q_1` of the cylinder (a line load).
+    #[serde(flatten, serialize_with = "load_fields")]
+    pub forces: LoadForces,
     /// What the standard errors assume: in JSON `weights` ("absolute", "relative" or "sigma_mm")
     /// and `scatter`, sqrt of the weighted fit's reduced chi-square: the sigma of w in mm, the
     /// sigma of w as a fraction of w, or the residuals' scatter over the given sigmas (about 1
@@ -65,19 +61,48 @@ fn weights_and_scatter(scatter: &Scatter) -> (&'static str, Option<f64>, &'stati
     }
 }
 
-/// `weights`, the scatter under its unit's name and, deprecated (kept one release), the same
-/// value as `scatter`, whose unit depended on `weights`.
-/// `{name}_N`: the regime scale under its problem's name ([`FitReport::regime_scale`]).
-fn regime_scale_field<S: Serializer>(
-    (name, value): &(&'static str, f64),
-    s: S,
-) -> Result<S::Ok, S::Error> {
+/// The fit's forces on the load axis, named by the problem's load (F in N; the cylinder's Q, a
+/// line load in N/mm).
+#[derive(Debug, Clone, Copy)]
+pub struct LoadForces {
+    /// The load parameter (F, Q): its name and unit.
+    pub load: Param,
+    /// The regime scale's name ([`Description::regime_scale_name`](crate::problems::Description):
+    /// `F_thre`, `F_gross`, `Q_gross`) and its value at the fitted values.
+    pub regime_scale: (&'static str, f64),
+    /// F_1 at the fitted values: where the interface first slides (0 where it slides somewhere
+    /// at every load: the cylinder's edges).
+    pub first_macroslip_force: f64,
+    /// Measurements above F_1, the only ones that depend on mu.
+    pub beyond_first_macroslip: usize,
+}
+
+impl LoadForces {
+    /// F_1's name: the load's, with index 1 (`F_1`, `Q_1`).
+    fn first_name(&self) -> String {
+        format!("{}_1", self.load.name())
+    }
+}
+
+/// `{scale}_{unit}`, `{load}_1_{unit}` and `points_above_{load}_1` ([`FitReport::forces`]), the
+/// unit spelled as a key may be (`N`, `N_per_mm`).
+fn load_fields<S: Serializer>(forces: &LoadForces, s: S) -> Result<S::Ok, S::Error> {
     use serde::ser::SerializeMap;
-    let mut map = s.serialize_map(Some(1))?;
-    map.serialize_entry(&format!("{name}_N"), value)?;
+    let unit = forces.load.unit().symbol().replace('/', "_per_");
+    let (scale, value) = forces.regime_scale;
+    let first = forces.first_name();
+    let mut map = s.serialize_map(Some(3))?;
+    map.serialize_entry(&format!("{scale}_{unit}"), &value)?;
+    map.serialize_entry(&format!("{first}_{unit}"), &forces.first_macroslip_force)?;
+    map.serialize_entry(
+        &format!("points_above_{first}"),
+        &forces.beyond_first_macroslip,
+    )?;
     map.end()
 }
 
+/// `weights`, the scatter under its unit's name and, deprecated (kept one release), the same
+/// value as `scatter`, whose unit depended on `weights`.
 fn scatter_fields<S: Serializer>(scatter: &Scatter, s: S) -> Result<S::Ok, S::Error> {
     use serde::ser::SerializeMap;
     let (weights, value, key) = weights_and_scatter(scatter);
@@ -190,10 +215,15 @@ impl From<&Estimate> for EstimateReport {
 
 impl FitReport {
     pub fn new(data: &str, preset: &str, structure: &Structure, result: &FitResult) -> FitReport {
-        let regime_scale = (
-            structure.kind().description().regime_scale_name,
-            result.threshold_force,
-        );
+        let forces = LoadForces {
+            load: structure.load(),
+            regime_scale: (
+                structure.kind().description().regime_scale_name,
+                result.threshold_force,
+            ),
+            first_macroslip_force: result.first_macroslip_force,
+            beyond_first_macroslip: result.beyond_first_macroslip,
+        };
         FitReport {
             data: data.to_string(),
             preset: preset.to_string(),
@@ -202,9 +232,7 @@ impl FitReport {
             mu: EstimateReport::from(&result.mu),
             kt: EstimateReport::from(&result.kt),
             rms: result.rms,
-            regime_scale,
-            first_macroslip_force: result.first_macroslip_force,
-            beyond_first_macroslip: result.beyond_first_macroslip,
+            forces,
             scatter: result.scatter,
             correlation: result.correlation,
             degrees_of_freedom: result.degrees_of_freedom,
@@ -285,14 +313,27 @@ impl FitReport {
             ""
         };
         let _ = writeln!(out, "  residual RMS = {} mm{exact}", number(self.rms));
-        let (name, all_slide) = self.regime_scale;
+        let forces = &self.forces;
+        let (name, all_slide) = forces.regime_scale;
+        let (first, unit) = (forces.first_name(), forces.load.unit_suffix());
+        let first_slip = if forces.first_macroslip_force == 0.0 {
+            // The cylinder's edges (p -> 0 there): no load below which mu is absent.
+            format!(
+                "{first} = 0{unit}: the interface slides somewhere at every load, so every \
+                 loaded measurement depends on mu"
+            )
+        } else {
+            format!(
+                "{first} = {}{unit}; {} of {} measurements above {first}",
+                number(forces.first_macroslip_force),
+                forces.beyond_first_macroslip,
+                self.points
+            )
+        };
         let _ = writeln!(
             out,
-            "  at the fitted values: {name} = {} N, F_1 = {} N; {} of {} measurements above F_1",
+            "  at the fitted values: {name} = {}{unit}, {first_slip}",
             number(all_slide),
-            number(self.first_macroslip_force),
-            self.beyond_first_macroslip,
-            self.points
         );
         out
     }

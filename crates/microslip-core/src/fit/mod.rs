@@ -83,18 +83,49 @@ pub enum FitError {
         /// The response column (`w_mm`, `Delta_mm`).
         column: &'static str,
     },
-    /// (A structure that carries a bounded force: the lap joint) A measured force beyond the
-    /// gross-slip force of every mu searched: no state of the structure carries it.
+    /// The best fit explains none of the weighted variation of the measured response about its
+    /// mean (R^2 <= [`LEAST_EXPLAINED`]: the mean fits it as well): the curve is not one the
+    /// problem's structure gives (every one grows with its load,
+    /// [`LoadDriven`](crate::problems::load_driven::LoadDriven)), whatever mu and K_T: a falling
+    /// curve, another quantity's column, a unit mistake.
     #[error(
-        "invalid F_N = {force}: beyond the gross-slip force 2 b mu P L of every mu up to {} \
-         ({largest} N): the joint slides through, so no mu fits it",
+        "the curve is not a {fitted}'s: the best fit (mu = {mu}, K_T = {kt} MPa/mm) explains none \
+         of the variation of {response} against {load} (R^2 = {r_squared:.3}: their mean fits \
+         them as well), while a {fitted}'s {response} grows with {load}; check the columns, their \
+         units and the problem"
+    )]
+    NotThisModel {
+        /// What is fitted ([`Fittable::FITTED`]).
+        fitted: &'static str,
+        /// The response column.
+        response: &'static str,
+        /// The load column.
+        load: &'static str,
+        /// The best fit's mu (-).
+        mu: f64,
+        /// The best fit's K_T (MPa/mm).
+        kt: f64,
+        /// 1 - SSE / SST of the weighted residuals (-).
+        r_squared: f64,
+    },
+    /// (A structure that carries a bounded force: the lap joint, the cylinder) A measured force
+    /// beyond the bound of every mu searched: no state of the structure carries it.
+    #[error(
+        "invalid {column} = {force}: beyond {bound} (for every mu up to {}, the bound is at most \
+         {largest} {unit}), so no mu fits it",
         MU_RANGE.1
     )]
     BeyondGrossSlip {
-        /// The largest measured force (N).
+        /// The largest measured force (in the load's unit).
         force: f64,
-        /// F_gross at the largest mu searched (N).
+        /// The bound at the largest mu searched (in the load's unit).
         largest: f64,
+        /// The load column ([`Fittable::LOAD_COLUMN`]: `F_N`, `Q_N_per_mm`).
+        column: &'static str,
+        /// The load's unit (`N`, `N/mm`).
+        unit: &'static str,
+        /// The bound in words ([`Fittable::BOUND`]).
+        bound: &'static str,
     },
 }
 
@@ -194,6 +225,9 @@ fn mu_range(
         return Err(FitError::BeyondGrossSlip {
             force: largest,
             largest: per_mu * MU_RANGE.1,
+            column: structure.load_column(),
+            unit: structure.load().unit().symbol(),
+            bound: structure.bound(),
         });
     }
     Ok((MU_RANGE.0.max(least), MU_RANGE.1))
@@ -219,10 +253,53 @@ fn mu_range(
 pub fn fit_weighted(
     structure: Structure,
     data: &[Measurement],
-    (fixed_mu, fixed_kt): (Option<f64>, Option<f64>),
+    fixed: (Option<f64>, Option<f64>),
     weights: Weights,
     progress: &mut dyn FnMut(Progress),
 ) -> Result<FitResult, FitError> {
+    Ok(fit_explained(structure, data, fixed, weights, progress)?.0)
+}
+
+/// [`fit_weighted`] of a measured curve, which must be the structure's: refused
+/// ([`FitError::NotThisModel`]) when the best fit explains none of its variation (R^2 <=
+/// [`LEAST_EXPLAINED`], with a degree of freedom left). What `microslip fit`, the terminal UI's
+/// `f` and the Python `fit` call; a comparison that fits FE points to imply a K_T
+/// (`compare beam`) calls [`fit_weighted`] and judges the misfit itself.
+///
+/// # Errors
+/// As [`fit_weighted`], and [`FitError::NotThisModel`].
+pub fn fit_measured(
+    structure: Structure,
+    data: &[Measurement],
+    fixed: (Option<f64>, Option<f64>),
+    weights: Weights,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<FitResult, FitError> {
+    let (result, explained) = fit_explained(structure, data, fixed, weights, progress)?;
+    if let Some(explained) = explained
+        && result.degrees_of_freedom > 0
+        && explained <= LEAST_EXPLAINED
+    {
+        return Err(FitError::NotThisModel {
+            fitted: structure.fitted(),
+            response: structure.response_column(),
+            load: structure.load_column(),
+            mu: result.mu.value,
+            kt: result.kt.value,
+            r_squared: explained,
+        });
+    }
+    Ok(result)
+}
+
+/// [`fit_weighted`], with the R^2 of its optimum ([`explained`]).
+fn fit_explained(
+    structure: Structure,
+    data: &[Measurement],
+    (fixed_mu, fixed_kt): (Option<f64>, Option<f64>),
+    weights: Weights,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<(FitResult, Option<f64>), FitError> {
     // Validate the structure and any fixed values through the model's own constructor; the mu
     // searched is the structure's own business (the lap joint's carries every measured force).
     let (own_mu, own_kt) = structure.own();
@@ -281,7 +358,41 @@ pub fn fit_weighted(
         None => bracket(&problem, &bounds, progress),
     };
     let refined = refine(&problem, start, &bounds, progress);
-    Ok(summarize(&problem, &refined, weights))
+    Ok((
+        summarize(&problem, &refined, weights),
+        explained(&problem, &refined),
+    ))
+}
+
+/// The fraction of the measured response's weighted variation (R^2) a fit must explain, more
+/// than which it is reported: at or below it the mean of the responses fits them as well as the
+/// structure does, and the curve is not the structure's ([`FitError::NotThisModel`]). A curve of
+/// the structure with a scatter s (a fraction of its range) is explained to about 1 - s^2; one
+/// that falls as the load grows, or rises and falls back, which no mu or K_T gives, to less than
+/// nothing (docs/theory.md, "Fitting mu and K_T to the cylinder's s(a) against Q").
+pub const LEAST_EXPLAINED: f64 = 0.0;
+
+/// 1 - SSE / SST of the weighted residuals at the optimum: the fraction of the measured
+/// response's variation about its weighted mean that the fit explains; `None` without
+/// residuals or variation.
+fn explained(problem: &Problem, refined: &least_squares::Refined) -> Option<f64> {
+    let residuals = refined.residuals.as_ref()?;
+    let sse: f64 = residuals.iter().map(|r| r * r).sum();
+    let (sum, norm) = problem
+        .data
+        .iter()
+        .zip(problem.sigma)
+        .fold((0.0, 0.0), |(sum, norm), (m, s)| {
+            (sum + m.response / (s * s), norm + 1.0 / (s * s))
+        });
+    let mean = sum / norm;
+    let sst: f64 = problem
+        .data
+        .iter()
+        .zip(problem.sigma)
+        .map(|(m, s)| ((m.response - mean) / s).powi(2))
+        .sum();
+    (sst > 0.0 && sse.is_finite()).then(|| 1.0 - sse / sst)
 }
 
 #[cfg(test)]
@@ -428,8 +539,16 @@ mod tests {
             refused,
             Err(FitError::BeyondGrossSlip {
                 force: 2.5e5,
-                largest: 1e5
+                largest: 1e5,
+                column: "F_N",
+                unit: "N",
+                bound: "the gross-slip force 2 b mu P L: the joint slides through",
             })
+        );
+        assert_eq!(
+            refused.unwrap_err().to_string(),
+            "invalid F_N = 250000: beyond the gross-slip force 2 b mu P L: the joint slides \
+             through (for every mu up to 5, the bound is at most 100000 N), so no mu fits it"
         );
         // A fixed mu that cannot carry the largest force is refused by name.
         let refused = fit_weighted(

@@ -82,6 +82,21 @@ impl Structure {
         self.fittable.response_column()
     }
 
+    /// The header of its load column in a measurement file (`F_N`, `Q_N_per_mm`).
+    pub fn load_column(&self) -> &'static str {
+        self.fittable.load_column()
+    }
+
+    /// Its load parameter (F, the cylinder's Q): name, unit and domain.
+    pub fn load(&self) -> Param {
+        self.fittable.load()
+    }
+
+    /// What bounds the force it carries, in words ([`Fittable::BOUND`]).
+    pub(super) fn bound(&self) -> &'static str {
+        self.fittable.bound()
+    }
+
     /// The structure at `mu`, `kt`; `None` where they (or the structure) are not accepted.
     pub(super) fn at(&self, mu: f64, kt: f64) -> Option<Box<dyn FitCurve>> {
         self.checked_at(mu, kt)?.ok()

@@ -19,6 +19,11 @@ use crate::problems::{ModelKind, Param, ParamKey};
 
 /// A load-driven problem whose measured curve u(F) identifies mu and K_T (module docs).
 pub trait Fittable: LoadDriven {
+    /// The header of the load column in a measurement file: the load parameter's key and unit
+    /// ([`LoadDriven::FORCE`]), `F_N` for a force (the default), `Q_N_per_mm` for the
+    /// cylinder's line load, as the problem's own sweep table heads it, so that a sweep loads
+    /// as a measurement.
+    const LOAD_COLUMN: &'static str = "F_N";
     /// The header of the response column in a measurement file (`w_mm`, `Delta_mm`).
     const RESPONSE_COLUMN: &'static str;
     /// What the fit's report calls the structure (`twin beams`).
@@ -47,6 +52,10 @@ pub trait Fittable: LoadDriven {
     fn force_per_friction(_structure: &Self::Structure) -> Option<f64> {
         None
     }
+    /// Where [`Fittable::force_per_friction`] is `Some`: the bound in words and what happens
+    /// beyond it, for the refusal of a measured force no mu carries ("the gross-slip force 2 b
+    /// mu P L: the joint slides through"). Empty (the default) for a structure without a bound.
+    const BOUND: &'static str = "";
 }
 
 /// A [`Fittable`] structure at one trial (mu, K_T), erased: what the least squares evaluate.
@@ -89,6 +98,12 @@ pub trait AnyFittable: Send + Sync {
     fn kind(&self) -> ModelKind;
     /// [`Fittable::RESPONSE_COLUMN`].
     fn response_column(&self) -> &'static str;
+    /// [`Fittable::LOAD_COLUMN`].
+    fn load_column(&self) -> &'static str;
+    /// The load parameter ([`LoadDriven::FORCE`]): its name, unit and domain.
+    fn load(&self) -> Param;
+    /// [`Fittable::BOUND`].
+    fn bound(&self) -> &'static str;
     /// [`Fittable::FITTED`].
     fn fitted(&self) -> &'static str;
     /// [`Fittable::HELD`], as parameters of any problem.
@@ -124,6 +139,18 @@ impl<P: Fittable> AnyFittable for FittableOf<P> {
 
     fn response_column(&self) -> &'static str {
         P::RESPONSE_COLUMN
+    }
+
+    fn load_column(&self) -> &'static str {
+        P::LOAD_COLUMN
+    }
+
+    fn load(&self) -> Param {
+        P::FORCE
+    }
+
+    fn bound(&self) -> &'static str {
+        P::BOUND
     }
 
     fn fitted(&self) -> &'static str {
@@ -176,21 +203,41 @@ mod tests {
     fn the_load_driven_problems_are_fittable_and_refuse_another_s_model() {
         for kind in ModelKind::ALL {
             let problem = kind.problem();
-            // The cylinder is load-driven; its Fittable (issue 34, item 4: mu and K_T from s(a)
-            // or c vs Q) is not written yet.
-            let fittable_expected = problem.load_driven().is_some() && kind != ModelKind::Cylinder;
-            assert_eq!(problem.fittable().is_some(), fittable_expected, "{kind}");
+            assert_eq!(
+                problem.fittable().is_some(),
+                problem.load_driven().is_some(),
+                "{kind}"
+            );
             let Some(fittable) = problem.fittable() else {
                 continue;
             };
             assert_eq!(fittable.kind(), kind);
             assert!(fittable.held().iter().all(|p| p.model() == kind));
+            // The load column is the load parameter's key and unit, as its sweep heads it.
+            let load = fittable.load();
+            assert_eq!(Some(load), kind.description().load, "{kind}");
+            assert_eq!(
+                fittable.load_column(),
+                format!(
+                    "{}_{}",
+                    load.name(),
+                    load.unit().symbol().replace('/', "_per_")
+                ),
+                "{kind}"
+            );
             let model = Inputs::paper(kind).validate().unwrap();
             let (mu, kt) = fittable.interface(&model).unwrap();
             let curve = fittable.curve(&model, mu, kt).unwrap().unwrap();
             let (scale, first) = curve.regime_forces();
-            assert!(first > 0.0 && scale > 0.0, "{kind}");
-            assert!(curve.response(0.5 * first).unwrap() > 0.0, "{kind}");
+            // F_1 is 0 where the interface slides somewhere from the first newton (the
+            // cylinder's edges, p -> 0 there).
+            assert!(first >= 0.0 && scale > 0.0, "{kind}");
+            let probe = if first > 0.0 {
+                0.5 * first
+            } else {
+                0.5 * scale
+            };
+            assert!(curve.response(probe).unwrap() > 0.0, "{kind}");
             for other in ModelKind::ALL.into_iter().filter(|&o| o != kind) {
                 let theirs = Inputs::paper(other).validate().unwrap();
                 assert!(fittable.interface(&theirs).is_none());

@@ -24,6 +24,7 @@ pub mod validity;
 // which the application's faces must come with: uncomment them with that line.
 // REGISTRY-BEGIN
 pub mod description;
+pub mod fittable;
 pub mod load_driven;
 pub mod point;
 pub mod problem;

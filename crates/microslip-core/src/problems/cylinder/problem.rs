@@ -10,6 +10,7 @@ use super::params::CylinderParam;
 use super::regularized::RegularizedState;
 use crate::kernel::params::ParamError;
 use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
+use crate::problems::fittable::{AnyFittable, FittableOf};
 use crate::problems::inputs::InterfaceData;
 use crate::problems::load_driven::{AnyLoadDriven, LoadDrivenOf};
 use crate::problems::problem::{Laws, ParamKey, Problem};
@@ -151,6 +152,10 @@ impl Problem for CylinderProblem {
 
     fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
         Some(&LoadDrivenOf::<CylinderProblem>::NEW)
+    }
+
+    fn fittable() -> Option<&'static dyn AnyFittable> {
+        Some(&FittableOf::<CylinderProblem>::NEW)
     }
 
     fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
