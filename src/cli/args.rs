@@ -99,7 +99,7 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = CycleFormat::Text)]
         format: CycleFormat,
     },
-    /// Identify mu and K_T from a measured deflection curve.
+    /// Identify mu and K_T from a measured curve (the problem's response against its load).
     Fit(FitArgs),
     /// List bundled and user presets with their descriptions.
     Presets,

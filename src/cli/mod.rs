@@ -106,11 +106,14 @@ pub struct Cli {
 
 /// The closing lines of `--help`: units, and the parameter keys as the model defines them.
 fn after_help() -> String {
+    let problems: Vec<&str> = ModelKind::ALL.iter().map(|k| k.name()).collect();
     format!(
         "Units: mm, N, MPa; K_T in MPa/mm (1 MPa/um = 1000 MPa/mm).\n\
          Keys for --set and preset files: {}.\n\
+         One state of any problem: microslip PROBLEM [--preset P] [--set KEY=VALUE] ({}).\n\
          Without a command, microslip opens the terminal UI (keys: press ? inside).",
-        ModelKind::key_docs()
+        ModelKind::key_docs(),
+        problems.join(", ")
     )
 }
 
