@@ -301,7 +301,7 @@ impl FitReport {
         if let Some(rho) = self.correlation {
             let _ = writeln!(out, "  correlation of mu and K_T = {}", number(rho));
         }
-        let response = self.structure.kind().description().response_symbol;
+        let response = crate::problems::Quantity::Response.name(self.structure.kind());
         let _ = writeln!(
             out,
             "  errors assume {}",
