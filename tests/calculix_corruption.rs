@@ -7,6 +7,8 @@
 //! The comparison with the closed forms is a pure function of the points and the deck's header,
 //! so equal points mean an equal comparison; the points are what is checked.
 
+mod common;
+
 use std::path::PathBuf;
 
 use microslip::fe::header::DeckHeader;
@@ -120,11 +122,7 @@ fn corrupt(text: &str, kind: u8, at: usize, junk: usize) -> String {
 const CASES: u32 = 96;
 
 proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: CASES,
-        failure_persistence: None,
-        .. ProptestConfig::default()
-    })]
+    #![proptest_config(common::fixed_seed(CASES))]
 
     #[test]
     fn a_damaged_beam_dat_is_refused_or_read_as_the_intact_one(

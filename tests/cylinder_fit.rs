@@ -50,12 +50,10 @@ fn fit(data: &[Measurement], weights: Weights) -> Result<FitResult, FitError> {
 
 #[test]
 fn an_exact_curve_gives_back_its_mu_and_k_t() {
-    let started = std::time::Instant::now();
     // mu 0.45 and K_T 4e4 MPa/mm (K_T a / E* = 0.26): to 0.9 of its gross-slip load 450 N/mm.
     let data = measure(pad(0.45, 4e4), &loads(405.0, 12), 0.0, 1);
     let result = fit(&data, Weights::Absolute).unwrap();
-    // A fit evaluates a few thousand regularized solves (0.7 ms each): seconds, not minutes.
-    assert!(started.elapsed().as_secs() < 60, "{:?}", started.elapsed());
+    // Its speed (a few thousand regularized solves) is measured in `cargo bench`, not here.
     assert!((result.mu.value / 0.45 - 1.0).abs() < 1e-6, "{result:?}");
     assert!((result.kt.value / 4e4 - 1.0).abs() < 1e-6, "{result:?}");
     assert_eq!(

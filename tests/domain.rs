@@ -9,6 +9,8 @@
 //! numbers (P_r/P, zeta) not at all. The dimensionless groups the closed forms depend on, k L,
 //! alpha L, alpha l, F / F_thre, are unchanged, so the regimes are too.
 
+mod common;
+
 use microslip::kernel::params::Domain;
 use microslip::problems::twin_beams::closed_form::BeamTheory;
 use microslip::problems::twin_beams::cycle::{BeamsCycle, Law, MasingCycle};
@@ -553,11 +555,7 @@ fn plate_units(p: &PlateParams, t_s: f64, t_sigma: f64) -> (f64, f64) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: CASES,
-        failure_persistence: None,
-        .. ProptestConfig::default()
-    })]
+    #![proptest_config(common::fixed_seed(CASES))]
 
     #[test]
     fn every_accepted_beam_gives_finite_consistent_numbers(

@@ -384,11 +384,7 @@ fn check_finite_and_consistent(params: LapParams, fraction: f64) -> Result<(), S
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: 2000,
-        failure_persistence: None,
-        .. ProptestConfig::default()
-    })]
+    #![proptest_config(common::fixed_seed(2000))]
 
     #[test]
     fn every_accepted_joint_gives_finite_consistent_numbers((params, fraction) in lap_params()) {

@@ -171,7 +171,10 @@ fn microslip<I: AsRef<std::ffi::OsStr>>(args: impl IntoIterator<Item = I>) -> st
         .unwrap()
 }
 
-fn compare(dat: &Path, format: &str) -> String {
+/// `compare plate DAT --format FORMAT`: its report, and whether it exited 0. It exits 0 when its
+/// verdict agrees and 1 when not (issue 46, item 6: it exited 0 on "does not agree"), with the
+/// short verdict on stderr; any other code fails the test.
+fn compare(dat: &Path, format: &str) -> (String, bool) {
     let output = microslip([
         "compare".as_ref(),
         "plate".as_ref(),
@@ -179,12 +182,16 @@ fn compare(dat: &Path, format: &str) -> String {
         "--format".as_ref(),
         format.as_ref(),
     ]);
-    assert!(
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    match output.status.code() {
+        Some(0) => assert!(stderr.is_empty(), "{stderr}"),
+        Some(1) => assert!(stderr.starts_with("microslip: verdict: "), "{stderr}"),
+        other => panic!("exit {other:?}: {stderr}"),
+    }
+    (
+        String::from_utf8(output.stdout).unwrap(),
         output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    String::from_utf8(output.stdout).unwrap()
+    )
 }
 
 #[test]
@@ -195,7 +202,13 @@ fn compare_says_an_edited_deck_does_not_agree_and_names_the_slope_used() {
         (0.9, "plate-kt1e4-minus10", "does not agree"),
     ] {
         let (_dir, dat) = plate_run(factor, results);
-        let json: Value = serde_json::from_str(&compare(&dat, "json")).unwrap();
+        let (report, exit_0) = compare(&dat, "json");
+        let json: Value = serde_json::from_str(&report).unwrap();
+        assert_eq!(
+            exit_0,
+            factor == 1.0,
+            "{factor}: the exit code is the verdict's"
+        );
         let run = &json["stick_slope"]["runs"][0];
         let used = run["KT_used_MPa_per_mm"].as_f64().unwrap();
         assert!(
@@ -206,7 +219,8 @@ fn compare_says_an_edited_deck_does_not_agree_and_names_the_slope_used() {
         assert_eq!(json["stick_slope"]["verdict"], verdict, "{factor}");
         assert_eq!(json["verdict"]["agrees"], factor == 1.0, "{factor}");
         assert_eq!(json["kinematics"]["kinematics"], "linear");
-        let text = compare(&dat, "text");
+        let (text, text_exit_0) = compare(&dat, "text");
+        assert_eq!(text_exit_0, exit_0);
         let closing = text.lines().last().unwrap();
         assert!(
             closing.starts_with(&format!("Verdict: {verdict}.")),
@@ -302,8 +316,10 @@ fn a_csv_result_takes_its_interface_profile_and_kinematics_from_flags() {
         "--format".as_ref(),
         "json".as_ref(),
     ]);
-    assert!(
-        output.status.success(),
+    // The verdict does not agree: exit 1, the report on stdout all the same.
+    assert_eq!(
+        output.status.code(),
+        Some(1),
         "{}",
         String::from_utf8_lossy(&output.stderr)
     );

@@ -128,7 +128,7 @@ trait Face: CompareFace {
             slope: StickSlope::Model,
             increment: None,
         };
-        Self::write_deck(model, &request).map_err(|e| e.to_string())
+        microslip::fe::face::written_deck::<Self>(model, &request).map_err(|e| e.to_string())
     }
 }
 

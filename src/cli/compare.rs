@@ -130,7 +130,14 @@ impl<W: Write> ForProblem for Compare<'_, W> {
             &compared.text(),
             &compared.with_contact(),
             rows.into_iter(),
-        )
+        )?;
+        // A script (an FE code's CI) reads the verdict from the exit code: 0 only when it agrees.
+        let summary = P::summary_mut(&mut compared.report);
+        if summary.agrees {
+            Ok(())
+        } else {
+            Err(CliError::Disagrees(summary.short.clone()))
+        }
     }
 }
 

@@ -48,6 +48,8 @@ pub(super) fn build_deck(
         },
         DeckError::Usage(why) => CliError::Usage(why),
         DeckError::TooLarge(e) => CliError::Invalid(e.to_string()),
+        DeckError::Param(e) => CliError::Param(e),
+        e @ DeckError::NonFinite { .. } => CliError::Invalid(e.to_string()),
     })
 }
 
@@ -116,7 +118,10 @@ impl ForProblem for WriteDeck<'_> {
     type Output = Option<Result<String, DeckError>>;
 
     fn run<P: Faces>(self) -> Self::Output {
-        Some(P::write_deck(&P::from_model(self.model)?, self.request))
+        Some(crate::fe::face::written_deck::<P>(
+            &P::from_model(self.model)?,
+            self.request,
+        ))
     }
 }
 

@@ -53,6 +53,10 @@ pub enum CliError {
     /// The cross-check found errors above tolerance (already reported on stdout).
     #[error("{0} of the quantities checked {verb} the tolerance", verb = if *.0 == 1 { "exceeds" } else { "exceed" })]
     VerifyFailed(usize),
+    /// `compare` or `bench`: the verdict (already reported on stdout) is not "agrees": the FE
+    /// results do not agree, or could not be judged. The short verdict, for the one stderr line.
+    #[error("verdict: {0} (exit code 1: the report says why)")]
+    Disagrees(String),
     /// Unreadable or malformed measurements.
     #[error("{path}: {reason}")]
     Data {
@@ -117,6 +121,7 @@ impl CliError {
             CliError::Numeric(NumericError::OutOfRange(_) | NumericError::BadLoad(_)) => 2,
             CliError::CheckFailed(_)
             | CliError::VerifyFailed(_)
+            | CliError::Disagrees(_)
             | CliError::Output(_)
             | CliError::Numeric(_) => 1,
             CliError::Solver(RunError::Stopped { signal, .. }) => {

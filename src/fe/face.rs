@@ -134,6 +134,79 @@ pub enum DeckError {
     /// The mesh would be too large.
     #[error(transparent)]
     TooLarge(DeckTooLarge),
+    /// A model the deck's geometry cannot hold (the cylinder's arc wider than its bodies): the
+    /// parameter, its value and the range the deck takes.
+    #[error(transparent)]
+    Param(#[from] crate::kernel::params::ParamError),
+    /// The deck as written holds a number that is not finite: refused rather than written, so
+    /// that no FE code is ever given one (a problem's deck writer missed a case of its inputs).
+    #[error(
+        "the deck would hold a non-finite number on its line {line} (`{text}`): not written; \
+         its inputs are outside what the deck's geometry takes"
+    )]
+    NonFinite {
+        /// The line (from 1).
+        line: usize,
+        /// The line's start, sanitized.
+        text: String,
+    },
+}
+
+/// The deck of `model` that `request` describes ([`Deck::write_deck`]), refused rather than
+/// returned if any number in it is not finite: the one door both faces (the CLI's `deck` and
+/// `bench`, Python's `deck()`) write decks through.
+///
+/// # Errors
+/// As [`Deck::write_deck`], and [`DeckError::NonFinite`].
+pub fn written_deck<P: Deck>(model: &P::Model, request: &DeckRequest) -> Result<String, DeckError> {
+    let text = P::write_deck(model, request)?;
+    match first_non_finite_line(&text) {
+        Some((line, content)) => Err(DeckError::NonFinite {
+            line,
+            text: crate::report::sanitize(&content.chars().take(60).collect::<String>())
+                .into_owned(),
+        }),
+        None => Ok(text),
+    }
+}
+
+/// The first line (from 1) of `deck` holding a field that reads as a non-finite number (`NaN`,
+/// `inf`, `-inf`, as Rust writes them), with its text; comment lines (`**`) are prose and not
+/// looked at.
+fn first_non_finite_line(deck: &str) -> Option<(usize, &str)> {
+    deck.lines().enumerate().find_map(|(i, line)| {
+        if line.starts_with("**") {
+            return None;
+        }
+        line.split(|c: char| c == ',' || c == '=' || c.is_whitespace())
+            .map(|field| field.trim_start_matches(['+', '-']).to_ascii_lowercase())
+            .any(|field| matches!(field.as_str(), "nan" | "inf" | "infinity"))
+            .then_some((i + 1, line))
+    })
+}
+
+#[cfg(test)]
+mod finite_tests {
+    use super::first_non_finite_line;
+
+    /// Every way Rust writes a non-finite f64 in a data line is caught, with its line; words in
+    /// comment lines and keywords are not numbers.
+    #[test]
+    fn a_non_finite_field_is_found_on_its_line() {
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            for text in [format!("{bad}"), format!("{bad:e}"), format!("{bad:.10e}")] {
+                let deck = format!("** infinite loads, NaN\n*NODE\n1, 0.0, {text}, 0.0\n");
+                assert_eq!(
+                    first_non_finite_line(&deck),
+                    Some((3, format!("1, 0.0, {text}, 0.0").as_str())),
+                    "{text}"
+                );
+            }
+        }
+        let fine =
+            "** a NaN in prose\n*SURFACE INTERACTION, NAME=SI\n*NODE\n1, 1.0e0, -2.5e-3, 0\n";
+        assert_eq!(first_non_finite_line(fine), None);
+    }
 }
 
 impl DeckError {

@@ -640,6 +640,11 @@ mod tests {
         })
     }
 
+    /// The longest a key may take on this thread in these tests: a few ms on an idle machine;
+    /// 5 s holds on a 2-core machine at load 7 (issue 46, item 10: a 500 ms bound failed once
+    /// there), far below the solves and fits the keys start on workers.
+    const RESPONSIVE: Duration = Duration::from_secs(5);
+
     #[test]
     fn a_fit_runs_on_a_worker_shows_progress_and_esc_stops_it_at_once() {
         let (sender, reports) = mpsc::channel::<Report>();
@@ -648,8 +653,10 @@ mod tests {
         let before = app.inputs();
         let started = Instant::now();
         runner.update(&mut app, Action::Fit);
+        // Not waiting is shown by the mode (a fit that ran here would have ended it); the bound
+        // only catches slow work on this thread, generous enough for a loaded 2-core machine.
         assert!(
-            started.elapsed() < Duration::from_millis(500),
+            started.elapsed() < RESPONSIVE,
             "f waited for the fit: {:?}",
             started.elapsed()
         );
@@ -760,7 +767,7 @@ mod tests {
         let pressed = Instant::now();
         runner.update(&mut app, Action::ToggleNumeric);
         assert!(
-            pressed.elapsed() < Duration::from_millis(500),
+            pressed.elapsed() < RESPONSIVE,
             "n waited for the solve: {:?}",
             pressed.elapsed()
         );

@@ -257,7 +257,9 @@ mod tests {
         else {
             panic!("the running job was not cancelled")
         };
-        assert!(cancelled.elapsed() < Duration::from_secs(1));
+        // At its next checkpoint: milliseconds idle; 5 s holds on a loaded 2-core machine
+        // (issue 46, item 10), far below a job that was never cancelled (it runs until `closed`).
+        assert!(cancelled.elapsed() < Duration::from_secs(5));
         workers.finished(Lane::Overlay);
         assert_eq!(started.recv_timeout(Duration::from_secs(10)), Ok(3));
         let Report::Finished {

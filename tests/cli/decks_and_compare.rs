@@ -126,10 +126,10 @@ fn deck_refuses_bad_loads_and_presets_of_the_other_model() {
 
 #[test]
 fn compare_reads_calculix_results_with_their_deck() {
-    let text = stdout_of(&["compare", "beam", &calculix_fixture("paper-beams.dat")]);
+    let text = compare_report(&["compare", "beam", &calculix_fixture("paper-beams.dat")]);
     assert!(text.contains("K_T = 600 MPa/mm"), "{text}");
     assert!(text.contains("What the FE points imply"), "{text}");
-    let csv = stdout_of(&[
+    let csv = compare_report(&[
         "compare",
         "beam",
         &calculix_fixture("paper-beams.dat"),
@@ -144,7 +144,7 @@ fn compare_reads_calculix_results_with_their_deck() {
          diff_shear_corrected_fraction,shear_corrected_within_fraction"
     );
     assert_eq!(lines.count(), 6);
-    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+    let json: serde_json::Value = serde_json::from_str(&compare_report(&[
         "compare",
         "plate",
         &calculix_fixture("plate-kt1e4.dat"),
@@ -168,7 +168,7 @@ fn compare_reads_csv_from_any_code_with_the_parameters_given() {
         "# from another code\nF_N,w_mm\n40,0.0114\n100,0.039\n",
     )
     .unwrap();
-    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+    let json: serde_json::Value = serde_json::from_str(&compare_report(&[
         "compare",
         "beam",
         csv.to_str().unwrap(),
@@ -187,10 +187,10 @@ fn compare_reads_csv_from_any_code_with_the_parameters_given() {
 #[test]
 fn compare_lap_reads_calculix_results_and_csv() {
     let dat = calculix_fixture("lap-aluminium.dat");
-    let text = stdout_of(&["compare", "lap", &dat]);
+    let text = compare_report(&["compare", "lap", &dat]);
     assert!(text.contains("clamped double-lap joint"), "{text}");
     assert!(text.contains("Verdict:"), "{text}");
-    let csv = stdout_of(&["compare", "lap", &dat, "--format", "csv"]);
+    let csv = compare_report(&["compare", "lap", &dat, "--format", "csv"]);
     assert!(csv.starts_with("F_N,Delta_fe_mm,Delta_mm,diff,"), "{csv}");
     assert_eq!(csv.lines().count(), 5, "{csv}");
     // A CSV from any code, at the bundled joint's parameters; a force beyond F_gross = 6000 N
@@ -198,7 +198,7 @@ fn compare_lap_reads_calculix_results_and_csv() {
     let dir = tempfile::tempdir().unwrap();
     let points = dir.path().join("abaqus.csv");
     std::fs::write(&points, "F_N,Delta_mm\n1000,0.0047\n3000,0.0143\n").unwrap();
-    let json: serde_json::Value = serde_json::from_str(&stdout_of(&[
+    let json: serde_json::Value = serde_json::from_str(&compare_report(&[
         "compare",
         "lap",
         points.to_str().unwrap(),
@@ -249,7 +249,7 @@ fn compare_at_zero_load_says_the_relative_difference_is_undefined() {
     let csv = dir.path().join("fe.csv");
     std::fs::write(&csv, "F_N,w_mm\n0,0\n40,0.0114\n100,0.039\n").unwrap();
     let path = csv.to_str().unwrap();
-    let text = stdout_of(&["compare", "beam", path]);
+    let text = compare_report(&["compare", "beam", path]);
     for bad in ["inf", "NaN"] {
         assert!(!text.contains(bad), "{text}");
     }
@@ -257,11 +257,13 @@ fn compare_at_zero_load_says_the_relative_difference_is_undefined() {
         text.contains("n/a") && text.contains("relative difference is undefined"),
         "{text}"
     );
-    let json: serde_json::Value =
-        serde_json::from_str(&stdout_of(&["compare", "beam", path, "--format", "json"])).unwrap();
+    let json: serde_json::Value = serde_json::from_str(&compare_report(&[
+        "compare", "beam", path, "--format", "json",
+    ]))
+    .unwrap();
     assert!(json["rows"][0]["diff_euler"].is_null(), "{json}");
     assert!(json["rows"][1]["diff_euler"].is_f64(), "{json}");
-    let csv = stdout_of(&["compare", "beam", path, "--format", "csv"]);
+    let csv = compare_report(&["compare", "beam", path, "--format", "csv"]);
     let first = csv.lines().nth(1).unwrap();
     assert!(first.starts_with("0.0,0.0,0.0,,"), "{first}");
 }
@@ -274,7 +276,7 @@ fn compare_beam_without_a_degree_of_freedom_judges_nothing_by_the_fit_error() {
     let csv = dir.path().join("fe.csv");
     std::fs::write(&csv, "F_N,w_mm\n0,0\n50,0.0135317\n100,0.0382238\n").unwrap();
     let path = csv.to_str().unwrap();
-    let text = stdout_of(&["compare", "beam", path]);
+    let text = compare_report(&["compare", "beam", path]);
     // The fit's line (the continuum's own lines say their resolution in "+-").
     let fit_line = text
         .lines()
@@ -295,8 +297,10 @@ fn compare_beam_without_a_degree_of_freedom_judges_nothing_by_the_fit_error() {
         text.contains("RMS") && text.contains("0 by construction"),
         "{text}"
     );
-    let json: serde_json::Value =
-        serde_json::from_str(&stdout_of(&["compare", "beam", path, "--format", "json"])).unwrap();
+    let json: serde_json::Value = serde_json::from_str(&compare_report(&[
+        "compare", "beam", path, "--format", "json",
+    ]))
+    .unwrap();
     assert!(json["verdict"]["KT_z"].is_null(), "{json}");
     assert_eq!(json["verdict"]["KT"], "not judged: uncertainty unknown");
     assert!(

@@ -419,7 +419,7 @@ fn beams_beyond_the_calibrated_friction_strain_get_no_bound() {
     std::fs::write(&fe, "F_N,w_mm\n20000,1.5\n30000,3.0\n40000,4.5\n").unwrap();
     let mut compare = vec!["compare", "beam", fe.to_str().unwrap()];
     compare.extend(set);
-    let text = stdout_of(&compare);
+    let text = compare_report(&compare);
     assert!(
         text.contains("implied K_T not judged (the beam theory's envelope is not calibrated"),
         "{text}"

@@ -31,6 +31,43 @@ fn stdout_of(args: &[&str]) -> String {
     String::from_utf8(output.stdout).unwrap()
 }
 
+/// The report of `compare` (or `bench`): exit 0 when its verdict agrees, 1 when it does not or
+/// could not judge, with the short verdict as the one stderr line (issue 46, item 6). The verdict
+/// is read from the report itself (the text's closing line, the JSON's `verdict.agrees`) and the
+/// exit code checked against it; a CSV has none, its code is only checked to be 0 or 1.
+fn compare_report(args: &[&str]) -> String {
+    let output = microslip().args(args).output().unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    let code = output.status.code();
+    assert!(
+        matches!(code, Some(0 | 1)),
+        "{args:?}: exit {code:?}: {stderr}"
+    );
+    let agrees = match serde_json::from_str::<serde_json::Value>(&stdout) {
+        Ok(json) => json["verdict"]["agrees"].as_bool(),
+        Err(_) => stdout
+            .lines()
+            .rev()
+            .find(|l| l.starts_with("Verdict: "))
+            .map(|l| l.starts_with("Verdict: agrees")),
+    };
+    if let Some(agrees) = agrees {
+        assert_eq!(
+            code == Some(0),
+            agrees,
+            "{args:?}: exit {code:?} against the verdict"
+        );
+    }
+    if code == Some(1) {
+        assert!(
+            stderr.starts_with("microslip: verdict: "),
+            "{args:?}: {stderr}"
+        );
+    }
+    stdout
+}
+
 /// A generic command (`sweep`, `fit`) and its per-problem alias print the same bytes for each
 /// of `formats` (given as `--format F` after the words).
 fn same_bytes(generic: &[&str], alias: &[&str], formats: &[&str]) {

@@ -90,7 +90,7 @@ fn commands_that_do_not_use_the_force_are_not_refused_over_it() {
         "P=1",
     ]);
     assert!(fit.contains("P = 1 MPa"), "{fit}");
-    let compare = stdout_of(&[
+    let compare = compare_report(&[
         "compare",
         "lap",
         path,
@@ -123,7 +123,7 @@ fn compare_plate_keeps_its_columns_when_no_stiffness_is_implied() {
     let csv = dir.path().join("plate.csv");
     // K_T = 1e4: the strip theory holds (a number); 1e6 and 1e8: it does not (a reason).
     std::fs::write(&csv, "KT_MPa_per_mm,u_mm\n1e4,2e-4\n1e6,1e-5\n1e8,1e-5\n").unwrap();
-    let text = stdout_of(&["compare", "plate", csv.to_str().unwrap()]);
+    let text = compare_report(&["compare", "plate", csv.to_str().unwrap()]);
     let header = text.lines().find(|l| l.contains("regime (")).unwrap();
     let column = header.find("regime (").unwrap();
     let rows: Vec<&str> = text

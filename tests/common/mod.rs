@@ -89,3 +89,26 @@ impl Noise {
         (-2.0 * u1.ln()).sqrt() * (2.0 * std::f64::consts::PI * u2).cos()
     }
 }
+
+/// The seed every property test draws its cases from in `cargo test`.
+pub const PROPERTY_SEED: u64 = 0x6d69_6372_6f73_6c69;
+
+/// The property tests' configuration: `cases` cases drawn from [`PROPERTY_SEED`], the same on
+/// every run and every machine, and no regression file written, so that `cargo test` passes or
+/// fails the same way each time and leaves the tree as it found it (issue 46, item 10: a random
+/// draw failed one fresh clone in 41, then wrote a file that replayed it on every rerun). A
+/// found failure is kept as an explicit `#[test]` beside its property, with the input proptest
+/// printed. A longer random search runs apart, with its seed printed by whoever starts it:
+/// `PROPTEST_RNG_SEED=$RANDOM PROPTEST_CASES=5000 cargo test --test NAME`, which this honours.
+pub fn fixed_seed(cases: u32) -> proptest::test_runner::Config {
+    use proptest::test_runner::{Config, RngSeed};
+    let mut config = Config::default();
+    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
+        config.rng_seed = RngSeed::Fixed(PROPERTY_SEED);
+    }
+    if std::env::var_os("PROPTEST_CASES").is_none() {
+        config.cases = cases;
+    }
+    config.failure_persistence = None;
+    config
+}

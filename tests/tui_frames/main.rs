@@ -10,6 +10,8 @@ use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use std::collections::HashSet;
 
+#[path = "../common/mod.rs"]
+mod common;
 mod panels;
 
 fn app_with(preset_name: &str, charset: Charset, color: bool) -> App {

@@ -496,10 +496,7 @@ fn step() -> impl Strategy<Value = Vec<Action>> {
 const CASES: u32 = 64;
 
 proptest! {
-    #![proptest_config(ProptestConfig {
-        failure_persistence: None,
-        ..ProptestConfig::with_cases(CASES)
-    })]
+    #![proptest_config(crate::common::fixed_seed(CASES))]
 
     /// The ASCII charset draws only 7-bit characters, and its frame is the Unicode one with each
     /// glyph replaced by an ASCII counterpart: same text in the same cells. The Unicode frame is

@@ -186,9 +186,23 @@ def run_case(microslip, workdir, job, model, args):
     (workdir / f"{job}.log").write_text(result.stdout + result.stderr)
     if result.returncode != 0 or "ERROR" in result.stdout:
         raise RuntimeError(f"ccx failed on {job}: see {workdir / (job + '.log')}")
-    compared = subprocess.run([microslip, "compare", model, str(workdir / f"{job}.dat"),
-                               "--format", "json"], check=True, capture_output=True, text=True)
-    return json.loads(compared.stdout), inp.read_text(), wall, cpu
+    return compare(microslip, model, workdir / f"{job}.dat"), inp.read_text(), wall, cpu
+
+
+def compare(microslip, model, dat):
+    """`microslip compare MODEL DAT --format json`, parsed; and its exit code checked against its
+    verdict, as an FE code's CI reads it: 0 when the verdict agrees, 1 when it does not (or could
+    not judge), anything else a failure of the script."""
+    compared = subprocess.run([microslip, "compare", model, str(dat), "--format", "json"],
+                              capture_output=True, text=True)
+    if compared.returncode not in (0, 1):
+        raise RuntimeError(f"compare {model} {dat} exited {compared.returncode}: {compared.stderr}")
+    data = json.loads(compared.stdout)
+    agrees = data["verdict"]["agrees"]
+    if compared.returncode != (0 if agrees else 1):
+        raise RuntimeError(f"compare {model} {dat}: exit code {compared.returncode} "
+                           f"with a verdict that agrees = {agrees}")
+    return data
 
 
 def thresholds(microslip, args):
@@ -388,9 +402,7 @@ def stick_slope_rows(microslip, workdir, timings, failures):
             (workdir / f"{job}.log").write_text(result.stdout + result.stderr)
             if result.returncode != 0 or "ERROR" in result.stdout:
                 raise RuntimeError(f"ccx failed on {job}: see {workdir / (job + '.log')}")
-            data = json.loads(subprocess.run(
-                [microslip, "compare", model, str(workdir / f"{job}.dat"), "--format", "json"],
-                check=True, capture_output=True, text=True).stdout)
+            data = compare(microslip, model, workdir / f"{job}.dat")
             run = data["stick_slope"]["runs"][0]
             verdict = data["verdict"]
             label = f"stick slope {model} {name} x{factor:g}"

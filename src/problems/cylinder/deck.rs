@@ -24,7 +24,9 @@ use crate::report::sanitize;
 use super::ccx_read::cylinder_points;
 pub use super::ccx_read::{CylinderFePoint, FeContact};
 use super::closed_form::{Cylinder, TangentialLoad};
-use super::deck_writer::{BODY_SIZE, CylinderDeckInputs, Layout, cylinder_deck, layout, sets};
+use super::deck_writer::{
+    BODY_SIZE, CylinderDeckInputs, Layout, MAX_HALF_WIDTH_OVER_RADIUS, cylinder_deck, layout, sets,
+};
 use super::problem::{CylinderInputs, CylinderModel, CylinderProblem};
 
 /// The default load steps, as fractions of the gross-slip load mu P.
@@ -306,6 +308,7 @@ impl Deck for CylinderProblem {
 
     fn write_deck(model: &CylinderModel, request: &DeckRequest) -> Result<String, DeckError> {
         let cylinder = &model.cylinder;
+        fits_the_deck(cylinder)?;
         let loads = deck_loads(cylinder, request.loads)?;
         let q_step = request
             .increment
@@ -326,6 +329,33 @@ impl Deck for CylinderProblem {
             q_step,
         )?)
     }
+}
+
+/// Refuses a cylinder whose arc the deck's bodies cannot hold (a / R above
+/// [`MAX_HALF_WIDTH_OVER_RADIUS`]), naming R and the least R the deck takes at this P and E:
+/// a / R = sqrt(4 P / (pi E* R)), so a / R <= k is R >= 4 P / (pi E* k^2).
+fn fits_the_deck(cylinder: &Cylinder) -> Result<(), ParamError> {
+    let ratio = cylinder.half_width() / cylinder.params().radius;
+    if ratio <= MAX_HALF_WIDTH_OVER_RADIUS {
+        return Ok(());
+    }
+    let least = 4.0 * cylinder.params().normal_load
+        / (std::f64::consts::PI * cylinder.contact_modulus() * MAX_HALF_WIDTH_OVER_RADIUS.powi(2));
+    let spec = super::params::CylinderParam::Radius.spec();
+    Err(ParamError {
+        field: spec.name,
+        value: cylinder.params().radius,
+        domain: Domain::Positive {
+            min: least,
+            max: Domain::LENGTH.max(),
+        },
+        unit: spec.unit,
+        reason: None,
+    }
+    .because(
+        "the deck's bodies are 6 a wide and deep: the cylinder's arc fits them up to a / R = \
+         2/15 (R >= 7.5 a); a larger R, a smaller P or a stiffer E",
+    ))
 }
 
 /// One row of `microslip compare cylinder`.
@@ -409,14 +439,26 @@ pub struct CylinderCompareReport {
     pub verdict: Summary,
 }
 
-/// What the half-plane solution assumes, said wherever the comparison is shown.
+/// What the half-plane solution assumes, said wherever the comparison of a run of the
+/// project's own deck is shown.
 pub const HALF_PLANE_NOTE: &str = "half-plane solution (Hertz, regularized Cattaneo-Mindlin at \
      the deck's K_T); the deck's bodies are 6 a wide and deep, mirror images but for the arc";
+/// The same for a CSV curve: its bodies and its K_T are what the flags say, not a deck's.
+pub const HALF_PLANE_NOTE_CSV: &str = "half-plane solution (Hertz, regularized Cattaneo-Mindlin \
+     at the given K_T); the envelope holds for bodies at least 6 a wide and deep, which a CSV \
+     curve does not say";
 
 impl CylinderCompareReport {
     /// The report of `rows`, compared from the files `source` names.
     pub fn new(source: &str, rows: &[CylinderCompared]) -> CylinderCompareReport {
-        let judged = !rows.is_empty() && rows.iter().all(|r| r.envelope_applies);
+        // A row is judged where it has a difference to judge: s(a) where the half-plane's is
+        // not 0 (Q > 0), c where the results carry it (a CalculiX run, not a CSV curve).
+        let judged_rows = rows
+            .iter()
+            .filter(|r| r.edge_slip_difference().is_some() || r.zone_difference().is_some())
+            .count();
+        let judged = judged_rows > 0 && rows.iter().all(|r| r.envelope_applies);
+        let has_zone = rows.iter().any(|r| r.zone_difference().is_some());
         let outside = rows.iter().find_map(|r| r.outside_because);
         let zone = rows
             .first()
@@ -438,8 +480,21 @@ impl CylinderCompareReport {
             within_envelope: within,
             c_within_fraction_of_a: zone,
             sa_within_fraction: edge,
-            note: HALF_PLANE_NOTE,
-            verdict: envelope_summary(within, judged, (zone, edge), outside),
+            note: if rows.iter().any(|r| r.fe.contact.is_some()) {
+                HALF_PLANE_NOTE
+            } else {
+                HALF_PLANE_NOTE_CSV
+            },
+            verdict: envelope_summary(
+                Judged {
+                    within,
+                    judged,
+                    rows: (judged_rows, rows.len()),
+                    has_zone,
+                },
+                (zone, edge),
+                outside,
+            ),
         }
     }
 
@@ -448,7 +503,7 @@ impl CylinderCompareReport {
         let mut out = format!(
             "Hertzian cylinder: {} against the {}\n",
             sanitize(&self.source),
-            HALF_PLANE_NOTE
+            self.note
         );
         let opt = |v: Option<f64>| v.map_or_else(|| "-".to_string(), number);
         let pct =
@@ -494,12 +549,28 @@ impl CylinderCompareReport {
     }
 }
 
-/// The closing verdict of the half-plane envelope: c within `bounds.0` of a and s(a) within
-/// `bounds.1` on every row (`judged`: there was a row of the envelope's kinematics; `outside`:
-/// why the envelope does not reach this cylinder, which is then not judged).
-fn envelope_summary(
+/// What the rows of a comparison gave the verdict to judge.
+struct Judged {
+    /// Every judged difference within its bound.
     within: bool,
+    /// At least one row with a difference to judge, and every row of the envelope's kinematics.
     judged: bool,
+    /// Rows with a difference to judge, of all rows.
+    rows: (usize, usize),
+    /// Whether any row carries c (a CalculiX run; a CSV curve has s(a) only).
+    has_zone: bool,
+}
+
+/// The closing verdict of the half-plane envelope: c within `bounds.0` of a (where the results
+/// carry c) and s(a) within `bounds.1` on every row that has them (`outside`: why the envelope
+/// does not reach this cylinder, which is then not judged).
+fn envelope_summary(
+    Judged {
+        within,
+        judged,
+        rows: (judged_rows, all_rows),
+        has_zone,
+    }: Judged,
     (zone, edge): (f64, f64),
     outside: Option<&str>,
 ) -> Summary {
@@ -515,27 +586,45 @@ fn envelope_summary(
             short: "not judged: outside the measured envelope".to_string(),
         };
     }
-    let envelope = format!(
-        "c within {} % of a and s(a) within {} % of the half-plane answer (the envelope measured \
-         against CalculiX, docs/theory.md)",
-        Compact(100.0 * zone),
+    let edge_words = format!(
+        "s(a) within {} % of the half-plane answer",
         Compact(100.0 * edge)
     );
+    let envelope = if has_zone {
+        format!("c within {} % of a and {edge_words}", Compact(100.0 * zone))
+    } else {
+        edge_words
+    };
+    let envelope = format!("{envelope} (the envelope measured against CalculiX, docs/theory.md)");
     let (agrees, word, short) = match (judged, within) {
         (false, _) => (
             false,
             "not judged",
-            "not judged: no rows, or a run of other kinematics than the envelope's".to_string(),
+            "not judged: no row with Q > 0, or a run of other kinematics than the envelope's"
+                .to_string(),
         ),
         (true, true) => (true, "agrees", "agrees".to_string()),
         (true, false) => (false, "does not agree", "does not agree".to_string()),
     };
-    let body = if !judged {
-        format!("the envelope ({envelope}) judges linear-geometry runs with rows only")
-    } else if within {
-        format!("{envelope} on every row")
+    let counted = if judged_rows == all_rows {
+        format!("on every row ({all_rows})")
     } else {
-        format!("not {envelope} on every row")
+        format!(
+            "on every row that has one ({judged_rows} of {all_rows}: s(a) is 0 at Q = 0, nothing \
+             to judge)"
+        )
+    };
+    let body = if !judged {
+        format!("the envelope ({envelope}) judges linear-geometry runs with a row at Q > 0 only")
+    } else if within {
+        format!("{envelope} {counted}")
+    } else {
+        format!("not {envelope} {counted}")
+    };
+    let body = if has_zone || !judged {
+        body
+    } else {
+        format!("{body}; c is not judged: the results carry no c")
     };
     Summary {
         agrees,
@@ -641,11 +730,7 @@ mod envelope {
     fn agreeing(radius: f64) -> Vec<CylinderCompared> {
         let base = Cylinder::new(CylinderParams {
             radius,
-            modulus: 210_000.0,
-            poisson: 0.3,
-            normal_load: 1000.0,
-            friction: 0.6,
-            tangential_stiffness: 1e5,
+            ..CylinderParams::STEEL_PAD
         })
         .unwrap();
         let c = base
@@ -689,5 +774,94 @@ mod envelope {
             "{}",
             report.verdict.summary
         );
+    }
+
+    /// A CSV curve carries s(a) only: the verdict does not claim a check of c, and its note does
+    /// not speak of the deck's bodies, which a CSV's run did not use (issue 46, item 5).
+    #[test]
+    fn a_csv_curve_is_judged_on_s_a_only_and_said_so() {
+        let mut rows = agreeing(50.0);
+        for row in &mut rows {
+            row.fe.contact = None;
+        }
+        let report = CylinderCompareReport::new("curve.csv", &rows);
+        let summary = &report.verdict.summary;
+        assert!(report.verdict.agrees, "{summary}");
+        assert!(!summary.contains("c within"), "{summary}");
+        assert!(summary.contains("c is not judged"), "{summary}");
+        assert_eq!(report.note, HALF_PLANE_NOTE_CSV);
+        assert!(
+            !report.text().contains("deck's bodies"),
+            "{}",
+            report.text()
+        );
+        // A run of the deck keeps both.
+        let run = CylinderCompareReport::new("run.dat", &agreeing(50.0));
+        assert!(run.verdict.summary.contains("c within"));
+        assert_eq!(run.note, HALF_PLANE_NOTE);
+    }
+
+    /// A curve whose only row is at Q = 0 has nothing to judge (s(a) is 0 there): it is "not
+    /// judged", never "agrees" (issue 46, item 5).
+    #[test]
+    fn a_curve_with_nothing_to_judge_does_not_agree() {
+        let mut rows = agreeing(50.0);
+        let c = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
+        rows = compare_cylinder(
+            &c,
+            &[CylinderFePoint {
+                load: 0.0,
+                edge_slip: 0.0,
+                contact: None,
+            }],
+        )
+        .unwrap_or(rows);
+        assert_eq!(rows.len(), 1);
+        let report = CylinderCompareReport::new("curve.csv", &rows);
+        assert!(!report.verdict.agrees, "{}", report.verdict.summary);
+        assert!(report.verdict.summary.starts_with("Verdict: not judged"));
+    }
+
+    /// A cylinder whose arc the deck's 6 a bodies cannot hold is refused naming R and the least
+    /// R, and never written with NaN coordinates (issue 46, item 4: R = 0.3 mm wrote 208 NaN
+    /// node lines); just inside the bound the deck is written and finite.
+    #[test]
+    fn a_cylinder_the_deck_cannot_hold_is_refused_with_the_least_radius() {
+        let params = |radius: f64| CylinderParams {
+            radius,
+            ..CylinderParams::STEEL_PAD
+        };
+        let request = DeckRequest {
+            loads: None,
+            mesh: DeckMesh::Coarse,
+            slope: StickSlope::Model,
+            increment: None,
+        };
+        let model = |radius: f64| {
+            let cylinder = Cylinder::new(params(radius)).unwrap();
+            CylinderModel {
+                load: cylinder.clamped_load(0.0),
+                cylinder,
+            }
+        };
+        let refused = crate::fe::face::written_deck::<CylinderProblem>(&model(0.3), &request)
+            .unwrap_err()
+            .to_string();
+        assert!(refused.starts_with("invalid R = 0.3"), "{refused}");
+        assert!(refused.contains("a / R"), "{refused}");
+        // The least R it names is the bound itself: a / R = 2/15 there, and it is written.
+        let cylinder = Cylinder::new(params(0.3)).unwrap();
+        let least = 4.0 * 1000.0
+            / (std::f64::consts::PI
+                * cylinder.contact_modulus()
+                * MAX_HALF_WIDTH_OVER_RADIUS.powi(2));
+        let at = Cylinder::new(params(least * (1.0 + 1e-9))).unwrap();
+        assert!(at.half_width() / at.params().radius <= MAX_HALF_WIDTH_OVER_RADIUS);
+        let deck = crate::fe::face::written_deck::<CylinderProblem>(
+            &model(least * (1.0 + 1e-9)),
+            &request,
+        )
+        .unwrap();
+        assert!(!deck.contains("NaN") && !deck.contains("inf,"));
     }
 }

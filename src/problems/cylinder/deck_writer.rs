@@ -39,6 +39,13 @@ use crate::kernel::params::Compact;
 /// half-plane envelope holds for (docs/theory.md, "The Hertzian cylinder in CI": against 12 a,
 /// 6 a moves s(a) by +2.2 % and a by -0.8 %, c not at all; 4 a moves s(a) by +6 % and c by 0.1 a).
 pub const BODY_SIZE: f64 = 6.0;
+/// The largest a / R the deck's geometry holds: the cylinder's arc at the bodies' edge (x =
+/// [`BODY_SIZE`] a) rises R - sqrt(R^2 - 36 a^2), which must stay within half the bodies' depth
+/// (3 a), or the elements at the top of the cylinder are squashed and, from a / R = 1/6 on, the
+/// arc leaves the disc (its coordinates are then NaN): R >= 7.5 a, a / R <= 2/15. It is far
+/// beyond the half-plane envelope's own reach (a / R <= 0.047, `validity`), so it refuses no case
+/// the verdict judges.
+pub const MAX_HALF_WIDTH_OVER_RADIUS: f64 = 2.0 / 15.0;
 /// Elements per contact half-width of the coarse mesh (the fine mesh has twice as many).
 pub const PER_HALF_WIDTH: usize = 8;
 
