@@ -18,6 +18,7 @@ use pyo3::prelude::*;
 mod bridge;
 mod errors;
 mod features;
+mod interrupt;
 mod json;
 mod presets;
 mod problem;
