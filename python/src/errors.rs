@@ -83,7 +83,8 @@ pub fn ensure_memory(bytes: f64, what: impl FnOnce() -> String) -> PyResult<()> 
             bytes / 1e9
         ))
     };
-    if !(bytes < isize::MAX as f64) {
+    // NaN or beyond what one allocation may be: refused as such.
+    if bytes.is_nan() || bytes >= isize::MAX as f64 {
         return Err(refused());
     }
     let mut probe: Vec<u8> = Vec::new();

@@ -1,8 +1,10 @@
 //! `Problem.sweep(**{key: array})`: the problem solved at every value of one parameter, the
 //! others held, into numpy arrays. Each point is `AnyProblem::answers` (and `quantity_at` for the
 //! quantities asked for) at the same values a scalar `solve` would use, so a sweep equals the
-//! scalar loop bit for bit; the loop runs with the GIL released, into `Vec`s that numpy then owns
-//! without a copy.
+//! scalar loop bit for bit. The result arrays are numpy's, allocated before any point is solved
+//! (a sweep too large for memory is numpy's `MemoryError`, never an abort); the loop runs with the
+//! GIL released, split across cores, each chunk writing its own rows, and stops at Ctrl-C
+//! (`interrupt`: every point is a checkpoint).
 
 use microslip::kernel::regime::Regime;
 use microslip::problems::problem::ProblemError;
@@ -16,7 +18,7 @@ use pyo3::exceptions::{PyMemoryError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-use crate::errors::problem_error;
+use crate::errors::{guard, problem_error};
 use crate::interrupt::interruptible;
 use crate::problem::Problem;
 use crate::registry::{param_index_or_error, quantity_named};
@@ -114,6 +116,9 @@ fn run(
     }
     Ok(labels)
 }
+
+/// Most points a sweep solves without listening for Ctrl-C ([`interruptible`]).
+const INLINE_POINTS: usize = 64;
 
 /// Fewest points a thread is given: below this, starting it costs more than it saves.
 const MIN_CHUNK: usize = 32_768;
@@ -321,9 +326,15 @@ pub fn sweep<'py>(
         regimes: pair(slices(&mut g)?)?,
         quantities: slices(&mut q)?,
     };
-    let solved = interruptible(py, |cancel| {
-        run_parallel(kind, (&values, index), xs, &wanted, out, cancel)
-    })?;
+    let solved = if points <= INLINE_POINTS {
+        // Too short to need Ctrl-C (a fifth of a second for the slowest problem): on this
+        // thread, without the watcher thread's start (tens of microseconds).
+        py.detach(|| guard(|| run(kind, values, index, xs, &wanted, out)))?
+    } else {
+        interruptible(py, |cancel| {
+            run_parallel(kind, (&values, index), xs, &wanted, out, cancel)
+        })?
+    };
     let labels = solved.map_err(|(i, e)| problem_error(py, &e, &format!("{key}[{i}]: ")))?;
     drop((r, z, g, q, readonly));
 
