@@ -82,7 +82,11 @@ Sweep = dict[str, Any]
 ``regime_*`` codes index."""
 
 class Problem:
-    """A valid parameter set of one problem (frozen); the base of every problem class."""
+    """A valid parameter set of one problem (frozen); the base of every problem class.
+
+    The long calls (sweep, cycle, kt_tolerance, fit, continuum, deck, compare, to_dict) release
+    the GIL and stop at Ctrl-C: KeyboardInterrupt within a fraction of a second. Results too large
+    for the memory the process may use raise MemoryError."""
 
     description: ClassVar[dict[str, Any]]
     @property
@@ -161,7 +165,7 @@ class TwinBeams(Problem):
     def solve(self, F: Optional[float] = None) -> Solution:
         """Both laws at this data set, or at the load F (N)."""
     def sweep(self, *, quantities: Union[Sequence[str], Literal['all'], None] = None, L: npt.ArrayLike = ..., b: npt.ArrayLike = ..., h: npt.ArrayLike = ..., E: npt.ArrayLike = ..., nu: npt.ArrayLike = ..., P: npt.ArrayLike = ..., mu: npt.ArrayLike = ..., KT: npt.ArrayLike = ..., F: npt.ArrayLike = ...) -> Sweep:
-        """Solved at every value of one parameter (given in its unit); response keys w_coulomb, w_regularized (mm); quantities among 'w(L)', 'X', 'ratio', 'F_1', 'D', 'zeta'."""
+        """Solved at every value of one parameter (given in its unit); response keys w_coulomb, w_regularized (mm); quantities among 'w(L)', 'X', 'ratio', 'F_1', 'D', 'zeta'. MemoryError when the result arrays do not fit."""
 
 class Plate(Problem):
     """Squeezed plate (paper section 2.2)."""
@@ -186,7 +190,7 @@ class Plate(Problem):
     def solve(self) -> Solution:
         """Both laws at this data set."""
     def sweep(self, *, quantities: Union[Sequence[str], Literal['all'], None] = None, L: npt.ArrayLike = ..., tp: npt.ArrayLike = ..., E: npt.ArrayLike = ..., nu: npt.ArrayLike = ..., mu: npt.ArrayLike = ..., P: npt.ArrayLike = ..., KT: npt.ArrayLike = ...) -> Sweep:
-        """Solved at every value of one parameter (given in its unit); response keys u_coulomb, u_regularized (mm); quantities among 'u(L)', 'X_r', 'ratio'."""
+        """Solved at every value of one parameter (given in its unit); response keys u_coulomb, u_regularized (mm); quantities among 'u(L)', 'X_r', 'ratio'. MemoryError when the result arrays do not fit."""
 
 class LapJoint(Problem):
     """Clamped double-lap joint (shear lag, docs/theory.md section 9)."""
@@ -217,7 +221,7 @@ class LapJoint(Problem):
     def solve(self, F: Optional[float] = None) -> Solution:
         """Both laws at this data set, or at the load F (N)."""
     def sweep(self, *, quantities: Union[Sequence[str], Literal['all'], None] = None, L: npt.ArrayLike = ..., b: npt.ArrayLike = ..., t1: npt.ArrayLike = ..., t2: npt.ArrayLike = ..., E1: npt.ArrayLike = ..., E2: npt.ArrayLike = ..., P: npt.ArrayLike = ..., mu: npt.ArrayLike = ..., KT: npt.ArrayLike = ..., F: npt.ArrayLike = ...) -> Sweep:
-        """Solved at every value of one parameter (given in its unit); response keys Delta_coulomb, Delta_regularized (mm); quantities among 'Delta', 'a', 'd', 'ratio', 'F_1', 'D', 'zeta'."""
+        """Solved at every value of one parameter (given in its unit); response keys Delta_coulomb, Delta_regularized (mm); quantities among 'Delta', 'a', 'd', 'ratio', 'F_1', 'D', 'zeta'. MemoryError when the result arrays do not fit."""
 
 class HertzianCylinder(Problem):
     """Hertzian cylinder on a flat under a tangential line load (Cattaneo-Mindlin, regularized; docs/theory.md, the Hertzian cylinder)."""
@@ -242,7 +246,7 @@ class HertzianCylinder(Problem):
     def solve(self, F: Optional[float] = None) -> Solution:
         """Both laws at this data set, or at the load F (N)."""
     def sweep(self, *, quantities: Union[Sequence[str], Literal['all'], None] = None, R: npt.ArrayLike = ..., E: npt.ArrayLike = ..., nu: npt.ArrayLike = ..., P: npt.ArrayLike = ..., mu: npt.ArrayLike = ..., KT: npt.ArrayLike = ..., Q: npt.ArrayLike = ...) -> Sweep:
-        """Solved at every value of one parameter (given in its unit); response keys sa_coulomb, sa_regularized (mm); quantities among 's(a)', 'c', 'ratio'."""
+        """Solved at every value of one parameter (given in its unit); response keys sa_coulomb, sa_regularized (mm); quantities among 's(a)', 'c', 'ratio'. MemoryError when the result arrays do not fit."""
 
 def preset(name: str) -> Problem:
     """The problem of a preset: a bundled name, a user preset or a TOML path."""

@@ -95,7 +95,11 @@ Sweep = dict[str, Any]
 ``regime_*`` codes index."""
 
 class Problem:
-    """A valid parameter set of one problem (frozen); the base of every problem class."""
+    """A valid parameter set of one problem (frozen); the base of every problem class.
+
+    The long calls (sweep, cycle, kt_tolerance, fit, continuum, deck, compare, to_dict) release
+    the GIL and stop at Ctrl-C: KeyboardInterrupt within a fraction of a second. Results too large
+    for the memory the process may use raise MemoryError."""
 
     description: ClassVar[dict[str, Any]]
     @property
@@ -197,7 +201,7 @@ def _class(entry: dict, class_name: str) -> str:
     lines.append(
         f'        """Solved at every value of one parameter (given in its unit); response keys '
         f'{entry["response_symbol"]}_coulomb, {entry["response_symbol"]}_regularized (mm); '
-        f'quantities among {quantity_names}."""'
+        f'quantities among {quantity_names}. MemoryError when the result arrays do not fit."""'
     )
     return "\n".join(lines) + "\n"
 

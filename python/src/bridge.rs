@@ -23,6 +23,7 @@ use microslip::fe::load;
 use microslip::fit::{self, Weights};
 use microslip::kernel::params::{Compact, Domain, Unit};
 use microslip::kernel::validity::Validity;
+use microslip::numeric::cancel::checkpoint;
 use microslip::problems::cylinder::problem::CylinderProblem;
 use microslip::problems::inputs::Model;
 use microslip::problems::lap::LapJointProblem;
@@ -439,10 +440,12 @@ pub fn fit_report(
         )
     })?;
     let csv = measurement_csv(&structure, points);
+    // Ctrl-C (`interrupt`) stops the parse and the fit at their progress ticks and at each
+    // measurement the fit evaluates.
     let measured = microslip::measured::parse_measured_response_with_progress(
         &csv,
         &structure,
-        &mut |_, _| {},
+        &mut |_, _| checkpoint(),
     )
     .map_err(|e| format!("{data}: {e}"))?;
     let weights = match (measured.sigma.as_deref(), weights) {
@@ -462,8 +465,10 @@ pub fn fit_report(
             ));
         }
     };
-    let result = fit::fit_measured(structure, &measured.points, fixed, weights, &mut |_| {})
-        .map_err(|e| e.to_string())?;
+    let result = fit::fit_measured(structure, &measured.points, fixed, weights, &mut |_| {
+        checkpoint()
+    })
+    .map_err(|e| e.to_string())?;
     Ok(json::fit(data, name, &structure, &result))
 }
 

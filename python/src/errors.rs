@@ -7,7 +7,7 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use microslip::kernel::params::ParamError;
 use microslip::problems::problem::ProblemError;
-use pyo3::exceptions::{PyRuntimeError, PyTypeError, PyValueError};
+use pyo3::exceptions::{PyMemoryError, PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 
 pyo3::create_exception!(
@@ -69,4 +69,26 @@ pub fn guard<T>(work: impl FnOnce() -> T) -> PyResult<T> {
 #[pyfunction]
 pub fn _panic_check(py: Python<'_>) -> PyResult<()> {
     py.detach(|| guard(|| -> () { panic!("deliberate panic for the test suite") }))
+}
+
+/// Refuses, as a `MemoryError`, work whose largest allocations (about `bytes` in all) the process
+/// cannot make (issue 46, item 8): Rust aborts the interpreter on a failed allocation, so the
+/// address space is asked for first, all at once, and given back at once (the pages are never
+/// touched, so it costs nothing where it succeeds). `what` says what needed it.
+pub fn ensure_memory(bytes: f64, what: impl FnOnce() -> String) -> PyResult<()> {
+    let refused = || {
+        PyMemoryError::new_err(format!(
+            "{} needs about {:.3} GB, more than this process can allocate",
+            what(),
+            bytes / 1e9
+        ))
+    };
+    // NaN or beyond what one allocation may be: refused as such.
+    if bytes.is_nan() || bytes >= isize::MAX as f64 {
+        return Err(refused());
+    }
+    let mut probe: Vec<u8> = Vec::new();
+    probe
+        .try_reserve_exact(bytes as usize)
+        .map_err(|_| refused())
 }

@@ -1,5 +1,5 @@
-//! The features beyond one solve, behind `Problem`'s methods: each runs with the GIL released
-//! and the panic guard, and returns the application's JSON report as a `microslip.Report` (or
+//! The features beyond one solve, behind `Problem`'s methods: each runs with the GIL released,
+//! the panic guard and Ctrl-C heard (`interrupt::interruptible`), and returns the application's JSON report as a `microslip.Report` (or
 //! text, a number). Those that need only the core live here (`fe_defaults`, `continuum`); those
 //! that mirror a CLI command's body (reports, decks, comparisons) go through `bridge`.
 
@@ -12,16 +12,18 @@ use pyo3::prelude::*;
 use serde_json::Value;
 
 use crate::bridge::{self, Of, check_flag};
-use crate::errors::{guard, value_error};
+use crate::errors::{ensure_memory, value_error};
+use crate::interrupt::interruptible;
 use crate::json::to_python;
 use crate::problem::Problem;
 
-/// Runs `work` with the GIL released and the panic guard; its refusal as a `ValueError`.
+/// Runs `work` with the GIL released and the panic guard, stopped by Ctrl-C
+/// ([`interruptible`]: `KeyboardInterrupt`); its refusal as a `ValueError`.
 pub fn released<T: Send>(
     py: Python<'_>,
     work: impl FnOnce() -> Result<T, String> + Send,
 ) -> PyResult<T> {
-    py.detach(|| guard(work))?.map_err(value_error)
+    interruptible(py, |_| work())?.map_err(value_error)
 }
 
 /// A JSON report as a `microslip.Report` (read-only, attribute access, `to_dict()`).
@@ -153,6 +155,11 @@ pub fn fit<'py>(
                 .map_or_else(|| "none".to_string(), |s| s.len().to_string())
         )));
     }
+    // The points written as the CLI's CSV (up to three numbers of 25 characters a row), read
+    // back, and the fit's residuals and subsamples: generously 256 bytes a point.
+    ensure_memory(forces.len() as f64 * FIT_BYTES_PER_POINT, || {
+        format!("a fit of {} points", forces.len())
+    })?;
     let value = released(py, || {
         bridge::fit_report(
             problem.kind,
@@ -165,6 +172,9 @@ pub fn fit<'py>(
     })?;
     report(py, &value)
 }
+
+/// What a fit allocates per measured point, at most (see [`fit`]).
+const FIT_BYTES_PER_POINT: f64 = 256.0;
 
 /// `microslip deck ccx MODEL --format ...`: the deck's text.
 pub fn deck(
@@ -188,10 +198,41 @@ pub fn deck(
             )));
         }
     };
-    released(py, || {
-        bridge::deck_text(problem.kind, &problem.values, mesh, loads.as_deref())
-    })
+    let (kind, values) = (problem.kind, &problem.values);
+    interruptible(py, |_| {
+        if let Some(loads) = loads.as_deref().filter(|l| l.len() > DECK_UNCHECKED) {
+            ensure_memory(deck_bytes(kind, values, mesh, loads)?, || {
+                format!("a deck of {} load steps", loads.len())
+            })?;
+        }
+        bridge::deck_text(kind, values, mesh, loads.as_deref()).map_err(value_error)
+    })?
 }
+
+/// Up to how many load steps a deck is written without first checking that its text fits in
+/// memory (a few MB at most).
+const DECK_UNCHECKED: usize = 4096;
+
+/// How many bytes writing the deck of `loads` takes at its peak: its text (from the decks of
+/// the first load and the first [`DECK_SAMPLE`] loads, the steps' mean length), up to twice that
+/// while the text grows, and its copy as a Python `str`.
+fn deck_bytes(
+    kind: microslip::problems::ModelKind,
+    values: &[f64],
+    mesh: DeckMesh,
+    loads: &[f64],
+) -> PyResult<f64> {
+    let text = |n: usize| -> PyResult<f64> {
+        let deck = bridge::deck_text(kind, values, mesh, Some(&loads[..n])).map_err(value_error)?;
+        Ok(deck.len() as f64)
+    };
+    let (one, some) = (text(1)?, text(DECK_SAMPLE)?);
+    let step = (some - one) / (DECK_SAMPLE - 1) as f64;
+    Ok(3.0 * (one + step * (loads.len() - 1) as f64))
+}
+
+/// How many load steps [`deck_bytes`] writes to measure a step's length.
+const DECK_SAMPLE: usize = 17;
 
 /// `microslip compare MODEL RESULT [--deck INP] --format json` for one result file.
 #[pyfunction]

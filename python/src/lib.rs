@@ -5,19 +5,22 @@
 //!
 //! Layout, one job per module: `registry` (the descriptions as data), `problem` (a validated
 //! parameter set), `solution` (one solve), `sweep` (many, into numpy), `features` (cycle, K_T,
-//! fit, continuum, decks, compare), `presets`, `bridge` (the CLI's command bodies, written once over
+//! fit, continuum, decks, compare), `presets`, `interrupt` (Ctrl-C during a long call), `bridge` (the CLI's command bodies, written once over
 //! the application's generic functions and dispatched from the registry; the only code naming a
 //! problem, where the application still has one function per problem), `json` (reports as Python objects), `errors`
-//! (refusals as `ParameterError`, panics as `RuntimeError`).
+//! (refusals as `ParameterError`, panics as `RuntimeError`, work too large for memory as
+//! `MemoryError`).
 //!
 //! Every number comes from the same core functions the CLI calls, so Python and
-//! `--format json` agree to the last bit; every solve releases the GIL.
+//! `--format json` agree to the last bit; every solve releases the GIL, and every long one stops at
+//! Ctrl-C (`KeyboardInterrupt`).
 
 use pyo3::prelude::*;
 
 mod bridge;
 mod errors;
 mod features;
+mod interrupt;
 mod json;
 mod presets;
 mod problem;

@@ -203,7 +203,8 @@ impl Problem {
     ///   undefined.
     ///
     /// A value outside its domain raises `ParameterError` naming its index. The GIL is released
-    /// while it solves.
+    /// while it solves; Ctrl-C raises `KeyboardInterrupt` within a fraction of a second; result
+    /// arrays too large for memory raise `MemoryError` before any point is solved.
     #[pyo3(signature = (*, quantities = None, **parameter))]
     fn sweep<'py>(
         &self,

@@ -10,7 +10,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::bridge;
-use crate::errors::{guard, problem_error, value_error};
+use crate::errors::{guard, problem_error};
 use crate::json::to_python;
 use crate::registry::{load_index, params_dict, quantity_named, unit_symbol};
 
@@ -186,11 +186,11 @@ impl Solution {
     /// The report `microslip <model> --format json` prints for the same values, as a dict (its
     /// `preset` is this data set's name). The plate's and the joint's include the continuum
     /// reference where the reduced theory does not hold, as the CLI's do (the GIL is released
-    /// while it solves).
+    /// while it solves, and Ctrl-C stops it).
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let value = py
-            .detach(|| guard(|| bridge::point_report(self.kind, &self.values, &self.name)))?
-            .map_err(value_error)?;
+        let value = crate::features::released(py, || {
+            bridge::point_report(self.kind, &self.values, &self.name)
+        })?;
         to_python(py, &value)
     }
 

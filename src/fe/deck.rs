@@ -164,6 +164,9 @@ pub(crate) fn load_steps(
     let mut from = 0.0;
     let mut steps = Vec::with_capacity(loads.len());
     for (n, &to) in loads.iter().enumerate() {
+        // A deck of many load steps is long work: a caller that cancels it (the Python face's
+        // Ctrl-C) stops here and at each step's `*CLOAD` ([`write_cload`]).
+        crate::numeric::cancel::checkpoint();
         let step = match LoadPath::ramp(force_step, onset, from, to) {
             Some((t1, points)) => {
                 let name = format!("RAMP{}", n + 2);
@@ -191,6 +194,7 @@ pub(crate) fn load_steps(
 
 /// The `*CLOAD` card of a load step, following its amplitude when it has one.
 pub(crate) fn write_cload(deck: &mut String, amplitude: Option<&str>) {
+    crate::numeric::cancel::checkpoint();
     match amplitude {
         Some(name) => {
             let _ = writeln!(deck, "*CLOAD, AMPLITUDE={name}");

@@ -248,6 +248,8 @@ impl Deck for CylinderProblem {
             number(cylinder.peak_pressure()),
         );
         for &q in &header.loads {
+            // One solve per load step: a caller that cancels the deck stops here.
+            crate::numeric::cancel::checkpoint();
             let load = cylinder.clamped_load(q);
             let state = cylinder.regularized(load);
             let _ = writeln!(

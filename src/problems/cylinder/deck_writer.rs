@@ -353,6 +353,8 @@ pub fn cylinder_deck(
     outputs(&mut deck);
     let mut from = 0.0;
     for (n, &q) in loads.iter().enumerate() {
+        // A deck of many load steps is long work: a caller that cancels it stops here.
+        crate::numeric::cancel::checkpoint();
         let _ = writeln!(
             deck,
             "** step {}: the tangential line load Q = {} N/mm, in increments of at most {} N/mm",

@@ -538,6 +538,8 @@ impl Deck for LapJointProblem {
              **   F (N) | Delta Coulomb (mm) | Delta regularized (mm) | a (mm) | d (mm) | regime"
         );
         for &f in &header.loads {
+            // One solve per load step: a caller that cancels the deck stops here.
+            crate::numeric::cancel::checkpoint();
             let force = joint.clamped_force(f);
             let state = joint.regularized(force);
             let _ = writeln!(

@@ -459,6 +459,8 @@ impl Deck for TwinBeamsProblem {
             Compact(header.poisson)
         );
         for &f in &header.loads {
+            // One solve per load step: a caller that cancels the deck stops here.
+            crate::numeric::cancel::checkpoint();
             let force = TipForce::clamped(f);
             let state = beams.regularized(force);
             let w = state.tip_deflection();

@@ -6,6 +6,7 @@ use super::progress::{PROGRESS_EVERY, Pass, Progress};
 use super::small::{self, MAX_FREE, Matrix, Vector};
 use super::structure::Structure;
 use super::{KT_RANGE, Measurement};
+use crate::numeric::cancel::checkpoint;
 use crate::problems::fittable::FitCurve;
 
 /// Grid points per decade of the bracketing search.
@@ -75,6 +76,10 @@ impl Problem<'_> {
             if i % PROGRESS_EVERY == 0 {
                 tick(i);
             }
+            // A caller that cancels the fit (the Python face's Ctrl-C, a UI worker) stops it at
+            // the next measurement: one point of a slow structure (the cylinder's collocation)
+            // takes milliseconds, a progress tick's PROGRESS_EVERY of them a minute.
+            checkpoint();
             residuals.push((curve.response(m.force)? - m.response) / sigma);
         }
         Some(residuals)
@@ -88,6 +93,7 @@ impl Problem<'_> {
         };
         let mut sum = 0.0;
         for (m, sigma) in self.data.iter().zip(self.sigma) {
+            checkpoint();
             let Some(response) = curve.response(m.force) else {
                 return f64::INFINITY;
             };
@@ -127,6 +133,7 @@ impl Problem<'_> {
             if i % PROGRESS_EVERY == 0 {
                 tick(i);
             }
+            checkpoint();
             for (entry, curve) in row.iter_mut().zip(&shifted).take(free) {
                 *entry = match curve.as_ref().and_then(|c| c.response(m.force)) {
                     Some(response) => ((response - m.response) / sigma - r) / JACOBIAN_STEP,
