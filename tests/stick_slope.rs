@@ -364,12 +364,18 @@ fn the_beams_continuum_verdict_allows_for_nlgeom_and_not_for_linear_geometry() {
             args.push(k.as_ref());
         }
         let output = microslip(args);
-        assert!(
-            output.status.success(),
+        let json: Value = serde_json::from_slice(&output.stdout).unwrap();
+        // Exit 0 exactly when the verdict agrees (issue 46, item 6).
+        assert_eq!(
+            output.status.code(),
+            Some(if json["verdict"]["agrees"] == true {
+                0
+            } else {
+                1
+            }),
             "{}",
             String::from_utf8_lossy(&output.stderr)
         );
-        let json: Value = serde_json::from_slice(&output.stdout).unwrap();
         json["rows"]
             .as_array()
             .unwrap()

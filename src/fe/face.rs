@@ -163,8 +163,11 @@ pub fn written_deck<P: Deck>(model: &P::Model, request: &DeckRequest) -> Result<
     match first_non_finite_line(&text) {
         Some((line, content)) => Err(DeckError::NonFinite {
             line,
-            text: crate::report::sanitize(&content.chars().take(60).collect::<String>())
-                .into_owned(),
+            text: content
+                .chars()
+                .take(60)
+                .flat_map(char::escape_debug)
+                .collect(),
         }),
         None => Ok(text),
     }
