@@ -48,7 +48,6 @@ pub(super) fn build_deck(
         },
         DeckError::Usage(why) => CliError::Usage(why),
         DeckError::TooLarge(e) => CliError::Invalid(e.to_string()),
-        DeckError::Param(e) => CliError::Param(e),
         e @ DeckError::NonFinite { .. } => CliError::Invalid(e.to_string()),
     })
 }

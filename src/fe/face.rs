@@ -118,7 +118,8 @@ pub struct DeckRequest<'a> {
 /// own error of the same text; the Python face prints it as is).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum DeckError {
-    /// A flag's value refused: the flag, the value, and what is allowed.
+    /// A flag's value refused, or a parameter the deck's geometry cannot hold (the cylinder's
+    /// arc wider than its bodies): the flag or key, the value, and what is allowed.
     #[error("invalid {flag} = {}: {allowed}", crate::kernel::params::Compact(*value))]
     Flag {
         /// The flag (`--loads`).
@@ -134,10 +135,6 @@ pub enum DeckError {
     /// The mesh would be too large.
     #[error(transparent)]
     TooLarge(DeckTooLarge),
-    /// A model the deck's geometry cannot hold (the cylinder's arc wider than its bodies): the
-    /// parameter, its value and the range the deck takes.
-    #[error(transparent)]
-    Param(#[from] crate::kernel::params::ParamError),
     /// The deck as written holds a number that is not finite: refused rather than written, so
     /// that no FE code is ever given one (a problem's deck writer missed a case of its inputs).
     #[error(

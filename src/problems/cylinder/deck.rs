@@ -334,30 +334,47 @@ impl Deck for CylinderProblem {
 }
 
 /// Refuses a cylinder whose arc the deck's bodies cannot hold (a / R above
-/// [`MAX_HALF_WIDTH_OVER_RADIUS`]), naming R and the least R the deck takes at this P and E:
-/// a / R = sqrt(4 P / (pi E* R)), so a / R <= k is R >= 4 P / (pi E* k^2).
-fn fits_the_deck(cylinder: &Cylinder) -> Result<(), ParamError> {
-    let ratio = cylinder.half_width() / cylinder.params().radius;
+/// [`MAX_HALF_WIDTH_OVER_RADIUS`]), naming R, a / R and the least R the deck takes at this P and
+/// E: a / R = sqrt(4 P / (pi E* R)), so a / R <= k is R >= 4 P / (pi E* k^2) (rounded up to 4
+/// digits, so that the R it names is taken). Where that is beyond R's own domain, no R helps and
+/// the message says to change P or E.
+fn fits_the_deck(cylinder: &Cylinder) -> Result<(), DeckError> {
+    let p = cylinder.params();
+    let ratio = cylinder.half_width() / p.radius;
     if ratio <= MAX_HALF_WIDTH_OVER_RADIUS {
         return Ok(());
     }
-    let least = 4.0 * cylinder.params().normal_load
+    let least = 4.0 * p.normal_load
         / (std::f64::consts::PI * cylinder.contact_modulus() * MAX_HALF_WIDTH_OVER_RADIUS.powi(2));
-    let spec = super::params::CylinderParam::Radius.spec();
-    Err(ParamError {
-        field: spec.name,
-        value: cylinder.params().radius,
-        domain: Domain::Positive {
-            min: least,
-            max: Domain::LENGTH.max(),
-        },
-        unit: spec.unit,
-        reason: None,
-    }
-    .because(
-        "the deck's bodies are 6 a wide and deep: the cylinder's arc fits them up to a / R = \
-         2/15 (R >= 7.5 a); a larger R, a smaller P or a stiffer E",
-    ))
+    let scale = 10f64.powf(least.log10().floor() - 3.0);
+    let least = (least / scale).ceil() * scale;
+    let why = format!(
+        "a / R = {} here, and the deck's bodies (6 a wide and deep) hold the cylinder's arc up to \
+         a / R = 2/15 (R >= 7.5 a)",
+        number(ratio)
+    );
+    let allowed = if least <= Domain::LENGTH.max() {
+        format!(
+            "the deck takes R >= {} mm at P = {} N/mm and E = {} MPa ({why}); or a smaller P \
+             or a stiffer E",
+            Compact(least),
+            Compact(p.normal_load),
+            Compact(p.modulus)
+        )
+    } else {
+        format!(
+            "no accepted R (at most {} mm) holds this contact in the deck at P = {} N/mm and \
+             E = {} MPa ({why}); a smaller P or a stiffer E",
+            Compact(Domain::LENGTH.max()),
+            Compact(p.normal_load),
+            Compact(p.modulus)
+        )
+    };
+    Err(DeckError::Flag {
+        flag: "R",
+        value: p.radius,
+        allowed,
+    })
 }
 
 /// One row of `microslip compare cylinder`.
@@ -849,8 +866,25 @@ mod envelope {
         let refused = crate::fe::face::written_deck::<CylinderProblem>(&model(0.3), &request)
             .unwrap_err()
             .to_string();
-        assert!(refused.starts_with("invalid R = 0.3"), "{refused}");
-        assert!(refused.contains("a / R"), "{refused}");
+        assert!(
+            refused.starts_with("invalid R = 0.3: the deck takes R >= 0.6208 mm"),
+            "{refused}"
+        );
+        assert!(refused.contains("a / R = 0.191788 here"), "{refused}");
+        // Where no R of the domain would do, it says to change P or E instead.
+        let cylinder = Cylinder::new(CylinderParams {
+            modulus: 1e-4,
+            ..params(50.0)
+        })
+        .unwrap();
+        let soft = CylinderModel {
+            load: cylinder.clamped_load(0.0),
+            cylinder,
+        };
+        let refused = crate::fe::face::written_deck::<CylinderProblem>(&soft, &request)
+            .unwrap_err()
+            .to_string();
+        assert!(refused.contains("no accepted R"), "{refused}");
         // The least R it names is the bound itself: a / R = 2/15 there, and it is written.
         let cylinder = Cylinder::new(params(0.3)).unwrap();
         let least = 4.0 * 1000.0
