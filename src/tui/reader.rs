@@ -77,7 +77,7 @@ impl From<Report> for Input {
 #[derive(Debug, Default)]
 pub struct Keyboard {
     queued: AtomicUsize,
-    urgent: AtomicBool,
+    urgent: AtomicUsize,
     interrupt: AtomicBool,
 }
 
@@ -91,18 +91,18 @@ impl Keyboard {
                     .fetch_update(Ordering::SeqCst, Ordering::SeqCst, |n| n.checked_sub(1));
             }
             Input::Urgent(_) => {
-                let _ = self
-                    .queued
-                    .fetch_update(Ordering::SeqCst, Ordering::SeqCst, |n| n.checked_sub(1));
-                self.urgent.store(false, Ordering::SeqCst);
+                for count in [&self.queued, &self.urgent] {
+                    let _ = count
+                        .fetch_update(Ordering::SeqCst, Ordering::SeqCst, |n| n.checked_sub(1));
+                }
             }
             _ => {}
         }
     }
 
-    /// True when an urgent key waits in the channel (see [`Input::Urgent`]).
+    /// True when an urgent key waits in the channel (see [`Input::Urgent`]), or is about to.
     pub fn urgent(&self) -> bool {
-        self.urgent.load(Ordering::SeqCst)
+        self.urgent.load(Ordering::SeqCst) > 0
     }
 
     /// True once Ctrl-C has been pressed.
@@ -307,17 +307,17 @@ impl Reader {
         if is_press(&event) {
             self.keyboard.queued.fetch_add(1, Ordering::SeqCst);
         }
+        // Counted before the send, so that the loop, which counts it down when it takes the key,
+        // never sees a count for a key it has already taken (it would then drop the keys that
+        // follow). Seen a moment before the key is in the channel, it drops only keys that the
+        // key would have dropped anyway.
         let input = if urgent {
+            self.keyboard.urgent.fetch_add(1, Ordering::SeqCst);
             Input::Urgent(event)
         } else {
             Input::Terminal(Ok(event))
         };
-        self.sender.send(input).map_err(|_| Ended)?;
-        // After the send: when the loop sees the flag, the key is in the channel.
-        if urgent {
-            self.keyboard.urgent.store(true, Ordering::SeqCst);
-        }
-        Ok(())
+        self.sender.send(input).map_err(|_| Ended)
     }
 }
 
@@ -434,7 +434,7 @@ mod tests {
     fn the_keyboard_counts_what_waits() {
         let keyboard = Keyboard::default();
         keyboard.queued.store(3, Ordering::SeqCst);
-        keyboard.urgent.store(true, Ordering::SeqCst);
+        keyboard.urgent.store(1, Ordering::SeqCst);
         keyboard.taken(&Input::Terminal(Ok(Event::Key(key('j')))));
         keyboard.taken(&Input::Terminal(Ok(Event::Paste("x".into()))));
         assert_eq!(keyboard.queued(), 2);
