@@ -264,8 +264,10 @@ fn a_signal_is_acted_on_even_behind_a_storm_of_keys() {
     let (mut session, mut child) = start();
     session.wait_for("Twin beams");
     let pid = microslip_pid(child.as_ref());
-    // 20 000 keys that each change a parameter (and so recompute the chart), queued at once.
-    let storm = "lh".repeat(10_000);
+    // 20 000 keys that each change a parameter (and so recompute the chart), queued at once: one
+    // key held down, which stays keys (two keys alternating would be a paste, see
+    // `an_unbracketed_paste_is_one_paste_and_q_after_it_quits_at_once`).
+    let storm = "l".repeat(20_000);
     let writer_keys = storm.clone();
     let mut writer = std::mem::replace(&mut session.writer, Box::new(std::io::sink()));
     let typing = std::thread::spawn(move || {
@@ -451,6 +453,100 @@ fn a_paste_is_text_in_the_value_field_and_never_keys() {
     session.wait_for("paste ignored");
     session.quit_answering_yes();
     let _ = child.wait();
+}
+
+/// 100 kB of printable text as a terminal that does not bracket a paste sends it (`tmux
+/// paste-buffer` without `-p`): keys, written as fast as the terminal takes them. No `q` or `y`
+/// in it, so that applying it as keys (as before) could not quit by itself.
+fn unbracketed_paste() -> String {
+    let mut state = 0x2545_f491_u64;
+    let mut text = String::with_capacity(100_000);
+    while text.len() < 100_000 {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1);
+        let c = char::from(b' ' + ((state >> 33) % 95) as u8);
+        if !matches!(c, 'q' | 'Q' | 'y' | 'Y') {
+            text.push(c);
+        }
+    }
+    text
+}
+
+/// Writes `keys` on a thread of its own (the terminal takes them only as fast as the program
+/// reads them) and returns when all are written; panics if the program stops reading for 20 s
+/// (crossterm's edge-triggered reader did, until the next key: the terminal's buffer full, the
+/// writer waiting for room, no new input to wake the reader).
+fn type_all(session: &mut Session, keys: String) {
+    let mut writer = std::mem::replace(&mut session.writer, Box::new(std::io::sink()));
+    let typing = std::thread::spawn(move || {
+        let _ = writer.write_all(keys.as_bytes());
+        let _ = writer.flush();
+        writer
+    });
+    let start = Instant::now();
+    while !typing.is_finished() {
+        assert!(
+            start.elapsed() < Duration::from_secs(20),
+            "the program stopped reading the terminal part way through the keys"
+        );
+        session.pump(Duration::from_millis(10));
+    }
+    session.writer = typing.join().unwrap();
+}
+
+/// Sends `key`, and sees the program exit 0 within `limit`; returns how long that took.
+fn quits_within(session: &mut Session, key: &str, limit: Duration, when: &str) -> Duration {
+    let sent = Instant::now();
+    session.send(key);
+    session.wait_until_within("EXIT=0", limit.max(Duration::from_secs(10)), |s| {
+        String::from_utf8_lossy(&s.raw).contains("EXIT=0")
+    });
+    let took = sent.elapsed();
+    eprintln!("{key:?} {when}: exit seen after {took:?}");
+    assert!(took < limit, "{key:?} {when} took {took:?}");
+    took
+}
+
+/// Issue 46 (9): a 100 kB paste that came as keys (no bracketed paste) is one paste, ignored on
+/// the main screen with a note, and `q` typed after it quits at once. Before, the paste was
+/// 100 000 commands applied one by one (93 s on the beams), and `q` waited behind them all; a
+/// part of the paste also stayed unread until the next key (crossterm's edge-triggered reader).
+#[test]
+fn an_unbracketed_paste_is_one_paste_and_q_after_it_quits_at_once() {
+    let (mut session, mut child) = start();
+    session.wait_for("Twin beams");
+    type_all(&mut session, unbracketed_paste());
+    session.wait_for("paste ignored");
+    // Nothing of it acted: no parameter was changed, no mode entered.
+    let screen = session.parser.screen().contents();
+    assert!(screen.contains("paper-beams |"), "{screen}");
+    // Measured (debug build): 30 to 60 ms; the bound leaves room for a loaded machine.
+    quits_within(
+        &mut session,
+        "q",
+        Duration::from_secs(2),
+        "after a 100 kB paste",
+    );
+    session.assert_restored();
+    let _ = child.wait();
+}
+
+/// Issue 46 (9): `q` typed behind 100 000 queued keys (one key held down, which stays keys)
+/// jumps the queue: the keys before it are dropped and it quits at once. Ctrl-C likewise, from
+/// any mode. Before, each waited for every key queued before it.
+#[test]
+fn q_and_ctrl_c_jump_a_queue_of_held_keys() {
+    for (key, name) in [("q", "q"), ("\u{3}", "Ctrl-C")] {
+        let (mut session, mut child) = start();
+        session.wait_for("Twin beams");
+        // About 5 s of work for a debug build on an idle machine, all queued at once.
+        type_all(&mut session, "j".repeat(100_000));
+        let when = format!("({name}) behind 100 000 queued j");
+        quits_within(&mut session, key, Duration::from_secs(2), &when);
+        session.assert_restored();
+        let _ = child.wait();
+    }
 }
 
 #[test]

@@ -356,6 +356,16 @@ impl App {
         self.error("Not suspended: no job-control shell here could resume microslip (q quits)");
     }
 
+    /// Says that `count` keys waiting to be applied were dropped because a `q` or Esc was typed
+    /// behind them (nothing when none were).
+    pub fn keys_dropped(&mut self, count: usize) {
+        if count > 0 {
+            self.info(format!(
+                "dropped {count} keys still waiting to be applied: q and Esc jump a queue of keys"
+            ));
+        }
+    }
+
     fn info(&mut self, text: impl Into<String>) {
         self.message = Some(Message {
             text: text.into(),
