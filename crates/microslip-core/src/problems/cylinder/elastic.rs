@@ -11,7 +11,7 @@
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
 use super::collocation::Collocation;
-use super::quadrature::{lu_factor, lu_solve};
+use super::quadrature::solve_with_constant;
 
 /// The linear problem's solution for Q / (mu P) = 1 (H17): phi = q / (mu p0) per unit load ratio.
 #[derive(Debug, Clone, PartialEq)]
@@ -76,13 +76,7 @@ pub fn elastic_shape(collocation: &Collocation, kappa: f64) -> Option<ElasticSha
         matrix[n * size + j] = *w;
     }
     rhs[n] = FRAC_PI_4;
-    let mut pivots = vec![0; size];
-    if !lu_factor(&mut matrix, size, &mut pivots) {
-        return None;
-    }
-    lu_solve(&matrix, size, &pivots, &mut rhs);
-    let shift = rhs[n];
-    rhs.truncate(n);
+    let shift = solve_with_constant(&mut matrix, size, &mut rhs)?;
     Some(ElasticShape {
         kappa,
         shift,

@@ -16,7 +16,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 use super::closed_form::{Cylinder, TangentialLoad, edge_root, mindlin_stick_ratio};
 use super::collocation::{Collocation, CollocationMesh};
-use super::quadrature::{lu_factor, lu_solve};
+use super::quadrature::solve_with_constant;
 use super::strips::{strip_area, strip_potential};
 use crate::kernel::params::Domain;
 use crate::kernel::regime::{Regime, Zone};
@@ -209,13 +209,7 @@ fn solve_at(collocation: &Collocation, kappa: f64, angle: f64) -> Option<AtZone>
             rhs[i] -= epsilon * edge;
         }
     }
-    let mut pivots = vec![0; size];
-    if !lu_factor(&mut matrix, size, &mut pivots) {
-        return None;
-    }
-    lu_solve(&matrix, size, &pivots, &mut rhs);
-    let shift = rhs[n];
-    rhs.truncate(n);
+    let shift = solve_with_constant(&mut matrix, size, &mut rhs)?;
     Some(AtZone {
         carried: carried(collocation, zone, angle, &rhs),
         shear: rhs,
