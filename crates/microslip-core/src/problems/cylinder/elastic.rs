@@ -87,31 +87,166 @@ pub fn elastic_shape(collocation: &Collocation, kappa: f64) -> Option<ElasticSha
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::kernel::regime::Law;
+    use crate::problems::cylinder::closed_form::{Cylinder, CylinderParams};
+    use crate::problems::cylinder::discretized::CylinderFe;
     use crate::problems::cylinder::regularized::solve_normalized;
 
+    fn shape(kappa: f64) -> ElasticShape {
+        elastic_shape(Collocation::default_mesh(), kappa).expect("a regular matrix")
+    }
+
+    /// (H19) by hand: a compliant interface (kappa -> 0) carries a uniform shear, phi = pi / 4
+    /// per unit Q / mu P, so s K_T / (mu p0) = pi / 4 (s = Q / (2 a K_T)) at O(kappa); a stiff
+    /// one (kappa -> infinity) the rigid punch's phi = 1 / (2 sqrt(1 - t^2)) at O(1 / kappa)
+    /// (measured: 1.2e-6 at kappa = 1e-6, 1.2e-4 at kappa = 1e4 inside the edge layer's reach).
+    /// Planted faults caught: the load row's pi / 4 written pi / 2 (phi doubles); the kernel's
+    /// sign flipped (no bounded solution: the stiff limit fails).
+    #[test]
+    fn the_elastic_shape_s_limits_by_hand() {
+        let collocation = Collocation::default_mesh();
+        let soft = shape(1e-6);
+        for t in [0.0, 0.5, 0.99, 1.0] {
+            let phi = soft.shear(collocation, t);
+            assert!((phi / FRAC_PI_4 - 1.0).abs() < 1e-5, "{t}: {phi}");
+            let slip = soft.slip(collocation, t) * 1e-6;
+            assert!((slip / FRAC_PI_4 - 1.0).abs() < 1e-5, "{t}: {slip}");
+        }
+        let stiff = shape(1e4);
+        for t in [0.0_f64, 0.5, 0.9] {
+            let punch = 0.5 / (1.0 - t * t).sqrt();
+            let phi = stiff.shear(collocation, t);
+            assert!((phi / punch - 1.0).abs() < 1e-3, "{t}: {phi} {punch}");
+        }
+    }
+
+    /// As Q -> 0 the regularized solution is Q times the elastic shape (H18): s(a), s(0), the
+    /// peak q (= mu p(c)) and theta = arccos(c / a) over Q / mu P tend to the shape's S(1),
+    /// S(0), phi(1) and phi(1), within the sliding strips' relative effect, about kappa (theta)^2
+    /// (docs/theory.md (H20)), down to Q / mu P = 1e-300, over kappa from 1e-6 to 1e6; and s(a)
+    /// / Q never rises as Q falls (the strips only add slip), so the limit is approached from
+    /// above, continuously. Before issue 46 the solve returned its discretization's own load
+    /// below Q ~ 1e-8 mu P: s(a) / Q grew without bound and s(0) turned negative.
+    #[test]
+    fn small_loads_follow_the_elastic_asymptote() {
+        let collocation = Collocation::default_mesh();
+        for kappa in [1e-6, 1e-2, 0.644, 10.0, 1e3, 1e6] {
+            let elastic = shape(kappa);
+            let edge = elastic.shear(collocation, 1.0);
+            let expected = [
+                elastic.slip(collocation, 1.0),
+                elastic.slip(collocation, 0.0),
+                edge,
+                edge,
+            ];
+            let mut last = f64::INFINITY;
+            for exponent in [0, 1, 2, 3, 4, 6, 8, 9, 12, 20, 100, 300] {
+                let load = 10f64.powi(-exponent);
+                let s = solve_normalized(collocation, kappa, load);
+                let per_load = s.edge_slip(collocation) / load;
+                assert!(
+                    per_load <= last * (1.0 + 1e-9),
+                    "{kappa} {load:e} {per_load} {last}"
+                );
+                assert!(
+                    per_load >= expected[0] * (1.0 - 1e-9),
+                    "{kappa} {load:e} {}",
+                    per_load / expected[0] - 1.0
+                );
+                last = per_load;
+                let strips = (1.0 + kappa) * (load * edge).powi(2);
+                if strips > 1e-6 {
+                    continue;
+                }
+                let got = [
+                    per_load,
+                    s.slip(collocation, 0.0) / load,
+                    (1..collocation.size())
+                        .map(|i| s.shear[i])
+                        .fold(s.angle.sin(), f64::max)
+                        / load,
+                    s.angle / load,
+                ];
+                for (g, e) in got.iter().zip(expected) {
+                    assert!(
+                        (g / e - 1.0).abs() < 1e-5 + 10.0 * strips,
+                        "{kappa} {load}: {got:?} vs {expected:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// The project's independent solver (point forces on a uniform grid, (HC3)) resolves any
+    /// small load, being linear there. At Q = 1e-8 mu P its s(0) agrees with the semi-analytic
+    /// solution's to its own accuracy at 160 cells (measured 3e-5 at kappa = 0.64, 1.2e-3 at
+    /// kappa = 64, where the edge layer is 1/64 of a wide); its s(a) converges to ours at first
+    /// order (-1.9e-3, -9.1e-4, -4.5e-4 at 160, 320, 640 cells: the grid reads the edge slip as
+    /// if q vanished at x = a, which it does not while nothing slides). Before issue 46, s(0) was
+    /// 18 times too large at kappa = 0.64 and negative at kappa = 64.
+    #[test]
+    fn the_discretized_solver_agrees_at_small_loads() {
+        for kt in [1e5, 1e7] {
+            let params = CylinderParams {
+                tangential_stiffness: kt,
+                ..CylinderParams::STEEL_PAD
+            };
+            let cylinder = Cylinder::new(params).expect("the bundled pad");
+            let q = 1e-8 * cylinder.gross_slip_load();
+            let state = cylinder.regularized(cylinder.load(q).expect("below mu P"));
+            let grid = |cells: usize| {
+                let mut fe = CylinderFe::new(params, Law::Regularized, cells).expect("a grid");
+                fe.load_to(q, 1).expect("a solve");
+                fe
+            };
+            let coarse = grid(160);
+            let centre = state.centre_slip();
+            assert!(centre > 0.0, "{kt}: {centre}");
+            let error = centre / coarse.centre_slip() - 1.0;
+            assert!(
+                error.abs() < 3e-3,
+                "{kt}: {centre} vs {}",
+                coarse.centre_slip()
+            );
+            if kt == 1e5 {
+                let edge = state.edge_slip();
+                let fine = grid(320);
+                let (e160, e320) = (
+                    edge / coarse.edge_slip() - 1.0,
+                    edge / fine.edge_slip() - 1.0,
+                );
+                let order = (e160 / e320).log2();
+                assert!(
+                    e320.abs() < 1e-3 && (order - 1.0).abs() < 0.2,
+                    "{e160} {e320}"
+                );
+            }
+        }
+    }
+
+    /// The table of docs/theory.md (H20): how far the solution at Q is from Q times the elastic
+    /// shape. `cargo test --release -p microslip-core handover_table -- --ignored --nocapture`.
     #[test]
     #[ignore]
-    fn measure_handover() {
+    fn handover_table() {
         let colloc = Collocation::default_mesh();
-        for kappa in [1e-6, 1e-2, 0.644, 10.0, 1e3, 1e6, 1e8, 1e10, 1e12] {
-            let shape = elastic_shape(colloc, kappa).unwrap();
+        for kappa in [1e-6, 0.644, 10.0, 1e3, 1e6, 1e8] {
+            let shape = shape(kappa);
             let (e1, e0, f1) = (
                 shape.slip(colloc, 1.0),
                 shape.slip(colloc, 0.0),
                 shape.shear(colloc, 1.0),
             );
             println!("kappa {kappa:e}: S(1)/L {e1:.6e} S(0)/L {e0:.6e} phi(1)/L {f1:.6e}");
-            for lr in [1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9] {
+            for lr in [1e-1, 1e-2, 1e-3, 1e-4, 1e-6, 1e-9] {
                 let s = solve_normalized(colloc, kappa, lr);
                 let sa = s.edge_slip(colloc) / lr;
                 let s0 = s.slip(colloc, 0.0) / lr;
-                let lin_w = (lr * f1).powi(2) / 2.0;
                 println!(
-                    "  L {lr:e}: S(1)/L {sa:.6e} ({:+.2e}) S(0)/L {s0:.6e} ({:+.2e}) 1-c {:.3e} lin {:.3e}",
+                    "  L {lr:e}: S(1)/L {:+.2e} S(0)/L {:+.2e} kappa theta^2 {:.2e}",
                     sa / e1 - 1.0,
                     s0 / e0 - 1.0,
-                    1.0 - s.zone,
-                    lin_w
+                    kappa * s.angle * s.angle,
                 );
             }
         }

@@ -315,7 +315,9 @@ pub fn solve_normalized(
         if f.abs() <= STOP * load_ratio {
             break;
         }
-        let mut next = theta - f * (theta - step_from.0) / (f - step_from.1);
+        // The ratio first: f and theta are both O(Q), and their product underflows below Q ~
+        // 1e-160 mu P.
+        let mut next = theta - (theta - step_from.0) * (f / (f - step_from.1));
         if !(next > lo && next < hi && next.is_finite()) {
             // Bisect, geometrically while the bracket spans decades.
             next = if lo > 0.0 && hi > 4.0 * lo {
