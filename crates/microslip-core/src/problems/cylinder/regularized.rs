@@ -156,6 +156,20 @@ impl Fields<'_> {
         self.potential_slip(t)
     }
 
+    /// (H13') in a sliding strip at t = cos `alpha` (alpha <= theta): 1 - t = 2 sin^2(alpha / 2)
+    /// keeps its digits where t itself rounds to 1 (the strips are O(Q^2) wide).
+    fn strip_slip(&self, alpha: f64) -> f64 {
+        let t = alpha.cos();
+        if self.zone == 0.0 {
+            return (2.0 / PI) * (self.shift + FRAC_PI_2 * t * t);
+        }
+        let mut row = vec![0.0; self.collocation.size()];
+        self.collocation.kernel_row(t / self.zone, &mut row);
+        let potential: f64 = row.iter().zip(self.shear).map(|(k, f)| k * f).sum();
+        let strips = strip_potential(self.angle, 2.0 * (0.5 * alpha).sin().powi(2));
+        ((2.0 / PI) * (self.shift + self.zone * potential + strips)).max(0.0)
+    }
+
     /// (H13'): s E* / (mu p0 a) = (2 / pi) (D + the microslip zone's potential at t / zone +
     /// the strips' E(t)), at any t = |x| / a <= 1; never below 0 (the slip of a positive shear
     /// under q = K_T s is positive: a negative value could only be rounding).
@@ -516,6 +530,19 @@ impl RegularizedState {
     /// The slip at the contact's edge s(a) (mm): the fretting slip amplitude.
     pub fn edge_slip(&self) -> f64 {
         self.slip_at(self.cylinder.half_width())
+    }
+
+    /// The plastic slip s - mu p / K_T (mm, never below 0) at x = a cos `alpha` in a sliding
+    /// strip (0 <= alpha <= theta, [`RegularizedState::zone_angle`]): what the friction works
+    /// through on first loading. In the angle, because the strips are O(Q^2) wide and x = a cos
+    /// alpha would round to a below Q ~ 1e-8 mu P.
+    pub fn strip_plastic_slip(&self, alpha: f64) -> f64 {
+        if self.load == 0.0 {
+            return 0.0;
+        }
+        let fields = self.fields();
+        let elastic = alpha.sin() / fields.kappa;
+        self.cylinder.slip_scale() * (fields.strip_slip(alpha) - elastic).max(0.0)
     }
 
     /// The slip at the centre s(0) (mm).
