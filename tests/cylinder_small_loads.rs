@@ -7,11 +7,12 @@
 //! A fixed seed and no persistence: `cargo test` is deterministic and writes no file.
 
 use microslip::kernel::regime::Law;
-use microslip::problems::cylinder::Cylinder;
 use microslip::problems::cylinder::closed_form::CylinderParams;
 use microslip::problems::cylinder::collocation::Collocation;
 use microslip::problems::cylinder::cycle::{CylinderCycle, MasingCycle};
 use microslip::problems::cylinder::elastic::elastic_shape;
+use microslip::problems::cylinder::{Cylinder, CylinderProblem};
+use microslip::study::tolerance::{Threshold, ToleranceError, stiffness_for_tolerance};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 
@@ -112,4 +113,29 @@ proptest! {
         let secant = big.secant_stiffness();
         prop_assert!(secant.is_finite() && secant > 0.0, "{} secant {secant:e}", context);
     }
+}
+
+/// Issue 46 item 3: with the small-load answers right ((H18), (H9a)) the ratio of the regularized
+/// s(a) to Mindlin's grows as Q^(-1/2) as Q -> 0 (a thousandfold over six decades, to 1e-3), so
+/// no K_T holds a tolerance at every load from 0 and `kt` says so in the cylinder's words (it
+/// promised K_T >= 1.025e10 MPa/mm "at every Q from 0"), and at Q = 1e-9 N/mm it finds none (it
+/// said "even the softest is within").
+#[test]
+fn no_stiffness_holds_the_edge_slip_down_to_zero_load() {
+    let pad = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
+    let ratio = |cylinder: &Cylinder, q: f64| {
+        let load = cylinder.load(q).unwrap();
+        cylinder.regularized(load).edge_slip() / cylinder.coulomb(load).edge_slip()
+    };
+    let gross = pad.gross_slip_load();
+    let growth = ratio(&pad, 1e-12 * gross) / ratio(&pad, 1e-6 * gross);
+    assert!((growth / 1e3 - 1.0).abs() < 1e-3, "{growth}");
+    let from_zero = stiffness_for_tolerance::<CylinderProblem>(&pad, [0.0, gross], 0.01, 0.01);
+    assert!(
+        matches!(from_zero, Err(ToleranceError::UnboundedAtZero { .. })),
+        "{from_zero:?}"
+    );
+    let tiny = stiffness_for_tolerance::<CylinderProblem>(&pad, [1e-9, 1e-9], 0.01, 0.01)
+        .map(|answer| answer.threshold);
+    assert!(matches!(tiny, Ok(Threshold::Nowhere { .. })), "{tiny:?}");
 }
