@@ -320,7 +320,8 @@ impl FitReport {
             // The cylinder's edges (p -> 0 there): no load below which mu is absent.
             format!(
                 "{first} = 0{unit}: the interface slides somewhere at every load, so every \
-                 loaded measurement depends on mu"
+                 loaded measurement depends on mu, though at small loads barely (mu's standard \
+                 error says how much)"
             )
         } else {
             format!(

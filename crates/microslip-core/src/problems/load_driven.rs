@@ -130,6 +130,13 @@ pub trait LoadDriven: Problem + Registered {
     fn deviation_probes(_structure: &Self::Structure, [_from, _to]: [f64; 2]) -> Vec<f64> {
         Vec::new()
     }
+    /// Why the regularized response over Coulomb's grows without bound as the load falls to 0
+    /// at every finite K_T, if it does (then no K_T keeps it within a tolerance over a range
+    /// from 0, and a K_T search must say so rather than sample its way to a finite answer);
+    /// `None` where the ratio has a finite limit (the beams, the joint).
+    fn unbounded_at_zero(_structure: &Self::Structure) -> Option<&'static str> {
+        None
+    }
 }
 
 /// The [`LoadDriven`] capability of a problem, erased: what code written for any problem asks

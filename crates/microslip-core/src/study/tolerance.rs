@@ -9,7 +9,7 @@
 //! root on ln K_T finds K_T*.
 
 use crate::kernel::code_defaults::{CODE_DEFAULTS, CodeDefault, DefaultRule};
-use crate::kernel::params::{Domain, ParamError};
+use crate::kernel::params::{Domain, ParamError, significant};
 use crate::kernel::regime::Law;
 use crate::kernel::solve::find_root_in_bracket;
 use crate::problems::load_driven::LoadDriven;
@@ -146,6 +146,22 @@ pub enum ToleranceError {
         from: f64,
         /// End (N).
         to: f64,
+    },
+    /// The deviation from Coulomb has no bound as the load falls to zero, at every finite K_T
+    /// ([`LoadDriven::unbounded_at_zero`]): no K_T holds over a range from 0.
+    #[error(
+        "no K_T keeps the regularized answer within {} % of Coulomb's at every load from 0 to {to}{unit}: {reason}",
+        significant(100.0 * tolerance, 6)
+    )]
+    UnboundedAtZero {
+        /// The tolerance asked (fraction).
+        tolerance: f64,
+        /// The range's end.
+        to: f64,
+        /// The load's unit with a leading space (` N/mm`).
+        unit: String,
+        /// Why, in the problem's words.
+        reason: &'static str,
     },
     /// The problem has no interface stiffness K_T parameter to search (every bundled problem
     /// has one).
@@ -297,13 +313,28 @@ fn load_settings<P: LoadDriven>(
 /// worst deviation over the forces is non-increasing in K_T and one root on ln K_T finds it.
 ///
 /// # Errors
-/// A tolerance outside (0, 10], forces the structure does not carry, or no positive force.
+/// A tolerance outside (0, 10], forces the structure does not carry, no positive force, or a
+/// range from 0 where the problem's deviation has no bound there.
 pub fn stiffness_for_tolerance<P: LoadDriven>(
     model: &P::Structure,
     range: [f64; 2],
     tolerance: f64,
     element: f64,
 ) -> Result<ToleranceAnswer, ToleranceError> {
+    // Before any solve: the question has no answer, whatever the solutions.
+    let ([from, to], _) = checked_forces::<P>(model, range)?;
+    if let (Some(reason), 0.0) = (P::unbounded_at_zero(model), from) {
+        return Err(ToleranceError::UnboundedAtZero {
+            tolerance: check_tolerance(tolerance)?,
+            to,
+            unit: P::KIND
+                .description()
+                .load
+                .map(|load| load.unit_suffix())
+                .unwrap_or_default(),
+            reason,
+        });
+    }
     let (question, forces) = load_question::<P>(model, range, tolerance)?;
     let at = |kt: f64| worst::<P>(&stiffened::<P>(model, kt), &forces);
     let threshold = smallest_within(question.domain, question.tolerance, at);

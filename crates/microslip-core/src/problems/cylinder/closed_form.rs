@@ -201,6 +201,41 @@ pub fn mindlin_slip_normalized(t: f64, gamma: f64) -> f64 {
     (t * root - log_term).max(0.0)
 }
 
+/// Mindlin's slip (H9) at |x| / a = `t` for Q / mu P = `load_ratio`, from the load ratio rather
+/// than c / a (H9a): with rho = sqrt(t^2 - gamma^2) / t the slip is t^2 (rho - (1 - rho^2)
+/// artanh rho), and t^2 - gamma^2 = Q / mu P - (1 - t^2) keeps its digits at a small load, where
+/// gamma^2 = 1 - Q / mu P rounds to 1 and (H9) as written returned 0 (the edge slip 0 below Q ~
+/// 1e-16 mu P, and a few digits only below 1e-5: the ratio to the regularized s(a) came out
+/// wrong by orders of magnitude there).
+pub fn mindlin_slip_at_load(t: f64, load_ratio: f64) -> f64 {
+    let t = t.abs().min(1.0);
+    let excess = load_ratio.clamp(0.0, 1.0) - (1.0 - t) * (1.0 + t);
+    if excess <= 0.0 || t == 0.0 {
+        return 0.0;
+    }
+    t * t * mindlin_slip_shape((excess.sqrt() / t).min(1.0))
+}
+
+/// rho - (1 - rho^2) artanh rho = 2 sum_{k >= 1} rho^(2k + 1) / ((2k - 1)(2k + 1)) (H9a): by the
+/// series below rho = 1/2, where the closed form cancels its O(rho) terms (30 terms, each at
+/// most a quarter of the last); 1 at rho = 1 (gamma = 0).
+fn mindlin_slip_shape(rho: f64) -> f64 {
+    if rho >= 1.0 {
+        return 1.0;
+    }
+    if rho < 0.5 {
+        let square = rho * rho;
+        let mut power = rho * square;
+        let mut sum = 0.0;
+        for k in 1..31 {
+            sum += 2.0 * power / ((2 * k - 1) * (2 * k + 1)) as f64;
+            power *= square;
+        }
+        return sum;
+    }
+    rho - (1.0 - rho * rho) * rho.atanh()
+}
+
 /// Mindlin's answer (plain Coulomb, K_T -> infinity) at one tangential load: a stick zone |x| <
 /// c = a sqrt(1 - Q / mu P) at the centre, sliding at q = mu p beyond.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -256,7 +291,7 @@ impl MindlinState {
     /// and growing to the edges in the slip zones; taken at the edge beyond the contact.
     pub fn slip_at(&self, x: f64) -> f64 {
         let t = (x / self.cylinder.half_width).abs().min(1.0);
-        self.cylinder.slip_scale() * mindlin_slip_normalized(t, self.stick)
+        self.cylinder.slip_scale() * mindlin_slip_at_load(t, self.load_ratio())
     }
 
     /// The slip at the contact's edge s(a) (mm): the fretting slip amplitude.
@@ -270,9 +305,14 @@ impl MindlinState {
     }
 
     /// The largest shear over mu p0 (-): sqrt(1 - c^2/a^2) = sqrt(Q / mu P), at the stick
-    /// zone's edge.
+    /// zone's edge; from Q / mu P, since 1 - c^2/a^2 rounds to 0 at a small load.
     pub fn peak_shear_ratio(&self) -> f64 {
-        edge_root(self.stick)
+        self.load_ratio().sqrt()
+    }
+
+    /// Q / mu P (-).
+    fn load_ratio(&self) -> f64 {
+        (self.load / self.cylinder.gross_slip_load()).clamp(0.0, 1.0)
     }
 
     /// Unloaded, stick + slip (stick+macroslip from the centre outward), or the whole contact
@@ -414,5 +454,36 @@ mod tests {
         assert_eq!(c.load(f64::NAN).unwrap_err().field, "Q");
         assert_eq!(c.clamped_load(f64::NAN).newtons_per_mm(), 0.0);
         assert_eq!(c.clamped_load(1e9).newtons_per_mm(), 600.0);
+    }
+
+    /// (H9a): the slip from the load ratio is (H9) where (H9) keeps its digits (Q / mu P = 0.3,
+    /// 0.9, at the edge and inside the slip zone, across the series' switch at rho = 1/2), and
+    /// at a small load it is the series' (2/3) (Q / mu P)^(3/2) at the edge, where (H9) from a
+    /// rounded c / a gave 0 (Q = 1e-17 mu P) or lost every digit; the peak shear is sqrt(Q /
+    /// mu P) there.
+    #[test]
+    fn mindlin_s_slip_keeps_its_digits_at_small_loads() {
+        for (q, t) in [(0.3, 1.0), (0.3, 0.9), (0.9, 0.5), (0.9, 1.0), (0.2, 0.99)] {
+            let gamma = mindlin_stick_ratio(q);
+            let (from_load, from_zone) = (
+                mindlin_slip_at_load(t, q),
+                mindlin_slip_normalized(t, gamma),
+            );
+            assert!(
+                (from_load / from_zone - 1.0).abs() < 1e-12,
+                "{q} {t}: {from_load} {from_zone}"
+            );
+        }
+        assert_eq!(mindlin_slip_at_load(1.0, 1.0), 1.0);
+        assert_eq!(mindlin_slip_at_load(0.5, 0.3), 0.0);
+        for q in [1e-6_f64, 1e-17, 1e-200] {
+            let edge = mindlin_slip_at_load(1.0, q);
+            let series = 2.0 / 3.0 * q.powf(1.5) * (1.0 + 0.2 * q);
+            assert!((edge / series - 1.0).abs() < 1e-12, "{q}: {edge}");
+        }
+        let pad = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
+        let small = pad.coulomb(pad.load(1e-17 * pad.gross_slip_load()).unwrap());
+        assert!((small.peak_shear_ratio() / 1e-17f64.sqrt() - 1.0).abs() < 1e-12);
+        assert!(small.edge_slip() > 0.0);
     }
 }

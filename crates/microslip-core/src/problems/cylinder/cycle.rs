@@ -25,19 +25,38 @@ pub use crate::problems::load_driven::MasingCycle;
 
 /// The first-loading shift of Mindlin's cylinder, normalized by 2 mu P / (pi E*) (HC8):
 /// delta_v / (2 mu P / (pi E*)) = phi (ln 2 + 1/2) + (1 - phi) ln(1 - phi) / 2, phi = Q / (mu P),
-/// odd in phi; 1/2 ln 2 + 1/4 + ... at |phi| = 1, where the whole contact slides.
+/// odd in phi; 1/2 ln 2 + 1/4 + ... at |phi| = 1, where the whole contact slides. The log is
+/// ln_1p(-phi): ln(1 - phi) of a rounded 1 - phi is 0 below phi ~ 1e-16, which left phi (ln 2 +
+/// 1/2) where the shift is phi ln 2 (HC8a).
 pub fn mindlin_shift_ratio(phi: f64) -> f64 {
     let x = phi.abs().min(1.0);
     let u = 1.0 - x;
-    let curved = if u > 0.0 { 0.5 * u * u.ln() } else { 0.0 };
+    let curved = if u > 0.0 { 0.5 * u * (-x).ln_1p() } else { 0.0 };
     ((2.0_f64.ln() + 0.5) * x + curved).copysign(phi)
 }
 
+/// Below this amplitude (HC9) is summed as its series (HC9a): the closed form 1 - u^2 + 2 u ln u
+/// cancels its O(phi) terms and keeps phi^3 / 3 only to 1e-16 / phi^3 of itself (wrong in every
+/// digit below phi ~ 1e-5).
+const DISSIPATION_SERIES_BELOW: f64 = 0.1;
+
 /// Mindlin-Deresiewicz's dissipation per cycle of the cylinder, normalized by 2 (mu P)^2 / (pi
 /// E*) (HC9): 1 - u^2 + 2 u ln u with u = 1 - Q_a / (mu P); phi_a^3 / 3 for small amplitudes, 1
-/// at gross slip.
+/// at gross slip. Below [`DISSIPATION_SERIES_BELOW`] by its series (HC9a), 2 sum_{k >= 3}
+/// phi^k / (k (k - 1)), whose terms are positive: full relative precision at any amplitude.
 pub fn mindlin_dissipation_ratio(phi: f64) -> f64 {
-    let u = 1.0 - phi.abs().min(1.0);
+    let x = phi.abs().min(1.0);
+    if x < DISSIPATION_SERIES_BELOW {
+        let mut power = x * x * x;
+        let mut sum = 0.0;
+        // Terms fall by at least 10 each: 17 of them reach 1e-17 of the first.
+        for k in 3..20 {
+            sum += power / (k * (k - 1)) as f64;
+            power *= x;
+        }
+        return 2.0 * sum;
+    }
+    let u = 1.0 - x;
     let log = if u > 0.0 { 2.0 * u * u.ln() } else { 0.0 };
     1.0 - u * u + log
 }
@@ -205,34 +224,30 @@ impl CylinderCycle {
 
     /// The friction work of first loading to Q_a, W_1 = int mu p(x) s_p(x) dx over both slip
     /// zones (N mm per mm), s_p = s - mu p / K_T (s under Coulomb): a quarter of D (HC7 (iv)).
-    /// Integrated on [c, a] with x = c + (a - c) sin^4 theta (smooth at both ends).
+    /// Under Coulomb integrated on [c, a] with x = c + (a - c) sin^4 theta (smooth at both ends);
+    /// under the regularized law in the angle x = a cos alpha over [0, theta] (HC9b), where mu p
+    /// dx = mu p0 a sin^2 alpha dalpha: the strips are O(Q^2) wide, so [c, a] in x rounds to
+    /// nothing below Q ~ 1e-8 mu P while D is still positive.
     pub fn first_loading_work(&self) -> f64 {
         let load = self.cylinder.clamped_load(self.amplitude);
         let params = self.cylinder.params();
         let a = self.cylinder.half_width();
-        let (c, slip): (f64, Box<dyn Fn(f64) -> f64>) = match self.law {
+        let one_side = match self.law {
             Law::Coulomb => {
                 let state = self.cylinder.coulomb(load);
-                (
-                    state.stick_half_width(),
-                    Box::new(move |x| state.slip_at(x)),
-                )
+                mapped(state.stick_half_width(), a, |x| {
+                    params.friction * self.cylinder.pressure_at(x) * state.slip_at(x).max(0.0)
+                })
             }
             Law::Regularized => {
                 let state = self.cylinder.regularized(load);
-                let kt = params.tangential_stiffness;
-                let cylinder = self.cylinder;
-                (
-                    state.micro_half_width(),
-                    Box::new(move |x| {
-                        state.slip_at(x) - params.friction * cylinder.pressure_at(x) / kt
-                    }),
-                )
+                let strength = params.friction * self.cylinder.peak_pressure();
+                mapped(0.0, state.zone_angle(), |alpha| {
+                    let sin = alpha.sin();
+                    strength * a * sin * sin * state.strip_plastic_slip(alpha)
+                })
             }
         };
-        let one_side = mapped(c, a, |x| {
-            params.friction * self.cylinder.pressure_at(x) * slip(x).max(0.0)
-        });
         2.0 * one_side
     }
 
@@ -369,6 +384,42 @@ mod tests {
         assert!((c.unloading(-c.amplitude()) + c.peak_response()).abs() < 1e-15);
     }
 
+    /// (HC8a), (HC9a): at small amplitudes Mindlin's shift is phi ln 2 + phi^2 / 4 + ... and D
+    /// is phi^3 / 3 + phi^4 / 6 + ..., to full relative precision down to phi = 1e-100 (the
+    /// shift to 1e-300; D there is below the smallest double, 0 and never negative), and the
+    /// series meets the closed form where both are accurate (phi = 0.1, 0.3). Before issue 46
+    /// D at phi = 1e-6 was 5.5e-18 (not 3.3e-19) and the shift at phi = 1e-17 was phi (ln 2 +
+    /// 1/2).
+    #[test]
+    fn small_amplitudes_keep_their_digits() {
+        for phi in [1e-2_f64, 1e-6, 1e-17, 1e-100, 1e-300] {
+            let d = mindlin_dissipation_ratio(phi);
+            let shift = mindlin_shift_ratio(phi);
+            let leading = phi * 2f64.ln() + phi * phi / 4.0;
+            assert!(
+                (shift / leading - 1.0).abs() < 1e-15 + phi * phi,
+                "{phi}: {shift}"
+            );
+            if phi < 1e-103 {
+                assert_eq!(d, 0.0);
+                continue;
+            }
+            let series = phi.powi(3) / 3.0 * (1.0 + phi / 2.0);
+            assert!((d / series - 1.0).abs() < 1e-5 + phi * phi, "{phi}: {d}");
+        }
+        // Either side of the switch, the closed form and the series agree.
+        let closed = |phi: f64| {
+            let u = 1.0 - phi;
+            1.0 - u * u + 2.0 * u * u.ln()
+        };
+        let below = mindlin_dissipation_ratio(DISSIPATION_SERIES_BELOW * (1.0 - 1e-12));
+        assert!(
+            (below / closed(DISSIPATION_SERIES_BELOW) - 1.0).abs() < 1e-11,
+            "{below}"
+        );
+        assert!((mindlin_dissipation_ratio(0.3) / closed(0.3) - 1.0).abs() < 1e-14);
+    }
+
     fn pad(kt: f64) -> Cylinder {
         Cylinder::new(CylinderParams {
             tangential_stiffness: kt,
@@ -430,6 +481,44 @@ mod tests {
         };
         let growth = (width(0.02) / width(0.01)).log2();
         assert!((growth - 2.0).abs() < 0.01, "{growth}");
+    }
+
+    /// (HC9b): at small amplitudes the regularized D comes from the sliding strips alone (the
+    /// elastic rest dissipates nothing): with s_p = (sin theta - sin alpha) mu p0 / K_T across a
+    /// strip at leading order, D -> (2/3) (mu p0 a)^2 theta^4 / (E* kappa), theta = arccos(c / a),
+    /// a fourth power of Q_a. Checked to 1e-3 at Q_a = 1e-4 and 1e-9 mu P at kappa = 0.64 and 64,
+    /// with D > 0, the damping ratio finite, and the secant stiffness Q_a / delta_a the same at
+    /// both (the contact is linear there). Before issue 46, D was 0 below 1e-8 mu P, the damping
+    /// ratio reached 1e263, and the secant stiffness fell a hundredfold.
+    #[test]
+    fn the_regularized_cycle_at_small_amplitudes() {
+        for kt in [1e5, 1e7] {
+            let cylinder = pad(kt);
+            let gross = cylinder.gross_slip_load();
+            let strength = cylinder.params().friction * cylinder.peak_pressure();
+            let kappa = cylinder.stiffness_group();
+            let mut secant = Vec::new();
+            for phi in [1e-4, 1e-9] {
+                let load = cylinder.load(phi * gross).unwrap();
+                let cycle = CylinderCycle::new(&cylinder, Law::Regularized, load);
+                let theta = cylinder.regularized(load).zone_angle();
+                let leading =
+                    2.0 / 3.0 * (strength * cylinder.half_width()).powi(2) * theta.powi(4)
+                        / (cylinder.contact_modulus() * kappa);
+                let d = cycle.dissipation();
+                assert!(
+                    d > 0.0 && (d / leading - 1.0).abs() < 1e-3,
+                    "{kt} {phi}: {d} {leading}"
+                );
+                let zeta = cycle.damping_ratio();
+                assert!(zeta.is_finite() && zeta > 0.0, "{kt} {phi}: {zeta}");
+                secant.push(cycle.secant_stiffness());
+            }
+            assert!(
+                (secant[1] / secant[0] - 1.0).abs() < 1e-6,
+                "{kt}: {secant:?}"
+            );
+        }
     }
 
     /// K_T -> infinity: the regularized cycle is Mindlin-Deresiewicz's (D and delta_a within

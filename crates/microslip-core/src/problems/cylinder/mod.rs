@@ -10,9 +10,11 @@ pub mod collocation;
 pub mod cross_check;
 pub mod cycle;
 pub mod discretized;
+pub mod elastic;
 pub mod params;
 mod quadrature;
 pub mod regularized;
+mod strips;
 #[cfg(test)]
 mod tests;
 pub mod validity;

@@ -203,6 +203,24 @@ pub(crate) fn barycentric_weights(nodes: &[f64]) -> Vec<f64> {
         .collect()
 }
 
+/// Solves the `size` x `size` system `matrix` x = `rhs` in place (both overwritten) and splits
+/// x into the collocation unknowns (left in `rhs`) and the last one, the rigid shift's constant
+/// D, returned; `None` when the matrix is singular. The collocation systems of the cylinder all
+/// end with that one constant.
+pub(crate) fn solve_with_constant(
+    matrix: &mut [f64],
+    size: usize,
+    rhs: &mut Vec<f64>,
+) -> Option<f64> {
+    let mut pivots = vec![0; size];
+    if !lu_factor(matrix, size, &mut pivots) {
+        return None;
+    }
+    lu_solve(matrix, size, &pivots, rhs);
+    let constant = rhs.pop()?;
+    Some(constant)
+}
+
 /// Solves the dense `n` x `n` system `a x = b` in place (row-major `a`, `b` becomes x) by LU
 /// with partial pivoting, keeping the factors in `a` and the row order in `pivots` so that
 /// [`lu_solve`] can reuse them; `false` when a pivot vanishes (a singular matrix).

@@ -4,17 +4,20 @@
 //! In the normalized variables (H6) (x / a, q / (mu p0), s K_T / (mu p0)) the answer depends on
 //! kappa = K_T a / E* and Q / (mu P) only. The contact has one elastic ("microslip") zone |x| <
 //! c at the centre, where q = K_T s < mu p, and two sliding zones c < |x| < a at q = mu p, for
-//! every 0 < Q < mu P. The unknown is the shear deficit g = mu p - q in the microslip zone,
-//! psi = g / (mu p0) (zero at its edges, where q meets mu p), with the rigid shift; for a given c
-//! the equations are linear (H11) and collocated on the graded mesh of [`super::collocation`];
-//! c itself is the root of Q(c) = Q (H13), found by Newton's method with the exact derivative
-//! (one more back-substitution), safeguarded by bisection.
+//! every 0 < Q < mu P. The unknown is the shear phi = q / (mu p0) in the microslip zone (equal
+//! to the pressure's shape at its edges, where q meets mu p), with the rigid shift; for a given c
+//! the equations are linear (H11') and collocated on the graded mesh of [`super::collocation`];
+//! c itself is the root of Q(c) = Q (H13'), found by the secant method in theta = arccos(c / a),
+//! safeguarded by a bracket. The shear, not its deficit mu p - q, is the unknown so that a small
+//! load is a small unknown: with the deficit, Q / mu P = 1 - (4 c / pi a) integral psi was a
+//! difference of numbers near 1 and lost Q below about 1e-8 mu P (issue 46).
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use super::closed_form::{Cylinder, TangentialLoad, edge_root, mindlin_stick_ratio};
 use super::collocation::{Collocation, CollocationMesh};
-use super::quadrature::{lu_factor, lu_solve};
+use super::quadrature::solve_with_constant;
+use super::strips::{strip_area, strip_potential};
 use crate::kernel::params::Domain;
 use crate::kernel::regime::{Regime, Zone};
 use crate::kernel::solve::find_root_in_bracket;
@@ -33,11 +36,14 @@ pub struct NormalizedSolution {
     pub load_ratio: f64,
     /// c / a, the microslip zone's half-width.
     pub zone: f64,
-    /// The constant D of (H11) and (H13): (pi / 2) s E* / (mu p0 a) minus pi t^2 / 2 and
-    /// the deficit's potential, the same at every x (it holds the rigid shift).
+    /// theta = arccos(c / a): what the solve finds, kept because 1 - c / a (about theta^2 / 2)
+    /// falls as Q^2 and is lost in c / a's rounding below Q / mu P ~ 1e-8.
+    pub angle: f64,
+    /// The constant D of (H11'): (pi / 2) s E* / (mu p0 a) minus the shear's log potential,
+    /// the same at every x (it holds the rigid shift).
     pub shift: f64,
-    /// psi = (mu p - q) / (mu p0) at the collocation points u_i = x / c.
-    pub deficit: Vec<f64>,
+    /// phi = q / (mu p0) at the collocation points u_i = x / c.
+    pub shear: Vec<f64>,
 }
 
 impl NormalizedSolution {
@@ -47,8 +53,9 @@ impl NormalizedSolution {
             collocation,
             kappa: self.kappa,
             zone: self.zone,
+            angle: self.angle,
             shift: self.shift,
-            deficit: &self.deficit,
+            shear: &self.shear,
         }
     }
 
@@ -70,14 +77,13 @@ impl NormalizedSolution {
         self.fields(collocation).potential_slip(t)
     }
 
-    /// psi = (mu p - q) / (mu p0) at t = x / a in the microslip zone by its polynomial
-    /// interpolant on the mesh (what [`NormalizedSolution::shear`] uses for kappa above
-    /// [`NYSTROM_BELOW`]).
-    pub fn interpolated_deficit(&self, collocation: &Collocation, t: f64) -> f64 {
+    /// phi = q / (mu p0) at t = x / a in the microslip zone by its polynomial interpolant on
+    /// the mesh (what [`NormalizedSolution::shear`] uses for kappa above [`NYSTROM_BELOW`]).
+    pub fn interpolated_shear(&self, collocation: &Collocation, t: f64) -> f64 {
         if self.zone == 0.0 {
             return 0.0;
         }
-        collocation.interpolate(&self.deficit, t.abs() / self.zone)
+        collocation.interpolate(&self.shear, t.abs() / self.zone)
     }
 
     /// The edge slip s(a) E* / (mu p0 a).
@@ -85,24 +91,30 @@ impl NormalizedSolution {
         self.slip(collocation, 1.0)
     }
 
-    /// Q / (mu P) this solution carries, from its deficit (H13): 1 - (4 c / (pi a)) times the
-    /// integral of psi over [0, 1].
+    /// Q / (mu P) this solution carries (H13'): (4 / pi) times the integral of phi over [0, 1],
+    /// the microslip zone's share from the nodal values, the strips' in closed form.
     pub fn carried(&self, collocation: &Collocation) -> f64 {
-        let integral: f64 = collocation
-            .weights
-            .iter()
-            .zip(&self.deficit)
-            .map(|(w, d)| w * d)
-            .sum();
-        1.0 - 4.0 * self.zone / PI * integral
+        carried(collocation, self.zone, self.angle, &self.shear)
     }
+}
+
+/// (H13'): (4 / pi) (c / a times the integral over u of phi(c u) + the strips' area): a sum of
+/// positive terms, so a small load is carried to full relative precision.
+fn carried(collocation: &Collocation, zone: f64, angle: f64, shear: &[f64]) -> f64 {
+    let integral: f64 = collocation
+        .weights
+        .iter()
+        .zip(shear)
+        .map(|(w, f)| w * f)
+        .sum();
+    4.0 / PI * (zone * integral + strip_area(angle))
 }
 
 /// Below this kappa the shear inside the microslip zone is evaluated as K_T times (H13)'s
 /// potential (the Nystrom interpolant: the kernel's integral smooths the nodal values' error,
-/// and the law multiplies it by kappa); above it, by the deficit's polynomial interpolant
-/// (whose error, about 2.6^-8 of the deficit, does not grow with kappa). Both are about 1e-5
-/// of mu p0 here (docs/theory.md (H14)).
+/// and the law multiplies it by kappa); above it, by the nodal values' polynomial interpolant
+/// (whose error does not grow with kappa). Both are about 1e-5 of mu p0 here (docs/theory.md
+/// (H14)).
 pub const NYSTROM_BELOW: f64 = 30.0;
 
 /// One regularized solution's fields, read from its nodal values.
@@ -110,13 +122,14 @@ struct Fields<'a> {
     collocation: &'a Collocation,
     kappa: f64,
     zone: f64,
+    angle: f64,
     shift: f64,
-    deficit: &'a [f64],
+    shear: &'a [f64],
 }
 
 impl Fields<'_> {
-    /// q / (mu p0) at t = x / a (H10): sqrt(1 - t^2) - psi inside the microslip zone,
-    /// sqrt(1 - t^2) in the sliding zones, 0 beyond the contact.
+    /// q / (mu p0) at t = x / a (H10): phi inside the microslip zone (never below 0 nor above
+    /// the pressure's shape), sqrt(1 - t^2) in the sliding zones, 0 beyond the contact.
     fn shear(&self, t: f64) -> f64 {
         let t = t.abs();
         if t >= 1.0 {
@@ -125,10 +138,12 @@ impl Fields<'_> {
         if t >= self.zone || self.zone == 0.0 {
             return edge_root(t);
         }
-        if self.kappa < NYSTROM_BELOW {
-            return (self.kappa * self.potential_slip(t)).clamp(0.0, edge_root(t));
-        }
-        edge_root(t) - self.collocation.interpolate(self.deficit, t / self.zone)
+        let inside = if self.kappa < NYSTROM_BELOW {
+            self.kappa * self.potential_slip(t)
+        } else {
+            self.collocation.interpolate(self.shear, t / self.zone)
+        };
+        inside.clamp(0.0, edge_root(t))
     }
 
     /// s E* / (mu p0 a) at t = x / a (taken at the edge beyond the contact): q / (kappa mu p0)
@@ -141,8 +156,23 @@ impl Fields<'_> {
         self.potential_slip(t)
     }
 
-    /// (H13): s E* / (mu p0 a) = (2 / pi) (D + pi t^2 / 2 - zone * potential of psi at t /
-    /// zone), at any t = |x| / a <= 1.
+    /// (H13') in a sliding strip at t = cos `alpha` (alpha <= theta): 1 - t = 2 sin^2(alpha / 2)
+    /// keeps its digits where t itself rounds to 1 (the strips are O(Q^2) wide).
+    fn strip_slip(&self, alpha: f64) -> f64 {
+        let t = alpha.cos();
+        if self.zone == 0.0 {
+            return (2.0 / PI) * (self.shift + FRAC_PI_2 * t * t);
+        }
+        let mut row = vec![0.0; self.collocation.size()];
+        self.collocation.kernel_row(t / self.zone, &mut row);
+        let potential: f64 = row.iter().zip(self.shear).map(|(k, f)| k * f).sum();
+        let strips = strip_potential(self.angle, 2.0 * (0.5 * alpha).sin().powi(2));
+        ((2.0 / PI) * (self.shift + self.zone * potential + strips)).max(0.0)
+    }
+
+    /// (H13'): s E* / (mu p0 a) = (2 / pi) (D + the microslip zone's potential at t / zone +
+    /// the strips' E(t)), at any t = |x| / a <= 1; never below 0 (the slip of a positive shear
+    /// under q = K_T s is positive: a negative value could only be rounding).
     fn potential_slip(&self, t: f64) -> f64 {
         let t = t.abs().min(1.0);
         if self.zone == 0.0 {
@@ -152,75 +182,51 @@ impl Fields<'_> {
         }
         let mut row = vec![0.0; self.collocation.size()];
         self.collocation.kernel_row(t / self.zone, &mut row);
-        let potential: f64 = row.iter().zip(self.deficit).map(|(k, d)| k * d).sum();
-        (2.0 / PI) * (self.shift + FRAC_PI_2 * t * t - self.zone * potential)
+        let potential: f64 = row.iter().zip(self.shear).map(|(k, f)| k * f).sum();
+        let strips = strip_potential(self.angle, 1.0 - t);
+        ((2.0 / PI) * (self.shift + self.zone * potential + strips)).max(0.0)
     }
 }
 
-/// One linear solve of (H11) at c / a = `zone`: the deficit and the shift, and (H13)'s Q / mu P
-/// with its derivative in c / a.
+/// One linear solve of (H11') at theta = arccos(c / a): the shear and the shift, and (H13')'s
+/// Q / mu P.
 struct AtZone {
-    deficit: Vec<f64>,
+    shear: Vec<f64>,
     shift: f64,
     carried: f64,
-    slope: f64,
 }
 
-/// Solves (H11) at c / a = `zone` for kappa = `kappa`; `None` when the matrix is singular.
-fn solve_at(collocation: &Collocation, kappa: f64, zone: f64) -> Option<AtZone> {
+/// Solves (H11') at c / a = cos `angle` for kappa = `kappa`: epsilon phi(u) - gamma integral_0^1
+/// phi(gamma v) K(u, v) dv - D = E(gamma u) at the collocation points and, with phi(1) = sqrt(1 -
+/// gamma^2) substituted, at u = 1 (the edge condition); `None` when the matrix is singular.
+fn solve_at(collocation: &Collocation, kappa: f64, angle: f64) -> Option<AtZone> {
     let n = collocation.size();
     let size = n + 1;
     let epsilon = FRAC_PI_2 / kappa;
+    let (zone, edge) = (angle.cos(), angle.sin());
+    // 1 - gamma, exact for a small angle.
+    let width = 2.0 * (0.5 * angle).sin().powi(2);
     let mut matrix = vec![0.0; size * size];
     let mut rhs = vec![0.0; size];
-    let mut rate = vec![0.0; size];
     for i in 0..size {
         let u = collocation.nodes.get(i).copied().unwrap_or(1.0);
         let row = &collocation.kernel[i * n..(i + 1) * n];
         for (j, k) in row.iter().enumerate() {
             matrix[i * size + j] = -zone * k;
         }
+        matrix[i * size + n] = -1.0;
+        // 1 - gamma u = (1 - u) + u (1 - gamma), both exact.
+        rhs[i] = strip_potential(angle, (1.0 - u) + u * width);
         if i < n {
             matrix[i * size + i] += epsilon;
-        }
-        matrix[i * size + n] = 1.0;
-        let x = zone * u;
-        let root = edge_root(x);
-        rhs[i] = epsilon * root - FRAC_PI_2 * x * x;
-        // d rhs / d zone, then + kernel psi (d matrix / d zone = -kernel), filled after the solve.
-        rate[i] = if root > 0.0 {
-            -epsilon * x * u / root
         } else {
-            0.0
-        } - PI * x * u;
+            rhs[i] -= epsilon * edge;
+        }
     }
-    let mut pivots = vec![0; size];
-    if !lu_factor(&mut matrix, size, &mut pivots) {
-        return None;
-    }
-    lu_solve(&matrix, size, &pivots, &mut rhs);
-    let (deficit, shift) = (rhs[..n].to_vec(), rhs[n]);
-    for (i, r) in rate.iter_mut().enumerate() {
-        let row = &collocation.kernel[i * n..(i + 1) * n];
-        *r += row.iter().zip(&deficit).map(|(k, d)| k * d).sum::<f64>();
-    }
-    lu_solve(&matrix, size, &pivots, &mut rate);
-    let integral: f64 = collocation
-        .weights
-        .iter()
-        .zip(&deficit)
-        .map(|(w, d)| w * d)
-        .sum();
-    let integral_rate: f64 = collocation
-        .weights
-        .iter()
-        .zip(&rate)
-        .map(|(w, d)| w * d)
-        .sum();
+    let shift = solve_with_constant(&mut matrix, size, &mut rhs)?;
     Some(AtZone {
-        carried: 1.0 - 4.0 * zone / PI * integral,
-        slope: -4.0 / PI * (integral + zone * integral_rate),
-        deficit,
+        carried: carried(collocation, zone, angle, &rhs),
+        shear: rhs,
         shift,
     })
 }
@@ -228,6 +234,11 @@ fn solve_at(collocation: &Collocation, kappa: f64, zone: f64) -> Option<AtZone> 
 /// The small-kappa limit of c / a (H15): the root of (2 / pi) (gamma sqrt(1 - gamma^2) +
 /// arccos gamma) = Q / mu P, both bodies rigid beside the interface.
 pub fn compliant_limit_zone(load_ratio: f64) -> f64 {
+    compliant_limit_angle(load_ratio).cos()
+}
+
+/// [`compliant_limit_zone`]'s theta = arccos gamma.
+fn compliant_limit_angle(load_ratio: f64) -> f64 {
     let target = load_ratio.clamp(0.0, 1.0);
     // In theta = arccos gamma the function (2 / pi) (sin theta cos theta + theta) rises from 0
     // to 1 with slope (4 / pi) cos^2 theta: Newton from the side where it is concave, safeguarded.
@@ -251,15 +262,18 @@ pub fn compliant_limit_zone(load_ratio: f64) -> f64 {
         }
         theta = next;
     }
-    theta.cos()
+    theta
 }
 
-/// Where the root search on c stops: |Q(c) / mu P - Q / mu P| below it.
+/// Where the root search on c stops: |Q(c) / Q - 1| below it (relative: (H13') carries a small
+/// load to full precision, so the stop is as tight at Q = 1e-300 mu P as at mu P / 2).
 const STOP: f64 = 1e-12;
 
 /// The regularized solution on `mesh` for kappa = `kappa` > 0 and Q / mu P = `load_ratio` in
-/// [0, 1] (H14): c / a from Q(c) = Q by safeguarded Newton on theta = arccos(c / a), in which
-/// Q(c) rises from 0 (theta = 0) to mu P (theta = pi / 2) with a finite slope at both ends.
+/// [0, 1] (H14): theta = arccos(c / a) from Q(theta) = Q by the secant method kept inside a
+/// bracket; Q(theta) rises from 0 (theta = 0) to mu P (theta = pi / 2), linearly near 0 (the
+/// elastic asymptote (H17)), so the first secant, through the origin, is already close at any
+/// small load.
 pub fn solve_normalized(
     collocation: &Collocation,
     kappa: f64,
@@ -267,34 +281,35 @@ pub fn solve_normalized(
 ) -> NormalizedSolution {
     let n = collocation.size();
     let load_ratio = load_ratio.clamp(0.0, 1.0);
-    let done = |zone: f64, shift: f64, deficit: Vec<f64>| NormalizedSolution {
+    let done = |angle: f64, shift: f64, shear: Vec<f64>| NormalizedSolution {
         kappa,
         load_ratio,
-        zone,
+        zone: if angle >= FRAC_PI_2 { 0.0 } else { angle.cos() },
+        angle,
         shift,
-        deficit,
+        shear,
     };
     let epsilon = FRAC_PI_2 / kappa;
     if load_ratio == 0.0 {
-        // Unloaded: q = 0, psi = sqrt(1 - u^2), the shift of (H4)'s constant.
-        let deficit = collocation.nodes.iter().map(|&u| edge_root(u)).collect();
-        return done(1.0, -FRAC_PI_2 * (0.5 + 2f64.ln()), deficit);
+        // Unloaded: no shear, no slip.
+        return done(0.0, 0.0, vec![0.0; n]);
     }
     if load_ratio == 1.0 {
         // Gross slip: no microslip zone, s(0) = mu p0 / K_T.
-        return done(0.0, epsilon, vec![0.0; n]);
+        return done(FRAC_PI_2, epsilon, vec![0.0; n]);
     }
     let (mut lo, mut hi) = (0.0, FRAC_PI_2);
     let start = {
-        let soft = compliant_limit_zone(load_ratio).acos();
+        let soft = compliant_limit_angle(load_ratio);
         let stiff = mindlin_stick_ratio(load_ratio).acos();
         (soft + kappa * stiff) / (1.0 + kappa)
     };
-    let mut theta = start.clamp(1e-6, FRAC_PI_2 - 1e-6);
-    let mut best: Option<(f64, AtZone)> = None;
-    for _ in 0..80 {
-        let zone = theta.cos();
-        let Some(at) = solve_at(collocation, kappa, zone) else {
+    let mut theta = start.clamp(1e-300, FRAC_PI_2 * (1.0 - 1e-6));
+    // The previous point of the secant: Q(0) = 0.
+    let mut previous = (0.0, -load_ratio);
+    let mut best: Option<(f64, f64, AtZone)> = None;
+    for _ in 0..100 {
+        let Some(at) = solve_at(collocation, kappa, theta) else {
             // A singular matrix (never met): move inside the bracket and go on.
             theta = 0.5 * (lo + hi);
             continue;
@@ -305,25 +320,41 @@ pub fn solve_normalized(
         } else {
             lo = theta;
         }
-        // dQ/dtheta = dQ/dzone * (-sin theta), positive.
-        let slope = -at.slope * theta.sin();
-        let mut next = theta - f / slope;
-        if !(next > lo && next < hi && next.is_finite()) {
-            next = 0.5 * (lo + hi);
+        let closer = best.as_ref().is_none_or(|(_, g, _)| f.abs() < g.abs());
+        let step_from = previous;
+        previous = (theta, f);
+        if closer {
+            best = Some((theta, f, at));
         }
-        let step = (next - theta).abs();
-        best = Some((zone, at));
-        // Q / mu P to 1e-12 is c / a to about 1e-12, far below the mesh's error; below it the
-        // residual is round-off and Newton's steps wander.
-        if f.abs() <= STOP || step <= 1e-15 || hi - lo <= 1e-15 {
+        if f.abs() <= STOP * load_ratio {
+            break;
+        }
+        // The ratio first: f and theta are both O(Q), and their product underflows below Q ~
+        // 1e-160 mu P.
+        let mut next = theta - (theta - step_from.0) * (f / (f - step_from.1));
+        if !(next > lo && next < hi && next.is_finite()) {
+            // Bisect, geometrically while the bracket spans decades.
+            next = if lo > 0.0 && hi > 4.0 * lo {
+                (lo * hi).sqrt()
+            } else if lo == 0.0 {
+                0.25 * hi
+            } else {
+                0.5 * (lo + hi)
+            };
+        }
+        if (next - theta).abs() <= 1e-15 * theta {
             break;
         }
         theta = next;
     }
     match best {
-        Some((zone, at)) => done(zone, at.shift, at.deficit),
-        // Never met: every matrix singular. Mindlin's zone with no deficit is finite at least.
-        None => done(mindlin_stick_ratio(load_ratio), epsilon, vec![0.0; n]),
+        Some((angle, _, at)) => done(angle, at.shift, at.shear),
+        // Never met: every matrix singular. Mindlin's zone with no shear is finite at least.
+        None => done(
+            mindlin_stick_ratio(load_ratio).acos(),
+            epsilon,
+            vec![0.0; n],
+        ),
     }
 }
 
@@ -336,10 +367,12 @@ pub struct RegularizedState {
     load: f64,
     /// c / a.
     zone: f64,
-    /// The shift of (H11).
+    /// theta = arccos(c / a).
+    angle: f64,
+    /// The shift of (H11').
     shift: f64,
-    /// psi at the default mesh's collocation points.
-    deficit: [f64; DEFAULT_UNKNOWNS],
+    /// phi = q / (mu p0) at the default mesh's collocation points.
+    shear: [f64; DEFAULT_UNKNOWNS],
 }
 
 impl Cylinder {
@@ -371,16 +404,17 @@ impl Cylinder {
             self.stiffness_group(),
             load.newtons_per_mm() / self.gross_slip_load(),
         );
-        let mut deficit = [0.0; DEFAULT_UNKNOWNS];
-        for (d, s) in deficit.iter_mut().zip(&solution.deficit) {
+        let mut shear = [0.0; DEFAULT_UNKNOWNS];
+        for (d, s) in shear.iter_mut().zip(&solution.shear) {
             *d = *s;
         }
         RegularizedState {
             cylinder: *self,
             load: load.newtons_per_mm(),
             zone: solution.zone,
+            angle: solution.angle,
             shift: solution.shift,
-            deficit,
+            shear,
         }
     }
 }
@@ -420,8 +454,9 @@ impl RegularizedState {
             kappa: self.cylinder.stiffness_group(),
             load_ratio: self.load / self.cylinder.gross_slip_load(),
             zone: self.zone,
+            angle: self.angle,
             shift: self.shift,
-            deficit: self.deficit.to_vec(),
+            shear: self.shear.to_vec(),
         }
     }
 
@@ -446,8 +481,15 @@ impl RegularizedState {
     }
 
     /// Width a - c of each sliding zone at the contact's edges (mm).
+    /// From 1 - c / a = 2 sin^2(theta / 2), which keeps its digits when the strips are far
+    /// narrower than c / a's rounding (a - c falls as Q^2).
     pub fn edge_slide_width(&self) -> f64 {
-        self.cylinder.half_width() - self.micro_half_width()
+        self.cylinder.half_width() * 2.0 * (0.5 * self.angle).sin().powi(2)
+    }
+
+    /// theta = arccos(c / a) (rad): 1 - c / a = 2 sin^2(theta / 2) to full precision.
+    pub fn zone_angle(&self) -> f64 {
+        self.angle
     }
 
     /// The solution's fields on the default mesh.
@@ -456,8 +498,9 @@ impl RegularizedState {
             collocation: Collocation::default_mesh(),
             kappa: self.cylinder.stiffness_group(),
             zone: self.zone,
+            angle: self.angle,
             shift: self.shift,
-            deficit: &self.deficit,
+            shear: &self.shear,
         }
     }
 
@@ -489,23 +532,37 @@ impl RegularizedState {
         self.slip_at(self.cylinder.half_width())
     }
 
+    /// The plastic slip s - mu p / K_T (mm, never below 0) at x = a cos `alpha` in a sliding
+    /// strip (0 <= alpha <= theta, [`RegularizedState::zone_angle`]): what the friction works
+    /// through on first loading. In the angle, because the strips are O(Q^2) wide and x = a cos
+    /// alpha would round to a below Q ~ 1e-8 mu P.
+    pub fn strip_plastic_slip(&self, alpha: f64) -> f64 {
+        if self.load == 0.0 {
+            return 0.0;
+        }
+        let fields = self.fields();
+        let elastic = alpha.sin() / fields.kappa;
+        self.cylinder.slip_scale() * (fields.strip_slip(alpha) - elastic).max(0.0)
+    }
+
     /// The slip at the centre s(0) (mm).
     pub fn centre_slip(&self) -> f64 {
         self.slip_at(0.0)
     }
 
-    /// The largest q / (mu p0) (-): at the microslip zone's edge, where q = mu p(c), or at a
-    /// collocation point inside it if larger there (it never is: q grows towards c).
+    /// The largest q / (mu p0) (-): at the microslip zone's edge, where q = mu p(c) = mu p0 sin
+    /// theta, or at a collocation point inside it if larger there (it never is: q grows
+    /// towards c).
     pub fn peak_shear_ratio(&self) -> f64 {
         if self.load == 0.0 {
             return 0.0;
         }
-        let nodes = &Collocation::default_mesh().nodes;
-        nodes
-            .iter()
-            .zip(&self.deficit)
-            .map(|(&u, &d)| edge_root(u * self.zone) - d)
-            .fold(edge_root(self.zone), f64::max)
+        let at_edge = if self.zone == 0.0 {
+            1.0
+        } else {
+            self.angle.sin()
+        };
+        self.shear.iter().copied().fold(at_edge, f64::max)
     }
 
     /// Unloaded; microslip at the centre and macroslip at the edges (for every 0 < Q < mu P:
