@@ -42,7 +42,7 @@ const DISSIPATION_SERIES_BELOW: f64 = 0.1;
 
 /// Mindlin-Deresiewicz's dissipation per cycle of the cylinder, normalized by 2 (mu P)^2 / (pi
 /// E*) (HC9): 1 - u^2 + 2 u ln u with u = 1 - Q_a / (mu P); phi_a^3 / 3 for small amplitudes, 1
-/// at gross slip. Below [`DISSIPATION_SERIES_BELOW`] by its series (HC9a), 2 sum_{k >= 3}
+/// at gross slip. Below `DISSIPATION_SERIES_BELOW` by its series (HC9a), 2 sum_{k >= 3}
 /// phi^k / (k (k - 1)), whose terms are positive: full relative precision at any amplitude.
 pub fn mindlin_dissipation_ratio(phi: f64) -> f64 {
     let x = phi.abs().min(1.0);
