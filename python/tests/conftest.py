@@ -46,6 +46,13 @@ class Cli:
 
     def json(self, *args: str):
         done = self.run(*args, "--format", "json")
+        if args and args[0] in ("compare", "bench"):
+            # Exit 0 only when the verdict agrees, 1 when it does not or could not judge; the
+            # report is printed either way.
+            assert done.returncode in (0, 1), done.stderr
+            data = json.loads(done.stdout)
+            assert (done.returncode == 0) == data["verdict"]["agrees"], done.stderr
+            return data
         assert done.returncode == 0, done.stderr
         return json.loads(done.stdout)
 
