@@ -749,11 +749,11 @@ fn burst(session: &mut Session, count: usize, key: char) -> Instant {
 
 /// Issue 32: on the lap joint with its finite-element and 2-D continuum overlay on (`n`), a
 /// storm of 2 000 `l` keys on K_T (each a new continuum solve, up to seconds each) settles
-/// within 2 s of the last key: the screen shows the final K_T (the top of its domain, 1e12
+/// within one solve of the last key: the screen shows the final K_T (the top of its domain, 1e12
 /// MPa/mm, where 1.02^2000 takes it) with nothing pending. The continuum ran in the event loop
 /// before: every key waited for its own solve (342 s in a release build).
 #[test]
-fn a_storm_of_keys_on_the_lap_joint_with_the_continuum_on_settles_within_2_s() {
+fn a_storm_of_keys_on_the_lap_joint_with_the_continuum_on_settles_soon_after_the_last_key() {
     let (mut session, mut child) = start_with("--preset lap-aluminium --charset ascii");
     session.wait_for("Double-lap joint");
     // Down to K_T (the ninth row), then the overlay, and its first answer.
@@ -764,7 +764,10 @@ fn a_storm_of_keys_on_the_lap_joint_with_the_continuum_on_settles_within_2_s() {
         !s.parser.screen().contents().contains("solving")
     });
     let last_key = burst(&mut session, 2_000, 'l');
-    let limit = Duration::from_secs(2);
+    // The last K_T's own solve, and no other: 0.1-1 s idle, and it went past 2 s on a clean
+    // clone with a build beside it (issue 46, item 10: the test of a test run at load). 10 s
+    // still tells it from solving the keys one by one (342 s).
+    let limit = Duration::from_secs(10);
     loop {
         let screen = session.parser.screen().contents();
         if screen.contains("1e12 MPa/mm") && !screen.contains("solving") {
