@@ -13,7 +13,7 @@ use thiserror::Error;
 use crate::file::{Kinds, ReadError, Size, read_capped};
 use crate::fit::{MIN_ROWS, Measured, Measurement};
 use crate::kernel::params::{Compact, Domain, Unit};
-use crate::problems::Param;
+use crate::problems::{ModelKind, Param};
 
 /// Header of the optional column of per-point standard deviations of w (mm).
 pub(crate) const SIGMA_COLUMN: &str = "sigma_mm";
@@ -112,65 +112,48 @@ impl<'a> LineCounter<'a> {
     }
 }
 
-/// Parses the text of a measurement CSV.
-///
-/// # Errors
-///
-/// A [`DataError`] with the 1-based line of the file when the text has no header, the header lacks
-/// `F_N` or `w_mm`, a value is missing or not a finite number, a force is negative, beyond the
-/// accepted tip forces or not above the previous one, or there are fewer than 3
-/// measurements (`MIN_ROWS`).
-pub fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
-    parse_with_progress(text, &mut |_, _| {})
-}
-
-/// Rows read between two progress reports of [`parse_with_progress`].
+/// Rows read between two progress reports of the readers.
 const PROGRESS_ROWS: usize = 1 << 16;
 
-/// [`parse`], telling `progress` (bytes read, bytes in all) every few ten thousand rows: a file of
-/// several million rows takes seconds.
+/// The measured load-response curve of `kind` (what `d` and `--data` read and `f` fits), read
+/// with its [`Fittable`](crate::problems::fittable::Fittable) columns (`F_N,w_mm` for the beams,
+/// `F_N,Delta_mm` for the lap joint, `Q_N_per_mm,sa_mm` for the cylinder), telling `progress`
+/// (bytes read, bytes in all) every few ten thousand rows and keeping the `sigma_mm` column when
+/// there is one. Every problem is read the same way, from its own columns: there is no default
+/// reader a problem could forget to replace and so read another's columns silently (issue 43).
 ///
 /// # Errors
-/// As [`parse`].
-fn parse_with_progress(
-    text: &str,
-    progress: &mut dyn FnMut(usize, usize),
-) -> Result<Vec<Measurement>, DataError> {
-    Ok(parse_measured_with_progress(text, progress)?.points)
-}
-
-/// [`parse`], telling `progress` (bytes read, bytes in all) every few ten thousand rows (a file of
-/// several million rows takes seconds), and keeping the `sigma_mm` column when there is one (each
-/// value finite and > 0, refused with its line otherwise).
-///
-/// # Errors
-/// As [`parse`], and a sigma that is missing, not a finite number or not > 0.
-pub fn parse_measured_with_progress(
+/// As [`parse_measured_columns_with_progress`]; for a problem with no measured curve to fit (no
+/// load: the plate), an error that says so.
+pub fn parse_measured_curve_of(
+    kind: ModelKind,
     text: &str,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Measured, DataError> {
-    parse_measured_curve(text, &MEASURED_DEFLECTION, progress)
+    let Some(fittable) = kind.problem().fittable() else {
+        return Err(error(
+            1,
+            format!(
+                "the {} has no measured load-response curve to fit",
+                kind.description().title
+            ),
+        ));
+    };
+    parse_measured_columns_with_progress(
+        text,
+        (fittable.load_column(), fittable.load()),
+        fittable.response_column(),
+        progress,
+    )
 }
 
-/// [`parse_measured_with_progress`] for a measured lap joint: `F_N,Delta_mm` (or a `sweep lap`
-/// table's `Delta_regularized_mm`), with an optional `sigma_mm`.
-///
-/// # Errors
-/// As [`parse_measured_with_progress`], with the joint's column names.
-pub fn parse_measured_joint_with_progress(
-    text: &str,
-    progress: &mut dyn FnMut(usize, usize),
-) -> Result<Measured, DataError> {
-    parse_measured_curve(text, &MEASURED_JOINT_DISPLACEMENT, progress)
-}
-
-/// [`parse_measured_with_progress`] for any fittable problem: its load column (`F_N`, the
+/// [`parse_measured_curve_of`] for any fittable problem: its load column (`F_N`, the
 /// cylinder's `Q_N_per_mm`: [`crate::fit::Structure::load_column`]) and its `response` column
 /// (`w_mm`, `Delta_mm`, `sa_mm`: [`crate::fit::Structure::response_column`]), with an optional
 /// `sigma_mm`, so that a fit reads its problem's curve without naming the problem.
 ///
 /// # Errors
-/// As [`parse_measured_with_progress`], with the problem's column names, the load's unit and
+/// As [`parse_measured_columns_with_progress`], with the problem's column names, the load's unit and
 /// its domain.
 pub fn parse_measured_response_with_progress(
     text: &str,
@@ -185,13 +168,14 @@ pub fn parse_measured_response_with_progress(
     )
 }
 
-/// [`parse_measured_with_progress`] for the columns `load` (its header and the load parameter,
+/// The measured curve of the columns `load` (its header and the load parameter,
 /// whose unit and domain its values are checked against) and `response`: what a problem's pane
 /// reads a measured curve with when its columns are not the beams' (the cylinder's
 /// `Q_N_per_mm,sa_mm`).
 ///
 /// # Errors
-/// As [`parse_measured_with_progress`], with these columns, the load's unit and domain.
+/// As [`parse_curve`], with these columns, the load's unit and domain; and a sigma that is
+/// missing, not a finite number or not > 0.
 pub fn parse_measured_columns_with_progress(
     text: &str,
     (load_column, load): (&'static str, Param),
@@ -483,6 +467,34 @@ fn read_rows(
 mod tests {
     use super::*;
 
+    /// The beams' columns (`F_N,w_mm`) read whole: the reader every case below exercises.
+    fn parse(text: &str) -> Result<Vec<Measurement>, DataError> {
+        parse_with_progress(text, &mut |_, _| {})
+    }
+
+    fn parse_with_progress(
+        text: &str,
+        progress: &mut dyn FnMut(usize, usize),
+    ) -> Result<Vec<Measurement>, DataError> {
+        Ok(parse_measured_with_progress(text, progress)?.points)
+    }
+
+    /// The beams' curve with its sigma column.
+    fn parse_measured_with_progress(
+        text: &str,
+        progress: &mut dyn FnMut(usize, usize),
+    ) -> Result<Measured, DataError> {
+        parse_measured_curve(text, &MEASURED_DEFLECTION, progress)
+    }
+
+    /// The lap joint's curve with its sigma column.
+    fn parse_measured_joint_with_progress(
+        text: &str,
+        progress: &mut dyn FnMut(usize, usize),
+    ) -> Result<Measured, DataError> {
+        parse_measured_curve(text, &MEASURED_JOINT_DISPLACEMENT, progress)
+    }
+
     /// Read by its problem's columns, a fittable problem's curve is what its own reader gives;
     /// every fittable problem reads a file headed with its own load and response columns and
     /// refuses another's, naming the column it expected.
@@ -505,6 +517,23 @@ mod tests {
             by(joint, ModelKind::Lap),
             parse_measured_joint_with_progress(joint, &mut |_, _| {})
         );
+        // What `d` and `--data` read is the same curve, for every problem; the plate has none.
+        for kind in ModelKind::ALL {
+            let read = parse_measured_curve_of(kind, beam, &mut |_, _| {});
+            match structure(kind) {
+                Some(s) => assert_eq!(
+                    read,
+                    parse_measured_response_with_progress(beam, &s, &mut |_, _| {}),
+                    "{kind}"
+                ),
+                None => assert!(
+                    read.unwrap_err()
+                        .to_string()
+                        .contains("has no measured load-response curve"),
+                    "{kind}"
+                ),
+            }
+        }
         let fittable = ModelKind::ALL.into_iter().filter_map(structure);
         for mine in fittable.clone() {
             let (load, response) = (mine.load_column(), mine.response_column());

@@ -166,8 +166,8 @@ fn loads_beyond_every_gross_slip_load_are_refused_with_the_bound() {
     let refused = fit(&data, Weights::default()).unwrap_err();
     assert_eq!(
         refused.to_string(),
-        "invalid Q_N_per_mm = 6000: beyond the gross-slip load mu P: the cylinder slides over \
-         the flat beyond it (for every mu up to 5, the bound is at most 5000 N/mm), so no mu \
+        "invalid Q_N_per_mm = 6000: beyond Q_gross = mu P: the cylinder slides over the flat \
+         beyond it (for every mu up to 5, the bound is at most 5000 N/mm), so no mu \
          fits it"
     );
 }

@@ -128,8 +128,6 @@ pub trait PaneFace: Deck {
     /// that pressure is the interface's uniform P; a problem whose pressure varies names its
     /// own shear and the pressure it is divided by).
     const STRIP_SHEAR: &'static str = "tau(x) / mu P";
-    /// The reader of its measured curve, where `f` fits one ([`crate::fit::Structure::of`]).
-    const MEASURED: CurveParser = crate::measured::parse_measured_with_progress;
     /// The regime pane's own continuum solve, where the pane shows one (the plate's: a tenth of
     /// a second, on a worker); None for a problem whose continuum is drawn by `n` only.
     const PANE_CONTINUUM: Option<PaneContinuum<Self::Model>> = None;
@@ -197,8 +195,6 @@ pub trait AnyPaneFace: Send + Sync {
     fn strip_origin(&self) -> &'static str;
     /// See [`PaneFace::STRIP_SHEAR`].
     fn strip_shear(&self) -> &'static str;
-    /// See [`PaneFace::MEASURED`].
-    fn measured(&self) -> CurveParser;
     /// True where the regime pane solves a continuum of its own ([`PaneFace::PANE_CONTINUUM`]).
     fn has_pane_continuum(&self) -> bool;
     /// The regime pane's continuum at `model`, where it has one.
@@ -232,10 +228,6 @@ impl<P: PaneFace> AnyPaneFace for PaneOf<P> {
 
     fn strip_shear(&self) -> &'static str {
         P::STRIP_SHEAR
-    }
-
-    fn measured(&self) -> CurveParser {
-        P::MEASURED
     }
 
     fn has_pane_continuum(&self) -> bool {

@@ -6,6 +6,7 @@
 use serde::Serialize;
 
 use crate::chart::{Plot, SeriesKind};
+use crate::report::point::cycle::CycleKeys;
 use crate::study::curves::{CyclePoint, LoopPoint};
 
 /// One row of `microslip sweep beam`.
@@ -62,33 +63,63 @@ pub struct PlateRow {
     pub strip_theory: &'static str,
 }
 
-/// One row of `microslip sweep cycle`.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+/// One row of `microslip sweep cycle`, headed in the problem's units ([`CycleKeys`]:
+/// `Fa_N,D_coulomb_Nmm,...` for a force, `Qa_N_per_mm,D_coulomb_Nmm_per_mm,...` for the
+/// cylinder's line load).
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CycleRow {
-    /// Amplitude (N).
-    #[serde(rename = "Fa_N")]
+    /// Amplitude (the load's unit).
     pub amplitude: f64,
-    /// Coulomb dissipation per cycle, both beams (the whole interface) (N mm).
-    #[serde(rename = "D_coulomb_Nmm")]
+    /// Coulomb dissipation per cycle, the whole interface (N mm, or N mm per mm of a line load).
     pub d_coulomb: f64,
-    /// Regularized dissipation per cycle, both beams (N mm).
-    #[serde(rename = "D_regularized_Nmm")]
+    /// Regularized dissipation per cycle.
     pub d_regularized: f64,
     /// Coulomb equivalent damping ratio (-).
     pub zeta_coulomb: f64,
     /// Regularized equivalent damping ratio (-).
     pub zeta_regularized: f64,
+    /// The keys of the problem's units.
+    keys: CycleKeys,
 }
 
-impl From<&CyclePoint> for CycleRow {
-    fn from(p: &CyclePoint) -> Self {
+impl CycleRow {
+    /// A row of zeros headed with `keys`: what a table's header is written from.
+    pub fn header(keys: CycleKeys) -> Self {
+        let zero = CyclePoint {
+            amplitude: 0.0,
+            d_coulomb: 0.0,
+            d_regularized: 0.0,
+            zeta_coulomb: 0.0,
+            zeta_regularized: 0.0,
+        };
+        CycleRow::new(&zero, keys)
+    }
+}
+
+impl CycleRow {
+    /// The row of `p`, headed with `keys`.
+    pub fn new(p: &CyclePoint, keys: CycleKeys) -> Self {
         CycleRow {
             amplitude: p.amplitude,
             d_coulomb: p.d_coulomb,
             d_regularized: p.d_regularized,
             zeta_coulomb: p.zeta_coulomb,
             zeta_regularized: p.zeta_regularized,
+            keys,
         }
+    }
+}
+
+impl Serialize for CycleRow {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut out = serializer.serialize_struct("CycleRow", 5)?;
+        out.serialize_field(self.keys.amplitude, &self.amplitude)?;
+        out.serialize_field(self.keys.dissipations[0], &self.d_coulomb)?;
+        out.serialize_field(self.keys.dissipations[1], &self.d_regularized)?;
+        out.serialize_field("zeta_coulomb", &self.zeta_coulomb)?;
+        out.serialize_field("zeta_regularized", &self.zeta_regularized)?;
+        out.end()
     }
 }
 
@@ -209,8 +240,13 @@ mod tests {
             "KT_MPa_per_mm,u_coulomb_mm,u_regularized_mm,Xs_mm,Xr_mm,regime_coulomb,regime_regularized,\
              strip_theory"
         );
+        let cycle_header = |keys| {
+            let mut out = Vec::new();
+            super::super::csv::write_header(&mut out, &CycleRow::header(keys)).unwrap();
+            String::from_utf8(out).unwrap().trim_end().to_string()
+        };
         assert_eq!(
-            header::<CycleRow>(),
+            cycle_header(CycleKeys::FORCE),
             "Fa_N,D_coulomb_Nmm,D_regularized_Nmm,zeta_coulomb,zeta_regularized"
         );
         assert_eq!(

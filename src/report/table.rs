@@ -44,9 +44,23 @@ pub fn write_table<R: Serialize + Default>(
     format: TableFormat,
     rows: impl Iterator<Item = R>,
 ) -> io::Result<()> {
+    write_table_headed(out, format, &R::default(), rows)
+}
+
+/// [`write_table`] for rows whose header depends on their values' problem (a cycle sweep's
+/// `Fa_N` or `Qa_N_per_mm`): the CSV header is `header`'s field names.
+///
+/// # Errors
+/// The writer's error.
+pub fn write_table_headed<R: Serialize>(
+    out: &mut impl Write,
+    format: TableFormat,
+    header: &R,
+    rows: impl Iterator<Item = R>,
+) -> io::Result<()> {
     match format {
         TableFormat::Csv => {
-            csv::write_header(out, &R::default())?;
+            csv::write_header(out, header)?;
             for row in rows {
                 csv::write_row(out, &row)?;
             }

@@ -396,25 +396,16 @@ pub fn perform_blocking(effect: Effect) -> Option<Outcome> {
 /// The outcome of [`Effect::ReadMeasurements`]: the curve of `kind`'s fit (a long parse stops at
 /// a cancellation checkpoint every few ten thousand rows).
 fn read_measurements(path: String, kind: ModelKind) -> Outcome {
-    let parse = measured_curve_parser(kind);
     let result = crate::measured::read_text(&path, crate::file::Kinds::RegularOnly)
         .map_err(|e| e.to_string())
         .and_then(|text| {
-            parse(&text, &mut |_, _| crate::numeric::cancel::checkpoint())
-                .map(|measured| measured.points)
-                .map_err(|e| e.to_string())
+            crate::measured::parse_measured_curve_of(kind, &text, &mut |_, _| {
+                crate::numeric::cancel::checkpoint()
+            })
+            .map(|measured| measured.points)
+            .map_err(|e| e.to_string())
         });
     Outcome::Measurements { path, kind, result }
-}
-
-pub use crate::chart::panes::CurveParser;
-
-/// The reader of `kind`'s measured curve (`F_N,Delta_mm` for the lap joint, `F_N,w_mm` for the
-/// beams: its face's [`PaneFace::MEASURED`]): what `d` and `--data` read, and `f` fits.
-///
-/// [`PaneFace::MEASURED`]: crate::chart::panes::PaneFace::MEASURED
-pub fn measured_curve_parser(kind: ModelKind) -> CurveParser {
-    pane_face(kind).measured()
 }
 
 /// The outcome of [`Effect::SolveOverlay`].

@@ -137,10 +137,13 @@ pub fn run(
             let text = crate::measured::read_text(&path, crate::file::Kinds::AnyReadable)
                 .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?;
             // The measured curve of the problem opened: F_N,Delta_mm on a lap joint's preset.
-            let parse = effects::measured_curve_parser(preset.inputs.kind());
-            let points = parse(&text, &mut |_, _| {})
-                .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?
-                .points;
+            let points = crate::measured::parse_measured_curve_of(
+                preset.inputs.kind(),
+                &text,
+                &mut |_, _| {},
+            )
+            .map_err(|e| TuiError::Data(format!("{shown}: {e}")))?
+            .points;
             Some(app::Measurements {
                 path: shown,
                 points,

@@ -5,15 +5,11 @@ use super::deck::{CylinderCompared, compare_cylinder};
 use super::point::cylinder_point;
 use super::problem::{CylinderModel, CylinderProblem};
 use crate::chart::panes::{
-    ContinuumState, CurveParser, KT_UM_MEANING, PaneFace, RATIO_MEANING, SummaryLine,
-    TABLE_TOLERANCE, ratio_text, shown,
+    ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SummaryLine, TABLE_TOLERANCE,
+    ratio_text, shown,
 };
 use crate::fe::load::Loaded;
-use crate::fit::Measured;
 use crate::kernel::format::{number, number_with};
-use crate::measured::DataError;
-use crate::problems::fittable::Fittable;
-use crate::problems::load_driven::LoadDriven;
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::study::tolerance::state_stiffness_for_tolerance;
 
@@ -22,26 +18,11 @@ use super::deck::CylinderFePoint;
 use crate::kernel::regime::Law;
 use crate::problems::load_driven::MasingCycle;
 
-/// The cylinder's measured curve, headed `Q_N_per_mm,sa_mm` (its [`Fittable`] columns, as
-/// `sweep cylinder` heads them): what `d` and `--data` read and `f` fits.
-fn measured_edge_slip(
-    text: &str,
-    progress: &mut dyn FnMut(usize, usize),
-) -> Result<Measured, DataError> {
-    crate::measured::parse_measured_columns_with_progress(
-        text,
-        (CylinderProblem::LOAD_COLUMN, CylinderProblem::FORCE),
-        CylinderProblem::RESPONSE_COLUMN,
-        progress,
-    )
-}
-
 impl PaneFace for CylinderProblem {
     const STRIP_ORIGIN: &'static str = "centre";
     /// The strip divides the shear by the interface's `friction * pressure`, mu p0 here (the
     /// peak pressure, `problem.rs`'s `interface`); the strength mu p(x) falls to 0 at the edges.
     const STRIP_SHEAR: &'static str = "q(x) / mu p0";
-    const MEASURED: CurveParser = measured_edge_slip;
     const KT_COLUMNS: &'static [(&'static str, usize)] =
         &[("KTa/E*", 7), ("c mm", 8), ("s(a) mm", 9)];
 

@@ -12,7 +12,9 @@ use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace};
-use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleWords, ForceLimit};
+use crate::report::point::cycle::{
+    self, AnyCycleFace, CycleFace, CycleKeys, CycleWords, ForceLimit,
+};
 use crate::report::point::{InputsReport, regime_label, validity_label};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::Answer;
@@ -198,6 +200,14 @@ impl From<&LoopPoint> for CylinderLoopRow {
 impl CycleFace for CylinderProblem {
     const CYCLE_WORDS: CycleWords = CycleWords {
         peak_key: "sa_peak_mm",
+        keys: CycleKeys {
+            amplitude: "Qa_N_per_mm",
+            onset: "onset_N_per_mm",
+            dissipation: "D_Nmm_per_mm",
+            peak_energy: "U_Nmm_per_mm",
+            secant: "secant_stiffness_N_per_mm2",
+            dissipations: ["D_coulomb_Nmm_per_mm", "D_regularized_Nmm_per_mm"],
+        },
         heading: ("Hertzian cylinder", "tangential line load"),
         rows: [
             "onset of sliding (N/mm)",

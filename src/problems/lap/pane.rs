@@ -8,8 +8,8 @@ use super::closed_form::{FirstSlip, JointForce, LapJoint};
 use super::cycle::{LapCycle, MasingCycle};
 use super::deck::compare_lap;
 use crate::chart::panes::{
-    ContinuumState, CurveParser, KT_UM_MEANING, PaneFace, RATIO_MEANING, SATURATION_MEANING,
-    SummaryLine, load_regimes, load_tolerance_lines, ratio_text,
+    ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SATURATION_MEANING, SummaryLine,
+    load_regimes, load_tolerance_lines, ratio_text,
 };
 use crate::fe::compare::LapCompared;
 use crate::fe::load::Loaded;
@@ -23,7 +23,6 @@ use crate::study::curves::lap_point;
 
 impl PaneFace for LapJointProblem {
     const STRIP_ORIGIN: &'static str = "inner end";
-    const MEASURED: CurveParser = crate::measured::parse_measured_joint_with_progress;
     const KT_COLUMNS: &'static [(&'static str, usize)] =
         &[("F_1 N", 7), ("a+d mm", 7), ("Delta mm", 8)];
 

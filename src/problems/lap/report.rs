@@ -14,7 +14,9 @@ use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace, point_continuum};
-use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleWords, ForceLimit};
+use crate::report::point::cycle::{
+    self, AnyCycleFace, CycleFace, CycleKeys, CycleWords, ForceLimit,
+};
 use crate::report::point::{InputsReport, regime_label, validity_label};
 use crate::report::rows::{LapLoopRow, LapRow};
 use crate::report::{number, number_with, sanitize};
@@ -158,6 +160,7 @@ pub(crate) const LAP_CYCLE_NOTE: &str = "D is the whole joint's (both interfaces
 impl CycleFace for LapJointProblem {
     const CYCLE_WORDS: CycleWords = CycleWords {
         peak_key: "Delta_peak_mm",
+        keys: CycleKeys::FORCE,
         heading: ("Double-lap joint", "force"),
         rows: [
             "onset of sliding (N)",

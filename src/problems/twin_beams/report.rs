@@ -14,7 +14,7 @@ use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace, point_continuum};
-use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleWords};
+use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleKeys, CycleWords};
 use crate::report::point::{InputsReport, SideBySide, regime_label, validity_label};
 use crate::report::rows::{BeamRow, LoopRow};
 use crate::report::{number, number_with, sanitize};
@@ -205,6 +205,7 @@ pub(crate) const CYCLE_UNITS_NOTE: &str = "D and U are for the pair (both beams'
 impl CycleFace for TwinBeamsProblem {
     const CYCLE_WORDS: CycleWords = CycleWords {
         peak_key: "w_peak_mm",
+        keys: CycleKeys::FORCE,
         heading: ("Twin beams", "tip force"),
         rows: [
             "onset of sliding (N)",

@@ -11,7 +11,8 @@ use crate::kernel::params::ParamError;
 use crate::kernel::regime::Law;
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::load_driven::{LoadDriven, MasingCycle};
-use crate::report::table::{TableFormat, write_table};
+use crate::report::rows::CycleRow;
+use crate::report::table::{TableFormat, write_table, write_table_headed};
 use crate::report::{number, sanitize};
 use crate::study::curves::{RangeError, Samples};
 use crate::study::load::{self, LoopPoint};
@@ -183,10 +184,12 @@ impl<P: CycleFace> AnyCycleFace for CycleOf<P> {
         Some((|| {
             let rows =
                 load::cycle_sweep::<P>(structure, amplitudes).map_err(LoadTableError::Range)?;
-            write_table(
+            let keys = P::CYCLE_WORDS.keys;
+            write_table_headed(
                 &mut &mut *out,
                 format,
-                rows.map(|r| crate::report::rows::CycleRow::from(&r)),
+                &CycleRow::header(keys),
+                rows.map(|r| CycleRow::new(&r, keys)),
             )?;
             Ok(())
         })())
@@ -241,9 +244,10 @@ pub struct CycleReport {
     /// The structure in one line, for the text.
     #[serde(skip)]
     pub structure: String,
-    /// Amplitude F_a (N).
-    #[serde(rename = "Fa_N")]
-    pub amplitude: f64,
+    /// Amplitude F_a, in the load's unit, under its key ([`CycleKeys::amplitude`]: `Fa_N`,
+    /// the cylinder's `Qa_N_per_mm`, and the deprecated one too where they differ).
+    #[serde(flatten)]
+    pub amplitude: Keyed,
     pub coulomb: LawCycle,
     pub regularized: LawCycle,
     /// A note on the units: what D, U and the secant stiffness are of ([`CycleWords::note`]).
@@ -256,9 +260,67 @@ pub struct CycleReport {
     load_unit: &'static str,
 }
 
-/// One law's cycle: the same six numbers for every load-driven problem. Its JSON keys are
-/// `onset_N`, the peak's (`w_peak_mm`, `Delta_peak_mm`: [`LawCycle::peak_key`]), `D_Nmm`,
-/// `U_Nmm`, `zeta` and `secant_stiffness_N_per_mm`, in that order.
+/// A number under a key of the problem's words, and under the key every problem had before the
+/// keys said the load's unit (deprecated, kept one release) where the two differ.
+#[derive(Debug, Clone, Copy)]
+pub struct Keyed {
+    /// The value.
+    pub value: f64,
+    /// Its key, in the problem's words (`Qa_N_per_mm`).
+    pub key: &'static str,
+    /// The deprecated key (`Fa_N`), written too where it is not `key`.
+    pub deprecated: &'static str,
+}
+
+impl Serialize for Keyed {
+    fn serialize<Z: serde::Serializer>(&self, serializer: Z) -> Result<Z::Ok, Z::Error> {
+        use serde::ser::SerializeMap;
+        let mut out = serializer.serialize_map(None)?;
+        out.serialize_entry(self.key, &self.value)?;
+        if self.deprecated != self.key {
+            out.serialize_entry(self.deprecated, &self.value)?;
+        }
+        out.end()
+    }
+}
+
+/// The keys of a cycle's numbers in JSON and CSV, in the problem's units: a force in N (the
+/// beams, the lap joint: [`CycleKeys::FORCE`]) or a line load in N/mm (energies per mm, a
+/// secant stiffness per mm), which its problem writes in its [`CycleWords`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct CycleKeys {
+    /// The amplitude (`Fa_N`).
+    pub amplitude: &'static str,
+    /// The load at which sliding starts (`onset_N`).
+    pub onset: &'static str,
+    /// The dissipation per cycle (`D_Nmm`).
+    pub dissipation: &'static str,
+    /// The peak energy (`U_Nmm`).
+    pub peak_energy: &'static str,
+    /// The secant stiffness (`secant_stiffness_N_per_mm`).
+    pub secant: &'static str,
+    /// `sweep cycle`'s dissipation columns, Coulomb's and the regularized law's
+    /// (`D_coulomb_Nmm`, `D_regularized_Nmm`).
+    pub dissipations: [&'static str; 2],
+}
+
+impl CycleKeys {
+    /// A load that is a force (N): the keys every load-driven problem had before a line load
+    /// joined them, kept as the deprecated keys of the others.
+    pub const FORCE: CycleKeys = CycleKeys {
+        amplitude: "Fa_N",
+        onset: "onset_N",
+        dissipation: "D_Nmm",
+        peak_energy: "U_Nmm",
+        secant: "secant_stiffness_N_per_mm",
+        dissipations: ["D_coulomb_Nmm", "D_regularized_Nmm"],
+    };
+}
+
+/// One law's cycle: the same six numbers for every load-driven problem. Its JSON keys are the
+/// problem's [`CycleKeys`] (`onset_N`, the peak's `w_peak_mm` or `Delta_peak_mm`, `D_Nmm`,
+/// `U_Nmm`, `zeta` and `secant_stiffness_N_per_mm` for a force), in that order, then the
+/// deprecated [`CycleKeys::FORCE`] ones where they differ.
 #[derive(Debug, Clone, Copy)]
 pub struct LawCycle {
     /// Force at which sliding starts (N).
@@ -275,10 +337,12 @@ pub struct LawCycle {
     pub secant_stiffness: f64,
     /// The peak's JSON key.
     pub peak_key: &'static str,
+    /// The other keys.
+    pub keys: CycleKeys,
 }
 
 impl LawCycle {
-    fn new(c: &impl MasingCycle, peak_key: &'static str) -> LawCycle {
+    fn new(c: &impl MasingCycle, peak_key: &'static str, keys: CycleKeys) -> LawCycle {
         LawCycle {
             onset: c.onset(),
             peak: c.peak_response(),
@@ -287,19 +351,27 @@ impl LawCycle {
             damping_ratio: c.damping_ratio(),
             secant_stiffness: c.secant_stiffness(),
             peak_key,
+            keys,
         }
     }
 }
 
 impl Serialize for LawCycle {
     fn serialize<Z: serde::Serializer>(&self, serializer: Z) -> Result<Z::Ok, Z::Error> {
+        let (keys, old) = (self.keys, CycleKeys::FORCE);
         let mut out = serializer.serialize_struct("LawCycle", 6)?;
-        out.serialize_field("onset_N", &self.onset)?;
+        out.serialize_field(keys.onset, &self.onset)?;
         out.serialize_field(self.peak_key, &self.peak)?;
-        out.serialize_field("D_Nmm", &self.dissipation)?;
-        out.serialize_field("U_Nmm", &self.peak_energy)?;
+        out.serialize_field(keys.dissipation, &self.dissipation)?;
+        out.serialize_field(keys.peak_energy, &self.peak_energy)?;
         out.serialize_field("zeta", &self.damping_ratio)?;
-        out.serialize_field("secant_stiffness_N_per_mm", &self.secant_stiffness)?;
+        out.serialize_field(keys.secant, &self.secant_stiffness)?;
+        if keys.onset != old.onset {
+            out.serialize_field(old.onset, &self.onset)?;
+            out.serialize_field(old.dissipation, &self.dissipation)?;
+            out.serialize_field(old.peak_energy, &self.peak_energy)?;
+            out.serialize_field(old.secant, &self.secant_stiffness)?;
+        }
         out.end()
     }
 }
@@ -310,6 +382,8 @@ impl Serialize for LawCycle {
 pub struct CycleWords {
     /// The peak's JSON key (`w_peak_mm`).
     pub peak_key: &'static str,
+    /// The other numbers' keys, in the load's units.
+    pub keys: CycleKeys,
     /// What is cycled and by which load: (`Twin beams`, `tip force`).
     pub heading: (&'static str, &'static str),
     /// The labels of the text's rows: onset, peak, D, U, damping ratio, secant stiffness.
@@ -327,13 +401,23 @@ impl CycleReport {
         amplitude: P::Force,
     ) -> CycleReport {
         let words = P::CYCLE_WORDS;
-        let law = |law| LawCycle::new(&P::cycle(structure, law, amplitude), words.peak_key);
+        let law = |law| {
+            LawCycle::new(
+                &P::cycle(structure, law, amplitude),
+                words.peak_key,
+                words.keys,
+            )
+        };
         CycleReport {
             model: P::INFO.key,
             preset: preset.to_string(),
             inputs: InputsReport(P::cycle_inputs(structure, amplitude)),
             structure: P::structure_line(structure),
-            amplitude: P::newtons(amplitude),
+            amplitude: Keyed {
+                value: P::newtons(amplitude),
+                key: words.keys.amplitude,
+                deprecated: CycleKeys::FORCE.amplitude,
+            },
             coulomb: law(Law::Coulomb),
             regularized: law(Law::Regularized),
             note: words.note,
@@ -349,7 +433,7 @@ impl CycleReport {
         let _ = writeln!(
             out,
             "{2}, {3} cycling between +{0} {4} and -{0} {4} (Masing branches) - preset {1}",
-            number(self.amplitude),
+            number(self.amplitude.value),
             sanitize(&self.preset),
             words.heading.0,
             words.heading.1,

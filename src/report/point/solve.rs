@@ -43,17 +43,38 @@ pub struct SolveReport {
     pub roots: Vec<RootReport>,
 }
 
-/// [`RangeCut`] for JSON.
-#[derive(Debug, Clone, Copy, Serialize)]
+/// [`RangeCut`] for JSON: `least` (in the parameter's unit) and the load that cut it under its
+/// own key (`F_N`, the cylinder's `Q_N_per_mm`: below `least`, the load's bound would fall under
+/// it). A load whose key is not `F_N` is also written as `F_N`, deprecated (kept one release:
+/// the key every problem's cut had before the key said the load's name and unit).
+#[derive(Debug, Clone, Copy)]
 pub struct RangeCutReport {
     /// The least value searched, in the parameter's unit.
     pub least: f64,
-    /// The load that cut it: below `least`, F_gross would fall under it (N).
-    #[serde(rename = "F_N")]
-    pub force: f64,
-    /// Why, in words.
-    #[serde(skip)]
+    /// The load that cut it, in the load's unit.
+    pub load: f64,
+    /// Why, in words, and whose load it is.
     cut: RangeCut,
+}
+
+impl Serialize for RangeCutReport {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        const DEPRECATED: &str = "F_N";
+        let key = self
+            .cut
+            .kind
+            .description()
+            .load_key("")
+            .unwrap_or_else(|| DEPRECATED.to_string());
+        let mut map = serializer.serialize_map(None)?;
+        map.serialize_entry("least", &self.least)?;
+        map.serialize_entry(&key, &self.load)?;
+        if key != DEPRECATED {
+            map.serialize_entry(DEPRECATED, &self.load)?;
+        }
+        map.end()
+    }
 }
 
 /// One root, or a plateau of roots.
@@ -107,7 +128,7 @@ impl SolveReport {
             range: solved.range,
             range_cut: solved.cut.map(|cut| RangeCutReport {
                 least: cut.least,
-                force: cut.force,
+                load: cut.load,
                 cut,
             }),
             roots: solved.roots.iter().map(RootReport::from).collect(),

@@ -199,7 +199,8 @@ impl App {
         // The force steps in fractions of its regime scale (F_thre, F_gross).
         let scale = self.regime_scale_of(self.kind).unwrap_or(1.0);
         // A step stops at the edge of the accepted domain rather than being refused there.
-        // The lap joint's F stops at F_gross, and L, b, P, mu where F_gross falls to F.
+        // A bounded load stops at its bound (the lap joint's F at F_gross), and the parameters
+        // of the bound where it falls to the load.
         let spec = param.spec();
         let (lo, hi) = self
             .model()
@@ -210,10 +211,13 @@ impl App {
         let next = stepped.clamp(lo, hi);
         if next == value && stepped != value {
             // Held by the other values, not by its own domain: say so rather than do nothing.
+            let info = self.kind.description();
+            let load = info.load_words().map_or("the load", |(name, _)| name);
             return self.info(format!(
-                "{param} stops at {}{}: F must not exceed F_gross = 2 b mu P L",
+                "{param} stops at {}{}: {load} must not exceed {}",
                 number(value),
-                param.unit_suffix()
+                param.unit_suffix(),
+                info.bound_formula().unwrap_or_default()
             ));
         }
         self.set_value(param, next);

@@ -124,8 +124,9 @@ pub enum FitError {
         column: &'static str,
         /// The load's unit (`N`, `N/mm`).
         unit: &'static str,
-        /// The bound in words ([`Fittable::BOUND`]).
-        bound: &'static str,
+        /// The bound in the problem's words (`F_gross = 2 b mu P L: the joint slides through
+        /// beyond it`).
+        bound: String,
     },
 }
 
@@ -542,13 +543,13 @@ mod tests {
                 largest: 1e5,
                 column: "F_N",
                 unit: "N",
-                bound: "the gross-slip force 2 b mu P L: the joint slides through",
+                bound: "F_gross = 2 b mu P L: the joint slides through beyond it".to_string(),
             })
         );
         assert_eq!(
             refused.unwrap_err().to_string(),
-            "invalid F_N = 250000: beyond the gross-slip force 2 b mu P L: the joint slides \
-             through (for every mu up to 5, the bound is at most 100000 N), so no mu fits it"
+            "invalid F_N = 250000: beyond F_gross = 2 b mu P L: the joint slides through beyond \
+             it (for every mu up to 5, the bound is at most 100000 N), so no mu fits it"
         );
         // A fixed mu that cannot carry the largest force is refused by name.
         let refused = fit_weighted(

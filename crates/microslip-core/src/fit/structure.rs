@@ -92,8 +92,8 @@ impl Structure {
         self.fittable.load()
     }
 
-    /// What bounds the force it carries, in words ([`Fittable::BOUND`]).
-    pub(super) fn bound(&self) -> &'static str {
+    /// What bounds the load it carries, in the problem's words.
+    pub(super) fn bound(&self) -> String {
         self.fittable.bound()
     }
 

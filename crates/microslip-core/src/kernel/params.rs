@@ -38,6 +38,19 @@ impl Unit {
         }
     }
 
+    /// The unit as a JSON key or CSV header ends (`Q_N_per_mm`, `KT_MPa_per_mm`): `/` as
+    /// `_per_`, and nothing for dimensionless.
+    pub fn key(self) -> &'static str {
+        match self {
+            Unit::Millimetre => "mm",
+            Unit::Newton => "N",
+            Unit::Megapascal => "MPa",
+            Unit::MegapascalPerMillimetre => "MPa_per_mm",
+            Unit::NewtonPerMillimetre => "N_per_mm",
+            Unit::Dimensionless => "",
+        }
+    }
+
     /// The unit as range messages spell it (`dimensionless` rather than `-`).
     fn in_words(self) -> &'static str {
         match self {

@@ -52,10 +52,6 @@ pub trait Fittable: LoadDriven {
     fn force_per_friction(_structure: &Self::Structure) -> Option<f64> {
         None
     }
-    /// Where [`Fittable::force_per_friction`] is `Some`: the bound in words and what happens
-    /// beyond it, for the refusal of a measured force no mu carries ("the gross-slip force 2 b
-    /// mu P L: the joint slides through"). Empty (the default) for a structure without a bound.
-    const BOUND: &'static str = "";
 }
 
 /// A [`Fittable`] structure at one trial (mu, K_T), erased: what the least squares evaluate.
@@ -102,8 +98,10 @@ pub trait AnyFittable: Send + Sync {
     fn load_column(&self) -> &'static str;
     /// The load parameter ([`LoadDriven::FORCE`]): its name, unit and domain.
     fn load(&self) -> Param;
-    /// [`Fittable::BOUND`].
-    fn bound(&self) -> &'static str;
+    /// Where [`Fittable::force_per_friction`] is `Some`: the bound and what happens beyond it,
+    /// in the problem's words ([`Description::bound_sentence`](crate::problems::Description::bound_sentence)),
+    /// for the refusal of a measured force no mu carries; empty for a structure without one.
+    fn bound(&self) -> String;
     /// [`Fittable::FITTED`].
     fn fitted(&self) -> &'static str;
     /// [`Fittable::HELD`], as parameters of any problem.
@@ -149,8 +147,8 @@ impl<P: Fittable> AnyFittable for FittableOf<P> {
         P::FORCE
     }
 
-    fn bound(&self) -> &'static str {
-        P::BOUND
+    fn bound(&self) -> String {
+        P::INFO.bound_sentence().unwrap_or_default()
     }
 
     fn fitted(&self) -> &'static str {

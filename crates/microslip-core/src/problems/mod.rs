@@ -194,10 +194,73 @@ pub struct Description {
     /// The name of [`crate::problems::inputs::Model::regime_scale`] as messages say it (`F_thre`);
     /// empty without a load.
     pub regime_scale_name: &'static str,
+    /// The largest load the structure carries, when it has one (the lap joint's F_gross, the
+    /// cylinder's Q_gross): every generic message that refuses a load beyond it says it through
+    /// this ([`Description::bound_formula`]), so that none hard-codes one problem's formula.
+    pub load_bound: Option<LoadBound>,
     /// How many regime scales the load axis of its charts spans by default: 3 F_thre for the
     /// beams (macroslip well past F_1), 1 F_gross for the lap joint (no state beyond it); 0
     /// without a load.
     pub load_span: f64,
+}
+
+/// The bound a problem's load cannot pass, in the problem's own words: the one descriptor every
+/// generic message, prompt, fit and cycle table asks (issue 43), so that the lap joint's
+/// "F_gross = 2 b mu P L" is never said of the cylinder, whose bound is "Q_gross = mu P".
+#[derive(Debug)]
+pub struct LoadBound {
+    /// Its symbol: `F_gross`, `Q_gross`.
+    pub symbol: &'static str,
+    /// Its formula in the problem's parameters: `2 b mu P L`, `mu P`.
+    pub formula: &'static str,
+    /// What happens beyond it: `the joint slides through beyond it`.
+    pub beyond: &'static str,
+}
+
+impl Description {
+    /// The load's key and unit as people read them (`("Q", "N/mm")`), when the problem has one.
+    pub fn load_words(&self) -> Option<(&'static str, &'static str)> {
+        self.load.map(|load| {
+            let spec = load.spec();
+            (spec.name, spec.unit.symbol())
+        })
+    }
+
+    /// The JSON key or CSV header of a value of the load (`F_N`, `Q_N_per_mm`), `infix` after
+    /// its name (`a` gives the amplitude's `Fa_N`, `Qa_N_per_mm`); None without a load.
+    pub fn load_key(&self, infix: &str) -> Option<String> {
+        self.load.map(|load| {
+            let spec = load.spec();
+            format!("{}{infix}_{}", spec.name, spec.unit.key())
+        })
+    }
+
+    /// The load's bound with its formula: `F_gross = 2 b mu P L`, `Q_gross = mu P`; None for a
+    /// load without one (the beams') or a problem without a load (the plate).
+    pub fn bound_formula(&self) -> Option<String> {
+        self.load_bound
+            .as_ref()
+            .map(|bound| format!("{} = {}", bound.symbol, bound.formula))
+    }
+
+    /// The bound, its formula and what happens beyond it: `F_gross = 2 b mu P L: the joint
+    /// slides through beyond it`.
+    pub fn bound_sentence(&self) -> Option<String> {
+        self.load_bound
+            .as_ref()
+            .map(|bound| format!("{} = {}: {}", bound.symbol, bound.formula, bound.beyond))
+    }
+
+    /// "the given F = 300 N" in the problem's words (its load's name and unit; `value` in that
+    /// unit): what a refusal of a bounded range names.
+    pub fn load_value(&self, value: f64) -> String {
+        match self.load_words() {
+            Some((name, unit)) => {
+                format!("{name} = {} {unit}", crate::kernel::params::Compact(value))
+            }
+            None => format!("{}", crate::kernel::params::Compact(value)),
+        }
+    }
 }
 
 /// Writes [`ModelKind`], its [`ModelKind::ALL`], [`ModelKind::description`],

@@ -239,25 +239,33 @@ pub struct Scan {
     pub cut: Option<RangeCut>,
 }
 
-/// Where the searched range was cut short of the parameter's domain by the load: the lap
+/// Where the searched range was cut short of the parameter's domain by the load's bound (the
+/// problem's [`Description::load_bound`](crate::problems::Description::load_bound)): the lap
 /// joint's F must not exceed F_gross = 2 b mu P L, so L, b, P and mu cannot go below the value at
-/// which F_gross falls to F.
+/// which F_gross falls to F; the cylinder's Q the same of Q_gross = mu P.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RangeCut {
     /// The least value searched (the parameter's unit).
     pub least: f64,
-    /// The load that cut it (N).
-    pub force: f64,
+    /// The load that cut it (in the load's unit).
+    pub load: f64,
+    /// The problem, whose words the cut is said in.
+    pub kind: ModelKind,
 }
 
 impl RangeCut {
-    /// In words, for `param` in `unit` (with its leading space): "P >= 5 MPa: below it ...".
+    /// In words, for `param` in `unit` (with its leading space): "P >= 5 MPa: below it the
+    /// given F = 300 N exceeds F_gross = 2 b mu P L (lower F to search further)", in the
+    /// problem's words (its load's name and unit, its bound).
     pub fn words(&self, param: &str, unit: &str) -> String {
+        let info = self.kind.description();
+        let name = info.load_words().map_or("the load", |(name, _)| name);
         format!(
-            "{param} >= {}{unit} only: below it the given F = {} N exceeds F_gross = 2 b mu P L \
-             (lower F to search further)",
+            "{param} >= {}{unit} only: below it the given {} exceeds {} (lower {name} to search \
+             further)",
             Compact(self.least),
-            Compact(self.force)
+            info.load_value(self.load),
+            info.bound_formula().unwrap_or_default(),
         )
     }
 }
@@ -332,13 +340,13 @@ fn search_range(
         None => (least, domain.clamp(most)),
     };
     // The load the cut was found at (none for a problem without a load).
-    let force = model
-        .kind()
-        .description()
+    let kind = model.kind();
+    let info = kind.description();
+    let load = info
         .load
         .and_then(|load| model.inputs().get(load))
         .unwrap_or(0.0);
-    let cut = (range.is_none() && least > domain.min()).then_some(RangeCut { least, force });
+    let cut = (range.is_none() && least > domain.min()).then_some(RangeCut { least, load, kind });
     for value in [lo, hi] {
         if !domain.contains(value) {
             return Err(TargetError::Range {
@@ -351,11 +359,12 @@ fn search_range(
                 param: spec.name,
                 reason: format!(
                     "{} leaves no state with the other values: the accepted range is [{}, {}] \
-                     (the lap joint's F = {} N must not exceed F_gross = 2 b mu P L)",
+                     (the given {} must not exceed {})",
                     Compact(value),
                     Compact(least),
                     Compact(most),
-                    Compact(force)
+                    info.load_value(load),
+                    info.bound_formula().unwrap_or_default(),
                 ),
             });
         }

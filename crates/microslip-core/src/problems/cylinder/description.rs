@@ -5,7 +5,7 @@
 use super::params::CylinderParam;
 use super::problem::CylinderModel;
 use crate::problems::quantity::ratio_to_coulomb;
-use crate::problems::{Description, Param, Quantity, QuantityName, Solution};
+use crate::problems::{Description, LoadBound, Param, Quantity, QuantityName, Solution};
 
 /// The Hertzian cylinder as the generic layers see it.
 pub(crate) const DESCRIPTION: Description = Description {
@@ -18,6 +18,11 @@ pub(crate) const DESCRIPTION: Description = Description {
     response_symbol: "sa",
     load: Some(Param::Cylinder(CylinderParam::TangentialLoad)),
     regime_scale_name: "Q_gross",
+    load_bound: Some(LoadBound {
+        symbol: "Q_gross",
+        formula: "mu P",
+        beyond: "the cylinder slides over the flat beyond it",
+    }),
     load_span: 1.0,
     quantities: &[
         QuantityName {

@@ -30,8 +30,6 @@ impl Fittable for CylinderProblem {
         CylinderParam::Poisson,
         CylinderParam::NormalLoad,
     ];
-    const BOUND: &'static str =
-        "the gross-slip load mu P: the cylinder slides over the flat beyond it";
 
     fn interface_of(cylinder: &Cylinder) -> (f64, f64) {
         let p = cylinder.params();

@@ -39,8 +39,6 @@ impl Fittable for LapJointProblem {
         joint.first_slip_force()
     }
 
-    const BOUND: &'static str = "the gross-slip force 2 b mu P L: the joint slides through";
-
     /// F_gross / mu = 2 b P L: F_gross grows in proportion to mu.
     fn force_per_friction(joint: &LapJoint) -> Option<f64> {
         let p = joint.params();

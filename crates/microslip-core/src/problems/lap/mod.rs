@@ -28,7 +28,7 @@ pub use validity::{LapRangesLeft, LapValidity};
 
 use crate::kernel::regime::Law;
 use crate::problems::quantity::ratio_to_coulomb;
-use crate::problems::{Description, Param, Quantity, QuantityName, Solution};
+use crate::problems::{Description, LoadBound, Param, Quantity, QuantityName, Solution};
 use closed_form::{JointForce, LapJoint};
 use cycle::{LapCycle, MasingCycle};
 use params::LapParam;
@@ -43,6 +43,11 @@ pub(crate) const DESCRIPTION: Description = Description {
     response_symbol: "Delta",
     load: Some(Param::Lap(LapParam::Force)),
     regime_scale_name: "F_gross",
+    load_bound: Some(LoadBound {
+        symbol: "F_gross",
+        formula: "2 b mu P L",
+        beyond: "the joint slides through beyond it",
+    }),
     load_span: 1.0,
     quantities: &[
         QuantityName {

@@ -34,6 +34,7 @@ pub(crate) const DESCRIPTION: Description = Description {
     response_symbol: "u",
     load: None,
     regime_scale_name: "",
+    load_bound: None,
     load_span: 0.0,
     quantities: &[
         QuantityName {

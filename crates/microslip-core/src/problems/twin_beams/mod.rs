@@ -41,6 +41,7 @@ pub(crate) const DESCRIPTION: Description = Description {
     response_symbol: "w",
     load: Some(Param::Beam(BeamParam::Force)),
     regime_scale_name: "F_thre",
+    load_bound: None,
     load_span: 3.0,
     quantities: &[
         QuantityName {
