@@ -179,7 +179,9 @@ fn loads_beyond_every_gross_slip_load_are_refused_with_the_bound() {
 fn the_terminal_ui_reads_the_cylinder_s_curve_by_its_columns() {
     use microslip::problems::ModelKind;
     let kind: ModelKind = "cylinder".parse().unwrap();
-    let parse = microslip::chart::panes::pane_face(kind).measured();
+    let parse = |text: &str, progress: &mut dyn FnMut(usize, usize)| {
+        microslip::measured::parse_measured_curve_of(kind, text, progress)
+    };
     let text = std::fs::read_to_string("tests/data/reports/inputs/fit-cylinder.csv").unwrap();
     let measured = parse(&text, &mut |_, _| {}).unwrap();
     assert_eq!(measured.points.len(), 18);
