@@ -1,6 +1,7 @@
-//! microslip: closed-form solutions of friction benchmarks (the two of Ligier & Bonhote, 2014:
-//! twin beams and a squeezed plate; and the clamped double-lap joint) under the plain and the
-//! regularized Coulomb law.
+//! microslip: exact friction benchmarks under the plain and the regularized Coulomb law, one
+//! problem a type (the registry, `microslip_core::with_problems!`, lists them: the two of Ligier
+//! & Bonhote, 2014, and the ones added since), with their references, FE decks and the judge of
+//! FE results.
 //!
 //! Units everywhere: mm, N, MPa; tangential stiffness K_T in MPa/mm.
 //!

@@ -189,8 +189,12 @@ def _class(entry: dict, class_name: str) -> str:
         lines.append(f'    """{p["meaning"]} ({p["unit"]}; {p["allowed"]})."""')
     lines.append(f"    def replace(self, *, {replaced}) -> {class_name}: ...")
     if entry["load"]:
-        lines.append("    def solve(self, F: Optional[float] = None) -> Solution:")
-        lines.append(f'        """Both laws at this data set, or at the load F (N)."""')
+        load = next(p for p in params if p["name"] == entry["load"])
+        name, unit = load["name"], load["unit"]
+        alias = "" if name == "F" else ", F: Optional[float] = None"
+        lines.append(f"    def solve(self, {name}: Optional[float] = None{alias}) -> Solution:")
+        said = "" if name == "F" else f" (F= is an alias of {name}=)"
+        lines.append(f'        """Both laws at this data set, or at the load {name} ({unit}){said}."""')
     else:
         lines.append("    def solve(self) -> Solution:")
         lines.append('        """Both laws at this data set."""')

@@ -156,7 +156,7 @@ fn load_tolerance<P: LoadDriven>(
     element: f64,
 ) -> Result<ToleranceAnswer, String> {
     let structure = P::structure(model);
-    let force = P::newtons(P::applied_force(model));
+    let force = P::load_value(P::applied_force(model));
     let range = [
         check_flag("F_from", from.unwrap_or(force), Domain::FORCE, Unit::Newton)?,
         check_flag("F_to", to.unwrap_or(force), Domain::FORCE, Unit::Newton)?,

@@ -174,17 +174,27 @@ impl Problem {
         slf.get_type().call((), Some(&kwargs))
     }
 
-    /// Solves both laws at this data set, or at the load `F` (N) when given (problems driven by a
-    /// load only). The answer is a frozen `Solution`.
-    #[pyo3(signature = (F = None))]
-    #[allow(non_snake_case)]
-    fn solve(&self, py: Python<'_>, F: Option<f64>) -> PyResult<Solution> {
+    /// Solves both laws at this data set, or at the problem's load when given (problems driven
+    /// by a load only), by its own name (`F=` in N for the beams and the lap joint, `Q=` in N/mm
+    /// for the cylinder) or positionally. `F=` is also taken as the load of a problem whose load
+    /// has another name (the cylinder's Q): an alias kept for scripts written before the load
+    /// kept its own name. The answer is a frozen `Solution`.
+    #[pyo3(signature = (load = None, **named))]
+    fn solve(
+        &self,
+        py: Python<'_>,
+        load: Option<&Bound<'_, PyAny>>,
+        named: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<Solution> {
         let mut values = self.values.clone();
-        if let Some(force) = F {
+        if let Some(value) = crate::registry::load_argument(self.kind, load, named)? {
             let index = load_index(self.kind).ok_or_else(|| {
-                PyTypeError::new_err(format!("the {} problem has no load F to set", self.kind))
+                PyTypeError::new_err(format!(
+                    "the {} has no load to set",
+                    self.kind.description().title
+                ))
             })?;
-            values[index] = force;
+            values[index] = value;
         }
         Solution::new(py, self.kind, values, self.name.clone())
     }

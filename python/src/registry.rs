@@ -56,6 +56,66 @@ pub fn load_index(kind: ModelKind) -> Option<usize> {
     kind.params().iter().position(|&p| p == load)
 }
 
+/// The alias every load-driven problem takes for its load's keyword in `solve`: `F`, the name
+/// the load had in every problem before the cylinder's line load Q (documented in the guide).
+const LOAD_ALIAS: &str = "F";
+
+/// The load `solve` was given, positionally (`load`) or by keyword (`named`: the problem's load
+/// name, `Q` for the cylinder, or its alias `F`), as a number; None when none was given. A bool
+/// is refused (Python takes `True` as 1), as are any other keyword and a load given twice, each
+/// in the problem's words.
+pub fn load_argument(
+    kind: ModelKind,
+    load: Option<&Bound<'_, PyAny>>,
+    named: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Option<f64>> {
+    let info = kind.description();
+    let words = info.load_words();
+    let expected = || match words {
+        Some((name, unit)) => format!(
+            "solve() of the {} takes its load {name} ({unit}), positionally or as {name}=",
+            info.title
+        ),
+        None => format!("solve() of the {} takes no load (it has none)", info.title),
+    };
+    let mut given = load.cloned();
+    if let Some(named) = named {
+        for (key, value) in named.iter() {
+            let key: String = key.extract()?;
+            let known = words.is_some_and(|(name, _)| key == name || key == LOAD_ALIAS);
+            if !known {
+                return Err(PyTypeError::new_err(format!(
+                    "unexpected keyword '{key}': {}",
+                    expected()
+                )));
+            }
+            if given.is_some() {
+                return Err(PyTypeError::new_err(format!(
+                    "the load is given twice: {}",
+                    expected()
+                )));
+            }
+            given = Some(value);
+        }
+    }
+    let Some(value) = given else {
+        return Ok(None);
+    };
+    if words.is_none() {
+        return Err(PyTypeError::new_err(expected()));
+    }
+    if value.is_instance_of::<pyo3::types::PyBool>() {
+        return Err(PyTypeError::new_err(format!(
+            "the load must be a number, not a bool: {}",
+            expected()
+        )));
+    }
+    value
+        .extract::<f64>()
+        .map(Some)
+        .map_err(|_| PyTypeError::new_err(format!("the load must be a number: {}", expected())))
+}
+
 /// The quantity of `kind` named `name` or one of its aliases, or a `KeyError` listing them.
 pub fn quantity_named(kind: ModelKind, name: &str) -> PyResult<&'static QuantityName> {
     let quantities = kind.description().quantities;

@@ -81,7 +81,7 @@ pub(crate) fn loop_chart<P: LoadDriven>(
     labels: &LoadLabels,
     force: P::Force,
 ) -> Option<Plot> {
-    let f = P::newtons(force);
+    let f = P::load_value(force);
     let (coulomb, regularized) = (
         P::cycle(model, Law::Coulomb, force),
         P::cycle(model, Law::Regularized, force),
@@ -114,7 +114,7 @@ pub(crate) fn dissipation_chart<P: LoadDriven>(
     Some(dissipation_plot(
         &load::cycle_point::<P>(model, force),
         curves,
-        (P::newtons(force), f_max),
+        (P::load_value(force), f_max),
         labels.dissipation_axis,
     ))
 }

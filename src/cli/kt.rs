@@ -52,17 +52,22 @@ pub(super) fn run_kt_tolerance(
             let range = tolerance_forces([from, to], force)?;
             // A structure carries nothing beyond its limit: said of the flag that asks for more.
             if let Some(limit) = face.force_limit(&model)
-                && range[1] > limit.newtons
+                && range[1] > limit
             {
                 let flag = if to.is_some() { "--to" } else { "--from" };
+                let info = kind.description();
+                let (bound, beyond) = info
+                    .load_bound
+                    .as_ref()
+                    .map_or(("its bound", ""), |b| (b.symbol, b.beyond));
+                let formula = info.load_bound.as_ref().map_or("", |b| b.formula);
+                let unit = info.load_words().map_or("", |(_, unit)| unit);
                 return Err(CliError::Flag {
                     flag,
                     value: range[1],
                     allowed: format!(
-                        "must be at most {} = {} N ({})",
-                        limit.name,
-                        Compact(limit.newtons),
-                        limit.beyond
+                        "must be at most {bound} = {formula} = {} {unit} ({beyond})",
+                        Compact(limit),
                     ),
                 });
             }
@@ -71,9 +76,10 @@ pub(super) fn run_kt_tolerance(
         }
         None => {
             if from.is_some() || to.is_some() {
-                return Err(CliError::Usage(
-                    "--from/--to are forces of the twin beams and the lap joint; the plate has none",
-                ));
+                return Err(CliError::Invalid(format!(
+                    "--from/--to are loads of a load-driven problem; the {} has none",
+                    kind.description().title
+                )));
             }
             for_problem(
                 kind,

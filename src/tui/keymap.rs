@@ -156,7 +156,7 @@ pub const BINDINGS: &[Binding] = &[
         Context::Main,
         &[(KeyCode::Char('m'), NONE), (KeyCode::Tab, NONE)],
         Action::SwitchModel,
-        "beams>plate>lap joint",
+        "next problem (in the registry's order)",
     ),
     bind(
         Context::Main,

@@ -1,7 +1,7 @@
 //! microslip-core: the physics of microslip, for a numerical user who wants the answers without
-//! the terminal application. Friction benchmarks (twin cantilever beams and a squeezed plate, the
-//! two of Ligier & Bonhote, 2014; the clamped double-lap joint) under the plain and the
-//! regularized Coulomb law: an interface first deforms elastically (shear stress = K_T times the
+//! the terminal application. Friction benchmarks (the problems of the registry,
+//! [`with_problems!`]: the two of Ligier & Bonhote, 2014, and the ones added since) under the
+//! plain and the regularized Coulomb law: an interface first deforms elastically (shear stress = K_T times the
 //! microslip) and slides once the stress reaches mu times the pressure.
 //!
 //! Units everywhere: mm, N, MPa; tangential stiffness K_T in MPa/mm.

@@ -12,9 +12,7 @@ use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace};
-use crate::report::point::cycle::{
-    self, AnyCycleFace, CycleFace, CycleKeys, CycleWords, ForceLimit,
-};
+use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleKeys, CycleWords};
 use crate::report::point::{InputsReport, regime_label, validity_label};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::Answer;
@@ -240,12 +238,8 @@ impl CycleFace for CylinderProblem {
     type LoopRow = CylinderLoopRow;
     type LoadRow = CylinderRow;
 
-    fn force_limit(cylinder: &Cylinder) -> Option<ForceLimit> {
-        Some(ForceLimit {
-            newtons: cylinder.gross_slip_load(),
-            name: "Q_gross = mu P",
-            beyond: "the cylinder slides over the flat beyond it",
-        })
+    fn force_limit(cylinder: &Cylinder) -> Option<f64> {
+        Some(cylinder.gross_slip_load())
     }
 
     fn cycle_inputs(cylinder: &Cylinder, amplitude: TangentialLoad) -> Inputs {

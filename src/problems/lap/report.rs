@@ -14,9 +14,7 @@ use crate::problems::Problem;
 use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace, point_continuum};
-use crate::report::point::cycle::{
-    self, AnyCycleFace, CycleFace, CycleKeys, CycleWords, ForceLimit,
-};
+use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleKeys, CycleWords};
 use crate::report::point::{InputsReport, regime_label, validity_label};
 use crate::report::rows::{LapLoopRow, LapRow};
 use crate::report::{number, number_with, sanitize};
@@ -192,12 +190,8 @@ impl CycleFace for LapJointProblem {
     type LoopRow = LapLoopRow;
     type LoadRow = LapRow;
 
-    fn force_limit(joint: &LapJoint) -> Option<ForceLimit> {
-        Some(ForceLimit {
-            newtons: joint.gross_slip_force(),
-            name: "F_gross = 2 b mu P L",
-            beyond: "the joint slides through beyond it",
-        })
+    fn force_limit(joint: &LapJoint) -> Option<f64> {
+        Some(joint.gross_slip_force())
     }
 
     fn cycle_inputs(joint: &LapJoint, amplitude: JointForce) -> Inputs {

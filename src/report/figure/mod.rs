@@ -71,13 +71,6 @@ impl Format {
             Format::Pdf => "pdf",
         }
     }
-
-    /// The format an extension names (any letter case), if it is one.
-    pub fn from_extension(extension: &str) -> Option<Format> {
-        Format::ALL
-            .into_iter()
-            .find(|f| f.extension().eq_ignore_ascii_case(extension))
-    }
 }
 
 impl std::fmt::Display for Format {

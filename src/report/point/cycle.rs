@@ -38,23 +38,14 @@ pub trait CycleFace: LoadDriven {
     /// One row of the problem's own F sweep (`sweep beam|lap`, `sweep --vary F`).
     type LoadRow: Serialize + Default + for<'a> From<&'a Self::Point>;
 
-    /// The largest force the structure carries, where it has one (the lap joint's F_gross):
-    /// `kt --tolerance` refuses a force range beyond it in these words. `None` for a structure
-    /// that carries any force (the beams slide on, their deflection grows).
-    fn force_limit(_structure: &Self::Structure) -> Option<ForceLimit> {
+    /// The largest load the structure carries, in the load's unit, where it has one (the lap
+    /// joint's F_gross, the cylinder's Q_gross): `kt --tolerance` refuses a range beyond it in
+    /// the words of the problem's [`Description::load_bound`](crate::problems::Description).
+    /// `None` for a structure that carries any load (the beams slide on, their deflection
+    /// grows).
+    fn force_limit(_structure: &Self::Structure) -> Option<f64> {
         None
     }
-}
-
-/// The largest force a structure carries, as a refusal says it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ForceLimit {
-    /// The force (N).
-    pub newtons: f64,
-    /// Its name and formula (`F_gross = 2 b mu P L`).
-    pub name: &'static str,
-    /// What happens beyond it (`the joint slides through beyond it`).
-    pub beyond: &'static str,
 }
 
 /// Why a table of a load-driven problem was not written: a force the structure does not carry,
@@ -120,7 +111,7 @@ pub trait AnyCycleFace: Send + Sync {
 
     /// [`CycleFace::force_limit`] of `model`'s structure; `None` also for another problem's
     /// model.
-    fn force_limit(&self, model: &Model) -> Option<ForceLimit>;
+    fn force_limit(&self, model: &Model) -> Option<f64>;
 
     /// The K_T that keeps the response within `tolerance` over the forces `range` (N), of
     /// Coulomb's (`current` false) or of the current K_T's (`current` true), for contact
@@ -211,10 +202,10 @@ impl<P: CycleFace> AnyCycleFace for CycleOf<P> {
     }
 
     fn applied_force(&self, model: &Model) -> Option<f64> {
-        Some(P::newtons(P::applied_force(&P::from_model(model)?)))
+        Some(P::load_value(P::applied_force(&P::from_model(model)?)))
     }
 
-    fn force_limit(&self, model: &Model) -> Option<ForceLimit> {
+    fn force_limit(&self, model: &Model) -> Option<f64> {
         P::force_limit(&P::structure(&P::from_model(model)?))
     }
 
@@ -414,7 +405,7 @@ impl CycleReport {
             inputs: InputsReport(P::cycle_inputs(structure, amplitude)),
             structure: P::structure_line(structure),
             amplitude: Keyed {
-                value: P::newtons(amplitude),
+                value: P::load_value(amplitude),
                 key: words.keys.amplitude,
                 deprecated: CycleKeys::FORCE.amplitude,
             },

@@ -17,9 +17,11 @@ pub struct ToleranceReport {
     pub preset: String,
     /// The tolerance (fraction).
     pub tolerance: f64,
-    /// Beams: the tip forces checked [from, to] (N); plate: null.
-    #[serde(rename = "force_range_N")]
-    pub forces: Option<[f64; 2]>,
+    /// The loads checked [from, to], in the load's unit, under a key that says it
+    /// (`force_range_N`; the cylinder's line load `load_range_N_per_mm`, and `force_range_N`
+    /// too, deprecated, kept one release); null for the plate (no load).
+    #[serde(flatten)]
+    pub loads: LoadRange,
     /// The smallest K_T within (the interval's lower end with `of` = current); null: none.
     #[serde(rename = "KT_min_MPa_per_mm")]
     pub kt_min: Option<f64>,
@@ -41,6 +43,35 @@ pub struct ToleranceReport {
     /// The answer the text renders.
     #[serde(skip)]
     pub answer: ToleranceAnswer,
+}
+
+/// [`ToleranceReport::loads`]: the range and the problem whose load it is.
+#[derive(Debug, Clone, Copy)]
+pub struct LoadRange {
+    /// [from, to], in the load's unit; None without a load.
+    pub range: Option<[f64; 2]>,
+    /// The problem.
+    pub kind: crate::problems::ModelKind,
+}
+
+impl Serialize for LoadRange {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        const FORCE: &str = "force_range_N";
+        let unit = self.kind.description().load.map(|load| load.spec().unit);
+        let key = match unit {
+            Some(unit) if unit != crate::kernel::params::Unit::Newton => {
+                format!("load_range_{}", unit.key())
+            }
+            _ => FORCE.to_string(),
+        };
+        let mut out = serializer.serialize_map(None)?;
+        out.serialize_entry(&key, &self.range)?;
+        if key != FORCE {
+            out.serialize_entry(FORCE, &self.range)?;
+        }
+        out.end()
+    }
 }
 
 /// One code's setting for the K_T needed.
@@ -126,7 +157,10 @@ impl ToleranceReport {
         ToleranceReport {
             preset: preset.to_string(),
             tolerance: answer.tolerance,
-            forces: answer.forces,
+            loads: LoadRange {
+                range: answer.forces,
+                kind: answer.kind,
+            },
             kt_min,
             note,
             current_kt: answer.current.0,

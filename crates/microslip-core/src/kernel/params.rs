@@ -38,6 +38,14 @@ impl Unit {
         }
     }
 
+    /// The unit after a number in text: its symbol, empty when dimensionless.
+    pub fn in_text(self) -> &'static str {
+        match self {
+            Unit::Dimensionless => "",
+            other => other.symbol(),
+        }
+    }
+
     /// The unit as a JSON key or CSV header ends (`Q_N_per_mm`, `KT_MPa_per_mm`): `/` as
     /// `_per_`, and nothing for dimensionless.
     pub fn key(self) -> &'static str {

@@ -88,8 +88,8 @@ pub trait LoadDriven: Problem + Registered {
     fn force(structure: &Self::Structure, newtons: f64) -> Result<Self::Force, ParamError>;
     /// The accepted force nearest to `newtons` (0 for negative values and NaN).
     fn clamped_force(structure: &Self::Structure, newtons: f64) -> Self::Force;
-    /// The force in N.
-    fn newtons(force: Self::Force) -> f64;
+    /// The load in its unit (N for a force, N/mm for the cylinder's line load).
+    fn load_value(force: Self::Force) -> f64;
     /// The force that sets the regime scale of `structure` (N): F_thre of the beams, F_gross of
     /// the joint. [`Problem::regime_scale`] of any model of it is `Some` of this (module docs).
     fn force_scale(structure: &Self::Structure) -> f64;
@@ -204,7 +204,7 @@ impl<P: LoadDriven> AnyLoadDriven for LoadDrivenOf<P> {
     }
 
     fn applied_force(&self, model: &Model) -> Option<f64> {
-        Some(P::newtons(P::applied_force(&P::from_model(model)?)))
+        Some(P::load_value(P::applied_force(&P::from_model(model)?)))
     }
 
     fn force_scale(&self, model: &Model) -> Option<f64> {

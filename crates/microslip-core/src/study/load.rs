@@ -109,7 +109,7 @@ pub fn cycle_point<P: LoadDriven>(model: &P::Structure, amplitude: P::Force) -> 
         P::cycle(model, Law::Regularized, amplitude),
     );
     CyclePoint {
-        amplitude: P::newtons(amplitude),
+        amplitude: P::load_value(amplitude),
         d_coulomb: c.dissipation(),
         d_regularized: r.dissipation(),
         zeta_coulomb: c.damping_ratio(),
@@ -192,7 +192,7 @@ pub fn cycle_loop<P: LoadDriven>(
         P::cycle(model, Law::Coulomb, amplitude),
         P::cycle(model, Law::Regularized, amplitude),
     );
-    let fa = P::newtons(amplitude);
+    let fa = P::load_value(amplitude);
     let last = (points - 1) as f64;
     let branch = move |branch: Branch| {
         (0..points).map(move |i| {

@@ -165,17 +165,17 @@ pub enum TargetError {
         Compact(range.0), Compact(range.1), Compact(*target), significant(scan.ends.0, 6),
         significant(scan.ends.1, 6), significant(scan.extremes.0, 6),
         significant(scan.extremes.1, 6),
-        scan.cut.as_ref().map_or_else(String::new, |c| format!("; {}", c.words(param, unit)))
+        scan.cut.as_ref().map_or_else(String::new, |c| format!("; {}", c.words(param, &unit.to_string())))
     )]
     NoRoot {
         /// The parameter's key.
         param: &'static str,
-        /// The parameter's unit with a leading space, empty when dimensionless.
-        unit: &'static str,
+        /// The parameter's unit, shown after a space (nothing when dimensionless).
+        unit: UnitSuffix,
         /// The quantity's name.
         quantity: &'static str,
-        /// The quantity's unit with a leading space, empty when dimensionless.
-        quantity_unit: &'static str,
+        /// The quantity's unit, shown after a space (nothing when dimensionless).
+        quantity_unit: UnitSuffix,
         /// The target value.
         target: f64,
         /// The range scanned.
@@ -224,6 +224,21 @@ impl Root {
             certified: true,
             plateau: true,
             within_rounding: !exact,
+        }
+    }
+}
+
+/// A unit as a number's suffix: ` mm` after a space, nothing for a dimensionless value (an
+/// empty unit).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct UnitSuffix(pub &'static str);
+
+impl std::fmt::Display for UnitSuffix {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.0.is_empty() {
+            Ok(())
+        } else {
+            write!(f, " {}", self.0)
         }
     }
 }
@@ -531,21 +546,9 @@ pub fn solve_for_target(
             });
         return Err(TargetError::NoRoot {
             param: param.name(),
-            unit: match param.unit() {
-                crate::kernel::params::Unit::Dimensionless => "",
-                crate::kernel::params::Unit::Millimetre => " mm",
-                crate::kernel::params::Unit::Newton => " N",
-                crate::kernel::params::Unit::Megapascal => " MPa",
-                crate::kernel::params::Unit::MegapascalPerMillimetre => " MPa/mm",
-                crate::kernel::params::Unit::NewtonPerMillimetre => " N/mm",
-            },
+            unit: UnitSuffix(param.unit().in_text()),
             quantity: name,
-            quantity_unit: match quantity.unit(kind) {
-                "mm" => " mm",
-                "N" => " N",
-                "N mm" => " N mm",
-                _ => "",
-            },
+            quantity_unit: UnitSuffix(quantity.unit(kind)),
             target: target.value,
             range,
             scan: Box::new(Scan {

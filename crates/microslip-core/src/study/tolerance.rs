@@ -248,8 +248,8 @@ fn checked_forces<P: LoadDriven>(
     [from, to]: [f64; 2],
 ) -> Result<([f64; 2], Vec<P::Force>), ToleranceError> {
     let (from, to) = (
-        P::newtons(P::force(model, from)?),
-        P::newtons(P::force(model, to)?),
+        P::load_value(P::force(model, from)?),
+        P::load_value(P::force(model, to)?),
     );
     let (from, to) = (from.min(to), from.max(to));
     if to <= 0.0 {

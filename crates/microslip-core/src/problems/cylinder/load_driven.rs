@@ -57,7 +57,7 @@ impl LoadDriven for CylinderProblem {
     }
 
     /// The load in N/mm (the generic layers print the load parameter's own unit).
-    fn newtons(load: TangentialLoad) -> f64 {
+    fn load_value(load: TangentialLoad) -> f64 {
         load.newtons_per_mm()
     }
 

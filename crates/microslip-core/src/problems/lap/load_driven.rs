@@ -44,7 +44,7 @@ impl LoadDriven for LapJointProblem {
         joint.clamped_force(newtons)
     }
 
-    fn newtons(force: JointForce) -> f64 {
+    fn load_value(force: JointForce) -> f64 {
         force.newtons()
     }
 

@@ -43,7 +43,7 @@ impl LoadDriven for TwinBeamsProblem {
         TipForce::clamped(newtons)
     }
 
-    fn newtons(force: TipForce) -> f64 {
+    fn load_value(force: TipForce) -> f64 {
         force.newtons()
     }
 
