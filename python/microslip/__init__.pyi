@@ -243,8 +243,8 @@ class HertzianCylinder(Problem):
     Q: float
     """tangential line load (N per mm of cylinder length) (N/mm; must be in [0, 1e9] N/mm)."""
     def replace(self, *, R: float = ..., E: float = ..., nu: float = ..., P: float = ..., mu: float = ..., KT: float = ..., Q: float = ...) -> HertzianCylinder: ...
-    def solve(self, F: Optional[float] = None) -> Solution:
-        """Both laws at this data set, or at the load F (N)."""
+    def solve(self, Q: Optional[float] = None, F: Optional[float] = None) -> Solution:
+        """Both laws at this data set, or at the load Q (N/mm) (F= is an alias of Q=)."""
     def sweep(self, *, quantities: Union[Sequence[str], Literal['all'], None] = None, R: npt.ArrayLike = ..., E: npt.ArrayLike = ..., nu: npt.ArrayLike = ..., P: npt.ArrayLike = ..., mu: npt.ArrayLike = ..., KT: npt.ArrayLike = ..., Q: npt.ArrayLike = ...) -> Sweep:
         """Solved at every value of one parameter (given in its unit); response keys sa_coulomb, sa_regularized (mm); quantities among 's(a)', 'c', 'ratio'. MemoryError when the result arrays do not fit."""
 

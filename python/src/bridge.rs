@@ -1,16 +1,13 @@
-//! The one place this binding names a problem, and only where the application has no generic
-//! function for it yet. Each public function here is a CLI command's body (the CLI's is private
-//! to its `app` feature) minus argument parsing and printing, and says which file it mirrors;
-//! the tests compare every one with the CLI's output, so a drift fails them.
+//! The Python face's command bodies. Each public function here is a CLI command's body (the
+//! CLI's is private to its `app` feature) minus argument parsing and printing, and says which
+//! file it mirrors; the tests compare every one with the CLI's output, so a drift fails them.
 //!
 //! The bodies are written once for every problem, over the application's traits and generic
-//! functions (`fe::load::results::<P>`, `Deck::compare`, `json::cycle::<P>`, `json::of`,
-//! `fit::Structure::of`, `study::tolerance::*::<P>`), and dispatched through [`face`], generated
-//! from the registry (`microslip_core::with_problems!`). What is still one function per problem
-//! in the application (its point report, its deck writer and default loads, its comparison
-//! report) is a [`Face`] method each problem implements below, in a few lines that call it; a
-//! capability it lacks (a load to cycle) is a default it keeps. A new problem is one `impl Face`
-//! here; when the application puts those behind traits, the impls shrink to nothing.
+//! functions (`ReportFace::point_report`, its erased cycle face, `fe::face::written_deck`,
+//! `fe::load::results::<P>`, `Deck::compare`, `fit::Structure::of`, `study::tolerance::*::<P>`),
+//! and dispatched through [`face`], generated from the registry
+//! (`microslip_core::with_problems!`): no problem is named here, and a new problem needs no line
+//! in this crate.
 
 use std::marker::PhantomData;
 use std::path::Path;
@@ -22,20 +19,16 @@ use microslip::fe::kinematics::Kinematics;
 use microslip::fe::load;
 use microslip::fit::{self, Weights};
 use microslip::kernel::params::{Compact, Domain, Unit};
-use microslip::kernel::validity::Validity;
 use microslip::numeric::cancel::checkpoint;
-use microslip::problems::cylinder::problem::CylinderProblem;
 use microslip::problems::inputs::Model;
-use microslip::problems::lap::LapJointProblem;
-use microslip::problems::load_driven::LoadDriven;
-use microslip::problems::plate::SqueezedPlateProblem;
 use microslip::problems::problem::Registered;
-use microslip::problems::twin_beams::TwinBeamsProblem;
-use microslip::problems::{ModelKind, Problem, cylinder, lap, plate, twin_beams};
+use microslip::problems::{ModelKind, Problem};
 use microslip::report::compare::CompareFace;
 use microslip::report::compare::run::{self as compare_run, ContactCompared};
 use microslip::report::json;
-use microslip::report::point::cycle::CycleFace;
+use microslip::fe::face::Deck;
+use microslip::report::face::ReportFace;
+use microslip::report::point::cycle::AnyCycleFace;
 use microslip::report::point::tolerance::ToleranceReport;
 use microslip::study::tolerance::{self, ToleranceAnswer};
 use serde_json::Value;
@@ -83,200 +76,51 @@ pub enum Of {
     Current,
 }
 
-/// What the application still writes one function per problem for, as each problem's impl
-/// calls it; the command bodies around them are generic ([`AnyFace`]).
-trait Face: CompareFace {
-    /// `microslip beam|plate|lap --format json` (`src/cli/point.rs`): the problem's own point
-    /// report (its struct in `src/problems/<name>/report.rs`), as JSON.
-    fn point_report(model: &Self::Model, name: &str) -> Value;
-
-    /// `microslip cycle --format json` (`src/cli/cycle.rs`) of the structure of `model` at
-    /// `amplitude` (N, checked as a force): [`cycle_of`] for a load-driven problem; a problem
-    /// without a load keeps this refusal.
-    fn cycle_report(_model: &Self::Model, _name: &str, _amplitude: f64) -> Result<Value, String> {
-        Err(format!("the {} problem has no load to cycle", Self::KIND))
-    }
-
-    /// `kt --tolerance` (`src/cli/kt.rs`) over the forces `[from, to]`: [`load_tolerance`] for a
-    /// load-driven problem; a problem without a load answers at its one state, and has no
-    /// forces to give.
-    fn tolerance(
-        model: &Self::Model,
-        (tol, of): (f64, Of),
-        [from, to]: [Option<f64>; 2],
-        element: f64,
-    ) -> Result<ToleranceAnswer, String> {
-        if from.is_some() || to.is_some() {
-            return Err(format!(
-                "the {} problem has no force: F_from and F_to do not apply",
-                Self::KIND
-            ));
-        }
-        match of {
-            Of::Coulomb => tolerance::state_stiffness_for_tolerance::<Self>(model, tol, element),
-            Of::Current => tolerance::state_stiffness_near_current::<Self>(model, tol, element),
-        }
-        .map_err(|e| e.to_string())
-    }
-
-    /// `microslip deck ccx` at the model's stick slope: the problem's own deck writer
-    /// ([`Deck::write_deck`], which the CLI calls too), `loads` checked there (increasing, each
-    /// accepted) or the problem's defaults, and the deck's text.
-    fn deck(model: &Self::Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String> {
-        let request = DeckRequest {
-            loads,
-            mesh,
-            slope: StickSlope::Model,
-            increment: None,
-        };
-        microslip::fe::face::written_deck::<Self>(model, &request).map_err(|e| e.to_string())
-    }
-}
-
-/// [`Face::cycle_report`] of any load-driven problem: the amplitude is the structure's force.
-fn cycle_of<P: CycleFace>(model: &P::Model, name: &str, amplitude: f64) -> Result<Value, String> {
-    let structure = P::structure(model);
-    let amplitude = P::force(&structure, amplitude).map_err(|e| {
-        format!(
-            "invalid amplitude = {}: {}",
-            Compact(amplitude),
-            e.allowed()
-        )
-    })?;
-    Ok(json::cycle::<P>(name, &structure, amplitude))
-}
-
-/// [`Face::tolerance`] of any load-driven problem (`src/cli/kt.rs`, `run_kt_tolerance`): the
-/// forces checked as `--from`/`--to` (each the model's F when not given, in order, the upper one
-/// a force the structure carries), then the study over them.
-fn load_tolerance<P: LoadDriven>(
-    model: &P::Model,
-    (tol, of): (f64, Of),
+/// [`Face::tolerance`]'s load range, checked as `kt --tolerance --from/--to` checks it
+/// (`src/cli/kt.rs`): each end the model's load when not given, in order, the upper one a load
+/// the structure carries (refused in the problem's words beyond its bound).
+fn load_range(
+    kind: ModelKind,
+    face: &dyn AnyCycleFace,
+    model: &Model,
     [from, to]: [Option<f64>; 2],
-    element: f64,
-) -> Result<ToleranceAnswer, String> {
-    let structure = P::structure(model);
-    let force = P::load_value(P::applied_force(model));
+) -> Result<[f64; 2], String> {
+    let info = kind.description();
+    let (name, unit) = info
+        .load_words()
+        .ok_or_else(|| format!("the {} has no load", info.title))?;
+    let load = face
+        .applied_force(model)
+        .ok_or_else(|| format!("the {} has no load", info.title))?;
+    let spec = info.load.map(|p| p.spec()).ok_or("no load")?;
+    let (lower, upper) = (format!("{name}_from"), format!("{name}_to"));
     let range = [
-        check_flag("F_from", from.unwrap_or(force), Domain::FORCE, Unit::Newton)?,
-        check_flag("F_to", to.unwrap_or(force), Domain::FORCE, Unit::Newton)?,
+        check_flag(&lower, from.unwrap_or(load), spec.domain, spec.unit)?,
+        check_flag(&upper, to.unwrap_or(load), spec.domain, spec.unit)?,
     ];
     if range[0] > range[1] {
         return Err(format!(
-            "invalid F_to = {}: must not be below F_from = {} N (the forces checked run from \
-             F_from up to F_to)",
+            "invalid {upper} = {}: must not be below {lower} = {} {unit} (the loads checked run \
+             from {lower} up to {upper})",
             Compact(range[1]),
             Compact(range[0])
         ));
     }
-    // The structure may carry less than any force (the joint slides through beyond F_gross):
-    // said of the flag that asks for more.
-    if let Err(e) = P::force(&structure, range[1]) {
-        let flag = if to.is_some() { "F_to" } else { "F_from" };
+    if let Some(limit) = face.force_limit(model)
+        && range[1] > limit
+    {
+        let flag = if to.is_some() { upper } else { lower };
         return Err(format!(
             "invalid {flag} = {}: {}",
             Compact(range[1]),
-            e.allowed()
+            info.beyond_bound(limit)
         ));
     }
-    match of {
-        Of::Coulomb => tolerance::stiffness_for_tolerance::<P>(&structure, range, tol, element),
-        Of::Current => tolerance::stiffness_near_current::<P>(&structure, range, tol, element),
-    }
-    .map_err(|e| e.to_string())
+    Ok(range)
 }
 
-impl Face for TwinBeamsProblem {
-    fn point_report(model: &Self::Model, name: &str) -> Value {
-        json::of(&twin_beams::report::BeamReport::new(
-            name,
-            &model.beams,
-            model.force,
-        ))
-    }
-
-    fn cycle_report(model: &Self::Model, name: &str, amplitude: f64) -> Result<Value, String> {
-        cycle_of::<Self>(model, name, amplitude)
-    }
-
-    fn tolerance(
-        model: &Self::Model,
-        question: (f64, Of),
-        range: [Option<f64>; 2],
-        element: f64,
-    ) -> Result<ToleranceAnswer, String> {
-        load_tolerance::<Self>(model, question, range, element)
-    }
-}
-
-impl Face for SqueezedPlateProblem {
-    fn point_report(squeezed: &Self::Model, name: &str) -> Value {
-        // The continuum reference where the strip theory does not hold.
-        let continuum = (squeezed.validity().validity != Validity::Holds).then(|| {
-            plate::solve_plate_continuum(squeezed.params(), plate::ContinuumMesh::default())
-        });
-        json::of(&plate::report::PlateReport::new(
-            name,
-            squeezed,
-            continuum.as_ref(),
-        ))
-    }
-}
-
-impl Face for LapJointProblem {
-    fn point_report(model: &Self::Model, name: &str) -> Value {
-        let (joint, force) = (&model.joint, model.force);
-        // The continuum reference where the shear-lag theory does not hold.
-        let continuum = (joint.validity(force).validity != Validity::Holds).then(|| {
-            lap::solve_lap_continuum(
-                joint.params(),
-                force.newtons(),
-                lap::LapContinuumMesh::default(),
-            )
-        });
-        json::of(&lap::report::LapReport::new(
-            name,
-            joint,
-            force,
-            continuum.as_ref(),
-        ))
-    }
-
-    fn cycle_report(model: &Self::Model, name: &str, amplitude: f64) -> Result<Value, String> {
-        cycle_of::<Self>(model, name, amplitude)
-    }
-
-    fn tolerance(
-        model: &Self::Model,
-        question: (f64, Of),
-        range: [Option<f64>; 2],
-        element: f64,
-    ) -> Result<ToleranceAnswer, String> {
-        load_tolerance::<Self>(model, question, range, element)
-    }
-}
-
-impl Face for CylinderProblem {
-    fn point_report(model: &Self::Model, name: &str) -> Value {
-        json::of(&cylinder::report::CylinderReport::new(name, model))
-    }
-
-    fn cycle_report(model: &Self::Model, name: &str, amplitude: f64) -> Result<Value, String> {
-        cycle_of::<Self>(model, name, amplitude)
-    }
-
-    fn tolerance(
-        model: &Self::Model,
-        question: (f64, Of),
-        range: [Option<f64>; 2],
-        element: f64,
-    ) -> Result<ToleranceAnswer, String> {
-        load_tolerance::<Self>(model, question, range, element)
-    }
-}
-
-/// The commands of any problem, their types erased: one body each, written once over [`Face`]
-/// and the application's generic functions ([`FaceOf`]).
+/// The commands of any problem, their types erased: one body each, written once over the
+/// application's faces ([`FaceOf`]); no problem writes anything here.
 trait AnyFace: Sync {
     fn point_report(&self, model: &Model, name: &str) -> Result<Value, String>;
     fn cycle_report(&self, model: &Model, name: &str, amplitude: f64) -> Result<Value, String>;
@@ -299,27 +143,75 @@ trait AnyFace: Sync {
 /// The [`AnyFace`] of a [`Face`] problem `P`.
 struct FaceOf<P>(PhantomData<P>);
 
-impl<P: Face> AnyFace for FaceOf<P> {
+impl<P: ReportFace + CompareFace + Deck> AnyFace for FaceOf<P> {
+    /// `src/cli/point.rs`: the problem's point report, which adds its continuum reference where
+    /// its reduced theory is not expected to hold.
     fn point_report(&self, model: &Model, name: &str) -> Result<Value, String> {
-        Ok(P::point_report(&typed::<P>(model)?, name))
+        let report = P::point_report(name, &typed::<P>(model)?, false).map_err(|e| e.to_string())?;
+        Ok(json::of(&report))
     }
 
+    /// `src/cli/cycle.rs`: the structure cycled at `amplitude` (checked as a load of it).
     fn cycle_report(&self, model: &Model, name: &str, amplitude: f64) -> Result<Value, String> {
-        P::cycle_report(&typed::<P>(model)?, name, amplitude)
+        let face = <P as ReportFace>::cycle()
+            .ok_or_else(|| format!("the {} problem has no load to cycle", P::KIND))?;
+        match face.report(name, model, amplitude) {
+            Some(Ok(report)) => Ok(json::of(&report)),
+            Some(Err(e)) => Err(format!(
+                "invalid amplitude = {}: {}",
+                Compact(amplitude),
+                e.allowed()
+            )),
+            None => Err(format!("no {} model to cycle", P::KIND)),
+        }
     }
 
+    /// `src/cli/kt.rs`: over the load range of a load-driven problem, at the one state of any
+    /// other.
     fn tolerance(
         &self,
         model: &Model,
-        question: (f64, Of),
+        (tol, of): (f64, Of),
         range: [Option<f64>; 2],
         element: f64,
     ) -> Result<ToleranceAnswer, String> {
-        P::tolerance(&typed::<P>(model)?, question, range, element)
+        let current = of == Of::Current;
+        let answer = match <P as ReportFace>::cycle() {
+            Some(face) => {
+                let range = load_range(P::KIND, face, model, range)?;
+                face.tolerance(model, range, (tol, element), current)
+            }
+            None => {
+                if range.iter().any(Option::is_some) {
+                    return Err(format!(
+                        "the {} has no load: a load range does not apply",
+                        P::KIND.description().title
+                    ));
+                }
+                let model = typed::<P>(model)?;
+                Some(if current {
+                    tolerance::state_stiffness_near_current::<P>(&model, tol, element)
+                } else {
+                    tolerance::state_stiffness_for_tolerance::<P>(&model, tol, element)
+                })
+            }
+        };
+        answer
+            .ok_or_else(|| format!("no {} model to check", P::KIND))?
+            .map_err(|e| e.to_string())
     }
 
+    /// `src/cli/decks.rs`: the problem's own deck writer at the model's stick slope, `loads`
+    /// checked there (increasing, each accepted) or the problem's defaults.
     fn deck(&self, model: &Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String> {
-        P::deck(&typed::<P>(model)?, mesh, loads)
+        let request = DeckRequest {
+            loads,
+            mesh,
+            slope: StickSlope::Model,
+            increment: None,
+        };
+        microslip::fe::face::written_deck::<P>(&typed::<P>(model)?, &request)
+            .map_err(|e| e.to_string())
     }
 
     /// `src/cli/compare.rs` for one result file of `P`: a CalculiX `.dat`, whose deck's header
@@ -397,7 +289,13 @@ pub fn cycle_report(
     name: &str,
     amplitude: f64,
 ) -> Result<Value, String> {
-    let amplitude = check_flag("amplitude", amplitude, Domain::FORCE, Unit::Newton)?;
+    let amplitude = match kind.description().load {
+        Some(load) => {
+            let spec = load.spec();
+            check_flag("amplitude", amplitude, spec.domain, spec.unit)?
+        }
+        None => amplitude,
+    };
     face(kind).cycle_report(&model(kind, values, false)?, name, amplitude)
 }
 

@@ -76,7 +76,7 @@ pub fn load_argument(
             "solve() of the {} takes its load {name} ({unit}), positionally or as {name}=",
             info.title
         ),
-        None => format!("solve() of the {} takes no load (it has none)", info.title),
+        None => format!("the {} has no load: its solve() takes none", info.title),
     };
     let mut given = load.cloned();
     if let Some(named) = named {

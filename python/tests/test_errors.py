@@ -71,3 +71,25 @@ def test_problems_pickle_for_process_pools():
     back = pickle.loads(pickle.dumps(joint))
     assert type(back) is microslip.LapJoint and back == joint and back.name == joint.name
     assert back.solve().to_dict() == joint.solve().to_dict()
+
+
+def test_solve_takes_each_problem_s_load_by_its_own_name():
+    # The cylinder's load is Q (N/mm): solve(Q=...) sets it; F= is its documented alias, and a
+    # positional value is the load too. The answer is that of the data set with Q replaced.
+    pad = microslip.preset("cylinder-steel-pad")
+    by_name = pad.solve(Q=120.0).to_dict()
+    replaced = pad.replace(Q=120.0).solve().to_dict()
+    assert by_name == {**replaced, "preset": "cylinder-steel-pad"}
+    assert by_name != pad.solve().to_dict()
+    assert pad.solve(F=120.0).to_dict() == by_name
+    assert pad.solve(120.0).to_dict() == by_name
+    # The beams' load is F (N); Q is not theirs.
+    beams = microslip.preset("paper-beams")
+    assert beams.solve(F=50.0).to_dict() == {**beams.replace(F=50.0).solve().to_dict(), "preset": "paper-beams"}
+    with pytest.raises(TypeError, match=r"unexpected keyword 'Q': solve\(\) of the twin cantilever beams takes its load F \(N\)"):
+        beams.solve(Q=50.0)
+    # A bool is not a load (Python would take True as 1), and a load is given once.
+    with pytest.raises(TypeError, match="not a bool"):
+        pad.solve(True)
+    with pytest.raises(TypeError, match="given twice"):
+        pad.solve(120.0, Q=120.0)

@@ -55,20 +55,10 @@ pub(super) fn run_kt_tolerance(
                 && range[1] > limit
             {
                 let flag = if to.is_some() { "--to" } else { "--from" };
-                let info = kind.description();
-                let (bound, beyond) = info
-                    .load_bound
-                    .as_ref()
-                    .map_or(("its bound", ""), |b| (b.symbol, b.beyond));
-                let formula = info.load_bound.as_ref().map_or("", |b| b.formula);
-                let unit = info.load_words().map_or("", |(_, unit)| unit);
                 return Err(CliError::Flag {
                     flag,
                     value: range[1],
-                    allowed: format!(
-                        "must be at most {bound} = {formula} = {} {unit} ({beyond})",
-                        Compact(limit),
-                    ),
+                    allowed: kind.description().beyond_bound(limit),
                 });
             }
             face.tolerance(&model, range, (tol, element), current)

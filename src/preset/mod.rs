@@ -194,33 +194,24 @@ impl fmt::Display for Located {
     }
 }
 
-/// Presets embedded in the binary: (name, TOML text).
-const BUNDLED: &[(&str, &str)] = &[
-    (
-        "paper-beams",
-        include_str!("../../presets/paper-beams.toml"),
-    ),
-    (
-        "paper-beams-soft",
-        include_str!("../../presets/paper-beams-soft.toml"),
-    ),
-    (
-        "paper-plate",
-        include_str!("../../presets/paper-plate.toml"),
-    ),
-    (
-        "plate-bench",
-        include_str!("../../presets/plate-bench.toml"),
-    ),
-    (
-        "lap-aluminium",
-        include_str!("../../presets/lap-aluminium.toml"),
-    ),
-    (
-        "cylinder-steel-pad",
-        include_str!("../../presets/cylinder-steel-pad.toml"),
-    ),
-];
+/// Every problem's bundled presets, (name, TOML text), in the registry's order: each problem's
+/// `BUNDLED_PRESETS`, in its face folder (`src/problems/<name>/mod.rs`), gathered from the
+/// registry line so that no list of presets lives here.
+macro_rules! bundled_presets {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        [$(crate::problems::$folder::BUNDLED_PRESETS),+]
+    };
+}
+
+/// [`bundled_presets!`] as one list.
+static BUNDLED: std::sync::LazyLock<Vec<(&'static str, &'static str)>> =
+    std::sync::LazyLock::new(|| {
+        microslip_core::with_problems!(bundled_presets)
+            .into_iter()
+            .flatten()
+            .copied()
+            .collect()
+    });
 
 /// The setting that is a name (not a number) of any problem whose preset key is `key`
 /// (`beam_theory`), found through the registry: presets and the command line set it without
@@ -393,6 +384,32 @@ mod tests {
         );
         for kind in ModelKind::ALL {
             assert_eq!(paper(kind).inputs, Inputs::paper(kind));
+        }
+    }
+
+    /// Every file of `presets/` is bundled, once, by the problem its `model` names: a preset
+    /// file a problem's folder forgets (or another problem's folder bundles) fails here.
+    #[test]
+    fn every_preset_file_is_bundled_by_its_own_problem() {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/presets");
+        let mut files: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter_map(|f| f.strip_suffix(".toml").map(str::to_string))
+            .collect();
+        files.sort();
+        let mut bundled_names: Vec<String> = BUNDLED.iter().map(|(n, _)| n.to_string()).collect();
+        bundled_names.sort();
+        assert_eq!(files, bundled_names);
+        macro_rules! owners {
+            ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+                [$((ModelKind::$variant, crate::problems::$folder::BUNDLED_PRESETS)),+]
+            };
+        }
+        for (kind, presets) in microslip_core::with_problems!(owners) {
+            for (name, _) in presets {
+                assert_eq!(resolve(name).unwrap().inputs.kind(), kind, "{name}");
+            }
         }
     }
 

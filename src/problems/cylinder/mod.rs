@@ -13,3 +13,10 @@ mod pane;
 pub mod report;
 
 pub use chart::CylinderChart;
+
+/// Its bundled presets, (name, TOML text), embedded in the binary: `preset::bundled` lists every
+/// problem's from the registry, so a problem's presets are named here and nowhere else.
+pub const BUNDLED_PRESETS: &[(&str, &str)] = &[(
+    "cylinder-steel-pad",
+    include_str!("../../../presets/cylinder-steel-pad.toml"),
+)];

@@ -10,3 +10,10 @@ mod pane;
 pub use chart::LapChart;
 pub mod deck;
 pub mod report;
+
+/// Its bundled presets, (name, TOML text), embedded in the binary: `preset::bundled` lists every
+/// problem's from the registry, so a problem's presets are named here and nowhere else.
+pub const BUNDLED_PRESETS: &[(&str, &str)] = &[(
+    "lap-aluminium",
+    include_str!("../../../presets/lap-aluminium.toml"),
+)];

@@ -10,3 +10,16 @@ mod pane;
 pub use chart::BeamChart;
 pub mod deck;
 pub mod report;
+
+/// Its bundled presets, (name, TOML text), embedded in the binary: `preset::bundled` lists every
+/// problem's from the registry, so a problem's presets are named here and nowhere else.
+pub const BUNDLED_PRESETS: &[(&str, &str)] = &[
+    (
+        "paper-beams",
+        include_str!("../../../presets/paper-beams.toml"),
+    ),
+    (
+        "paper-beams-soft",
+        include_str!("../../../presets/paper-beams-soft.toml"),
+    ),
+];

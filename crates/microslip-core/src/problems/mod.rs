@@ -251,6 +251,20 @@ impl Description {
             .map(|bound| format!("{} = {}: {}", bound.symbol, bound.formula, bound.beyond))
     }
 
+    /// The refusal of a load beyond `limit`, the bound's value in the load's unit: "must be at
+    /// most F_gross = 2 b mu P L = 6000 N (the joint slides through beyond it)".
+    pub fn beyond_bound(&self, limit: f64) -> String {
+        let unit = self.load_words().map_or("", |(_, unit)| unit);
+        let value = crate::kernel::params::Compact(limit);
+        match &self.load_bound {
+            Some(b) => format!(
+                "must be at most {} = {} = {value} {unit} ({})",
+                b.symbol, b.formula, b.beyond
+            ),
+            None => format!("must be at most {value} {unit}"),
+        }
+    }
+
     /// "the given F = 300 N" in the problem's words (its load's name and unit; `value` in that
     /// unit): what a refusal of a bounded range names.
     pub fn load_value(&self, value: f64) -> String {
