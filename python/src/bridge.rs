@@ -13,6 +13,7 @@ use std::marker::PhantomData;
 use std::path::Path;
 
 use microslip::fe::deck::DeckMesh;
+use microslip::fe::face::Deck;
 use microslip::fe::face::DeckRequest;
 use microslip::fe::header::StickSlope;
 use microslip::fe::kinematics::Kinematics;
@@ -25,9 +26,8 @@ use microslip::problems::problem::Registered;
 use microslip::problems::{ModelKind, Problem};
 use microslip::report::compare::CompareFace;
 use microslip::report::compare::run::{self as compare_run, ContactCompared};
-use microslip::report::json;
-use microslip::fe::face::Deck;
 use microslip::report::face::ReportFace;
+use microslip::report::json;
 use microslip::report::point::cycle::AnyCycleFace;
 use microslip::report::point::tolerance::ToleranceReport;
 use microslip::study::tolerance::{self, ToleranceAnswer};
@@ -147,7 +147,8 @@ impl<P: ReportFace + CompareFace + Deck> AnyFace for FaceOf<P> {
     /// `src/cli/point.rs`: the problem's point report, which adds its continuum reference where
     /// its reduced theory is not expected to hold.
     fn point_report(&self, model: &Model, name: &str) -> Result<Value, String> {
-        let report = P::point_report(name, &typed::<P>(model)?, false).map_err(|e| e.to_string())?;
+        let report =
+            P::point_report(name, &typed::<P>(model)?, false).map_err(|e| e.to_string())?;
         Ok(json::of(&report))
     }
 
