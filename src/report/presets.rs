@@ -10,9 +10,11 @@ use crate::preset::Listed;
 /// The listing as text; `user_dir` is where user presets are looked for (`None`: no such folder).
 pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
     let mut out = String::new();
+    // The model column as wide as the longest problem key (and its heading).
+    let width = crate::problems::ModelKind::key_width().max("model".len());
     let _ = writeln!(
         out,
-        "{:<20} {:<6} {:<8} description",
+        "{:<20} {:<width$} {:<8} description",
         "name", "model", "source"
     );
     for row in rows {
@@ -21,15 +23,15 @@ pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
         let _ = match &row.preset {
             Ok(p) => writeln!(
                 out,
-                "{:<20} {:<6} {:<8} {}",
+                "{:<20} {:<width$} {:<8} {}",
                 name,
-                p.inputs.kind(),
+                p.inputs.kind().name(),
                 row.origin,
                 sanitize(&p.description)
             ),
             Err(warning) if row.shadowed => writeln!(
                 out,
-                "{:<20} {:<6} {:<8} WARNING: {}",
+                "{:<20} {:<width$} {:<8} WARNING: {}",
                 name,
                 "?",
                 row.origin,
@@ -42,7 +44,7 @@ pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
                 );
                 writeln!(
                     out,
-                    "{:<20} {:<6} {:<8} INVALID: {} (run `microslip check {}`)",
+                    "{:<20} {:<width$} {:<8} INVALID: {} (run `microslip check {}`)",
                     name,
                     "?",
                     row.origin,
@@ -77,7 +79,13 @@ mod tests {
         std::fs::write(dir.path().join("bad.toml"), "model = \"beam\"\nKT = -3\n").unwrap();
         let text = listing(&preset::listing(Some(dir.path())), Some(dir.path()));
         assert!(text.starts_with("name "));
-        assert!(text.contains("paper-beams          beam   bundled "));
+        // The source column lines up on every row, whatever the longest problem key.
+        let column = |line: &str| line.find(" bundled ").or_else(|| line.find(" user "));
+        let header = text.lines().next().unwrap().find(" source ").unwrap();
+        for line in text.lines().skip(1).filter(|l| column(l).is_some()) {
+            assert_eq!(column(line), Some(header), "{line}");
+        }
+        assert!(text.contains("paper-beams          beam     bundled "), "{text}");
         let bad = text.lines().find(|l| l.starts_with("bad ")).unwrap();
         assert!(bad.contains("INVALID: line 2: invalid KT = -3"), "{bad}");
         assert!(bad.contains("microslip check "), "{bad}");
@@ -126,6 +134,9 @@ mod tests {
         );
         assert!(text.contains("bad\\u{9b}"), "{text}");
         // One line per preset, the header and the folder: the newline did not split a row.
-        assert_eq!(text.lines().count(), 1 + 6 + 2 + 2);
+        assert_eq!(
+            text.lines().count(),
+            1 + preset::bundled().len() + 2 + 2
+        );
     }
 }

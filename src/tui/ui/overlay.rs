@@ -202,8 +202,10 @@ pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed]
                 Err(problem) => ("?", format!("INVALID: {}", sanitize(&problem.to_string()))),
             };
             let marker = if i == selected { ">" } else { " " };
+            // The model column as wide as the longest problem key.
+            let width = crate::problems::ModelKind::key_width();
             let text = format!(
-                "{marker} {:<18} {:<5} {:<7} {description}",
+                "{marker} {:<18} {:<width$} {:<7} {description}",
                 sanitize(&entry.name),
                 model,
                 entry.origin

@@ -394,6 +394,12 @@ impl ModelKind {
         Self::ALL[(self.index() + 1) % Self::COUNT]
     }
 
+    /// The longest key of any problem (`cylinder`): the width a column of keys is padded to,
+    /// so that a listing lines up whatever problems the registry holds.
+    pub fn key_width() -> usize {
+        Self::ALL.iter().map(|k| k.name().len()).max().unwrap_or(0)
+    }
+
     /// The `model = "..."` value in preset files.
     pub fn name(self) -> &'static str {
         self.description().key
