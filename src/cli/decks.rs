@@ -64,7 +64,7 @@ fn with_bench_preset(inputs: &InputArgs, model: ModelKind) -> (InputArgs, Option
     }
     let (name, why) = for_problem(model, BenchPreset).unwrap_or((
         model.description().paper_preset,
-        "the paper's data set, the benchmark's bundled case",
+        "the problem's default bundled preset",
     ));
     let note = format!(
         "Case: the preset {name}, the default of deck and bench for the {}: {why}; --preset \

@@ -38,6 +38,29 @@ pub const EDGE_SLIP_WITHIN_STIFF: f64 = 0.07;
 /// ... and up to a / R = 0.047 (measured +3.7 %; the bound of the stiff range applies too).
 pub const EDGE_SLIP_WITHIN_CURVED: f64 = 0.05;
 
+// The reasons a cylinder is outside the envelope, as literals so that two of them join into one
+// `&'static str` (a cylinder past two bounds is told both).
+macro_rules! too_compliant {
+    () => {
+        "K_T a/E* below the measured 0.064: not measured (the CalculiX deck's contact is then \
+         nearly all microslip, and its c is read where K_T s crosses mu p near the edge, where \
+         p -> 0"
+    };
+}
+macro_rules! too_stiff {
+    () => {
+        "K_T a/E* above the measured 64: not measured (the answer is Mindlin's there to about \
+         1 % of a; CalculiX's s(a) was already 5.5 % above the half-plane's at 64"
+    };
+}
+macro_rules! too_curved {
+    () => {
+        "a/R above the measured 0.047: the cylinder curves away within a few a of the contact, \
+         so it is no half-plane (at 0.047 CalculiX's a was already 4.5 % below Hertz's and c \
+         0.075 a below the half-plane's); not measured beyond"
+    };
+}
+
 /// The half-plane answer's envelope for one cylinder.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CylinderValidity {
@@ -51,7 +74,8 @@ pub struct CylinderValidity {
     pub edge_slip_within: Option<f64>,
     /// The level of the s(a) bound (`NotCalibrated` outside the envelope).
     pub validity: Validity,
-    /// Why the envelope does not reach this cylinder; `None` inside it.
+    /// Why the envelope does not reach this cylinder, every bound it passes named (K_T a/E*
+    /// and a/R both, when both are out); `None` inside it.
     pub outside_because: Option<&'static str>,
 }
 
@@ -62,25 +86,15 @@ impl Cylinder {
         let group = self.stiffness_group();
         let ratio = self.half_width() / self.params().radius;
         let (low, high) = MEASURED_STIFFNESS_GROUP;
-        let outside_because = if group < low {
-            Some(
-                "K_T a/E* below the measured 0.064: not measured (the CalculiX deck's contact \
-                 is then nearly all microslip, and its c is read where K_T s crosses mu p near \
-                 the edge, where p -> 0)",
-            )
-        } else if group > high {
-            Some(
-                "K_T a/E* above the measured 64: not measured (the answer is Mindlin's there to \
-                 about 1 % of a; CalculiX's s(a) was already 5.5 % above the half-plane's at 64)",
-            )
-        } else if ratio > MEASURED_HALF_WIDTH_OVER_RADIUS {
-            Some(
-                "a/R above the measured 0.047: the cylinder curves away within a few a of the \
-                 contact, so it is no half-plane (at 0.047 CalculiX's a was already 4.5 % below \
-                 Hertz's and c 0.075 a below the half-plane's); not measured beyond",
-            )
-        } else {
-            None
+        // Every bound the cylinder passes is named, not only the first (issue 47).
+        let curved_out = ratio > MEASURED_HALF_WIDTH_OVER_RADIUS;
+        let outside_because = match (group < low, group > high, curved_out) {
+            (true, _, false) => Some(concat!(too_compliant!(), ")")),
+            (true, _, true) => Some(concat!(too_compliant!(), "); and ", too_curved!())),
+            (_, true, false) => Some(concat!(too_stiff!(), ")")),
+            (_, true, true) => Some(concat!(too_stiff!(), "); and ", too_curved!())),
+            (false, false, true) => Some(too_curved!()),
+            (false, false, false) => None,
         };
         let inside = outside_because.is_none();
         // Each bound was measured with the other parameters at the pad's: where both K_T a/E*
@@ -110,6 +124,26 @@ impl Cylinder {
             },
             outside_because,
         }
+    }
+}
+
+#[cfg(test)]
+mod both_bounds {
+    use super::*;
+    use crate::problems::cylinder::params::CylinderParams;
+
+    /// R = 0.3 mm with the pad's load passes both K_T a/E* (0.05) and a/R (0.19): both named.
+    #[test]
+    fn a_cylinder_past_two_bounds_is_told_both() {
+        let params = CylinderParams {
+            radius: 0.3,
+            ..CylinderParams::STEEL_PAD
+        };
+        let v = Cylinder::new(params).unwrap().validity();
+        let why = v.outside_because.unwrap();
+        assert!(v.stiffness_group < MEASURED_STIFFNESS_GROUP.0, "{why}");
+        assert!(v.half_width_over_radius > MEASURED_HALF_WIDTH_OVER_RADIUS, "{why}");
+        assert!(why.contains("K_T a/E* below") && why.contains("a/R above"), "{why}");
     }
 }
 
