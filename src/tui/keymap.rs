@@ -156,7 +156,7 @@ pub const BINDINGS: &[Binding] = &[
         Context::Main,
         &[(KeyCode::Char('m'), NONE), (KeyCode::Tab, NONE)],
         Action::SwitchModel,
-        "next problem (in the registry's order)",
+        "next problem",
     ),
     bind(
         Context::Main,

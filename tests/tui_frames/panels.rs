@@ -106,7 +106,7 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
     press(&mut app, Action::Next);
     let text = screen(&app, 120, 30);
     assert!(
-        text.contains("> paper-beams        ?     user    WARNING: shadowed by the bundled one"),
+        text.contains("> paper-beams        ?        user    WARNING: shadowed by the bundled one"),
         "{text}"
     );
     press(&mut app, Action::Commit);
