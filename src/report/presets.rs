@@ -85,7 +85,10 @@ mod tests {
         for line in text.lines().skip(1).filter(|l| column(l).is_some()) {
             assert_eq!(column(line), Some(header), "{line}");
         }
-        assert!(text.contains("paper-beams          beam     bundled "), "{text}");
+        assert!(
+            text.contains("paper-beams          beam     bundled "),
+            "{text}"
+        );
         let bad = text.lines().find(|l| l.starts_with("bad ")).unwrap();
         assert!(bad.contains("INVALID: line 2: invalid KT = -3"), "{bad}");
         assert!(bad.contains("microslip check "), "{bad}");
@@ -134,9 +137,6 @@ mod tests {
         );
         assert!(text.contains("bad\\u{9b}"), "{text}");
         // One line per preset, the header and the folder: the newline did not split a row.
-        assert_eq!(
-            text.lines().count(),
-            1 + preset::bundled().len() + 2 + 2
-        );
+        assert_eq!(text.lines().count(), 1 + preset::bundled().len() + 2 + 2);
     }
 }

@@ -185,6 +185,13 @@ pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed]
     frame.render_widget(block, popup);
     let visible = inner.height.saturating_sub(1) as usize;
     let first = selected.saturating_sub(visible.saturating_sub(1));
+    // The model column as wide as the longest problem key listed, so every row lines up.
+    let width = entries
+        .iter()
+        .filter_map(|e| e.preset.as_ref().ok())
+        .map(|p| p.inputs.kind().name().len())
+        .max()
+        .unwrap_or(1);
     let mut lines: Vec<Line> = entries
         .iter()
         .enumerate()
@@ -202,8 +209,6 @@ pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed]
                 Err(problem) => ("?", format!("INVALID: {}", sanitize(&problem.to_string()))),
             };
             let marker = if i == selected { ">" } else { " " };
-            // The model column as wide as the longest problem key.
-            let width = crate::problems::ModelKind::key_width();
             let text = format!(
                 "{marker} {:<18} {:<width$} {:<7} {description}",
                 sanitize(&entry.name),

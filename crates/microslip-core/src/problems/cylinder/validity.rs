@@ -142,8 +142,14 @@ mod both_bounds {
         let v = Cylinder::new(params).unwrap().validity();
         let why = v.outside_because.unwrap();
         assert!(v.stiffness_group < MEASURED_STIFFNESS_GROUP.0, "{why}");
-        assert!(v.half_width_over_radius > MEASURED_HALF_WIDTH_OVER_RADIUS, "{why}");
-        assert!(why.contains("K_T a/E* below") && why.contains("a/R above"), "{why}");
+        assert!(
+            v.half_width_over_radius > MEASURED_HALF_WIDTH_OVER_RADIUS,
+            "{why}"
+        );
+        assert!(
+            why.contains("K_T a/E* below") && why.contains("a/R above"),
+            "{why}"
+        );
     }
 }
 
