@@ -180,6 +180,18 @@ fn clap_error_line(error: &clap::Error) -> String {
         Some(clap::error::ContextValue::Strings(s)) if !s.is_empty() => Some(s.clone()),
         _ => None,
     });
+    // `cycle plate`: a problem of the registry that does not take this command.
+    let problem = (error.kind() == clap::error::ErrorKind::InvalidSubcommand)
+        .then(|| error.get(clap::error::ContextKind::InvalidSubcommand))
+        .flatten()
+        .map(ToString::to_string)
+        .and_then(|name| name.parse::<ModelKind>().ok());
+    if let Some(kind) = problem {
+        return format!(
+            "{line}: the {kind} problem does not take this command (its subcommands are the \
+             problems that do: see --help)"
+        );
+    }
     match suggested {
         Some(names) => format!(
             "{line}; did you mean {}? (see --help)",
@@ -245,9 +257,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 args.format,
             )?,
         },
-        Some(Command::Cycle(args)) => {
-            run_cycle(out, args.amplitude, &args.inputs, args.points, args.format)?
-        }
+        Some(Command::Cycle(args)) => run_cycle_command(out, args)?,
         Some(Command::Presets) => {
             let dir = preset::user_preset_dir();
             let rows = preset::listing(dir.as_deref());

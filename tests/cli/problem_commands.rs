@@ -85,6 +85,9 @@ fn help_key_and_key_help_describe_the_problem_with_only_its_flags() {
         if kind.problem().fittable().is_some() {
             helps.push(stdout_of(&["fit", key, "--help"]));
         }
+        if kind.description().load.is_some() {
+            helps.push(stdout_of(&["cycle", key, "--help"]));
+        }
         for help in &helps {
             for (flag, own) in setting_flags(kind) {
                 assert_eq!(help.contains(&flag), own, "{key}: {flag} in\n{help}");
@@ -197,6 +200,26 @@ fn sweep_problem_is_the_generic_sweep_of_that_problem() {
         ];
         let by_key = stdout_of(&[&["sweep", kind.name()][..], &common].concat());
         let generic = stdout_of(&[&["sweep", "--preset", preset][..], &common].concat());
+        assert_eq!(by_key, generic, "{kind}");
+    }
+}
+
+/// Every problem with a load has its subcommand of `cycle`, which writes what `cycle --model`
+/// writes for it; a problem without one is named as such.
+#[test]
+fn cycle_problem_is_the_generic_cycle_of_that_problem() {
+    for kind in ModelKind::ALL {
+        let common = ["--amplitude", "1", "--format", "json"];
+        if kind.description().load.is_none() {
+            let stderr = failure(&[&["cycle", kind.name()][..], &common].concat(), 2);
+            assert!(
+                stderr.contains(&format!("the {kind} problem does not take this command")),
+                "{stderr}"
+            );
+            continue;
+        }
+        let by_key = stdout_of(&[&["cycle", kind.name()][..], &common].concat());
+        let generic = stdout_of(&[&["cycle", "--model", kind.name()][..], &common].concat());
         assert_eq!(by_key, generic, "{kind}");
     }
 }
