@@ -114,6 +114,19 @@ impl EditArg for clap::Command {
     }
 }
 
+/// `intro` and, in parentheses, what `names` gives for each problem of the registry (`beam: L b
+/// h ...; plate: ...`).
+pub(in crate::cli) fn per_problem_help(
+    intro: &str,
+    names: impl Fn(ModelKind) -> Vec<&'static str>,
+) -> String {
+    let lists: Vec<String> = ModelKind::ALL
+        .iter()
+        .map(|kind| format!("{kind}: {}", names(*kind).join(" ")))
+        .collect();
+    format!("{intro} ({})", lists.join("; "))
+}
+
 /// The problem's title with its first letter capitalized, as a help line starts.
 pub(in crate::cli) fn title(kind: ModelKind) -> String {
     let title = kind.description().title;

@@ -9,12 +9,17 @@ pub struct SolveArgs {
     /// Which benchmark.
     #[arg(value_parser = model_kind_parser())]
     pub model: ModelKind,
-    /// The parameter to solve for (beam: L b h E P mu KT F; plate: L tp E nu mu P KT; lap: L b
-    /// t1 t2 E1 E2 P mu KT F).
-    #[arg(long, value_name = "NAME")]
+    // The help lists each problem's keys from the registry (`per_problem_help`).
+    #[arg(long, value_name = "NAME", help = per_problem_help(
+        "The parameter to solve for",
+        |kind| kind.params().iter().map(|p| p.name()).collect(),
+    ))]
     pub vary: String,
-    /// The target, QUANTITY=VALUE (e.g. ratio=1.01, w(L)=0.05, X_r=9.5).
-    #[arg(long, value_name = "QUANTITY=VALUE")]
+    // The help lists each problem's quantities from the registry (`per_problem_help`).
+    #[arg(long, value_name = "QUANTITY=VALUE", help = per_problem_help(
+        "The target, QUANTITY=VALUE (e.g. ratio=1.01)",
+        |kind| kind.description().quantities.iter().map(|q| q.name).collect(),
+    ))]
     pub target: String,
     /// Lowest value of the parameter searched (default: its smallest accepted value).
     #[arg(long, value_name = "A", allow_negative_numbers = true, requires = "to")]

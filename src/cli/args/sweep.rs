@@ -55,18 +55,10 @@ pub struct GenericSweepArgs {
 
 /// The help of the generic sweep's `--vary`: every problem's keys, as the registry lists them.
 fn vary_help() -> String {
-    let keys: Vec<String> = ModelKind::ALL
-        .iter()
-        .map(|kind| {
-            let names: Vec<&str> = kind.params().iter().map(|p| p.name()).collect();
-            format!("{kind}: {}", names.join(" "))
-        })
-        .collect();
-    format!(
-        "The parameter to vary ({}). Default: the problem's load F, else KT. Columns: the \
-         parameter's then those of the default's sweep; for the default, that sweep's own",
-        keys.join("; ")
-    )
+    per_problem_help("The parameter to vary", |kind| {
+        kind.params().iter().map(|p| p.name()).collect()
+    }) + ". Default: the problem's load F, else KT. Columns: the parameter's then those of the \
+         default's sweep; for the default, that sweep's own"
 }
 
 /// Rows of a generic `sweep` without --points: the ends and nine steps between, so a range of
