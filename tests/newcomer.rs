@@ -199,22 +199,24 @@ fn figures_with_only_a_beam_theory_draw_that_bench() {
     assert!(!out.join("plate-u-vs-kt.svg").exists());
 }
 
-/// `sweep cylinder`: `sweep` has subcommands for the older problems only; a problem of the
-/// registry given where a subcommand is expected is pointed to `--model`, any other word refused
-/// as before.
+/// `sweep cylinder`: every problem of the registry is a subcommand of `sweep` (issue 43, item
+/// 3; it used to be pointed to `--model`), writing what `sweep --model cylinder` writes; a word
+/// that is no problem is refused with the problem it is a slip of.
 #[test]
-fn a_problem_given_as_a_subcommand_it_does_not_have_is_pointed_to_model() {
-    let (code, out, err) = run(&["sweep", "cylinder", "--from", "0", "--to", "100"]);
-    assert_eq!(code, 2, "{err}");
-    assert!(out.is_empty());
-    assert!(
-        err.contains("reaches the cylinder problem with --model cylinder"),
-        "{err}"
-    );
+fn a_problem_given_as_a_subcommand_is_its_sweep() {
+    let (code, out, err) = run(&[
+        "sweep", "cylinder", "--from", "0", "--to", "100", "--points", "11",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("Q_N_per_mm,"), "{out}");
     let (code, _, err) = run(&["sweep", "cylindre"]);
     assert_eq!(code, 2, "{err}");
     assert!(!err.contains("--model"), "{err}");
-    let (code, out, err) = run(&["sweep", "--model", "cylinder", "--from", "0", "--to", "100"]);
+    assert!(
+        err.contains("did you mean") && err.contains("'cylinder'"),
+        "{err}"
+    );
+    let (code, generic, err) = run(&["sweep", "--model", "cylinder", "--from", "0", "--to", "100"]);
     assert_eq!(code, 0, "{err}");
-    assert!(out.starts_with("Q_N_per_mm,"), "{out}");
+    assert_eq!(generic, out);
 }

@@ -3,16 +3,34 @@
 use super::*;
 use crate::report::point::cycle::LoadTableError;
 
-/// `microslip cycle`: any load-driven problem (the preset's) cycled, through its cycle face
+/// `microslip cycle ...`: the generic cycle (`--model`, or the preset's problem) or a
+/// problem's (`cycle PROBLEM`), both through [`run_cycle`].
+pub(super) fn run_cycle_command(out: &mut impl Write, args: &CycleArgs) -> Result<(), CliError> {
+    match &args.command {
+        None => run_cycle(out, args.generic.model, &args.generic.cycle),
+        Some(problem) => run_cycle(out, Some(problem.kind), &problem.args),
+    }
+}
+
+/// A cycle of the problem `model` names (else the preset's), through its cycle face
 /// ([`AnyReportFace::cycle`](crate::report::face::AnyReportFace::cycle)); a problem without a
 /// load is refused.
-pub(super) fn run_cycle(
+fn run_cycle(
     out: &mut impl Write,
-    amplitude: f64,
-    inputs: &InputArgs,
-    points: u64,
-    format: CycleFormat,
+    model: Option<ModelKind>,
+    flags: &CycleFlags,
 ) -> Result<(), CliError> {
+    let CycleFlags {
+        amplitude,
+        inputs,
+        points,
+        format,
+    } = flags;
+    let (points, format) = (*points, *format);
+    // clap requires it.
+    let Some(amplitude) = *amplitude else {
+        return Err(CliError::Usage("cycle needs --amplitude FA"));
+    };
     let amplitude = check_flag("--amplitude", amplitude, Domain::FORCE, Unit::Newton)?;
     let points_error = |error| CliError::Range {
         error,
@@ -20,7 +38,8 @@ pub(super) fn run_cycle(
     };
     curves::check_points(points).map_err(points_error)?;
     // The amplitude is cycled, not the preset's F.
-    let (name, model) = load_any_structure(inputs, DEFAULT_PROBLEM)?;
+    let (name, preset) = resolve_generic(inputs, model)?;
+    let (name, model) = apply_and_validate(inputs, name, preset, Load::Unused)?;
     let no_cycle = || plate_has_no_cycle(inputs, "cycle");
     let face = report::face::report_face(model.kind())
         .cycle()

@@ -45,8 +45,7 @@ pub(super) fn run_figures(
         for f in figure::PAPER_FIGURES {
             let inputs = InputArgs {
                 preset: Some(f.preset.to_string()),
-                assignments: Vec::new(),
-                beam_theory: None,
+                ..InputArgs::default()
             };
             let (_, model) = load(&inputs, f.chart().kind(), "figures")?;
             let plot = crate::chart::figure(&model, f.chart(), fe && f.finite_elements, f.y)?;

@@ -26,94 +26,99 @@ pub(super) fn parse_fixed(
     Ok((mu, kt))
 }
 
-/// `microslip fit ...`: the generic fit, or the alias a subcommand names (whose problem is its
-/// name, read through the registry).
+/// `microslip fit ...`: the generic fit, or a problem's (`fit PROBLEM DATA.csv`).
 pub(super) fn run_fit_command(out: &mut impl Write, args: &FitArgs) -> Result<(), CliError> {
-    let (alias, data, inputs, fixed, weights, format) = match &args.command {
-        None => return run_generic_fit(out, &args.generic),
-        Some(FitCommand::Beam {
-            data,
-            inputs,
-            fixed,
-            weights,
-            format,
-        }) => ("beam", data, inputs, fixed, weights, format),
-        Some(FitCommand::Lap {
-            data,
-            inputs,
-            fixed,
-            weights,
-            format,
-        }) => ("lap", data, inputs, fixed, weights, format),
-    };
-    let kind = alias_problem(alias)?;
-    run_fit(out, kind, data, inputs, fixed, *weights, *format)
+    match &args.command {
+        None => run_generic_fit(out, &args.generic),
+        Some(problem) => {
+            let kind = problem.kind;
+            match problem.args.model {
+                Some(model) if model != kind => Err(CliError::Invalid(format!(
+                    "fit {kind} and --model {model} disagree: name one problem"
+                ))),
+                _ => run_fit(out, kind, &problem.args.data, &problem.args.fit),
+            }
+        }
+    }
 }
 
 /// `microslip fit DATA.csv [--model M] [--preset P] ...`: the problem comes from --model or the
-/// preset, and must have a load; the same report, bytes and refusals as its alias (`fit lap`).
+/// preset, and must have a load; the same report, bytes and refusals as `fit PROBLEM`.
 fn run_generic_fit(out: &mut impl Write, args: &GenericFitArgs) -> Result<(), CliError> {
-    // clap requires the data without a subcommand; a value before it names the problem.
-    let (named, data) = match args.data.as_slice() {
-        [data] => (None, data),
-        [problem, data] => (Some(named_problem(problem, args.model)?), data),
+    // clap requires the data without a subcommand; a word before it is no problem's key (a
+    // problem's key is its subcommand).
+    let data = match args.data.as_slice() {
+        [data] => data,
+        [word, _] => return Err(not_a_problem(&word.to_string_lossy())),
         _ => return Err(CliError::Usage("fit needs DATA.csv")),
     };
-    let (name, preset) = resolve_generic(&args.inputs, named.or(args.model))?;
+    refuse_a_problem_as_data(data)?;
+    let (name, preset) = resolve_generic(&args.fit.inputs, args.model)?;
     let kind = preset.inputs.kind();
     if kind.description().load.is_none() {
-        let loaded: Vec<&str> = ModelKind::ALL
-            .iter()
-            .filter(|k| k.description().load.is_some())
-            .map(|k| k.name())
-            .collect();
         return Err(CliError::Invalid(format!(
             "fit: preset '{name}' is a {kind} preset, which has no load to fit a curve against; \
              fit takes a {} preset",
-            loaded.join(" or ")
+            fitted_problems().join(" or ")
         )));
     }
-    run_fit(
-        out,
-        kind,
-        data,
-        &args.inputs,
-        &args.fixed,
-        args.weights,
-        args.format,
-    )
+    run_fit(out, kind, data, &args.fit)
 }
 
-/// The problem `fit PROBLEM DATA.csv` names, as --model would (the registry's names); it and
-/// --model, both given, must agree.
-fn named_problem(
-    problem: &std::path::Path,
-    model: Option<ModelKind>,
-) -> Result<ModelKind, CliError> {
-    let text = problem.to_string_lossy();
-    let kind = alias_problem(&text).map_err(|e| {
-        CliError::Invalid(format!(
-            "fit {text} DATA.csv: '{text}' is not a problem ({e}); give the measurement file \
-             alone, or a problem before it"
-        ))
-    })?;
-    match model {
-        Some(model) if model != kind => Err(CliError::Invalid(format!(
-            "fit {kind} and --model {model} disagree: name one problem"
-        ))),
-        _ => Ok(kind),
+/// The problems `fit` takes, by key.
+fn fitted_problems() -> Vec<&'static str> {
+    ModelKind::ALL
+        .iter()
+        .filter(|k| k.description().load.is_some())
+        .map(|k| k.name())
+        .collect()
+}
+
+/// `fit WORD` where WORD is no file and names a problem without a fit (`fit plate`) or is a
+/// slip of a problem's key (`fit lapp`): said so, rather than "cannot read WORD".
+fn refuse_a_problem_as_data(data: &std::path::Path) -> Result<(), CliError> {
+    if data.exists() {
+        return Ok(());
+    }
+    let word = data.to_string_lossy();
+    if let Ok(kind) = word.parse::<ModelKind>() {
+        return Err(CliError::Invalid(format!(
+            "fit {kind}: the {kind} problem has no load to fit a curve against; fit takes {} \
+             (`fit PROBLEM DATA.csv`)",
+            fitted_problems().join(", ")
+        )));
+    }
+    match closest_problem(&word) {
+        Some(_) => Err(not_a_problem(&word)),
+        None => Ok(()),
     }
 }
 
+/// `fit WORD DATA.csv` where WORD is no problem's key: said so, with the key it is a slip of.
+fn not_a_problem(word: &str) -> CliError {
+    let suggestion = closest_problem(word)
+        .map(|kind| format!("; did you mean 'fit {kind} DATA.csv'?"))
+        .unwrap_or_default();
+    CliError::Invalid(format!(
+        "fit {word}: '{word}' is not a problem with a fit ({}){suggestion}",
+        fitted_problems().join(", ")
+    ))
+}
+
+/// The fit of `kind` to the measurements in `path`, with the fit's flags.
 pub(super) fn run_fit(
     out: &mut impl Write,
     kind: ModelKind,
     path: &PathBuf,
-    inputs: &InputArgs,
-    fixed: &[String],
-    weights: Option<WeightsArg>,
-    format: ReportFormat,
+    flags: &FitFlags,
 ) -> Result<(), CliError> {
+    let FitFlags {
+        inputs,
+        fixed,
+        weights,
+        format,
+    } = flags;
+    let (weights, format) = (*weights, *format);
     let (fixed_mu, fixed_kt) = parse_fixed(kind, fixed)?;
     // The measured forces are fitted, not the preset's F.
     let (name, model) = load_for(inputs, kind, &model_command(kind, "fit"), Load::Unused)?;

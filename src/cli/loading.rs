@@ -113,12 +113,34 @@ pub(super) fn load_problem<P: Problem + Registered>(
     Ok((name, typed))
 }
 
-/// The problem of a per-problem alias (`sweep beam`, `fit lap`): its name is the problem's key,
-/// read through the registry, so that an alias names no problem's type.
-pub(super) fn alias_problem(alias: &str) -> Result<ModelKind, CliError> {
-    alias
-        .parse()
-        .map_err(|e: crate::problems::UnknownModel| CliError::Invalid(e.to_string()))
+/// The problem whose key `word` is a slip of (`cylindre`, `lapp`): within two edits of it,
+/// and closer than to any other key; `None` when no key is that close.
+pub(super) fn closest_problem(word: &str) -> Option<ModelKind> {
+    let word = word.to_lowercase();
+    ModelKind::ALL
+        .iter()
+        .map(|kind| (edit_distance(&word, kind.name()), *kind))
+        .filter(|(distance, _)| *distance <= 2)
+        .min_by_key(|(distance, _)| *distance)
+        .map(|(_, kind)| kind)
+}
+
+/// The Levenshtein distance between `a` and `b`, by characters.
+pub(super) fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let above = row[j + 1];
+            row[j + 1] = (above + 1)
+                .min(row[j] + 1)
+                .min(diagonal + usize::from(ca != *cb));
+            diagonal = above;
+        }
+    }
+    row[b.len()]
 }
 
 /// `cycle` or `sweep cycle` given the plate, which has no load to cycle.
@@ -212,16 +234,26 @@ pub(super) fn apply_and_validate(
     // "modified" only where a value differs from the preset's: `--set F=3000` on a preset whose F
     // is 3000 leaves the preset as it is, and saying otherwise sends users looking for a change.
     let set_changed = inputs != preset.inputs;
-    let before_theory = inputs;
-    if let Some(text) = &args.beam_theory {
-        apply_choice(&mut inputs, "beam_theory", text)?;
+    let before_choices = inputs;
+    for (key, text) in &args.choices {
+        apply_choice(&mut inputs, key, text)?;
     }
-    let theory_changed = inputs != before_theory;
-    let name = match (set_changed, theory_changed) {
-        (false, false) => name,
-        (true, false) => format!("{name} (modified by --set)"),
-        (false, true) => format!("{name} (modified by --beam-theory)"),
-        (true, true) => format!("{name} (modified by --set and --beam-theory)"),
+    let choice_flags: Vec<String> = args
+        .choices
+        .iter()
+        .map(|(key, _)| format!("--{}", key.replace('_', "-")))
+        .collect();
+    let mut changed_by: Vec<String> = Vec::new();
+    if set_changed {
+        changed_by.push("--set".to_string());
+    }
+    if inputs != before_choices {
+        changed_by.extend(choice_flags);
+    }
+    let name = if changed_by.is_empty() {
+        name
+    } else {
+        format!("{name} (modified by {})", changed_by.join(" and "))
     };
     let model = match load {
         Load::Used => inputs.validate()?,

@@ -117,11 +117,6 @@ fn after_help() -> String {
     )
 }
 
-/// The help of `--set`: every model's keys as the specs define them.
-fn set_help() -> String {
-    format!("Set a parameter, e.g. KT=120 ({})", ModelKind::key_docs())
-}
-
 /// The problem a command that takes any problem opens without --preset (or --model): the
 /// registry's first, the paper's twin beams.
 const DEFAULT_PROBLEM: ModelKind = ModelKind::ALL[0];
@@ -173,16 +168,38 @@ fn clap_error_line(error: &clap::Error) -> String {
         .collect();
     let line = first_block.join(" ");
     let line = line.strip_prefix("error: ").unwrap_or(&line);
-    // `sweep cylinder`: a problem of the registry where a command has subcommands for some
-    // problems only (the older ones' aliases); every problem is reached with --model.
+    // `microslip cylindre`, `sweep lapp`: clap's suggestion, on the one line.
+    let suggested = [
+        clap::error::ContextKind::SuggestedSubcommand,
+        clap::error::ContextKind::SuggestedValue,
+        clap::error::ContextKind::SuggestedArg,
+    ]
+    .into_iter()
+    .find_map(|kind| match error.get(kind) {
+        Some(clap::error::ContextValue::String(s)) => Some(vec![s.clone()]),
+        Some(clap::error::ContextValue::Strings(s)) if !s.is_empty() => Some(s.clone()),
+        _ => None,
+    });
+    // `cycle plate`: a problem of the registry that does not take this command.
     let problem = (error.kind() == clap::error::ErrorKind::InvalidSubcommand)
         .then(|| error.get(clap::error::ContextKind::InvalidSubcommand))
         .flatten()
         .map(ToString::to_string)
-        .filter(|name| name.parse::<ModelKind>().is_ok());
-    match problem {
-        Some(name) => format!(
-            "{line}: this command reaches the {name} problem with --model {name} (see --help)"
+        .and_then(|name| name.parse::<ModelKind>().ok());
+    if let Some(kind) = problem {
+        return format!(
+            "{line}: the {kind} problem does not take this command (its subcommands are the \
+             problems that do: see --help)"
+        );
+    }
+    match suggested {
+        Some(names) => format!(
+            "{line}; did you mean {}? (see --help)",
+            names
+                .iter()
+                .map(|n| format!("'{n}'"))
+                .collect::<Vec<_>>()
+                .join(" or ")
         ),
         None => format!("{line} (see --help)"),
     }
@@ -215,60 +232,42 @@ fn report_clap_error(error: &clap::Error) -> ExitCode {
 pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
     match &cli.command {
         None | Some(Command::Report) => out.write_all(report::paper_report().as_bytes())?,
-        // Each per-problem command runs the one generic handler for the problem its name is.
-        Some(Command::Beam(args)) => run_point(out, "beam", &args.point, args.continuum)?,
-        Some(Command::Plate(args)) => run_point(out, "plate", &args.point, args.continuum)?,
+        // Every problem's subcommand runs the one generic handler for the problem it names.
+        Some(Command::Problem(point)) => {
+            run_point(out, point.kind, &point.args, point.flag(args::CONTINUUM))?
+        }
         Some(Command::Sweep(args)) => run_sweep(out, args)?,
-        Some(Command::Lap(args)) => run_point(out, "lap", &args.point, args.continuum)?,
-        Some(Command::OtherProblem(words)) => run_other_point(out, words)?,
         Some(Command::Solve(args)) => run_solve(out, args)?,
         Some(Command::Fit(command)) => run_fit_command(out, command)?,
-        Some(Command::Kt {
-            inputs,
-            element_size,
-            tolerance: Some(tolerance),
-            of,
-            from,
-            to,
-            format,
-            ..
-        }) => run_kt_tolerance(
-            out,
-            inputs,
-            *element_size,
-            (tolerance, *of),
-            [*from, *to],
-            *format,
-        )?,
-        Some(Command::Kt {
-            inputs,
-            element_size,
-            kn,
-            nu,
-            format,
-            ..
-        }) => run_kt(out, inputs, *element_size, *kn, *nu, *format)?,
-        Some(Command::Cycle {
-            amplitude,
-            inputs,
-            points,
-            format,
-        }) => run_cycle(out, *amplitude, inputs, *points, *format)?,
+        Some(Command::Kt(args)) => match &args.tolerance {
+            Some(tolerance) => run_kt_tolerance(
+                out,
+                &args.inputs,
+                args.element_size,
+                (tolerance, args.of),
+                [args.from, args.to],
+                args.format,
+            )?,
+            None => run_kt(
+                out,
+                &args.inputs,
+                args.element_size,
+                args.kn,
+                args.nu,
+                args.format,
+            )?,
+        },
+        Some(Command::Cycle(args)) => run_cycle_command(out, args)?,
         Some(Command::Presets) => {
             let dir = preset::user_preset_dir();
             let rows = preset::listing(dir.as_deref());
             out.write_all(report::presets::listing(&rows, dir.as_deref()).as_bytes())?
         }
-        Some(Command::Check { files }) => check(out, files)?,
+        Some(Command::Check(args)) => check(out, &args.files)?,
         Some(Command::Plot(args)) => run_plot(out, args)?,
-        Some(Command::Figures {
-            out: dir,
-            no_fe,
-            format,
-            inputs,
-        }) => {
+        Some(Command::Figures(args)) => {
             let format = FigureFormat::choose(
-                Some(*format),
+                Some(args.format),
                 None,
                 "--format",
                 &[FigureFormat::Svg, FigureFormat::Png, FigureFormat::Pdf],
@@ -276,56 +275,47 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
             )?
             .figure()
             .unwrap_or(figure::Format::Svg);
-            run_figures(out, dir, !*no_fe, format, inputs)?
+            run_figures(out, &args.out, !args.no_fe, format, &args.inputs)?
         }
-        Some(Command::Compare {
-            model,
-            results,
-            deck,
-            inputs,
-            interface,
-            kinematics,
-            format,
-        }) => {
+        Some(Command::Compare(args)) => {
             let contact = compare::ContactArgs {
-                interface: interface.as_deref(),
-                kinematics: kinematics.map(KinematicsArg::kinematics),
+                interface: args.interface.as_deref(),
+                kinematics: args.kinematics.map(KinematicsArg::kinematics),
             };
             run_compare(
                 out,
-                *model,
-                results,
-                deck.as_deref(),
-                inputs,
+                args.model,
+                &args.results,
+                args.deck.as_deref(),
+                &args.inputs,
                 contact,
-                *format,
+                args.format,
             )?
         }
-        Some(Command::Deck {
-            code: FeCode::Ccx,
-            model,
-            deck,
-            output,
-        }) => {
-            refuse_overwriting_an_input(output.as_deref(), &deck.inputs.read_files())?;
-            let deck = build_deck(*model, deck, &model_command(*model, "deck ccx"))?;
-            write_output(out, output.as_deref(), deck.as_bytes())?
+        Some(Command::Deck(args)) => {
+            let FeCode::Ccx = args.code;
+            refuse_overwriting_an_input(args.output.as_deref(), &args.deck.inputs.read_files())?;
+            let deck = build_deck(
+                args.model,
+                &args.deck,
+                &model_command(args.model, "deck ccx"),
+            )?;
+            write_output(out, args.output.as_deref(), deck.as_bytes())?
         }
-        Some(Command::Bench {
-            code: FeCode::Ccx,
-            model,
-            deck,
-            workdir,
-            ccx,
-            format,
-        }) => run_bench(out, *model, deck, workdir.as_deref(), ccx, *format)?,
-        Some(Command::Verify {
-            quick,
-            elements,
-            tolerance,
-        }) => {
-            let grid = if *quick { Grid::Quick } else { Grid::Full };
-            run_verify(out, grid, *elements, *tolerance)?
+        Some(Command::Bench(args)) => {
+            let FeCode::Ccx = args.code;
+            run_bench(
+                out,
+                args.model,
+                &args.deck,
+                args.workdir.as_deref(),
+                &args.ccx,
+                args.format,
+            )?
+        }
+        Some(Command::Verify(args)) => {
+            let grid = if args.quick { Grid::Quick } else { Grid::Full };
+            run_verify(out, grid, args.elements, args.tolerance)?
         }
     }
     Ok(())

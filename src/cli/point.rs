@@ -1,19 +1,18 @@
-//! One state of a problem: `beam`, `plate` and `lap` reports (text or JSON), written once for
+//! One state of a problem: `microslip PROBLEM`'s report (text or JSON), written once for
 //! every problem through its [`ReportFace`](crate::report::face::ReportFace).
 
 use super::*;
 
-/// `beam`, `plate`, `lap`: the problem `alias` names (its key, read through the registry) at
-/// one state. `continuum` is the command's `--continuum` (false for a problem without one):
-/// what it does is the problem's own
+/// `microslip PROBLEM`: the problem `kind` at one state. `continuum` is the command's
+/// `--continuum` (false for a problem without one, which does not declare the flag): what it
+/// does is the problem's own
 /// ([`ReportFace::point_report`](crate::report::face::ReportFace::point_report)).
 pub(super) fn run_point(
     out: &mut impl Write,
-    alias: &str,
+    kind: ModelKind,
     args: &PointArgs,
     continuum: bool,
 ) -> Result<(), CliError> {
-    let kind = alias_problem(alias)?;
     for_problem(
         kind,
         Point {
@@ -22,34 +21,6 @@ pub(super) fn run_point(
             continuum,
         },
     )
-}
-
-/// `microslip KEY ...` for a problem of the registry that has no subcommand of its own: the
-/// words after the key parsed with the flags of `beam` (`--preset`, `--set`, `--format`), then
-/// [`run_point`]. A word that is no problem's key is refused as clap refuses an unknown
-/// subcommand.
-pub(super) fn run_other_point(out: &mut impl Write, words: &[String]) -> Result<(), CliError> {
-    use clap::{Args as _, FromArgMatches as _};
-    let name = words.first().map_or("", String::as_str);
-    let Ok(kind) = name.parse::<ModelKind>() else {
-        return Err(CliError::Invalid(format!(
-            "unrecognized subcommand '{name}' (see --help)"
-        )));
-    };
-    let command = PointArgs::augment_args(clap::Command::new(kind.name())).about(
-        "One state of the problem: both laws side by side, regimes, zones (the flags of `beam`)",
-    );
-    let matches = match command.try_get_matches_from(words) {
-        Ok(matches) => matches,
-        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelp => {
-            write!(out, "{}", e.render())?;
-            return Ok(());
-        }
-        Err(e) => return Err(CliError::Invalid(clap_error_line(&e))),
-    };
-    let args = PointArgs::from_arg_matches(&matches)
-        .map_err(|e| CliError::Invalid(clap_error_line(&e)))?;
-    run_point(out, name, &args, false)
 }
 
 /// The arguments of [`run_point`], for [`for_problem`].

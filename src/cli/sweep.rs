@@ -5,39 +5,13 @@ use crate::problems::problem::ParamKey;
 use crate::report::face::report_face;
 use crate::report::point::cycle::LoadTableError;
 
-/// `microslip sweep ...`: the generic sweep, or the alias a subcommand names.
+/// `microslip sweep ...`: the generic sweep, a problem's (`sweep PROBLEM`) or `sweep cycle`.
 pub(super) fn run_sweep(out: &mut impl Write, args: &SweepArgs) -> Result<(), CliError> {
     match &args.command {
         None => run_generic_sweep(out, &args.generic),
-        Some(SweepCommand::Beam(args)) => run_load_sweep(
-            out,
-            "beam",
-            (args.vary.as_deref(), args.from, args.to, args.points),
-            &args.spacing,
-            &args.inputs,
-            args.format,
-        ),
-        Some(SweepCommand::Lap(args)) => run_load_sweep(
-            out,
-            "lap",
-            (args.vary.as_deref(), args.from, args.to, args.points),
-            &args.spacing,
-            &args.inputs,
-            args.format,
-        ),
-        Some(SweepCommand::Plate(args)) => run_plate_sweep(out, args),
+        Some(SweepCommand::Problem(problem)) => run_problem_sweep(out, problem),
         Some(SweepCommand::Cycle(args)) => run_cycle_sweep(out, args),
     }
-}
-
-/// The parameter a sweep of `kind` varies unless `--vary` names another: the problem's load
-/// (F) when it has one, else K_T, the parameter every problem has and the one the plate's
-/// results depend on most. Its table is the problem's own sweep table, without a column
-/// repeating the varied value.
-fn default_vary(kind: ModelKind) -> Option<Param> {
-    kind.description()
-        .load
-        .or_else(|| kind.params().iter().copied().find(|p| p.is_stiffness()))
 }
 
 /// `microslip sweep [--model M] [--preset P] [--vary NAME] --from A --to B`: the problem comes
@@ -161,67 +135,49 @@ impl<W: Write, E: Fn(RangeError) -> CliError> ForProblem for Sweep<'_, W, E> {
     }
 }
 
-/// `microslip sweep beam|lap`: over F (rows of the F sweep) or any other parameter of the
-/// alias's problem (its name, read through the registry).
-fn run_load_sweep(
+/// `microslip sweep PROBLEM`: over the problem's default parameter ([`default_vary`]: its load,
+/// else K_T) or any other with `--vary`; a problem without a load also takes its K_T range as
+/// `--kt-from A --kt-to B`.
+fn run_problem_sweep(
     out: &mut impl Write,
-    alias: &str,
-    (vary, from, to, points): (Option<&str>, f64, f64, u64),
-    spacing: &SpacingArgs,
-    inputs: &InputArgs,
-    format: TableFormat,
+    problem: &ForKind<ProblemSweepArgs>,
 ) -> Result<(), CliError> {
-    let kind = alias_problem(alias)?;
-    let param = kind.param(vary.unwrap_or("F"))?;
-    let values = Samples::of_param(param, from, to, points, spacing.spacing(param))
-        .map_err(force_range_error)?;
-    let (_, model) = load(inputs, kind, &model_command(kind, "sweep"))?;
-    write_sweep(out, model, param, values, format, force_range_error)
-}
-
-/// `microslip sweep plate`: over K_T (`--kt-from`/`--kt-to`, or the default of `--vary`) or any
-/// other parameter.
-fn run_plate_sweep(out: &mut impl Write, args: &PlateSweepArgs) -> Result<(), CliError> {
-    let PlateSweepArgs {
-        kt_from,
-        kt_to,
-        vary,
-        from,
-        to,
-        points,
-        spacing,
-        inputs,
-        format,
-    } = args;
-    // The alias's problem, read through the registry by its name.
-    let kind = alias_problem("plate")?;
-    let usage = CliError::Usage(
-        "sweep plate needs --kt-from A --kt-to B, or [--vary NAME] --from A --to B",
-    );
-    let (param, lo, hi, flags) = match (kt_from, kt_to, from, to) {
-        (Some(a), Some(b), None, None) => (
+    let kind = problem.kind;
+    let args = &problem.args;
+    let command = model_command(kind, "sweep");
+    let kt_range = (problem.value(args::KT_FROM), problem.value(args::KT_TO));
+    let (param, lo, hi, flags) = match (kt_range, args.from, args.to) {
+        ((Some(a), Some(b)), None, None) => (
             kind.params()
                 .iter()
                 .copied()
                 .find(|p| p.is_stiffness())
-                .ok_or(usage)?,
-            *a,
-            *b,
+                .ok_or_else(|| CliError::Invalid(format!("{command} has no K_T to sweep")))?,
+            a,
+            b,
             ["--kt-from", "--kt-to", "--points"],
         ),
-        (None, None, Some(a), Some(b)) => (
-            kind.param(vary.as_deref().unwrap_or("KT"))?,
-            *a,
-            *b,
-            ["--from", "--to", "--points"],
-        ),
-        _ => return Err(usage),
+        ((None, None), Some(a), Some(b)) => {
+            let param = match (&args.vary, default_vary(kind)) {
+                (Some(key), _) => kind.param(key)?,
+                (None, Some(param)) => param,
+                (None, None) => kind.param("")?,
+            };
+            (param, a, b, ["--from", "--to", "--points"])
+        }
+        // Only a problem without a load declares --kt-from (clap requires both ends of the
+        // others).
+        _ => {
+            return Err(CliError::Invalid(format!(
+                "{command} needs --kt-from A --kt-to B, or [--vary NAME] --from A --to B"
+            )));
+        }
     };
     let range_error = |error| CliError::Range { error, flags };
-    let values =
-        Samples::of_param(param, lo, hi, *points, spacing.spacing(param)).map_err(range_error)?;
-    let (_, model) = load(inputs, kind, &model_command(kind, "sweep"))?;
-    write_sweep(out, model, param, values, *format, range_error)
+    let values = Samples::of_param(param, lo, hi, args.points, args.spacing.spacing(param))
+        .map_err(range_error)?;
+    let (_, model) = load(&args.inputs, kind, &command)?;
+    write_sweep(out, model, param, values, args.format, range_error)
 }
 
 /// `microslip sweep cycle`: one cycle summary per amplitude, of any load-driven problem (the

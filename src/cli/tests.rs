@@ -50,3 +50,55 @@ fn fit_progress_shows_after_a_second_at_most_ten_times_a_second_and_is_erased() 
     quick.finish();
     assert!(quick.out.is_empty());
 }
+
+#[test]
+fn every_problem_of_the_registry_is_a_subcommand_that_names_it() {
+    use clap::Parser;
+    for kind in ModelKind::ALL {
+        let cli = Cli::try_parse_from(["microslip", kind.name()]).unwrap();
+        match cli.command {
+            Some(Command::Problem(point)) => assert_eq!(point.kind, kind),
+            other => panic!("{kind}: {other:?}"),
+        }
+        let sweep = Cli::try_parse_from([
+            "microslip",
+            "sweep",
+            kind.name(),
+            "--from",
+            "1",
+            "--to",
+            "2",
+            "--points",
+            "2",
+        ])
+        .unwrap();
+        match sweep.command {
+            Some(Command::Sweep(WithProblems {
+                command: Some(SweepCommand::Problem(problem)),
+                ..
+            })) => assert_eq!(problem.kind, kind),
+            other => panic!("sweep {kind}: {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn a_slip_of_a_problem_s_key_is_told_the_key() {
+    for kind in ModelKind::ALL {
+        let key = kind.name();
+        assert_eq!(closest_problem(key), Some(kind));
+        // One letter dropped, one doubled, the last two swapped (`cylindre`).
+        let dropped = &key[..key.len() - 1];
+        assert_eq!(closest_problem(dropped), Some(kind), "{dropped}");
+        let n = key.len();
+        let swapped = format!("{}{}{}", &key[..n - 2], &key[n - 1..], &key[n - 2..n - 1]);
+        assert_eq!(closest_problem(&swapped), Some(kind), "{swapped}");
+        assert_eq!(
+            closest_problem(&format!("{key}{}", &key[key.len() - 1..])),
+            Some(kind)
+        );
+    }
+    assert_eq!(closest_problem("measurements.csv"), None);
+    assert_eq!(edit_distance("kitten", "sitting"), 3);
+    assert_eq!(edit_distance("", "lap"), 3);
+}

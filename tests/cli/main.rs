@@ -9,6 +9,7 @@ mod fit_kt_cycle;
 mod generic_fit;
 mod generic_sweep;
 mod lap_and_words;
+mod problem_commands;
 mod reports;
 mod solve_and_recipes;
 

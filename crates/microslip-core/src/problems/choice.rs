@@ -21,6 +21,11 @@ pub trait AnyChoice: Send + Sync {
     /// The problem it belongs to as a refusal names it ("the twin beams"): "KEY applies to
     /// OWNER, not ...".
     fn owner(&self) -> &'static str;
+    /// The names it takes, as a flag lists them (`euler-bernoulli`, `timoshenko`).
+    fn values(&self) -> &'static [&'static str];
+    /// What it sets and its default, as the flag's help says it: the setting declares its own
+    /// option, so a command line builds the flag from it without naming the problem.
+    fn help(&self) -> &'static str;
     /// Its value in `inputs`, as presets write it; `None` for another problem's inputs.
     fn get(&self, inputs: &Inputs) -> Option<&'static str>;
     /// Sets it in `inputs` from `text` as a user typed it; `None` (nothing set) for another

@@ -25,6 +25,15 @@ impl AnyChoice for TheoryChoice {
         "the twin beams"
     }
 
+    fn values(&self) -> &'static [&'static str] {
+        &BeamTheoryError::ALLOWED
+    }
+
+    fn help(&self) -> &'static str {
+        "Beam theory of the twin beams' deflection (default: the preset's, else the paper's \
+         Euler-Bernoulli); timoshenko adds each beam's shear deflection"
+    }
+
     fn get(&self, inputs: &Inputs) -> Option<&'static str> {
         TwinBeamsProblem::from_inputs(inputs).map(|p| p.structure.theory.key())
     }
@@ -62,5 +71,9 @@ mod tests {
             BeamTheory::parse("x").unwrap_err().to_string()
         );
         assert_eq!(TheoryChoice.get(&inputs), Some("timoshenko"));
+        for value in TheoryChoice.values() {
+            assert_eq!(TheoryChoice.set(&mut inputs, value), Some(Ok(())));
+            assert_eq!(TheoryChoice.get(&inputs), Some(*value));
+        }
     }
 }

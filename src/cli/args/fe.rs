@@ -1,0 +1,152 @@
+//! The FE commands: `deck`, `bench`, `compare` (each takes the problem by its registry key) and
+//! `verify`.
+
+use super::*;
+use clap::{Args, ValueEnum};
+
+// The flags of `verify` (Command::Verify); its help is the variant's doc comment.
+#[derive(Debug, Args)]
+pub struct VerifyArgs {
+    /// Run one geometry per model only (a smoke test).
+    #[arg(long)]
+    pub(in crate::cli) quick: bool,
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = MeshDensity::default().elements,
+        help = format!(
+            "Elements per model ({} to {}; the smallest element shrinks in proportion)",
+            MeshDensity::MIN_ELEMENTS,
+            MeshDensity::MAX_ELEMENTS
+        )
+    )]
+    pub(in crate::cli) elements: usize,
+    /// Largest relative error accepted on w(L), X, u(L) and X_r.
+    #[arg(long, value_name = "T", default_value_t = verify::DEFAULT_TOLERANCE)]
+    pub(in crate::cli) tolerance: f64,
+}
+
+// The flags of `deck` (Command::Deck); its help is the variant's doc comment.
+#[derive(Debug, Args)]
+pub struct DeckCommandArgs {
+    /// The FE code (ccx: CalculiX 2.20; Abaqus reads the same keywords, see docs/guide.md).
+    #[arg(value_enum)]
+    pub(in crate::cli) code: FeCode,
+    /// Which benchmark.
+    #[arg(value_parser = model_kind_parser())]
+    pub(in crate::cli) model: ModelKind,
+    #[command(flatten)]
+    pub(in crate::cli) deck: DeckArgs,
+    /// Write the deck to FILE instead of stdout (replaced atomically if it exists).
+    #[arg(short = 'o', long, value_name = "FILE")]
+    pub(in crate::cli) output: Option<PathBuf>,
+}
+
+// The flags of `bench` (Command::Bench); its help is the variant's doc comment.
+#[derive(Debug, Args)]
+pub struct BenchArgs {
+    /// The FE code (ccx: CalculiX 2.20).
+    #[arg(value_enum)]
+    pub(in crate::cli) code: FeCode,
+    /// Which benchmark.
+    #[arg(value_parser = model_kind_parser())]
+    pub(in crate::cli) model: ModelKind,
+    #[command(flatten)]
+    pub(in crate::cli) deck: DeckArgs,
+    /// Work folder (made if missing; refused if it holds the job's files already). Default:
+    /// a new folder microslip-ccx-JOB-N in the system's temporary folder.
+    #[arg(long, value_name = "DIR")]
+    pub(in crate::cli) workdir: Option<PathBuf>,
+    /// The ccx program to run: a name is looked up on the PATH, a path (`./ccx_2.20`) is
+    /// taken from the current folder.
+    #[arg(long, value_name = "PROGRAM", default_value = "ccx")]
+    pub(in crate::cli) ccx: String,
+    /// Output format of the comparison.
+    #[arg(long, value_enum, default_value_t = CompareFormat::Text)]
+    pub(in crate::cli) format: CompareFormat,
+}
+
+// The flags of `compare` (Command::Compare); its help is the variant's doc comment.
+#[derive(Debug, Args)]
+pub struct CompareArgs {
+    /// Which benchmark.
+    #[arg(value_parser = model_kind_parser())]
+    pub(in crate::cli) model: ModelKind,
+    /// Result files: the .dat of a `microslip deck ccx` run (its deck JOB.inp beside it), or a
+    /// CSV from any FE code: F_N,w_mm (beam), KT_MPa_per_mm,u_mm (plate) or F_N,Delta_mm (lap).
+    /// Several plate or lap runs may be given.
+    #[arg(required = true, value_name = "RESULT")]
+    pub(in crate::cli) results: Vec<PathBuf>,
+    /// The deck of a .dat result (default: the result's name with .inp).
+    #[arg(long, value_name = "FILE")]
+    pub(in crate::cli) deck: Option<PathBuf>,
+    /// Parameters for CSV results (a .dat takes them from its deck).
+    #[command(flatten)]
+    pub(in crate::cli) inputs: InputArgs,
+    /// The interface profile of a CSV result, from which the stick slope your FE code used is
+    /// read: x_mm,slip_mm,shear_MPa (one load step) or step,x_mm,slip_mm,shear_MPa (a .dat
+    /// reads it from the run's .frd).
+    #[arg(long, value_name = "FILE")]
+    pub(in crate::cli) interface: Option<PathBuf>,
+    /// The kinematics of a CSV result's FE run, which the verdict names and the beams'
+    /// envelope (V2, calibrated on NLGEOM runs) depends on (a .dat's deck says it).
+    #[arg(long, value_enum)]
+    pub(in crate::cli) kinematics: Option<KinematicsArg>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = CompareFormat::Text)]
+    pub(in crate::cli) format: CompareFormat,
+}
+
+/// What a deck is made of: the parameters, the mesh and the load path (`deck` and `bench`).
+#[derive(Debug, Args)]
+pub struct DeckArgs {
+    #[command(flatten)]
+    pub(in crate::cli) inputs: InputArgs,
+    /// Mesh density (fine halves every element size: run both to check convergence).
+    #[arg(long, value_enum, default_value_t = DeckMesh::Coarse)]
+    pub(in crate::cli) mesh: DeckMesh,
+    /// Forces of the load steps (N, increasing): the beams' tip force (default F_thre x 0.5,
+    /// 0.75, 1, 1.25, 1.875, 2.5) or the lap joint's F (default 0.5 F_1, (F_1 + F_2)/2,
+    /// (F_2 + F_gross)/2, 0.9 F_gross); not the plate's.
+    #[arg(
+        long,
+        value_name = "F0,F1,...",
+        value_delimiter = ',',
+        allow_negative_numbers = true
+    )]
+    pub(in crate::cli) loads: Option<Vec<f64>>,
+    /// Give the FE code a stiff stick slope (boundary layer a tenth of h or t_p) instead of
+    /// K_T: plain Coulomb to within what the mesh resolves.
+    #[arg(long)]
+    pub(in crate::cli) near_coulomb: bool,
+    /// Largest force change per increment (N) in the load steps that end beyond F_1 (friction
+    /// is path-dependent once it saturates), beams and lap joint; default: F_1 / 40.
+    #[arg(long, value_name = "N")]
+    pub(in crate::cli) increment: Option<f64>,
+}
+
+/// External FE codes `deck` writes for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FeCode {
+    /// CalculiX's solver, ccx (tested with 2.20).
+    Ccx,
+}
+
+/// The kinematics of a CSV result's FE run (`compare --kinematics`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum KinematicsArg {
+    /// Large rotations (NLGEOM in Abaqus and CalculiX).
+    Nlgeom,
+    /// Linear (small-displacement) geometry.
+    Linear,
+}
+
+impl KinematicsArg {
+    /// The kinematics it names.
+    pub fn kinematics(self) -> crate::fe::kinematics::Kinematics {
+        match self {
+            KinematicsArg::Nlgeom => crate::fe::kinematics::Kinematics::Nlgeom,
+            KinematicsArg::Linear => crate::fe::kinematics::Kinematics::Linear,
+        }
+    }
+}
