@@ -99,7 +99,9 @@ pub struct Cli {
     /// Preset to open in the terminal UI (bundled or user name, or a .toml path).
     #[arg(long, value_name = "P")]
     pub preset: Option<String>,
-    /// Measured twin-beam curve (CSV with columns F_N,w_mm) to show and fit in the terminal UI.
+    /// Measured load-response curve of the preset's problem to show and fit in the terminal UI:
+    /// a CSV with the problem's load and response columns (`microslip fit PROBLEM --help` names
+    /// them), an optional sigma_mm.
     #[arg(long, value_name = "DATA.csv")]
     pub data: Option<PathBuf>,
 }
