@@ -8,5 +8,7 @@ mod chart;
 mod pane;
 
 pub use chart::PlateChart;
+pub mod compare;
 pub mod deck;
+pub mod fe_points;
 pub mod report;
