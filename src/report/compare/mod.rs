@@ -23,8 +23,8 @@ use crate::kernel::params::ParamError;
 
 /// A problem's comparison as `compare` and `bench` report it: how many result files one report
 /// takes, how one file's comparison is checked, and the report and CSV rows of them all. Each
-/// problem's application folder implements it (`src/problems/<name>/deck.rs`), so that the
-/// command is written once for every problem with a deck.
+/// problem's application folder implements it (`src/problems/<name>/compare.rs`; the
+/// cylinder's `deck.rs`), so that the command is written once for every problem with a deck.
 pub trait CompareFace: Deck {
     /// Why a comparison takes one result file, when it does (the beams': all the load steps of
     /// one run, fitted together); `None` when the rows of several files are put together.
@@ -95,6 +95,7 @@ pub(crate) fn percent_range(values: impl Iterator<Item = Option<f64>>) -> String
 pub(crate) const UNDEFINED_NOTE: &str = "n/a: the closed form is 0 there (no load, or nothing squeezes the \
 plate sideways), so a relative difference is undefined; compare the values themselves.";
 
+/// An optional value, or "-" where there is none.
 pub(crate) fn optional(x: Option<f64>) -> String {
     x.map_or_else(|| "-".to_string(), number)
 }
