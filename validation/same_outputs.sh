@@ -60,7 +60,7 @@ for f in text json; do
   add fit beam $R/fit-beam.csv --format $f
   add fit cylinder $R/fit-cylinder.csv --format $f
 done
-add cycle --format csv
+add cycle --amplitude 150 --format csv
 add cycle --preset lap-aluminium --amplitude 4000 --format csv
 add cycle --preset cylinder-steel-pad --amplitude 200 --format csv
 for f in csv json; do
@@ -73,7 +73,7 @@ for f in csv json; do
   add sweep cycle --preset cylinder-steel-pad --from 50 --to 500 --points 5 --format $f
   add sweep --model cylinder --from 25 --to 450 --points 6 --format $f
   add sweep --model beam --vary KT --from 100 --to 1000 --points 4 --format $f
-  add sweep --model lap --vary mu --from 0.1 --to 0.5 --points 4 --format $f
+  add sweep --model lap --vary mu --from 0.3 --to 0.6 --points 4 --format $f
   add sweep --model plate --vary P --from 1 --to 20 --points 4 --format $f
 done
 add report
@@ -126,6 +126,11 @@ for c in "" beam plate lap cylinder sweep cycle compare deck kt fit solve; do
   add $c --help
 done
 
+# SAME_OUTPUTS_LIST=1: print the commands only.
+if [ -n "${SAME_OUTPUTS_LIST:-}" ]; then
+  printf '%s\n' "${cmds[@]}"
+  exit 0
+fi
 differ=0
 n=0
 failed=0
