@@ -185,6 +185,39 @@ impl CcxRun<'_> {
     }
 }
 
+/// One load step of a deck's header, as a reader of its run walks them ([`CcxRun::load_steps`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct LoadStep<'a> {
+    /// The load's index (from 0).
+    n: usize,
+    /// The header's loads.
+    loads: &'a [f64],
+    /// The load (the header's unit: the problem's load).
+    pub(crate) force: f64,
+    /// The total time at the step's end.
+    pub(crate) time: f64,
+}
+
+impl LoadStep<'_> {
+    /// "load step 2 of 4 (F = 100 N, time 3)", for error messages ([`load_step_label`]).
+    pub(crate) fn label(&self) -> String {
+        load_step_label(self.n, self.loads)
+    }
+}
+
+impl CcxRun<'_> {
+    /// The load steps of the deck's header, in order.
+    pub(crate) fn load_steps(&self) -> impl Iterator<Item = LoadStep<'_>> {
+        let loads = &self.header.loads;
+        (0..loads.len()).map(move |n| LoadStep {
+            n,
+            loads,
+            force: loads[n],
+            time: load_step_time(n),
+        })
+    }
+}
+
 /// A load step's result missing from a `.dat` after `read` of the deck's `loads` load steps were
 /// read: `why` (which names the step), how many the `.dat` holds, and what that suggests.
 pub(crate) fn cut_short(why: &str, read: usize, loads: usize) -> ResultsError {

@@ -5,8 +5,7 @@
 
 use crate::fe::results::DatBlock;
 use crate::fe::results::{
-    CcxRun, NOT_FINISHED, ResultsError, cut_short, facing_slip, load_step_label, load_step_time,
-    points_from_csv, thickness_mean,
+    CcxRun, NOT_FINISHED, ResultsError, cut_short, facing_slip, points_from_csv, thickness_mean,
 };
 use crate::kernel::regime::{Law, Regime};
 use crate::measured::{Curve, MEASURED_JOINT_DISPLACEMENT};
@@ -100,11 +99,9 @@ pub(super) fn lap_points(
     let saturation = structure.friction * structure.pressure / structure.tangential_stiffness;
     let loads = &run.header.loads;
     let mut points = Vec::with_capacity(loads.len());
-    for n in 0..loads.len() {
-        let (force, time) = (loads[n], load_step_time(n));
-        let step = || load_step_label(n, loads);
-        let state =
-            state_at(time, &step).map_err(|why| cut_short(&why, points.len(), loads.len()))?;
+    for step in run.load_steps() {
+        let state = state_at(step.time, &|| step.label())
+            .map_err(|why| cut_short(&why, points.len(), loads.len()))?;
         let slips: Vec<f64> = state
             .slips
             .iter()
@@ -112,7 +109,7 @@ pub(super) fn lap_points(
             .map(|(s, s0)| s - s0)
             .collect();
         points.push(LapFePoint {
-            force,
+            force: step.force,
             joint_displacement: state.joint_displacement - clamped.joint_displacement,
             interface: Some(lap_interface_state(&state.xs, &slips, saturation)),
         });

@@ -2,8 +2,8 @@
 //! `.dat` read against its deck) and what a CSV `F_N,w_mm` from any FE code gives.
 
 use crate::fe::results::{
-    CcxRun, FeInterface, ResultsError, cut_short, interface_state, load_step_label, load_step_time,
-    mean, points_from_csv, relative_slip,
+    CcxRun, FeInterface, ResultsError, cut_short, interface_state, mean, points_from_csv,
+    relative_slip,
 };
 use crate::measured::{Curve, MEASURED_DEFLECTION};
 
@@ -53,14 +53,12 @@ pub(super) fn beam_points(
     let saturation = structure.friction * structure.pressure / structure.tangential_stiffness;
     let loads = &run.header.loads;
     let mut points = Vec::with_capacity(loads.len());
-    for n in 0..loads.len() {
-        let (force, time) = (loads[n], load_step_time(n));
-        let step = || load_step_label(n, loads);
+    for step in run.load_steps() {
         let [tip, lower, upper] = [sets::BEAM_TIP, sets::BEAM_LOWER_FACE, sets::BEAM_UPPER_FACE]
             .map(|set| {
-                dat.block(set, time).map_err(|why| {
+                dat.block(set, step.time).map_err(|why| {
                     let before_any = points.is_empty() || why.starts_with("no ");
-                    let why = format!("{}: {why}", step());
+                    let why = format!("{}: {why}", step.label());
                     if before_any {
                         cut_short(&why, points.len(), loads.len())
                     } else {
@@ -72,7 +70,7 @@ pub(super) fn beam_points(
         let deflection = mean(tip.rows.iter().map(|(_, u)| u[1]));
         let (xs, slips) = relative_slip(&dat.nodes, lower, Some(upper))?;
         points.push(BeamFePoint {
-            force,
+            force: step.force,
             deflection,
             interface: Some(interface_state(&xs, &slips, saturation)),
         });
