@@ -7,7 +7,7 @@
 //! - [`deck`]: what every deck is written with (mesh, size limit, load path, cards).
 //! - [`header`]: the header a deck starts with, which `compare` reads back.
 //! - [`results`]: what every problem's reader is written with: CalculiX's `.dat` output read
-//!   against its deck ([`results::DatRead`]), slip profiles, thickness means, and plain CSV
+//!   against its deck (`DatRead`), slip profiles, thickness means, and plain CSV
 //!   curves from any FE code.
 //! - [`compare`]: what every comparison with the closed forms is written with (a relative
 //!   difference, a zone end in elements of the mesh).

@@ -1,7 +1,7 @@
 //! What every problem's reader of FE results is written with: CalculiX's `.dat` file read against
-//! the deck it came from ([`DatRead`]: its displacement blocks, the deck's nodes and node sets, a
+//! the deck it came from (`DatRead`: its displacement blocks, the deck's nodes and node sets, a
 //! block checked complete), the load steps of a deck's header, slip profiles and thickness means,
-//! and plain CSV curves that any FE code can write ([`points_from_csv`]).
+//! and plain CSV curves that any FE code can write (`points_from_csv`).
 //!
 //! What a problem's FE point is, which node sets it reads and which columns its CSV has are the
 //! problem's own, in its folder (`src/problems/<name>/fe_points.rs`, the cylinder's

@@ -1,7 +1,7 @@
 //! The verdicts of [`crate::fe::verdict`] in words: one line per row ([`RowVerdict`]), one closing
-//! line ([`Summary`], from a [`Tally`] of the rows), and a short form for the TUI's status line.
+//! line ([`Summary`], from a `Tally` of the rows), and a short form for the TUI's status line.
 //! The judging is done in `fe`; this file only says it, in the words each problem gives it
-//! ([`Names`]; each problem's row verdict and closing verdict are in its folder,
+//! (`Names`; each problem's row verdict and closing verdict are in its folder,
 //! `src/problems/<name>/compare.rs`).
 
 use serde::{Serialize, Serializer};
