@@ -12,9 +12,11 @@ mod common;
 use std::path::PathBuf;
 
 use microslip::fe::header::DeckHeader;
-use microslip::fe::results::{BeamFePoint, CcxRun, PlateFePoint};
+use microslip::fe::results::CcxRun;
 use microslip::problems::plate::SqueezedPlateProblem;
+use microslip::problems::plate::fe_points::PlateFePoint;
 use microslip::problems::twin_beams::TwinBeamsProblem;
+use microslip::problems::twin_beams::fe_points::BeamFePoint;
 use proptest::prelude::*;
 
 fn fixture(name: &str) -> String {

@@ -12,13 +12,17 @@ use std::path::{Path, PathBuf};
 use microslip::fe::deck::DeckMesh;
 use microslip::fe::header::StickSlope;
 use microslip::fe::load::{LoadError, Loaded, results};
-use microslip::fe::results::{BeamFePoint, LapFePoint, PlateFePoint};
 use microslip::problems::lap::LapJointProblem;
-use microslip::problems::lap::deck::{compare_lap, lap_deck};
+use microslip::problems::lap::compare::compare_lap;
+use microslip::problems::lap::deck::lap_deck;
+use microslip::problems::lap::fe_points::LapFePoint;
 use microslip::problems::plate::SqueezedPlateProblem;
-use microslip::problems::plate::deck::compare_plate;
+use microslip::problems::plate::compare::{compare_plate, plate_summary};
+use microslip::problems::plate::fe_points::PlateFePoint;
 use microslip::problems::twin_beams::TwinBeamsProblem;
-use microslip::problems::twin_beams::deck::{beam_deck, compare_beams};
+use microslip::problems::twin_beams::compare::{beam_summary, compare_beams};
+use microslip::problems::twin_beams::deck::beam_deck;
+use microslip::problems::twin_beams::fe_points::BeamFePoint;
 
 fn beam_results(path: &Path, deck: Option<&Path>) -> Result<Loaded<BeamFePoint>, LoadError> {
     results::<TwinBeamsProblem>(path, deck)
@@ -261,7 +265,6 @@ fn element_position(breaks: &[f64], x: f64) -> f64 {
 #[test]
 fn calculix_verdicts_follow_from_the_fixtures_numbers() {
     use microslip::fe::verdict::{Envelope, StiffnessMatch};
-    use microslip::report::compare::verdict::{beam_summary, plate_summary};
     for (file, h) in [
         ("paper-beams.dat", 10.0),
         ("slender-beams.dat", 2.5),

@@ -595,3 +595,186 @@ fn only_a_problem_s_folders_and_the_registry_name_it() {
         new.join("\n")
     );
 }
+
+/// The generic layers: folders (from the repository's root) whose items may not be named after a
+/// problem. A problem's own types, functions and constants live in its two folders; a generic
+/// layer that declares `BeamRow` or `lap_points` is a problem's code under a generic roof, which
+/// the next problem copies. More folders join this list as they are cleaned.
+const GENERIC_LAYERS: &[&str] = &["src/fe", "src/report"];
+
+/// The items of a generic layer named after a problem, `path: kind name`, that are still there.
+/// The list only shrinks (as [`STILL_NAMING_A_PROBLEM`]).
+const STILL_PROBLEM_NAMED_ITEMS: &[&str] = &[];
+
+/// Each problem's name prefixes, from the registry itself: its variant (`Beam`), its type less
+/// `Problem` (`TwinBeams`), its folder as a type (`TwinBeams`) and its key and folder as the
+/// start of a function, module or constant (`beam_`, `twin_beams_`, `BEAM_`, `TWIN_BEAMS_`).
+fn problem_prefixes() -> Vec<String> {
+    macro_rules! names {
+        ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+            vec![$((
+                stringify!($variant),
+                stringify!($problem),
+                stringify!($folder),
+                <microslip_core::problems::$folder::$problem as
+                    microslip_core::problems::Problem>::INFO.key,
+            )),+]
+        };
+    }
+    let camel = |snake: &str| -> String {
+        snake
+            .split('_')
+            .map(|w| {
+                let mut c = w.chars();
+                c.next()
+                    .map(|f| f.to_uppercase().chain(c).collect::<String>())
+                    .unwrap_or_default()
+            })
+            .collect()
+    };
+    let mut prefixes = Vec::new();
+    for (variant, problem, folder, key) in microslip_core::with_problems!(names) {
+        for name in [
+            variant.to_string(),
+            problem
+                .strip_suffix("Problem")
+                .unwrap_or(problem)
+                .to_string(),
+            camel(folder),
+            camel(key),
+            format!("{key}_"),
+            format!("{folder}_"),
+            format!("{}_", key.to_uppercase()),
+            format!("{}_", folder.to_uppercase()),
+        ] {
+            if !prefixes.contains(&name) {
+                prefixes.push(name);
+            }
+        }
+    }
+    prefixes
+}
+
+/// The items `code` declares whose name starts with one of `prefixes` as a word (`Beam` in
+/// `BeamRow` or `Beam`, not in `Beamish`; `beam_` in `beam_points`), each as `kind name`.
+fn problem_named_items(code: &str, prefixes: &[String]) -> Vec<String> {
+    const KINDS: &[&str] = &[
+        "struct", "enum", "fn", "type", "const", "static", "trait", "mod", "union",
+    ];
+    let mut found = Vec::new();
+    for line in code.lines() {
+        let words: Vec<&str> = line
+            .split(|c: char| c.is_whitespace() || "(<:{;=,".contains(c))
+            .filter(|w| !w.is_empty())
+            .collect();
+        for pair in words.windows(2) {
+            let [kind, name] = [pair[0], pair[1]];
+            if !KINDS.contains(&kind) {
+                continue;
+            }
+            let named = prefixes.iter().any(|prefix| {
+                name.strip_prefix(prefix.as_str()).is_some_and(|rest| {
+                    prefix.ends_with('_')
+                        || rest.is_empty()
+                        || rest.starts_with(|c: char| c.is_uppercase() || c.is_ascii_digit())
+                })
+            });
+            if named {
+                found.push(format!("{kind} {name}"));
+            }
+            break;
+        }
+    }
+    found
+}
+
+/// Every item of the generic layers named after a problem, `path: kind name`.
+fn problem_named_items_of_generic_layers() -> Vec<String> {
+    let top = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let prefixes = problem_prefixes();
+    let mut found = Vec::new();
+    for layer in GENERIC_LAYERS {
+        let mut paths = Vec::new();
+        rust_files(&top.join(layer), &mut paths);
+        paths.sort();
+        for path in paths {
+            let relative = path
+                .strip_prefix(top)
+                .unwrap()
+                .to_string_lossy()
+                .replace('\\', "/");
+            let code = shipped_code(&std::fs::read_to_string(&path).unwrap());
+            for item in problem_named_items(&code, &prefixes) {
+                found.push(format!("{relative}: {item}"));
+            }
+        }
+    }
+    found
+}
+
+/// Issue 43: no item of a generic layer (`src/fe`, `src/report`: shipped code, unit-test
+/// modules left out, as for the layers) is named after a problem; a problem's points,
+/// comparisons, rows and verdicts live in its folder.
+#[test]
+fn no_item_of_a_generic_layer_is_named_after_a_problem() {
+    let found = problem_named_items_of_generic_layers();
+    let new: Vec<&String> = found
+        .iter()
+        .filter(|f| !STILL_PROBLEM_NAMED_ITEMS.contains(&f.as_str()))
+        .collect();
+    let gone: Vec<&&str> = STILL_PROBLEM_NAMED_ITEMS
+        .iter()
+        .filter(|f| !found.iter().any(|x| x == **f))
+        .collect();
+    assert!(
+        new.is_empty() && gone.is_empty(),
+        "{} items of {GENERIC_LAYERS:?} are named after a problem; not listed (move them to the \
+         problem's folder):\n{}\nlisted but gone (remove them from STILL_PROBLEM_NAMED_ITEMS):\n\
+         {gone:?}",
+        found.len(),
+        new.iter()
+            .map(|s| s.as_str())
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+}
+
+/// The check itself can fail: each kind of item, named after a problem by its variant, type,
+/// key or folder, is found; a generic name, or a problem's name inside a word, is not.
+#[test]
+fn the_problem_name_check_finds_each_kind_of_item() {
+    let prefixes = problem_prefixes();
+    for expected in [
+        "Beam",
+        "TwinBeams",
+        "beam_",
+        "twin_beams_",
+        "Plate",
+        "Lap",
+        "Cylinder",
+    ] {
+        assert!(prefixes.iter().any(|p| p == expected), "{prefixes:?}");
+    }
+    let code = "pub struct BeamRow {\n\
+                pub(crate) enum PlateCompared<'a> {\n\
+                fn lap_points(run: &CcxRun) {\n\
+                pub const BEAM_CURVE: Curve = x;\n\
+                pub type CylinderReport = Table<X>;\n\
+                pub trait TwinBeamsFace {\n\
+                pub mod twin_beams_faces;\n\
+                pub fn label(row: &BeamRow) -> String {\n\
+                struct Lapse;\n\
+                let beam_row = 1;\n";
+    assert_eq!(
+        problem_named_items(code, &prefixes),
+        [
+            "struct BeamRow",
+            "enum PlateCompared",
+            "fn lap_points",
+            "const BEAM_CURVE",
+            "type CylinderReport",
+            "trait TwinBeamsFace",
+            "mod twin_beams_faces",
+        ]
+    );
+}

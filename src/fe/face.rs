@@ -1,6 +1,7 @@
 //! [`Deck`]: what the FE layer needs of a problem (its deck's header lines, the FE points its
 //! runs and CSV curves give, its comparison with the closed forms), as a capability trait each
-//! problem's application folder implements (`src/problems/<name>/deck.rs`), and its erased side
+//! problem's application folder implements (`src/problems/<name>/deck.rs`, with its reader in
+//! `fe_points.rs` and its comparison in `compare.rs`), and its erased side
 //! ([`AnyDeck`], [`deck_face`], [`AnyLoaded`]) generated from the registry.
 //!
 //! Why a trait and not a `match` on the problem's kind: the header, the readers and the loader

@@ -2,11 +2,18 @@
 //! comparison of its results with the closed forms.
 //!
 //! - [`face`]: [`Deck`](face::Deck), what a problem's deck, reader and comparison are (each
-//!   problem's in its folder, `src/problems/<name>/deck.rs`), and their dispatch from the registry.
+//!   problem's in its folder: `src/problems/<name>/deck.rs`, `fe_points.rs`, `compare.rs`), and
+//!   their dispatch from the registry.
 //! - [`deck`]: what every deck is written with (mesh, size limit, load path, cards).
 //! - [`header`]: the header a deck starts with, which `compare` reads back.
-//! - [`results`]: readers of CalculiX's `.dat` output and of plain CSV from any FE code.
-//! - [`compare`]: FE values against both closed forms, point by point, and the K_T they imply.
+//! - [`results`]: what every problem's reader is written with: CalculiX's `.dat` output read
+//!   against its deck (`DatRead`), slip profiles, thickness means, and plain CSV
+//!   curves from any FE code.
+//! - [`compare`]: what every comparison with the closed forms is written with (a relative
+//!   difference, a zone end in elements of the mesh).
+//!
+//! This layer names no problem (`tests/layering.rs`): a problem's FE points, readers and
+//! comparison are in its folder, so that a new problem's are too.
 //! - [`verdict`]: whether they agree: each difference against its stated envelope, X in elements
 //!   of the FE mesh, the implied K_T in standard errors.
 //! - [`stick_slope`]: the stick slope the FE code used, CSHEAR / CSLIP over the nodes that

@@ -1,5 +1,11 @@
-//! Readers of FE results: CalculiX's `.dat` file for a microslip deck, and plain CSV curves that any
-//! FE code can write (`F_N,w_mm` for the beams, `KT_MPa_per_mm,u_mm` for the plate).
+//! What every problem's reader of FE results is written with: CalculiX's `.dat` file read against
+//! the deck it came from (`DatRead`: its displacement blocks, the deck's nodes and node sets, a
+//! block checked complete), the load steps of a deck's header, slip profiles and thickness means,
+//! and plain CSV curves that any FE code can write (`points_from_csv`).
+//!
+//! What a problem's FE point is, which node sets it reads and which columns its CSV has are the
+//! problem's own, in its folder (`src/problems/<name>/fe_points.rs`, the cylinder's
+//! `ccx_read.rs`): this file names no problem, so that a new problem's reader is its folder.
 //!
 //! Parsing only: the caller reads the files (with a size cap, [`crate::file`]) and hands the text
 //! here. Every problem names its line where there is one.
@@ -13,7 +19,7 @@ use super::header::DeckHeader;
 use super::verdict::InterfaceMesh;
 use crate::kernel::params::{Compact, Domain, Unit};
 use crate::kernel::regime::Regime;
-use crate::measured::{self as data, Curve, MEASURED_DEFLECTION, MEASURED_JOINT_DISPLACEMENT};
+use crate::measured::{self as data, Curve};
 
 /// What is wrong with an FE result file.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
@@ -38,57 +44,6 @@ impl From<data::DataError> for ResultsError {
             problem: e.problem,
         }
     }
-}
-
-/// One FE point of the twin beams.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BeamFePoint {
-    /// Tip force on each beam (N).
-    pub force: f64,
-    /// Tip deflection w(L) (mm).
-    pub deflection: f64,
-    /// What the interface slip shows, when the results have it.
-    pub interface: Option<FeInterface>,
-}
-
-/// One FE point of the squeezed plate.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PlateFePoint {
-    /// The stick slope K_T of the run (MPa/mm).
-    pub stiffness: f64,
-    /// u(L) (mm): the thickness mean for CalculiX results (what the strip theory's u stands for),
-    /// the given value for CSV.
-    pub end_displacement: f64,
-    /// u(L) at the contact face and at mid-thickness (mm), CalculiX results only.
-    pub through_thickness: Option<[f64; 2]>,
-    /// What the interface slip shows, when the results have it.
-    pub interface: Option<FeInterface>,
-}
-
-/// One FE point of the double-lap joint.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LapFePoint {
-    /// The force through the joint (N).
-    pub force: f64,
-    /// The joint displacement Delta (mm): for CalculiX results the thickness mean of the inner
-    /// plate's u_x at x = L minus the cover's at x = 0, each from the end of the clamping step
-    /// (P alone stretches both plates through Poisson, which the 1-D theory does not have); the
-    /// given value for CSV.
-    pub joint_displacement: f64,
-    /// The sliding zones the slip profile shows, when the results have it.
-    pub interface: Option<LapFeInterface>,
-}
-
-/// The lap joint's interface state read from the slip profile: sliding where K_T |s| >= mu P
-/// (nominal P: the closed form's definition), contiguous from each end.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LapFeInterface {
-    /// Length a of the sliding zone from x = 0 (mm).
-    pub slide_from_start: f64,
-    /// Length d of the sliding zone from x = L (mm).
-    pub slide_from_end: f64,
-    /// The regime of the regularized law the profile shows.
-    pub regime: Regime,
 }
 
 /// The interface state read from the slip profile: macroslip where K_T |s| >= mu P.
@@ -119,24 +74,12 @@ pub(crate) struct DatBlock {
     pub(crate) rows: Vec<(usize, [f64; 3])>,
 }
 
-/// The CSV form of the plate curve.
-pub(crate) const PLATE_CURVE: Curve = Curve {
-    x: "KT_MPa_per_mm",
-    y: "u_mm",
-    x_what: "stiffnesses",
-    x_domain: Domain::STIFFNESS,
-    x_unit: Unit::MegapascalPerMillimetre,
-    min_rows: 1,
-};
-
-/// The CSV form of the beam curve: the measurement format of `fit`, one row or more.
-pub(crate) const BEAM_CURVE: Curve = Curve {
-    min_rows: 1,
-    ..MEASURED_DEFLECTION
-};
-
-/// The points of a CSV curve, each made of its (abscissa, ordinate) by `point`.
-fn points_from_csv<P>(
+/// The points of a CSV curve, each made of its (abscissa, ordinate) by `point`: every problem's
+/// [`Deck::csv_points`] is this with its curve's columns.
+///
+/// # Errors
+/// As [`data::parse_curve`].
+pub(crate) fn points_from_csv<P>(
     text: &str,
     curve: &Curve,
     point: impl Fn(f64, f64) -> P,
@@ -145,51 +88,6 @@ fn points_from_csv<P>(
         .into_iter()
         .map(|(x, y)| point(x, y))
         .collect())
-}
-
-/// The CSV form of the lap joint's curve: the measurement format of `fit lap`, one row or more.
-pub(crate) const LAP_CURVE: Curve = Curve {
-    min_rows: 1,
-    ..MEASURED_JOINT_DISPLACEMENT
-};
-
-/// Lap-joint points from a CSV `F_N,Delta_mm`.
-///
-/// # Errors
-/// As [`data::parse_curve`].
-pub fn lap_points_from_csv(text: &str) -> Result<Vec<LapFePoint>, ResultsError> {
-    points_from_csv(text, &LAP_CURVE, |force, joint_displacement| LapFePoint {
-        force,
-        joint_displacement,
-        interface: None,
-    })
-}
-
-/// Beam points from a CSV `F_N,w_mm`.
-///
-/// # Errors
-/// As [`data::parse_curve`].
-pub fn beam_points_from_csv(text: &str) -> Result<Vec<BeamFePoint>, ResultsError> {
-    points_from_csv(text, &BEAM_CURVE, |force, deflection| BeamFePoint {
-        force,
-        deflection,
-        interface: None,
-    })
-}
-
-/// Plate points from a CSV `KT_MPa_per_mm,u_mm`.
-///
-/// # Errors
-/// As [`data::parse_curve`].
-pub fn plate_points_from_csv(text: &str) -> Result<Vec<PlateFePoint>, ResultsError> {
-    points_from_csv(text, &PLATE_CURVE, |stiffness, end_displacement| {
-        PlateFePoint {
-            stiffness,
-            end_displacement,
-            through_thickness: None,
-            interface: None,
-        }
-    })
 }
 
 impl CcxRun<'_> {
@@ -234,6 +132,98 @@ impl CcxRun<'_> {
             ))
         })
     }
+}
+
+/// A CalculiX run's `.dat` read against its deck: what every problem's reader starts from (the
+/// `.dat`'s displacement blocks, the deck's node coordinates and node sets), read in that order
+/// so that a broken `.dat` is named before a broken deck.
+#[derive(Debug, Clone)]
+pub(crate) struct DatRead {
+    /// The displacement blocks of the `.dat`.
+    pub(crate) blocks: Vec<DatBlock>,
+    /// The deck's node coordinates (mm).
+    pub(crate) nodes: HashMap<usize, [f64; 3]>,
+    /// The deck's node sets, by upper-case name.
+    pub(crate) sets: HashMap<String, Vec<usize>>,
+}
+
+/// What a `.dat` that lacks a result probably is, said after what it lacks.
+pub(crate) const NOT_FINISHED: &str = "(did ccx finish, and is this the .dat of this deck?)";
+
+impl DatRead {
+    /// The `.dat` text `dat` of a run of the deck text `deck`.
+    ///
+    /// # Errors
+    /// A malformed `.dat` line, or a deck without nodes or with a malformed `*NODE` line.
+    pub(crate) fn of(deck: &str, dat: &str) -> Result<DatRead, ResultsError> {
+        let blocks = parse_dat(dat)?;
+        let nodes = parse_nodes(deck)?;
+        let sets = parse_node_sets(deck);
+        Ok(DatRead {
+            blocks,
+            nodes,
+            sets,
+        })
+    }
+
+    /// The block of `set` at `time`, checked complete against the deck ([`complete_block`]).
+    ///
+    /// # Errors
+    /// What is missing, in words, for the caller to place.
+    pub(crate) fn block(&self, set: &str, time: f64) -> Result<&DatBlock, String> {
+        complete_block(&self.blocks, &self.sets, set, time)
+    }
+}
+
+impl CcxRun<'_> {
+    /// The run's `.dat` read against its deck ([`DatRead::of`]).
+    ///
+    /// # Errors
+    /// As [`DatRead::of`].
+    pub(crate) fn read(&self) -> Result<DatRead, ResultsError> {
+        DatRead::of(self.deck, self.dat)
+    }
+}
+
+/// One load step of a deck's header, as a reader of its run walks them ([`CcxRun::load_steps`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct LoadStep<'a> {
+    /// The load's index (from 0).
+    n: usize,
+    /// The header's loads.
+    loads: &'a [f64],
+    /// The load (the header's unit: the problem's load).
+    pub(crate) force: f64,
+    /// The total time at the step's end.
+    pub(crate) time: f64,
+}
+
+impl LoadStep<'_> {
+    /// "load step 2 of 4 (F = 100 N, time 3)", for error messages ([`load_step_label`]).
+    pub(crate) fn label(&self) -> String {
+        load_step_label(self.n, self.loads)
+    }
+}
+
+impl CcxRun<'_> {
+    /// The load steps of the deck's header, in order.
+    pub(crate) fn load_steps(&self) -> impl Iterator<Item = LoadStep<'_>> {
+        let loads = &self.header.loads;
+        (0..loads.len()).map(move |n| LoadStep {
+            n,
+            loads,
+            force: loads[n],
+            time: load_step_time(n),
+        })
+    }
+}
+
+/// A load step's result missing from a `.dat` after `read` of the deck's `loads` load steps were
+/// read: `why` (which names the step), how many the `.dat` holds, and what that suggests.
+pub(crate) fn cut_short(why: &str, read: usize, loads: usize) -> ResultsError {
+    ResultsError::Missing(format!(
+        "{why}; the .dat holds {read} of the deck's {loads} load steps {NOT_FINISHED}"
+    ))
 }
 
 /// The total time at the end of load `n` (from 0) of a deck: step 1 applies the pressure, load n
@@ -687,7 +677,7 @@ mod tests {
     }
 
     #[test]
-    fn lap_faces_pair_by_position_not_by_node_number() {
+    fn facing_sets_pair_by_position_not_by_node_number() {
         let mut nodes = HashMap::new();
         for (id, x) in [
             (1, 0.0),
@@ -741,23 +731,6 @@ mod tests {
                 .unwrap_err()
                 .to_string()
                 .contains("'x' is not a node number")
-        );
-    }
-
-    #[test]
-    fn csv_curves_take_one_row() {
-        let beams = beam_points_from_csv("F_N,w_mm\n100,0.039\n").unwrap();
-        assert_eq!(beams[0].deflection, 0.039);
-        let plate = plate_points_from_csv("KT_MPa_per_mm,u_mm\n1e4,6.8e-5\n1e6,1.48e-5\n").unwrap();
-        assert_eq!(plate.len(), 2);
-        let lap = lap_points_from_csv("F_N,Delta_mm\n3000,0.0141\n").unwrap();
-        assert_eq!((lap[0].force, lap[0].joint_displacement), (3000.0, 0.0141));
-        let error = plate_points_from_csv("KT_MPa_per_mm,u_mm\n0,1\n").unwrap_err();
-        assert!(
-            error
-                .to_string()
-                .starts_with("line 2: KT_MPa_per_mm = 0 is too small"),
-            "{error}"
         );
     }
 }

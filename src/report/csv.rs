@@ -375,6 +375,17 @@ impl<'a, W: Write> Serializer for Cell<'a, W> {
     }
 }
 
+/// What the tests of a table's columns read.
+#[cfg(test)]
+pub(crate) mod test_support {
+    /// The CSV header of the row type `R`, as `write_header` writes it.
+    pub(crate) fn header<R: serde::Serialize + Default>() -> String {
+        let mut out = Vec::new();
+        super::write_header(&mut out, &R::default()).unwrap();
+        String::from_utf8(out).unwrap().trim_end().to_string()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

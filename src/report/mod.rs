@@ -5,6 +5,12 @@
 //! [`crate::fit`] and [`crate::verify`], the same values the TUI shows. Nothing below this module
 //! imports it (tests/layering.rs checks it); the number formatting that decks and reports share
 //! lives in [`crate::kernel::format`] (re-exported here for the rest of the crate).
+//!
+//! Generic types only: what a problem's report, sweep row, compare row and verdicts hold is the
+//! problem's own, in its folder (`src/problems/<name>/report.rs`, `compare.rs`), written on the
+//! traits and the generic report types here ([`face::ReportFace`],
+//! [`compare::CompareFace`], [`compare::table::TableReport`]); this module names no problem
+//! (`tests/layering.rs`), so that a new problem's report is its folder.
 
 pub mod compare;
 pub(crate) mod csv;

@@ -2,66 +2,16 @@
 //! names (units in the names: `w_coulomb_mm`, `KT_MPa_per_mm`). `report::csv` writes them as CSV
 //! (the field names are the header), serde_json as JSON objects. The column names are a contract
 //! with users' scripts: do not rename them.
+//!
+//! The rows here are the tables every problem shares (a cycle's, a chart's data); a problem's own
+//! sweep and loop rows are in its folder (`src/problems/<name>/report.rs`), beside the
+//! [`crate::report::face::ReportFace`] that names them.
 
 use serde::Serialize;
 
 use crate::chart::{Plot, SeriesKind};
 use crate::report::point::cycle::CycleKeys;
 use crate::study::curves::{CyclePoint, LoopPoint};
-
-/// One row of `microslip sweep beam`.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
-pub struct BeamRow {
-    /// Tip force (N).
-    #[serde(rename = "F_N")]
-    pub force: f64,
-    /// Coulomb tip deflection (mm).
-    pub w_coulomb_mm: f64,
-    /// Regularized tip deflection (mm).
-    pub w_regularized_mm: f64,
-    /// End of the microslip zone (mm).
-    #[serde(rename = "X_mm")]
-    pub micro_end: f64,
-    /// Coulomb regime.
-    pub regime_coulomb: &'static str,
-    /// Regularized regime.
-    pub regime_regularized: &'static str,
-    /// The deflection's beam theory (`euler-bernoulli` or `timoshenko`). Added after the original
-    /// columns, which scripts read by name.
-    pub beam_theory: &'static str,
-    /// Bound on |w(L) continuum FE / w(L) here - 1| (V2), a fraction; empty where (V2) is not
-    /// calibrated (`beam_theory` still names the theory). Deprecated: the same value as
-    /// `vs_continuum_within_fraction`, kept one release for scripts that read it.
-    pub vs_continuum_within: Option<f64>,
-    /// The same bound under the name that says its unit (a fraction: 0.034 is 3.4 %). Added
-    /// last, so no column moves.
-    pub vs_continuum_within_fraction: Option<f64>,
-}
-
-/// One row of `microslip sweep plate`.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
-pub struct PlateRow {
-    /// Tangential stiffness (MPa/mm).
-    #[serde(rename = "KT_MPa_per_mm")]
-    pub kt: f64,
-    /// Coulomb end displacement (mm).
-    pub u_coulomb_mm: f64,
-    /// Regularized end displacement (mm).
-    pub u_regularized_mm: f64,
-    /// End of the Coulomb stick zone (mm).
-    #[serde(rename = "Xs_mm")]
-    pub stick_end: f64,
-    /// End of the microslip zone (mm).
-    #[serde(rename = "Xr_mm")]
-    pub micro_end: f64,
-    /// Coulomb regime.
-    pub regime_coulomb: &'static str,
-    /// Regularized regime.
-    pub regime_regularized: &'static str,
-    /// The strip theory against a plane-strain continuum (V1): holds (within 2 %), approximate
-    /// (10 %) or outside. Added after the original columns, which scripts read by name.
-    pub strip_theory: &'static str,
-}
 
 /// One row of `microslip sweep cycle`, headed in the problem's units ([`CycleKeys`]:
 /// `Fa_N,D_coulomb_Nmm,...` for a force, `Qa_N_per_mm,D_coulomb_Nmm_per_mm,...` for the
@@ -148,98 +98,15 @@ impl From<&LoopPoint> for LoopRow {
     }
 }
 
-/// One row of `microslip sweep lap`.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
-pub struct LapRow {
-    /// Force through the joint (N).
-    #[serde(rename = "F_N")]
-    pub force: f64,
-    /// Coulomb joint displacement (mm).
-    #[serde(rename = "Delta_coulomb_mm")]
-    pub delta_coulomb: f64,
-    /// Regularized joint displacement (mm).
-    #[serde(rename = "Delta_regularized_mm")]
-    pub delta_regularized: f64,
-    /// Regularized sliding zone from x = 0 (mm).
-    #[serde(rename = "a_mm")]
-    pub slide_at_inner_end: f64,
-    /// Regularized sliding zone from x = L (mm).
-    #[serde(rename = "d_mm")]
-    pub slide_at_cover_ends: f64,
-    /// Coulomb sliding zone from x = 0 (mm).
-    #[serde(rename = "a_coulomb_mm")]
-    pub slide_at_inner_end_coulomb: f64,
-    /// Coulomb sliding zone from x = L (mm).
-    #[serde(rename = "d_coulomb_mm")]
-    pub slide_at_cover_ends_coulomb: f64,
-    /// Coulomb regime.
-    pub regime_coulomb: &'static str,
-    /// Regularized regime.
-    pub regime_regularized: &'static str,
-    /// The shear-lag envelope's bound on Delta's difference from a continuum (L14), a fraction;
-    /// empty (null) where it is not calibrated. Deprecated: the same value as
-    /// `shear_lag_within_fraction`, kept one release.
-    pub shear_lag_within: Option<f64>,
-    /// The same bound under its one name in every output (`lap --format json`'s
-    /// `shear_lag.shear_lag_within_fraction`, `compare lap`'s column): a fraction.
-    pub shear_lag_within_fraction: Option<f64>,
-}
-
-/// One point of the lap joint's `microslip cycle --format csv` (the loop of Delta, both laws).
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
-pub struct LapLoopRow {
-    /// `unloading` or `reloading`.
-    pub branch: &'static str,
-    /// Force through the joint (N).
-    #[serde(rename = "F_N")]
-    pub force: f64,
-    /// Coulomb joint displacement (mm).
-    #[serde(rename = "Delta_coulomb_mm")]
-    pub delta_coulomb: f64,
-    /// Regularized joint displacement (mm).
-    #[serde(rename = "Delta_regularized_mm")]
-    pub delta_regularized: f64,
-}
-
-impl From<&LoopPoint> for LapLoopRow {
-    fn from(p: &LoopPoint) -> Self {
-        LapLoopRow {
-            branch: p.branch.label(),
-            force: p.force,
-            delta_coulomb: p.w_coulomb,
-            delta_regularized: p.w_regularized,
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn header<R: Serialize + Default>() -> String {
-        let mut out = Vec::new();
-        super::super::csv::write_header(&mut out, &R::default()).unwrap();
-        String::from_utf8(out).unwrap().trim_end().to_string()
-    }
+    use crate::report::csv::test_support::header;
 
     /// The headers users' scripts read: a change here breaks them, so it must be deliberate.
     #[test]
     fn headers_are_the_published_contract() {
-        assert_eq!(
-            header::<BeamRow>(),
-            "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized,beam_theory,\
-             vs_continuum_within,vs_continuum_within_fraction"
-        );
-        assert_eq!(
-            header::<LapRow>(),
-            "F_N,Delta_coulomb_mm,Delta_regularized_mm,a_mm,d_mm,a_coulomb_mm,d_coulomb_mm,\
-             regime_coulomb,regime_regularized,shear_lag_within,shear_lag_within_fraction"
-        );
-        assert_eq!(
-            header::<PlateRow>(),
-            "KT_MPa_per_mm,u_coulomb_mm,u_regularized_mm,Xs_mm,Xr_mm,regime_coulomb,regime_regularized,\
-             strip_theory"
-        );
         let cycle_header = |keys| {
             let mut out = Vec::new();
             super::super::csv::write_header(&mut out, &CycleRow::header(keys)).unwrap();

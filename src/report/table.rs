@@ -21,7 +21,7 @@ pub enum TableFormat {
 /// # Examples
 /// ```
 /// use microslip::problems::twin_beams::TwinBeamsProblem;
-/// use microslip::report::rows::BeamRow;
+/// use microslip::problems::twin_beams::report::BeamRow;
 /// use microslip::report::table::{TableFormat, write_table};
 /// use microslip::study::curves::load_samples;
 /// use microslip::study::load::force_sweep;

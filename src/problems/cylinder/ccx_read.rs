@@ -18,10 +18,7 @@
 //! - s(a) at Hertz's a (the mean of both sides; the slip is steep there at a stiff K_T, so the
 //!   comparison reads both at one place; the FE's own a is reported beside it) and s(0).
 
-use crate::fe::results::{
-    ResultsError, complete_block, load_step_time, node_coordinate, parse_dat, parse_node_sets,
-    parse_nodes,
-};
+use crate::fe::results::{DatRead, NOT_FINISHED, ResultsError, load_step_time, node_coordinate};
 
 use super::deck_writer::sets;
 
@@ -160,23 +157,17 @@ pub(crate) fn cylinder_points(
     mu: f64,
     edge: f64,
 ) -> Result<Vec<CylinderFePoint>, ResultsError> {
-    let blocks = parse_dat(dat)?;
-    let nodes = parse_nodes(deck)?;
-    let deck_sets = parse_node_sets(deck);
+    let dat = DatRead::of(deck, dat)?;
+    let nodes = &dat.nodes;
     let slope = normal_slope(deck)?;
     let faces_at = |time: f64, what: &str| -> Result<Faces, ResultsError> {
-        let missing = |why: String| {
-            ResultsError::Missing(format!(
-                "{what}: {why} (did ccx finish, and is this the .dat of this deck?)"
-            ))
-        };
-        let flat = complete_block(&blocks, &deck_sets, sets::FLAT_FACE, time).map_err(missing)?;
-        let cylinder =
-            complete_block(&blocks, &deck_sets, sets::CYLINDER_FACE, time).map_err(missing)?;
+        let missing = |why: String| ResultsError::Missing(format!("{what}: {why} {NOT_FINISHED}"));
+        let flat = dat.block(sets::FLAT_FACE, time).map_err(missing)?;
+        let cylinder = dat.block(sets::CYLINDER_FACE, time).map_err(missing)?;
         let along = |rows: &[(usize, [f64; 3])]| -> Result<Vec<([f64; 3], [f64; 3])>, _> {
             let mut line: Vec<([f64; 3], [f64; 3])> = rows
                 .iter()
-                .map(|(id, u)| node_coordinate(&nodes, *id).map(|c| (c, *u)))
+                .map(|(id, u)| node_coordinate(nodes, *id).map(|c| (c, *u)))
                 .collect::<Result<_, ResultsError>>()?;
             line.sort_by(|a, b| a.0[0].total_cmp(&b.0[0]));
             Ok::<_, ResultsError>(line)

@@ -19,13 +19,12 @@
 //!   of force (`--increment`), a step that crosses F_1 reaching it in its first increment, as the
 //!   beam decks do.
 //!
-//! `compare lap` reads its results (the [`Deck`] of the lap joint, below), and compares them
-//! with the closed forms.
+//! `compare lap` reads its results (the [`Deck`] of the lap joint, below; its reader is
+//! `fe_points.rs`) and compares them with the closed forms (`compare.rs`).
 
 use std::fmt::Write as _;
 
-use crate::fe::compare::LapCompared;
-use crate::fe::continuum_verdict::{ContinuumJudged, judged};
+use crate::fe::continuum_verdict::ContinuumJudged;
 use crate::fe::deck::{
     DeckMesh, DeckTooLarge, Geometry, LoadPath, MAX_DECK_ELEMENTS, load_steps, normal_stiffness,
     real, start_step, write_cload, write_contact_pair, write_elements, write_interaction,
@@ -34,22 +33,16 @@ use crate::fe::deck::{
 use crate::fe::face::{Deck, DeckError, DeckRequest};
 use crate::fe::header::{DeckHeader, StickSlope};
 use crate::fe::mesh::{Block, Face, uniform};
-use crate::fe::results::{
-    CcxRun, DatBlock, LapFeInterface, LapFePoint, ResultsError, complete_block, facing_slip,
-    lap_points_from_csv, load_step_label, load_step_time, parse_dat, parse_node_sets, parse_nodes,
-    thickness_mean,
-};
-use crate::fe::verdict::{InterfaceMesh, MeshDifference};
+use crate::fe::results::{CcxRun, ResultsError};
+use crate::fe::verdict::InterfaceMesh;
 use crate::kernel::format::number;
 use crate::kernel::params::{Compact, Domain, ParamError, Unit};
-use crate::kernel::regime::{Law, Regime};
-use crate::kernel::validity::Validity;
 use crate::problems::Problem;
-use crate::report::compare::lap::LapCompareReport;
-use crate::report::compare::{CompareFace, LapCompareRow};
 
-use super::closed_form::{JointForce, LapJoint, zones_regime};
+use super::closed_form::{JointForce, LapJoint};
+use super::compare::LapCompared;
 use super::continuum::{LapBreaks, lap_breaks, lap_counts};
+use super::fe_points::LapFePoint;
 use super::problem::{LapInputs, LapJointProblem, LapModel};
 
 /// The Poisson ratio the deck gives both materials: the shear-lag closed forms do not use one,
@@ -341,188 +334,6 @@ fn too_large_advice(mesh: DeckMesh, decay: f64, length: f64) -> String {
     )
 }
 
-/// The lap-joint points of a lap deck's run: one per load step that CalculiX finished, each
-/// measured from the end of the clamping step (step 1, time 1), as the deck's header says.
-///
-/// # Errors
-/// A malformed `.dat` line, no result at the end of the clamping step or of the deck's first
-/// load step (a run that failed before it, or the `.dat` of another deck).
-fn lap_points(run: &CcxRun, inputs: &LapInputs) -> Result<Vec<LapFePoint>, ResultsError> {
-    let structure = inputs.structure;
-    let blocks = parse_dat(run.dat)?;
-    let nodes = parse_nodes(run.deck)?;
-    let deck_sets = parse_node_sets(run.deck);
-    let state_at = |time: f64, what: &dyn Fn() -> String| -> Result<LapState, String> {
-        let [inner, cover, inner_face, cover_face] = [
-            sets::LAP_INNER_END,
-            sets::LAP_COVER_END,
-            sets::LAP_INNER_FACE,
-            sets::LAP_COVER_FACE,
-        ]
-        .map(|set| {
-            complete_block(&blocks, &deck_sets, set, time)
-                .map_err(|why| format!("{}: {why}", what()))
-        });
-        let mean = |block: &DatBlock| {
-            thickness_mean(&nodes, block).map_err(|e| format!("{}: {e}", what()))
-        };
-        let (xs, slips) = facing_slip(&nodes, inner_face?, cover_face?)
-            .map_err(|e| format!("{}: {e}", what()))?;
-        Ok(LapState {
-            joint_displacement: mean(inner?)? - mean(cover?)?,
-            xs,
-            slips,
-        })
-    };
-    let clamped = state_at(1.0, &|| {
-        "at the end of the clamping step (time 1)".to_string()
-    })
-    .map_err(|why| {
-        ResultsError::Missing(format!(
-            "{why} (did ccx finish, and is this the .dat of this deck?)"
-        ))
-    })?;
-    let saturation = structure.friction * structure.pressure / structure.tangential_stiffness;
-    let loads = &run.header.loads;
-    let mut points = Vec::with_capacity(loads.len());
-    for n in 0..loads.len() {
-        let (force, time) = (loads[n], load_step_time(n));
-        let step = || load_step_label(n, loads);
-        let state = state_at(time, &step).map_err(|why| {
-            ResultsError::Missing(format!(
-                "{why}; the .dat holds {} of the deck's {} load steps (did ccx finish, and is \
-                     this the .dat of this deck?)",
-                points.len(),
-                loads.len()
-            ))
-        })?;
-        let slips: Vec<f64> = state
-            .slips
-            .iter()
-            .zip(&clamped.slips)
-            .map(|(s, s0)| s - s0)
-            .collect();
-        points.push(LapFePoint {
-            force,
-            joint_displacement: state.joint_displacement - clamped.joint_displacement,
-            interface: Some(lap_interface_state(&state.xs, &slips, saturation)),
-        });
-    }
-    Ok(points)
-}
-
-/// What a lap run's `.dat` gives at one time: Delta (not yet zeroed) and the slip profile.
-struct LapState {
-    joint_displacement: f64,
-    xs: Vec<f64>,
-    slips: Vec<f64>,
-}
-
-/// The sliding zones of a lap joint's slip profile: where K_T |s| >= mu P (|s| >= `saturation`),
-/// contiguous from x = 0 and from x = L, each end interpolated linearly between the last sliding
-/// node and the first that does not.
-fn lap_interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> LapFeInterface {
-    let n = xs.len();
-    let sliding = |i: usize| slips[i].abs() >= saturation;
-    let crossing = |inside: usize, outside: usize| {
-        let (s0, s1) = (slips[inside].abs(), slips[outside].abs());
-        xs[inside] + (xs[outside] - xs[inside]) * (s0 - saturation) / (s0 - s1)
-    };
-    let (start, end) = (
-        xs.first().copied().unwrap_or(0.0),
-        xs.last().copied().unwrap_or(0.0),
-    );
-    let length = end - start;
-    let mut from_start = 0.0;
-    if n > 0 && sliding(0) {
-        let mut i = 0;
-        while i + 1 < n && sliding(i + 1) {
-            i += 1;
-        }
-        from_start = if i + 1 == n {
-            length
-        } else {
-            crossing(i, i + 1) - start
-        };
-    }
-    let mut from_end = 0.0;
-    if n > 0 && sliding(n - 1) {
-        let mut i = n - 1;
-        while i > 0 && sliding(i - 1) {
-            i -= 1;
-        }
-        from_end = if i == 0 {
-            length
-        } else {
-            end - crossing(i, i - 1)
-        };
-    }
-    let (a, d) = if from_start + from_end >= length {
-        (from_start.min(length), (length - from_start).max(0.0))
-    } else {
-        (from_start, from_end)
-    };
-    LapFeInterface {
-        slide_from_start: a,
-        slide_from_end: d,
-        regime: if n == 0 {
-            Regime::MICROSLIP
-        } else {
-            zones_regime(Law::Regularized, a, d, length)
-        },
-    }
-}
-
-/// Compares FE points of the lap joint with the closed forms of `joint` (the K_T the deck gave
-/// the FE code). `mesh`: the FE mesh along the interface, to count the zone differences in
-/// elements.
-///
-/// # Errors
-/// A point's force beyond the joint's gross-slip force (a CSV of another joint, or of a joint
-/// that slid through): the closed forms have no static state there.
-pub fn compare_lap(
-    joint: &LapJoint,
-    points: &[LapFePoint],
-    mesh: Option<&InterfaceMesh>,
-) -> Result<Vec<LapCompared>, ParamError> {
-    let length = joint.params().length;
-    points
-        .iter()
-        .map(|&fe| {
-            let force = joint.force(fe.force)?;
-            let state = joint.regularized(force);
-            let zones = (state.slide_at_inner_end(), state.slide_at_cover_ends());
-            let validity = joint.validity_at(force, state.joint_displacement());
-            let theory_validity = validity.validity;
-            let zones_mesh = mesh.zip(fe.interface).map(|(mesh, i)| {
-                [
-                    MeshDifference::on(mesh, i.slide_from_start, zones.0),
-                    // d counts from x = L: its elements are counted between the positions
-                    // L - d, its difference is d's own.
-                    MeshDifference {
-                        difference: i.slide_from_end - zones.1,
-                        ..MeshDifference::on(mesh, length - i.slide_from_end, length - zones.1)
-                    },
-                ]
-            });
-            Ok(LapCompared {
-                fe,
-                closed: state.joint_displacement(),
-                coulomb: joint.coulomb(force).joint_displacement(),
-                regime: state.regime(),
-                zones,
-                implied_stiffness: (theory_validity == Validity::Holds)
-                    .then(|| joint.stiffness_for_joint_displacement(force, fe.joint_displacement))
-                    .flatten(),
-                theory_validity,
-                theory_within: validity.expected_error,
-                zones_mesh,
-                continuum: None,
-            })
-        })
-        .collect()
-}
-
 impl Deck for LapJointProblem {
     const SOURCE: &'static str = " (docs/theory.md section 9)";
     const INTERFACE_SET: &'static str = sets::LAP_INNER_FACE;
@@ -557,11 +368,11 @@ impl Deck for LapJointProblem {
     }
 
     fn ccx_points(run: &CcxRun, params: &LapInputs) -> Result<Vec<LapFePoint>, ResultsError> {
-        lap_points(run, params)
+        super::fe_points::lap_points(run, params)
     }
 
     fn csv_points(text: &str) -> Result<Vec<LapFePoint>, ResultsError> {
-        lap_points_from_csv(text)
+        super::fe_points::lap_points_from_csv(text)
     }
 
     const BENCH_PRESET: Option<(&'static str, &'static str)> = Some((
@@ -575,15 +386,7 @@ impl Deck for LapJointProblem {
         points: &[LapFePoint],
         mesh: Option<&InterfaceMesh>,
     ) -> Result<Vec<LapCompared>, ParamError> {
-        let mut rows = compare_lap(&model.joint, points, mesh)?;
-        for row in rows.iter_mut().filter(|r| r.fe.force > 0.0) {
-            let at = LapModel {
-                joint: model.joint,
-                force: model.joint.force(row.fe.force)?,
-            };
-            row.continuum = judged::<LapJointProblem>(&at, row.fe.joint_displacement);
-        }
-        Ok(rows)
+        super::compare::compare(model, points, mesh)
     }
 
     fn without_envelope(compared: &mut Result<Vec<LapCompared>, ParamError>) {
@@ -617,40 +420,6 @@ impl Deck for LapJointProblem {
 impl ContinuumJudged for LapJointProblem {
     const CONTINUUM_TOLERANCE: f64 = 0.004;
     const RESPONSE: &'static str = "Delta";
-}
-
-impl CompareFace for LapJointProblem {
-    const ONE_RUN: Option<&'static str> = None;
-    type Checked = Vec<LapCompared>;
-    type CompareRow = LapCompareRow;
-    type CompareReport = LapCompareReport;
-
-    fn checked(
-        compared: Result<Vec<LapCompared>, ParamError>,
-    ) -> Result<Vec<LapCompared>, ParamError> {
-        compared
-    }
-
-    fn compare_report(
-        source: &str,
-        first: Vec<LapCompared>,
-        more: Vec<Vec<LapCompared>>,
-    ) -> (LapCompareReport, Vec<LapCompareRow>) {
-        let rows: Vec<LapCompared> = first
-            .into_iter()
-            .chain(more.into_iter().flatten())
-            .collect();
-        let report = LapCompareReport::new(source, &rows);
-        (report, rows.iter().map(LapCompareRow::from).collect())
-    }
-
-    fn compare_text(report: &LapCompareReport) -> String {
-        report.text()
-    }
-
-    fn summary_mut(report: &mut LapCompareReport) -> &mut crate::report::compare::verdict::Summary {
-        &mut report.verdict
-    }
 }
 
 /// The forces of a lap deck's steps: `loads` (increasing, each at most F_gross), or one in each
@@ -696,7 +465,6 @@ fn deck_loads(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kernel::regime::Zone;
     use crate::problems::lap::closed_form::LapParams;
 
     fn aluminium() -> LapJoint {
@@ -795,34 +563,5 @@ mod tests {
         // Interface faces along the overlap, both sides: about twice as many.
         let ratio = count(&fine) as f64 / count(&coarse) as f64;
         assert!((1.8..=2.2).contains(&ratio), "{ratio}");
-    }
-
-    #[test]
-    fn lap_zones_are_read_from_both_ends() {
-        let xs = [0.0, 1.0, 2.0, 3.0, 4.0];
-        // Sliding from x = 0 to between nodes 1 and 2 (interpolated at |s| = 1), and at x = L
-        // over the last node only, to between nodes 3 and 4; the signs of the slip do not matter.
-        let state = lap_interface_state(&xs, &[-3.0, -2.0, 0.5, 0.0, 2.0], 1.0);
-        assert!((state.slide_from_start - (1.0 + 1.0 / 1.5)).abs() < 1e-12);
-        assert!((state.slide_from_end - 0.5).abs() < 1e-12);
-        assert_eq!(
-            state.regime,
-            Regime::from_zones(&[Zone::Macroslip, Zone::Microslip, Zone::Macroslip])
-        );
-        let elastic = lap_interface_state(&xs, &[0.9, 0.5, 0.1, 0.5, 0.9], 1.0);
-        assert_eq!(
-            (elastic.slide_from_start, elastic.slide_from_end),
-            (0.0, 0.0)
-        );
-        assert_eq!(elastic.regime, Regime::MICROSLIP);
-        let one_end = lap_interface_state(&xs, &[0.9, 0.5, 0.1, 0.5, 1.5], 1.0);
-        assert_eq!(one_end.regime, Regime::MICROSLIP_MACROSLIP);
-        // Sliding everywhere: the whole overlap, counted once.
-        let through = lap_interface_state(&xs, &[2.0; 5], 1.0);
-        assert_eq!(
-            (through.slide_from_start, through.slide_from_end),
-            (4.0, 0.0)
-        );
-        assert_eq!(through.regime, Regime::MACROSLIP);
     }
 }

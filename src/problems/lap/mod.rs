@@ -8,7 +8,9 @@ mod chart;
 mod pane;
 
 pub use chart::LapChart;
+pub mod compare;
 pub mod deck;
+pub mod fe_points;
 pub mod report;
 
 /// Its bundled presets, (name, TOML text), embedded in the binary: `preset::bundled` lists every

@@ -5,20 +5,19 @@
 use super::LapJointProblem;
 use super::LapValidity;
 use super::closed_form::{FirstSlip, JointForce, LapJoint};
+use super::compare::{LapCompared, compare_lap, lap_summary as closing_verdict};
 use super::cycle::{LapCycle, MasingCycle};
-use super::deck::compare_lap;
+use super::fe_points::LapFePoint;
 use crate::chart::panes::{
     ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SATURATION_MEANING, SummaryLine,
     load_regimes, load_tolerance_lines, ratio_text,
 };
-use crate::fe::compare::LapCompared;
 use crate::fe::load::Loaded;
-use crate::fe::results::LapFePoint;
 use crate::kernel::format::{number, number_with};
 use crate::kernel::regime::Law;
 use crate::kernel::validity::Validity;
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
-use crate::report::compare::{percent_range, verdict};
+use crate::report::compare::percent_range;
 use crate::study::curves::lap_point;
 
 impl PaneFace for LapJointProblem {
@@ -211,7 +210,7 @@ fn lap_summary(code: &str, rows: &[LapCompared]) -> String {
     format!(
         "{code}, {} points: {}; Delta {} vs shear lag",
         rows.len(),
-        verdict::lap_summary(rows).short,
+        closing_verdict(rows).short,
         percent_range(rows.iter().map(LapCompared::difference))
     )
 }

@@ -16,9 +16,8 @@ use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace, point_continuum};
 use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleKeys, CycleWords};
 use crate::report::point::{InputsReport, regime_label, validity_label};
-use crate::report::rows::{LapLoopRow, LapRow};
 use crate::report::{number, number_with, sanitize};
-use crate::study::curves::{Answer, lap_point};
+use crate::study::curves::{Answer, LoopPoint, lap_point};
 
 use super::LapRangesLeft;
 use super::closed_form::{JointForce, LapJoint};
@@ -130,6 +129,70 @@ impl ReportFace for LapJointProblem {
             ],
             a.regime,
         )
+    }
+}
+
+/// One row of `microslip sweep lap`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct LapRow {
+    /// Force through the joint (N).
+    #[serde(rename = "F_N")]
+    pub force: f64,
+    /// Coulomb joint displacement (mm).
+    #[serde(rename = "Delta_coulomb_mm")]
+    pub delta_coulomb: f64,
+    /// Regularized joint displacement (mm).
+    #[serde(rename = "Delta_regularized_mm")]
+    pub delta_regularized: f64,
+    /// Regularized sliding zone from x = 0 (mm).
+    #[serde(rename = "a_mm")]
+    pub slide_at_inner_end: f64,
+    /// Regularized sliding zone from x = L (mm).
+    #[serde(rename = "d_mm")]
+    pub slide_at_cover_ends: f64,
+    /// Coulomb sliding zone from x = 0 (mm).
+    #[serde(rename = "a_coulomb_mm")]
+    pub slide_at_inner_end_coulomb: f64,
+    /// Coulomb sliding zone from x = L (mm).
+    #[serde(rename = "d_coulomb_mm")]
+    pub slide_at_cover_ends_coulomb: f64,
+    /// Coulomb regime.
+    pub regime_coulomb: &'static str,
+    /// Regularized regime.
+    pub regime_regularized: &'static str,
+    /// The shear-lag envelope's bound on Delta's difference from a continuum (L14), a fraction;
+    /// empty (null) where it is not calibrated. Deprecated: the same value as
+    /// `shear_lag_within_fraction`, kept one release.
+    pub shear_lag_within: Option<f64>,
+    /// The same bound under its one name in every output (`lap --format json`'s
+    /// `shear_lag.shear_lag_within_fraction`, `compare lap`'s column): a fraction.
+    pub shear_lag_within_fraction: Option<f64>,
+}
+
+/// One point of the lap joint's `microslip cycle --format csv` (the loop of Delta, both laws).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct LapLoopRow {
+    /// `unloading` or `reloading`.
+    pub branch: &'static str,
+    /// Force through the joint (N).
+    #[serde(rename = "F_N")]
+    pub force: f64,
+    /// Coulomb joint displacement (mm).
+    #[serde(rename = "Delta_coulomb_mm")]
+    pub delta_coulomb: f64,
+    /// Regularized joint displacement (mm).
+    #[serde(rename = "Delta_regularized_mm")]
+    pub delta_regularized: f64,
+}
+
+impl From<&LoopPoint> for LapLoopRow {
+    fn from(p: &LoopPoint) -> Self {
+        LapLoopRow {
+            branch: p.branch.label(),
+            force: p.force,
+            delta_coulomb: p.w_coulomb,
+            delta_regularized: p.w_regularized,
+        }
     }
 }
 
@@ -617,5 +680,25 @@ impl LapReport {
             }
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::csv::test_support::header;
+
+    /// The header users' scripts read: a change here breaks them, so it must be deliberate.
+    #[test]
+    fn the_sweep_header_is_the_published_contract() {
+        assert_eq!(
+            header::<LapRow>(),
+            "F_N,Delta_coulomb_mm,Delta_regularized_mm,a_mm,d_mm,a_coulomb_mm,d_coulomb_mm,\
+             regime_coulomb,regime_regularized,shear_lag_within,shear_lag_within_fraction"
+        );
+        assert_eq!(
+            header::<LapLoopRow>(),
+            "branch,F_N,Delta_coulomb_mm,Delta_regularized_mm"
+        );
     }
 }

@@ -1,11 +1,10 @@
 //! The squeezed plate's FE deck ([`Deck`]): the CalculiX deck of a plate pressed on a rigid
-//! plane, the header lines it expects, the point a run gives and its comparison with the closed
-//! forms.
+//! plane and the header lines it expects; the point a run gives is read in `fe_points.rs` and
+//! compared with the closed forms in `compare.rs`.
 
 use std::fmt::Write as _;
 
-use crate::fe::compare::{PlateCompared, on_mesh};
-use crate::fe::continuum_verdict::{ContinuumJudged, judged};
+use crate::fe::continuum_verdict::ContinuumJudged;
 use crate::fe::deck::{
     DeckMesh, DeckTooLarge, Geometry, MAX_DECK_ELEMENTS, normal_stiffness, real, start_step,
     write_contact_pair, write_elements, write_interaction, write_material, write_nodes, write_nset,
@@ -14,20 +13,16 @@ use crate::fe::deck::{
 use crate::fe::face::{Deck, DeckError, DeckRequest};
 use crate::fe::header::{DeckHeader, StickSlope};
 use crate::fe::mesh::{Block, Face, graded_toward_end, graded_toward_end_count, uniform};
-use crate::fe::results::{
-    CcxRun, PlateFePoint, ResultsError, column_of, complete_block, interface_state, parse_dat,
-    parse_node_sets, parse_nodes, plate_points_from_csv, relative_slip, simpson_mean,
-};
+use crate::fe::results::{CcxRun, ResultsError};
 use crate::fe::verdict::InterfaceMesh;
 use crate::kernel::format::number;
-use crate::kernel::params::{Compact, ParamError};
-use crate::kernel::validity::Validity;
+use crate::kernel::params::Compact;
 use crate::problems::Problem;
-use crate::report::compare::plate::PlateCompareReport;
-use crate::report::compare::{CompareFace, PlateCompareRow};
 
 use super::closed_form::SqueezedPlate;
-use super::params::{PlateParam, PlateParams};
+use super::compare::PlateCompared;
+use super::fe_points::PlateFePoint;
+use super::params::PlateParams;
 use super::problem::SqueezedPlateProblem;
 
 /// Names of the node sets the deck prints to the .dat file, which the reader looks up.
@@ -218,71 +213,6 @@ pub fn plate_deck(
     Ok(deck)
 }
 
-/// The plate point of a plate deck's run.
-///
-/// # Errors
-/// A malformed `.dat` line, or no result at the end of the step.
-fn plate_point(run: &CcxRun, plate: &PlateParams) -> Result<PlateFePoint, ResultsError> {
-    let blocks = parse_dat(run.dat)?;
-    let nodes = parse_nodes(run.deck)?;
-    let deck_sets = parse_node_sets(run.deck);
-    let [end, face_nodes] = [sets::PLATE_END, sets::PLATE_FACE].map(|set| {
-        complete_block(&blocks, &deck_sets, set, 1.0).map_err(|why| {
-            ResultsError::Missing(format!(
-                "at the end of the step (time 1): {why} (did ccx finish, and is this the .dat \
-                 of this deck?)"
-            ))
-        })
-    });
-    let (end, face_nodes) = (end?, face_nodes?);
-    let column = column_of(&nodes, end)?;
-    let mean = simpson_mean(&column);
-    let face = column[0].1;
-    let mid = column[column.len() / 2].1;
-    let (xs, slips) = relative_slip(&nodes, face_nodes, None)?;
-    let saturation = plate.friction * plate.pressure / plate.tangential_stiffness;
-    Ok(PlateFePoint {
-        stiffness: plate.tangential_stiffness,
-        end_displacement: mean,
-        through_thickness: Some([face, mid]),
-        interface: Some(interface_state(&xs, &slips, saturation)),
-    })
-}
-
-/// Compares FE points of the plate (each at its own K_T) with the closed forms of `plate` at that
-/// K_T. Points whose K_T is outside the accepted domain cannot occur: the readers refuse them.
-/// `mesh`: the FE mesh along the contact face, to count the X_r difference in elements.
-pub fn compare_plate(
-    plate: &SqueezedPlate,
-    points: &[PlateFePoint],
-    mesh: Option<&InterfaceMesh>,
-) -> Vec<PlateCompared> {
-    points
-        .iter()
-        .map(|&fe| {
-            let at = plate.with_clamped(PlateParam::Stiffness, fe.stiffness);
-            let state = at.regularized();
-            let validity = at.validity();
-            let strip_validity = validity.validity;
-            let micro_zone_end = state.micro_zone_end();
-            PlateCompared {
-                fe,
-                closed: state.end_displacement(),
-                coulomb: at.coulomb().end_displacement(),
-                regime: state.regime(),
-                micro_zone_end,
-                implied_stiffness: (strip_validity == Validity::Holds)
-                    .then(|| at.stiffness_for_end_displacement(fe.end_displacement))
-                    .flatten(),
-                strip_validity,
-                strip_within: validity.expected_error(),
-                micro_zone_end_mesh: on_mesh(mesh, fe.interface, micro_zone_end),
-                continuum: None,
-            }
-        })
-        .collect()
-}
-
 impl Deck for SqueezedPlateProblem {
     const SOURCE: &'static str = " (Ligier & Bonhote 2014)";
     const INTERFACE_SET: &'static str = sets::PLATE_FACE;
@@ -307,11 +237,11 @@ impl Deck for SqueezedPlateProblem {
     }
 
     fn ccx_points(run: &CcxRun, params: &PlateParams) -> Result<Vec<PlateFePoint>, ResultsError> {
-        plate_point(run, params).map(|p| vec![p])
+        super::fe_points::plate_point(run, params).map(|p| vec![p])
     }
 
     fn csv_points(text: &str) -> Result<Vec<PlateFePoint>, ResultsError> {
-        plate_points_from_csv(text)
+        super::fe_points::plate_points_from_csv(text)
     }
 
     const BENCH_PRESET: Option<(&'static str, &'static str)> = Some((
@@ -326,12 +256,7 @@ impl Deck for SqueezedPlateProblem {
         points: &[PlateFePoint],
         mesh: Option<&InterfaceMesh>,
     ) -> Vec<PlateCompared> {
-        let mut rows = compare_plate(plate, points, mesh);
-        for row in &mut rows {
-            let at = plate.with_clamped(PlateParam::Stiffness, row.fe.stiffness);
-            row.continuum = judged::<SqueezedPlateProblem>(&at, row.fe.end_displacement);
-        }
-        rows
+        super::compare::compare(plate, points, mesh)
     }
 
     fn without_envelope(compared: &mut Vec<PlateCompared>) {
@@ -359,40 +284,6 @@ impl Deck for SqueezedPlateProblem {
 impl ContinuumJudged for SqueezedPlateProblem {
     const CONTINUUM_TOLERANCE: f64 = 0.003;
     const RESPONSE: &'static str = "u(L)";
-}
-
-impl CompareFace for SqueezedPlateProblem {
-    const ONE_RUN: Option<&'static str> = None;
-    type Checked = Vec<PlateCompared>;
-    type CompareRow = PlateCompareRow;
-    type CompareReport = PlateCompareReport;
-
-    fn checked(compared: Vec<PlateCompared>) -> Result<Vec<PlateCompared>, ParamError> {
-        Ok(compared)
-    }
-
-    fn compare_report(
-        source: &str,
-        first: Vec<PlateCompared>,
-        more: Vec<Vec<PlateCompared>>,
-    ) -> (PlateCompareReport, Vec<PlateCompareRow>) {
-        let rows: Vec<PlateCompared> = first
-            .into_iter()
-            .chain(more.into_iter().flatten())
-            .collect();
-        let report = PlateCompareReport::new(source, &rows);
-        (report, rows.iter().map(PlateCompareRow::from).collect())
-    }
-
-    fn compare_text(report: &PlateCompareReport) -> String {
-        report.text()
-    }
-
-    fn summary_mut(
-        report: &mut PlateCompareReport,
-    ) -> &mut crate::report::compare::verdict::Summary {
-        &mut report.verdict
-    }
 }
 
 #[cfg(test)]

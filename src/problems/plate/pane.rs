@@ -2,7 +2,8 @@
 //! regime pane's lines with its own 2-D continuum solve (u(L) and the edge pressure, on a
 //! worker) and the strip theory's validity, and the K_T table's row.
 
-use super::deck::compare_plate;
+use super::compare::{PlateCompared, compare_plate, plate_summary as closing_verdict};
+use super::fe_points::PlateFePoint;
 use super::params::PlateParams;
 use super::validity::PlateValidity;
 use super::{ContinuumMesh, SqueezedPlateProblem, solve_plate_continuum};
@@ -11,13 +12,11 @@ use crate::chart::panes::{
     ContinuumState, ContinuumSummary, PaneContinuum, PaneFace, RATIO_MEANING, SATURATION_MEANING,
     SummaryLine, TABLE_TOLERANCE, ratio_text, shown,
 };
-use crate::fe::compare::PlateCompared;
 use crate::fe::load::Loaded;
-use crate::fe::results::PlateFePoint;
 use crate::kernel::format::{number, number_with};
 use crate::kernel::validity::Validity;
 use crate::problems::stiffness::mm_to_um;
-use crate::report::compare::{percent, percent_or_na, verdict};
+use crate::report::compare::{percent, percent_or_na};
 use crate::study::curves::plate_point;
 use crate::study::tolerance::state_stiffness_for_tolerance;
 
@@ -236,7 +235,7 @@ fn plate_summary(code: &str, row: &PlateCompared) -> String {
     format!(
         "{code} at K_T = {} MPa/mm: {}; u(L) {} mm, strip theory {} mm ({}{through})",
         number(row.fe.stiffness),
-        verdict::plate_summary(std::slice::from_ref(row)).short,
+        closing_verdict(std::slice::from_ref(row)).short,
         number(row.fe.end_displacement),
         number(row.closed),
         percent_or_na(row.difference())

@@ -4,7 +4,6 @@
 //! theory's envelope and, when solved, the plane-strain continuum.
 
 use super::point::PlatePoint;
-use crate::report::rows::PlateRow;
 use std::fmt::Write as _;
 
 use serde::Serialize;
@@ -652,6 +651,31 @@ impl PlateReport {
 }
 
 /// A sweep row of the plate (`sweep plate`), from one point of it.
+/// One row of `microslip sweep plate`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct PlateRow {
+    /// Tangential stiffness (MPa/mm).
+    #[serde(rename = "KT_MPa_per_mm")]
+    pub kt: f64,
+    /// Coulomb end displacement (mm).
+    pub u_coulomb_mm: f64,
+    /// Regularized end displacement (mm).
+    pub u_regularized_mm: f64,
+    /// End of the Coulomb stick zone (mm).
+    #[serde(rename = "Xs_mm")]
+    pub stick_end: f64,
+    /// End of the microslip zone (mm).
+    #[serde(rename = "Xr_mm")]
+    pub micro_end: f64,
+    /// Coulomb regime.
+    pub regime_coulomb: &'static str,
+    /// Regularized regime.
+    pub regime_regularized: &'static str,
+    /// The strip theory against a plane-strain continuum (V1): holds (within 2 %), approximate
+    /// (10 %) or outside. Added after the original columns, which scripts read by name.
+    pub strip_theory: &'static str,
+}
+
 impl From<&PlatePoint> for PlateRow {
     fn from(p: &PlatePoint) -> Self {
         PlateRow {
@@ -670,6 +694,17 @@ impl From<&PlatePoint> for PlateRow {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::report::csv::test_support::header;
+
+    /// The header users' scripts read: a change here breaks them, so it must be deliberate.
+    #[test]
+    fn the_sweep_header_is_the_published_contract() {
+        assert_eq!(
+            header::<PlateRow>(),
+            "KT_MPa_per_mm,u_coulomb_mm,u_regularized_mm,Xs_mm,Xr_mm,regime_coulomb,regime_regularized,\
+             strip_theory"
+        );
+    }
 
     #[test]
     fn plate_report_shows_both_zone_ends_and_names_the_pressure_model() {

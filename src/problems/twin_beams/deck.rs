@@ -1,11 +1,10 @@
-//! The twin beams' FE deck ([`Deck`]): the CalculiX deck of two clamped beams pressed together,
-//! the header lines it expects, the points a run gives and their comparison with the closed
-//! forms.
+//! The twin beams' FE deck ([`Deck`]): the CalculiX deck of two clamped beams pressed together and
+//! the header lines it expects; the points a run gives are read in `fe_points.rs` and compared
+//! with the closed forms in `compare.rs`.
 
 use std::fmt::Write as _;
 
-use crate::fe::compare::{BeamCompared, BeamComparison, on_mesh};
-use crate::fe::continuum_verdict::{ContinuumJudged, judged};
+use crate::fe::continuum_verdict::ContinuumJudged;
 use crate::fe::deck::{
     DeckMesh, DeckTooLarge, Geometry, LoadPath, MAX_DECK_ELEMENTS, load_steps, normal_stiffness,
     real, start_step, write_cload, write_contact_pair, write_elements, write_interaction,
@@ -15,19 +14,15 @@ use crate::fe::face::{Deck, DeckError, DeckRequest};
 use crate::fe::header::{DeckHeader, StickSlope};
 use crate::fe::kinematics::Kinematics;
 use crate::fe::mesh::{Block, Face, graded_toward_end, graded_toward_end_count, uniform};
-use crate::fe::results::{
-    BeamFePoint, CcxRun, ResultsError, beam_points_from_csv, complete_block, interface_state,
-    load_step_label, load_step_time, mean, parse_dat, parse_node_sets, parse_nodes, relative_slip,
-};
+use crate::fe::results::{CcxRun, ResultsError};
 use crate::fe::verdict::InterfaceMesh;
-use crate::fit::{self, Measurement};
 use crate::kernel::format::number;
-use crate::kernel::params::{Compact, Domain, ParamError, Unit};
+use crate::kernel::params::{Compact, Domain, Unit};
 use crate::problems::Problem;
-use crate::report::compare::beam::BeamCompareReport;
-use crate::report::compare::{BeamCompareRow, CompareFace};
 
 use super::closed_form::{TipForce, TwinBeams};
+use super::compare::BeamComparison;
+use super::fe_points::BeamFePoint;
 use super::params::{BeamTheory, TwinBeamsParams};
 use super::problem::{BeamsInputs, BeamsModel, TwinBeamsProblem};
 
@@ -285,101 +280,6 @@ pub fn beam_deck_on_path(
     Ok(deck)
 }
 
-/// The beam points of a beam deck's run: one per load step that CalculiX finished.
-///
-/// # Errors
-/// A malformed `.dat` line, or no result for the deck's first load step (a run that failed
-/// before it, or the `.dat` of another deck).
-fn beam_points(run: &CcxRun, inputs: &BeamsInputs) -> Result<Vec<BeamFePoint>, ResultsError> {
-    let structure = inputs.structure;
-    let blocks = parse_dat(run.dat)?;
-    let nodes = parse_nodes(run.deck)?;
-    let deck_sets = parse_node_sets(run.deck);
-    let saturation = structure.friction * structure.pressure / structure.tangential_stiffness;
-    let loads = &run.header.loads;
-    let mut points = Vec::with_capacity(loads.len());
-    for n in 0..loads.len() {
-        let (force, time) = (loads[n], load_step_time(n));
-        let step = || load_step_label(n, loads);
-        let [tip, lower, upper] = [sets::BEAM_TIP, sets::BEAM_LOWER_FACE, sets::BEAM_UPPER_FACE]
-            .map(|set| {
-                complete_block(&blocks, &deck_sets, set, time).map_err(|why| {
-                    if points.is_empty() || why.starts_with("no ") {
-                        ResultsError::Missing(format!(
-                            "{}: {why}; the .dat holds {} of the deck's {} load steps (did \
-                             ccx finish, and is this the .dat of this deck?)",
-                            step(),
-                            points.len(),
-                            loads.len()
-                        ))
-                    } else {
-                        ResultsError::Missing(format!("{}: {why}", step()))
-                    }
-                })
-            });
-        let (tip, lower, upper) = (tip?, lower?, upper?);
-        let deflection = mean(tip.rows.iter().map(|(_, u)| u[1]));
-        let (xs, slips) = relative_slip(&nodes, lower, Some(upper))?;
-        points.push(BeamFePoint {
-            force,
-            deflection,
-            interface: Some(interface_state(&xs, &slips, saturation)),
-        });
-    }
-    Ok(points)
-}
-
-/// Compares FE points of the beams with the closed forms of `beams` (the K_T the deck gave the FE
-/// code; its nu for the shear deflection), under both beam theories whichever `beams` has. `mesh`:
-/// the FE mesh along the interface, to count the X difference in elements.
-pub fn compare_beams(
-    beams: &TwinBeams,
-    points: &[BeamFePoint],
-    mesh: Option<&InterfaceMesh>,
-) -> BeamComparison {
-    let euler_bernoulli = beams.with_theory(BeamTheory::EulerBernoulli);
-    let timoshenko = beams.with_theory(BeamTheory::Timoshenko);
-    let rows: Vec<BeamCompared> = points
-        .iter()
-        .map(|&fe| {
-            let force = TipForce::clamped(fe.force);
-            let state = euler_bernoulli.regularized(force);
-            let euler = state.tip_deflection();
-            let macroslip_start = state.micro_zone_end();
-            BeamCompared {
-                fe,
-                euler,
-                shear_corrected: euler + beams.shear_deflection(force),
-                regime: state.regime(),
-                macroslip_start,
-                shear_corrected_within: timoshenko.validity(force).expected_error,
-                macroslip_start_mesh: on_mesh(mesh, fe.interface, macroslip_start),
-                continuum: None,
-            }
-        })
-        .collect();
-    let bending_only: Vec<Measurement> = rows
-        .iter()
-        .map(|r| Measurement {
-            force: r.fe.force,
-            response: r.fe.deflection - (r.shear_corrected - r.euler),
-        })
-        .collect();
-    let implied = fit::fit_curve::<TwinBeamsProblem>(
-        &euler_bernoulli,
-        &bending_only,
-        (None, None),
-        fit::Weights::Absolute,
-        &mut |_| {},
-    );
-    BeamComparison {
-        rows,
-        poisson: beams.params().poisson,
-        implied,
-        stiffness: beams.params().tangential_stiffness,
-    }
-}
-
 /// The end of a beam load step: its node sets printed, its displacements and contact saved.
 fn end_beam_step(deck: &mut String) {
     for set in [sets::BEAM_TIP, sets::BEAM_LOWER_FACE, sets::BEAM_UPPER_FACE] {
@@ -479,11 +379,11 @@ impl Deck for TwinBeamsProblem {
     }
 
     fn ccx_points(run: &CcxRun, params: &BeamsInputs) -> Result<Vec<BeamFePoint>, ResultsError> {
-        beam_points(run, params)
+        super::fe_points::beam_points(run, params)
     }
 
     fn csv_points(text: &str) -> Result<Vec<BeamFePoint>, ResultsError> {
-        beam_points_from_csv(text)
+        super::fe_points::beam_points_from_csv(text)
     }
 
     fn compare(
@@ -491,15 +391,7 @@ impl Deck for TwinBeamsProblem {
         points: &[BeamFePoint],
         mesh: Option<&InterfaceMesh>,
     ) -> BeamComparison {
-        let mut comparison = compare_beams(&model.beams, points, mesh);
-        for row in &mut comparison.rows {
-            let at = BeamsModel {
-                beams: model.beams,
-                force: TipForce::clamped(row.fe.force),
-            };
-            row.continuum = judged::<TwinBeamsProblem>(&at, row.fe.deflection);
-        }
-        comparison
+        super::compare::compare(model, points, mesh)
     }
 
     /// (V2) was calibrated on the decks' `NLGEOM` runs (docs/theory.md); in linear geometry an
@@ -552,39 +444,6 @@ impl Deck for TwinBeamsProblem {
             request.slope,
             path,
         )?)
-    }
-}
-
-impl CompareFace for TwinBeamsProblem {
-    const ONE_RUN: Option<&'static str> =
-        Some("compare beam takes one result file (all load steps of one run)");
-    type Checked = BeamComparison;
-    type CompareRow = BeamCompareRow;
-    type CompareReport = BeamCompareReport;
-
-    fn checked(compared: BeamComparison) -> Result<BeamComparison, ParamError> {
-        Ok(compared)
-    }
-
-    /// One run's comparison: `more` is empty ([`CompareFace::ONE_RUN`]).
-    fn compare_report(
-        source: &str,
-        first: BeamComparison,
-        _more: Vec<BeamComparison>,
-    ) -> (BeamCompareReport, Vec<BeamCompareRow>) {
-        let report = BeamCompareReport::new(source, &first);
-        let rows = first.rows.iter().map(BeamCompareRow::from).collect();
-        (report, rows)
-    }
-
-    fn compare_text(report: &BeamCompareReport) -> String {
-        report.text()
-    }
-
-    fn summary_mut(
-        report: &mut BeamCompareReport,
-    ) -> &mut crate::report::compare::verdict::Summary {
-        &mut report.verdict
     }
 }
 

@@ -3,18 +3,17 @@
 //! the K_T table's row, the theory `b` toggles and the curve `f` fits.
 
 use super::TwinBeamsProblem;
-use super::deck::compare_beams;
+use super::compare::{BeamComparison, beam_summary as closing_verdict, compare_beams};
+use super::fe_points::BeamFePoint;
 use crate::chart::panes::{
     ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SATURATION_MEANING, SummaryLine,
     load_regimes, load_tolerance_lines, ratio_text,
 };
-use crate::fe::compare::BeamComparison;
 use crate::fe::load::Loaded;
-use crate::fe::results::BeamFePoint;
 use crate::kernel::format::{number, number_with};
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::problems::twin_beams::closed_form::BeamTheory;
-use crate::report::compare::{percent_range, verdict};
+use crate::report::compare::percent_range;
 use crate::study::curves::beam_point;
 
 /// The largest beam-theory envelope (V2) the regime pane's title states (10 %): past it the
@@ -177,6 +176,6 @@ fn beam_summary(code: &str, comparison: &BeamComparison) -> String {
     format!(
         "{code}, {} points: {}; w(L) {shear} vs Timoshenko (E-B {euler})",
         comparison.rows.len(),
-        verdict::beam_summary(comparison).short
+        closing_verdict(comparison).short
     )
 }

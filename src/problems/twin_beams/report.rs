@@ -16,7 +16,7 @@ use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace, point_continuum};
 use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleKeys, CycleWords};
 use crate::report::point::{InputsReport, SideBySide, regime_label, validity_label};
-use crate::report::rows::{BeamRow, LoopRow};
+use crate::report::rows::LoopRow;
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::{Answer, beam_point};
 
@@ -179,6 +179,35 @@ fn write_beam_table(out: &mut String, beams: &TwinBeams) {
             row.regime_regularized
         );
     }
+}
+
+/// One row of `microslip sweep beam`.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct BeamRow {
+    /// Tip force (N).
+    #[serde(rename = "F_N")]
+    pub force: f64,
+    /// Coulomb tip deflection (mm).
+    pub w_coulomb_mm: f64,
+    /// Regularized tip deflection (mm).
+    pub w_regularized_mm: f64,
+    /// End of the microslip zone (mm).
+    #[serde(rename = "X_mm")]
+    pub micro_end: f64,
+    /// Coulomb regime.
+    pub regime_coulomb: &'static str,
+    /// Regularized regime.
+    pub regime_regularized: &'static str,
+    /// The deflection's beam theory (`euler-bernoulli` or `timoshenko`). Added after the original
+    /// columns, which scripts read by name.
+    pub beam_theory: &'static str,
+    /// Bound on |w(L) continuum FE / w(L) here - 1| (V2), a fraction; empty where (V2) is not
+    /// calibrated (`beam_theory` still names the theory). Deprecated: the same value as
+    /// `vs_continuum_within_fraction`, kept one release for scripts that read it.
+    pub vs_continuum_within: Option<f64>,
+    /// The same bound under the name that says its unit (a fraction: 0.034 is 3.4 %). Added
+    /// last, so no column moves.
+    pub vs_continuum_within_fraction: Option<f64>,
 }
 
 impl From<&BeamPoint> for BeamRow {
@@ -550,6 +579,17 @@ impl BeamReport {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::report::csv::test_support::header;
+
+    /// The header users' scripts read: a change here breaks them, so it must be deliberate.
+    #[test]
+    fn the_sweep_header_is_the_published_contract() {
+        assert_eq!(
+            header::<BeamRow>(),
+            "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized,beam_theory,\
+             vs_continuum_within,vs_continuum_within_fraction"
+        );
+    }
 
     #[test]
     fn beam_report_shows_units_thresholds_and_both_laws() {

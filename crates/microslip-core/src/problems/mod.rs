@@ -68,12 +68,21 @@
 //!    [`Model`](inputs::Model): `enum_bridges!(Cylinder);` inside its `impl Problem`.
 //! 4. **Its faces** in the application, `src/problems/cylinder/` (declared from the registry
 //!    line; the application's `problems` module docs say why a problem has two folders), each
-//!    the impl of a trait of the layer that shows it: `chart.rs` (`chart::view::ChartFace`: its
-//!    charts), `pane.rs` (`chart::panes::PaneFace`: the TUI's parameter title, regime pane, K_T
-//!    table), `deck.rs` (`fe::face::Deck`: its CalculiX deck, result readers and comparison),
-//!    `report.rs` (`report::face::ReportFace`: its point report, sweep row, K_T answer and paper
-//!    table; and `report::point::cycle::CycleFace` if it is driven by a load). Every command,
-//!    chart, report and TUI pane then serves it through code generated from the registry.
+//!    the impl of a trait of the layer that shows it, or a type only that problem has:
+//!    `chart.rs` (`chart::view::ChartFace`: its charts), `pane.rs` (`chart::panes::PaneFace`:
+//!    the TUI's parameter title, regime pane, K_T table), `deck.rs` (`fe::face::Deck`: its
+//!    CalculiX deck and the closed-form values its header expects), `fe_points.rs` (its FE
+//!    point type, the reader of a CalculiX run's `.dat`, written on `fe::results::DatRead`, and
+//!    of a CSV curve, on `fe::results::points_from_csv`), `compare.rs` (its comparison with the
+//!    closed forms and `report::compare::CompareFace`; where that is a table of FE points judged
+//!    against an envelope and the continuum, `report::compare::table::CompareTable` too: its
+//!    compare row, row verdict, closing verdict and the text of its table), `report.rs`
+//!    (`report::face::ReportFace`: its point report, its sweep and loop row types, K_T answer
+//!    and paper table; and `report::point::cycle::CycleFace` if it is driven by a load). `fe`
+//!    and `report` name no problem (`tests/layering.rs`). The cylinder's reader is its
+//!    `ccx_read.rs` and its comparison its `deck.rs` (its report has another shape than the
+//!    table's). Every command, chart, report and TUI pane then serves it through code generated
+//!    from the registry.
 //! 5. **Its presets**: `presets/<paper-preset>.toml`, named by [`Description::paper_preset`].
 //! 6. **Its tests**: its folder's unit tests (closed form against hand values and its
 //!    discretized solver, validity edges), a `tests/<name>_properties.rs` of properties over
