@@ -70,7 +70,7 @@ impl Problem {
             .and_then(|k| k.extract())
             .map_err(|_| {
                 PyTypeError::new_err(
-                    "instantiate a problem class (TwinBeams, Plate, LapJoint, ...), not Problem",
+                    "instantiate a problem class (microslip.PROBLEMS lists them), not Problem",
                 )
             })?;
         kind_of(&key)

@@ -40,7 +40,7 @@ fn run_cycle(
     // The amplitude is cycled, not the preset's F.
     let (name, preset) = resolve_generic(inputs, model)?;
     let (name, model) = apply_and_validate(inputs, name, preset, Load::Unused)?;
-    let no_cycle = || plate_has_no_cycle(inputs, "cycle");
+    let no_cycle = || no_load_to_cycle(inputs, model.kind(), "cycle");
     let face = report::face::report_face(model.kind())
         .cycle()
         .ok_or_else(no_cycle)?;

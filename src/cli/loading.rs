@@ -143,12 +143,20 @@ pub(super) fn edit_distance(a: &str, b: &str) -> usize {
     row[b.len()]
 }
 
-/// `cycle` or `sweep cycle` given the plate, which has no load to cycle.
-pub(super) fn plate_has_no_cycle(args: &InputArgs, command: &str) -> CliError {
+/// `cycle` or `sweep cycle` given a problem without a load (the plate): which problems have
+/// one, from the registry.
+pub(super) fn no_load_to_cycle(args: &InputArgs, kind: ModelKind, command: &str) -> CliError {
+    let loaded: Vec<&str> = ModelKind::ALL
+        .into_iter()
+        .filter(|k| k.description().load.is_some())
+        .map(|k| k.name())
+        .collect();
     CliError::Invalid(format!(
-        "preset '{}' is a plate preset; `microslip {command}` needs a beam or lap preset (the \
-         squeezed plate has no load to cycle: its pressure is fixed)",
-        args.preset.as_deref().unwrap_or_default()
+        "preset '{}' is a {kind} preset; `microslip {command}` needs a preset of a problem with \
+         a load ({}): the {} has no load to cycle",
+        args.preset.as_deref().unwrap_or_default(),
+        loaded.join(", "),
+        kind.description().title
     ))
 }
 

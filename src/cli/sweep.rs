@@ -200,7 +200,7 @@ fn run_cycle_sweep(out: &mut impl Write, args: &CycleSweepArgs) -> Result<(), Cl
     let amplitudes = Samples::of_param(force, *from, *to, *points, Spacing::Linear)
         .map_err(force_range_error)?;
     let model = load_any_structure(inputs, DEFAULT_PROBLEM)?.1;
-    let no_cycle = || plate_has_no_cycle(inputs, "sweep cycle");
+    let no_cycle = || no_load_to_cycle(inputs, model.kind(), "sweep cycle");
     let face = report_face(model.kind()).cycle().ok_or_else(no_cycle)?;
     match face.write_cycle_sweep(out, *format, &model, amplitudes) {
         Some(Ok(())) => Ok(()),

@@ -22,8 +22,17 @@ impl App {
             return self.error("the parameters are not valid: nothing to fit");
         };
         let Some(structure) = fit_structure(&model) else {
-            return self
-                .error("fitting needs a load-driven model (twin beams, lap joint): press m");
+            // The problems with a curve to fit, from the registry.
+            let fittable: Vec<&str> = crate::problems::ModelKind::ALL
+                .into_iter()
+                .filter(|k| k.problem().fittable().is_some())
+                .map(|k| k.description().title)
+                .collect();
+            return self.error(format!(
+                "the {} has no measured curve to fit; these have: {} (press m)",
+                self.kind.description().title,
+                fittable.join(", ")
+            ));
         };
         let measurements = self
             .measurements
@@ -31,8 +40,9 @@ impl App {
             .filter(|_| self.measured_kind == self.kind);
         let Some(measurements) = measurements else {
             return self.error(format!(
-                "no measurements: press d to load a CSV with columns F_N,{}_mm",
-                self.kind.description().response_symbol
+                "no measurements: press d to load a CSV with columns {},{}",
+                structure.load_column(),
+                structure.response_column()
             ));
         };
         self.jobs += 1;

@@ -79,8 +79,8 @@ pub fn draw(frame: &mut Frame, app: &App) {
                 area,
                 "Load measurements or FE results",
                 &format!("File: {}", input.shown()),
-                "CSV F_N,w_mm (a beam sweep's CSV too), KT_MPa_per_mm,u_mm (plate), \
-                 F_N,Delta_mm (lap) or a CalculiX .dat; Tab completes, Enter load, Esc cancel",
+                "CSV of measurements or FE results (the columns `microslip fit` and `compare` \
+                 read for this problem) or a CalculiX .dat; Tab completes, Enter load, Esc cancel",
             ),
             Mode::SaveDescription { name, input } => overlay::draw_prompt(
                 frame,
