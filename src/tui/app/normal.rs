@@ -88,7 +88,20 @@ impl App {
                         self.recompute();
                     }
                     None => {
-                        self.error("the beam theory is a twin-beam setting: press m for the beams")
+                        // Which problems have a setting `t` toggles, from the registry.
+                        let owners: Vec<String> = crate::problems::ModelKind::ALL
+                            .into_iter()
+                            .flat_map(|k| {
+                                k.problem().choices().iter().map(move |c| {
+                                    format!("{} of the {}", c.key(), k.description().title)
+                                })
+                            })
+                            .collect();
+                        self.error(format!(
+                            "the {} has no setting to toggle; t toggles {} (press m)",
+                            kind.description().title,
+                            owners.join(", ")
+                        ))
                     }
                 }
             }
