@@ -235,6 +235,7 @@ pub(super) fn apply_and_validate(
     preset: Preset,
     load: Load,
 ) -> Result<(String, Model), CliError> {
+    let preset_name = name.clone();
     let mut inputs: Inputs = preset.inputs;
     for assignment in &args.assignments {
         preset::apply_assignment(&mut inputs, assignment)?;
@@ -263,11 +264,39 @@ pub(super) fn apply_and_validate(
     } else {
         format!("{name} (modified by {})", changed_by.join(" and "))
     };
-    let model = match load {
-        Load::Used => inputs.validate()?,
-        Load::Unused => inputs.validate_without_load()?,
+    let validated = match load {
+        Load::Used => inputs.validate(),
+        Load::Unused => inputs.validate_without_load(),
     };
+    let model = validated.map_err(|e| blame_the_values_set(args, &preset_name, e))?;
     Ok((name, model))
+}
+
+/// A value refused because values given with `--set` moved its range (`--set P=1e-6` on the
+/// cylinder's preset leaves its Q = 300 N/mm beyond mu P): the refusal says that the value is
+/// the preset's, not one typed, and how to set it too; any other refusal as it is.
+fn blame_the_values_set(args: &InputArgs, preset: &str, e: ParamError) -> CliError {
+    let typed = |key: &str| {
+        args.assignments
+            .iter()
+            .any(|a| a.split_once('=').is_some_and(|(k, _)| k.trim() == key))
+    };
+    if args.assignments.is_empty() || typed(e.field) {
+        return CliError::Param(e);
+    }
+    let set: Vec<&str> = args
+        .assignments
+        .iter()
+        .filter_map(|a| a.split_once('=').map(|(k, _)| k.trim()))
+        .collect();
+    CliError::Invalid(format!(
+        "{e}; {} = {} is the value of {preset}, not one given with --set: the values set ({}) \
+         moved its range, so set it too (--set {}=...)",
+        e.field,
+        Compact(e.value),
+        set.join(", "),
+        e.field
+    ))
 }
 
 /// Sets the problem's setting `key` (a name, not a number: `beam_theory`) from its flag

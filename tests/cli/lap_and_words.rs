@@ -315,3 +315,21 @@ fn the_lap_continuum_answers_or_says_why_not() {
     let text = stdout_of(&["lap", "--set", "L=1e-6", "--set", "F=1e-4"]);
     assert!(text.contains("2-D continuum (L13): FAILED"), "{text}");
 }
+
+/// A value the user never typed, refused because a value set moved its range, is said to be
+/// the preset's (issue 47): `--set P=1e-6` leaves the pad's Q = 300 N/mm beyond mu P.
+#[test]
+fn a_refused_preset_value_is_blamed_on_the_preset_not_the_user() {
+    let stderr = failure(&["cylinder", "--set", "P=1e-6"], 2);
+    assert!(
+        stderr.contains("invalid Q = 300: must be in [0, 6e-7] N/mm")
+            && stderr
+                .contains("Q = 300 is the value of cylinder-steel-pad, not one given with --set")
+            && stderr.contains("the values set (P) moved its range")
+            && stderr.contains("--set Q=..."),
+        "{stderr}"
+    );
+    // A value the user typed is refused as before, without the note.
+    let stderr = failure(&["cylinder", "--set", "Q=900"], 2);
+    assert!(!stderr.contains("not one given with --set"), "{stderr}");
+}
