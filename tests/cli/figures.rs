@@ -598,5 +598,8 @@ fn the_lap_joint_from_the_command_line() {
     assert!(too_low.contains("F_gross"), "{too_low}");
     // The plate has no load to cycle.
     let plate = failure(&["cycle", "--amplitude", "1", "--preset", "paper-plate"], 2);
-    assert!(plate.contains("needs a beam or lap preset"), "{plate}");
+    assert!(
+        plate.contains("needs a preset of a problem with a load (beam, lap, cylinder)"),
+        "{plate}"
+    );
 }
