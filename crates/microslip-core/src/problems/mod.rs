@@ -83,7 +83,11 @@
 //!    `ccx_read.rs` and its comparison its `deck.rs` (its report has another shape than the
 //!    table's). Every command, chart, report and TUI pane then serves it through code generated
 //!    from the registry.
-//! 5. **Its presets**: `presets/<paper-preset>.toml`, named by [`Description::paper_preset`].
+//! 5. **Its presets**: `presets/<paper-preset>.toml` (named by [`Description::paper_preset`]),
+//!    each listed with its `include_str!` in `BUNDLED_PRESETS` of its face folder's `mod.rs`
+//!    (`src/problems/cylinder/mod.rs`); `preset::bundled` gathers every problem's from the
+//!    registry, and a test fails on a preset file no problem bundles. Its Python class needs no
+//!    line: `python/` builds one per registered problem.
 //! 6. **Its tests**: its folder's unit tests (closed form against hand values and its
 //!    discretized solver, validity edges), a `tests/<name>_properties.rs` of properties over
 //!    random inputs; the registry tests in `problems/problem.rs` cover it without an edit once
