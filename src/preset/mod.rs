@@ -422,7 +422,7 @@ mod tests {
         let rows = listing(Some(dir.path()));
         let names: Vec<&str> = rows.iter().map(|r| r.name.as_str()).collect();
         // The bundled presets in the registry's order, then the user's, by name.
-        let mut expected = bundled_names();
+        let mut expected: Vec<&str> = BUNDLED.iter().map(|(name, _)| *name).collect();
         expected.extend(["a", "b"]);
         assert_eq!(names, expected);
         assert!(rows[BUNDLED.len() + 1].preset.as_ref().unwrap_err().line == Some(2));
