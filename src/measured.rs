@@ -35,7 +35,7 @@ pub struct DataError {
 pub(crate) const MAX_DATA_SIZE: Size = Size(256 << 20);
 
 /// Reads the text of a measurement file, refusing one larger than 256 MiB (`MAX_DATA_SIZE`); give the text
-/// to [`parse`]. `kinds` says whether a stream (a FIFO, `<(...)`) is read ([`Kinds::AnyReadable`],
+/// to [`parse_measured_curve_of`]. `kinds` says whether a stream (a FIFO, `<(...)`) is read ([`Kinds::AnyReadable`],
 /// the command line) or refused ([`Kinds::RegularOnly`], the terminal UI, which must not wait).
 ///
 /// # Errors
@@ -251,10 +251,12 @@ pub(crate) const MEASURED_JOINT_DISPLACEMENT: Curve = Curve {
     ..MEASURED_DEFLECTION
 };
 
-/// [`parse`] for any [`Curve`]: (abscissa, ordinate) pairs, abscissae strictly increasing.
+/// The pairs of any [`Curve`] read from a CSV: (abscissa, ordinate) pairs, abscissae strictly increasing.
 ///
 /// # Errors
-/// As [`parse`], with the curve's column names.
+/// A [`DataError`] with the 1-based line of the file: no header, a missing column, a value that
+/// is missing or not a finite number, an abscissa outside its domain or not above the previous
+/// one, or fewer rows than the curve needs.
 pub fn parse_curve(text: &str, curve: &Curve) -> Result<Vec<(f64, f64)>, DataError> {
     parse_curve_with_progress(text, curve, &mut |_, _| {})
 }
