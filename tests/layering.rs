@@ -695,11 +695,11 @@ fn problem_named_items(code: &str, prefixes: &[String]) -> Vec<String> {
     found
 }
 
-/// Every item of the generic layers named after a problem, `path: kind name`.
-fn problem_named_items_of_generic_layers() -> Vec<String> {
+/// The shipped code of every file of the generic layers, `(path from the root, code)`, in
+/// path order: unit-test files (`tests.rs`, a `tests/` folder) and modules left out.
+fn generic_layer_sources() -> Vec<(String, String)> {
     let top = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let prefixes = problem_prefixes();
-    let mut found = Vec::new();
+    let mut sources = Vec::new();
     for layer in GENERIC_LAYERS {
         let mut paths = Vec::new();
         rust_files(&top.join(layer), &mut paths);
@@ -710,17 +710,27 @@ fn problem_named_items_of_generic_layers() -> Vec<String> {
                 .unwrap()
                 .to_string_lossy()
                 .replace('\\', "/");
-            // Unit-test files (`tests.rs`, a `tests/` folder) are not shipped.
             if relative.ends_with("/tests.rs") || relative.contains("/tests/") {
                 continue;
             }
             let code = shipped_code(&std::fs::read_to_string(&path).unwrap());
-            for item in problem_named_items(&code, &prefixes) {
-                found.push(format!("{relative}: {item}"));
-            }
+            sources.push((relative, code));
         }
     }
-    found
+    sources
+}
+
+/// Every item of the generic layers named after a problem, `path: kind name`.
+fn problem_named_items_of_generic_layers() -> Vec<String> {
+    let prefixes = problem_prefixes();
+    generic_layer_sources()
+        .into_iter()
+        .flat_map(|(path, code)| {
+            problem_named_items(&code, &prefixes)
+                .into_iter()
+                .map(move |item| format!("{path}: {item}"))
+        })
+        .collect()
 }
 
 /// Issue 43: no item of a generic layer (`src/fe`, `src/report`: shipped code, unit-test
@@ -895,28 +905,15 @@ const STILL_NAMING_A_PROBLEM_IN_WORDS: &[&str] = &[
 /// title or formula only through its `Description`; a literal that names one is counted here.
 #[test]
 fn no_literal_of_a_generic_layer_names_a_problem() {
-    let top = Path::new(env!("CARGO_MANIFEST_DIR"));
     let words = problem_words();
-    let mut found = Vec::new();
-    for layer in GENERIC_LAYERS {
-        let mut paths = Vec::new();
-        rust_files(&top.join(layer), &mut paths);
-        paths.sort();
-        for path in paths {
-            let relative = path
-                .strip_prefix(top)
-                .unwrap()
-                .to_string_lossy()
-                .replace('\\', "/");
-            if relative.ends_with("/tests.rs") || relative.contains("/tests/") {
-                continue;
-            }
-            let code = shipped_code(&std::fs::read_to_string(&path).unwrap());
-            for literal in literals_naming_a_problem(&code, &words) {
-                found.push(format!("{relative}: {literal}"));
-            }
-        }
-    }
+    let found: Vec<String> = generic_layer_sources()
+        .into_iter()
+        .flat_map(|(path, code)| {
+            literals_naming_a_problem(&code, &words)
+                .into_iter()
+                .map(move |literal| format!("{path}: {literal}"))
+        })
+        .collect();
     let mut listed: Vec<&str> = STILL_NAMING_A_PROBLEM_IN_WORDS.to_vec();
     let mut new = Vec::new();
     for f in &found {
