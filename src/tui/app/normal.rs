@@ -98,7 +98,7 @@ impl App {
                             })
                             .collect();
                         self.error(format!(
-                            "the {} has no setting to toggle; t toggles {} (press m)",
+                            "the {} has no setting to toggle (the settings: {}; press m)",
                             kind.description().title,
                             owners.join(", ")
                         ))
