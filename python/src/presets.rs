@@ -12,7 +12,7 @@ use crate::errors::value_error;
 ///
 /// # Errors
 /// `ValueError` with the loader's message for a name or file it cannot load, and for a preset
-/// that sets something beyond its parameter values (a twin-beam preset's `beam_theory`), which
+/// that sets something beyond its parameter values (a setting such as a problem's choice of theory), which
 /// this binding does not carry yet and must not silently drop.
 #[pyfunction]
 pub fn preset_values<'py>(
@@ -30,9 +30,24 @@ pub fn preset_values<'py>(
     }
     let carried = kind.problem().inputs_at(&values).map_err(value_error)?;
     if carried != loaded.inputs {
+        // The settings this preset sets away from their defaults, by their preset keys.
+        let set: Vec<String> = kind
+            .problem()
+            .choices()
+            .iter()
+            .filter(|choice| choice.get(&loaded.inputs) != choice.get(&carried))
+            .map(|choice| {
+                format!(
+                    "{} = {}",
+                    choice.key(),
+                    choice.get(&loaded.inputs).unwrap_or("?")
+                )
+            })
+            .collect();
         return Err(value_error(format!(
-            "preset '{spec}' sets more than its parameter values (a beam theory other than the \
-             default): the Python API does not carry that yet; use the command line"
+            "preset '{spec}' sets more than its parameter values ({}, not the default): the \
+             Python API does not carry that yet; use the command line",
+            set.join(", ")
         )));
     }
     Ok((kind.name(), params, loaded.name, loaded.description))

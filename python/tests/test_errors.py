@@ -64,6 +64,18 @@ def test_unknown_preset_says_so():
         microslip.preset("no-such-preset")
 
 
+def test_a_preset_s_setting_the_api_cannot_carry_is_refused_by_its_key(tmp_path):
+    # A preset that sets a problem's choice away from its default is refused, naming the key and
+    # the value it sets, rather than silently solved with the default.
+    path = tmp_path / "timo.toml"
+    path.write_text(
+        'model = "beam"\nbeam_theory = "timoshenko"\nL = 200.0\nb = 20.0\nh = 10.0\n'
+        "E = 210000.0\nP = 1.0\nmu = 0.3\nKT = 600.0\nF = 100.0\n"
+    )
+    with pytest.raises(ValueError, match="beam_theory = timoshenko, not the default"):
+        microslip.preset(str(path))
+
+
 def test_problems_pickle_for_process_pools():
     import pickle
 

@@ -42,7 +42,7 @@ pub(super) fn run_figures(
         }
         bench.intro()
     } else {
-        for f in figure::PAPER_FIGURES {
+        for f in figure::PAPER_FIGURES.iter() {
             let inputs = InputArgs {
                 preset: Some(f.preset.to_string()),
                 ..InputArgs::default()

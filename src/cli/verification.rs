@@ -13,9 +13,9 @@ pub(super) fn run_verify(
             flag: "--elements",
             value: elements as f64,
             allowed: format!(
-                "must be an integer in [{}, {}] (below {}, the plate mesh of the stiffest \
-                 interface of the grid cannot resolve its slip zone and Newton cycles; beyond {}, \
-                 round-off of the bending matrix dominates)",
+                "must be an integer in [{}, {}] (below {}, the stiffest interface of the grid \
+                 puts whole elements inside its slip zone and Newton cycles; beyond {}, \
+                 round-off of the discretized stiffness dominates)",
                 MeshDensity::MIN_ELEMENTS,
                 MeshDensity::MAX_ELEMENTS,
                 MeshDensity::MIN_ELEMENTS,

@@ -28,7 +28,7 @@ use crate::kernel::params::Compact;
 /// mesh-convergence check (docs/guide.md, "Benchmark your FE code").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum DeckMesh {
-    /// About 100 elements along the beam and 2 through each beam's height; 4 through the plate.
+    /// The problem's own default (each deck's node and element lists give its size).
     #[default]
     Coarse,
     /// Every element size halved.

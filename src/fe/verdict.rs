@@ -171,11 +171,11 @@ pub enum StiffnessMatch {
         /// Parameters fitted through them.
         parameters: usize,
     },
-    /// The beam theory does not hold at every point (its envelope exceeds 2 %): the fit would
-    /// measure the theory, not the interface.
+    /// The closed form's theory does not hold at every point (its envelope exceeds 2 %): the fit
+    /// would measure the theory, not the interface.
     ClosedFormDoesNotHold,
-    /// The beam theory's envelope is not calibrated at some point (its friction strain is beyond
-    /// the measured range, (V2)): nothing says the fit would measure the interface.
+    /// The closed form's envelope is not calibrated at some point (beyond the measured range,
+    /// e.g. the beams' friction strain in (V2)): nothing says the fit would measure the interface.
     ClosedFormNotCalibrated,
     /// No K_T was implied (too few points).
     NotImplied,
@@ -204,9 +204,11 @@ impl StiffnessMatch {
             StiffnessMatch::DoesNotMatch { .. } => "does not match",
             StiffnessMatch::NoStandardError => "no standard error",
             StiffnessMatch::UncertaintyUnknown { .. } => "not judged: uncertainty unknown",
-            StiffnessMatch::ClosedFormDoesNotHold => "not judged: the beam theory does not hold",
+            StiffnessMatch::ClosedFormDoesNotHold => {
+                "not judged: the closed form's theory does not hold"
+            }
             StiffnessMatch::ClosedFormNotCalibrated => {
-                "not judged: the beam theory's envelope is not calibrated"
+                "not judged: the closed form's envelope is not calibrated"
             }
             StiffnessMatch::NotImplied => "not implied",
         }

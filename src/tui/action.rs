@@ -44,8 +44,8 @@ pub enum Action {
     PreviousChart,
     /// Finite-element points on or off.
     ToggleNumeric,
-    /// Twin beams: Euler-Bernoulli or Timoshenko deflection.
-    ToggleBeamTheory,
+    /// The problem's setting (a choice it declares, e.g. the beams' theory) to its next value.
+    ToggleSetting,
     /// Help overlay on or off.
     ToggleHelp,
     /// Open the preset picker.

@@ -179,8 +179,8 @@ pub const BINDINGS: &[Binding] = &[
     bind(
         Context::Main,
         &[(KeyCode::Char('b'), NONE)],
-        Action::ToggleBeamTheory,
-        "beam theory E-B/Timo.",
+        Action::ToggleSetting,
+        "next setting (theory)",
     ),
     bind(
         Context::Main,

@@ -482,7 +482,7 @@ fn step() -> impl Strategy<Value = Vec<Action>> {
         Action::Vary,
         Action::Explain,
         Action::ToggleHelp,
-        Action::ToggleBeamTheory,
+        Action::ToggleSetting,
         Action::Cancel,
     ];
     let mut steps: Vec<Vec<Action>> = keys.into_iter().map(|key| vec![key]).collect();

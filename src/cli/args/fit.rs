@@ -63,7 +63,7 @@ fn fit_data_help() -> String {
         .collect();
     format!(
         "Measurements: CSV with a header naming the problem's load and response columns, {}; \
-         other columns are ignored. The problem may be named before it (`fit cylinder \
+         other columns are ignored. The problem may be named before it (`fit PROBLEM \
          DATA.csv`)",
         columns.join(" or ")
     )

@@ -150,7 +150,7 @@ value_enum!(YMode {
 });
 
 value_enum!(DeckMesh {
-    DeckMesh::Coarse => (DeckMesh::Coarse.name(), "About 100 elements along the beam and 2 through each beam's height; 4 through the plate, the lap joint's inner half plate and cover"),
+    DeckMesh::Coarse => (DeckMesh::Coarse.name(), "The default mesh of the problem's deck (the deck's own node and element lists give its size)"),
     DeckMesh::Fine => (DeckMesh::Fine.name(), "Every element size halved"),
 });
 

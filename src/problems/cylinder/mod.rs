@@ -20,3 +20,7 @@ pub const BUNDLED_PRESETS: &[(&str, &str)] = &[(
     "cylinder-steel-pad",
     include_str!("../../../presets/cylinder-steel-pad.toml"),
 )];
+
+/// Its figures in `microslip figures`: none yet (`figures --preset NAME` draws all its charts).
+#[cfg(all(feature = "figures", any(feature = "app", test)))]
+pub(crate) const PAPER_FIGURES: &[crate::report::figure::PaperFigure] = &[];

@@ -19,3 +19,7 @@ pub const BUNDLED_PRESETS: &[(&str, &str)] = &[(
     "lap-aluminium",
     include_str!("../../../presets/lap-aluminium.toml"),
 )];
+
+/// Its figures in `microslip figures`: none yet (`figures --preset NAME` draws all its charts).
+#[cfg(all(feature = "figures", any(feature = "app", test)))]
+pub(crate) const PAPER_FIGURES: &[crate::report::figure::PaperFigure] = &[];

@@ -34,7 +34,10 @@ impl PaneFace for LapJointProblem {
         let (joint, force) = (&model.joint, &model.force);
         Some(SummaryLine::plain(
             validity_title(&joint.validity(*force)),
-            "how far a 2-D plane-stress continuum (FE) of this joint is expected from the Delta              shown: the shear-lag theory's envelope at this force (docs/theory.md (L14)).              'FE: >10 %, n solves': the theory is outside its envelope, n draws the continuum;              'not calibrated': no measured joint is like this one",
+            "how far a 2-D plane-stress continuum (FE) of this joint is expected from the Delta \
+             shown: the shear-lag theory's envelope at this force (docs/theory.md (L14)). \
+             'FE: >10 %, n solves': the theory is outside its envelope, n draws the continuum; \
+             'not calibrated': no measured joint is like this one",
         ))
     }
 

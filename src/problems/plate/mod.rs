@@ -11,7 +11,12 @@ pub use chart::PlateChart;
 pub mod compare;
 pub mod deck;
 pub mod fe_points;
+#[cfg(all(feature = "figures", any(feature = "app", test)))]
+mod figures;
 pub mod report;
+
+#[cfg(all(feature = "figures", any(feature = "app", test)))]
+pub(crate) use figures::PAPER_FIGURES;
 
 /// Its bundled presets, (name, TOML text), embedded in the binary: `preset::bundled` lists every
 /// problem's from the registry, so a problem's presets are named here and nowhere else.

@@ -41,7 +41,10 @@ impl PaneFace for TwinBeamsProblem {
         };
         Some(SummaryLine::plain(
             text,
-            "how far continuum FE of these beams (plane stress, fine mesh) is expected from                  the w(L) shown: the beam theory's envelope at this force (docs/theory.md (V2)).                  'not calibrated': mu P L / (2 E h) beyond the measured range; 'w/L too big':                  the bound passes 10 %, deflections far beyond those measured",
+            "how far continuum FE of these beams (plane stress, fine mesh) is expected from \
+             the w(L) shown: the beam theory's envelope at this force (docs/theory.md (V2)). \
+             'not calibrated': mu P L / (2 E h) beyond the measured range; 'w/L too big': \
+             the bound passes 10 %, deflections far beyond those measured",
         ))
     }
 

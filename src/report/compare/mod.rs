@@ -92,8 +92,8 @@ pub(crate) fn percent_range(values: impl Iterator<Item = Option<f64>>) -> String
 }
 
 /// The note under a table with an undefined relative difference.
-pub(crate) const UNDEFINED_NOTE: &str = "n/a: the closed form is 0 there (no load, or nothing squeezes the \
-plate sideways), so a relative difference is undefined; compare the values themselves.";
+pub(crate) const UNDEFINED_NOTE: &str = "n/a: the closed form is 0 there, so a relative difference is \
+undefined; compare the values themselves.";
 
 /// An optional value, or "-" where there is none.
 pub(crate) fn optional(x: Option<f64>) -> String {

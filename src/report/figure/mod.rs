@@ -26,7 +26,7 @@ mod tests;
 #[cfg(feature = "app")]
 pub(crate) use paper::{Bench, parameter_caption};
 #[cfg(any(feature = "app", test))]
-pub(crate) use paper::{IndexEntry, PAPER_FIGURES, PAPER_INTRO, index_html};
+pub(crate) use paper::{IndexEntry, PAPER_FIGURES, PAPER_INTRO, PaperFigure, index_html};
 pub use svg::svg;
 
 /// Width and height of a figure, in SVG pixels (a 16:10 frame that prints well at 16 cm).

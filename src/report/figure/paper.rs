@@ -1,5 +1,6 @@
-//! The paper's figures (`microslip figures`): which chart of which bundled preset each one is,
-//! their captions and the HTML index that shows them with their data.
+//! The paper's figures (`microslip figures`): what one is (a chart of a bundled preset, with its
+//! caption), every problem's list gathered from its face folder, and the HTML index that shows
+//! them with their data. The captions are the problems' own words, so they live in their folders.
 
 use super::Format;
 use crate::chart::YMode;
@@ -24,100 +25,27 @@ pub(crate) struct PaperFigure {
     pub caption: &'static str,
 }
 
-/// The paper's figures (its two data sets, with the finite-element points of its comparison
-/// figures), then the cyclic loading this project adds.
+/// Every problem's figures for `microslip figures`, in the registry's order: each problem's
+/// `PAPER_FIGURES`, in its face folder (`src/problems/<name>/figures.rs` or its `mod.rs`),
+/// gathered from the registry line, so that no problem's caption lives here.
 #[cfg(any(feature = "app", test))]
-pub(crate) const PAPER_FIGURES: &[PaperFigure] = &[
-    PaperFigure {
-        stem: "beam-w-vs-f",
-        preset: "paper-beams",
-        chart_key: "w-vs-f",
-        y: YMode::Linear,
-        finite_elements: true,
-        caption: "Twin beams, K_T = 600 MPa/mm: tip deflection w(L) against the tip force F, \
-                  Coulomb and regularized (K_T/5, K_T, K_T x 5), finite-element points at K_T",
-    },
-    PaperFigure {
-        stem: "beam-w-vs-f-relative",
-        preset: "paper-beams",
-        chart_key: "w-vs-f",
-        y: YMode::Relative,
-        finite_elements: true,
-        caption: "Twin beams: the same curves as w(L) / w(L)_Coulomb - 1 in %, where the K_T \
-                  family separates: constant in stick, falling once Coulomb slides",
-    },
-    PaperFigure {
-        stem: "beam-soft-w-vs-f",
-        preset: "paper-beams-soft",
-        chart_key: "w-vs-f",
-        y: YMode::Linear,
-        finite_elements: true,
-        caption: "Twin beams, K_T/5 = 120 MPa/mm: w(L) against F, finite-element points at \
-                  120 MPa/mm",
-    },
-    PaperFigure {
-        stem: "beam-x-vs-f",
-        preset: "paper-beams",
-        chart_key: "x-vs-f",
-        y: YMode::Linear,
-        finite_elements: true,
-        caption: "Twin beams: end X of the microslip zone (from the clamp) against F, \
-                  finite-element points at K_T",
-    },
-    PaperFigure {
-        stem: "beam-soft-x-vs-f",
-        preset: "paper-beams-soft",
-        chart_key: "x-vs-f",
-        y: YMode::Linear,
-        finite_elements: true,
-        caption: "Twin beams, K_T/5: X against F, finite-element points at 120 MPa/mm",
-    },
-    PaperFigure {
-        stem: "plate-u-vs-kt",
-        preset: "paper-plate",
-        chart_key: "u-vs-kt",
-        y: YMode::Log,
-        finite_elements: true,
-        caption: "Squeezed plate: end displacement u(L) against K_T, Coulomb and regularized, \
-                  finite-element points and the 2-D plane-strain continuum",
-    },
-    PaperFigure {
-        stem: "plate-xr-vs-mu",
-        preset: "paper-plate",
-        chart_key: "xr-vs-mu",
-        y: YMode::Linear,
-        finite_elements: false,
-        caption: "Squeezed plate: end X_r of the microslip zone against mu, for K_T/10, K_T, \
-                  K_T x 10",
-    },
-    PaperFigure {
-        stem: "plate-pressure",
-        preset: "paper-plate",
-        chart_key: "pressure",
-        y: YMode::Linear,
-        finite_elements: false,
-        caption: "Squeezed plate: contact pressure P_r(x)/P along the half-plate of the paper's \
-                  flat-plate model (P7-P9, friction saturated everywhere); the plane-strain \
-                  continuum's is flat away from the free end (docs/theory.md (P12))",
-    },
-    PaperFigure {
-        stem: "beam-loop",
-        preset: "paper-beams",
-        chart_key: "loop",
-        y: YMode::Linear,
-        finite_elements: true,
-        caption: "One beam cycled between +F and -F (F = 100 N): the hysteresis loop, both laws, \
-                  finite-element points of the same cycle",
-    },
-    PaperFigure {
-        stem: "beam-d-vs-fa",
-        preset: "paper-beams",
-        chart_key: "d-vs-fa",
-        y: YMode::Log,
-        finite_elements: false,
-        caption: "Twin beams: dissipation per cycle D (both beams) against the amplitude F_a",
-    },
-];
+macro_rules! paper_figures {
+    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
+        [$(crate::problems::$folder::PAPER_FIGURES),+]
+    };
+}
+
+/// [`paper_figures!`] as one list: the paper's data sets' figures (with the finite-element
+/// points of its comparison figures) and those this project adds, problem by problem.
+#[cfg(any(feature = "app", test))]
+pub(crate) static PAPER_FIGURES: std::sync::LazyLock<Vec<PaperFigure>> =
+    std::sync::LazyLock::new(|| {
+        microslip_core::with_problems!(paper_figures)
+            .into_iter()
+            .flatten()
+            .copied()
+            .collect()
+    });
 
 /// One figure of an index page: its files, its title and what it shows.
 #[derive(Debug, Clone, PartialEq, Eq)]

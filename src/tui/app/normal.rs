@@ -79,7 +79,7 @@ impl App {
                     self.explain_overlay();
                 }
             }
-            Action::ToggleBeamTheory => {
+            Action::ToggleSetting => {
                 let kind = self.kind;
                 let toggled = pane_face(kind).toggle_setting(&mut self.state_mut().inputs);
                 match toggled {
@@ -88,7 +88,7 @@ impl App {
                         self.recompute();
                     }
                     None => {
-                        // Which problems have a setting `t` toggles, from the registry.
+                        // Which problems have a setting `b` toggles, from the registry.
                         let owners: Vec<String> = crate::problems::ModelKind::ALL
                             .into_iter()
                             .flat_map(|k| {

@@ -151,11 +151,12 @@ pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
     }
 }
 
-/// What the regime pane's title states (the beams' and the lap joint's), in words: `i` says more.
+/// What the regime pane's title states (for a problem with a continuum envelope), in words: `i`
+/// says more.
 const TITLE_HELP: [&str; 5] = [
     " Regime title \"FE within 3 %\":",
     "  how far continuum FE is expected",
-    "  from w(L) (lap: Delta) at this F,",
+    "  from the response at this load:",
     "  the theory's envelope (theory.md);",
     "  i explains it first",
 ];

@@ -86,8 +86,10 @@
 //! 5. **Its presets**: `presets/<paper-preset>.toml` (named by [`Description::paper_preset`]),
 //!    each listed with its `include_str!` in `BUNDLED_PRESETS` of its face folder's `mod.rs`
 //!    (`src/problems/cylinder/mod.rs`); `preset::bundled` gathers every problem's from the
-//!    registry, and a test fails on a preset file no problem bundles. Its Python class needs no
-//!    line: `python/` builds one per registered problem.
+//!    registry, and a test fails on a preset file no problem bundles. Beside it,
+//!    `PAPER_FIGURES`: the figures `microslip figures` draws of its presets (`&[]` for none;
+//!    the twin beams' `figures.rs` shows the shape). Its Python class needs no line: `python/`
+//!    builds one per registered problem.
 //! 6. **Its tests**: its folder's unit tests (closed form against hand values and its
 //!    discretized solver, validity edges), a `tests/<name>_properties.rs` of properties over
 //!    random inputs; the registry tests in `problems/problem.rs` cover it without an edit once
