@@ -873,6 +873,92 @@ fn no_literal_of_a_generic_layer_names_a_problem() {
     );
 }
 
+/// The doc comments of `src/cli/args` that clap shows as help (on a command, a flag, a value or
+/// the struct of one; not those of a helper function, trait, impl or module), one text per
+/// block, with the line it starts on.
+fn help_texts(text: &str) -> Vec<(usize, String)> {
+    let mut found = Vec::new();
+    let mut block: Option<(usize, String)> = None;
+    for (number, line) in text.lines().enumerate() {
+        let line = line.trim_start();
+        if line.trim() == "#[cfg(test)]" {
+            break;
+        }
+        if let Some(doc) = line.strip_prefix("///") {
+            let (_, text) = block.get_or_insert_with(|| (number + 1, String::new()));
+            text.push_str(doc);
+            continue;
+        }
+        if line.starts_with("#[") || line.is_empty() {
+            continue;
+        }
+        if let Some(help) = block.take() {
+            let item = line
+                .trim_start_matches("pub(in crate::cli) ")
+                .trim_start_matches("pub(crate) ")
+                .trim_start_matches("pub(super) ")
+                .trim_start_matches("pub ");
+            let developer = [
+                "fn ",
+                "trait ",
+                "impl",
+                "macro_rules!",
+                "mod ",
+                "type ",
+                "const ",
+            ]
+            .iter()
+            .any(|start| item.starts_with(start));
+            if !developer {
+                found.push(help);
+            }
+        }
+    }
+    found
+}
+
+/// Issue 43: the command line's help, written as doc comments in `src/cli/args`, is a message
+/// like any other: it says a problem's words through the registry (`per_problem_help`, the
+/// problem's own subcommand), never by naming one.
+#[test]
+fn no_help_text_of_the_command_line_names_a_problem() {
+    let words = problem_words();
+    let top = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut paths = Vec::new();
+    rust_files(&top.join("src/cli/args"), &mut paths);
+    paths.sort();
+    let mut found = Vec::new();
+    for path in paths {
+        let text = std::fs::read_to_string(&path).unwrap();
+        for (line, help) in help_texts(&text) {
+            let quoted = format!("\"{}\"", help.replace('"', "'"));
+            if !literals_naming_a_problem(&quoted, &words).is_empty() {
+                let name = path.file_name().unwrap().to_string_lossy().to_string();
+                found.push(format!("src/cli/args/{name}:{line}: {}", help.trim()));
+            }
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "{} help texts of the command line name a problem (generate them from the registry):\n{}",
+        found.len(),
+        found.join("\n")
+    );
+}
+
+/// The help check can fail: a flag's doc comment naming a problem is found, a helper
+/// function's is not.
+#[test]
+fn the_help_check_finds_a_flag_s_words() {
+    let words = problem_words();
+    let code = "/// The lap joint's load.\n#[arg(long)]\npub load: f64,\n\
+                /// Lists beam: L b h.\npub(in crate::cli) fn lists() {}\n";
+    let texts = help_texts(code);
+    assert_eq!(texts.len(), 1, "{texts:?}");
+    let quoted = format!("\"{}\"", texts[0].1);
+    assert_eq!(literals_naming_a_problem(&quoted, &words).len(), 1);
+}
+
 /// The literal check can fail: a key as a word, a title and a formula are found; a key inside
 /// a word or in a comment is not.
 #[test]

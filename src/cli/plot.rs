@@ -47,6 +47,16 @@ pub(super) fn run_plot(out: &mut impl Write, args: &PlotArgs) -> Result<(), CliE
         }
     }
     let plot = crate::chart::figure(&model, *chart, *fe, YMode::Linear)?;
+    // Asked for points the chart has no counterpart of: refused, as a --y the chart cannot show
+    // is, rather than drawn without them as if they were there.
+    let numeric = [SeriesRole::FiniteElements, SeriesRole::Continuum];
+    if *fe && !plot.series.iter().any(|s| numeric.contains(&s.role)) {
+        return Err(CliError::Invalid(format!(
+            "--fe: chart {} has no finite-element or discretized points of the project; draw \
+             it without --fe",
+            chart.key()
+        )));
+    }
     // The chart's own default falls back to linear where it cannot apply (u(L) = 0 at
     // nu = 0 on a log axis); a mode asked for with --y is refused instead.
     let mode = match y {

@@ -17,6 +17,7 @@ use super::kinematics::Kinematics;
 use super::load::Loaded;
 use super::results::{CcxRun, ResultsError};
 use super::verdict::InterfaceMesh;
+use crate::measured::Curve;
 use crate::problems::ModelKind;
 use crate::problems::Problem;
 use crate::problems::problem::Registered;
@@ -43,6 +44,10 @@ pub trait Deck: Problem + Registered {
     /// # Errors
     /// A malformed `.dat` line, or a result the deck asks for and the `.dat` lacks.
     fn ccx_points(run: &CcxRun, params: &Self::Params) -> Result<Vec<Self::FePoint>, ResultsError>;
+
+    /// The columns of a CSV curve of FE results, as `compare`'s help lists them (`F_N,w_mm`):
+    /// the curve [`Deck::csv_points`] reads.
+    const CSV_CURVE: Curve;
 
     /// The FE points of a CSV curve (its columns are the problem's measurement format).
     ///
@@ -243,6 +248,8 @@ pub trait AnyDeck: Send + Sync {
     fn source(&self) -> &'static str;
     /// [`Deck::INTERFACE_SET`].
     fn interface_set(&self) -> &'static str;
+    /// The header of [`Deck::CSV_CURVE`]: `x,y`.
+    fn csv_columns(&self) -> String;
     /// [`Deck::expected`] for the header's model; `None` where the header's inputs do not
     /// validate (a header edited by hand) or are of another problem.
     fn expected(&self, header: &DeckHeader) -> Option<String>;
@@ -258,6 +265,10 @@ impl<P: Deck> AnyDeck for DeckOf<P> {
 
     fn interface_set(&self) -> &'static str {
         P::INTERFACE_SET
+    }
+
+    fn csv_columns(&self) -> String {
+        format!("{},{}", P::CSV_CURVE.x, P::CSV_CURVE.y)
     }
 
     fn expected(&self, header: &DeckHeader) -> Option<String> {

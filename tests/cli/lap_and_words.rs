@@ -143,7 +143,7 @@ fn help_and_notes_say_only_what_applies() {
         "{stderr}"
     );
     let help = stdout_of(&["compare", "--help"]);
-    assert!(help.contains("F_N,Delta_mm (lap)"), "{help}");
+    assert!(help.contains("lap: F_N,Delta_mm"), "{help}");
     let note = |model: &str, dat: &str| {
         let output = microslip()
             .args(["compare", model, dat, "--set", "KT=500"])

@@ -11,9 +11,8 @@ pub type CycleArgs = WithProblems<ForKind<CycleFlags>, GenericCycleArgs>;
 /// The flags of the generic `cycle`: the problem comes from --model or the preset.
 #[derive(Debug, Args)]
 pub struct GenericCycleArgs {
-    /// The problem (default: the preset's; without --preset, beam). Given with --preset, both
-    /// must name the same problem, one with a load to cycle.
-    #[arg(long, value_parser = model_kind_parser())]
+    // Its help names the default problem from the registry (`model_flag_help`).
+    #[arg(long, value_parser = model_kind_parser(), help = model_flag_help(", one with a load to cycle"))]
     pub(in crate::cli) model: Option<ModelKind>,
     #[command(flatten)]
     pub(in crate::cli) cycle: CycleFlags,

@@ -72,10 +72,8 @@ pub struct CompareArgs {
     /// Which benchmark.
     #[arg(value_parser = model_kind_parser())]
     pub(in crate::cli) model: ModelKind,
-    /// Result files: the .dat of a `microslip deck ccx` run (its deck JOB.inp beside it), or a
-    /// CSV from any FE code: F_N,w_mm (beam), KT_MPa_per_mm,u_mm (plate) or F_N,Delta_mm (lap).
-    /// Several plate or lap runs may be given.
-    #[arg(required = true, value_name = "RESULT")]
+    // The help lists each problem's CSV columns from the registry (`results_help`).
+    #[arg(required = true, value_name = "RESULT", help = results_help())]
     pub(in crate::cli) results: Vec<PathBuf>,
     /// The deck of a .dat result (default: the result's name with .inp).
     #[arg(long, value_name = "FILE")]
@@ -88,13 +86,22 @@ pub struct CompareArgs {
     /// reads it from the run's .frd).
     #[arg(long, value_name = "FILE")]
     pub(in crate::cli) interface: Option<PathBuf>,
-    /// The kinematics of a CSV result's FE run, which the verdict names and the beams'
-    /// envelope (V2, calibrated on NLGEOM runs) depends on (a .dat's deck says it).
+    /// The kinematics of a CSV result's FE run, which the verdict names and a problem's
+    /// envelope may depend on (each names the kinematics it holds for; a .dat's deck says it).
     #[arg(long, value_enum)]
     pub(in crate::cli) kinematics: Option<KinematicsArg>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = CompareFormat::Text)]
     pub(in crate::cli) format: CompareFormat,
+}
+
+/// The help of `compare`'s RESULT: each problem's CSV columns, from its deck face.
+fn results_help() -> String {
+    per_problem_help(
+        "Result files: the .dat of a `microslip deck ccx` run (its deck JOB.inp beside it), or a \
+         CSV from any FE code, with the problem's columns",
+        |kind| vec![crate::fe::face::deck_face(kind).csv_columns()],
+    ) + ". Several runs may be given, unless the problem compares one run only (it says why)"
 }
 
 /// What a deck is made of: the parameters, the mesh and the load path (`deck` and `bench`).
@@ -105,9 +112,8 @@ pub struct DeckArgs {
     /// Mesh density (fine halves every element size: run both to check convergence).
     #[arg(long, value_enum, default_value_t = DeckMesh::Coarse)]
     pub(in crate::cli) mesh: DeckMesh,
-    /// Forces of the load steps (N, increasing): the beams' tip force (default F_thre x 0.5,
-    /// 0.75, 1, 1.25, 1.875, 2.5) or the lap joint's F (default 0.5 F_1, (F_1 + F_2)/2,
-    /// (F_2 + F_gross)/2, 0.9 F_gross); not the plate's.
+    /// The load steps, increasing, in the problem's load unit (default: the problem's own, in
+    /// the deck's expected-values table); refused by a problem without a load.
     #[arg(
         long,
         value_name = "F0,F1,...",
@@ -115,12 +121,14 @@ pub struct DeckArgs {
         allow_negative_numbers = true
     )]
     pub(in crate::cli) loads: Option<Vec<f64>>,
-    /// Give the FE code a stiff stick slope (boundary layer a tenth of h or t_p) instead of
-    /// K_T: plain Coulomb to within what the mesh resolves.
+    /// Give the FE code the problem's stiff stick slope instead of K_T (its slip decays over a
+    /// fraction of the members' thickness; the deck's header gives the value): plain Coulomb to
+    /// within what the mesh resolves.
     #[arg(long)]
     pub(in crate::cli) near_coulomb: bool,
-    /// Largest force change per increment (N) in the load steps that end beyond F_1 (friction
-    /// is path-dependent once it saturates), beams and lap joint; default: F_1 / 40.
+    /// Largest load change per increment (in the load's unit) in the load steps that end beyond
+    /// first slip (friction is path-dependent once it saturates); default: the problem's, in
+    /// the deck's step comments; refused by a problem whose deck has no such steps.
     #[arg(long, value_name = "N")]
     pub(in crate::cli) increment: Option<f64>,
 }

@@ -20,9 +20,8 @@ pub struct GenericFitArgs {
         help = fit_data_help()
     )]
     pub(in crate::cli) data: Vec<PathBuf>,
-    /// The problem (default: the preset's; without --preset, beam). Given with --preset, both
-    /// must name the same problem, one with a load to fit the curve against.
-    #[arg(long, value_parser = model_kind_parser())]
+    // Its help names the default problem from the registry (`model_flag_help`).
+    #[arg(long, value_parser = model_kind_parser(), help = model_flag_help(", one with a load to fit the curve against"))]
     pub(in crate::cli) model: Option<ModelKind>,
     #[command(flatten)]
     pub(in crate::cli) fit: FitFlags,

@@ -35,9 +35,9 @@ pub use sweep::*;
 /// Subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Report of the paper's two data sets (twin beams and plate), as text.
+    /// Report of the paper's data sets, as text.
     Report,
-    /// One subcommand per problem of the registry (`microslip cylinder`): its help from the
+    /// One subcommand per problem of the registry (`microslip PROBLEM`): its help from the
     /// problem's description, its options those the problem declares.
     #[command(flatten)]
     Problem(ForKind<PointArgs>),
@@ -55,8 +55,8 @@ pub enum Command {
     /// Each answer is given against the current K_T's and against Coulomb's (`vs current`,
     /// `vs Coulomb`, in %).
     Kt(KtArgs),
-    /// Any problem with a load (the preset's; default twin beams) cycled between +FA and -FA:
-    /// loop, dissipation, damping.
+    /// Any problem with a load (the preset's, or --model's) cycled between +FA and -FA: loop,
+    /// dissipation, damping.
     Cycle(CycleArgs),
     /// Identify mu and K_T from a measured curve (the problem's response against its load).
     Fit(FitArgs),

@@ -11,9 +11,8 @@ pub struct PlotArgs {
     pub chart: AnyChart,
     #[command(flatten)]
     pub inputs: InputArgs,
-    /// Add the project's finite-element points (w-vs-f, x-vs-f, tau, loop, u-vs-kt, delta-vs-f,
-    /// zones-vs-f, lap-tau, lap-slip, lap-loop), or its discretized solver's on every cylinder
-    /// chart.
+    /// Add the project's own numerical points (its finite-element or discretized solver's, and
+    /// a continuum's where the problem has one); a chart without them is refused.
     #[arg(long)]
     pub fe: bool,
     /// The y axis: linear, log, or relative (each curve / Coulomb - 1, in %); default: log for

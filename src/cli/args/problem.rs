@@ -116,15 +116,29 @@ impl EditArg for clap::Command {
 
 /// `intro` and, in parentheses, what `names` gives for each problem of the registry (`beam: L b
 /// h ...; plate: ...`).
-pub(in crate::cli) fn per_problem_help(
+pub(in crate::cli) fn per_problem_help<S: AsRef<str>>(
     intro: &str,
-    names: impl Fn(ModelKind) -> Vec<&'static str>,
+    names: impl Fn(ModelKind) -> Vec<S>,
 ) -> String {
     let lists: Vec<String> = ModelKind::ALL
         .iter()
-        .map(|kind| format!("{kind}: {}", names(*kind).join(" ")))
+        .map(|kind| {
+            let owned = names(*kind);
+            let names: Vec<&str> = owned.iter().map(AsRef::as_ref).collect();
+            format!("{kind}: {}", names.join(" "))
+        })
         .collect();
     format!("{intro} ({})", lists.join("; "))
+}
+
+/// The help of a generic command's `--model`: the default problem from the registry, and what
+/// the problem must have (`extra`, after a comma, or empty).
+pub(in crate::cli) fn model_flag_help(extra: &str) -> String {
+    format!(
+        "The problem (default: the preset's; without --preset, {}). Given with --preset, both \
+         must name the same problem{extra}",
+        crate::cli::DEFAULT_PROBLEM
+    )
 }
 
 /// The problem's title with its first letter capitalized, as a help line starts.

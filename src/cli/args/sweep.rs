@@ -6,7 +6,7 @@ use clap::{Arg, Args, Subcommand};
 
 /// A generic command of any problem (its own flags, when no subcommand is given) or one of its
 /// per-problem subcommands ([`ForKind`], one per problem of the registry, with the flags that
-/// problem takes: `sweep cylinder`, `fit lap`). A subcommand and the generic flags exclude
+/// problem takes: `sweep PROBLEM`, `fit PROBLEM`). A subcommand and the generic flags exclude
 /// each other, so a subcommand's `--help` shows its own flags only.
 #[derive(Debug, Args)]
 #[command(
@@ -28,9 +28,8 @@ pub type SweepArgs = WithProblems<SweepCommand, GenericSweepArgs>;
 /// The flags of the generic `sweep`: the problem comes from --model or the preset.
 #[derive(Debug, Args)]
 pub struct GenericSweepArgs {
-    /// The problem (default: the preset's; without --preset, beam). Given with --preset, both
-    /// must name the same problem.
-    #[arg(long, value_parser = model_kind_parser())]
+    // Its help names the default problem from the registry (`model_flag_help`).
+    #[arg(long, value_parser = model_kind_parser(), help = model_flag_help(""))]
     pub(in crate::cli) model: Option<ModelKind>,
     // The help lists each problem's keys from the registry (`vary_help`).
     #[arg(long, value_name = "NAME", help = vary_help())]
@@ -71,8 +70,8 @@ pub enum SweepCommand {
     /// One per problem of the registry.
     #[command(flatten)]
     Problem(ForKind<ProblemSweepArgs>),
-    /// Any problem with a load (the preset's; default twin beams) cycled at amplitudes from F0
-    /// to F1 (in the load's unit): dissipation and damping per cycle.
+    /// Any problem with a load (the preset's, or --model's) cycled at amplitudes from F0 to F1
+    /// (in the load's unit): dissipation and damping per cycle.
     Cycle(CycleSweepArgs),
 }
 

@@ -282,6 +282,8 @@ impl Deck for CylinderProblem {
         )
     }
 
+    const CSV_CURVE: Curve = CYLINDER_CURVE;
+
     fn csv_points(text: &str) -> Result<Vec<CylinderFePoint>, ResultsError> {
         Ok(data::parse_curve(text, &CYLINDER_CURVE)?
             .into_iter()

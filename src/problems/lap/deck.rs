@@ -371,6 +371,8 @@ impl Deck for LapJointProblem {
         super::fe_points::lap_points(run, params)
     }
 
+    const CSV_CURVE: crate::measured::Curve = super::fe_points::LAP_CURVE;
+
     fn csv_points(text: &str) -> Result<Vec<LapFePoint>, ResultsError> {
         super::fe_points::lap_points_from_csv(text)
     }

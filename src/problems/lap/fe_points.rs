@@ -41,7 +41,7 @@ pub struct LapFeInterface {
 }
 
 /// The CSV form of the lap joint's curve: the measurement format of `fit lap`, one row or more.
-const LAP_CURVE: Curve = Curve {
+pub(super) const LAP_CURVE: Curve = Curve {
     min_rows: 1,
     ..MEASURED_JOINT_DISPLACEMENT
 };

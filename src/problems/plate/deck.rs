@@ -240,6 +240,8 @@ impl Deck for SqueezedPlateProblem {
         super::fe_points::plate_point(run, params).map(|p| vec![p])
     }
 
+    const CSV_CURVE: crate::measured::Curve = super::fe_points::PLATE_CURVE;
+
     fn csv_points(text: &str) -> Result<Vec<PlateFePoint>, ResultsError> {
         super::fe_points::plate_points_from_csv(text)
     }

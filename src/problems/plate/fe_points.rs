@@ -26,7 +26,7 @@ pub struct PlateFePoint {
 }
 
 /// The CSV form of the plate curve.
-const PLATE_CURVE: Curve = Curve {
+pub(super) const PLATE_CURVE: Curve = Curve {
     x: "KT_MPa_per_mm",
     y: "u_mm",
     x_what: "stiffnesses",

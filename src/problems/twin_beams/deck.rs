@@ -382,6 +382,8 @@ impl Deck for TwinBeamsProblem {
         super::fe_points::beam_points(run, params)
     }
 
+    const CSV_CURVE: crate::measured::Curve = super::fe_points::BEAM_CURVE;
+
     fn csv_points(text: &str) -> Result<Vec<BeamFePoint>, ResultsError> {
         super::fe_points::beam_points_from_csv(text)
     }

@@ -22,7 +22,7 @@ pub struct BeamFePoint {
 }
 
 /// The CSV form of the beam curve: the measurement format of `fit`, one row or more.
-const BEAM_CURVE: Curve = Curve {
+pub(super) const BEAM_CURVE: Curve = Curve {
     min_rows: 1,
     ..MEASURED_DEFLECTION
 };
