@@ -31,8 +31,9 @@ pub struct SummaryLine {
     pub text: String,
     /// The regime, for regime lines.
     pub regime: Option<String>,
-    /// What the line means.
-    pub meaning: &'static str,
+    /// What the line means (most are fixed words; a line whose meaning states its own numbers,
+    /// as the beams' envelopes in both kinematics, owns it).
+    pub meaning: std::borrow::Cow<'static, str>,
     /// When the pane is short of rows, lines are dropped in increasing order of this rank; 0: kept
     /// always. What is dropped can be read elsewhere (the ratio and one w(L) give the other).
     pub drop_rank: u8,
@@ -40,21 +41,25 @@ pub struct SummaryLine {
 
 impl SummaryLine {
     /// A line of text, kept always.
-    pub fn plain(text: String, meaning: &'static str) -> SummaryLine {
+    pub fn plain(text: String, meaning: impl Into<std::borrow::Cow<'static, str>>) -> SummaryLine {
         SummaryLine {
             text,
             regime: None,
-            meaning,
+            meaning: meaning.into(),
             drop_rank: 0,
         }
     }
 
     /// A regime line: `label` padded to the column the regimes start at, then `regime`.
-    pub fn regime(label: &str, regime: String, meaning: &'static str) -> SummaryLine {
+    pub fn regime(
+        label: &str,
+        regime: String,
+        meaning: impl Into<std::borrow::Cow<'static, str>>,
+    ) -> SummaryLine {
         SummaryLine {
             text: format!("{label:<12}"),
             regime: Some(regime),
-            meaning,
+            meaning: meaning.into(),
             drop_rank: 0,
         }
     }

@@ -78,10 +78,13 @@ pub trait Deck: Problem + Registered {
     /// `compare` shows both beam theories); empty for most.
     const OVERRIDES_NOTE: &'static str = "";
 
-    /// The kinematics of the FE runs the closed form's envelope was calibrated on: the project's
-    /// own decks' (the beams' are `NLGEOM`, the others linear). A run of other kinematics is not
-    /// judged against it ([`Deck::without_envelope`]).
-    const ENVELOPE_KINEMATICS: Kinematics = Kinematics::Linear;
+    /// The kinematics of the FE runs the closed form states an envelope for, the narrowest
+    /// envelope first: the project's own decks' (linear geometry for most); the beams state one
+    /// for `NLGEOM` (their decks') and a wider one for linear geometry (docs/theory.md (V2L)). A
+    /// run of other kinematics is not judged against any ([`Deck::without_envelope`]); one that
+    /// does not state its kinematics is judged against the last, the widest. A problem with
+    /// several swaps in the right one in [`Deck::judge_kinematics`].
+    const ENVELOPE_KINEMATICS: &'static [Kinematics] = &[Kinematics::Linear];
 
     /// `compared` with its envelope taken away (every bound "not calibrated"): for a run whose
     /// kinematics the envelope was not calibrated on.

@@ -398,7 +398,17 @@ fn beams_beyond_the_calibrated_friction_strain_get_no_bound() {
         serde_json::from_str(&stdout_of(&args(&["beam", "--format", "json"]))).unwrap();
     let theory = &json["beam_theory"];
     assert_eq!(theory["validity"], "not calibrated", "{json}");
-    assert!(theory.get("vs_continuum_within").is_none(), "{json}");
+    for key in [
+        "vs_continuum_within",
+        "vs_continuum_nlgeom_within_fraction",
+        "vs_continuum_linear_within_fraction",
+    ] {
+        assert!(theory.get(key).is_none(), "{key}: {json}");
+    }
+    assert_eq!(
+        theory["validity_linear_geometry"], "not calibrated",
+        "{json}"
+    );
     let strain = theory["friction_strain"].as_f64().unwrap();
     assert!((strain / (10.0 * 200.0 / (2.0 * 210_000.0 * 10.0)) - 1.0).abs() < 1e-12);
     let text = stdout_of(&args(&["beam"]));
@@ -410,7 +420,10 @@ fn beams_beyond_the_calibrated_friction_strain_get_no_bound() {
         "sweep", "beam", "--from", "0", "--to", "60000", "--points", "2",
     ]));
     assert!(
-        csv.lines().nth(2).unwrap().ends_with(",euler-bernoulli,,"),
+        csv.lines()
+            .nth(2)
+            .unwrap()
+            .ends_with(",euler-bernoulli,,,,"),
         "{csv}"
     );
     // Any FE points (these are made up): the implied K_T is not judged through (V2).

@@ -84,7 +84,8 @@ fn beam_sweep_csv_has_the_contract_header_and_round_trip_numbers() {
         lines.next(),
         Some(
             "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized,beam_theory,\
-             vs_continuum_within,vs_continuum_within_fraction"
+             vs_continuum_within,vs_continuum_within_fraction,vs_continuum_nlgeom_within_fraction,\
+             vs_continuum_linear_within_fraction"
         )
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();

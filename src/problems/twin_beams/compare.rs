@@ -405,15 +405,17 @@ impl CompareTable for TwinBeamsProblem {
         {
             let _ = writeln!(
                 out,
-                "\nPer load step: w(L) +shear against its envelope (docs/theory.md (V2)); X against the\n\
+                "\nPer load step: w(L) +shear against its envelope for the run's kinematics (docs/theory.md\n\
+                 (V2) with NLGEOM, (V2L) in linear geometry: the kinematics line below names it); X against the\n\
                  closed form's in elements of the deck's mesh along the interface (under one: within what\n\
                  the mesh resolves, the FE X being interpolated between nodes)."
             );
         } else {
             let _ = writeln!(
                 out,
-                "\nPer load step: w(L) +shear against its envelope (docs/theory.md (V2)); X is not judged\n\
-                 (the results carry no slip profile and no mesh)."
+                "\nPer load step: w(L) +shear against its envelope for the run's kinematics (docs/theory.md\n\
+                 (V2) with NLGEOM, (V2L) in linear geometry: the kinematics line below names it); X is not\n\
+                 judged (the results carry no slip profile and no mesh)."
             );
         }
         out

@@ -34,18 +34,31 @@ impl PaneFace for TwinBeamsProblem {
     /// it as the first of the pane's lines.
     fn title_line(model: &Self::Model) -> Option<SummaryLine> {
         let (beams, force) = (&model.beams, &model.force);
-        let text = match beams.validity(*force).expected_error {
+        // The title has room for one number: the bound that holds in both kinematics (linear
+        // geometry's, (V2L), never below NLGEOM's); `i` gives each, named.
+        let validity = beams.validity(*force);
+        let text = match validity.linear_geometry_error {
             None => "FE: not calibrated".to_string(),
             Some(error) if error > MAX_SHOWN_ENVELOPE => "FE: w/L too big".to_string(),
             Some(error) => format!("FE within {} %", number_with(100.0 * error, 2)),
         };
-        Some(SummaryLine::plain(
-            text,
-            "how far continuum FE of these beams (plane stress, fine mesh) is expected from \
-             the w(L) shown: the beam theory's envelope at this force (docs/theory.md (V2)). \
-             'not calibrated': mu P L / (2 E h) beyond the measured range; 'w/L too big': \
-             the bound passes 10 %, deflections far beyond those measured",
-        ))
+        let help = match (validity.expected_error, validity.linear_geometry_error) {
+            (Some(nlgeom), Some(linear)) => format!(
+                "how far continuum FE of these beams (plane stress, fine mesh) is expected from \
+                 the w(L) shown, in either kinematics: {} % with NLGEOM (large rotations, (V2)), \
+                 {} % in linear geometry (V2L: wider beyond first slip, where a linear run's \
+                 upright pressure acts on the turning faces); docs/theory.md. 'not calibrated': \
+                 mu P L / (2 E h) beyond the measured range; 'w/L too big': the bound passes \
+                 10 %, deflections far beyond those measured",
+                number_with(100.0 * nlgeom, 2),
+                number_with(100.0 * linear, 2)
+            ),
+            _ => "how far continuum FE of these beams is expected from the w(L) shown, with \
+                  NLGEOM (V2) or in linear geometry (V2L): 'not calibrated': mu P L / (2 E h) is \
+                  beyond the measured range (docs/theory.md)"
+                .to_string(),
+        };
+        Some(SummaryLine::plain(text, help))
     }
 
     fn summary_lines(model: &Self::Model, _continuum: &ContinuumState) -> Vec<SummaryLine> {

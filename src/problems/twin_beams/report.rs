@@ -206,8 +206,13 @@ pub struct BeamRow {
     /// `vs_continuum_within_fraction`, kept one release for scripts that read it.
     pub vs_continuum_within: Option<f64>,
     /// The same bound under the name that says its unit (a fraction: 0.034 is 3.4 %). Added
-    /// last, so no column moves.
+    /// last, so no column moves. Deprecated: the same value as
+    /// `vs_continuum_nlgeom_within_fraction`, which names its kinematics.
     pub vs_continuum_within_fraction: Option<f64>,
+    /// The (V2) bound for continuum FE with large rotations (`NLGEOM`), a fraction. Added last.
+    pub vs_continuum_nlgeom_within_fraction: Option<f64>,
+    /// The (V2L) bound for continuum FE in linear geometry, a fraction. Added last.
+    pub vs_continuum_linear_within_fraction: Option<f64>,
 }
 
 impl From<&BeamPoint> for BeamRow {
@@ -222,6 +227,8 @@ impl From<&BeamPoint> for BeamRow {
             beam_theory: p.validity.theory.key(),
             vs_continuum_within: p.validity.expected_error,
             vs_continuum_within_fraction: p.validity.expected_error,
+            vs_continuum_nlgeom_within_fraction: p.validity.expected_error,
+            vs_continuum_linear_within_fraction: p.validity.linear_geometry_error,
         }
     }
 }
@@ -434,21 +441,34 @@ pub struct BeamTheoryReport {
     pub shear_deflection_share: f64,
     /// The same share under the name that says its unit (0.019 is 1.9 %).
     pub shear_deflection_share_fraction: f64,
-    /// Bound on the difference from continuum FE, a fraction; absent where (V2) is not calibrated.
-    /// Deprecated: the same value as `vs_continuum_within_fraction`, kept one release.
+    /// Bound on the difference from continuum FE with `NLGEOM`, a fraction; absent where (V2) is
+    /// not calibrated. Deprecated: the same value as `vs_continuum_nlgeom_within_fraction`.
     #[serde(
         rename = "vs_continuum_within",
         skip_serializing_if = "Option::is_none"
     )]
     pub expected_error: Option<f64>,
     /// The same bound under the name that says its unit, as `sweep beam`'s column: a fraction
-    /// (0.03 is 3 %); absent where (V2) is not calibrated.
+    /// (0.03 is 3 %); absent where (V2) is not calibrated. Deprecated: the same value as
+    /// `vs_continuum_nlgeom_within_fraction`, which names its kinematics.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub vs_continuum_within_fraction: Option<f64>,
+    /// (V2): the bound for continuum FE with large rotations (CalculiX's `NLGEOM`, on which it
+    /// was calibrated), a fraction; absent where (V2) is not calibrated.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vs_continuum_nlgeom_within_fraction: Option<f64>,
+    /// (V2L): the bound for continuum FE in linear geometry, a fraction (wider beyond first
+    /// slip); absent where (V2) is not calibrated.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vs_continuum_linear_within_fraction: Option<f64>,
     /// The friction strain mu P L / (2 E h) that decides whether (V2) is calibrated.
     pub friction_strain: f64,
+    /// The level of the `NLGEOM` bound (V2).
     #[serde(serialize_with = "validity_label")]
     pub validity: Validity,
+    /// The level of the linear-geometry bound (V2L).
+    #[serde(serialize_with = "validity_label")]
+    pub validity_linear_geometry: Validity,
 }
 
 fn theory_key<S: Serializer>(theory: &BeamTheory, s: S) -> Result<S::Ok, S::Error> {
@@ -486,8 +506,14 @@ impl BeamReport {
                 shear_deflection_share_fraction: row.validity.shear_share,
                 expected_error: row.validity.expected_error,
                 vs_continuum_within_fraction: row.validity.expected_error,
+                vs_continuum_nlgeom_within_fraction: row.validity.expected_error,
+                vs_continuum_linear_within_fraction: row.validity.linear_geometry_error,
                 friction_strain: row.validity.friction_strain,
                 validity: row.validity.validity,
+                validity_linear_geometry: row
+                    .validity
+                    .linear_geometry_error
+                    .map_or(Validity::NotCalibrated, Validity::of_error),
             },
             continuum: None,
         }
@@ -545,13 +571,27 @@ impl BeamReport {
             ),
             BeamTheory::Timoshenko => String::new(),
         };
-        let envelope = match v.expected_error {
-            Some(bound) => format!(
-                "regularized w(L) within {} % of continuum FE (docs/theory.md (V2)): {}{left_out}",
+        let envelope = match (v.expected_error, v.vs_continuum_linear_within_fraction) {
+            (Some(bound), Some(linear))
+                if number_with(100.0 * linear, 2) != number_with(100.0 * bound, 2) =>
+            {
+                format!(
+                    "regularized w(L) within {} % of continuum FE with NLGEOM (large rotations; \
+                     {}), within {} % of one in linear geometry ({}) (docs/theory.md (V2), \
+                     (V2L)){left_out}",
+                    number_with(100.0 * bound, 2),
+                    v.validity.label(),
+                    number_with(100.0 * linear, 2),
+                    Validity::of_error(linear).label()
+                )
+            }
+            (Some(bound), _) => format!(
+                "regularized w(L) within {} % of continuum FE, with NLGEOM or in linear geometry \
+                 (docs/theory.md (V2)): {}{left_out}",
                 number_with(100.0 * bound, 2),
                 v.validity.label()
             ),
-            None => format!(
+            (None, _) => format!(
                 "regularized w(L) against continuum FE: {} (docs/theory.md (V2)){left_out}\n  \
                  the friction strain mu P L / (2 E h) = {} is beyond the {} up to which (V2) was \
                  measured to hold: check with a continuum model",
@@ -587,7 +627,8 @@ mod tests {
         assert_eq!(
             header::<BeamRow>(),
             "F_N,w_coulomb_mm,w_regularized_mm,X_mm,regime_coulomb,regime_regularized,beam_theory,\
-             vs_continuum_within,vs_continuum_within_fraction"
+             vs_continuum_within,vs_continuum_within_fraction,vs_continuum_nlgeom_within_fraction,\
+             vs_continuum_linear_within_fraction"
         );
     }
 

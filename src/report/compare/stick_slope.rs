@@ -109,8 +109,11 @@ pub struct KinematicsReport {
     /// The same in words.
     #[serde(skip)]
     pub words: &'static str,
-    /// The kinematics the closed form's envelope was calibrated on.
+    /// The kinematics of the closed form's envelope applied to the run (`nlgeom`, `linear`), or
+    /// of the first calibrated one where none applies.
     pub envelope_calibrated_on: &'static str,
+    /// Every kinematics the problem states an envelope for, the narrowest first.
+    pub envelopes_calibrated_on: Vec<&'static str>,
     /// Whether the envelope was applied (false where the run's kinematics is another).
     pub envelope_applies: bool,
     /// In words.
@@ -142,41 +145,67 @@ pub fn combined_kinematics(runs: &[RunEvidence]) -> Kinematics {
     }
 }
 
-/// Whether an envelope calibrated on `calibrated` applies to a run of `kinematics`: where they
-/// are the same, and where the run's is not stated (a CSV without `--kinematics`: judged as
-/// calibrated, and said).
-pub fn envelope_applies(kinematics: Kinematics, calibrated: Kinematics) -> bool {
-    kinematics == calibrated || kinematics == Kinematics::NotStated
+/// The kinematics of the envelope (of those `calibrated` on, the narrowest first) a run of
+/// `kinematics` is judged against: its own where the problem states one; for a run whose
+/// kinematics is not stated (a CSV without `--kinematics`), the widest, which holds for every
+/// kinematics calibrated (and the report says so); none for another (mixed steps, or a
+/// kinematics the problem was not calibrated on).
+pub fn applied_envelope(kinematics: Kinematics, calibrated: &[Kinematics]) -> Option<Kinematics> {
+    if calibrated.contains(&kinematics) {
+        Some(kinematics)
+    } else if kinematics == Kinematics::NotStated {
+        calibrated.last().copied()
+    } else {
+        None
+    }
+}
+
+/// Whether an envelope applies to a run of `kinematics` ([`applied_envelope`]).
+pub fn envelope_applies(kinematics: Kinematics, calibrated: &[Kinematics]) -> bool {
+    applied_envelope(kinematics, calibrated).is_some()
 }
 
 /// The kinematics section.
-pub fn kinematics_report(kinematics: Kinematics, calibrated: Kinematics) -> KinematicsReport {
-    let applies = envelope_applies(kinematics, calibrated);
-    let text = if kinematics == Kinematics::NotStated {
-        format!(
-            "kinematics: not stated (give --kinematics nlgeom|linear); the envelope is applied as \
-             calibrated, on {} runs",
-            calibrated.words()
-        )
-    } else if applies {
-        format!(
+pub fn kinematics_report(kinematics: Kinematics, calibrated: &[Kinematics]) -> KinematicsReport {
+    let applied = applied_envelope(kinematics, calibrated);
+    let on: Vec<&str> = calibrated.iter().map(|k| k.words()).collect();
+    let on = on.join(" and ");
+    let text = match applied {
+        Some(envelope) if kinematics == Kinematics::NotStated => {
+            let widest = if calibrated.len() > 1 {
+                ", the widest, which holds in each"
+            } else {
+                ""
+            };
+            format!(
+                "kinematics: not stated (give --kinematics nlgeom|linear); the envelope applied \
+                 is the one calibrated on {} runs{widest}",
+                envelope.words()
+            )
+        }
+        Some(_) if calibrated.len() > 1 => format!(
+            "kinematics: {}, judged against the envelope calibrated on such runs (the problem \
+             states one for {on})",
+            kinematics.words()
+        ),
+        Some(_) => format!(
             "kinematics: {}, as the envelope was calibrated on",
             kinematics.words()
-        )
-    } else {
-        format!(
-            "kinematics: {}; the envelope was calibrated on {} runs only: not calibrated for {}, \
-             so the closed form is not judged against it",
+        ),
+        None => format!(
+            "kinematics: {}; the envelope was calibrated on {on} runs only: not calibrated for \
+             {}, so the closed form is not judged against it",
             kinematics.words(),
-            calibrated.words(),
             kinematics.words()
-        )
+        ),
     };
+    let shown = applied.or(calibrated.first().copied());
     KinematicsReport {
         kinematics: kinematics.label(),
         words: kinematics.words(),
-        envelope_calibrated_on: calibrated.label(),
-        envelope_applies: applies,
+        envelope_calibrated_on: shown.map_or("none", Kinematics::label),
+        envelopes_calibrated_on: calibrated.iter().map(|k| k.label()).collect(),
+        envelope_applies: applied.is_some(),
         text,
     }
 }
@@ -463,7 +492,7 @@ mod tests {
         add_to_summary(
             &mut s,
             &slope("does not agree", 660.0),
-            &kinematics_report(Kinematics::Nlgeom, Kinematics::Nlgeom),
+            &kinematics_report(Kinematics::Nlgeom, &[Kinematics::Nlgeom]),
         );
         assert!(!s.agrees);
         assert_eq!(
@@ -477,7 +506,7 @@ mod tests {
         add_to_summary(
             &mut s,
             &slope("agrees", 600.1),
-            &kinematics_report(Kinematics::Linear, Kinematics::Linear),
+            &kinematics_report(Kinematics::Linear, &[Kinematics::Linear]),
         );
         assert!(s.agrees);
         assert!(
@@ -494,7 +523,7 @@ mod tests {
 
     #[test]
     fn the_section_goes_before_the_verdict() {
-        let k = kinematics_report(Kinematics::Linear, Kinematics::Nlgeom);
+        let k = kinematics_report(Kinematics::Linear, &[Kinematics::Nlgeom]);
         assert!(!k.envelope_applies);
         assert!(
             k.text.contains("not calibrated for linear geometry"),
@@ -508,6 +537,40 @@ mod tests {
         );
         assert!(text.starts_with("table\n\nStick slope used"), "{text}");
         assert!(text.ends_with("\nVerdict: agrees. x.\n"), "{text}");
-        assert!(envelope_applies(Kinematics::NotStated, Kinematics::Nlgeom));
+        assert!(envelope_applies(
+            Kinematics::NotStated,
+            &[Kinematics::Nlgeom]
+        ));
+    }
+
+    /// A problem with an envelope per kinematics judges each run against its own; a run that
+    /// does not say gets the widest (listed last); mixed steps get none.
+    #[test]
+    fn each_kinematics_gets_its_own_envelope_and_an_unstated_one_the_widest() {
+        let both = [Kinematics::Nlgeom, Kinematics::Linear];
+        assert_eq!(
+            applied_envelope(Kinematics::Nlgeom, &both),
+            Some(Kinematics::Nlgeom)
+        );
+        assert_eq!(
+            applied_envelope(Kinematics::Linear, &both),
+            Some(Kinematics::Linear)
+        );
+        assert_eq!(
+            applied_envelope(Kinematics::NotStated, &both),
+            Some(Kinematics::Linear)
+        );
+        assert_eq!(applied_envelope(Kinematics::Mixed, &both), None);
+        let unstated = kinematics_report(Kinematics::NotStated, &both);
+        assert!(unstated.text.contains("the widest"), "{}", unstated.text);
+        assert_eq!(unstated.envelope_calibrated_on, "linear");
+        let mixed = kinematics_report(Kinematics::Mixed, &both);
+        assert!(
+            mixed
+                .text
+                .contains("calibrated on NLGEOM (large rotations) and linear geometry runs only"),
+            "{}",
+            mixed.text
+        );
     }
 }

@@ -312,7 +312,7 @@ pub fn draw_explanation(frame: &mut Frame, app: &App, area: Rect, line: usize) {
         return;
     };
     let width = area.width.saturating_sub(36).clamp(40, 80);
-    let text = wrap_words(chosen.meaning, usize::from(width) - 4);
+    let text = wrap_words(&chosen.meaning, usize::from(width) - 4);
     let height = text.len() as u16 + 4;
     let popup = Rect {
         x: area.x + area.width.saturating_sub(width + 1),

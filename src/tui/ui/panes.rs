@@ -138,7 +138,7 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
         }
         lines.push(Line::from(spans));
         if room {
-            for chunk in wrap_words(line.meaning, width) {
+            for chunk in wrap_words(&line.meaning, width) {
                 lines.push(Line::from(Span::styled(
                     format!("   {chunk}"),
                     theme.style(Role::Muted),
