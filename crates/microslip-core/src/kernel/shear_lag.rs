@@ -1,5 +1,5 @@
 //! The shear lag of two bars coupled through one frictional interface (docs/theory.md section 9,
-//! (L1)-(L10), written for any two bars in section 12, (S1)): the closed forms the double-lap
+//! (L1)-(L10), written for any two bars in section 18, (S1)): the closed forms the double-lap
 //! joint and the press fit share.
 //!
 //! Two bars lie side by side over [0, L], joined along an interface of width w (the lap joint's
@@ -502,5 +502,91 @@ pub fn zones_regime(law: Law, a: f64, d: f64, length: f64) -> Regime {
         (false, true) => Regime::from_zones(&[middle, Zone::Macroslip]),
         (true, false) => Regime::from_zones(&[Zone::Macroslip, middle]),
         (false, false) => Regime::from_zones(&[middle]),
+    }
+}
+
+/// One law's cycle between +amplitude and -amplitude of a [`ShearLag`] under Masing's rule
+/// (docs/theory.md (L9)), with the lever `arm` from the interface's force to the load (1 for a
+/// force, r for the press fit's torque): the virgin curve, the peak, the dissipation (L10) and
+/// the secant stiffness that each problem's `MasingCycle` hands on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShearLagCycle {
+    lag: ShearLag,
+    law: Law,
+    arm: f64,
+    /// The state at the turning point.
+    peak: ShearLagState,
+}
+
+impl ShearLagCycle {
+    /// The cycle of `lag` under `law` with amplitude `load` (in the load's unit, checked by the
+    /// caller: 0 <= load <= arm F_gross).
+    pub fn new(lag: &ShearLag, law: Law, arm: f64, load: f64) -> ShearLagCycle {
+        ShearLagCycle {
+            lag: *lag,
+            law,
+            arm,
+            peak: lag.solve(law, load / arm),
+        }
+    }
+
+    /// The amplitude (the load's unit).
+    pub fn amplitude(&self) -> f64 {
+        self.peak.force() * self.arm
+    }
+
+    /// Where sliding starts on first loading: F_1 (times the arm) under the regularized law, 0
+    /// under plain Coulomb (both ends slide from the first newton, (L7)).
+    pub fn onset(&self) -> f64 {
+        match self.law {
+            Law::Coulomb => 0.0,
+            Law::Regularized => self.lag.first_slip_force() * self.arm,
+        }
+    }
+
+    /// The accepted interface force nearest to `load` over the arm: 0 for NaN, F_gross above.
+    fn clamped(&self, load: f64) -> f64 {
+        let force = if load.is_nan() { 0.0 } else { load / self.arm };
+        force.clamp(0.0, self.lag.bars.gross_slip_force())
+    }
+
+    /// The virgin curve (the response's unit), odd in the load; beyond the gross load taken at
+    /// it (the branches never ask for more than the amplitude).
+    pub fn virgin(&self, load: f64) -> f64 {
+        let state = self.lag.solve(self.law, self.clamped(load.abs()));
+        (state.end_displacement() / self.arm).copysign(load)
+    }
+
+    /// The peak response.
+    pub fn peak_response(&self) -> f64 {
+        self.peak.end_displacement() / self.arm
+    }
+
+    /// (L10): the friction work of the plastic slip at the turning point; 0 while nothing
+    /// slides.
+    pub fn dissipation(&self) -> f64 {
+        self.peak.cycle_dissipation()
+    }
+
+    /// Peak elastic energy U = amplitude x peak response / 2, the secant definition.
+    pub fn peak_energy(&self) -> f64 {
+        0.5 * self.amplitude() * self.peak_response()
+    }
+
+    /// Secant stiffness amplitude / peak response; at zero amplitude the initial slope: the
+    /// bonded one under Coulomb (its slip grows as the load squared), the elastic one under the
+    /// regularized law.
+    pub fn secant_stiffness(&self) -> f64 {
+        let response = self.peak_response();
+        if response > 0.0 {
+            return self.amplitude() / response;
+        }
+        match self.law {
+            Law::Coulomb => self.arm * self.arm / self.lag.bonded_compliance(),
+            Law::Regularized => {
+                let probe = self.clamped(0.5 * self.lag.first_slip_force() * self.arm);
+                probe * self.arm / (self.lag.regularized(probe).end_displacement() / self.arm)
+            }
+        }
     }
 }

@@ -119,6 +119,11 @@ impl LapJoint {
         self.params
     }
 
+    /// The shear lag of its two bars (the kernel's, [`ShearLag`]).
+    pub(crate) fn shear_lag(&self) -> &ShearLag {
+        &self.lag
+    }
+
     /// The same joint with another K_T (MPa/mm); validated like [`LapJoint::new`].
     ///
     /// # Errors
