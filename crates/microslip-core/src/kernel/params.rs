@@ -21,12 +21,14 @@ pub enum Unit {
     /// Newton per millimetre: a line load, per unit length of a plane-strain body (the
     /// Hertzian cylinder's P and Q).
     NewtonPerMillimetre,
+    /// Newton millimetre: a torque (the press fit's T).
+    NewtonMillimetre,
     /// No unit.
     Dimensionless,
 }
 
 impl Unit {
-    /// The symbol: `mm`, `N`, `MPa`, `MPa/mm`, `N/mm`, or `-` for dimensionless.
+    /// The symbol: `mm`, `N`, `MPa`, `MPa/mm`, `N/mm`, `N mm`, or `-` for dimensionless.
     pub fn symbol(self) -> &'static str {
         match self {
             Unit::Millimetre => "mm",
@@ -34,6 +36,7 @@ impl Unit {
             Unit::Megapascal => "MPa",
             Unit::MegapascalPerMillimetre => "MPa/mm",
             Unit::NewtonPerMillimetre => "N/mm",
+            Unit::NewtonMillimetre => "N mm",
             Unit::Dimensionless => "-",
         }
     }
@@ -55,6 +58,7 @@ impl Unit {
             Unit::Megapascal => "MPa",
             Unit::MegapascalPerMillimetre => "MPa_per_mm",
             Unit::NewtonPerMillimetre => "N_per_mm",
+            Unit::NewtonMillimetre => "N_mm",
             Unit::Dimensionless => "",
         }
     }

@@ -309,6 +309,16 @@ impl TwoBarFe {
         self.interpolate(x, |i| self.converged.get(i).map_or(0.0, |r| r.stress))
     }
 
+    /// The largest |tau| over the interface's points at the last converged step (MPa); 0 before
+    /// the first. Below the first sliding the model is linear, so mu P over this at a small
+    /// load, times that load, is the model's own F_1.
+    pub fn peak_shear(&self) -> f64 {
+        self.converged
+            .iter()
+            .map(|r| r.stress.abs())
+            .fold(0.0, f64::max)
+    }
+
     /// Plastic slip (the sliders' displacement) at any x in [0, L] (mm), linear between nodes:
     /// the history a load path leaves behind; 0 wherever no point has slid.
     pub fn plastic_slip_at(&self, x: f64) -> f64 {
