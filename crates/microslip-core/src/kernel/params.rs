@@ -443,6 +443,19 @@ impl ParamSpec {
         ParamSpec { note, ..self }
     }
 
+    /// The refusal of `value`, inside this parameter's own domain but above `max`, a bound the
+    /// other inputs set (the lap joint's and the press fit's F_gross), with `reason` saying it:
+    /// `invalid F = 7000: must be in [0, 6000] N (F_gross = ...: ...)`.
+    pub fn above(self, value: f64, max: f64, reason: &'static str) -> ParamError {
+        ParamError {
+            field: self.name,
+            value,
+            domain: Domain::NonNegative { max },
+            unit: self.unit,
+            reason: Some(reason),
+        }
+    }
+
     /// The same spec with its usual range set to `[low, high]`.
     pub const fn usual(self, low: f64, high: f64) -> ParamSpec {
         ParamSpec {

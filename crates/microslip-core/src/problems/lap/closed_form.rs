@@ -18,7 +18,7 @@
 //! two faces' 2 b) and names its results in the joint's words.
 
 pub use super::params::LapParams;
-use crate::kernel::params::{Domain, ParamError};
+use crate::kernel::params::ParamError;
 use crate::kernel::regime::{Law, Regime};
 pub use crate::kernel::shear_lag::zones_regime;
 use crate::kernel::shear_lag::{ShearLag, ShearLagState, SlipStart, TwoBars};
@@ -144,15 +144,11 @@ impl LapJoint {
         let newtons = LapParam::Force.check(newtons)?;
         let gross = self.gross_slip_force();
         if newtons > gross {
-            let spec = LapParam::Force.spec();
-            return Err(ParamError {
-                field: spec.name,
-                value: newtons,
-                domain: Domain::NonNegative { max: gross },
-                unit: spec.unit,
-                reason: None,
-            }
-            .because("F_gross = 2 b mu P L: the joint slides through beyond it"));
+            return Err(LapParam::Force.spec().above(
+                newtons,
+                gross,
+                "F_gross = 2 b mu P L: the joint slides through beyond it",
+            ));
         }
         Ok(JointForce(newtons))
     }

@@ -275,20 +275,13 @@ impl FitAxis {
         let value = param.check(value)?;
         let gross = self.gross_load();
         if value > gross {
-            let spec = param.spec();
-            return Err(ParamError {
-                field: spec.name,
-                value,
-                domain: Domain::NonNegative { max: gross },
-                unit: spec.unit,
-                reason: None,
-            }
-            .because(match self.load {
+            let reason = match self.load {
                 FitLoad::Axial => "F_gross = mu p 2 pi r L: the shaft slides out beyond it",
                 FitLoad::Torque => {
                     "T_gross = mu p 2 pi r^2 L: the shaft turns in the hub beyond it"
                 }
-            }));
+            };
+            return Err(param.spec().above(value, gross, reason));
         }
         Ok(CarriedLoad(value))
     }

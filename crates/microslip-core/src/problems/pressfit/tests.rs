@@ -486,3 +486,36 @@ fn the_preset_file_is_the_bundled_fit() {
     assert!(fit.torsion().load(value("T")).is_ok());
     assert!((fit.gross_slip_force() - 1371.0).abs() < 1e-3);
 }
+
+/// The quantities a target can be set on are the states' own numbers.
+#[test]
+fn the_quantities_are_the_states_numbers() {
+    use crate::problems::Quantity;
+    use crate::problems::load_driven::MasingCycle;
+    let fit = PressFit::new(PressFitParams::CCX98).unwrap();
+    let force = fit.force(0.9 * fit.gross_slip_force()).unwrap();
+    let (coulomb, regularized) = (fit.coulomb(force), fit.regularized(force));
+    let cycle = super::cycle::FitCycle::new(fit.axial(), Law::Regularized, force);
+    let q = |quantity| super::quantity(&fit, force, quantity).unwrap();
+    assert_eq!(q(Quantity::Response), regularized.response());
+    assert_eq!(
+        q(Quantity::SlideFromStart),
+        regularized.slide_from_loaded_face()
+    );
+    assert_eq!(
+        q(Quantity::SlideFromEnd),
+        regularized.slide_from_held_face()
+    );
+    assert_eq!(
+        q(Quantity::Ratio),
+        regularized.response() / coulomb.response()
+    );
+    assert_eq!(q(Quantity::FirstMacroslipForce), fit.first_slip_force());
+    assert_eq!(q(Quantity::Dissipation), regularized.cycle_dissipation());
+    assert_eq!(q(Quantity::DampingRatio), cycle.damping_ratio());
+    assert!(q(Quantity::Dissipation) > 0.0);
+    assert_eq!(super::quantity(&fit, force, Quantity::MicroEnd), None);
+    // Zero load: no ratio.
+    let zero = fit.force(0.0).unwrap();
+    assert_eq!(super::quantity(&fit, zero, Quantity::Ratio), None);
+}
