@@ -63,25 +63,29 @@ mod tests {
 
     /// The general Lamé solution of one cylinder a <= rho <= b loaded by pressures p_a inside
     /// and p_b outside: sigma_rho = A - B / rho^2, sigma_theta = A + B / rho^2, with the two
-    /// boundary conditions solved here as a 2x2 system (not the closed compliances above), and
-    /// the radial displacement u = rho eps_theta from Hooke's law in plane stress,
-    /// eps_theta = (sigma_theta - nu sigma_rho) / E. Returns u at `rho`.
-    fn displacement(a: f64, b: f64, p_a: f64, p_b: f64, e: f64, nu: f64, rho: f64) -> f64 {
-        // sigma_rho(a) = -p_a, sigma_rho(b) = -p_b: A - B/a^2 = -p_a, A - B/b^2 = -p_b.
+    /// boundary conditions sigma_rho(a) = -p_a, sigma_rho(b) = -p_b solved here as a 2x2 system
+    /// (not the closed compliances above); a solid cylinder (a = 0) has B = 0. Returns
+    /// (sigma_rho, sigma_theta) at `rho`, after checking both boundary conditions.
+    fn stresses(a: f64, b: f64, p_a: f64, p_b: f64, rho: f64) -> (f64, f64) {
         let (x, y) = (1.0 / (a * a), 1.0 / (b * b));
         let (aa, bb) = if a == 0.0 {
-            // A solid cylinder: B = 0 (finite at the axis), A = -p_b.
             (-p_b, 0.0)
         } else {
             let bb = (p_b - p_a) / (y - x);
             (-p_a + bb * x, bb)
         };
-        let (sr, st) = (aa - bb / (rho * rho), aa + bb / (rho * rho));
-        // Both boundary conditions hold (a check of the 2x2 solve itself).
+        let scale = 1.0 + p_a.abs() + p_b.abs();
         if a > 0.0 {
-            assert!((aa - bb * x + p_a).abs() < 1e-9 * (1.0 + p_a.abs() + p_b.abs()));
+            assert!((aa - bb * x + p_a).abs() < 1e-9 * scale);
         }
-        assert!((aa - bb * y + p_b).abs() < 1e-9 * (1.0 + p_a.abs() + p_b.abs()));
+        assert!((aa - bb * y + p_b).abs() < 1e-9 * scale);
+        (aa - bb / (rho * rho), aa + bb / (rho * rho))
+    }
+
+    /// The radial displacement u = rho eps_theta at `rho` from Hooke's law in plane stress,
+    /// eps_theta = (sigma_theta - nu sigma_rho) / E.
+    fn displacement(a: f64, b: f64, p_a: f64, p_b: f64, e: f64, nu: f64, rho: f64) -> f64 {
+        let (sr, st) = stresses(a, b, p_a, p_b, rho);
         rho * (st - nu * sr) / e
     }
 
@@ -135,14 +139,7 @@ mod tests {
                 displacement(a, b, pa, pb, e1, nu1, r)
             };
             let direct = |a: f64, b: f64, pa: f64, pb: f64, e: f64, nu: f64| {
-                let (x, y) = (1.0 / (a * a), 1.0 / (b * b));
-                let (aa, bb) = if a == 0.0 {
-                    (-pb, 0.0)
-                } else {
-                    let bb = (pb - pa) / (y - x);
-                    (-pa + bb * x, bb)
-                };
-                let (sr, st) = (aa - bb / (r * r), aa + bb / (r * r));
+                let (sr, st) = stresses(a, b, pa, pb, r);
                 r * (1.0 + nu) / e * ((1.0 - nu) * st - nu * sr)
             };
             for (a, b, pa, pb, e, nu) in [

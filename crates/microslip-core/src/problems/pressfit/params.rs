@@ -61,6 +61,12 @@ impl PressFitParam {
         PressFitParam::Torque,
     ];
 
+    /// The fit's own keys, r to delta: what the loads and the interface (mu, K_T) leave.
+    pub const STRUCTURE: &'static [PressFitParam] = Self::ALL.split_at(9).0;
+
+    /// The push-out's keys, r to F: all but the torque.
+    pub const PUSH_OUT: &'static [PressFitParam] = Self::ALL.split_at(12).0;
+
     /// Key, unit, meaning, domain and step.
     pub fn spec(self) -> ParamSpec {
         const LENGTH: Domain = Domain::LENGTH;

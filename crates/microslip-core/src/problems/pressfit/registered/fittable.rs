@@ -11,17 +11,7 @@ use crate::problems::pressfit::params::{PressFitParam, PressFitParams};
 impl Fittable for PressFitProblem {
     const RESPONSE_COLUMN: &'static str = "Delta_mm";
     const FITTED: &'static str = "press fit";
-    const HELD: &'static [PressFitParam] = &[
-        PressFitParam::FitRadius,
-        PressFitParam::BoreRadius,
-        PressFitParam::OuterRadius,
-        PressFitParam::Length,
-        PressFitParam::ShaftModulus,
-        PressFitParam::ShaftPoisson,
-        PressFitParam::HubModulus,
-        PressFitParam::HubPoisson,
-        PressFitParam::Interference,
-    ];
+    const HELD: &'static [PressFitParam] = PressFitParam::STRUCTURE;
 
     fn interface_of(fit: &PressFit) -> (f64, f64) {
         let p = fit.params();

@@ -18,28 +18,14 @@ use super::params::PressFitParam;
 use super::{PUSH_OUT_BOUND, QUANTITIES};
 use crate::problems::{Description, Param};
 
-/// Every parameter of the push-out, in display order (the torque, `T`, belongs to the torsion's
-/// problem: REGISTRATION.md).
-pub(crate) const KEYS: [PressFitParam; 12] = [
-    PressFitParam::FitRadius,
-    PressFitParam::BoreRadius,
-    PressFitParam::OuterRadius,
-    PressFitParam::Length,
-    PressFitParam::ShaftModulus,
-    PressFitParam::ShaftPoisson,
-    PressFitParam::HubModulus,
-    PressFitParam::HubPoisson,
-    PressFitParam::Interference,
-    PressFitParam::Friction,
-    PressFitParam::Stiffness,
-    PressFitParam::Force,
-];
-
-const PARAMS: [Param; 12] = {
-    let mut all = [Param::PressFit(KEYS[0]); 12];
+/// Every parameter of the push-out as a [`Param`], in display order (the torque, `T`, belongs to
+/// the torsion's problem: REGISTRATION.md).
+const PARAMS: [Param; PressFitParam::PUSH_OUT.len()] = {
+    let keys = PressFitParam::PUSH_OUT;
+    let mut all = [Param::PressFit(keys[0]); PressFitParam::PUSH_OUT.len()];
     let mut i = 0;
     while i < all.len() {
-        all[i] = Param::PressFit(KEYS[i]);
+        all[i] = Param::PressFit(keys[i]);
         i += 1;
     }
     all

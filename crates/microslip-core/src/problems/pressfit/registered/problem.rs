@@ -36,7 +36,7 @@ pub struct PressFitModel {
 }
 
 impl ParamKey for PressFitParam {
-    const KEYS: &'static [PressFitParam] = &super::KEYS;
+    const KEYS: &'static [PressFitParam] = PressFitParam::PUSH_OUT;
 
     fn spec(self) -> ParamSpec {
         PressFitParam::spec(self)
@@ -60,7 +60,7 @@ impl Problem for PressFitProblem {
     }
 
     fn slot(params: &mut PressFitInputs, index: usize) -> Option<&mut f64> {
-        match *super::KEYS.get(index)? {
+        match *PressFitParam::PUSH_OUT.get(index)? {
             PressFitParam::Force => Some(&mut params.force),
             param => params.structure.value_mut(param),
         }
