@@ -21,12 +21,14 @@ pub enum Unit {
     /// Newton per millimetre: a line load, per unit length of a plane-strain body (the
     /// Hertzian cylinder's P and Q).
     NewtonPerMillimetre,
+    /// Newton millimetre: a torque (the press fit's T).
+    NewtonMillimetre,
     /// No unit.
     Dimensionless,
 }
 
 impl Unit {
-    /// The symbol: `mm`, `N`, `MPa`, `MPa/mm`, `N/mm`, or `-` for dimensionless.
+    /// The symbol: `mm`, `N`, `MPa`, `MPa/mm`, `N/mm`, `N mm`, or `-` for dimensionless.
     pub fn symbol(self) -> &'static str {
         match self {
             Unit::Millimetre => "mm",
@@ -34,6 +36,7 @@ impl Unit {
             Unit::Megapascal => "MPa",
             Unit::MegapascalPerMillimetre => "MPa/mm",
             Unit::NewtonPerMillimetre => "N/mm",
+            Unit::NewtonMillimetre => "N mm",
             Unit::Dimensionless => "-",
         }
     }
@@ -55,6 +58,7 @@ impl Unit {
             Unit::Megapascal => "MPa",
             Unit::MegapascalPerMillimetre => "MPa_per_mm",
             Unit::NewtonPerMillimetre => "N_per_mm",
+            Unit::NewtonMillimetre => "N_mm",
             Unit::Dimensionless => "",
         }
     }
@@ -437,6 +441,19 @@ impl ParamSpec {
     /// The same spec with `note` shown beside its value.
     pub(crate) const fn noted(self, note: &'static str) -> ParamSpec {
         ParamSpec { note, ..self }
+    }
+
+    /// The refusal of `value`, inside this parameter's own domain but above `max`, a bound the
+    /// other inputs set (the lap joint's and the press fit's F_gross), with `reason` saying it:
+    /// `invalid F = 7000: must be in [0, 6000] N (F_gross = ...: ...)`.
+    pub fn above(self, value: f64, max: f64, reason: &'static str) -> ParamError {
+        ParamError {
+            field: self.name,
+            value,
+            domain: Domain::NonNegative { max },
+            unit: self.unit,
+            reason: Some(reason),
+        }
     }
 
     /// The same spec with its usual range set to `[low, high]`.

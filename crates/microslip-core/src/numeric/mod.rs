@@ -14,6 +14,7 @@ pub(crate) mod interface;
 pub mod mesh;
 pub(crate) mod newton;
 pub(crate) mod q8;
+pub mod two_bar;
 pub(crate) mod two_body;
 
 pub use error::NumericError;

@@ -168,6 +168,7 @@ pub mod lap;
 pub mod load_driven;
 pub mod plate;
 pub mod pointwise;
+pub mod pressfit;
 pub mod problem;
 pub mod profiled;
 pub mod quantity;

@@ -11,12 +11,17 @@
 //! length `d` from x = L (either may be empty), where tau = mu P and the slip is a parabola, and
 //! between them a zone that sticks (Coulomb) or deforms elastically (regularized law) with slopes
 //! `p` at its start and `q` at its end (s'(a) = -p, s'(L - d) = q).
+//!
+//! That shape is the shear lag of any two bars coupled through one interface, which the press fit
+//! shares: it is solved once in [`crate::kernel::shear_lag`], and this file maps the joint onto it
+//! (the inner plate is the bar loaded at x = L, the covers the bar held at x = 0, the width the
+//! two faces' 2 b) and names its results in the joint's words.
 
 pub use super::params::LapParams;
-use crate::kernel::hyperbolic::{cosh_sinh_ratio, one_minus_tanhc, sech, tanhc};
-use crate::kernel::params::{Domain, ParamError};
-use crate::kernel::regime::{Law, Regime, Zone};
-use crate::kernel::solve::{find_root_in_bracket, find_root_newton};
+use crate::kernel::params::ParamError;
+use crate::kernel::regime::{Law, Regime};
+pub use crate::kernel::shear_lag::zones_regime;
+use crate::kernel::shear_lag::{ShearLag, ShearLagState, SlipStart, TwoBars};
 use crate::problems::Solution;
 use crate::problems::lap::params::LapParam;
 
@@ -24,19 +29,9 @@ use crate::problems::lap::params::LapParam;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LapJoint {
     params: LapParams,
-    /// k1 = E1 t1 (N/mm): the inner plate's axial stiffness per unit width.
-    k1: f64,
-    /// K2 = 2 E2 t2 (N/mm): both covers' axial stiffness per unit width.
-    k2: f64,
-    /// c = 1/k1 + 1/K2 (mm/N).
-    c: f64,
-    /// lambda = sqrt(2 c K_T) (1/mm): inverse length of the elastic slip's decay (L2).
-    lambda: f64,
-    /// F_1 and F_2 (N), (L3) and (L4'): load-independent, so solved once here rather than at
-    /// every force (F_2 is a root).
-    slip_forces: (f64, f64),
-    /// The elastic length at F_2 (mm): with L at F_1, where (L4)'s root starts from.
-    second_elastic: f64,
+    /// The two bars of the shear lag: the inner plate (loaded at x = L) and both covers lumped
+    /// (held at x = 0), per unit interface width, over the two faces' width 2 b.
+    lag: ShearLag,
 }
 
 /// A validated force through the joint, 0 <= F <= F_gross (N).
@@ -104,28 +99,29 @@ impl LapJoint {
     /// ```
     pub fn new(params: LapParams) -> Result<Self, ParamError> {
         params.check()?;
-        let k1 = params.inner_stiffness();
-        let k2 = params.covers_stiffness();
-        let c = 1.0 / k1 + 1.0 / k2;
-        let lambda = (2.0 * c * params.tangential_stiffness).sqrt();
-        let mut joint = LapJoint {
-            params,
-            k1,
-            k2,
-            c,
-            lambda,
-            slip_forces: (0.0, 0.0),
-            second_elastic: 0.0,
-        };
-        let (second, elastic) = joint.solve_second_slip_force();
-        joint.slip_forces = (joint.solve_first_slip_force(), second);
-        joint.second_elastic = elastic;
-        Ok(joint)
+        // (L1) as two bars (kernel::shear_lag): per unit of the two faces' width 2 b, the inner
+        // plate's rigidity b k1 is k1 / 2 and the covers' b K2 is K2 / 2. Halving and doubling
+        // are exact, so every number is the one the per-width formulas of section 9 give.
+        let lag = ShearLag::new(TwoBars {
+            loaded: params.inner_stiffness() / 2.0,
+            held: params.covers_stiffness() / 2.0,
+            width: 2.0 * params.width,
+            length: params.length,
+            friction: params.friction,
+            pressure: params.pressure,
+            stiffness: params.tangential_stiffness,
+        });
+        Ok(LapJoint { params, lag })
     }
 
     /// The inputs this joint was built from.
     pub fn params(&self) -> LapParams {
         self.params
+    }
+
+    /// The shear lag of its two bars (the kernel's, [`ShearLag`]).
+    pub(crate) fn shear_lag(&self) -> &ShearLag {
+        &self.lag
     }
 
     /// The same joint with another K_T (MPa/mm); validated like [`LapJoint::new`].
@@ -148,15 +144,11 @@ impl LapJoint {
         let newtons = LapParam::Force.check(newtons)?;
         let gross = self.gross_slip_force();
         if newtons > gross {
-            let spec = LapParam::Force.spec();
-            return Err(ParamError {
-                field: spec.name,
-                value: newtons,
-                domain: Domain::NonNegative { max: gross },
-                unit: spec.unit,
-                reason: None,
-            }
-            .because("F_gross = 2 b mu P L: the joint slides through beyond it"));
+            return Err(LapParam::Force.spec().above(
+                newtons,
+                gross,
+                "F_gross = 2 b mu P L: the joint slides through beyond it",
+            ));
         }
         Ok(JointForce(newtons))
     }
@@ -178,40 +170,24 @@ impl LapJoint {
         force: JointForce,
         joint_displacement: f64,
     ) -> Option<f64> {
-        // K_T = min e^k, k in [0, ln(max / min)]: the root finder's bracket starts at 0.
-        let min = Domain::STIFFNESS.min();
-        let at = |k: f64| {
-            self.with_tangential_stiffness(min * k.exp())
-                .map(|j| j.regularized(force).joint_displacement())
-        };
-        let span = (Domain::STIFFNESS.max() / min).ln();
-        let (soft, stiff) = (at(0.0).ok()?, at(span).ok()?);
-        if !(joint_displacement > 0.0 && (stiff..=soft).contains(&joint_displacement)) {
-            return None;
-        }
-        // Relative misfit, so that the root finder sees numbers near 1 whatever the scale.
-        let k = find_root_in_bracket(
-            |k| at(k).map_or(f64::NAN, |d| d / joint_displacement - 1.0),
-            0.0,
-            span,
-        );
-        Some(min * k.exp())
+        self.lag
+            .stiffness_for_end_displacement(force.0, joint_displacement)
     }
 
     /// lambda = sqrt(2 c K_T) (1/mm), (L2): 1/lambda is the length over which the elastic slip
     /// decays from a loaded end.
     pub fn decay_rate(&self) -> f64 {
-        self.lambda
+        self.lag.decay_rate()
     }
 
     /// Coulomb stress mu P (MPa).
     pub fn coulomb_stress(&self) -> f64 {
-        self.params.friction * self.params.pressure
+        self.lag.coulomb_stress()
     }
 
     /// Saturation slip mu P / K_T (mm).
     pub fn saturation_slip(&self) -> f64 {
-        self.coulomb_stress() / self.params.tangential_stiffness
+        self.lag.saturation_slip()
     }
 
     /// F_gross = 2 b mu P L (N), (L6).
@@ -222,17 +198,15 @@ impl LapJoint {
     /// The bonded joint's compliance L / (b (k1 + K2)) (mm/N), (L6): both members strained alike,
     /// what remains of Delta / F when nothing slips.
     pub fn bonded_compliance(&self) -> f64 {
-        self.params.length / (self.params.width * (self.k1 + self.k2))
+        self.lag.bonded_compliance()
     }
 
     /// Which end slides first (L2).
     pub fn first_slip(&self) -> FirstSlip {
-        if self.k1 < self.k2 {
-            FirstSlip::CoverEnds
-        } else if self.k1 > self.k2 {
-            FirstSlip::InnerEnd
-        } else {
-            FirstSlip::BothEnds
+        match self.lag.slip_start() {
+            SlipStart::End => FirstSlip::CoverEnds,
+            SlipStart::Start => FirstSlip::InnerEnd,
+            SlipStart::Both => FirstSlip::BothEnds,
         }
     }
 
@@ -240,207 +214,58 @@ impl LapJoint {
     /// 2 c mu P b L tanhc(lambda L) / (1/k_s + sech(lambda L)/k_o), k_s the stiffness of the
     /// member loaded at the sliding end (the more compliant one).
     pub fn first_slip_force(&self) -> f64 {
-        self.slip_forces.0
-    }
-
-    fn solve_first_slip_force(&self) -> f64 {
-        let (soft, stiff) = (self.k1.min(self.k2), self.k1.max(self.k2));
-        let z = self.lambda * self.params.length;
-        2.0 * self.c * self.coulomb_stress() * self.params.width * self.params.length * tanhc(z)
-            / (1.0 / soft + sech(z) / stiff)
+        self.lag.first_slip_force()
     }
 
     /// (L4'): the force F_2 at which the other end starts sliding too (F_1 for a balanced joint):
     /// with the elastic zone l solving l + (l/2) tanhc(lambda l/2) (k_o - k_s)/k_s = L,
     /// F_2 = b k_o c mu P l tanhc(lambda l/2).
     pub fn second_slip_force(&self) -> f64 {
-        self.slip_forces.1
-    }
-
-    /// F_2 (N) and the elastic length there (mm).
-    fn solve_second_slip_force(&self) -> (f64, f64) {
-        let (soft, stiff) = (self.k1.min(self.k2), self.k1.max(self.k2));
-        let lambda = self.lambda;
-        let length = self.params.length;
-        let excess = (stiff - soft) / soft;
-        let elastic = find_root_in_bracket(
-            |l| l + 0.5 * l * tanhc(0.5 * lambda * l) * excess - length,
-            0.0,
-            length,
-        );
-        let force = self.params.width
-            * stiff
-            * self.c
-            * self.coulomb_stress()
-            * elastic
-            * tanhc(0.5 * lambda * elastic);
-        // F_2 <= F_gross = 2 b mu P L exactly (F_2 tends to it as one member's stiffness or
-        // lambda L tends to 0), but the product above rounds: a member a hundred million times
-        // the other's stiffness gave F_2 = 6000.000000000001 N over F_gross = 6000 N. A joint
-        // whose second end slides after the whole interface does is no joint: clamp.
-        (force.min(self.params.gross_slip_force()), elastic)
-    }
-
-    /// The slopes of the slip at the two ends that the force sets (L1), in units of 2 c mu P, so
-    /// lengths: G0 = g0 / (2 c mu P) at x = 0 and GL = gL / (2 c mu P) at x = L, with
-    /// G0 + GL = L F / F_gross.
-    fn end_slope_lengths(&self, force: f64) -> (f64, f64) {
-        let per_width = force / (self.params.width * 2.0 * self.c * self.coulomb_stress());
-        (per_width / self.k2, per_width / self.k1)
+        self.lag.second_slip_force()
     }
 
     /// Solution under plain Coulomb at `force` (L7): sliding zones a = G0 and d = GL, the rest
     /// sticks and carries no shear.
     pub fn coulomb(&self, force: JointForce) -> LapState {
-        let (g0, gl) = self.end_slope_lengths(force.0);
-        self.state(Law::Coulomb, force.0, g0, gl)
+        LapState(self.lag.coulomb(force.0))
     }
 
     /// Solution under the regularized law at `force`: all microslip up to F_1 (L2), one end
     /// sliding up to F_2 (L4), both beyond (L5), all sliding at F_gross (L6).
     pub fn regularized(&self, force: JointForce) -> LapState {
-        let f = force.0;
-        let (g0, gl) = self.end_slope_lengths(f);
-        let length = self.params.length;
-        let lambda = self.lambda;
-        let (a, d) = if f <= self.first_slip_force() {
-            (0.0, 0.0)
-        } else if f < self.second_slip_force() {
-            // (L4): the elastic length e from the end that still sticks; the sliding end's slope
-            // length and the other's.
-            let (sliding, other) = match self.first_slip() {
-                FirstSlip::InnerEnd => (g0, gl),
-                FirstSlip::CoverEnds | FirstSlip::BothEnds => (gl, g0),
-            };
-            // d/de [e (1 - tanhc(lambda e))] = tanh^2(lambda e); Newton from e interpolated
-            // between L at F_1 and the elastic length at F_2, certified and bracketed (it falls
-            // back to Brent's method on [0, L]).
-            let (f1, f2) = self.slip_forces;
-            let start = length + (self.second_elastic - length) * (f - f1) / (f2 - f1);
-            let elastic = find_root_newton(
-                |e| length - e * one_minus_tanhc(lambda * e) - sliding - other * sech(lambda * e),
-                |e| {
-                    let t = (lambda * e).tanh();
-                    -t * t + other * lambda * sech(lambda * e) * t
-                },
-                start,
-                0.0,
-                length,
-            );
-            match self.first_slip() {
-                FirstSlip::InnerEnd => (length - elastic, 0.0),
-                FirstSlip::CoverEnds | FirstSlip::BothEnds => (0.0, length - elastic),
-            }
-        } else {
-            // (L5): l (1 - tanhc(lambda l/2)) = L (1 - F/F_gross).
-            let remaining = (length - g0 - gl).max(0.0);
-            // phi(l) = l (1 - tanhc(lambda l/2)) grows with slope tanh^2(lambda l/2): like
-            // lambda^2 l^3 / 12 for short zones, like l - 2/lambda for long ones; Newton starts
-            // from the larger of the two estimates (phi is convex, so it then never overshoots
-            // below the root) and is certified and bracketed.
-            let start = (remaining + 2.0 / lambda)
-                .max((12.0 * remaining / (lambda * lambda)).cbrt())
-                .min(length);
-            let elastic = find_root_newton(
-                |l| l * one_minus_tanhc(0.5 * lambda * l) - remaining,
-                |l| {
-                    let t = (0.5 * lambda * l).tanh();
-                    t * t
-                },
-                start,
-                0.0,
-                length,
-            );
-            let half_t = 0.5 * elastic * tanhc(0.5 * lambda * elastic);
-            ((g0 - half_t).max(0.0), (gl - half_t).max(0.0))
-        };
-        self.state(Law::Regularized, f, g0, gl).with_zones(a, d)
-    }
-
-    /// The state with sliding zones set by `law` before [`LapState::with_zones`] (Coulomb's are
-    /// final: a = G0, d = GL).
-    fn state(&self, law: Law, force: f64, g0: f64, gl: f64) -> LapState {
-        let state = LapState {
-            joint: *self,
-            law,
-            force,
-            g0,
-            gl,
-            a: 0.0,
-            d: 0.0,
-        };
-        match law {
-            Law::Coulomb => state.with_zones(g0, gl),
-            Law::Regularized => state,
-        }
+        LapState(self.lag.regularized(force.0))
     }
 }
 
-/// One law's solution at one force: the two sliding zones and what follows from them.
+/// One law's solution at one force: the two sliding zones and what follows from them (the
+/// shear lag's state, [`ShearLagState`], in the joint's words).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LapState {
-    joint: LapJoint,
-    law: Law,
-    force: f64,
-    /// End slope lengths G0 = g0/(2 c mu P), GL = gL/(2 c mu P) (mm).
-    g0: f64,
-    gl: f64,
-    /// Sliding zone from x = 0 (mm).
-    a: f64,
-    /// Sliding zone from x = L (mm).
-    d: f64,
-}
+pub struct LapState(ShearLagState);
 
 impl LapState {
-    fn with_zones(self, a: f64, d: f64) -> LapState {
-        let length = self.joint.params.length;
-        let a = a.clamp(0.0, length);
-        LapState {
-            a,
-            d: d.clamp(0.0, length - a),
-            ..self
-        }
-    }
-
     /// The law this state is solved under.
     pub fn law(&self) -> Law {
-        self.law
+        self.0.law()
     }
 
     /// The force through the joint (N).
     pub fn force(&self) -> f64 {
-        self.force
+        self.0.force()
     }
 
     /// Length a of the sliding zone from x = 0, the inner plate's end (mm).
     pub fn slide_at_inner_end(&self) -> f64 {
-        self.a
+        self.0.slide_from_start()
     }
 
     /// Length d of the sliding zone from x = L, the covers' ends (mm).
     pub fn slide_at_cover_ends(&self) -> f64 {
-        self.d
+        self.0.slide_from_end()
     }
 
     /// The zone between the sliding ones, [a, L - d]: elastic (regularized) or stuck (Coulomb).
     pub fn middle_zone(&self) -> (f64, f64) {
-        (self.a, self.joint.params.length - self.d)
-    }
-
-    /// The slip at the ends of the sliding zones (mm): mu P / K_T under the regularized law, 0
-    /// under Coulomb.
-    fn zone_edge_slip(&self) -> f64 {
-        match self.law {
-            Law::Coulomb => 0.0,
-            Law::Regularized => self.joint.saturation_slip(),
-        }
-    }
-
-    /// The slopes p = -s'(a) and q = s'(L - d) of the slip at the middle zone's ends, in units
-    /// of 2 c mu P (lengths): G0 - a and GL - d, since s' changes by 2 c mu P per mm of sliding
-    /// zone (L5).
-    fn middle_slope_lengths(&self) -> (f64, f64) {
-        ((self.g0 - self.a).max(0.0), (self.gl - self.d).max(0.0))
+        self.0.middle_zone()
     }
 
     /// The slip s(x) = u_inner - u_cover (mm) at `x` (clamped to [0, L]), (L4)-(L7): in a sliding
@@ -448,75 +273,24 @@ impl LapState {
     /// middle zone the elastic profile [q cosh(lambda (x - a)) + p cosh(lambda (L - d - x))] /
     /// (lambda sinh(lambda l)) (regularized), or 0 (Coulomb: it sticks).
     pub fn slip_at(&self, x: f64) -> f64 {
-        let joint = &self.joint;
-        let x = x.clamp(0.0, joint.params.length);
-        let (start, end) = self.middle_zone();
-        let two_c_mu_p = 2.0 * joint.c * joint.coulomb_stress();
-        let (p, q) = self.middle_slope_lengths();
-        let edge = self.zone_edge_slip();
-        let parabola = |u: f64, slope: f64| edge + u * two_c_mu_p * (slope + 0.5 * u);
-        if x < start {
-            return parabola(start - x, p);
-        }
-        if x > end {
-            // d - (L - x), not x - (L - d): a zone far shorter than the overlap would lose its
-            // digits to L in the difference (exact at x = L).
-            return parabola((self.d - (joint.params.length - x)).max(0.0), q);
-        }
-        match self.law {
-            Law::Coulomb => 0.0,
-            Law::Regularized => {
-                let l = end - start;
-                let lambda = joint.lambda;
-                if l * lambda == 0.0 {
-                    // F_gross, or the whole joint one point: the middle zone has shrunk to its
-                    // edge value.
-                    return edge;
-                }
-                two_c_mu_p
-                    * (q * cosh_sinh_ratio(lambda * (x - start), lambda * l)
-                        + p * cosh_sinh_ratio(lambda * (end - x), lambda * l))
-                    / lambda
-            }
-        }
+        self.0.slip_at(x)
     }
 
     /// The interface shear tau(x) on the inner plate (MPa), positive resisting F: mu P in the
     /// sliding zones; K_T s in the elastic zone (regularized), 0 in the stick zone (Coulomb).
     pub fn shear_at(&self, x: f64) -> f64 {
-        let mu_p = self.joint.coulomb_stress();
-        let (start, end) = self.middle_zone();
-        if x < start || x > end {
-            return mu_p;
-        }
-        match self.law {
-            Law::Coulomb => 0.0,
-            Law::Regularized => {
-                (self.joint.params.tangential_stiffness * self.slip_at(x)).min(mu_p)
-            }
-        }
+        self.0.shear_at(x)
     }
 
     /// The joint displacement Delta = u_inner(L) - u_cover(0) (mm), (L6):
     /// (1 - alpha) s(0) + alpha s(L) + F L / (b (k1 + K2)), alpha = K2 / (k1 + K2).
     pub fn joint_displacement(&self) -> f64 {
-        let joint = &self.joint;
-        let alpha = joint.k2 / (joint.k1 + joint.k2);
-        (1.0 - alpha) * self.slip_at(0.0)
-            + alpha * self.slip_at(joint.params.length)
-            + self.force * joint.bonded_compliance()
+        self.0.end_displacement()
     }
 
     /// The zones from x = 0 outward.
     pub fn regime(&self) -> Regime {
-        if self.force == 0.0 {
-            return Regime::UNLOADED;
-        }
-        let (start, end) = self.middle_zone();
-        if end - start <= 0.0 {
-            return Regime::MACROSLIP;
-        }
-        zones_regime(self.law, self.a, self.d, self.joint.params.length)
+        self.0.regime()
     }
 
     /// (L10): energy dissipated per cycle between +F and -F (N mm), from the friction work of
@@ -525,30 +299,7 @@ impl LapState {
     /// D = 8 b mu P sum over both zones of integral(s_p) = 8 b mu P sum (c mu P)(p u^2 + u^3/3)
     /// with u the zone's length and p its middle-zone slope length: a sum of positive terms.
     pub fn cycle_dissipation(&self) -> f64 {
-        let joint = &self.joint;
-        let mu_p = joint.coulomb_stress();
-        let (p, q) = self.middle_slope_lengths();
-        let zone = |u: f64, slope: f64| u * u * (slope + u / 3.0);
-        8.0 * joint.params.width * mu_p * joint.c * mu_p * (zone(self.a, p) + zone(self.d, q))
-    }
-}
-
-/// The regime of a loaded joint whose sliding zones from x = 0 and from x = L are `a` and `d` (mm)
-/// over an overlap `length`: shared by the closed forms and the reader of FE slip profiles, so
-/// that both name the same zones the same way.
-pub fn zones_regime(law: Law, a: f64, d: f64, length: f64) -> Regime {
-    if a + d >= length {
-        return Regime::MACROSLIP;
-    }
-    let middle = match law {
-        Law::Coulomb => Zone::Stick,
-        Law::Regularized => Zone::Microslip,
-    };
-    match (a > 0.0, d > 0.0) {
-        (true, true) => Regime::from_zones(&[Zone::Macroslip, middle, Zone::Macroslip]),
-        (false, true) => Regime::from_zones(&[middle, Zone::Macroslip]),
-        (true, false) => Regime::from_zones(&[Zone::Macroslip, middle]),
-        (false, false) => Regime::from_zones(&[middle]),
+        self.0.cycle_dissipation()
     }
 }
 

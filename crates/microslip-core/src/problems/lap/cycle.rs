@@ -13,94 +13,69 @@
 //! ```
 
 use crate::kernel::regime::Law;
-use crate::problems::lap::closed_form::{JointForce, LapJoint, LapState};
+use crate::kernel::shear_lag::ShearLagCycle;
+use crate::problems::lap::closed_form::{JointForce, LapJoint};
 pub use crate::problems::load_driven::MasingCycle;
 
-/// One cycle of amplitude F_a for one law.
+/// One cycle of amplitude F_a for one law: the shear lag's cycle ([`ShearLagCycle`], which the
+/// press fit shares) of the joint's two bars.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LapCycle {
-    joint: LapJoint,
-    law: Law,
-    /// The state at the turning point +F_a.
-    peak: LapState,
-}
+pub struct LapCycle(ShearLagCycle);
 
 impl LapCycle {
     /// The cycle between +`amplitude` and -`amplitude` for `law`.
     pub fn new(joint: &LapJoint, law: Law, amplitude: JointForce) -> LapCycle {
-        LapCycle {
-            joint: *joint,
+        LapCycle(ShearLagCycle::new(
+            joint.shear_lag(),
             law,
-            peak: Self::solve(joint, law, amplitude),
-        }
-    }
-
-    fn solve(joint: &LapJoint, law: Law, force: JointForce) -> LapState {
-        match law {
-            Law::Coulomb => joint.coulomb(force),
-            Law::Regularized => joint.regularized(force),
-        }
+            1.0,
+            amplitude.newtons(),
+        ))
     }
 
     /// Peak displacement Delta_a = Delta_v(F_a) (mm).
     pub fn peak_displacement(&self) -> f64 {
-        self.peak.joint_displacement()
+        self.0.peak_response()
     }
 }
 
 impl MasingCycle for LapCycle {
     fn amplitude(&self) -> f64 {
-        self.peak.force()
+        self.0.amplitude()
     }
 
     /// Where sliding starts on first loading (N): F_1 under the regularized law, 0 under plain
     /// Coulomb (both ends slide from the first newton, (L7)).
     fn onset(&self) -> f64 {
-        match self.law {
-            Law::Coulomb => 0.0,
-            Law::Regularized => self.joint.first_slip_force(),
-        }
+        self.0.onset()
     }
 
     /// The virgin curve Delta_v(F) (mm), odd in F; |F| beyond F_gross is taken at F_gross (the
     /// branches never ask for more than F_a).
     fn virgin(&self, force: f64) -> f64 {
-        let state = Self::solve(&self.joint, self.law, self.joint.clamped_force(force.abs()));
-        state.joint_displacement().copysign(force)
+        self.0.virgin(force)
     }
 
     /// Delta_a (mm), [`LapCycle::peak_displacement`].
     fn peak_response(&self) -> f64 {
-        self.peak_displacement()
+        self.0.peak_response()
     }
 
     /// Energy dissipated per cycle (N mm), (L10): the friction work of the plastic slip at the
-    /// turning point ([`LapState::cycle_dissipation`]); zero while nothing slides.
+    /// turning point; zero while nothing slides.
     fn dissipation(&self) -> f64 {
-        self.peak.cycle_dissipation()
+        self.0.dissipation()
     }
 
     /// Peak elastic energy U = F_a Delta_a / 2 (N mm), the secant definition.
     fn peak_energy(&self) -> f64 {
-        0.5 * self.amplitude() * self.peak_displacement()
+        self.0.peak_energy()
     }
 
     /// Secant stiffness F_a / Delta_a (N/mm); at zero amplitude the initial slope: the elastic
     /// joint's under the regularized law, the bonded joint's under Coulomb (its slip grows as F^2).
     fn secant_stiffness(&self) -> f64 {
-        let delta = self.peak_displacement();
-        if delta > 0.0 {
-            return self.amplitude() / delta;
-        }
-        match self.law {
-            Law::Coulomb => 1.0 / self.joint.bonded_compliance(),
-            Law::Regularized => {
-                let probe = self
-                    .joint
-                    .clamped_force(0.5 * self.joint.first_slip_force());
-                probe.newtons() / self.joint.regularized(probe).joint_displacement()
-            }
-        }
+        self.0.secant_stiffness()
     }
 }
 
