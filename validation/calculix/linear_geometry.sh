@@ -23,6 +23,7 @@ cases=(
   "G4|L=200 h=6 mu=0.4 P=2 KT=60|131.8,149.4,153.8,161.1|"
   "G1-fine|L=220 h=9 mu=0.35 P=3 KT=1500|226.8,257.0,264.6,277.2|--mesh fine"
   "G1-half-step|L=220 h=9 mu=0.35 P=3 KT=1500|226.8,257.0,264.6,277.2|--increment 3.15"
+  "G4-half-step|L=200 h=6 mu=0.4 P=2 KT=60|131.8,149.4,153.8,161.1|--increment 1.83"
 )
 for case in "${cases[@]}"; do
   IFS='|' read -r name sets loads extra <<<"$case"
