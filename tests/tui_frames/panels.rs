@@ -632,7 +632,7 @@ fn a_deflection_far_beyond_the_measured_range_claims_no_envelope() {
     );
     // The paper's force keeps its number.
     let text = screen(&self::app(), 80, 24);
-    assert!(text.contains("Regime (i), FE within 3.3 %"), "{text}");
+    assert!(text.contains("Regime (i), FE NL 3/lin 3.3 %"), "{text}");
 }
 
 #[test]

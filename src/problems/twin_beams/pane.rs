@@ -34,19 +34,29 @@ impl PaneFace for TwinBeamsProblem {
     /// it as the first of the pane's lines.
     fn title_line(model: &Self::Model) -> Option<SummaryLine> {
         let (beams, force) = (&model.beams, &model.force);
-        // The title has room for one number: the bound that holds in both kinematics (linear
-        // geometry's, (V2L), never below NLGEOM's); `i` gives each, named.
+        // Each bound named by its kinematics, in the few characters a title has at 80 columns:
+        // one number where they agree (below first slip), both beyond it; `i` spells them out.
         let validity = beams.validity(*force);
-        let text = match validity.linear_geometry_error {
-            None => "FE: not calibrated".to_string(),
-            Some(error) if error > MAX_SHOWN_ENVELOPE => "FE: w/L too big".to_string(),
-            Some(error) => format!("FE within {} %", number_with(100.0 * error, 2)),
+        let text = match (validity.expected_error, validity.linear_geometry_error) {
+            (Some(_), Some(linear)) if linear > MAX_SHOWN_ENVELOPE => "FE: w/L too big".to_string(),
+            (Some(nlgeom), Some(linear)) => {
+                let (nlgeom, linear) = (
+                    number_with(100.0 * nlgeom, 2),
+                    number_with(100.0 * linear, 2),
+                );
+                if nlgeom == linear {
+                    format!("FE NL+lin {linear} %")
+                } else {
+                    format!("FE NL {nlgeom}/lin {linear} %")
+                }
+            }
+            _ => "FE: not calibrated".to_string(),
         };
         let help = match (validity.expected_error, validity.linear_geometry_error) {
             (Some(nlgeom), Some(linear)) => format!(
                 "how far continuum FE of these beams (plane stress, fine mesh) is expected from \
-                 the w(L) shown, in either kinematics: {} % with NLGEOM (large rotations, (V2)), \
-                 {} % in linear geometry (V2L: wider beyond first slip, where a linear run's \
+                 the w(L) shown, by the FE run's kinematics: NL {} % with NLGEOM (large \
+                 rotations, (V2)), lin {} % in linear geometry (V2L: wider beyond first slip, where a linear run's \
                  upright pressure acts on the turning faces); docs/theory.md. 'not calibrated': \
                  mu P L / (2 E h) beyond the measured range; 'w/L too big': the bound passes \
                  10 %, deflections far beyond those measured",

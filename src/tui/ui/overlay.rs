@@ -153,11 +153,12 @@ pub fn draw_help(frame: &mut Frame, app: &App, area: Rect) {
 
 /// What the regime pane's title states (for a problem with a continuum envelope), in words: `i`
 /// says more.
-const TITLE_HELP: [&str; 5] = [
+const TITLE_HELP: [&str; 6] = [
     " Regime title \"FE within 3 %\":",
     "  how far continuum FE is expected",
     "  from the response at this load:",
-    "  the theory's envelope (theory.md);",
+    "  the theory's envelope (theory.md),",
+    "  NL/lin: FE with NLGEOM / linear;",
     "  i explains it first",
 ];
 
