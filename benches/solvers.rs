@@ -4,6 +4,7 @@ use divan::{Bencher, black_box};
 use microslip::fit::{Measurement, Weights, fit_curve};
 use microslip::numeric::MeshDensity;
 use microslip::problems::cylinder::collocation::Collocation;
+use microslip::problems::cylinder::continued::solve_continued;
 use microslip::problems::cylinder::regularized::solve_normalized;
 use microslip::problems::lap::closed_form::{LapJoint, LapParams};
 use microslip::problems::lap::{LapContinuumMesh, LapFe, solve_lap_continuum};
@@ -185,3 +186,35 @@ fn beams_continuum(bencher: Bencher) {
         )
     });
 }
+
+/// A cylinder Q-sweep at the bundled pad's K_T a / E* = 0.64: `SWEEP_POINTS` loads from 0 to
+/// mu P, each a full cold regularized solve (`solve_normalized`, the reference; what each point
+/// of `sweep --model cylinder` cost before issue 47).
+#[divan::bench(sample_count = 3)]
+fn cylinder_q_sweep_cold(bencher: Bencher) {
+    let collocation = Collocation::default_mesh();
+    bencher.bench_local(|| {
+        sweep_loads(SWEEP_POINTS)
+            .map(|ratio| solve_normalized(collocation, black_box(0.64), ratio).angle)
+            .sum::<f64>()
+    });
+}
+
+/// The same sweep continued along its family (`solve_continued`, what `Cylinder::regularized`
+/// does since issue 47), at `SWEEP_POINTS` and at 1e5 points (the issue's goal: under 10 s).
+#[divan::bench(args = [SWEEP_POINTS, 100_000], sample_count = 3)]
+fn cylinder_q_sweep_continued(bencher: Bencher, points: usize) {
+    bencher.bench_local(|| {
+        sweep_loads(points)
+            .map(|ratio| solve_continued(black_box(0.64), ratio).angle)
+            .sum::<f64>()
+    });
+}
+
+/// `points` loads from 0 to mu P, as Q / mu P.
+fn sweep_loads(points: usize) -> impl Iterator<Item = f64> {
+    (0..points).map(move |i| i as f64 / (points - 1) as f64)
+}
+
+/// Points of the cold cylinder sweep benchmark.
+const SWEEP_POINTS: usize = 200;

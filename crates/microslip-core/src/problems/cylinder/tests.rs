@@ -347,18 +347,25 @@ fn the_edge_slip_gives_back_the_stiffness() {
     assert_eq!(pad.stiffness_for_edge_slip(unloaded, 1e-3), None);
 }
 
-/// The kept answer is the one a new solve gives, bit for bit, and a new load or K_T is solved
-/// anew.
+/// The kept answer is given back for the same contact and load, and a new load or K_T is
+/// solved anew; a load solved again after others is continued from them (issue 47), so it is
+/// the first answer to the root's stop (1e-12), not bit for bit.
 #[test]
 fn the_kept_answer_is_a_fresh_solve() {
     let pad = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
     let load = pad.load(300.0).unwrap();
     let first = pad.regularized(load);
+    assert_eq!(pad.regularized(load), first);
     let other = pad.regularized(pad.load(301.0).unwrap());
     assert_ne!(first, other);
-    let again = pad.regularized(load);
-    assert_eq!(first, again);
     let stiffer = pad.with_tangential_stiffness(2e5).unwrap();
     assert_ne!(stiffer.regularized(load), first);
-    assert_eq!(pad.regularized(load), first);
+    let again = pad.regularized(load);
+    for (a, b) in [
+        (again.edge_slip(), first.edge_slip()),
+        (again.centre_slip(), first.centre_slip()),
+        (again.zone_angle(), first.zone_angle()),
+    ] {
+        assert!((a / b - 1.0).abs() < 1e-11, "{a} {b}");
+    }
 }
