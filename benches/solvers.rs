@@ -1,11 +1,12 @@
 //! Speed of the solvers: `cargo bench --bench solvers`. Results and machine: BENCHMARKS.md.
 
 use divan::{Bencher, black_box};
-use microslip::fit::{Measurement, Weights, fit_curve};
+use microslip::fit::{Measurement, Structure, Weights, fit_curve, fit_measured};
 use microslip::numeric::MeshDensity;
 use microslip::problems::cylinder::collocation::Collocation;
-use microslip::problems::cylinder::continued::solve_continued;
+use microslip::problems::cylinder::continued::{solve_continued, with_reference_solves};
 use microslip::problems::cylinder::regularized::solve_normalized;
+use microslip::problems::cylinder::{Cylinder, CylinderParams, CylinderProblem};
 use microslip::problems::lap::closed_form::{LapJoint, LapParams};
 use microslip::problems::lap::{LapContinuumMesh, LapFe, solve_lap_continuum};
 use microslip::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
@@ -208,6 +209,47 @@ fn cylinder_q_sweep_continued(bencher: Bencher, points: usize) {
         sweep_loads(points)
             .map(|ratio| solve_continued(black_box(0.64), ratio).angle)
             .sum::<f64>()
+    });
+}
+
+/// `fit cylinder` on 100 rows (issue 47's goal: under 5 s): the exact s(a) of mu 0.45 and K_T
+/// 4e4 MPa/mm at 100 loads to 0.9 mu P, fitted from the bundled pad (what `microslip fit` calls),
+/// with the continued solves (`continued`) and with every solve cold (`reference`, as before).
+#[divan::bench(args = ["continued", "reference"], sample_count = 1)]
+fn cylinder_fit(bencher: Bencher, solves: &str) {
+    let truth = Cylinder::new(CylinderParams {
+        friction: 0.45,
+        tangential_stiffness: 4e4,
+        ..CylinderParams::STEEL_PAD
+    })
+    .unwrap();
+    let data: Vec<Measurement> = (1..=100)
+        .map(|i| {
+            let q = 405.0 * i as f64 / 100.0;
+            Measurement {
+                force: q,
+                response: truth.regularized(truth.load(q).unwrap()).edge_slip(),
+            }
+        })
+        .collect();
+    let held = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
+    let fit = || {
+        let structure = Structure::typed::<CylinderProblem>(&held);
+        fit_measured(
+            structure,
+            black_box(&data),
+            (None, None),
+            Weights::Absolute,
+            &mut |_| {},
+        )
+        .map(|r| r.kt.value)
+    };
+    bencher.bench_local(|| {
+        if solves == "reference" {
+            with_reference_solves(fit)
+        } else {
+            fit()
+        }
     });
 }
 

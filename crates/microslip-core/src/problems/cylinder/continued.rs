@@ -3,7 +3,7 @@
 //! rows at one trial K_T are each one family, in which the solution moves little from one point
 //! to the next. [`solve_continued`] keeps, per thread, the last few solved points of the last
 //! kappa and the last factorization of (H11')'s matrix, and starts from them:
-//! - theta is guessed by extrapolating the neighbours' theta(Q) (a quadratic through three), and
+//! - theta is guessed by extrapolating the neighbours' theta(Q) (a cubic through four), and
 //!   the first secant step is Newton's with the neighbours' slope; along a fine sweep the guess
 //!   already meets the stop, so a point costs one linear solve;
 //! - the matrix changes with c / a only, so a neighbour's LU factors serve as the preconditioner
@@ -28,11 +28,12 @@ use super::regularized::{
 use super::strips::StripRule;
 
 /// Neighbours kept for the guess.
-const KEPT: usize = 3;
+const KEPT: usize = 4;
 
 /// The refinement converges by about |delta gamma| / gamma a step: beyond this relative change of
-/// c / a since the factorization, factor anew.
-const REFACTOR_BEYOND: f64 = 1e-4;
+/// c / a since the factorization, factor anew (a factorization costs about as much as eight
+/// refinement steps, 3e-3 needs five or six).
+const REFACTOR_BEYOND: f64 = 3e-3;
 
 /// What one thread keeps of its last family.
 struct Family {
@@ -52,6 +53,17 @@ struct Family {
 
 thread_local! {
     static FAMILY: RefCell<Option<Family>> = const { RefCell::new(None) };
+    static REFERENCE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Runs `f` with this thread's regularized cylinder solves made cold (the reference
+/// [`super::regularized::solve_normalized`] at every call, as before issue 47): what `cargo
+/// bench` compares the continued path with, in one run.
+pub fn with_reference_solves<R>(f: impl FnOnce() -> R) -> R {
+    let before = REFERENCE.replace(true);
+    let result = f();
+    REFERENCE.set(before);
+    result
 }
 
 /// The regularized solution on the default mesh for kappa and Q / mu P = `load_ratio`, as
@@ -59,6 +71,9 @@ thread_local! {
 /// thread's previous solves of the same kappa.
 pub fn solve_continued(kappa: f64, load_ratio: f64) -> NormalizedSolution {
     let collocation = Collocation::default_mesh();
+    if REFERENCE.get() {
+        return super::regularized::solve_normalized(collocation, kappa, load_ratio);
+    }
     let load_ratio = load_ratio.clamp(0.0, 1.0);
     if let Some(done) = trivial(collocation, kappa, load_ratio) {
         return done;
@@ -84,8 +99,13 @@ pub fn solve_continued(kappa: f64, load_ratio: f64) -> NormalizedSolution {
         let found = find_angle(load_ratio, start, slope, |theta| {
             family.solve_at(collocation, theta)
         });
-        if let Some((angle, _)) = &found {
-            family.remember(load_ratio, *angle);
+        if let Some((angle, at)) = &found {
+            // Kept for the next guess with the Newton correction the neighbours' slope gives:
+            // a root is accepted within STOP, and extrapolating from roots with that much
+            // scatter would miss the next one by more than STOP (about 15 times as much for a
+            // cubic), costing a second solve.
+            let corrected = slope.map_or(*angle, |s| angle - (at.carried - load_ratio) * s);
+            family.remember(load_ratio, corrected);
         }
         let solution = finish(collocation, kappa, load_ratio, found);
         *kept = Some(family);
@@ -297,7 +317,12 @@ mod tests {
         for (w, c) in warm.shear.iter().zip(&cold.shear) {
             close(*w, *c, scale, &what("shear"));
         }
-        close(warm.shift, cold.shift, 1e-9 * cold.shift.abs(), &what("shift"));
+        close(
+            warm.shift,
+            cold.shift,
+            1e-9 * cold.shift.abs(),
+            &what("shift"),
+        );
         close(
             warm.carried,
             cold.carried,
@@ -344,7 +369,9 @@ mod tests {
                 last: Vec::new(),
                 last_zone: f64::NAN,
             };
-            for angle in [1e-300, 1e-100, 1e-5, 0.1, 0.5, 0.5001, 0.50011, 1.0, 1.5, 1.5707] {
+            for angle in [
+                1e-300, 1e-100, 1e-5, 0.1, 0.5, 0.5001, 0.50011, 1.0, 1.5, 1.5707,
+            ] {
                 linear_solves_agree(&mut family, angle);
             }
         }

@@ -17,7 +17,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use super::closed_form::{Cylinder, TangentialLoad, edge_root, mindlin_stick_ratio};
 use super::collocation::{Collocation, CollocationMesh};
 use super::quadrature::solve_with_constant;
-use super::strips::{strip_area, strip_potential};
+use super::strips::{StripRule, strip_area, strip_potential};
 use crate::kernel::params::Domain;
 use crate::kernel::regime::{Regime, Zone};
 use crate::kernel::solve::find_root_in_bracket;
@@ -166,7 +166,7 @@ impl Fields<'_> {
         let mut row = vec![0.0; self.collocation.size()];
         self.collocation.kernel_row(t / self.zone, &mut row);
         let potential: f64 = row.iter().zip(self.shear).map(|(k, f)| k * f).sum();
-        let strips = strip_potential(self.angle, 2.0 * (0.5 * alpha).sin().powi(2));
+        let strips = StripRule::new(self.angle).potential(2.0 * (0.5 * alpha).sin().powi(2));
         ((2.0 / PI) * (self.shift + self.zone * potential + strips)).max(0.0)
     }
 
@@ -183,7 +183,7 @@ impl Fields<'_> {
         let mut row = vec![0.0; self.collocation.size()];
         self.collocation.kernel_row(t / self.zone, &mut row);
         let potential: f64 = row.iter().zip(self.shear).map(|(k, f)| k * f).sum();
-        let strips = strip_potential(self.angle, 1.0 - t);
+        let strips = StripRule::new(self.angle).potential(1.0 - t);
         ((2.0 / PI) * (self.shift + self.zone * potential + strips)).max(0.0)
     }
 }

@@ -114,9 +114,10 @@ fn gauss(from: f64, to: f64, f: &impl Fn(f64) -> f64) -> f64 {
 const RULE_POINTS: usize = 16;
 
 /// A singular point of the strips' integrand is subtracted and integrated exactly when it lies
-/// within this many half-lengths of [0, theta]'s centre; beyond, the 16-point rule sees it
-/// through a Bernstein ellipse of at least 2 + sqrt 3 = 3.7, an error below 3.7^-32 ~ 1e-18.
-const SUBTRACT_WITHIN: f64 = 2.0;
+/// within this many half-lengths of [0, theta]'s centre (where the log moments are exact, not
+/// quadrature); beyond, the 16-point rule sees it through a Bernstein ellipse of at least 1.5 +
+/// sqrt 1.25 = 2.6, an error below 2.6^-32 ~ 5e-14 of the integrand's size.
+const SUBTRACT_WITHIN: f64 = 1.5;
 
 /// (2k + 1) / 2 w_j P_k(x_j) of the [`RULE_POINTS`]-point rule (`[j][k]`): the Legendre
 /// coefficients of the interpolant through the rule's points.
