@@ -45,10 +45,12 @@ struct Family {
     zone: f64,
     factors: Vec<f64>,
     pivots: Vec<usize>,
-    /// The last linear solve's unknowns and its c / a: the refinement's first iterate when
-    /// near.
+    /// The last two linear solves' unknowns and their c / a: the refinement's first iterate,
+    /// extrapolated linearly in c / a, when near.
     last: Vec<f64>,
     last_zone: f64,
+    before: Vec<f64>,
+    before_zone: f64,
 }
 
 thread_local! {
@@ -90,6 +92,8 @@ pub fn solve_continued(kappa: f64, load_ratio: f64) -> NormalizedSolution {
                 pivots: Vec::new(),
                 last: Vec::new(),
                 last_zone: f64::NAN,
+                before: Vec::new(),
+                before_zone: f64::NAN,
             },
         };
         let mut family = family;
@@ -185,6 +189,8 @@ impl Family {
                 x
             }
         };
+        std::mem::swap(&mut self.before, &mut self.last);
+        self.before_zone = self.last_zone;
         self.last.clone_from(&x);
         self.last_zone = zone;
         Some(AtZone::new(collocation, angle, x))
@@ -207,9 +213,18 @@ impl Family {
             lu_solve(&self.factors, size, &self.pivots, &mut x);
             return Some(x);
         }
-        // From the last solve's unknowns when their c / a is nearer than the factors'.
+        // From the last solves' unknowns when their c / a is nearer than the factors'.
         let mut x = if (self.last_zone - zone).abs() < (self.zone - zone).abs() {
-            self.last.clone()
+            let step = (zone - self.last_zone) / (self.last_zone - self.before_zone);
+            if step.is_finite() && step.abs() <= 4.0 && self.before.len() == size {
+                let (last, before) = (&self.last, &self.before);
+                last.iter()
+                    .zip(before)
+                    .map(|(l, b)| l + step * (l - b))
+                    .collect()
+            } else {
+                self.last.clone()
+            }
         } else {
             let mut x = rhs.to_vec();
             lu_solve(&self.factors, size, &self.pivots, &mut x);
@@ -368,6 +383,8 @@ mod tests {
                 pivots: Vec::new(),
                 last: Vec::new(),
                 last_zone: f64::NAN,
+                before: Vec::new(),
+                before_zone: f64::NAN,
             };
             for angle in [
                 1e-300, 1e-100, 1e-5, 0.1, 0.5, 0.5001, 0.50011, 1.0, 1.5, 1.5707,
