@@ -2,8 +2,8 @@
 //! a / E* and Q / mu P only, so a sweep over Q at fixed K_T, a `solve --vary Q` scan and a fit's
 //! rows at one trial K_T are each one family, in which the solution moves little from one point
 //! to the next. [`solve_continued`] keeps, per thread, the last few solved points of the last
-//! kappa and the last factorization of (H11')'s matrix, and starts from them:
-//! - theta is guessed by extrapolating the neighbours' theta(Q) (a cubic through four), and
+//! few kappas and each one's last factorization of (H11')'s matrix, and starts from them:
+//! - theta is guessed by extrapolating the neighbours' theta(Q) (a cubic through the four nearest), and
 //!   the first secant step is Newton's with the neighbours' slope; along a fine sweep the guess
 //!   already meets the stop, so a point costs one linear solve;
 //! - the matrix changes with c / a only, so a neighbour's LU factors serve as the preconditioner
@@ -27,15 +27,23 @@ use super::regularized::{
 };
 use super::strips::StripRule;
 
-/// Neighbours kept for the guess.
-const KEPT: usize = 4;
+/// Solved points kept, and the nearest of them the guess extrapolates from: more are kept than
+/// used so that a cycle's branch (which alternates its amplitude with the loads along it) still
+/// finds its neighbours.
+const KEPT: usize = 8;
+const USED: usize = 4;
 
 /// The refinement converges by about |delta gamma| / gamma a step: beyond this relative change of
-/// c / a since the factorization, factor anew (a factorization costs about as much as eight
-/// refinement steps, 3e-3 needs five or six).
-const REFACTOR_BEYOND: f64 = 3e-3;
+/// c / a since the factorization, factor anew (a factorization costs about as much as ten
+/// refinement steps; 1e-2 needs eight at most, and the first iterate, extrapolated from the
+/// last solves, is usually far closer than the factors).
+const REFACTOR_BEYOND: f64 = 1e-2;
 
-/// What one thread keeps of its last family.
+/// Families kept per thread: a fit's derivatives alternate K_T with K_T + h, a comparison its
+/// rows' K_T, and each keeps its own neighbours.
+const FAMILIES_KEPT: usize = 4;
+
+/// What one thread keeps of a family.
 struct Family {
     /// kappa (its bits: a different K_T a / E* is a different family).
     kappa: f64,
@@ -54,7 +62,7 @@ struct Family {
 }
 
 thread_local! {
-    static FAMILY: RefCell<Option<Family>> = const { RefCell::new(None) };
+    static FAMILIES: RefCell<Vec<Family>> = const { RefCell::new(Vec::new()) };
     static REFERENCE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
@@ -80,11 +88,14 @@ pub fn solve_continued(kappa: f64, load_ratio: f64) -> NormalizedSolution {
     if let Some(done) = trivial(collocation, kappa, load_ratio) {
         return done;
     }
-    FAMILY.with(|cell| {
+    FAMILIES.with(|cell| {
         let mut kept = cell.borrow_mut();
-        let family = match kept.take() {
-            Some(family) if family.kappa.to_bits() == kappa.to_bits() => family,
-            _ => Family {
+        let found = kept
+            .iter()
+            .position(|f| f.kappa.to_bits() == kappa.to_bits());
+        let mut family = match found {
+            Some(i) => kept.remove(i),
+            None => Family {
                 kappa,
                 points: Vec::with_capacity(KEPT + 1),
                 zone: f64::NAN,
@@ -96,7 +107,6 @@ pub fn solve_continued(kappa: f64, load_ratio: f64) -> NormalizedSolution {
                 before_zone: f64::NAN,
             },
         };
-        let mut family = family;
         let (start, slope) = family
             .guess(load_ratio)
             .unwrap_or((cold_start(kappa, load_ratio), None));
@@ -112,22 +122,32 @@ pub fn solve_continued(kappa: f64, load_ratio: f64) -> NormalizedSolution {
             family.remember(load_ratio, corrected);
         }
         let solution = finish(collocation, kappa, load_ratio, found);
-        *kept = Some(family);
+        // The most recent last; the least recent dropped beyond FAMILIES_KEPT.
+        kept.push(family);
+        if kept.len() > FAMILIES_KEPT {
+            kept.remove(0);
+        }
         solution
     })
 }
 
 impl Family {
-    /// theta at `load_ratio` and d theta / d(Q / mu P) there from the kept points, by the
-    /// polynomial through them; `None` with no point near enough to extrapolate from: a load
+    /// theta at `load_ratio` and d theta / d(Q / mu P) there from the [`USED`] kept points
+    /// nearest it, by the polynomial through them; `None` with no point near enough to extrapolate from: a load
     /// within half of the newest's (near 0 theta spans decades) or, from 0.05 on, within 0.05.
     fn guess(&self, load_ratio: f64) -> Option<(f64, Option<f64>)> {
-        let &(newest, _) = self.points.last()?;
+        let mut points = self.points.clone();
+        points.sort_by(|a, b| {
+            (a.0 - load_ratio)
+                .abs()
+                .total_cmp(&(b.0 - load_ratio).abs())
+        });
+        points.truncate(USED);
+        let &(newest, _) = points.first()?;
         let (gap, smaller) = ((load_ratio - newest).abs(), load_ratio.min(newest));
         if gap > 0.5 * smaller && (gap > 0.05 || smaller < 0.05) {
             return None;
         }
-        let points = &self.points;
         // Lagrange's polynomial and its derivative at the load.
         let (mut value, mut slope) = (0.0, 0.0);
         for (i, &(ri, ti)) in points.iter().enumerate() {
@@ -232,7 +252,7 @@ impl Family {
         };
         let mut residual = vec![0.0; size];
         let mut last = f64::INFINITY;
-        for _ in 0..8 {
+        for _ in 0..12 {
             // rhs - M x, M x = epsilon phi (not at u = 1) - gamma K phi - D.
             for (i, r) in residual.iter_mut().enumerate() {
                 let potential = dot(&collocation.kernel[i * n..(i + 1) * n], &x[..n]);
@@ -358,7 +378,7 @@ mod tests {
     fn continued_solves_are_the_cold_ones_to_1e_9() {
         for kappa in KAPPAS {
             for load in LOADS {
-                FAMILY.with(|f| f.borrow_mut().take());
+                FAMILIES.with(|f| f.borrow_mut().clear());
                 assert_agrees(kappa, load);
             }
             for load in LOADS.iter().chain(LOADS.iter().rev()) {
@@ -399,7 +419,7 @@ mod tests {
     #[test]
     fn a_fine_sweep_is_the_cold_solves() {
         for kappa in [0.64, 64.0] {
-            FAMILY.with(|f| f.borrow_mut().take());
+            FAMILIES.with(|f| f.borrow_mut().clear());
             for i in 1..400 {
                 let load = 0.3 + 1e-4 * i as f64;
                 if i % 40 == 0 {

@@ -280,11 +280,14 @@ mod tests {
             last = slip;
         }
         assert!(CylinderProblem::answer(&model, -1.0).is_none());
+        // Solved again after other K_T's: continued from this K_T's kept neighbours (issue 47),
+        // the same root to its stop, not bit for bit.
         let quantity = |q| CylinderProblem::quantity(&model, q).unwrap();
-        assert_eq!(quantity(Quantity::Response), regularized.edge_slip());
-        assert_eq!(quantity(Quantity::MicroEnd), regularized.micro_half_width());
+        let same = |a: f64, b: f64| assert!((a / b - 1.0).abs() < 1e-11, "{a} {b}");
+        same(quantity(Quantity::Response), regularized.edge_slip());
+        same(quantity(Quantity::MicroEnd), regularized.micro_half_width());
         let ratio = regularized.edge_slip() / mindlin.edge_slip();
-        assert_eq!(quantity(Quantity::Ratio), ratio);
+        same(quantity(Quantity::Ratio), ratio);
         assert_eq!(
             CylinderProblem::quantity(&model, Quantity::SlideFromStart),
             None
