@@ -407,7 +407,16 @@ mod tests {
                 before_zone: f64::NAN,
             };
             for angle in [
-                1e-300, 1e-100, 1e-5, 0.1, 0.5, 0.5001, 0.50011, 1.0, 1.5, 1.5707,
+                1e-300,
+                1e-100,
+                1e-5,
+                0.1,
+                0.5,
+                0.5001,
+                0.50011,
+                1.0,
+                1.5,
+                FRAC_PI_2 - 1e-4,
             ] {
                 linear_solves_agree(&mut family, angle);
             }
