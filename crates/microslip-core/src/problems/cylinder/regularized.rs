@@ -455,6 +455,9 @@ pub(super) fn find_angle(
     best.map(|(angle, _, solved)| (angle, solved))
 }
 
+/// Answers [`Cylinder::regularized`] keeps per thread (about 1 KiB each).
+const KEPT_ANSWERS: usize = 8;
+
 /// The regularized answer at one tangential load, on the default mesh ([`CollocationMesh::DEFAULT`]): a
 /// microslip zone |x| < c at the centre where q = K_T s < mu p, sliding at q = mu p beyond.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -475,22 +478,39 @@ pub struct RegularizedState {
 impl Cylinder {
     /// The regularized law's answer at `load` ((H10)-(H14), the default mesh), continued from
     /// this thread's previous solves of the same K_T a / E* ([`super::continued`]: a sweep's
-    /// point costs one linear solve). The last answer of each thread is kept: the faces of one
-    /// model (its point, zone strip, profiles and quantities) ask for the same solve several
-    /// times per frame; a new solve would give it again to the root's stop (1e-12).
+    /// point costs one linear solve). The last [`KEPT_ANSWERS`] answers of each thread are kept:
+    /// the faces of one model (its point, zone strip, profiles and quantities) ask for the same
+    /// solve several times per frame, and a cycle's branches ask for the same loads at their
+    /// turning points; a new solve, continued from other points, would give them again to the
+    /// root's stop (1e-12), not bit for bit.
     pub fn regularized(&self, load: TangentialLoad) -> RegularizedState {
         thread_local! {
-            static LAST: std::cell::Cell<Option<RegularizedState>> =
-                const { std::cell::Cell::new(None) };
+            static KEPT: std::cell::RefCell<Vec<RegularizedState>> =
+                const { std::cell::RefCell::new(Vec::new()) };
         }
-        let kept = LAST
-            .with(std::cell::Cell::get)
-            .filter(|s| s.cylinder == *self && s.load == load.newtons_per_mm());
+        let newtons = load.newtons_per_mm();
+        // The most recently asked for last (a cycle's amplitude, asked for at every point of
+        // its branches, stays).
+        let kept = KEPT.with(|kept| {
+            let mut kept = kept.borrow_mut();
+            let i = kept
+                .iter()
+                .position(|s| s.cylinder == *self && s.load == newtons)?;
+            let state = kept.remove(i);
+            kept.push(state);
+            Some(state)
+        });
         if let Some(state) = kept {
             return state;
         }
         let state = self.solve_regularized(load);
-        LAST.with(|last| last.set(Some(state)));
+        KEPT.with(|kept| {
+            let mut kept = kept.borrow_mut();
+            if kept.len() >= KEPT_ANSWERS {
+                kept.remove(0);
+            }
+            kept.push(state);
+        });
         state
     }
 
