@@ -2,8 +2,11 @@
 //! sliding zones against the force, the cycle at an amplitude (dissipation D, damping ratio zeta)
 //! and over a range of amplitudes, and the closed hysteresis loop. The twin beams and the lap
 //! joint take their sweeps, loops and D vs F_a from here; the CLI's CSV rows, the reports and
-//! the charts from the same functions.
+//! the charts from the same functions. Each walks a family of loads, so each runs in one
+//! [`family::scope`] (a lazy sweep's rows in one [`family::iter`]): solvers that can continue
+//! from the previous point do (the cylinder, issue 47), within the study and nowhere else.
 
+use crate::kernel::family;
 use crate::kernel::regime::Law;
 use crate::problems::load_driven::{LoadDriven, MasingCycle};
 use crate::study::samples::{RangeEnd, RangeError, Samples, Series, check_points};
@@ -45,9 +48,9 @@ pub fn force_sweep<P: LoadDriven>(
 ) -> Result<impl Iterator<Item = P::Point>, RangeError> {
     check_forces::<P>(&model, &forces)?;
     // Every sample is accepted, so clamping changes nothing.
-    Ok(forces
-        .values()
-        .map(move |f| P::point(&model, P::clamped_force(&model, f))))
+    Ok(family::iter(forces.values().map(move |f| {
+        P::point(&model, P::clamped_force(&model, f))
+    })))
 }
 
 /// The response u (mm) against F (N): (Coulomb, regularized). The chart "w(L) vs F" of the
@@ -60,14 +63,16 @@ pub fn response_vs_force<P: LoadDriven>(
     forces: Samples,
 ) -> Result<(Series, Series), RangeError> {
     check_forces::<P>(model, &forces)?;
-    Ok(forces
-        .values()
-        .map(|f| {
-            let force = P::clamped_force(model, f);
-            let at = |law| (f, P::response(model, law, force));
-            (at(Law::Coulomb), at(Law::Regularized))
-        })
-        .unzip())
+    Ok(family::scope(|| {
+        forces
+            .values()
+            .map(|f| {
+                let force = P::clamped_force(model, f);
+                let at = |law| (f, P::response(model, law, force));
+                (at(Law::Coulomb), at(Law::Regularized))
+            })
+            .unzip()
+    }))
 }
 
 /// The edges of the zone that does not slide ([`LoadDriven::holding_zone`]) under `law` against
@@ -81,10 +86,12 @@ pub fn holding_zone_vs_force<P: LoadDriven>(
     forces: Samples,
 ) -> Result<Vec<(f64, [f64; 2])>, RangeError> {
     check_forces::<P>(model, &forces)?;
-    Ok(forces
-        .values()
-        .map(|f| (f, P::holding_zone(model, law, P::clamped_force(model, f))))
-        .collect())
+    Ok(family::scope(|| {
+        forces
+            .values()
+            .map(|f| (f, P::holding_zone(model, law, P::clamped_force(model, f))))
+            .collect()
+    }))
 }
 
 /// One cyclic amplitude, both laws: dissipation per cycle (N mm) and equivalent damping ratio.
@@ -104,6 +111,11 @@ pub struct CyclePoint {
 
 /// `model` cycled at one amplitude, both laws.
 pub fn cycle_point<P: LoadDriven>(model: &P::Structure, amplitude: P::Force) -> CyclePoint {
+    family::scope(|| cycle_point_in_scope::<P>(model, amplitude))
+}
+
+/// [`cycle_point`] in its caller's scope.
+fn cycle_point_in_scope<P: LoadDriven>(model: &P::Structure, amplitude: P::Force) -> CyclePoint {
     let (c, r) = (
         P::cycle(model, Law::Coulomb, amplitude),
         P::cycle(model, Law::Regularized, amplitude),
@@ -126,9 +138,9 @@ pub fn cycle_sweep<P: LoadDriven>(
     amplitudes: Samples,
 ) -> Result<impl Iterator<Item = CyclePoint>, RangeError> {
     check_forces::<P>(&model, &amplitudes)?;
-    Ok(amplitudes
-        .values()
-        .map(move |f| cycle_point::<P>(&model, P::clamped_force(&model, f))))
+    Ok(family::iter(amplitudes.values().map(move |f| {
+        cycle_point_in_scope::<P>(&model, P::clamped_force(&model, f))
+    })))
 }
 
 /// Dissipation per cycle D (N mm) against F_a (N): (Coulomb, regularized).
@@ -215,7 +227,9 @@ pub fn cycle_loop<P: LoadDriven>(
             }
         })
     };
-    Ok(branch(Branch::Unloading).chain(branch(Branch::Reloading)))
+    Ok(family::iter(
+        branch(Branch::Unloading).chain(branch(Branch::Reloading)),
+    ))
 }
 
 #[cfg(test)]

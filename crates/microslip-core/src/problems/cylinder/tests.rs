@@ -362,3 +362,51 @@ fn the_kept_answer_is_a_fresh_solve() {
     assert_ne!(stiffer.regularized(load), first);
     assert_eq!(pad.regularized(load), first);
 }
+
+/// The bundled pad's F sweep from 0 to mu P in `points` rows ([`force_sweep`], what `sweep`
+/// writes), its rows solved in the sweep's own family scope.
+fn pad_sweep(pad: Cylinder, points: u64) -> Vec<super::point::CylinderPoint> {
+    use crate::problems::cylinder::CylinderProblem;
+    use crate::study::load::force_sweep;
+    use crate::study::samples::{Samples, Spacing};
+    let loads = Samples::new(0.0, pad.gross_slip_load(), points, Spacing::Linear).unwrap();
+    force_sweep::<CylinderProblem>(pad, loads)
+        .unwrap()
+        .collect()
+}
+
+/// A sweep continues along its family inside its own scope (issue 47), and nowhere else: the
+/// same sweep twice gives the same bits; each row is the cold solve's (the same sweep in
+/// [`family::cold`]) to 1e-9 in what `sweep` prints; and a plain solve after it, at one of its
+/// loads, is the cold solve of a thread that never swept, bit for bit.
+#[test]
+fn a_sweep_is_its_own_and_a_plain_solve_stays_cold() {
+    use crate::kernel::family;
+    let pad = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
+    let load = pad.load(0.5 * pad.gross_slip_load()).unwrap();
+    let fresh = std::thread::spawn(move || pad.regularized(load))
+        .join()
+        .unwrap();
+    let first = pad_sweep(pad, 401);
+    assert_eq!(first[200].load, load.newtons_per_mm());
+    assert_eq!(pad.regularized(load), fresh);
+    assert_eq!(pad_sweep(pad, 401), first);
+    assert_eq!(pad.regularized(load), fresh);
+    let cold = family::cold(|| pad_sweep(pad, 401));
+    for (warm, cold) in first.iter().zip(&cold) {
+        for (w, c) in [
+            (warm.edge_slip_regularized, cold.edge_slip_regularized),
+            (warm.centre_slip_regularized, cold.centre_slip_regularized),
+            (warm.zone_regularized, cold.zone_regularized),
+            (warm.peak_shear_regularized, cold.peak_shear_regularized),
+        ] {
+            assert!(
+                (w - c).abs() <= 1e-9 * c.abs(),
+                "Q {}: {w:e} {c:e}",
+                warm.load
+            );
+        }
+    }
+    // The sweep did continue: its row at the plain load is not the cold solve's bits.
+    assert_ne!(first[200], cold[200]);
+}
