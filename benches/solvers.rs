@@ -265,3 +265,29 @@ fn sweep_loads(points: usize) -> impl Iterator<Item = f64> {
 
 /// Points of the cold cylinder sweep benchmark.
 const SWEEP_POINTS: usize = 200;
+
+/// `solve cylinder --vary Q --target sa=0.002` on the bundled pad (issue 47's goal: under
+/// 0.5 s): the target search over Q in its scope (`scoped`, what `solve_for_target` does) and with
+/// every solve cold (`cold`, in `family::cold`, as before issue 47).
+#[divan::bench(args = ["scoped", "cold"], sample_count = 3)]
+fn cylinder_solve_vary_q(bencher: Bencher, solves: &str) {
+    use microslip::problems::inputs::Inputs;
+    use microslip::problems::cylinder::CylinderParam;
+    use microslip::problems::{ModelKind, Param};
+    use microslip::study::target::{Target, solve_for_target};
+    let model = Inputs::paper(ModelKind::Cylinder).validate().unwrap();
+    let target = Target::parse("sa=0.002", ModelKind::Cylinder).unwrap();
+    let param = Param::Cylinder(CylinderParam::TangentialLoad);
+    let solve = || {
+        solve_for_target(black_box(&model), param, target, None)
+            .map(|s| s.roots.len())
+            .unwrap()
+    };
+    bencher.bench_local(|| {
+        if solves == "cold" {
+            family::cold(solve)
+        } else {
+            solve()
+        }
+    });
+}

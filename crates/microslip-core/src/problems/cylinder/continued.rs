@@ -24,7 +24,8 @@ use std::f64::consts::FRAC_PI_2;
 use super::collocation::Collocation;
 use super::quadrature::{dot, lu_factor, lu_solve};
 use super::regularized::{
-    AtZone, NormalizedSolution, cold_start, find_angle, finish, system_matrix, system_rhs, trivial,
+    AtZone, NormalizedSolution, find_angle, finish, solve_normalized, system_matrix, system_rhs,
+    trivial,
 };
 use super::strips::StripRule;
 use crate::kernel::family;
@@ -69,12 +70,12 @@ pub(super) struct Families(Vec<Family>);
 
 /// The regularized solution on the default mesh for kappa and Q / mu P = `load_ratio`: inside a
 /// [`family::scope`] continued from that scope's previous solves of the same kappa (equal to the
-/// cold one to about 1e-12), outside it the cold reference
-/// [`super::regularized::solve_normalized`], bit for bit whatever was solved before.
+/// cold one to about 1e-12), outside it the cold reference [`solve_normalized`], bit for bit
+/// whatever was solved before. A point with no kept point near it (a family's first, or one far
+/// from the others) is the cold solve inside a scope too.
 pub fn solve(kappa: f64, load_ratio: f64) -> NormalizedSolution {
-    family::kept(|families: &mut Families| families.solve(kappa, load_ratio)).unwrap_or_else(|| {
-        super::regularized::solve_normalized(Collocation::default_mesh(), kappa, load_ratio)
-    })
+    family::kept(|families: &mut Families| families.solve(kappa, load_ratio))
+        .unwrap_or_else(|| solve_normalized(Collocation::default_mesh(), kappa, load_ratio))
 }
 
 impl Families {
@@ -93,21 +94,28 @@ impl Families {
             Some(i) => kept.remove(i),
             None => Family::new(kappa),
         };
-        let (start, slope) = family
-            .guess(load_ratio)
-            .unwrap_or((cold_start(kappa, load_ratio), None));
-        let found = find_angle(load_ratio, start, slope, |theta| {
-            family.solve_at(collocation, theta)
-        });
-        if let Some((angle, at)) = &found {
-            // Kept for the next guess with the Newton correction the neighbours' slope gives:
-            // a root is accepted within STOP, and extrapolating from roots with that much
-            // scatter would miss the next one by more than STOP (about 15 times as much for a
-            // cubic), costing a second solve.
-            let corrected = slope.map_or(*angle, |s| angle - (at.carried - load_ratio) * s);
-            family.remember(load_ratio, corrected);
-        }
-        let solution = finish(collocation, kappa, load_ratio, found);
+        let solution = match family.guess(load_ratio) {
+            Some((start, slope)) => {
+                let found = find_angle(load_ratio, start, Some(slope), |theta| {
+                    family.solve_at(collocation, theta)
+                });
+                if let Some((angle, at)) = &found {
+                    // Kept for the next guess with the Newton correction the neighbours' slope
+                    // gives: a root is accepted within STOP, and extrapolating from roots with
+                    // that much scatter would miss the next one by more than STOP (about 15
+                    // times as much for a cubic), costing a second solve.
+                    family.remember(load_ratio, angle - (at.carried - load_ratio) * slope);
+                }
+                finish(collocation, kappa, load_ratio, found)
+            }
+            // Nothing near to continue from (a family's first point, or a jump): the cold
+            // solve itself, so a sweep's first row is the plain solve's bits.
+            None => {
+                let cold = solve_normalized(collocation, kappa, load_ratio);
+                family.remember(load_ratio, cold.angle);
+                cold
+            }
+        };
         // The most recent last; the least recent dropped beyond FAMILIES_KEPT.
         kept.push(family);
         if kept.len() > FAMILIES_KEPT {
@@ -135,7 +143,7 @@ impl Family {
     /// theta at `load_ratio` and d theta / d(Q / mu P) there from the [`USED`] kept points
     /// nearest it, by the polynomial through them; `None` with no point near enough to extrapolate from: a load
     /// within half of the newest's (near 0 theta spans decades) or, from 0.05 on, within 0.05.
-    fn guess(&self, load_ratio: f64) -> Option<(f64, Option<f64>)> {
+    fn guess(&self, load_ratio: f64) -> Option<(f64, f64)> {
         let mut points = self.points.clone();
         points.sort_by(|a, b| {
             (a.0 - load_ratio)
@@ -170,7 +178,7 @@ impl Family {
             value = t * load_ratio / r;
             slope = t / r;
         }
-        (value.is_finite() && value > 0.0 && value < FRAC_PI_2).then_some((value, Some(slope)))
+        (value.is_finite() && value > 0.0 && value < FRAC_PI_2).then_some((value, slope))
     }
 
     /// Keeps (Q / mu P, theta), dropping the oldest point beyond [`KEPT`] and any at the same
