@@ -271,8 +271,8 @@ const SWEEP_POINTS: usize = 200;
 /// every solve cold (`cold`, in `family::cold`, as before issue 47).
 #[divan::bench(args = ["scoped", "cold"], sample_count = 3)]
 fn cylinder_solve_vary_q(bencher: Bencher, solves: &str) {
-    use microslip::problems::inputs::Inputs;
     use microslip::problems::cylinder::CylinderParam;
+    use microslip::problems::inputs::Inputs;
     use microslip::problems::{ModelKind, Param};
     use microslip::study::target::{Target, solve_for_target};
     let model = Inputs::paper(ModelKind::Cylinder).validate().unwrap();

@@ -52,9 +52,7 @@ pub(super) fn run_compare(
         format,
         source: &source.join(", "),
     };
-    // The rows of a result walk one family of loads (a fit to imply K_T, the closed forms at
-    // each row), in one scope.
-    crate::kernel::family::scope(|| for_problem(model, compare))
+    for_problem(model, compare)
 }
 
 /// The arguments of [`run_compare`], for [`for_problem`].

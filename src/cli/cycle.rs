@@ -54,27 +54,24 @@ fn run_cycle(
             .ok_or_else(no_cycle)?
             .map_err(amplitude_error)
     };
-    // The cycle walks one family of loads (its branches, the work integrals), in one scope.
-    crate::kernel::family::scope(|| {
-        match format {
-            CycleFormat::Text => out.write_all(report()?.text().as_bytes())?,
-            CycleFormat::Json => write_json(out, &json::of(&report()?))?,
-            CycleFormat::Csv => face
-                .write_loop(
-                    &mut super::sweep::Paced::new(out, points),
-                    TableFormat::Csv,
-                    &model,
-                    (amplitude, points),
-                )
-                .ok_or_else(no_cycle)?
-                .map_err(|e| match e {
-                    LoadTableError::Force(e) => amplitude_error(e),
-                    LoadTableError::Range(e) => points_error(e),
-                    LoadTableError::Output(e) => CliError::Output(e),
-                })?,
-        }
-        Ok(())
-    })
+    match format {
+        CycleFormat::Text => out.write_all(report()?.text().as_bytes())?,
+        CycleFormat::Json => write_json(out, &json::of(&report()?))?,
+        CycleFormat::Csv => face
+            .write_loop(
+                &mut super::sweep::Paced::new(out, points),
+                TableFormat::Csv,
+                &model,
+                (amplitude, points),
+            )
+            .ok_or_else(no_cycle)?
+            .map_err(|e| match e {
+                LoadTableError::Force(e) => amplitude_error(e),
+                LoadTableError::Range(e) => points_error(e),
+                LoadTableError::Output(e) => CliError::Output(e),
+            })?,
+    }
+    Ok(())
 }
 
 /// The contact element length of `--element-size`, default L/100.
