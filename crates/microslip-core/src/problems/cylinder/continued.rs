@@ -17,15 +17,16 @@
 //! it is the cold solve's ([`super::regularized::solve_normalized`], the reference) to about
 //! 1e-12, whatever came before in the scope: tests hold the two within 1e-9 over kappa in [1e-6,
 //! 1e6] and Q / mu P from 1e-300 to 1, in sweeps up and down and in random order. Outside a scope
-//! [`solve`] is the cold solve itself, so a plain solve never depends on what ran before it.
+//! [`solve`] is the cold solve itself, so a plain solve never depends on what ran before it; so
+//! is a family's first point inside one.
 
 use std::f64::consts::FRAC_PI_2;
 
 use super::collocation::Collocation;
 use super::quadrature::{dot, lu_factor, lu_solve};
 use super::regularized::{
-    AtZone, NormalizedSolution, find_angle, finish, solve_normalized, system_matrix, system_rhs,
-    trivial,
+    AtZone, NormalizedSolution, cold_start, find_angle, finish, solve_normalized, system_matrix,
+    system_rhs, trivial,
 };
 use super::strips::StripRule;
 use crate::kernel::family;
@@ -71,8 +72,8 @@ pub(super) struct Families(Vec<Family>);
 /// The regularized solution on the default mesh for kappa and Q / mu P = `load_ratio`: inside a
 /// [`family::scope`] continued from that scope's previous solves of the same kappa (equal to the
 /// cold one to about 1e-12), outside it the cold reference [`solve_normalized`], bit for bit
-/// whatever was solved before. A point with no kept point near it (a family's first, or one far
-/// from the others) is the cold solve inside a scope too.
+/// whatever was solved before. A family's first point is the cold solve inside a scope too (so a
+/// sweep's first row, and every row of a sweep over K_T, is the plain solve's bits).
 pub fn solve(kappa: f64, load_ratio: f64) -> NormalizedSolution {
     family::kept(|families: &mut Families| families.solve(kappa, load_ratio))
         .unwrap_or_else(|| solve_normalized(Collocation::default_mesh(), kappa, load_ratio))
@@ -94,27 +95,30 @@ impl Families {
             Some(i) => kept.remove(i),
             None => Family::new(kappa),
         };
-        let solution = match family.guess(load_ratio) {
-            Some((start, slope)) => {
-                let found = find_angle(load_ratio, start, Some(slope), |theta| {
-                    family.solve_at(collocation, theta)
-                });
-                if let Some((angle, at)) = &found {
-                    // Kept for the next guess with the Newton correction the neighbours' slope
-                    // gives: a root is accepted within STOP, and extrapolating from roots with
-                    // that much scatter would miss the next one by more than STOP (about 15
-                    // times as much for a cubic), costing a second solve.
-                    family.remember(load_ratio, angle - (at.carried - load_ratio) * slope);
-                }
-                finish(collocation, kappa, load_ratio, found)
+        let solution = if family.points.is_empty() {
+            // A family's first point: the cold solve itself, so a sweep's first row (and each
+            // row of a sweep over K_T, each its own family) is the plain solve's bits.
+            let cold = solve_normalized(collocation, kappa, load_ratio);
+            family.remember(load_ratio, cold.angle);
+            cold
+        } else {
+            // From the kept points near, else (a jump) from the cold start.
+            let (start, slope) = match family.guess(load_ratio) {
+                Some((start, slope)) => (start, Some(slope)),
+                None => (cold_start(kappa, load_ratio), None),
+            };
+            let found = find_angle(load_ratio, start, slope, |theta| {
+                family.solve_at(collocation, theta)
+            });
+            if let Some((angle, at)) = &found {
+                // Kept for the next guess with the Newton correction the neighbours' slope
+                // gives: a root is accepted within STOP, and extrapolating from roots with that
+                // much scatter would miss the next one by more than STOP (about 15 times as much
+                // for a cubic), costing a second solve.
+                let corrected = slope.map_or(*angle, |s| angle - (at.carried - load_ratio) * s);
+                family.remember(load_ratio, corrected);
             }
-            // Nothing near to continue from (a family's first point, or a jump): the cold
-            // solve itself, so a sweep's first row is the plain solve's bits.
-            None => {
-                let cold = solve_normalized(collocation, kappa, load_ratio);
-                family.remember(load_ratio, cold.angle);
-                cold
-            }
+            finish(collocation, kappa, load_ratio, found)
         };
         // The most recent last; the least recent dropped beyond FAMILIES_KEPT.
         kept.push(family);
