@@ -235,9 +235,12 @@ pub fn cycle_loop<P: LoadDriven>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::problems::cylinder::point::CylinderPoint;
+    use crate::problems::cylinder::{Cylinder, CylinderParams, CylinderProblem};
     use crate::problems::lap::LapJointProblem;
     use crate::problems::lap::closed_form::{LapJoint, LapParams};
     use crate::problems::twin_beams::TwinBeamsProblem;
+    use crate::study::samples::Spacing;
     use crate::{TipForce, TwinBeams, TwinBeamsParams};
 
     #[test]
@@ -312,5 +315,49 @@ mod tests {
             TwinBeamsProblem::holding_zone(&beams, Law::Regularized, TipForce::new(100.0).unwrap());
         assert_eq!(zone[0], 0.0);
         assert!(zone[1] > 0.0 && zone[1] < beams.params().length, "{zone:?}");
+    }
+
+    /// The bundled pad's Q sweep from 0 to mu P in `points` rows ([`force_sweep`], what `sweep`
+    /// writes), its rows solved in the sweep's own family scope.
+    fn pad_sweep(pad: Cylinder, points: u64) -> Vec<CylinderPoint> {
+        let loads = Samples::new(0.0, pad.gross_slip_load(), points, Spacing::Linear).unwrap();
+        force_sweep::<CylinderProblem>(pad, loads)
+            .unwrap()
+            .collect()
+    }
+
+    /// A sweep continues along its family inside its own scope (issue 47), and nowhere else: the
+    /// same sweep twice gives the same bits; each row is the cold solve's (the same sweep in
+    /// [`family::cold`]) to 1e-9 in what `sweep` prints; and a plain solve after it, at one of its
+    /// loads, is the cold solve of a thread that never swept, bit for bit.
+    #[test]
+    fn a_sweep_is_its_own_and_a_plain_solve_stays_cold() {
+        let pad = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
+        let load = pad.load(0.5 * pad.gross_slip_load()).unwrap();
+        let fresh = std::thread::spawn(move || pad.regularized(load))
+            .join()
+            .unwrap();
+        let first = pad_sweep(pad, 401);
+        assert_eq!(first[200].load, load.newtons_per_mm());
+        assert_eq!(pad.regularized(load), fresh);
+        assert_eq!(pad_sweep(pad, 401), first);
+        assert_eq!(pad.regularized(load), fresh);
+        let cold = family::cold(|| pad_sweep(pad, 401));
+        for (warm, cold) in first.iter().zip(&cold) {
+            for (w, c) in [
+                (warm.edge_slip_regularized, cold.edge_slip_regularized),
+                (warm.centre_slip_regularized, cold.centre_slip_regularized),
+                (warm.zone_regularized, cold.zone_regularized),
+                (warm.peak_shear_regularized, cold.peak_shear_regularized),
+            ] {
+                assert!(
+                    (w - c).abs() <= 1e-9 * c.abs(),
+                    "Q {}: {w:e} {c:e}",
+                    warm.load
+                );
+            }
+        }
+        // The sweep did continue: its row at the plain load is not the cold solve's bits.
+        assert_ne!(first[200], cold[200]);
     }
 }
