@@ -1,10 +1,13 @@
 //! Speed of the solvers: `cargo bench --bench solvers`. Results and machine: BENCHMARKS.md.
 
 use divan::{Bencher, black_box};
-use microslip::fit::{Measurement, Weights, fit_curve};
+use microslip::fit::{Measurement, Structure, Weights, fit_curve, fit_measured};
+use microslip::kernel::family;
 use microslip::numeric::MeshDensity;
 use microslip::problems::cylinder::collocation::Collocation;
+use microslip::problems::cylinder::continued;
 use microslip::problems::cylinder::regularized::solve_normalized;
+use microslip::problems::cylinder::{Cylinder, CylinderParams, CylinderProblem};
 use microslip::problems::lap::closed_form::{LapJoint, LapParams};
 use microslip::problems::lap::{LapContinuumMesh, LapFe, solve_lap_continuum};
 use microslip::problems::plate::{ContinuumMesh, PlateFe, solve_plate_continuum};
@@ -183,5 +186,108 @@ fn beams_continuum(bencher: Bencher) {
             black_box(100.0),
             BeamsContinuumMesh::default(),
         )
+    });
+}
+
+/// A cylinder Q-sweep at the bundled pad's K_T a / E* = 0.64: `SWEEP_POINTS` loads from 0 to
+/// mu P, each a full cold regularized solve (`solve_normalized`, the reference; what each point
+/// of `sweep --model cylinder` cost before issue 47).
+#[divan::bench(sample_count = 3)]
+fn cylinder_q_sweep_cold(bencher: Bencher) {
+    let collocation = Collocation::default_mesh();
+    bencher.bench_local(|| {
+        sweep_loads(SWEEP_POINTS)
+            .map(|ratio| solve_normalized(collocation, black_box(0.64), ratio).angle)
+            .sum::<f64>()
+    });
+}
+
+/// The same sweep continued along its family (`continued::solve` in a `family::scope`, what
+/// `Cylinder::regularized` does inside a sweep since issue 47), at `SWEEP_POINTS` and at 1e5
+/// points (the issue's goal: under 10 s).
+#[divan::bench(args = [SWEEP_POINTS, 100_000], sample_count = 3)]
+fn cylinder_q_sweep_continued(bencher: Bencher, points: usize) {
+    bencher.bench_local(|| {
+        family::scope(|| {
+            sweep_loads(points)
+                .map(|ratio| continued::solve(black_box(0.64), ratio).angle)
+                .sum::<f64>()
+        })
+    });
+}
+
+/// `fit cylinder` on 100 rows (issue 47's goal: under 5 s): the exact s(a) of mu 0.45 and K_T
+/// 4e4 MPa/mm at 100 loads to 0.9 mu P, fitted from the bundled pad (what `microslip fit` calls),
+/// in its own scope (`continued`, what `fit_measured` does) and with every solve cold
+/// (`reference`: in `family::cold`, every solve the cold one, as before issue 47).
+#[divan::bench(args = ["continued", "reference"], sample_count = 1)]
+fn cylinder_fit(bencher: Bencher, solves: &str) {
+    let truth = Cylinder::new(CylinderParams {
+        friction: 0.45,
+        tangential_stiffness: 4e4,
+        ..CylinderParams::STEEL_PAD
+    })
+    .unwrap();
+    let data: Vec<Measurement> = (1..=100)
+        .map(|i| {
+            let q = 405.0 * i as f64 / 100.0;
+            Measurement {
+                force: q,
+                response: truth.regularized(truth.load(q).unwrap()).edge_slip(),
+            }
+        })
+        .collect();
+    let held = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
+    let fit = || {
+        let structure = Structure::typed::<CylinderProblem>(&held);
+        fit_measured(
+            structure,
+            black_box(&data),
+            (None, None),
+            Weights::Absolute,
+            &mut |_| {},
+        )
+        .map(|r| r.kt.value)
+    };
+    bencher.bench_local(|| {
+        if solves == "reference" {
+            family::cold(fit)
+        } else {
+            fit()
+        }
+    });
+}
+
+/// `points` loads from 0 to mu P, as Q / mu P.
+fn sweep_loads(points: usize) -> impl Iterator<Item = f64> {
+    (0..points).map(move |i| i as f64 / (points - 1) as f64)
+}
+
+/// Points of the cold cylinder sweep benchmark.
+const SWEEP_POINTS: usize = 200;
+
+/// `solve cylinder --vary Q --target sa=0.002` on the bundled pad (issue 47's goal: under
+/// 0.5 s): the target search over Q in its scope (`scoped`, what `solve_for_target` does) and with
+/// every solve cold (`cold`, in `family::cold`, as before issue 47).
+#[divan::bench(args = ["scoped", "cold"], sample_count = 3)]
+fn cylinder_solve_vary_q(bencher: Bencher, solves: &str) {
+    use microslip::problems::cylinder::CylinderParam;
+    use microslip::problems::inputs::Inputs;
+    use microslip::problems::{ModelKind, Param};
+    use microslip::study::target::{Target, solve_for_target};
+    let model = Inputs::paper(ModelKind::Cylinder).validate().unwrap();
+    let target = Target::parse("sa=0.002", ModelKind::Cylinder).unwrap();
+    let param = Param::Cylinder(CylinderParam::TangentialLoad);
+    let solve = || {
+        solve_for_target(black_box(&model), param, target, None)
+            .map(|s| s.roots.len())
+            .unwrap()
+    };
+    bencher.bench_local(|| {
+        if solves == "cold" {
+            family::cold(solve)
+        } else {
+            solve()
+        }
     });
 }

@@ -58,7 +58,12 @@ fn run_cycle(
         CycleFormat::Text => out.write_all(report()?.text().as_bytes())?,
         CycleFormat::Json => write_json(out, &json::of(&report()?))?,
         CycleFormat::Csv => face
-            .write_loop(out, TableFormat::Csv, &model, (amplitude, points))
+            .write_loop(
+                &mut super::sweep::Paced::new(out, points),
+                TableFormat::Csv,
+                &model,
+                (amplitude, points),
+            )
             .ok_or_else(no_cycle)?
             .map_err(|e| match e {
                 LoadTableError::Force(e) => amplitude_error(e),

@@ -399,7 +399,9 @@ impl CycleReport {
                 words.keys,
             )
         };
-        CycleReport {
+        // The cycle walks one family of loads (its branches, the work integrals): one scope
+        // (issue 47), the same for the CLI, the TUI and Python.
+        crate::kernel::family::scope(|| CycleReport {
             model: P::INFO.key,
             preset: preset.to_string(),
             inputs: InputsReport(P::cycle_inputs(structure, amplitude)),
@@ -414,7 +416,7 @@ impl CycleReport {
             note: words.note,
             words,
             load_unit: P::INFO.load.map_or("N", |load| load.spec().unit.symbol()),
-        }
+        })
     }
 
     /// The readable summary: what is cycled and its structure, then both laws side by side.

@@ -46,6 +46,7 @@ pub use progress::{Pass, Progress};
 pub use structure::Structure;
 pub use weights::{Scatter, Weights};
 
+use crate::kernel::family;
 use crate::kernel::params::ParamError;
 use crate::problems::fittable::Fittable;
 use evidence::summarize;
@@ -293,8 +294,21 @@ pub fn fit_measured(
     Ok(result)
 }
 
-/// [`fit_weighted`], with the R^2 of its optimum ([`explained`]).
+/// [`fit_weighted`], with the R^2 of its optimum ([`explained`]): one [`family::scope`], so its
+/// residuals at one trial stiffness continue from each other and from the earlier trials' (the
+/// cylinder's rows, issue 47), and the fit depends on its inputs only.
 fn fit_explained(
+    structure: Structure,
+    data: &[Measurement],
+    fixed: (Option<f64>, Option<f64>),
+    weights: Weights,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<(FitResult, Option<f64>), FitError> {
+    family::scope(|| fit_in_scope(structure, data, fixed, weights, progress))
+}
+
+/// [`fit_explained`] inside its scope.
+fn fit_in_scope(
     structure: Structure,
     data: &[Measurement],
     (fixed_mu, fixed_kt): (Option<f64>, Option<f64>),

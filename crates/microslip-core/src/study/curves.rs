@@ -9,8 +9,11 @@
 //! type (`BeamPoint`, `beam_point`, ...) is re-exported here from its folder's `point` module,
 //! generated from the registry.
 //!
-//! Sweeps are iterators: a million-row sweep streams without building the table first.
+//! Sweeps are iterators: a million-row sweep streams without building the table first. Each
+//! sweep walks one family of its parameter, its rows computed in one [`family::scope`], where a
+//! solver may continue from the previous row (the cylinder, issue 47).
 
+use crate::kernel::family;
 use crate::kernel::regime::Law;
 use crate::problems::inputs::Model;
 use crate::problems::load_driven::LoadDriven;
@@ -121,7 +124,10 @@ pub fn param_sweep<P: Pointwise>(
     key: P::Key,
     values: Samples,
 ) -> Result<impl Iterator<Item = (f64, P::Point)>, RangeError> {
-    Ok(param_models::<P>(model, key, values)?.map(|(v, at)| (v, P::point(&at))))
+    // The rows walk one family of the parameter (a solver may continue along it, issue 47):
+    // each is computed inside the walk's scope.
+    let models = param_models::<P>(model, key, values)?;
+    Ok(family::iter(models.map(|(v, at)| (v, P::point(&at)))))
 }
 
 /// The response of `model` (mm: w(L) of the beams, u(L) of the plate, Delta of the lap joint)
@@ -134,15 +140,18 @@ pub fn responses_over<P: Problem>(
     key: P::Key,
     values: Samples,
 ) -> Result<(Series, Series), RangeError> {
-    Ok(param_models::<P>(model, key, values)?
-        .map(|(v, at)| {
-            let state = P::solve(&at);
-            (
-                (v, state.coulomb().response()),
-                (v, state.regularized().response()),
-            )
-        })
-        .unzip())
+    let models = param_models::<P>(model, key, values)?;
+    Ok(family::scope(|| {
+        models
+            .map(|(v, at)| {
+                let state = P::solve(&at);
+                (
+                    (v, state.coulomb().response()),
+                    (v, state.regularized().response()),
+                )
+            })
+            .unzip()
+    }))
 }
 
 /// Where the regularized law's zone ends (mm: X_r of the plate, X of the beams) against the
@@ -155,9 +164,12 @@ pub fn zone_end_over<P: Problem>(
     key: P::Key,
     values: Samples,
 ) -> Result<Series, RangeError> {
-    Ok(param_models::<P>(model, key, values)?
-        .map(|(v, at)| (v, P::solve(&at).regularized().zone_end()))
-        .collect())
+    let models = param_models::<P>(model, key, values)?;
+    Ok(family::scope(|| {
+        models
+            .map(|(v, at)| (v, P::solve(&at).regularized().zone_end()))
+            .collect()
+    }))
 }
 
 /// `param` of another problem than `model`'s.

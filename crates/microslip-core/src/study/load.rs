@@ -2,8 +2,11 @@
 //! sliding zones against the force, the cycle at an amplitude (dissipation D, damping ratio zeta)
 //! and over a range of amplitudes, and the closed hysteresis loop. The twin beams and the lap
 //! joint take their sweeps, loops and D vs F_a from here; the CLI's CSV rows, the reports and
-//! the charts from the same functions.
+//! the charts from the same functions. Each walks a family of loads, so each runs in one
+//! [`family::scope`] (a lazy sweep's rows in one [`family::iter`]): solvers that can continue
+//! from the previous point do (the cylinder, issue 47), within the study and nowhere else.
 
+use crate::kernel::family;
 use crate::kernel::regime::Law;
 use crate::problems::load_driven::{LoadDriven, MasingCycle};
 use crate::study::samples::{RangeEnd, RangeError, Samples, Series, check_points};
@@ -45,9 +48,9 @@ pub fn force_sweep<P: LoadDriven>(
 ) -> Result<impl Iterator<Item = P::Point>, RangeError> {
     check_forces::<P>(&model, &forces)?;
     // Every sample is accepted, so clamping changes nothing.
-    Ok(forces
-        .values()
-        .map(move |f| P::point(&model, P::clamped_force(&model, f))))
+    Ok(family::iter(forces.values().map(move |f| {
+        P::point(&model, P::clamped_force(&model, f))
+    })))
 }
 
 /// The response u (mm) against F (N): (Coulomb, regularized). The chart "w(L) vs F" of the
@@ -60,14 +63,16 @@ pub fn response_vs_force<P: LoadDriven>(
     forces: Samples,
 ) -> Result<(Series, Series), RangeError> {
     check_forces::<P>(model, &forces)?;
-    Ok(forces
-        .values()
-        .map(|f| {
-            let force = P::clamped_force(model, f);
-            let at = |law| (f, P::response(model, law, force));
-            (at(Law::Coulomb), at(Law::Regularized))
-        })
-        .unzip())
+    Ok(family::scope(|| {
+        forces
+            .values()
+            .map(|f| {
+                let force = P::clamped_force(model, f);
+                let at = |law| (f, P::response(model, law, force));
+                (at(Law::Coulomb), at(Law::Regularized))
+            })
+            .unzip()
+    }))
 }
 
 /// The edges of the zone that does not slide ([`LoadDriven::holding_zone`]) under `law` against
@@ -81,10 +86,12 @@ pub fn holding_zone_vs_force<P: LoadDriven>(
     forces: Samples,
 ) -> Result<Vec<(f64, [f64; 2])>, RangeError> {
     check_forces::<P>(model, &forces)?;
-    Ok(forces
-        .values()
-        .map(|f| (f, P::holding_zone(model, law, P::clamped_force(model, f))))
-        .collect())
+    Ok(family::scope(|| {
+        forces
+            .values()
+            .map(|f| (f, P::holding_zone(model, law, P::clamped_force(model, f))))
+            .collect()
+    }))
 }
 
 /// One cyclic amplitude, both laws: dissipation per cycle (N mm) and equivalent damping ratio.
@@ -104,6 +111,11 @@ pub struct CyclePoint {
 
 /// `model` cycled at one amplitude, both laws.
 pub fn cycle_point<P: LoadDriven>(model: &P::Structure, amplitude: P::Force) -> CyclePoint {
+    family::scope(|| cycle_point_in_scope::<P>(model, amplitude))
+}
+
+/// [`cycle_point`] in its caller's scope.
+fn cycle_point_in_scope<P: LoadDriven>(model: &P::Structure, amplitude: P::Force) -> CyclePoint {
     let (c, r) = (
         P::cycle(model, Law::Coulomb, amplitude),
         P::cycle(model, Law::Regularized, amplitude),
@@ -126,9 +138,9 @@ pub fn cycle_sweep<P: LoadDriven>(
     amplitudes: Samples,
 ) -> Result<impl Iterator<Item = CyclePoint>, RangeError> {
     check_forces::<P>(&model, &amplitudes)?;
-    Ok(amplitudes
-        .values()
-        .map(move |f| cycle_point::<P>(&model, P::clamped_force(&model, f))))
+    Ok(family::iter(amplitudes.values().map(move |f| {
+        cycle_point_in_scope::<P>(&model, P::clamped_force(&model, f))
+    })))
 }
 
 /// Dissipation per cycle D (N mm) against F_a (N): (Coulomb, regularized).
@@ -215,15 +227,20 @@ pub fn cycle_loop<P: LoadDriven>(
             }
         })
     };
-    Ok(branch(Branch::Unloading).chain(branch(Branch::Reloading)))
+    Ok(family::iter(
+        branch(Branch::Unloading).chain(branch(Branch::Reloading)),
+    ))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::problems::cylinder::point::CylinderPoint;
+    use crate::problems::cylinder::{Cylinder, CylinderParams, CylinderProblem};
     use crate::problems::lap::LapJointProblem;
     use crate::problems::lap::closed_form::{LapJoint, LapParams};
     use crate::problems::twin_beams::TwinBeamsProblem;
+    use crate::study::samples::Spacing;
     use crate::{TipForce, TwinBeams, TwinBeamsParams};
 
     #[test]
@@ -298,5 +315,49 @@ mod tests {
             TwinBeamsProblem::holding_zone(&beams, Law::Regularized, TipForce::new(100.0).unwrap());
         assert_eq!(zone[0], 0.0);
         assert!(zone[1] > 0.0 && zone[1] < beams.params().length, "{zone:?}");
+    }
+
+    /// The bundled pad's Q sweep from 0 to mu P in `points` rows ([`force_sweep`], what `sweep`
+    /// writes), its rows solved in the sweep's own family scope.
+    fn pad_sweep(pad: Cylinder, points: u64) -> Vec<CylinderPoint> {
+        let loads = Samples::new(0.0, pad.gross_slip_load(), points, Spacing::Linear).unwrap();
+        force_sweep::<CylinderProblem>(pad, loads)
+            .unwrap()
+            .collect()
+    }
+
+    /// A sweep continues along its family inside its own scope (issue 47), and nowhere else: the
+    /// same sweep twice gives the same bits; each row is the cold solve's (the same sweep in
+    /// [`family::cold`]) to 1e-9 in what `sweep` prints; and a plain solve after it, at one of its
+    /// loads, is the cold solve of a thread that never swept, bit for bit.
+    #[test]
+    fn a_sweep_is_its_own_and_a_plain_solve_stays_cold() {
+        let pad = Cylinder::new(CylinderParams::STEEL_PAD).unwrap();
+        let load = pad.load(0.5 * pad.gross_slip_load()).unwrap();
+        let fresh = std::thread::spawn(move || pad.regularized(load))
+            .join()
+            .unwrap();
+        let first = pad_sweep(pad, 401);
+        assert_eq!(first[200].load, load.newtons_per_mm());
+        assert_eq!(pad.regularized(load), fresh);
+        assert_eq!(pad_sweep(pad, 401), first);
+        assert_eq!(pad.regularized(load), fresh);
+        let cold = family::cold(|| pad_sweep(pad, 401));
+        for (warm, cold) in first.iter().zip(&cold) {
+            for (w, c) in [
+                (warm.edge_slip_regularized, cold.edge_slip_regularized),
+                (warm.centre_slip_regularized, cold.centre_slip_regularized),
+                (warm.zone_regularized, cold.zone_regularized),
+                (warm.peak_shear_regularized, cold.peak_shear_regularized),
+            ] {
+                assert!(
+                    (w - c).abs() <= 1e-9 * c.abs(),
+                    "Q {}: {w:e} {c:e}",
+                    warm.load
+                );
+            }
+        }
+        // The sweep did continue: its row at the plain load is not the cold solve's bits.
+        assert_ne!(first[200], cold[200]);
     }
 }

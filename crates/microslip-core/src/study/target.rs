@@ -16,6 +16,7 @@
 
 use thiserror::Error;
 
+use crate::kernel::family;
 use crate::kernel::params::{Compact, parse_number, significant};
 use crate::kernel::solve::find_root_in_bracket;
 use crate::problems::inputs::Model;
@@ -430,6 +431,17 @@ fn edge(holds: &impl Fn(f64) -> bool, mut a: f64, mut b: f64) -> f64 {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn solve_for_target(
+    model: &Model,
+    param: Param,
+    target: Target,
+    range: Option<(f64, f64)>,
+) -> Result<Solved, TargetError> {
+    // The scan and the root search walk one family of the parameter (issue 47).
+    family::scope(|| solve_in_scope(model, param, target, range))
+}
+
+/// [`solve_for_target`] inside its scope.
+fn solve_in_scope(
     model: &Model,
     param: Param,
     target: Target,

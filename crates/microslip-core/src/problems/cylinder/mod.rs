@@ -7,6 +7,7 @@
 
 pub mod closed_form;
 pub mod collocation;
+pub mod continued;
 pub mod cross_check;
 pub mod cycle;
 pub mod discretized;

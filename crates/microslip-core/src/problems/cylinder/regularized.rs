@@ -17,7 +17,8 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use super::closed_form::{Cylinder, TangentialLoad, edge_root, mindlin_stick_ratio};
 use super::collocation::{Collocation, CollocationMesh};
 use super::quadrature::solve_with_constant;
-use super::strips::{strip_area, strip_potential};
+use super::strips::{StripRule, strip_area, strip_potential};
+use crate::kernel::family;
 use crate::kernel::params::Domain;
 use crate::kernel::regime::{Regime, Zone};
 use crate::kernel::solve::find_root_in_bracket;
@@ -166,7 +167,7 @@ impl Fields<'_> {
         let mut row = vec![0.0; self.collocation.size()];
         self.collocation.kernel_row(t / self.zone, &mut row);
         let potential: f64 = row.iter().zip(self.shear).map(|(k, f)| k * f).sum();
-        let strips = strip_potential(self.angle, 2.0 * (0.5 * alpha).sin().powi(2));
+        let strips = StripRule::new(self.angle).potential(2.0 * (0.5 * alpha).sin().powi(2));
         ((2.0 / PI) * (self.shift + self.zone * potential + strips)).max(0.0)
     }
 
@@ -183,52 +184,89 @@ impl Fields<'_> {
         let mut row = vec![0.0; self.collocation.size()];
         self.collocation.kernel_row(t / self.zone, &mut row);
         let potential: f64 = row.iter().zip(self.shear).map(|(k, f)| k * f).sum();
-        let strips = strip_potential(self.angle, 1.0 - t);
+        let strips = StripRule::new(self.angle).potential(1.0 - t);
         ((2.0 / PI) * (self.shift + self.zone * potential + strips)).max(0.0)
     }
 }
 
 /// One linear solve of (H11') at theta = arccos(c / a): the shear and the shift, and (H13')'s
 /// Q / mu P.
-struct AtZone {
-    shear: Vec<f64>,
-    shift: f64,
-    carried: f64,
+pub(super) struct AtZone {
+    pub(super) shear: Vec<f64>,
+    pub(super) shift: f64,
+    pub(super) carried: f64,
 }
 
-/// Solves (H11') at c / a = cos `angle` for kappa = `kappa`: epsilon phi(u) - gamma integral_0^1
-/// phi(gamma v) K(u, v) dv - D = E(gamma u) at the collocation points and, with phi(1) = sqrt(1 -
-/// gamma^2) substituted, at u = 1 (the edge condition); `None` when the matrix is singular.
-fn solve_at(collocation: &Collocation, kappa: f64, angle: f64) -> Option<AtZone> {
+impl AtZone {
+    /// The unknowns `solution` (the shear, then the shift) at theta = `angle`.
+    pub(super) fn new(collocation: &Collocation, angle: f64, mut solution: Vec<f64>) -> AtZone {
+        let shift = solution.pop().unwrap_or(0.0);
+        AtZone {
+            carried: carried(collocation, angle.cos(), angle, &solution),
+            shear: solution,
+            shift,
+        }
+    }
+}
+
+/// (H11')'s matrix at c / a = `zone` for epsilon = pi / (2 kappa): epsilon phi(u) - gamma
+/// integral_0^1 phi(gamma v) K(u, v) dv - D at the collocation points, and without the epsilon
+/// phi term (substituted into the right-hand side) at u = 1.
+pub(super) fn system_matrix(collocation: &Collocation, epsilon: f64, zone: f64) -> Vec<f64> {
     let n = collocation.size();
     let size = n + 1;
-    let epsilon = FRAC_PI_2 / kappa;
-    let (zone, edge) = (angle.cos(), angle.sin());
-    // 1 - gamma, exact for a small angle.
-    let width = 2.0 * (0.5 * angle).sin().powi(2);
     let mut matrix = vec![0.0; size * size];
-    let mut rhs = vec![0.0; size];
     for i in 0..size {
-        let u = collocation.nodes.get(i).copied().unwrap_or(1.0);
         let row = &collocation.kernel[i * n..(i + 1) * n];
         for (j, k) in row.iter().enumerate() {
             matrix[i * size + j] = -zone * k;
         }
         matrix[i * size + n] = -1.0;
-        // 1 - gamma u = (1 - u) + u (1 - gamma), both exact.
-        rhs[i] = strip_potential(angle, (1.0 - u) + u * width);
         if i < n {
             matrix[i * size + i] += epsilon;
-        } else {
-            rhs[i] -= epsilon * edge;
         }
     }
+    matrix
+}
+
+/// (H11')'s right-hand side at theta = `angle`: the strips' potential E(gamma u) at the
+/// collocation points and, less epsilon phi(1) = epsilon sqrt(1 - gamma^2), at u = 1;
+/// `strips(1 - t)` is E(t).
+pub(super) fn system_rhs(
+    collocation: &Collocation,
+    epsilon: f64,
+    angle: f64,
+    strips: impl Fn(f64) -> f64,
+) -> Vec<f64> {
+    let n = collocation.size();
+    // 1 - gamma, exact for a small angle.
+    let width = 2.0 * (0.5 * angle).sin().powi(2);
+    let mut rhs = vec![0.0; n + 1];
+    for (i, r) in rhs.iter_mut().enumerate() {
+        let u = collocation.nodes.get(i).copied().unwrap_or(1.0);
+        // 1 - gamma u = (1 - u) + u (1 - gamma), both exact.
+        *r = strips((1.0 - u) + u * width);
+        if i == n {
+            *r -= epsilon * angle.sin();
+        }
+    }
+    rhs
+}
+
+/// Solves (H11') at c / a = cos `angle` for kappa = `kappa`: epsilon phi(u) - gamma integral_0^1
+/// phi(gamma v) K(u, v) dv - D = E(gamma u) at the collocation points and, with phi(1) = sqrt(1 -
+/// gamma^2) substituted, at u = 1 (the edge condition); `None` when the matrix is singular. The
+/// reference: a fresh factorization and the graded strips at every call.
+pub(super) fn solve_at(collocation: &Collocation, kappa: f64, angle: f64) -> Option<AtZone> {
+    let size = collocation.size() + 1;
+    let epsilon = FRAC_PI_2 / kappa;
+    let mut matrix = system_matrix(collocation, epsilon, angle.cos());
+    let mut rhs = system_rhs(collocation, epsilon, angle, |one_minus_t| {
+        strip_potential(angle, one_minus_t)
+    });
     let shift = solve_with_constant(&mut matrix, size, &mut rhs)?;
-    Some(AtZone {
-        carried: carried(collocation, zone, angle, &rhs),
-        shear: rhs,
-        shift,
-    })
+    rhs.push(shift);
+    Some(AtZone::new(collocation, angle, rhs))
 }
 
 /// The small-kappa limit of c / a (H15): the root of (2 / pi) (gamma sqrt(1 - gamma^2) +
@@ -267,7 +305,7 @@ fn compliant_limit_angle(load_ratio: f64) -> f64 {
 
 /// Where the root search on c stops: |Q(c) / Q - 1| below it (relative: (H13') carries a small
 /// load to full precision, so the stop is as tight at Q = 1e-300 mu P as at mu P / 2).
-const STOP: f64 = 1e-12;
+pub(super) const STOP: f64 = 1e-12;
 
 /// The regularized solution on `mesh` for kappa = `kappa` > 0 and Q / mu P = `load_ratio` in
 /// [0, 1] (H14): theta = arccos(c / a) from Q(theta) = Q by the secant method kept inside a
@@ -279,42 +317,107 @@ pub fn solve_normalized(
     kappa: f64,
     load_ratio: f64,
 ) -> NormalizedSolution {
-    let n = collocation.size();
     let load_ratio = load_ratio.clamp(0.0, 1.0);
-    let done = |angle: f64, shift: f64, shear: Vec<f64>| NormalizedSolution {
+    if let Some(done) = trivial(collocation, kappa, load_ratio) {
+        return done;
+    }
+    let found = find_angle(load_ratio, cold_start(kappa, load_ratio), None, |theta| {
+        solve_at(collocation, kappa, theta)
+    });
+    finish(collocation, kappa, load_ratio, found)
+}
+
+/// The answers at Q = 0 (no shear, no slip) and Q = mu P (gross slip: no microslip zone, s(0) =
+/// mu p0 / K_T), which need no solve.
+pub(super) fn trivial(
+    collocation: &Collocation,
+    kappa: f64,
+    load_ratio: f64,
+) -> Option<NormalizedSolution> {
+    let n = collocation.size();
+    if load_ratio == 0.0 {
+        Some(normalized(kappa, load_ratio, 0.0, 0.0, vec![0.0; n]))
+    } else if load_ratio == 1.0 {
+        Some(normalized(
+            kappa,
+            load_ratio,
+            FRAC_PI_2,
+            FRAC_PI_2 / kappa,
+            vec![0.0; n],
+        ))
+    } else {
+        None
+    }
+}
+
+fn normalized(
+    kappa: f64,
+    load_ratio: f64,
+    angle: f64,
+    shift: f64,
+    shear: Vec<f64>,
+) -> NormalizedSolution {
+    NormalizedSolution {
         kappa,
         load_ratio,
         zone: if angle >= FRAC_PI_2 { 0.0 } else { angle.cos() },
         angle,
         shift,
         shear,
-    };
-    let epsilon = FRAC_PI_2 / kappa;
-    if load_ratio == 0.0 {
-        // Unloaded: no shear, no slip.
-        return done(0.0, 0.0, vec![0.0; n]);
     }
-    if load_ratio == 1.0 {
-        // Gross slip: no microslip zone, s(0) = mu p0 / K_T.
-        return done(FRAC_PI_2, epsilon, vec![0.0; n]);
+}
+
+/// The solution from [`find_angle`]'s answer.
+pub(super) fn finish(
+    collocation: &Collocation,
+    kappa: f64,
+    load_ratio: f64,
+    found: Option<(f64, AtZone)>,
+) -> NormalizedSolution {
+    match found {
+        Some((angle, at)) => normalized(kappa, load_ratio, angle, at.shift, at.shear),
+        // Never met: every matrix singular. Mindlin's zone with no shear is finite at least.
+        None => normalized(
+            kappa,
+            load_ratio,
+            mindlin_stick_ratio(load_ratio).acos(),
+            FRAC_PI_2 / kappa,
+            vec![0.0; collocation.size()],
+        ),
     }
+}
+
+/// The first theta of a solve with nothing known: between the compliant limit (H15) and
+/// Mindlin's, weighted by kappa.
+pub(super) fn cold_start(kappa: f64, load_ratio: f64) -> f64 {
+    let soft = compliant_limit_angle(load_ratio);
+    let stiff = mindlin_stick_ratio(load_ratio).acos();
+    (soft + kappa * stiff) / (1.0 + kappa)
+}
+
+/// theta with Q(theta) = Q from `start`, 0 < Q / mu P = `load_ratio` < 1, `at` solving (H11')
+/// at a theta: the secant method kept inside the bracket [0, pi / 2]. Its first step is
+/// Newton's with `slope` = d theta / d(Q / mu P) when one is known (a neighbour's along a
+/// sweep), else the secant through Q(0) = 0. The best point met, with its solve.
+pub(super) fn find_angle(
+    load_ratio: f64,
+    start: f64,
+    slope: Option<f64>,
+    mut at: impl FnMut(f64) -> Option<AtZone>,
+) -> Option<(f64, AtZone)> {
     let (mut lo, mut hi) = (0.0, FRAC_PI_2);
-    let start = {
-        let soft = compliant_limit_angle(load_ratio);
-        let stiff = mindlin_stick_ratio(load_ratio).acos();
-        (soft + kappa * stiff) / (1.0 + kappa)
-    };
     let mut theta = start.clamp(1e-300, FRAC_PI_2 * (1.0 - 1e-6));
     // The previous point of the secant: Q(0) = 0.
     let mut previous = (0.0, -load_ratio);
+    let mut slope = slope.filter(|s| s.is_finite() && *s > 0.0);
     let mut best: Option<(f64, f64, AtZone)> = None;
     for _ in 0..100 {
-        let Some(at) = solve_at(collocation, kappa, theta) else {
+        let Some(solved) = at(theta) else {
             // A singular matrix (never met): move inside the bracket and go on.
             theta = 0.5 * (lo + hi);
             continue;
         };
-        let f = at.carried - load_ratio;
+        let f = solved.carried - load_ratio;
         if f > 0.0 {
             hi = theta;
         } else {
@@ -324,14 +427,17 @@ pub fn solve_normalized(
         let step_from = previous;
         previous = (theta, f);
         if closer {
-            best = Some((theta, f, at));
+            best = Some((theta, f, solved));
         }
         if f.abs() <= STOP * load_ratio {
             break;
         }
         // The ratio first: f and theta are both O(Q), and their product underflows below Q ~
         // 1e-160 mu P.
-        let mut next = theta - (theta - step_from.0) * (f / (f - step_from.1));
+        let mut next = match slope.take() {
+            Some(s) => theta - f * s,
+            None => theta - (theta - step_from.0) * (f / (f - step_from.1)),
+        };
         if !(next > lo && next < hi && next.is_finite()) {
             // Bisect, geometrically while the bracket spans decades.
             next = if lo > 0.0 && hi > 4.0 * lo {
@@ -347,14 +453,33 @@ pub fn solve_normalized(
         }
         theta = next;
     }
-    match best {
-        Some((angle, _, at)) => done(angle, at.shift, at.shear),
-        // Never met: every matrix singular. Mindlin's zone with no shear is finite at least.
-        None => done(
-            mindlin_stick_ratio(load_ratio).acos(),
-            epsilon,
-            vec![0.0; n],
-        ),
+    best.map(|(angle, _, solved)| (angle, solved))
+}
+
+/// Answers [`Cylinder::regularized`] keeps (about 1 KiB each), the most recently asked for
+/// last: the faces of one model (its point, zone strip, profiles and quantities) ask for the same
+/// solve several times per frame, and a cycle's branches ask for its amplitude at every point.
+#[derive(Default)]
+struct KeptAnswers(Vec<RegularizedState>);
+
+impl KeptAnswers {
+    const SIZE: usize = 8;
+
+    fn find(&mut self, cylinder: &Cylinder, newtons: f64) -> Option<RegularizedState> {
+        let i = self
+            .0
+            .iter()
+            .position(|s| s.cylinder == *cylinder && s.load == newtons)?;
+        let state = self.0.remove(i);
+        self.0.push(state);
+        Some(state)
+    }
+
+    fn keep(&mut self, state: RegularizedState) {
+        if self.0.len() >= Self::SIZE {
+            self.0.remove(0);
+        }
+        self.0.push(state);
     }
 }
 
@@ -376,31 +501,40 @@ pub struct RegularizedState {
 }
 
 impl Cylinder {
-    /// The regularized law's answer at `load` ((H10)-(H14), the default mesh). The last answer
-    /// of each thread is kept: the faces of one model (its point, zone strip, profiles and
-    /// quantities) ask for the same solve several times per frame, and a solve is deterministic,
-    /// so the kept answer is the one a new solve would give, bit for bit.
+    /// The regularized law's answer at `load` ((H10)-(H14), the default mesh). A solve is a
+    /// function call: outside a [`family::scope`] it is the cold reference
+    /// ([`solve_normalized`]), the same bits whatever was solved before; inside one (a sweep, a
+    /// target scan, a fit, a cycle) it continues from that scope's earlier solves of the same
+    /// K_T a / E* ([`super::continued`]: a sweep's point costs one linear solve), the cold answer
+    /// to about 1e-12. The last answers are kept ([`KeptAnswers`]), per thread outside a scope
+    /// (cold, so a kept answer is a new solve's bits) and in the scope's memory inside one.
     pub fn regularized(&self, load: TangentialLoad) -> RegularizedState {
         thread_local! {
-            static LAST: std::cell::Cell<Option<RegularizedState>> =
-                const { std::cell::Cell::new(None) };
+            static COLD: std::cell::RefCell<KeptAnswers> =
+                const { std::cell::RefCell::new(KeptAnswers(Vec::new())) };
         }
-        let kept = LAST
-            .with(std::cell::Cell::get)
-            .filter(|s| s.cylinder == *self && s.load == load.newtons_per_mm());
-        if let Some(state) = kept {
+        let newtons = load.newtons_per_mm();
+        let scoped = family::kept(|kept: &mut KeptAnswers| {
+            kept.find(self, newtons).unwrap_or_else(|| {
+                let state = self.solve_regularized(load);
+                kept.keep(state);
+                state
+            })
+        });
+        if let Some(state) = scoped {
+            return state;
+        }
+        if let Some(state) = COLD.with(|kept| kept.borrow_mut().find(self, newtons)) {
             return state;
         }
         let state = self.solve_regularized(load);
-        LAST.with(|last| last.set(Some(state)));
+        COLD.with(|kept| kept.borrow_mut().keep(state));
         state
     }
 
     /// [`Cylinder::regularized`] without the kept answer.
     fn solve_regularized(&self, load: TangentialLoad) -> RegularizedState {
-        let collocation = Collocation::default_mesh();
-        let solution = solve_normalized(
-            collocation,
+        let solution = super::continued::solve(
             self.stiffness_group(),
             load.newtons_per_mm() / self.gross_slip_load(),
         );
