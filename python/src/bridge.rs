@@ -330,7 +330,7 @@ pub fn fit_report(
     let structure = fit::Structure::of(&model(kind, values, false)?).ok_or_else(|| {
         let fittable: Vec<_> = ModelKind::ALL
             .into_iter()
-            .filter(|k| k.problem().fittable().is_some())
+            .filter(|k| k.problem().faces().fittable.is_some())
             .map(|k| k.name())
             .collect();
         format!(

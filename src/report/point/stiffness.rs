@@ -175,7 +175,8 @@ impl StiffnessReport {
             force: model
                 .kind()
                 .problem()
-                .load_driven()
+                .faces()
+                .load_driven
                 .and_then(|load_driven| load_driven.applied_force(model)),
             friction_stress: interface.friction * interface.pressure,
             candidates: comparison

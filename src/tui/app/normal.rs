@@ -92,7 +92,7 @@ impl App {
                         let owners: Vec<String> = crate::problems::ModelKind::ALL
                             .into_iter()
                             .flat_map(|k| {
-                                k.problem().choices().iter().map(move |c| {
+                                k.problem().faces().choices.iter().map(move |c| {
                                     format!("{} of the {}", c.key(), k.description().title)
                                 })
                             })

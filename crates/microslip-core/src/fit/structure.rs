@@ -37,7 +37,7 @@ impl Structure {
     /// The structure of `model`, when its problem is fittable; `None` for a problem without a
     /// load-response curve (the plate): the one place that says which problems `f` fits.
     pub fn of(model: &Model) -> Option<Structure> {
-        let fittable = model.kind().problem().fittable()?;
+        let fittable = model.kind().problem().faces().fittable?;
         Some(Structure {
             fittable,
             model: *model,

@@ -1,7 +1,8 @@
 //! The cross-check capability: a problem whose closed forms can be compared with its own
 //! independent discretized solver (its `discretized.rs`, which never sees a closed form) over a
 //! grid that spans every regime and the transitions between them. `crate::verify` runs the
-//! comparison once for every problem that has it ([`Problem::cross_checked`]); each problem
+//! comparison once for every problem that has it (the `cross_checked` slot of its
+//! [`Problem::FACES`]); each problem
 //! writes in its folder its grid, what it compares and how a case is written for people.
 
 use std::fmt::Debug;
@@ -60,7 +61,7 @@ pub trait AnyCrossChecked: Send + Sync {
 }
 
 /// The [`AnyCrossChecked`] of a [`CrossChecked`] problem `P`: what its
-/// [`Problem::cross_checked`] hands out.
+/// [`Problem::FACES`] holds.
 pub struct CrossCheckedOf<P>(std::marker::PhantomData<P>);
 
 impl<P> Debug for CrossCheckedOf<P> {

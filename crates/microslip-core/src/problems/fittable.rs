@@ -3,7 +3,7 @@
 //! paper's section 2.1.3, the joint's Delta against F is (L11)). The fit itself (least squares
 //! on the regularized closed form, `crate::fit`) is written once over [`AnyFittable`]; a problem
 //! is fitted by implementing [`Fittable`] in its folder and handing out
-//! `FittableOf::<Self>::NEW` from [`Problem::fittable`](crate::problems::Problem::fittable), with
+//! `FittableOf::<Self>::NEW` in the `fittable` slot of its [`Problem::FACES`](crate::problems::Problem::FACES), with
 //! no code outside its folder.
 //!
 //! What the fit needs of a problem, besides [`LoadDriven`]: the structure at a trial (mu, K_T),
@@ -121,7 +121,7 @@ pub trait AnyFittable: Send + Sync {
 }
 
 /// The [`AnyFittable`] of a [`Fittable`] problem `P`: what its
-/// [`Problem::fittable`](crate::problems::Problem::fittable) hands out.
+/// [`Problem::FACES`](crate::problems::Problem::FACES) holds.
 #[derive(Debug)]
 pub struct FittableOf<P>(std::marker::PhantomData<P>);
 
@@ -202,11 +202,11 @@ mod tests {
         for kind in ModelKind::ALL {
             let problem = kind.problem();
             assert_eq!(
-                problem.fittable().is_some(),
-                problem.load_driven().is_some(),
+                problem.faces().fittable.is_some(),
+                problem.faces().load_driven.is_some(),
                 "{kind}"
             );
-            let Some(fittable) = problem.fittable() else {
+            let Some(fittable) = problem.faces().fittable else {
                 continue;
             };
             assert_eq!(fittable.kind(), kind);
