@@ -3,7 +3,8 @@
 //! origin and shear, the K_T table's rows, the regime pane's own continuum solve, the setting a
 //! key toggles, the measured curve `d` reads and what `f` fits. Each problem writes them in its
 //! face folder (`src/problems/<name>/pane.rs`) as its [`PaneFace`]; the TUI reaches them only
-//! through [`pane_face`], generated from the registry, so that no screen file names a problem
+//! through its erased face ([`erased`], in the application's table `report::face::faces`,
+//! built from the registry), so that no screen file names a problem
 //! and the drawing (`tui/ui/`) reads the text the view model built from these.
 //!
 //! Why here, in the chart layer: the faces sit above it and the TUI above them, so the trait
@@ -189,7 +190,7 @@ pub trait PaneFace: Deck {
 /// A [`PaneFace`] with its types erased, for the TUI, which holds models as [`Model`] and
 /// [`Inputs`]: each method answers for a model of its own problem and gives nothing (an empty
 /// text or list, None) for another's, which the TUI never asks (it asks the face of the
-/// model's own kind, [`pane_face`]).
+/// model's own kind, `report::face::faces(kind).pane`).
 pub trait AnyPaneFace: Send + Sync {
     /// See [`PaneFace::STRIP_ORIGIN`].
     fn strip_origin(&self) -> &'static str;
@@ -220,6 +221,12 @@ pub trait AnyPaneFace: Send + Sync {
 
 /// The [`AnyPaneFace`] of a [`PaneFace`] problem `P`.
 struct PaneOf<P>(std::marker::PhantomData<P>);
+
+/// The erased [`PaneFace`] of `P`: its slot in the application's table of erased faces
+/// (`report::face::faces`).
+pub fn erased<P: PaneFace>() -> &'static dyn AnyPaneFace {
+    &PaneOf::<P>(std::marker::PhantomData)
+}
 
 impl<P: PaneFace> AnyPaneFace for PaneOf<P> {
     fn strip_origin(&self) -> &'static str {
@@ -307,7 +314,7 @@ pub struct FeRead {
     pub code: &'static str,
 }
 
-/// Writes [`pane_face`], [`fe_read`] and [`fe_brief`] from the registry.
+/// Writes [`fe_read`] and [`fe_brief`] from the registry.
 macro_rules! pane_faces {
     ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
         /// `loaded` as the TUI shows it ([`FeRead`]).
@@ -337,17 +344,6 @@ macro_rules! pane_faces {
                 $(AnyLoaded::$variant(l) => {
                     type P = crate::problems::$folder::$problem;
                     Some(<P as PaneFace>::fe_brief(&P::from_model(model)?, l, code))
-                }),+
-            }
-        }
-
-        /// The screen face of the problem `kind` (generated from the registry).
-        pub fn pane_face(kind: ModelKind) -> &'static dyn AnyPaneFace {
-            match kind {
-                $(ModelKind::$variant => {
-                    const FACE: PaneOf<crate::problems::$folder::$problem> =
-                        PaneOf(std::marker::PhantomData);
-                    &FACE
                 }),+
             }
         }

@@ -45,7 +45,7 @@ pub(super) fn run_kt_tolerance(
     };
     let kind = model.kind();
     // A load-driven problem is checked over a force range; any other at its one state.
-    let answer = match report::face::report_face(kind).cycle() {
+    let answer = match report::face::faces(kind).cycle {
         Some(face) => {
             let no_load = || CliError::Invalid(format!("the {kind} problem has no load"));
             let force = face.applied_force(&model).ok_or_else(no_load)?;

@@ -2,7 +2,7 @@
 
 use super::*;
 use crate::problems::problem::ParamKey;
-use crate::report::face::report_face;
+use crate::report::face::faces;
 use crate::report::point::cycle::LoadTableError;
 
 /// `microslip sweep ...`: the generic sweep, a problem's (`sweep PROBLEM`) or `sweep cycle`.
@@ -201,7 +201,7 @@ fn run_cycle_sweep(out: &mut impl Write, args: &CycleSweepArgs) -> Result<(), Cl
         .map_err(force_range_error)?;
     let model = load_any_structure(inputs, DEFAULT_PROBLEM)?.1;
     let no_cycle = || no_load_to_cycle(inputs, model.kind(), "sweep cycle");
-    let face = report_face(model.kind()).cycle().ok_or_else(no_cycle)?;
+    let face = faces(model.kind()).cycle.ok_or_else(no_cycle)?;
     match face.write_cycle_sweep(out, *format, &model, amplitudes) {
         Some(Ok(())) => Ok(()),
         Some(Err(LoadTableError::Range(e))) => Err(force_range_error(e)),

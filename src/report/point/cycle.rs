@@ -67,7 +67,7 @@ impl From<std::io::Error> for LoadTableError {
 }
 
 /// A [`CycleFace`] with its types erased: what a command reaches from a problem's kind
-/// ([`crate::report::face::AnyReportFace::cycle`]), each method `None` for a model of another
+/// ([`crate::report::face::AppFaces::cycle`]), each method `None` for a model of another
 /// problem. Only the load-driven problems have one, so a command that needs a load (`cycle`,
 /// `sweep cycle`, an F sweep) finds out from the problem, not from a list of problems.
 pub trait AnyCycleFace: Send + Sync {

@@ -3,9 +3,10 @@
 use super::fit::fit_structure;
 use super::{App, Measurements, Mode};
 use crate::chart;
-use crate::chart::panes::{FeRead, fe_brief, fe_read, pane_face};
+use crate::chart::panes::{FeRead, fe_brief, fe_read};
 use crate::fit::Measurement;
 use crate::problems::ModelKind;
+use crate::report::face::faces;
 use crate::tui::effects::Effect;
 use crate::tui::views::View;
 
@@ -85,7 +86,7 @@ impl App {
         if let Some((previous, Some(previous_origin))) = &self.external
             && let Some(origin) = &origin
             && previous.model == model
-            && pane_face(model).same_curve(previous_origin, origin)
+            && faces(model).pane.same_curve(previous_origin, origin)
         {
             points.extend(previous.points.iter().copied());
             points.sort_by(|a, b| a.0.total_cmp(&b.0));
