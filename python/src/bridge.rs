@@ -86,8 +86,11 @@ fn load_range(
     let (name, unit) = info
         .load_words()
         .ok_or_else(|| format!("the {} has no load", info.title))?;
-    let load = face
-        .applied_force(model)
+    let load = kind
+        .problem()
+        .faces()
+        .load_driven
+        .and_then(|load_driven| load_driven.applied_force(model))
         .ok_or_else(|| format!("the {} has no load", info.title))?;
     let spec = info.load.map(|p| p.spec()).ok_or("no load")?;
     let (lower, upper) = (format!("{name}_from"), format!("{name}_to"));

@@ -106,9 +106,6 @@ pub trait AnyCycleFace: Send + Sync {
         forces: Samples,
     ) -> Option<Result<(), LoadTableError>>;
 
-    /// The force `model` is at (N).
-    fn applied_force(&self, model: &Model) -> Option<f64>;
-
     /// [`CycleFace::force_limit`] of `model`'s structure; `None` also for another problem's
     /// model.
     fn force_limit(&self, model: &Model) -> Option<f64>;
@@ -199,10 +196,6 @@ impl<P: CycleFace> AnyCycleFace for CycleOf<P> {
             write_table(&mut &mut *out, format, rows.map(|r| P::LoadRow::from(&r)))?;
             Ok(())
         })())
-    }
-
-    fn applied_force(&self, model: &Model) -> Option<f64> {
-        Some(P::load_value(P::applied_force(&P::from_model(model)?)))
     }
 
     fn force_limit(&self, model: &Model) -> Option<f64> {

@@ -54,7 +54,7 @@ impl Structure {
 
     /// The problem fitted.
     pub fn kind(&self) -> ModelKind {
-        self.fittable.kind()
+        self.model.kind()
     }
 
     /// The model the structure is held as (at no particular force).
@@ -92,9 +92,14 @@ impl Structure {
         self.fittable.load()
     }
 
-    /// What bounds the load it carries, in the problem's words.
+    /// What bounds the load it carries, in the problem's words
+    /// ([`Description::bound_sentence`](crate::problems::Description::bound_sentence)), for the
+    /// refusal of a measured force no mu carries; empty for a structure without one.
     pub(super) fn bound(&self) -> String {
-        self.fittable.bound()
+        self.kind()
+            .description()
+            .bound_sentence()
+            .unwrap_or_default()
     }
 
     /// The structure at `mu`, `kt`; `None` where they (or the structure) are not accepted.

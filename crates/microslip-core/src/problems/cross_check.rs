@@ -8,9 +8,9 @@
 use std::fmt::Debug;
 
 use crate::numeric::{MeshDensity, NumericError};
+use crate::problems::Problem;
 use crate::problems::inputs::Model;
 use crate::problems::problem::Registered;
-use crate::problems::{ModelKind, Problem};
 
 /// What `verify` needs of a problem (module docs).
 pub trait CrossChecked: Problem + Registered {
@@ -44,8 +44,6 @@ pub fn relative_error(a: f64, b: f64) -> f64 {
 /// The [`CrossChecked`] capability of a problem, erased: models are the [`Model`] enum, and
 /// every method that takes one answers `None` for another problem's model.
 pub trait AnyCrossChecked: Send + Sync {
-    /// The problem.
-    fn kind(&self) -> ModelKind;
     /// [`CrossChecked::COMPARED`].
     fn compared(&self) -> &'static [&'static str];
     /// [`CrossChecked::grid`].
@@ -76,10 +74,6 @@ impl<P> CrossCheckedOf<P> {
 }
 
 impl<P: CrossChecked> AnyCrossChecked for CrossCheckedOf<P> {
-    fn kind(&self) -> ModelKind {
-        P::KIND
-    }
-
     fn compared(&self) -> &'static [&'static str] {
         P::COMPARED
     }
