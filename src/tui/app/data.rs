@@ -3,7 +3,7 @@
 use super::fit::fit_structure;
 use super::{App, Measurements, Mode};
 use crate::chart;
-use crate::chart::panes::{FeRead, fe_brief, fe_read};
+use crate::chart::panes::FeRead;
 use crate::fit::Measurement;
 use crate::problems::ModelKind;
 use crate::report::face::faces;
@@ -66,7 +66,7 @@ impl App {
             origin,
             points,
             code,
-        } = fe_read(loaded);
+        } = faces(loaded.kind()).pane.fe_read(loaded);
         // Measurements were taken on the values the deck now replaces: they go (the help's rule).
         let mut dropped = String::new();
         if let Some(inputs) = origin {
@@ -95,7 +95,7 @@ impl App {
         let Some(current) = self.model() else {
             return self.error(format!("{path}: the deck's parameters are not valid"));
         };
-        let summary = match fe_brief(loaded, &current, code) {
+        let summary = match faces(model).pane.fe_brief(loaded, &current, code) {
             Some(Ok(summary)) => summary,
             Some(Err(e)) => return self.error(format!("{path}: {e}")),
             None => format!("{path}: FE results of another problem: press m"),
