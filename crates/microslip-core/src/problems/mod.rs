@@ -79,11 +79,13 @@
 //!    against an envelope and the continuum, `report::compare::table::CompareTable` too: its
 //!    compare row, row verdict, closing verdict and the text of its table), `report.rs`
 //!    (`report::face::ReportFace`: its point report, its sweep and loop row types, K_T answer
-//!    and paper table; and `report::point::cycle::CycleFace` if it is driven by a load). `fe`
-//!    and `report` name no problem (`tests/layering.rs`). The cylinder's reader is its
-//!    `ccx_read.rs` and its comparison its `deck.rs` (its report has another shape than the
-//!    table's). Every command, chart, report and TUI pane then serves it through code generated
-//!    from the registry.
+//!    and paper table; and `report::point::cycle::CycleFace` if it is driven by a load, handed
+//!    out by its `ReportFace::cycle`). `fe` and `report` name no problem (`tests/layering.rs`).
+//!    The cylinder's reader is its `ccx_read.rs` and its comparison its `deck.rs` (its report
+//!    has another shape than the table's). Every command, chart, report and TUI pane then
+//!    serves it through code generated from the registry: the application's one typed dispatch
+//!    (`report::face::for_problem`) and its table of erased faces (`report::face::faces`) need
+//!    no line for it.
 //! 5. **Its presets**: `presets/<paper-preset>.toml` (named by [`Description::paper_preset`]),
 //!    each listed with its `include_str!` in `BUNDLED_PRESETS` of its face folder's `mod.rs`
 //!    (`src/problems/cylinder/mod.rs`); `preset::bundled` gathers every problem's from the
@@ -314,6 +316,13 @@ macro_rules! problem_list {
             pub fn problem(self) -> &'static dyn AnyProblem {
                 match self {
                     $(ModelKind::$variant => &$folder::$problem),+
+                }
+            }
+
+            /// Runs `visit` for this problem, typed ([`problem::Visit`]).
+            pub fn visit<V: problem::Visit>(self, visit: V) -> V::Output {
+                match self {
+                    $(ModelKind::$variant => visit.run::<$folder::$problem>()),+
                 }
             }
         }

@@ -23,6 +23,9 @@ use crate::problems::cross_check::AnyCrossChecked;
 use crate::problems::fittable::AnyFittable;
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::AnyLoadDriven;
+use crate::problems::pointwise::Pointwise;
+use crate::problems::profiled::Profiled;
+use crate::problems::stiffness_answer::StiffnessAnswer;
 use crate::problems::zoned::Layout;
 use crate::problems::{Description, ModelKind, Param, Quantity, Solution, UnknownParam};
 
@@ -398,6 +401,24 @@ pub enum ProblemError {
 pub trait Registered {
     /// Its variant of [`ModelKind`].
     const KIND: ModelKind;
+}
+
+/// What every registered problem writes, because the studies dispatch over the whole registry
+/// (the checklist in `problems/mod.rs`): the bound a [`Visit`] may use.
+pub trait Listed: Registered + Pointwise + Profiled + StiffnessAnswer {}
+
+impl<P: Registered + Pointwise + Profiled + StiffnessAnswer> Listed for P {}
+
+/// Code written once, generic over a problem's type, run for the problem of a [`ModelKind`] by
+/// [`ModelKind::visit`]: the core's one typed dispatch, generated from the registry, for what
+/// cannot be an erased face of [`ProblemFaces`] because it speaks a higher layer's types (a
+/// study's samples and series).
+pub trait Visit {
+    /// What it gives back.
+    type Output;
+
+    /// Runs it for the problem `P`.
+    fn run<P: Listed>(self) -> Self::Output;
 }
 
 /// A [`Problem`] with its types erased (object safe): parameter values as `&[f64]` indexed like
