@@ -7,7 +7,9 @@ Lines of dispatch, in every shipped `.rs` file of the core, the application and 
 - the declaration of each erased trait (`trait Any...`) and each impl of one (`impl ... Any... for`);
 - the adapter structs that carry a typed problem to its erased side (`struct ...Of<P>`, with
   their `impl ... ...Of<P>` blocks);
-- the erased tables of a problem's faces (`struct ...Faces` / `impl ...Faces`);
+- the erased tables of a problem's faces (`pub struct ...Faces` / `impl ...Faces`);
+- the typed dispatch: the visitor traits (`ForProblem`, `Visit`), their bounds (`Faces`,
+  `Listed`) and their impls (a command body written as a visitor counts as an erased impl's does);
 - the typed methods that hand a capability to the erased side (`fn continuum() -> Option<&...dyn`
   and the like: a problem's trait method returning `&'static dyn Any...`, or a fn pointer table);
 - the callback macros `with_problems!` is expanded with (`macro_rules! NAME` where
@@ -37,6 +39,11 @@ STARTS = [
     ("table", re.compile(r"^\s*impl(<.*>)? \w*Faces\b")),
     ("hand-out", re.compile(r"^\s*(pub )?fn \w+\(\)\s*->\s*(Option<)?&'static (\[&'static )?dyn Any")),
     ("hand-out", re.compile(r"^\s*(pub )?const FACES\b")),
+    # The typed dispatch: the visitor traits a registry expansion runs (`ForProblem`, `Visit`),
+    # their bounds (`Faces`, `Listed`), and every command body written as a visitor (counted like
+    # an erased impl's bodies, so that moving a body from one to the other changes nothing).
+    ("typed dispatch", re.compile(r"^\s*(pub(\([a-z]+\))? )?trait (ForProblem|Visit|Faces|Listed)\b")),
+    ("typed dispatch", re.compile(r"^\s*impl(<.*>)? (ForProblem|Visit|Faces|Listed) for ")),
 ]
 
 

@@ -9,6 +9,22 @@
 //! [`Description::params`]) and in the enums generated from the registry ([`Inputs`],
 //! [`Model`]), which the bridges (`to_inputs`, `from_model`, ...) connect to each problem's
 //! typed side.
+//!
+//! # Dispatch in one place
+//! The registry's list becomes the erased side here, once: [`AnyProblem`] (every registered
+//! problem, blanket impl) with [`AnyProblem::faces`], the problem's one table of capabilities
+//! ([`ProblemFaces`], its [`Problem::FACES`]), instead of a typed method and an erased forward
+//! per capability; and [`ModelKind::visit`], the one typed dispatch ([`Visit`]) for what a higher
+//! layer writes generic over the problem (a study's series). The application does the same once
+//! above its chart layer (`report::face::faces` and `for_problem`).
+//!
+//! Measured by `validation/dispatch_lines.py` (issue 43, item 5: erased traits and their
+//! impls, adapters, hand-outs, tables, typed dispatch with its bodies, registry callbacks; code
+//! lines of the three crates), before and after the table: 1402 -> 1305 lines of dispatch
+//! (1233 -> 989 without the typed dispatch and its command bodies), erased traits 12 -> 9
+//! (`AnyContinuum`, `AnyZoned` became fns of the table, the Python face's `AnyFace` runs
+//! through the application's `for_problem`), `with_problems!` expansions in shipped code 15 ->
+//! 11, `pub` items of this crate 766 -> 768.
 
 use std::fmt::Debug;
 use std::hash::Hash;
@@ -270,10 +286,7 @@ pub type ContinuumResponse = fn(&Model) -> Option<Result<f64, NumericError>>;
 /// numbers, which the typed trait cannot (its models and forces are the problem's own types),
 /// and one `&'static dyn` carries all of them; each is implemented once, generically
 /// (`LoadDrivenOf<P>`), never by a problem. [`AnyChoice`] has no typed side: a problem writes it
-/// for each setting that is a name.
-///
-/// Before this table (issue 43, item 5, counted by `validation/dispatch_lines.py`): 1233 lines
-/// of dispatch, 12 erased traits, 15 registry expansions, 766 `pub` items in this crate.
+/// for each setting that is a name. What the table saved is counted in the module docs.
 #[derive(Clone, Copy)]
 pub struct ProblemFaces {
     /// Its 2-D continuum reference ([`Continuum`]), on the default mesh.
