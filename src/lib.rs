@@ -54,6 +54,15 @@
 //! checklist a new problem follows is in the docs of [`problems`]. No other file names a problem
 //! (`tests/layering.rs` checks it).
 //!
+//! Dispatch is in one place per crate: the core turns the registry into erased faces once, as
+//! each problem's table of capabilities (`problems::problem::ProblemFaces`, from `AnyProblem`);
+//! the application once, as [`report::face::for_problem`] (a command written generic over the
+//! problem's faces, which the command line and the Python face run) and the table built on it,
+//! [`report::face::faces`] (report, cycle and screen faces). The layers below `report` keep a
+//! registry expansion of their own where they generate a type with a variant per problem
+//! (`fe::face::AnyLoaded`, `chart::view::AnyChart`), and `fe` its deck face, which its header
+//! and result readers need and cannot reach from above.
+//!
 //! Where this departs from the project's intended shape, and why: FE decks, readers and the
 //! comparison are a module of the application ([`fe`]) rather than a crate of their own, because
 //! they are used only by the application and a crate boundary would add a published surface

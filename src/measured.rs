@@ -130,7 +130,7 @@ pub fn parse_measured_curve_of(
     text: &str,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Measured, DataError> {
-    let Some(fittable) = kind.problem().fittable() else {
+    let Some(fittable) = kind.problem().faces().fittable else {
         return Err(error(
             1,
             format!(

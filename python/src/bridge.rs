@@ -5,15 +5,13 @@
 //! The bodies are written once for every problem, over the application's traits and generic
 //! functions (`ReportFace::point_report`, its erased cycle face, `fe::face::written_deck`,
 //! `fe::load::results::<P>`, `Deck::compare`, `fit::Structure::of`, `study::tolerance::*::<P>`),
-//! and dispatched through [`face`], generated from the registry
-//! (`microslip_core::with_problems!`): no problem is named here, and a new problem needs no line
-//! in this crate.
+//! each a [`ForProblem`] run by the application's [`for_problem`] (the one the command line's
+//! handlers run through, generated from the registry): no problem is named here, no `match` on
+//! a kind is written here, and a new problem needs no line in this crate.
 
-use std::marker::PhantomData;
 use std::path::Path;
 
 use microslip::fe::deck::DeckMesh;
-use microslip::fe::face::Deck;
 use microslip::fe::face::DeckRequest;
 use microslip::fe::header::StickSlope;
 use microslip::fe::kinematics::Kinematics;
@@ -24,9 +22,8 @@ use microslip::numeric::cancel::checkpoint;
 use microslip::problems::inputs::Model;
 use microslip::problems::problem::Registered;
 use microslip::problems::{ModelKind, Problem};
-use microslip::report::compare::CompareFace;
 use microslip::report::compare::run::{self as compare_run, ContactCompared};
-use microslip::report::face::ReportFace;
+use microslip::report::face::{Faces, ForProblem, ReportFace, for_problem};
 use microslip::report::json;
 use microslip::report::point::cycle::AnyCycleFace;
 use microslip::report::point::tolerance::ToleranceReport;
@@ -49,7 +46,7 @@ fn model(kind: ModelKind, values: &[f64], loaded: bool) -> Result<Model, String>
 }
 
 /// `model` as the problem `P`'s typed model. Every caller holds a model of `P` (from
-/// [`face`]`(P::KIND)`); the error says so should one not.
+/// [`for_problem`] of its kind); the error says so should one not.
 fn typed<P: Problem + Registered>(model: &Model) -> Result<P::Model, String> {
     model.of::<P>().map_err(|other| {
         format!(
@@ -76,7 +73,7 @@ pub enum Of {
     Current,
 }
 
-/// [`Face::tolerance`]'s load range, checked as `kt --tolerance --from/--to` checks it
+/// [`Tolerance`]'s load range, checked as `kt --tolerance --from/--to` checks it
 /// (`src/cli/kt.rs`): each end the model's load when not given, in order, the upper one a load
 /// the structure carries (refused in the problem's words beyond its bound).
 fn load_range(
@@ -89,8 +86,11 @@ fn load_range(
     let (name, unit) = info
         .load_words()
         .ok_or_else(|| format!("the {} has no load", info.title))?;
-    let load = face
-        .applied_force(model)
+    let load = kind
+        .problem()
+        .faces()
+        .load_driven
+        .and_then(|load_driven| load_driven.applied_force(model))
         .ok_or_else(|| format!("the {} has no load", info.title))?;
     let spec = info.load.map(|p| p.spec()).ok_or("no load")?;
     let (lower, upper) = (format!("{name}_from"), format!("{name}_to"));
@@ -119,41 +119,31 @@ fn load_range(
     Ok(range)
 }
 
-/// The commands of any problem, their types erased: one body each, written once over the
-/// application's faces ([`FaceOf`]); no problem writes anything here.
-trait AnyFace: Sync {
-    fn point_report(&self, model: &Model, name: &str) -> Result<Value, String>;
-    fn cycle_report(&self, model: &Model, name: &str, amplitude: f64) -> Result<Value, String>;
-    fn tolerance(
-        &self,
-        model: &Model,
-        question: (f64, Of),
-        range: [Option<f64>; 2],
-        element: f64,
-    ) -> Result<ToleranceAnswer, String>;
-    fn deck(&self, model: &Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String>;
-    fn compare(
-        &self,
-        path: &Path,
-        deck: Option<&Path>,
-        structure: &dyn Fn() -> Result<Model, String>,
-    ) -> Result<Value, String>;
-}
+/// `src/cli/point.rs`: the problem's point report, which adds its continuum reference where its
+/// reduced theory is not expected to hold.
+/// The model and the preset's name.
+struct PointReport<'a>(&'a Model, &'a str);
 
-/// The [`AnyFace`] of a [`Face`] problem `P`.
-struct FaceOf<P>(PhantomData<P>);
+impl ForProblem for PointReport<'_> {
+    type Output = Result<Value, String>;
 
-impl<P: ReportFace + CompareFace + Deck> AnyFace for FaceOf<P> {
-    /// `src/cli/point.rs`: the problem's point report, which adds its continuum reference where
-    /// its reduced theory is not expected to hold.
-    fn point_report(&self, model: &Model, name: &str) -> Result<Value, String> {
+    fn run<P: Faces>(self) -> Self::Output {
+        let PointReport(model, name) = self;
         let report =
             P::point_report(name, &typed::<P>(model)?, false).map_err(|e| e.to_string())?;
         Ok(json::of(&report))
     }
+}
 
-    /// `src/cli/cycle.rs`: the structure cycled at `amplitude` (checked as a load of it).
-    fn cycle_report(&self, model: &Model, name: &str, amplitude: f64) -> Result<Value, String> {
+/// `src/cli/cycle.rs`: the structure cycled at `amplitude` (checked as a load of it).
+/// The model, the preset's name and the amplitude.
+struct CycleReport<'a>(&'a Model, &'a str, f64);
+
+impl ForProblem for CycleReport<'_> {
+    type Output = Result<Value, String>;
+
+    fn run<P: Faces>(self) -> Self::Output {
+        let CycleReport(model, name, amplitude) = self;
         let face = <P as ReportFace>::cycle()
             .ok_or_else(|| format!("the {} problem has no load to cycle", P::KIND))?;
         match face.report(name, model, amplitude) {
@@ -166,16 +156,18 @@ impl<P: ReportFace + CompareFace + Deck> AnyFace for FaceOf<P> {
             None => Err(format!("no {} model to cycle", P::KIND)),
         }
     }
+}
 
-    /// `src/cli/kt.rs`: over the load range of a load-driven problem, at the one state of any
-    /// other.
-    fn tolerance(
-        &self,
-        model: &Model,
-        (tol, of): (f64, Of),
-        range: [Option<f64>; 2],
-        element: f64,
-    ) -> Result<ToleranceAnswer, String> {
+/// `src/cli/kt.rs`: over the load range of a load-driven problem, at the one state of any
+/// other.
+/// The model, the question (tolerance, reference), the load range and the element length.
+struct Tolerance<'a>(&'a Model, (f64, Of), [Option<f64>; 2], f64);
+
+impl ForProblem for Tolerance<'_> {
+    type Output = Result<ToleranceAnswer, String>;
+
+    fn run<P: Faces>(self) -> Self::Output {
+        let Tolerance(model, (tol, of), range, element) = self;
         let current = of == Of::Current;
         let answer = match <P as ReportFace>::cycle() {
             Some(face) => {
@@ -201,10 +193,18 @@ impl<P: ReportFace + CompareFace + Deck> AnyFace for FaceOf<P> {
             .ok_or_else(|| format!("no {} model to check", P::KIND))?
             .map_err(|e| e.to_string())
     }
+}
 
-    /// `src/cli/decks.rs`: the problem's own deck writer at the model's stick slope, `loads`
-    /// checked there (increasing, each accepted) or the problem's defaults.
-    fn deck(&self, model: &Model, mesh: DeckMesh, loads: Option<&[f64]>) -> Result<String, String> {
+/// `src/cli/decks.rs`: the problem's own deck writer at the model's stick slope, `loads` checked
+/// there (increasing, each accepted) or the problem's defaults.
+/// The model, the mesh and the loads.
+struct DeckText<'a>(&'a Model, DeckMesh, Option<&'a [f64]>);
+
+impl ForProblem for DeckText<'_> {
+    type Output = Result<String, String>;
+
+    fn run<P: Faces>(self) -> Self::Output {
+        let DeckText(model, mesh, loads) = self;
         let request = DeckRequest {
             loads,
             mesh,
@@ -214,17 +214,24 @@ impl<P: ReportFace + CompareFace + Deck> AnyFace for FaceOf<P> {
         microslip::fe::face::written_deck::<P>(&typed::<P>(model)?, &request)
             .map_err(|e| e.to_string())
     }
+}
 
-    /// `src/cli/compare.rs` for one result file of `P`: a CalculiX `.dat`, whose deck's header
-    /// gives the model and whose `.frd` and deck the stick slope used and the kinematics, or a
-    /// CSV, compared at `structure` (the parameters given), its kinematics not stated; the
-    /// report with the same sections as the command's ([`ContactCompared`]).
-    fn compare(
-        &self,
-        path: &Path,
-        deck: Option<&Path>,
-        structure: &dyn Fn() -> Result<Model, String>,
-    ) -> Result<Value, String> {
+/// `src/cli/compare.rs` for one result file of `P`: a CalculiX `.dat`, whose deck's header gives
+/// the model and whose `.frd` and deck the stick slope used and the kinematics, or a CSV,
+/// compared at `structure` (the parameters given), its kinematics not stated; the report with
+/// the same sections as the command's ([`ContactCompared`]).
+/// The result file, its deck, and the model of a CSV.
+struct Compare<'a>(
+    &'a Path,
+    Option<&'a Path>,
+    &'a dyn Fn() -> Result<Model, String>,
+);
+
+impl ForProblem for Compare<'_> {
+    type Output = Result<Value, String>;
+
+    fn run<P: Faces>(self) -> Self::Output {
+        let Compare(path, deck, structure) = self;
         let source = path.display().to_string();
         let failed = |e: load::LoadError| format!("{}: {}", e.path, e.reason);
         let loaded = load::results::<P>(path, deck).map_err(failed)?;
@@ -260,26 +267,11 @@ impl<P: ReportFace + CompareFace + Deck> AnyFace for FaceOf<P> {
     }
 }
 
-/// Writes [`face`] from the registry: one arm per problem, none by hand.
-macro_rules! faces {
-    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
-        /// The commands of the problem `kind`.
-        fn face(kind: ModelKind) -> &'static dyn AnyFace {
-            match kind {
-                $(ModelKind::$variant => &FaceOf::<microslip::problems::$folder::$problem>(
-                    PhantomData,
-                )),+
-            }
-        }
-    };
-}
-
-microslip_core::with_problems!(faces);
-
 /// `microslip beam|plate|lap --format json` (`src/cli/point.rs`): the plate and the joint add
 /// the continuum reference where their reduced theory does not hold.
 pub fn point_report(kind: ModelKind, values: &[f64], name: &str) -> Result<Value, String> {
-    face(kind).point_report(&model(kind, values, true)?, name)
+    let model = model(kind, values, true)?;
+    for_problem(kind, PointReport(&model, name))
 }
 
 /// `microslip cycle --amplitude A --format json` (`src/cli/cycle.rs`): the structure validated
@@ -297,7 +289,8 @@ pub fn cycle_report(
         }
         None => amplitude,
     };
-    face(kind).cycle_report(&model(kind, values, false)?, name, amplitude)
+    let model = model(kind, values, false)?;
+    for_problem(kind, CycleReport(&model, name, amplitude))
 }
 
 /// `microslip kt --tolerance T [--of REF] [--from F] [--to F] --format json` (`src/cli/kt.rs`,
@@ -311,7 +304,8 @@ pub fn kt_tolerance_report(
     range: [Option<f64>; 2],
     element: f64,
 ) -> Result<Value, String> {
-    let answer = face(kind).tolerance(&model(kind, values, true)?, question, range, element)?;
+    let model = model(kind, values, true)?;
+    let answer = for_problem(kind, Tolerance(&model, question, range, element))?;
     Ok(json::of(&ToleranceReport::new(name, &answer)))
 }
 
@@ -330,7 +324,7 @@ pub fn fit_report(
     let structure = fit::Structure::of(&model(kind, values, false)?).ok_or_else(|| {
         let fittable: Vec<_> = ModelKind::ALL
             .into_iter()
-            .filter(|k| k.problem().fittable().is_some())
+            .filter(|k| k.problem().faces().fittable.is_some())
             .map(|k| k.name())
             .collect();
         format!(
@@ -402,7 +396,8 @@ pub fn deck_text(
     mesh: DeckMesh,
     loads: Option<&[f64]>,
 ) -> Result<String, String> {
-    face(kind).deck(&model(kind, values, true)?, mesh, loads)
+    let model = model(kind, values, true)?;
+    for_problem(kind, DeckText(&model, mesh, loads))
 }
 
 /// `microslip compare MODEL RESULT [--deck INP] --format json` (`src/cli/compare.rs`) for one
@@ -415,5 +410,6 @@ pub fn compare_report(
     path: &Path,
     deck: Option<&Path>,
 ) -> Result<Value, String> {
-    face(kind).compare(path, deck, &|| model(kind, values, false))
+    let structure = || model(kind, values, false);
+    for_problem(kind, Compare(path, deck, &structure))
 }

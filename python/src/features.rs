@@ -72,10 +72,11 @@ pub fn continuum(py: Python<'_>, problem: &Problem) -> PyResult<f64> {
         let kind = problem.kind;
         let reference = kind
             .problem()
-            .continuum()
+            .faces()
+            .continuum
             .ok_or_else(|| format!("the {kind} problem has no continuum reference yet"))?;
         let model = model(problem)?;
-        match reference.response(&model) {
+        match reference(&model) {
             Some(answer) => answer.map_err(|e| format!("numerical solver: {e}")),
             None => Err(format!("the {kind} continuum did not take its own model")),
         }

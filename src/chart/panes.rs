@@ -3,7 +3,8 @@
 //! origin and shear, the K_T table's rows, the regime pane's own continuum solve, the setting a
 //! key toggles, the measured curve `d` reads and what `f` fits. Each problem writes them in its
 //! face folder (`src/problems/<name>/pane.rs`) as its [`PaneFace`]; the TUI reaches them only
-//! through [`pane_face`], generated from the registry, so that no screen file names a problem
+//! through its erased face ([`erased`], in the application's table `report::face::faces`,
+//! built from the registry), so that no screen file names a problem
 //! and the drawing (`tui/ui/`) reads the text the view model built from these.
 //!
 //! Why here, in the chart layer: the faces sit above it and the TUI above them, so the trait
@@ -11,13 +12,13 @@
 //! described in words instead of curves), and this layer already turns a model into what a
 //! screen shows.
 
-use crate::fe::face::Deck;
+use crate::fe::face::LoadedVariant;
 use crate::fe::load::{AnyLoaded, Loaded};
 use crate::fit::Measured;
 use crate::kernel::format::{number, number_with};
 use crate::measured::DataError;
 use crate::problems::inputs::{Inputs, Model};
-use crate::problems::{LoadDriven, ModelKind, Problem};
+use crate::problems::{LoadDriven, ModelKind};
 use crate::study::tolerance::{
     Threshold, ToleranceAnswer, ToleranceError, stiffness_for_tolerance,
 };
@@ -125,7 +126,7 @@ pub const KT_WIDTH: usize = 7;
 pub const TABLE_TOLERANCE: f64 = 0.01;
 
 /// How a problem shows on the terminal screen beside its charts (see the module docs).
-pub trait PaneFace: Deck {
+pub trait PaneFace: LoadedVariant {
     /// What x = 0 of the zone strip is (`clamp`, `centre`, `inner end`).
     const STRIP_ORIGIN: &'static str;
     /// What the zone strip's sparkline rows show: the interface shear over the problem's
@@ -194,7 +195,7 @@ pub trait PaneFace: Deck {
 /// A [`PaneFace`] with its types erased, for the TUI, which holds models as [`Model`] and
 /// [`Inputs`]: each method answers for a model of its own problem and gives nothing (an empty
 /// text or list, None) for another's, which the TUI never asks (it asks the face of the
-/// model's own kind, [`pane_face`]).
+/// model's own kind, `report::face::faces(kind).pane`).
 pub trait AnyPaneFace: Send + Sync {
     /// See [`PaneFace::STRIP_ORIGIN`].
     fn strip_origin(&self) -> &'static str;
@@ -221,10 +222,37 @@ pub trait AnyPaneFace: Send + Sync {
     fn toggle_setting(&self, inputs: &mut Inputs) -> Option<&'static str>;
     /// See [`PaneFace::same_curve`]; false where either is of another problem.
     fn same_curve(&self, a: &Inputs, b: &Inputs) -> bool;
+    /// The points of `loaded` on the axes of the problem's first chart ([`PaneFace::fe_xy`]);
+    /// none for another problem's.
+    fn fe_points(&self, loaded: &AnyLoaded) -> Vec<(f64, f64)>;
+    /// The status line's brief of `loaded` against `model` ([`PaneFace::fe_brief`]); None
+    /// where either is of another problem.
+    fn fe_brief(
+        &self,
+        loaded: &AnyLoaded,
+        model: &Model,
+        code: &str,
+    ) -> Option<Result<String, String>>;
+
+    /// `loaded` as the TUI shows it ([`FeRead`]), read by the face of its own problem.
+    fn fe_read(&self, loaded: &AnyLoaded) -> FeRead {
+        FeRead {
+            kind: loaded.kind(),
+            origin: loaded.header().map(|h| h.inputs),
+            points: self.fe_points(loaded),
+            code: loaded.header().map_or("FE (CSV)", |_| "CalculiX"),
+        }
+    }
 }
 
 /// The [`AnyPaneFace`] of a [`PaneFace`] problem `P`.
 struct PaneOf<P>(std::marker::PhantomData<P>);
+
+/// The erased [`PaneFace`] of `P`: its slot in the application's table of erased faces
+/// (`report::face::faces`).
+pub fn erased<P: PaneFace>() -> &'static dyn AnyPaneFace {
+    &PaneOf::<P>(std::marker::PhantomData)
+}
 
 impl<P: PaneFace> AnyPaneFace for PaneOf<P> {
     fn strip_origin(&self) -> &'static str {
@@ -296,6 +324,23 @@ impl<P: PaneFace> AnyPaneFace for PaneOf<P> {
             _ => false,
         }
     }
+
+    fn fe_points(&self, loaded: &AnyLoaded) -> Vec<(f64, f64)> {
+        P::loaded(loaded).map_or_else(Vec::new, |l| l.points.iter().map(P::fe_xy).collect())
+    }
+
+    fn fe_brief(
+        &self,
+        loaded: &AnyLoaded,
+        model: &Model,
+        code: &str,
+    ) -> Option<Result<String, String>> {
+        Some(P::fe_brief(
+            &P::from_model(model)?,
+            P::loaded(loaded)?,
+            code,
+        ))
+    }
 }
 
 /// FE results as the TUI shows them: of which problem, from which deck's values, the points on
@@ -311,55 +356,6 @@ pub struct FeRead {
     /// `CalculiX` for a run with its deck, `FE (CSV)` for a CSV curve.
     pub code: &'static str,
 }
-
-/// Writes [`pane_face`], [`fe_read`] and [`fe_brief`] from the registry.
-macro_rules! pane_faces {
-    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
-        /// `loaded` as the TUI shows it ([`FeRead`]).
-        pub fn fe_read(loaded: &AnyLoaded) -> FeRead {
-            match loaded {
-                $(AnyLoaded::$variant(l) => FeRead {
-                    kind: ModelKind::$variant,
-                    origin: l.header.as_ref().map(|h| h.inputs),
-                    points: l
-                        .points
-                        .iter()
-                        .map(<crate::problems::$folder::$problem as PaneFace>::fe_xy)
-                        .collect(),
-                    code: l.header.as_ref().map_or("FE (CSV)", |_| "CalculiX"),
-                }),+
-            }
-        }
-
-        /// The status line's brief of `loaded` against `model` ([`PaneFace::fe_brief`]); None
-        /// where they are of different problems.
-        pub fn fe_brief(
-            loaded: &AnyLoaded,
-            model: &Model,
-            code: &str,
-        ) -> Option<Result<String, String>> {
-            match loaded {
-                $(AnyLoaded::$variant(l) => {
-                    type P = crate::problems::$folder::$problem;
-                    Some(<P as PaneFace>::fe_brief(&P::from_model(model)?, l, code))
-                }),+
-            }
-        }
-
-        /// The screen face of the problem `kind` (generated from the registry).
-        pub fn pane_face(kind: ModelKind) -> &'static dyn AnyPaneFace {
-            match kind {
-                $(ModelKind::$variant => {
-                    const FACE: PaneOf<crate::problems::$folder::$problem> =
-                        PaneOf(std::marker::PhantomData);
-                    &FACE
-                }),+
-            }
-        }
-    };
-}
-
-microslip_core::with_problems!(pane_faces);
 
 /// A table cell of at most `width` characters: 3 significant digits, fewer for the long exponent
 /// forms of extreme values (`6.67e-17` becomes `6.7e-17`).

@@ -13,7 +13,7 @@ pub(super) fn run_cycle_command(out: &mut impl Write, args: &CycleArgs) -> Resul
 }
 
 /// A cycle of the problem `model` names (else the preset's), through its cycle face
-/// ([`AnyReportFace::cycle`](crate::report::face::AnyReportFace::cycle)); a problem without a
+/// ([`AppFaces::cycle`](crate::report::face::AppFaces::cycle)); a problem without a
 /// load is refused.
 fn run_cycle(
     out: &mut impl Write,
@@ -41,8 +41,8 @@ fn run_cycle(
     let (name, preset) = resolve_generic(inputs, model)?;
     let (name, model) = apply_and_validate(inputs, name, preset, Load::Unused)?;
     let no_cycle = || no_load_to_cycle(inputs, model.kind(), "cycle");
-    let face = report::face::report_face(model.kind())
-        .cycle()
+    let face = report::face::faces(model.kind())
+        .cycle
         .ok_or_else(no_cycle)?;
     let amplitude_error = |e: ParamError| CliError::Flag {
         flag: "--amplitude",

@@ -45,10 +45,15 @@ pub(super) fn run_kt_tolerance(
     };
     let kind = model.kind();
     // A load-driven problem is checked over a force range; any other at its one state.
-    let answer = match report::face::report_face(kind).cycle() {
+    let answer = match report::face::faces(kind).cycle {
         Some(face) => {
             let no_load = || CliError::Invalid(format!("the {kind} problem has no load"));
-            let force = face.applied_force(&model).ok_or_else(no_load)?;
+            let force = kind
+                .problem()
+                .faces()
+                .load_driven
+                .and_then(|load_driven| load_driven.applied_force(&model))
+                .ok_or_else(no_load)?;
             let range = tolerance_forces([from, to], force)?;
             // A structure carries nothing beyond its limit: said of the flag that asks for more.
             if let Some(limit) = face.force_limit(&model)

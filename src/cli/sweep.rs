@@ -2,7 +2,7 @@
 
 use super::*;
 use crate::problems::problem::ParamKey;
-use crate::report::face::report_face;
+use crate::report::face::faces;
 use crate::report::point::cycle::LoadTableError;
 use std::time::{Duration, Instant};
 
@@ -204,7 +204,7 @@ fn run_cycle_sweep(out: &mut impl Write, args: &CycleSweepArgs) -> Result<(), Cl
         .map_err(force_range_error)?;
     let model = load_any_structure(inputs, DEFAULT_PROBLEM)?.1;
     let no_cycle = || no_load_to_cycle(inputs, model.kind(), "sweep cycle");
-    let face = report_face(model.kind()).cycle().ok_or_else(no_cycle)?;
+    let face = faces(model.kind()).cycle.ok_or_else(no_cycle)?;
     let mut out = Paced::new(out, amplitudes.len());
     match face.write_cycle_sweep(&mut out, *format, &model, amplitudes) {
         Some(Ok(())) => Ok(()),

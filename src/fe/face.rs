@@ -280,7 +280,17 @@ impl<P: Deck> AnyDeck for DeckOf<P> {
     }
 }
 
-/// Writes [`deck_face`] and [`AnyLoaded`] from the registry: one arm per problem, none by hand.
+/// The bridge between a problem and its variant of [`AnyLoaded`]: written by the registry for
+/// every problem ([`deck_face`]'s expansion), never by hand, as the core's `enum_bridges!` writes
+/// a problem's bridges to `Inputs` and `Model`; what lets an erased face written once over `P`
+/// (the screen's, `chart::panes`) read the points of any problem's run.
+pub trait LoadedVariant: Deck {
+    /// The points of `loaded`; `None` for another problem's.
+    fn loaded(loaded: &AnyLoaded) -> Option<&Loaded<Self::FePoint>>;
+}
+
+/// Writes [`deck_face`], [`AnyLoaded`] and each problem's [`LoadedVariant`] from the registry: one
+/// arm per problem, none by hand.
 macro_rules! deck_faces {
     ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
         /// The [`Deck`] of the problem `kind`, erased.
@@ -307,6 +317,13 @@ macro_rules! deck_faces {
                 }
             }
 
+            /// The deck's header of `.dat` results; `None` for a CSV curve.
+            pub fn header(&self) -> Option<&DeckHeader> {
+                match self {
+                    $(AnyLoaded::$variant(l) => l.header.as_ref()),+
+                }
+            }
+
             /// The points of `source`, read as the problem `kind`'s.
             pub(crate) fn read(
                 kind: ModelKind,
@@ -319,6 +336,16 @@ macro_rules! deck_faces {
                 }
             }
         }
+
+        $(impl LoadedVariant for crate::problems::$folder::$problem {
+            fn loaded(loaded: &AnyLoaded) -> Option<&Loaded<Self::FePoint>> {
+                match loaded {
+                    AnyLoaded::$variant(points) => Some(points),
+                    #[allow(unreachable_patterns)]
+                    _ => None,
+                }
+            }
+        })+
     };
 }
 

@@ -219,7 +219,7 @@ static BUNDLED: std::sync::LazyLock<Vec<(&'static str, &'static str)>> =
 pub fn choice(key: &str) -> Option<&'static dyn AnyChoice> {
     crate::problems::ModelKind::ALL
         .iter()
-        .flat_map(|kind| kind.problem().choices())
+        .flat_map(|kind| kind.problem().faces().choices)
         .copied()
         .find(|choice| choice.key() == key)
 }

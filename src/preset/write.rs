@@ -11,7 +11,7 @@ pub fn to_toml(inputs: &Inputs, description: &str) -> String {
     let _ = writeln!(text, "description = {}", toml::Value::from(description));
     let _ = writeln!(text, "model = \"{}\"", inputs.kind().name());
     // The settings that take a name (the beams' theory), before the numbers.
-    for choice in inputs.kind().problem().choices() {
+    for choice in inputs.kind().problem().faces().choices {
         if let Some(value) = choice.get(inputs) {
             let _ = writeln!(
                 text,

@@ -1,7 +1,14 @@
 //! [`ReportFace`]: what the generic reports need of a problem (the K_T table's columns, the
 //! equation that shows its response never grows with K_T, its table in the paper report), as a
 //! trait each problem's application folder implements (`src/problems/<name>/report.rs`), and its
-//! erased side ([`report_face`]) generated from the registry.
+//! erased side; [`for_problem`], the one typed dispatch from a kind to a problem's faces
+//! ([`Faces`]) that the command line's handlers and the Python face's bodies run through
+//! ([`ForProblem`]), generated from the registry; and [`faces`], the table of a problem's erased
+//! faces ([`AppFaces`]: report, cycle, panes) built on it. Before them (issue 43, item 5) the
+//! application and the Python face had 5 erased traits and 9 registry expansions; now 4 and 6:
+//! the Python face's erased commands and the command line's dispatch are [`for_problem`], and
+//! the panes' own expansion went into their erased face (`validation/dispatch_lines.py` counts
+//! the whole).
 //!
 //! Why a trait: the K_T table, the tolerance answer and the paper report are written once for
 //! every problem; a problem's columns and words are its own and live in its folder, so that a
@@ -11,11 +18,15 @@ use std::fmt::{Debug, Write as _};
 
 use serde::Serialize;
 
+#[cfg(feature = "app")]
+use crate::chart::panes::{AnyPaneFace, PaneFace};
+use crate::fe::face::Deck;
 use crate::kernel::regime::Regime;
 use crate::numeric::NumericError;
 use crate::problems::ModelKind;
 use crate::problems::pointwise::Pointwise;
 use crate::problems::problem::Registered;
+use crate::report::compare::CompareFace;
 use crate::report::number;
 use crate::report::point::cycle::AnyCycleFace;
 use crate::study::curves::Answer;
@@ -141,8 +152,6 @@ pub trait AnyReportFace: Send + Sync {
     fn kt_row_unanswered(&self, row: &KtRow) -> String;
     /// [`ReportFace::paper_table`].
     fn paper_table(&self) -> Option<String>;
-    /// [`ReportFace::cycle`].
-    fn cycle(&self) -> Option<&'static dyn AnyCycleFace>;
 }
 
 /// `F = 100 N`: a problem's load by its own key and unit (the cylinder's is a line load,
@@ -205,10 +214,6 @@ impl<P: ReportFace> AnyReportFace for ReportOf<P> {
     fn paper_table(&self) -> Option<String> {
         P::paper_table()
     }
-
-    fn cycle(&self) -> Option<&'static dyn AnyCycleFace> {
-        P::cycle()
-    }
 }
 
 /// The continuum solution a point report shows: solved when `asked` (the command's
@@ -262,21 +267,97 @@ pub(crate) fn kt_row<P: ReportFace>(row: &KtRow, answer: Option<&P::KtAnswer>) -
     out
 }
 
-/// Writes [`report_face`] from the registry.
-macro_rules! report_faces {
+/// Everything a command may ask of any problem, typed: its reports ([`ReportFace`]), its FE deck
+/// ([`Deck`]), its comparison ([`CompareFace`]) and its screen panes ([`PaneFace`]). What only
+/// some problems have is reached through an erased, optional capability of these
+/// ([`ReportFace::cycle`]), never by naming the problems that have it. The panes exist with the
+/// terminal only (the feature `app`; the Python face builds without it).
+#[cfg(feature = "app")]
+pub trait Faces: ReportFace + Deck + CompareFace + PaneFace {}
+
+#[cfg(feature = "app")]
+impl<P: ReportFace + Deck + CompareFace + PaneFace> Faces for P {}
+
+/// As with the feature `app`, without the panes.
+#[cfg(not(feature = "app"))]
+pub trait Faces: ReportFace + Deck + CompareFace {}
+
+#[cfg(not(feature = "app"))]
+impl<P: ReportFace + Deck + CompareFace> Faces for P {}
+
+/// A command's body for one problem `P`, given its arguments as `self`: written once, generic
+/// over the problem's type, and run for the problem of a [`ModelKind`] by [`for_problem`] (the
+/// command line's handlers and the Python face's bodies alike).
+pub trait ForProblem {
+    /// What the command gives back.
+    type Output;
+
+    /// Runs the command for the problem `P`.
+    fn run<P: Faces>(self) -> Self::Output;
+}
+
+/// **The erased faces of one problem in the application**, in one table: what the reports, the
+/// TUI and the command line ask of a problem they hold as a [`ModelKind`], instead of a function
+/// per face. Built by [`faces`] from the problem's typed faces through [`for_problem`], so that
+/// the registry's list is turned into the application's erased faces in one place.
+///
+/// Each face keeps an erased trait beside its typed one ([`AnyReportFace`], [`AnyCycleFace`],
+/// [`AnyPaneFace`]): its methods take the [`Model`](crate::problems::inputs::Model) and
+/// [`Inputs`](crate::problems::inputs::Inputs) enums and plain numbers where the typed trait
+/// takes the problem's own types, and each is implemented once, generically (`ReportOf<P>`),
+/// never by a problem. The deck's erased face (`fe::face::deck_face`) is not in the table: the
+/// `fe` layer, below this one, reads its headers and results with it (`tests/layering.rs`), and
+/// nothing above asks for it.
+#[derive(Clone, Copy)]
+pub struct AppFaces {
+    /// Its K_T table, tolerance words and paper table.
+    pub report: &'static dyn AnyReportFace,
+    /// Its cycle and load tables, where it is load-driven ([`ReportFace::cycle`]): `None`
+    /// answers "does this command apply to it?" without a `match` on its kind.
+    pub cycle: Option<&'static dyn AnyCycleFace>,
+    /// Its panes on the terminal screen.
+    #[cfg(feature = "app")]
+    pub pane: &'static dyn AnyPaneFace,
+}
+
+/// The erased faces of the problem `kind`.
+pub fn faces(kind: ModelKind) -> AppFaces {
+    for_problem(kind, Erase)
+}
+
+/// [`faces`]'s body: the erased faces of `P`.
+struct Erase;
+
+impl ForProblem for Erase {
+    type Output = AppFaces;
+
+    fn run<P: Faces>(self) -> AppFaces {
+        AppFaces {
+            report: &ReportOf::<P>(std::marker::PhantomData),
+            cycle: P::cycle(),
+            #[cfg(feature = "app")]
+            pane: crate::chart::panes::erased::<P>(),
+        }
+    }
+}
+
+/// Writes [`for_problem`] from the registry: the application's one `match` from a kind to a
+/// problem's type above the chart layer, one arm per problem, none by hand. The layers below
+/// keep their own (`fe::face::deck_face` and `AnyLoaded`, `chart::view::AnyChart`): a layer
+/// cannot reach this one (`tests/layering.rs`), and each generates the enum of its layer's
+/// per-problem values from the same list.
+macro_rules! typed_dispatch {
     ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
-        /// The [`ReportFace`] of the problem `kind`, erased.
-        pub fn report_face(kind: ModelKind) -> &'static dyn AnyReportFace {
+        /// Runs `command` for the problem `kind`, typed.
+        pub fn for_problem<C: ForProblem>(kind: ModelKind, command: C) -> C::Output {
             match kind {
-                $(ModelKind::$variant => &ReportOf::<crate::problems::$folder::$problem>(
-                    std::marker::PhantomData,
-                )),+
+                $(ModelKind::$variant => command.run::<crate::problems::$folder::$problem>()),+
             }
         }
     };
 }
 
-microslip_core::with_problems!(report_faces);
+microslip_core::with_problems!(typed_dispatch);
 
 #[cfg(test)]
 mod tests {
@@ -287,7 +368,7 @@ mod tests {
     #[test]
     fn every_problem_s_kt_table_lines_up() {
         for kind in ModelKind::ALL {
-            let face = report_face(kind);
+            let face = faces(kind).report;
             assert!(face.monotone_in_stiffness().starts_with('('), "{kind}");
             let heading = face.kt_heading(&KtHeading {
                 preset: "p",

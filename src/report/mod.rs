@@ -101,7 +101,7 @@ pub(crate) fn sanitize(text: &str) -> Cow<'_, str> {
 pub fn paper_report() -> String {
     let tables: Vec<String> = crate::problems::ModelKind::ALL
         .iter()
-        .filter_map(|&kind| face::report_face(kind).paper_table())
+        .filter_map(|&kind| face::faces(kind).report.paper_table())
         .collect();
     tables.join("\n")
 }

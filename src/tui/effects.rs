@@ -22,13 +22,13 @@ use super::action::Action;
 use super::app::App;
 use super::workers::{Job, Lane, Report, Workers};
 use crate::chart::NumericPoints;
-use crate::chart::panes::pane_face;
 use crate::chart::view::AnyChart;
 use crate::fe::load::AnyLoaded;
 use crate::fit::{FitError, FitResult, Measurement, Progress, Structure};
 use crate::preset::{self, Listed, SaveError};
 use crate::problems::ModelKind;
 use crate::problems::inputs::Inputs;
+use crate::report::face::faces;
 
 /// Something [`App::update`] wants done outside the state.
 #[derive(Debug, Clone, PartialEq)]
@@ -459,7 +459,8 @@ fn solve_continuum(inputs: Inputs) -> Outcome {
         .validate()
         .map_err(|e| e.to_string())
         .and_then(|model| {
-            pane_face(model.kind())
+            faces(model.kind())
+                .pane
                 .pane_continuum(&model)
                 .unwrap_or_else(|| Err(format!("the {} has no continuum here", model.kind())))
         });

@@ -3,9 +3,10 @@
 //! screen (44 columns). Text for the screen, so it lives with the screen; `microslip kt` prints
 //! the full comparison from the same `study::curves::compare_stiffnesses`.
 
-use crate::chart::panes::{TABLE_TOLERANCE, cell, pane_face};
+use crate::chart::panes::{TABLE_TOLERANCE, cell};
 use crate::kernel::format::number;
 use crate::problems::inputs::Model;
+use crate::report::face::faces;
 use crate::study::curves::{self, CandidateSource};
 
 /// The table's title.
@@ -25,7 +26,7 @@ pub fn stiffness_table(model: &Model) -> (&'static str, Vec<String>) {
         CandidateSource::Code(code) => code.short,
         other => other.name(),
     };
-    let face = pane_face(model.kind());
+    let face = faces(model.kind()).pane;
     let mut lines = vec![format!("{:<10} {}", "source", face.kt_header())];
     for row in &comparison.rows {
         // The face computes its cells at the candidate's K_T, which the comparison answered.

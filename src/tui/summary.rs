@@ -5,8 +5,8 @@
 //!
 //! [`PaneFace`]: crate::chart::panes::PaneFace
 
-use crate::chart::panes::pane_face;
 use crate::problems::inputs::Model;
+use crate::report::face::faces;
 
 pub use crate::chart::panes::{ContinuumState, SummaryLine};
 
@@ -14,12 +14,12 @@ pub use crate::chart::panes::{ContinuumState, SummaryLine};
 /// full at 80x24 (the beams', the lap joint's) puts its envelope in the title, and `i` explains
 /// it as the first of the pane's lines. None where the validity is a line (the plate).
 pub fn title_line(model: &Model) -> Option<SummaryLine> {
-    pane_face(model.kind()).title_line(model)
+    faces(model.kind()).pane.title_line(model)
 }
 
 /// The lines of the regime pane for `model`; `continuum`: the pane's own 2-D continuum solve.
 pub fn summary_lines(model: &Model, continuum: &ContinuumState) -> Vec<SummaryLine> {
-    pane_face(model.kind()).summary_lines(model, continuum)
+    faces(model.kind()).pane.summary_lines(model, continuum)
 }
 
 /// `text` cut into lines of at most `width` characters at spaces.

@@ -10,10 +10,10 @@
 //! no function of the physics that way.
 
 use crate::chart::Plot;
-use crate::chart::panes::pane_face;
 use crate::kernel::params::Unit;
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::{ModelKind, Param};
+use crate::report::face::faces;
 use crate::report::number;
 use crate::study::curves::{Samples, Series, Spacing, interface_zones, shear_along};
 use crate::tui::summary::{self, ContinuumState};
@@ -121,7 +121,7 @@ pub struct ChartView {
 /// The parameter pane of `kind` at `inputs`; `preset`: the loaded preset's values (edited rows
 /// are marked).
 pub fn parameters(kind: ModelKind, inputs: &Inputs, preset: &Inputs) -> (String, Vec<ParamRow>) {
-    let title = pane_face(kind).parameters_title(inputs);
+    let title = faces(kind).pane.parameters_title(inputs);
     let rows = kind
         .params()
         .iter()
@@ -178,7 +178,7 @@ pub fn regime(model: &Model, continuum: &ContinuumState, strip_cells: &[usize]) 
 /// The zone strip at `model`, with the shear sampled for each of `strip_cells`.
 fn strip(model: &Model, strip_cells: &[usize]) -> StripView {
     let zones = interface_zones(model);
-    let face = pane_face(model.kind());
+    let face = faces(model.kind()).pane;
     let (origin, shear_name) = (face.strip_origin(), face.strip_shear());
     let shear = strip_cells
         .iter()

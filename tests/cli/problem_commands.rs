@@ -8,10 +8,10 @@ use microslip::problems::ModelKind;
 
 /// The flags of every problem's settings (`--beam-theory`) with whether `kind` has each.
 fn setting_flags(kind: ModelKind) -> Vec<(String, bool)> {
-    let own = kind.problem().choices();
+    let own = kind.problem().faces().choices;
     ModelKind::ALL
         .iter()
-        .flat_map(|k| k.problem().choices())
+        .flat_map(|k| k.problem().faces().choices)
         .map(|c| {
             (
                 format!("--{}", c.key().replace('_', "-")),
@@ -77,12 +77,12 @@ fn help_key_and_key_help_describe_the_problem_with_only_its_flags() {
         }
         assert_eq!(
             help.contains("--continuum"),
-            kind.problem().continuum().is_some(),
+            kind.problem().faces().continuum.is_some(),
             "{key}: --continuum in\n{help}"
         );
         // Its own subcommands of sweep and fit show the same settings' flags.
         let mut helps = vec![help, stdout_of(&["sweep", key, "--help"])];
-        if kind.problem().fittable().is_some() {
+        if kind.problem().faces().fittable.is_some() {
             helps.push(stdout_of(&["fit", key, "--help"]));
         }
         if kind.description().load.is_some() {
@@ -105,13 +105,13 @@ fn a_problem_refuses_a_setting_it_does_not_have_by_name() {
             }
             let owner = ModelKind::ALL
                 .iter()
-                .flat_map(|k| k.problem().choices())
+                .flat_map(|k| k.problem().faces().choices)
                 .find(|c| format!("--{}", c.key().replace('_', "-")) == flag)
                 .map(|c| c.owner())
                 .unwrap();
             let value = ModelKind::ALL
                 .iter()
-                .flat_map(|k| k.problem().choices())
+                .flat_map(|k| k.problem().faces().choices)
                 .find(|c| c.owner() == owner)
                 .map(|c| c.values()[0])
                 .unwrap();
@@ -155,7 +155,7 @@ fn a_slip_of_a_problem_or_command_gets_a_suggestion() {
 fn fit_of_a_problem_without_a_file_names_the_missing_file() {
     for kind in ModelKind::ALL
         .into_iter()
-        .filter(|k| k.problem().fittable().is_some())
+        .filter(|k| k.problem().faces().fittable.is_some())
     {
         let stderr = failure(&["fit", kind.name()], 2);
         assert!(
@@ -167,7 +167,7 @@ fn fit_of_a_problem_without_a_file_names_the_missing_file() {
     // A problem without a fit, given where the file goes, is named as such.
     for kind in ModelKind::ALL
         .into_iter()
-        .filter(|k| k.problem().fittable().is_none())
+        .filter(|k| k.problem().faces().fittable.is_none())
     {
         let stderr = failure(&["fit", kind.name()], 2);
         assert!(

@@ -35,7 +35,7 @@ impl Quantity {
     pub fn all() -> Vec<Quantity> {
         ModelKind::ALL
             .into_iter()
-            .filter_map(|kind| Some((kind, kind.problem().cross_checked()?)))
+            .filter_map(|kind| Some((kind, kind.problem().faces().cross_checked?)))
             .flat_map(|(kind, check)| {
                 (0..check.compared().len()).map(move |index| Quantity { kind, index })
             })
@@ -51,7 +51,8 @@ impl Quantity {
     pub fn label(self) -> &'static str {
         self.kind
             .problem()
-            .cross_checked()
+            .faces()
+            .cross_checked
             .and_then(|check| check.compared().get(self.index).copied())
             .unwrap_or_default()
     }
@@ -78,7 +79,8 @@ impl Case {
         self.0
             .kind()
             .problem()
-            .cross_checked()
+            .faces()
+            .cross_checked
             .and_then(|check| check.describe(&self.0))
             .unwrap_or_default()
     }
@@ -143,7 +145,7 @@ pub fn failures(results: &[Worst], tolerance: f64) -> usize {
 pub fn run(grid: Grid, density: MeshDensity) -> Result<Vec<Worst>, NumericError> {
     let mut worst = Vec::new();
     for kind in ModelKind::ALL {
-        if let Some(check) = kind.problem().cross_checked() {
+        if let Some(check) = kind.problem().faces().cross_checked {
             worst.extend(run_problem(kind, check, grid, density)?);
         }
     }
@@ -220,7 +222,7 @@ mod tests {
             assert!(q.label().ends_with(')'), "{q:?}");
         }
         for kind in ModelKind::ALL {
-            let check = kind.problem().cross_checked().unwrap();
+            let check = kind.problem().faces().cross_checked.unwrap();
             assert!(!check.grid(false).is_empty(), "{kind}");
         }
     }

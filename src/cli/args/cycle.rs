@@ -44,7 +44,7 @@ pub struct CycleFlags {
 
 impl PerProblem for CycleFlags {
     fn offered(kind: ModelKind) -> bool {
-        crate::report::face::report_face(kind).cycle().is_some()
+        crate::report::face::faces(kind).cycle.is_some()
     }
 
     fn describe(kind: ModelKind, command: clap::Command) -> clap::Command {

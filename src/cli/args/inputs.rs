@@ -30,7 +30,7 @@ pub(in crate::cli) fn registered_choices() -> Vec<&'static dyn AnyChoice> {
     let mut all: Vec<&'static dyn AnyChoice> = Vec::new();
     for choice in ModelKind::ALL
         .iter()
-        .flat_map(|kind| kind.problem().choices())
+        .flat_map(|kind| kind.problem().faces().choices)
     {
         if !all.iter().any(|c| c.key() == choice.key()) {
             all.push(*choice);
@@ -67,7 +67,7 @@ pub(in crate::cli) fn hide_foreign_choices(
     kind: ModelKind,
     command: clap::Command,
 ) -> clap::Command {
-    let own = kind.problem().choices();
+    let own = kind.problem().faces().choices;
     registered_choices()
         .into_iter()
         .filter(|c| !own.iter().any(|o| o.key() == c.key()))

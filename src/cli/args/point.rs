@@ -50,7 +50,7 @@ impl PerProblem for PointArgs {
                         .join(" ")
                 ))
             });
-        let command = match kind.problem().continuum() {
+        let command = match kind.problem().faces().continuum {
             Some(_) => command.arg(
                 Arg::new(CONTINUUM)
                     .long("continuum")

@@ -67,7 +67,7 @@ impl From<std::io::Error> for LoadTableError {
 }
 
 /// A [`CycleFace`] with its types erased: what a command reaches from a problem's kind
-/// ([`crate::report::face::AnyReportFace::cycle`]), each method `None` for a model of another
+/// ([`crate::report::face::AppFaces::cycle`]), each method `None` for a model of another
 /// problem. Only the load-driven problems have one, so a command that needs a load (`cycle`,
 /// `sweep cycle`, an F sweep) finds out from the problem, not from a list of problems.
 pub trait AnyCycleFace: Send + Sync {
@@ -105,9 +105,6 @@ pub trait AnyCycleFace: Send + Sync {
         model: &Model,
         forces: Samples,
     ) -> Option<Result<(), LoadTableError>>;
-
-    /// The force `model` is at (N).
-    fn applied_force(&self, model: &Model) -> Option<f64>;
 
     /// [`CycleFace::force_limit`] of `model`'s structure; `None` also for another problem's
     /// model.
@@ -199,10 +196,6 @@ impl<P: CycleFace> AnyCycleFace for CycleOf<P> {
             write_table(&mut &mut *out, format, rows.map(|r| P::LoadRow::from(&r)))?;
             Ok(())
         })())
-    }
-
-    fn applied_force(&self, model: &Model) -> Option<f64> {
-        Some(P::load_value(P::applied_force(&P::from_model(model)?)))
     }
 
     fn force_limit(&self, model: &Model) -> Option<f64> {

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use crate::kernel::params::ParamSpec;
 use crate::problems::{ModelKind, Quantity};
-use crate::report::face::{KtHeading, KtRow, ReportFace, kt_row, report_face};
+use crate::report::face::{KtHeading, KtRow, ReportFace, faces, kt_row};
 use crate::report::{number, sanitize};
 use crate::study::curves::{Answer, CandidateSource, ComparedStiffness, StiffnessComparison};
 
@@ -88,7 +88,7 @@ macro_rules! candidate_answers {
                         kt_row::<crate::problems::$folder::$problem>(row, Some(a))
                     })+
                     None | Some(CandidateAnswer::Refused { .. }) => {
-                        report_face(kind).kt_row_unanswered(row)
+                        faces(kind).report.kt_row_unanswered(row)
                     }
                 }
             }
@@ -175,7 +175,8 @@ impl StiffnessReport {
             force: model
                 .kind()
                 .problem()
-                .load_driven()
+                .faces()
+                .load_driven
                 .and_then(|load_driven| load_driven.applied_force(model)),
             friction_stress: interface.friction * interface.pressure,
             candidates: comparison
@@ -191,7 +192,7 @@ impl StiffnessReport {
         let preset = sanitize(&self.preset);
         let mut out = String::new();
         let (mu_p, element) = (number(self.friction_stress), number(self.element));
-        let face = report_face(self.kind);
+        let face = faces(self.kind).report;
         out.push_str(&face.kt_heading(&KtHeading {
             preset: &preset,
             force: self.force,

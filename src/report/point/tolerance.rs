@@ -7,7 +7,7 @@ use std::fmt::Write;
 use serde::Serialize;
 
 use crate::problems::Quantity;
-use crate::report::face::{load_words, report_face};
+use crate::report::face::{faces, load_words};
 use crate::report::{number, number_with, sanitize};
 use crate::study::tolerance::{CodeSetting, Setting, Threshold, ToleranceAnswer};
 
@@ -207,7 +207,7 @@ impl ToleranceReport {
         let mut out = String::new();
         let quantity = Quantity::Response.name(answer.kind);
         // Where docs/theory.md shows the response never grows with K_T, for this problem.
-        let why = report_face(answer.kind).monotone_in_stiffness();
+        let why = faces(answer.kind).report.monotone_in_stiffness();
         let load = answer.kind.description().load;
         let over = match (answer.forces, load) {
             (Some([from, to]), Some(load)) if from == to => {

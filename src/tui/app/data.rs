@@ -3,9 +3,10 @@
 use super::fit::fit_structure;
 use super::{App, Measurements, Mode};
 use crate::chart;
-use crate::chart::panes::{FeRead, fe_brief, fe_read, pane_face};
+use crate::chart::panes::FeRead;
 use crate::fit::Measurement;
 use crate::problems::ModelKind;
+use crate::report::face::faces;
 use crate::tui::effects::Effect;
 use crate::tui::views::View;
 
@@ -65,7 +66,7 @@ impl App {
             origin,
             points,
             code,
-        } = fe_read(loaded);
+        } = faces(loaded.kind()).pane.fe_read(loaded);
         // Measurements were taken on the values the deck now replaces: they go (the help's rule).
         let mut dropped = String::new();
         if let Some(inputs) = origin {
@@ -85,7 +86,7 @@ impl App {
         if let Some((previous, Some(previous_origin))) = &self.external
             && let Some(origin) = &origin
             && previous.model == model
-            && pane_face(model).same_curve(previous_origin, origin)
+            && faces(model).pane.same_curve(previous_origin, origin)
         {
             points.extend(previous.points.iter().copied());
             points.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -94,7 +95,7 @@ impl App {
         let Some(current) = self.model() else {
             return self.error(format!("{path}: the deck's parameters are not valid"));
         };
-        let summary = match fe_brief(loaded, &current, code) {
+        let summary = match faces(model).pane.fe_brief(loaded, &current, code) {
             Some(Ok(summary)) => summary,
             Some(Err(e)) => return self.error(format!("{path}: {e}")),
             None => format!("{path}: FE results of another problem: press m"),

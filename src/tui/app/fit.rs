@@ -25,7 +25,7 @@ impl App {
             // The problems with a curve to fit, from the registry.
             let fittable: Vec<&str> = crate::problems::ModelKind::ALL
                 .into_iter()
-                .filter(|k| k.problem().fittable().is_some())
+                .filter(|k| k.problem().faces().fittable.is_some())
                 .map(|k| k.description().title)
                 .collect();
             return self.error(format!(

@@ -2,9 +2,9 @@
 //! that act at once.
 
 use super::{App, Mode};
-use crate::chart::panes::pane_face;
 use crate::kernel::params::Compact;
 use crate::problems::Param;
+use crate::report::face::faces;
 use crate::report::number;
 use crate::tui::action::Action;
 use crate::tui::text_input::TextInput;
@@ -81,7 +81,9 @@ impl App {
             }
             Action::ToggleSetting => {
                 let kind = self.kind;
-                let toggled = pane_face(kind).toggle_setting(&mut self.state_mut().inputs);
+                let toggled = faces(kind)
+                    .pane
+                    .toggle_setting(&mut self.state_mut().inputs);
                 match toggled {
                     Some(text) => {
                         self.info(text);
@@ -92,7 +94,7 @@ impl App {
                         let owners: Vec<String> = crate::problems::ModelKind::ALL
                             .into_iter()
                             .flat_map(|k| {
-                                k.problem().choices().iter().map(move |c| {
+                                k.problem().faces().choices.iter().map(move |c| {
                                     format!("{} of the {}", c.key(), k.description().title)
                                 })
                             })

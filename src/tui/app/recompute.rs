@@ -56,7 +56,9 @@ impl App {
 
     /// True where the regime pane of `model`'s problem solves a continuum of its own.
     fn has_pane_continuum(&self, model: &Model) -> bool {
-        crate::chart::panes::pane_face(model.kind()).has_pane_continuum()
+        crate::report::face::faces(model.kind())
+            .pane
+            .has_pane_continuum()
     }
 
     /// The lines of the regime pane.

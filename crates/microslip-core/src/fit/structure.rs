@@ -37,7 +37,7 @@ impl Structure {
     /// The structure of `model`, when its problem is fittable; `None` for a problem without a
     /// load-response curve (the plate): the one place that says which problems `f` fits.
     pub fn of(model: &Model) -> Option<Structure> {
-        let fittable = model.kind().problem().fittable()?;
+        let fittable = model.kind().problem().faces().fittable?;
         Some(Structure {
             fittable,
             model: *model,
@@ -54,7 +54,7 @@ impl Structure {
 
     /// The problem fitted.
     pub fn kind(&self) -> ModelKind {
-        self.fittable.kind()
+        self.model.kind()
     }
 
     /// The model the structure is held as (at no particular force).
@@ -92,9 +92,14 @@ impl Structure {
         self.fittable.load()
     }
 
-    /// What bounds the load it carries, in the problem's words.
+    /// What bounds the load it carries, in the problem's words
+    /// ([`Description::bound_sentence`](crate::problems::Description::bound_sentence)), for the
+    /// refusal of a measured force no mu carries; empty for a structure without one.
     pub(super) fn bound(&self) -> String {
-        self.fittable.bound()
+        self.kind()
+            .description()
+            .bound_sentence()
+            .unwrap_or_default()
     }
 
     /// The structure at `mu`, `kt`; `None` where they (or the structure) are not accepted.

@@ -1,7 +1,7 @@
 //! A problem's settings that are names, not numbers (the twin beams' beam theory): the
 //! capability that lets presets read and write them and the command line set them without a
 //! `match` on the problem. A problem with such a setting implements [`AnyChoice`] for it in its
-//! folder and hands it out from [`Problem::choices`](crate::problems::Problem::choices); a
+//! folder and lists it in the `choices` of its [`Problem::FACES`](crate::problems::Problem::FACES); a
 //! problem without one writes nothing (the default is none).
 
 use thiserror::Error;

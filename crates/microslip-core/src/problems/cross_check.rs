@@ -1,15 +1,16 @@
 //! The cross-check capability: a problem whose closed forms can be compared with its own
 //! independent discretized solver (its `discretized.rs`, which never sees a closed form) over a
 //! grid that spans every regime and the transitions between them. `crate::verify` runs the
-//! comparison once for every problem that has it ([`Problem::cross_checked`]); each problem
+//! comparison once for every problem that has it (the `cross_checked` slot of its
+//! [`Problem::FACES`]); each problem
 //! writes in its folder its grid, what it compares and how a case is written for people.
 
 use std::fmt::Debug;
 
 use crate::numeric::{MeshDensity, NumericError};
+use crate::problems::Problem;
 use crate::problems::inputs::Model;
 use crate::problems::problem::Registered;
-use crate::problems::{ModelKind, Problem};
 
 /// What `verify` needs of a problem (module docs).
 pub trait CrossChecked: Problem + Registered {
@@ -43,8 +44,6 @@ pub fn relative_error(a: f64, b: f64) -> f64 {
 /// The [`CrossChecked`] capability of a problem, erased: models are the [`Model`] enum, and
 /// every method that takes one answers `None` for another problem's model.
 pub trait AnyCrossChecked: Send + Sync {
-    /// The problem.
-    fn kind(&self) -> ModelKind;
     /// [`CrossChecked::COMPARED`].
     fn compared(&self) -> &'static [&'static str];
     /// [`CrossChecked::grid`].
@@ -60,7 +59,7 @@ pub trait AnyCrossChecked: Send + Sync {
 }
 
 /// The [`AnyCrossChecked`] of a [`CrossChecked`] problem `P`: what its
-/// [`Problem::cross_checked`] hands out.
+/// [`Problem::FACES`] holds.
 pub struct CrossCheckedOf<P>(std::marker::PhantomData<P>);
 
 impl<P> Debug for CrossCheckedOf<P> {
@@ -75,10 +74,6 @@ impl<P> CrossCheckedOf<P> {
 }
 
 impl<P: CrossChecked> AnyCrossChecked for CrossCheckedOf<P> {
-    fn kind(&self) -> ModelKind {
-        P::KIND
-    }
-
     fn compared(&self) -> &'static [&'static str] {
         P::COMPARED
     }

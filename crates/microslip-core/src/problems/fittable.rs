@@ -3,7 +3,7 @@
 //! paper's section 2.1.3, the joint's Delta against F is (L11)). The fit itself (least squares
 //! on the regularized closed form, `crate::fit`) is written once over [`AnyFittable`]; a problem
 //! is fitted by implementing [`Fittable`] in its folder and handing out
-//! `FittableOf::<Self>::NEW` from [`Problem::fittable`](crate::problems::Problem::fittable), with
+//! `FittableOf::<Self>::NEW` in the `fittable` slot of its [`Problem::FACES`](crate::problems::Problem::FACES), with
 //! no code outside its folder.
 //!
 //! What the fit needs of a problem, besides [`LoadDriven`]: the structure at a trial (mu, K_T),
@@ -15,7 +15,7 @@ use crate::kernel::params::ParamError;
 use crate::kernel::regime::Law;
 use crate::problems::inputs::Model;
 use crate::problems::load_driven::LoadDriven;
-use crate::problems::{ModelKind, Param, ParamKey};
+use crate::problems::{Param, ParamKey};
 
 /// A load-driven problem whose measured curve u(F) identifies mu and K_T (module docs).
 pub trait Fittable: LoadDriven {
@@ -90,18 +90,12 @@ impl<P: Fittable> FitCurve for CurveOf<P> {
 /// structure it holds as a [`Model`] of the problem (at any force: the fit uses the measured
 /// ones). Every method that takes a model answers `None` for another problem's model.
 pub trait AnyFittable: Send + Sync {
-    /// The problem.
-    fn kind(&self) -> ModelKind;
     /// [`Fittable::RESPONSE_COLUMN`].
     fn response_column(&self) -> &'static str;
     /// [`Fittable::LOAD_COLUMN`].
     fn load_column(&self) -> &'static str;
     /// The load parameter ([`LoadDriven::FORCE`]): its name, unit and domain.
     fn load(&self) -> Param;
-    /// Where [`Fittable::force_per_friction`] is `Some`: the bound and what happens beyond it,
-    /// in the problem's words ([`Description::bound_sentence`](crate::problems::Description::bound_sentence)),
-    /// for the refusal of a measured force no mu carries; empty for a structure without one.
-    fn bound(&self) -> String;
     /// [`Fittable::FITTED`].
     fn fitted(&self) -> &'static str;
     /// [`Fittable::HELD`], as parameters of any problem.
@@ -121,7 +115,7 @@ pub trait AnyFittable: Send + Sync {
 }
 
 /// The [`AnyFittable`] of a [`Fittable`] problem `P`: what its
-/// [`Problem::fittable`](crate::problems::Problem::fittable) hands out.
+/// [`Problem::FACES`](crate::problems::Problem::FACES) holds.
 #[derive(Debug)]
 pub struct FittableOf<P>(std::marker::PhantomData<P>);
 
@@ -131,10 +125,6 @@ impl<P> FittableOf<P> {
 }
 
 impl<P: Fittable> AnyFittable for FittableOf<P> {
-    fn kind(&self) -> ModelKind {
-        P::KIND
-    }
-
     fn response_column(&self) -> &'static str {
         P::RESPONSE_COLUMN
     }
@@ -145,10 +135,6 @@ impl<P: Fittable> AnyFittable for FittableOf<P> {
 
     fn load(&self) -> Param {
         P::FORCE
-    }
-
-    fn bound(&self) -> String {
-        P::INFO.bound_sentence().unwrap_or_default()
     }
 
     fn fitted(&self) -> &'static str {
@@ -192,7 +178,7 @@ pub fn unloaded<P: Fittable>(structure: &P::Structure) -> Model {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::problems::ModelKind;
     use crate::problems::inputs::Inputs;
 
     /// Exactly the load-driven problems are fittable, each names its own parameters, and another
@@ -202,14 +188,13 @@ mod tests {
         for kind in ModelKind::ALL {
             let problem = kind.problem();
             assert_eq!(
-                problem.fittable().is_some(),
-                problem.load_driven().is_some(),
+                problem.faces().fittable.is_some(),
+                problem.faces().load_driven.is_some(),
                 "{kind}"
             );
-            let Some(fittable) = problem.fittable() else {
+            let Some(fittable) = problem.faces().fittable else {
                 continue;
             };
-            assert_eq!(fittable.kind(), kind);
             assert!(fittable.held().iter().all(|p| p.model() == kind));
             // The load column is the load parameter's key and unit, as its sweep heads it.
             let load = fittable.load();

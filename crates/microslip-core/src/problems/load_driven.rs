@@ -141,7 +141,7 @@ pub trait LoadDriven: Problem + Registered {
 
 /// The [`LoadDriven`] capability of a problem, erased: what code written for any problem asks
 /// of one it holds as `&'static dyn` [`AnyProblem`](crate::problems::AnyProblem), through
-/// [`AnyProblem::load_driven`](crate::problems::AnyProblem::load_driven) (`None`: the problem is
+/// its [`ProblemFaces::load_driven`](crate::problems::problem::ProblemFaces::load_driven) (`None`: the problem is
 /// not load-driven), instead of a `match` on its kind. Forces are plain newtons and models the
 /// [`Model`] enum; every method answers `None` for another problem's model.
 ///
@@ -153,7 +153,7 @@ pub trait LoadDriven: Problem + Registered {
 /// for kind in ModelKind::ALL {
 ///     let model = Inputs::paper(kind).validate()?;
 ///     // Exactly the problems with a load are load-driven (the plate is loaded by its pressure).
-///     let Some(load_driven) = kind.problem().load_driven() else {
+///     let Some(load_driven) = kind.problem().faces().load_driven else {
 ///         assert!(kind.description().load.is_none(), "{kind}");
 ///         continue;
 ///     };
@@ -185,7 +185,7 @@ pub trait AnyLoadDriven: Send + Sync {
 }
 
 /// The [`AnyLoadDriven`] of a [`LoadDriven`] problem `P`: what its
-/// [`Problem::load_driven`] hands out.
+/// [`Problem::FACES`] holds.
 #[derive(Debug)]
 pub struct LoadDrivenOf<P>(std::marker::PhantomData<P>);
 
@@ -275,7 +275,7 @@ mod tests {
         let mut found = Vec::new();
         for kind in ModelKind::ALL {
             let problem = kind.problem();
-            let Some(load_driven) = problem.load_driven() else {
+            let Some(load_driven) = problem.faces().load_driven else {
                 assert_eq!(kind.description().load, None, "{kind}");
                 continue;
             };

@@ -6,8 +6,8 @@
 //! A problem is a type that implements [`Problem`] (its [`Description`], its parameters, the
 //! model they validate into, one solve's state) and the capabilities it has ([`Continuum`],
 //! [`LoadDriven`]; a capability a problem lacks is a trait it does not implement, not a `match`
-//! arm; the erased side finds each through [`AnyProblem::continuum`] and
-//! [`AnyProblem::load_driven`]). The
+//! arm; the erased side finds each in one table, [`ProblemFaces`](problem::ProblemFaces), the
+//! problem's [`Problem::FACES`], through [`AnyProblem::faces`]). The
 //! registry, [`with_problems!`](crate::with_problems) below, holds one line per problem (`Beam =>
 //! twin_beams::TwinBeamsProblem`) and generates from it [`ModelKind`] (with
 //! [`ModelKind::problem`], the problem as `&'static dyn` [`AnyProblem`]: what a caller uses
@@ -38,12 +38,12 @@
 //!    - if it is driven by a load: `cycle.rs` (its Masing cycle, a
 //!      [`load_driven::MasingCycle`]) and `load_driven.rs` (the problem type's [`LoadDriven`]
 //!      impl, whose `Structure` is the model without its force); its `problem.rs` then writes
-//!      `regime_scale` as `Some(force_scale)` and hands out `LoadDrivenOf::<Self>::NEW` from
-//!      `load_driven()`, and every sweep, cycle, tolerance and load chart serves it; then also
-//!      `fittable.rs` ([`fittable::Fittable`], handed out by `fittable()`), and the fit (the
-//!      TUI's `f`, `microslip fit`) serves it;
+//!      `regime_scale` as `Some(force_scale)` and fills `load_driven:
+//!      Some(&LoadDrivenOf::<Self>::NEW)` in its `FACES`, and every sweep, cycle, tolerance and
+//!      load chart serves it; then also `fittable.rs` ([`fittable::Fittable`], its `fittable`
+//!      slot), and the fit (the TUI's `f`, `microslip fit`) serves it;
 //!    - if it has a setting that is a name, not a number (the beams' theory): `choice.rs`, an
-//!      [`AnyChoice`](choice::AnyChoice) handed out by `choices()`, which presets and the
+//!      [`AnyChoice`](choice::AnyChoice) listed in the `choices` of its `FACES`, which presets and the
 //!      command line read and write with no edit; a problem whose refusal of another's setting
 //!      needs its own words ("the plate", not its title) writes `REFUSED_AS`;
 //!    - what every problem writes, because the studies dispatch over the whole registry:
@@ -51,7 +51,7 @@
 //!      into `study::curves`), `profiles.rs` ([`profiled::Profiled`]: the shear along the
 //!      interface), `stiffness_answer.rs` ([`stiffness_answer::StiffnessAnswer`]: the K_T
 //!      comparison's row);
-//!    - what it may write, each handed out by the [`Problem`] method of the same name:
+//!    - what it may write, each put in the slot of the same name of its `FACES`:
 //!      `zoned.rs` ([`zoned::Zoned`]: the TUI's zone strip) and `cross_check.rs`
 //!      ([`cross_check::CrossChecked`]: its closed forms against its discretized solver in
 //!      `microslip verify`);
@@ -59,7 +59,8 @@
 //!      `param_list!`, quantities, load) and its `quantity` function;
 //!    - `problem.rs`: the unit struct (`CylinderProblem`) implementing [`ParamKey`] for its key
 //!      enum, [`Problem`] (and [`Continuum`] and the other capabilities it has, each handed to
-//!      the erased side by the [`Problem`] method of the same name). Its `State` is
+//!      the erased side in its slot of [`Problem::FACES`], one table: `continuum:
+//!      Some(continuum_response::<Self>)`, `..ProblemFaces::NONE` for the rest). Its `State` is
 //!      [`problem::Laws`] of its two law states.
 //! 2. **One registry line** in [`with_problems!`](crate::with_problems): `Cylinder => cylinder::CylinderProblem,`
 //!    with its doc comment. [`ModelKind`], [`ModelKind::ALL`], [`ModelKind::problem`] and
@@ -78,11 +79,13 @@
 //!    against an envelope and the continuum, `report::compare::table::CompareTable` too: its
 //!    compare row, row verdict, closing verdict and the text of its table), `report.rs`
 //!    (`report::face::ReportFace`: its point report, its sweep and loop row types, K_T answer
-//!    and paper table; and `report::point::cycle::CycleFace` if it is driven by a load). `fe`
-//!    and `report` name no problem (`tests/layering.rs`). The cylinder's reader is its
-//!    `ccx_read.rs` and its comparison its `deck.rs` (its report has another shape than the
-//!    table's). Every command, chart, report and TUI pane then serves it through code generated
-//!    from the registry.
+//!    and paper table; and `report::point::cycle::CycleFace` if it is driven by a load, handed
+//!    out by its `ReportFace::cycle`). `fe` and `report` name no problem (`tests/layering.rs`).
+//!    The cylinder's reader is its `ccx_read.rs` and its comparison its `deck.rs` (its report
+//!    has another shape than the table's). Every command, chart, report and TUI pane then
+//!    serves it through code generated from the registry: the application's one typed dispatch
+//!    (`report::face::for_problem`) and its table of erased faces (`report::face::faces`) need
+//!    no line for it.
 //! 5. **Its presets**: `presets/<paper-preset>.toml` (named by [`Description::paper_preset`]),
 //!    each listed with its `include_str!` in `BUNDLED_PRESETS` of its face folder's `mod.rs`
 //!    (`src/problems/cylinder/mod.rs`); `preset::bundled` gathers every problem's from the
@@ -316,6 +319,13 @@ macro_rules! problem_list {
             pub fn problem(self) -> &'static dyn AnyProblem {
                 match self {
                     $(ModelKind::$variant => &$folder::$problem),+
+                }
+            }
+
+            /// Runs `visit` for this problem, typed ([`problem::Visit`]).
+            pub fn visit<V: problem::Visit>(self, visit: V) -> V::Output {
+                match self {
+                    $(ModelKind::$variant => visit.run::<$folder::$problem>()),+
                 }
             }
         }

@@ -9,6 +9,22 @@
 //! [`Description::params`]) and in the enums generated from the registry ([`Inputs`],
 //! [`Model`]), which the bridges (`to_inputs`, `from_model`, ...) connect to each problem's
 //! typed side.
+//!
+//! # Dispatch in one place
+//! The registry's list becomes the erased side here, once: [`AnyProblem`] (every registered
+//! problem, blanket impl) with [`AnyProblem::faces`], the problem's one table of capabilities
+//! ([`ProblemFaces`], its [`Problem::FACES`]), instead of a typed method and an erased forward
+//! per capability; and [`ModelKind::visit`], the one typed dispatch ([`Visit`]) for what a higher
+//! layer writes generic over the problem (a study's series). The application does the same once
+//! above its chart layer (`report::face::faces` and `for_problem`).
+//!
+//! Measured by `validation/dispatch_lines.py` (issue 43, item 5: erased traits and their
+//! impls, adapters, hand-outs, tables, typed dispatch with its bodies, registry callbacks; code
+//! lines of the three crates), before and after the table: 1402 -> 1305 lines of dispatch
+//! (1233 -> 989 without the typed dispatch and its command bodies), erased traits 12 -> 9
+//! (`AnyContinuum`, `AnyZoned` became fns of the table, the Python face's `AnyFace` runs
+//! through the application's `for_problem`), `with_problems!` expansions in shipped code 15 ->
+//! 11, `pub` items of this crate 766 -> 768.
 
 use std::fmt::Debug;
 use std::hash::Hash;
@@ -23,7 +39,10 @@ use crate::problems::cross_check::AnyCrossChecked;
 use crate::problems::fittable::AnyFittable;
 use crate::problems::inputs::{Inputs, InterfaceData, Model};
 use crate::problems::load_driven::AnyLoadDriven;
-use crate::problems::zoned::AnyZoned;
+use crate::problems::pointwise::Pointwise;
+use crate::problems::profiled::Profiled;
+use crate::problems::stiffness_answer::StiffnessAnswer;
+use crate::problems::zoned::Layout;
 use crate::problems::{Description, ModelKind, Param, Quantity, Solution, UnknownParam};
 
 /// One parameter of one problem, typed (each folder's key enum, in its `params.rs`): what the
@@ -155,47 +174,16 @@ pub trait Problem: Send + Sync + Sized + 'static {
         Self::model(&params).unwrap_or(*model)
     }
 
-    /// The 2-D continuum reference of the problem, where it has one ([`Continuum`]): how the
-    /// erased side finds the capability without specialisation.
-    fn continuum() -> Option<&'static dyn AnyContinuum> {
-        None
-    }
-
-    /// The problem's force axis, where it is driven by a load
-    /// ([`LoadDriven`](crate::problems::load_driven::LoadDriven)): how the erased
-    /// side finds the capability without specialisation (as [`Problem::continuum`]).
-    fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
-        None
-    }
-
-    /// Its settings that are names, not numbers ([`AnyChoice`]: the beams' theory), which
-    /// presets and the command line set through the registry; none by default.
-    fn choices() -> &'static [&'static dyn AnyChoice] {
-        &[]
-    }
-
     /// How a refusal names the problem when it is given another problem's setting (`beam_theory`
     /// for the plate: "... not the plate"), with why it has none in parentheses where that helps
     /// (a one-line flag refusal keeps the part before them). By default its title.
     const REFUSED_AS: &'static str = Self::INFO.title;
-    /// Its fit of mu and K_T to a measured load-response curve, where it has one
-    /// ([`Fittable`](crate::problems::fittable::Fittable)): how the erased side finds the
-    /// capability (as [`Problem::continuum`]).
-    fn fittable() -> Option<&'static dyn AnyFittable> {
-        None
-    }
 
-    /// The comparison of its closed forms with its own discretized solver, where it has one
-    /// ([`CrossChecked`](crate::problems::cross_check::CrossChecked)): what `verify` runs.
-    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
-        None
-    }
-
-    /// Its interface's layout under both laws, where it has one interface that holds over one
-    /// stretch ([`Zoned`](crate::problems::zoned::Zoned)): what the zone strip draws.
-    fn zoned() -> Option<&'static dyn AnyZoned> {
-        None
-    }
+    /// Its capabilities, erased: the one table the generic layers find them in
+    /// ([`ProblemFaces`]); none by default. A problem with a capability fills its slot from its
+    /// typed impl (`load_driven: Some(&LoadDrivenOf::<Self>::NEW)`), so that the erased side finds
+    /// it without specialisation and without a method per capability.
+    const FACES: &'static ProblemFaces = &ProblemFaces::NONE;
 
     /// Bridge to the [`Inputs`] enum (generated from the registry; written by `enum_bridges!`).
     fn to_inputs(params: Self::Params) -> Inputs;
@@ -270,29 +258,79 @@ pub trait Continuum: Problem {
     fn continuum_response(reference: &Self::Reference) -> f64;
 }
 
-/// The [`Continuum`] of a problem, erased: the response on the default mesh.
-pub trait AnyContinuum: Send + Sync {
-    /// The continuum's response for `model` (of this problem) on the default mesh; `None` for
-    /// another problem's model.
-    ///
-    /// # Errors
-    /// As [`Continuum::solve_continuum`].
-    fn response(&self, model: &Model) -> Option<Result<f64, NumericError>>;
+/// The [`Continuum`] of `P`, erased: the continuum's response for `model` (of `P`) on the
+/// default mesh; `None` for another problem's model. What `P` puts in its
+/// [`ProblemFaces::continuum`].
+///
+/// # Errors
+/// As [`Continuum::solve_continuum`], inside the `Some`.
+pub fn continuum_response<P: Continuum>(model: &Model) -> Option<Result<f64, NumericError>> {
+    let model = P::from_model(model)?;
+    Some(P::solve_continuum(&model, P::Mesh::default()).map(|r| P::continuum_response(&r)))
 }
 
-/// The [`AnyContinuum`] of a [`Continuum`] problem `P`: what its [`Problem::continuum`] hands out.
-#[derive(Debug)]
-pub struct ContinuumOf<P>(std::marker::PhantomData<P>);
+/// [`continuum_response`] of one problem, erased: its slot in [`ProblemFaces`].
+pub type ContinuumResponse = fn(&Model) -> Option<Result<f64, NumericError>>;
 
-impl<P> ContinuumOf<P> {
-    /// The erased continuum of `P`.
-    pub const NEW: ContinuumOf<P> = ContinuumOf(std::marker::PhantomData);
+/// **The erased faces of one problem**: every capability it has, as the generic layers reach
+/// it from `&'static dyn` [`AnyProblem`] ([`AnyProblem::faces`]), in one table instead of a
+/// method per capability on [`Problem`] and another on [`AnyProblem`]. A problem fills it once,
+/// as its [`Problem::FACES`], from its typed impls; a slot left `None` (or empty) is a
+/// capability it lacks, which answers "is this problem load-driven?" without a `match` on its
+/// kind.
+///
+/// A capability whose erased side is one function is a plain `fn` here
+/// ([`continuum_response`], [`zoned::erased_layout`](crate::problems::zoned::erased_layout)).
+/// One with several methods keeps an erased trait beside its typed one ([`AnyLoadDriven`],
+/// [`AnyFittable`], [`AnyCrossChecked`]): its methods take the [`Model`] enum and plain
+/// numbers, which the typed trait cannot (its models and forces are the problem's own types),
+/// and one `&'static dyn` carries all of them; each is implemented once, generically
+/// (`LoadDrivenOf<P>`), never by a problem. [`AnyChoice`] has no typed side: a problem writes it
+/// for each setting that is a name. What the table saved is counted in the module docs.
+#[derive(Clone, Copy)]
+pub struct ProblemFaces {
+    /// Its 2-D continuum reference ([`Continuum`]), on the default mesh.
+    pub continuum: Option<ContinuumResponse>,
+    /// Its force axis ([`LoadDriven`](crate::problems::load_driven::LoadDriven)), where it is
+    /// driven by a load.
+    pub load_driven: Option<&'static dyn AnyLoadDriven>,
+    /// Its fit of mu and K_T to a measured load-response curve
+    /// ([`Fittable`](crate::problems::fittable::Fittable)): `None` answers "can `f` fit this
+    /// problem?".
+    pub fittable: Option<&'static dyn AnyFittable>,
+    /// Its closed forms against its own discretized solver
+    /// ([`CrossChecked`](crate::problems::cross_check::CrossChecked)): what `verify` runs.
+    pub cross_checked: Option<&'static dyn AnyCrossChecked>,
+    /// Its interface's layout under both laws ([`Zoned`](crate::problems::zoned::Zoned)),
+    /// where it has one interface that holds over one stretch: what the zone strip draws.
+    pub zoned: Option<fn(&Model) -> Option<Layout>>,
+    /// Its settings that are names, not numbers ([`AnyChoice`]: the beams' theory), which
+    /// presets and the command line set through the registry.
+    pub choices: &'static [&'static dyn AnyChoice],
 }
 
-impl<P: Continuum> AnyContinuum for ContinuumOf<P> {
-    fn response(&self, model: &Model) -> Option<Result<f64, NumericError>> {
-        let model = P::from_model(model)?;
-        Some(P::solve_continuum(&model, P::Mesh::default()).map(|r| P::continuum_response(&r)))
+impl ProblemFaces {
+    /// No capability: what a problem's table starts from (`..ProblemFaces::NONE`).
+    pub const NONE: ProblemFaces = ProblemFaces {
+        continuum: None,
+        load_driven: None,
+        fittable: None,
+        cross_checked: None,
+        zoned: None,
+        choices: &[],
+    };
+}
+
+impl Debug for ProblemFaces {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ProblemFaces")
+            .field("continuum", &self.continuum.is_some())
+            .field("load_driven", &self.load_driven.is_some())
+            .field("fittable", &self.fittable.is_some())
+            .field("cross_checked", &self.cross_checked.is_some())
+            .field("zoned", &self.zoned.is_some())
+            .field("choices", &self.choices.len())
+            .finish()
     }
 }
 
@@ -378,6 +416,24 @@ pub trait Registered {
     const KIND: ModelKind;
 }
 
+/// What every registered problem writes, because the studies dispatch over the whole registry
+/// (the checklist in `problems/mod.rs`): the bound a [`Visit`] may use.
+pub trait Listed: Registered + Pointwise + Profiled + StiffnessAnswer {}
+
+impl<P: Registered + Pointwise + Profiled + StiffnessAnswer> Listed for P {}
+
+/// Code written once, generic over a problem's type, run for the problem of a [`ModelKind`] by
+/// [`ModelKind::visit`]: the core's one typed dispatch, generated from the registry, for what
+/// cannot be an erased face of [`ProblemFaces`] because it speaks a higher layer's types (a
+/// study's samples and series).
+pub trait Visit {
+    /// What it gives back.
+    type Output;
+
+    /// Runs it for the problem `P`.
+    fn run<P: Listed>(self) -> Self::Output;
+}
+
 /// A [`Problem`] with its types erased (object safe): parameter values as `&[f64]` indexed like
 /// [`Description::params`], answers as plain numbers, and the bridges to the enums the
 /// application still matches on. Every registered [`Problem`] is one (blanket impl); the registry hands them
@@ -422,22 +478,10 @@ pub trait AnyProblem: Send + Sync {
     /// # Errors
     /// As [`AnyProblem::check`].
     fn quantity_at(&self, values: &[f64], quantity: Quantity) -> Result<Option<f64>, ProblemError>;
-    /// The continuum reference, where the problem has one.
-    fn continuum(&self) -> Option<&'static dyn AnyContinuum>;
-    /// Its force axis, where it is driven by a load: `None` answers "is this problem
-    /// load-driven?" without a `match` on its kind.
-    fn load_driven(&self) -> Option<&'static dyn AnyLoadDriven>;
-    /// Its settings that are names ([`Problem::choices`]).
-    fn choices(&self) -> &'static [&'static dyn AnyChoice];
     /// [`Problem::REFUSED_AS`].
     fn refused_as(&self) -> &'static str;
-    /// Its fit of mu and K_T to a measured curve, where it has one: `None` answers "can `f`
-    /// fit this problem?" without a `match` on its kind.
-    fn fittable(&self) -> Option<&'static dyn AnyFittable>;
-    /// Its cross-check against its own discretized solver, where it has one.
-    fn cross_checked(&self) -> Option<&'static dyn AnyCrossChecked>;
-    /// Its interface's layout, where it has one.
-    fn zoned(&self) -> Option<&'static dyn AnyZoned>;
+    /// Its capabilities ([`Problem::FACES`]): the one table the erased side finds them in.
+    fn faces(&self) -> &'static ProblemFaces;
 
     /// [`Inputs`] of this problem at `values`.
     ///
@@ -497,32 +541,12 @@ impl<P: Problem + Registered> AnyProblem for P {
         Ok(P::quantity(&P::model(&P::from_values(values)?)?, quantity))
     }
 
-    fn continuum(&self) -> Option<&'static dyn AnyContinuum> {
-        P::continuum()
-    }
-
-    fn load_driven(&self) -> Option<&'static dyn AnyLoadDriven> {
-        P::load_driven()
-    }
-
-    fn choices(&self) -> &'static [&'static dyn AnyChoice] {
-        P::choices()
-    }
-
     fn refused_as(&self) -> &'static str {
         P::REFUSED_AS
     }
 
-    fn fittable(&self) -> Option<&'static dyn AnyFittable> {
-        P::fittable()
-    }
-
-    fn cross_checked(&self) -> Option<&'static dyn AnyCrossChecked> {
-        P::cross_checked()
-    }
-
-    fn zoned(&self) -> Option<&'static dyn AnyZoned> {
-        P::zoned()
+    fn faces(&self) -> &'static ProblemFaces {
+        P::FACES
     }
 
     fn inputs_at(&self, values: &[f64]) -> Result<Inputs, ProblemError> {

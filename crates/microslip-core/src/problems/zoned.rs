@@ -64,23 +64,8 @@ pub fn layout<P: Zoned>(model: &P::Model) -> Layout {
     }
 }
 
-/// The [`Zoned`] capability of a problem, erased.
-pub trait AnyZoned: Send + Sync {
-    /// The layout of `model`; `None` for another problem's model.
-    fn layout(&self, model: &Model) -> Option<Layout>;
-}
-
-/// The [`AnyZoned`] of a [`Zoned`] problem `P`: what its [`Problem::zoned`] hands out.
-#[derive(Debug)]
-pub struct ZonedOf<P>(std::marker::PhantomData<P>);
-
-impl<P> ZonedOf<P> {
-    /// The erased layout of `P`.
-    pub const NEW: ZonedOf<P> = ZonedOf(std::marker::PhantomData);
-}
-
-impl<P: Zoned> AnyZoned for ZonedOf<P> {
-    fn layout(&self, model: &Model) -> Option<Layout> {
-        Some(layout::<P>(&P::from_model(model)?))
-    }
+/// The layout of `model` of the problem `P`, erased: `None` for another problem's model. What
+/// `P` puts in its [`ProblemFaces::zoned`](crate::problems::problem::ProblemFaces::zoned).
+pub fn erased_layout<P: Zoned>(model: &Model) -> Option<Layout> {
+    Some(layout::<P>(&P::from_model(model)?))
 }

@@ -18,7 +18,7 @@ use crate::kernel::regime::Law;
 use crate::problems::inputs::Model;
 use crate::problems::load_driven::LoadDriven;
 use crate::problems::pointwise::Pointwise;
-use crate::problems::problem::BothLaws;
+use crate::problems::problem::{BothLaws, Listed, Visit};
 use crate::problems::profiled::Profiled;
 use crate::problems::{Param, ParamKey, Problem};
 use crate::study::load;
@@ -186,49 +186,57 @@ pub fn shear_along_of<P: Profiled>(model: &P::Model, positions: Samples) -> (Ser
     P::shear_along(model, positions.values())
 }
 
-/// Writes the dispatch over every registered problem of the erased studies below.
-macro_rules! erased_studies {
-    ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
-        /// The response of `model` (w(L) of the beams, u(L) of the plate, Delta of the lap joint,
-        /// mm) against any one of its parameters: (Coulomb, regularized). The chart "w(L) vs
-        /// this parameter" ([`responses_over`] of the model's problem).
-        ///
-        /// # Errors
-        /// [`RangeError::Bound`] when an end of `values` is not an accepted value of `param` (or
-        /// `param` belongs to another problem).
-        pub fn response_vs_param(
-            model: &Model,
-            param: Param,
-            values: Samples,
-        ) -> Result<(Series, Series), RangeError> {
-            $(if let Some(typed) =
-                <crate::problems::$folder::$problem as Problem>::from_model(model)
-            {
-                type P = crate::problems::$folder::$problem;
-                let key = <P as Problem>::index_of(param)
-                    .and_then(|i| <<P as Problem>::Key as ParamKey>::KEYS.get(i).copied());
-                return match key {
-                    Some(key) => responses_over::<P>(typed, key, values),
-                    None => Err(another_problem(param)),
-                };
-            })+
-            Err(another_problem(param))
-        }
-
-        /// Interface shear tau (MPa) along the interface of `model` at its state: (Coulomb,
-        /// regularized) ([`shear_along_of`] of the model's problem).
-        pub fn shear_along(model: &Model, positions: Samples) -> (Series, Series) {
-            $(if let Some(typed) =
-                <crate::problems::$folder::$problem as Problem>::from_model(model)
-            {
-                return shear_along_of::<crate::problems::$folder::$problem>(&typed, positions);
-            })+
-            (Vec::new(), Vec::new())
-        }
-    };
+/// The response of `model` (w(L) of the beams, u(L) of the plate, Delta of the lap joint, mm)
+/// against any one of its parameters: (Coulomb, regularized). The chart "w(L) vs this
+/// parameter" ([`responses_over`] of the model's problem).
+///
+/// # Errors
+/// [`RangeError::Bound`] when an end of `values` is not an accepted value of `param` (or `param`
+/// belongs to another problem).
+pub fn response_vs_param(
+    model: &Model,
+    param: Param,
+    values: Samples,
+) -> Result<(Series, Series), RangeError> {
+    model.kind().visit(ResponseVsParam(model, param, values))
 }
 
-crate::with_problems!(erased_studies);
+/// [`response_vs_param`]'s body, typed.
+struct ResponseVsParam<'a>(&'a Model, Param, Samples);
+
+impl Visit for ResponseVsParam<'_> {
+    type Output = Result<(Series, Series), RangeError>;
+
+    fn run<P: Listed>(self) -> Self::Output {
+        let ResponseVsParam(model, param, values) = self;
+        let key = P::index_of(param).and_then(|i| P::Key::KEYS.get(i).copied());
+        match (P::from_model(model), key) {
+            (Some(typed), Some(key)) => responses_over::<P>(typed, key, values),
+            _ => Err(another_problem(param)),
+        }
+    }
+}
+
+/// Interface shear tau (MPa) along the interface of `model` at its state: (Coulomb,
+/// regularized) ([`shear_along_of`] of the model's problem).
+pub fn shear_along(model: &Model, positions: Samples) -> (Series, Series) {
+    model.kind().visit(ShearAlong(model, positions))
+}
+
+/// [`shear_along`]'s body, typed.
+struct ShearAlong<'a>(&'a Model, Samples);
+
+impl Visit for ShearAlong<'_> {
+    type Output = (Series, Series);
+
+    fn run<P: Listed>(self) -> Self::Output {
+        let ShearAlong(model, positions) = self;
+        P::from_model(model).map_or_else(
+            || (Vec::new(), Vec::new()),
+            |typed| shear_along_of::<P>(&typed, positions),
+        )
+    }
+}
 
 /// The far edge of the regularized law's holding zone (mm) against F (N): the end of the beams'
 /// microslip zone X (X = L below F_1), the joint's L - d ([`load::holding_zone_vs_force`]).

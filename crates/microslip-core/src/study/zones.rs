@@ -71,8 +71,9 @@ pub fn interface_zones(model: &Model) -> InterfaceZones {
     let Some(layout) = model
         .kind()
         .problem()
-        .zoned()
-        .and_then(|zoned| zoned.layout(model))
+        .faces()
+        .zoned
+        .and_then(|layout| layout(model))
     else {
         return InterfaceZones {
             length: 0.0,

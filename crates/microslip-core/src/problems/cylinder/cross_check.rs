@@ -110,8 +110,8 @@ pub fn describe(cylinder: &Cylinder, load: TangentialLoad) -> String {
     )
 }
 
-// The `CrossChecked` impl (it names the registered `CylinderProblem`); `Problem::cross_checked`
-// in problem.rs hands out `CrossCheckedOf::<Self>::NEW`.
+// The `CrossChecked` impl (it names the registered `CylinderProblem`); `Problem::FACES`
+// in problem.rs holds `CrossCheckedOf::<Self>::NEW`.
 
 use super::problem::{CylinderModel, CylinderProblem};
 use crate::problems::cross_check::CrossChecked;

@@ -11,7 +11,7 @@
 //! TODO(c1b): declared in `mod.rs` together with `cycle.rs`, whose `CylinderCycle` (a
 //! [`MasingCycle`](crate::problems::load_driven::MasingCycle) + `Copy`, built by
 //! `CylinderCycle::new(&Cylinder, Law, TangentialLoad)`) this impl hands out; then
-//! `problem.rs`'s `load_driven()` returns `Some(&LoadDrivenOf::<CylinderProblem>::NEW)`.
+//! `problem.rs`'s `FACES` holds `load_driven: Some(&LoadDrivenOf::<CylinderProblem>::NEW)`.
 
 use super::closed_form::{Cylinder, TangentialLoad};
 use super::cycle::CylinderCycle;

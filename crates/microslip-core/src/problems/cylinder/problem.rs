@@ -9,12 +9,12 @@ use super::description::DESCRIPTION;
 use super::params::CylinderParam;
 use super::regularized::RegularizedState;
 use crate::kernel::params::ParamError;
-use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
-use crate::problems::fittable::{AnyFittable, FittableOf};
+use crate::problems::cross_check::CrossCheckedOf;
+use crate::problems::fittable::FittableOf;
 use crate::problems::inputs::InterfaceData;
-use crate::problems::load_driven::{AnyLoadDriven, LoadDrivenOf};
-use crate::problems::problem::{Laws, ParamKey, Problem};
-use crate::problems::zoned::{AnyZoned, ZonedOf};
+use crate::problems::load_driven::LoadDrivenOf;
+use crate::problems::problem::{Laws, ParamKey, Problem, ProblemFaces};
+use crate::problems::zoned::erased_layout;
 use crate::problems::{Description, ModelKind, Quantity, UnknownParam};
 
 /// The Hertzian cylinder on a flat as a type: see [`Problem`].
@@ -150,21 +150,13 @@ impl Problem for CylinderProblem {
         }
     }
 
-    fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
-        Some(&LoadDrivenOf::<CylinderProblem>::NEW)
-    }
-
-    fn fittable() -> Option<&'static dyn AnyFittable> {
-        Some(&FittableOf::<CylinderProblem>::NEW)
-    }
-
-    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
-        Some(&CrossCheckedOf::<CylinderProblem>::NEW)
-    }
-
-    fn zoned() -> Option<&'static dyn AnyZoned> {
-        Some(&ZonedOf::<CylinderProblem>::NEW)
-    }
+    const FACES: &'static ProblemFaces = &ProblemFaces {
+        load_driven: Some(&LoadDrivenOf::<CylinderProblem>::NEW),
+        fittable: Some(&FittableOf::<CylinderProblem>::NEW),
+        cross_checked: Some(&CrossCheckedOf::<CylinderProblem>::NEW),
+        zoned: Some(erased_layout::<CylinderProblem>),
+        ..ProblemFaces::NONE
+    };
 
     enum_bridges!(Cylinder);
 }

@@ -8,12 +8,14 @@ use super::continuum::{ContinuumLap, LapContinuumMesh, solve_lap_continuum};
 use super::params::{LapParam, LapParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
-use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
-use crate::problems::fittable::{AnyFittable, FittableOf};
+use crate::problems::cross_check::CrossCheckedOf;
+use crate::problems::fittable::FittableOf;
 use crate::problems::inputs::InterfaceData;
-use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
-use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
-use crate::problems::zoned::{AnyZoned, ZonedOf};
+use crate::problems::load_driven::{LoadDriven, LoadDrivenOf};
+use crate::problems::problem::{
+    Continuum, Laws, ParamKey, Problem, ProblemFaces, continuum_response,
+};
+use crate::problems::zoned::erased_layout;
 use crate::problems::{Description, Quantity};
 
 /// The clamped double-lap joint as a type: see [`Problem`].
@@ -148,25 +150,14 @@ impl Problem for LapJointProblem {
         }
     }
 
-    fn continuum() -> Option<&'static dyn AnyContinuum> {
-        Some(&ContinuumOf::<LapJointProblem>::NEW)
-    }
-
-    fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
-        Some(&LoadDrivenOf::<LapJointProblem>::NEW)
-    }
-
-    fn fittable() -> Option<&'static dyn AnyFittable> {
-        Some(&FittableOf::<LapJointProblem>::NEW)
-    }
-
-    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
-        Some(&CrossCheckedOf::<LapJointProblem>::NEW)
-    }
-
-    fn zoned() -> Option<&'static dyn AnyZoned> {
-        Some(&ZonedOf::<LapJointProblem>::NEW)
-    }
+    const FACES: &'static ProblemFaces = &ProblemFaces {
+        continuum: Some(continuum_response::<LapJointProblem>),
+        load_driven: Some(&LoadDrivenOf::<LapJointProblem>::NEW),
+        fittable: Some(&FittableOf::<LapJointProblem>::NEW),
+        cross_checked: Some(&CrossCheckedOf::<LapJointProblem>::NEW),
+        zoned: Some(erased_layout::<LapJointProblem>),
+        ..ProblemFaces::NONE
+    };
 
     enum_bridges!(Lap);
 }
@@ -201,8 +192,9 @@ mod tests {
         let model = crate::problems::inputs::Inputs::paper(ModelKind::Lap)
             .validate()
             .unwrap();
-        let erased = LapJointProblem::continuum()
-            .and_then(|c| c.response(&model))
+        let erased = LapJointProblem::FACES
+            .continuum
+            .and_then(|response| response(&model))
             .unwrap()
             .unwrap();
         let mesh = LapContinuumMesh::default();

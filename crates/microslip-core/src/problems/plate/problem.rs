@@ -8,10 +8,12 @@ use super::continuum::{ContinuumMesh, ContinuumPlate, solve_plate_continuum};
 use super::params::{PlateParam, PlateParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
-use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
+use crate::problems::cross_check::CrossCheckedOf;
 use crate::problems::inputs::InterfaceData;
-use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
-use crate::problems::zoned::{AnyZoned, ZonedOf};
+use crate::problems::problem::{
+    Continuum, Laws, ParamKey, Problem, ProblemFaces, continuum_response,
+};
+use crate::problems::zoned::erased_layout;
 use crate::problems::{Description, Quantity};
 
 /// The squeezed plate (paper section 2.2) as a type: see [`Problem`].
@@ -80,17 +82,12 @@ impl Problem for SqueezedPlateProblem {
         }
     }
 
-    fn continuum() -> Option<&'static dyn AnyContinuum> {
-        Some(&ContinuumOf::<SqueezedPlateProblem>::NEW)
-    }
-
-    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
-        Some(&CrossCheckedOf::<SqueezedPlateProblem>::NEW)
-    }
-
-    fn zoned() -> Option<&'static dyn AnyZoned> {
-        Some(&ZonedOf::<SqueezedPlateProblem>::NEW)
-    }
+    const FACES: &'static ProblemFaces = &ProblemFaces {
+        continuum: Some(continuum_response::<SqueezedPlateProblem>),
+        cross_checked: Some(&CrossCheckedOf::<SqueezedPlateProblem>::NEW),
+        zoned: Some(erased_layout::<SqueezedPlateProblem>),
+        ..ProblemFaces::NONE
+    };
 
     enum_bridges!(Plate);
 }
@@ -125,8 +122,9 @@ mod tests {
         let model = crate::problems::inputs::Inputs::paper(ModelKind::Plate)
             .validate()
             .unwrap();
-        let erased = SqueezedPlateProblem::continuum()
-            .and_then(|c| c.response(&model))
+        let erased = SqueezedPlateProblem::FACES
+            .continuum
+            .and_then(|response| response(&model))
             .unwrap()
             .unwrap();
         let typed = solve_plate_continuum(PlateParams::PAPER, ContinuumMesh::default()).unwrap();

@@ -8,13 +8,14 @@ use super::continuum::{BeamsContinuumMesh, ContinuumBeams, solve_beams_continuum
 use super::params::{BeamParam, TwinBeamsParams};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
-use crate::problems::choice::AnyChoice;
-use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
-use crate::problems::fittable::{AnyFittable, FittableOf};
+use crate::problems::cross_check::CrossCheckedOf;
+use crate::problems::fittable::FittableOf;
 use crate::problems::inputs::InterfaceData;
-use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
-use crate::problems::problem::{AnyContinuum, Continuum, ContinuumOf, Laws, ParamKey, Problem};
-use crate::problems::zoned::{AnyZoned, ZonedOf};
+use crate::problems::load_driven::{LoadDriven, LoadDrivenOf};
+use crate::problems::problem::{
+    Continuum, Laws, ParamKey, Problem, ProblemFaces, continuum_response,
+};
+use crate::problems::zoned::erased_layout;
 use crate::problems::{Description, Quantity};
 
 /// The twin cantilever beams (paper section 2.1) as a type: see [`Problem`].
@@ -122,30 +123,15 @@ impl Problem for TwinBeamsProblem {
         }
     }
 
-    fn continuum() -> Option<&'static dyn AnyContinuum> {
-        Some(&ContinuumOf::<TwinBeamsProblem>::NEW)
-    }
-
-    fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
-        Some(&LoadDrivenOf::<TwinBeamsProblem>::NEW)
-    }
-
-    /// The beam theory ([`super::choice::TheoryChoice`]).
-    fn choices() -> &'static [&'static dyn AnyChoice] {
-        &[&super::choice::TheoryChoice]
-    }
-
-    fn fittable() -> Option<&'static dyn AnyFittable> {
-        Some(&FittableOf::<TwinBeamsProblem>::NEW)
-    }
-
-    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
-        Some(&CrossCheckedOf::<TwinBeamsProblem>::NEW)
-    }
-
-    fn zoned() -> Option<&'static dyn AnyZoned> {
-        Some(&ZonedOf::<TwinBeamsProblem>::NEW)
-    }
+    const FACES: &'static ProblemFaces = &ProblemFaces {
+        continuum: Some(continuum_response::<TwinBeamsProblem>),
+        load_driven: Some(&LoadDrivenOf::<TwinBeamsProblem>::NEW),
+        fittable: Some(&FittableOf::<TwinBeamsProblem>::NEW),
+        cross_checked: Some(&CrossCheckedOf::<TwinBeamsProblem>::NEW),
+        zoned: Some(erased_layout::<TwinBeamsProblem>),
+        // The beam theory ([`super::choice::TheoryChoice`]).
+        choices: &[&super::choice::TheoryChoice],
+    };
 
     enum_bridges!(Beam);
 }
@@ -181,8 +167,9 @@ mod tests {
         let model = crate::problems::inputs::Inputs::paper(ModelKind::Beam)
             .validate()
             .unwrap();
-        let erased = TwinBeamsProblem::continuum()
-            .and_then(|c| c.response(&model))
+        let erased = TwinBeamsProblem::FACES
+            .continuum
+            .and_then(|response| response(&model))
             .unwrap()
             .unwrap();
         let typed =

@@ -3,14 +3,14 @@
 
 use super::DESCRIPTION;
 use crate::kernel::params::{ParamError, ParamSpec};
-use crate::problems::cross_check::{AnyCrossChecked, CrossCheckedOf};
-use crate::problems::fittable::{AnyFittable, FittableOf};
+use crate::problems::cross_check::CrossCheckedOf;
+use crate::problems::fittable::FittableOf;
 use crate::problems::inputs::InterfaceData;
-use crate::problems::load_driven::{AnyLoadDriven, LoadDriven, LoadDrivenOf};
+use crate::problems::load_driven::{LoadDriven, LoadDrivenOf};
 use crate::problems::pressfit::closed_form::{CarriedLoad, FitState, PressFit};
 use crate::problems::pressfit::params::{PressFitParam, PressFitParams};
-use crate::problems::problem::{Laws, ParamKey, Problem};
-use crate::problems::zoned::{AnyZoned, ZonedOf};
+use crate::problems::problem::{Laws, ParamKey, Problem, ProblemFaces};
+use crate::problems::zoned::erased_layout;
 use crate::problems::{Description, Quantity};
 
 /// The press fit pushed out, as a type: see [`Problem`].
@@ -109,21 +109,13 @@ impl Problem for PressFitProblem {
         }
     }
 
-    fn load_driven() -> Option<&'static dyn AnyLoadDriven> {
-        Some(&LoadDrivenOf::<PressFitProblem>::NEW)
-    }
-
-    fn fittable() -> Option<&'static dyn AnyFittable> {
-        Some(&FittableOf::<PressFitProblem>::NEW)
-    }
-
-    fn cross_checked() -> Option<&'static dyn AnyCrossChecked> {
-        Some(&CrossCheckedOf::<PressFitProblem>::NEW)
-    }
-
-    fn zoned() -> Option<&'static dyn AnyZoned> {
-        Some(&ZonedOf::<PressFitProblem>::NEW)
-    }
+    const FACES: &'static ProblemFaces = &ProblemFaces {
+        load_driven: Some(&LoadDrivenOf::<PressFitProblem>::NEW),
+        fittable: Some(&FittableOf::<PressFitProblem>::NEW),
+        cross_checked: Some(&CrossCheckedOf::<PressFitProblem>::NEW),
+        zoned: Some(erased_layout::<PressFitProblem>),
+        ..ProblemFaces::NONE
+    };
 
     enum_bridges!(PressFit);
 }
