@@ -302,8 +302,8 @@ pub trait ForProblem {
 /// the registry's list is turned into the application's erased faces in one place.
 ///
 /// Each face keeps an erased trait beside its typed one ([`AnyReportFace`], [`AnyCycleFace`],
-/// [`AnyPaneFace`]): its methods take the [`Model`](crate::problems::inputs::Model) and
-/// [`Inputs`](crate::problems::inputs::Inputs) enums and plain numbers where the typed trait
+/// `chart::panes::AnyPaneFace` with the `app` feature): its methods take the
+/// [`Model`](crate::problems::inputs::Model) and [`Inputs`](crate::problems::inputs::Inputs) enums and plain numbers where the typed trait
 /// takes the problem's own types, and each is implemented once, generically (`ReportOf<P>`),
 /// never by a problem. The deck's erased face (`fe::face::deck_face`) is not in the table: the
 /// `fe` layer, below this one, reads its headers and results with it (`tests/layering.rs`), and

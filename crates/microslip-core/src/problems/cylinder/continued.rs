@@ -10,7 +10,7 @@
 //! - the matrix changes with c / a only, so a neighbour's LU factors serve as the preconditioner
 //!   of an iterative refinement, O(n^2) a step instead of the O(n^3) factorization (refactored
 //!   when c / a moved too far for the refinement to converge in a few steps);
-//! - the strips' potential is integrated by product integration ([`StripRule`]), a few dozen
+//! - the strips' potential is integrated by product integration (`StripRule`), a few dozen
 //!   evaluations a row instead of up to a thousand.
 //!
 //! Each answer is a root of the same equations to the same stop (|Q(theta) / Q - 1| <= 1e-12), so

@@ -506,7 +506,7 @@ impl Cylinder {
     /// ([`solve_normalized`]), the same bits whatever was solved before; inside one (a sweep, a
     /// target scan, a fit, a cycle) it continues from that scope's earlier solves of the same
     /// K_T a / E* ([`super::continued`]: a sweep's point costs one linear solve), the cold answer
-    /// to about 1e-12. The last answers are kept ([`KeptAnswers`]), per thread outside a scope
+    /// to about 1e-12. The last answers are kept (`KeptAnswers`), per thread outside a scope
     /// (cold, so a kept answer is a new solve's bits) and in the scope's memory inside one.
     pub fn regularized(&self, load: TangentialLoad) -> RegularizedState {
         thread_local! {

@@ -40,7 +40,7 @@ impl PlaneState {
 /// c_shaft = (r / Es) [(r^2 + ri^2) / (r^2 - ri^2) - nus],
 /// ```
 ///
-/// with (E, nu) of [`PlaneState::effective`]. Both are positive on the accepted domain.
+/// with (E, nu) of `PlaneState::effective`. Both are positive on the accepted domain.
 pub fn radial_compliances(params: &PressFitParams, state: PlaneState) -> (f64, f64) {
     let (r, ri, ro) = (params.fit_radius, params.bore_radius, params.outer_radius);
     let (eh, nuh) = state.effective(params.hub_modulus, params.hub_poisson);
