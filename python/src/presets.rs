@@ -33,7 +33,8 @@ pub fn preset_values<'py>(
         // The settings this preset sets away from their defaults, by their preset keys.
         let set: Vec<String> = kind
             .problem()
-            .choices()
+            .faces()
+            .choices
             .iter()
             .filter(|choice| choice.get(&loaded.inputs) != choice.get(&carried))
             .map(|choice| {
