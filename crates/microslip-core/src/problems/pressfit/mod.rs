@@ -19,10 +19,9 @@ pub mod discretized;
 pub mod lame;
 pub mod params;
 pub mod validity;
-// With the registry line `PressFit => pressfit::PressFitProblem,` (REGISTRATION.md):
-//     pub mod registered;
-//     pub use registered::point;
-//     pub use registered::problem::PressFitProblem;
+pub mod registered;
+pub use registered::point;
+pub use registered::problem::PressFitProblem;
 
 #[cfg(test)]
 mod tests;
