@@ -128,23 +128,12 @@ impl Problem for CylinderProblem {
         match param {
             CylinderParam::TangentialLoad => (min, max.min(gross)),
             CylinderParam::NormalLoad | CylinderParam::Friction => {
-                let mut params = Self::params(model);
-                let value = Self::value(&params, index).unwrap_or(min);
-                // The value at which mu P falls to Q, moved up past round-off until the load is
-                // accepted there (a few ulps at most).
-                let mut lowest = min
-                    .max(value * model.load.newtons_per_mm() / gross)
-                    .min(max);
-                for _ in 0..8 {
-                    if let Some(slot) = Self::slot(&mut params, index) {
-                        *slot = lowest;
-                    }
-                    if Self::model(&params).is_ok() {
-                        break;
-                    }
-                    lowest = lowest.next_up().min(max);
-                }
-                (lowest, max)
+                Self::range_above_proportional_bound(
+                    model,
+                    index,
+                    (min, max),
+                    (model.load.newtons_per_mm(), gross),
+                )
             }
             _ => (min, max),
         }
