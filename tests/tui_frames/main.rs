@@ -135,6 +135,26 @@ fn cylinder_views() {
         assert!(small.contains(needed), "{needed}\n{small}");
     }
     insta::assert_snapshot!("cylinder_view_80x24_ascii", small);
+    // Every line is reachable at 80x24: the title counts those left out, and `i` walking the
+    // lines scrolls the pane to each (issue 47 item 5: s(0), the Mindlin lines, K_T in MPa/um).
+    assert!(small.contains("Regime (i +5)"), "{small}");
+    let mut walk = app_with("cylinder-steel-pad", Charset::Ascii, false);
+    press(&mut walk, Action::Explain);
+    let mut seen = String::new();
+    for _ in 0..20 {
+        seen.push_str(&screen(&walk, 80, 24));
+        press(&mut walk, Action::Next);
+    }
+    for hidden in [
+        "s(0) 1.88827 um",
+        "c Mindlin 0.5252 mm",
+        "s(a) Mindlin 0.881963 um",
+        "D Mindlin 0.113 N mm/mm",
+        "K_T = 100 MPa/um",
+    ] {
+        assert!(!small.contains(hidden), "{hidden} shown without i");
+        assert!(seen.contains(hidden), "{hidden} never reached");
+    }
     let mut app = app_with("cylinder-steel-pad", Charset::Unicode, true);
     insta::assert_snapshot!("cylinder_view_120x40", screen(&app, 120, 40));
     for name in [

@@ -624,7 +624,7 @@ fn a_deflection_far_beyond_the_measured_range_claims_no_envelope() {
     press(&mut app, Action::Commit);
     let text = screen(&app, 80, 24);
     assert!(
-        text.contains("Regime (i), FE: w/L too big") && !text.contains("FE within"),
+        text.contains("FE: w/L too big") && !text.contains("FE within"),
         "{text}"
     );
     // The paper's force keeps its number.
