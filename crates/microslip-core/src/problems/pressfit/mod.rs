@@ -14,12 +14,13 @@
 //! (`REGISTRATION.md` beside this file says how, and what that showed).
 
 pub mod closed_form;
+pub mod continuum;
 pub mod cycle;
 pub mod discretized;
 pub mod lame;
 pub mod params;
-pub mod validity;
 pub mod registered;
+pub mod validity;
 pub use registered::point;
 pub use registered::problem::PressFitProblem;
 
