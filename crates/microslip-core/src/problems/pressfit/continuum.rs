@@ -93,8 +93,9 @@ pub struct PressFitContinuumMesh {
 }
 
 impl Default for PressFitContinuumMesh {
-    /// Six elements through each wall and 8 increments over [0, F_gross]: Delta within 0.1 % of
-    /// the converged one on the fits of theory.md (S10) (measured there, with the mesh ladder).
+    /// Six elements through each wall and 8 increments over [0, F_gross]: Delta within 0.13 %
+    /// of 16 layers' on the ladder of docs/theory.md (S10) (the bundled fit: 0.13 %), and 32
+    /// increments give the same Delta to 10 digits.
     fn default() -> Self {
         PressFitContinuumMesh {
             layers: 6,
@@ -159,8 +160,9 @@ pub struct ContinuumPressFit {
 /// [`NumericError::OutOfRange`] for inputs outside their domains (the parameters, a force beyond
 /// F_gross = mu p 2 pi r L, layers outside 1..=32, no force increment) and for a mesh too large
 /// or too distorted (named with its numbers); [`NumericError::Unsolved`] when the push-out
-/// cannot be followed (near F_gross, where the continuum's own capacity, [`ContinuumPressFit::
-/// capacity`], may be lower than the closed form's), or the answer fails its equilibrium check.
+/// cannot be followed (near F_gross, where the continuum's own capacity,
+/// [`ContinuumPressFit::capacity`], may be lower than the closed form's), or the answer fails its
+/// equilibrium check.
 pub fn solve_pressfit_continuum(
     params: PressFitParams,
     force: f64,
