@@ -171,6 +171,15 @@ fn main() {
                 );
             }
         }
+        "kt" => {
+            // The cost of a stiff interface on the bundled fit: `-- kt 3e7`.
+            let kt: f64 = std::env::args().nth(2).unwrap().parse().unwrap();
+            let params = PressFitParams {
+                tangential_stiffness: kt,
+                ..PressFitParams::CCX98
+            };
+            row(params, PressFitContinuumMesh::default());
+        }
         "probe" => {
             let arg = |i: usize| -> f64 { std::env::args().nth(i).unwrap().parse().unwrap() };
             let (l, ts, th) = (arg(2), arg(3), arg(4));

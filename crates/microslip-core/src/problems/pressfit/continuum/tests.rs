@@ -238,3 +238,60 @@ fn inputs_it_cannot_resolve_are_refused_with_their_reason() {
     let path = solve_pressfit_continuum_path(FIT, &[500.0, 100.0], m).unwrap_err();
     assert!(path.to_string().contains("must not decrease"), "{path}");
 }
+
+/// Every accepted input gives finite numbers or a refusal, never a NaN nor a panic: extreme
+/// interfaces, a nearly incompressible shaft, a tiny interference, thin and thick walls.
+#[test]
+fn extreme_inputs_are_answered_finitely_or_refused() {
+    let cases = [
+        PressFitParams {
+            tangential_stiffness: 1e-6,
+            ..FIT
+        },
+        PressFitParams {
+            tangential_stiffness: 1e7,
+            ..FIT
+        },
+        PressFitParams {
+            shaft_poisson: 0.49,
+            bore_radius: 0.0,
+            ..FIT
+        },
+        PressFitParams {
+            interference: 1e-6,
+            friction: 1e-3,
+            ..FIT
+        },
+        PressFitParams {
+            bore_radius: 19.9,
+            outer_radius: 20.1,
+            length: 5.0,
+            ..FIT
+        },
+        PressFitParams {
+            outer_radius: 400.0,
+            hub_modulus: 1e3,
+            ..FIT
+        },
+    ];
+    for params in cases {
+        let fit = PressFit::new(params).unwrap();
+        let forces = [0.3, 0.99].map(|f| f * fit.gross_slip_force());
+        match solve_pressfit_continuum_path(params, &forces, mesh(2)) {
+            Ok(states) => {
+                for state in states {
+                    assert!(state.delta.is_finite() && state.delta >= 0.0, "{params:?}");
+                    assert!(state.pressure.iter().all(|(_, p)| p.is_finite()));
+                }
+            }
+            Err(e) => assert!(!e.to_string().is_empty()),
+        }
+    }
+    // Stiffer still, the mesh that resolves 1/lambda is refused by its size before it is built.
+    let stiff = PressFitParams {
+        tangential_stiffness: 1e8,
+        ..FIT
+    };
+    let refused = solve_pressfit_continuum(stiff, 100.0, mesh(2)).unwrap_err();
+    assert!(refused.to_string().contains("interface pairs"), "{refused}");
+}
