@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::kernel::validity::Validity;
+use crate::problems::pressfit::closed_form::PressFit;
 
 const FIT: PressFitParams = PressFitParams::CCX98;
 
@@ -87,7 +88,7 @@ fn the_interface_carries_f_and_below_first_slip_delta_is_linear() {
             state.transferred_force
         );
         // The shear integrates to the same force over the interface's area (2 pi r dx).
-        let grid = Grid::new(&FIT, mesh(4), 1.0 / fit.axial().decay_rate());
+        let grid = Grid::new(&FIT, mesh(4), 1.0 / decay_rate(&FIT));
         let area: Vec<f64> = grid
             .two
             .pair_weights
