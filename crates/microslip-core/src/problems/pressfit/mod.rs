@@ -2,8 +2,9 @@
 //! face (the hub held on its far face) or twisted by a torque T, under the regularized law or
 //! plain Coulomb. The parameters, Lamé's contact pressure, the closed forms (the shear lag of two
 //! bars coupled through one interface, shared with the lap joint through
-//! [`crate::kernel::shear_lag`]), the Masing cycle, where the 1-D theory's assumptions stand, and
-//! the independent discretized solver. docs/theory.md section 18 derives all of it.
+//! [`crate::kernel::shear_lag`]), the Masing cycle, where the 1-D theory's assumptions stand
+//! (measured against the axisymmetric continuum, `continuum.rs`), and the independent
+//! discretized solver. docs/theory.md section 18 derives all of it.
 //!
 //! Registered (`PressFit => pressfit::PressFitProblem` in [`crate::with_problems!`]): the trait
 //! impls that name the registry's generated types (`Problem`, `LoadDriven`, `Fittable`, `Zoned`,
@@ -18,6 +19,7 @@
 //! can, with the same closed forms.
 
 pub mod closed_form;
+pub mod continuum;
 pub mod cycle;
 pub mod discretized;
 pub mod lame;
