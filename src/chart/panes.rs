@@ -16,6 +16,7 @@ use crate::fe::face::LoadedVariant;
 use crate::fe::load::{AnyLoaded, Loaded};
 use crate::fit::Measured;
 use crate::kernel::format::{number, number_with};
+use crate::kernel::validity::Validity;
 use crate::measured::DataError;
 use crate::problems::inputs::{Inputs, Model};
 use crate::problems::{LoadDriven, ModelKind};
@@ -395,6 +396,25 @@ pub fn load_tolerance_lines<P: LoadDriven>(
         format!("{heading} {} at F,", shown(within([f, f]))),
         format!("  {} at all F up to F", shown(within([0.0, f]))),
     ]
+}
+
+/// A theory's envelope in a regime pane's title (about 20 characters), for the problems whose
+/// pane is full at 80x24 (the lap joint, the press fit): "FE within 3.4 %" (the expected
+/// difference of the response from the problem's continuum), "FE: >10 %, n solves" where the
+/// theory is outside it, "FE: not calibrated" where no calibration reaches (`n` draws the
+/// continuum in both cases).
+pub fn envelope_title(validity: Validity, expected_error: Option<f64>) -> String {
+    match (validity, expected_error) {
+        (Validity::Holds | Validity::Approximate, Some(e)) => {
+            format!("FE within {} %", number_with(100.0 * e, 2))
+        }
+        (Validity::Outside | Validity::MeasuredWrong, _) => {
+            format!("FE: >{} %, n solves", 100.0 * Validity::APPROXIMATE)
+        }
+        (Validity::Holds | Validity::Approximate | Validity::NotCalibrated, _) => {
+            "FE: not calibrated".to_string()
+        }
+    }
 }
 
 /// The ratio line's value: the regularized response over Coulomb's, or `none` where Coulomb's

@@ -10,12 +10,11 @@ use super::cycle::{LapCycle, MasingCycle};
 use super::fe_points::LapFePoint;
 use crate::chart::panes::{
     ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SATURATION_MEANING, SummaryLine,
-    load_regimes, load_tolerance_lines, ratio_text,
+    envelope_title, load_regimes, load_tolerance_lines, ratio_text,
 };
 use crate::fe::load::Loaded;
 use crate::kernel::format::{number, number_with};
 use crate::kernel::regime::Law;
-use crate::kernel::validity::Validity;
 use crate::problems::stiffness::{mm_to_um, mpa_per_mm_to_mpa_per_um};
 use crate::report::compare::percent_range;
 use crate::study::curves::lap_point;
@@ -190,22 +189,9 @@ fn lap_validity_words(v: &LapValidity) -> String {
     }
 }
 
-/// The shear-lag theory's envelope in the lap joint's regime-pane title (about 20 characters), as
-/// the beams' title gives theirs: "FE within 3.4 %" (the expected difference of Delta from a
-/// plane-stress continuum, (L14)), "FE: >10 %, n solves" where the theory is outside it, "FE: not
-/// calibrated" where no calibration reaches (`n` draws the continuum in both cases).
+/// The shear-lag theory's envelope in the lap joint's regime-pane title ((L14)).
 fn validity_title(v: &LapValidity) -> String {
-    match (v.validity, v.expected_error) {
-        (Validity::Holds | Validity::Approximate, Some(e)) => {
-            format!("FE within {} %", number_with(100.0 * e, 2))
-        }
-        (Validity::Outside | Validity::MeasuredWrong, _) => {
-            format!("FE: >{} %, n solves", 100.0 * Validity::APPROXIMATE)
-        }
-        (Validity::Holds | Validity::Approximate | Validity::NotCalibrated, _) => {
-            "FE: not calibrated".to_string()
-        }
-    }
+    envelope_title(v.validity, v.expected_error)
 }
 
 /// One line for the TUI's status: the lap joint's comparison in brief, the verdict first.

@@ -1,10 +1,12 @@
 //! The press fit's charts as data: Delta vs F with Coulomb and the K_T family, the sliding zones
 //! from each face vs F, tau(x), s(x), the loop and D vs F_a, with the discretized solver's points
-//! (the problem's [`ChartFace`]). The curves are the shear lag's, shared with the lap joint
+//! and the axisymmetric continuum's points (the problem's [`ChartFace`]). The curves are the
+//! shear lag's, shared with the lap joint
 //! ([`crate::chart::shear_lag`]); this file gives the fit's words and numbers.
 
 use super::PressFitProblem;
 use super::closed_form::PressFit;
+use super::continuum::{PressFitContinuumMesh, solve_pressfit_continuum_path};
 use super::discretized::PressFitFe;
 use super::params::{FitLoad, PressFitParam};
 use super::registered::problem::PressFitModel;
@@ -181,12 +183,28 @@ impl ShearLagCharts for PressFitProblem {
         PressFitFe::new(fit.params(), FitLoad::Axial, density)
     }
 
-    /// None yet: the axisymmetric continuum is issue 44's item 2.
+    /// The axisymmetric continuum ([`solve_pressfit_continuum_path`], docs/theory.md (S10)):
+    /// shaft and hub as ring bodies, Lamé's p not assumed; its zones as the 1-D theory reads
+    /// them (K_T |s| >= mu p).
     fn continuum_path(
-        _fit: &PressFit,
-        _forces: &[f64],
+        fit: &PressFit,
+        forces: &[f64],
     ) -> Result<Vec<ShearLagContinuumPoint>, NumericError> {
-        Ok(Vec::new())
+        let states =
+            solve_pressfit_continuum_path(fit.params(), forces, PressFitContinuumMesh::default())?;
+        Ok(states
+            .into_iter()
+            .map(|c| ShearLagContinuumPoint {
+                force: c.force,
+                response: c.delta,
+                zones: (
+                    c.nominal_zones.from_loaded_face,
+                    c.nominal_zones.from_held_face,
+                ),
+                shear: c.shear,
+                slip: c.slip,
+            })
+            .collect())
     }
 }
 

@@ -8,9 +8,10 @@ use super::closed_form::{CarriedLoad, PressFit};
 use super::cycle::FitCycle;
 use super::point::fit_point;
 use super::registered::problem::PressFitModel;
+use super::validity::PressFitValidity;
 use crate::chart::panes::{
-    ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SummaryLine, load_regimes,
-    load_tolerance_lines, ratio_text,
+    ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SummaryLine, envelope_title,
+    load_regimes, load_tolerance_lines, ratio_text,
 };
 use crate::fe::load::Loaded;
 use crate::kernel::format::{number, number_with};
@@ -29,14 +30,17 @@ impl PaneFace for PressFitProblem {
         "Press fit (pushed out)".to_string()
     }
 
-    /// The pane is full at 80x24, so the theory's standing goes in the title, as the lap
-    /// joint's does. No continuum has calibrated the 1-D theory yet: it says so.
-    fn title_line(_model: &PressFitModel) -> Option<SummaryLine> {
+    /// The pane is full at 80x24, so the 1-D theory's envelope goes in the title, as the lap
+    /// joint's does.
+    fn title_line(model: &PressFitModel) -> Option<SummaryLine> {
+        let v = model.fit.validity(model.force);
         Some(SummaryLine::plain(
-            "FE: not calibrated".to_string(),
+            envelope_title(v.validity, v.expected_error),
             "how far an axisymmetric continuum (FE) of this fit is expected from the Delta shown: \
-             the 1-D theory (Lamé's uniform p, each member's section strained uniformly) has no \
-             measured envelope yet (docs/theory.md section 18, (S9))",
+             the 1-D theory's envelope (docs/theory.md (S10), measured on 135 steel fits, held \
+             out on 24). 'FE: >10 %, n solves': outside its envelope, n draws the continuum; \
+             'not calibrated': no measured fit is like this one (short fits, L < 2 r, were off \
+             by up to 68 %)",
         ))
     }
 
@@ -175,5 +179,22 @@ fn fit_lines(fit: &PressFit, force: CarriedLoad) -> Vec<SummaryLine> {
             KT_UM_MEANING,
         )
         .dropped(1),
+        SummaryLine::plain(
+            format!("1-D theory {}", theory_words(&fit.validity(force))),
+            "the closed forms take Lamé's pressure uniform over L and each member's section \
+             strained uniformly; this bounds how far an axisymmetric continuum's Delta differs \
+             (docs/theory.md (S10)); where it fails, n draws the continuum (microslip pressfit \
+             --continuum)",
+        )
+        .dropped(1),
     ]
+}
+
+/// The envelope's level in a few words, for the regime pane's line: the calibrated range the fit
+/// leaves, where it leaves one.
+fn theory_words(v: &PressFitValidity) -> String {
+    match v.outside_calibration {
+        Some(why) => format!("not calibrated: {}", why.split(':').next().unwrap_or(why)),
+        None => v.validity.label().to_string(),
+    }
 }
