@@ -107,6 +107,7 @@ impl<W: Write> ForProblem for Compare<'_, W> {
                 // compared, not the preset's F.
                 None => load_problem::<P>(inputs, &command, Load::Unused)?.1,
             };
+            say_the_estimate::<P>(&model, &loaded);
             let mut compared = P::compare(&model, &loaded.points, loaded.interface_mesh.as_ref());
             let run = run_evidence::<P>(path, deck, &loaded, &model, contact)?;
             compare_run::judged_for::<P>(&run, &model, &mut compared);
@@ -249,4 +250,31 @@ fn csv_stick_slope(
         friction,
         interface.stiffness,
     ))
+}
+
+/// A comparison that will take more than a few seconds says so on stderr first, with its
+/// estimate (issue 47 item 2: a cylinder row is a solve, and a CSV of a million rows is
+/// accepted): the first 64 points are compared alone and timed (an over-estimate, by about 2 on
+/// the cylinder, whose later rows start from their neighbours' solutions); not `eprintln!`, which
+/// panics when stderr is gone.
+fn say_the_estimate<P: Faces>(model: &P::Model, loaded: &fe::load::Loaded<P::FePoint>) {
+    const PROBE: usize = 64;
+    const WORTH_SAYING: f64 = 3.0;
+    let points = &loaded.points;
+    if points.len() <= 4 * PROBE {
+        return;
+    }
+    let started = std::time::Instant::now();
+    let _ = P::compare(model, &points[..PROBE], None);
+    let per_point = started.elapsed().as_secs_f64() / PROBE as f64;
+    let total = per_point * points.len() as f64;
+    if total > WORTH_SAYING {
+        let _ = writeln!(
+            std::io::stderr(),
+            "microslip: comparing {} points at about {:.3} ms a point: about {} (Ctrl-C stops)",
+            points.len(),
+            per_point * 1e3,
+            super::sweep::duration_words(total)
+        );
+    }
 }

@@ -276,7 +276,7 @@ impl<'a, W: Write> Paced<'a, W> {
 }
 
 /// `seconds` as a person says it: "40 s", "12 min", "3.5 h", "2.1 days".
-fn duration_words(seconds: f64) -> String {
+pub(super) fn duration_words(seconds: f64) -> String {
     if seconds < 120.0 {
         format!("{seconds:.0} s")
     } else if seconds < 7200.0 {
