@@ -78,8 +78,9 @@ pub(crate) fn label_of(name: &str) -> &str {
 
 /// `plot` named for a figure someone reads without the terminal beside it: the current curve and
 /// each pin by their own values of the parameters the pins change (`K_T (mu = 0.3)`,
-/// `pin 1: mu = 0.2`), with units. The terminal's legend says `mu 0.2->0.3` (pinned, then now),
-/// which on paper reads as a change from 0.2 to 0.3 on one curve.
+/// `pin 1: mu = 0.2`), with units, and without the K_T companions when pins are compared. The
+/// terminal's legend says `mu 0.2->0.3` (pinned, then now), which on paper reads as a change from
+/// 0.2 to 0.3 on one curve.
 #[cfg(feature = "app")]
 pub(crate) fn named_by_values(mut plot: Plot, current: &Inputs, pinned: &[(u8, Inputs)]) -> Plot {
     let changed: Vec<Option<crate::problems::Param>> = current
@@ -101,6 +102,13 @@ pub(crate) fn named_by_values(mut plot: Plot, current: &Inputs, pinned: &[(u8, I
         .filter(|param| !changed.contains(param))
         .collect();
     let values = |inputs: &Inputs| super::family::parameter_text(inputs, &unchanged);
+    // A comparison exports what was compared: the current curve, the pins and the references
+    // (Coulomb, limits, points), not the K_T/5 and K_T*5 companions drawn around the current
+    // one, which would sit unlabelled between the compared curves (issue 47 item 6).
+    if !changed.is_empty() {
+        plot.series
+            .retain(|s| !matches!(s.role, SeriesRole::Softer | SeriesRole::Stiffer));
+    }
     for series in &mut plot.series {
         let own = match series.role {
             SeriesRole::Current if !changed.is_empty() => {

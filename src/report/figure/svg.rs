@@ -29,6 +29,33 @@ const PIN_PALETTE: [RGBColor; 4] = [
     RGBColor(102, 166, 30),
 ];
 
+/// How long a legend's line mark is (px).
+const SWATCH_LENGTH: i32 = 22;
+
+/// The drawn stretches, [from, to] in px, of a line `length` long dashed as `dashes` (an SVG
+/// `stroke-dasharray`: on, off, on, off, ...): the legend's mark of a dashed series.
+fn swatch_segments(dashes: &str, length: i32) -> Vec<(i32, i32)> {
+    let pattern: Vec<i32> = dashes
+        .split([' ', ','])
+        .filter_map(|d| d.trim().parse::<f64>().ok())
+        .map(|d| d.round().max(1.0) as i32)
+        .collect();
+    if pattern.is_empty() {
+        return vec![(0, length)];
+    }
+    let mut segments = Vec::new();
+    let (mut at, mut i) = (0, 0);
+    while at < length {
+        let step = pattern[i % pattern.len()];
+        if i % 2 == 0 {
+            segments.push((at, (at + step).min(length)));
+        }
+        at += step;
+        i += 1;
+    }
+    segments
+}
+
 /// The grey of the cursor and of limit lines.
 const GREY: RGBColor = RGBColor(150, 150, 150);
 
@@ -334,11 +361,22 @@ where
                         EmptyElement::at((x, y)) + dot(0) + dot(1) + dot(2) + dot(3) + dot(4)
                     });
                 }
-                (Marker::None, Some(_)) => {
+                // A dashed line as its own pattern (even dashes, dash-dot), so that the mark
+                // matches the curve it names.
+                (Marker::None, Some(dashes)) => {
+                    // Three stretches at most over the mark's length (a shorter pattern repeats
+                    // its last, drawn twice).
+                    let segments = swatch_segments(dashes, SWATCH_LENGTH);
+                    let stretch = move |k: usize| {
+                        let (a, b) = segments
+                            .get(k)
+                            .or(segments.last())
+                            .copied()
+                            .unwrap_or((0, SWATCH_LENGTH));
+                        PathElement::new([(a, 0), (b, 0)], style)
+                    };
                     entry.legend(move |(x, y)| {
-                        EmptyElement::at((x, y))
-                            + PathElement::new([(0, 0), (8, 0)], style)
-                            + PathElement::new([(12, 0), (20, 0)], style)
+                        EmptyElement::at((x, y)) + stretch(0) + stretch(1) + stretch(2)
                     });
                 }
                 (Marker::None, None) => {
@@ -350,6 +388,10 @@ where
             .configure_series_labels()
             .position(emptiest_corner(plot))
             .label_font(("sans-serif", 13))
+            // plotters sizes the box by its own estimate of the text, narrower than the built-in
+            // DejaVu Sans that draws it (issue 47: a long label ran past the box): a wider
+            // margin gives the text's end room.
+            .margin(18)
             .background_style(WHITE.mix(0.85))
             .border_style(RGBColor(180, 180, 180))
             .draw()?;
@@ -379,4 +421,22 @@ where
         + "</text>\n".len();
     out.replace_range(start..end, &series);
     Ok(())
+}
+
+#[cfg(test)]
+mod swatch_tests {
+    use super::swatch_segments;
+
+    /// A legend's mark is drawn in its curve's own pattern: even dashes as dashes, a dash-dot
+    /// (pin 1's `10 4 2 4`) as a dash and a dot, never the one for the other.
+    #[test]
+    fn a_legend_mark_follows_its_curve_s_dash_pattern() {
+        assert_eq!(swatch_segments("7 4", 22), [(0, 7), (11, 18)]);
+        assert_eq!(
+            swatch_segments("10 4 2 4", 22),
+            [(0, 10), (14, 16), (20, 22)]
+        );
+        assert_eq!(swatch_segments("", 22), [(0, 22)]);
+        assert_ne!(swatch_segments("7 4", 22), swatch_segments("10 4 2 4", 22));
+    }
 }

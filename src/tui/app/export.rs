@@ -61,7 +61,8 @@ impl App {
             Err(e) => return self.error(e.to_string()),
         };
         let mut csv = Vec::new();
-        let rows = crate::report::rows::chart_rows(&self.view.chart.plot);
+        // The data of the figure: its curves, named as it names them.
+        let rows = crate::report::rows::chart_rows(&plot);
         if let Err(e) = write_table(&mut csv, TableFormat::Csv, rows) {
             return self.error(format!("export failed: {e}"));
         }

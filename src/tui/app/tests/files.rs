@@ -167,8 +167,8 @@ fn saving_without_a_directory_is_refused_clearly() {
 }
 
 /// The exported figure is read without the terminal: a parameter caption, each curve named by
-/// its own values with units (not `mu 0.3->0.2`, which reads as a change), and pin 1 not in
-/// Coulomb's black dashes.
+/// its own values with units (not `mu 0.3->0.2`, which reads as a change), in the CSV too, the
+/// compared curves only, and pin 1 not in Coulomb's black dashes.
 #[test]
 fn x_exports_a_figure_with_a_caption_and_curves_named_by_their_own_values() {
     let dir = tempfile::tempdir().unwrap();
@@ -207,9 +207,16 @@ fn x_exports_a_figure_with_a_caption_and_curves_named_by_their_own_values() {
     };
     assert!(with("7 4").contains("stroke=\"#000000\""));
     assert!(with("10 4 2 4").contains("stroke=\"#7570B3\""));
-    // The CSV keeps its series names.
+    // What was compared, and only that (issue 47 item 6): no K_T/5, K_T*5 companions between
+    // the compared curves; the CSV names the curves as the figure does.
+    assert!(!svg.contains("K_T/5") && !svg.contains("K_T*5"), "{svg}");
     let csv = std::fs::read_to_string(dir.path().join("microslip-w-vs-f.csv")).unwrap();
-    assert!(csv.contains("\npin 1: mu 0.3->0.2 KT 600->1000,"), "{csv}");
+    assert!(
+        csv.contains("\n\"pin 1: mu = 0.3, KT = 600 MPa/mm\",")
+            && csv.contains("\n\"K_T (mu = 0.2, KT = 1000 MPa/mm)\","),
+        "{csv}"
+    );
+    assert!(!csv.contains("K_T/5") && !csv.contains("->"), "{csv}");
 }
 
 #[test]
