@@ -1,0 +1,198 @@
+//! `microslip suite`: the cases' decks written as `deck` writes them, run on the local pool,
+//! scored ([`crate::suite`] holds the engine; this file reads the flags, writes the decks through
+//! the same door as `deck` and `bench`, and maps the outcome to the exit-code table).
+
+use super::*;
+use crate::suite::pool::{self, Counts, Prepared, RunFailure};
+use crate::suite::{self as engine, Case, Ladder, result, score};
+
+/// `microslip suite`.
+pub(super) fn run_suite(out: &mut impl Write, args: &SuiteArgs) -> Result<(), CliError> {
+    let Executor::Local = args.executor;
+    let ladder = if args.quick {
+        Ladder::Quick
+    } else {
+        Ladder::Full
+    };
+    let cases = engine::cases::resolve(args.cases.as_deref(), ladder)
+        .map_err(|e| CliError::Invalid(e.to_string()))?;
+    // Every deck before anything runs: a refused case costs no solver time.
+    let workdir = match &args.workdir {
+        Some(dir) => dir.clone(),
+        None => fe::run::fresh_folder(&std::env::temp_dir(), "suite")?,
+    };
+    let mut plans = Vec::with_capacity(cases.len());
+    for (index, case) in cases.iter().enumerate() {
+        plans.push(prepared_runs(index, case, &workdir)?);
+    }
+    let program = fe::run::resolve_program(&args.ccx)?;
+    engine::claim_workdir(&workdir, args.resume).map_err(|e| CliError::Invalid(e.to_string()))?;
+    let all: Vec<&Prepared> = plans.iter().flatten().collect();
+    let done_before: Vec<Option<result::RunResult>> =
+        all.iter().map(|run| result::read(&run.folder)).collect();
+    let pending: Vec<Prepared> = all
+        .iter()
+        .zip(&done_before)
+        .filter(|(_, done)| done.is_none())
+        .map(|(run, _)| (*run).clone())
+        .collect();
+    let jobs = args
+        .jobs
+        .map_or_else(pool::default_jobs, usize::from)
+        .min(pending.len().max(1));
+    eprintln!(
+        "microslip suite: {} runs in {} cases, {} complete already, {} to run, {jobs} at a \
+         time, in {}",
+        all.len(),
+        cases.len(),
+        all.len() - pending.len(),
+        pending.len(),
+        workdir.display()
+    );
+    let stop = StopSignals::install()?;
+    let started = Instant::now();
+    let progress = |run: &Prepared, outcome: &Result<result::RunResult, RunFailure>, c: Counts| {
+        let what = match outcome {
+            Ok(r) => format!("done in {:.0} s ({})", r.solver_seconds, r.verdict),
+            Err(e) => format!("failed: {}", report::sanitize(&e.to_string())),
+        };
+        eprintln!(
+            "microslip suite: {}/{} {what}; {} done, {} running, {} queued, {:.0} s",
+            run.case,
+            run.spec.name,
+            c.done,
+            c.running,
+            c.queued,
+            started.elapsed().as_secs_f64()
+        );
+    };
+    let outcomes = pool::run_all(
+        &program,
+        &pending,
+        jobs,
+        all.len() - pending.len(),
+        &|| stop.received(),
+        &progress,
+    );
+    if let Some(signal) = stop.received() {
+        return Err(fe::run::RunError::Stopped {
+            signal,
+            folder: workdir.display().to_string(),
+        }
+        .into());
+    }
+    // Each run's outcome, in plan order: complete before, or run now.
+    let mut fresh = pending.iter().zip(outcomes);
+    let mut first_failure = None;
+    let mut by_run = Vec::with_capacity(all.len());
+    for (run, before) in all.iter().zip(done_before) {
+        let outcome = match before {
+            Some(done) => Ok(done),
+            None => match fresh.next() {
+                Some((_, Some(Ok(done)))) => Ok(done),
+                Some((_, Some(Err(e)))) => {
+                    let words = e.to_string();
+                    if let (None, RunFailure::Solver(e)) = (&first_failure, e) {
+                        first_failure = Some(e);
+                    }
+                    Err(words)
+                }
+                _ => Err("not run".to_string()),
+            },
+        };
+        by_run.push((run.spec.case, outcome));
+    }
+    let scores: Vec<score::CaseScore> = cases
+        .iter()
+        .enumerate()
+        .map(|(index, case)| {
+            let specs: Vec<engine::RunSpec> = plans[index].iter().map(|p| p.spec.clone()).collect();
+            let outcomes: Vec<Result<result::RunResult, String>> = by_run
+                .iter()
+                .filter(|(c, _)| *c == index)
+                .map(|(_, o)| o.clone())
+                .collect();
+            score::case_score(case, &specs, &outcomes)
+        })
+        .collect();
+    match args.format {
+        SuiteFormat::Text => out.write_all(score::text(&scores).as_bytes())?,
+        SuiteFormat::Json => write_json(out, &report::point::to_json(&scores))?,
+    }
+    out.flush()?;
+    if let Some(path) = &args.junit {
+        let xml = score::junit(&scores, started.elapsed().as_secs_f64());
+        crate::file::write_atomic(path, xml.as_bytes(), true).map_err(|e| CliError::Data {
+            path: path.display().to_string(),
+            reason: e.to_string(),
+        })?;
+    }
+    eprintln!(
+        "microslip suite: the runs' folders and result files are in {}",
+        workdir.display()
+    );
+    if let Some(failure) = first_failure {
+        return Err(failure.into());
+    }
+    let failing = scores
+        .iter()
+        .filter(|s| s.verdict != crate::fe::ladder::Verdict::Agrees)
+        .count();
+    if failing > 0 {
+        return Err(CliError::Disagrees(format!(
+            "{failing} of {} cases do not agree, are not converged or not judged",
+            scores.len()
+        )));
+    }
+    Ok(())
+}
+
+/// The runs of `case` (index `index`) with their decks, written as `deck ccx` writes them.
+fn prepared_runs(
+    index: usize,
+    case: &Case,
+    workdir: &std::path::Path,
+) -> Result<Vec<Prepared>, CliError> {
+    let inputs = InputArgs {
+        preset: Some(case.preset.clone()),
+        assignments: case.assignments.clone(),
+        choices: Vec::new(),
+    };
+    let command = format!("suite (case {})", case.name);
+    let (_, model) = load(&inputs, case.kind, &command)?;
+    let increment = for_problem(case.kind, DefaultIncrement { model: &model });
+    engine::plan(index, case, increment)
+        .into_iter()
+        .map(|spec| {
+            let deck = DeckArgs {
+                inputs: inputs.clone(),
+                mesh: spec.mesh,
+                loads: None,
+                near_coulomb: false,
+                increment: spec.increment,
+            };
+            let text = build_deck(case.kind, &deck, &command)?;
+            Ok(Prepared {
+                folder: engine::run_folder(workdir, &case.name, &spec.name),
+                spec,
+                case: case.name.clone(),
+                kind: case.kind,
+                deck: text,
+            })
+        })
+        .collect()
+}
+
+/// The problem's [`Deck::default_increment`](crate::fe::face::Deck::default_increment) at a
+/// model, for [`for_problem`].
+struct DefaultIncrement<'a> {
+    model: &'a Model,
+}
+
+impl ForProblem for DefaultIncrement<'_> {
+    type Output = Option<f64>;
+
+    fn run<P: Faces>(self) -> Option<f64> {
+        P::default_increment(&P::from_model(self.model)?)
+    }
+}
