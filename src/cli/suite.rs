@@ -196,3 +196,53 @@ impl ForProblem for DefaultIncrement<'_> {
         P::default_increment(&P::from_model(self.model)?)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each bundled case's ladder: the deck's own increment is what `default_increment` says
+    /// (the deck written with it is the deck written without it, byte for byte), its half is a
+    /// deck of its own, and each mesh rung is a finer deck than the one before.
+    #[test]
+    fn every_problem_s_ladder_is_written_as_its_rungs_say() {
+        let dir = tempfile::tempdir().unwrap();
+        for case in engine::cases::resolve(None, Ladder::Full).unwrap() {
+            let runs = prepared_runs(0, &case, dir.path()).unwrap();
+            let sizes: Vec<usize> = runs
+                .iter()
+                .filter(|r| !r.spec.half_increment)
+                .map(|r| r.deck.len())
+                .collect();
+            assert_eq!(sizes.len(), 3, "{}", case.name);
+            assert!(
+                sizes.windows(2).all(|w| w[0] < w[1]),
+                "{}: {sizes:?}",
+                case.name
+            );
+            let inputs = InputArgs {
+                preset: Some(case.preset.clone()),
+                ..InputArgs::default()
+            };
+            let (_, model) = load(&inputs, case.kind, "test").unwrap();
+            let Some(step) = for_problem(case.kind, DefaultIncrement { model: &model }) else {
+                assert!(runs.iter().all(|r| !r.spec.half_increment), "{}", case.name);
+                continue;
+            };
+            let deck = |increment| {
+                let args = DeckArgs {
+                    inputs: inputs.clone(),
+                    mesh: DeckMesh::Finest,
+                    loads: None,
+                    near_coulomb: false,
+                    increment,
+                };
+                build_deck(case.kind, &args, "test").unwrap()
+            };
+            assert_eq!(deck(Some(step)), deck(None), "{}", case.name);
+            let half = runs.iter().find(|r| r.spec.half_increment).unwrap();
+            assert_eq!(half.deck, deck(Some(0.5 * step)));
+            assert_ne!(half.deck, deck(None), "{}", case.name);
+        }
+    }
+}
