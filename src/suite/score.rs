@@ -325,7 +325,7 @@ pub fn junit(cases: &[CaseScore], seconds: f64) -> String {
     out
 }
 
-/// `text` escaped for XML text and attributes, control characters (which XML 1.0 cannot hold)
+/// `text` escaped for XML text and double-quoted attributes, control characters (which XML 1.0 cannot hold)
 /// as `?`.
 fn xml(text: &str) -> String {
     text.chars()
@@ -334,7 +334,6 @@ fn xml(text: &str) -> String {
             '<' => "&lt;".to_string(),
             '>' => "&gt;".to_string(),
             '"' => "&quot;".to_string(),
-            '\'' => "&apos;".to_string(),
             '\n' | '\t' => c.to_string(),
             c if c.is_control() => "?".to_string(),
             c => c.to_string(),
