@@ -294,3 +294,80 @@ fn bench_exits_1_when_its_verdict_is_not_agrees() {
         assert!(stdout.contains(verdict), "{variant}: {stdout}");
     }
 }
+
+/// The Slurm executor on a real single-node Slurm (`.ci/run` starts one with `.ci/slurm-start`
+/// and sets `MICROSLIP_SLURM_TEST=1`; elsewhere this test says so and returns): the bench
+/// plate's ladder as one job array of at most 2 tasks at once, each task running its run to its
+/// result file; then a solver that fails on the finest rung: exit 3, and the scorecard names the
+/// run and the task's output.
+#[test]
+fn a_suite_runs_as_a_slurm_job_array() {
+    if std::env::var_os("MICROSLIP_SLURM_TEST").is_none() {
+        eprintln!("not run: MICROSLIP_SLURM_TEST is not set (.ci/run sets it with a Slurm up)");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let program = solver(dir.path(), "plain", "");
+    let workdir = dir.path().join("work");
+    let out = microslip()
+        .args([
+            "suite",
+            "--executor",
+            "slurm",
+            "--jobs",
+            "2",
+            "--format",
+            "json",
+        ])
+        .args(["--cases", "plate-bench", "--workdir"])
+        .arg(&workdir)
+        .arg("--ccx")
+        .arg(&program)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("Slurm job array"), "{stderr}");
+    let scorecard: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(scorecard[0]["verdict"], "agrees");
+    assert_eq!(
+        scorecard[0]["quantities"][0]["rungs_fraction"]
+            .as_array()
+            .unwrap()
+            .len(),
+        3
+    );
+    let all = count_lines(dir.path());
+    for rung in ["coarse", "fine", "finest"] {
+        assert_eq!(times(&all, &format!("done {rung}")), 1, "{all:?}");
+    }
+
+    let failing = script(
+        dir.path(),
+        "failing-ccx",
+        "grep -q 'mesh=finest' \"$2.inp\" && exit 1\nexec \"$0.real\" \"$@\"",
+    );
+    std::fs::copy(&program, dir.path().join("failing-ccx.real")).unwrap();
+    let out = microslip()
+        .args([
+            "suite",
+            "--executor",
+            "slurm",
+            "--cases",
+            "plate-bench",
+            "--workdir",
+        ])
+        .arg(dir.path().join("work2"))
+        .arg("--ccx")
+        .arg(&failing)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{stdout}");
+    assert!(
+        stdout.contains("plate-bench (plate, preset plate-bench): not converged"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("run finest: Slurm array task"), "{stdout}");
+    assert!(stdout.contains("slurm/task-2.out"), "{stdout}");
+}

@@ -8,7 +8,9 @@ use crate::suite::{self as engine, Case, Ladder, result, score};
 
 /// `microslip suite`.
 pub(super) fn run_suite(out: &mut impl Write, args: &SuiteArgs) -> Result<(), CliError> {
-    let Executor::Local = args.executor;
+    if let Some(folder) = &args.run_one {
+        return run_one(folder, &args.ccx);
+    }
     let ladder = if args.quick {
         Ladder::Quick
     } else {
@@ -66,14 +68,17 @@ pub(super) fn run_suite(out: &mut impl Write, args: &SuiteArgs) -> Result<(), Cl
             started.elapsed().as_secs_f64()
         );
     };
-    let outcomes = pool::run_all(
-        &program,
-        &pending,
-        jobs,
-        all.len() - pending.len(),
-        &|| stop.received(),
-        &progress,
-    );
+    let outcomes = match args.executor {
+        Executor::Local => pool::run_all(
+            &program,
+            &pending,
+            jobs,
+            all.len() - pending.len(),
+            &|| stop.received(),
+            &progress,
+        ),
+        Executor::Slurm => on_slurm(&pending, jobs, &workdir, &program, &stop)?,
+    };
     if let Some(signal) = stop.received() {
         return Err(fe::run::RunError::Stopped {
             signal,
@@ -145,6 +150,64 @@ pub(super) fn run_suite(out: &mut impl Write, args: &SuiteArgs) -> Result<(), Cl
         )));
     }
     Ok(())
+}
+
+/// `pending` as one Slurm job array of at most `jobs` tasks at once, followed to its end; each
+/// run's outcome is its result file, or the task's failure with where its output is.
+fn on_slurm(
+    pending: &[Prepared],
+    jobs: usize,
+    workdir: &std::path::Path,
+    program: &std::path::Path,
+    stop: &StopSignals,
+) -> Result<Vec<Option<pool::Outcome>>, CliError> {
+    if pending.is_empty() {
+        return Ok(Vec::new());
+    }
+    let slurm_error = |e: engine::slurm::SlurmError| CliError::Invalid(format!("slurm: {e}"));
+    let microslip = std::env::current_exe()?;
+    let job =
+        engine::slurm::submit(pending, jobs, workdir, &microslip, program).map_err(slurm_error)?;
+    eprintln!(
+        "microslip suite: Slurm job array {job}: {} tasks, at most {jobs} at once",
+        pending.len()
+    );
+    let started = Instant::now();
+    engine::slurm::wait(&job, &|| stop.received(), &mut |left| {
+        let done = pending
+            .iter()
+            .filter(|r| result::read(&r.folder).is_some())
+            .count();
+        eprintln!(
+            "microslip suite: Slurm job {job}: {done} done, {left} queued or running, {:.0} s",
+            started.elapsed().as_secs_f64()
+        );
+    })
+    .map_err(slurm_error)?;
+    let outputs = engine::slurm::folder(workdir);
+    Ok(pending
+        .iter()
+        .enumerate()
+        .map(|(task, run)| {
+            Some(result::read(&run.folder).ok_or_else(|| {
+                RunFailure::Judge(format!(
+                    "Slurm array task {job}_{task} left no result; its output is {}",
+                    outputs.join(format!("task-{task}.out")).display()
+                ))
+            }))
+        })
+        .collect())
+}
+
+/// `suite --run-one FOLDER`: the prepared run in the folder to its result file.
+fn run_one(folder: &std::path::Path, ccx: &str) -> Result<(), CliError> {
+    let program = fe::run::resolve_program(ccx)?;
+    let stop = StopSignals::install()?;
+    match pool::run_prepared(&program, folder, &|| stop.received()) {
+        Ok(_) => Ok(()),
+        Err(RunFailure::Solver(e)) => Err(e.into()),
+        Err(RunFailure::Judge(why)) => Err(CliError::Invalid(why)),
+    }
 }
 
 /// The runs of `case` (index `index`) with their decks, written as `deck ccx` writes them.

@@ -7,7 +7,7 @@
 //! quantities in a result file ([`result`]) written atomically (a temporary file renamed) only
 //! once the run is complete. The runs go through an executor, the local pool by default
 //! ([`pool`]: at most `jobs` solver processes at once, each in its own process group, ended with
-//! us). The **scorecard** ([`score`]) extrapolates each case's quantities over its ladder
+//! us) or a Slurm job array ([`slurm`]). The **scorecard** ([`score`]) extrapolates each case's quantities over its ladder
 //! ([`crate::fe::ladder`]) and judges them against the problem's envelope plus the
 //! extrapolation's uncertainty.
 //!
@@ -25,6 +25,7 @@ pub mod cases;
 pub mod pool;
 pub mod result;
 pub mod score;
+pub mod slurm;
 
 use std::path::{Path, PathBuf};
 

@@ -124,35 +124,113 @@ pub fn run_all(
 /// One run from scratch: its folder emptied (a run without a result file left nothing to
 /// keep), the deck written, the solver run, the output judged, the result file written.
 fn execute(program: &Path, run: &Prepared, stop: &(dyn Fn() -> Option<i32> + Sync)) -> Outcome {
-    let folder_error =
-        |e: std::io::Error| RunFailure::Judge(format!("{}: {e}", run.folder.display()));
-    if run.folder.exists() {
-        std::fs::remove_dir_all(&run.folder).map_err(folder_error)?;
+    let files = prepare(run)?;
+    solve_and_judge(program, &files, &Task::of(run), stop)
+}
+
+/// What a run's folder holds besides its deck, for a solver started elsewhere (a Slurm array
+/// task: `microslip suite --run-one FOLDER`): its problem and how it stands in its ladder.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Task {
+    /// The problem's key.
+    pub model: String,
+    /// The run's name.
+    pub run: String,
+    /// Its mesh's name.
+    pub mesh: String,
+    /// The increment given to its deck.
+    pub increment: Option<f64>,
+}
+
+/// The file of a run's [`Task`] in its folder.
+pub const TASK_FILE: &str = "task.json";
+
+impl Task {
+    /// The task of `run`.
+    pub fn of(run: &Prepared) -> Task {
+        Task {
+            model: run.kind.name().to_string(),
+            run: run.spec.name.clone(),
+            mesh: run.spec.mesh.name().to_string(),
+            increment: run.spec.increment,
+        }
     }
-    std::fs::create_dir_all(&run.folder).map_err(folder_error)?;
+}
+
+fn folder_error(folder: &Path) -> impl Fn(std::io::Error) -> RunFailure + '_ {
+    move |e| RunFailure::Judge(format!("{}: {e}", folder.display()))
+}
+
+/// `run`'s folder emptied and made again, with its deck and its task file.
+///
+/// # Errors
+/// The file system's.
+pub fn prepare(run: &Prepared) -> Result<RunFiles, RunFailure> {
+    let fail = folder_error(&run.folder);
+    if run.folder.exists() {
+        std::fs::remove_dir_all(&run.folder).map_err(&fail)?;
+    }
+    std::fs::create_dir_all(&run.folder).map_err(&fail)?;
     let files = RunFiles::new(&run.folder, JOB);
-    crate::file::write_new_files(&[(files.deck.as_path(), run.deck.as_bytes())])
-        .map_err(folder_error)?;
+    let task =
+        serde_json::to_string(&Task::of(run)).map_err(|e| RunFailure::Judge(e.to_string()))?;
+    let task_path = run.folder.join(TASK_FILE);
+    crate::file::write_new_files(&[
+        (files.deck.as_path(), run.deck.as_bytes()),
+        (task_path.as_path(), task.as_bytes()),
+    ])
+    .map_err(&fail)?;
+    Ok(files)
+}
+
+/// The prepared run in `folder` ([`prepare`]) run to its result file: what a Slurm array task
+/// does.
+///
+/// # Errors
+/// Its task file unreadable, the solver's failure, or results that cannot be judged.
+pub fn run_prepared(
+    program: &Path,
+    folder: &Path,
+    stop: &(dyn Fn() -> Option<i32> + Sync),
+) -> Outcome {
+    let text = std::fs::read_to_string(folder.join(TASK_FILE)).map_err(folder_error(folder))?;
+    let task: Task = serde_json::from_str(&text)
+        .map_err(|e| RunFailure::Judge(format!("{}: {e}", folder.join(TASK_FILE).display())))?;
+    solve_and_judge(program, &RunFiles::new(folder, JOB), &task, stop)
+}
+
+/// The solver on the deck of `files`, its output judged as the task's problem judges it, the
+/// result file written.
+fn solve_and_judge(
+    program: &Path,
+    files: &RunFiles,
+    task: &Task,
+    stop: &(dyn Fn() -> Option<i32> + Sync),
+) -> Outcome {
+    let kind: ModelKind = task
+        .model
+        .parse()
+        .map_err(|e: crate::problems::UnknownModel| RunFailure::Judge(e.to_string()))?;
     let started = Instant::now();
     run_ccx(
         program,
-        &files,
+        files,
         Duration::from_millis(100),
         &mut |_| {},
         &|| stop(),
     )?;
     let solver_seconds = started.elapsed().as_secs_f64();
-    let judged = result::judge(run.kind, &files.results).map_err(RunFailure::Judge)?;
+    let judged = result::judge(kind, &files.results).map_err(RunFailure::Judge)?;
     let done = RunResult {
-        run: run.spec.name.clone(),
-        mesh: run.spec.mesh.name().to_string(),
-        increment: run.spec.increment,
+        run: task.run.clone(),
+        mesh: task.mesh.clone(),
+        increment: task.increment,
         quantities: judged.quantities,
         stick_slope: judged.stick_slope,
         agrees: judged.agrees,
         verdict: judged.verdict,
         solver_seconds,
     };
-    result::write(&run.folder, &done).map_err(folder_error)?;
+    result::write(&files.folder, &done).map_err(folder_error(&files.folder))?;
     Ok(done)
 }

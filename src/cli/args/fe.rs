@@ -80,7 +80,8 @@ pub struct SuiteArgs {
     /// Where the runs go.
     #[arg(long, value_enum, default_value_t = Executor::Local)]
     pub(in crate::cli) executor: Executor,
-    /// Solver processes at once (default: the cores less one, at least 1).
+    /// Solver processes at once (default: the cores less one, at least 1); with Slurm, the
+    /// array's throttle.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u16).range(1..=256))]
     pub(in crate::cli) jobs: Option<u16>,
     /// The work folder: `<DIR>/<case>/<run>/` per run. A new suite needs an empty or new
@@ -102,6 +103,9 @@ pub struct SuiteArgs {
     /// current folder.
     #[arg(long, value_name = "PROGRAM", default_value = "ccx")]
     pub(in crate::cli) ccx: String,
+    /// Run the one prepared run in DIR to its result file (what a Slurm array task runs).
+    #[arg(long, value_name = "DIR", hide = true)]
+    pub(in crate::cli) run_one: Option<PathBuf>,
 }
 
 /// Where `suite` runs its solver processes.
@@ -109,6 +113,10 @@ pub struct SuiteArgs {
 pub enum Executor {
     /// A bounded pool of solver processes on this machine.
     Local,
+    /// One Slurm job array (sbatch --array with --jobs tasks at once), followed with squeue;
+    /// each task runs `microslip suite --run-one` on a run's folder, so --workdir must be on a
+    /// file system the nodes share.
+    Slurm,
 }
 
 /// The scorecard's formats.
