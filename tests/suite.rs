@@ -181,6 +181,25 @@ fn a_killed_suite_resumes_and_runs_each_run_once() {
     );
     assert_eq!(again.status.code(), Some(0));
     assert_eq!(count_lines(dir.path()), all);
+
+    // A run whose deck is not the one the suite writes (its case changed since) is run again.
+    let coarse_deck = workdir.join("plate-bench/coarse/job.inp");
+    let mut deck = std::fs::read_to_string(&coarse_deck).unwrap();
+    deck.push_str("** edited\n");
+    std::fs::write(&coarse_deck, deck).unwrap();
+    let changed = suite(
+        &[
+            "--cases",
+            "plate-bench",
+            "--resume",
+            "--workdir",
+            workdir.to_str().unwrap(),
+        ],
+        &program,
+    );
+    assert_eq!(changed.status.code(), Some(0));
+    let last = count_lines(dir.path());
+    assert_eq!(&last[all.len()..], ["start coarse", "done coarse"]);
 }
 
 /// The quick ladder (coarse, fine) of one case `name` of the bench plate, run with the stand-in

@@ -30,8 +30,15 @@ pub(super) fn run_suite(out: &mut impl Write, args: &SuiteArgs) -> Result<(), Cl
     let program = fe::run::resolve_program(&args.ccx)?;
     engine::claim_workdir(&workdir, args.resume).map_err(|e| CliError::Invalid(e.to_string()))?;
     let all: Vec<&Prepared> = plans.iter().flatten().collect();
-    let done_before: Vec<Option<result::RunResult>> =
-        all.iter().map(|run| result::read(&run.folder)).collect();
+    // A run is complete when its result file reads back and its deck is the one this suite
+    // writes (a case changed since, by its preset or its file, is run again).
+    let done_before: Vec<Option<result::RunResult>> = all
+        .iter()
+        .map(|run| {
+            let deck = std::fs::read(run.folder.join(format!("{}.inp", engine::JOB)));
+            result::read(&run.folder).filter(|_| deck.is_ok_and(|d| d == run.deck.as_bytes()))
+        })
+        .collect();
     let pending: Vec<Prepared> = all
         .iter()
         .zip(&done_before)
