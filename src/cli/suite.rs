@@ -60,19 +60,20 @@ pub(super) fn run_suite(out: &mut impl Write, args: &SuiteArgs) -> Result<(), Cl
     );
     let stop = StopSignals::install()?;
     let started = Instant::now();
+    let ended = std::sync::atomic::AtomicUsize::new(0);
     let progress = |run: &Prepared, outcome: &Result<result::RunResult, RunFailure>, c: Counts| {
         let what = match outcome {
             Ok(r) => format!("done in {:.0} s ({})", r.solver_seconds, r.verdict),
             Err(e) => format!("failed: {}", report::sanitize(&e.to_string())),
         };
+        let elapsed = started.elapsed().as_secs_f64();
+        let ended = ended.fetch_add(1, std::sync::atomic::Ordering::SeqCst) + 1;
+        // At the pace so far: the finer rungs, run last, cost more, so this is a lower bound.
+        let left = elapsed / ended as f64 * (c.running + c.queued) as f64;
         eprintln!(
-            "microslip suite: {}/{} {what}; {} done, {} running, {} queued, {:.0} s",
-            run.case,
-            run.spec.name,
-            c.done,
-            c.running,
-            c.queued,
-            started.elapsed().as_secs_f64()
+            "microslip suite: {}/{} {what}; {} done, {} running, {} queued, {elapsed:.0} s, at \
+             least {left:.0} s left",
+            run.case, run.spec.name, c.done, c.running, c.queued,
         );
     };
     let outcomes = match args.executor {
