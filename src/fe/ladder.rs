@@ -29,6 +29,28 @@ pub struct LadderQuantity {
     pub difference: f64,
     /// The bound the problem's envelope states on it, a fraction; `None`: not calibrated.
     pub bound: Option<f64>,
+    /// The quantity itself where the problem states it: the closed form's value and the scale
+    /// the difference is a fraction of, in `unit` (the FE value is value + difference x scale).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub value: Option<ValueScale>,
+}
+
+/// How a [`LadderQuantity`]'s difference maps back to the quantity.
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
+pub struct ValueScale {
+    /// The closed form's value.
+    pub closed_form: f64,
+    /// The length or value the difference is a fraction of.
+    pub scale: f64,
+    /// Their unit.
+    pub unit: String,
+}
+
+impl ValueScale {
+    /// The quantity at difference `d`.
+    pub fn at(&self, d: f64) -> f64 {
+        self.closed_form + d * self.scale
+    }
 }
 
 /// The band of observed orders taken as asymptotic: outside it the three rungs are not yet on

@@ -24,12 +24,29 @@ pub struct QuantityScore {
     /// The extrapolated (converged) difference, its uncertainty, the observed order.
     #[serde(flatten)]
     pub extrapolation: Extrapolation,
+    /// The quantity itself, where the problem states it: the converged value, its uncertainty,
+    /// the closed form's, in `value_unit`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub value: Option<ConvergedValue>,
     /// The envelope's bound (the reference's measured accuracy), a fraction.
     pub bound_fraction: Option<f64>,
     /// The tolerance the estimate was judged with: bound + uncertainty.
     pub tolerance_fraction: Option<f64>,
     /// Its verdict.
     pub verdict: Verdict,
+}
+
+/// A converged difference as the quantity itself.
+#[derive(Debug, Clone, Serialize)]
+pub struct ConvergedValue {
+    /// The converged value.
+    pub estimate: f64,
+    /// Its uncertainty.
+    pub uncertainty: Option<f64>,
+    /// The closed form's value.
+    pub closed_form: f64,
+    /// Their unit.
+    pub unit: String,
 }
 
 /// One case's score.
@@ -134,7 +151,14 @@ pub fn case_score(
             continue;
         };
         let verdict = ladder::judge(&extrapolation, q.bound);
+        let value = q.value.as_ref().map(|v| ConvergedValue {
+            estimate: v.at(extrapolation.estimate),
+            uncertainty: extrapolation.uncertainty.map(|u| u * v.scale.abs()),
+            closed_form: v.closed_form,
+            unit: v.unit.clone(),
+        });
         score.quantities.push(QuantityScore {
+            value,
             name: q.name.clone(),
             rungs_fraction: rungs,
             half_increment_fraction: half_value,
@@ -202,6 +226,17 @@ pub fn quantity_line(q: &QuantityScore) -> String {
     }
     if let Some(p) = e.order {
         let _ = write!(line, ", observed order {p:.2}");
+    }
+    if let Some(v) = &q.value {
+        let _ = write!(
+            line,
+            " = {}{} {} (closed form {})",
+            crate::report::number(v.estimate),
+            v.uncertainty
+                .map_or_else(String::new, |u| format!(" +- {}", crate::report::number(u))),
+            v.unit,
+            crate::report::number(v.closed_form)
+        );
     }
     let _ = write!(line, " ({})", e.convergence.words());
     match (q.bound_fraction, q.tolerance_fraction) {
@@ -357,6 +392,7 @@ mod tests {
                 name: "u at F = 1 N".to_string(),
                 difference,
                 bound: Some(0.015),
+                value: None,
             }],
             stick_slope: Some(RunStickSlope {
                 verdict: if (slope - 1.0).abs() < 0.01 {
@@ -373,6 +409,16 @@ mod tests {
             verdict: "agrees".to_string(),
             solver_seconds: 1.0,
         })
+    }
+
+    fn quick_case() -> Case {
+        Case {
+            name: "c".to_string(),
+            kind: ModelKind::ALL[0],
+            preset: "p".to_string(),
+            assignments: Vec::new(),
+            meshes: vec![DeckMesh::Coarse, DeckMesh::Fine],
+        }
     }
 
     fn ladder(values: [f64; 3], slope: f64) -> CaseScore {
@@ -411,6 +457,34 @@ mod tests {
     }
 
     #[test]
+    fn a_quantity_with_its_value_is_given_back_in_its_unit() {
+        let q = LadderQuantity {
+            name: "s(a)".to_string(),
+            difference: 0.02,
+            bound: Some(0.04),
+            value: Some(crate::fe::ladder::ValueScale {
+                closed_form: 2.0,
+                scale: 2.0,
+                unit: "mm".to_string(),
+            }),
+        };
+        let mut runs = vec![result("coarse", 0.03, 1.0), result("fine", 0.02, 1.0)];
+        for (r, d) in runs.iter_mut().zip([0.03, 0.02]) {
+            let r = r.as_mut().unwrap();
+            r.quantities = vec![LadderQuantity {
+                difference: d,
+                ..q.clone()
+            }];
+        }
+        let case = quick_case();
+        let score = case_score(&case, &super::super::plan(0, &case, None), &runs);
+        let v = score.quantities[0].value.as_ref().unwrap();
+        // 2 mm (1 + 2 %) = 2.04 mm, +- 1 % of 2 mm.
+        assert!((v.estimate - 2.04).abs() < 1e-12 && (v.uncertainty.unwrap() - 0.02).abs() < 1e-12);
+        assert!(quantity_line(&score.quantities[0]).contains("= 2.04 +- 0.02 mm (closed form 2)"));
+    }
+
+    #[test]
     fn a_stick_slope_off_the_deck_s_does_not_agree_with_its_numbers() {
         let off = ladder([0.045, 0.015, 0.0075], 1.1);
         assert_eq!(off.verdict, Verdict::DoesNotAgree);
@@ -425,13 +499,7 @@ mod tests {
 
     #[test]
     fn a_run_without_a_result_leaves_the_case_not_converged() {
-        let case = Case {
-            name: "c".to_string(),
-            kind: ModelKind::ALL[0],
-            preset: "p".to_string(),
-            assignments: Vec::new(),
-            meshes: vec![DeckMesh::Coarse, DeckMesh::Fine],
-        };
+        let case = quick_case();
         let specs = super::super::plan(0, &case, None);
         let outcomes = vec![result("coarse", 0.01, 1.0), Err("ccx failed".to_string())];
         let score = case_score(&case, &specs, &outcomes);

@@ -10,7 +10,7 @@ use serde::Serialize;
 use crate::fe::deck::{DeckMesh, DeckTooLarge};
 use crate::fe::face::{Deck, DeckError, DeckRequest};
 use crate::fe::header::{DeckHeader, StickSlope};
-use crate::fe::ladder::LadderQuantity;
+use crate::fe::ladder::{LadderQuantity, ValueScale};
 use crate::fe::results::{CcxRun, ResultsError};
 use crate::fe::verdict::InterfaceMesh;
 use crate::kernel::format::number;
@@ -710,7 +710,8 @@ impl CompareFace for CylinderProblem {
         &mut report.verdict
     }
 
-    /// s(a) against the half-plane's (a fraction of it) and c (a fraction of a), per load step.
+    /// s(a) against the half-plane's (its difference a fraction of it) and c (its difference a
+    /// fraction of a, as the envelope bounds it), per load step.
     fn ladder_quantities(report: &CylinderCompareReport) -> Vec<LadderQuantity> {
         let judged = report.envelope_judged;
         let mut quantities = Vec::new();
@@ -721,13 +722,23 @@ impl CompareFace for CylinderProblem {
                     name: format!("s(a) at {at}"),
                     difference,
                     bound: judged.then_some(report.sa_within_fraction),
+                    value: Some(ValueScale {
+                        closed_form: row.sa_mm,
+                        scale: row.sa_mm,
+                        unit: "mm".to_string(),
+                    }),
                 });
             }
             if let Some(difference) = row.c_diff_over_a {
                 quantities.push(LadderQuantity {
-                    name: format!("c/a at {at}"),
+                    name: format!("c at {at}"),
                     difference,
                     bound: judged.then_some(report.c_within_fraction_of_a),
+                    value: Some(ValueScale {
+                        closed_form: row.c_mm,
+                        scale: row.a_mm,
+                        unit: "mm".to_string(),
+                    }),
                 });
             }
         }

@@ -68,6 +68,7 @@ impl<Z> RowVerdict<Z> {
                 name: format!("{what} at {label}"),
                 difference,
                 bound: envelope.bound(),
+                value: None,
             }),
         }
     }
