@@ -14,7 +14,7 @@
 //! code of both crates and fails on an edge that runs up or sideways:
 //!
 //! ```text
-//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- measured <- fe <- chart <- report <- faces <- tui <- cli
+//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- measured <- fe <- chart <- report <- faces <- suite, tui <- cli
 //! ```
 //!
 //! - [`kernel`], [`numeric`], [`study`], [`fit`], [`verify`]: the core crate (its own docs say
@@ -38,6 +38,8 @@
 //!   the series is built; families of one chart over a parameter ([`chart::family`]).
 //! - [`report`]: every format (text, JSON, CSV, SVG), from one serde struct per report and per
 //!   table row; it computes nothing.
+//! - [`suite`]: `microslip suite`, many FE runs as cases x ladders, their result files, the local
+//!   pool that runs them and the scorecard of converged verdicts, over the problems' faces.
 //! - `cli` and `tui` (behind the default feature `app`): thin layers that parse flags or keys, call
 //!   the library and hand the results to `report` or the screen. They are private: the binary
 //!   calls `app::main`, and the TUI's frame and monkey tests drive it through `app::testing`
@@ -97,6 +99,7 @@ pub mod measured;
 pub mod preset;
 pub mod problems;
 pub mod report;
+pub mod suite;
 #[cfg(feature = "app")]
 mod tui;
 

@@ -8,28 +8,14 @@ use std::path::{Path, PathBuf};
 use std::process::{Child, Command, ExitStatus, Output, Stdio};
 use std::time::{Duration, Instant};
 
-/// `microslip`, with a configuration folder of its own, as `binary::microslip` sets it up.
-fn microslip() -> Command {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_microslip"));
-    cmd.env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"))
-        .env_remove("HOME");
-    cmd
-}
+mod common;
+use common::{microslip, script};
 
 /// A fixture's path.
 fn fixture(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/data/calculix")
         .join(name)
-}
-
-/// Writes an executable shell script `name` in `dir` with `body` after `#!/bin/sh`.
-fn script(dir: &Path, name: &str, body: &str) -> PathBuf {
-    use std::os::unix::fs::PermissionsExt;
-    let path = dir.join(name);
-    std::fs::write(&path, format!("#!/bin/sh\n{body}\n")).unwrap();
-    std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o755)).unwrap();
-    path
 }
 
 /// A solver that gives the paper's plate results (`bench ccx plate --preset paper-plate` writes exactly the deck

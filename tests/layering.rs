@@ -4,7 +4,7 @@
 //! layers, lowest first (the crate docs in src/lib.rs say why each sits where it does):
 //!
 //! ```text
-//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- measured <- fe <- chart <- report <- faces <- tui <- cli
+//! kernel, file <- numeric <- problems <- study, fit, verify, preset <- measured <- fe <- chart <- report <- faces <- suite, tui <- cli
 //! ```
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -30,6 +30,9 @@ const LAYERS: &[(&str, u8)] = &[
     // deck, written against the traits of `chart`, `report` and `fe`, reached by the TUI and the
     // command line only through them (src/problems/mod.rs says why a problem has two folders).
     ("faces", 8),
+    // `microslip suite`'s engine: cases, ladders, the executors and the scorecard, over the
+    // problems' faces (`report::face::for_problem`); the command line drives it.
+    ("suite", 9),
     ("tui", 9),
     ("cli", 10),
 ];

@@ -133,7 +133,7 @@ class Problem:
         self,
         code: Literal["ccx"] = "ccx",
         *,
-        mesh: Literal["coarse", "fine"] = "coarse",
+        mesh: Literal["coarse", "fine", "finest"] = "coarse",
         loads: Optional[Sequence[float]] = None,
     ) -> str:
         """The CalculiX deck's text (load steps ``loads`` in N)."""

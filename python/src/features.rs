@@ -190,15 +190,11 @@ pub fn deck(
             "invalid code = {code:?}: the decks are CalculiX's (\"ccx\"; Abaqus reads the same keywords)"
         )));
     }
-    let mesh = match mesh {
-        "coarse" => DeckMesh::Coarse,
-        "fine" => DeckMesh::Fine,
-        other => {
-            return Err(value_error(format!(
-                "invalid mesh = {other:?}: must be \"coarse\" or \"fine\""
-            )));
-        }
-    };
+    let mesh = DeckMesh::from_name(mesh).ok_or_else(|| {
+        value_error(format!(
+            "invalid mesh = {mesh:?}: must be \"coarse\", \"fine\" or \"finest\""
+        ))
+    })?;
     let (kind, values) = (problem.kind, &problem.values);
     interruptible(py, |_| {
         if let Some(loads) = loads.as_deref().filter(|l| l.len() > DECK_UNCHECKED) {

@@ -291,7 +291,7 @@ impl Problem {
     }
 
     /// The CalculiX input deck of this data set (Abaqus keyword syntax), as `microslip deck ccx
-    /// MODEL` writes it: `mesh` `"coarse"` or `"fine"`, `loads` the load steps' forces (N,
+    /// MODEL` writes it: `mesh` `"coarse"`, `"fine"` or `"finest"`, `loads` the load steps' forces (N,
     /// increasing; default the CLI's, spanning every regime).
     #[pyo3(signature = (code = "ccx", *, mesh = "coarse", loads = None))]
     fn deck(

@@ -52,6 +52,7 @@ mod plot;
 mod point;
 mod presets;
 mod solve;
+mod suite;
 mod sweep;
 #[cfg(test)]
 mod tests;
@@ -314,6 +315,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<(), CliError> {
                 args.format,
             )?
         }
+        Some(Command::Suite(args)) => suite::run_suite(out, args)?,
         Some(Command::Verify(args)) => {
             let grid = if args.quick { Grid::Quick } else { Grid::Full };
             run_verify(out, grid, args.elements, args.tolerance)?

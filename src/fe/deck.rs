@@ -24,8 +24,11 @@ use thiserror::Error;
 use super::mesh::{Block, Face};
 use crate::kernel::params::Compact;
 
-/// How fine the deck's mesh is. `Fine` halves every element size of `Coarse`: running both is the
-/// mesh-convergence check (docs/guide.md, "Benchmark your FE code").
+/// How fine the deck's mesh is. `Fine` halves every element size of `Coarse`, `Finest` halves
+/// them again: h, h/2, h/4, the three rungs of a mesh ladder whose answers Richardson
+/// extrapolation takes to the converged one ([`super::ladder`]; running coarse and fine alone is
+/// the quick convergence check of docs/guide.md, "Benchmark your FE code"). Every deck writer
+/// takes the density through [`DeckMesh::refinement`] alone, so a new rung is one variant here.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum DeckMesh {
     /// The problem's own default (each deck's node and element lists give its size).
@@ -33,6 +36,8 @@ pub enum DeckMesh {
     Coarse,
     /// Every element size halved.
     Fine,
+    /// Every element size a quarter of the coarse one.
+    Finest,
 }
 
 impl DeckMesh {
@@ -41,14 +46,25 @@ impl DeckMesh {
         match self {
             DeckMesh::Coarse => "coarse",
             DeckMesh::Fine => "fine",
+            DeckMesh::Finest => "finest",
         }
     }
 
-    /// 1 for coarse, 2 for fine: the number of elements per coarse element along each direction.
-    pub(crate) fn refinement(self) -> usize {
+    /// Every density, coarsest first.
+    pub const ALL: [DeckMesh; 3] = [DeckMesh::Coarse, DeckMesh::Fine, DeckMesh::Finest];
+
+    /// The density of `name` ([`DeckMesh::name`]).
+    pub fn from_name(name: &str) -> Option<DeckMesh> {
+        DeckMesh::ALL.into_iter().find(|m| m.name() == name)
+    }
+
+    /// 1 for coarse, 2 for fine, 4 for finest: the number of elements per coarse element along
+    /// each direction (the element size is h / refinement).
+    pub fn refinement(self) -> usize {
         match self {
             DeckMesh::Coarse => 1,
             DeckMesh::Fine => 2,
+            DeckMesh::Finest => 4,
         }
     }
 }

@@ -74,6 +74,13 @@ pub trait Deck: Problem + Registered {
     /// large ([`DeckError::TooLarge`]).
     fn write_deck(model: &Self::Model, request: &DeckRequest) -> Result<String, DeckError>;
 
+    /// The deck's own largest load change per increment (the load's unit) at the model's stick
+    /// slope, which `--increment` replaces: a ladder runs it and its half (`microslip suite`).
+    /// `None` (the default) for a deck with no increments to halve (a linear single step).
+    fn default_increment(_model: &Self::Model) -> Option<f64> {
+        None
+    }
+
     /// What the note on flags a deck's header overrides adds for the problem (the beams':
     /// `compare` shows both beam theories); empty for most.
     const OVERRIDES_NOTE: &'static str = "";

@@ -164,11 +164,9 @@ impl DeckHeader {
         let kind: ModelKind = take("model")?
             .parse()
             .map_err(|e: crate::problems::UnknownModel| fail(e.to_string()))?;
-        let mesh = match take("mesh")? {
-            "coarse" => DeckMesh::Coarse,
-            "fine" => DeckMesh::Fine,
-            other => return Err(fail(format!("mesh = '{other}': expected coarse or fine"))),
-        };
+        let mesh = take("mesh")?;
+        let mesh = DeckMesh::from_name(mesh)
+            .ok_or_else(|| fail(format!("mesh = '{mesh}': expected coarse, fine or finest")))?;
         let stick_slope = match take("stick-slope")? {
             "model" => StickSlope::Model,
             "near-coulomb" => StickSlope::NearCoulomb,

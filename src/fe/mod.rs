@@ -18,6 +18,8 @@
 //!   of the FE mesh, the implied K_T in standard errors.
 //! - [`stick_slope`]: the stick slope the FE code used, CSHEAR / CSLIP over the nodes that
 //!   stick, from its own interface output; [`kinematics`]: `NLGEOM` or linear geometry.
+//! - [`ladder`]: a quantity's answers on a mesh ladder (h, h/2, h/4) and two increments taken
+//!   to a converged estimate with its uncertainty (Richardson), and judged against a bound.
 //! - [`run`]: running CalculiX on a deck in a work folder of its own, with its log kept.
 //!
 //! Why the decks are built as they are, and how they differ from the paper's Ansys model, is in
@@ -29,6 +31,7 @@ pub mod deck;
 pub mod face;
 pub mod header;
 pub mod kinematics;
+pub mod ladder;
 pub mod load;
 pub(crate) mod mesh;
 pub mod results;

@@ -112,3 +112,23 @@ pub fn fixed_seed(cases: u32) -> proptest::test_runner::Config {
     config.failure_persistence = None;
     config
 }
+
+/// `microslip`, with a configuration folder of its own (no user preset of the machine's is
+/// read).
+pub fn microslip() -> std::process::Command {
+    let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_microslip"));
+    cmd.env("XDG_CONFIG_HOME", env!("CARGO_TARGET_TMPDIR"))
+        .env_remove("HOME");
+    cmd
+}
+
+/// Writes an executable shell script `name` in `dir` with `body` after `#!/bin/sh`: a stand-in
+/// for an external solver.
+#[cfg(unix)]
+pub fn script(dir: &std::path::Path, name: &str, body: &str) -> std::path::PathBuf {
+    use std::os::unix::fs::PermissionsExt;
+    let path = dir.join(name);
+    std::fs::write(&path, format!("#!/bin/sh\n{body}\n")).unwrap();
+    std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o755)).unwrap();
+    path
+}

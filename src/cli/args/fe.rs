@@ -66,6 +66,68 @@ pub struct BenchArgs {
     pub(in crate::cli) format: CompareFormat,
 }
 
+// The flags of `suite` (Command::Suite); its help is the variant's doc comment.
+#[derive(Debug, Args)]
+pub struct SuiteArgs {
+    /// The cases: problem keys (each problem's bundled presets), preset names, or a TOML file
+    /// of cases (docs/guide.md, "A verification suite"); default: every bundled preset.
+    #[arg(long, value_name = "NAME,...|FILE.toml")]
+    pub(in crate::cli) cases: Option<String>,
+    /// A short ladder for CI: coarse and fine meshes, the fine one at half the increment too
+    /// (default: coarse, fine, finest, the finest at half the increment too).
+    #[arg(long)]
+    pub(in crate::cli) quick: bool,
+    /// Where the runs go.
+    #[arg(long, value_enum, default_value_t = Executor::Local)]
+    pub(in crate::cli) executor: Executor,
+    /// Solver processes at once (default: the cores less one, at least 1); with Slurm, the
+    /// array's throttle.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u16).range(1..=256))]
+    pub(in crate::cli) jobs: Option<u16>,
+    /// The work folder: `<DIR>/<case>/<run>/` per run. A new suite needs an empty or new
+    /// folder; default: a new folder microslip-suite-N in the system's temporary folder.
+    #[arg(long, value_name = "DIR")]
+    pub(in crate::cli) workdir: Option<PathBuf>,
+    /// Carry on the suite in --workdir: runs with a complete result file are kept, the others
+    /// run from scratch.
+    #[arg(long, requires = "workdir")]
+    pub(in crate::cli) resume: bool,
+    /// Also write the scorecard as JUnit XML to FILE (one testcase per case; replaced
+    /// atomically if it exists).
+    #[arg(long, value_name = "FILE")]
+    pub(in crate::cli) junit: Option<PathBuf>,
+    /// The scorecard's format on stdout.
+    #[arg(long, value_enum, default_value_t = SuiteFormat::Text)]
+    pub(in crate::cli) format: SuiteFormat,
+    /// The ccx program to run: a name is looked up on the PATH, a path is taken from the
+    /// current folder.
+    #[arg(long, value_name = "PROGRAM", default_value = "ccx")]
+    pub(in crate::cli) ccx: String,
+    /// Run the one prepared run in DIR to its result file (what a Slurm array task runs).
+    #[arg(long, value_name = "DIR", hide = true)]
+    pub(in crate::cli) run_one: Option<PathBuf>,
+}
+
+/// Where `suite` runs its solver processes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Executor {
+    /// A bounded pool of solver processes on this machine.
+    Local,
+    /// One Slurm job array (sbatch --array with --jobs tasks at once), followed with squeue;
+    /// each task runs `microslip suite --run-one` on a run's folder, so --workdir must be on a
+    /// file system the nodes share.
+    Slurm,
+}
+
+/// The scorecard's formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SuiteFormat {
+    /// Readable lines.
+    Text,
+    /// One JSON object per case, in an array.
+    Json,
+}
+
 // The flags of `compare` (Command::Compare); its help is the variant's doc comment.
 #[derive(Debug, Args)]
 pub struct CompareArgs {

@@ -152,6 +152,7 @@ value_enum!(YMode {
 value_enum!(DeckMesh {
     DeckMesh::Coarse => (DeckMesh::Coarse.name(), "The default mesh of the problem's deck (the deck's own node and element lists give its size)"),
     DeckMesh::Fine => (DeckMesh::Fine.name(), "Every element size halved"),
+    DeckMesh::Finest => (DeckMesh::Finest.name(), "Every element size a quarter of the coarse one (the third rung of a mesh ladder)"),
 });
 
 impl ValueEnum for AnyChart {

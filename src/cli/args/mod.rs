@@ -76,6 +76,15 @@ pub enum Command {
     Bench(BenchArgs),
     /// Compare FE results with the closed forms, point by point, and the K_T they imply.
     Compare(CompareArgs),
+    /// Run a verification suite: each case's deck on a ladder of meshes (h, h/2, h/4) and two
+    /// increments, the answers extrapolated to converged ones (Richardson) and judged against
+    /// the closed forms; a scorecard as text, JSON or JUnit XML.
+    ///
+    /// Runs on a local pool of solver processes (--executor local) or as one Slurm job array
+    /// (--executor slurm). Exit 0 only when every case agrees, 1 when one does not agree, is not
+    /// converged or is not judged, 2 for refused input, 3 when a solver failed, 128 + N on signal
+    /// N (the solvers are ended first; --resume carries on).
+    Suite(SuiteArgs),
     /// Draw a chart of the terminal UI as an SVG figure, or write its data as CSV.
     Plot(PlotArgs),
     /// Regenerate the paper's figures, the cycle loop and D vs F_a: SVG + CSV each, and an

@@ -10,6 +10,7 @@ use serde::Serialize;
 use crate::fe::deck::{DeckMesh, DeckTooLarge};
 use crate::fe::face::{Deck, DeckError, DeckRequest};
 use crate::fe::header::{DeckHeader, StickSlope};
+use crate::fe::ladder::{LadderQuantity, ValueScale};
 use crate::fe::results::{CcxRun, ResultsError};
 use crate::fe::verdict::InterfaceMesh;
 use crate::kernel::format::number;
@@ -320,6 +321,10 @@ impl Deck for CylinderProblem {
         }
     }
 
+    fn default_increment(model: &CylinderModel) -> Option<f64> {
+        Some(DEFAULT_STEP * model.cylinder.gross_slip_load())
+    }
+
     fn write_deck(model: &CylinderModel, request: &DeckRequest) -> Result<String, DeckError> {
         let cylinder = &model.cylinder;
         fits_the_deck(cylinder)?;
@@ -468,6 +473,10 @@ pub struct CylinderCompareReport {
     /// The closing verdict, as every problem's (the stick slope used and the run's kinematics
     /// are added to it by the generic comparison).
     pub verdict: Summary,
+    /// Whether the envelope judged the rows (a run of its kinematics, within its reach): where
+    /// not, a ladder's quantities carry no bound.
+    #[serde(skip)]
+    pub envelope_judged: bool,
 }
 
 /// What the half-plane solution assumes, said wherever the comparison of a run of the
@@ -516,6 +525,7 @@ impl CylinderCompareReport {
             } else {
                 HALF_PLANE_NOTE_CSV
             },
+            envelope_judged: judged && outside.is_none(),
             verdict: envelope_summary(
                 Judged {
                     within,
@@ -698,6 +708,41 @@ impl CompareFace for CylinderProblem {
 
     fn summary_mut(report: &mut CylinderCompareReport) -> &mut Summary {
         &mut report.verdict
+    }
+
+    /// s(a) against the half-plane's (its difference a fraction of it) and c (its difference a
+    /// fraction of a, as the envelope bounds it), per load step.
+    fn ladder_quantities(report: &CylinderCompareReport) -> Vec<LadderQuantity> {
+        let judged = report.envelope_judged;
+        let mut quantities = Vec::new();
+        for row in &report.rows {
+            let at = format!("Q = {} N/mm", number(row.load));
+            if let Some(difference) = row.sa_diff_fraction {
+                quantities.push(LadderQuantity {
+                    name: format!("s(a) at {at}"),
+                    difference,
+                    bound: judged.then_some(report.sa_within_fraction),
+                    value: Some(ValueScale {
+                        closed_form: row.sa_mm,
+                        scale: row.sa_mm,
+                        unit: "mm".to_string(),
+                    }),
+                });
+            }
+            if let Some(difference) = row.c_diff_over_a {
+                quantities.push(LadderQuantity {
+                    name: format!("c at {at}"),
+                    difference,
+                    bound: judged.then_some(report.c_within_fraction_of_a),
+                    value: Some(ValueScale {
+                        closed_form: row.c_mm,
+                        scale: row.a_mm,
+                        unit: "mm".to_string(),
+                    }),
+                });
+            }
+        }
+        quantities
     }
 }
 

@@ -384,4 +384,8 @@ impl CompareFace for LapJointProblem {
     fn summary_mut(report: &mut LapCompareReport) -> &mut Summary {
         &mut report.verdict
     }
+
+    fn ladder_quantities(report: &Self::CompareReport) -> Vec<crate::fe::ladder::LadderQuantity> {
+        report.ladder_quantities()
+    }
 }

@@ -323,7 +323,7 @@ pub fn lap_deck(
 /// (a longer decay length) or a shorter overlap.
 fn too_large_advice(mesh: DeckMesh, decay: f64, length: f64) -> String {
     let coarse = match mesh {
-        DeckMesh::Fine => "the coarse mesh, ",
+        DeckMesh::Fine | DeckMesh::Finest => "the coarse mesh, ",
         DeckMesh::Coarse => "",
     };
     format!(
@@ -395,6 +395,10 @@ impl Deck for LapJointProblem {
         for row in compared.iter_mut().flatten() {
             row.theory_within = None;
         }
+    }
+
+    fn default_increment(model: &LapModel) -> Option<f64> {
+        Some(LoadPath::DEFAULT_FRACTION * model.joint.first_slip_force())
     }
 
     fn write_deck(model: &LapModel, request: &DeckRequest) -> Result<String, DeckError> {

@@ -375,6 +375,10 @@ impl CompareFace for SqueezedPlateProblem {
     fn summary_mut(report: &mut PlateCompareReport) -> &mut Summary {
         &mut report.verdict
     }
+
+    fn ladder_quantities(report: &Self::CompareReport) -> Vec<crate::fe::ladder::LadderQuantity> {
+        report.ladder_quantities()
+    }
 }
 
 #[cfg(test)]

@@ -559,6 +559,10 @@ impl CompareFace for TwinBeamsProblem {
     fn summary_mut(report: &mut BeamCompareReport) -> &mut Summary {
         &mut report.verdict
     }
+
+    fn ladder_quantities(report: &Self::CompareReport) -> Vec<crate::fe::ladder::LadderQuantity> {
+        report.ladder_quantities()
+    }
 }
 
 #[cfg(test)]

@@ -113,6 +113,7 @@ fn check_beam_size(beams: &TwinBeams, mesh: DeckMesh) -> Result<(), DeckTooLarge
     }
     let finer = match mesh {
         DeckMesh::Fine => "use --mesh coarse (4 times fewer elements) or ",
+        DeckMesh::Finest => "use --mesh coarse (16 times fewer elements) or ",
         DeckMesh::Coarse => "",
     };
     Err(DeckTooLarge {
@@ -442,6 +443,10 @@ impl Deck for TwinBeamsProblem {
     }
 
     const OVERRIDES_NOTE: &'static str = " (compare shows both beam theories)";
+
+    fn default_increment(model: &BeamsModel) -> Option<f64> {
+        Some(LoadPath::default().force_step(model.beams.first_macroslip_force()))
+    }
 
     fn write_deck(model: &BeamsModel, request: &DeckRequest) -> Result<String, DeckError> {
         let beams = &model.beams;

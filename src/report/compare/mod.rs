@@ -56,6 +56,13 @@ pub trait CompareFace: Deck {
     /// The report's closing verdict, which the stick slope the FE code used may turn
     /// ([`stick_slope::add_to_summary`]).
     fn summary_mut(report: &mut Self::CompareReport) -> &mut verdict::Summary;
+
+    /// The differences from the closed form that the report judges, each with its bound, as a
+    /// ladder of runs extrapolates them (`microslip suite`, [`crate::fe::ladder`]): one per
+    /// judged quantity and load step, named so that the same quantity of another run of the
+    /// ladder has the same name. A [`table::TableReport`] gives its rows'
+    /// ([`table::TableReport::ladder_quantities`]).
+    fn ladder_quantities(report: &Self::CompareReport) -> Vec<crate::fe::ladder::LadderQuantity>;
 }
 
 /// A relative difference in percent: two decimals, or the exponent form beyond 1e5 % (a number of

@@ -125,6 +125,15 @@ impl<P: CompareTable> TableReport<P> {
         }
     }
 
+    /// Each row's judged difference, as a ladder of runs extrapolates it
+    /// ([`CompareFace::ladder_quantities`](super::CompareFace::ladder_quantities)).
+    pub fn ladder_quantities(&self) -> Vec<crate::fe::ladder::LadderQuantity> {
+        self.rows
+            .iter()
+            .filter_map(|r| r.verdict.quantity.clone())
+            .collect()
+    }
+
     /// The CSV rows.
     pub fn csv_rows(&self) -> Vec<P::CsvRow> {
         self.rows.iter().map(|r| r.row.clone()).collect()

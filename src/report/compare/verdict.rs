@@ -7,6 +7,7 @@
 use serde::{Serialize, Serializer};
 
 use super::percent;
+use crate::fe::ladder::LadderQuantity;
 use crate::fe::verdict::{Envelope, MeshDifference, StiffnessMatch};
 use crate::report::number_with;
 
@@ -37,6 +38,10 @@ pub struct RowVerdict<Z> {
     pub zones: Z,
     /// The verdict in words.
     pub text: String,
+    /// The difference judged, as a ladder of runs extrapolates it (not in the JSON: the rows
+    /// carry it under the problem's own key).
+    #[serde(skip)]
+    pub quantity: Option<LadderQuantity>,
 }
 
 impl<Z> RowVerdict<Z> {
@@ -59,6 +64,12 @@ impl<Z> RowVerdict<Z> {
             envelope_bound_fraction: envelope.bound(),
             zones,
             text,
+            quantity: difference.map(|difference| LadderQuantity {
+                name: format!("{what} at {label}"),
+                difference,
+                bound: envelope.bound(),
+                value: None,
+            }),
         }
     }
 }
