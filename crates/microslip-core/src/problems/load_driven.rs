@@ -332,6 +332,9 @@ mod tests {
         }
         // Both branches ran: the registry has load-driven problems and one without a load (the
         // loop above ties each to its description's load, so no list of names is needed).
-        assert!(found.len() > 1 && found.len() < ModelKind::COUNT, "{found:?}");
+        assert!(
+            found.len() > 1 && found.len() < ModelKind::COUNT,
+            "{found:?}"
+        );
     }
 }

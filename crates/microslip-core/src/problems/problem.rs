@@ -800,7 +800,10 @@ mod tests {
         let (last, first) = keys.split_last().unwrap();
         assert_eq!(
             "beams".parse::<ModelKind>().unwrap_err().to_string(),
-            format!("unknown model 'beams': must be {} or {last}", first.join(", "))
+            format!(
+                "unknown model 'beams': must be {} or {last}",
+                first.join(", ")
+            )
         );
         assert!(ModelKind::choices().ends_with(&format!(" or {}", keys[keys.len() - 1])));
         for kind in ModelKind::ALL {

@@ -18,8 +18,8 @@ pub mod cycle;
 pub mod discretized;
 pub mod lame;
 pub mod params;
-pub mod validity;
 pub mod registered;
+pub mod validity;
 pub use registered::point;
 pub use registered::problem::PressFitProblem;
 
