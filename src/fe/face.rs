@@ -45,6 +45,16 @@ pub trait Deck: Problem + Registered {
     /// A malformed `.dat` line, or a result the deck asks for and the `.dat` lacks.
     fn ccx_points(run: &CcxRun, params: &Self::Params) -> Result<Vec<Self::FePoint>, ResultsError>;
 
+    /// The FE mesh along the interface of a CalculiX run of a deck of this problem, which X
+    /// differences are counted in: by default the quadratic elements of [`Deck::INTERFACE_SET`]
+    /// along x ([`CcxRun::interface_mesh`]); `None` for a deck whose comparison counts none.
+    ///
+    /// # Errors
+    /// As [`CcxRun::interface_mesh`].
+    fn interface_mesh(run: &CcxRun) -> Result<Option<InterfaceMesh>, ResultsError> {
+        run.interface_mesh().map(Some)
+    }
+
     /// The columns of a CSV curve of FE results, as `compare`'s help lists them (`F_N,w_mm`):
     /// the curve [`Deck::csv_points`] reads.
     const CSV_CURVE: Curve;

@@ -122,7 +122,10 @@ impl Formulation {
 /// The press fit's interface in a CalculiX run at one step.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FitContact {
-    /// The median CPRESS over the interface (MPa).
+    /// The median CPRESS over the interface at the end of step 1, the interference alone (MPa):
+    /// Lamé's p. Under the push-out the shaft's compression swells it (docs/theory.md (S9)).
+    pub assembled_pressure: f64,
+    /// The median CPRESS over the interface at this step (MPa).
     pub pressure: f64,
     /// The largest CPRESS (MPa): the peaks at the faces.
     pub pressure_peak: f64,
@@ -325,16 +328,18 @@ pub(super) fn fit_points(
             .and_then(|row| row.get(AXIAL))
             .map(|f| f.abs())
     };
-    let contact_at = |time: f64, state: &FitState| -> Option<FitContact> {
+    let stresses = |time: f64| -> Option<(Vec<f64>, Vec<f64>)> {
         let rows = &table_at(&tables, "contact stress", "", time)?.rows;
         let (pressures, shears): (Vec<f64>, Vec<f64>) = rows
             .iter()
             .filter_map(|r| pressure_and_shear(r))
             .filter(|(p, _)| *p > 0.0)
             .unzip();
-        if pressures.is_empty() {
-            return None;
-        }
+        (!pressures.is_empty()).then_some((pressures, shears))
+    };
+    let assembled_pressure = stresses(1.0).map(|(p, _)| median(p));
+    let contact_at = |time: f64, state: &FitState| -> Option<FitContact> {
+        let (pressures, shears) = stresses(time)?;
         let pressure = median(pressures.clone());
         let slips: Vec<f64> = state
             .slips
@@ -344,6 +349,7 @@ pub(super) fn fit_points(
             .collect();
         let saturation = structure.friction * pressure / structure.tangential_stiffness;
         Some(FitContact {
+            assembled_pressure: assembled_pressure?,
             pressure,
             pressure_peak: pressures.iter().copied().fold(0.0, f64::max),
             shear_peak: shears.iter().copied().fold(0.0, f64::max),

@@ -202,6 +202,12 @@ impl Deck for PressFitProblem {
         fit_points(run, params)
     }
 
+    /// None: the deck's CAX4 elements are linear, along the axis (the second coordinate), and
+    /// the comparison counts no difference in elements.
+    fn interface_mesh(_run: &CcxRun) -> Result<Option<InterfaceMesh>, ResultsError> {
+        Ok(None)
+    }
+
     const CSV_CURVE: crate::measured::Curve = FIT_CURVE;
 
     fn csv_points(text: &str) -> Result<Vec<PressFitFePoint>, ResultsError> {

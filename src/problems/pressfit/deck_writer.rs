@@ -321,11 +321,11 @@ pub fn fit_deck(
             sets::HUB_HELD
         );
     };
-    let friction_line = |deck: &mut String, mu: f64| {
+    // CalculiX reads at most 20 characters per field: 1e-5 mu is written with 7 digits.
+    let friction_line = |deck: &mut String, mu: &str| {
         let _ = writeln!(
             deck,
-            "*CHANGE FRICTION, INTERACTION=JENKINS\n*FRICTION\n{}, {}",
-            real(mu),
+            "*CHANGE FRICTION, INTERACTION=JENKINS\n*FRICTION\n{mu}, {}",
             real(inputs.stick_slope)
         );
     };
@@ -337,7 +337,10 @@ pub fn fit_deck(
         Compact(ASSEMBLY_FRICTION)
     );
     start_step(&mut deck, 1.0, Geometry::Linear);
-    friction_line(&mut deck, ASSEMBLY_FRICTION * inputs.friction);
+    friction_line(
+        &mut deck,
+        &format!("{:.6e}", ASSEMBLY_FRICTION * inputs.friction),
+    );
     let _ = writeln!(deck, "*BOUNDARY\n{}, 2, 2", sets::SHAFT_FIX);
     outputs(&mut deck);
     let area = std::f64::consts::PI * ((r + inputs.interference).powi(2) - ri * ri);
@@ -362,7 +365,7 @@ pub fn fit_deck(
         );
         released(&mut deck);
         if n == 0 {
-            friction_line(&mut deck, inputs.friction);
+            friction_line(&mut deck, &real(inputs.friction));
         }
         deck.push_str("*DLOAD\n");
         for j in 0..ns {
@@ -386,7 +389,7 @@ pub fn fit_deck(
     released(&mut deck);
     let _ = writeln!(deck, "{}, 2, 2, {}", sets::SHAFT_END, real(inputs.push));
     if loads.is_empty() {
-        friction_line(&mut deck, inputs.friction);
+        friction_line(&mut deck, &real(inputs.friction));
     }
     deck.push_str("*DLOAD, OP=NEW\n");
     outputs(&mut deck);
