@@ -11,6 +11,7 @@ pub(crate) mod load;
 pub mod panes;
 pub(crate) mod pins;
 mod plot;
+pub(crate) mod shear_lag;
 pub mod vary;
 pub mod view;
 mod ymode;

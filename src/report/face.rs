@@ -152,6 +152,8 @@ pub trait AnyReportFace: Send + Sync {
     fn kt_row_unanswered(&self, row: &KtRow) -> String;
     /// [`ReportFace::paper_table`].
     fn paper_table(&self) -> Option<String>;
+    /// [`ReportFace::FRICTION_STRESS`]: the friction stress's symbol (`mu P`, `mu p0`).
+    fn friction_stress(&self) -> &'static str;
 }
 
 /// `F = 100 N`: a problem's load by its own key and unit (the cylinder's is a line load,
@@ -209,6 +211,10 @@ impl<P: ReportFace> AnyReportFace for ReportOf<P> {
 
     fn kt_row_unanswered(&self, row: &KtRow) -> String {
         kt_row::<P>(row, None)
+    }
+
+    fn friction_stress(&self) -> &'static str {
+        P::FRICTION_STRESS
     }
 
     fn paper_table(&self) -> Option<String> {

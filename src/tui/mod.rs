@@ -299,7 +299,7 @@ fn event_loop(
                 }
                 Input::Terminal(Err(_)) => return Ok(Exit::HangUp),
                 Input::Work(report) => {
-                    runner.deliver(app, report);
+                    runner.deliver(app, *report);
                     redraw = true;
                 }
             }
@@ -355,7 +355,7 @@ fn skip_to_urgent(
             Input::Terminal(Ok(event)) => redraw |= apply(app, runner, event, too_small(terminal)),
             Input::Terminal(Err(_)) => return Err(Exit::HangUp),
             Input::Work(report) => {
-                runner.deliver(app, report);
+                runner.deliver(app, *report);
                 redraw = true;
             }
             Input::Urgent(event) => {

@@ -62,13 +62,14 @@ pub enum Input {
     Terminal(io::Result<Event>),
     /// A `q` or Esc typed behind [`DEEP`] waiting keys: the loop drops those and applies it.
     Urgent(Event),
-    /// A worker's report.
-    Work(Report),
+    /// A worker's report (boxed: a report of loaded FE points is several times the size of a
+    /// key event, and every event on the channel would pay for it).
+    Work(Box<Report>),
 }
 
 impl From<Report> for Input {
     fn from(report: Report) -> Input {
-        Input::Work(report)
+        Input::Work(Box::new(report))
     }
 }
 

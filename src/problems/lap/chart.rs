@@ -3,22 +3,19 @@
 //! points (the problem's [`ChartFace`]). Built from [`crate::study::lap`].
 
 use super::LapJointProblem;
-use super::closed_form::{JointForce, LapJoint};
+use super::closed_form::LapJoint;
 use super::problem::LapModel;
 use super::profiles::slip_along;
 use super::{LapContinuumMesh, LapFe, solve_lap_continuum_path};
-use crate::chart::load::{
-    LoadLabels, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
+use crate::chart::load::LoadLabels;
+use crate::chart::shear_lag::{
+    self, ShearLagCharts, ShearLagContinuumPoint, ShearLagFe, ShearLagView, ZoneWords,
 };
 use crate::chart::view::{ChartFace, ChartSet};
-use crate::chart::{
-    NumericPoints, OVERLAY_POINTS, Plot, SeriesRole, cursor, line, linear_axis, samples,
-};
-use crate::kernel::format::number_with;
+use crate::chart::{NumericPoints, OVERLAY_POINTS, Plot};
 use crate::numeric::{MeshDensity, NumericError};
+use crate::problems::profiled::LawProfiles;
 use crate::problems::{LapParam, Param};
-use crate::study::curves;
-use crate::study::curves::Spacing;
 
 /// The double-lap joint's charts, in the order the TUI cycles through them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -100,7 +97,7 @@ impl ChartFace for LapJointProblem {
     type Chart = LapChart;
 
     fn plot(model: &Self::Model, chart: LapChart, _f_data: f64, span: Option<f64>) -> Option<Plot> {
-        lap_plot(&model.joint, model.force, chart, span)
+        shear_lag::plot::<Self>(&model.joint, model.force, chart.view(), span)
     }
 
     fn numeric_points(
@@ -108,199 +105,111 @@ impl ChartFace for LapJointProblem {
         chart: LapChart,
         density: MeshDensity,
     ) -> Result<Option<NumericPoints>, NumericError> {
-        lap_numeric_points(&model.joint, model.force, chart, density, OVERLAY_POINTS)
+        shear_lag::numeric_points::<Self>(
+            &model.joint,
+            model.force,
+            chart.view(),
+            density,
+            OVERLAY_POINTS,
+        )
     }
 }
 
-/// What the joint's load charts call its quantities.
-const LAP_LABELS: LoadLabels = LoadLabels {
-    response: "Delta",
-    response_axis: "Delta (mm)",
-    loop_title: ("", "D"),
-    dissipation_axis: "D (N mm)",
-};
-
-/// The force axis: the whole range the joint carries, 0 to F_gross (N), or `span` when a family
-/// asks for a wider one (never beyond F_gross: there is no state there).
-fn force_range(joint: &LapJoint, span: Option<f64>) -> f64 {
-    let gross = joint.gross_slip_force();
-    span.map_or(gross, |s| s.min(gross)).max(f64::MIN_POSITIVE)
-}
-
-fn lap_plot(
-    joint: &LapJoint,
-    force: JointForce,
-    chart: LapChart,
-    span: Option<f64>,
-) -> Option<Plot> {
-    let p = joint.params();
-    let f_max = force_range(joint, span);
-    let forces = samples(0.0, f_max, Spacing::Linear)?;
-    let kt = p.tangential_stiffness;
-    let f = force.newtons();
-    match chart {
-        LapChart::Displacement => {
-            response_plot::<LapJointProblem>(joint, &LAP_LABELS, forces, (f, f_max))
-        }
-        LapChart::Zones => {
-            let (coulomb, regularized) =
-                curves::zone_outline_vs_force::<LapJointProblem>(joint, forces).ok()?;
-            let series = vec![
-                line(SeriesRole::Coulomb, "Coulomb: a, L-d", coulomb),
-                line(SeriesRole::Current, "regularized: a, L-d", regularized),
-                cursor(f, [0.0, p.length]),
-            ];
-            Some(Plot {
-                caption: None,
-                // At most 41 characters (the title row of an 80x24 screen's chart pane).
-                title: format!(
-                    "zones: slide below a, above L-d; F_1 {} N",
-                    number_with(joint.first_slip_force(), 4)
-                ),
-                x: linear_axis("F (N)", 0.0, f_max),
-                y: linear_axis("x (mm)", 0.0, p.length),
-                series,
-            })
-        }
-        LapChart::Shear => {
-            let positions = samples(0.0, p.length, Spacing::Linear)?;
-            Some(profile_plot(
-                ("tau(x)", "tau (MPa)"),
-                (f, kt),
-                p.length,
-                curves::shear_along_of::<LapJointProblem>(
-                    &LapModel {
-                        joint: *joint,
-                        force,
-                    },
-                    positions,
-                ),
-                ("mu P", joint.coulomb_stress()),
-            ))
-        }
-        LapChart::Slip => {
-            let positions = samples(0.0, p.length, Spacing::Linear)?;
-            Some(profile_plot(
-                ("s(x)", "s (mm)"),
-                (f, kt),
-                p.length,
-                slip_along(
-                    &LapModel {
-                        joint: *joint,
-                        force,
-                    },
-                    positions.values(),
-                ),
-                ("mu P / K_T", joint.saturation_slip()),
-            ))
-        }
-        LapChart::Loop => loop_chart::<LapJointProblem>(joint, &LAP_LABELS, force),
-        LapChart::Dissipation => {
-            let amplitudes = samples(0.0, f_max, Spacing::Linear)?;
-            dissipation_chart::<LapJointProblem>(joint, &LAP_LABELS, force, amplitudes, f_max)
+impl LapChart {
+    /// The shear-lag chart this one is.
+    fn view(self) -> ShearLagView {
+        match self {
+            LapChart::Displacement => ShearLagView::Response,
+            LapChart::Zones => ShearLagView::Zones,
+            LapChart::Shear => ShearLagView::Shear,
+            LapChart::Slip => ShearLagView::Slip,
+            LapChart::Loop => ShearLagView::Loop,
+            LapChart::Dissipation => ShearLagView::Dissipation,
         }
     }
 }
 
-/// The project's finite-element points for a lap chart: the discretized solver (`LapFe`, which
-/// never calls the closed forms) loaded monotonically through the chart's forces, round the same
-/// cycle as the loop, or to the current force for tau(x); None for D vs F_a (a closed-form
-/// integral of the loop). Beside them, on Delta, the zones, tau(x) and s(x), the 2-D
+/// The joint's charts are the shear lag's ([`crate::chart::shear_lag`]): its words, its numbers,
+/// its discretized solver (`LapFe`, which never calls the closed forms) and, beside them, the 2-D
 /// plane-stress continuum ([`solve_lap_continuum_path`], (L13)): the answer without the
-/// shear-lag theory's assumptions, where its envelope (L14) says they fail. Where the continuum
-/// refuses the joint (an interface too stiff for it) its series is empty: a gap, not an error.
-fn lap_numeric_points(
-    joint: &LapJoint,
-    force: JointForce,
-    chart: LapChart,
-    density: MeshDensity,
-    count: usize,
-) -> Result<Option<NumericPoints>, NumericError> {
-    let with_continuum = |points: Vec<(f64, f64)>, continuum: Vec<(f64, f64)>| {
-        Ok(Some(NumericPoints {
-            points,
-            continuum,
-            failed: 0,
-            failure: None,
-        }))
+/// shear-lag theory's assumptions, where its envelope (L14) says they fail.
+impl ShearLagCharts for LapJointProblem {
+    const LABELS: LoadLabels = LoadLabels {
+        response: "Delta",
+        response_axis: "Delta (mm)",
+        loop_title: ("", "D"),
+        dissipation_axis: "D (N mm)",
     };
-    let points = |points: Vec<(f64, f64)>| with_continuum(points, Vec::new());
-    let continuum_at = |forces: &[f64]| {
-        solve_lap_continuum_path(joint.params(), forces, LapContinuumMesh::default())
+    const ZONES: ZoneWords = ZoneWords {
+        series: "a, L-d",
+        title: "zones: slide below a, above L-d; F_1 ",
+        load_axis: "F (N)",
     };
-    let mut fe = LapFe::new(joint.params(), density);
-    let length = joint.params().length;
-    match chart {
-        LapChart::Displacement | LapChart::Zones => {
-            // Up to just below F_gross, where the solver (and the joint) stops.
-            let top = 0.98 * force_range(joint, None);
-            let forces: Vec<f64> = (1..=count).map(|i| top * i as f64 / count as f64).collect();
-            let mut found = Vec::with_capacity(2 * count);
-            for &f in &forces {
-                fe.load_to(f, 2)?;
-                if chart == LapChart::Displacement {
-                    found.push((f, fe.joint_displacement()));
-                } else {
-                    let (a, d) = fe.sliding_zones();
-                    found.extend([(f, a), (f, length - d)]);
-                }
-            }
-            let continuum = continuum_at(&forces).map_or_else(
-                |_| Vec::new(),
-                |states| {
-                    states
-                        .iter()
-                        .flat_map(|c| {
-                            if chart == LapChart::Displacement {
-                                vec![(c.force, c.delta)]
-                            } else {
-                                let zones = c.nominal_zones;
-                                vec![
-                                    (c.force, zones.from_inner_end),
-                                    (c.force, length - zones.from_cover_ends),
-                                ]
-                            }
-                        })
-                        .collect()
-                },
-            );
-            with_continuum(found, continuum)
-        }
-        LapChart::Shear | LapChart::Slip => {
-            let at = force.newtons().min(0.98 * joint.gross_slip_force());
-            fe.load_to(at, 4)?;
-            let continuum = continuum_at(&[at]).map_or_else(
-                |_| Vec::new(),
-                |mut states| match states.pop() {
-                    Some(state) if chart == LapChart::Shear => state.shear,
-                    Some(state) => state.slip,
-                    None => Vec::new(),
-                },
-            );
-            with_continuum(
-                (0..=40)
-                    .map(|i| {
-                        let x = length * f64::from(i) / 40.0;
-                        let y = if chart == LapChart::Shear {
-                            fe.shear_at(x)
-                        } else {
-                            fe.slip_at(x)
-                        };
-                        (x, y)
-                    })
-                    .collect(),
-                continuum,
-            )
-        }
-        LapChart::Loop => {
-            // Its own slider histories round a real reversal, no Masing rule.
-            let fa = force.newtons().min(0.98 * joint.gross_slip_force());
-            fe.load_to(fa, 4)?;
-            points(fe_loop(fa, count, |f| {
-                fe.load_to(f, 2)?;
-                Ok(fe.joint_displacement())
-            })?)
-        }
-        LapChart::Dissipation => Ok(None),
+    type Fe = LapFe;
+
+    fn length(joint: &LapJoint) -> f64 {
+        joint.params().length
+    }
+
+    fn first_slip_force(joint: &LapJoint) -> f64 {
+        joint.first_slip_force()
+    }
+
+    fn strength(joint: &LapJoint) -> (&'static str, f64) {
+        ("mu P", joint.coulomb_stress())
+    }
+
+    fn saturation(joint: &LapJoint) -> (&'static str, f64) {
+        ("mu P / K_T", joint.saturation_slip())
+    }
+
+    fn slip_along(model: &LapModel, positions: impl Iterator<Item = f64>) -> LawProfiles {
+        slip_along(model, positions)
+    }
+
+    fn discretized(joint: &LapJoint, density: MeshDensity) -> LapFe {
+        LapFe::new(joint.params(), density)
+    }
+
+    fn continuum_path(
+        joint: &LapJoint,
+        forces: &[f64],
+    ) -> Result<Vec<ShearLagContinuumPoint>, NumericError> {
+        let states = solve_lap_continuum_path(joint.params(), forces, LapContinuumMesh::default())?;
+        Ok(states
+            .into_iter()
+            .map(|c| ShearLagContinuumPoint {
+                force: c.force,
+                response: c.delta,
+                zones: (
+                    c.nominal_zones.from_inner_end,
+                    c.nominal_zones.from_cover_ends,
+                ),
+                shear: c.shear,
+                slip: c.slip,
+            })
+            .collect())
+    }
+}
+
+impl ShearLagFe for LapFe {
+    fn load_to(&mut self, force: f64, steps: usize) -> Result<(), NumericError> {
+        LapFe::load_to(self, force, steps)
+    }
+
+    fn response(&self) -> f64 {
+        self.joint_displacement()
+    }
+
+    fn zones(&self) -> (f64, f64) {
+        self.sliding_zones()
+    }
+
+    fn shear_at(&self, x: f64) -> f64 {
+        (**self).shear_at(x)
+    }
+
+    fn slip_at(&self, x: f64) -> f64 {
+        (**self).slip_at(x)
     }
 }

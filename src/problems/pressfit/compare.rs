@@ -26,7 +26,8 @@ use crate::report::sanitize;
 
 use super::ccx_read::{FitPointKind, PressFitFePoint};
 use super::closed_form::PressFit;
-use super::registered::problem::PressFitProblem;
+use super::registered::problem::{PressFitModel, PressFitProblem};
+use crate::fe::load::Loaded;
 
 /// How far CalculiX's push-out capacity may be from F_gross and agree (a fraction): measured
 /// converged within 0.2 % in mesh and increments on the #98 fit (docs/theory.md section 18,
@@ -354,13 +355,22 @@ impl PressFitCompareReport {
     }
 }
 
-/// The status line's verdict after the TUI loads FE results (`PaneFace::fe_brief`): `points`
-/// against `fit`, the verdict first, by `code` (`CalculiX`).
+/// An FE point on the axes of the press fit's first chart (`PaneFace::fe_xy`): (F, Delta).
+pub(crate) fn pane_xy(point: &PressFitFePoint) -> (f64, f64) {
+    (point.force, point.delta)
+}
+
+/// The status line's verdict after the TUI loads FE results (`PaneFace::fe_brief`): the loaded
+/// points against `model`'s fit, the verdict first, by `code` (`CalculiX`).
 ///
 /// # Errors
 /// A load point beyond F_gross ([`compare_fit`]), in words.
-pub fn fit_brief(fit: &PressFit, points: &[PressFitFePoint], code: &str) -> Result<String, String> {
-    let rows = compare_fit(fit, points).map_err(|e| e.to_string())?;
+pub(crate) fn pane_brief(
+    model: &PressFitModel,
+    loaded: &Loaded<PressFitFePoint>,
+    code: &str,
+) -> Result<String, String> {
+    let rows = compare_fit(&model.fit, &loaded.points).map_err(|e| e.to_string())?;
     let summary = fit_summary(&rows);
     let deltas: Vec<String> = rows
         .iter()

@@ -81,6 +81,13 @@ impl InputsReport {
     /// The inputs block of the text reports.
     pub(crate) fn write(&self, out: &mut String) {
         let _ = writeln!(out, "Inputs");
+        // The keys' column as wide as the longest key (the press fit's `delta`), at least 3; the
+        // values' column narrower by as much, so the meanings stay where they are.
+        let key = self
+            .values()
+            .map(|(p, _)| p.name().len())
+            .fold(3, usize::max);
+        let value_width = 21usize.saturating_sub(key).max(12);
         for (param, value) in self.values() {
             let spec = param.spec();
             let unit = match spec.unit {
@@ -88,7 +95,7 @@ impl InputsReport {
                 unit => format!(" {unit}"),
             };
             let mut line = format!(
-                "  {:<3} = {:<18} {}",
+                "  {:<key$} = {:<value_width$} {}",
                 spec.name,
                 format!("{}{unit}", number(value)),
                 spec.meaning

@@ -241,9 +241,12 @@ impl StiffnessReport {
             "vs Coulomb: each K_T's {quantity} against Coulomb's (the limit of an infinitely \
              stiff K_T), in % (what it gets wrong if the interface is rigid until it slides)."
         );
+        let mu_p = crate::report::face::faces(self.kind)
+            .report
+            .friction_stress();
         let _ = writeln!(
             out,
-            "Elastic-slip defaults scale like mu P / element length, here contact elements of \
+            "Elastic-slip defaults scale like {mu_p} / element length, here contact elements of \
              {element} mm (a hundredth of the contact's length unless --element-size MM gives \
              your mesh's): halve the elements, double K_T."
         );
