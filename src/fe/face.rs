@@ -249,6 +249,38 @@ impl DeckError {
     }
 }
 
+impl DeckError {
+    /// The loads of `--loads`, each made a load by `accept` (refused in the words of its range)
+    /// and each above the one before: every problem's deck steps.
+    ///
+    /// # Errors
+    /// [`DeckError::Flag`] naming the first load refused, or the first that does not increase.
+    pub fn increasing_loads<L>(
+        loads: &[f64],
+        accept: impl Fn(f64) -> Result<L, crate::kernel::params::ParamError>,
+    ) -> Result<Vec<L>, DeckError> {
+        let mut out = Vec::with_capacity(loads.len());
+        let mut last: Option<f64> = None;
+        for &value in loads {
+            let load = accept(value).map_err(|e| DeckError::Flag {
+                flag: "--loads",
+                value,
+                allowed: e.allowed(),
+            })?;
+            if last.is_some_and(|l| l >= value) {
+                return Err(DeckError::Flag {
+                    flag: "--loads",
+                    value,
+                    allowed: "the loads must increase from one step to the next".to_string(),
+                });
+            }
+            last = Some(value);
+            out.push(load);
+        }
+        Ok(out)
+    }
+}
+
 impl From<DeckTooLarge> for DeckError {
     fn from(e: DeckTooLarge) -> Self {
         DeckError::TooLarge(e)

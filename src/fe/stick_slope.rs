@@ -368,7 +368,7 @@ pub fn friction_card(deck: &str) -> Option<(f64, f64)> {
 /// slip, so the slope of the later steps is read from the end of the first
 /// ([`slips_from_first_step`]).
 pub fn first_step_changes_friction(deck: &str) -> bool {
-    let upper = deck.to_ascii_uppercase();
+    let upper = format!("\n{}", deck.to_ascii_uppercase());
     let mut steps = upper.split("\n*STEP").skip(1);
     steps.next().is_some_and(|first| {
         first

@@ -136,23 +136,7 @@ fn deck_loads(fit: &PressFit, loads: Option<&[f64]>) -> Result<Vec<CarriedLoad>,
             .map(|f| fit.axial().clamped(f * fit.gross_slip_force()))
             .collect());
     };
-    let mut out: Vec<CarriedLoad> = Vec::with_capacity(loads.len());
-    for &f in loads {
-        let force = fit.force(f).map_err(|e| DeckError::Flag {
-            flag: "--loads",
-            value: f,
-            allowed: e.allowed(),
-        })?;
-        if out.last().is_some_and(|last| last.value() >= force.value()) {
-            return Err(DeckError::Flag {
-                flag: "--loads",
-                value: f,
-                allowed: "the loads must increase from one step to the next".to_string(),
-            });
-        }
-        out.push(force);
-    }
-    Ok(out)
+    DeckError::increasing_loads(loads, |f| fit.force(f))
 }
 
 impl Deck for PressFitProblem {
@@ -305,7 +289,7 @@ mod tests {
         let steps: Vec<&str> = text.split("*STEP").skip(1).collect();
         assert_eq!(steps.len(), 4, "interference, two loads, capacity");
         assert!(steps[0].contains(&format!(
-            "*FRICTION\n{:?}, 10000.0",
+            "*FRICTION\n{:.6e}, 10000.0",
             ASSEMBLY_FRICTION * 0.1
         )));
         assert!(steps[0].contains("*BOUNDARY\nSHAFTFIX, 2, 2"));
