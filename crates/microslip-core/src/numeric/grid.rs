@@ -7,7 +7,10 @@
 //! column by column; a caller numbers the unknowns (column by column keeps the stiffness banded)
 //! and may share one between bodies (the lap joint's interface pairs share their normal unknown).
 
-use super::q8::{EDGE_WEIGHTS, Elasticity, Q8, q8_stiffness};
+use super::q8::{
+    AxisymmetricElasticity, EDGE_WEIGHTS, Elasticity, GAUSS3, Q8, q8, q8_axisymmetric_stiffness,
+    q8_stiffness,
+};
 
 /// One body's Q8 mesh: element boundaries and the unknowns of its half-grid points.
 #[derive(Debug, Clone)]
@@ -20,7 +23,22 @@ pub(crate) struct Q8Grid {
     pub(crate) first_column: usize,
     /// (u, v) unknowns of each half-grid point, column by column; `None` at element centres.
     dofs: Vec<Option<[usize; 2]>>,
-    elasticity: Elasticity,
+    section: Section,
+}
+
+/// What a body's 2-D mesh stands for: a slice of unit depth (plane stress or strain), or a body
+/// of revolution about the x axis, y its radius (the press fit's shaft and hub), whose forces are
+/// the whole ring's.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Section {
+    Plane(Elasticity),
+    Axisymmetric(AxisymmetricElasticity),
+}
+
+impl From<Elasticity> for Section {
+    fn from(elasticity: Elasticity) -> Section {
+        Section::Plane(elasticity)
+    }
 }
 
 impl Q8Grid {
@@ -30,7 +48,7 @@ impl Q8Grid {
         xs: Vec<f64>,
         ys: Vec<f64>,
         first_column: usize,
-        elasticity: Elasticity,
+        section: impl Into<Section>,
     ) -> Q8Grid {
         let points = (2 * xs.len() - 1) * (2 * ys.len() - 1);
         Q8Grid {
@@ -38,7 +56,7 @@ impl Q8Grid {
             ys,
             first_column,
             dofs: vec![None; points],
-            elasticity,
+            section: section.into(),
         }
     }
 
@@ -114,11 +132,11 @@ impl Q8Grid {
 
     /// The elastic stiffness of element (ex, ey), in the order of [`Q8Grid::element_dofs`].
     pub(crate) fn element_stiffness(&self, ex: usize, ey: usize) -> [[f64; 16]; 16] {
-        q8_stiffness(
-            self.xs[ex + 1] - self.xs[ex],
-            self.ys[ey + 1] - self.ys[ey],
-            &self.elasticity,
-        )
+        let (width, height) = (self.xs[ex + 1] - self.xs[ex], self.ys[ey + 1] - self.ys[ey]);
+        match &self.section {
+            Section::Plane(d) => q8_stiffness(width, height, d),
+            Section::Axisymmetric(d) => q8_axisymmetric_stiffness(width, self.ys[ey], height, d),
+        }
     }
 
     /// The half-bandwidth of the stiffness: the widest spread of one element's unknowns.
@@ -151,6 +169,28 @@ pub(crate) fn edge_weights(breaks: &[f64]) -> Vec<f64> {
     w
 }
 
+/// The ring weights of the half-grid points along radial boundaries `breaks` (mm): the integral
+/// of each point's quadratic shape function times 2 pi r over the edges (mm^2), a uniform axial
+/// traction's consistent nodal loads per unit traction, and each point's share of the annulus
+/// (they sum to pi (r_last^2 - r_first^2)).
+pub(crate) fn ring_weights(breaks: &[f64]) -> Vec<f64> {
+    let mut w = vec![0.0; 2 * breaks.len() - 1];
+    for (e, pair) in breaks.windows(2).enumerate() {
+        let height = pair[1] - pair[0];
+        for &(eta, weight) in &GAUSS3 {
+            // The shape functions of a quadratic edge are the Q8's along xi = -1.
+            let (n, _) = q8(-1.0, eta);
+            let r = pair[0] + 0.5 * (eta + 1.0) * height;
+            let ring = weight * 0.5 * height * 2.0 * std::f64::consts::PI * r;
+            // Nodes 0 (eta = -1), 7 (midside), 3 (eta = 1) of the edge xi = -1.
+            for (k, node) in [0, 7, 3].into_iter().enumerate() {
+                w[2 * e + k] += ring * n[node];
+            }
+        }
+    }
+    w
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -178,5 +218,26 @@ mod tests {
         for (w, s) in weights.iter().zip(simpson) {
             assert!((w - s).abs() < 1e-15, "{weights:?}");
         }
+    }
+
+    #[test]
+    fn ring_weights_integrate_the_annulus_and_its_first_moment() {
+        let breaks = [0.0, 1.0, 2.5, 4.0];
+        let w = ring_weights(&breaks);
+        let area: f64 = w.iter().sum();
+        assert!((area / (std::f64::consts::PI * 16.0) - 1.0).abs() < 1e-14);
+        // Exact for a quadratic field: the integral of r over the annulus, 2 pi r^3/3.
+        let nodes: Vec<f64> = (0..w.len())
+            .map(|i| {
+                if i % 2 == 0 {
+                    breaks[i / 2]
+                } else {
+                    0.5 * (breaks[i / 2] + breaks[i / 2 + 1])
+                }
+            })
+            .collect();
+        let moment: f64 = w.iter().zip(&nodes).map(|(w, r)| w * r).sum();
+        let exact = 2.0 * std::f64::consts::PI * 64.0 / 3.0;
+        assert!((moment / exact - 1.0).abs() < 1e-14, "{moment} {exact}");
     }
 }

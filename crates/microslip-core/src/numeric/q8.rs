@@ -25,7 +25,7 @@ pub(crate) const Q8_NATURAL: [(f64, f64); 8] = [
     (-1.0, 0.0),
 ];
 /// 3-point Gauss-Legendre rule on [-1, 1].
-const GAUSS3: [(f64, f64); 3] = [
+pub(crate) const GAUSS3: [(f64, f64); 3] = [
     (-0.774_596_669_241_483_4, 5.0 / 9.0),
     (0.0, 8.0 / 9.0),
     (0.774_596_669_241_483_4, 5.0 / 9.0),
@@ -84,25 +84,84 @@ pub(crate) fn q8(xi: f64, eta: f64) -> ([f64; 8], [[f64; 2]; 8]) {
 /// Stiffness of a rectangular Q8 element, width * height, per unit depth, with the constitutive
 /// matrix `d` (unknowns (u, v) of each node in [`Q8`] order).
 pub(crate) fn q8_stiffness(width: f64, height: f64, d: &Elasticity) -> [[f64; 16]; 16] {
+    integrate(width, height, d, |_, dn, _| {
+        let mut b = [[0.0; 16]; 3];
+        for n in 0..8 {
+            let (dx, dy) = (dn[n][0], dn[n][1]);
+            b[0][2 * n] = dx;
+            b[1][2 * n + 1] = dy;
+            b[2][2 * n] = dy;
+            b[2][2 * n + 1] = dx;
+        }
+        (1.0, b)
+    })
+}
+
+/// Isotropic elasticity of a body of revolution: (sigma_x, sigma_r, sigma_theta, tau_xr) = D
+/// (eps_x, eps_r, eps_theta, gamma_xr) (MPa), x the axis and r the radius.
+pub(crate) type AxisymmetricElasticity = [[f64; 4]; 4];
+
+/// The 3-D isotropic law in the axisymmetric strains (the hoop strain is a true strain, u_r/r).
+pub(crate) fn axisymmetric(modulus: f64, poisson: f64) -> AxisymmetricElasticity {
+    let c = modulus / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
+    let (a, b) = (c * (1.0 - poisson), c * poisson);
+    [
+        [a, b, b, 0.0],
+        [b, a, b, 0.0],
+        [b, b, a, 0.0],
+        [0.0, 0.0, 0.0, c * (1.0 - 2.0 * poisson) / 2.0],
+    ]
+}
+
+/// Stiffness of an axisymmetric Q8 ring element over x in a `width`, r in [r0, r0 + height]
+/// (unknowns (u_x, u_r) of each node in [`Q8`] order), integrated over the whole ring (weight
+/// 2 pi r): its forces are the ring's total, in N. The hoop strain u_r / r is evaluated at the
+/// Gauss points, which never lie on the axis, so an element touching it (r0 = 0) is finite; the
+/// caller holds u_r = 0 on the axis.
+pub(crate) fn q8_axisymmetric_stiffness(
+    width: f64,
+    r0: f64,
+    height: f64,
+    d: &AxisymmetricElasticity,
+) -> [[f64; 16]; 16] {
+    integrate(width, height, d, |n, dn, eta| {
+        let r = r0 + 0.5 * (eta + 1.0) * height;
+        let mut b = [[0.0; 16]; 4];
+        for k in 0..8 {
+            let (dx, dr) = (dn[k][0], dn[k][1]);
+            b[0][2 * k] = dx;
+            b[1][2 * k + 1] = dr;
+            b[2][2 * k + 1] = n[k] / r;
+            b[3][2 * k] = dr;
+            b[3][2 * k + 1] = dx;
+        }
+        (2.0 * std::f64::consts::PI * r, b)
+    })
+}
+
+/// The 3 x 3 Gauss integral of B^T D B over a rectangle, `strains(n, dn, eta)` giving the
+/// weight factor (1 per unit depth, 2 pi r for a ring) and B from the shape functions and their
+/// x and y derivatives at a point.
+fn integrate<const S: usize>(
+    width: f64,
+    height: f64,
+    d: &[[f64; S]; S],
+    strains: impl Fn(&[f64; 8], &[[f64; 2]; 8], f64) -> (f64, [[f64; 16]; S]),
+) -> [[f64; 16]; 16] {
     let (jx, jy) = (2.0 / width, 2.0 / height);
     let det = width * height / 4.0;
     let mut k = [[0.0; 16]; 16];
     for &(xi, wx) in &GAUSS3 {
         for &(eta, wy) in &GAUSS3 {
-            let (_, dn) = q8(xi, eta);
-            let mut b = [[0.0; 16]; 3];
-            for n in 0..8 {
-                let (dx, dy) = (dn[n][0] * jx, dn[n][1] * jy);
-                b[0][2 * n] = dx;
-                b[1][2 * n + 1] = dy;
-                b[2][2 * n] = dy;
-                b[2][2 * n + 1] = dx;
-            }
-            let weight = wx * wy * det;
+            let (n, dn) = q8(xi, eta);
+            let physical = dn.map(|g| [g[0] * jx, g[1] * jy]);
+            let (factor, b) = strains(&n, &physical, eta);
+            let weight = wx * wy * det * factor;
             for r in 0..16 {
-                let db = [0, 1, 2].map(|i| (0..3).map(|j| d[i][j] * b[j][r]).sum::<f64>());
+                let db: [f64; S] =
+                    std::array::from_fn(|i| (0..S).map(|j| d[i][j] * b[j][r]).sum::<f64>());
                 for s in 0..16 {
-                    k[s][r] += weight * (b[0][s] * db[0] + b[1][s] * db[1] + b[2][s] * db[2]);
+                    k[s][r] += weight * (0..S).map(|i| b[i][s] * db[i]).sum::<f64>();
                 }
             }
         }
@@ -164,5 +223,48 @@ mod tests {
         assert!(sigma[1].abs() < 1e-12);
         // Shear modulus E / (2 (1 + nu)).
         assert!((d[2][2] / (e / 2.6) - 1.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn the_ring_element_has_the_axial_rigid_mode_and_the_energy_of_a_uniform_strain() {
+        let (e, nu) = (210_000.0, 0.3);
+        let d = axisymmetric(e, nu);
+        for (r0, height) in [(0.0, 1.5), (10.0, 2.0), (100.0, 0.5)] {
+            let width = 0.7;
+            let k = q8_axisymmetric_stiffness(width, r0, height, &d);
+            let nodes: Vec<(f64, f64)> = Q8_NATURAL
+                .iter()
+                .map(|&(a, b)| (0.5 * (a + 1.0) * width, r0 + 0.5 * (b + 1.0) * height))
+                .collect();
+            // An axial translation strains nothing; a radial one stretches the hoop.
+            let axial: Vec<f64> = nodes.iter().flat_map(|_| [1.0, 0.0]).collect();
+            for row in &k {
+                let f: f64 = row.iter().zip(&axial).map(|(a, b)| a * b).sum();
+                assert!(f.abs() < 1e-6, "{f}");
+            }
+            // u = a x + g r, v = b r: eps = (a, b, b, g) everywhere (the hoop strain b r / r;
+            // a v growing with x would strain the hoop unevenly), energy 1/2 eps.D.eps times
+            // the ring's volume pi ((r0 + h)^2 - r0^2) w.
+            let (a, b, g) = (1e-3, -4e-4, 2e-4);
+            let u: Vec<f64> = nodes
+                .iter()
+                .flat_map(|&(x, r)| [a * x + g * r, b * r])
+                .collect();
+            let energy: f64 = (0..16)
+                .map(|i| u[i] * (0..16).map(|j| k[i][j] * u[j]).sum::<f64>())
+                .sum::<f64>()
+                / 2.0;
+            let eps = [a, b, b, g];
+            let density: f64 = (0..4)
+                .map(|i| eps[i] * (0..4).map(|j| d[i][j] * eps[j]).sum::<f64>())
+                .sum::<f64>()
+                / 2.0;
+            let volume = std::f64::consts::PI * ((r0 + height).powi(2) - r0 * r0) * width;
+            assert!(
+                (energy / (density * volume) - 1.0).abs() < 1e-10,
+                "{energy} {}",
+                density * volume
+            );
+        }
     }
 }

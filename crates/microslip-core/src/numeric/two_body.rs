@@ -21,10 +21,12 @@
 
 mod condensed;
 mod grid;
+mod profiles;
 mod reduced;
 mod zones;
 
 pub(crate) use condensed::Condensed;
 pub(crate) use grid::TwoBodyGrid;
+pub(crate) use profiles::Profiles;
 pub(crate) use reduced::{Reduced, State, check_path};
 pub(crate) use zones::{last_of_run, nominal_front};

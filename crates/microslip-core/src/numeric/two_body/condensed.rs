@@ -116,7 +116,18 @@ impl Condensed {
         let mut slips: Vec<Vec<f64>> = Vec::with_capacity(total);
         let mut contacts: Vec<Vec<f64>> = Vec::with_capacity(total);
         let mut readings: Vec<f64> = Vec::with_capacity(total);
+        // A load on a held unknown goes to the support (its row is the identity's): the
+        // press fit's hub is held on a face whose interface corner is also a pair's node.
+        let mut held = vec![false; n];
+        for &dof in fixed {
+            held[dof] = true;
+        }
         let load = |column: usize, add: &mut dyn FnMut(usize, f64)| {
+            let add = &mut |dof: usize, value: f64| {
+                if !held[dof] {
+                    add(dof, value);
+                }
+            };
             if column < m {
                 let (a, b) = grid.pair_dofs(column);
                 add(a, 1.0);

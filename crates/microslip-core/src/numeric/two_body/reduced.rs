@@ -166,6 +166,44 @@ impl<'a> Reduced<'a> {
                 .sum::<f64>()
     }
 
+    /// The first stage at its full magnitude with no friction (a shrink fit: the hub slides onto
+    /// the shaft freely and grips as it cools, so no shear is left at the interface): the
+    /// bodies' equilibrium under the first load with a zero Jenkins force at every pair, which
+    /// is then committed as the slider positions q = s. The interface's condensed stiffness
+    /// without its springs, S - diag(k), is singular along the rigid sliding of one body against
+    /// the other (nothing but the interface holds the shaft axially), which changes neither the
+    /// contact forces nor a reading taken from this state; pair 0 is pinned to remove it.
+    ///
+    /// # Errors
+    /// [`NumericError::Singular`] when the bodies leave more than that one mode free.
+    pub(crate) fn frictionless_first_stage(&mut self) -> Result<(), NumericError> {
+        let m = self.c.pairs;
+        let rows = &self.c.condensed_rows;
+        let mut free = SymmetricBand::zeros(m - 1, m.saturating_sub(2));
+        for i in 1..m {
+            for j in 1..=i {
+                let k = if i == j { self.c.stiffness[i] } else { 0.0 };
+                free.add(i - 1, j - 1, rows[i * m + j] - k);
+            }
+        }
+        let rhs: Vec<f64> = (1..m)
+            .map(|i| {
+                let row = &rows[i * m..(i + 1) * m];
+                row.iter().zip(&self.unit).map(|(a, b)| a * b).sum()
+            })
+            .collect();
+        let slip = free
+            .factor()
+            .map_err(|e| NumericError::Singular(e.row + 1))?
+            .solve(&rhs);
+        self.slip = std::iter::once(0.0).chain(slip).collect();
+        for (point, s) in self.points.iter_mut().zip(&self.slip) {
+            point.plastic_slip = *s;
+        }
+        self.load = 1.0;
+        Ok(())
+    }
+
     /// One increment to `load`; when its fixed point fails (nothing is committed then), two
     /// half increments, down to `cuts_left` halvings: a closer start is what the fixed point
     /// needs where the covers lift off (mu = 4 near 0.5 F_gross on the bundled joint, issue 36).

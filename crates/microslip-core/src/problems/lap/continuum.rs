@@ -101,8 +101,6 @@ const MAX_CLAMPING_SLIDE: f64 = 200.0;
 /// 1.5e-8 at K_T = 0.01 MPa/mm and below 1e-9 from K_T = 1 up on the bundled joint (7.5e-5 at
 /// K_T = 1e-6, refused).
 const EQUILIBRIUM_TOLERANCE: f64 = 1e-6;
-/// The local sliding reading: |tau| >= (1 - this) mu p.
-const LOCAL_SLIDING: f64 = 1e-3;
 
 /// How fine the continuum model is, in space and in load.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -14,6 +14,7 @@
 //! (`REGISTRATION.md` beside this file says how, and what that showed).
 
 pub mod closed_form;
+pub mod continuum;
 pub mod cycle;
 pub mod discretized;
 pub mod lame;

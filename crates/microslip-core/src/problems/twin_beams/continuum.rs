@@ -45,7 +45,7 @@ use super::params::{BeamParam, TwinBeamsParams};
 use crate::kernel::params::Compact;
 use crate::numeric::NumericError;
 use crate::numeric::grid::edge_weights;
-use crate::numeric::two_body::{Condensed, Reduced, State, check_path, last_of_run, nominal_front};
+use crate::numeric::two_body::{Condensed, Profiles, Reduced, State, check_path, nominal_front};
 use mesh::{Grid, elements_along};
 
 /// Most interface node pairs: the condensed interface is a dense m x m system built from m
@@ -55,8 +55,6 @@ const MAX_PAIRS: usize = 801;
 const MAX_LAYERS: usize = 16;
 /// Most force increments per F_e.
 const MAX_INCREMENTS: usize = 10_000;
-/// The local sliding reading: |tau| >= (1 - this) mu p.
-const LOCAL_SLIDING: f64 = 1e-3;
 
 /// How fine the continuum model is, in space and in load.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -379,27 +377,17 @@ fn answer(
     let c = model.c;
     let weights = &grid.two.pair_weights;
     let xs = &grid.two.pair_x;
-    let contact = model.contact_forces();
     // The closed form's convention: s = u_upper - u_lower, tau on the lower beam with the sign
     // of s; the generic pair reads u_lower - u_upper.
-    let slip: Vec<(f64, f64)> = xs
-        .iter()
-        .zip(slip_from_clamp)
-        .map(|(&x, s)| (x, -s))
-        .collect();
-    let shear = grid.two.per_face(&model.pair_forces(), -1.0);
-    let contact_pressure = grid.two.per_face(&contact, 1.0);
+    let profiles = Profiles::read(model, &grid.two, slip_from_clamp, -1.0, 1.0);
     let length = xs.last().copied().unwrap_or(0.0);
     let saturation = model.friction() * model.pressure();
-    let level = |i: usize| c.stiffness[i] / weights[i] * slip[i].1.abs();
+    let level = |i: usize| c.stiffness[i] / weights[i] * profiles.slip[i].1.abs();
     let from_tip = &mut (0..xs.len()).rev();
     let macroslip_start = nominal_front(xs, level, saturation, from_tip);
-    let sliding = |i: usize| {
-        let p = contact_pressure[i].1;
-        p > 0.0 && shear[i].1.abs() >= (1.0 - LOCAL_SLIDING) * model.friction() * p
-    };
-    let local_macroslip_start =
-        last_of_run(sliding, &mut (0..xs.len()).rev()).map_or(length, |i| xs[i]);
+    let local_macroslip_start = profiles
+        .run_from_end(model.friction())
+        .map_or(length, |i| xs[i]);
     ContinuumBeams {
         force: model.load,
         tip_deflection: model.reading_from(clamped),
@@ -407,15 +395,10 @@ fn answer(
         macroslip_start,
         local_macroslip_start,
         elastic_limit: stick,
-        separated: contact
-            .iter()
-            .zip(xs)
-            .filter(|(n, _)| **n < 0.0)
-            .map(|(_, &x)| x)
-            .collect(),
-        slip,
-        shear,
-        contact_pressure,
+        separated: profiles.separated,
+        slip: profiles.slip,
+        shear: profiles.shear,
+        contact_pressure: profiles.pressure,
         increments,
         iterations,
         pairs: c.pairs,

@@ -3,13 +3,19 @@
 
 use super::DESCRIPTION;
 use crate::kernel::params::{ParamError, ParamSpec};
+use crate::numeric::NumericError;
 use crate::problems::cross_check::CrossCheckedOf;
 use crate::problems::fittable::FittableOf;
 use crate::problems::inputs::InterfaceData;
 use crate::problems::load_driven::{LoadDriven, LoadDrivenOf};
 use crate::problems::pressfit::closed_form::{CarriedLoad, FitState, PressFit};
+use crate::problems::pressfit::continuum::{
+    ContinuumPressFit, PressFitContinuumMesh, solve_pressfit_continuum,
+};
 use crate::problems::pressfit::params::{PressFitParam, PressFitParams};
-use crate::problems::problem::{Laws, ParamKey, Problem, ProblemFaces};
+use crate::problems::problem::{
+    Continuum, Laws, ParamKey, Problem, ProblemFaces, continuum_response,
+};
 use crate::problems::zoned::erased_layout;
 use crate::problems::{Description, Quantity};
 
@@ -110,6 +116,7 @@ impl Problem for PressFitProblem {
     }
 
     const FACES: &'static ProblemFaces = &ProblemFaces {
+        continuum: Some(continuum_response::<PressFitProblem>),
         load_driven: Some(&LoadDrivenOf::<PressFitProblem>::NEW),
         fittable: Some(&FittableOf::<PressFitProblem>::NEW),
         cross_checked: Some(&CrossCheckedOf::<PressFitProblem>::NEW),
@@ -118,6 +125,23 @@ impl Problem for PressFitProblem {
     };
 
     enum_bridges!(PressFit);
+}
+
+impl Continuum for PressFitProblem {
+    type Mesh = PressFitContinuumMesh;
+    type Reference = ContinuumPressFit;
+
+    fn solve_continuum(
+        model: &PressFitModel,
+        mesh: PressFitContinuumMesh,
+    ) -> Result<ContinuumPressFit, NumericError> {
+        solve_pressfit_continuum(model.fit.params(), model.force.value(), mesh)
+    }
+
+    /// Delta from the fitted state: the closed form's.
+    fn continuum_response(reference: &ContinuumPressFit) -> f64 {
+        reference.delta
+    }
 }
 
 #[cfg(test)]
@@ -129,6 +153,22 @@ mod tests {
     #[test]
     fn the_fit_is_registered_and_answers_the_same_erased_as_typed() {
         checks::registered::<PressFitProblem>();
+        // The erased continuum is the typed one, on the default mesh.
+        let model = crate::problems::inputs::Inputs::paper(ModelKind::PressFit)
+            .validate()
+            .unwrap();
+        let erased = PressFitProblem::FACES
+            .continuum
+            .and_then(|response| response(&model))
+            .unwrap()
+            .unwrap();
+        let typed = solve_pressfit_continuum(
+            PressFitParams::CCX98,
+            685.5,
+            PressFitContinuumMesh::default(),
+        )
+        .unwrap();
+        assert_eq!(erased.to_bits(), typed.delta.to_bits());
         checks::erased_answers_as_typed(ModelKind::PressFit, |v| {
             let fit = PressFit::new(PressFitParams {
                 fit_radius: v("r"),
