@@ -15,7 +15,7 @@ use crate::problems::Problem;
 
 use super::ccx_read::{FIT_CURVE, PressFitFePoint, fit_points, fit_points_from_csv};
 use super::closed_form::{CarriedLoad, PressFit};
-use super::compare::{PressFitCompared, compare_fit};
+use super::compare::PressFitCompared;
 use super::deck_writer::{CAPACITY_PUSH, FitDeckInputs, Layout, fit_deck, sets};
 use super::registered::problem::{PressFitInputs, PressFitModel, PressFitProblem};
 
@@ -203,13 +203,14 @@ impl Deck for PressFitProblem {
         points: &[PressFitFePoint],
         _mesh: Option<&InterfaceMesh>,
     ) -> Result<Vec<PressFitCompared>, ParamError> {
-        compare_fit(&model.fit, points)
+        super::compare::compare(model, points)
     }
 
     /// The capacity and pressure tolerances were measured on linear-geometry runs (the deck's).
     fn without_envelope(compared: &mut Result<Vec<PressFitCompared>, ParamError>) {
         for row in compared.iter_mut().flatten() {
             row.judged = false;
+            row.continuum = None;
         }
     }
 
