@@ -1,7 +1,7 @@
 //! The press fit against real CalculiX 2.20 results (`tests/data/pressfit/`): the bundled #98
 //! fit's deck as `microslip deck ccx pressfit --preset pressfit-ccx98` writes it, the same deck
 //! with CalculiX issue #98's node slave (`TYPE=NODE TO SURFACE`, slave NSHAFT), and the `.dat`
-//! files ccx wrote for them, cut to the blocks at each step's end (the reader reads only those).
+//! files ccx wrote for them (the deck prints each step's end only).
 //! CalculiX is not needed here: `validation/calculix/validate.py` runs it.
 //!
 //! The expected figures are independent of this code: Delta and the reactions read from the

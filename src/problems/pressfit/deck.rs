@@ -305,10 +305,12 @@ mod tests {
         assert!(steps[3].contains("*DLOAD, OP=NEW"));
         for step in &steps {
             for set in [sets::SHAFT_END, sets::SHAFT_FACE, sets::HUB_FACE] {
-                assert!(step.contains(&format!("*NODE PRINT, NSET={set}\nU\n")));
+                assert!(step.contains(&format!("*NODE PRINT, NSET={set}, FREQUENCY=100000\nU\n")));
             }
-            assert!(step.contains("*NODE PRINT, NSET=HUBHELD, TOTALS=ONLY\nRF\n"));
-            assert!(step.contains("*CONTACT PRINT\nCSTR\n"));
+            assert!(
+                step.contains("*NODE PRINT, NSET=HUBHELD, TOTALS=ONLY, FREQUENCY=100000\nRF\n")
+            );
+            assert!(step.contains("*CONTACT PRINT, FREQUENCY=100000\nCSTR\n"));
         }
         // The surface-to-surface pair is the deck's; the node slave is named for #98.
         assert!(text.contains(&format!("\n{SURFACE_PAIR}\n")));
