@@ -518,7 +518,7 @@ pub(crate) fn facing_slip_along(
     Ok((xs, slips))
 }
 
-/// The sliding zones of a slip profile with two ends (the lap joint's, the press fit's): where
+/// The sliding zones of a slip profile with two ends, both of which may slide: where
 /// |s| >= `saturation` (mu p / K_T), contiguous from the first position and from the last, each
 /// end interpolated linearly between the last sliding node and the first that does not. A
 /// profile sliding throughout gives the whole length from the start, counted once.

@@ -362,9 +362,9 @@ pub fn friction_card(deck: &str) -> Option<(f64, f64)> {
     Some((numbers.next()??, numbers.next()??))
 }
 
-/// Whether `deck`'s first step changes the friction (`*CHANGE FRICTION`): the press fit resolves
-/// its interference so, nearly frictionless (a shrink fit leaves no shear), and the members slide
-/// in it through the interference's Poisson strains without shear. CalculiX's CSLIP keeps that
+/// Whether `deck`'s first step changes the friction (`*CHANGE FRICTION`): a deck that resolves an
+/// interference so, nearly frictionless (a shrink fit leaves no shear), lets the bodies slide in
+/// it through the interference's Poisson strains without shear. CalculiX's CSLIP keeps that
 /// slip, so the slope of the later steps is read from the end of the first
 /// ([`slips_from_first_step`]).
 pub fn first_step_changes_friction(deck: &str) -> bool {
@@ -612,7 +612,7 @@ mod tests {
         assert_eq!(error, "line 2: slip_mm = 'a' is not a number");
     }
 
-    /// The press fit's first step slides without shear: its slip is taken off the later steps',
+    /// A frictionless first step slides without shear: its slip is taken off the later steps',
     /// and only a deck whose first step changes the friction is read so.
     #[test]
     fn slips_are_counted_from_a_frictionless_first_step() {
