@@ -120,7 +120,7 @@ fn csv(params: PressFitParams, mesh: PressFitContinuumMesh) {
 
 fn main() {
     let mode = std::env::args().nth(1).unwrap_or_default();
-    let ladder = [2, 4, 8, 16];
+    let ladder = [2, 4, 6, 8, 16];
     match mode.as_str() {
         "converge" => {
             for params in [
@@ -146,6 +146,39 @@ fn main() {
                     },
                 );
             }
+        }
+        "bundled" => {
+            // The bundled fit at 0.3 and 0.8 F_gross on the default mesh: what theory.md quotes.
+            let params = PressFitParams::CCX98;
+            let fit = PressFit::new(params).unwrap();
+            let forces = [0.3, 0.8].map(|f| f * fit.gross_slip_force());
+            let states =
+                solve_pressfit_continuum_path(params, &forces, PressFitContinuumMesh::default())
+                    .unwrap();
+            for (state, force) in states.iter().zip(forces) {
+                let closed = fit.regularized(fit.force(force).unwrap());
+                let (p0, pl) = (state.pressure[0].1, state.pressure[state.pairs - 1].1);
+                println!(
+                    "F {force:.1} N: Delta {:.5e} (1-D {:.5e}), local zones {:?}, nominal {:?} \
+                     (1-D: loaded {:.3}, held {:.3}), capacity {:.1} N, p(0) {p0:.3}, p(L) {pl:.3}",
+                    state.delta,
+                    closed.response(),
+                    state.local_zones,
+                    state.nominal_zones,
+                    closed.slide_from_loaded_face(),
+                    closed.slide_from_held_face(),
+                    state.capacity,
+                );
+            }
+        }
+        "kt" => {
+            // The cost of a stiff interface on the bundled fit: `-- kt 3e7`.
+            let kt: f64 = std::env::args().nth(2).unwrap().parse().unwrap();
+            let params = PressFitParams {
+                tangential_stiffness: kt,
+                ..PressFitParams::CCX98
+            };
+            row(params, PressFitContinuumMesh::default());
         }
         "probe" => {
             let arg = |i: usize| -> f64 { std::env::args().nth(i).unwrap().parse().unwrap() };

@@ -57,9 +57,8 @@ mod answer;
 mod condensed;
 mod mesh;
 
-use super::closed_form::PressFit;
 use super::lame::{PlaneState, contact_pressure};
-use super::params::PressFitParams;
+use super::params::{PressFitParam, PressFitParams};
 use crate::kernel::params::Compact;
 use crate::numeric::NumericError;
 use crate::numeric::two_body::{Reduced, check_path};
@@ -67,8 +66,12 @@ use answer::pressfit_answer;
 use condensed::condense;
 use mesh::Grid;
 
-/// Most interface node pairs (the condensed interface is dense, m x m).
-const MAX_PAIRS: usize = 801;
+/// Most interface node pairs: the condensed interface is dense, m x m, built from m solves.
+/// Release, bundled fit, default mesh, 0.3 and 0.8 F_gross (the example's `kt` mode): 25 pairs
+/// and 10 ms at K_T = 1e4 MPa/mm, 81 and 0.08 s at 1e6, 237 and 0.6 s at 1e7, 401 and 2.1 s at
+/// 3e7; 4e7 (461 pairs) is refused. The interface is then Coulomb-like (Delta moves 0.02 % from
+/// 1e7 to 3e7).
+const MAX_PAIRS: usize = 401;
 /// Most elements of both bodies together.
 const MAX_ELEMENTS: usize = 60_000;
 /// Most entries of the banded stiffness (128 MB).
@@ -93,8 +96,9 @@ pub struct PressFitContinuumMesh {
 }
 
 impl Default for PressFitContinuumMesh {
-    /// Six elements through each wall and 8 increments over [0, F_gross]: Delta within 0.1 % of
-    /// the converged one on the fits of theory.md (S10) (measured there, with the mesh ladder).
+    /// Six elements through each wall and 8 increments over [0, F_gross]: Delta within 0.13 %
+    /// of 16 layers' on the ladder of docs/theory.md (S10) (the bundled fit: 0.13 %), and 32
+    /// increments give the same Delta to 10 digits.
     fn default() -> Self {
         PressFitContinuumMesh {
             layers: 6,
@@ -159,8 +163,9 @@ pub struct ContinuumPressFit {
 /// [`NumericError::OutOfRange`] for inputs outside their domains (the parameters, a force beyond
 /// F_gross = mu p 2 pi r L, layers outside 1..=32, no force increment) and for a mesh too large
 /// or too distorted (named with its numbers); [`NumericError::Unsolved`] when the push-out
-/// cannot be followed (near F_gross, where the continuum's own capacity, [`ContinuumPressFit::
-/// capacity`], may be lower than the closed form's), or the answer fails its equilibrium check.
+/// cannot be followed (near F_gross, where the continuum's own capacity,
+/// [`ContinuumPressFit::capacity`], may be lower than the closed form's), or the answer fails its
+/// equilibrium check.
 pub fn solve_pressfit_continuum(
     params: PressFitParams,
     force: f64,
@@ -182,9 +187,20 @@ pub fn solve_pressfit_continuum_path(
 ) -> Result<Vec<ContinuumPressFit>, NumericError> {
     let out_of_range =
         |e: crate::kernel::params::ParamError| NumericError::OutOfRange(e.to_string());
-    let fit = PressFit::new(params).map_err(out_of_range)?;
+    params.check().map_err(out_of_range)?;
+    let lame = contact_pressure(&params, PlaneState::Stress);
+    let gross = params.friction * lame * params.interface_width() * params.length;
     for &force in forces {
-        fit.force(force).map_err(out_of_range)?;
+        let force = PressFitParam::Force.check(force).map_err(out_of_range)?;
+        if force > gross {
+            return Err(NumericError::OutOfRange(format!(
+                "F = {} N is beyond F_gross = mu p 2 pi r L = {} N (p Lamé's, {} MPa): the \
+                 shaft slides out beyond it",
+                Compact(force),
+                Compact(gross),
+                Compact(lame)
+            )));
+        }
     }
     check_path(forces)?;
     if mesh.layers == 0 || mesh.layers > MAX_LAYERS {
@@ -198,7 +214,7 @@ pub fn solve_pressfit_continuum_path(
             "force_increments = 0: at least one increment is needed".into(),
         ));
     }
-    let decay = 1.0 / fit.axial().decay_rate();
+    let decay = 1.0 / decay_rate(&params);
     let (pairs, elements) = Grid::counts(&params, mesh, decay);
     if pairs > MAX_PAIRS || elements > MAX_ELEMENTS {
         return Err(NumericError::OutOfRange(format!(
@@ -245,7 +261,6 @@ pub fn solve_pressfit_continuum_path(
         )));
     }
     let condensed = condense(&grid, &params)?;
-    let gross = fit.gross_slip_force();
     let top = forces.iter().fold(0.0_f64, |m, f| m.max(*f));
     let mut model = Reduced::new(
         &condensed,
@@ -262,7 +277,6 @@ pub fn solve_pressfit_continuum_path(
     let fitted = model.state();
     model.start_force_step();
     let stick = model.stick_limit();
-    let lame = contact_pressure(&params, PlaneState::Stress);
     let mut states = Vec::with_capacity(forces.len());
     let (mut increments, mut iterations) = (0, 0);
     for &force in forces {
@@ -311,6 +325,15 @@ pub fn solve_pressfit_continuum_path(
         states.push(state);
     }
     Ok(states)
+}
+
+/// lambda = sqrt(2 pi r K_T (1/(Es As) + 1/(Eh Ah))) (1/mm): the rate at which the elastic slip
+/// decays from a loaded face in the shear-lag theory (docs/theory.md (S4)). Only the mesh grading
+/// uses it (a material length scale, not a closed-form result).
+fn decay_rate(p: &PressFitParams) -> f64 {
+    let compliance =
+        1.0 / (p.shaft_modulus * p.shaft_area()) + 1.0 / (p.hub_modulus * p.hub_area());
+    (p.interface_width() * p.tangential_stiffness * compliance).sqrt()
 }
 
 #[cfg(test)]

@@ -2,8 +2,9 @@
 //! face (the hub held on its far face) or twisted by a torque T, under the regularized law or
 //! plain Coulomb. The parameters, Lamé's contact pressure, the closed forms (the shear lag of two
 //! bars coupled through one interface, shared with the lap joint through
-//! [`crate::kernel::shear_lag`]), the Masing cycle, where the 1-D theory's assumptions stand, and
-//! the independent discretized solver. docs/theory.md section 18 derives all of it.
+//! [`crate::kernel::shear_lag`]), the Masing cycle, where the 1-D theory's assumptions stand
+//! (measured against the axisymmetric continuum, `continuum.rs`), and the independent
+//! discretized solver. docs/theory.md section 18 derives all of it.
 //!
 //! Not registered yet: the problem joins the registry (`with_problems!`) after the dispatch
 //! refactor, with its faces. Everything that does not name the registry's generated types is

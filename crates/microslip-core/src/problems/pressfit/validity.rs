@@ -252,4 +252,85 @@ mod tests {
         assert!((s / shaft - 1.0).abs() < 1e-10, "{s} {shaft}");
         assert!((h / hub - 1.0).abs() < 1e-10, "{h} {hub}");
     }
+
+    #[test]
+    fn each_calibrated_range_is_enforced_and_named() {
+        // A grid fit (theory.md (S10)): L/r = 4, walls 0.5 r, K_T r/Es = 0.1.
+        let inside = PressFitParams {
+            bore_radius: 10.0,
+            outer_radius: 30.0,
+            length: 80.0,
+            interference: 2e-3,
+            tangential_stiffness: 1050.0,
+            ..PressFitParams::CCX98
+        };
+        let at = |params: PressFitParams, fraction: f64| {
+            let fit = PressFit::new(params).unwrap();
+            fit.validity(fit.force(fraction * fit.gross_slip_force()).unwrap())
+        };
+        let v = at(inside, 0.5);
+        let bound = v.expected_error.unwrap();
+        assert!(v.outside_calibration.is_none());
+        // The bound is the calibrated form of its terms.
+        let by_hand =
+            1.25 * (0.35 * v.end_effect + 0.7 * v.wall_shear + 1.25 * v.poisson_coupling + 0.005);
+        assert!((bound / by_hand - 1.0).abs() < 1e-12);
+        assert_eq!(v.validity, Validity::of_error(bound));
+        for (params, fraction, named) in [
+            (
+                PressFitParams {
+                    length: 30.0,
+                    ..inside
+                },
+                0.5,
+                "L/r",
+            ),
+            (
+                PressFitParams {
+                    length: 200.0,
+                    ..inside
+                },
+                0.5,
+                "L/r",
+            ),
+            (
+                PressFitParams {
+                    bore_radius: 19.0,
+                    ..inside
+                },
+                0.5,
+                "(r - ri)/r",
+            ),
+            (
+                PressFitParams {
+                    outer_radius: 70.0,
+                    ..inside
+                },
+                0.5,
+                "(ro - r)/r",
+            ),
+            (
+                PressFitParams {
+                    tangential_stiffness: 2e4,
+                    ..inside
+                },
+                0.5,
+                "K_T r / Es",
+            ),
+            (inside, 0.9, "F/F_gross"),
+        ] {
+            let v = at(params, fraction);
+            assert_eq!(v.validity, Validity::NotCalibrated, "{named}");
+            assert!(v.expected_error.is_none());
+            assert!(v.outside_calibration.unwrap().starts_with(named), "{named}");
+        }
+        // The indicators vanish with their causes: no load, no Poisson swelling; a soft
+        // interface against stiff walls, no wall shear.
+        assert_eq!(at(inside, 0.0).poisson_coupling, 0.0);
+        let soft = PressFitParams {
+            tangential_stiffness: 1e-3,
+            ..inside
+        };
+        assert!(at(soft, 0.5).wall_shear < 1e-6);
+    }
 }

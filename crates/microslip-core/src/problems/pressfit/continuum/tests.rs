@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::kernel::validity::Validity;
+use crate::problems::pressfit::closed_form::PressFit;
 
 const FIT: PressFitParams = PressFitParams::CCX98;
 
@@ -87,7 +88,7 @@ fn the_interface_carries_f_and_below_first_slip_delta_is_linear() {
             state.transferred_force
         );
         // The shear integrates to the same force over the interface's area (2 pi r dx).
-        let grid = Grid::new(&FIT, mesh(4), 1.0 / fit.axial().decay_rate());
+        let grid = Grid::new(&FIT, mesh(4), 1.0 / decay_rate(&FIT));
         let area: Vec<f64> = grid
             .two
             .pair_weights
@@ -237,4 +238,61 @@ fn inputs_it_cannot_resolve_are_refused_with_their_reason() {
     assert!(lopsided.contains("taller than long"), "{lopsided}");
     let path = solve_pressfit_continuum_path(FIT, &[500.0, 100.0], m).unwrap_err();
     assert!(path.to_string().contains("must not decrease"), "{path}");
+}
+
+/// Every accepted input gives finite numbers or a refusal, never a NaN nor a panic: extreme
+/// interfaces, a nearly incompressible shaft, a tiny interference, thin and thick walls.
+#[test]
+fn extreme_inputs_are_answered_finitely_or_refused() {
+    let cases = [
+        PressFitParams {
+            tangential_stiffness: 1e-6,
+            ..FIT
+        },
+        PressFitParams {
+            tangential_stiffness: 1e7,
+            ..FIT
+        },
+        PressFitParams {
+            shaft_poisson: 0.49,
+            bore_radius: 0.0,
+            ..FIT
+        },
+        PressFitParams {
+            interference: 1e-6,
+            friction: 1e-3,
+            ..FIT
+        },
+        PressFitParams {
+            bore_radius: 19.9,
+            outer_radius: 20.1,
+            length: 5.0,
+            ..FIT
+        },
+        PressFitParams {
+            outer_radius: 400.0,
+            hub_modulus: 1e3,
+            ..FIT
+        },
+    ];
+    for params in cases {
+        let fit = PressFit::new(params).unwrap();
+        let forces = [0.3, 0.99].map(|f| f * fit.gross_slip_force());
+        match solve_pressfit_continuum_path(params, &forces, mesh(2)) {
+            Ok(states) => {
+                for state in states {
+                    assert!(state.delta.is_finite() && state.delta >= 0.0, "{params:?}");
+                    assert!(state.pressure.iter().all(|(_, p)| p.is_finite()));
+                }
+            }
+            Err(e) => assert!(!e.to_string().is_empty()),
+        }
+    }
+    // Stiffer still, the mesh that resolves 1/lambda is refused by its size before it is built.
+    let stiff = PressFitParams {
+        tangential_stiffness: 1e8,
+        ..FIT
+    };
+    let refused = solve_pressfit_continuum(stiff, 100.0, mesh(2)).unwrap_err();
+    assert!(refused.to_string().contains("interface pairs"), "{refused}");
 }
