@@ -542,7 +542,13 @@ mod tests {
             let text = format!("{load},{response}\n10,0.1\n20,0.2\n30,0.3\n");
             let read = parse_measured_response_with_progress(&text, &mine, &mut |_, _| {});
             assert_eq!(read.unwrap().points.len(), 3, "{text}");
-            for theirs in fittable.clone().filter(|s| s.kind() != mine.kind()) {
+            // Another problem's columns, where they differ (the lap joint and the press fit
+            // both read Delta against F: either reads the other's curve).
+            let others = fittable.clone().filter(|s| {
+                s.kind() != mine.kind()
+                    && (s.load_column(), s.response_column()) != (load, response)
+            });
+            for theirs in others {
                 let message = parse_measured_response_with_progress(&text, &theirs, &mut |_, _| {})
                     .unwrap_err()
                     .to_string();

@@ -3,7 +3,7 @@
 Units everywhere: mm, N, MPa; the tangential stiffness KT in MPa/mm.
 
 One class per problem of the registry (``TwinBeams``, ``Plate``, ``LapJoint``,
-``HertzianCylinder``), built with keyword parameters (a parameter not given takes the bundled paper data set's value) or from a preset::
+``HertzianCylinder``, ``PressFit``), built with keyword parameters (a parameter not given takes the bundled paper data set's value) or from a preset::
 
     import microslip
     beams = microslip.preset("paper-beams")          # or microslip.TwinBeams(KT=600, F=100)

@@ -11,7 +11,8 @@ use crate::study::curves::{Spacing, response_vs_param};
 
 /// The range charted for `param` around its current `value`: the step's natural span (a decade
 /// each way for multiplicative parameters, 0 to 3 F_thre or 1.25 F for the force, the whole range
-/// of nu), inside the domain; and whether the axis is logarithmic.
+/// of nu or of the press fit's bore), inside the range the other inputs accept; and whether the
+/// axis is logarithmic.
 fn range(model: &Model, param: Param, value: f64) -> (f64, f64, bool) {
     let spec = param.spec();
     // The domain, narrowed where the other inputs bound this one (the lap joint's F <= F_gross).
@@ -19,7 +20,7 @@ fn range(model: &Model, param: Param, value: f64) -> (f64, f64, bool) {
     let clamp = |v: f64| v.clamp(min, max);
     match spec.scale {
         Scale::Factor { .. } => (clamp(value / 10.0), clamp(value * 10.0), true),
-        Scale::Add { min, max, .. } => (min, max, false),
+        Scale::Add { min, max, .. } => (clamp(min), clamp(max), false),
         Scale::FractionOfScale { .. } => {
             // Only a problem's load steps in fractions of a scale: its regime scale.
             let scale = model.regime_scale().unwrap_or(value);
@@ -92,7 +93,7 @@ mod tests {
             let model = Inputs::paper(kind).validate().unwrap();
             for &param in kind.params() {
                 let plot = build(&model, param);
-                assert_eq!(plot.series.len(), 3, "{param}");
+                assert_eq!(plot.series.len(), 3, "{param}: {}", plot.title);
                 assert!(plot.x.bounds[0] < plot.x.bounds[1], "{param}");
                 for s in &plot.series {
                     assert!(

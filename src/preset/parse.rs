@@ -263,7 +263,10 @@ mod tests {
             Preset::parse("description = 3\nmodel = 4\n", "x", PresetSource::Bundled).unwrap_err();
         assert_eq!(
             problems[0].to_string(),
-            "line 2: invalid model = a non-string value: must be \"beam\", \"plate\", \"lap\" or \"cylinder\""
+            format!(
+                "line 2: invalid model = a non-string value: must be {}",
+                ModelKind::choices()
+            )
         );
     }
 
@@ -313,7 +316,10 @@ mod tests {
             Preset::parse("model = \"shell\"\n", "x", PresetSource::Bundled).unwrap_err();
         assert_eq!(
             problems[0].to_string(),
-            "line 1: invalid model = 'shell': must be \"beam\", \"plate\", \"lap\" or \"cylinder\""
+            format!(
+                "line 1: invalid model = 'shell': must be {}",
+                ModelKind::choices()
+            )
         );
     }
 

@@ -572,7 +572,10 @@ fn a_preset_of_the_other_model_names_the_command_that_was_run() {
         let expected = if command.contains("plate") {
             format!("{command} needs a plate preset")
         } else if command.contains("cycle") {
-            format!("{command} needs a preset of a problem with a load (beam, lap, cylinder)")
+            format!(
+                "{command} needs a preset of a problem with a load ({})",
+                super::loaded_problems(", ")
+            )
         } else {
             format!("{command} needs a beam preset")
         };

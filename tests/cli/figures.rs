@@ -612,7 +612,10 @@ fn the_lap_joint_from_the_command_line() {
     // The plate has no load to cycle.
     let plate = failure(&["cycle", "--amplitude", "1", "--preset", "paper-plate"], 2);
     assert!(
-        plate.contains("needs a preset of a problem with a load (beam, lap, cylinder)"),
+        plate.contains(&format!(
+            "needs a preset of a problem with a load ({})",
+            super::loaded_problems(", ")
+        )),
         "{plate}"
     );
 }

@@ -40,8 +40,11 @@ fn the_generic_fit_refuses_a_problem_without_a_load_and_a_model_its_preset_contr
     let stderr = failure(&["fit", beam, "--preset", "paper-plate"], 2);
     assert_eq!(
         stderr.trim(),
-        "microslip: fit: preset 'paper-plate' is a plate preset, which has no load to fit a \
-         curve against; fit takes a beam or lap or cylinder preset"
+        format!(
+            "microslip: fit: preset 'paper-plate' is a plate preset, which has no load to fit a \
+             curve against; fit takes a {} preset",
+            super::loaded_problems(" or ")
+        )
     );
     let stderr = failure(
         &["fit", beam, "--model", "lap", "--preset", "paper-beams"],

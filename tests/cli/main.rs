@@ -13,6 +13,17 @@ mod problem_commands;
 mod reports;
 mod solve_and_recipes;
 
+/// The keys of the registry's problems that have a load (every one but the plate today), joined
+/// by `sep`: what a refusal lists, from the registry, so that a new problem needs no test edit.
+fn loaded_problems(sep: &str) -> String {
+    microslip::problems::ModelKind::ALL
+        .iter()
+        .filter(|k| k.description().load.is_some())
+        .map(|k| k.name())
+        .collect::<Vec<_>>()
+        .join(sep)
+}
+
 fn microslip() -> Command {
     let mut cmd = Command::cargo_bin("microslip").expect("binary built by cargo");
     // Keep user presets of the machine running the tests out of the way.

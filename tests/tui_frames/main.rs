@@ -135,6 +135,26 @@ fn cylinder_views() {
         assert!(small.contains(needed), "{needed}\n{small}");
     }
     insta::assert_snapshot!("cylinder_view_80x24_ascii", small);
+    // Every line is reachable at 80x24: the title counts those left out, and `i` walking the
+    // lines scrolls the pane to each (issue 47 item 5: s(0), the Mindlin lines, K_T in MPa/um).
+    assert!(small.contains("Regime (i +5)"), "{small}");
+    let mut walk = app_with("cylinder-steel-pad", Charset::Ascii, false);
+    press(&mut walk, Action::Explain);
+    let mut seen = String::new();
+    for _ in 0..20 {
+        seen.push_str(&screen(&walk, 80, 24));
+        press(&mut walk, Action::Next);
+    }
+    for hidden in [
+        "s(0) 1.88827 um",
+        "c Mindlin 0.5252 mm",
+        "s(a) Mindlin 0.881963 um",
+        "D Mindlin 0.113 N mm/mm",
+        "K_T = 100 MPa/um",
+    ] {
+        assert!(!small.contains(hidden), "{hidden} shown without i");
+        assert!(seen.contains(hidden), "{hidden} never reached");
+    }
     let mut app = app_with("cylinder-steel-pad", Charset::Unicode, true);
     insta::assert_snapshot!("cylinder_view_120x40", screen(&app, 120, 40));
     for name in [
@@ -143,6 +163,44 @@ fn cylinder_views() {
         "cylinder_slip_chart",
         "cylinder_loop_chart",
         "cylinder_dissipation_chart",
+    ] {
+        press(&mut app, Action::NextChart);
+        insta::assert_snapshot!(name, screen(&app, 100, 30));
+    }
+}
+
+/// The press fit, as a newcomer meets it from its preset (CalculiX issue #98's fit at half its
+/// F_gross): at 80x24 in ASCII, Lamé's p and the face that slides first reachable, Delta and F_1
+/// shown (the values of an independent finite-difference solve of the shear-lag equation,
+/// validation/pressfit/indep_fd.py: Delta 6.2803e-5 mm at 685.5 N, F_1 970.70 N at x = 0); at
+/// 120x40 in Unicode, and each of its charts.
+#[test]
+fn pressfit_views() {
+    let ascii = app_with("pressfit-ccx98", Charset::Ascii, false);
+    let small = screen(&ascii, 80, 24);
+    for needed in [
+        "Press fit (pushed out)",
+        "delta",
+        "At F = 685.5 N (push-out)",
+        "Delta regularized 0.0628032 um",
+        "F_1 970.702 N: x=0 slides",
+        "FE: not calibrated",
+    ] {
+        assert!(small.contains(needed), "{needed}\n{small}");
+    }
+    insta::assert_snapshot!("pressfit_view_80x24_ascii", small);
+    let mut app = app_with("pressfit-ccx98", Charset::Unicode, true);
+    let large = screen(&app, 120, 40);
+    for needed in ["p 6.152 MPa (strain 6.761)", "F_gross 1371 N: all slides"] {
+        assert!(large.contains(needed), "{needed}\n{large}");
+    }
+    insta::assert_snapshot!("pressfit_view_120x40", large);
+    for name in [
+        "pressfit_zone_chart",
+        "pressfit_shear_chart",
+        "pressfit_slip_chart",
+        "pressfit_loop_chart",
+        "pressfit_dissipation_chart",
     ] {
         press(&mut app, Action::NextChart);
         insta::assert_snapshot!(name, screen(&app, 100, 30));

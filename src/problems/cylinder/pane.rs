@@ -27,7 +27,7 @@ impl PaneFace for CylinderProblem {
         &[("KTa/E*", 7), ("c mm", 8), ("s(a) mm", 9)];
 
     fn parameters_title(_params: &Self::Params) -> String {
-        "Hertzian cylinder (P, Q in N/mm)".to_string()
+        "Hertzian cylinder (P, Q N/mm)".to_string()
     }
 
     /// The half-plane answer's envelope in the regime pane's title, as the lap joint's: "FE

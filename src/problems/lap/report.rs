@@ -15,7 +15,7 @@ use crate::problems::inputs::Inputs;
 use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace, point_continuum};
 use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleKeys, CycleWords};
-use crate::report::point::{InputsReport, regime_label, validity_label};
+use crate::report::point::{InputsReport, WideLaws, regime_label, threshold_line, validity_label};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::{Answer, LoopPoint, lap_point};
 
@@ -523,69 +523,59 @@ impl LapReport {
             number(self.covers_stiffness)
         );
         let _ = writeln!(out, "Thresholds");
-        let _ = writeln!(
-            out,
-            "  F_1        = {:<14} regularized: sliding starts above it, at {}",
+        threshold_line(
+            &mut out,
+            "F_1",
             format!("{} N", number(self.first_slip_force)),
-            self.first_slip_words
+            &format!(
+                "regularized: sliding starts above it, at {}",
+                self.first_slip_words
+            ),
         );
-        let _ = writeln!(
-            out,
-            "  F_2        = {:<14} regularized: both ends slide above it",
+        threshold_line(
+            &mut out,
+            "F_2",
             format!("{} N", number(self.second_slip_force)),
+            "regularized: both ends slide above it",
         );
-        let _ = writeln!(
-            out,
-            "  F_gross    = {:<14} both laws: the whole overlap slides (2 b mu P L); no more is carried",
+        threshold_line(
+            &mut out,
+            "F_gross",
             format!("{} N", number(self.gross_slip_force)),
+            "both laws: the whole overlap slides (2 b mu P L); no more is carried",
         );
-        let _ = writeln!(
-            out,
-            "  mu P / K_T = {:<14} saturation slip; 1/lambda = {} mm, the elastic slip's decay length",
+        threshold_line(
+            &mut out,
+            "mu P / K_T",
             format!("{} um", number(mm_to_um(self.saturation_slip))),
-            number(self.decay_length)
+            &format!(
+                "saturation slip; 1/lambda = {} mm, the elastic slip's decay length",
+                number(self.decay_length)
+            ),
         );
-        // Wider than the other problems' columns: the lap joint's regimes have three zones.
         let (c, r) = (&self.coulomb, &self.regularized);
-        let row = |out: &mut String, label: &str, coulomb: String, regularized: String| {
-            let _ = writeln!(out, "  {label:<26}{coulomb:<31}{regularized}");
-        };
-        let _ = writeln!(
-            out,
-            "{:<28}{:<31}regularized",
-            format!("At F = {} N", number(self.force)),
-            "Coulomb"
-        );
-        row(
-            &mut out,
-            "regime",
-            c.regime.to_string(),
-            r.regime.to_string(),
-        );
-        row(
-            &mut out,
+        let mut table = WideLaws(&mut out);
+        table.heading(format!("At F = {} N", number(self.force)));
+        table.row("regime", c.regime.to_string(), r.regime.to_string());
+        table.row(
             "Delta (mm)",
             number(c.joint_displacement),
             number(r.joint_displacement),
         );
-        row(
-            &mut out,
+        table.row(
             "a, from x = 0 (mm)",
             number(c.slide_at_inner_end),
             number(r.slide_at_inner_end),
         );
-        row(
-            &mut out,
+        table.row(
             "d, from x = L (mm)",
             number(c.slide_at_cover_ends),
             number(r.slide_at_cover_ends),
         );
         if c.joint_displacement > 0.0 {
-            let _ = writeln!(
-                out,
-                "  {:<26}{}",
+            table.both(
                 "Delta_reg / Delta_Coulomb",
-                number(r.joint_displacement / c.joint_displacement)
+                number(r.joint_displacement / c.joint_displacement),
             );
         }
         let _ = writeln!(

@@ -16,7 +16,7 @@ use crate::problems::load_driven::MasingCycle;
 use crate::problems::stiffness::mm_to_um;
 use crate::report::face::{KtColumn, ReportFace};
 use crate::report::point::cycle::{self, AnyCycleFace, CycleFace, CycleKeys, CycleWords};
-use crate::report::point::{InputsReport, regime_label, validity_label};
+use crate::report::point::{InputsReport, WideLaws, regime_label, threshold_line, validity_label};
 use crate::report::{number, number_with, sanitize};
 use crate::study::curves::{Answer, LoopPoint};
 
@@ -426,74 +426,60 @@ impl PressFitReport {
             number(self.hub_rigidity)
         );
         let _ = writeln!(out, "Thresholds");
-        let _ = writeln!(
-            out,
-            "  F_1        = {:<14} regularized: sliding starts above it, at {}",
+        threshold_line(
+            &mut out,
+            "F_1",
             format!("{} N", number(self.first_slip_force)),
-            self.first_slip_words
+            &format!(
+                "regularized: sliding starts above it, at {}",
+                self.first_slip_words
+            ),
         );
-        let _ = writeln!(
-            out,
-            "  F_2        = {:<14} regularized: both faces slide above it",
+        threshold_line(
+            &mut out,
+            "F_2",
             format!("{} N", number(self.second_slip_force)),
+            "regularized: both faces slide above it",
         );
-        let _ = writeln!(
-            out,
-            "  F_gross    = {:<14} both laws: the whole fit slides (mu p 2 pi r L); no more is carried",
+        threshold_line(
+            &mut out,
+            "F_gross",
             format!("{} N", number(self.gross_slip_force)),
+            "both laws: the whole fit slides (mu p 2 pi r L); no more is carried",
         );
-        let _ = writeln!(
-            out,
-            "  mu p / K_T = {:<14} saturation slip; 1/lambda = {} mm, the elastic slip's decay length",
+        threshold_line(
+            &mut out,
+            "mu p / K_T",
             format!("{} um", number(mm_to_um(self.saturation_slip))),
-            number(self.decay_length)
+            &format!(
+                "saturation slip; 1/lambda = {} mm, the elastic slip's decay length",
+                number(self.decay_length)
+            ),
         );
         let (c, r) = (&self.coulomb, &self.regularized);
-        let row = |out: &mut String, label: &str, coulomb: String, regularized: String| {
-            let _ = writeln!(out, "  {label:<26}{coulomb:<31}{regularized}");
-        };
-        let _ = writeln!(
-            out,
-            "{:<28}{:<31}regularized",
-            format!("At F = {} N", number(self.force)),
-            "Coulomb"
-        );
-        row(
-            &mut out,
-            "regime",
-            c.regime.to_string(),
-            r.regime.to_string(),
-        );
-        row(
-            &mut out,
-            "Delta (mm)",
-            number(c.displacement),
-            number(r.displacement),
-        );
-        row(
-            &mut out,
+        let mut table = WideLaws(&mut out);
+        table.heading(format!("At F = {} N", number(self.force)));
+        table.row("regime", c.regime.to_string(), r.regime.to_string());
+        table.row("Delta (mm)", number(c.displacement), number(r.displacement));
+        table.row(
             "a, from x = 0 (mm)",
             number(c.slide_from_loaded_face),
             number(r.slide_from_loaded_face),
         );
-        row(
-            &mut out,
+        table.row(
             "d, from x = L (mm)",
             number(c.slide_from_held_face),
             number(r.slide_from_held_face),
         );
-        row(
-            &mut out,
+        table.row(
             "D per cycle +-F (N mm)",
             number_with(c.dissipation, 4),
             number_with(r.dissipation, 4),
         );
         if c.displacement > 0.0 {
-            let _ = writeln!(
-                out,
-                "  {:<26}{}",
+            table.both(
                 "Delta_reg / Delta_Coulomb",
-                number(r.displacement / c.displacement)
+                number(r.displacement / c.displacement),
             );
         }
         let _ = writeln!(

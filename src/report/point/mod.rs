@@ -120,6 +120,34 @@ impl Serialize for InputsReport {
     }
 }
 
+/// One threshold of a text report, its name, value (with its unit) and words in columns:
+/// `  F_1        = 970.702 N      regularized: sliding starts above it`.
+pub(crate) fn threshold_line(out: &mut String, name: &str, value: String, words: &str) {
+    let _ = writeln!(out, "  {name:<10} = {value:<14} {words}");
+}
+
+/// The two laws side by side in the shear-lag problems' text reports (the lap joint, the press
+/// fit): wider than [`SideBySide`], their regimes having three zones. `heading` at the load,
+/// then one [`WideLaws::row`] per quantity.
+pub(crate) struct WideLaws<'a>(pub &'a mut String);
+
+impl WideLaws<'_> {
+    /// The table's heading: `At F = 100 N`, then the laws' names over their columns.
+    pub fn heading(&mut self, at: String) {
+        let _ = writeln!(self.0, "{at:<28}{:<31}regularized", "Coulomb");
+    }
+
+    /// One quantity, Coulomb's value and the regularized law's.
+    pub fn row(&mut self, label: &str, coulomb: String, regularized: String) {
+        let _ = writeln!(self.0, "  {label:<26}{coulomb:<31}{regularized}");
+    }
+
+    /// A value of both laws together (their ratio), in the first column.
+    pub fn both(&mut self, label: &str, value: String) {
+        let _ = writeln!(self.0, "  {label:<26}{value}");
+    }
+}
+
 /// The two laws side by side in the text reports: regime, response, zone end and the ratio of
 /// the responses.
 pub(crate) struct SideBySide {

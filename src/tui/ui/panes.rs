@@ -74,12 +74,21 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
     // The beams' and the lap joint's pane are full at 80x24: their envelope goes in the title,
     // which `i` explains first.
     let title_line = &regime.title_line;
-    let title = title_line.as_ref().map_or_else(
-        || "Regime (i explains)".to_string(),
-        |t| format!("Regime (i), {}", t.text),
-    );
-    let mut block = pane(app, &title);
-    let inner = block.inner(area);
+    let title = |hidden: usize| {
+        // `i` reaches the lines the pane leaves out: it says how many.
+        let key = match hidden {
+            0 => "i".to_string(),
+            n => format!("i +{n}"),
+        };
+        title_line.as_ref().map_or_else(
+            || match hidden {
+                0 => "Regime (i explains)".to_string(),
+                n => format!("Regime (i explains, +{n})"),
+            },
+            |t| format!("Regime ({key}), {}", t.text),
+        )
+    };
+    let inner = pane(app, &title(0)).inner(area);
     let height = usize::from(inner.height);
     let width = usize::from(inner.width.saturating_sub(3)).max(10);
     let explained: usize = summary
@@ -101,11 +110,6 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
                 .map(|s| (false, s))
         })
         .unwrap_or((false, StripSize::Compact));
-    if size == StripSize::Compact {
-        // The compact strip has no legend row: its symbols are explained on the pane's border.
-        block = block.title_bottom(strip::legend_of(&regime.strip, &theme));
-    }
-    frame.render_widget(block, area);
     let mut keep = vec![true; summary.len()];
     let mut ranks: Vec<(u8, usize)> = summary
         .iter()
@@ -125,6 +129,37 @@ pub fn draw_summary(frame: &mut Frame, app: &App, area: Rect) {
         Mode::Explain { line } => line.checked_sub(usize::from(title_line.is_some())),
         _ => None,
     };
+    // Every line reachable on the smallest screen: while `i` walks the lines, a line the pane
+    // left out (or cut at its bottom) is shown in a window of consecutive lines that ends on it.
+    let rows = height.saturating_sub(size.rows());
+    if let Some(h) = highlighted.filter(|&h| h < summary.len()) {
+        let shown_before = keep[..h].iter().filter(|&&k| k).count();
+        if !room && (!keep[h] || shown_before >= rows) {
+            let start = (h + 1).saturating_sub(rows.max(1));
+            for (i, k) in keep.iter_mut().enumerate() {
+                *k = (start..start + rows).contains(&i);
+            }
+        }
+    }
+    // The lines out of sight: those left out, and those below the pane's last text row.
+    let hidden = if room {
+        0
+    } else {
+        summary.len() - keep.iter().filter(|&&k| k).count().min(rows)
+    };
+    // The count only where the title keeps its envelope whole (the beams' has no room for it).
+    let counted = title(hidden);
+    let title = if counted.chars().count() + 4 <= usize::from(area.width) {
+        counted
+    } else {
+        title(0)
+    };
+    let mut block = pane(app, &title);
+    if size == StripSize::Compact {
+        // The compact strip has no legend row: its symbols are explained on the pane's border.
+        block = block.title_bottom(strip::legend_of(&regime.strip, &theme));
+    }
+    frame.render_widget(block, area);
     let mut lines = Vec::new();
     for (i, line) in summary.iter().enumerate().filter(|(i, _)| keep[*i]) {
         let style = if highlighted == Some(i) {

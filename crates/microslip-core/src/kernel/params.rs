@@ -197,7 +197,11 @@ impl Domain {
     pub fn describe(self, unit: Unit) -> String {
         let range = match self {
             Domain::PoissonRatio => "[0, 0.5)".to_string(),
-            other => format!("[{}, {}]", bound(other.min()), bound(other.max())),
+            other => format!(
+                "[{}, {}]",
+                inward(other.min(), Inward::Up),
+                inward(other.max(), Inward::Down)
+            ),
         };
         match unit {
             Unit::Dimensionless => format!("must be in {range} (dimensionless)"),
@@ -244,6 +248,41 @@ impl Domain {
 
 /// A bound of a domain as range messages write it: plain between 1e-3 and 1e6 (`10`, `0.5`),
 /// exponent form outside (`1e-6`, `1e12`), as ranges are usually written.
+/// Which way a range's end is rounded to stay inside the range.
+#[derive(Clone, Copy)]
+enum Inward {
+    /// A lower end: rounded up.
+    Up,
+    /// An upper end: rounded down.
+    Down,
+}
+
+/// A range's end as a message prints it: as [`bound`] where that is short (a domain's own ends,
+/// `1e6`, `0.5`), else to 6 significant digits rounded toward the inside of the range, so that
+/// every number the message shows as allowed is allowed (an end the other inputs set, F_gross =
+/// 264.53439240351895 N, reads `264.534`; `0.29999993999999996` reads `0.299999`).
+fn inward(value: f64, way: Inward) -> String {
+    let exact = bound(value);
+    let digits = exact
+        .split(['e', 'E'])
+        .next()
+        .unwrap_or_default()
+        .chars()
+        .filter(char::is_ascii_digit)
+        .collect::<String>();
+    if !value.is_finite() || value == 0.0 || digits.trim_start_matches('0').len() <= 7 {
+        return exact;
+    }
+    let step = 10f64.powi(value.abs().log10().floor() as i32 - 5);
+    let rounded = match way {
+        Inward::Up => (value / step).ceil() * step,
+        Inward::Down => (value / step).floor() * step,
+    };
+    let text = format!("{rounded:.5e}");
+    let shown: f64 = text.parse().unwrap_or(rounded);
+    bound(shown)
+}
+
 fn bound(value: f64) -> String {
     if value.is_finite() && value != 0.0 && !(1e-3..1e6).contains(&value.abs()) {
         format!("{value:e}")
@@ -543,6 +582,50 @@ pub fn parse_number(text: &str) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A range's computed end prints short and inside the range; a short one prints exactly.
+    #[test]
+    fn computed_range_ends_print_short_and_inside() {
+        let range = |lo: f64, hi: f64| {
+            let domain = if lo == 0.0 {
+                Domain::NonNegative { max: hi }
+            } else {
+                Domain::Positive { min: lo, max: hi }
+            };
+            domain.describe(Unit::Newton)
+        };
+        assert_eq!(
+            range(0.0, 264.534_392_403_518_95),
+            "must be in [0, 264.534] N"
+        );
+        assert_eq!(
+            range(0.0, 0.299_999_939_999_999_96),
+            "must be in [0, 0.299999] N"
+        );
+        assert_eq!(
+            range(0.300_000_000_000_000_04, 6000.0),
+            "must be in [0.300001, 6000] N"
+        );
+        assert_eq!(
+            range(0.0, 4_531_143.250_369_892),
+            "must be in [0, 4.53114e6] N"
+        );
+        assert_eq!(range(1e-3, 1e6), "must be in [0.001, 1e6] N");
+        for (lo, hi) in [
+            (0.123_456_789_123, 9.876_543_212_345e7),
+            (1.000_000_1, 1.000_000_9),
+        ] {
+            let text = range(lo, hi);
+            let inner = text
+                .trim_start_matches("must be in [")
+                .trim_end_matches("] N");
+            let (a, b) = inner.split_once(", ").unwrap();
+            assert!(
+                a.parse::<f64>().unwrap() >= lo && b.parse::<f64>().unwrap() <= hi,
+                "{text}"
+            );
+        }
+    }
 
     #[test]
     fn echoed_numbers_are_plain_when_short_and_exponential_when_long() {

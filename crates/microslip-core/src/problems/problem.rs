@@ -160,6 +160,68 @@ pub trait Problem: Send + Sync + Sized + 'static {
             })
     }
 
+    /// The accepted range of the parameter at `index` (domain `[min, max]`) when the load
+    /// `load` must stay below a bound `gross` proportional to it (the lap joint's F_gross = 2 b mu
+    /// P L in each of b, mu, P, L): the value at which the bound falls to the load, moved up past
+    /// round-off until the model is accepted there (a few ulps at most), to `max`.
+    fn range_above_proportional_bound(
+        model: &Self::Model,
+        index: usize,
+        (min, max): (f64, f64),
+        (load, gross): (f64, f64),
+    ) -> (f64, f64) {
+        let mut params = Self::params(model);
+        let value = Self::value(&params, index).unwrap_or(min);
+        let mut lowest = min.max(value * load / gross).min(max);
+        for _ in 0..8 {
+            if let Some(slot) = Self::slot(&mut params, index) {
+                *slot = lowest;
+            }
+            if Self::model(&params).is_ok() {
+                break;
+            }
+            lowest = lowest.next_up().min(max);
+        }
+        (lowest, max)
+    }
+
+    /// The accepted value of the parameter at `index` nearest to `outside`, on the way from the
+    /// model's own (accepted) value, less 1e-9 of the way: bisection on acceptance, for bounds
+    /// the other inputs set in no closed form (the press fit's F <= F_gross as its radii move).
+    /// Assumes one boundary between the two values; `outside` itself when the model accepts it.
+    fn accepted_toward(model: &Self::Model, index: usize, outside: f64) -> f64 {
+        let mut params = Self::params(model);
+        let Some(inside) = Self::value(&params, index) else {
+            return outside;
+        };
+        let mut accepts = |value: f64| match Self::slot(&mut params, index) {
+            Some(slot) => {
+                *slot = value;
+                Self::model(&params).is_ok()
+            }
+            None => false,
+        };
+        if accepts(outside) {
+            return outside;
+        }
+        let (mut good, mut bad) = (inside, outside);
+        for _ in 0..200 {
+            let mid = 0.5 * (good + bad);
+            if mid == good || mid == bad {
+                break;
+            }
+            if accepts(mid) {
+                good = mid;
+            } else {
+                bad = mid;
+            }
+        }
+        // A hair inside: samples spaced on a log scale come back to their ends within a few
+        // ulps, which must not cross the boundary.
+        let safe = good + 1e-9 * (inside - good);
+        if accepts(safe) { safe } else { good }
+    }
+
     /// The same model with the parameter `key` set to the accepted value nearest to `value`
     /// (its domain, then [`Problem::accepted_range`]): infallible, for sweeps and root finding
     /// whose range was checked; should the model refuse it all the same, `model` as it is.

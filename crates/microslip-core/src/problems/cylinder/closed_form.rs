@@ -41,10 +41,11 @@ impl TangentialLoad {
 }
 
 impl Cylinder {
-    /// Validates every input against its domain ([`CylinderParam::spec`]).
+    /// Validates every input against its domain ([`CylinderParam::spec`]), then the contact's
+    /// half-width a < R.
     ///
     /// # Errors
-    /// The first input out of its domain, in display order.
+    /// The first input out of its domain, in display order; then P when a >= R (P >= pi E* R / 4).
     ///
     /// # Examples
     /// ```
@@ -67,6 +68,18 @@ impl Cylinder {
         let nu = params.poisson;
         let contact_modulus = params.modulus / (2.0 * (1.0 - nu * nu));
         let half_width = (4.0 * params.normal_load * params.radius / (PI * contact_modulus)).sqrt();
+        // A contact at least as wide as the cylinder is no Hertzian contact of a cylinder on a
+        // flat (the half-plane theory wants a << R): refused, naming P, the load that widens it
+        // (a = R at P = pi E* R / 4).
+        if half_width >= params.radius {
+            let widest = PI * contact_modulus * params.radius / 4.0;
+            return Err(CylinderParam::NormalLoad.spec().above(
+                params.normal_load,
+                widest.next_down(),
+                "pi E* R / 4, where Hertz's half-width a reaches R: no contact of a cylinder on a \
+                 flat beyond it",
+            ));
+        }
         let peak_pressure = 2.0 * params.normal_load / (PI * half_width);
         Ok(Cylinder {
             params,

@@ -117,7 +117,8 @@ impl Problem for CylinderProblem {
         }
     }
 
-    /// The domain, and Q <= mu P, which bounds Q from above and P and mu from below.
+    /// The domain, and Q <= mu P, which bounds Q from above and P and mu from below; and
+    /// Hertz's a < R, which bounds P from above (pi E* R / 4) and R and E from below.
     fn accepted_range(model: &CylinderModel, index: usize) -> (f64, f64) {
         let Some(&param) = CylinderParam::ALL.get(index) else {
             return (f64::NAN, f64::NAN);
@@ -127,24 +128,23 @@ impl Problem for CylinderProblem {
         let gross = model.cylinder.gross_slip_load();
         match param {
             CylinderParam::TangentialLoad => (min, max.min(gross)),
-            CylinderParam::NormalLoad | CylinderParam::Friction => {
-                let mut params = Self::params(model);
-                let value = Self::value(&params, index).unwrap_or(min);
-                // The value at which mu P falls to Q, moved up past round-off until the load is
-                // accepted there (a few ulps at most).
-                let mut lowest = min
-                    .max(value * model.load.newtons_per_mm() / gross)
-                    .min(max);
-                for _ in 0..8 {
-                    if let Some(slot) = Self::slot(&mut params, index) {
-                        *slot = lowest;
-                    }
-                    if Self::model(&params).is_ok() {
-                        break;
-                    }
-                    lowest = lowest.next_up().min(max);
-                }
-                (lowest, max)
+            CylinderParam::NormalLoad => {
+                let (lowest, _) = Self::range_above_proportional_bound(
+                    model,
+                    index,
+                    (min, max),
+                    (model.load.newtons_per_mm(), gross),
+                );
+                (lowest, Self::accepted_toward(model, index, max))
+            }
+            CylinderParam::Friction => Self::range_above_proportional_bound(
+                model,
+                index,
+                (min, max),
+                (model.load.newtons_per_mm(), gross),
+            ),
+            CylinderParam::Radius | CylinderParam::Modulus => {
+                (Self::accepted_toward(model, index, min), max)
             }
             _ => (min, max),
         }

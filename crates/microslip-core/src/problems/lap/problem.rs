@@ -130,21 +130,12 @@ impl Problem for LapJointProblem {
         match param {
             LapParam::Force => (min, max.min(gross)),
             LapParam::Length | LapParam::Width | LapParam::Pressure | LapParam::Friction => {
-                let mut params = Self::params(model);
-                let value = Self::value(&params, index).unwrap_or(min);
-                // The value at which F_gross falls to F, moved up past round-off until the
-                // force is accepted there (a few ulps at most).
-                let mut lowest = min.max(value * model.force.newtons() / gross).min(max);
-                for _ in 0..8 {
-                    if let Some(slot) = Self::slot(&mut params, index) {
-                        *slot = lowest;
-                    }
-                    if Self::model(&params).is_ok() {
-                        break;
-                    }
-                    lowest = lowest.next_up().min(max);
-                }
-                (lowest, max)
+                Self::range_above_proportional_bound(
+                    model,
+                    index,
+                    (min, max),
+                    (model.force.newtons(), gross),
+                )
             }
             _ => (min, max),
         }

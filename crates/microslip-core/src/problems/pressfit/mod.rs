@@ -6,13 +6,17 @@
 //! (measured against the axisymmetric continuum, `continuum.rs`), and the independent
 //! discretized solver. docs/theory.md section 18 derives all of it.
 //!
-//! Not registered yet: the problem joins the registry (`with_problems!`) after the dispatch
-//! refactor, with its faces. Everything that does not name the registry's generated types is
-//! declared here and tested; the trait impls that name them (`Problem`, `LoadDriven`,
-//! `Fittable`, `Zoned`, `StiffnessAnswer`, `CrossChecked`, `Pointwise`, `Profiled`) are written in
-//! `registered/`, which cannot compile before the registry lists the problem and is therefore not
-//! declared yet; it was compiled, clippy-checked and tested with a temporary registry line
-//! (`REGISTRATION.md` beside this file says how, and what that showed).
+//! Registered (`PressFit => pressfit::PressFitProblem` in [`crate::with_problems!`]): the trait
+//! impls that name the registry's generated types (`Problem`, `LoadDriven`, `Fittable`, `Zoned`,
+//! `StiffnessAnswer`, `CrossChecked`, `Pointwise`, `Profiled`) are in `registered/`, each a
+//! delegation to the typed fit of this folder.
+//!
+//! **The torque** is not a load choice of this problem but, when it comes, a sixth problem type in
+//! this folder over [`closed_form::PressFit::torsion`] (keys with `T` for `F`, [`TORQUE_BOUND`],
+//! response theta): a [`Description`](crate::problems::Description)'s load, its bound, its
+//! response's symbol and the load's JSON key are constants the generic layers read without
+//! asking a setting (`F_N`, `F_gross`, `Delta_mm`), so a setting cannot turn F into T; a type
+//! can, with the same closed forms.
 
 pub mod closed_form;
 pub mod continuum;

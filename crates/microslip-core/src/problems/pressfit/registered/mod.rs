@@ -1,9 +1,6 @@
 //! The press fit as the registry's generic layers see it: the trait impls that name the types the
-//! registry generates (`Param::PressFit`, `Inputs::PressFit`, `Model::PressFit`), so that they
-//! compile only once the registry lists the problem. Until then this folder is not declared
-//! (`pressfit/mod.rs` says `pub mod registered;` with the registry line); it was compiled and its
-//! tests run with a temporary registry line (`REGISTRATION.md`). Each impl is a delegation to
-//! the typed press fit of the folder above.
+//! registry generates (`Param::PressFit`, `Inputs::PressFit`, `Model::PressFit`). Each impl is a
+//! delegation to the typed press fit of the folder above.
 
 pub mod cross_check;
 pub mod fittable;
@@ -19,7 +16,7 @@ use super::{PUSH_OUT_BOUND, QUANTITIES};
 use crate::problems::{Description, Param};
 
 /// Every parameter of the push-out as a [`Param`], in display order (the torque, `T`, belongs to
-/// the torsion's problem: REGISTRATION.md).
+/// the torsion's problem, to come: the folder's module docs).
 const PARAMS: [Param; PressFitParam::PUSH_OUT.len()] = {
     let keys = PressFitParam::PUSH_OUT;
     let mut all = [Param::PressFit(keys[0]); PressFitParam::PUSH_OUT.len()];

@@ -102,6 +102,48 @@ impl Problem for PressFitProblem {
         Some(Self::force_scale(&model.fit))
     }
 
+    /// The domain, narrowed where the inputs bound one another: ri < r < ro (each radius between
+    /// its neighbours), and F <= F_gross = mu p 2 pi r L, which bounds F from above and mu, delta
+    /// and L from below (F_gross is proportional to each: p to delta). The radii and the moduli
+    /// move F_gross too, not in proportion (p falls to 0 as either wall thins, and grows with
+    /// each modulus): their bounds are found by bisection on the model's acceptance.
+    fn accepted_range(model: &PressFitModel, index: usize) -> (f64, f64) {
+        let Some(&param) = PressFitParam::PUSH_OUT.get(index) else {
+            return (f64::NAN, f64::NAN);
+        };
+        let domain = param.spec().domain;
+        let (min, max) = (domain.min(), domain.max());
+        let p = model.fit.params();
+        let gross = model.fit.gross_slip_force();
+        match param {
+            PressFitParam::Force => (min, max.min(gross)),
+            PressFitParam::Friction | PressFitParam::Interference | PressFitParam::Length => {
+                Self::range_above_proportional_bound(
+                    model,
+                    index,
+                    (min, max),
+                    (model.force.value(), gross),
+                )
+            }
+            PressFitParam::FitRadius => (
+                Self::accepted_toward(model, index, min.max(p.bore_radius)),
+                Self::accepted_toward(model, index, max.min(p.outer_radius)),
+            ),
+            PressFitParam::BoreRadius => (
+                min,
+                Self::accepted_toward(model, index, max.min(p.fit_radius)),
+            ),
+            PressFitParam::OuterRadius => (
+                Self::accepted_toward(model, index, min.max(p.fit_radius)),
+                max,
+            ),
+            PressFitParam::ShaftModulus | PressFitParam::HubModulus => {
+                (Self::accepted_toward(model, index, min), max)
+            }
+            _ => (min, max),
+        }
+    }
+
     /// The shaft's modulus: the member every FE model of the fit meshes.
     fn interface(model: &PressFitModel) -> InterfaceData {
         let p = model.fit.params();
