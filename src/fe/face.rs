@@ -45,6 +45,16 @@ pub trait Deck: Problem + Registered {
     /// A malformed `.dat` line, or a result the deck asks for and the `.dat` lacks.
     fn ccx_points(run: &CcxRun, params: &Self::Params) -> Result<Vec<Self::FePoint>, ResultsError>;
 
+    /// The FE mesh along the interface of a CalculiX run of a deck of this problem, which X
+    /// differences are counted in: by default the quadratic elements of [`Deck::INTERFACE_SET`]
+    /// along x ([`CcxRun::interface_mesh`]); `None` for a deck whose comparison counts none.
+    ///
+    /// # Errors
+    /// As [`CcxRun::interface_mesh`].
+    fn interface_mesh(run: &CcxRun) -> Result<Option<InterfaceMesh>, ResultsError> {
+        run.interface_mesh().map(Some)
+    }
+
     /// The columns of a CSV curve of FE results, as `compare`'s help lists them (`F_N,w_mm`):
     /// the curve [`Deck::csv_points`] reads.
     const CSV_CURVE: Curve;
@@ -243,6 +253,38 @@ impl DeckError {
                 value,
                 allowed: domain.refusal(value, unit),
             })
+    }
+}
+
+impl DeckError {
+    /// The loads of `--loads`, each made a load by `accept` (refused in the words of its range)
+    /// and each above the one before: every problem's deck steps.
+    ///
+    /// # Errors
+    /// [`DeckError::Flag`] naming the first load refused, or the first that does not increase.
+    pub fn increasing_loads<L>(
+        loads: &[f64],
+        accept: impl Fn(f64) -> Result<L, crate::kernel::params::ParamError>,
+    ) -> Result<Vec<L>, DeckError> {
+        let mut out = Vec::with_capacity(loads.len());
+        let mut last: Option<f64> = None;
+        for &value in loads {
+            let load = accept(value).map_err(|e| DeckError::Flag {
+                flag: "--loads",
+                value,
+                allowed: e.allowed(),
+            })?;
+            if last.is_some_and(|l| l >= value) {
+                return Err(DeckError::Flag {
+                    flag: "--loads",
+                    value,
+                    allowed: "the loads must increase from one step to the next".to_string(),
+                });
+            }
+            last = Some(value);
+            out.push(load);
+        }
+        Ok(out)
     }
 }
 

@@ -156,10 +156,7 @@ fn ccx_points<P: Deck>(
         dat: &dat,
     };
     let points = run.points::<P>().map_err(|e| fail(path, e.to_string()))?;
-    let interface_mesh = Some(
-        run.interface_mesh()
-            .map_err(|e| fail(path, e.to_string()))?,
-    );
+    let interface_mesh = P::interface_mesh(&run).map_err(|e| fail(path, e.to_string()))?;
     Ok(Loaded {
         header: Some(header),
         points,
@@ -192,6 +189,11 @@ fn ccx_stick_slope(
             frd.display()
         ));
     }
+    let contact = if stick_slope::first_step_changes_friction(deck_text) {
+        stick_slope::slips_from_first_step(contact)
+    } else {
+        contact
+    };
     let interface = header.model().map_err(|e| e.to_string())?.interface();
     let card = stick_slope::friction_card(deck_text);
     let friction = Friction {

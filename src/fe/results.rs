@@ -476,25 +476,37 @@ pub(crate) fn facing_slip(
     inner: &DatBlock,
     cover: &DatBlock,
 ) -> Result<(Vec<f64>, Vec<f64>), ResultsError> {
+    facing_slip_along(nodes, inner, cover, 0)
+}
+
+/// [`facing_slip`] along the coordinate `axis` (0 for x; 1 for the axis of an axisymmetric deck,
+/// whose first coordinate is the radius): positions and slips `own - other` in that coordinate
+/// and that displacement component.
+pub(crate) fn facing_slip_along(
+    nodes: &HashMap<usize, [f64; 3]>,
+    own: &DatBlock,
+    other: &DatBlock,
+    axis: usize,
+) -> Result<(Vec<f64>, Vec<f64>), ResultsError> {
     let along = |block: &DatBlock| -> Result<Vec<(f64, usize, f64)>, ResultsError> {
         let mut line: Vec<(f64, usize, f64)> = block
             .rows
             .iter()
-            .map(|(id, u)| node_coordinate(nodes, *id).map(|c| (c[0], *id, u[0])))
+            .map(|(id, u)| node_coordinate(nodes, *id).map(|c| (c[axis], *id, u[axis])))
             .collect::<Result<_, _>>()?;
         line.sort_by(|a, b| a.0.total_cmp(&b.0));
         Ok(line)
     };
-    let (inner_line, cover_line) = (along(inner)?, along(cover)?);
-    if inner_line.len() != cover_line.len() {
+    let (own_line, other_line) = (along(own)?, along(other)?);
+    if own_line.len() != other_line.len() {
         return Err(ResultsError::Missing(format!(
             "sets {} and {} differ in length",
-            inner.set, cover.set
+            own.set, other.set
         )));
     }
-    let mut xs = Vec::with_capacity(inner_line.len());
-    let mut slips = Vec::with_capacity(inner_line.len());
-    for (&(x, id, u), &(other_x, other_id, v)) in inner_line.iter().zip(&cover_line) {
+    let mut xs = Vec::with_capacity(own_line.len());
+    let mut slips = Vec::with_capacity(own_line.len());
+    for (&(x, id, u), &(other_x, other_id, v)) in own_line.iter().zip(&other_line) {
         if (other_x - x).abs() > 1e-9 * x.abs().max(1.0) {
             return Err(ResultsError::Missing(format!(
                 "nodes {id} and {other_id} do not face each other (x = {x} and {other_x})"
@@ -504,6 +516,53 @@ pub(crate) fn facing_slip(
         slips.push(u - v);
     }
     Ok((xs, slips))
+}
+
+/// The sliding zones of a slip profile with two ends, both of which may slide: where
+/// |s| >= `saturation` (mu p / K_T), contiguous from the first position and from the last, each
+/// end interpolated linearly between the last sliding node and the first that does not. A
+/// profile sliding throughout gives the whole length from the start, counted once.
+pub(crate) fn sliding_zones(xs: &[f64], slips: &[f64], saturation: f64) -> (f64, f64) {
+    let n = xs.len();
+    let sliding = |i: usize| slips[i].abs() >= saturation;
+    let crossing = |inside: usize, outside: usize| {
+        let (s0, s1) = (slips[inside].abs(), slips[outside].abs());
+        xs[inside] + (xs[outside] - xs[inside]) * (s0 - saturation) / (s0 - s1)
+    };
+    let (start, end) = (
+        xs.first().copied().unwrap_or(0.0),
+        xs.last().copied().unwrap_or(0.0),
+    );
+    let length = end - start;
+    let mut from_start = 0.0;
+    if n > 0 && sliding(0) {
+        let mut i = 0;
+        while i + 1 < n && sliding(i + 1) {
+            i += 1;
+        }
+        from_start = if i + 1 == n {
+            length
+        } else {
+            crossing(i, i + 1) - start
+        };
+    }
+    let mut from_end = 0.0;
+    if n > 0 && sliding(n - 1) {
+        let mut i = n - 1;
+        while i > 0 && sliding(i - 1) {
+            i -= 1;
+        }
+        from_end = if i == 0 {
+            length
+        } else {
+            end - crossing(i, i - 1)
+        };
+    }
+    if from_start + from_end >= length {
+        (from_start.min(length), (length - from_start).max(0.0))
+    } else {
+        (from_start, from_end)
+    }
 }
 
 /// The displacement blocks of a `.dat` file. A block starts with a line like

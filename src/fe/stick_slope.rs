@@ -362,6 +362,41 @@ pub fn friction_card(deck: &str) -> Option<(f64, f64)> {
     Some((numbers.next()??, numbers.next()??))
 }
 
+/// Whether `deck`'s first step changes the friction (`*CHANGE FRICTION`): a deck that resolves an
+/// interference so, nearly frictionless (a shrink fit leaves no shear), lets the bodies slide in
+/// it through the interference's Poisson strains without shear. CalculiX's CSLIP keeps that
+/// slip, so the slope of the later steps is read from the end of the first
+/// ([`slips_from_first_step`]).
+pub fn first_step_changes_friction(deck: &str) -> bool {
+    let upper = format!("\n{}", deck.to_ascii_uppercase());
+    let mut steps = upper.split("\n*STEP").skip(1);
+    steps.next().is_some_and(|first| {
+        first
+            .split("\n*END STEP")
+            .next()
+            .is_some_and(|body| body.contains("\n*CHANGE FRICTION"))
+    })
+}
+
+/// `contact`'s steps after the first, each node's slip counted from its slip at the end of the
+/// first step (the shear is the later step's own: the first carried none).
+pub fn slips_from_first_step(contact: Vec<ContactStep>) -> Vec<ContactStep> {
+    let mut steps = contact.into_iter();
+    let Some(first) = steps.next() else {
+        return Vec::new();
+    };
+    let start: BTreeMap<usize, [f64; 2]> = first.nodes.iter().map(|n| (n.node, n.slip)).collect();
+    steps
+        .map(|mut step| {
+            for node in &mut step.nodes {
+                let [s0, s1] = start.get(&node.node).copied().unwrap_or_default();
+                node.slip = [node.slip[0] - s0, node.slip[1] - s1];
+            }
+            step
+        })
+        .collect()
+}
+
 /// The header of the interface CSV.
 pub const INTERFACE_CSV_HEADER: &str = "x_mm,slip_mm,shear_MPa";
 
@@ -575,5 +610,36 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert_eq!(error, "line 2: slip_mm = 'a' is not a number");
+    }
+
+    /// A frictionless first step slides without shear: its slip is taken off the later steps',
+    /// and only a deck whose first step changes the friction is read so.
+    #[test]
+    fn slips_are_counted_from_a_frictionless_first_step() {
+        let node = |id: usize, slip: f64, shear: f64| ContactNode {
+            node: id,
+            slip: [slip, 0.0],
+            pressure: Some(6.0),
+            shear: [shear, 0.0],
+        };
+        let step = |n: usize, nodes: Vec<ContactNode>| ContactStep {
+            step: n,
+            time: n as f64,
+            nodes,
+        };
+        let contact = vec![
+            step(1, vec![node(1, 2e-4, 0.0), node(2, -1e-4, 0.0)]),
+            step(2, vec![node(1, 2.1e-4, 0.1), node(2, -0.9e-4, 0.1)]),
+        ];
+        let from = slips_from_first_step(contact);
+        assert_eq!(from.len(), 1);
+        for n in &from[0].nodes {
+            assert!((n.shear[0] / n.slip[0] - 1e4).abs() < 1e-6, "{n:?}");
+        }
+        let deck = "*STEP\n*STATIC\n*CHANGE FRICTION, INTERACTION=I\n*END STEP\n*STEP\n*END STEP\n";
+        assert!(first_step_changes_friction(deck));
+        let later =
+            "*STEP\n*STATIC\n*END STEP\n*STEP\n*CHANGE FRICTION, INTERACTION=I\n*END STEP\n";
+        assert!(!first_step_changes_friction(later));
     }
 }

@@ -564,13 +564,64 @@ def cylinder_rows(microslip, workdir, lines, timings, failures):
                                                for k, v in CYLINDER_MESH.items()) + ").")
 
 
+# Press fit (issue 44, item 3): CalculiX issue #98's fit (pressfit-ccx98) on the deck's coarse mesh
+# (axisymmetric CAX4, the interference resolved frictionless, F = 0.3 and 0.8 F_gross, then the
+# capacity step), and the same deck with the issue's node slave. The judge (`compare pressfit`)
+# must say the surface-to-surface run agrees (capacity within 2 % of F_gross, the pressure after
+# the interference within 2 % of Lamé's, Delta within 1 % of the axisymmetric continuum's) and the
+# node slave's does not. Measured (ccx 2.20, one thread; docs/theory.md section 18, "CalculiX"):
+# surface-to-surface capacity +0.39 %, pressure +0.05 %, Delta -0.45 % and -0.30 %; node slave
+# capacity +122.7 %, pressure +130.8 %. About 40 s of ccx.
+PRESSFIT_CASE = ("#98 fit, K_T = 1e4", ["--preset", "pressfit-ccx98"])
+PRESSFIT_SURFACE = "*CONTACT PAIR, INTERACTION=JENKINS, TYPE=SURFACE TO SURFACE\nSSHAFT, SHUB"
+PRESSFIT_NODE = "*CONTACT PAIR, INTERACTION=JENKINS, TYPE=NODE TO SURFACE\nNSHAFT, SHUB"
+
+
+def pressfit_rows(microslip, workdir, lines, timings, failures):
+    """The press fit's case: the bundled deck judged, and the node slave named as not agreeing."""
+    name, args = PRESSFIT_CASE
+    lines.append("\n**Press fit** (CalculiX issue #98's fit): CalculiX (axisymmetric CAX4, the "
+                 "interference resolved frictionless) against Lamé's p and F_gross = mu p 2 pi r L "
+                 "(docs/theory.md section 18, \"CalculiX\"), and Delta against the axisymmetric "
+                 "continuum (the 1-D shear lag's shown beside it). The surface-to-surface deck must "
+                 "agree, the issue's node slave must not.\n")
+    lines.append("| contact | F (N) | Delta ccx (mm) | vs continuum | Delta shear lag (mm) | diff | "
+                 "p ccx (MPa) | dp | capacity ccx (N) | vs F_gross | verdict |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    for contact, job, pair, must_agree in [("surface-to-surface", "pfit", PRESSFIT_SURFACE, True),
+                                           ("node slave", "pfitn", PRESSFIT_NODE, False)]:
+        inp = workdir / f"{job}.inp"
+        subprocess.run([microslip, "deck", "ccx", "pressfit", *args, "-o", str(inp)], check=True)
+        text = inp.read_text()
+        if PRESSFIT_SURFACE not in text:
+            raise RuntimeError(f"{inp}: no surface-to-surface contact pair to swap")
+        inp.write_text(text.replace(PRESSFIT_SURFACE, pair))
+        wall, cpu = run_ccx(workdir, job)
+        timings.append((f"press fit, {name}, {contact}", wall, cpu))
+        data = compare(microslip, "pressfit", workdir / f"{job}.dat")
+        agrees = data["verdict"]["agrees"]
+        if agrees != must_agree:
+            failures.append(f"press fit {name}, {contact}: the verdict should "
+                            f"{'' if must_agree else 'not '}agree: {data['verdict']['summary']}")
+        capacity = next(r for r in data["rows"] if r["kind"] == "capacity")
+        for row in data["rows"]:
+            if row["kind"] == "load":
+                continuum = row["continuum_diff"]
+                lines.append(f"| {contact} | {row['F_N']:.5g} | {row['Delta_fe_mm']:.5g} | "
+                             + ("-" if continuum is None else pct(continuum))
+                             + f" | {row['Delta_mm']:.5g} | {pct(row['delta_diff'])} | "
+                             f"{row['p_assembled_fe_MPa']:.5g} | {pct(row['pressure_diff'])} | "
+                             f"{capacity['F_N']:.5g} | {pct(capacity['capacity_diff'])} | "
+                             f"{'agrees' if agrees else 'does not agree'} |")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--microslip")
     parser.add_argument("--update-guide", "--update-readme", dest="update_guide", action="store_true",
                         help="also write the tables into docs/guide.md (--update-readme: the old name)")
     parser.add_argument("--keep", help="keep decks and results in this directory")
-    parser.add_argument("--only", choices=["stick-slope", "cylinder"],
+    parser.add_argument("--only", choices=["stick-slope", "cylinder", "pressfit"],
                         help="run only these cases and replace only their table in RESULTS.md")
     parser.add_argument("--jobs", type=int, choices=[1, 2], default=2,
                         help="2 (default): the lap joint's and the cylinder's runs go beside the "
@@ -588,6 +639,11 @@ def main():
     version = ccx_version()
     today = datetime.date.today().isoformat()
 
+    if options.only == "pressfit":
+        pressfit_rows(microslip, workdir, lines, timings, failures)
+        print("\n".join(lines))
+        finish(failures, workdir, options.keep, "pressfit")
+        return
     if options.only == "cylinder":
         cylinder_rows(microslip, workdir, lines, timings, failures)
         print("\n".join(lines))
@@ -604,11 +660,13 @@ def main():
     # beside the beams', the plate's and the stick slope's; each group keeps its own lines and
     # timings, put back in the table's order below. Failures are only appended to (thread-safe).
     side_lines, side_timings, cylinder_lines, side_errors = [], [], [], []
+    pressfit_lines = []
 
     def side_group():
         try:
             lap_rows(microslip, workdir, side_lines, side_timings, failures)
             cylinder_rows(microslip, workdir, cylinder_lines, side_timings, failures)
+            pressfit_rows(microslip, workdir, pressfit_lines, side_timings, failures)
         except Exception as error:  # re-raised by the main thread after the join
             side_errors.append(error)
 
@@ -777,6 +835,7 @@ def main():
     lines.extend(side_lines)
     lines.extend(stick_lines)
     lines.extend(cylinder_lines)
+    lines.extend(pressfit_lines)
     timings.extend(side_timings)
 
     lines.append("\nRun times (ccx wall / CPU seconds, OMP_NUM_THREADS="

@@ -224,23 +224,7 @@ fn deck_loads(
             .map(|f| cylinder.clamped_load(f * cylinder.gross_slip_load()))
             .collect());
     };
-    let mut out: Vec<TangentialLoad> = Vec::with_capacity(loads.len());
-    for &q in loads {
-        let load = cylinder.load(q).map_err(|e| DeckError::Flag {
-            flag: "--loads",
-            value: q,
-            allowed: e.allowed(),
-        })?;
-        if out.last().is_some_and(|last| *last >= load) {
-            return Err(DeckError::Flag {
-                flag: "--loads",
-                value: q,
-                allowed: "the loads must increase from one step to the next".to_string(),
-            });
-        }
-        out.push(load);
-    }
-    Ok(out)
+    DeckError::increasing_loads(loads, |q| cylinder.load(q))
 }
 
 impl Deck for CylinderProblem {

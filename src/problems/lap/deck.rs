@@ -449,23 +449,7 @@ fn deck_loads(
         forces.dedup_by(|a, b| *a <= *b);
         return Ok(forces.into_iter().map(|f| joint.clamped_force(f)).collect());
     };
-    let mut forces: Vec<JointForce> = Vec::with_capacity(loads.len());
-    for &f in loads {
-        let force = joint.force(f).map_err(|e| DeckError::Flag {
-            flag: "--loads",
-            value: f,
-            allowed: e.allowed(),
-        })?;
-        if forces.last().is_some_and(|last| *last >= force) {
-            return Err(DeckError::Flag {
-                flag: "--loads",
-                value: f,
-                allowed: "the loads must increase from one step to the next".to_string(),
-            });
-        }
-        forces.push(force);
-    }
-    Ok(forces)
+    DeckError::increasing_loads(loads, |f| joint.force(f))
 }
 
 #[cfg(test)]

@@ -5,7 +5,8 @@
 
 use crate::fe::results::DatBlock;
 use crate::fe::results::{
-    CcxRun, NOT_FINISHED, ResultsError, cut_short, facing_slip, points_from_csv, thickness_mean,
+    CcxRun, NOT_FINISHED, ResultsError, cut_short, facing_slip, points_from_csv, sliding_zones,
+    thickness_mean,
 };
 use crate::kernel::regime::{Law, Regime};
 use crate::measured::{Curve, MEASURED_JOINT_DISPLACEMENT};
@@ -128,50 +129,12 @@ struct LapState {
 /// contiguous from x = 0 and from x = L, each end interpolated linearly between the last sliding
 /// node and the first that does not.
 fn lap_interface_state(xs: &[f64], slips: &[f64], saturation: f64) -> LapFeInterface {
-    let n = xs.len();
-    let sliding = |i: usize| slips[i].abs() >= saturation;
-    let crossing = |inside: usize, outside: usize| {
-        let (s0, s1) = (slips[inside].abs(), slips[outside].abs());
-        xs[inside] + (xs[outside] - xs[inside]) * (s0 - saturation) / (s0 - s1)
-    };
-    let (start, end) = (
-        xs.first().copied().unwrap_or(0.0),
-        xs.last().copied().unwrap_or(0.0),
-    );
-    let length = end - start;
-    let mut from_start = 0.0;
-    if n > 0 && sliding(0) {
-        let mut i = 0;
-        while i + 1 < n && sliding(i + 1) {
-            i += 1;
-        }
-        from_start = if i + 1 == n {
-            length
-        } else {
-            crossing(i, i + 1) - start
-        };
-    }
-    let mut from_end = 0.0;
-    if n > 0 && sliding(n - 1) {
-        let mut i = n - 1;
-        while i > 0 && sliding(i - 1) {
-            i -= 1;
-        }
-        from_end = if i == 0 {
-            length
-        } else {
-            end - crossing(i, i - 1)
-        };
-    }
-    let (a, d) = if from_start + from_end >= length {
-        (from_start.min(length), (length - from_start).max(0.0))
-    } else {
-        (from_start, from_end)
-    };
+    let (a, d) = sliding_zones(xs, slips, saturation);
+    let length = xs.last().copied().unwrap_or(0.0) - xs.first().copied().unwrap_or(0.0);
     LapFeInterface {
         slide_from_start: a,
         slide_from_end: d,
-        regime: if n == 0 {
+        regime: if xs.is_empty() {
             Regime::MICROSLIP
         } else {
             zones_regime(Law::Regularized, a, d, length)

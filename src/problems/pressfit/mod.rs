@@ -3,12 +3,14 @@
 
 pub use microslip_core::problems::pressfit::*;
 
+pub mod ccx_read;
 mod chart;
+pub mod compare;
+pub mod deck;
+mod deck_writer;
 #[cfg(feature = "app")]
 mod pane;
 pub mod report;
-mod scaffold;
-use scaffold as compare;
 
 pub use chart::PressFitChart;
 
