@@ -18,6 +18,7 @@ use serde::Serialize;
 
 use crate::fe::compare::relative_difference;
 use crate::fe::continuum_verdict::{ContinuumJudged, ContinuumVerdict, NotSolved, judged};
+use crate::fe::ladder::{LadderQuantity, ValueScale};
 use crate::kernel::format::number;
 use crate::kernel::params::{Compact, ParamError};
 use crate::kernel::regime::Regime;
@@ -520,5 +521,54 @@ impl CompareFace for PressFitProblem {
 
     fn summary_mut(report: &mut PressFitCompareReport) -> &mut Summary {
         &mut report.verdict
+    }
+
+    /// Delta against the axisymmetric continuum at each load step (a fraction of the
+    /// continuum's), the push-out capacity against F_gross and the pressure after the
+    /// interference against Lamé's: what the judge bounds, for a ladder of runs to extrapolate.
+    fn ladder_quantities(report: &PressFitCompareReport) -> Vec<LadderQuantity> {
+        let mut quantities = Vec::new();
+        for row in &report.rows {
+            let at = format!("F = {} N", number(row.force));
+            if let (Some(difference), Some(continuum)) = (row.continuum_diff, row.delta_continuum) {
+                quantities.push(LadderQuantity {
+                    name: format!("Delta at {at}"),
+                    difference,
+                    bound: Some(CONTINUUM_WITHIN),
+                    value: Some(ValueScale {
+                        closed_form: continuum,
+                        scale: continuum,
+                        unit: "mm".to_string(),
+                    }),
+                });
+            }
+            if let Some(difference) = row.capacity_diff {
+                quantities.push(LadderQuantity {
+                    name: "push-out capacity".to_string(),
+                    difference,
+                    bound: Some(report.capacity_within_fraction),
+                    value: Some(ValueScale {
+                        closed_form: row.gross,
+                        scale: row.gross,
+                        unit: "N".to_string(),
+                    }),
+                });
+            }
+            // The pressure after the interference step: the same on every row of a run.
+            let pressure_named = quantities.iter().any(|q| q.name.starts_with("contact"));
+            if let (Some(difference), false) = (row.pressure_diff, pressure_named) {
+                quantities.push(LadderQuantity {
+                    name: "contact pressure after the interference".to_string(),
+                    difference,
+                    bound: Some(report.pressure_within_fraction),
+                    value: Some(ValueScale {
+                        closed_form: row.pressure,
+                        scale: row.pressure,
+                        unit: "MPa".to_string(),
+                    }),
+                });
+            }
+        }
+        quantities
     }
 }

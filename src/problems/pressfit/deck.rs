@@ -83,10 +83,7 @@ pub fn write_fit_deck(
     stick_slope: StickSlope,
     force_step: Option<f64>,
 ) -> Result<String, DeckTooLarge> {
-    let refinement = match mesh {
-        DeckMesh::Coarse => 1,
-        DeckMesh::Fine => 2,
-    };
+    let refinement = mesh.refinement();
     let sloped = at_slope(fit, stick_slope);
     let layout = Layout::at(
         refinement,
