@@ -912,12 +912,16 @@ mod envelope {
             "{refused}"
         );
         assert!(refused.contains("a / R = 0.191788 here"), "{refused}");
-        // Where no R of the domain would do, it says to change P or E instead.
+        // Where no R of the domain would do, it says to change P or E instead: the largest R,
+        // and an E that makes a / R = 0.5 there (a contact, a < R, that no deck holds).
+        let largest = Domain::LENGTH.max();
+        let nu = CylinderParams::STEEL_PAD.poisson;
         let cylinder = Cylinder::new(CylinderParams {
-            modulus: 1e-4,
-            ..params(50.0)
+            modulus: 2.0 * (1.0 - nu * nu) * 16.0 * 1000.0 / (std::f64::consts::PI * largest),
+            ..params(largest)
         })
         .unwrap();
+        assert!((cylinder.half_width() / largest - 0.5).abs() < 1e-9);
         let soft = CylinderModel {
             load: cylinder.clamped_load(0.0),
             cylinder,

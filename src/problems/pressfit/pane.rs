@@ -8,7 +8,7 @@ use super::closed_form::{CarriedLoad, PressFit};
 use super::cycle::FitCycle;
 use super::point::fit_point;
 use super::registered::problem::PressFitModel;
-use super::validity::PressFitValidity;
+use super::validity::{CALIBRATED, PressFitValidity};
 use crate::chart::panes::{
     ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SummaryLine, envelope_title,
     load_regimes, load_tolerance_lines, ratio_text,
@@ -194,7 +194,13 @@ fn fit_lines(fit: &PressFit, force: CarriedLoad) -> Vec<SummaryLine> {
 /// leaves, where it leaves one.
 fn theory_words(v: &PressFitValidity) -> String {
     match v.outside_calibration {
-        Some(why) => format!("not calibrated: {}", why.split(':').next().unwrap_or(why)),
+        Some(why) => {
+            let group = CALIBRATED
+                .iter()
+                .find(|(_, _, _, words)| *words == why)
+                .map_or("range", |(name, ..)| name);
+            format!("uncalibrated ({group})")
+        }
         None => v.validity.label().to_string(),
     }
 }
