@@ -78,20 +78,35 @@ def set_flags(params: dict) -> list:
 
 def random_params(entry: dict, rng: random.Random) -> dict:
     """One parameter set of the problem `entry` (a `microslip.PROBLEMS` item): each value
-    log-uniform over its usual range (uniform where the range starts at 0, as nu), the load,
+    log-uniform over its usual range (uniform where the range starts at 0, as nu), drawn again
+    where the keys' mutual bounds refuse the structure; the load,
     where there is one, uniform up to 1.2 times the force where the regimes change (F_thre,
     F_gross), so every regime and, for the lap joint, some refusals occur."""
-    params = {}
-    for p in entry["params"]:
-        low, high = p["usual"]
-        u = rng.random()
-        params[p["name"]] = math.exp(math.log(low) + u * math.log(high / low)) if low > 0 else low + u * (high - low)
+    cls = microslip.problem_class(entry["key"])
     load = entry["load"]
-    if load is not None:
-        cls = microslip.problem_class(entry["key"])
+
+    def draw() -> dict:
+        params = {}
+        for p in entry["params"]:
+            low, high = p["usual"]
+            u = rng.random()
+            params[p["name"]] = math.exp(math.log(low) + u * math.log(high / low)) if low > 0 else low + u * (high - low)
+        return params
+
+    def structure(params: dict):
         try:
-            scale = cls(**{**params, load: 0.0}).regime_scale
+            return cls(**({**params, load: 0.0} if load is not None else params))
         except microslip.ParameterError:
-            return params
-        params[load] = 1.2 * scale * rng.random()
+            return None
+
+    # Keys drawn each over its own range may break a bound between them (the press fit's
+    # ri < r < ro): such a structure is drawn again, so that most sets reach the closed forms.
+    params = draw()
+    for _ in range(1000):
+        if structure(params) is not None:
+            break
+        params = draw()
+    built = structure(params)
+    if load is not None and built is not None:
+        params[load] = 1.2 * built.regime_scale * rng.random()
     return params
