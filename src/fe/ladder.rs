@@ -38,7 +38,8 @@ pub struct LadderQuantity {
 /// How a [`LadderQuantity`]'s difference maps back to the quantity.
 #[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct ValueScale {
-    /// The closed form's value.
+    /// The reference's value: the closed form's, or the problem's continuum's where the judge
+    /// compares with it (the press fit's Delta).
     pub closed_form: f64,
     /// The length or value the difference is a fraction of.
     pub scale: f64,

@@ -230,7 +230,7 @@ pub fn quantity_line(q: &QuantityScore) -> String {
     if let Some(v) = &q.value {
         let _ = write!(
             line,
-            " = {}{} {} (closed form {})",
+            " = {}{} {} (reference {})",
             crate::report::number(v.estimate),
             v.uncertainty
                 .map_or_else(String::new, |u| format!(" +- {}", crate::report::number(u))),
