@@ -43,7 +43,7 @@ pub struct ConvergedValue {
     pub estimate: f64,
     /// Its uncertainty.
     pub uncertainty: Option<f64>,
-    /// The closed form's value.
+    /// The reference's value (the closed form's, or the problem's continuum's).
     pub closed_form: f64,
     /// Their unit.
     pub unit: String,
@@ -481,7 +481,7 @@ mod tests {
         let v = score.quantities[0].value.as_ref().unwrap();
         // 2 mm (1 + 2 %) = 2.04 mm, +- 1 % of 2 mm.
         assert!((v.estimate - 2.04).abs() < 1e-12 && (v.uncertainty.unwrap() - 0.02).abs() < 1e-12);
-        assert!(quantity_line(&score.quantities[0]).contains("= 2.04 +- 0.02 mm (closed form 2)"));
+        assert!(quantity_line(&score.quantities[0]).contains("= 2.04 +- 0.02 mm (reference 2)"));
     }
 
     #[test]
