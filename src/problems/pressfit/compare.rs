@@ -29,6 +29,7 @@ use crate::report::sanitize;
 use super::ccx_read::{FitPointKind, PressFitFePoint};
 use super::closed_form::PressFit;
 use super::registered::problem::{PressFitModel, PressFitProblem};
+#[cfg(feature = "app")]
 use crate::fe::load::Loaded;
 
 /// How far CalculiX's push-out capacity may be from F_gross and agree (a fraction): measured
@@ -457,6 +458,7 @@ impl PressFitCompareReport {
 }
 
 /// An FE point on the axes of the press fit's first chart (`PaneFace::fe_xy`): (F, Delta).
+#[cfg(feature = "app")]
 pub(crate) fn pane_xy(point: &PressFitFePoint) -> (f64, f64) {
     (point.force, point.delta)
 }
@@ -466,6 +468,7 @@ pub(crate) fn pane_xy(point: &PressFitFePoint) -> (f64, f64) {
 ///
 /// # Errors
 /// A load point beyond F_gross ([`compare_fit`]), in words.
+#[cfg(feature = "app")]
 pub(crate) fn pane_brief(
     model: &PressFitModel,
     loaded: &Loaded<PressFitFePoint>,
