@@ -418,3 +418,52 @@ fn the_index_shows_every_figure_with_its_data() {
     let stems: std::collections::HashSet<_> = PAPER_FIGURES.iter().map(|f| f.stem).collect();
     assert_eq!(stems.len(), PAPER_FIGURES.len());
 }
+
+/// The legend's box holds its labels as the built-in font draws them: plotters sizes the box by
+/// its own estimate of the text, narrower than DejaVu Sans (issue 47: "KT = 100000 MPa/mm" ran
+/// past the box's right edge in `plot sa-vs-q --family KT=1e4,1e5,1e6`). No dark (text) pixel of
+/// the PNG may stand within 4 px of the box's right edge or beyond it, level with the box.
+#[test]
+fn the_legend_box_holds_its_labels_as_drawn() {
+    use crate::chart::{SeriesRole, line, linear_axis};
+    let names = ["KT = 10000 MPa/mm", "KT = 100000 MPa/mm", "KT = 1e6 MPa/mm"];
+    let plot = Plot {
+        caption: None,
+        title: "legend".to_string(),
+        x: linear_axis("Q (N/mm)", 0.0, 10.0),
+        y: linear_axis("s(a) (mm)", 0.0, 10.0),
+        // Curves in the lower right, so the legend goes to the upper left, away from them.
+        series: names
+            .iter()
+            .zip(1u8..)
+            .map(|(name, i)| {
+                let y = f64::from(i);
+                line(SeriesRole::Family(i), *name, vec![(6.0, y), (10.0, y)])
+            })
+            .collect(),
+    };
+    let svg = svg(&plot).unwrap();
+    let all = elements(&svg);
+    let frame = all
+        .iter()
+        .find(|e| e.name == "rect" && e.get("fill") == Some("none"))
+        .expect("a legend frame");
+    let frame = Area::around(frame.points());
+    let png = super::png_from_svg(&svg).unwrap();
+    let pixmap = resvg::tiny_skia::Pixmap::decode_png(&png).unwrap();
+    let scale = f64::from(super::PNG_SCALE);
+    let px = |v: f64| (v * scale).round() as u32;
+    let dark = |x: u32, y: u32| {
+        pixmap
+            .pixel(x, y)
+            .is_some_and(|p| p.red() < 110 && p.green() < 110 && p.blue() < 110)
+    };
+    // From 4 px inside the box's right edge (the text keeps that room; the grey edge is not
+    // dark) to well beyond it.
+    let (right, top, bottom) = (px(frame.right - 4.0), px(frame.top), px(frame.bottom));
+    let outside: usize = (right..right + 60)
+        .flat_map(|x| (top..bottom).map(move |y| (x, y)))
+        .filter(|&(x, y)| dark(x, y))
+        .count();
+    assert_eq!(outside, 0, "text right of the legend box {frame:?}");
+}
