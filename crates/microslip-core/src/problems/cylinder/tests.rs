@@ -362,3 +362,38 @@ fn the_kept_answer_is_a_fresh_solve() {
     assert_ne!(stiffer.regularized(load), first);
     assert_eq!(pad.regularized(load), first);
 }
+
+/// A contact at least as wide as the cylinder is none (issue 47 item 8: a/R up to 6.8e5 was
+/// accepted as merely "not calibrated"): P is refused with its bound pi E* R / 4, where Hertz's a
+/// reaches R, and a P just below it is accepted with a < R.
+#[test]
+fn a_contact_as_wide_as_the_cylinder_is_refused_naming_p() {
+    let radius = 1e-3;
+    let params = CylinderParams {
+        radius,
+        ..CylinderParams::STEEL_PAD
+    };
+    let e_star = params.modulus / (2.0 * (1.0 - params.poisson * params.poisson));
+    let widest = std::f64::consts::PI * e_star * radius / 4.0;
+    let refused = Cylinder::new(params).unwrap_err();
+    assert_eq!(refused.field, "P");
+    assert!(
+        refused
+            .to_string()
+            .contains("where Hertz's half-width a reaches R"),
+        "{refused}"
+    );
+    let below = Cylinder::new(CylinderParams {
+        normal_load: 0.99 * widest,
+        ..params
+    })
+    .unwrap();
+    assert!(below.half_width() < radius);
+    assert!(
+        Cylinder::new(CylinderParams {
+            normal_load: 1.01 * widest,
+            ..params
+        })
+        .is_err()
+    );
+}
