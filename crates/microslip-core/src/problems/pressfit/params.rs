@@ -67,6 +67,18 @@ impl PressFitParam {
     /// The push-out's keys, r to F: all but the torque.
     pub const PUSH_OUT: &'static [PressFitParam] = Self::ALL.split_at(12).0;
 
+    /// The torque's keys, r to K_T and T: all but the push-out force (the twisted fit's
+    /// problem, to come: the folder's module docs).
+    pub const TORQUE_KEYS: [PressFitParam; 12] = {
+        let mut keys = [PressFitParam::Torque; 12];
+        let mut i = 0;
+        while i < 11 {
+            keys[i] = Self::ALL[i];
+            i += 1;
+        }
+        keys
+    };
+
     /// Key, unit, meaning, domain and step.
     pub fn spec(self) -> ParamSpec {
         const LENGTH: Domain = Domain::LENGTH;

@@ -160,48 +160,77 @@ fn the_closed_forms_agree_with_the_discretized_solver_to_1e_6() {
     }
 }
 
+/// Each load by hand, (S6): (load, arm, the shaft's and the hub's rigidities as bars on the
+/// interface): E A pushed out; G J / r^2 twisted, with G = E / (2 (1 + nu)), J = pi/2 (r^4 - ri^4).
+fn loadings_by_hand(params: &PressFitParams) -> [(FitLoad, f64, f64, f64); 2] {
+    use std::f64::consts::PI;
+    let (ri, r, ro) = (params.bore_radius, params.fit_radius, params.outer_radius);
+    let g = |e: f64, nu: f64| e / (2.0 * (1.0 + nu));
+    [
+        (
+            FitLoad::Axial,
+            1.0,
+            params.shaft_modulus * PI * (r * r - ri * ri),
+            params.hub_modulus * PI * (ro * ro - r * r),
+        ),
+        (
+            FitLoad::Torque,
+            r,
+            g(params.shaft_modulus, params.shaft_poisson) * PI / 2.0 * (r.powi(4) - ri.powi(4))
+                / (r * r),
+            g(params.hub_modulus, params.hub_poisson) * PI / 2.0 * (ro.powi(4) - r.powi(4))
+                / (r * r),
+        ),
+    ]
+}
+
 /// (L7) in the fit's words, by hand: under Coulomb the zone from each face carries the load the
 /// member that is loaded there hands on, in proportion to the other member's rigidity:
 /// a (loaded face) = F Eh Ah / ((Es As + Eh Ah) w mu p), d (held face) = F Es As / (...), and the
-/// slip at each face is its slope times its zone over 2.
+/// slip at each face is its slope times its zone over 2. Twisted, the same with the equivalent
+/// force N = T / r and the equivalent bars' rigidities G J / r^2 (S6): T_gross = mu p 2 pi r^2 L,
+/// the slip circumferential (mm) and theta = Delta_eq / r.
 #[test]
 fn coulomb_by_hand_and_as_the_limit_of_the_regularized_law() {
+    use std::f64::consts::PI;
     for (name, params) in geometries() {
         let fit = PressFit::new(params).unwrap();
         let p = super::lame::contact_pressure(&params, super::lame::PlaneState::Stress);
-        let w = 2.0 * std::f64::consts::PI * params.fit_radius;
-        let (ri, r, ro) = (params.bore_radius, params.fit_radius, params.outer_radius);
-        let shaft = params.shaft_modulus * std::f64::consts::PI * (r * r - ri * ri);
-        let hub = params.hub_modulus * std::f64::consts::PI * (ro * ro - r * r);
-        let gross = params.friction * p * w * params.length;
-        assert!(rel(fit.gross_slip_force(), gross) < 1e-13, "{name}");
-        for fraction in [0.1, 0.3, 0.8] {
-            let f = fraction * gross;
-            let state = fit.coulomb(fit.force(f).unwrap());
-            let a = f * hub / ((shaft + hub) * w * params.friction * p);
-            let d = f * shaft / ((shaft + hub) * w * params.friction * p);
-            assert!(rel(state.slide_from_loaded_face(), a) < 1e-12, "{name}");
-            assert!(rel(state.slide_from_held_face(), d) < 1e-12, "{name}");
-            let (s_loaded, s_held) = (f / shaft * a / 2.0, f / hub * d / 2.0);
-            assert!(rel(state.slip_at(0.0), s_loaded) < 1e-12, "{name}");
-            assert!(rel(state.slip_at(params.length), s_held) < 1e-12, "{name}");
-            let delta = hub / (shaft + hub) * s_loaded
-                + shaft / (shaft + hub) * s_held
-                + f * params.length / (shaft + hub);
-            assert!(rel(state.response(), delta) < 1e-12, "{name}");
-            assert_eq!(
-                state.regime(),
-                Regime::from_zones(&[Zone::Macroslip, Zone::Stick, Zone::Macroslip])
-            );
-            // K_T -> infinity: the gap to Coulomb falls as 1/K_T (x100 per x100).
-            let gap = |kt: f64| {
-                let stiff = fit.with_tangential_stiffness(kt).unwrap();
-                stiff.regularized(stiff.force(f).unwrap()).response() / delta - 1.0
-            };
-            let (g1, g2) = (gap(1e8), gap(1e10));
-            assert!(g1 > 0.0 && g2 > 0.0, "{name}");
-            assert!((g1 / g2 / 100.0 - 1.0).abs() < 0.02, "{name}: {g1} {g2}");
-            assert!(g2 < 1e-4, "{name}: {g2}");
+        let w = 2.0 * PI * params.fit_radius;
+        for (load, arm, shaft, hub) in loadings_by_hand(&params) {
+            let axis = fit.axis(load);
+            let gross = params.friction * p * w * params.length * arm;
+            assert!(rel(axis.gross_load(), gross) < 1e-13, "{name}");
+            for fraction in [0.1, 0.3, 0.8] {
+                let f = fraction * gross / arm;
+                let state = axis.coulomb(axis.load(f * arm).unwrap());
+                let a = f * hub / ((shaft + hub) * w * params.friction * p);
+                let d = f * shaft / ((shaft + hub) * w * params.friction * p);
+                assert!(rel(state.slide_from_loaded_face(), a) < 1e-12, "{name}");
+                assert!(rel(state.slide_from_held_face(), d) < 1e-12, "{name}");
+                let (s_loaded, s_held) = (f / shaft * a / 2.0, f / hub * d / 2.0);
+                // The slip is the equivalent bars' (mm): r (phi_shaft - phi_hub) twisted.
+                assert!(rel(state.slip_at(0.0), s_loaded) < 1e-12, "{name}");
+                assert!(rel(state.slip_at(params.length), s_held) < 1e-12, "{name}");
+                let delta = hub / (shaft + hub) * s_loaded
+                    + shaft / (shaft + hub) * s_held
+                    + f * params.length / (shaft + hub);
+                assert!(rel(state.response() * arm, delta) < 1e-12, "{name}");
+                assert_eq!(
+                    state.regime(),
+                    Regime::from_zones(&[Zone::Macroslip, Zone::Stick, Zone::Macroslip])
+                );
+                // K_T -> infinity: the gap to Coulomb falls as 1/K_T (x100 per x100).
+                let gap = |kt: f64| {
+                    let stiff = fit.with_tangential_stiffness(kt).unwrap();
+                    let axis = stiff.axis(load);
+                    axis.regularized(axis.load(f * arm).unwrap()).response() * arm / delta - 1.0
+                };
+                let (g1, g2) = (gap(1e8), gap(1e10));
+                assert!(g1 > 0.0 && g2 > 0.0, "{name}");
+                assert!((g1 / g2 / 100.0 - 1.0).abs() < 0.02, "{name}: {g1} {g2}");
+                assert!(g2 < 1e-4, "{name}: {g2}");
+            }
         }
     }
 }
@@ -382,7 +411,8 @@ fn the_torque_is_the_push_out_with_the_equivalent_rigidities() {
 
 /// (L8) for the fit: a rigid hub (Eh -> infinity) leaves the shaft alone against a rough base:
 /// F_1 = mu p w tanh(lambda L) / lambda with lambda^2 = w K_T / (Es As), and sliding starts at
-/// the loaded face.
+/// the loaded face. Twisted, the shaft is the equivalent bar of rigidity Gs Js / r^2 carrying
+/// N = T / r: T_1 = r mu p w tanh(lambda L) / lambda with lambda^2 = w K_T r^2 / (Gs Js).
 #[test]
 fn a_rigid_hub_gives_the_bar_on_a_rough_base() {
     let params = PressFitParams {
@@ -392,14 +422,18 @@ fn a_rigid_hub_gives_the_bar_on_a_rough_base() {
     let fit = PressFit::new(params).unwrap();
     let p = fit.contact_pressure();
     let w = 2.0 * std::f64::consts::PI * params.fit_radius;
-    let (r, ri) = (params.fit_radius, params.bore_radius);
-    let es_as = params.shaft_modulus * std::f64::consts::PI * (r * r - ri * ri);
-    let lambda = (w * params.tangential_stiffness / es_as).sqrt();
-    let by_hand = params.friction * p * w * (lambda * params.length).tanh() / lambda;
-    // The hub is 48 x the shaft's modulus: F_1 within the hub's share of the compliance.
-    let hub_share = es_as / (params.hub_modulus * std::f64::consts::PI * (900.0 - 400.0));
-    assert!(rel(fit.first_slip_force(), by_hand) < 2.0 * hub_share);
-    assert_eq!(fit.first_slip_face(), SlipFace::Loaded);
+    for (load, arm, shaft, hub) in loadings_by_hand(&params) {
+        let lambda = (w * params.tangential_stiffness / shaft).sqrt();
+        let by_hand = arm * params.friction * p * w * (lambda * params.length).tanh() / lambda;
+        // The hub is 48 x the shaft's modulus (x 4.3 its J, x 1.7 its area): the first slip
+        // within the hub's share of the compliance.
+        let axis = fit.axis(load);
+        assert!(
+            rel(axis.first_slip_load(), by_hand) < 2.0 * shaft / hub,
+            "{load:?}"
+        );
+        assert_eq!(axis.first_slip_face(), SlipFace::Loaded);
+    }
 }
 
 #[test]
@@ -486,35 +520,74 @@ fn the_preset_file_is_the_bundled_fit() {
     assert!((fit.gross_slip_force() - 1371.0).abs() < 1e-3);
 }
 
-/// The quantities a target can be set on are the states' own numbers.
+/// The quantities a target can be set on are the states' own numbers, pushed out and twisted.
 #[test]
 fn the_quantities_are_the_states_numbers() {
     use crate::problems::Quantity;
     use crate::problems::load_driven::MasingCycle;
     let fit = PressFit::new(PressFitParams::CCX98).unwrap();
-    let force = fit.force(0.9 * fit.gross_slip_force()).unwrap();
-    let (coulomb, regularized) = (fit.coulomb(force), fit.regularized(force));
-    let cycle = super::cycle::FitCycle::new(fit.axial(), Law::Regularized, force);
-    let q = |quantity| super::quantity(&fit, force, quantity).unwrap();
-    assert_eq!(q(Quantity::Response), regularized.response());
+    for axis in [fit.axial(), fit.torsion()] {
+        let load = axis.load(0.9 * axis.gross_load()).unwrap();
+        let (coulomb, regularized) = (axis.coulomb(load), axis.regularized(load));
+        let cycle = super::cycle::FitCycle::new(axis, Law::Regularized, load);
+        let q = |quantity| super::quantity(axis, load, quantity).unwrap();
+        assert_eq!(q(Quantity::Response), regularized.response());
+        assert_eq!(
+            q(Quantity::SlideFromStart),
+            regularized.slide_from_loaded_face()
+        );
+        assert_eq!(
+            q(Quantity::SlideFromEnd),
+            regularized.slide_from_held_face()
+        );
+        assert_eq!(
+            q(Quantity::Ratio),
+            regularized.response() / coulomb.response()
+        );
+        assert_eq!(q(Quantity::FirstMacroslipForce), axis.first_slip_load());
+        assert_eq!(q(Quantity::Dissipation), regularized.cycle_dissipation());
+        assert_eq!(q(Quantity::DampingRatio), cycle.damping_ratio());
+        assert!(q(Quantity::Dissipation) > 0.0);
+        assert_eq!(super::quantity(axis, load, Quantity::MicroEnd), None);
+        // Zero load: no ratio.
+        let zero = axis.load(0.0).unwrap();
+        assert_eq!(super::quantity(axis, zero, Quantity::Ratio), None);
+    }
+    // T_gross = r F_gross (S6): the gross load does not depend on the members' rigidities.
+    let r = PressFitParams::CCX98.fit_radius;
+    assert!(rel(fit.torsion().gross_load(), r * fit.gross_slip_force()) < 1e-13);
+}
+
+/// The twisted fit's keys are the push-out's with T for F; its quantities name theta (rad) and
+/// T_1 (N mm) where the push-out's name Delta (mm) and F_1 (N), and the same zones.
+#[test]
+fn the_torque_keys_and_quantities_are_the_push_outs_with_t_for_f() {
+    use super::params::PressFitParam;
+    let names = |keys: &[PressFitParam]| {
+        keys.iter()
+            .map(|k| k.spec().name)
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
     assert_eq!(
-        q(Quantity::SlideFromStart),
-        regularized.slide_from_loaded_face()
+        names(&PressFitParam::TORQUE_KEYS),
+        "r ri ro L Es nus Eh nuh delta mu KT T"
     );
     assert_eq!(
-        q(Quantity::SlideFromEnd),
-        regularized.slide_from_held_face()
+        names(PressFitParam::PUSH_OUT),
+        "r ri ro L Es nus Eh nuh delta mu KT F"
     );
+    let words = |q: &[crate::problems::QuantityName]| {
+        q.iter()
+            .map(|n| format!("{} ({})", n.name, n.unit))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
     assert_eq!(
-        q(Quantity::Ratio),
-        regularized.response() / coulomb.response()
+        words(&super::TORQUE_QUANTITIES),
+        "theta (rad), a (mm), d (mm), ratio (), T_1 (N mm), D (N mm), zeta ()"
     );
-    assert_eq!(q(Quantity::FirstMacroslipForce), fit.first_slip_force());
-    assert_eq!(q(Quantity::Dissipation), regularized.cycle_dissipation());
-    assert_eq!(q(Quantity::DampingRatio), cycle.damping_ratio());
-    assert!(q(Quantity::Dissipation) > 0.0);
-    assert_eq!(super::quantity(&fit, force, Quantity::MicroEnd), None);
-    // Zero load: no ratio.
-    let zero = fit.force(0.0).unwrap();
-    assert_eq!(super::quantity(&fit, zero, Quantity::Ratio), None);
+    for (push, twist) in super::QUANTITIES.iter().zip(&super::TORQUE_QUANTITIES) {
+        assert_eq!(push.quantity, twist.quantity);
+    }
 }

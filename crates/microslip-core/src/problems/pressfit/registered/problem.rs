@@ -95,7 +95,7 @@ impl Problem for PressFitProblem {
     }
 
     fn quantity(model: &PressFitModel, quantity: Quantity) -> Option<f64> {
-        crate::problems::pressfit::quantity(&model.fit, model.force, quantity)
+        crate::problems::pressfit::quantity(model.fit.axial(), model.force, quantity)
     }
 
     fn regime_scale(model: &PressFitModel) -> Option<f64> {
