@@ -176,7 +176,7 @@ impl ShearLagCharts for PressFitProblem {
     }
 
     fn slip_along(model: &PressFitModel, positions: impl Iterator<Item = f64>) -> LawProfiles {
-        slip_along(model, positions)
+        slip_along(model.fit.axial(), model.force, positions)
     }
 
     fn discretized(fit: &PressFit, density: MeshDensity) -> PressFitFe {

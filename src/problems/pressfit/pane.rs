@@ -78,7 +78,7 @@ impl PaneFace for PressFitProblem {
 /// The press fit's lines of the regime pane: Delta right after the regimes, so that an 80x24
 /// screen, which shows the first five, shows it.
 fn fit_lines(fit: &PressFit, force: CarriedLoad) -> Vec<SummaryLine> {
-    let row = fit_point(fit, force);
+    let row = fit_point(fit.axial(), force);
     let p = fit.params();
     let ratio = ratio_text(row.delta_regularized, row.delta_coulomb, "- (no load)");
     let (coulomb, regularized, heading) = load_regimes(

@@ -440,7 +440,7 @@ impl PressFitReport {
         force: CarriedLoad,
         continuum: Option<&Result<ContinuumPressFit, NumericError>>,
     ) -> PressFitReport {
-        let row = fit_point(fit, force);
+        let row = fit_point(fit.axial(), force);
         let p = fit.params();
         let law = |law, regime, delta, (a, d): (f64, f64)| {
             let cycle = FitCycle::new(fit.axial(), law, force);

@@ -1,13 +1,14 @@
 //! The press fit against its own finite elements ([`CrossChecked`]): Delta, and the sliding
 //! zones over L, in every regime, on the six fits of the folder's tests.
 
-use super::problem::{PressFitModel, PressFitProblem};
+use super::problem::{FitKind, FitProblem, PressFitModel};
 use crate::kernel::format::number;
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::cross_check::{CrossChecked, relative_error};
 use crate::problems::pressfit::closed_form::PressFit;
 use crate::problems::pressfit::discretized::PressFitFe;
-use crate::problems::pressfit::params::{FitLoad, PressFitParams};
+use crate::problems::pressfit::params::PressFitParams;
+use crate::problems::problem::Registered;
 
 /// The bundled fit; on the full grid also a solid shaft and a thin ring (the held face first).
 fn shapes(full: bool) -> Vec<PressFitParams> {
@@ -32,8 +33,11 @@ fn shapes(full: bool) -> Vec<PressFitParams> {
     shapes
 }
 
-impl CrossChecked for PressFitProblem {
-    const COMPARED: &'static [&'static str] = &["pressfit Delta (mm)", "pressfit zones (/L)"];
+impl<K: FitKind> CrossChecked for FitProblem<K>
+where
+    FitProblem<K>: Registered,
+{
+    const COMPARED: &'static [&'static str] = K::COMPARED;
 
     fn grid(full: bool) -> Vec<PressFitModel> {
         let mut models = Vec::new();
@@ -45,13 +49,14 @@ impl CrossChecked for PressFitProblem {
                 }) else {
                     continue;
                 };
+                let axis = fit.axis(K::LOAD);
                 let (f1, f2, gross) = (
-                    fit.first_slip_force(),
-                    fit.second_slip_force(),
-                    fit.gross_slip_force(),
+                    axis.first_slip_load(),
+                    axis.second_slip_load(),
+                    axis.gross_load(),
                 );
                 for f in [0.5 * f1, 0.5 * (f1 + f2), 0.5 * (f2 + gross), 0.95 * gross] {
-                    if let Ok(force) = fit.force(f) {
+                    if let Ok(force) = axis.load(f) {
                         models.push(PressFitModel { fit, force });
                     }
                 }
@@ -62,8 +67,8 @@ impl CrossChecked for PressFitProblem {
 
     fn compare(model: &PressFitModel, density: MeshDensity) -> Result<Vec<f64>, NumericError> {
         let params = model.fit.params();
-        let exact = model.fit.regularized(model.force);
-        let mut fe = PressFitFe::new(params, FitLoad::Axial, density);
+        let exact = model.fit.axis(K::LOAD).regularized(model.force);
+        let mut fe = PressFitFe::new(params, K::LOAD, density);
         fe.load_to(model.force.value(), 4)?;
         let (a, d) = fe.sliding_zones();
         let off = (a - exact.slide_from_loaded_face())
@@ -78,10 +83,12 @@ impl CrossChecked for PressFitProblem {
     fn describe(model: &PressFitModel) -> String {
         let p = model.fit.params();
         format!(
-            "K_T={} MPa/mm F={} N r={} ri={} ro={} L={} delta={} mm Es={} Eh={} MPa nus={} \
+            "K_T={} MPa/mm {}={} {} r={} ri={} ro={} L={} delta={} mm Es={} Eh={} MPa nus={} \
              nuh={} mu={}",
             number(p.tangential_stiffness),
+            K::LOAD.param(),
             number(model.force.value()),
+            K::LOAD.param().spec().unit,
             number(p.fit_radius),
             number(p.bore_radius),
             number(p.outer_radius),
@@ -98,6 +105,7 @@ impl CrossChecked for PressFitProblem {
 
 #[cfg(test)]
 mod tests {
+    use super::super::problem::PressFitProblem;
     use super::*;
 
     /// What `verify` asks of every problem: the full grid within its 1e-3 on the default mesh.

@@ -2,16 +2,20 @@
 //! carries no force beyond F_gross = mu p 2 pi r L, so the search keeps to the mu that carry
 //! every measured force.
 
-use super::problem::PressFitProblem;
+use super::problem::{FitKind, FitProblem};
 use crate::kernel::params::ParamError;
 use crate::problems::fittable::Fittable;
 use crate::problems::pressfit::closed_form::PressFit;
-use crate::problems::pressfit::params::{PressFitParam, PressFitParams};
+use crate::problems::pressfit::params::PressFitParams;
+use crate::problems::problem::Registered;
 
-impl Fittable for PressFitProblem {
-    const RESPONSE_COLUMN: &'static str = "Delta_mm";
-    const FITTED: &'static str = "press fit";
-    const HELD: &'static [PressFitParam] = PressFitParam::STRUCTURE;
+impl<K: FitKind> Fittable for FitProblem<K>
+where
+    FitProblem<K>: Registered,
+{
+    const RESPONSE_COLUMN: &'static str = K::RESPONSE_COLUMN;
+    const FITTED: &'static str = K::FITTED;
+    const HELD: &'static [K::Key] = K::HELD;
 
     fn interface_of(fit: &PressFit) -> (f64, f64) {
         let p = fit.params();
@@ -27,11 +31,11 @@ impl Fittable for PressFitProblem {
     }
 
     fn first_macroslip_force(fit: &PressFit) -> f64 {
-        fit.first_slip_force()
+        fit.axis(K::LOAD).first_slip_load()
     }
 
-    /// F_gross / mu = p 2 pi r L.
+    /// F_gross / mu = p 2 pi r L (T_gross / mu = p 2 pi r^2 L).
     fn force_per_friction(fit: &PressFit) -> Option<f64> {
-        Some(fit.gross_slip_force() / fit.params().friction)
+        Some(fit.axis(K::LOAD).gross_load() / fit.params().friction)
     }
 }

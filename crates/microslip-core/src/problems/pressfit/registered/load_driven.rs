@@ -1,24 +1,28 @@
 //! The press fit as a load-driven problem ([`LoadDriven`]): the push-out force F in [0, F_gross],
-//! Delta its response, F_gross = mu p 2 pi r L its regime scale, the shear lag's Masing cycle.
+//! Delta its response, F_gross = mu p 2 pi r L its regime scale, the shear lag's Masing cycle
+//! (or the torque T in [0, T_gross], theta its response: the kind's axis).
 
 use super::point::{FitPoint, fit_point};
-use super::problem::{PressFitModel, PressFitProblem};
+use super::problem::{FitKind, FitProblem, PressFitModel};
 use crate::kernel::params::ParamError;
 use crate::kernel::regime::Law;
 use crate::problems::Param;
 use crate::problems::load_driven::LoadDriven;
 use crate::problems::pressfit::closed_form::{CarriedLoad, PressFit};
 use crate::problems::pressfit::cycle::FitCycle;
-use crate::problems::pressfit::params::PressFitParam;
+use crate::problems::problem::Registered;
 
-impl LoadDriven for PressFitProblem {
+impl<K: FitKind> LoadDriven for FitProblem<K>
+where
+    FitProblem<K>: Registered,
+{
     type Structure = PressFit;
     type Force = CarriedLoad;
     type Cycle = FitCycle;
     type Point = FitPoint;
 
-    const FORCE: Param = Param::PressFit(PressFitParam::Force);
-    const STIFFNESS: Param = Param::PressFit(PressFitParam::Stiffness);
+    const FORCE: Param = K::LOAD_PARAM;
+    const STIFFNESS: Param = K::STIFFNESS_PARAM;
 
     fn structure(model: &PressFitModel) -> PressFit {
         model.fit
@@ -33,11 +37,11 @@ impl LoadDriven for PressFitProblem {
     }
 
     fn force(fit: &PressFit, newtons: f64) -> Result<CarriedLoad, ParamError> {
-        fit.force(newtons)
+        fit.axis(K::LOAD).load(newtons)
     }
 
     fn clamped_force(fit: &PressFit, newtons: f64) -> CarriedLoad {
-        fit.axial().clamped(newtons)
+        fit.axis(K::LOAD).clamped(newtons)
     }
 
     fn load_value(force: CarriedLoad) -> f64 {
@@ -45,27 +49,28 @@ impl LoadDriven for PressFitProblem {
     }
 
     fn force_scale(fit: &PressFit) -> f64 {
-        fit.gross_slip_force()
+        fit.axis(K::LOAD).gross_load()
     }
 
     fn regime_changes(fit: &PressFit) -> Vec<f64> {
-        vec![fit.first_slip_force(), fit.second_slip_force()]
+        let axis = fit.axis(K::LOAD);
+        vec![axis.first_slip_load(), axis.second_slip_load()]
     }
 
     fn response(fit: &PressFit, law: Law, force: CarriedLoad) -> f64 {
-        fit.axial().solve(law, force).response()
+        fit.axis(K::LOAD).solve(law, force).response()
     }
 
     fn point(fit: &PressFit, force: CarriedLoad) -> FitPoint {
-        fit_point(fit, force)
+        fit_point(fit.axis(K::LOAD), force)
     }
 
     fn holding_zone(fit: &PressFit, law: Law, force: CarriedLoad) -> [f64; 2] {
-        fit.axial().solve(law, force).holding_zone()
+        fit.axis(K::LOAD).solve(law, force).holding_zone()
     }
 
     fn cycle(fit: &PressFit, law: Law, amplitude: CarriedLoad) -> FitCycle {
-        FitCycle::new(fit.axial(), law, amplitude)
+        FitCycle::new(fit.axis(K::LOAD), law, amplitude)
     }
 
     fn tangential_stiffness(fit: &PressFit) -> f64 {

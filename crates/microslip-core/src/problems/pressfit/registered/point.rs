@@ -1,9 +1,10 @@
 //! The press fit at one force, for the reports and sweeps ([`Pointwise`]).
 
-use super::problem::{PressFitModel, PressFitProblem};
+use super::problem::{FitKind, FitProblem, PressFitModel};
 use crate::kernel::regime::Regime;
 use crate::problems::pointwise::Pointwise;
-use crate::problems::pressfit::closed_form::{CarriedLoad, FitState, PressFit};
+use crate::problems::pressfit::closed_form::{CarriedLoad, FitAxis, FitState};
+use crate::problems::problem::Registered;
 
 /// Everything the reports show about the fit at one push-out force, both laws.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -24,9 +25,9 @@ pub struct FitPoint {
     pub regime_regularized: Regime,
 }
 
-/// The fit at one force.
-pub fn fit_point(fit: &PressFit, force: CarriedLoad) -> FitPoint {
-    let (coulomb, regularized) = (fit.coulomb(force), fit.regularized(force));
+/// The fit at one load of `axis`.
+pub fn fit_point(axis: &FitAxis, force: CarriedLoad) -> FitPoint {
+    let (coulomb, regularized) = (axis.coulomb(force), axis.regularized(force));
     let zones = |s: &FitState| (s.slide_from_loaded_face(), s.slide_from_held_face());
     FitPoint {
         force: force.value(),
@@ -39,10 +40,13 @@ pub fn fit_point(fit: &PressFit, force: CarriedLoad) -> FitPoint {
     }
 }
 
-impl Pointwise for PressFitProblem {
+impl<K: FitKind> Pointwise for FitProblem<K>
+where
+    FitProblem<K>: Registered,
+{
     type Point = FitPoint;
 
     fn point(model: &PressFitModel) -> FitPoint {
-        fit_point(&model.fit, model.force)
+        fit_point(model.fit.axis(K::LOAD), model.force)
     }
 }

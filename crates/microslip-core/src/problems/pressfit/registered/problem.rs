@@ -1,5 +1,10 @@
 //! The press fit as a [`Problem`]: parameter values by index, the model, both laws' solutions and
 //! the bound F <= F_gross its inputs put on one another.
+//!
+//! Written once over the load ([`FitKind`]): the push-out ([`PushOut`]) is the only kind
+//! registered; the torque, a second kind over [`PressFit::torsion`], is to come (the folder's
+//! module docs). [`PressFitProblem`] is both a type and its value, as a unit struct is, so the
+//! registry names it as it names every problem.
 
 use super::DESCRIPTION;
 use crate::kernel::params::{ParamError, ParamSpec};
@@ -7,21 +12,117 @@ use crate::numeric::NumericError;
 use crate::problems::cross_check::CrossCheckedOf;
 use crate::problems::fittable::FittableOf;
 use crate::problems::inputs::InterfaceData;
+use crate::problems::inputs::{Inputs, Model};
 use crate::problems::load_driven::{LoadDriven, LoadDrivenOf};
 use crate::problems::pressfit::closed_form::{CarriedLoad, FitState, PressFit};
 use crate::problems::pressfit::continuum::{
     ContinuumPressFit, PressFitContinuumMesh, solve_pressfit_continuum,
 };
-use crate::problems::pressfit::params::{PressFitParam, PressFitParams};
+use crate::problems::pressfit::params::{FitLoad, PressFitParam, PressFitParams};
 use crate::problems::problem::{
-    Continuum, Laws, ParamKey, Problem, ProblemFaces, continuum_response,
+    Continuum, ContinuumResponse, Laws, ParamKey, Problem, ProblemFaces, Registered,
+    continuum_response,
 };
 use crate::problems::zoned::erased_layout;
-use crate::problems::{Description, Quantity};
+use crate::problems::{Description, Param, Quantity};
+use std::marker::PhantomData;
+
+/// The registry's bridges of one kind of fit (what `enum_bridges!` writes): its variants of
+/// `Inputs` and `Model`.
+pub trait FitBridges {
+    /// Always [`PressFitInputs`].
+    type Params;
+    /// Always [`PressFitModel`].
+    type Model;
+    /// Into the registry's inputs.
+    fn to_inputs(params: Self::Params) -> crate::problems::inputs::Inputs;
+    /// Out of them, when they are this kind's.
+    fn from_inputs(inputs: &crate::problems::inputs::Inputs) -> Option<Self::Params>;
+    /// Into the registry's model.
+    fn to_model(model: Self::Model) -> crate::problems::inputs::Model;
+    /// Out of it, when it is this kind's.
+    fn from_model(model: &crate::problems::inputs::Model) -> Option<Self::Model>;
+}
+
+/// One way of loading the fit as a problem: its load, its keys and its words. Everything else
+/// of the registered problem is written once over it.
+pub trait FitKind:
+    FitBridges<Params = PressFitInputs, Model = PressFitModel>
+    + std::fmt::Debug
+    + Clone
+    + Copy
+    + PartialEq
+    + Eq
+    + Send
+    + Sync
+    + 'static
+{
+    /// Which load.
+    const LOAD: FitLoad;
+    /// The description.
+    const INFO: &'static Description;
+    /// How a refusal names it.
+    const REFUSED_AS: &'static str;
+    /// Its key type (the generated `Param` wraps one per problem).
+    type Key: ParamKey;
+    /// The load's parameter.
+    const LOAD_PARAM: Param;
+    /// K_T's parameter.
+    const STIFFNESS_PARAM: Param;
+    /// The load of its paper preset (the #98 fit at half its gross load).
+    const PAPER_LOAD: f64;
+    /// The fit's parameter a key is.
+    fn param(key: Self::Key) -> PressFitParam;
+    /// The axisymmetric continuum's response, where the kind has one.
+    const CONTINUUM: Option<ContinuumResponse>;
+    /// `Fittable::RESPONSE_COLUMN`.
+    const RESPONSE_COLUMN: &'static str;
+    /// `Fittable::FITTED`.
+    const FITTED: &'static str;
+    /// `Fittable::HELD`: the fit's own keys, r to delta.
+    const HELD: &'static [Self::Key];
+    /// `CrossChecked::COMPARED`.
+    const COMPARED: &'static [&'static str];
+}
+
+/// The press fit under one kind of load, as a type: see [`Problem`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FitProblem<K>(PhantomData<K>);
+
+/// The push-out: F (N), Delta (mm).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PushOut;
 
 /// The press fit pushed out, as a type: see [`Problem`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct PressFitProblem;
+pub type PressFitProblem = FitProblem<PushOut>;
+
+/// The press fit pushed out, as a value (what the registry hands out).
+#[allow(non_upper_case_globals)]
+pub const PressFitProblem: PressFitProblem = FitProblem(PhantomData);
+
+impl FitBridges for PushOut {
+    type Params = PressFitInputs;
+    type Model = PressFitModel;
+    enum_bridges!(PressFit);
+}
+
+impl FitKind for PushOut {
+    const LOAD: FitLoad = FitLoad::Axial;
+    const INFO: &'static Description = &DESCRIPTION;
+    const REFUSED_AS: &'static str = "the press fit";
+    type Key = PressFitParam;
+    const LOAD_PARAM: Param = Param::PressFit(PressFitParam::Force);
+    const STIFFNESS_PARAM: Param = Param::PressFit(PressFitParam::Stiffness);
+    const PAPER_LOAD: f64 = 685.5;
+    fn param(key: PressFitParam) -> PressFitParam {
+        key
+    }
+    const CONTINUUM: Option<ContinuumResponse> = Some(continuum_response::<PressFitProblem>);
+    const RESPONSE_COLUMN: &'static str = "Delta_mm";
+    const FITTED: &'static str = "press fit";
+    const HELD: &'static [PressFitParam] = PressFitParam::STRUCTURE;
+    const COMPARED: &'static [&'static str] = &["pressfit Delta (mm)", "pressfit zones (/L)"];
+}
 
 /// The fit's parameters and the push-out force F (N), unvalidated.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,25 +150,28 @@ impl ParamKey for PressFitParam {
     }
 }
 
-impl Problem for PressFitProblem {
-    const INFO: &'static Description = &DESCRIPTION;
-    const REFUSED_AS: &'static str = "the press fit";
-    type Key = PressFitParam;
+impl<K: FitKind> Problem for FitProblem<K>
+where
+    FitProblem<K>: Registered,
+{
+    const INFO: &'static Description = K::INFO;
+    const REFUSED_AS: &'static str = K::REFUSED_AS;
+    type Key = K::Key;
     type Params = PressFitInputs;
     type Model = PressFitModel;
     type State = Laws<FitState, FitState>;
 
-    /// The #98 fit at half its F_gross.
+    /// The #98 fit at half its gross load.
     fn paper() -> PressFitInputs {
         PressFitInputs {
             structure: PressFitParams::CCX98,
-            force: 685.5,
+            force: K::PAPER_LOAD,
         }
     }
 
     fn slot(params: &mut PressFitInputs, index: usize) -> Option<&mut f64> {
-        match *PressFitParam::PUSH_OUT.get(index)? {
-            PressFitParam::Force => Some(&mut params.force),
+        match K::param(*<K::Key as ParamKey>::KEYS.get(index)?) {
+            PressFitParam::Force | PressFitParam::Torque => Some(&mut params.force),
             param => params.structure.value_mut(param),
         }
     }
@@ -76,7 +180,7 @@ impl Problem for PressFitProblem {
         let fit = PressFit::new(params.structure)?;
         Ok(PressFitModel {
             fit,
-            force: fit.force(params.force)?,
+            force: fit.axis(K::LOAD).load(params.force)?,
         })
     }
 
@@ -89,13 +193,13 @@ impl Problem for PressFitProblem {
 
     fn solve(model: &PressFitModel) -> Self::State {
         Laws {
-            coulomb: model.fit.coulomb(model.force),
-            regularized: model.fit.regularized(model.force),
+            coulomb: model.fit.axis(K::LOAD).coulomb(model.force),
+            regularized: model.fit.axis(K::LOAD).regularized(model.force),
         }
     }
 
     fn quantity(model: &PressFitModel, quantity: Quantity) -> Option<f64> {
-        crate::problems::pressfit::quantity(model.fit.axial(), model.force, quantity)
+        crate::problems::pressfit::quantity(model.fit.axis(K::LOAD), model.force, quantity)
     }
 
     fn regime_scale(model: &PressFitModel) -> Option<f64> {
@@ -103,20 +207,21 @@ impl Problem for PressFitProblem {
     }
 
     /// The domain, narrowed where the inputs bound one another: ri < r < ro (each radius between
-    /// its neighbours), and F <= F_gross = mu p 2 pi r L, which bounds F from above and mu, delta
-    /// and L from below (F_gross is proportional to each: p to delta). The radii and the moduli
+    /// its neighbours), and F <= F_gross = mu p 2 pi r L (T <= T_gross = F_gross r), which bounds
+    /// the load from above and mu, delta and L from below (the gross load is proportional to
+    /// each: p to delta). The radii and the moduli
     /// move F_gross too, not in proportion (p falls to 0 as either wall thins, and grows with
     /// each modulus): their bounds are found by bisection on the model's acceptance.
     fn accepted_range(model: &PressFitModel, index: usize) -> (f64, f64) {
-        let Some(&param) = PressFitParam::PUSH_OUT.get(index) else {
+        let Some(param) = <K::Key as ParamKey>::KEYS.get(index).map(|&k| K::param(k)) else {
             return (f64::NAN, f64::NAN);
         };
         let domain = param.spec().domain;
         let (min, max) = (domain.min(), domain.max());
         let p = model.fit.params();
-        let gross = model.fit.gross_slip_force();
+        let gross = model.fit.axis(K::LOAD).gross_load();
         match param {
-            PressFitParam::Force => (min, max.min(gross)),
+            PressFitParam::Force | PressFitParam::Torque => (min, max.min(gross)),
             PressFitParam::Friction | PressFitParam::Interference | PressFitParam::Length => {
                 Self::range_above_proportional_bound(
                     model,
@@ -158,17 +263,32 @@ impl Problem for PressFitProblem {
     }
 
     const FACES: &'static ProblemFaces = &ProblemFaces {
-        continuum: Some(continuum_response::<PressFitProblem>),
-        load_driven: Some(&LoadDrivenOf::<PressFitProblem>::NEW),
-        fittable: Some(&FittableOf::<PressFitProblem>::NEW),
-        cross_checked: Some(&CrossCheckedOf::<PressFitProblem>::NEW),
-        zoned: Some(erased_layout::<PressFitProblem>),
+        continuum: K::CONTINUUM,
+        load_driven: Some(&LoadDrivenOf::<Self>::NEW),
+        fittable: Some(&FittableOf::<Self>::NEW),
+        cross_checked: Some(&CrossCheckedOf::<Self>::NEW),
+        zoned: Some(erased_layout::<Self>),
         ..ProblemFaces::NONE
     };
 
-    enum_bridges!(PressFit);
+    fn to_inputs(params: PressFitInputs) -> Inputs {
+        K::to_inputs(params)
+    }
+
+    fn from_inputs(inputs: &Inputs) -> Option<PressFitInputs> {
+        K::from_inputs(inputs)
+    }
+
+    fn to_model(model: PressFitModel) -> Model {
+        K::to_model(model)
+    }
+
+    fn from_model(model: &Model) -> Option<PressFitModel> {
+        K::from_model(model)
+    }
 }
 
+/// The axisymmetric continuum is the push-out's (a torsional continuum is left).
 impl Continuum for PressFitProblem {
     type Mesh = PressFitContinuumMesh;
     type Reference = ContinuumPressFit;

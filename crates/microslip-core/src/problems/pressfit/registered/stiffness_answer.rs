@@ -1,7 +1,8 @@
 //! What a K_T does to the press fit at its force ([`StiffnessAnswer`]).
 
-use super::problem::{PressFitModel, PressFitProblem};
+use super::problem::{FitKind, FitProblem, PressFitModel};
 use crate::kernel::regime::Regime;
+use crate::problems::problem::Registered;
 use crate::problems::stiffness_answer::StiffnessAnswer;
 
 /// The fit at the model's force, with a candidate K_T.
@@ -17,14 +18,18 @@ pub struct FitAnswer {
     pub regime: Regime,
 }
 
-impl StiffnessAnswer for PressFitProblem {
+impl<K: FitKind> StiffnessAnswer for FitProblem<K>
+where
+    FitProblem<K>: Registered,
+{
     type Answer = FitAnswer;
 
     fn answer(model: &PressFitModel, kt: f64) -> Option<FitAnswer> {
         let fit = model.fit.with_tangential_stiffness(kt).ok()?;
-        let state = fit.regularized(model.force);
+        let axis = fit.axis(K::LOAD);
+        let state = axis.regularized(model.force);
         Some(FitAnswer {
-            first_slip_force: fit.first_slip_force(),
+            first_slip_force: axis.first_slip_load(),
             zones: (state.slide_from_loaded_face(), state.slide_from_held_face()),
             displacement: state.response(),
             regime: state.regime(),
@@ -36,6 +41,6 @@ impl StiffnessAnswer for PressFitProblem {
     }
 
     fn coulomb_response(model: &PressFitModel) -> f64 {
-        model.fit.coulomb(model.force).response()
+        model.fit.axis(K::LOAD).coulomb(model.force).response()
     }
 }
