@@ -17,8 +17,10 @@
 //! response's symbol and the load's JSON key are constants the generic layers read without
 //! asking a setting (`F_N`, `F_gross`, `Delta_mm`), so a setting cannot turn F into T; a type
 //! can, with the same closed forms. What it will read is here already: its keys
-//! ([`params::PressFitParam::TORQUE_KEYS`]), its bound ([`TORQUE_BOUND`]), its quantities
-//! ([`TORQUE_QUANTITIES`]) and their values ([`quantity`], over either [`closed_form::FitAxis`]).
+//! ([`params::PressFitParam::TORQUE_KEYS`], as their own key type [`TorqueParam`]), its bound
+//! ([`TORQUE_BOUND`]), its quantities ([`TORQUE_QUANTITIES`]) and their values ([`quantity`],
+//! over either [`closed_form::FitAxis`]); the registered impls are written once over the kind of
+//! load (`registered::problem::FitKind`), the push-out its one kind so far.
 //!
 //! **Its response is the twist theta in rad**, not the circumferential slip r theta in mm: theta
 //! is what a torsion test measures (the angle between the shaft's end and the hub's held face),
@@ -31,14 +33,15 @@
 //! T dtheta is N mm) and the loop and sweep CSV rows are its face's own `LoopRow` and `LoadRow`
 //! types. The fixed `_mm` columns of the application's `report/rows.rs` are the beams' rows.
 //!
-//! What registering it still needs (not done: issue 44's torque bullet): a key type whose
-//! `ParamKey::KEYS` are the torque's keys (the generated `Param` wraps one key type per problem,
-//! so `PressFitParam`, whose `KEYS` are the push-out's, cannot be it twice); the registered impls
-//! of `registered/` written once over the axis (a marker type naming the `FitLoad`, the key type,
-//! the description and the registry's bridges); and in the application, a face folder that two
-//! registry lines can name (`face_folders!` declares `pub mod $folder;` per line, and the preset
-//! and figure lists read `$folder::BUNDLED_PRESETS` per line, which would list the push-out's
-//! presets twice).
+//! What registering it still needs (not done: issue 44's torque bullet): its kind (`Twist`: the
+//! torque's `FitLoad`, `TorqueParam`, a `Description` keyed `pressfit-torque`, the bridges to
+//! `Param`/`Inputs`/`Model::PressFitTorque`, no continuum: the axisymmetric continuum is the
+//! push-out's, a torsional one is left) and its registry line; in the application, a face folder
+//! that two registry lines can name (`face_folders!` declares `pub mod $folder;` per line, the
+//! prelude's and `study::curves`'s glob re-exports and the preset and figure lists read the folder
+//! per line, so the push-out's presets would be listed twice), and the torque's faces (chart,
+//! pane, report and cycle, deck and compare: CalculiX's CAX elements carry no twist, so its deck
+//! refuses).
 
 pub mod closed_form;
 pub mod continuum;
@@ -48,6 +51,7 @@ pub mod lame;
 pub mod params;
 pub mod registered;
 pub mod validity;
+pub use registered::TorqueParam;
 pub use registered::point;
 pub use registered::problem::PressFitProblem;
 

@@ -13,10 +13,12 @@ pub mod zoned;
 
 use super::params::PressFitParam;
 use super::{PUSH_OUT_BOUND, QUANTITIES};
+use crate::kernel::params::ParamSpec;
+use crate::problems::problem::ParamKey;
 use crate::problems::{Description, Param};
 
 /// Every parameter of the push-out as a [`Param`], in display order (the torque, `T`, belongs to
-/// the torsion's problem, to come: the folder's module docs).
+/// the twisted fit's problem, to come: the folder's module docs).
 const PARAMS: [Param; PressFitParam::PUSH_OUT.len()] = {
     let keys = PressFitParam::PUSH_OUT;
     let mut all = [Param::PressFit(keys[0]); PressFitParam::PUSH_OUT.len()];
@@ -42,3 +44,60 @@ pub(crate) const DESCRIPTION: Description = Description {
     load_span: 1.0,
     quantities: &QUANTITIES,
 };
+
+/// A key of the twisted fit, to come: one of the fit's parameters, `T` for `F`
+/// ([`PressFitParam::TORQUE_KEYS`]). A type of its own because the registry's `Param` wraps one
+/// key type per problem, and a key type's [`ParamKey::KEYS`] are its problem's: `PressFitParam`'s
+/// are the push-out's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct TorqueParam(pub PressFitParam);
+
+impl TorqueParam {
+    /// The twisted fit's keys, in display order.
+    pub const KEYS: [TorqueParam; 12] = {
+        let keys = PressFitParam::TORQUE_KEYS;
+        let mut all = [TorqueParam(PressFitParam::Torque); 12];
+        let mut i = 0;
+        while i < all.len() {
+            all[i] = TorqueParam(keys[i]);
+            i += 1;
+        }
+        all
+    };
+
+    /// Its own keys, r to delta (what a fit of mu and K_T holds: `Fittable::HELD`).
+    pub const STRUCTURE: &'static [TorqueParam] = Self::KEYS.split_at(9).0;
+}
+
+impl ParamKey for TorqueParam {
+    const KEYS: &'static [TorqueParam] = &TorqueParam::KEYS;
+
+    fn spec(self) -> ParamSpec {
+        self.0.spec()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::problems::ModelKind;
+
+    /// The torque's keys parse as their own, T among them and F not; their places are the
+    /// torque's order, not the push-out's.
+    #[test]
+    fn the_torque_keys_parse_t_and_refuse_f() {
+        let t = TorqueParam::parse_key("T", ModelKind::PressFit).unwrap();
+        assert_eq!(t, TorqueParam(PressFitParam::Torque));
+        assert_eq!(t.index(), 11);
+        assert_eq!(TorqueParam(PressFitParam::Stiffness).index(), 10);
+        assert!(TorqueParam::parse_key("F", ModelKind::PressFit).is_err());
+        let held: Vec<&str> = TorqueParam::STRUCTURE
+            .iter()
+            .map(|k| k.spec().name)
+            .collect();
+        assert_eq!(
+            held,
+            ["r", "ri", "ro", "L", "Es", "nus", "Eh", "nuh", "delta"]
+        );
+    }
+}
