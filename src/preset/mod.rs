@@ -203,14 +203,20 @@ macro_rules! bundled_presets {
     };
 }
 
-/// [`bundled_presets!`] as one list.
+/// [`bundled_presets!`] as one list, each preset once: a folder that two registry lines name
+/// lists its presets for both.
 static BUNDLED: std::sync::LazyLock<Vec<(&'static str, &'static str)>> =
     std::sync::LazyLock::new(|| {
-        microslip_core::with_problems!(bundled_presets)
+        let mut all: Vec<(&'static str, &'static str)> = Vec::new();
+        for &(name, text) in microslip_core::with_problems!(bundled_presets)
             .into_iter()
             .flatten()
-            .copied()
-            .collect()
+        {
+            if all.iter().all(|(seen, _)| *seen != name) {
+                all.push((name, text));
+            }
+        }
+        all
     });
 
 /// The setting that is a name (not a number) of any problem whose preset key is `key`
@@ -406,10 +412,16 @@ mod tests {
                 [$((ModelKind::$variant, crate::problems::$folder::BUNDLED_PRESETS)),+]
             };
         }
-        for (kind, presets) in microslip_core::with_problems!(owners) {
-            for (name, _) in presets {
-                assert_eq!(resolve(name).unwrap().inputs.kind(), kind, "{name}");
-            }
+        // Each preset is one of the problems whose folder lists it (a folder that two lines name
+        // lists its presets for both).
+        let owners = microslip_core::with_problems!(owners);
+        for (name, _) in BUNDLED.iter() {
+            let kind = resolve(name).unwrap().inputs.kind();
+            assert!(
+                owners.iter().any(|(owner, presets)| *owner == kind
+                    && presets.iter().any(|(listed, _)| listed == name)),
+                "{name}"
+            );
         }
     }
 

@@ -17,10 +17,23 @@
 
 pub use microslip_core::problems::*;
 
-/// Declares each problem's folder of faces from the registry, so that this file lists none.
+/// Declares each problem's folder of faces from the registry, so that this file lists none: each
+/// folder once, however many registry lines name it (one folder may hold two problems of one
+/// structure, as the press fit's will hold the push-out and the torque). `macro_rules` cannot
+/// compare two identifiers, so each step defines a matcher whose rules are the folders declared
+/// so far and declares the next folder only where none of them matches it.
 macro_rules! face_folders {
     ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
-        $($(#[$doc])* pub mod $folder;)+
+        face_folders!(@once [] $($folder)+);
+    };
+    (@once [$($declared:ident)*]) => {};
+    (@once [$($declared:ident)*] $folder:ident $($rest:ident)*) => {
+        macro_rules! declare_unless_declared {
+            $(($declared) => {};)*
+            ($name:ident) => { pub mod $name; };
+        }
+        declare_unless_declared!($folder);
+        face_folders!(@once [$($declared)* $folder] $($rest)*);
     };
 }
 

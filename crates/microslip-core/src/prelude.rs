@@ -31,7 +31,10 @@ macro_rules! problem_exports {
     ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
         $(
             pub use crate::problems::$folder::$problem;
+            // A folder that two registry lines name is re-exported twice: the same items.
+            #[allow(unused_imports)]
             pub use crate::problems::$folder::closed_form::*;
+            #[allow(unused_imports)]
             pub use crate::problems::$folder::params::*;
         )+
     };

@@ -40,11 +40,17 @@ macro_rules! paper_figures {
 #[cfg(any(feature = "app", test))]
 pub(crate) static PAPER_FIGURES: std::sync::LazyLock<Vec<PaperFigure>> =
     std::sync::LazyLock::new(|| {
-        microslip_core::with_problems!(paper_figures)
+        let mut all: Vec<PaperFigure> = Vec::new();
+        for figure in microslip_core::with_problems!(paper_figures)
             .into_iter()
             .flatten()
-            .copied()
-            .collect()
+        {
+            // A folder that two registry lines name lists its figures for both: once here.
+            if all.iter().all(|seen| seen.stem != figure.stem) {
+                all.push(*figure);
+            }
+        }
+        all
     });
 
 /// One figure of an index page: its files, its title and what it shows.

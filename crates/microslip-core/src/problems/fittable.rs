@@ -196,7 +196,8 @@ mod tests {
                 continue;
             };
             assert!(fittable.held().iter().all(|p| p.model() == kind));
-            // The load column is the load parameter's key and unit, as its sweep heads it.
+            // The load column is the load parameter's key and unit, as its sweep heads it (a unit
+            // of two symbols joined: `T_Nmm`, as the cycle's `D_Nmm`).
             let load = fittable.load();
             assert_eq!(Some(load), kind.description().load, "{kind}");
             assert_eq!(
@@ -204,7 +205,7 @@ mod tests {
                 format!(
                     "{}_{}",
                     load.name(),
-                    load.unit().symbol().replace('/', "_per_")
+                    load.unit().symbol().replace('/', "_per_").replace(' ', "")
                 ),
                 "{kind}"
             );

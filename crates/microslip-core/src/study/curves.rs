@@ -38,7 +38,8 @@ pub use crate::study::zones::{InterfaceZones, Zone, ZoneBoundary, ZoneSpan, inte
 /// naming a problem.
 macro_rules! problem_points {
     ($($(#[$doc:meta])* $variant:ident => $folder:ident :: $problem:ident),+ $(,)?) => {
-        $(pub use crate::problems::$folder::point::*;)+
+        // A folder that two registry lines name is re-exported twice: the same items.
+        $(#[allow(unused_imports)] pub use crate::problems::$folder::point::*;)+
     };
 }
 

@@ -13,6 +13,7 @@ impl<K: FitKind> Fittable for FitProblem<K>
 where
     FitProblem<K>: Registered,
 {
+    const LOAD_COLUMN: &'static str = K::LOAD_COLUMN;
     const RESPONSE_COLUMN: &'static str = K::RESPONSE_COLUMN;
     const FITTED: &'static str = K::FITTED;
     const HELD: &'static [K::Key] = K::HELD;

@@ -75,6 +75,8 @@ pub trait FitKind:
     fn param(key: Self::Key) -> PressFitParam;
     /// The axisymmetric continuum's response, where the kind has one.
     const CONTINUUM: Option<ContinuumResponse>;
+    /// `Fittable::LOAD_COLUMN`.
+    const LOAD_COLUMN: &'static str;
     /// `Fittable::RESPONSE_COLUMN`.
     const RESPONSE_COLUMN: &'static str;
     /// `Fittable::FITTED`.
@@ -118,6 +120,7 @@ impl FitKind for PushOut {
         key
     }
     const CONTINUUM: Option<ContinuumResponse> = Some(continuum_response::<PressFitProblem>);
+    const LOAD_COLUMN: &'static str = "F_N";
     const RESPONSE_COLUMN: &'static str = "Delta_mm";
     const FITTED: &'static str = "press fit";
     const HELD: &'static [PressFitParam] = PressFitParam::STRUCTURE;
