@@ -11,6 +11,12 @@ use crate::problems::load_driven::{LoadDriven, MasingCycle};
 use crate::study::curves::{LoopPoint, Samples, Series};
 use crate::study::load;
 
+/// The load's symbol and unit as the problem's descriptor names them (`F`, `N`; the twisted
+/// fit's `T`, `N mm`): every title and axis of these charts says the problem's own load.
+pub(crate) fn load_words<P: LoadDriven>() -> (&'static str, &'static str) {
+    P::INFO.load_words().unwrap_or(("F", "N"))
+}
+
 /// Loop points per branch: one per column of a 100-column chart.
 pub(crate) const LOOP_POINTS: u64 = super::SAMPLES / 2 + 1;
 
@@ -64,10 +70,11 @@ pub(crate) fn response_plot<P: LoadDriven>(
     let top = 1.05 * max_y(series.iter().map(|s| &s.points)).max(f64::MIN_POSITIVE);
     let y = linear_axis(labels.response_axis, 0.0, top);
     series.push(cursor(f, y.bounds));
+    let (load, unit) = load_words::<P>();
     Some(Plot {
         caption: None,
-        title: format!("{} vs F, K_T = {} MPa/mm", labels.response, number(kt)),
-        x: linear_axis("F (N)", 0.0, f_max),
+        title: format!("{} vs {load}, K_T = {} MPa/mm", labels.response, number(kt)),
+        x: linear_axis(format!("{load} ({unit})"), 0.0, f_max),
         y,
         series,
     })
@@ -88,16 +95,17 @@ pub(crate) fn loop_chart<P: LoadDriven>(
     );
     let loops = load::cycle_loop::<P>(model, force, LOOP_POINTS).ok()?;
     let (prefix, d) = labels.loop_title;
+    let (load, unit) = load_words::<P>();
     Some(loop_plot(
         format!(
-            "{prefix}+-{} N; {d} {} C, {} R N mm",
+            "{prefix}+-{} {unit}; {d} {} C, {} R N mm",
             number(f),
             number_with(coulomb.dissipation(), 3),
             number_with(regularized.dissipation(), 3)
         ),
         loops,
         coulomb.peak_response().max(regularized.peak_response()),
-        (f, "F (N)"),
+        (f, &format!("{load} ({unit})")),
         labels.response_axis,
     ))
 }
@@ -115,16 +123,18 @@ pub(crate) fn dissipation_chart<P: LoadDriven>(
         &load::cycle_point::<P>(model, force),
         curves,
         (P::load_value(force), f_max),
-        labels.dissipation_axis,
+        (labels.dissipation_axis, load_words::<P>()),
     ))
 }
 
-/// A profile along the interface at the current force `f` (N) and K_T (MPa/mm), both laws, with
-/// its limit as a flat line: tau(x) under mu P, s(x) under mu P / K_T. `quantity` is the title's
-/// symbol and the y axis's title (`tau(x)`, `tau (MPa)`), `limit` the line's name and value.
+/// A profile along the interface at the current load `f` (its symbol and unit `load`, as
+/// [`load_words`]) and K_T (MPa/mm), both laws, with its limit as a flat line: tau(x) under mu P,
+/// s(x) under mu P / K_T. `quantity` is the title's symbol and the y axis's title (`tau(x)`,
+/// `tau (MPa)`), `limit` the line's name and value.
 pub(crate) fn profile_plot(
     quantity: (&str, &str),
     (f, kt): (f64, f64),
+    (load, unit): (&str, &str),
     length: f64,
     (coulomb, regularized): (Series, Series),
     (limit_name, limit): (&str, f64),
@@ -133,7 +143,7 @@ pub(crate) fn profile_plot(
     Plot {
         caption: None,
         title: format!(
-            "{} at F = {} N, K_T = {} MPa/mm",
+            "{} at {load} = {} {unit}, K_T = {} MPa/mm",
             quantity.0,
             number(f),
             number(kt)
@@ -180,23 +190,24 @@ pub(crate) fn loop_plot(
     }
 }
 
-/// D against the amplitude, both laws, the cursor at the current force `f` of the axis to
+/// D against the amplitude, both laws, the cursor at the current load `f` of the axis to
 /// `f_max`; the title gives zeta at `f` (at most 41 characters, an 80x24 chart pane's title row).
+/// `load` is the load's symbol and unit ([`load_words`]).
 fn dissipation_plot(
     at: &load::CyclePoint,
     (coulomb, regularized): (Series, Series),
     (f, f_max): (f64, f64),
-    y_title: &str,
+    (y_title, (load, unit)): (&str, (&str, &str)),
 ) -> Plot {
     let top = 1.05 * max_y([&coulomb, &regularized]).max(f64::MIN_POSITIVE);
     Plot {
         caption: None,
         title: format!(
-            "D vs F_a; zeta at F {} C, {} R",
+            "D vs {load}_a; zeta at {load} {} C, {} R",
             number_with(at.zeta_coulomb, 3),
             number_with(at.zeta_regularized, 3)
         ),
-        x: linear_axis("F_a (N)", 0.0, f_max),
+        x: linear_axis(format!("{load}_a ({unit})"), 0.0, f_max),
         y: linear_axis(y_title, 0.0, top),
         series: vec![
             line(SeriesRole::Coulomb, "Coulomb", coulomb),

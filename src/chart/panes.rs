@@ -388,13 +388,14 @@ pub fn load_tolerance_lines<P: LoadDriven>(
     element: f64,
 ) -> Vec<String> {
     let heading = format!("W{}", &within[1..]);
+    let (load, _) = crate::chart::load::load_words::<P>();
     if f <= 0.0 {
-        return vec![format!("{heading}: any, at F = 0")];
+        return vec![format!("{heading}: any, at {load} = 0")];
     }
     let within = |range| stiffness_for_tolerance::<P>(structure, range, TABLE_TOLERANCE, element);
     vec![
-        format!("{heading} {} at F,", shown(within([f, f]))),
-        format!("  {} at all F up to F", shown(within([0.0, f]))),
+        format!("{heading} {} at {load},", shown(within([f, f]))),
+        format!("  {} at all {load} up to {load}", shown(within([0.0, f]))),
     ]
 }
 
@@ -428,10 +429,12 @@ pub fn ratio_text(regularized: f64, coulomb: f64, none: &str) -> String {
 }
 
 /// The regime pane's heading and both laws' regime words for a load-driven problem at `force`
-/// (N), `what` naming the force (`tip force`): at zero load nothing is loaded, whatever the law,
-/// so the pane says so rather than "microslip".
+/// (its symbol and unit `load`, as the problem's descriptor names them: `("F", "N")`), `what`
+/// naming the force (`tip force`): at zero load nothing is loaded, whatever the law, so the pane
+/// says so rather than "microslip".
 pub fn load_regimes(
     force: f64,
+    (load, unit): (&str, &str),
     what: &str,
     coulomb: impl FnOnce() -> String,
     regularized: impl FnOnce() -> String,
@@ -440,13 +443,13 @@ pub fn load_regimes(
         (
             "unloaded".to_string(),
             "unloaded".to_string(),
-            "At F = 0 N: no load, no slip".to_string(),
+            format!("At {load} = 0 {unit}: no load, no slip"),
         )
     } else {
         (
             coulomb(),
             regularized(),
-            format!("At F = {} N ({what})", number(force)),
+            format!("At {load} = {} {unit} ({what})", number(force)),
         )
     }
 }

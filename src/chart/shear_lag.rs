@@ -10,7 +10,7 @@
 //! (whose keys must differ) maps onto [`ShearLagView`].
 
 use crate::chart::load::{
-    LoadLabels, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
+    LoadLabels, dissipation_chart, fe_loop, load_words, loop_chart, profile_plot, response_plot,
 };
 use crate::chart::{NumericPoints, Plot, SeriesRole, cursor, line, linear_axis, samples};
 use crate::kernel::format::number_with;
@@ -35,18 +35,6 @@ pub(crate) enum ShearLagView {
     Loop,
     /// Dissipation per cycle against the amplitude.
     Dissipation,
-}
-
-/// What the zones chart says: its series' label and its title's words before F_1.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct ZoneWords {
-    /// The series' name after the law (`a, L-d`).
-    pub series: &'static str,
-    /// The title's words before F_1's value, at most 41 characters with it (the title row of an
-    /// 80x24 screen's chart pane).
-    pub title: &'static str,
-    /// The load axis's title, with its unit.
-    pub load_axis: &'static str,
 }
 
 /// One continuum state along a load path, in the charts' terms.
@@ -85,8 +73,6 @@ pub(crate) trait ShearLagFe {
 pub(crate) trait ShearLagCharts: LoadDriven + Profiled {
     /// Its load charts' words.
     const LABELS: LoadLabels;
-    /// Its zones chart's words.
-    const ZONES: ZoneWords;
     /// Its discretized solver.
     type Fe: ShearLagFe;
 
@@ -111,6 +97,16 @@ pub(crate) trait ShearLagCharts: LoadDriven + Profiled {
         structure: &Self::Structure,
         forces: &[f64],
     ) -> Result<Vec<ShearLagContinuumPoint>, NumericError>;
+}
+
+/// The name of the load where sliding first appears (`F_1`, the twisted fit's `T_1`), from the
+/// problem's quantities.
+fn first_slip_name<P: ShearLagCharts>() -> &'static str {
+    P::INFO
+        .quantities
+        .iter()
+        .find(|q| q.quantity == crate::problems::Quantity::FirstMacroslipForce)
+        .map_or("F_1", |q| q.name)
 }
 
 /// The load axis: the whole range the structure carries, 0 to the gross-slip load, or `span`
@@ -138,28 +134,21 @@ pub(crate) fn plot<P: ShearLagCharts>(
         ShearLagView::Zones => {
             let (coulomb, regularized) =
                 curves::zone_outline_vs_force::<P>(structure, forces).ok()?;
-            let words = P::ZONES;
+            let (load, unit) = load_words::<P>();
             let series = vec![
-                line(
-                    SeriesRole::Coulomb,
-                    format!("Coulomb: {}", words.series),
-                    coulomb,
-                ),
-                line(
-                    SeriesRole::Current,
-                    format!("regularized: {}", words.series),
-                    regularized,
-                ),
+                line(SeriesRole::Coulomb, "Coulomb: a, L-d", coulomb),
+                line(SeriesRole::Current, "regularized: a, L-d", regularized),
                 cursor(f, [0.0, length]),
             ];
             Some(Plot {
                 caption: None,
+                // At most 41 characters (the title row of an 80x24 screen's chart pane).
                 title: format!(
-                    "{}{} N",
-                    words.title,
-                    number_with(P::first_slip_force(structure), 4)
+                    "zones: slide below a, above L-d; {} {} {unit}",
+                    first_slip_name::<P>(),
+                    number_with(P::first_slip_force(structure), 4),
                 ),
-                x: linear_axis(words.load_axis, 0.0, f_max),
+                x: linear_axis(format!("{load} ({unit})"), 0.0, f_max),
                 y: linear_axis("x (mm)", 0.0, length),
                 series,
             })
@@ -169,6 +158,7 @@ pub(crate) fn plot<P: ShearLagCharts>(
             Some(profile_plot(
                 ("tau(x)", "tau (MPa)"),
                 (f, kt),
+                load_words::<P>(),
                 length,
                 curves::shear_along_of::<P>(&model, positions),
                 P::strength(structure),
@@ -179,6 +169,7 @@ pub(crate) fn plot<P: ShearLagCharts>(
             Some(profile_plot(
                 ("s(x)", "s (mm)"),
                 (f, kt),
+                load_words::<P>(),
                 length,
                 P::slip_along(&model, positions.values()),
                 P::saturation(structure),

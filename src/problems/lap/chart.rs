@@ -9,7 +9,7 @@ use super::profiles::slip_along;
 use super::{LapContinuumMesh, LapFe, solve_lap_continuum_path};
 use crate::chart::load::LoadLabels;
 use crate::chart::shear_lag::{
-    self, ShearLagCharts, ShearLagContinuumPoint, ShearLagFe, ShearLagView, ZoneWords,
+    self, ShearLagCharts, ShearLagContinuumPoint, ShearLagFe, ShearLagView,
 };
 use crate::chart::view::{ChartFace, ChartSet};
 use crate::chart::{NumericPoints, OVERLAY_POINTS, Plot};
@@ -139,11 +139,6 @@ impl ShearLagCharts for LapJointProblem {
         response_axis: "Delta (mm)",
         loop_title: ("", "D"),
         dissipation_axis: "D (N mm)",
-    };
-    const ZONES: ZoneWords = ZoneWords {
-        series: "a, L-d",
-        title: "zones: slide below a, above L-d; F_1 ",
-        load_axis: "F (N)",
     };
     type Fe = LapFe;
 

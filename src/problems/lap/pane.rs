@@ -79,6 +79,7 @@ fn lap_lines(joint: &LapJoint, force: JointForce) -> Vec<SummaryLine> {
     let ratio = ratio_text(row.delta_regularized, row.delta_coulomb, "- (no load)");
     let (coulomb, regularized, heading) = load_regimes(
         row.force,
+        ("F", "N"),
         "joint force",
         || row.regime_coulomb.short_label().to_string(),
         || row.regime_regularized.short_label().to_string(),

@@ -1,158 +1,184 @@
-//! The press fit's charts as data: Delta vs F with Coulomb and the K_T family, the sliding zones
-//! from each face vs F, tau(x), s(x), the loop and D vs F_a, with the discretized solver's points
-//! and the axisymmetric continuum's points (the problem's [`ChartFace`]). The curves are the
+//! The press fit's charts as data, pushed out or twisted: Delta vs F (theta vs T) with Coulomb
+//! and the K_T family, the sliding zones from each face vs the load, tau(x), s(x), the loop and D
+//! vs the amplitude, with the discretized solver's points and, for the push-out, the
+//! axisymmetric continuum's points (the problem's [`ChartFace`]). The curves are the
 //! shear lag's, shared with the lap joint
 //! ([`crate::chart::shear_lag`]); this file gives the fit's words and numbers.
 
-use super::PressFitProblem;
+use std::marker::PhantomData;
+
 use super::closed_form::PressFit;
 use super::continuum::{PressFitContinuumMesh, solve_pressfit_continuum_path};
 use super::discretized::PressFitFe;
-use super::params::{FitLoad, PressFitParam};
-use super::registered::problem::PressFitModel;
+use super::registered::problem::{FitKind, FitProblem, PressFitModel, PushOut};
 use super::registered::profiles::slip_along;
 use crate::chart::load::LoadLabels;
 use crate::chart::shear_lag::{
-    self, ShearLagCharts, ShearLagContinuumPoint, ShearLagFe, ShearLagView, ZoneWords,
+    self, ShearLagCharts, ShearLagContinuumPoint, ShearLagFe, ShearLagView,
 };
 use crate::chart::view::{ChartFace, ChartSet};
 use crate::chart::{NumericPoints, OVERLAY_POINTS, Plot};
 use crate::numeric::{MeshDensity, NumericError};
 use crate::problems::Param;
+use crate::problems::problem::Registered;
 use crate::problems::profiled::LawProfiles;
 
-/// The press fit's charts, in the order the TUI cycles through them.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum PressFitChart {
-    /// Delta (the shaft's loaded end against the hub's held face) against F, for K_T/5, K_T,
-    /// 5 K_T and Coulomb.
-    Displacement,
-    /// The sliding zones from the loaded face x = 0 and from the held face x = L against F,
-    /// outside the outline of the holding zone, both laws.
-    Zones,
-    /// Interface shear tau(x) along the fit at F.
-    Shear,
-    /// Interface slip s(x) = u_shaft - u_hub along the fit at F.
-    Slip,
-    /// The hysteresis loop of Delta for a push cycling between +F and -F.
-    Loop,
-    /// Dissipation per cycle D against the amplitude F_a.
-    Dissipation,
+/// The charts of one kind of fit, in the order the TUI cycles through them, each one of the
+/// shear lag's six ([`ShearLagView`]): the response against the load for K_T/5, K_T, 5 K_T and
+/// Coulomb; the sliding zones from the loaded face x = 0 and from the held face x = L against
+/// the load, outside the outline of the holding zone, both laws; the interface shear tau(x) and
+/// slip s(x) along the fit at the load; the hysteresis loop of a load cycling between +F and -F
+/// (+T and -T); the dissipation per cycle D against the amplitude.
+///
+/// Why one type over the kind ([`FitKind`]) and not an enum per kind: the push-out's and the
+/// torque's charts are the same curves of the same shear lag; only their titles and keys (which
+/// must differ over the problems) are the kind's ([`FitCharts::CHARTS`]).
+pub struct FitChart<K> {
+    view: ShearLagView,
+    kind: PhantomData<fn() -> K>,
 }
 
-impl ChartSet for PressFitChart {
+/// The push-out's charts: Delta vs F, the zones vs F, tau(x), s(x), the loop, D vs F_a.
+pub type PressFitChart = FitChart<PushOut>;
+
+/// The shear lag's charts in [`FitCharts::CHARTS`]'s order.
+const VIEWS: [ShearLagView; 6] = [
+    ShearLagView::Response,
+    ShearLagView::Zones,
+    ShearLagView::Shear,
+    ShearLagView::Slip,
+    ShearLagView::Loop,
+    ShearLagView::Dissipation,
+];
+
+impl<K> FitChart<K> {
+    const fn of(view: ShearLagView) -> Self {
+        FitChart {
+            view,
+            kind: PhantomData,
+        }
+    }
+
+    /// Its place in [`VIEWS`].
+    fn index(self) -> usize {
+        VIEWS.iter().position(|&v| v == self.view).unwrap_or(0)
+    }
+}
+
+// By hand, not derived: a derive would ask the kind to be `Clone`, `Hash`... itself.
+impl<K> Clone for FitChart<K> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<K> Copy for FitChart<K> {}
+impl<K> PartialEq for FitChart<K> {
+    fn eq(&self, other: &Self) -> bool {
+        self.view == other.view
+    }
+}
+impl<K> Eq for FitChart<K> {}
+impl<K> std::hash::Hash for FitChart<K> {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.view.hash(state);
+    }
+}
+impl<K> std::fmt::Debug for FitChart<K> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "FitChart({:?})", self.view)
+    }
+}
+
+/// What the charts of one kind of fit say and draw beside the shear lag's curves.
+pub(crate) trait FitCharts: FitKind {
+    /// Each chart's (title, key) in [`VIEWS`]' order; the keys are unique over every problem.
+    const CHARTS: [(&'static str, &'static str); 6];
+    /// Its load charts' words.
+    const LABELS: LoadLabels;
+    /// The continuum's states along the monotonic path through `loads`; empty where the kind has
+    /// none.
+    ///
+    /// # Errors
+    /// As the continuum's solver.
+    fn continuum_path(
+        fit: &PressFit,
+        loads: &[f64],
+    ) -> Result<Vec<ShearLagContinuumPoint>, NumericError>;
+}
+
+impl<K: FitCharts> ChartSet for FitChart<K> {
     const ALL: &'static [Self] = &[
-        PressFitChart::Displacement,
-        PressFitChart::Zones,
-        PressFitChart::Shear,
-        PressFitChart::Slip,
-        PressFitChart::Loop,
-        PressFitChart::Dissipation,
+        Self::of(ShearLagView::Response),
+        Self::of(ShearLagView::Zones),
+        Self::of(ShearLagView::Shear),
+        Self::of(ShearLagView::Slip),
+        Self::of(ShearLagView::Loop),
+        Self::of(ShearLagView::Dissipation),
     ];
 
     fn title(self) -> &'static str {
-        match self {
-            PressFitChart::Displacement => "Delta vs F",
-            PressFitChart::Zones => "zones vs F",
-            PressFitChart::Shear => "tau(x) at F",
-            PressFitChart::Slip => "s(x) at F",
-            PressFitChart::Loop => "loop +-F",
-            PressFitChart::Dissipation => "D vs F_a",
-        }
+        K::CHARTS[self.index()].0
     }
 
     fn key(self) -> &'static str {
-        match self {
-            PressFitChart::Displacement => "fit-delta-vs-f",
-            PressFitChart::Zones => "fit-zones-vs-f",
-            PressFitChart::Shear => "fit-tau",
-            PressFitChart::Slip => "fit-slip",
-            PressFitChart::Loop => "fit-loop",
-            PressFitChart::Dissipation => "fit-d-vs-fa",
-        }
+        K::CHARTS[self.index()].1
     }
 
     fn x_param(self) -> Option<Param> {
-        match self {
-            PressFitChart::Displacement | PressFitChart::Zones => {
-                Some(Param::PressFit(PressFitParam::Force))
-            }
-            PressFitChart::Shear
-            | PressFitChart::Slip
-            | PressFitChart::Loop
-            | PressFitChart::Dissipation => None,
-        }
+        matches!(self.view, ShearLagView::Response | ShearLagView::Zones).then_some(K::LOAD_PARAM)
     }
 
     fn load_axis(self) -> bool {
-        match self {
-            PressFitChart::Displacement | PressFitChart::Zones | PressFitChart::Dissipation => true,
-            PressFitChart::Shear | PressFitChart::Slip | PressFitChart::Loop => false,
-        }
+        matches!(
+            self.view,
+            ShearLagView::Response | ShearLagView::Zones | ShearLagView::Dissipation
+        )
     }
 
     fn spans_decades(self) -> bool {
-        self == PressFitChart::Dissipation
+        self.view == ShearLagView::Dissipation
     }
 }
 
-impl PressFitChart {
-    /// The shear-lag chart this one is.
-    fn view(self) -> ShearLagView {
-        match self {
-            PressFitChart::Displacement => ShearLagView::Response,
-            PressFitChart::Zones => ShearLagView::Zones,
-            PressFitChart::Shear => ShearLagView::Shear,
-            PressFitChart::Slip => ShearLagView::Slip,
-            PressFitChart::Loop => ShearLagView::Loop,
-            PressFitChart::Dissipation => ShearLagView::Dissipation,
-        }
-    }
-}
-
-impl ChartFace for PressFitProblem {
-    type Chart = PressFitChart;
+impl<K: FitCharts> ChartFace for FitProblem<K>
+where
+    FitProblem<K>: Registered,
+{
+    type Chart = FitChart<K>;
     const NUMERIC_NAME: &'static str = "1-D finite elements";
 
     fn plot(
         model: &PressFitModel,
-        chart: PressFitChart,
+        chart: FitChart<K>,
         _f_data: f64,
         span: Option<f64>,
     ) -> Option<Plot> {
-        shear_lag::plot::<Self>(&model.fit, model.force, chart.view(), span)
+        shear_lag::plot::<Self>(&model.fit, model.force, chart.view, span)
     }
 
     fn numeric_points(
         model: &PressFitModel,
-        chart: PressFitChart,
+        chart: FitChart<K>,
         density: MeshDensity,
     ) -> Result<Option<NumericPoints>, NumericError> {
         shear_lag::numeric_points::<Self>(
             &model.fit,
             model.force,
-            chart.view(),
+            chart.view,
             density,
             OVERLAY_POINTS,
         )
     }
 }
 
-/// The fit's words and numbers for the shear lag's charts. Its discretized solver is
+/// The fit's numbers for the shear lag's charts, under either load. Its discretized solver is
 /// [`PressFitFe`] (two bars of 1-D elements with Jenkins points between them, which never calls
 /// the closed forms).
-impl ShearLagCharts for PressFitProblem {
-    const LABELS: LoadLabels = LoadLabels {
-        response: "Delta",
-        response_axis: "Delta (mm)",
-        loop_title: ("", "D"),
-        dissipation_axis: "D (N mm)",
-    };
-    const ZONES: ZoneWords = ZoneWords {
-        series: "a, L-d",
-        title: "zones: slide below a, above L-d; F_1 ",
-        load_axis: "F (N)",
-    };
+impl<K: FitCharts> ShearLagCharts for FitProblem<K>
+where
+    FitProblem<K>: Registered,
+{
+    const LABELS: LoadLabels = K::LABELS;
     type Fe = PressFitFe;
 
     fn length(fit: &PressFit) -> f64 {
@@ -160,7 +186,7 @@ impl ShearLagCharts for PressFitProblem {
     }
 
     fn first_slip_force(fit: &PressFit) -> f64 {
-        fit.first_slip_force()
+        fit.axis(K::LOAD).first_slip_load()
     }
 
     fn strength(fit: &PressFit) -> (&'static str, f64) {
@@ -176,12 +202,36 @@ impl ShearLagCharts for PressFitProblem {
     }
 
     fn slip_along(model: &PressFitModel, positions: impl Iterator<Item = f64>) -> LawProfiles {
-        slip_along(model.fit.axial(), model.force, positions)
+        slip_along(model.fit.axis(K::LOAD), model.force, positions)
     }
 
     fn discretized(fit: &PressFit, density: MeshDensity) -> PressFitFe {
-        PressFitFe::new(fit.params(), FitLoad::Axial, density)
+        PressFitFe::new(fit.params(), K::LOAD, density)
     }
+
+    fn continuum_path(
+        fit: &PressFit,
+        loads: &[f64],
+    ) -> Result<Vec<ShearLagContinuumPoint>, NumericError> {
+        K::continuum_path(fit, loads)
+    }
+}
+
+impl FitCharts for PushOut {
+    const CHARTS: [(&'static str, &'static str); 6] = [
+        ("Delta vs F", "fit-delta-vs-f"),
+        ("zones vs F", "fit-zones-vs-f"),
+        ("tau(x) at F", "fit-tau"),
+        ("s(x) at F", "fit-slip"),
+        ("loop +-F", "fit-loop"),
+        ("D vs F_a", "fit-d-vs-fa"),
+    ];
+    const LABELS: LoadLabels = LoadLabels {
+        response: "Delta",
+        response_axis: "Delta (mm)",
+        loop_title: ("", "D"),
+        dissipation_axis: "D (N mm)",
+    };
 
     /// The axisymmetric continuum ([`solve_pressfit_continuum_path`], docs/theory.md (S10)):
     /// shaft and hub as ring bodies, Lamé's p not assumed; its zones as the 1-D theory reads

@@ -9,7 +9,8 @@ use super::closed_form::BeamTheory;
 use super::continuum::{BeamsContinuumMesh, solve_beams_continuum_path};
 use super::problem::BeamsModel;
 use crate::chart::load::{
-    LoadLabels, companions, dissipation_chart, fe_loop, loop_chart, profile_plot, response_plot,
+    LoadLabels, companions, dissipation_chart, fe_loop, load_words, loop_chart, profile_plot,
+    response_plot,
 };
 use crate::chart::view::{ChartFace, ChartSet};
 use crate::chart::{
@@ -189,6 +190,7 @@ fn beam_plot(
             Some(profile_plot(
                 ("tau(x)", "tau (MPa)"),
                 (f, kt),
+                load_words::<TwinBeamsProblem>(),
                 p.length,
                 curves::shear_along_of::<TwinBeamsProblem>(
                     &BeamsModel {

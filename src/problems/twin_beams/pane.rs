@@ -77,6 +77,7 @@ impl PaneFace for TwinBeamsProblem {
         let ratio = ratio_text(row.w_regularized, row.w_coulomb, "- (no load)");
         let (coulomb, regularized, heading) = load_regimes(
             row.force,
+            ("F", "N"),
             "tip force",
             || row.regime_coulomb.to_string(),
             || row.regime_regularized.to_string(),
