@@ -15,9 +15,6 @@ use crate::fit::{MIN_ROWS, Measured, Measurement};
 use crate::kernel::params::{Compact, Domain, Unit};
 use crate::problems::{ModelKind, Param};
 
-/// Header of the optional column of per-point standard deviations of w (mm).
-pub(crate) const SIGMA_COLUMN: &str = "sigma_mm";
-
 /// A problem in a data file, with its 1-based line.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
 #[error("line {line}: {problem}")]
@@ -204,7 +201,8 @@ fn parse_measured_curve(
     curve: &Curve,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Measured, DataError> {
-    let (points, sigma) = read_rows(text, curve, Some(SIGMA_COLUMN), progress)?;
+    let sigma_column = curve.sigma_column();
+    let (points, sigma) = read_rows(text, curve, Some(&sigma_column), progress)?;
     Ok(Measured {
         points: points
             .into_iter()
@@ -232,6 +230,25 @@ pub struct Curve {
     pub x_unit: Unit,
     /// Fewest rows accepted.
     pub min_rows: usize,
+}
+
+impl Curve {
+    /// The header of its optional column of per-point standard deviations ([`sigma_column`]).
+    pub(crate) fn sigma_column(&self) -> String {
+        sigma_column(self.y)
+    }
+}
+
+/// The header of the optional column of per-point standard deviations of the response column
+/// `response`, in the response's unit: `sigma_` and the unit its header ends with (`sigma_mm`
+/// for `w_mm`, the twisted fit's `sigma_rad` for `theta_rad`).
+pub(crate) fn sigma_column(response: &str) -> String {
+    format!("sigma_{}", column_unit(response))
+}
+
+/// The unit a response column's header ends with (`mm` of `w_mm`, `rad` of `theta_rad`).
+pub(crate) fn column_unit(header: &str) -> &str {
+    header.rsplit_once('_').map_or("mm", |(_, unit)| unit)
 }
 
 /// A measured twin-beam curve for the fit: `F_N,w_mm`, at least [`MIN_ROWS`] rows.

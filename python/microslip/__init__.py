@@ -3,7 +3,7 @@
 Units everywhere: mm, N, MPa; the tangential stiffness KT in MPa/mm.
 
 One class per problem of the registry (``TwinBeams``, ``Plate``, ``LapJoint``,
-``HertzianCylinder``, ``PressFit``), built with keyword parameters (a parameter not given takes the bundled paper data set's value) or from a preset::
+``HertzianCylinder``, ``PressFit``, ``PressFitTwisted``), built with keyword parameters (a parameter not given takes the bundled paper data set's value) or from a preset::
 
     import microslip
     beams = microslip.preset("paper-beams")          # or microslip.TwinBeams(KT=600, F=100)
@@ -16,8 +16,8 @@ A value outside its domain raises ``ParameterError`` (a ``ValueError``) whose me
 field, the value and the allowed range, as the command line does.
 
 The classes are generated here from the native registry (``_native.problems()``), so a problem
-added to the Rust core appears without binding code; ``_CLASS_NAMES`` only gives the three
-existing ones their familiar names (a new one is named from its title).
+added to the Rust core appears without binding code; ``_CLASS_NAMES`` only gives the four
+first ones their familiar names (a new one is named from its title: ``PressFitTwisted``).
 """
 
 from __future__ import annotations
@@ -60,11 +60,14 @@ def _docstring(entry: dict) -> str:
     quantities = "\n".join(
         f"    {q['name']}: {q['meaning']} ({q['unit']})" for q in entry["quantities"]
     )
-    # The load's unit from its parameter: N for a force, N/mm for the cylinder's line load.
-    unit = next((p["unit"] for p in entry["params"] if p["name"] == entry["load"]), "N")
+    # The load's name and unit from its parameter: F in N, the cylinder's Q in N/mm, the twisted
+    # fit's T in N mm.
+    name = entry["load"]
+    unit = next((p["unit"] for p in entry["params"] if p["name"] == name), "N")
     load = (
-        f"\nIts load is {entry['load']} ({unit}): solve(F=...) and sweep(F=...) vary it.\n"
-        if entry["load"]
+        f"\nIts load is {name} ({unit}): solve({name}=...) and sweep({name}=...) vary it"
+        + (" (solve also takes F= for it).\n" if name != "F" and unit in ("N", "N/mm") else ".\n")
+        if name
         else "\nIt has no load: solve() takes no argument.\n"
     )
     return (

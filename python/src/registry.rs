@@ -56,8 +56,9 @@ pub fn load_index(kind: ModelKind) -> Option<usize> {
     kind.params().iter().position(|&p| p == load)
 }
 
-/// The alias every load-driven problem takes for its load's keyword in `solve`: `F`, the name
-/// the load had in every problem before the cylinder's line load Q (documented in the guide).
+/// The alias a load-driven problem whose load is a force (N) or a line load (N/mm) takes for its
+/// load's keyword in `solve`: `F`, the name the load had in every problem before the cylinder's
+/// line load Q (documented in the guide); not a torque's.
 const LOAD_ALIAS: &str = "F";
 
 /// The load `solve` was given, positionally (`load`) or by keyword (`named`: the problem's load
@@ -82,7 +83,11 @@ pub fn load_argument(
     if let Some(named) = named {
         for (key, value) in named.iter() {
             let key: String = key.extract()?;
-            let known = words.is_some_and(|(name, _)| key == name || key == LOAD_ALIAS);
+            // The alias is a force's name: a load that is no force (the twisted fit's torque,
+            // N mm) takes only its own, so that F= never sets a torque.
+            let known = words.is_some_and(|(name, unit)| {
+                key == name || (key == LOAD_ALIAS && matches!(unit, "N" | "N/mm"))
+            });
             if !known {
                 return Err(PyTypeError::new_err(format!(
                     "unexpected keyword '{key}': {}",

@@ -154,7 +154,7 @@ pub(super) fn run_fit(
             return Err(data_error(format!(
                 "has a {} column, which gives each point's own standard deviation, and --weights {} \
                  asks for another; drop one",
-                crate::measured::SIGMA_COLUMN,
+                crate::measured::sigma_column(structure.response_column()),
                 chosen
                     .to_possible_value()
                     .map_or_else(String::new, |v| v.get_name().to_string())

@@ -124,6 +124,12 @@ pub trait Deck: Problem + Registered {
     /// within a few % by the verdict against the continuum). `None`: the paper's preset
     /// ([`crate::problems::Description::paper_preset`]).
     const BENCH_PRESET: Option<(&'static str, &'static str)> = None;
+
+    /// Why the problem has no CalculiX deck, where it has none (the twisted press fit: CAX
+    /// elements carry no twist): its [`Deck::write_deck`] refuses with it, and the suite, which
+    /// runs decks, leaves the problem out (or refuses it by name with this reason). `None` (the
+    /// default): the problem's decks are written.
+    const NO_DECK: Option<&'static str> = None;
 }
 
 /// What a deck is asked to be: the command line's `--loads`, `--mesh`, stick slope and
@@ -302,6 +308,8 @@ pub trait AnyDeck: Send + Sync {
     fn interface_set(&self) -> &'static str;
     /// The header of [`Deck::CSV_CURVE`]: `x,y`.
     fn csv_columns(&self) -> String;
+    /// [`Deck::NO_DECK`].
+    fn no_deck(&self) -> Option<&'static str>;
     /// [`Deck::expected`] for the header's model; `None` where the header's inputs do not
     /// validate (a header edited by hand) or are of another problem.
     fn expected(&self, header: &DeckHeader) -> Option<String>;
@@ -321,6 +329,10 @@ impl<P: Deck> AnyDeck for DeckOf<P> {
 
     fn csv_columns(&self) -> String {
         format!("{},{}", P::CSV_CURVE.x, P::CSV_CURVE.y)
+    }
+
+    fn no_deck(&self) -> Option<&'static str> {
+        P::NO_DECK
     }
 
     fn expected(&self, header: &DeckHeader) -> Option<String> {

@@ -14,11 +14,12 @@ use super::point::to_json;
 use crate::kernel::params::Unit;
 use crate::study::curves::StiffnessComparison;
 
-/// `KEY_unit` with the unit spelled for identifiers: `L_mm`, `E_MPa`, `KT_MPa_per_mm`, `mu`.
+/// `KEY_unit` with the unit spelled for identifiers ([`Unit::key`]): `L_mm`, `E_MPa`,
+/// `KT_MPa_per_mm`, `T_Nmm`, `mu`.
 pub(crate) fn suffixed(key: &str, unit: Unit) -> String {
     match unit {
         Unit::Dimensionless => key.to_string(),
-        unit => format!("{key}_{}", unit.symbol().replace('/', "_per_")),
+        unit => format!("{key}_{}", unit.key()),
     }
 }
 

@@ -10,11 +10,18 @@ use crate::preset::Listed;
 /// The listing as text; `user_dir` is where user presets are looked for (`None`: no such folder).
 pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
     let mut out = String::new();
-    // The model column as wide as the longest problem key (and its heading).
+    // The model column as wide as the longest problem key (and its heading); the name column as
+    // the longest name, 20 at least, so that every row's columns line up.
     let width = crate::problems::ModelKind::key_width().max("model".len());
+    let names = rows
+        .iter()
+        .map(|row| sanitize(&row.name).chars().count())
+        .max()
+        .unwrap_or(0)
+        .max(20);
     let _ = writeln!(
         out,
-        "{:<20} {:<width$} {:<8} description",
+        "{:<names$} {:<width$} {:<8} description",
         "name", "model", "source"
     );
     for row in rows {
@@ -23,7 +30,7 @@ pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
         let _ = match &row.preset {
             Ok(p) => writeln!(
                 out,
-                "{:<20} {:<width$} {:<8} {}",
+                "{:<names$} {:<width$} {:<8} {}",
                 name,
                 p.inputs.kind().name(),
                 row.origin,
@@ -31,7 +38,7 @@ pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
             ),
             Err(warning) if row.shadowed => writeln!(
                 out,
-                "{:<20} {:<width$} {:<8} WARNING: {}",
+                "{:<names$} {:<width$} {:<8} WARNING: {}",
                 name,
                 "?",
                 row.origin,
@@ -44,7 +51,7 @@ pub fn listing(rows: &[Listed], user_dir: Option<&Path>) -> String {
                 );
                 writeln!(
                     out,
-                    "{:<20} {:<width$} {:<8} INVALID: {} (run `microslip check {}`)",
+                    "{:<names$} {:<width$} {:<8} INVALID: {} (run `microslip check {}`)",
                     name,
                     "?",
                     row.origin,
@@ -85,10 +92,22 @@ mod tests {
         for line in text.lines().skip(1).filter(|l| column(l).is_some()) {
             assert_eq!(column(line), Some(header), "{line}");
         }
-        assert!(
-            text.contains("paper-beams          beam     bundled "),
+        let beams = text
+            .lines()
+            .find(|l| l.starts_with("paper-beams "))
+            .unwrap();
+        assert_eq!(
+            beams.split_whitespace().take(3).collect::<Vec<_>>(),
+            ["paper-beams", "beam", "bundled"],
             "{text}"
         );
+        // The longest bundled name (`pressfit-ccx98-torque`, 21 characters) still leaves a
+        // space before its model: no column runs into the next.
+        let torque = text
+            .lines()
+            .find(|l| l.starts_with("pressfit-ccx98-torque "))
+            .unwrap();
+        assert_eq!(column(torque), Some(header), "{torque}");
         let bad = text.lines().find(|l| l.starts_with("bad ")).unwrap();
         assert!(bad.contains("INVALID: line 2: invalid KT = -3"), "{bad}");
         assert!(bad.contains("microslip check "), "{bad}");

@@ -16,6 +16,7 @@ use serde::Deserialize;
 
 use super::{Case, Ladder};
 use crate::fe::deck::DeckMesh;
+use crate::fe::face::deck_face;
 use crate::preset;
 use crate::problems::ModelKind;
 
@@ -57,13 +58,24 @@ pub fn resolve(spec: Option<&str>, ladder: Ladder) -> Result<Vec<Case>, CasesErr
             }
             cases
         }
+        // Every problem whose decks are written: a problem without one has nothing to run.
         None => ModelKind::ALL
             .iter()
+            .filter(|kind| deck_face(**kind).no_deck().is_none())
             .flat_map(|kind| bundled_cases(*kind, ladder))
             .collect(),
     };
     if cases.is_empty() {
         return Err(CasesError("no case given".to_string()));
+    }
+    if let Some((case, why)) = cases
+        .iter()
+        .find_map(|c| deck_face(c.kind).no_deck().map(|why| (c, why)))
+    {
+        return Err(CasesError(format!(
+            "the case '{}' cannot be run: {why}",
+            crate::report::sanitize(&case.name)
+        )));
     }
     for (n, case) in cases.iter().enumerate() {
         if cases[..n].iter().any(|c| c.name == case.name) {
@@ -197,9 +209,17 @@ fn checked_name(name: &str) -> Result<(), CasesError> {
 mod tests {
     use super::*;
 
+    /// A problem's key means its bundled presets; every problem with a deck is in the default
+    /// suite, and a problem without one (the twisted press fit) is left out of it and refused by
+    /// name, with why.
     #[test]
     fn a_problem_s_key_means_its_bundled_presets() {
-        for kind in ModelKind::ALL {
+        let decked = |kind: &ModelKind| deck_face(*kind).no_deck().is_none();
+        for kind in ModelKind::ALL.into_iter().filter(|k| !decked(k)) {
+            let refused = resolve(Some(kind.name()), Ladder::Quick).unwrap_err().0;
+            assert!(refused.contains("cannot be run") && refused.contains("no CalculiX deck"));
+        }
+        for kind in ModelKind::ALL.into_iter().filter(decked) {
             let cases = resolve(Some(kind.name()), Ladder::Quick).unwrap();
             let bundled: Vec<String> = preset::bundled()
                 .into_iter()
@@ -211,7 +231,12 @@ mod tests {
             assert!(cases.iter().all(|c| c.kind == kind && c.meshes.len() == 2));
         }
         let all = resolve(None, Ladder::Full).unwrap();
-        assert_eq!(all.len(), preset::bundled().len());
+        let runnable = preset::bundled()
+            .into_iter()
+            .filter(|p| decked(&p.inputs.kind()))
+            .count();
+        assert_eq!(all.len(), runnable);
+        assert!(all.iter().all(|c| decked(&c.kind)));
     }
 
     #[test]

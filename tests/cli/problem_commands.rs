@@ -66,9 +66,12 @@ fn help_key_and_key_help_describe_the_problem_with_only_its_flags() {
         for param in kind.params() {
             let spec = param.spec();
             assert!(
+                // The unit may be two words (`N mm`).
                 help.lines().any(|l| {
-                    let words: Vec<&str> = l.split_whitespace().collect();
-                    words.first() == Some(&spec.name) && words.get(1) == Some(&spec.unit.symbol())
+                    l.trim_start()
+                        .strip_prefix(spec.name)
+                        .filter(|rest| rest.starts_with(' '))
+                        .is_some_and(|rest| rest.trim_start().starts_with(spec.unit.symbol()))
                 }),
                 "{key}: parameter {} ({}) not listed in\n{help}",
                 spec.name,

@@ -222,6 +222,10 @@ impl CycleFace for CylinderProblem {
                Q > 0 (onset 0).",
     };
 
+    /// The keys the cylinder's cycle wrote before they said its line load's unit (`Fa_N`,
+    /// `onset_N`, ...): written beside them for one release.
+    const DEPRECATED_KEYS: Option<CycleKeys> = Some(CycleKeys::FORCE);
+
     fn structure_line(cylinder: &Cylinder) -> String {
         let p = cylinder.params();
         format!(

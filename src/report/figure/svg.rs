@@ -177,8 +177,26 @@ fn emptiest_corner(plot: &Plot) -> SeriesLabelPosition {
 
 type DrawResult = Result<(), Box<dyn std::error::Error>>;
 
-/// Height of the caption row under the plot (the parameters a comparison holds fixed).
+/// Height of a caption row under the plot (the parameters a comparison holds fixed).
 const CAPTION_ROW: u32 = 24;
+
+/// The widest caption row, in characters of the caption's 13 px sans-serif (about 7 px each,
+/// with a margin): a longer caption (the press fit's twelve parameters) wraps at its commas
+/// rather than running off both sides of the figure.
+const CAPTION_CHARS: usize = (SIZE.0 / 8) as usize;
+
+/// `caption` in rows of at most [`CAPTION_CHARS`], broken after its commas (a part longer than
+/// a row stays whole).
+pub(super) fn caption_rows(caption: &str) -> Vec<String> {
+    let mut rows: Vec<String> = Vec::new();
+    for part in caption.split_inclusive(", ") {
+        match rows.last_mut() {
+            Some(row) if row.len() + part.trim_end().len() <= CAPTION_CHARS => row.push_str(part),
+            _ => rows.push(part.to_string()),
+        }
+    }
+    rows.iter().map(|r| r.trim_end().to_string()).collect()
+}
 
 /// Stands where the series go while plotters draws, then is replaced by them (see [`draw`]).
 const SERIES_HERE: &str = "microslip-series-go-here";
@@ -279,18 +297,23 @@ where
         root.fill(&WHITE)?;
         let body = match &plot.caption {
             Some(caption) => {
-                let (body, foot) = root.split_vertically(SIZE.1 - CAPTION_ROW);
+                let rows = caption_rows(caption);
+                let height =
+                    CAPTION_ROW * rows.len().max(1) as u32 - 6 * (rows.len().max(1) - 1) as u32;
+                let (body, foot) = root.split_vertically(SIZE.1 - height);
                 let style = TextStyle::from(("sans-serif", 13))
                     .color(&RGBColor(60, 60, 60))
                     .pos(plotters::style::text_anchor::Pos::new(
                         plotters::style::text_anchor::HPos::Center,
                         plotters::style::text_anchor::VPos::Top,
                     ));
-                foot.draw(&Text::new(
-                    caption.as_str(),
-                    ((SIZE.0 / 2) as i32, 2),
-                    style,
-                ))?;
+                for (i, row) in rows.iter().enumerate() {
+                    foot.draw(&Text::new(
+                        row.as_str(),
+                        ((SIZE.0 / 2) as i32, 2 + 18 * i as i32),
+                        style.clone(),
+                    ))?;
+                }
                 body
             }
             None => root.clone(),

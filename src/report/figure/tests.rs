@@ -467,3 +467,20 @@ fn the_legend_box_holds_its_labels_as_drawn() {
         .count();
     assert_eq!(outside, 0, "text right of the legend box {frame:?}");
 }
+
+/// A caption wider than the figure (the press fit's twelve parameters, 190 characters) wraps at
+/// its commas into rows that fit; a short one stays one row, unchanged.
+#[test]
+fn a_long_caption_wraps_at_its_commas() {
+    let long = "r = 20 mm, ri = 10 mm, ro = 30 mm, L = 17.7332 mm, Es = 210000 MPa, nus = 0.3, \
+                Eh = 210000 MPa, nuh = 0.3, delta = 0.0025 mm, mu = 0.1, KT = 10000 MPa/mm";
+    let rows = super::svg::caption_rows(long);
+    assert!(rows.len() >= 2, "{rows:?}");
+    assert!(rows.iter().all(|r| r.len() <= 100), "{rows:?}");
+    assert_eq!(rows.join(" "), long);
+    assert!(rows.iter().all(|r| !r.ends_with(' ')), "{rows:?}");
+    assert_eq!(
+        super::svg::caption_rows("L = 200 mm, mu = 0.3"),
+        ["L = 200 mm, mu = 0.3"]
+    );
+}

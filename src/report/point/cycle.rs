@@ -46,6 +46,12 @@ pub trait CycleFace: LoadDriven {
     fn force_limit(_structure: &Self::Structure) -> Option<f64> {
         None
     }
+
+    /// The keys the problem's cycle report wrote before its keys said its load's unit, written
+    /// beside them for one release (the cylinder's `Fa_N` beside `Qa_N_per_mm`); `None` (the
+    /// default) for a problem whose keys never changed, so that no key names a unit its number
+    /// is not in.
+    const DEPRECATED_KEYS: Option<CycleKeys> = None;
 }
 
 /// Why a table of a load-driven problem was not written: a force the structure does not carry,
@@ -252,8 +258,8 @@ pub struct Keyed {
     pub value: f64,
     /// Its key, in the problem's words (`Qa_N_per_mm`).
     pub key: &'static str,
-    /// The deprecated key (`Fa_N`), written too where it is not `key`.
-    pub deprecated: &'static str,
+    /// The deprecated key (`Fa_N`), written too where there is one.
+    pub deprecated: Option<&'static str>,
 }
 
 impl Serialize for Keyed {
@@ -261,8 +267,8 @@ impl Serialize for Keyed {
         use serde::ser::SerializeMap;
         let mut out = serializer.serialize_map(None)?;
         out.serialize_entry(self.key, &self.value)?;
-        if self.deprecated != self.key {
-            out.serialize_entry(self.deprecated, &self.value)?;
+        if let Some(deprecated) = self.deprecated.filter(|&d| d != self.key) {
+            out.serialize_entry(deprecated, &self.value)?;
         }
         out.end()
     }
@@ -304,7 +310,7 @@ impl CycleKeys {
 /// One law's cycle: the same six numbers for every load-driven problem. Its JSON keys are the
 /// problem's [`CycleKeys`] (`onset_N`, the peak's `w_peak_mm` or `Delta_peak_mm`, `D_Nmm`,
 /// `U_Nmm`, `zeta` and `secant_stiffness_N_per_mm` for a force), in that order, then the
-/// deprecated [`CycleKeys::FORCE`] ones where they differ.
+/// problem's deprecated ones ([`CycleFace::DEPRECATED_KEYS`]) where they differ.
 #[derive(Debug, Clone, Copy)]
 pub struct LawCycle {
     /// Force at which sliding starts (N).
@@ -323,10 +329,16 @@ pub struct LawCycle {
     pub peak_key: &'static str,
     /// The other keys.
     pub keys: CycleKeys,
+    /// The deprecated keys written beside them, if any.
+    pub deprecated: Option<CycleKeys>,
 }
 
 impl LawCycle {
-    fn new(c: &impl MasingCycle, peak_key: &'static str, keys: CycleKeys) -> LawCycle {
+    fn new(
+        c: &impl MasingCycle,
+        peak_key: &'static str,
+        (keys, deprecated): (CycleKeys, Option<CycleKeys>),
+    ) -> LawCycle {
         LawCycle {
             onset: c.onset(),
             peak: c.peak_response(),
@@ -336,13 +348,14 @@ impl LawCycle {
             secant_stiffness: c.secant_stiffness(),
             peak_key,
             keys,
+            deprecated,
         }
     }
 }
 
 impl Serialize for LawCycle {
     fn serialize<Z: serde::Serializer>(&self, serializer: Z) -> Result<Z::Ok, Z::Error> {
-        let (keys, old) = (self.keys, CycleKeys::FORCE);
+        let keys = self.keys;
         let mut out = serializer.serialize_struct("LawCycle", 6)?;
         out.serialize_field(keys.onset, &self.onset)?;
         out.serialize_field(self.peak_key, &self.peak)?;
@@ -350,7 +363,7 @@ impl Serialize for LawCycle {
         out.serialize_field(keys.peak_energy, &self.peak_energy)?;
         out.serialize_field("zeta", &self.damping_ratio)?;
         out.serialize_field(keys.secant, &self.secant_stiffness)?;
-        if keys.onset != old.onset {
+        if let Some(old) = self.deprecated.filter(|old| old.onset != keys.onset) {
             out.serialize_field(old.onset, &self.onset)?;
             out.serialize_field(old.dissipation, &self.dissipation)?;
             out.serialize_field(old.peak_energy, &self.peak_energy)?;
@@ -389,7 +402,7 @@ impl CycleReport {
             LawCycle::new(
                 &P::cycle(structure, law, amplitude),
                 words.peak_key,
-                words.keys,
+                (words.keys, P::DEPRECATED_KEYS),
             )
         };
         // The cycle walks one family of loads (its branches, the work integrals): one scope
@@ -402,7 +415,7 @@ impl CycleReport {
             amplitude: Keyed {
                 value: P::load_value(amplitude),
                 key: words.keys.amplitude,
-                deprecated: CycleKeys::FORCE.amplitude,
+                deprecated: P::DEPRECATED_KEYS.map(|old| old.amplitude),
             },
             coulomb: law(Law::Coulomb),
             regularized: law(Law::Regularized),

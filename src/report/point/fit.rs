@@ -23,21 +23,16 @@ pub struct FitReport {
     pub mu: EstimateReport,
     #[serde(rename = "KT_MPa_per_mm")]
     pub kt: EstimateReport,
-    /// Residual RMS (mm).
-    #[serde(rename = "rms_mm")]
-    pub rms: f64,
+    /// The residuals, in the response's unit: in JSON `rms_mm` (the twisted fit's `rms_rad`),
+    /// `weights` and `scatter` ([`Residuals`]).
+    #[serde(flatten)]
+    pub residuals: Residuals,
     /// The regime scale, F_1 and the measurements above F_1 at the fitted values, under the
     /// load's name and unit ([`LoadForces`]): in JSON `F_thre_N`, `F_1_N`, `points_above_F_1`
     /// of the beams, `F_gross_N` ... of the lap joint, `Q_gross_N_per_mm`, `Q_1_N_per_mm`,
     /// `points_above_Q_1` of the cylinder (a line load).
     #[serde(flatten, serialize_with = "load_fields")]
     pub forces: LoadForces,
-    /// What the standard errors assume: in JSON `weights` ("absolute", "relative" or "sigma_mm")
-    /// and `scatter`, sqrt of the weighted fit's reduced chi-square: the sigma of w in mm, the
-    /// sigma of w as a fraction of w, or the residuals' scatter over the given sigmas (about 1
-    /// when they are right).
-    #[serde(flatten, serialize_with = "scatter_fields")]
-    pub scatter: Scatter,
     /// Correlation coefficient of the mu and K_T estimates (null unless both have an error).
     #[serde(rename = "mu_KT_correlation")]
     pub correlation: Option<f64>,
@@ -45,19 +40,55 @@ pub struct FitReport {
     pub degrees_of_freedom: usize,
 }
 
-/// The name of the weights, sqrt of the reduced chi-square (see [`FitReport::scatter`]; None
-/// without a degree of freedom) and the key that names its unit: `scatter_mm` (absolute weights:
-/// the sigma of w), `scatter_fraction` (relative: sigma over w) or `scatter_over_sigma` (given
-/// sigmas: a ratio, about 1 when they are right).
-fn weights_and_scatter(scatter: &Scatter) -> (&'static str, Option<f64>, &'static str) {
-    match *scatter {
-        Scatter::Absolute { sigma } => ("absolute", sigma, "scatter_mm"),
-        Scatter::Relative { fraction } => ("relative", fraction, "scatter_fraction"),
-        Scatter::Known { reduced_chi_square } => (
-            "sigma_mm",
-            reduced_chi_square.map(f64::sqrt),
-            "scatter_over_sigma",
-        ),
+/// The residuals of a fit, in the unit of the response fitted (`mm` for w, Delta, s(a); `rad`
+/// for the twisted fit's theta): the RMS and what the standard errors assume.
+#[derive(Debug, Clone, Copy)]
+pub struct Residuals {
+    /// Residual RMS, in `unit`.
+    pub rms: f64,
+    /// What the standard errors assume: in JSON `weights` ("absolute", "relative" or the sigma
+    /// column's name, `sigma_mm`) and `scatter`, sqrt of the weighted fit's reduced chi-square:
+    /// the sigma of the response in its unit, its sigma as a fraction of it, or the residuals'
+    /// scatter over the given sigmas (about 1 when they are right).
+    pub scatter: Scatter,
+    /// The response's unit, as its column's header ends (`mm`, `rad`).
+    pub unit: &'static str,
+}
+
+impl Residuals {
+    /// The name of the weights, sqrt of the reduced chi-square (None without a degree of
+    /// freedom) and the key that names its unit: `scatter_mm` (absolute weights: the sigma of the
+    /// response), `scatter_fraction` (relative: sigma over the response) or `scatter_over_sigma`
+    /// (given sigmas: a ratio, about 1 when they are right).
+    fn weights_and_scatter(&self) -> (String, Option<f64>, String) {
+        match self.scatter {
+            Scatter::Absolute { sigma } => {
+                ("absolute".into(), sigma, format!("scatter_{}", self.unit))
+            }
+            Scatter::Relative { fraction } => {
+                ("relative".into(), fraction, "scatter_fraction".into())
+            }
+            Scatter::Known { reduced_chi_square } => (
+                format!("sigma_{}", self.unit),
+                reduced_chi_square.map(f64::sqrt),
+                "scatter_over_sigma".into(),
+            ),
+        }
+    }
+}
+
+/// `rms_<unit>`, `weights`, the scatter under its unit's name and, deprecated (kept one
+/// release), the same value as `scatter`, whose unit depended on `weights`.
+impl Serialize for Residuals {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let (weights, value, key) = self.weights_and_scatter();
+        let mut map = s.serialize_map(Some(4))?;
+        map.serialize_entry(&format!("rms_{}", self.unit), &self.rms)?;
+        map.serialize_entry("scatter", &value)?;
+        map.serialize_entry(&key, &value)?;
+        map.serialize_entry("weights", &weights)?;
+        map.end()
     }
 }
 
@@ -85,10 +116,10 @@ impl LoadForces {
 }
 
 /// `{scale}_{unit}`, `{load}_1_{unit}` and `points_above_{load}_1` ([`FitReport::forces`]), the
-/// unit spelled as a key may be (`N`, `N_per_mm`).
+/// unit spelled as a key ([`crate::kernel::params::Unit::key`]: `N`, `N_per_mm`, `Nmm`).
 fn load_fields<S: Serializer>(forces: &LoadForces, s: S) -> Result<S::Ok, S::Error> {
     use serde::ser::SerializeMap;
-    let unit = forces.load.unit().symbol().replace('/', "_per_");
+    let unit = forces.load.unit().key();
     let (scale, value) = forces.regime_scale;
     let first = forces.first_name();
     let mut map = s.serialize_map(Some(3))?;
@@ -101,21 +132,14 @@ fn load_fields<S: Serializer>(forces: &LoadForces, s: S) -> Result<S::Ok, S::Err
     map.end()
 }
 
-/// `weights`, the scatter under its unit's name and, deprecated (kept one release), the same
-/// value as `scatter`, whose unit depended on `weights`.
-fn scatter_fields<S: Serializer>(scatter: &Scatter, s: S) -> Result<S::Ok, S::Error> {
-    use serde::ser::SerializeMap;
-    let (weights, value, key) = weights_and_scatter(scatter);
-    let mut map = s.serialize_map(Some(3))?;
-    map.serialize_entry("scatter", &value)?;
-    map.serialize_entry(key, &value)?;
-    map.serialize_entry("weights", weights)?;
-    map.end()
-}
-
 /// What the errors assume, in words, with the scatter the residuals show (or that they cannot
 /// show it: `points` loaded measurements through as many parameters).
-fn assumption(scatter: &Scatter, response: &str, (points, parameters): (usize, usize)) -> String {
+fn assumption(
+    residuals: &Residuals,
+    response: &str,
+    (points, parameters): (usize, usize),
+) -> String {
+    let unit = residuals.unit;
     let unknown = || {
         format!(
             "the residuals cannot show the scatter: uncertainty unknown, {} = {} (the curve \
@@ -124,10 +148,13 @@ fn assumption(scatter: &Scatter, response: &str, (points, parameters): (usize, u
             count_of(parameters, "parameter")
         )
     };
-    match *scatter {
+    match residuals.scatter {
         Scatter::Absolute { sigma } => format!(
             "the same scatter at every point (--weights absolute); {}",
-            sigma.map_or_else(unknown, |s| format!("the residuals show {} mm", number(s)))
+            sigma.map_or_else(unknown, |s| format!(
+                "the residuals show {} {unit}",
+                number(s)
+            ))
         ),
         Scatter::Relative { fraction } => format!(
             "scatter proportional to {response} (--weights relative); {}",
@@ -137,7 +164,7 @@ fn assumption(scatter: &Scatter, response: &str, (points, parameters): (usize, u
             ))
         ),
         Scatter::Known { reduced_chi_square } => format!(
-            "the sigma_mm column, taken as known; {}",
+            "the sigma_{unit} column, taken as known; {}",
             reduced_chi_square.map_or_else(
                 || "chi^2/dof undefined (no degree of freedom left)".to_string(),
                 |c| format!("chi^2/dof = {} (about 1 when it is right)", number(c))
@@ -231,9 +258,12 @@ impl FitReport {
             points: result.points,
             mu: EstimateReport::from(&result.mu),
             kt: EstimateReport::from(&result.kt),
-            rms: result.rms,
+            residuals: Residuals {
+                rms: result.rms,
+                scatter: result.scatter,
+                unit: crate::measured::column_unit(structure.response_column()),
+            },
             forces,
-            scatter: result.scatter,
             correlation: result.correlation,
             degrees_of_freedom: result.degrees_of_freedom,
         }
@@ -305,14 +335,19 @@ impl FitReport {
         let _ = writeln!(
             out,
             "  errors assume {}",
-            assumption(&self.scatter, response, self.no_freedom())
+            assumption(&self.residuals, response, self.no_freedom())
         );
         let exact = if self.degrees_of_freedom == 0 {
             " (0 by construction: no degree of freedom left)"
         } else {
             ""
         };
-        let _ = writeln!(out, "  residual RMS = {} mm{exact}", number(self.rms));
+        let _ = writeln!(
+            out,
+            "  residual RMS = {} {}{exact}",
+            number(self.residuals.rms),
+            self.residuals.unit
+        );
         let forces = &self.forces;
         let (name, all_slide) = forces.regime_scale;
         let (first, unit) = (forces.first_name(), forces.load.unit_suffix());

@@ -180,7 +180,9 @@ const COMMAND_HELP: [&str; 9] = [
 pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed], selected: usize) {
     let theme = app.theme();
     let height = (entries.len() as u16 + 4).clamp(6, area.height.saturating_sub(2));
-    let popup = centred(area, 76, height);
+    // 76 columns on an 80-column screen; wider where the screen is, so that descriptions show
+    // beside the name and key columns (up to 120: a line longer than that is not read).
+    let popup = centred(area, area.width.saturating_sub(4).clamp(76, 120), height);
     frame.render_widget(Clear, popup);
     let block = pane(app, "Presets (Enter load, s save, Esc close)");
     let inner = block.inner(popup);
@@ -194,6 +196,13 @@ pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed]
         .map(|p| p.inputs.kind().name().len())
         .max()
         .unwrap_or(1);
+    // The name column as wide as the longest name listed (18 at least), for the same reason.
+    let names = entries
+        .iter()
+        .map(|e| sanitize(&e.name).chars().count())
+        .max()
+        .unwrap_or(0)
+        .max(18);
     let mut lines: Vec<Line> = entries
         .iter()
         .enumerate()
@@ -212,7 +221,7 @@ pub fn draw_presets(frame: &mut Frame, app: &App, area: Rect, entries: &[Listed]
             };
             let marker = if i == selected { ">" } else { " " };
             let text = format!(
-                "{marker} {:<18} {:<width$} {:<7} {description}",
+                "{marker} {:<names$} {:<width$} {:<7} {description}",
                 sanitize(&entry.name),
                 model,
                 entry.origin

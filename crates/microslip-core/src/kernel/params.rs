@@ -49,8 +49,8 @@ impl Unit {
         }
     }
 
-    /// The unit as a JSON key or CSV header ends (`Q_N_per_mm`, `KT_MPa_per_mm`): `/` as
-    /// `_per_`, and nothing for dimensionless.
+    /// The unit as a JSON key or CSV header ends (`Q_N_per_mm`, `KT_MPa_per_mm`, `T_Nmm`): `/`
+    /// as `_per_`, N mm as `Nmm` (as the energies' `D_Nmm`), and nothing for dimensionless.
     pub fn key(self) -> &'static str {
         match self {
             Unit::Millimetre => "mm",
@@ -58,7 +58,7 @@ impl Unit {
             Unit::Megapascal => "MPa",
             Unit::MegapascalPerMillimetre => "MPa_per_mm",
             Unit::NewtonPerMillimetre => "N_per_mm",
-            Unit::NewtonMillimetre => "N_mm",
+            Unit::NewtonMillimetre => "Nmm",
             Unit::Dimensionless => "",
         }
     }

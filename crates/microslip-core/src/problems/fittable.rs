@@ -202,11 +202,7 @@ mod tests {
             assert_eq!(Some(load), kind.description().load, "{kind}");
             assert_eq!(
                 fittable.load_column(),
-                format!(
-                    "{}_{}",
-                    load.name(),
-                    load.unit().symbol().replace('/', "_per_").replace(' ', "")
-                ),
+                format!("{}_{}", load.name(), load.unit().key()),
                 "{kind}"
             );
             let model = Inputs::paper(kind).validate().unwrap();
