@@ -21,8 +21,12 @@ fn quick_grid_agrees_far_below_the_target() {
         assert!(worst.cases >= 6, "{worst:?}");
         // The cylinder: c/a to 4.3e-4 at K_T = 1e7 MPa/mm, Q = 0.6 mu P on the discretized
         // solver's default cells (docs/theory.md section 11): the 1e-3 target.
+        // The press fit, pushed out or twisted, is the same two-bar solver as the lap joint
+        // (12 elements per 1/lambda at least): 2.5e-5 measured on theta at K_T = 1e5 MPa/mm,
+        // the #98 fit twisted (lambda L = 10, its torsional rigidities make lambda 1.8 times the
+        // push-out's).
         let bound = match worst.quantity.kind() {
-            ModelKind::Lap => 1e-4,
+            ModelKind::Lap | ModelKind::PressFit | ModelKind::PressFitTorque => 1e-4,
             ModelKind::Cylinder => 1e-3,
             _ => 2e-5,
         };

@@ -70,7 +70,8 @@ fn the_preset_picker_shows_control_characters_escaped() {
         solve_continuum: false,
     });
     press(&mut app, Action::OpenPresets);
-    let text = screen(&app, 100, 30);
+    // Wide enough for the whole escaped description beside the longest name and key.
+    let text = screen(&app, 140, 30);
     assert!(
         text.contains(r"evil\x1b[2J") && text.contains(r"bell \x07 \x1b]0;title\x07 \u{202e}"),
         "{text}"
@@ -102,8 +103,19 @@ fn the_picker_never_loads_a_user_file_named_like_a_bundled_preset() {
         press(&mut app, Action::Next);
     }
     let text = screen(&app, 120, 30);
-    assert!(
-        text.contains("> paper-beams        ?        user    WARNING: shadowed by the bundled one"),
+    let line = text
+        .lines()
+        .find(|l| l.contains("> paper-beams "))
+        .unwrap_or_else(|| panic!("{text}"));
+    let after: Vec<&str> = line
+        .split("> ")
+        .nth(1)
+        .unwrap()
+        .split_whitespace()
+        .collect();
+    assert_eq!(
+        after[..6],
+        ["paper-beams", "?", "user", "WARNING:", "shadowed", "by"],
         "{text}"
     );
     press(&mut app, Action::Commit);

@@ -10,7 +10,7 @@ use std::marker::PhantomData;
 use super::closed_form::PressFit;
 use super::continuum::{PressFitContinuumMesh, solve_pressfit_continuum_path};
 use super::discretized::PressFitFe;
-use super::registered::problem::{FitKind, FitProblem, PressFitModel, PushOut};
+use super::registered::problem::{FitKind, FitProblem, PressFitModel, PushOut, Twist};
 use super::registered::profiles::slip_along;
 use crate::chart::load::LoadLabels;
 use crate::chart::shear_lag::{
@@ -277,5 +277,32 @@ impl ShearLagFe for PressFitFe {
 
     fn slip_at(&self, x: f64) -> f64 {
         (**self).slip_at(x)
+    }
+}
+
+/// The torque's charts: theta against T, the zones against T, the profiles at T, the loop
+/// and D against T_a; the shear lag's numbers under the torque (no continuum: none is
+/// torsional).
+impl FitCharts for Twist {
+    const CHARTS: [(&'static str, &'static str); 6] = [
+        ("theta vs T", "fit-theta-vs-t"),
+        ("zones vs T", "fit-zones-vs-t"),
+        ("tau(x) at T", "fit-tau-torque"),
+        ("s(x) at T", "fit-slip-torque"),
+        ("loop +-T", "fit-loop-torque"),
+        ("D vs T_a", "fit-d-vs-ta"),
+    ];
+    const LABELS: LoadLabels = LoadLabels {
+        response: "theta",
+        response_axis: "theta (rad)",
+        loop_title: ("", "D"),
+        dissipation_axis: "D (N mm)",
+    };
+
+    fn continuum_path(
+        _fit: &PressFit,
+        _torques: &[f64],
+    ) -> Result<Vec<ShearLagContinuumPoint>, NumericError> {
+        Ok(Vec::new())
     }
 }

@@ -7,7 +7,9 @@
 use super::closed_form::{CarriedLoad, PressFit};
 use super::cycle::FitCycle;
 use super::point::fit_point;
-use super::registered::problem::{FitKind, FitProblem, PressFitModel, PressFitProblem, PushOut};
+use super::registered::problem::{
+    FitKind, FitProblem, PressFitModel, PressFitProblem, PressFitTorqueProblem, PushOut, Twist,
+};
 use super::validity::{CALIBRATED, PressFitValidity};
 use crate::chart::load::load_words;
 use crate::chart::panes::{
@@ -322,5 +324,63 @@ impl FitPaneFe for PressFitProblem {
         code: &str,
     ) -> Result<String, String> {
         super::compare::pane_brief(model, loaded, code)
+    }
+}
+
+/// The torque's words: theta in urad on the screen (rad in every file), the circumferential
+/// slip's zones, no envelope.
+impl FitPane for Twist {
+    const PANE: PaneWords = PaneWords {
+        parameters_title: "Press fit (twisted)",
+        kt_columns: &[("T_1 N mm", 9), ("a+d mm", 7), ("theta urad", 10)],
+        what: "torque",
+        load_meaning: "the torque on the shaft's end x = 0, the hub held on its far face x = L; \
+                       every line below is at this torque",
+        coulomb_meaning: "plain Coulomb law: the loaded face slides from the first newton \
+                          millimetre, the rest sticks",
+        response: ("theta", "urad", 1e6),
+        response_meaning: [
+            "the shaft's loaded end's rotation relative to the hub's held face under the \
+             regularized law (1 urad = 1e-6 rad; files give rad)",
+            "the shaft's loaded end's rotation relative to the hub's held face under plain \
+             Coulomb",
+        ],
+        thresholds: ["slides", "both slide", "all slides"],
+        threshold_meaning: [
+            "regularized law: sliding starts above T_1 at the face where the more compliant \
+             member (in torsion) carries the torque (x=0: the shaft, x=L: the hub)",
+            "regularized law: above T_2 the other face slides too",
+            "mu p 2 pi r^2 L: the whole fit slides and the shaft turns in the hub; no larger \
+             torque is carried (T is refused above it)",
+        ],
+        cycle_meaning: "a torque cycling between +T and -T (regularized law): energy dissipated \
+                        per cycle D and the equivalent damping ratio D / (4 pi U), U = T theta / 2",
+    };
+
+    /// None: no torsional continuum calibrates the twisted fit's theory.
+    fn envelope(_fit: &PressFit, _load: CarriedLoad) -> Option<PressFitValidity> {
+        None
+    }
+
+    const TITLE_MEANING: &'static str = "how far a continuum (FE) of the twisted fit is \
+         expected from the theta shown: not calibrated, no torsional continuum measured the 1-D \
+         theory (docs/theory.md section 18, (S6))";
+
+    const THEORY_MEANING: &'static str = "the closed forms take Lamé's pressure uniform over L \
+         and each member's section turning rigidly (Saint-Venant torsion); no continuum \
+         measured how far theta is from a twisted fit's";
+}
+
+impl FitPaneFe for PressFitTorqueProblem {
+    fn pane_xy(point: &Self::FePoint) -> (f64, f64) {
+        super::torque_fe::pane_xy(point)
+    }
+
+    fn pane_brief(
+        model: &PressFitModel,
+        loaded: &Loaded<Self::FePoint>,
+        code: &str,
+    ) -> Result<String, String> {
+        super::torque_fe::pane_brief(model, loaded, code)
     }
 }

@@ -230,23 +230,7 @@ impl CycleFace for PressFitProblem {
     };
 
     fn structure_line(fit: &PressFit) -> String {
-        let p = fit.params();
-        format!(
-            "r = {} mm, ri = {} mm, ro = {} mm, L = {} mm, Es = {} MPa, nus = {}, Eh = {} MPa, \
-             nuh = {}, delta = {} mm, mu = {}, K_T = {} MPa/mm; p = {} MPa",
-            number(p.fit_radius),
-            number(p.bore_radius),
-            number(p.outer_radius),
-            number(p.length),
-            number(p.shaft_modulus),
-            number(p.shaft_poisson),
-            number(p.hub_modulus),
-            number(p.hub_poisson),
-            number(p.interference),
-            number(p.friction),
-            number(p.tangential_stiffness),
-            number(fit.contact_pressure())
-        )
+        structure_line(fit)
     }
 
     type LoopRow = FitLoopRow;
@@ -262,6 +246,28 @@ impl CycleFace for PressFitProblem {
             force: amplitude.value(),
         })
     }
+}
+
+/// The fit in one line (its parameters with units and Lamé's p), under a cycle report's heading:
+/// the push-out's and the torque's.
+pub(super) fn structure_line(fit: &PressFit) -> String {
+    let p = fit.params();
+    format!(
+        "r = {} mm, ri = {} mm, ro = {} mm, L = {} mm, Es = {} MPa, nus = {}, Eh = {} MPa, \
+         nuh = {}, delta = {} mm, mu = {}, K_T = {} MPa/mm; p = {} MPa",
+        number(p.fit_radius),
+        number(p.bore_radius),
+        number(p.outer_radius),
+        number(p.length),
+        number(p.shaft_modulus),
+        number(p.shaft_poisson),
+        number(p.hub_modulus),
+        number(p.hub_poisson),
+        number(p.interference),
+        number(p.friction),
+        number(p.tangential_stiffness),
+        number(fit.contact_pressure())
+    )
 }
 
 /// What the 1-D theory assumes and where its envelope comes from, said wherever its numbers are

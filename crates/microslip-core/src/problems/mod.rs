@@ -85,7 +85,15 @@
 //!    has another shape than the table's). Every command, chart, report and TUI pane then
 //!    serves it through code generated from the registry: the application's one typed dispatch
 //!    (`report::face::for_problem`) and its table of erased faces (`report::face::faces`) need
-//!    no line for it.
+//!    no line for it. A problem without a CalculiX deck (the twisted press fit: CAX elements
+//!    carry no twist) still implements `Deck` (its CSV curve, its comparison) with
+//!    `Deck::NO_DECK` saying why: `deck` and `bench` refuse with it, the suite leaves it out.
+//!    Every generic title, heading, key and column takes the load's name and unit, the
+//!    response's and the first-slip load's names from its [`Description`] (`T` in N mm, `T_Nmm`,
+//!    `theta_rad`): a problem writes none of them outside its folders. Two problems of one
+//!    structure share its two folders, each with its own registry line (the press fit pushed out
+//!    and twisted, `pressfit::registered::problem::FitProblem<K>`: `face_folders!` declares a
+//!    folder once, its presets are listed once).
 //! 5. **Its presets**: `presets/<paper-preset>.toml` (named by [`Description::paper_preset`]),
 //!    each listed with its `include_str!` in `BUNDLED_PRESETS` of its face folder's `mod.rs`
 //!    (`src/problems/cylinder/mod.rs`); `preset::bundled` gathers every problem's from the
@@ -396,6 +404,8 @@ macro_rules! with_problems {
             Cylinder => cylinder::CylinderProblem,
             /// Shrink-fitted hub on a shaft, pushed out by an axial force (issue 44).
             PressFit => pressfit::PressFitProblem,
+            /// The same fit twisted by a torque (issue 44).
+            PressFitTorque => pressfit::PressFitTorqueProblem,
         }
     };
 }

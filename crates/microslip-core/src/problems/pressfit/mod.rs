@@ -11,16 +11,18 @@
 //! `StiffnessAnswer`, `CrossChecked`, `Pointwise`, `Profiled`) are in `registered/`, each a
 //! delegation to the typed fit of this folder.
 //!
-//! **The torque** is not a load choice of this problem but, when it comes, a sixth problem type in
-//! this folder over [`closed_form::PressFit::torsion`] (keys with `T` for `F`, [`TORQUE_BOUND`],
-//! response theta): a [`Description`](crate::problems::Description)'s load, its bound, its
-//! response's symbol and the load's JSON key are constants the generic layers read without
-//! asking a setting (`F_N`, `F_gross`, `Delta_mm`), so a setting cannot turn F into T; a type
-//! can, with the same closed forms. What it will read is here already: its keys
-//! ([`params::PressFitParam::TORQUE_KEYS`], as their own key type [`TorqueParam`]), its bound
-//! ([`TORQUE_BOUND`]), its quantities ([`TORQUE_QUANTITIES`]) and their values ([`quantity`],
-//! over either [`closed_form::FitAxis`]); the registered impls are written once over the kind of
-//! load (`registered::problem::FitKind`), the push-out its one kind so far.
+//! **The torque** is not a load choice of this problem but a sixth problem type in this folder,
+//! `PressFitTorque => pressfit::PressFitTorqueProblem` in [`crate::with_problems!`], over
+//! [`closed_form::PressFit::torsion`] (keys with `T` for `F`, [`TORQUE_BOUND`], response theta):
+//! a [`Description`](crate::problems::Description)'s load, its bound, its response's symbol and
+//! the load's JSON key are constants the generic layers read without asking a setting (`F_N`,
+//! `F_gross`, `Delta_mm`), so a setting cannot turn F into T; a type can, with the same closed
+//! forms. Its keys are [`params::PressFitParam::TORQUE_KEYS`] as their own key type
+//! ([`TorqueParam`]), its quantities [`TORQUE_QUANTITIES`] and their values [`quantity`] (over
+//! either [`closed_form::FitAxis`]); the registered impls are written once over the kind of load
+//! (`registered::problem::FitKind`: `PushOut`, `Twist`). The twisted fit has no continuum (the
+//! axisymmetric one is the push-out's; a torsional one is left), so its theory is "not
+//! calibrated" wherever it is shown, and no CalculiX deck (CAX elements carry no twist).
 //!
 //! **Its response is the twist theta in rad**, not the circumferential slip r theta in mm: theta
 //! is what a torsion test measures (the angle between the shaft's end and the hub's held face),
@@ -32,16 +34,6 @@
 //! torque's `Ta_Nmm`, `theta_peak_rad`, `secant_stiffness_Nmm_per_rad`; `D_Nmm` stays, as
 //! T dtheta is N mm) and the loop and sweep CSV rows are its face's own `LoopRow` and `LoadRow`
 //! types. The fixed `_mm` columns of the application's `report/rows.rs` are the beams' rows.
-//!
-//! What registering it still needs (not done: issue 44's torque bullet): its kind (`Twist`: the
-//! torque's `FitLoad`, `TorqueParam`, a `Description` keyed `pressfit-torque`, the bridges to
-//! `Param`/`Inputs`/`Model::PressFitTorque`, no continuum: the axisymmetric continuum is the
-//! push-out's, a torsional one is left) and its registry line; in the application, a face folder
-//! that two registry lines can name (`face_folders!` declares `pub mod $folder;` per line, the
-//! prelude's and `study::curves`'s glob re-exports and the preset and figure lists read the folder
-//! per line, so the push-out's presets would be listed twice), and the torque's faces (chart,
-//! pane, report and cycle, deck and compare: CalculiX's CAX elements carry no twist, so its deck
-//! refuses).
 
 pub mod closed_form;
 pub mod continuum;
@@ -53,7 +45,7 @@ pub mod registered;
 pub mod validity;
 pub use registered::TorqueParam;
 pub use registered::point;
-pub use registered::problem::PressFitProblem;
+pub use registered::problem::{PressFitProblem, PressFitTorqueProblem};
 
 #[cfg(test)]
 mod tests;
@@ -161,7 +153,7 @@ pub const QUANTITIES: [QuantityName; 7] = quantities(LoadWords {
     ],
 });
 
-/// The quantities as the twisted fit names them (for its `Description`, to come): the response
+/// The quantities as the twisted fit names them (for its `Description`): the response
 /// is the twist theta in rad (the module docs say why), the onset T_1 in N mm.
 pub const TORQUE_QUANTITIES: [QuantityName; 7] = quantities(LoadWords {
     response: (

@@ -68,7 +68,7 @@ impl PressFitParam {
     pub const PUSH_OUT: &'static [PressFitParam] = Self::ALL.split_at(12).0;
 
     /// The torque's keys, r to K_T and T: all but the push-out force (the twisted fit's
-    /// problem, to come: the folder's module docs).
+    /// problem: the folder's module docs).
     pub const TORQUE_KEYS: [PressFitParam; 12] = {
         let mut keys = [PressFitParam::Torque; 12];
         let mut i = 0;

@@ -105,21 +105,29 @@ where
 
 #[cfg(test)]
 mod tests {
-    use super::super::problem::PressFitProblem;
+    use super::super::problem::{PushOut, Twist};
     use super::*;
 
-    /// What `verify` asks of every problem: the full grid within its 1e-3 on the default mesh.
+    /// What `verify` asks of every problem: the full grid within its 1e-3 on the default mesh,
+    /// pushed out and twisted.
     #[test]
     fn the_full_grid_is_within_the_verify_tolerance() {
-        let grid = PressFitProblem::grid(true);
-        assert!(grid.len() >= 30, "{}", grid.len());
-        for model in &grid {
-            let errors = PressFitProblem::compare(model, MeshDensity::default()).unwrap();
-            assert!(
-                errors.iter().all(|&e| e < 1e-3),
-                "{}: {errors:?}",
-                PressFitProblem::describe(model)
-            );
+        fn within<K: FitKind>()
+        where
+            FitProblem<K>: Registered,
+        {
+            let grid = FitProblem::<K>::grid(true);
+            assert!(grid.len() >= 30, "{}", grid.len());
+            for model in &grid {
+                let errors = FitProblem::<K>::compare(model, MeshDensity::default()).unwrap();
+                assert!(
+                    errors.iter().all(|&e| e < 1e-3),
+                    "{}: {errors:?}",
+                    FitProblem::<K>::describe(model)
+                );
+            }
         }
+        within::<PushOut>();
+        within::<Twist>();
     }
 }

@@ -12,13 +12,13 @@ pub mod stiffness_answer;
 pub mod zoned;
 
 use super::params::PressFitParam;
-use super::{PUSH_OUT_BOUND, QUANTITIES};
+use super::{PUSH_OUT_BOUND, QUANTITIES, TORQUE_BOUND, TORQUE_QUANTITIES};
 use crate::kernel::params::ParamSpec;
 use crate::problems::problem::ParamKey;
 use crate::problems::{Description, Param};
 
 /// Every parameter of the push-out as a [`Param`], in display order (the torque, `T`, belongs to
-/// the twisted fit's problem, to come: the folder's module docs).
+/// the twisted fit's problem: the folder's module docs).
 const PARAMS: [Param; PressFitParam::PUSH_OUT.len()] = {
     let keys = PressFitParam::PUSH_OUT;
     let mut all = [Param::PressFit(keys[0]); PressFitParam::PUSH_OUT.len()];
@@ -45,7 +45,7 @@ pub(crate) const DESCRIPTION: Description = Description {
     quantities: &QUANTITIES,
 };
 
-/// A key of the twisted fit, to come: one of the fit's parameters, `T` for `F`
+/// A key of the twisted fit: one of the fit's parameters, `T` for `F`
 /// ([`PressFitParam::TORQUE_KEYS`]). A type of its own because the registry's `Param` wraps one
 /// key type per problem, and a key type's [`ParamKey::KEYS`] are its problem's: `PressFitParam`'s
 /// are the push-out's.
@@ -76,6 +76,32 @@ impl ParamKey for TorqueParam {
         self.0.spec()
     }
 }
+
+/// Every parameter of the twisted fit as a [`Param`], in display order.
+const TORQUE_PARAMS: [Param; 12] = {
+    let mut all = [Param::PressFitTorque(TorqueParam::KEYS[0]); 12];
+    let mut i = 0;
+    while i < all.len() {
+        all[i] = Param::PressFitTorque(TorqueParam::KEYS[i]);
+        i += 1;
+    }
+    all
+};
+
+/// The press fit twisted, as the generic layers see it.
+pub(crate) const TORQUE_DESCRIPTION: Description = Description {
+    key: "pressfit-torque",
+    title: "press fit twisted",
+    summary: "Press fit twisted in its hub (shear lag, docs/theory.md section 18, (S6))",
+    paper_preset: "pressfit-ccx98-torque",
+    params: &TORQUE_PARAMS,
+    response_symbol: "theta",
+    load: Some(Param::PressFitTorque(TorqueParam(PressFitParam::Torque))),
+    regime_scale_name: "T_gross",
+    load_bound: Some(TORQUE_BOUND),
+    load_span: 1.0,
+    quantities: &TORQUE_QUANTITIES,
+};
 
 #[cfg(test)]
 mod tests {

@@ -1,12 +1,13 @@
 //! The press fit as a [`Problem`]: parameter values by index, the model, both laws' solutions and
 //! the bound F <= F_gross its inputs put on one another.
 //!
-//! Written once over the load ([`FitKind`]): the push-out ([`PushOut`]) is the only kind
-//! registered; the torque, a second kind over [`PressFit::torsion`], is to come (the folder's
-//! module docs). [`PressFitProblem`] is both a type and its value, as a unit struct is, so the
-//! registry names it as it names every problem.
+//! Written once over the load ([`FitKind`]): the push-out ([`PushOut`], [`PressFitProblem`]) and
+//! the torque ([`Twist`], [`PressFitTorqueProblem`], over [`PressFit::torsion`]), two registry
+//! lines (the folder's module docs say why two problems and not a setting). Each is both a type
+//! (an alias of [`FitProblem`]) and its value, as a unit struct is, so the registry names it as it
+//! names every problem.
 
-use super::DESCRIPTION;
+use super::{DESCRIPTION, TORQUE_DESCRIPTION, TorqueParam};
 use crate::kernel::params::{ParamError, ParamSpec};
 use crate::numeric::NumericError;
 use crate::problems::cross_check::CrossCheckedOf;
@@ -102,10 +103,50 @@ pub type PressFitProblem = FitProblem<PushOut>;
 #[allow(non_upper_case_globals)]
 pub const PressFitProblem: PressFitProblem = FitProblem(PhantomData);
 
+/// The torque: T (N mm), theta (rad).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Twist;
+
+/// The press fit twisted, as a type: see [`Problem`].
+pub type PressFitTorqueProblem = FitProblem<Twist>;
+
+/// The press fit twisted, as a value (what the registry hands out).
+#[allow(non_upper_case_globals)]
+pub const PressFitTorqueProblem: PressFitTorqueProblem = FitProblem(PhantomData);
+
 impl FitBridges for PushOut {
     type Params = PressFitInputs;
     type Model = PressFitModel;
     enum_bridges!(PressFit);
+}
+
+impl FitBridges for Twist {
+    type Params = PressFitInputs;
+    type Model = PressFitModel;
+    enum_bridges!(PressFitTorque);
+}
+
+/// No continuum: the axisymmetric continuum ([`solve_pressfit_continuum`]) is the push-out's; a
+/// torsional continuum is left.
+impl FitKind for Twist {
+    const LOAD: FitLoad = FitLoad::Torque;
+    const INFO: &'static Description = &TORQUE_DESCRIPTION;
+    const REFUSED_AS: &'static str = "the twisted press fit";
+    type Key = TorqueParam;
+    const LOAD_PARAM: Param = Param::PressFitTorque(TorqueParam(PressFitParam::Torque));
+    const STIFFNESS_PARAM: Param = Param::PressFitTorque(TorqueParam(PressFitParam::Stiffness));
+    /// Half T_gross = 27 420 N mm (F_gross 1371 N times r = 20 mm).
+    const PAPER_LOAD: f64 = 13_710.0;
+    fn param(key: TorqueParam) -> PressFitParam {
+        key.0
+    }
+    const CONTINUUM: Option<ContinuumResponse> = None;
+    const LOAD_COLUMN: &'static str = "T_Nmm";
+    const RESPONSE_COLUMN: &'static str = "theta_rad";
+    const FITTED: &'static str = "twisted press fit";
+    const HELD: &'static [TorqueParam] = TorqueParam::STRUCTURE;
+    const COMPARED: &'static [&'static str] =
+        &["pressfit-torque theta (rad)", "pressfit-torque zones (/L)"];
 }
 
 impl FitKind for PushOut {
@@ -334,23 +375,55 @@ mod tests {
         )
         .unwrap();
         assert_eq!(erased.to_bits(), typed.delta.to_bits());
-        checks::erased_answers_as_typed(ModelKind::PressFit, |v| {
-            let fit = PressFit::new(PressFitParams {
-                fit_radius: v("r"),
-                bore_radius: v("ri"),
-                outer_radius: v("ro"),
-                length: v("L"),
-                shaft_modulus: v("Es"),
-                shaft_poisson: v("nus"),
-                hub_modulus: v("Eh"),
-                hub_poisson: v("nuh"),
-                interference: v("delta"),
-                friction: v("mu"),
-                tangential_stiffness: v("KT"),
-            })?;
-            let force = fit.force(v("F"))?;
-            let answers = checks::answers(&fit.coulomb(force), &fit.regularized(force));
-            Ok((answers, Some(fit.gross_slip_force())))
-        });
+        for (kind, load, key) in [
+            (ModelKind::PressFit, FitLoad::Axial, "F"),
+            (ModelKind::PressFitTorque, FitLoad::Torque, "T"),
+        ] {
+            checks::erased_answers_as_typed(kind, |v| {
+                let fit = PressFit::new(PressFitParams {
+                    fit_radius: v("r"),
+                    bore_radius: v("ri"),
+                    outer_radius: v("ro"),
+                    length: v("L"),
+                    shaft_modulus: v("Es"),
+                    shaft_poisson: v("nus"),
+                    hub_modulus: v("Eh"),
+                    hub_poisson: v("nuh"),
+                    interference: v("delta"),
+                    friction: v("mu"),
+                    tangential_stiffness: v("KT"),
+                })?;
+                let axis = fit.axis(load);
+                let force = axis.load(v(key))?;
+                let answers = checks::answers(&axis.coulomb(force), &axis.regularized(force));
+                Ok((answers, Some(axis.gross_load())))
+            });
+        }
+    }
+
+    /// The twisted fit: registered, no continuum, its paper load half T_gross = mu p 2 pi r^2 L
+    /// (by hand from Lame's p), its answers the torsion's.
+    #[test]
+    fn the_twisted_fit_is_registered_at_half_its_gross_torque() {
+        checks::registered::<PressFitTorqueProblem>();
+        assert!(PressFitTorqueProblem::FACES.continuum.is_none());
+        let model = PressFitTorqueProblem::model(&PressFitTorqueProblem::paper()).unwrap();
+        let p = model.fit.params();
+        let gross = p.friction
+            * model.fit.contact_pressure()
+            * 2.0
+            * std::f64::consts::PI
+            * p.fit_radius.powi(2)
+            * p.length;
+        assert!((model.force.value() / gross - 0.5).abs() < 1e-4, "{gross}");
+        let state = PressFitTorqueProblem::solve(&model);
+        assert_eq!(
+            state.regularized.response(),
+            model.fit.torsion().regularized(model.force).response()
+        );
+        assert_eq!(
+            PressFitTorqueProblem::regime_scale(&model),
+            Some(model.fit.torsion().gross_load())
+        );
     }
 }
