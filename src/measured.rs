@@ -353,10 +353,14 @@ fn read_rows(
         })
     };
     // A sweep table of microslip itself (`sweep beam`, `sweep plate`) names the regularized
-    // response `w_regularized_mm` / `u_regularized_mm`: read as the measured column when there is
-    // no `w_mm` / `u_mm`, so a sweep loads without renaming columns.
-    let sweep_column = curve.y.replace("_mm", "_regularized_mm");
-    let deflection_column = match columns.iter().position(|c| *c == sweep_column) {
+    // response `w_regularized_mm` / `u_regularized_mm` (the twisted fit's `theta_regularized_rad`):
+    // read as the measured column when there is no `w_mm` / `u_mm`, so a sweep loads without
+    // renaming columns.
+    let sweep_column = match curve.y.rsplit_once('_') {
+        Some((name, unit)) => format!("{name}_regularized_{unit}"),
+        None => format!("{}_regularized", curve.y),
+    };
+    let deflection_column = match columns.iter().position(|c| *c == sweep_column.as_str()) {
         Some(i) if !columns.contains(&curve.y) => i,
         _ => find(curve.y)?,
     };
@@ -591,6 +595,24 @@ mod tests {
         // A measured column wins over the sweep's.
         let both = "F_N,w_regularized_mm,w_mm\n1,9,0.1\n2,9,0.2\n3,9,0.3\n";
         assert_eq!(parse(both).unwrap()[0].response, 0.1);
+    }
+
+    /// A response in another unit than mm (the twisted fit's theta in rad): its sweep column
+    /// `theta_regularized_rad` is read as `theta_rad`, and its sigma column is `sigma_rad`.
+    #[test]
+    fn a_sweep_column_and_a_sigma_column_keep_the_response_s_unit() {
+        let curve = Curve {
+            x: "T_Nmm",
+            y: "theta_rad",
+            x_what: "torques",
+            x_domain: Domain::FORCE,
+            x_unit: Unit::NewtonMillimetre,
+            min_rows: 1,
+        };
+        assert_eq!(curve.sigma_column(), "sigma_rad");
+        let sweep = "T_Nmm,theta_coulomb_rad,theta_regularized_rad\n100,1e-6,2e-6\n";
+        let read = parse_curve(sweep, &curve).unwrap();
+        assert_eq!(read, [(100.0, 2e-6)]);
     }
 
     #[test]

@@ -283,6 +283,41 @@ class PressFit(Problem):
     def sweep(self, *, quantities: Union[Sequence[str], Literal['all'], None] = None, r: npt.ArrayLike = ..., ri: npt.ArrayLike = ..., ro: npt.ArrayLike = ..., L: npt.ArrayLike = ..., Es: npt.ArrayLike = ..., nus: npt.ArrayLike = ..., Eh: npt.ArrayLike = ..., nuh: npt.ArrayLike = ..., delta: npt.ArrayLike = ..., mu: npt.ArrayLike = ..., KT: npt.ArrayLike = ..., F: npt.ArrayLike = ...) -> Sweep:
         """Solved at every value of one parameter (given in its unit); response keys Delta_coulomb, Delta_regularized (mm); quantities among 'Delta', 'a', 'd', 'ratio', 'F_1', 'D', 'zeta'. MemoryError when the result arrays do not fit."""
 
+class PressFitTwisted(Problem):
+    """Press fit twisted in its hub (shear lag, docs/theory.md section 18, (S6))."""
+
+    def __init__(self, *, name: Optional[str] = None, r: float = 20.0, ri: float = 10.0, ro: float = 30.0, L: float = 17.7332, Es: float = 210000.0, nus: float = 0.3, Eh: float = 210000.0, nuh: float = 0.3, delta: float = 0.0025, mu: float = 0.1, KT: float = 10000.0, T: float = 13710.0) -> None:
+        """Keyword parameters; each not given is the bundled paper value."""
+    r: float
+    """fit radius (mm; must be in [1e-6, 1e6] mm)."""
+    ri: float
+    """shaft's bore radius (0: solid shaft) (mm; must be in [0, 1e6] mm)."""
+    ro: float
+    """hub's outer radius (mm; must be in [1e-6, 1e6] mm)."""
+    L: float
+    """fit length (mm; must be in [1e-6, 1e6] mm)."""
+    Es: float
+    """shaft's Young's modulus (MPa; must be in [1e-4, 1e7] MPa)."""
+    nus: float
+    """shaft's Poisson ratio (-; must be in [0, 0.5) (dimensionless))."""
+    Eh: float
+    """hub's Young's modulus (MPa; must be in [1e-4, 1e7] MPa)."""
+    nuh: float
+    """hub's Poisson ratio (-; must be in [0, 0.5) (dimensionless))."""
+    delta: float
+    """radial interference (on the radius) (mm; must be in [1e-6, 1e6] mm)."""
+    mu: float
+    """friction coefficient (-; must be in [1e-6, 10] (dimensionless))."""
+    KT: float
+    """tangential contact stiffness (MPa/mm; must be in [1e-6, 1e12] MPa/mm)."""
+    T: float
+    """torque on the shaft's end (N mm; must be in [0, 1e15] N mm)."""
+    def replace(self, *, r: float = ..., ri: float = ..., ro: float = ..., L: float = ..., Es: float = ..., nus: float = ..., Eh: float = ..., nuh: float = ..., delta: float = ..., mu: float = ..., KT: float = ..., T: float = ...) -> PressFitTwisted: ...
+    def solve(self, T: Optional[float] = None, F: Optional[float] = None) -> Solution:
+        """Both laws at this data set, or at the load T (N mm) (F= is an alias of T=)."""
+    def sweep(self, *, quantities: Union[Sequence[str], Literal['all'], None] = None, r: npt.ArrayLike = ..., ri: npt.ArrayLike = ..., ro: npt.ArrayLike = ..., L: npt.ArrayLike = ..., Es: npt.ArrayLike = ..., nus: npt.ArrayLike = ..., Eh: npt.ArrayLike = ..., nuh: npt.ArrayLike = ..., delta: npt.ArrayLike = ..., mu: npt.ArrayLike = ..., KT: npt.ArrayLike = ..., T: npt.ArrayLike = ...) -> Sweep:
+        """Solved at every value of one parameter (given in its unit); response keys theta_coulomb, theta_regularized (mm); quantities among 'theta', 'a', 'd', 'ratio', 'T_1', 'D', 'zeta'. MemoryError when the result arrays do not fit."""
+
 def preset(name: str) -> Problem:
     """The problem of a preset: a bundled name, a user preset or a TOML path."""
 

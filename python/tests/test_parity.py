@@ -48,17 +48,21 @@ def test_random_parameters_equal_the_cli_json(cli, entry):
         report = cli.json(*args)
         assert solution.to_dict() == report
         # The solution's own numbers are the report's too.
-        assert solution.regularized.response == _response(report, "regularized")
-        assert solution.coulomb.response == _response(report, "coulomb")
+        assert solution.regularized.response == _response(report, "regularized", entry)
+        assert solution.coulomb.response == _response(report, "coulomb", entry)
     assert accepted >= 4
 
 
-def _response(report: dict, law: str) -> float:
-    """The response in a point report: the one `*_mm` key of the law naming w, u, Delta or s(a)."""
-    keys = [
-        k for k in report[law] if k.split("_")[0] in {"w", "u", "Delta", "sa"} and k.endswith("_mm")
-    ]
-    assert len(keys) == 1, keys
+def _response(report: dict, law: str, entry: dict) -> float:
+    """The response in a point report: the one key of the law that is the problem's response
+    quantity (its first) with its unit (`w_..._mm`, `Delta_mm`, `sa_mm`, the twisted fit's
+    `theta_rad`)."""
+    response = entry["quantities"][0]
+    name, unit = response["name"], response["unit"]
+    # A key drops the parentheses of its name: `w(L)` is `w_...`, `s(a)` is `sa_...`.
+    stems = {name.split("(")[0], name.replace("(", "").replace(")", "")}
+    keys = [k for k in report[law] if k.split("_")[0] in stems and k.endswith("_" + unit)]
+    assert len(keys) == 1, (keys, stems, unit)
     return report[law][keys[0]]
 
 
