@@ -134,11 +134,14 @@ pub(super) fn run_suite(out: &mut impl Write, args: &SuiteArgs) -> Result<(), Cl
     }
     out.flush()?;
     if let Some(path) = &args.junit {
-        let xml = score::junit(&scores, started.elapsed().as_secs_f64());
-        crate::file::write_atomic(path, xml.as_bytes(), true).map_err(|e| CliError::Data {
-            path: path.display().to_string(),
-            reason: e.to_string(),
-        })?;
+        write_scorecard(
+            path,
+            &score::junit(&scores, started.elapsed().as_secs_f64()),
+        )?;
+    }
+    if let Some(path) = &args.html {
+        let title = format!("microslip suite: {} cases", scores.len());
+        write_scorecard(path, &engine::html::page(&scores, &title))?;
     }
     eprintln!(
         "microslip suite: the runs' folders and result files are in {}",
@@ -158,6 +161,14 @@ pub(super) fn run_suite(out: &mut impl Write, args: &SuiteArgs) -> Result<(), Cl
         )));
     }
     Ok(())
+}
+
+/// A scorecard file a user named (`--junit`, `--html`), replaced atomically.
+fn write_scorecard(path: &std::path::Path, text: &str) -> Result<(), CliError> {
+    crate::file::write_atomic(path, text.as_bytes(), true).map_err(|e| CliError::Data {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    })
 }
 
 /// `pending` as one Slurm job array of at most `jobs` tasks at once, followed to its end; each

@@ -22,6 +22,7 @@
 //! [`crate::report::compare::CompareFace`]); no problem is named.
 
 pub mod cases;
+pub mod html;
 pub mod pool;
 pub mod result;
 pub mod score;
