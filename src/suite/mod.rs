@@ -25,6 +25,7 @@ pub mod cases;
 pub mod html;
 pub mod pool;
 pub mod result;
+pub mod run;
 pub mod score;
 pub mod slurm;
 
