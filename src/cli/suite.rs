@@ -38,7 +38,7 @@ pub(super) fn run_suite(out: &mut impl Write, args: &SuiteArgs) -> Result<(), Cl
     let scores = &scorecard.cases;
     match args.format {
         SuiteFormat::Text => out.write_all(score::text(scores).as_bytes())?,
-        SuiteFormat::Json => write_json(out, &report::point::to_json(scores))?,
+        SuiteFormat::Json => write_json(out, &scorecard.json())?,
     }
     out.flush()?;
     if let Some(path) = &args.junit {

@@ -87,6 +87,11 @@ impl Scorecard {
         }
     }
 
+    /// The scorecard as JSON (`--format json`): an array, one object per case.
+    pub fn json(&self) -> serde_json::Value {
+        crate::report::point::to_json(&self.cases)
+    }
+
     /// The scorecard as JUnit XML ([`score::junit`]).
     pub fn junit(&self) -> String {
         score::junit(&self.cases, self.seconds)
