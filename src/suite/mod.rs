@@ -67,6 +67,9 @@ pub struct Case {
     pub assignments: Vec<String>,
     /// The mesh rungs, coarsest first.
     pub meshes: Vec<DeckMesh>,
+    /// The load steps of its decks, in the problem's load unit (`deck --loads`); `None`: the
+    /// deck's own.
+    pub loads: Option<Vec<f64>>,
 }
 
 /// One run of a case: a mesh rung at an increment.
@@ -182,6 +185,7 @@ mod tests {
             preset: "p".to_string(),
             assignments: Vec::new(),
             meshes: meshes.to_vec(),
+            loads: None,
         }
     }
 

@@ -348,7 +348,7 @@ pub fn prepared_runs(
         .into_iter()
         .map(|spec| {
             let request = DeckRequest {
-                loads: None,
+                loads: case.loads.as_deref(),
                 mesh: spec.mesh,
                 slope: StickSlope::Model,
                 increment: spec.increment,

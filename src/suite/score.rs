@@ -418,6 +418,7 @@ pub(super) mod tests {
             preset: "p".to_string(),
             assignments: Vec::new(),
             meshes: vec![DeckMesh::Coarse, DeckMesh::Fine],
+            loads: None,
         }
     }
 
@@ -430,6 +431,7 @@ pub(super) mod tests {
             preset: "p".to_string(),
             assignments: Vec::new(),
             meshes: DeckMesh::ALL.to_vec(),
+            loads: None,
         };
         let specs = super::super::plan(0, &case, None);
         let outcomes: Vec<_> = specs
