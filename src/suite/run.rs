@@ -415,3 +415,33 @@ impl ForProblem for DefaultIncrement<'_> {
         P::default_increment(&P::from_model(self.model)?)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// CI's list of cases (validation/calculix/suite.toml) resolves, every run's deck is written,
+    /// and a case's own loads reach its decks.
+    #[test]
+    fn the_ci_case_list_resolves_and_writes_its_decks() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/validation/calculix/suite.toml");
+        let cases = super::super::cases::resolve(Some(path), Ladder::Quick).unwrap();
+        assert!(cases.len() >= 3, "{cases:?}");
+        let dir = tempfile::tempdir().unwrap();
+        let mut with_loads = 0;
+        for (index, case) in cases.iter().enumerate() {
+            let runs = prepared_runs(index, case, dir.path()).unwrap();
+            assert!(runs.len() >= 2, "{}", case.name);
+            if case.loads.is_some() {
+                with_loads += 1;
+                let own = Case {
+                    loads: None,
+                    ..case.clone()
+                };
+                let default = prepared_runs(index, &own, dir.path()).unwrap();
+                assert_ne!(runs[0].deck, default[0].deck, "{}", case.name);
+            }
+        }
+        assert!(with_loads > 0);
+    }
+}
