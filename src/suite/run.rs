@@ -424,7 +424,10 @@ mod tests {
     /// and a case's own loads reach its decks.
     #[test]
     fn the_ci_case_list_resolves_and_writes_its_decks() {
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/validation/calculix/suite.toml");
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/validation/calculix/suite.toml"
+        );
         let cases = super::super::cases::resolve(Some(path), Ladder::Quick).unwrap();
         assert!(cases.len() >= 3, "{cases:?}");
         let dir = tempfile::tempdir().unwrap();
