@@ -191,14 +191,22 @@ fn case_section(out: &mut String, index: usize, case: &CaseScore) {
         },
         why = xml(&case.reason),
     );
-    for run in case.runs.iter().filter(|r| r.error.is_some()) {
+    // Each run: the single-run verdict `compare` gives it (or why it has none), its solver time.
+    out.push_str("<table>\n<tr><th>run</th><th>the run alone</th><th>solver (s)</th></tr>\n");
+    for run in &case.runs {
+        let (said, seconds) = match (&run.result, &run.error) {
+            (Some(r), _) => (r.verdict.as_str(), format!("{:.1}", r.solver_seconds)),
+            (None, Some(e)) => (e.as_str(), "-".to_string()),
+            (None, None) => ("not run", "-".to_string()),
+        };
         let _ = writeln!(
             out,
-            "<p>run {}: {}</p>",
+            "<tr><td>{}</td><td>{}</td><td class=\"n\">{seconds}</td></tr>",
             xml(&run.run),
-            xml(run.error.as_deref().unwrap_or_default())
+            xml(said)
         );
     }
+    out.push_str("</table>\n");
     let sizes = mesh_sizes(case);
     for q in &case.quantities {
         let _ = write!(
@@ -466,8 +474,9 @@ mod tests {
             assert_eq!(circles, 3);
         }
         // The summary's rows: one per quantity, with its verdict.
-        let verdicts: Vec<String> = doc
-            .descendants()
+        let summary = doc.descendants().find(|n| n.has_tag_name("table")).unwrap();
+        let verdicts: Vec<String> = summary
+            .children()
             .filter(|n| n.has_tag_name("tr"))
             .skip(1)
             .filter_map(|r| r.children().rfind(|c| c.has_tag_name("td")))
