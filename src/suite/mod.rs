@@ -9,7 +9,9 @@
 //! ([`pool`]: at most `jobs` solver processes at once, each in its own process group, ended with
 //! us) or a Slurm job array ([`slurm`]). The **scorecard** ([`score`]) extrapolates each case's quantities over its ladder
 //! ([`crate::fe::ladder`]) and judges them against the problem's envelope plus the
-//! extrapolation's uncertainty.
+//! extrapolation's uncertainty; [`html`] draws it as one page with each case's convergence plots.
+//! [`run`] is the whole suite from its options to its scorecard, the one function the command
+//! line and the Python face call.
 //!
 //! Why one work folder with a result file per run: a suite of many solver runs outlives a
 //! terminal, a CI job's time limit or a node. Killed at any moment (SIGTERM, SIGKILL), it resumes
