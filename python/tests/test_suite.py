@@ -193,3 +193,13 @@ def test_ctrl_c_ends_the_running_solver_and_raises_keyboard_interrupt(tmp_path):
     assert living_in_group(pid) == [], living_in_group(pid)
     # Nothing finished: no result file, so a resumed suite runs the rung again.
     assert not (tmp_path / "w" / "plate-bench" / "coarse" / "result.json").exists()
+
+
+def test_slurm_without_the_microslip_program_is_refused(tmp_path, monkeypatch):
+    # Each array task runs the microslip program: with none to be found, the call says so
+    # before anything is written or submitted.
+    monkeypatch.delenv("MICROSLIP_BIN", raising=False)
+    monkeypatch.setenv("PATH", str(tmp_path))
+    with pytest.raises(ValueError, match="runs the microslip program in each array task"):
+        microslip.suite("plate-bench", executor="slurm", workdir=tmp_path / "w")
+    assert not (tmp_path / "w").exists()
