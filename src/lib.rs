@@ -39,7 +39,9 @@
 //! - [`report`]: every format (text, JSON, CSV, SVG), from one serde struct per report and per
 //!   table row; it computes nothing.
 //! - [`suite`]: `microslip suite`, many FE runs as cases x ladders, their result files, the local
-//!   pool that runs them and the scorecard of converged verdicts, over the problems' faces.
+//!   pool that runs them and the scorecard of converged verdicts (text, JSON, JUnit, an HTML page),
+//!   over the problems' faces; the whole run is one function (`suite::run`) that the command line
+//!   and the Python face both call.
 //! - `cli` and `tui` (behind the default feature `app`): thin layers that parse flags or keys, call
 //!   the library and hand the results to `report` or the screen. They are private: the binary
 //!   calls `app::main`, and the TUI's frame and monkey tests drive it through `app::testing`

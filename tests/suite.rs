@@ -203,8 +203,8 @@ fn a_killed_suite_resumes_and_runs_each_run_once() {
 }
 
 /// The quick ladder (coarse, fine) of one case `name` of the bench plate, run with the stand-in
-/// solver's `variant`: its exit code, its scorecard's text and its JUnit XML.
-fn quick_case(variant: &str, name: &str) -> (Option<i32>, String, String) {
+/// solver's `variant`: its exit code, its scorecard's text, its JUnit XML and its HTML page.
+fn quick_case(variant: &str, name: &str) -> (Option<i32>, String, String, String) {
     let dir = tempfile::tempdir().unwrap();
     let program = solver(dir.path(), variant, "");
     let cases = dir.path().join("cases.toml");
@@ -216,6 +216,7 @@ fn quick_case(variant: &str, name: &str) -> (Option<i32>, String, String) {
     )
     .unwrap();
     let junit = dir.path().join("suite.xml");
+    let html = dir.path().join("suite.html");
     let out = suite(
         &[
             "--cases",
@@ -224,6 +225,8 @@ fn quick_case(variant: &str, name: &str) -> (Option<i32>, String, String) {
             dir.path().join("work").to_str().unwrap(),
             "--junit",
             junit.to_str().unwrap(),
+            "--html",
+            html.to_str().unwrap(),
         ],
         &program,
     );
@@ -232,6 +235,7 @@ fn quick_case(variant: &str, name: &str) -> (Option<i32>, String, String) {
         out.status.code(),
         String::from_utf8_lossy(&out.stdout).into_owned(),
         xml,
+        std::fs::read_to_string(&html).unwrap(),
     )
 }
 
@@ -239,7 +243,7 @@ fn quick_case(variant: &str, name: &str) -> (Option<i32>, String, String) {
 /// failure that names the case and the numbers.
 #[test]
 fn a_stick_slope_ten_percent_off_fails_the_suite_with_its_numbers() {
-    let (code, stdout, xml) = quick_case("off", "stiff-contact");
+    let (code, stdout, xml, html) = quick_case("off", "stiff-contact");
     assert_eq!(code, Some(1), "{stdout}");
     assert!(
         stdout.contains("stiff-contact (plate, preset plate-bench): does not agree"),
@@ -260,6 +264,16 @@ fn a_stick_slope_ten_percent_off_fails_the_suite_with_its_numbers() {
     );
     // The stiffer contact's u(L) below the closed form's at the deck's K_T, on both rungs.
     assert!(xml.contains("at K_T = 10000 MPa/mm: rungs -"), "{xml}");
+    // The HTML page: the case, its verdict, the slope used against the deck's, its plot.
+    assert!(
+        html.contains("stiff-contact <span class=\"does-not-agree\">does not agree</span>"),
+        "{html}"
+    );
+    assert!(
+        html.contains("11000 / 10000 (+10.000 %, does not agree)"),
+        "{html}"
+    );
+    assert_eq!(html.matches("<svg ").count(), 1, "{html}");
 }
 
 /// A ladder whose coarse rung is 25 % off and whose fine rung is not (a mesh far too coarse for
@@ -267,7 +281,7 @@ fn a_stick_slope_ten_percent_off_fails_the_suite_with_its_numbers() {
 /// converged, exit 1, and its JUnit failure gives the rungs.
 #[test]
 fn a_coarse_ladder_that_is_not_converged_fails_the_suite() {
-    let (code, stdout, xml) = quick_case("far", "too-coarse");
+    let (code, stdout, xml, html) = quick_case("far", "too-coarse");
     assert_eq!(code, Some(1), "{stdout}");
     assert!(
         stdout.contains("too-coarse (plate, preset plate-bench): not converged"),
@@ -280,6 +294,10 @@ fn a_coarse_ladder_that_is_not_converged_fails_the_suite() {
     // u(L) 25 % above the fine rung's +1.49 %: 1.0149 x 1.25 - 1 = +26.86 %.
     assert!(xml.contains("rungs +26.86"), "{xml}");
     assert!(xml.contains("two meshes"), "{xml}");
+    assert!(
+        html.contains("too-coarse <span class=\"not-converged\">not converged</span>"),
+        "{html}"
+    );
 }
 
 /// `bench` follows `compare`'s exit rule: the same solver as above, which used a stick slope

@@ -133,6 +133,68 @@ def compare(path, problem, *, deck=None) -> Report:
     return _native.compare(os.fspath(path), problem, None if deck is None else os.fspath(deck))
 
 
+def suite(
+    cases=None,
+    *,
+    quick: bool = False,
+    executor: str = "local",
+    jobs=None,
+    workdir=None,
+    resume: bool = False,
+    junit=None,
+    html=None,
+    ccx="ccx",
+    microslip=None,
+    progress: bool = False,
+) -> Report:
+    """``microslip suite``: each case run as its mesh ladder (h, h/2, h/4 and the finest at half the
+    load increment; ``quick``: h, h/2), each quantity extrapolated to its converged answer and judged
+    against the reference with the reference's accuracy plus the ladder's uncertainty.
+
+    The keywords are the command line's flags: ``cases`` a name (a problem's key means its bundled
+    presets, any other name a preset's), a list of names, or the path of a TOML list of cases
+    (docs/guide.md, "A verification suite"); default every bundled preset. ``executor`` ``"local"``
+    (at most ``jobs`` solver processes at once, default the cores less one) or ``"slurm"`` (one job
+    array; each task runs the ``microslip`` program, found as ``microslip``, else
+    ``$MICROSLIP_BIN``, else on the PATH). ``workdir`` holds the runs (default: a new temporary
+    folder); ``resume`` carries on the suite there. ``junit`` and ``html`` also write the
+    scorecard as JUnit XML and as its HTML page. ``ccx``: the solver. ``progress``: the CLI's
+    progress lines on stderr.
+
+    Returns the scorecard as data: ``cases`` (the objects of ``--format json``: each case's
+    ``verdict``, ``quantities``, ``stick_slope``, ``runs``), ``exit_code`` (the CLI's: 0 every
+    case agrees, 1 one does not, 3 a solver failed), ``agrees``, ``failing``, ``solver_failure``,
+    ``workdir`` and ``seconds``. Raises ``ValueError`` only for what the CLI refuses (exit 2): an
+    unknown case, a bad file, a non-empty ``workdir`` without ``resume``, a solver that cannot be
+    found; Ctrl-C ends the running solvers and raises ``KeyboardInterrupt``.
+    """
+    if cases is not None and not isinstance(cases, (str, os.PathLike)):
+        cases = ",".join(cases)
+    if executor == "slurm" and microslip is None:
+        import shutil
+
+        microslip = os.environ.get("MICROSLIP_BIN") or shutil.which("microslip")
+        if microslip is None:
+            raise ValueError(
+                "executor='slurm' runs the microslip program in each array task: install it, "
+                "or name it with microslip=PATH or $MICROSLIP_BIN"
+            )
+    path = lambda p: None if p is None else os.fspath(p)  # noqa: E731
+    return _native.suite(
+        path(cases),
+        bool(quick),
+        executor,
+        jobs,
+        path(workdir),
+        bool(resume),
+        path(junit),
+        path(html),
+        os.fspath(ccx),
+        path(microslip),
+        bool(progress),
+    )
+
+
 def presets(bundled_only: bool = False) -> list:
     """The names ``preset()`` accepts: the bundled presets, then (unless ``bundled_only``) the
     user's (``microslip presets`` lists the same)."""
@@ -150,5 +212,6 @@ __all__ = [
     "preset",
     "presets",
     "problem_class",
+    "suite",
     *(cls.__name__ for cls in _CLASSES.values()),
 ]

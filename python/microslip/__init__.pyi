@@ -334,3 +334,20 @@ def compare(
     deck: Union[str, PathLike[str], None] = None,
 ) -> Report:
     """An FE code's results (CalculiX .dat or CSV) against the closed forms, with the verdict."""
+
+def suite(
+    cases: Union[str, Sequence[str], PathLike[str], None] = None,
+    *,
+    quick: bool = False,
+    executor: Literal["local", "slurm"] = "local",
+    jobs: Optional[int] = None,
+    workdir: Union[str, PathLike[str], None] = None,
+    resume: bool = False,
+    junit: Union[str, PathLike[str], None] = None,
+    html: Union[str, PathLike[str], None] = None,
+    ccx: Union[str, PathLike[str]] = "ccx",
+    microslip: Union[str, PathLike[str], None] = None,
+    progress: bool = False,
+) -> Report:
+    """`microslip suite`: each case's mesh ladder run, extrapolated and judged; the scorecard as
+    data (``cases`` as ``--format json``, ``exit_code``, ``agrees``, ``failing``, ``workdir``)."""

@@ -5,7 +5,7 @@
 //!
 //! Layout, one job per module: `registry` (the descriptions as data), `problem` (a validated
 //! parameter set), `solution` (one solve), `sweep` (many, into numpy), `features` (cycle, K_T,
-//! fit, continuum, decks, compare), `presets`, `interrupt` (Ctrl-C during a long call), `bridge` (the CLI's command bodies, written once over
+//! fit, continuum, decks, compare), `presets`, `suite` (`microslip suite` as data), `interrupt` (Ctrl-C during a long call), `bridge` (the CLI's command bodies, written once over
 //! the application's generic functions and dispatched from the registry; the only code naming a
 //! problem, where the application still has one function per problem), `json` (reports as Python objects), `errors`
 //! (refusals as `ParameterError`, panics as `RuntimeError`, work too large for memory as
@@ -26,6 +26,7 @@ mod presets;
 mod problem;
 mod registry;
 mod solution;
+mod suite;
 mod sweep;
 
 #[pymodule]
@@ -41,6 +42,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(presets::preset_values, m)?)?;
     m.add_function(wrap_pyfunction!(features::compare, m)?)?;
     m.add_function(wrap_pyfunction!(presets::preset_names, m)?)?;
+    m.add_function(wrap_pyfunction!(suite::suite, m)?)?;
     m.add_function(wrap_pyfunction!(errors::_panic_check, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -24,14 +24,8 @@ pub(super) fn build_deck(
         slope,
         increment: deck.increment,
     };
-    let written = for_problem(
-        model,
-        WriteDeck {
-            model: &loaded,
-            request: &request,
-        },
-    )
-    .ok_or_else(|| wrong_model(&deck.inputs, loaded.kind(), model, command))?;
+    let written = crate::suite::run::write_deck(model, &loaded, &request)
+        .ok_or_else(|| wrong_model(&deck.inputs, loaded.kind(), model, command))?;
     let written = written.map(|deck| match &note {
         Some(note) => with_case_note(&deck, note),
         None => deck,
@@ -104,23 +98,6 @@ impl ForProblem for BenchPreset {
 
     fn run<P: Faces>(self) -> Self::Output {
         P::BENCH_PRESET
-    }
-}
-
-/// [`build_deck`]'s model and request, for [`for_problem`].
-struct WriteDeck<'a> {
-    model: &'a Model,
-    request: &'a DeckRequest<'a>,
-}
-
-impl ForProblem for WriteDeck<'_> {
-    type Output = Option<Result<String, DeckError>>;
-
-    fn run<P: Faces>(self) -> Self::Output {
-        Some(crate::fe::face::written_deck::<P>(
-            &P::from_model(self.model)?,
-            self.request,
-        ))
     }
 }
 

@@ -8,6 +8,7 @@
 //! preset = "cylinder-steel-pad"   # a bundled or user preset, or a path
 //! set = ["KT=1e6"]                # optional: assignments as --set takes them
 //! meshes = ["coarse", "fine"]     # optional: the rungs (default: the suite's ladder)
+//! loads = [150, 300]              # optional: the load steps, as deck --loads takes them
 //! ```
 
 use std::path::Path;
@@ -42,6 +43,7 @@ struct CaseEntry {
     #[serde(default)]
     set: Vec<String>,
     meshes: Option<Vec<String>>,
+    loads: Option<Vec<f64>>,
 }
 
 /// The cases `spec` names on `ladder`; `None`: every problem's bundled presets.
@@ -99,6 +101,7 @@ fn bundled_cases(kind: ModelKind, ladder: Ladder) -> Vec<Case> {
             preset: p.name,
             assignments: Vec::new(),
             meshes: ladder.meshes().to_vec(),
+            loads: None,
         })
         .collect()
 }
@@ -123,6 +126,7 @@ fn named(name: &str, ladder: Ladder) -> Result<Vec<Case>, CasesError> {
         preset: name.to_string(),
         assignments: Vec::new(),
         meshes: ladder.meshes().to_vec(),
+        loads: None,
     }])
 }
 
@@ -155,6 +159,7 @@ fn from_file(path: &Path, ladder: Ladder) -> Result<Vec<Case>, CasesError> {
                 preset: entry.preset,
                 assignments: entry.set,
                 meshes,
+                loads: entry.loads,
             })
         })
         .collect()
@@ -248,7 +253,7 @@ mod tests {
             &path,
             format!(
                 "[[case]]\nname = \"a\"\npreset = \"{}\"\nset = [\"mu=0.2\"]\n\
-                 meshes = [\"fine\", \"finest\"]\n",
+                 meshes = [\"fine\", \"finest\"]\nloads = [1, 2.5]\n",
                 bundled.name
             ),
         )
@@ -257,6 +262,7 @@ mod tests {
         assert_eq!(cases.len(), 1);
         assert_eq!(cases[0].meshes, [DeckMesh::Fine, DeckMesh::Finest]);
         assert_eq!(cases[0].assignments, ["mu=0.2"]);
+        assert_eq!(cases[0].loads, Some(vec![1.0, 2.5]));
         assert_eq!(cases[0].kind, bundled.inputs.kind());
         for (bad, says) in [
             ("name = \"../x\"", "case name"),

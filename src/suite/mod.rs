@@ -9,7 +9,9 @@
 //! ([`pool`]: at most `jobs` solver processes at once, each in its own process group, ended with
 //! us) or a Slurm job array ([`slurm`]). The **scorecard** ([`score`]) extrapolates each case's quantities over its ladder
 //! ([`crate::fe::ladder`]) and judges them against the problem's envelope plus the
-//! extrapolation's uncertainty.
+//! extrapolation's uncertainty; [`html`] draws it as one page with each case's convergence plots.
+//! [`run`] is the whole suite from its options to its scorecard, the one function the command
+//! line and the Python face call.
 //!
 //! Why one work folder with a result file per run: a suite of many solver runs outlives a
 //! terminal, a CI job's time limit or a node. Killed at any moment (SIGTERM, SIGKILL), it resumes
@@ -22,8 +24,10 @@
 //! [`crate::report::compare::CompareFace`]); no problem is named.
 
 pub mod cases;
+pub mod html;
 pub mod pool;
 pub mod result;
+pub mod run;
 pub mod score;
 pub mod slurm;
 
@@ -65,6 +69,9 @@ pub struct Case {
     pub assignments: Vec<String>,
     /// The mesh rungs, coarsest first.
     pub meshes: Vec<DeckMesh>,
+    /// The load steps of its decks, in the problem's load unit (`deck --loads`); `None`: the
+    /// deck's own.
+    pub loads: Option<Vec<f64>>,
 }
 
 /// One run of a case: a mesh rung at an increment.
@@ -180,6 +187,7 @@ mod tests {
             preset: "p".to_string(),
             assignments: Vec::new(),
             meshes: meshes.to_vec(),
+            loads: None,
         }
     }
 

@@ -362,7 +362,7 @@ pub fn junit(cases: &[CaseScore], seconds: f64) -> String {
 
 /// `text` escaped for XML text and double-quoted attributes, control characters (which XML 1.0 cannot hold)
 /// as `?`.
-fn xml(text: &str) -> String {
+pub(super) fn xml(text: &str) -> String {
     text.chars()
         .map(|c| match c {
             '&' => "&amp;".to_string(),
@@ -377,7 +377,7 @@ fn xml(text: &str) -> String {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::fe::deck::DeckMesh;
     use crate::fe::ladder::LadderQuantity;
@@ -418,16 +418,20 @@ mod tests {
             preset: "p".to_string(),
             assignments: Vec::new(),
             meshes: vec![DeckMesh::Coarse, DeckMesh::Fine],
+            loads: None,
         }
     }
 
-    fn ladder(values: [f64; 3], slope: f64) -> CaseScore {
+    /// A case of the full ladder named `name` whose one quantity is `values` on its rungs, run
+    /// at `slope` times the deck's stick slope.
+    pub(in crate::suite) fn ladder(name: &str, values: [f64; 3], slope: f64) -> CaseScore {
         let case = Case {
-            name: "a<b".to_string(),
+            name: name.to_string(),
             kind: ModelKind::ALL[0],
             preset: "p".to_string(),
             assignments: Vec::new(),
             meshes: DeckMesh::ALL.to_vec(),
+            loads: None,
         };
         let specs = super::super::plan(0, &case, None);
         let outcomes: Vec<_> = specs
@@ -441,11 +445,11 @@ mod tests {
     #[test]
     fn a_converging_ladder_agrees_and_one_off_a_power_law_is_not_converged() {
         // 0.5 % + 4 % h^2: converged 0.5 %, within 1.5 %.
-        let good = ladder([0.045, 0.015, 0.0075], 1.0);
+        let good = ladder("a<b", [0.045, 0.015, 0.0075], 1.0);
         assert_eq!(good.verdict, Verdict::Agrees, "{}", good.reason);
         let q = &good.quantities[0];
         assert!((q.extrapolation.estimate - 0.005).abs() < 1e-12);
-        let coarse = ladder([0.20, 0.02, 0.12], 1.0);
+        let coarse = ladder("a<b", [0.20, 0.02, 0.12], 1.0);
         assert_eq!(coarse.verdict, Verdict::NotConverged);
         let xml = junit(&[good, coarse], 3.0);
         assert!(xml.contains("tests=\"2\" failures=\"1\""), "{xml}");
@@ -486,7 +490,7 @@ mod tests {
 
     #[test]
     fn a_stick_slope_off_the_deck_s_does_not_agree_with_its_numbers() {
-        let off = ladder([0.045, 0.015, 0.0075], 1.1);
+        let off = ladder("a<b", [0.045, 0.015, 0.0075], 1.1);
         assert_eq!(off.verdict, Verdict::DoesNotAgree);
         assert!(
             off.reason.contains("1100 MPa/mm, +10.000 %"),

@@ -96,6 +96,10 @@ pub struct SuiteArgs {
     /// atomically if it exists).
     #[arg(long, value_name = "FILE")]
     pub(in crate::cli) junit: Option<PathBuf>,
+    /// Also write the scorecard as one self-contained HTML page to FILE: the summary table and
+    /// each case's convergence plots (replaced atomically if it exists).
+    #[arg(long, value_name = "FILE")]
+    pub(in crate::cli) html: Option<PathBuf>,
     /// The scorecard's format on stdout.
     #[arg(long, value_enum, default_value_t = SuiteFormat::Text)]
     pub(in crate::cli) format: SuiteFormat,
