@@ -24,7 +24,7 @@ use crate::problems::problem::Registered;
 use crate::problems::profiled::LawProfiles;
 
 /// The charts of one kind of fit, in the order the TUI cycles through them, each one of the
-/// shear lag's six ([`ShearLagView`]): the response against the load for K_T/5, K_T, 5 K_T and
+/// shear lag's six (`ShearLagView`): the response against the load for K_T/5, K_T, 5 K_T and
 /// Coulomb; the sliding zones from the loaded face x = 0 and from the held face x = L against
 /// the load, outside the outline of the holding zone, both laws; the interface shear tau(x) and
 /// slip s(x) along the fit at the load; the hysteresis loop of a load cycling between +F and -F
@@ -32,7 +32,7 @@ use crate::problems::profiled::LawProfiles;
 ///
 /// Why one type over the kind ([`FitKind`]) and not an enum per kind: the push-out's and the
 /// torque's charts are the same curves of the same shear lag; only their titles and keys (which
-/// must differ over the problems) are the kind's ([`FitCharts::CHARTS`]).
+/// must differ over the problems) are the kind's (`FitCharts::CHARTS`).
 pub struct FitChart<K> {
     view: ShearLagView,
     kind: PhantomData<fn() -> K>,

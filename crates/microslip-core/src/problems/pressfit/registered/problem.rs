@@ -1,8 +1,8 @@
 //! The press fit as a [`Problem`]: parameter values by index, the model, both laws' solutions and
 //! the bound F <= F_gross its inputs put on one another.
 //!
-//! Written once over the load ([`FitKind`]): the push-out ([`PushOut`], [`PressFitProblem`]) and
-//! the torque ([`Twist`], [`PressFitTorqueProblem`], over [`PressFit::torsion`]), two registry
+//! Written once over the load ([`FitKind`]): the push-out ([`PushOut`], [`PressFitProblem`](tyalias@PressFitProblem)) and
+//! the torque ([`Twist`], [`PressFitTorqueProblem`](tyalias@PressFitTorqueProblem), over [`PressFit::torsion`]), two registry
 //! lines (the folder's module docs say why two problems and not a setting). Each is both a type
 //! (an alias of [`FitProblem`]) and its value, as a unit struct is, so the registry names it as it
 //! names every problem.
