@@ -236,8 +236,9 @@ impl Deck for CylinderProblem {
     fn expected(model: &CylinderModel, header: &DeckHeader) -> String {
         let cylinder = &model.cylinder;
         let mut text = format!(
-            "** Expected from the half-plane solution: a = {} mm, p0 = {} MPa (Hertz); bodies \
-             {BODY_SIZE} a wide and deep\n\
+            "** Expected from the half-plane solution: a = {} mm, p0 = {} MPa (Hertz); the flat \
+             {BODY_SIZE} a wide and deep, the cylinder the disc below a chord {BODY_SIZE} a (at \
+             most R) above the contact\n\
              **   Q (N/mm) | c Mindlin (mm) | c regularized (mm) | s(a) (mm) | s(0) (mm)\n",
             number(cylinder.half_width()),
             number(cylinder.peak_pressure()),
@@ -350,8 +351,8 @@ fn fits_the_deck(cylinder: &Cylinder) -> Result<(), DeckError> {
     let scale = 10f64.powf(least.log10().floor() - 3.0);
     let least = (least / scale).ceil() * scale;
     let why = format!(
-        "a / R = {} here, and the deck's bodies (6 a wide and deep) hold the cylinder's arc up to \
-         a / R = 2/15 (R >= 7.5 a)",
+        "a / R = {} here, and the deck is written up to a / R = 2/15 (R >= 7.5 a: a contact \
+         small against the cylinder)",
         number(ratio)
     );
     let allowed = if least <= Domain::LENGTH.max() {
