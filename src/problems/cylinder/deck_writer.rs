@@ -51,6 +51,14 @@ pub const BODY_SIZE: f64 = 32.0;
 /// measured (a / R <= 0.06, `validity`); beyond it the contact is no longer small against the
 /// cylinder, and the deck refuses rather than pretend a half-plane.
 pub const MAX_HALF_WIDTH_OVER_RADIUS: f64 = 2.0 / 15.0;
+/// The weak springs that hold the cylinder's loaded node before the faces press (face-to-face
+/// contact engages only then), per unit length, as a fraction of E. They carry load in parallel
+/// with the contact: a spring of k carries k delta of P, delta the top's approach (about
+/// 3 P / E* with these bodies), so about 5e-5 of P here. The older spring, a millionth of the
+/// contact's penalty stiffness over 2 a, grew as the mesh was refined (the penalty is
+/// 100 E / h): it carried 1 %, 2 % and 4 % of P on the a/8, a/16 and a/32 decks of 32 a bodies,
+/// and the contact's a and p0 fell with the mesh instead of converging (issue 45, item 5).
+pub const SPRING_OVER_MODULUS: f64 = 1e-5;
 /// Elements per contact half-width of the coarse mesh (the fine mesh has twice as many).
 pub const PER_HALF_WIDTH: usize = 8;
 
@@ -281,12 +289,13 @@ pub fn cylinder_deck(
     let spring = flat.element_count() + cylinder.element_count() + 1;
     let _ = writeln!(
         deck,
-        "** weak springs on the loaded node (a millionth of the contact's stiffness over 2 a)\n\
+        "** weak springs on the loaded node ({} E per unit length)\n\
          *ELEMENT, TYPE=SPRINGA, ELSET=ESPRING\n{spring}, {loaded}, {ground}\n{}, {loaded}, {}\n\
          *SPRING, ELSET=ESPRING\n\n{}",
+        Compact(SPRING_OVER_MODULUS),
         spring + 1,
         ground + 1,
-        real(1e-6 * normal_slope * 2.0 * a * width)
+        real(SPRING_OVER_MODULUS * inputs.modulus * width)
     );
 
     let fine = FINE_ZONE * a * (1.0 + 1e-9);
@@ -526,5 +535,31 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// The springs that hold the cylinder before the faces press carry load beside the contact:
+    /// their stiffness per unit length is the same on every rung of the ladder (it once grew as
+    /// the penalty 100 E / h, and carried 1, 2, 4 % of P on a/8, a/16, a/32), and a small
+    /// fraction of E.
+    #[test]
+    fn the_springs_do_not_stiffen_with_the_mesh() {
+        let per_length = |mesh: DeckMesh| {
+            let deck = cylinder_deck(&PAD, &[100.0], layout(mesh), 30.0, "").unwrap();
+            let after = deck.split("*SPRING, ELSET=ESPRING\n\n").nth(1).unwrap();
+            let spring: f64 = after.lines().next().unwrap().trim().parse().unwrap();
+            let width = PAD.half_width / layout(mesh).per_half_width as f64;
+            spring / width
+        };
+        let expected = SPRING_OVER_MODULUS * PAD.modulus;
+        for mesh in DeckMesh::ALL {
+            let k = per_length(mesh);
+            assert!(
+                (k / expected - 1.0).abs() < 1e-9,
+                "{mesh:?}: {k} N/mm per mm"
+            );
+        }
+        // Its share of P at the top's approach (about 3 P / E*) is below 1e-4.
+        let approach = 3.0 * PAD.normal_load * 2.0 * (1.0 - PAD.poisson.powi(2)) / PAD.modulus;
+        assert!(expected * approach / PAD.normal_load < 1e-4);
     }
 }
