@@ -467,10 +467,11 @@ pub struct CylinderCompareReport {
 /// What the half-plane solution assumes, said wherever the comparison of a run of the
 /// project's own deck is shown.
 pub const HALF_PLANE_NOTE: &str = "half-plane solution (Hertz, regularized Cattaneo-Mindlin at \
-     the deck's K_T); the deck's bodies are 6 a wide and deep, mirror images but for the arc";
+     the deck's K_T); the deck's flat is 32 a wide and deep, its cylinder the disc below a chord \
+     32 a (at most R) above the contact";
 /// The same for a CSV curve: its bodies and its K_T are what the flags say, not a deck's.
 pub const HALF_PLANE_NOTE_CSV: &str = "half-plane solution (Hertz, regularized Cattaneo-Mindlin \
-     at the given K_T); the envelope holds for bodies at least 6 a wide and deep, which a CSV \
+     at the given K_T); the envelope holds for bodies at least 32 a wide and deep, which a CSV \
      curve does not say";
 
 impl CylinderCompareReport {
@@ -821,7 +822,14 @@ mod envelope {
         // a/R = 0.047 (R = 5 mm): the curved bounds.
         let report = CylinderCompareReport::new("run.dat", &agreeing(5.0));
         assert!(report.verdict.agrees);
-        assert!(report.c_within_fraction_of_a > ZONE_WITHIN);
+        assert_eq!(
+            report.sa_within_fraction,
+            super::super::validity::EDGE_SLIP_WITHIN_CURVED
+        );
+        assert_eq!(
+            report.c_within_fraction_of_a,
+            super::super::validity::ZONE_WITHIN_CURVED
+        );
         // a/R beyond the measured: not judged, with the reason, even where the numbers agree.
         let report = CylinderCompareReport::new("run.dat", &agreeing(1.0));
         assert!(!report.within_envelope && !report.verdict.agrees);
@@ -883,7 +891,7 @@ mod envelope {
         assert!(report.verdict.summary.starts_with("Verdict: not judged"));
     }
 
-    /// A cylinder whose arc the deck's 6 a bodies cannot hold is refused naming R and the least
+    /// A cylinder the deck does not hold (a / R above 2/15) is refused naming R and the least
     /// R, and never written with NaN coordinates (issue 46, item 4: R = 0.3 mm wrote 208 NaN
     /// node lines); just inside the bound the deck is written and finite.
     #[test]
