@@ -13,9 +13,11 @@
 //!   row, midside nodes too, on the circle). Why this geometry (issue 45, item 5): the half-plane
 //!   answer is the limit of large bodies, and the older deck's 6 a bodies (a block whose top edge
 //!   was lifted onto the arc) measured its own size, not the theory: +2.2 % in s(a) against 12 a.
-//!   At a / R > 1/32 the cylinder cannot be 32 a deep; it is then what the real cylinder is,
-//!   and the half-plane answer's departure there is measured, not a mesh's
-//!   ([`crate::problems::cylinder::validity`]);
+//!   At a / R > 1/32 the cylinder cannot be 32 a deep; it is then what the real cylinder is
+//!   (a half disc), no longer the flat's mirror image: the faces slide against each other in the
+//!   normal step, and `ccx_read`'s node-pair pressure (which assumes they do not) misreads a, p0
+//!   and c there (docs/theory.md section 16; s(a) is read right). Up to a / R = 1/40 the
+//!   cylinder is the flat's block but for its arc;
 //! - a mesh graded toward the contact: elements of a / n over |x| <= [`FINE_ZONE`] a (n =
 //!   [`PER_HALF_WIDTH`] coarse, 16 fine, 32 finest: the suite's ladder), growing by [`GROWTH`]
 //!   per element away from it in x and in depth up to 4 a: the bodies' size costs a few

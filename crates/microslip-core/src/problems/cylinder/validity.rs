@@ -24,8 +24,10 @@ pub const MEASURED_STIFFNESS_GROUP: (f64, f64) = (0.1, 30.0);
 /// The largest a / R of the envelope (-): 0.015 (the calibration cases' 0.0105, the bundled
 /// pad's 0.0149 held out). Beyond it no converged answer was measured: at a / R = 0.04 the deck's
 /// ladder diverges in c and in a (a/8 to a/16: a 0.90 to 0.84 of Hertz's, c -8.0 to -13.0 % of a
-/// at 0.3 mu P) while s(a) stays within 0.9 % (+0.91, +0.61 %); the older curved tier (c 0.09 a,
-/// s(a) 5 % up to 0.047) was the 6 a deck's a/8 error, and is not kept.
+/// at 0.3 mu P) while s(a) stays within 0.9 % (+0.91, +0.61 %): the reader's node-pair pressure
+/// misses the faces' slide in the normal step once the cylinder is a half disc, not the flat's
+/// mirror image (docs/theory.md section 16). The older curved tier (c 0.09 a, s(a) 5 % up to
+/// 0.047) was the 6 a deck's a/8 error, and is not kept.
 pub const MEASURED_HALF_WIDTH_OVER_RADIUS: f64 = 0.015;
 /// The least size of the bodies (half-width and depth, in a) the envelope holds for: the deck's
 /// (the flat 32 a; the cylinder too, up to a / R = 1/32).
