@@ -236,8 +236,9 @@ impl Deck for CylinderProblem {
     fn expected(model: &CylinderModel, header: &DeckHeader) -> String {
         let cylinder = &model.cylinder;
         let mut text = format!(
-            "** Expected from the half-plane solution: a = {} mm, p0 = {} MPa (Hertz); bodies \
-             {BODY_SIZE} a wide and deep\n\
+            "** Expected from the half-plane solution: a = {} mm, p0 = {} MPa (Hertz); the flat \
+             {BODY_SIZE} a wide and deep, the cylinder the disc below a chord {BODY_SIZE} a (at \
+             most R) above the contact\n\
              **   Q (N/mm) | c Mindlin (mm) | c regularized (mm) | s(a) (mm) | s(0) (mm)\n",
             number(cylinder.half_width()),
             number(cylinder.peak_pressure()),
@@ -350,8 +351,8 @@ fn fits_the_deck(cylinder: &Cylinder) -> Result<(), DeckError> {
     let scale = 10f64.powf(least.log10().floor() - 3.0);
     let least = (least / scale).ceil() * scale;
     let why = format!(
-        "a / R = {} here, and the deck's bodies (6 a wide and deep) hold the cylinder's arc up to \
-         a / R = 2/15 (R >= 7.5 a)",
+        "a / R = {} here, and the deck is written up to a / R = 2/15 (R >= 7.5 a: a contact \
+         small against the cylinder)",
         number(ratio)
     );
     let allowed = if least <= Domain::LENGTH.max() {
@@ -466,10 +467,11 @@ pub struct CylinderCompareReport {
 /// What the half-plane solution assumes, said wherever the comparison of a run of the
 /// project's own deck is shown.
 pub const HALF_PLANE_NOTE: &str = "half-plane solution (Hertz, regularized Cattaneo-Mindlin at \
-     the deck's K_T); the deck's bodies are 6 a wide and deep, mirror images but for the arc";
+     the deck's K_T); the deck's flat is 32 a wide and deep, its cylinder the disc below a chord \
+     32 a (at most R) above the contact";
 /// The same for a CSV curve: its bodies and its K_T are what the flags say, not a deck's.
 pub const HALF_PLANE_NOTE_CSV: &str = "half-plane solution (Hertz, regularized Cattaneo-Mindlin \
-     at the given K_T); the envelope holds for bodies at least 6 a wide and deep, which a CSV \
+     at the given K_T); the envelope holds for bodies at least 32 a wide and deep, which a CSV \
      curve does not say";
 
 impl CylinderCompareReport {
@@ -817,11 +819,17 @@ mod envelope {
         let report = CylinderCompareReport::new("run.dat", &agreeing(50.0));
         assert!(report.within_envelope && report.verdict.agrees);
         assert_eq!(report.sa_within_fraction, EDGE_SLIP_WITHIN);
-        // a/R = 0.047 (R = 5 mm): the curved bounds.
-        let report = CylinderCompareReport::new("run.dat", &agreeing(5.0));
-        assert!(report.verdict.agrees);
-        assert!(report.c_within_fraction_of_a > ZONE_WITHIN);
-        // a/R beyond the measured: not judged, with the reason, even where the numbers agree.
+        // a/R beyond the measured (R = 5 mm: 0.047, the older curved tier's; R = 1 mm): not
+        // judged, with the reason, even where the numbers agree.
+        for radius in [5.0, 1.0] {
+            let report = CylinderCompareReport::new("run.dat", &agreeing(radius));
+            assert!(!report.within_envelope && !report.verdict.agrees);
+            assert!(
+                report.verdict.summary.contains("a/R"),
+                "{}",
+                report.verdict.summary
+            );
+        }
         let report = CylinderCompareReport::new("run.dat", &agreeing(1.0));
         assert!(!report.within_envelope && !report.verdict.agrees);
         assert!(
@@ -882,7 +890,7 @@ mod envelope {
         assert!(report.verdict.summary.starts_with("Verdict: not judged"));
     }
 
-    /// A cylinder whose arc the deck's 6 a bodies cannot hold is refused naming R and the least
+    /// A cylinder the deck does not hold (a / R above 2/15) is refused naming R and the least
     /// R, and never written with NaN coordinates (issue 46, item 4: R = 0.3 mm wrote 208 NaN
     /// node lines); just inside the bound the deck is written and finite.
     #[test]

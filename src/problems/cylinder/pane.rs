@@ -4,6 +4,10 @@
 use super::deck::{CylinderCompared, compare_cylinder};
 use super::point::cylinder_point;
 use super::problem::{CylinderModel, CylinderProblem};
+use super::validity::{
+    LEAST_BODY_OVER_HALF_WIDTH, MEASURED_HALF_WIDTH_OVER_RADIUS, MEASURED_STIFFNESS_GROUP,
+    ZONE_WITHIN,
+};
 use crate::chart::panes::{
     ContinuumState, KT_UM_MEANING, PaneFace, RATIO_MEANING, SummaryLine, TABLE_TOLERANCE,
     ratio_text, shown,
@@ -39,10 +43,17 @@ impl PaneFace for CylinderProblem {
                 Some(e) => format!("FE within {} %", number_with(100.0 * e, 2)),
                 None => "FE: not calibrated".to_string(),
             },
-            "how far a finite-body FE model (bodies at least 6 a wide and deep) is expected from \
-             the half-plane s(a) shown (c: within 5 % of a): the envelope measured against \
-             CalculiX over K_T a/E* 0.064-64 and a/R up to 0.09 (docs/theory.md, the cylinder \
-             in CI); 'not calibrated': outside it",
+            format!(
+                "how far a converged FE model (bodies at least {} a wide and deep) is expected \
+                 from the half-plane s(a) shown (c: within {} % of a): the envelope measured \
+                 against converged CalculiX ladders over K_T a/E* {}-{} and a/R up to {} \
+                 (docs/theory.md section 16); 'not calibrated': outside it",
+                number(LEAST_BODY_OVER_HALF_WIDTH),
+                number(100.0 * v.zone_within.unwrap_or(ZONE_WITHIN)),
+                number(MEASURED_STIFFNESS_GROUP.0),
+                number(MEASURED_STIFFNESS_GROUP.1),
+                number(MEASURED_HALF_WIDTH_OVER_RADIUS),
+            ),
         ))
     }
 

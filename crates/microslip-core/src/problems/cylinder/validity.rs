@@ -1,63 +1,71 @@
-//! How far the half-plane answer holds (issue 34, item 6): the envelope, as numbers, inside which
-//! the half-plane solution's c and s(a) were measured against CalculiX, and the verdict for one
-//! cylinder.
+//! How far the half-plane answer holds (issue 34, item 6; measured again on converged FE in
+//! issue 45, item 5): the envelope, as numbers, inside which the half-plane solution's c and s(a)
+//! were measured against CalculiX, and the verdict for one cylinder.
 //!
 //! The half-plane solution depends on K_T a / E* and Q / mu P only (docs/theory.md, section 13);
 //! a real contact also on a / R (Hertz's small-strain, shallow-arc assumption) and on the bodies'
-//! size over a (the half-plane's). The envelope was measured with the CalculiX decks of
-//! `deck ccx cylinder` (plane strain, C3D20R, linear geometry), one ccx at a time, over
-//! K_T a / E*, a / R and the bodies' size, at Q = 0.3 and 0.6 mu P (docs/theory.md, "The Hertzian
-//! cylinder in CI and how far the half-plane answer holds"). The bodies' size is not a parameter
-//! of the model: the envelope states the least size it was measured for, and the verdict says it.
+//! size over a (the half-plane's). The envelope was measured with `microslip suite` on the
+//! CalculiX deck of `deck ccx cylinder` (plane strain, C3D20R, linear geometry; the flat 32 a
+//! wide and deep, the cylinder the disc below a chord 32 a (at most R) above the contact), each
+//! case on a mesh ladder (a/8, a/16, a/32 over the contact, and at half the Q increment) whose
+//! answers are extrapolated to the converged one, at Q = 0.3 and 0.6 mu P
+//! (`validation/cylinder/envelope.toml`; docs/theory.md section 16, "The envelope on converged
+//! FE"). A bound is what the converged answers support: the worst converged departure measured
+//! plus its uncertainty, never the error of a coarse deck (the older bounds, 4 % to 7 % in s(a),
+//! were the a/8 deck's own error with 6 a bodies). The bodies' size is not a parameter of the
+//! model: the envelope states the least size it was measured for, and the verdict says it.
 
 use super::closed_form::Cylinder;
 use crate::kernel::validity::Validity;
 
-/// The measured range of K_T a / E* (-): 0.064 to 64.
-pub const MEASURED_STIFFNESS_GROUP: (f64, f64) = (0.064, 64.0);
-/// K_T a / E* up to which s(a) was within [`EDGE_SLIP_WITHIN`] (measured +3.4 % at 6.4; at 64,
-/// +5.5 %).
-pub const STIFF_FROM: f64 = 6.4;
-/// The largest a / R measured (-): 0.047 (R = 5 mm).
-pub const MEASURED_HALF_WIDTH_OVER_RADIUS: f64 = 0.047;
-/// a / R up to which the base bounds were measured (the bundled pad, 0.0149).
-pub const SHALLOW_UP_TO: f64 = 0.015;
-/// The least size of the bodies (half-width and depth, in a) the envelope holds for: the
-/// CalculiX deck's (4 a moved s(a) by +6 % and c by 0.1 a against 12 a).
-pub const LEAST_BODY_OVER_HALF_WIDTH: f64 = 6.0;
-/// |c_FE - c| / a at most this for a / R <= [`SHALLOW_UP_TO`] (the largest measured 0.045 a:
-/// the pad on the a/16 mesh, 0.3 mu P; 0.034 a at K_T a/E* = 6.4 on a/8), ...
-pub const ZONE_WITHIN: f64 = 0.05;
-/// ... and up to [`MEASURED_HALF_WIDTH_OVER_RADIUS`] (measured 0.075 a at a/R = 0.047).
-pub const ZONE_WITHIN_CURVED: f64 = 0.09;
-/// |s(a)_FE / s(a) - 1| at most this for K_T a / E* <= [`STIFF_FROM`] and a / R <=
-/// [`SHALLOW_UP_TO`] (the largest measured 3.4 %, plus a margin), ...
-pub const EDGE_SLIP_WITHIN: f64 = 0.04;
-/// ... up to K_T a / E* = 64 (measured +5.5 %), ...
-pub const EDGE_SLIP_WITHIN_STIFF: f64 = 0.07;
-/// ... and up to a / R = 0.047 (measured +3.7 %; the bound of the stiff range applies too).
-pub const EDGE_SLIP_WITHIN_CURVED: f64 = 0.05;
+/// The measured range of K_T a / E* (-): 0.1 to 30 (cal-k0.1 and cal-k30 of the case list at the
+/// range's ends; beyond them no ladder was run).
+pub const MEASURED_STIFFNESS_GROUP: (f64, f64) = (0.1, 30.0);
+/// The largest a / R of the envelope (-): 0.015 (the calibration cases' 0.0105, the bundled
+/// pad's 0.0149 held out). Beyond it no converged answer was measured: at a / R = 0.04 the deck's
+/// ladder diverges in c and in a (a/8 to a/16: a 0.90 to 0.84 of Hertz's, c -8.0 to -13.0 % of a
+/// at 0.3 mu P) while s(a) stays within 0.9 % (+0.91, +0.61 %): the reader's node-pair pressure
+/// misses the faces' slide in the normal step once the cylinder is a half disc, not the flat's
+/// mirror image (docs/theory.md section 16). The older curved tier (c 0.09 a, s(a) 5 % up to
+/// 0.047) was the 6 a deck's a/8 error, and is not kept.
+pub const MEASURED_HALF_WIDTH_OVER_RADIUS: f64 = 0.015;
+/// The least size of the bodies (half-width and depth, in a) the envelope holds for: the deck's
+/// (the flat 32 a; the cylinder too, up to a / R = 1/32).
+pub const LEAST_BODY_OVER_HALF_WIDTH: f64 = 32.0;
+/// |c_FE - c| / a at most this: the worst converged c measured, |estimate| + uncertainty, was
+/// 2.9 % of a (cal-k0.1, 0.3 mu P: +0.09 % +- 2.83 %, two rungs); cal-k1 (three rungs) -1.67 %
+/// +- 1.11 %, cal-k30 -1.15 % +- 0.63 %; held out: the pad -1.35 % +- 0.06 %, hold-k10-r0.0149
+/// -2.38 % +- 0.93 % (inside 3 % plus its uncertainty, as the suite judges). c is read where
+/// K_T |s| = mu p near the edge, from the penalty's p, and its ladder is not monotone: its bound
+/// is set by that spread, not by the physics (docs/theory.md section 16).
+pub const ZONE_WITHIN: f64 = 0.03;
+/// |s(a)_FE / s(a) - 1| at most this for K_T a / E* in [`MEASURED_STIFFNESS_GROUP`] and a / R
+/// up to [`MEASURED_HALF_WIDTH_OVER_RADIUS`]: the worst converged s(a) measured, |estimate| +
+/// uncertainty (the increment's change in it), was 0.61 % (cal-k0.1, 0.3 mu P: +0.28 % +-
+/// 0.33 %; cal-k1, three rungs a/8 to a/32: +0.19 % +- 0.40 %; cal-k30: +0.18 % +- 0.01 %);
+/// held out: the bundled pad +0.20 % +- 0.44 %, hold-k10-r0.0149 +0.31 % +- 0.21 %. The older 4 %
+/// and 7 % were the 6 a deck's a/8 error.
+pub const EDGE_SLIP_WITHIN: f64 = 0.01;
 
 // The reasons a cylinder is outside the envelope, as literals so that two of them join into one
 // `&'static str` (a cylinder past two bounds is told both).
 macro_rules! too_compliant {
     () => {
-        "K_T a/E* below the measured 0.064: not measured (the CalculiX deck's contact is then \
-         nearly all microslip, and its c is read where K_T s crosses mu p near the edge, where \
-         p -> 0"
+        "K_T a/E* below the measured 0.1: no converged ladder was run there (the contact is then \
+         nearly all microslip, and c is read where K_T s crosses mu p near the edge, where p -> 0"
     };
 }
 macro_rules! too_stiff {
     () => {
-        "K_T a/E* above the measured 64: not measured (the answer is Mindlin's there to about \
-         1 % of a; CalculiX's s(a) was already 5.5 % above the half-plane's at 64"
+        "K_T a/E* above the measured 30: no converged ladder was run there (the answer nears \
+         Mindlin's"
     };
 }
 macro_rules! too_curved {
     () => {
-        "a/R above the measured 0.047: the cylinder curves away within a few a of the contact, \
-         so it is no half-plane (at 0.047 CalculiX's a was already 4.5 % below Hertz's and c \
-         0.075 a below the half-plane's); not measured beyond"
+        "a/R above the measured 0.015: no converged answer was measured beyond (at 0.04 the \
+         CalculiX deck's ladder diverges in c and a while s(a) stays within 0.9 % of the \
+         half-plane's; docs/theory.md section 16)"
     };
 }
 
@@ -97,21 +105,8 @@ impl Cylinder {
             (false, false, false) => None,
         };
         let inside = outside_because.is_none();
-        // Each bound was measured with the other parameters at the pad's: where both K_T a/E*
-        // and a/R leave the base range, the larger bound is taken (not measured together).
-        let curved = ratio > SHALLOW_UP_TO;
-        let zone = if curved {
-            ZONE_WITHIN_CURVED
-        } else {
-            ZONE_WITHIN
-        };
-        let mut edge = EDGE_SLIP_WITHIN;
-        if group > STIFF_FROM {
-            edge = edge.max(EDGE_SLIP_WITHIN_STIFF);
-        }
-        if curved {
-            edge = edge.max(EDGE_SLIP_WITHIN_CURVED);
-        }
+        // K_T a/E* needs no tier of its own: its whole measured range is inside the bounds.
+        let (zone, edge) = (ZONE_WITHIN, EDGE_SLIP_WITHIN);
         CylinderValidity {
             stiffness_group: group,
             half_width_over_radius: ratio,
@@ -173,7 +168,8 @@ mod tests {
     #[test]
     fn the_bundled_pad_is_inside_the_envelope() {
         let v = cylinder(50.0, 1000.0, 1e5).validity();
-        assert_eq!(v.validity, Validity::Approximate);
+        // Converged FE holds it to the level "holds" (the a/8 6 a deck's 4 % was "approximate").
+        assert_eq!(v.validity, Validity::Holds);
         assert_eq!(v.zone_within, Some(ZONE_WITHIN));
         assert_eq!(v.edge_slip_within, Some(EDGE_SLIP_WITHIN));
         assert!(v.outside_because.is_none());
@@ -206,31 +202,139 @@ mod tests {
                 assert!(v.outside_because.unwrap().contains("K_T a/E*"));
             }
         }
-        // The stiff range widens the s(a) bound, not c's.
-        let stiff = pad
-            .with_tangential_stiffness(10.0 * per_group)
-            .unwrap()
-            .validity();
-        assert_eq!(stiff.edge_slip_within, Some(EDGE_SLIP_WITHIN_STIFF));
-        assert_eq!(stiff.zone_within, Some(ZONE_WITHIN));
-        // a / R = sqrt(8 P / (pi E* R)): a smaller radius curves the bound, then leaves the
-        // envelope by a / R.
+        // No stiff tier: the whole measured range of K_T a/E* has the base bounds.
+        for group in [1.001 * low, 1.0, 10.0, 0.999 * high] {
+            let v = pad
+                .with_tangential_stiffness(group * per_group)
+                .unwrap()
+                .validity();
+            assert_eq!(v.edge_slip_within, Some(EDGE_SLIP_WITHIN), "{group}");
+            assert_eq!(v.zone_within, Some(ZONE_WITHIN), "{group}");
+        }
+        // a / R = sqrt(8 P / (pi E* R)): the pad's 0.0149 is inside; R = 5 mm (a/R = 0.047),
+        // inside the older curved tier (measured on the a/8 6 a deck), is not calibrated now.
         let at = |radius: f64| {
             let c = cylinder(radius, 1000.0, 1e5);
             let group = 0.64 * c.contact_modulus() / c.half_width();
             let c = c.with_tangential_stiffness(group).unwrap();
             (c.half_width() / radius, c.validity())
         };
-        let (ratio, v) = at(5.0);
-        assert!(
-            ratio > SHALLOW_UP_TO && ratio <= MEASURED_HALF_WIDTH_OVER_RADIUS,
-            "{ratio}"
-        );
-        assert_eq!(v.zone_within, Some(ZONE_WITHIN_CURVED));
-        assert_eq!(v.edge_slip_within, Some(EDGE_SLIP_WITHIN_CURVED));
-        let (ratio, v) = at(1.0);
-        assert!(ratio > MEASURED_HALF_WIDTH_OVER_RADIUS, "{ratio}");
-        assert!(v.outside_because.unwrap().contains("a/R"));
-        assert_eq!(v.validity, Validity::NotCalibrated);
+        let (ratio, v) = at(50.0);
+        assert!(ratio <= MEASURED_HALF_WIDTH_OVER_RADIUS, "{ratio}");
+        assert_eq!(v.edge_slip_within, Some(EDGE_SLIP_WITHIN));
+        for radius in [5.0, 1.0] {
+            let (ratio, v) = at(radius);
+            assert!(ratio > MEASURED_HALF_WIDTH_OVER_RADIUS, "{ratio}");
+            assert!(v.outside_because.unwrap().contains("a/R"));
+            assert_eq!(v.validity, Validity::NotCalibrated);
+        }
+    }
+
+    /// Issue 45's goal: s(a) within 1.5 % or less for K_T a/E* in [0.1, 30] and a/R <= 0.015
+    /// (the older envelope said 4 % and 7 % there: the a/8 deck's own error with 6 a bodies),
+    /// and every converged departure measured inside its bound (docs/theory.md section 16: the
+    /// suite's extrapolated s(a) and c over a/8, a/16, a/32, as fractions; c of a).
+    #[test]
+    fn the_converged_envelope_is_tight_and_holds_what_was_measured() {
+        let (low, high) = MEASURED_STIFFNESS_GROUP;
+        assert!(low <= 0.1 && high >= 30.0);
+        for group in [0.1, 0.3, 1.0, 3.0, 10.0, 30.0] {
+            for radius in [50.0, 25.0] {
+                let c = cylinder(radius, 500.0, 1.0);
+                let c = c
+                    .with_tangential_stiffness(group * c.contact_modulus() / c.half_width())
+                    .unwrap();
+                assert!(c.half_width() / radius <= MEASURED_HALF_WIDTH_OVER_RADIUS);
+                let v = c.validity();
+                let edge = v.edge_slip_within.unwrap();
+                assert!(edge <= 0.015, "{group} {radius}: {edge}");
+            }
+        }
+        // (case, converged s(a) departure, its uncertainty, converged c departure / a, its
+        // uncertainty), both loads, as the suite's ladders gave them (docs/theory.md section 16).
+        let measured: [(&str, f64, f64, f64, f64); 6] = [
+            (
+                "cal-k1-r0.0105 at 0.3 mu P",
+                0.00191,
+                0.00401,
+                -0.01669,
+                0.01114,
+            ),
+            (
+                "cal-k1-r0.0105 at 0.6 mu P",
+                0.00159,
+                0.00051,
+                -0.01333,
+                0.00623,
+            ),
+            (
+                "cal-k30-r0.0105 at 0.3 mu P",
+                0.00183,
+                0.00008,
+                -0.01151,
+                0.00627,
+            ),
+            (
+                "cal-k30-r0.0105 at 0.6 mu P",
+                0.00050,
+                0.00013,
+                -0.00807,
+                0.00838,
+            ),
+            (
+                "cal-k0.1-r0.0105 at 0.3 mu P",
+                0.00277,
+                0.00334,
+                0.00094,
+                0.02832,
+            ),
+            (
+                "cal-k0.1-r0.0105 at 0.6 mu P",
+                0.00216,
+                0.00118,
+                0.00364,
+                0.00908,
+            ),
+        ];
+        for (case, sa, sa_u, zone, zone_u) in measured {
+            assert!(
+                sa.abs() + sa_u <= EDGE_SLIP_WITHIN,
+                "{case}: s(a) {sa} +- {sa_u}"
+            );
+            assert!(
+                zone.abs() + zone_u <= ZONE_WITHIN,
+                "{case}: c {zone} +- {zone_u}"
+            );
+        }
+        // The cases held out (not used to set the bounds) pass as the suite judges them: the
+        // estimate within the bound plus its uncertainty, the uncertainty within the bound.
+        let held_out: [(&str, f64, f64, f64, f64); 4] = [
+            ("the pad at 0.3 mu P", 0.00195, 0.00435, -0.01348, 0.00063),
+            ("the pad at 0.6 mu P", 0.00231, 0.00039, -0.00782, 0.00028),
+            (
+                "hold-k10-r0.0149 at 0.3 mu P",
+                0.00308,
+                0.00209,
+                -0.02381,
+                0.00930,
+            ),
+            (
+                "hold-k10-r0.0149 at 0.6 mu P",
+                0.00120,
+                0.00045,
+                -0.01217,
+                0.00289,
+            ),
+        ];
+        for (case, sa, sa_u, zone, zone_u) in held_out {
+            assert!(
+                sa_u <= EDGE_SLIP_WITHIN && sa.abs() <= EDGE_SLIP_WITHIN + sa_u,
+                "{case}"
+            );
+            assert!(
+                zone_u <= ZONE_WITHIN && zone.abs() <= ZONE_WITHIN + zone_u,
+                "{case}"
+            );
+        }
     }
 }
