@@ -182,6 +182,50 @@ fn a_killed_suite_resumes_and_runs_each_run_once() {
     assert_eq!(again.status.code(), Some(0));
     assert_eq!(count_lines(dir.path()), all);
 
+    // A finished run's stored judgement from an older program (a bound since recalibrated, a
+    // difference since corrected): resumed, it is judged again from its output, not run again.
+    let stored = workdir.join("plate-bench/finest/result.json");
+    let mut old: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&stored).unwrap()).unwrap();
+    for quantity in old["quantities"].as_array_mut().unwrap() {
+        quantity["difference"] = serde_json::json!(0.5);
+        quantity["bound"] = serde_json::json!(1e-9);
+    }
+    old["agrees"] = serde_json::json!(false);
+    std::fs::write(&stored, serde_json::to_string(&old).unwrap()).unwrap();
+    let rejudged = suite(
+        &[
+            "--cases",
+            "plate-bench",
+            "--resume",
+            "--format",
+            "json",
+            "--workdir",
+            workdir.to_str().unwrap(),
+        ],
+        &program,
+    );
+    assert_eq!(rejudged.status.code(), Some(0), "{rejudged:?}");
+    assert_eq!(count_lines(dir.path()), all);
+    let rescored: serde_json::Value = serde_json::from_slice(&rejudged.stdout).unwrap();
+    assert_eq!(rescored[0]["quantities"], case["quantities"]);
+
+    // A finished run whose output is gone cannot be judged again: it runs again.
+    std::fs::remove_file(workdir.join("plate-bench/finest/job.dat")).unwrap();
+    let lost = suite(
+        &[
+            "--cases",
+            "plate-bench",
+            "--resume",
+            "--workdir",
+            workdir.to_str().unwrap(),
+        ],
+        &program,
+    );
+    assert_eq!(lost.status.code(), Some(0), "{lost:?}");
+    let all = count_lines(dir.path());
+    assert_eq!(times(&all, "done finest"), 2, "{all:?}");
+
     // A run whose deck is not the one the suite writes (its case changed since) is run again.
     let coarse_deck = workdir.join("plate-bench/coarse/job.inp");
     let mut deck = std::fs::read_to_string(&coarse_deck).unwrap();

@@ -16,7 +16,9 @@
 //! Why one work folder with a result file per run: a suite of many solver runs outlives a
 //! terminal, a CI job's time limit or a node. Killed at any moment (SIGTERM, SIGKILL), it resumes
 //! with `--resume`: a run whose result file exists is not run again, and a run without one is
-//! run from scratch (its folder emptied), so no finished run is lost or run twice. A new suite in
+//! run from scratch (its folder emptied), so no finished run is lost or run twice. A kept run is
+//! judged again from its output ([`result::read_rejudged`]): a resume after an envelope was
+//! recalibrated scores it by the new one. A new suite in
 //! a folder that holds anything is refused, so nothing is ever clobbered.
 //!
 //! Everything here is generic over the registry: a case's problem comes from its preset, its deck

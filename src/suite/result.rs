@@ -65,6 +65,24 @@ pub fn read(folder: &Path) -> Option<RunResult> {
     serde_json::from_str(&text).ok()
 }
 
+/// The result of the complete run in `folder` (its problem `kind`), judged again from its solver's
+/// output by this program: the file keeps what the run did (its name, mesh, increment, solver
+/// time), the judgement is today's. A suite resumed after the envelopes, a closed form or the
+/// reading of the output changed (the cylinder's bounds were recalibrated in issue 45) must not
+/// score its finished runs by the bounds they were first judged with. `None` when the run is not
+/// complete, or its output is gone or no longer reads: the run is then run again.
+pub fn read_rejudged(kind: ModelKind, folder: &Path) -> Option<RunResult> {
+    let stored = read(folder)?;
+    let judged = judge(kind, &folder.join(format!("{}.dat", super::JOB))).ok()?;
+    Some(RunResult {
+        quantities: judged.quantities,
+        stick_slope: judged.stick_slope,
+        agrees: judged.agrees,
+        verdict: judged.verdict,
+        ..stored
+    })
+}
+
 /// Writes `result` into `folder` atomically (a temporary file renamed over the name).
 ///
 /// # Errors

@@ -144,12 +144,15 @@ pub fn run(
     super::claim_workdir(&workdir, options.resume).map_err(|e| refused(&e))?;
     let all: Vec<&Prepared> = plans.iter().flatten().collect();
     // A run is complete when its result file reads back and its deck is the one this suite
-    // writes (a case changed since, by its preset or its file, is run again).
+    // writes (a case changed since, by its preset or its file, is run again); its output is
+    // judged again, so a finished run is scored by today's envelopes, not those it was run under.
     let done_before: Vec<Option<RunResult>> = all
         .iter()
         .map(|run| {
             let deck = std::fs::read(run.folder.join(format!("{}.inp", super::JOB)));
-            result::read(&run.folder).filter(|_| deck.is_ok_and(|d| d == run.deck.as_bytes()))
+            deck.is_ok_and(|d| d == run.deck.as_bytes())
+                .then(|| result::read_rejudged(run.kind, &run.folder))
+                .flatten()
         })
         .collect();
     let pending: Vec<Prepared> = all
