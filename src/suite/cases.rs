@@ -9,6 +9,7 @@
 //! set = ["KT=1e6"]                # optional: assignments as --set takes them
 //! meshes = ["coarse", "fine"]     # optional: the rungs (default: the suite's ladder)
 //! loads = [150, 300]              # optional: the load steps, as deck --loads takes them
+//! converged_within = 0.003        # optional: the largest uncertainty accepted, a fraction
 //! ```
 
 use std::path::Path;
@@ -44,6 +45,7 @@ struct CaseEntry {
     set: Vec<String>,
     meshes: Option<Vec<String>>,
     loads: Option<Vec<f64>>,
+    converged_within: Option<f64>,
 }
 
 /// The cases `spec` names on `ladder`; `None`: every problem's bundled presets.
@@ -102,6 +104,7 @@ fn bundled_cases(kind: ModelKind, ladder: Ladder) -> Vec<Case> {
             assignments: Vec::new(),
             meshes: ladder.meshes().to_vec(),
             loads: None,
+            converged_within: None,
         })
         .collect()
 }
@@ -127,6 +130,7 @@ fn named(name: &str, ladder: Ladder) -> Result<Vec<Case>, CasesError> {
         assignments: Vec::new(),
         meshes: ladder.meshes().to_vec(),
         loads: None,
+        converged_within: None,
     }])
 }
 
@@ -153,6 +157,15 @@ fn from_file(path: &Path, ladder: Ladder) -> Result<Vec<Case>, CasesError> {
                 Some(names) => mesh_rungs(&names)
                     .map_err(|why| CasesError(format!("{shown}, case {}: {why}", entry.name)))?,
             };
+            if let Some(within) = entry.converged_within
+                && !(within > 0.0 && within < 1.0)
+            {
+                return Err(CasesError(format!(
+                    "{shown}, case {}: converged_within = {within}: expected a fraction between 0 \
+                     and 1 (0.003 is 0.3 %)",
+                    entry.name
+                )));
+            }
             Ok(Case {
                 name: entry.name,
                 kind: found.inputs.kind(),
@@ -160,6 +173,7 @@ fn from_file(path: &Path, ladder: Ladder) -> Result<Vec<Case>, CasesError> {
                 assignments: entry.set,
                 meshes,
                 loads: entry.loads,
+                converged_within: entry.converged_within,
             })
         })
         .collect()
@@ -253,7 +267,7 @@ mod tests {
             &path,
             format!(
                 "[[case]]\nname = \"a\"\npreset = \"{}\"\nset = [\"mu=0.2\"]\n\
-                 meshes = [\"fine\", \"finest\"]\nloads = [1, 2.5]\n",
+                 meshes = [\"fine\", \"finest\"]\nloads = [1, 2.5]\nconverged_within = 0.003\n",
                 bundled.name
             ),
         )
@@ -263,6 +277,7 @@ mod tests {
         assert_eq!(cases[0].meshes, [DeckMesh::Fine, DeckMesh::Finest]);
         assert_eq!(cases[0].assignments, ["mu=0.2"]);
         assert_eq!(cases[0].loads, Some(vec![1.0, 2.5]));
+        assert_eq!(cases[0].converged_within, Some(0.003));
         assert_eq!(cases[0].kind, bundled.inputs.kind());
         for (bad, says) in [
             ("name = \"../x\"", "case name"),
@@ -271,6 +286,18 @@ mod tests {
                 "coarsest first",
             ),
             ("name = \"a\"\nmeshes = [\"huge\"]", "expected coarse"),
+            (
+                "name = \"a\"\nconverged_within = 0.0",
+                "converged_within = 0: expected a fraction between 0 and 1",
+            ),
+            (
+                "name = \"a\"\nconverged_within = 3.0",
+                "converged_within = 3: expected a fraction",
+            ),
+            (
+                "name = \"a\"\nconverged_within = nan",
+                "converged_within = NaN: expected a fraction",
+            ),
         ] {
             std::fs::write(
                 &path,

@@ -32,6 +32,9 @@ pub struct QuantityScore {
     pub bound_fraction: Option<f64>,
     /// The tolerance the estimate was judged with: bound + uncertainty.
     pub tolerance_fraction: Option<f64>,
+    /// The largest uncertainty its case accepts ([`Case::converged_within`]), a fraction.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub converged_within_fraction: Option<f64>,
     /// Its verdict.
     pub verdict: Verdict,
 }
@@ -150,7 +153,19 @@ pub fn case_score(
         let Some(extrapolation) = ladder::extrapolate(&rungs, half_value) else {
             continue;
         };
-        let verdict = ladder::judge(&extrapolation, q.bound);
+        let verdict = match (
+            ladder::judge(&extrapolation, q.bound),
+            case.converged_within,
+        ) {
+            // Within the envelope, but not converged as tightly as the case asks (a single run
+            // shows no convergence at all).
+            (Verdict::Agrees, Some(within))
+                if extrapolation.uncertainty.is_none_or(|u| u > within) =>
+            {
+                Verdict::NotConverged
+            }
+            (verdict, _) => verdict,
+        };
         let value = q.value.as_ref().map(|v| ConvergedValue {
             estimate: v.at(extrapolation.estimate),
             uncertainty: extrapolation.uncertainty.map(|u| u * v.scale.abs()),
@@ -167,6 +182,7 @@ pub fn case_score(
                 .map(|b| b + extrapolation.uncertainty.unwrap_or(0.0)),
             extrapolation,
             bound_fraction: q.bound,
+            converged_within_fraction: case.converged_within,
             verdict,
         });
     }
@@ -249,6 +265,13 @@ pub fn quantity_line(q: &QuantityScore) -> String {
             );
         }
         _ => line.push_str("; no bound calibrated"),
+    }
+    if let Some(within) = q.converged_within_fraction {
+        let _ = write!(
+            line,
+            "; the case asks an uncertainty of at most {}",
+            percent(within).trim_start_matches('+')
+        );
     }
     let _ = write!(line, ": {}", q.verdict.label());
     line
@@ -419,6 +442,7 @@ pub(super) mod tests {
             assignments: Vec::new(),
             meshes: vec![DeckMesh::Coarse, DeckMesh::Fine],
             loads: None,
+            converged_within: None,
         }
     }
 
@@ -432,6 +456,7 @@ pub(super) mod tests {
             assignments: Vec::new(),
             meshes: DeckMesh::ALL.to_vec(),
             loads: None,
+            converged_within: None,
         };
         let specs = super::super::plan(0, &case, None);
         let outcomes: Vec<_> = specs
@@ -499,6 +524,53 @@ pub(super) mod tests {
         );
         let text = text(&[off]);
         assert!(text.contains("0 of 1 cases agree (exit code 1)"), "{text}");
+    }
+
+    #[test]
+    fn a_case_that_asks_a_tighter_convergence_than_its_envelope_is_held_to_it() {
+        // Coarse 1.0 %, fine 0.6 %: converged 0.6 % +- 0.4 %, inside the bound of 1.5 %.
+        let mut case = quick_case();
+        let specs = super::super::plan(0, &case, None);
+        let outcomes = vec![result("coarse", 0.010, 1.0), result("fine", 0.006, 1.0)];
+        assert_eq!(
+            case_score(&case, &specs, &outcomes).verdict,
+            Verdict::Agrees
+        );
+        case.converged_within = Some(0.005);
+        assert_eq!(
+            case_score(&case, &specs, &outcomes).verdict,
+            Verdict::Agrees
+        );
+        case.converged_within = Some(0.003);
+        let held = case_score(&case, &specs, &outcomes);
+        assert_eq!(held.verdict, Verdict::NotConverged);
+        assert!(
+            held.reason.contains("+- 0.400 %")
+                && held
+                    .reason
+                    .contains("asks an uncertainty of at most 0.300 %: not converged"),
+            "{}",
+            held.reason
+        );
+        // A single run shows no convergence: a case that asks for some is not converged.
+        let single = Case {
+            meshes: vec![DeckMesh::Coarse],
+            ..case
+        };
+        let specs = super::super::plan(0, &single, None);
+        let score = case_score(&single, &specs, &[result("coarse", 0.001, 1.0)]);
+        assert_eq!(score.verdict, Verdict::NotConverged);
+        // Outside the envelope stays "does not agree", whatever the convergence.
+        let far = vec![result("coarse", 0.050, 1.0), result("fine", 0.040, 1.0)];
+        let specs = super::super::plan(0, &quick_case(), None);
+        let case = Case {
+            converged_within: Some(0.003),
+            ..quick_case()
+        };
+        assert_eq!(
+            case_score(&case, &specs, &far).verdict,
+            Verdict::DoesNotAgree
+        );
     }
 
     #[test]
