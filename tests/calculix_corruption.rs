@@ -62,6 +62,7 @@ impl Run {
             header: &self.header,
             deck: &self.deck,
             dat,
+            dat_path: std::path::Path::new("no-such-run.dat"),
         }
     }
 }

@@ -219,6 +219,7 @@ fn reader_gives_back_the_solution(
         header: &header,
         deck: &deck,
         dat: &dat,
+        dat_path: std::path::Path::new("no-such-run.dat"),
     };
     let inputs = CylinderInputs {
         structure: c.params(),
@@ -279,6 +280,7 @@ fn a_run_cut_short_is_refused() {
         header: &header,
         deck: &deck,
         dat: cut,
+        dat_path: std::path::Path::new("no-such-run.dat"),
     };
     let inputs = CylinderInputs {
         structure: c.params(),
@@ -314,4 +316,94 @@ fn the_near_coulomb_slope_is_a_hundred_contact_moduli_over_a() {
         .parse()
         .unwrap();
     assert_eq!(slope, expected);
+}
+
+/// A `.frd` holding one `CONTACT` block, step 1 at time 1 (the normal step), as CalculiX writes
+/// it: CPRESS `pressure(x)` at each of the flat's face nodes (the deck's slave face).
+fn normal_step_frd(deck: &str, pressure: &dyn Fn(f64) -> f64) -> String {
+    let (nodes, sets) = deck_nodes(deck);
+    let mut frd = String::from(
+        "    1C\n    1PSTEP                         1           1           1\n  100CL  101 1.000000000        10                     0    1           1\n -4  CONTACT     6    1\n",
+    );
+    for name in ["COPEN", "CSLIP1", "CSLIP2", "CPRESS", "CSHEAR1", "CSHEAR2"] {
+        let _ = writeln!(frd, " -5  {name:<8}    1    4    1    1");
+    }
+    let e = |v: f64| format!("{:>12}", format!("{v:.5E}"));
+    for &n in &sets["IFFLAT"] {
+        let p = pressure(nodes[&n][0]);
+        if p > 0.0 {
+            let zero = e(0.0);
+            let _ = writeln!(
+                frd,
+                " -1{n:>10}{}{zero}{zero}{}{zero}{zero}",
+                e(-1e-6),
+                e(p)
+            );
+        }
+    }
+    frd.push_str(" -3\n");
+    frd
+}
+
+/// The normal step's pressure is CalculiX's CPRESS from the `.frd` beside the `.dat` where
+/// there is one, not the node pairs'; and a pressure that does not carry the line load P (the
+/// pairs of a cylinder that slid on the flat in its normal step carried 91 % of it at a/R 0.04
+/// and 74 % at 0.06) gives no a, p0 or c: never a number read from faces that parted.
+#[test]
+fn the_pressure_is_the_frd_s_and_must_carry_the_load() {
+    let c = cylinder(50.0, 210_000.0, 0.3, 1000.0, 0.6, 1e5);
+    let (a, p0) = (c.half_width(), c.peak_pressure());
+    let q = 300.0;
+    let loads = [c.load(q).unwrap()];
+    let deck = write_cylinder_deck(&c, &loads, DeckMesh::Coarse, StickSlope::Model, None).unwrap();
+    let dat = synthetic_dat(&deck, &c, &[q]);
+    let header = DeckHeader::parse(&deck).unwrap().unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let dat_path = dir.path().join("job.dat");
+    std::fs::write(&dat_path, &dat).unwrap();
+    let inputs = CylinderInputs {
+        structure: c.params(),
+        load: q,
+    };
+    let read = |frd: Option<String>| {
+        let frd_path = dir.path().join("job.frd");
+        match frd {
+            Some(text) => std::fs::write(&frd_path, text).unwrap(),
+            None => drop(std::fs::remove_file(&frd_path)),
+        }
+        let run = CcxRun {
+            header: &header,
+            deck: &deck,
+            dat: &dat,
+            dat_path: &dat_path,
+        };
+        CylinderProblem::ccx_points(&run, &inputs)
+            .unwrap()
+            .remove(0)
+    };
+    let hertz = |x: f64, a: f64, p0: f64| p0 * (1.0 - (x / a).powi(2)).max(0.0).sqrt();
+    // No .frd: the node pairs, which this synthetic run made Hertz's.
+    let pairs = read(None);
+    let contact = pairs.contact.unwrap();
+    assert!((contact.half_width / a - 1.0).abs() < 2e-3, "{contact:?}");
+    // CPRESS of another ellipse carrying the same load (1.05 a, p0 / 1.05): the reader's a is it.
+    let wider = read(Some(normal_step_frd(&deck, &|x| {
+        hertz(x, 1.05 * a, p0 / 1.05)
+    })))
+    .contact
+    .unwrap();
+    assert!(
+        (wider.half_width / (1.05 * a) - 1.0).abs() < 2e-3,
+        "{} {}",
+        wider.half_width,
+        1.05 * a
+    );
+    assert!((wider.peak_pressure * 1.05 / p0 - 1.0).abs() < 2e-3);
+    // A CPRESS that carries 90 % of P: no a, p0, c, s(0); s(a) is still read, the same.
+    let short = read(Some(normal_step_frd(&deck, &|x| 0.9 * hertz(x, a, p0))));
+    assert_eq!(short.contact, None);
+    assert_eq!(short.edge_slip, pairs.edge_slip);
+    // 98 % is within the reader's tolerance (3 %): given.
+    let near = read(Some(normal_step_frd(&deck, &|x| 0.98 * hertz(x, a, p0))));
+    assert!(near.contact.is_some());
 }

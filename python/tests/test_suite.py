@@ -7,6 +7,7 @@ its exit status data, its refusals ``ValueError``, and Ctrl-C must end the runni
 from __future__ import annotations
 
 import json
+import os
 import signal
 import stat
 import subprocess
@@ -203,3 +204,25 @@ def test_slurm_without_the_microslip_program_is_refused(tmp_path, monkeypatch):
     with pytest.raises(ValueError, match="runs the microslip program in each array task"):
         microslip.suite("plate-bench", executor="slurm", workdir=tmp_path / "w")
     assert not (tmp_path / "w").exists()
+
+
+@pytest.mark.skipif(
+    os.environ.get("MICROSLIP_SLURM_TEST") != "1",
+    reason="needs a running Slurm: .ci/run starts one (.ci/slurm-start) and sets MICROSLIP_SLURM_TEST=1",
+)
+def test_a_suite_runs_through_a_real_slurm(tmp_path):
+    # The Slurm path of microslip.suite(): one job array whose tasks run the microslip program
+    # ($MICROSLIP_BIN, which the tests set) on each run's folder; the scorecard comes back as data,
+    # each rung solved once.
+    program = solver(tmp_path)
+    card = microslip.suite(
+        "plate-bench", executor="slurm", jobs=2, workdir=tmp_path / "w", ccx=program
+    )
+    assert card["exit_code"] == 0, card
+    assert card["agrees"] and card["failing"] == 0
+    assert card["cases"][0]["verdict"] == "agrees"
+    assert len(card["cases"][0]["quantities"][0]["rungs_fraction"]) == 3
+    done = (tmp_path / "count").read_text().split("\n")
+    for rung in ["coarse", "fine", "finest"]:
+        assert done.count(f"done {rung}") == 1, done
+    assert (tmp_path / "w" / "slurm").is_dir()

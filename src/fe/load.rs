@@ -154,6 +154,7 @@ fn ccx_points<P: Deck>(
         header: &header,
         deck: deck_text,
         dat: &dat,
+        dat_path: path,
     };
     let points = run.points::<P>().map_err(|e| fail(path, e.to_string()))?;
     let interface_mesh = P::interface_mesh(&run).map_err(|e| fail(path, e.to_string()))?;
@@ -164,14 +165,12 @@ fn ccx_points<P: Deck>(
     })
 }
 
-/// The stick slope a CalculiX run used, from the `CONTACT` blocks of the `.frd` beside its `.dat`
-/// (the decks ask for them: `*CONTACT FILE`, `CDIS, CSTR`), against the deck header's K_T; the
-/// friction coefficient is the one the run was given (the deck's `*FRICTION` card).
-fn ccx_stick_slope(
-    dat: &Path,
-    header: &DeckHeader,
-    deck_text: &str,
-) -> Result<StickSlopeUsed, String> {
+/// The interface at the end of each step of the CalculiX run whose `.dat` is `dat`, from the
+/// `CONTACT` blocks of the `.frd` beside it (the decks ask for them: `*CONTACT FILE`, `CDIS, CSTR`).
+///
+/// # Errors
+/// The `.frd` missing, unreadable, malformed or without a `CONTACT` block, in words naming it.
+pub fn frd_contact(dat: &Path) -> Result<Vec<stick_slope::ContactStep>, String> {
     use std::io::Read as _;
     let frd = dat.with_extension("frd");
     let file = std::fs::File::open(&frd).map_err(|e| {
@@ -189,6 +188,18 @@ fn ccx_stick_slope(
             frd.display()
         ));
     }
+    Ok(contact)
+}
+
+/// The stick slope a CalculiX run used, from the `CONTACT` blocks of the `.frd` beside its `.dat`
+/// (the decks ask for them: `*CONTACT FILE`, `CDIS, CSTR`), against the deck header's K_T; the
+/// friction coefficient is the one the run was given (the deck's `*FRICTION` card).
+fn ccx_stick_slope(
+    dat: &Path,
+    header: &DeckHeader,
+    deck_text: &str,
+) -> Result<StickSlopeUsed, String> {
+    let contact = frd_contact(dat)?;
     let contact = if stick_slope::first_step_changes_friction(deck_text) {
         stick_slope::slips_from_first_step(contact)
     } else {

@@ -11,6 +11,7 @@
 //! here. Every problem names its line where there is one.
 
 use std::collections::HashMap;
+use std::path::Path;
 
 use thiserror::Error;
 
@@ -64,6 +65,9 @@ pub struct CcxRun<'a> {
     pub deck: &'a str,
     /// The `.dat` file's text.
     pub dat: &'a str,
+    /// Where the `.dat` is: a reader that needs the run's `.frd` beside it (the cylinder's contact
+    /// pressure, [`crate::fe::load::frd_contact`]) finds it there.
+    pub dat_path: &'a Path,
 }
 
 /// One block of a `.dat` file: a quantity of a node set at one time.

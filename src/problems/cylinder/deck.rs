@@ -22,8 +22,8 @@ use crate::report::compare::CompareFace;
 use crate::report::compare::verdict::Summary;
 use crate::report::sanitize;
 
-use super::ccx_read::cylinder_points;
 pub use super::ccx_read::{CylinderFePoint, FeContact};
+use super::ccx_read::{CylinderReading, cylinder_points};
 use super::closed_form::{Cylinder, TangentialLoad};
 use super::deck_writer::{
     BODY_SIZE, CylinderDeckInputs, Layout, MAX_HALF_WIDTH_OVER_RADIUS, cylinder_deck, layout, sets,
@@ -268,13 +268,19 @@ impl Deck for CylinderProblem {
         let cylinder = Cylinder::new(params.structure).map_err(|e| {
             ResultsError::Missing(format!("the deck's header holds no valid cylinder: {e}"))
         })?;
+        // The .frd's CPRESS where the run left it (a CSV or a .dat alone: the node pairs').
+        let contact = crate::fe::load::frd_contact(run.dat_path).ok();
         cylinder_points(
             run.deck,
             run.dat,
-            &run.header.loads,
-            params.structure.tangential_stiffness,
-            params.structure.friction,
-            cylinder.half_width(),
+            &CylinderReading {
+                contact: contact.as_deref(),
+                loads: &run.header.loads,
+                pressing: params.structure.normal_load,
+                kt: params.structure.tangential_stiffness,
+                mu: params.structure.friction,
+                edge: cylinder.half_width(),
+            },
         )
     }
 
