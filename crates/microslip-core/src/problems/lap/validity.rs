@@ -72,11 +72,11 @@ const COVERS_OVER_INNER_STIFFNESS: (f64, f64) = (0.3, 6.0);
 /// Largest E2 t2 / (E1 t1) calibrated for dissimilar plates (E2 != E1). The grid measured stiff
 /// dissimilar covers at low friction and soft interfaces only (ratio 6 at mu 0.3, K_T 1e3; 3.75
 /// at mu 0.45; 4.5 at mu 0.2); against the continuum (which agrees with CalculiX within 0.3 %,
-/// and at this corner within 0.07 % of its converged ladders, issue 45), ratios 4.5 and 6 at
+/// and at this corner within 0.06 % of its converged ladders, issue 45), ratios 4.5 and 6 at
 /// mu 0.45-0.6 and K_T 1e4 exceed the bound by up to 1.34x at 0.5 F_gross and 1.2x at 0.85-0.9
 /// F_gross (issue 33), while ratio 3 stays under it (docs/theory.md, "The verdict against the
 /// continuum"). CalculiX on the fine mesh and at half the increment confirms issue 33's joints
-/// A and B to 0.03 points (+15.9 to +28.4 % off the shear lag; docs/theory.md, "(L14) on
+/// A and B to 0.06 points (+15.9 to +28.4 % off the shear lag; docs/theory.md, "(L14) on
 /// converged ladders").
 const MAX_DISSIMILAR_STIFFNESS_RATIO: f64 = 3.0;
 const LENGTH_OVER_T1: (f64, f64) = (3.0, 30.0);
