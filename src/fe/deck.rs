@@ -344,14 +344,29 @@ pub(crate) fn write_interaction(
     );
 }
 
+/// The most characters CalculiX reads of a number: ccx 2.20 cuts a longer field, which leaves a
+/// decimal fraction a few digits short but an exponent form without its exponent's last digit
+/// ("*ERROR reading *SPRING. Card image: 5.3030303030303025E-5", the lap deck's stabilising
+/// spring of issue 33's joint A at the finest mesh, issue 45).
+const CCX_FIELD: usize = 20;
+
 /// A number as CalculiX must read it: shortest round-trip digits, always with a decimal point
-/// (some cards read an integer-looking first field as a degree of freedom).
+/// (some cards read an integer-looking first field as a degree of freedom); an exponent form
+/// longer than [`CCX_FIELD`] keeps as many significant digits as fit.
 pub(crate) fn real(x: f64) -> String {
     let text = format!("{x:?}");
-    match text.find('e') {
+    let text = match text.find('e') {
         Some(e) if !text[..e].contains('.') => format!("{}.{}", &text[..e], &text[e..]),
         _ => text,
+    };
+    if text.len() <= CCX_FIELD || !text.contains('e') {
+        return text;
     }
+    (1..17)
+        .rev()
+        .map(|digits| format!("{x:.digits$e}"))
+        .find(|short| short.len() <= CCX_FIELD)
+        .unwrap_or(text)
 }
 
 /// What the decks' tests in the problems' folders read back from a written deck.
@@ -405,5 +420,21 @@ mod tests {
         assert_eq!(real(0.1), "0.1");
         assert_eq!(real(1e-7), "1.e-7");
         assert_eq!(real(-2.5e20), "-2.5e20");
+    }
+
+    /// ccx reads 20 characters of a field: an exponent form longer than that lost its
+    /// exponent's last digit and was refused (issue 45); it now keeps 16 digits, and so reads
+    /// back within 1e-15.
+    #[test]
+    fn exponent_forms_fit_ccx_s_field() {
+        let x = 5.303_030_303_030_302_5e-5;
+        assert_eq!(format!("{x:?}"), "5.3030303030303025e-5");
+        let text = real(x);
+        assert!(text.len() <= CCX_FIELD && text.contains('.'), "{text}");
+        let back: f64 = text.parse().unwrap();
+        assert!((back / x - 1.0).abs() < 1e-15, "{text}");
+        assert_eq!(real(-1.234_567_890_123_456_7e-100).len(), CCX_FIELD);
+        // Decimal forms are left as they are (ccx drops only their last digits).
+        assert_eq!(real(0.000_106_060_606_060_606_05), "0.00010606060606060605");
     }
 }
