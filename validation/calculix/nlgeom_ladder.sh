@@ -121,16 +121,22 @@ for case in cases:
     kl = 2 * math.sqrt(p["KT"] / (p["E"] * p["h"])) * p["L"]
     group = p["P"] / p["E"] * (p["L"] / p["h"]) ** 2
     env = 0.06 + math.tanh(kl) / kl
-    stopped = [f"{j}-{m}" for m in meshes for j in ("nl", "lin")
-               if os.path.exists(f"{name}/{j}-{m}.time")
-               and open(f"{name}/{j}-{m}.time").read().startswith("stopped")]
-    if stopped:
-        meshes = [m for m in meshes if not any(s.endswith(m) for s in stopped)]
-        print(f"| {name} | {role} | {kl:.2f} | stopped: {', '.join(stopped)} |")
-    # A run whose contact pressure somewhere exceeds 5 P has settled on a spurious contact state
-    # (the clamp's corner locked, slips there above the tip's): left out of the ladder.
+    def stopped(job):
+        path = f"{name}/{job}.time"
+        return os.path.exists(path) and open(path).read().startswith("stopped")
+    # A linear run stopped, or on a spurious contact state (below), drops its rung; an NLGEOM
+    # run stopped drops it from the ratio only.
+    shown_lin = {m: "" for m in meshes}
+    for m in meshes:
+        if stopped(f"lin-{m}"):
+            shown_lin[m] = " (stopped)"
+        elif peak_pressure(f"{name}/lin-{m}.frd") > 5 * p["P"]:
+            peak = peak_pressure(f"{name}/lin-{m}.frd") / p["P"]
+            shown_lin[m] = f" (linear run spurious: peak {peak:.0f} P)"
+    meshes = [m for m in meshes if not shown_lin[m]]
+    dropped = "".join(f"; {m}{why}" for m, why in shown_lin.items() if why)
     try:
-        nl = {m: w_of(f"{name}/nl-{m}.dat")[0] for m in meshes}
+        nl = {m: w_of(f"{name}/nl-{m}.dat")[0] for m in meshes if not stopped(f"nl-{m}")}
         lin, continuum = zip(*(w_of(f"{name}/lin-{m}.dat") for m in meshes))
     except (json.JSONDecodeError, KeyError, IndexError, FileNotFoundError):
         print(f"| {name} | {role} | {kl:.2f} | incomplete |")
@@ -142,11 +148,11 @@ for case in cases:
     # An NLGEOM run whose contact pressure somewhere exceeds 5 P has settled on a spurious
     # contact state (the clamp's corner locked, slips there above the tip's): its rung is left
     # out of the NLGEOM ladder (shown as "x").
-    peaks = {m: peak_pressure(f"{name}/nl-{m}.frd") / p["P"] for m in meshes}
-    ratios = {m: (nl[m] / b - 1) / group for m, b in zip(meshes, lin)}
-    good = [ratios[m] for m in meshes if peaks[m] <= 5]
-    shown = ", ".join(f"{ratios[m]:.4f}" if peaks[m] <= 5 else f"x ({ratios[m]:.4f}: peak {peaks[m]:.0f} P)"
-                      for m in meshes)
+    peaks = {m: peak_pressure(f"{name}/nl-{m}.frd") / p["P"] for m in nl}
+    ratios = {m: (nl[m] / b - 1) / group for m, b in zip(meshes, lin) if m in nl}
+    good = [ratios[m] for m in meshes if m in nl and peaks[m] <= 5]
+    shown = ", ".join("x (stopped)" if m not in nl else f"{ratios[m]:.4f}" if peaks[m] <= 5
+                      else f"x ({ratios[m]:.4f}: peak {peaks[m]:.0f} P)" for m in meshes)
     if len(good) == 3:
         r, u, order, words = richardson(*good)
     else:  # fewer rungs: the finest answer, the rungs' spread as uncertainty
@@ -157,7 +163,7 @@ for case in cases:
         wl, ul, pl, wordsl = lin[-1], abs(lin[-1] - lin[0]), None, f"{len(lin)} rungs"
     o = "n/a" if order is None else f"{order:.2f}"
     ol = "n/a" if pl is None else f"{pl:.2f}"
-    print(f"| {name} | {role} | {kl:.2f} | {100 * group:.4f} % | {shown}"
+    print(f"| {name} | {role} | {kl:.2f} | {100 * group:.4f} % | {shown}{dropped}"
           + f" | {r:.4f} +- {u:.4f} ({words}) | {o} | {env:.4f} | "
           + ", ".join(f"{x:.7g}" for x in lin)
           + f" | {wl:.7g} +- {ul:.2g} ({wordsl}, {ol}) | {100 * (continuum[-1] / wl - 1):+.3f} % |")
