@@ -8,14 +8,18 @@
 # in [0.5, 4] and shrinking differences, else "not asymptotic" with the rungs' spread; uncertainty
 # 1.25 x the correction), divided by (P/E)(L/h)^2, against the envelope 0.06 + tanh(kL)/kL.
 # Then the increment check: the soft case's stick load (and the pressure) in 4 fixed increments
-# instead of one, on each mesh.
+# instead of one, coarse and fine. A run whose contact pressure exceeds 5 P (the finest deck's clamp
+# corner locked) is left out of its ladder and shown.
 #
 #   validation/calculix/nlgeom_ladder.sh [MICROSLIP] [WORKDIR]
 #
 # Roles are fixed here BEFORE the runs: "cal" cases draw the envelope, "hold" cases (the stick rows
 # of the hold-outs H1-H4 of (BC4a)) are judged by it and never used to draw it.
-# Wall time (2026-11-29, CalculiX 2.20, one core of a shared 2-core machine, nice 10): see the
-# summary's last line; the campaign of docs/theory.md took WALLTIME.
+# Wall time (2026-11-29, CalculiX 2.20, one core of a 2-core machine shared with two other ccx
+# campaigns, nice 10): the campaign of docs/theory.md, C3 to C3-inc4 (H4, C7, H3, C8, H1 not run),
+# took about 90 minutes, 5317 s of ccx (the summary's last line); LIMIT=900 (H2's finest NLGEOM run
+# stopped there). A finest NLGEOM run takes 35 s (C5) to 1053 s (C1); the whole list would take
+# about 2.5 hours. CASES=C1,C2 runs (or summarizes) those only.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 bin=$(realpath "${1:-$root/target/debug/microslip}")

@@ -547,7 +547,7 @@ mod tests {
     /// (a contact pressure above 5 P at the clamp, left out as the campaign leaves it out) or
     /// did not finish within the campaign's limit. The
     /// hold-outs' ladders are in [`NLGEOM_LADDERS_HELD_OUT`].
-    const NLGEOM_LADDERS: [([f64; 5], [f64; 3]); 6] = [
+    const NLGEOM_LADDERS: [([f64; 5], [f64; 3]); 7] = [
         // C3, the soft case (kL 2.76), at 20 N and (coarse and fine only) at 45.8 N.
         (
             [200.0, 5.0, 210_000.0, 2.0, 50.0],
@@ -556,6 +556,11 @@ mod tests {
         (
             [200.0, 5.0, 210_000.0, 2.0, 50.0],
             [3.2176e-3, 4.7449e-4, f64::NAN],
+        ),
+        // C3 with both steps in 4 increments instead of 1 (coarse and fine only).
+        (
+            [200.0, 5.0, 210_000.0, 2.0, 50.0],
+            [3.1946e-3, 2.0854e-3, f64::NAN],
         ),
         // C1 (kL 0.87): its finest NLGEOM run locked the clamp's corner (peak 134 P).
         (
