@@ -131,18 +131,19 @@ fn a_killed_suite_resumes_and_runs_each_run_once() {
     assert_eq!(refused.status.code(), Some(2), "{refused:?}");
     assert!(String::from_utf8_lossy(&refused.stderr).contains("--resume"));
 
-    let resumed = suite(
-        &[
+    // The suite resumed in the same folder with the same solver, `extra` flags added.
+    let resume = |extra: &[&str]| {
+        let mut args = vec![
             "--cases",
             "plate-bench",
             "--resume",
-            "--format",
-            "json",
             "--workdir",
             workdir.to_str().unwrap(),
-        ],
-        &program,
-    );
+        ];
+        args.extend_from_slice(extra);
+        suite(&args, &program)
+    };
+    let resumed = resume(&["--format", "json"]);
     let stderr = String::from_utf8_lossy(&resumed.stderr);
     assert_eq!(resumed.status.code(), Some(0), "{stderr}");
     assert!(
@@ -169,16 +170,7 @@ fn a_killed_suite_resumes_and_runs_each_run_once() {
     assert_eq!(case["stick_slope"]["verdict"], "agrees");
 
     // Resumed again, nothing runs.
-    let again = suite(
-        &[
-            "--cases",
-            "plate-bench",
-            "--resume",
-            "--workdir",
-            workdir.to_str().unwrap(),
-        ],
-        &program,
-    );
+    let again = resume(&[]);
     assert_eq!(again.status.code(), Some(0));
     assert_eq!(count_lines(dir.path()), all);
 
@@ -193,18 +185,7 @@ fn a_killed_suite_resumes_and_runs_each_run_once() {
     }
     old["agrees"] = serde_json::json!(false);
     std::fs::write(&stored, serde_json::to_string(&old).unwrap()).unwrap();
-    let rejudged = suite(
-        &[
-            "--cases",
-            "plate-bench",
-            "--resume",
-            "--format",
-            "json",
-            "--workdir",
-            workdir.to_str().unwrap(),
-        ],
-        &program,
-    );
+    let rejudged = resume(&["--format", "json"]);
     assert_eq!(rejudged.status.code(), Some(0), "{rejudged:?}");
     assert_eq!(count_lines(dir.path()), all);
     let rescored: serde_json::Value = serde_json::from_slice(&rejudged.stdout).unwrap();
@@ -212,16 +193,7 @@ fn a_killed_suite_resumes_and_runs_each_run_once() {
 
     // A finished run whose output is gone cannot be judged again: it runs again.
     std::fs::remove_file(workdir.join("plate-bench/finest/job.dat")).unwrap();
-    let lost = suite(
-        &[
-            "--cases",
-            "plate-bench",
-            "--resume",
-            "--workdir",
-            workdir.to_str().unwrap(),
-        ],
-        &program,
-    );
+    let lost = resume(&[]);
     assert_eq!(lost.status.code(), Some(0), "{lost:?}");
     let all = count_lines(dir.path());
     assert_eq!(times(&all, "done finest"), 2, "{all:?}");
@@ -231,16 +203,7 @@ fn a_killed_suite_resumes_and_runs_each_run_once() {
     let mut deck = std::fs::read_to_string(&coarse_deck).unwrap();
     deck.push_str("** edited\n");
     std::fs::write(&coarse_deck, deck).unwrap();
-    let changed = suite(
-        &[
-            "--cases",
-            "plate-bench",
-            "--resume",
-            "--workdir",
-            workdir.to_str().unwrap(),
-        ],
-        &program,
-    );
+    let changed = resume(&[]);
     assert_eq!(changed.status.code(), Some(0));
     let last = count_lines(dir.path());
     assert_eq!(&last[all.len()..], ["start coarse", "done coarse"]);
