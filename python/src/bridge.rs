@@ -246,19 +246,20 @@ impl ForProblem for Compare<'_> {
             )
         })?;
         let mut compared = P::compare(&model, &loaded.points, loaded.interface_mesh.as_ref());
-        let (kinematics, stick_slope) = match &loaded.header {
+        let (kinematics, stick_slope, peak_pressure) = match &loaded.header {
             Some(header) => {
                 let read = load::ccx_contact(path, deck, header).map_err(failed)?;
-                (read.kinematics, Some(read.stick_slope))
+                (read.kinematics, Some(read.stick_slope), read.peak_pressure)
             }
-            None => (Kinematics::NotStated, None),
+            None => (Kinematics::NotStated, None, None),
         };
         let run = compare_run::run_evidence(
             path,
             loaded.header.as_ref(),
-            P::interface(&model).stiffness,
+            &P::interface(&model),
             kinematics,
             stick_slope,
+            peak_pressure,
         );
         compare_run::judged_for::<P>(&run, &model, &mut compared);
         let checked = P::checked(compared).map_err(|e| format!("{source}: {e}"))?;

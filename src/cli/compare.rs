@@ -152,7 +152,7 @@ fn run_evidence<P: Faces>(
     contact: ContactArgs<'_>,
 ) -> Result<RunEvidence, CliError> {
     let interface_data = P::interface(model);
-    let (kinematics, stick_slope) = match (&loaded.header, contact) {
+    let (kinematics, stick_slope, peak_pressure) = match (&loaded.header, contact) {
         (
             Some(_),
             ContactArgs {
@@ -180,7 +180,7 @@ fn run_evidence<P: Faces>(
                     read.kinematics.words()
                 );
             }
-            (read.kinematics, Some(read.stick_slope))
+            (read.kinematics, Some(read.stick_slope), read.peak_pressure)
         }
         (
             None,
@@ -195,15 +195,17 @@ fn run_evidence<P: Faces>(
             (
                 kinematics.unwrap_or(Kinematics::NotStated),
                 stick_slope.map(Ok),
+                None,
             )
         }
     };
     Ok(compare_run::run_evidence(
         path,
         loaded.header.as_ref(),
-        interface_data.stiffness,
+        &interface_data,
         kinematics,
         stick_slope,
+        peak_pressure,
     ))
 }
 

@@ -9,6 +9,7 @@ pub use super::face::AnyLoaded;
 use super::face::Deck;
 use super::header::DeckHeader;
 use super::kinematics::Kinematics;
+use super::peak_pressure::PeakPressure;
 use super::results::CcxRun;
 use super::stick_slope::{self, Friction, StickSlopeUsed};
 use super::verdict::InterfaceMesh;
@@ -48,6 +49,9 @@ pub struct CcxContact {
     pub kinematics: Kinematics,
     /// The stick slope the run used, from the `.frd` beside its `.dat`, or why it was not read.
     pub stick_slope: Result<StickSlopeUsed, String>,
+    /// The largest contact pressure of the same output; `None` where it was not read or holds no
+    /// positive pressure.
+    pub peak_pressure: Option<PeakPressure>,
 }
 
 /// The contact evidence of the `.dat` at `path` whose deck (`deck`, by default beside it with the
@@ -62,9 +66,11 @@ pub fn ccx_contact(
     header: &DeckHeader,
 ) -> Result<CcxContact, LoadError> {
     let deck_text = read(&deck_path(path, deck), "a deck")?;
+    let contact = frd_contact(path);
     Ok(CcxContact {
         kinematics: Kinematics::of_deck(&deck_text),
-        stick_slope: ccx_stick_slope(path, header, &deck_text),
+        peak_pressure: contact.as_ref().ok().and_then(|c| PeakPressure::of(c)),
+        stick_slope: contact.and_then(|c| ccx_stick_slope(c, header, &deck_text)),
     })
 }
 
@@ -191,15 +197,14 @@ pub fn frd_contact(dat: &Path) -> Result<Vec<stick_slope::ContactStep>, String> 
     Ok(contact)
 }
 
-/// The stick slope a CalculiX run used, from the `CONTACT` blocks of the `.frd` beside its `.dat`
-/// (the decks ask for them: `*CONTACT FILE`, `CDIS, CSTR`), against the deck header's K_T; the
-/// friction coefficient is the one the run was given (the deck's `*FRICTION` card).
+/// The stick slope a CalculiX run used, from its `contact` output (the `CONTACT` blocks of the
+/// `.frd` beside its `.dat`: [`frd_contact`]), against the deck header's K_T; the friction
+/// coefficient is the one the run was given (the deck's `*FRICTION` card).
 fn ccx_stick_slope(
-    dat: &Path,
+    contact: Vec<stick_slope::ContactStep>,
     header: &DeckHeader,
     deck_text: &str,
 ) -> Result<StickSlopeUsed, String> {
-    let contact = frd_contact(dat)?;
     let contact = if stick_slope::first_step_changes_friction(deck_text) {
         stick_slope::slips_from_first_step(contact)
     } else {

@@ -17,7 +17,8 @@
 //! - [`verdict`]: whether they agree: each difference against its stated envelope, X in elements
 //!   of the FE mesh, the implied K_T in standard errors.
 //! - [`stick_slope`]: the stick slope the FE code used, CSHEAR / CSLIP over the nodes that
-//!   stick, from its own interface output; [`kinematics`]: `NLGEOM` or linear geometry.
+//!   stick, from its own interface output; [`kinematics`]: `NLGEOM` or linear geometry;
+//!   [`peak_pressure`]: the largest contact pressure there, which tells a contact that locked.
 //! - [`ladder`]: a quantity's answers on a mesh ladder (h, h/2, h/4) and two increments taken
 //!   to a converged estimate with its uncertainty (Richardson), and judged against a bound.
 //! - [`run`]: running CalculiX on a deck in a work folder of its own, with its log kept.
@@ -34,6 +35,7 @@ pub mod kinematics;
 pub mod ladder;
 pub mod load;
 pub(crate) mod mesh;
+pub mod peak_pressure;
 pub mod results;
 pub mod run;
 pub mod stick_slope;

@@ -229,6 +229,7 @@ fn solve_and_judge(
         stick_slope: judged.stick_slope,
         agrees: judged.agrees,
         verdict: judged.verdict,
+        contact_locked: judged.contact_locked,
         solver_seconds,
     };
     result::write(&files.folder, &done).map_err(folder_error(&files.folder))?;

@@ -50,6 +50,10 @@ pub struct RunResult {
     pub agrees: bool,
     /// That verdict, short.
     pub verdict: String,
+    /// Why the run is no judge when its contact locked
+    /// ([`crate::fe::peak_pressure`]); `None` otherwise.
+    #[serde(default)]
+    pub contact_locked: Option<String>,
     /// The solver's wall time (s).
     pub solver_seconds: f64,
 }
@@ -79,6 +83,7 @@ pub fn read_rejudged(kind: ModelKind, folder: &Path) -> Option<RunResult> {
         stick_slope: judged.stick_slope,
         agrees: judged.agrees,
         verdict: judged.verdict,
+        contact_locked: judged.contact_locked,
         ..stored
     })
 }
@@ -112,6 +117,8 @@ pub struct Judged {
     pub agrees: bool,
     /// [`RunResult::verdict`].
     pub verdict: String,
+    /// [`RunResult::contact_locked`].
+    pub contact_locked: Option<String>,
 }
 
 /// [`judge`]'s body, for [`for_problem`].
@@ -140,15 +147,21 @@ impl ForProblem for Judge<'_> {
         let run = compare_run::run_evidence(
             dat,
             Some(header),
-            P::interface(&model).stiffness,
+            &P::interface(&model),
             contact.kinematics,
             Some(contact.stick_slope),
+            contact.peak_pressure,
         );
         compare_run::judged_for::<P>(&run, &model, &mut compared);
         let checked = P::checked(compared).map_err(|e| e.to_string())?;
         let source = dat.display().to_string();
         let mut report =
             compare_run::ContactCompared::<P>::new(&source, (checked, Vec::new()), &[run]);
+        let contact_locked = report
+            .stick_slope
+            .runs
+            .first()
+            .and_then(|r| r.contact_locked.clone());
         let stick_slope = report.stick_slope.runs.first().map(|r| RunStickSlope {
             verdict: r.verdict.to_string(),
             used: r.used,
@@ -162,6 +175,7 @@ impl ForProblem for Judge<'_> {
             stick_slope,
             agrees: summary.agrees,
             verdict: summary.short.clone(),
+            contact_locked,
         })
     }
 }

@@ -198,6 +198,16 @@ pub fn case_score(
         ),
         Some(q) => (q.verdict, quantity_line(q)),
     };
+    let locked = score
+        .runs
+        .iter()
+        .filter_map(|r| r.result.as_ref())
+        .find_map(|r| Some((r.run.clone(), r.contact_locked.clone()?)));
+    if let Some((run, locked)) = locked {
+        // The run is not the FE code's answer: its rung cannot make a converged ladder.
+        score.verdict = Verdict::NotConverged;
+        score.reason = format!("run {run}: {locked}; {}", score.reason);
+    }
     let off = score
         .runs
         .iter()
@@ -430,6 +440,7 @@ pub(super) mod tests {
             }),
             agrees: true,
             verdict: "agrees".to_string(),
+            contact_locked: None,
             solver_seconds: 1.0,
         })
     }
@@ -524,6 +535,35 @@ pub(super) mod tests {
         );
         let text = text(&[off]);
         assert!(text.contains("0 of 1 cases agree (exit code 1)"), "{text}");
+    }
+
+    #[test]
+    fn a_rung_whose_contact_locked_leaves_the_case_not_converged_naming_it() {
+        // A ladder that would agree (0.5 % + 4 % h^2), but its finest run's contact locked.
+        let case = quick_case();
+        let specs = super::super::plan(0, &case, None);
+        let mut outcomes = vec![result("coarse", 0.010, 1.0), result("fine", 0.006, 1.0)];
+        assert_eq!(
+            case_score(&case, &specs, &outcomes).verdict,
+            Verdict::Agrees
+        );
+        let locked = "its contact locked: a contact pressure of 267 MPa at node 2123";
+        outcomes[1].as_mut().unwrap().contact_locked = Some(locked.to_string());
+        let score = case_score(&case, &specs, &outcomes);
+        assert_eq!(score.verdict, Verdict::NotConverged);
+        assert!(
+            score
+                .reason
+                .starts_with(&format!("run {}: {locked}; ", specs[1].name)),
+            "{}",
+            score.reason
+        );
+        // A stick slope off the deck's is still the worse finding.
+        outcomes[0] = result("coarse", 0.010, 1.1);
+        assert_eq!(
+            case_score(&case, &specs, &outcomes).verdict,
+            Verdict::DoesNotAgree
+        );
     }
 
     #[test]

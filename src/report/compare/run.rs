@@ -10,18 +10,21 @@ use super::CompareFace;
 use super::stick_slope::{self as contact, KinematicsReport, RunEvidence, StickSlopeReport};
 use crate::fe::header::DeckHeader;
 use crate::fe::kinematics::Kinematics;
+use crate::fe::peak_pressure::PeakPressure;
 use crate::fe::stick_slope::StickSlopeUsed;
+use crate::problems::inputs::InterfaceData;
 
 /// What one run says about its contact: `header` the deck's header of a CalculiX run (whose
-/// force steps are numbered from it), `deck_stiffness` the K_T the benchmark asks for (MPa/mm),
-/// `kinematics` and `stick_slope` as read (a `.dat`'s `.frd` and deck) or told (a CSV's
-/// `--interface` and `--kinematics`).
+/// force steps are numbered from it), `interface` the benchmark's (its K_T is the one asked for,
+/// its pressure the nominal one), `kinematics`, `stick_slope` and `peak_pressure` as read (a
+/// `.dat`'s `.frd` and deck) or told (a CSV's `--interface` and `--kinematics`).
 pub fn run_evidence(
     path: &Path,
     header: Option<&DeckHeader>,
-    deck_stiffness: f64,
+    interface: &InterfaceData,
     kinematics: Kinematics,
     stick_slope: Option<Result<StickSlopeUsed, String>>,
+    peak_pressure: Option<PeakPressure>,
 ) -> RunEvidence {
     // CalculiX's step n + 2 carries load n (step 1 is the pressure alone).
     let step_forces = header
@@ -36,9 +39,11 @@ pub fn run_evidence(
     RunEvidence {
         results: path.display().to_string(),
         stick_slope,
-        deck: deck_stiffness,
+        deck: interface.stiffness,
         kinematics,
         step_forces,
+        peak_pressure,
+        nominal_pressure: interface.pressure,
     }
 }
 
@@ -74,7 +79,7 @@ impl<P: CompareFace> ContactCompared<P> {
         runs: &[RunEvidence],
     ) -> Self {
         let (mut report, rows) = P::compare_report(source, first, more);
-        let stick_slope = contact::stick_slope_report(runs);
+        let stick_slope = contact::stick_slope_report(runs, P::LOCKED_PRESSURE_RATIO);
         let kinematics =
             contact::kinematics_report(contact::combined_kinematics(runs), P::ENVELOPE_KINEMATICS);
         contact::add_to_summary(P::summary_mut(&mut report), &stick_slope, &kinematics);

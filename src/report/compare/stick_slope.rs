@@ -11,6 +11,7 @@ use serde::Serialize;
 use super::percent;
 use super::verdict::Summary;
 use crate::fe::kinematics::Kinematics;
+use crate::fe::peak_pressure::PeakPressure;
 use crate::fe::stick_slope::{STICK_SLOPE_TOLERANCE, StepSlope, StickSlopeUsed, StickSlopeVerdict};
 use crate::report::{number, number_with, sanitize};
 
@@ -28,6 +29,10 @@ pub struct RunEvidence {
     /// The FE step numbers that carry a load step's force, with the force (N): CalculiX's step
     /// n + 2 is load n (step 1 is the pressure alone); empty where the steps carry no force.
     pub step_forces: Vec<(usize, f64)>,
+    /// The largest contact pressure of its interface output, where read.
+    pub peak_pressure: Option<PeakPressure>,
+    /// The interface's nominal pressure (MPa), which the peak is measured in.
+    pub nominal_pressure: f64,
 }
 
 /// One step's slope in JSON.
@@ -87,6 +92,12 @@ pub struct RunSlopeReport {
     pub reason: Option<String>,
     /// The verdict in words.
     pub text: String,
+    /// The largest contact pressure of the output (MPa), where read.
+    #[serde(rename = "peak_pressure_MPa")]
+    pub peak_pressure: Option<f64>,
+    /// Why the run is no judge when its contact locked (the peak beyond what a sound run of the
+    /// problem reaches, [`crate::fe::face::Deck::LOCKED_PRESSURE_RATIO`]); `None` otherwise.
+    pub contact_locked: Option<String>,
 }
 
 /// The stick slope section of a comparison in JSON (`stick_slope`).
@@ -218,8 +229,40 @@ fn step_words(step: &StepSlope, forces: &[(usize, f64)]) -> String {
     }
 }
 
-/// One file's stick slope section.
-pub fn run_report(run: &RunEvidence) -> RunSlopeReport {
+/// One file's stick slope section, with its peak contact pressure judged against
+/// `locked_ratio` times the nominal pressure ([`locked_words`]).
+pub fn run_report(run: &RunEvidence, locked_ratio: Option<f64>) -> RunSlopeReport {
+    let report = slope_report(run);
+    RunSlopeReport {
+        peak_pressure: run.peak_pressure.map(|p| p.pressure),
+        contact_locked: locked_ratio.and_then(|limit| locked_words(run, limit)),
+        ..report
+    }
+}
+
+/// Why `run` is no judge when its peak contact pressure is beyond `limit` times its nominal
+/// pressure: the pressure, where, and the limit.
+pub fn locked_words(run: &RunEvidence, limit: f64) -> Option<String> {
+    let peak = run.peak_pressure?;
+    let ratio = peak.ratio(run.nominal_pressure)?;
+    peak.locked(run.nominal_pressure, limit).then(|| {
+        format!(
+            "its contact locked: a contact pressure of {} MPa ({} times the interface's {} MPa) \
+             at node {} in step {}, where a sound run of this problem stays under {} times: \
+             the run is no judge (a corner of a fine mesh pressed shut; a coarser mesh there, or another \
+             contact formulation)",
+            number_with(peak.pressure, 4),
+            number_with(ratio, 3),
+            number(run.nominal_pressure),
+            peak.node,
+            peak.step,
+            number(limit)
+        )
+    })
+}
+
+/// One file's stick slope section, its peak pressure not yet judged.
+fn slope_report(run: &RunEvidence) -> RunSlopeReport {
     let empty = |verdict: &'static str, reason: Option<String>, text: String| RunSlopeReport {
         results: run.results.clone(),
         verdict,
@@ -233,6 +276,8 @@ pub fn run_report(run: &RunEvidence) -> RunSlopeReport {
         steps: Vec::new(),
         reason,
         text,
+        peak_pressure: None,
+        contact_locked: None,
     };
     let used = match &run.stick_slope {
         None => {
@@ -335,12 +380,16 @@ pub fn run_report(run: &RunEvidence) -> RunSlopeReport {
         steps,
         reason: None,
         text,
+        peak_pressure: None,
+        contact_locked: None,
     }
 }
 
-/// The stick slope section of all files.
-pub fn stick_slope_report(runs: &[RunEvidence]) -> StickSlopeReport {
-    let runs: Vec<RunSlopeReport> = runs.iter().map(run_report).collect();
+/// The stick slope section of all files, each one's peak contact pressure judged against
+/// `locked_ratio` times its nominal pressure (the problem's
+/// [`crate::fe::face::Deck::LOCKED_PRESSURE_RATIO`]).
+pub fn stick_slope_report(runs: &[RunEvidence], locked_ratio: Option<f64>) -> StickSlopeReport {
+    let runs: Vec<RunSlopeReport> = runs.iter().map(|r| run_report(r, locked_ratio)).collect();
     let order = [
         "does not agree",
         "not judged",
@@ -420,6 +469,31 @@ pub fn add_to_summary(
             None => format!("{}; {clause}", summary.summary),
         };
     }
+    add_locked(summary, slope);
+}
+
+/// The closing verdict turned to "does not agree" when a run's contact locked: its differences
+/// are not the FE code's answer to the benchmark, whatever they are.
+fn add_locked(summary: &mut Summary, slope: &StickSlopeReport) {
+    let Some((results, locked)) = slope
+        .runs
+        .iter()
+        .find_map(|r| Some((&r.results, r.contact_locked.as_ref()?)))
+    else {
+        return;
+    };
+    let body = summary
+        .summary
+        .strip_prefix("Verdict: ")
+        .and_then(|rest| rest.split_once(". "))
+        .map_or_else(|| summary.summary.clone(), |(_, body)| body.to_string());
+    summary.agrees = false;
+    summary.summary = format!(
+        "Verdict: does not agree. {}: {}; {body}",
+        sanitize(results),
+        sanitize(locked)
+    );
+    summary.short = format!("does not agree (contact locked; {})", summary.short);
 }
 
 /// The text section, put before the closing verdict line of `text`.
@@ -434,6 +508,9 @@ pub fn insert_section(
     );
     for run in &slope.runs {
         let _ = writeln!(section, "  {}", run.text);
+        if let Some(locked) = &run.contact_locked {
+            let _ = writeln!(section, "  contact: {}", sanitize(locked));
+        }
         if run.steps.len() > 1 {
             let per_step: Vec<String> = run
                 .steps
@@ -481,8 +558,73 @@ mod tests {
                 steps: Vec::new(),
                 reason: None,
                 text: String::new(),
+                peak_pressure: None,
+                contact_locked: None,
             }],
         }
+    }
+
+    fn evidence(peak: f64) -> RunEvidence {
+        RunEvidence {
+            results: "finest.dat".into(),
+            stick_slope: None,
+            deck: 600.0,
+            kinematics: Kinematics::Linear,
+            step_forces: Vec::new(),
+            peak_pressure: Some(PeakPressure {
+                pressure: peak,
+                node: 2123,
+                step: 2,
+            }),
+            nominal_pressure: 2.0,
+        }
+    }
+
+    #[test]
+    fn a_run_whose_contact_locked_is_no_judge_and_says_where() {
+        // The beams' finest deck of docs/theory.md (BC4a): 267 MPa at the clamp under P = 2 MPa.
+        let slope = stick_slope_report(&[evidence(267.0)], Some(5.0));
+        let locked = slope.runs[0].contact_locked.as_deref().unwrap();
+        assert!(
+            locked.contains("267 MPa (134 times the interface's 2 MPa) at node 2123 in step 2"),
+            "{locked}"
+        );
+        assert_eq!(slope.runs[0].peak_pressure, Some(267.0));
+        let mut s =
+            summary("Verdict: agrees. w(L) within the stated envelope on all 2 load steps.");
+        add_to_summary(
+            &mut s,
+            &slope,
+            &kinematics_report(Kinematics::Linear, &[Kinematics::Linear]),
+        );
+        assert!(!s.agrees);
+        assert!(
+            s.summary
+                .starts_with("Verdict: does not agree. finest.dat: its contact locked"),
+            "{}",
+            s.summary
+        );
+        assert!(s.summary.ends_with("w(L) within the stated envelope on all 2 load steps; stick slope used not given; kinematics: linear geometry."), "{}", s.summary);
+        assert!(s.short.starts_with("does not agree (contact locked;"));
+        let text = insert_section(
+            "rows\nVerdict: x",
+            &slope,
+            &kinematics_report(Kinematics::Linear, &[]),
+        );
+        assert!(text.contains("  contact: its contact locked"), "{text}");
+        // A sound run (2.6 P, the largest of the converged ladders) and a problem that states
+        // no limit are judged as before.
+        let sound = stick_slope_report(&[evidence(5.2)], Some(5.0));
+        assert_eq!(sound.runs[0].contact_locked, None);
+        let unstated = stick_slope_report(&[evidence(267.0)], None);
+        assert_eq!(unstated.runs[0].contact_locked, None);
+        let mut s = summary("Verdict: agrees. fine.");
+        add_to_summary(
+            &mut s,
+            &sound,
+            &kinematics_report(Kinematics::Linear, &[Kinematics::Linear]),
+        );
+        assert!(s.agrees);
     }
 
     #[test]
