@@ -426,3 +426,73 @@ fn the_beams_continuum_verdict_allows_for_nlgeom_and_not_for_linear_geometry() {
     assert!((nlgeom[0] - 3.96e-4).abs() < 1e-6, "{nlgeom:?}");
     assert!(nlgeom.last().unwrap() > &nlgeom[0], "{nlgeom:?}");
 }
+
+/// A run whose contact locked (issue 45): the beams' finest deck can press its clamp corner shut
+/// (267 MPa under P = 1 to 2 MPa, docs/theory.md (BC4a)), and its w(L) then reads like any other
+/// run's. The recorded paper run peaks at 1.47 MPa (P = 1 MPa); one node of its `.frd` pressed to
+/// 267 MPa makes `compare` say "does not agree" (exit 1) naming the node; 4.9 MPa does not.
+#[test]
+fn compare_says_a_run_whose_contact_locked_is_no_judge() {
+    let calculix = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/calculix");
+    let frd = read("paper-beams.frd");
+    let sound = " -1      1176-3.85403E-07 1.61369E-05 6.02452E-20 8.09347E-01";
+    assert_eq!(frd.matches(sound).count(), 1);
+    for (pressure, locked) in [
+        (None, false),
+        (Some(" 4.90000E+00"), false),
+        (Some(" 2.67000E+02"), true),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        for extension in ["inp", "dat"] {
+            std::fs::copy(
+                calculix.join(format!("paper-beams.{extension}")),
+                dir.path().join(format!("run.{extension}")),
+            )
+            .unwrap();
+        }
+        let edited = match pressure {
+            None => frd.clone(),
+            Some(p) => frd.replace(sound, &format!("{}{p}", &sound[..sound.len() - 12])),
+        };
+        std::fs::write(dir.path().join("run.frd"), edited).unwrap();
+        let dat = dir.path().join("run.dat");
+        let run = |format: &str| {
+            microslip([
+                "compare".as_ref(),
+                "beam".as_ref(),
+                dat.as_os_str(),
+                "--format".as_ref(),
+                format.as_ref(),
+            ])
+        };
+        let output = run("json");
+        assert_eq!(
+            output.status.code(),
+            Some(if locked { 1 } else { 0 }),
+            "{pressure:?}"
+        );
+        let json: Value = serde_json::from_slice(&output.stdout).unwrap();
+        let slope = &json["stick_slope"]["runs"][0];
+        let peak = slope["peak_pressure_MPa"].as_f64().unwrap();
+        let expected = pressure.map_or(1.47229, |p| p.trim().parse().unwrap());
+        assert!((peak - expected).abs() < 1e-9, "{peak}");
+        assert_eq!(slope["contact_locked"].is_string(), locked, "{slope}");
+        if locked {
+            assert_eq!(json["verdict"]["agrees"], false, "{}", json["verdict"]);
+            let text = String::from_utf8(run("text").stdout).unwrap();
+            assert!(
+                text.contains(
+                    "contact: its contact locked: a contact pressure of 267 MPa (267 times the \
+                     interface's 1 MPa) at node 1176"
+                ),
+                "{text}"
+            );
+            assert!(
+                text.lines()
+                    .last()
+                    .unwrap()
+                    .starts_with("Verdict: does not agree.")
+            );
+        }
+    }
+}

@@ -120,11 +120,11 @@ pub trait Deck: Problem + Registered {
     }
 
     /// The largest contact pressure a sound run of the problem reaches, as a multiple of the
-    /// interface's nominal pressure (its `InterfaceData::pressure`, MPa): beyond it the
-    /// run's contact locked somewhere and the run is no judge ([`super::peak_pressure`]).
-    /// `None` (the default): not stated, not checked (a press fit's hub edge and a lap joint's
-    /// cover ends concentrate the pressure by amounts not measured here).
-    const LOCKED_PRESSURE_RATIO: Option<f64> = None;
+    /// interface's nominal pressure (its `InterfaceData::pressure`, MPa), and where the contact
+    /// locks beyond it: such a run is no judge ([`super::peak_pressure`]). `None` (the default):
+    /// not stated, not checked (a press fit's hub edge and a lap joint's cover ends concentrate
+    /// the pressure by amounts not measured here).
+    const LOCKED_PRESSURE: Option<super::peak_pressure::LockedPressure> = None;
 
     /// The bundled preset `deck` and `bench` write when no `--preset` is given, and why: a case
     /// where the FE judge is sharp (the closed form within its tightest envelope, K_T resolved

@@ -9,10 +9,20 @@
 //! would be judged (and extrapolated by a ladder) as if the FE code had answered the benchmark.
 //! So the peak is read from the same `CONTACT` blocks as the stick slope, and a problem that
 //! knows how far its contact pressure can rise in a sound run states it
-//! ([`Deck::LOCKED_PRESSURE_RATIO`](super::face::Deck::LOCKED_PRESSURE_RATIO)); beyond it the
+//! ([`Deck::LOCKED_PRESSURE`](super::face::Deck::LOCKED_PRESSURE)), in its own words; beyond it the
 //! comparison says "does not agree", and the suite's case "not converged", naming the node.
 
 use super::stick_slope::ContactStep;
+
+/// How far a problem's contact pressure rises in a sound run, and what locks it beyond.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LockedPressure {
+    /// The largest contact pressure a sound run reaches, in times the interface's nominal
+    /// pressure, with a margin.
+    pub ratio: f64,
+    /// Where the problem's contact locks and what to do about it, in its own words (a clause).
+    pub advice: &'static str,
+}
 
 /// The largest contact pressure of a run's interface output.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -79,7 +79,7 @@ impl<P: CompareFace> ContactCompared<P> {
         runs: &[RunEvidence],
     ) -> Self {
         let (mut report, rows) = P::compare_report(source, first, more);
-        let stick_slope = contact::stick_slope_report(runs, P::LOCKED_PRESSURE_RATIO);
+        let stick_slope = contact::stick_slope_report(runs, P::LOCKED_PRESSURE);
         let kinematics =
             contact::kinematics_report(contact::combined_kinematics(runs), P::ENVELOPE_KINEMATICS);
         contact::add_to_summary(P::summary_mut(&mut report), &stick_slope, &kinematics);

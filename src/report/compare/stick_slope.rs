@@ -11,7 +11,7 @@ use serde::Serialize;
 use super::percent;
 use super::verdict::Summary;
 use crate::fe::kinematics::Kinematics;
-use crate::fe::peak_pressure::PeakPressure;
+use crate::fe::peak_pressure::{LockedPressure, PeakPressure};
 use crate::fe::stick_slope::{STICK_SLOPE_TOLERANCE, StepSlope, StickSlopeUsed, StickSlopeVerdict};
 use crate::report::{number, number_with, sanitize};
 
@@ -96,7 +96,7 @@ pub struct RunSlopeReport {
     #[serde(rename = "peak_pressure_MPa")]
     pub peak_pressure: Option<f64>,
     /// Why the run is no judge when its contact locked (the peak beyond what a sound run of the
-    /// problem reaches, [`crate::fe::face::Deck::LOCKED_PRESSURE_RATIO`]); `None` otherwise.
+    /// problem reaches, [`crate::fe::face::Deck::LOCKED_PRESSURE`]); `None` otherwise.
     pub contact_locked: Option<String>,
 }
 
@@ -229,34 +229,34 @@ fn step_words(step: &StepSlope, forces: &[(usize, f64)]) -> String {
     }
 }
 
-/// One file's stick slope section, with its peak contact pressure judged against
-/// `locked_ratio` times the nominal pressure ([`locked_words`]).
-pub fn run_report(run: &RunEvidence, locked_ratio: Option<f64>) -> RunSlopeReport {
+/// One file's stick slope section, with its peak contact pressure judged against the problem's
+/// `locked` limit ([`locked_words`]).
+pub fn run_report(run: &RunEvidence, locked: Option<LockedPressure>) -> RunSlopeReport {
     let report = slope_report(run);
     RunSlopeReport {
         peak_pressure: run.peak_pressure.map(|p| p.pressure),
-        contact_locked: locked_ratio.and_then(|limit| locked_words(run, limit)),
+        contact_locked: locked.and_then(|limit| locked_words(run, limit)),
         ..report
     }
 }
 
-/// Why `run` is no judge when its peak contact pressure is beyond `limit` times its nominal
-/// pressure: the pressure, where, and the limit.
-pub fn locked_words(run: &RunEvidence, limit: f64) -> Option<String> {
+/// Why `run` is no judge when its peak contact pressure is beyond `limit`'s ratio to its nominal
+/// pressure: the pressure, where, the limit, and the problem's advice.
+pub fn locked_words(run: &RunEvidence, limit: LockedPressure) -> Option<String> {
     let peak = run.peak_pressure?;
     let ratio = peak.ratio(run.nominal_pressure)?;
-    peak.locked(run.nominal_pressure, limit).then(|| {
+    peak.locked(run.nominal_pressure, limit.ratio).then(|| {
         format!(
             "its contact locked: a contact pressure of {} MPa ({} times the interface's {} MPa) \
              at node {} in step {}, where a sound run of this problem stays under {} times: \
-             the run is no judge (a corner of a fine mesh pressed shut; a coarser mesh there, or another \
-             contact formulation)",
+             the run is no judge ({})",
             number_with(peak.pressure, 4),
             number_with(ratio, 3),
             number(run.nominal_pressure),
             peak.node,
             peak.step,
-            number(limit)
+            number(limit.ratio),
+            limit.advice
         )
     })
 }
@@ -385,11 +385,13 @@ fn slope_report(run: &RunEvidence) -> RunSlopeReport {
     }
 }
 
-/// The stick slope section of all files, each one's peak contact pressure judged against
-/// `locked_ratio` times its nominal pressure (the problem's
-/// [`crate::fe::face::Deck::LOCKED_PRESSURE_RATIO`]).
-pub fn stick_slope_report(runs: &[RunEvidence], locked_ratio: Option<f64>) -> StickSlopeReport {
-    let runs: Vec<RunSlopeReport> = runs.iter().map(|r| run_report(r, locked_ratio)).collect();
+/// The stick slope section of all files, each one's peak contact pressure judged against the
+/// problem's `locked` limit ([`crate::fe::face::Deck::LOCKED_PRESSURE`]).
+pub fn stick_slope_report(
+    runs: &[RunEvidence],
+    locked: Option<LockedPressure>,
+) -> StickSlopeReport {
+    let runs: Vec<RunSlopeReport> = runs.iter().map(|r| run_report(r, locked)).collect();
     let order = [
         "does not agree",
         "not judged",
@@ -564,6 +566,11 @@ mod tests {
         }
     }
 
+    const LIMIT: LockedPressure = LockedPressure {
+        ratio: 5.0,
+        advice: "a corner locked",
+    };
+
     fn evidence(peak: f64) -> RunEvidence {
         RunEvidence {
             results: "finest.dat".into(),
@@ -583,10 +590,14 @@ mod tests {
     #[test]
     fn a_run_whose_contact_locked_is_no_judge_and_says_where() {
         // The beams' finest deck of docs/theory.md (BC4a): 267 MPa at the clamp under P = 2 MPa.
-        let slope = stick_slope_report(&[evidence(267.0)], Some(5.0));
+        let slope = stick_slope_report(&[evidence(267.0)], Some(LIMIT));
         let locked = slope.runs[0].contact_locked.as_deref().unwrap();
         assert!(
             locked.contains("267 MPa (134 times the interface's 2 MPa) at node 2123 in step 2"),
+            "{locked}"
+        );
+        assert!(
+            locked.ends_with("the run is no judge (a corner locked)"),
             "{locked}"
         );
         assert_eq!(slope.runs[0].peak_pressure, Some(267.0));
@@ -614,7 +625,7 @@ mod tests {
         assert!(text.contains("  contact: its contact locked"), "{text}");
         // A sound run (2.6 P, the largest of the converged ladders) and a problem that states
         // no limit are judged as before.
-        let sound = stick_slope_report(&[evidence(5.2)], Some(5.0));
+        let sound = stick_slope_report(&[evidence(5.2)], Some(LIMIT));
         assert_eq!(sound.runs[0].contact_locked, None);
         let unstated = stick_slope_report(&[evidence(267.0)], None);
         assert_eq!(unstated.runs[0].contact_locked, None);
