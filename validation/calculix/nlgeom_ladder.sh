@@ -21,8 +21,8 @@
 # stopped there). A finest NLGEOM run takes 35 s (C5) to 1053 s (C1); the whole list would take
 # about 2.5 hours. The hold-outs (2026-11-30, LIMIT=600, one core of the shared machine, nice
 # 10, CASES=H4, then H3, then H1): H4 630 s of ccx (finest NLGEOM 407 s), H3 348 s (finest
-# NLGEOM 228 s), H1 927 s (its finest NLGEOM run stopped at 600 s); 1905 s of ccx, about 37
-# minutes of wall clock. C7 and C8 are still not run. CASES=C1,C2 runs (or summarizes) those
+# NLGEOM 228 s), H1 927 s (its finest NLGEOM run stopped at 600 s; run alone without a limit it
+# took 1436 s and locked); 1905 s of ccx, about 37 minutes of wall clock. C7 and C8 are still not run. CASES=C1,C2 runs (or summarizes) those
 # only.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
