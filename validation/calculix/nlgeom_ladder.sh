@@ -16,10 +16,14 @@
 # Roles are fixed here BEFORE the runs: "cal" cases draw the envelope, "hold" cases (the stick rows
 # of the hold-outs H1-H4 of (BC4a)) are judged by it and never used to draw it.
 # Wall time (2026-11-29, CalculiX 2.20, one core of a 2-core machine shared with two other ccx
-# campaigns, nice 10): the campaign of docs/theory.md, C3 to C3-inc4 (H4, C7, H3, C8, H1 not run),
+# campaigns, nice 10): the campaign of docs/theory.md, C3 to C3-inc4 (H4, C7, H3, C8, H1 not run then),
 # took about 90 minutes, 5317 s of ccx (the summary's last line); LIMIT=900 (H2's finest NLGEOM run
 # stopped there). A finest NLGEOM run takes 35 s (C5) to 1053 s (C1); the whole list would take
-# about 2.5 hours. CASES=C1,C2 runs (or summarizes) those only.
+# about 2.5 hours. The hold-outs (2026-11-30, LIMIT=600, one core of the shared machine, nice
+# 10, CASES=H4, then H3, then H1): H4 630 s of ccx (finest NLGEOM 407 s), H3 348 s (finest
+# NLGEOM 228 s), H1 927 s (its finest NLGEOM run stopped at 600 s; run alone without a limit it
+# took 1436 s and locked); 1905 s of ccx, about 37 minutes of wall clock. C7 and C8 are still not run. CASES=C1,C2 runs (or summarizes) those
+# only.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 bin=$(realpath "${1:-$root/target/debug/microslip}")

@@ -316,10 +316,13 @@ const NLGEOM_INTERFACE_PART: f64 = 1.0;
 /// interface (large kL) suppresses. The envelope (P / E) (L / h)^2 (0.06 + tanh(kL) / kL) keeps
 /// a margin over those coarse runs (1.3 to 2.4 times each). Re-measured on mesh ladders (h, h/2,
 /// h/4; docs/theory.md (BC4a), "On converged ladders", `validation/calculix/nlgeom_ladder.sh`) it
-/// bounds every rung and every converged estimate with its uncertainty, and is kept: CalculiX's
-/// `NLGEOM` ladders are not asymptotic in this term (the finest mesh moved the soft case from 0.21
-/// to 0.27, and its answer depends on the contact state CalculiX settles on), so no tighter
-/// envelope is supported. Beyond first slip [`nlgeom_slip_allowance`] joins it.
+/// bounds every rung and every converged estimate with its uncertainty of the calibration cases
+/// and of the hold-outs H1 and H2, and is kept: CalculiX's `NLGEOM` ladders are not asymptotic in
+/// this term (the finest mesh moved the soft case from 0.21 to 0.27, and its answer depends on
+/// the contact state CalculiX settles on), so no tighter envelope is supported. The hold-outs H3
+/// and H4 fall outside it on the fine and finest decks (up to 7 times it), where the `NLGEOM` runs
+/// turn the beams at the clamp: on such decks an `NLGEOM` run can be judged "does not agree" by
+/// this allowance. Beyond first slip [`nlgeom_slip_allowance`] joins it.
 pub fn nlgeom_allowance(beams: &TwinBeams) -> f64 {
     let p = beams.params();
     let kl = beams.decay_rate() * p.length;
@@ -593,12 +596,24 @@ mod tests {
     ];
 
     /// As [`NLGEOM_LADDERS`], the hold-out beams' stick rows (chosen before their runs; none
-    /// used to draw the allowance).
-    const NLGEOM_LADDERS_HELD_OUT: [([f64; 5], [f64; 3]); 1] = [
+    /// used to draw the allowance). H3 and H4 are left out because their ladders fall outside
+    /// the allowance: a failure of those hold-outs, recorded in docs/theory.md (BC4a), "On
+    /// converged ladders" (on the fine and finest decks the `NLGEOM` excess grows linearly from
+    /// the clamp, a rotation there). This test cannot hold them while the constants stand, and a
+    /// hold-out never moves the constants. H4 (180, 7, 200 000, 2.5, 150; kL 3.73) measured
+    /// 1.2541e-3, 2.6735e-3, 9.2982e-3 against an allowance of 2.711e-3; H3 (200, 12, 110 000,
+    /// 5, 3000; kL 19.1) measured 7.1274e-4, 5.3196e-3, 1.0010e-2 against 1.420e-3.
+    const NLGEOM_LADDERS_HELD_OUT: [([f64; 5], [f64; 3]); 2] = [
         // H2 (kL 1.17): its finest NLGEOM run did not converge within 900 s.
         (
             [120.0, 4.0, 210_000.0, 3.0, 20.0],
             [7.4120e-3, 8.2247e-3, f64::NAN],
+        ),
+        // H1 (kL 13.1; b 15, nu 0.33, mu 0.4, which the allowance does not use): its finest
+        // NLGEOM run did not converge within 600 s (run for 1436 s, it locked: peak 6.3 P).
+        (
+            [300.0, 6.0, 70_000.0, 1.5, 200.0],
+            [3.2366e-3, 3.3353e-3, f64::NAN],
         ),
     ];
 
