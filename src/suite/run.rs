@@ -247,8 +247,14 @@ fn on_pool(
     let started = Instant::now();
     let ended = std::sync::atomic::AtomicUsize::new(0);
     let progress = |run: &Prepared, outcome: &pool::Outcome, c: Counts| {
+        // The run's own verdict, as `compare` gives it for that run alone: the case's verdict
+        // is the ladder's, and a rung may disagree alone (one mesh's implied K_T) while the
+        // converged answer agrees.
         let what = match outcome {
-            Ok(r) => format!("done in {:.0} s ({})", r.solver_seconds, r.verdict),
+            Ok(r) => format!(
+                "done in {:.0} s (the run alone: {})",
+                r.solver_seconds, r.verdict
+            ),
             Err(e) => format!("failed: {}", crate::report::sanitize(&e.to_string())),
         };
         let elapsed = started.elapsed().as_secs_f64();
