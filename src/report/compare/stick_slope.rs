@@ -495,7 +495,10 @@ fn add_locked(summary: &mut Summary, slope: &StickSlopeReport) {
         sanitize(results),
         sanitize(locked)
     );
-    summary.short = format!("does not agree (contact locked; {})", summary.short);
+    summary.short = format!(
+        "does not agree (contact locked; the comparison otherwise: {})",
+        summary.short
+    );
 }
 
 /// The text section, put before the closing verdict line of `text`.
