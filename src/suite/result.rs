@@ -157,12 +157,9 @@ impl ForProblem for Judge<'_> {
         let source = dat.display().to_string();
         let mut report =
             compare_run::ContactCompared::<P>::new(&source, (checked, Vec::new()), &[run]);
-        let contact_locked = report
-            .stick_slope
-            .runs
-            .first()
-            .and_then(|r| r.contact_locked.clone());
-        let stick_slope = report.stick_slope.runs.first().map(|r| RunStickSlope {
+        let slope_run = report.stick_slope.runs.first();
+        let contact_locked = slope_run.and_then(|r| r.contact_locked.clone());
+        let stick_slope = slope_run.map(|r| RunStickSlope {
             verdict: r.verdict.to_string(),
             used: r.used,
             deck: r.deck,

@@ -8,8 +8,8 @@
 # in [0.5, 4] and shrinking differences, else "not asymptotic" with the rungs' spread; uncertainty
 # 1.25 x the correction), divided by (P/E)(L/h)^2, against the envelope 0.06 + tanh(kL)/kL.
 # Then the increment check: the soft case's stick load (and the pressure) in 4 fixed increments
-# instead of one, coarse and fine. A run whose contact pressure exceeds 5 P (the finest deck's clamp
-# corner locked) is left out of its ladder and shown.
+# instead of one, coarse and fine. A run whose contact `microslip compare` finds locked (its
+# pressure beyond 5 P: the finest deck's clamp corner) is left out of its ladder and shown.
 #
 #   validation/calculix/nlgeom_ladder.sh [MICROSLIP] [WORKDIR]
 #
@@ -22,8 +22,8 @@
 # about 2.5 hours. The hold-outs (2026-11-30, LIMIT=600, one core of the shared machine, nice
 # 10, CASES=H4, then H3, then H1): H4 630 s of ccx (finest NLGEOM 407 s), H3 348 s (finest
 # NLGEOM 228 s), H1 927 s (its finest NLGEOM run stopped at 600 s; run alone without a limit it
-# took 1436 s and locked); 1905 s of ccx, about 37 minutes of wall clock. C7 and C8 are still not run. CASES=C1,C2 runs (or summarizes) those
-# only.
+# took 1436 s and locked); 1905 s of ccx, about 37 minutes of wall clock. C7 and C8 are still
+# not run. CASES=C1,C2 runs (or summarizes) those only.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 bin=$(realpath "${1:-$root/target/debug/microslip}")
@@ -78,29 +78,28 @@ for case in "${cases[@]}"; do
   done
 done
 python3 - "$bin" "${cases[@]}" <<'PY'
-import json, math, os, subprocess, sys
+import functools, json, math, os, subprocess, sys
 bin, cases = sys.argv[1], sys.argv[2:]
 SAFETY, ORDER = 1.25, (0.5, 4.0)  # src/fe/ladder.rs: SAFETY_FACTOR, SANE_ORDER
 
-def w_of(path):
+@functools.lru_cache(maxsize=None)
+def compared(path):
+    """`microslip compare beam PATH --format json`, once per run."""
     out = subprocess.run([bin, "compare", "beam", path, "--format", "json"],
                          capture_output=True, text=True).stdout
-    row = json.loads(out)["rows"][0]
+    return json.loads(out)
+
+def w_of(path):
+    row = compared(path)["rows"][0]
     return row["w_fe_mm"], row["continuum"]["response_mm"]
 
-def peak_pressure(path):
-    """The largest contact pressure at the last load step of a run's .frd (CSTR1)."""
-    peak, block = 0.0, False
+def locked(path):
+    """Whether compare found the run's contact locked (its largest CPRESS beyond the beams' 5 P,
+    `Deck::LOCKED_PRESSURE`), and that pressure (MPa); a run without output is neither."""
     if not os.path.exists(path):
-        return peak
-    for line in open(path):
-        if line.startswith(" -4  CONTACT"):
-            peak, block = 0.0, True
-        elif block and line.startswith(" -3"):
-            block = False
-        elif block and line.startswith(" -1"):
-            peak = max(peak, float(line[49:61]))
-    return peak
+        return False, 0.0
+    run = compared(path)["stick_slope"]["runs"][0]
+    return run["contact_locked"] is not None, run["peak_pressure_MPa"] or 0.0
 
 def richardson(f1, f2, f3):
     e21, e32 = f1 - f2, f2 - f3
@@ -138,8 +137,8 @@ for case in cases:
     for m in meshes:
         if stopped(f"lin-{m}"):
             shown_lin[m] = " (stopped)"
-        elif peak_pressure(f"{name}/lin-{m}.frd") > 5 * p["P"]:
-            peak = peak_pressure(f"{name}/lin-{m}.frd") / p["P"]
+        elif locked(f"{name}/lin-{m}.dat")[0]:
+            peak = locked(f"{name}/lin-{m}.dat")[1] / p["P"]
             shown_lin[m] = f" (linear run spurious: peak {peak:.0f} P)"
     meshes = [m for m in meshes if not shown_lin[m]]
     dropped = "".join(f"; {m}{why}" for m, why in shown_lin.items() if why)
@@ -153,13 +152,14 @@ for case in cases:
         if f.endswith(".time"):
             t = open(f"{name}/{f}").read().split()
             total += int(t[-2] if t[0] == "stopped" else t[0])
-    # An NLGEOM run whose contact pressure somewhere exceeds 5 P has settled on a spurious
-    # contact state (the clamp's corner locked, slips there above the tip's): its rung is left
-    # out of the NLGEOM ladder (shown as "x").
-    peaks = {m: peak_pressure(f"{name}/nl-{m}.frd") / p["P"] for m in nl}
+    # An NLGEOM run whose contact `compare` finds locked (beyond 5 P somewhere) has settled on a
+    # spurious contact state (the clamp's corner locked, slips there above the tip's): its rung
+    # is left out of the NLGEOM ladder (shown as "x").
+    sound = {m: not locked(f"{name}/nl-{m}.dat")[0] for m in nl}
+    peaks = {m: locked(f"{name}/nl-{m}.dat")[1] / p["P"] for m in nl}
     ratios = {m: (nl[m] / b - 1) / group for m, b in zip(meshes, lin) if m in nl}
-    good = [ratios[m] for m in meshes if m in nl and peaks[m] <= 5]
-    shown = ", ".join("x (stopped)" if m not in nl else f"{ratios[m]:.4f}" if peaks[m] <= 5
+    good = [ratios[m] for m in meshes if m in nl and sound[m]]
+    shown = ", ".join("x (stopped)" if m not in nl else f"{ratios[m]:.4f}" if sound[m]
                       else f"x ({ratios[m]:.4f}: peak {peaks[m]:.0f} P)" for m in meshes)
     if len(good) == 3:
         r, u, order, words = richardson(*good)

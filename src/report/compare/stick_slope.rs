@@ -453,18 +453,8 @@ pub fn add_to_summary(
         other => format!("stick slope used {other}"),
     };
     let clause = format!("{clause}; kinematics: {}", kinematics.words);
-    let body = summary
-        .summary
-        .strip_prefix("Verdict: ")
-        .and_then(|rest| rest.split_once(". "))
-        .map(|(_, body)| body.trim_end_matches('.').to_string());
     if slope.verdict == "does not agree" {
-        summary.agrees = false;
-        summary.summary = match body {
-            Some(body) => format!("Verdict: does not agree. {clause}; {body}."),
-            None => format!("Verdict: does not agree. {clause}. {}", summary.summary),
-        };
-        summary.short = format!("does not agree (stick slope; {})", summary.short);
+        turn_to_disagree(summary, &clause, "stick slope; ");
     } else {
         summary.summary = match summary.summary.strip_suffix('.') {
             Some(start) => format!("{start}; {clause}."),
@@ -484,21 +474,28 @@ fn add_locked(summary: &mut Summary, slope: &StickSlopeReport) {
     else {
         return;
     };
+    let clause = format!("{}: {}", sanitize(results), sanitize(locked));
+    turn_to_disagree(
+        summary,
+        &clause,
+        "contact locked; the comparison otherwise: ",
+    );
+}
+
+/// The closing verdict turned to "does not agree", `clause` (why) first and the verdict's own
+/// reasons after it; its short form `short_why` then the short form it had.
+fn turn_to_disagree(summary: &mut Summary, clause: &str, short_why: &str) {
     let body = summary
         .summary
         .strip_prefix("Verdict: ")
         .and_then(|rest| rest.split_once(". "))
-        .map_or_else(|| summary.summary.clone(), |(_, body)| body.to_string());
+        .map(|(_, body)| body.trim_end_matches('.').to_string());
     summary.agrees = false;
-    summary.summary = format!(
-        "Verdict: does not agree. {}: {}; {body}",
-        sanitize(results),
-        sanitize(locked)
-    );
-    summary.short = format!(
-        "does not agree (contact locked; the comparison otherwise: {})",
-        summary.short
-    );
+    summary.summary = match body {
+        Some(body) => format!("Verdict: does not agree. {clause}; {body}."),
+        None => format!("Verdict: does not agree. {clause}. {}", summary.summary),
+    };
+    summary.short = format!("does not agree ({short_why}{})", summary.short);
 }
 
 /// The text section, put before the closing verdict line of `text`.
